@@ -1,0 +1,30 @@
+"""``thermobearing validate [CASE ...] [--json]``: run the validation cases against the papers."""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from .. import validation
+
+NAME = "validate"
+HELP = "run the validation cases against the source papers and print the error table"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("cases", nargs="*", help="case ids (default: all)")
+    parser.add_argument("--json", action="store_true", help="print JSON records instead")
+    parser.add_argument("--list", action="store_true", help="list the case ids and exit")
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.list:
+        print("\n".join(validation.case_ids()))
+        return 0
+    records = validation.run_cases(args.cases or None)
+    if args.json:
+        print(json.dumps(validation.records_as_dicts(records), indent=1))
+    else:
+        print(validation.format_table(records))
+    failed = [r for r in records if r.gated and not r.passed]
+    return 1 if failed else 0

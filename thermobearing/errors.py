@@ -1,0 +1,133 @@
+"""Exceptions and warnings shared by the whole package.
+
+Every error a user can provoke names the field, the value given and what is allowed;
+every solver failure carries its residual and the state it stopped at.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+
+class ThermobearingError(Exception):
+    """Base class of every error raised by thermobearing."""
+
+
+class InputError(ThermobearingError, ValueError):
+    """Bad input: names the field, the value given and what is allowed.
+
+    Parameters
+    ----------
+    field : dotted name of the offending input (``"bearing.ball_diameter"``).
+    value : the value that was given.
+    allowed : human-readable statement of what is allowed.
+    """
+
+    def __init__(self, field: str, value: Any, allowed: str) -> None:
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        super().__init__(f"{field} = {value!r} is not allowed: {allowed}")
+
+
+class UnknownNameError(InputError, KeyError):
+    """A preset, model or key name that is not known; lists the known ones."""
+
+    def __init__(self, field: str, value: Any, known: Iterable[str]) -> None:
+        self.known = sorted(known)
+        super().__init__(field, value, "known names are: " + ", ".join(self.known))
+
+    def __str__(self) -> str:  # KeyError would otherwise quote the message
+        return self.args[0]
+
+
+class ConvergenceError(ThermobearingError, RuntimeError):
+    """A solver did not converge.
+
+    Parameters
+    ----------
+    solver : name of the solver.
+    residual : residual norm at the last iterate.
+    message : what happened.
+    state : dict of the state at failure (time, step size, iterate, ...).
+    """
+
+    def __init__(
+        self, solver: str, residual: float, message: str = "", state: dict | None = None
+    ) -> None:
+        self.solver = solver
+        self.residual = residual
+        self.state = dict(state or {})
+        details = ", ".join(f"{k}={_short(v)}" for k, v in self.state.items())
+        text = f"{solver} did not converge (residual {residual:.3e})"
+        if message:
+            text += f": {message}"
+        if details:
+            text += f" [{details}]"
+        super().__init__(text)
+
+
+class ValidityWarning(UserWarning):
+    """A correlation or model is used outside the range it was fitted or derived for."""
+
+
+def _short(v: Any) -> str:
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    if isinstance(v, np.ndarray):
+        return np.array2string(v, precision=4, threshold=8)
+    return repr(v)
+
+
+# ---------------------------------------------------------------------------
+# small argument checks used by the physics functions and data objects
+# ---------------------------------------------------------------------------
+def check_finite(field: str, value: Any) -> None:
+    """Raise :class:`InputError` if ``value`` (scalar or array) holds NaN or inf."""
+    arr = np.asarray(value, dtype=float)
+    if not np.all(np.isfinite(arr)):
+        raise InputError(field, value, "a finite number")
+
+
+def check_positive(field: str, value: Any, *, allow_zero: bool = False) -> None:
+    """Raise :class:`InputError` unless ``value`` is finite and > 0 (or >= 0)."""
+    check_finite(field, value)
+    arr = np.asarray(value, dtype=float)
+    if allow_zero:
+        if np.any(arr < 0):
+            raise InputError(field, value, "a value >= 0")
+    elif np.any(arr <= 0):
+        raise InputError(field, value, "a value > 0")
+
+
+def check_range(
+    field: str,
+    value: Any,
+    low: float = -math.inf,
+    high: float = math.inf,
+    *,
+    low_inclusive: bool = True,
+    high_inclusive: bool = True,
+    unit: str = "",
+) -> None:
+    """Raise :class:`InputError` unless ``low <= value <= high`` (bounds as flagged)."""
+    check_finite(field, value)
+    arr = np.asarray(value, dtype=float)
+    bad_low = np.any(arr < low) if low_inclusive else np.any(arr <= low)
+    bad_high = np.any(arr > high) if high_inclusive else np.any(arr >= high)
+    if bad_low or bad_high:
+        lb = "[" if low_inclusive else "("
+        hb = "]" if high_inclusive else ")"
+        suffix = f" {unit}" if unit else ""
+        raise InputError(field, value, f"a value in {lb}{low:g}, {high:g}{hb}{suffix}")
+
+
+def check_temperature(field: str, value: Any) -> None:
+    """Raise :class:`InputError` for a temperature [K] at or below absolute zero."""
+    check_finite(field, value)
+    if np.any(np.asarray(value, dtype=float) <= 0.0):
+        raise InputError(field, value, "a temperature above absolute zero (in K)")

@@ -1,0 +1,138 @@
+"""Unit strings at the edges: configs and the command line.
+
+Inside the package everything is SI (m, kg, s, K, N, Pa, W, rad). This module is the
+only place that knows about pint: a config value such as ``"1800 rpm"``, ``"33 L/min"``,
+``"35 degC"``, ``"2 kN"`` or ``"0.08 Pa*s"`` is converted once, at load time, to a float in
+the SI unit declared for that field. A bare number is taken to be SI already.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from typing import Any
+
+import pint
+
+from .errors import InputError
+
+#: SI target unit of each kind of quantity used in configs (pint spelling).
+SI_UNITS: dict[str, str] = {
+    "length": "m",
+    "area": "m**2",
+    "volume": "m**3",
+    "mass": "kg",
+    "time": "s",
+    "temperature": "K",
+    "temperature_difference": "delta_degC",  # "10 K" or "10 degC" both mean 10 K
+    "angle": "rad",
+    "angular_speed": "rad/s",
+    "speed": "m/s",
+    "force": "N",
+    "moment": "N*m",
+    "pressure": "Pa",
+    "stress": "Pa",
+    "dynamic_viscosity": "Pa*s",
+    "kinematic_viscosity": "m**2/s",
+    "density": "kg/m**3",
+    "volume_flow": "m**3/s",
+    "mass_flow": "kg/s",
+    "power": "W",
+    "energy": "J",
+    "heat_capacity": "J/K",
+    "specific_heat": "J/(kg*K)",
+    "thermal_conductivity": "W/(m*K)",
+    "heat_transfer_coefficient": "W/(m**2*K)",
+    "conductance": "W/K",
+    "frequency": "Hz",
+    "inverse_pressure": "1/Pa",
+    "inverse_temperature": "1/K",
+    "stiffness": "N/m",
+    "dimensionless": "dimensionless",
+}
+
+_NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+@functools.lru_cache(maxsize=1)
+def unit_registry() -> pint.UnitRegistry:
+    """The one pint registry of the package (created lazily, never mutated after)."""
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("rpm_rev = revolution / minute = r_per_min")
+    return ureg
+
+
+def si_unit(kind: str) -> str:
+    """SI unit string of a quantity kind; raises for an unknown kind."""
+    try:
+        return SI_UNITS[kind]
+    except KeyError:
+        raise InputError("unit kind", kind, "one of " + ", ".join(sorted(SI_UNITS))) from None
+
+
+def to_si(value: Any, unit: str, *, field: str = "value") -> float:
+    """Convert a config value to a float in ``unit``.
+
+    Parameters
+    ----------
+    value : str, int or float
+        ``"1800 rpm"``, ``"35 degC"``, ``"0.08 Pa*s"``...; a bare number is returned as is
+        (it is taken to be in ``unit`` already, which must be the SI unit of the field).
+    unit : str
+        Target unit in pint spelling (``"rad/s"``, ``"K"``, ``"m**3/s"``) or a quantity kind
+        from :data:`SI_UNITS` (``"angular_speed"``).
+    field : str
+        Dotted field name, used in error messages.
+
+    Returns
+    -------
+    float
+        The magnitude in the target unit.
+
+    Raises
+    ------
+    InputError
+        If the string does not parse, or its unit does not convert to ``unit``
+        (``"1800 kg"`` for a speed).
+    """
+    target = SI_UNITS.get(unit, unit)
+    if isinstance(value, bool):
+        raise InputError(field, value, f"a number or a quantity string convertible to {target}")
+    if isinstance(value, int | float):
+        return float(value)
+    if not isinstance(value, str):
+        raise InputError(field, value, f"a number or a quantity string convertible to {target}")
+    ureg = unit_registry()
+    match = _NUMBER_UNIT.match(value)
+    if match is None:
+        raise InputError(field, value, f"'<number> <unit>' convertible to {target}")
+    number, unit_text = match.groups()
+    if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
+        unit_text = "delta_degC"
+    if target == "delta_degC" and unit_text in ("K", "kelvin"):
+        return float(number)
+    try:
+        q = ureg.Quantity(float(number), unit_text or "dimensionless")
+        out = q.to(target).magnitude
+    except pint.errors.DimensionalityError:
+        raise InputError(
+            field, value, f"a quantity with units convertible to {target}"
+        ) from None
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
+            TypeError, ValueError, AssertionError):
+        raise InputError(field, value, f"a known unit convertible to {target}") from None
+    return float(out)
+
+
+def from_si(value: float, unit: str) -> float:
+    """Convert an SI float to ``unit`` (for report labels and printed tables)."""
+    ureg = unit_registry()
+    q = ureg.Quantity(value, ureg.Quantity(1.0, unit).to_base_units().units)
+    return float(q.to(unit).magnitude)
+
+
+def format_quantity(value: float, unit: str, digits: int = 4) -> str:
+    """SI float -> ``"<value> <unit>"`` string in ``unit`` (used by ``Scene.to_toml``)."""
+    if unit in ("", "dimensionless"):
+        return f"{value:.{digits}g}"
+    return f"{from_si(value, unit):.{digits}g} {unit}"
