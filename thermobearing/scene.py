@@ -1,0 +1,621 @@
+"""Scenes: one configured study, read from TOML.
+
+A scene names the bearing(s), the lubricant, the oil supply, the environment, the schedule of
+speed and load steps, the models to use (one name per family), the thermal network, the
+solver settings and the outputs wanted. Quantities are unit strings (``"1800 rpm"``,
+``"33 L/min"``, ``"35 degC"``) converted once here to SI floats; bare numbers are SI. Unknown
+keys are errors that name the key; :meth:`Scene.to_toml` writes a file that loads back to
+an equal scene.
+
+Layout (every table optional unless marked)::
+
+    title = "..."                      # required
+    source = "..."                     # where the study comes from
+
+    [[bearings]]                       # required, one or more
+    name = "drive_end"                 # unique; names the node group in the network
+    preset = "QJ1044"                  # or path = "my_bearing.toml"
+    overrides = { diametral_clearance = "0.1 mm" }
+
+    [lubricant]                        # required
+    preset = "ISO_VG46"                # or path = "..."
+
+    [supply]
+    method = "jet"                     # jet | circulation | oil_bath | oil_air | grease
+    flow = "33 L/min"
+    inlet_temperature = "35 degC"
+    level = "20 mm"                    # oil bath only
+
+    [environment]
+    ambient_temperature = "35 degC"
+    initial_temperature = "35 degC"    # default: ambient
+
+    [schedule]                         # one of: steps | axial_load sweep | file
+    speed = "1800 rpm"                 # defaults for every step
+    radial_load = "1 kN"
+    axial_load = "0 kN"
+    step_duration = "3 min"
+    axial_load_steps = { start = "0 kN", stop = "42 kN", step = "2 kN" }
+    # steps = [{ duration = "3 min", speed = "1800 rpm", axial_load = "2 kN" }, ...]
+    # file = "protocol.csv"   # columns duration [s], speed [rpm], radial_load [N], axial_load [N]
+
+    [models]                           # one name per family (see `thermobearing models`)
+    kinematics = "skidding"            # skidding | race_control
+    film = "hamrock_dowson_1977"
+    traction = "..."
+    heat_sources = ["raceway", "churning", "cage_guide", "pocket"]
+
+    [network]
+    template = "four_node_paper002"
+    parameters = { ... }               # template parameters, unit strings allowed
+
+    [solver]
+    stepper = "tr_bdf2"
+    rtol = 1e-4
+    kinematics_tolerance = 0.01        # relative change of losses that triggers a re-solve
+
+    [outputs]
+    mode = "transient"                 # transient | steady
+    want = ["temperatures", "losses", "kinematics", "energy", "report"]
+
+    [measured]
+    file = "rig.csv"
+    time_column = "time [min]"
+    unit = "degC"
+    columns = { "T_outer_DE" = "drive_end.housing" }
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import tomllib
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError, UnknownNameError
+from .units import format_quantity, to_si
+
+SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
+OUTPUT_MODES = ("transient", "steady")
+OUTPUT_KINDS = (
+    "temperatures", "losses", "kinematics", "energy", "film", "report", "figures",
+)
+
+
+def _check_keys(section: str, data: Mapping[str, Any], allowed: Sequence[str]) -> None:
+    for key in data:
+        if key not in allowed:
+            raise InputError(f"{section}.{key}", data[key], "a known key: " + ", ".join(allowed))
+
+
+def _require(section: str, data: Mapping[str, Any], key: str) -> Any:
+    if key not in data:
+        raise InputError(f"{section}.{key}", None, "a value (this key is required)")
+    return data[key]
+
+
+def _fmt(value: float, unit: str) -> str | float:
+    """SI float -> unit string for TOML output, exact enough to round-trip."""
+    if unit in ("", "-"):
+        return value
+    return format_quantity(value, unit, digits=12)
+
+
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class BearingSpec:
+    """One bearing of the scene: a preset or a TOML path, with overrides."""
+
+    name: str
+    preset: str | None = None
+    path: str | None = None
+    overrides: Mapping[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], index: int) -> BearingSpec:
+        sec = f"bearings[{index}]"
+        _check_keys(sec, data, ("name", "preset", "path", "overrides"))
+        preset, path = data.get("preset"), data.get("path")
+        if (preset is None) == (path is None):
+            raise InputError(f"{sec}.preset", preset, "exactly one of 'preset' or 'path'")
+        return cls(
+            name=str(data.get("name", f"bearing{index + 1}")),
+            preset=preset,
+            path=path,
+            overrides=dict(data.get("overrides", {})),
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"name": self.name}
+        if self.preset:
+            out["preset"] = self.preset
+        if self.path:
+            out["path"] = self.path
+        if self.overrides:
+            out["overrides"] = dict(self.overrides)
+        return out
+
+
+@dataclass(frozen=True)
+class Supply:
+    """Oil supply: method, volume flow [m^3/s], inlet temperature [K], bath level [m]."""
+
+    method: str = "jet"
+    flow: float = 0.0
+    inlet_temperature: float = 308.15
+    level: float | None = None
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], ambient: float) -> Supply:
+        _check_keys("supply", data, ("method", "flow", "inlet_temperature", "level"))
+        method = data.get("method", "jet")
+        if method not in SUPPLY_METHODS:
+            raise UnknownNameError("supply.method", method, SUPPLY_METHODS)
+        flow = to_si(data.get("flow", 0.0), "volume_flow", field="supply.flow")
+        if flow < 0 or (flow == 0 and method not in ("oil_bath", "grease")):
+            raise InputError(
+                "supply.flow", data.get("flow"),
+                "a flow > 0 (zero only for an oil bath or grease)",
+            )
+        t_in = to_si(data.get("inlet_temperature", ambient), "temperature",
+                     field="supply.inlet_temperature")
+        if t_in <= 0:
+            raise InputError("supply.inlet_temperature", data.get("inlet_temperature"),
+                             "a temperature above absolute zero")
+        level = data.get("level")
+        level_si = None if level is None else to_si(level, "length", field="supply.level")
+        if method == "oil_bath" and level_si is None:
+            raise InputError("supply.level", None, "an oil level for an oil bath")
+        return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si)
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "method": self.method,
+            "flow": _fmt(self.flow, "L/min"),
+            "inlet_temperature": _fmt(self.inlet_temperature, "degC"),
+        }
+        if self.level is not None:
+            out["level"] = _fmt(self.level, "mm")
+        return out
+
+
+@dataclass(frozen=True)
+class Environment:
+    """Ambient and initial temperatures [K]."""
+
+    ambient_temperature: float = 308.15
+    initial_temperature: float = 308.15
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Environment:
+        _check_keys("environment", data, ("ambient_temperature", "initial_temperature"))
+        amb = to_si(data.get("ambient_temperature", "35 degC"), "temperature",
+                    field="environment.ambient_temperature")
+        ini = to_si(data.get("initial_temperature", amb), "temperature",
+                    field="environment.initial_temperature")
+        for name, v in (("ambient_temperature", amb), ("initial_temperature", ini)):
+            if v <= 0:
+                raise InputError(f"environment.{name}", v, "a temperature above absolute zero")
+        return cls(ambient_temperature=amb, initial_temperature=ini)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "ambient_temperature": _fmt(self.ambient_temperature, "degC"),
+            "initial_temperature": _fmt(self.initial_temperature, "degC"),
+        }
+
+
+@dataclass(frozen=True)
+class Step:
+    """One schedule step: duration [s], inner-ring speed [rad/s], loads [N]."""
+
+    duration: float
+    speed: float
+    radial_load: float
+    axial_load: float
+
+
+_STEP_KEYS = ("duration", "speed", "radial_load", "axial_load")
+_STEP_KINDS = {"duration": "time", "speed": "angular_speed", "radial_load": "force",
+               "axial_load": "force"}
+_STEP_UNITS = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
+
+
+def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: str) -> Step:
+    _check_keys(where, values, _STEP_KEYS)
+    out = dict(defaults)
+    for key, raw in values.items():
+        out[key] = to_si(raw, _STEP_KINDS[key], field=f"{where}.{key}")
+    for key in _STEP_KEYS:
+        if key not in out:
+            raise InputError(f"{where}.{key}", None, "a value (no default given in [schedule])")
+    if not out["duration"] > 0:
+        raise InputError(f"{where}.duration", values.get("duration", out["duration"]),
+                         "a duration > 0")
+    for key in ("radial_load", "axial_load"):
+        if out[key] < 0:
+            raise InputError(f"{where}.{key}", values.get(key, out[key]), "a load >= 0")
+    if out["speed"] < 0:
+        raise InputError(f"{where}.speed", values.get("speed", out["speed"]), "a speed >= 0")
+    return Step(**{k: float(out[k]) for k in _STEP_KEYS})
+
+
+@dataclass(frozen=True)
+class Schedule:
+    """The protocol: a tuple of steps run one after the other."""
+
+    steps: tuple[Step, ...]
+
+    @property
+    def breakpoints(self) -> list[float]:
+        """Times [s] at which one step ends and the next begins (discontinuities)."""
+        t, out = 0.0, []
+        for s in self.steps[:-1]:
+            t += s.duration
+            out.append(t)
+        return out
+
+    @property
+    def duration(self) -> float:
+        return float(sum(s.duration for s in self.steps))
+
+    def step_at(self, t: float) -> int:
+        """Index of the step active at time ``t`` (right-continuous)."""
+        acc = 0.0
+        for i, s in enumerate(self.steps):
+            acc += s.duration
+            if t < acc:
+                return i
+        return len(self.steps) - 1
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Schedule:
+        allowed = ("speed", "radial_load", "axial_load", "step_duration", "duration",
+                   "axial_load_steps", "steps", "file")
+        _check_keys("schedule", data, allowed)
+        defaults: dict[str, float] = {}
+        for key, kind_key in (("speed", "speed"), ("radial_load", "radial_load"),
+                              ("axial_load", "axial_load")):
+            if key in data:
+                defaults[key] = to_si(data[key], _STEP_KINDS[kind_key], field=f"schedule.{key}")
+        dur_key = "step_duration" if "step_duration" in data else "duration"
+        if dur_key in data:
+            defaults["duration"] = to_si(data[dur_key], "time", field=f"schedule.{dur_key}")
+        forms = [k for k in ("axial_load_steps", "steps", "file") if k in data]
+        if len(forms) > 1:
+            raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
+        steps: list[Step] = []
+        if not forms:
+            if "duration" not in defaults:
+                defaults["duration"] = 3600.0
+            steps.append(_make_step({}, defaults, "schedule"))
+        elif forms[0] == "axial_load_steps":
+            sweep = data["axial_load_steps"]
+            _check_keys("schedule.axial_load_steps", sweep, ("start", "stop", "step"))
+            a0 = to_si(_require("schedule.axial_load_steps", sweep, "start"), "force",
+                       field="schedule.axial_load_steps.start")
+            a1 = to_si(_require("schedule.axial_load_steps", sweep, "stop"), "force",
+                       field="schedule.axial_load_steps.stop")
+            da = to_si(_require("schedule.axial_load_steps", sweep, "step"), "force",
+                       field="schedule.axial_load_steps.step")
+            if da <= 0 or a1 < a0:
+                raise InputError("schedule.axial_load_steps", dict(sweep),
+                                 "start <= stop and step > 0")
+            n = int(math.floor((a1 - a0) / da + 1e-9)) + 1
+            for i in range(n):
+                steps.append(_make_step({}, {**defaults, "axial_load": a0 + i * da},
+                                        f"schedule.axial_load_steps[{i}]"))
+        elif forms[0] == "steps":
+            for i, item in enumerate(data["steps"]):
+                steps.append(_make_step(item, defaults, f"schedule.steps[{i}]"))
+        else:
+            steps.extend(_read_schedule_file(data["file"], defaults, base_dir))
+        if not steps:
+            raise InputError("schedule", dict(data), "at least one step")
+        return cls(steps=tuple(steps))
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "steps": [
+                {k: _fmt(getattr(s, k), _STEP_UNITS[k]) for k in _STEP_KEYS} for s in self.steps
+            ]
+        }
+
+
+def _read_schedule_file(name: str, defaults: Mapping[str, float],
+                        base_dir: Path | None) -> list[Step]:
+    path = Path(name)
+    if not path.is_absolute() and base_dir is not None:
+        path = base_dir / path
+    if not path.is_file():
+        raise InputError("schedule.file", name, "an existing CSV file")
+    units = {"duration": "s", "speed": "rpm", "radial_load": "N", "axial_load": "N"}
+    steps = []
+    with path.open(newline="", encoding="utf-8") as fh:
+        reader = csv.DictReader(fh)
+        colmap: dict[str, str] = {}
+        for col in reader.fieldnames or []:
+            key, _, unit = col.partition("[")
+            key = key.strip()
+            if key not in _STEP_KEYS:
+                raise InputError(f"schedule.file column {col!r}", col,
+                                 "columns named " + ", ".join(_STEP_KEYS) + " with [unit]")
+            colmap[col] = key
+            if unit:
+                units[key] = unit.rstrip("] ")
+        for i, row in enumerate(reader):
+            values = {colmap[c]: f"{v} {units[colmap[c]]}" for c, v in row.items() if v}
+            steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
+    return steps
+
+
+@dataclass(frozen=True)
+class Measured:
+    """Measured temperatures: a CSV with a time column and a column -> node map."""
+
+    file: str
+    columns: Mapping[str, str]
+    time_column: str = "time [min]"
+    unit: str = "degC"
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Measured:
+        _check_keys("measured", data, ("file", "columns", "time_column", "unit"))
+        unit = data.get("unit", "degC")
+        if unit not in ("degC", "K", "degF"):
+            raise InputError("measured.unit", unit, "degC, K or degF")
+        cols = data.get("columns")
+        if not isinstance(cols, Mapping) or not cols:
+            raise InputError("measured.columns", cols, "a table of CSV column -> node name")
+        return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
+                   time_column=str(data.get("time_column", "time [min]")), unit=unit)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"file": self.file, "columns": dict(self.columns),
+                "time_column": self.time_column, "unit": self.unit}
+
+
+@dataclass(frozen=True)
+class Solver:
+    """Solver settings."""
+
+    stepper: str = "tr_bdf2"
+    rtol: float = 1e-4
+    atol: float = 1e-3
+    kinematics_tolerance: float = 0.01
+    max_step: float = 600.0
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Solver:
+        names = [f.name for f in fields(cls)]
+        _check_keys("solver", data, names)
+        kw: dict[str, Any] = {}
+        if "stepper" in data:
+            kw["stepper"] = str(data["stepper"])
+        for key in ("rtol", "atol", "kinematics_tolerance"):
+            if key in data:
+                v = float(data[key])
+                if not v > 0:
+                    raise InputError(f"solver.{key}", data[key], "a value > 0")
+                kw[key] = v
+        if "max_step" in data:
+            kw["max_step"] = to_si(data["max_step"], "time", field="solver.max_step")
+            if kw["max_step"] <= 0:
+                raise InputError("solver.max_step", data["max_step"], "a time > 0")
+        return cls(**kw)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"stepper": self.stepper, "rtol": self.rtol, "atol": self.atol,
+                "kinematics_tolerance": self.kinematics_tolerance,
+                "max_step": _fmt(self.max_step, "s")}
+
+
+@dataclass(frozen=True)
+class Outputs:
+    """What the scene must produce; decides which models run."""
+
+    mode: str = "transient"
+    want: tuple[str, ...] = ("temperatures", "losses", "kinematics", "energy", "report")
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Outputs:
+        _check_keys("outputs", data, ("mode", "want"))
+        mode = data.get("mode", "transient")
+        if mode not in OUTPUT_MODES:
+            raise UnknownNameError("outputs.mode", mode, OUTPUT_MODES)
+        want = tuple(data.get("want", cls.want))
+        for w in want:
+            if w not in OUTPUT_KINDS:
+                raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
+        return cls(mode=mode, want=want)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"mode": self.mode, "want": list(self.want)}
+
+
+@dataclass(frozen=True)
+class Scene:
+    """One configured study (see the module docstring for the TOML layout)."""
+
+    title: str
+    bearings: tuple[BearingSpec, ...]
+    lubricant: Mapping[str, Any]
+    supply: Supply
+    environment: Environment
+    schedule: Schedule
+    models: Mapping[str, Any] = field(default_factory=dict)
+    network: Mapping[str, Any] = field(default_factory=dict)
+    solver: Solver = field(default_factory=Solver)
+    outputs: Outputs = field(default_factory=Outputs)
+    measured: Measured | None = None
+    source: str = ""
+    base_dir: str | None = None
+
+    _TOP = ("title", "source", "bearings", "lubricant", "supply", "environment", "schedule",
+            "models", "network", "solver", "outputs", "measured")
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Scene:
+        """Validate and convert a parsed TOML document."""
+        _check_keys("scene", data, cls._TOP)
+        title = str(_require("scene", data, "title"))
+        raw_bearings = _require("scene", data, "bearings")
+        if isinstance(raw_bearings, Mapping):
+            raw_bearings = [raw_bearings]
+        bearings = tuple(BearingSpec.from_dict(b, i) for i, b in enumerate(raw_bearings))
+        names = [b.name for b in bearings]
+        if len(set(names)) != len(names):
+            raise InputError("bearings[].name", names, "unique names")
+        lub = dict(_require("scene", data, "lubricant"))
+        _check_keys("lubricant", lub, ("preset", "path"))
+        if ("preset" in lub) == ("path" in lub):
+            raise InputError("lubricant", lub, "exactly one of 'preset' or 'path'")
+        env = Environment.from_dict(data.get("environment", {}))
+        return cls(
+            title=title,
+            source=str(data.get("source", "")),
+            bearings=bearings,
+            lubricant=lub,
+            supply=Supply.from_dict(data.get("supply", {}), env.ambient_temperature),
+            environment=env,
+            schedule=Schedule.from_dict(_require("scene", data, "schedule"), base_dir),
+            models=dict(data.get("models", {})),
+            network=dict(data.get("network", {})),
+            solver=Solver.from_dict(data.get("solver", {})),
+            outputs=Outputs.from_dict(data.get("outputs", {})),
+            measured=Measured.from_dict(data["measured"]) if "measured" in data else None,
+            base_dir=str(base_dir) if base_dir is not None else None,
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """The resolved scene as a TOML-ready dict (SI floats back to unit strings)."""
+        out: dict[str, Any] = {"title": self.title}
+        if self.source:
+            out["source"] = self.source
+        out["bearings"] = [b.to_dict() for b in self.bearings]
+        out["lubricant"] = dict(self.lubricant)
+        out["supply"] = self.supply.to_dict()
+        out["environment"] = self.environment.to_dict()
+        out["schedule"] = self.schedule.to_dict()
+        if self.models:
+            out["models"] = dict(self.models)
+        if self.network:
+            out["network"] = dict(self.network)
+        out["solver"] = self.solver.to_dict()
+        out["outputs"] = self.outputs.to_dict()
+        if self.measured is not None:
+            out["measured"] = self.measured.to_dict()
+        return out
+
+    def to_toml(self) -> str:
+        """TOML text that :func:`loads_scene` reads back to an equal scene."""
+        return dumps_toml(self.to_dict())
+
+    def with_changes(self, **changes: Any) -> Scene:
+        """A copy with some top-level fields replaced."""
+        return replace(self, **changes)
+
+    def resolve_path(self, name: str) -> Path:
+        """A path given in the scene, relative to the scene file's folder."""
+        p = Path(name)
+        if not p.is_absolute() and self.base_dir:
+            p = Path(self.base_dir) / p
+        return p
+
+
+# ---------------------------------------------------------------------------
+def configs_dir() -> Path:
+    """The repository's ``configs`` folder (bearings, lubricants, scenes)."""
+    return Path(__file__).resolve().parents[1] / "configs"
+
+
+DEFAULT_SCENE = "qj1044_rig"
+
+
+def scene_presets() -> list[str]:
+    folder = configs_dir() / "scenes"
+    return sorted(p.stem for p in folder.glob("*.toml"))
+
+
+def loads_scene(text: str, base_dir: Path | None = None) -> Scene:
+    """Parse TOML text into a :class:`Scene`."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError("scene", "<toml>", f"valid TOML ({exc})") from None
+    return Scene.from_dict(data, base_dir)
+
+
+def load_scene(name_or_path: str | Path | None = None) -> Scene:
+    """Load a scene from a TOML path or a preset name in ``configs/scenes`` (default scene
+    when ``None``)."""
+    if name_or_path is None:
+        name_or_path = DEFAULT_SCENE
+    path = Path(name_or_path)
+    if not path.is_file():
+        preset = configs_dir() / "scenes" / f"{name_or_path}.toml"
+        if not preset.is_file():
+            raise UnknownNameError("scene", str(name_or_path), scene_presets())
+        path = preset
+    return loads_scene(path.read_text(encoding="utf-8"), base_dir=path.parent)
+
+
+# ---------------------------------------------------------------------------
+def _toml_value(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return repr(v) if math.isfinite(v) else ("nan" if math.isnan(v) else
+                                                 ("inf" if v > 0 else "-inf"))
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+    if isinstance(v, Mapping):
+        return "{ " + ", ".join(f"{_toml_key(k)} = {_toml_value(x)}" for k, x in v.items()) + " }"
+    if isinstance(v, list | tuple):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise TypeError(f"cannot write {type(v).__name__} to TOML")
+
+
+def _toml_key(k: str) -> str:
+    return k if k.replace("_", "").replace("-", "").isalnum() else _toml_value(k)
+
+
+def dumps_toml(data: Mapping[str, Any]) -> str:
+    """Small TOML writer for scene documents (tables, arrays of tables, inline values)."""
+    lines: list[str] = []
+    scalars = {k: v for k, v in data.items() if not _is_table(v) and not _is_table_array(v)}
+    for k, v in scalars.items():
+        lines.append(f"{_toml_key(k)} = {_toml_value(v)}")
+    for k, v in data.items():
+        if _is_table_array(v):
+            for item in v:
+                lines.append("")
+                lines.append(f"[[{_toml_key(k)}]]")
+                for kk, vv in item.items():
+                    lines.append(f"{_toml_key(kk)} = {_toml_value(vv)}")
+        elif _is_table(v):
+            lines.append("")
+            lines.append(f"[{_toml_key(k)}]")
+            for kk, vv in v.items():
+                if kk == "steps" and isinstance(vv, list):
+                    lines.append(f"{kk} = [")
+                    lines.extend(f"  {_toml_value(x)}," for x in vv)
+                    lines.append("]")
+                else:
+                    lines.append(f"{_toml_key(kk)} = {_toml_value(vv)}")
+    return "\n".join(lines) + "\n"
+
+
+def _is_table(v: Any) -> bool:
+    return isinstance(v, Mapping)
+
+
+def _is_table_array(v: Any) -> bool:
+    """An array of named tables (``[[bearings]]``) is written in the long form."""
+    return (isinstance(v, list) and bool(v)
+            and all(isinstance(x, Mapping) and "name" in x for x in v))
