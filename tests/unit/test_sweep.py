@@ -1,0 +1,111 @@
+"""Sweep machinery: expansion, bad parameters, resume after interruption, dask == serial.
+
+The runner here is a small deterministic function of the scene (the physics runners are
+tested elsewhere); what is under test is the bookkeeping."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.scene import load_scene, loads_scene
+from thermobearing.sweep import expand, finished_cases, parse_set, run_sweep
+
+CALLS: list[str] = []
+
+
+def flow_speed_runner(scene_toml: str) -> dict[str, float]:
+    """Enthalpy capacity of the oil stream [W/K] and the mean speed [rad/s] of a scene."""
+    sc = loads_scene(scene_toml)
+    speed = sum(s.speed * s.duration for s in sc.schedule.steps) / sc.schedule.duration
+    return {"flow_capacity": sc.supply.flow * 870.0 * 1900.0, "mean_speed": speed}
+
+
+class Interrupt(Exception):
+    pass
+
+
+def test_parse_and_expand():
+    scene = load_scene()
+    d = scene.to_dict()
+    p1 = parse_set("supply.flow=15,20,25,33", d)
+    p2 = parse_set("schedule.speed=600:1800:300", d)
+    assert p1.values == ("15 L/min", "20 L/min", "25 L/min", "33 L/min")
+    assert len(p2.values) == 5 and p2.values[0] == "600 rpm"
+    cases = expand(scene, [p1, p2])
+    assert len(cases) == 20 and len({c.case_id for c in cases}) == 20
+    sc = loads_scene(cases[-1].scene_toml)
+    assert sc.supply.flow == pytest.approx(33e-3 / 60)
+    assert all(s.speed == pytest.approx(1800 * math.pi / 30) for s in sc.schedule.steps)
+
+
+@pytest.mark.parametrize("spec", ["supply.colour=1,2", "nosuch.field=3", "supply.flow",
+                                  "supply.flow=3:1:1"])
+def test_bad_parameter(spec):
+    with pytest.raises(InputError):
+        parse_set(spec, load_scene().to_dict())
+
+
+def test_bad_value_names_field():
+    scene = load_scene()
+    p = parse_set("supply.flow=-3,5", scene.to_dict())
+    with pytest.raises(InputError) as info:
+        expand(scene, [p])
+    assert "supply.flow" in str(info.value)
+
+
+def test_resume_after_interrupt(tmp_path):
+    scene = load_scene()
+    params = [parse_set("supply.flow=10,20,30,40", scene.to_dict())]
+    calls = []
+
+    def dying_runner(text):
+        if len(calls) == 2:
+            raise Interrupt
+        calls.append(text)
+        return flow_speed_runner(text)
+
+    with pytest.raises(Interrupt):
+        run_sweep(scene, params, tmp_path, runner=dying_runner, workers=1, progress=False)
+    assert len(finished_cases(tmp_path)) == 2
+    second = []
+
+    def counting_runner(text):
+        second.append(text)
+        return flow_speed_runner(text)
+
+    df = run_sweep(scene, params, tmp_path, runner=counting_runner, workers=1, progress=False)
+    assert len(second) == 2 and len(df) == 4
+    assert (tmp_path / "summary.csv").is_file()
+    again = run_sweep(scene, params, tmp_path, runner=counting_runner, workers=1, progress=False)
+    assert len(second) == 2 and again.equals(df)
+
+
+def test_dask_local_cluster_matches_serial(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    scene = load_scene()
+    params = [parse_set("supply.flow=15,33", scene.to_dict()),
+              parse_set("schedule.speed=600,1800", scene.to_dict())]
+    serial = run_sweep(scene, params, tmp_path / "serial", runner=flow_speed_runner, workers=1,
+                       progress=False)
+    with distributed.LocalCluster(n_workers=2, processes=False, dashboard_address=None) as cl:
+        par = run_sweep(scene, params, tmp_path / "dask", runner=flow_speed_runner,
+                        scheduler=cl.scheduler_address, progress=False)
+    assert par.sort_values("case").reset_index(drop=True).equals(
+        serial.sort_values("case").reset_index(drop=True))
+
+
+def test_unreachable_scheduler(tmp_path):
+    from thermobearing.sweep import SchedulerUnreachable
+
+    scene = load_scene()
+    params = [parse_set("supply.flow=15,33", scene.to_dict())]
+    with pytest.raises(SchedulerUnreachable):
+        run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
+                  scheduler="tcp://127.0.0.1:9", progress=False)
+    df = run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
+                   scheduler="tcp://127.0.0.1:9", fallback_local=True, workers=1,
+                   progress=False)
+    assert len(df) == 2

@@ -1,0 +1,140 @@
+"""Results of a run: tidy pandas tables with units in the column names, plus metadata.
+
+Tables (all optional; a scene fills only what its outputs need):
+
+``temperatures``
+    one row per output time: ``time [s]``, ``time [min]``, then ``<node> [degC]`` per node.
+``losses``
+    long form, one row per (step, bearing, source, component): ``step``, ``time [s]``,
+    ``bearing``, ``speed [rpm]``, ``axial load [kN]``, ``radial load [kN]``, ``source``,
+    ``component``, ``role``, ``power [W]``, ``load dependence``.
+``kinematics``
+    one row per (step, bearing): speeds, loads, ``cage speed ratio [-]``,
+    ``theoretical cage speed ratio [-]``, ``over-skidding [%]`` and solver statistics.
+``energy``
+    one row per output time: cumulative ``generated [J]``, ``stored [J]``,
+    ``to ambient [J]``, ``to oil [J]``, ``imbalance [J]``.
+
+:class:`ResultsWriter` appends rows to the CSV files as they are computed, so an
+interrupted run keeps everything finished so far.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+TABLES = ("temperatures", "losses", "kinematics", "energy", "film")
+
+
+@dataclass
+class Results:
+    """Everything a run produced.
+
+    Attributes
+    ----------
+    tables : name -> DataFrame (see the module docstring).
+    scene_toml : the resolved scene as TOML text.
+    chain : the models that ran, in order, as (family, name) pairs.
+    citations : formatted references of the models that ran.
+    warnings : validity warnings collected during the run.
+    stats : solver statistics (steps, Newton iterations, re-solves, wall time...).
+    """
+
+    tables: dict[str, pd.DataFrame] = field(default_factory=dict)
+    scene_toml: str = ""
+    chain: list[tuple[str, str]] = field(default_factory=list)
+    citations: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    stats: dict[str, Any] = field(default_factory=dict)
+    figures: dict[str, bytes] = field(default_factory=dict)
+
+    def __getitem__(self, name: str) -> pd.DataFrame:
+        return self.tables[name]
+
+    def write(self, out_dir: Path | str) -> Path:
+        """Write every table as CSV (and Parquet when pyarrow is present), the resolved
+        scene, the metadata and the figures to ``out_dir``; returns the folder."""
+        out = Path(out_dir)
+        out.mkdir(parents=True, exist_ok=True)
+        try:
+            import pyarrow  # noqa: F401
+
+            parquet = True
+        except ImportError:
+            parquet = False
+        for name, df in self.tables.items():
+            df.to_csv(out / f"{name}.csv", index=False)
+            if parquet:
+                df.to_parquet(out / f"{name}.parquet", index=False)
+        if self.scene_toml:
+            (out / "scene.toml").write_text(self.scene_toml, encoding="utf-8")
+        meta = {
+            "chain": [list(x) for x in self.chain],
+            "citations": self.citations,
+            "warnings": self.warnings,
+            "stats": _jsonable(self.stats),
+        }
+        (out / "metadata.json").write_text(json.dumps(meta, indent=1), encoding="utf-8")
+        for name, png in self.figures.items():
+            (out / f"{name}.png").write_bytes(png)
+        return out
+
+
+def _jsonable(obj: Any) -> Any:
+    if isinstance(obj, Mapping):
+        return {str(k): _jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_jsonable(v) for v in obj]
+    if hasattr(obj, "item"):
+        return obj.item()
+    return obj
+
+
+class ResultsWriter:
+    """Append-as-you-go CSV writer: each table's rows land on disk as soon as they exist.
+
+    Parameters
+    ----------
+    out_dir : folder to write to (created).
+    """
+
+    def __init__(self, out_dir: Path | str) -> None:
+        self.out = Path(out_dir)
+        self.out.mkdir(parents=True, exist_ok=True)
+        self._columns: dict[str, list[str]] = {}
+        for name in TABLES:
+            path = self.out / f"{name}.csv"
+            if path.exists():
+                path.unlink()
+
+    def append(self, table: str, rows: Sequence[Mapping[str, Any]]) -> None:
+        """Append rows (dicts) to ``<table>.csv``; the first call fixes the columns."""
+        if not rows:
+            return
+        path = self.out / f"{table}.csv"
+        cols = self._columns.get(table)
+        new = cols is None
+        if new:
+            cols = list(rows[0].keys())
+            for r in rows[1:]:
+                cols.extend(k for k in r if k not in cols)
+            self._columns[table] = cols
+        buf = io.StringIO()
+        writer = csv.DictWriter(buf, fieldnames=cols, extrasaction="ignore")
+        if new:
+            writer.writeheader()
+        writer.writerows(rows)
+        with path.open("a", encoding="utf-8", newline="") as fh:
+            fh.write(buf.getvalue())
+            fh.flush()
+
+    def files(self) -> list[Path]:
+        return sorted(self.out / f"{t}.csv" for t in self._columns)
