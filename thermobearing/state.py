@@ -1,0 +1,354 @@
+"""Operating state and kinematic state: what the skidding solver fills and the heat sources read.
+
+Four small frozen dataclasses:
+
+:class:`OilSupply`
+    how the oil gets in (method, volume flow, inlet temperature, bath level).
+:class:`OperatingPoint`
+    ring speeds and external loads.
+:class:`ContactSet`
+    one raceway's element contacts (per-element arrays): load, Hertz ellipse, film,
+    and the *relative rigid-body motion* of the element against the race in the contact
+    frame, which is exactly what :func:`thermobearing.contact_traction.integrate` needs.
+:class:`KinematicState`
+    ring, cage and element speeds plus the contact sets and the cage-pocket forces; it
+    comes either from race control (:meth:`KinematicState.from_race_control`) or from the
+    skidding solver (``origin="skidding"``).
+
+Contact frame and signs (used throughout, see also :mod:`thermobearing.contact_traction`)
+-----------------------------------------------------------------------------------------
+Origin at the contact centre; ``x`` along the major axis ``a`` (transverse to rolling,
+along the groove), ``y`` along the rolling direction (semi-minor axis ``b``), ``z`` along
+the contact normal pointing from the race towards the element's centre. Body 1 is the
+rolling element, body 2 the race. Every relative quantity is *element minus race*:
+
+- ``sliding_speed``            V_y = u_element - u_race at the contact centre [m/s]
+  (so the slide-to-roll ratio of the contract is ``sliding_speed / entrainment_speed``);
+- ``transverse_sliding_speed`` V_x at the contact centre [m/s];
+- ``roll_speed``               Omega_x, relative angular velocity about the major axis [rad/s]
+  (the rolling rotation; it produces the Heathcote slip on the curved deformed surface);
+- ``tilt_speed``               Omega_y, relative angular velocity about the rolling axis [rad/s];
+- ``spin_speed``               Omega_z, relative angular velocity about the normal [rad/s].
+
+A point of the deformed contact surface at ``(x, y)`` lies at ``z = x**2 / (2 R_d)``
+(``R_d`` = ``deformed_radius``; infinite for a line contact), and the element slides
+over the race there at ``V + Omega x r``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields, replace
+from typing import Any
+
+import numpy as np
+
+from .errors import InputError, UnknownNameError, check_finite, check_positive, check_temperature
+
+SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
+ORIGINS = ("race_control", "skidding", "given")
+CONTACT_KINDS = ("point", "line")
+RING_ROLES = ("inner_ring", "outer_ring")
+
+
+# ---------------------------------------------------------------------------
+# oil supply and operating point
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class OilSupply:
+    """Oil supply of one bearing.
+
+    Attributes
+    ----------
+    method : ``"jet" | "circulation" | "oil_bath" | "oil_air" | "grease"``.
+    flow_rate : volume flow of oil through the bearing [m^3/s]; > 0, zero allowed only for
+        ``oil_bath`` and ``grease``.
+    inlet_temperature : oil inlet (or sump) temperature [K].
+    level : static oil level of a bath [m], measured from the lowest point of the outer-ring
+        raceway (SKF's ``H``); required for ``oil_bath``, ignored otherwise.
+    """
+
+    method: str
+    flow_rate: float
+    inlet_temperature: float
+    level: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.method not in SUPPLY_METHODS:
+            raise UnknownNameError("supply.method", self.method, SUPPLY_METHODS)
+        check_finite("supply.flow_rate", self.flow_rate)
+        q = float(self.flow_rate)
+        if q < 0.0 or (q == 0.0 and self.method not in ("oil_bath", "grease")):
+            raise InputError(
+                "supply.flow_rate", self.flow_rate,
+                f"a flow > 0 m^3/s for method {self.method!r} (zero only for oil_bath or grease)",
+            )
+        check_temperature("supply.inlet_temperature", self.inlet_temperature)
+        if self.method == "oil_bath":
+            if self.level is None:
+                raise InputError("supply.level", None, "an oil level [m] for an oil bath")
+            check_positive("supply.level", self.level, allow_zero=True)
+        object.__setattr__(self, "flow_rate", q)
+        object.__setattr__(self, "inlet_temperature", float(self.inlet_temperature))
+
+    @classmethod
+    def from_scene(cls, supply: Any) -> OilSupply:
+        """Build from :class:`thermobearing.scene.Supply` (fields method, flow, inlet_temperature,
+        level)."""
+        return cls(method=supply.method, flow_rate=supply.flow,
+                   inlet_temperature=supply.inlet_temperature, level=supply.level)
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """Ring speeds [rad/s] and external loads [N] of one operating point.
+
+    ``axial_load`` is the magnitude of the thrust (>= 0); ``radial_load`` >= 0.
+    """
+
+    inner_speed: float
+    outer_speed: float = 0.0
+    radial_load: float = 0.0
+    axial_load: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("inner_speed", "outer_speed"):
+            check_finite(f"operating.{name}", getattr(self, name))
+        check_positive("operating.radial_load", self.radial_load, allow_zero=True)
+        check_positive("operating.axial_load", self.axial_load, allow_zero=True)
+        for f in fields(self):
+            object.__setattr__(self, f.name, float(getattr(self, f.name)))
+
+
+# ---------------------------------------------------------------------------
+# contact set
+# ---------------------------------------------------------------------------
+_CONTACT_ARRAYS = (
+    "normal_load", "contact_angle", "semi_major", "semi_minor", "max_pressure",
+    "entrainment_speed", "sliding_speed", "transverse_sliding_speed", "spin_speed",
+    "roll_speed", "tilt_speed", "deformed_radius",
+)
+_OPTIONAL_ARRAYS = ("film_thickness", "temperature", "reduced_radius_x", "reduced_radius_y")
+
+
+@dataclass(frozen=True)
+class ContactSet:
+    """The contacts of all elements with one raceway (arrays of shape ``(Z,)``).
+
+    Attributes
+    ----------
+    race : name of the raceway (``"inner"``, ``"outer"``, ``"inner_2"``... for the second
+        half-ring of a four-point bearing).
+    ring_role : node role of the ring, ``"inner_ring"`` or ``"outer_ring"`` (default: from
+        the race name's prefix).
+    kind : ``"point"`` (Hertz ellipse) or ``"line"`` (roller: ``semi_major`` is half the
+        effective length, uniform load along it).
+    normal_load : Q [N] (>= 0; zero marks an unloaded element).
+    contact_angle : operating contact angle [rad] (0 for radial roller contacts).
+    semi_major, semi_minor : a, b [m] (transverse and rolling-direction half-axes).
+    max_pressure : p0 [Pa].
+    entrainment_speed : u = (u_element + u_race)/2 in the rolling direction [m/s].
+    sliding_speed : V_y, element minus race, rolling direction, at the centre [m/s].
+    transverse_sliding_speed : V_x, element minus race, at the centre [m/s].
+    spin_speed : Omega_z, element minus race, about the normal [rad/s].
+    roll_speed : Omega_x, element minus race, about the major axis [rad/s] (default 0).
+    tilt_speed : Omega_y, element minus race, about the rolling axis [rad/s] (default 0).
+    deformed_radius : radius of the deformed contact surface in the transverse plane [m];
+        ``inf`` = flat (line contacts). For a ball in a groove of conformity f,
+        R_d = 2 f D / (2 f + 1) (Harris & Kotzalas 2007; primer over-skidding 3.5).
+    film_thickness : central film thickness h_c [m] or None.
+    temperature : lubricant/surface temperature at the contact inlet [K] or None.
+    reduced_radius_x, reduced_radius_y : R_x, R_y [m] or None (rolling-resistance models).
+    """
+
+    race: str
+    normal_load: Any
+    semi_major: Any
+    semi_minor: Any
+    max_pressure: Any
+    contact_angle: Any = 0.0
+    entrainment_speed: Any = 0.0
+    sliding_speed: Any = 0.0
+    transverse_sliding_speed: Any = 0.0
+    spin_speed: Any = 0.0
+    roll_speed: Any = 0.0
+    tilt_speed: Any = 0.0
+    deformed_radius: Any = math.inf
+    film_thickness: Any = None
+    temperature: Any = None
+    reduced_radius_x: Any = None
+    reduced_radius_y: Any = None
+    kind: str = "point"
+    ring_role: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind not in CONTACT_KINDS:
+            raise UnknownNameError(f"contacts[{self.race}].kind", self.kind, CONTACT_KINDS)
+        role = self.ring_role or (
+            "inner_ring" if self.race.startswith("inner") else
+            "outer_ring" if self.race.startswith("outer") else "")
+        if role not in RING_ROLES:
+            raise InputError(f"contacts[{self.race}].ring_role", self.ring_role,
+                             "inner_ring or outer_ring (or a race name starting with "
+                             "'inner'/'outer')")
+        object.__setattr__(self, "ring_role", role)
+        n = np.atleast_1d(np.asarray(self.normal_load, dtype=float)).shape
+        if len(n) != 1:
+            raise InputError(f"contacts[{self.race}].normal_load", self.normal_load,
+                             "a 1-D array (one entry per element)")
+        for name in _CONTACT_ARRAYS + _OPTIONAL_ARRAYS:
+            value = getattr(self, name)
+            if value is None:
+                continue
+            arr = np.asarray(value, dtype=float)
+            try:
+                arr = np.array(np.broadcast_to(arr, n), dtype=float)
+            except ValueError:
+                raise InputError(f"contacts[{self.race}].{name}", value,
+                                 f"an array broadcastable to shape {n}") from None
+            if name != "deformed_radius":
+                check_finite(f"contacts[{self.race}].{name}", arr)
+            arr.flags.writeable = False
+            object.__setattr__(self, name, arr)
+        for name in ("normal_load", "semi_major", "semi_minor", "max_pressure"):
+            check_positive(f"contacts[{self.race}].{name}", getattr(self, name), allow_zero=True)
+        if np.any(np.isnan(self.deformed_radius)) or np.any(self.deformed_radius <= 0):
+            raise InputError(f"contacts[{self.race}].deformed_radius", self.deformed_radius,
+                             "radii > 0 [m] (inf for a flat surface)")
+        if self.film_thickness is not None:
+            check_positive(f"contacts[{self.race}].film_thickness", self.film_thickness,
+                           allow_zero=True)
+        if self.temperature is not None:
+            check_temperature(f"contacts[{self.race}].temperature", self.temperature)
+
+    @property
+    def n_elements(self) -> int:
+        """Number of elements Z."""
+        return int(self.normal_load.shape[0])
+
+    @property
+    def slide_to_roll(self) -> np.ndarray:
+        """Slide-to-roll ratio V_y / u (0 where u = 0)."""
+        u = self.entrainment_speed
+        return np.divide(self.sliding_speed, u, out=np.zeros_like(u), where=u != 0)
+
+    def with_(self, **changes: Any) -> ContactSet:
+        """A copy with some fields replaced (validated again)."""
+        return replace(self, **changes)
+
+
+# ---------------------------------------------------------------------------
+# kinematic state
+# ---------------------------------------------------------------------------
+_ELEMENT_ARRAYS = ("orbital_speed", "element_spin", "attitude_angle", "azimuth",
+                   "pocket_normal_force", "pocket_sliding_speed", "element_drag_force")
+
+
+@dataclass(frozen=True)
+class KinematicState:
+    """Speeds and contact kinematics of one bearing at one instant.
+
+    Attributes
+    ----------
+    inner_speed, outer_speed, cage_speed : ring and cage angular speeds [rad/s].
+    orbital_speed : (Z,) orbital speed of each element's centre [rad/s].
+    element_spin : (Z,) magnitude of each element's angular velocity about its own axis,
+        seen from the cage [rad/s] (paper 002's omega_r; the roller speed for rollers).
+    attitude_angle : (Z,) attitude (pitch) angle beta of the spin axis [rad] (0 for rollers).
+    contacts : the contact sets, one per raceway (two for a ball bearing in two-point
+        contact, up to four for a four-point bearing).
+    azimuth : (Z,) angular position of each element [rad] (default evenly spaced from 0).
+    pocket_normal_force : (Z,) normal force between element and cage pocket [N]
+        (default 0: race control knows nothing of the cage).
+    pocket_sliding_speed : (Z,) sliding speed of the element surface in the pocket [m/s];
+        None -> the pocket source uses |element_spin| * D / 2 (paper 002 eq. 19).
+    element_drag_force : (Z,) fluid drag on each element [N] from the solver, or None.
+    cage_eccentricity : cage-centre eccentricity ratio epsilon in the guide clearance [-].
+    cage_guide_force : cage-land normal force from the solver [N] or None.
+    origin : ``"race_control" | "skidding" | "given"``.
+    """
+
+    inner_speed: float
+    outer_speed: float
+    cage_speed: float
+    orbital_speed: Any
+    element_spin: Any
+    contacts: tuple[ContactSet, ...]
+    attitude_angle: Any = 0.0
+    azimuth: Any = None
+    pocket_normal_force: Any = 0.0
+    pocket_sliding_speed: Any = None
+    element_drag_force: Any = None
+    cage_eccentricity: float = 0.0
+    cage_guide_force: float | None = None
+    origin: str = "given"
+    extras: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if self.origin not in ORIGINS:
+            raise UnknownNameError("kinematics.origin", self.origin, ORIGINS)
+        for name in ("inner_speed", "outer_speed", "cage_speed"):
+            check_finite(f"kinematics.{name}", getattr(self, name))
+            object.__setattr__(self, name, float(getattr(self, name)))
+        orbital = np.atleast_1d(np.asarray(self.orbital_speed, dtype=float))
+        if orbital.ndim != 1 or orbital.size == 0:
+            raise InputError("kinematics.orbital_speed", self.orbital_speed,
+                             "a 1-D array with one entry per element")
+        z = orbital.shape
+        if self.azimuth is None:
+            object.__setattr__(self, "azimuth", 2 * np.pi * np.arange(z[0]) / z[0])
+        for name in _ELEMENT_ARRAYS:
+            value = getattr(self, name)
+            if value is None:
+                continue
+            try:
+                arr = np.array(np.broadcast_to(np.asarray(value, dtype=float), z), dtype=float)
+            except ValueError:
+                raise InputError(f"kinematics.{name}", value,
+                                 f"an array broadcastable to shape {z}") from None
+            check_finite(f"kinematics.{name}", arr)
+            arr.flags.writeable = False
+            object.__setattr__(self, name, arr)
+        check_positive("kinematics.pocket_normal_force", self.pocket_normal_force, allow_zero=True)
+        check_range_eps = float(self.cage_eccentricity)
+        if not 0.0 <= check_range_eps < 1.0:
+            raise InputError("kinematics.cage_eccentricity", self.cage_eccentricity,
+                             "a ratio in [0, 1)")
+        object.__setattr__(self, "cage_eccentricity", check_range_eps)
+        contacts = tuple(self.contacts)
+        for cs in contacts:
+            if not isinstance(cs, ContactSet):
+                raise InputError("kinematics.contacts", cs, "ContactSet instances")
+            if cs.n_elements != z[0]:
+                raise InputError(f"kinematics.contacts[{cs.race}]", cs.n_elements,
+                                 f"{z[0]} elements (as orbital_speed)")
+        races = [cs.race for cs in contacts]
+        if len(set(races)) != len(races):
+            raise InputError("kinematics.contacts", races, "distinct race names")
+        object.__setattr__(self, "contacts", contacts)
+
+    @property
+    def n_elements(self) -> int:
+        """Number of rolling elements Z."""
+        return int(self.orbital_speed.shape[0])
+
+    @property
+    def cage_speed_ratio(self) -> float:
+        """Cage speed over inner-ring speed relative to the outer ring (CSR)."""
+        rel = self.inner_speed - self.outer_speed
+        if rel == 0.0:
+            raise InputError("kinematics.inner_speed", self.inner_speed,
+                             "an inner-ring speed different from the outer-ring speed")
+        return (self.cage_speed - self.outer_speed) / rel
+
+    def contact(self, race: str) -> ContactSet:
+        """The contact set of ``race``."""
+        for cs in self.contacts:
+            if cs.race == race:
+                return cs
+        raise UnknownNameError("kinematics.contacts race", race, [c.race for c in self.contacts])
+
+    def with_(self, **changes: Any) -> KinematicState:
+        """A copy with some fields replaced (validated again)."""
+        return replace(self, **changes)

@@ -1,0 +1,335 @@
+"""Traction laws: shear stress in a lubricated rolling contact as a function of sliding speed.
+
+Every law is a small frozen dataclass registered in :data:`TRACTION` with one method::
+
+    law.shear_stress(slide_speed, pressure, film_thickness=None, temperature=None)
+        -> ShearStress(stress [Pa], dstress_dspeed [Pa s/m])
+
+evaluated point by point (numpy broadcasting) at the quadrature nodes of a contact by
+:func:`thermobearing.contact_traction.integrate`. ``slide_speed`` is the *magnitude* of the
+local sliding velocity [m/s] (>= 0); the stress acts against the sliding direction. The
+derivative is returned so that the skidding solver gets an analytic Jacobian.
+
+Laws
+----
+``linear_saturating``
+    paper 004 (Luo et al. 2022, Fig. 3): mu rises linearly with the sliding speed up to mu_m
+    at dv_m and stays at mu_m beyond; tau = mu p.
+``eyring_limiting_shear``
+    Newtonian or Eyring film, tau = tau0 asinh(eta(T, p) (dv/h) / tau0), with the viscosity
+    at the local Hertzian pressure from the lubricant's pressure-viscosity law, capped by the
+    limiting shear stress tau_L = Lambda p (Bair & Winer 1979). Needs film thickness and
+    temperature.
+``four_parameter``
+    ADORE-type slip curve mu(u) = (A + B u) exp(-C u) + D (Gupta 1984), fitted to mu at zero
+    slip, the maximum mu at the slip speed u_m, and mu at infinite slip; tau = mu p.
+
+Use :func:`make_traction_law` to build a law by name from a scene's parameters.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, NamedTuple, Protocol
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .errors import InputError, check_positive, check_range
+from .registry import Registry
+
+
+class ShearStress(NamedTuple):
+    """Local shear stress and its derivative with respect to the sliding speed."""
+
+    stress: np.ndarray  #: shear stress [Pa], >= 0
+    dstress_dspeed: np.ndarray  #: d(stress)/d(slide speed) [Pa s/m]
+
+
+class TractionLaw(Protocol):
+    """What :func:`thermobearing.contact_traction.integrate` needs from a law."""
+
+    requires_film: bool
+
+    def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
+                     temperature: Any = None) -> ShearStress: ...
+
+
+TRACTION: Registry[type] = Registry(
+    "traction", "shear stress of a lubricated rolling contact versus sliding speed")
+
+
+def _check_coefficient(field: str, value: float) -> None:
+    check_range(field, value, 0.0, 1.0)
+
+
+def _as_speed(slide_speed: Any) -> np.ndarray:
+    s = np.asarray(slide_speed, dtype=float)
+    if np.any(s < 0) or not np.all(np.isfinite(s)):
+        raise InputError("traction.slide_speed", "negative or non-finite values",
+                         "sliding-speed magnitudes >= 0 [m/s]")
+    return s
+
+
+# ---------------------------------------------------------------------------
+@TRACTION.register(
+    "linear_saturating",
+    references=["luo2022_cage_slip_vibration"],
+    parameters={"mu_max": "-", "slip_speed_max": "m/s"},
+    validity="0 <= mu_max <= 1; slip_speed_max > 0; independent of pressure, temperature, film",
+)
+@dataclass(frozen=True)
+class LinearSaturatingTraction:
+    """Linear-then-constant friction-slip law of paper 004 (Luo et al. 2022, Fig. 3).
+
+    mu(dv) = mu_m * dv / dv_m for dv < dv_m, and mu_m for dv >= dv_m; tau = mu * p.
+
+    Parameters
+    ----------
+    mu_max : mu_m, friction coefficient reached at and beyond ``slip_speed_max`` [-].
+        Paper 004 uses 0.01 ... 0.05.
+    slip_speed_max : dv_m, sliding speed at which mu saturates [m/s].
+
+    Notes
+    -----
+    Source: seed paper 004_0105d7aba121b014.txt, Section 2 and Fig. 3 (the paper gives the
+    shape, not dv_m). The paper states the law is independent of speed, pressure and
+    temperature (a "solid lubricant" idealisation after Gupta); film thickness is ignored.
+    """
+
+    mu_max: float
+    slip_speed_max: float
+    requires_film = False
+
+    def __post_init__(self) -> None:
+        _check_coefficient("traction.mu_max", self.mu_max)
+        check_positive("traction.slip_speed_max", self.slip_speed_max)
+
+    def coefficient(self, slide_speed: Any) -> np.ndarray:
+        """Friction coefficient mu(dv) [-]."""
+        s = _as_speed(slide_speed)
+        return self.mu_max * np.minimum(s / self.slip_speed_max, 1.0)
+
+    def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
+                     temperature: Any = None) -> ShearStress:
+        """Shear stress tau = mu(dv) p [Pa] and d tau / d dv [Pa s/m]."""
+        s = _as_speed(slide_speed)
+        p = np.asarray(pressure, dtype=float)
+        below = s < self.slip_speed_max
+        mu = self.mu_max * np.where(below, s / self.slip_speed_max, 1.0)
+        dmu = np.where(below, self.mu_max / self.slip_speed_max, 0.0)
+        return ShearStress(mu * p, dmu * p)
+
+
+# ---------------------------------------------------------------------------
+@TRACTION.register(
+    "eyring_limiting_shear",
+    references=["johnson_tevaarwerk1977_traction", "bair_winer1979_limiting_shear",
+                "gao2022_overskidding"],
+    parameters={"limiting_shear_coefficient": "-", "eyring_stress": "Pa"},
+    validity="full-film EHL (film thickness > 0); Lambda 0.03-0.12; tau0 ~ 1-20 MPa; "
+             "isothermal film at the contact inlet temperature",
+)
+@dataclass(frozen=True)
+class EyringLimitingShearTraction:
+    """Newtonian/Eyring film with a limiting shear stress tau_L = Lambda p.
+
+    tau_E = tau0 * asinh(eta(T, p) * gamma / tau0),  gamma = dv / h   (Eyring; Newtonian
+    eta * gamma when ``eyring_stress`` is None), then capped by the limiting shear stress
+
+        cap = "min":     tau = min(tau_E, Lambda p)
+        cap = "smooth":  tau = tau_E / sqrt(1 + (tau_E / (Lambda p))**2)
+
+    Parameters
+    ----------
+    lubricant : :class:`thermobearing.lubricant.Lubricant`; its ``dynamic_viscosity(T, p)``
+        [Pa s] (the lubricant's pressure-viscosity law, Barus or Roelands) is evaluated at the
+        local Hertzian pressure of every quadrature node.
+    limiting_shear_coefficient : Lambda [-]; Bair & Winer report 0.05-0.1 for mineral oils
+        and esters, traction fluids at the top of the range.
+    eyring_stress : tau0 [Pa] (None: Newtonian). Order 2-10 MPa for mineral oils at EHL
+        pressures (Johnson & Tevaarwerk 1977).
+    cap : "min" (default, the literal cap) or "smooth" (differentiable everywhere).
+
+    Notes
+    -----
+    This is the bounded form of paper 002 (seed 002_0add79adaca5495c.txt) eq. 11, which
+    writes the shear heat as eta(T, p, gamma) dU^2 / h. Taken literally with the viscosity
+    at Hertzian pressure (e.g. Barus, alpha = 2e-8 1/Pa, p = 1.5 GPa: eta/eta0 = e^30 ~ 1e13)
+    eq. 11 is unbounded, so the shear stress must come from a traction law with a limit:
+    this one. The film is isothermal at ``temperature`` (no flash-temperature rise), so the
+    law over-predicts traction at large slip unless Lambda is taken at the contact temperature.
+    """
+
+    lubricant: Any
+    limiting_shear_coefficient: float = 0.075
+    eyring_stress: float | None = 5.0e6
+    cap: str = "min"
+    requires_film = True
+
+    def __post_init__(self) -> None:
+        check_range("traction.limiting_shear_coefficient", self.limiting_shear_coefficient,
+                    0.0, 1.0, low_inclusive=False)
+        if self.eyring_stress is not None:
+            check_positive("traction.eyring_stress", self.eyring_stress)
+        if self.cap not in ("min", "smooth"):
+            raise InputError("traction.cap", self.cap, "'min' or 'smooth'")
+        if not hasattr(self.lubricant, "dynamic_viscosity"):
+            raise InputError("traction.lubricant", self.lubricant,
+                             "a Lubricant with dynamic_viscosity(T, p)")
+
+    def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
+                     temperature: Any = None) -> ShearStress:
+        """Shear stress [Pa] and its derivative [Pa s/m] at sliding speed, pressure, h, T."""
+        if film_thickness is None:
+            raise InputError("traction[eyring_limiting_shear].film_thickness", None,
+                             "a film thickness [m] > 0 (this law shears a fluid film)")
+        if temperature is None:
+            raise InputError("traction[eyring_limiting_shear].temperature", None,
+                             "a contact temperature [K]")
+        h = np.asarray(film_thickness, dtype=float)
+        check_positive("traction[eyring_limiting_shear].film_thickness", h)
+        s = _as_speed(slide_speed)
+        p = np.maximum(np.asarray(pressure, dtype=float), 0.0)
+        eta = np.asarray(self.lubricant.dynamic_viscosity(temperature, p), dtype=float)
+        rate_coeff = eta / h  # d(eta*gamma)/d(dv) [Pa s/m]
+        tau_n = rate_coeff * s
+        if self.eyring_stress is None:
+            tau_e, dtau_e = tau_n, rate_coeff
+        else:
+            x = tau_n / self.eyring_stress
+            tau_e = self.eyring_stress * np.arcsinh(x)
+            dtau_e = rate_coeff / np.hypot(1.0, x)
+        tau_l = self.limiting_shear_coefficient * p
+        if self.cap == "min":
+            capped = tau_e >= tau_l
+            return ShearStress(np.where(capped, tau_l, tau_e), np.where(capped, 0.0, dtau_e))
+        ratio = np.divide(tau_e, tau_l, out=np.full_like(tau_e, np.inf), where=tau_l > 0)
+        ratio = np.minimum(ratio, 1e150)
+        factor = 1.0 / np.sqrt(1.0 + ratio * ratio)
+        return ShearStress(tau_e * factor, dtau_e * factor ** 3)
+
+    def coefficient(self, slide_speed: Any, pressure: Any, film_thickness: Any,
+                    temperature: Any) -> np.ndarray:
+        """Local traction coefficient tau / p [-]."""
+        tau = self.shear_stress(slide_speed, pressure, film_thickness, temperature).stress
+        return tau / np.asarray(pressure, dtype=float)
+
+
+# ---------------------------------------------------------------------------
+def fit_four_parameter(mu_zero: float, mu_max: float, slip_speed_at_max: float,
+                       mu_infinity: float) -> tuple[float, float, float, float]:
+    """Coefficients (A, B, C, D) of mu(u) = (A + B u) exp(-C u) + D.
+
+    Conditions: mu(0) = mu_zero, mu(inf) = mu_infinity, d mu/du = 0 at u_m with mu(u_m) =
+    mu_max. Then D = mu_inf, A = mu_0 - mu_inf, B = C A / (1 - s) with s = C u_m, and s solves
+    A exp(-s) / (1 - s) = mu_max - mu_inf (s in (0, 1) for A > 0, s > 1 for A < 0, s = 1 and
+    B = e (mu_max - mu_inf) / u_m for A = 0). Derivation: primer losses-and-heat-transfer 6
+    (checked here by substitution, see tests).
+
+    Returns
+    -------
+    A [-], B [s/m], C [s/m], D [-]
+    """
+    for name, v in (("mu_zero", mu_zero), ("mu_max", mu_max), ("mu_infinity", mu_infinity)):
+        _check_coefficient(f"traction.{name}", v)
+    check_positive("traction.slip_speed_at_max", slip_speed_at_max)
+    if mu_max <= max(mu_zero, mu_infinity):
+        raise InputError("traction.mu_max", mu_max,
+                         f"a peak above mu_zero = {mu_zero} and mu_infinity = {mu_infinity}")
+    a = mu_zero - mu_infinity
+    d = mu_infinity
+    target = mu_max - mu_infinity
+    um = slip_speed_at_max
+    if a == 0.0:
+        return 0.0, math.e * target / um, 1.0 / um, d
+    if a > 0:
+        # a e^-s/(1-s) rises from a (s=0) to inf (s->1); target > a since mu_max > mu_zero
+        def g(s: float) -> float:
+            return math.log(a) - s - math.log1p(-s) - math.log(target)
+        s = brentq(g, 0.0, 1.0 - 1e-15, xtol=1e-15, rtol=1e-14)
+    else:
+        # |a| e^-s/(s-1) falls from inf (s->1+) to 0 (s->inf)
+        def g(s: float) -> float:
+            return math.log(-a) - s - math.log(s - 1.0) - math.log(target)
+        hi = 2.0
+        while g(hi) > 0:
+            hi *= 2.0
+        s = brentq(g, 1.0 + 1e-15, hi, xtol=1e-15, rtol=1e-14)
+    c = s / um
+    b = c * a / (1.0 - s)
+    return a, b, c, d
+
+
+@TRACTION.register(
+    "four_parameter",
+    references=["gupta1984_adore", "harris_kotzalas2007"],
+    parameters={"mu_zero": "-", "mu_max": "-", "slip_speed_at_max": "m/s", "mu_infinity": "-"},
+    validity="coefficients in [0, 1], mu_max above mu_zero and mu_infinity; slip speed in m/s",
+)
+@dataclass(frozen=True)
+class FourParameterTraction:
+    """ADORE-type slip curve mu(u) = (A + B u) exp(-C u) + D, tau = mu p.
+
+    Parameters
+    ----------
+    mu_zero : mu at zero slip [-].
+    mu_max : maximum mu [-], reached at ``slip_speed_at_max``.
+    slip_speed_at_max : u_m [m/s].
+    mu_infinity : mu as the slip speed goes to infinity [-].
+
+    Notes
+    -----
+    The functional form is the one of Gupta's ADORE (Gupta 1984, Advanced Dynamics of
+    Rolling Elements) as used in public ADORE-style codes (primer over-skidding 3.6); the
+    coefficients are fitted by :func:`fit_four_parameter`. With mu_zero > 0 the stress does
+    not vanish at zero slip, so the traction direction jumps across a zero-slip line; the
+    contact integral then converges only as O(1/n) in the node count.
+    """
+
+    mu_zero: float
+    mu_max: float
+    slip_speed_at_max: float
+    mu_infinity: float
+    requires_film = False
+
+    def __post_init__(self) -> None:
+        fit_four_parameter(self.mu_zero, self.mu_max, self.slip_speed_at_max, self.mu_infinity)
+
+    @property
+    def coefficients(self) -> tuple[float, float, float, float]:
+        """(A, B, C, D)."""
+        return fit_four_parameter(self.mu_zero, self.mu_max, self.slip_speed_at_max,
+                                  self.mu_infinity)
+
+    def coefficient(self, slide_speed: Any) -> np.ndarray:
+        """Friction coefficient mu(u) [-]."""
+        a, b, c, d = self.coefficients
+        u = _as_speed(slide_speed)
+        return (a + b * u) * np.exp(-c * u) + d
+
+    def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
+                     temperature: Any = None) -> ShearStress:
+        """Shear stress mu(u) p [Pa] and its derivative [Pa s/m]."""
+        a, b, c, d = self.coefficients
+        u = _as_speed(slide_speed)
+        p = np.asarray(pressure, dtype=float)
+        e = np.exp(-c * u)
+        mu = (a + b * u) * e + d
+        dmu = (b - c * (a + b * u)) * e
+        return ShearStress(mu * p, dmu * p)
+
+
+def make_traction_law(name: str, **parameters: Any) -> TractionLaw:
+    """Build the traction law registered as ``name`` with keyword ``parameters``.
+
+    Example: ``make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.1)``.
+    Unknown names raise :class:`~thermobearing.errors.UnknownNameError` listing the known ones;
+    unknown or missing parameters raise :class:`~thermobearing.errors.InputError`.
+    """
+    cls = TRACTION.get(name)
+    try:
+        return cls(**parameters)
+    except TypeError as exc:
+        raise InputError(f"traction[{name}] parameters", sorted(parameters), str(exc)) from None
