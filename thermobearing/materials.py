@@ -1,0 +1,284 @@
+"""Materials of rings, rolling elements and cages, and the effective elastic modulus.
+
+All values SI: Young's modulus [Pa], density [kg/m^3], specific heat [J/(kg K)], thermal
+conductivity [W/(m K)]. Every preset names its source; values not taken from a source are
+listed in its ``estimated`` mapping with the reasoning.
+
+Convention (contract): E' = 2 / ((1 - v1^2)/E1 + (1 - v2^2)/E2) (Hamrock 2004, ch. 3;
+twice Johnson's E*).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import InputError, UnknownNameError, check_positive, check_range
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic solid.
+
+    Attributes
+    ----------
+    name : preset name.
+    youngs_modulus : E [Pa].
+    poisson_ratio : nu [-], in (-1, 0.5).
+    density : rho [kg/m^3].
+    specific_heat : c [J/(kg K)].
+    thermal_conductivity : k [W/(m K)].
+    source : where the numbers come from.
+    estimated : field -> reasoning, for values not taken from ``source``.
+    """
+
+    name: str
+    youngs_modulus: float
+    poisson_ratio: float
+    density: float
+    specific_heat: float
+    thermal_conductivity: float
+    source: str
+    estimated: Mapping[str, str] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        check_positive(f"{self.name}.youngs_modulus", self.youngs_modulus)
+        check_range(f"{self.name}.poisson_ratio", self.poisson_ratio, -1.0, 0.5,
+                    low_inclusive=False, high_inclusive=False)
+        check_positive(f"{self.name}.density", self.density)
+        check_positive(f"{self.name}.specific_heat", self.specific_heat)
+        check_positive(f"{self.name}.thermal_conductivity", self.thermal_conductivity)
+
+    @property
+    def thermal_diffusivity(self) -> float:
+        """k / (rho c) [m^2/s]."""
+        return self.thermal_conductivity / (self.density * self.specific_heat)
+
+    @property
+    def plane_strain_modulus(self) -> float:
+        """E / (1 - nu^2) [Pa]; E' of two identical bodies."""
+        return self.youngs_modulus / (1.0 - self.poisson_ratio**2)
+
+
+def effective_modulus_from(E1: float, nu1: float, E2: float, nu2: float) -> float:
+    """Hamrock's effective modulus E' [Pa] from two (E [Pa], nu [-]) pairs.
+
+    .. math:: E' = \\frac{2}{(1-\\nu_1^2)/E_1 + (1-\\nu_2^2)/E_2}
+
+    Hamrock, Schmid & Jacobson 2004, ch. 3 ("effective elastic modulus"); equals
+    2 E* of Johnson 1985 eq. 4.22. Vectorised over numpy arrays.
+    """
+    for f, v in (("E1", E1), ("E2", E2)):
+        check_positive(f, v)
+    for f, v in (("nu1", nu1), ("nu2", nu2)):
+        check_range(f, v, -1.0, 0.5, low_inclusive=False, high_inclusive=False)
+    out = 2.0 / ((1.0 - np.asarray(nu1) ** 2) / E1 + (1.0 - np.asarray(nu2) ** 2) / E2)
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def effective_modulus(m1: Material, m2: Material) -> float:
+    """E' [Pa] of a contact between materials ``m1`` and ``m2`` (Hamrock convention).
+
+    Example: 52100 on 52100 (E = 203.4 GPa, nu = 0.3): E' = E/(1 - nu^2) = 223.5 GPa.
+    """
+    if not isinstance(m1, Material) or not isinstance(m2, Material):
+        raise InputError("material", (m1, m2), "two Material objects (see get_material)")
+    return effective_modulus_from(m1.youngs_modulus, m1.poisson_ratio,
+                                  m2.youngs_modulus, m2.poisson_ratio)
+
+
+# ---------------------------------------------------------------------------
+# presets
+# ---------------------------------------------------------------------------
+STEEL_52100 = Material(
+    name="STEEL_52100",
+    youngs_modulus=29.5e6 * 6894.757,  # 29.5e6 psi = 203.4 GPa
+    poisson_ratio=0.30,
+    density=0.283 * 27679.9,  # 0.283 lb/in^3 = 7833 kg/m^3
+    specific_heat=475.0,
+    thermal_conductivity=46.6,
+    source="AISI 52100 (GCr15, 100Cr6) through-hardened bearing steel: E = 29.5e6 psi and "
+    "density 0.283 lb/in^3 from a ball manufacturer's 52100 data sheet; nu = 0.3 as in "
+    "paper 004 Table 1 and paper 001 Table 1; c and k typical handbook values for 52100",
+    estimated={
+        "specific_heat": "475 J/(kg K): typical handbook value for 52100 at room temperature "
+        "(MatWeb-type data sheets, recalled); paper 001 uses 460 for its bearing steel",
+        "thermal_conductivity": "46.6 W/(m K): typical handbook value for 52100 (recalled); "
+        "hardened 52100 is often quoted 38-46 W/(m K)",
+    },
+)
+
+GCR15 = Material(
+    name="GCR15",
+    youngs_modulus=STEEL_52100.youngs_modulus,
+    poisson_ratio=STEEL_52100.poisson_ratio,
+    density=STEEL_52100.density,
+    specific_heat=STEEL_52100.specific_heat,
+    thermal_conductivity=STEEL_52100.thermal_conductivity,
+    source="GB/T 18254 GCr15 is the Chinese designation of AISI 52100 (1C-1.5Cr); same "
+    "values as STEEL_52100",
+    estimated=dict(STEEL_52100.estimated),
+)
+
+M50 = Material(
+    name="M50",
+    youngs_modulus=203e9,
+    poisson_ratio=0.28,
+    density=7830.0,
+    specific_heat=460.0,
+    thermal_conductivity=15.0,
+    source="AMS 6491 M50 (80MoCrV42-16, Cr4Mo4V) aero-engine bearing steel; c and k as "
+    "paper 001 Table 1 gives for the steel of its aero-engine bearing D1842926",
+    estimated={
+        "youngs_modulus": "203 GPa: typical of hardened M50 (within 1-2 % of 52100), recalled",
+        "poisson_ratio": "0.28: typical of hardened tool/bearing steels, recalled",
+        "density": "7830 kg/m^3: M50 is ~4 % Cr, 4 % Mo, 1 % V; density close to 52100",
+        "material_identity": "paper 001 does not name its steel; its c = 460 J/(kg K) and "
+        "k = 15 W/(m K) are adopted here as representative of high-alloy aero bearing steel",
+    },
+)
+
+SILICON_NITRIDE = Material(
+    name="SILICON_NITRIDE",
+    youngs_modulus=310e9,
+    poisson_ratio=0.27,
+    density=3200.0,
+    specific_heat=690.0,
+    thermal_conductivity=29.0,
+    source="hot-isostatically-pressed bearing-grade Si3N4 (ASTM F2094 class): typical values "
+    "quoted for hybrid-bearing balls (Harris & Kotzalas 2007, vol. 1, materials chapter: "
+    "E about 310 GPa, density about 3.2 g/cm^3)",
+    estimated={
+        "poisson_ratio": "0.26-0.28 in manufacturer data; 0.27 taken",
+        "specific_heat": "680-800 J/(kg K) in manufacturer data at room temperature; 690 taken",
+        "thermal_conductivity": "25-35 W/(m K) in manufacturer data; 29 taken",
+    },
+)
+
+BRASS = Material(
+    name="BRASS",
+    youngs_modulus=100e9,
+    poisson_ratio=0.34,
+    density=8450.0,
+    specific_heat=380.0,
+    thermal_conductivity=115.0,
+    source="machined-cage brass CuZn39Pb3 / CW614N-class alpha-beta brass: typical "
+    "handbook values",
+    estimated={
+        "all": "typical handbook values of leaded alpha-beta brass (E 97-105 GPa, "
+        "rho 8.4-8.5 g/cm^3, c 375-385 J/(kg K), k 110-125 W/(m K)); no single source seen",
+    },
+)
+
+PEEK = Material(
+    name="PEEK",
+    youngs_modulus=3.6e9,
+    poisson_ratio=0.40,
+    density=1300.0,
+    specific_heat=1340.0,
+    thermal_conductivity=0.25,
+    source="unfilled PEEK (polyether ether ketone) cage material: typical datasheet values",
+    estimated={
+        "all": "typical unfilled-PEEK datasheet values (E 3.5-4 GPa, rho 1.30 g/cm^3, "
+        "k 0.25 W/(m K)); glass- or carbon-filled cage grades differ",
+    },
+)
+
+PAPER001_STEEL = Material(
+    name="PAPER001_STEEL",
+    youngs_modulus=218e9,
+    poisson_ratio=0.3,
+    density=7870.0,
+    specific_heat=460.0,
+    thermal_conductivity=15.0,
+    source="Shi & Wang 2015 (seed paper 001) Table 1, roller and race of D1842926: "
+    "E = 218 GPa, nu = 0.3, rho = 7870 kg/m^3, c = 460 J/(kg degC), k = 15 W/(m degC)",
+)
+
+PAPER001_CAGE = Material(
+    name="PAPER001_CAGE",
+    youngs_modulus=209e9,
+    poisson_ratio=0.3,
+    density=7870.0,
+    specific_heat=460.0,
+    thermal_conductivity=15.0,
+    source="Shi & Wang 2015 (seed paper 001) Table 1, cage of D1842926: E = 209 GPa, "
+    "nu = 0.3, rho = 7870 kg/m^3",
+    estimated={
+        "specific_heat": "not given for the cage in paper 001; the table's single value "
+        "(460 J/(kg degC)) taken",
+        "thermal_conductivity": "not given for the cage in paper 001; the table's single "
+        "value (15 W/(m degC)) taken",
+    },
+)
+
+PAPER000_STEEL = Material(
+    name="PAPER000_STEEL",
+    youngs_modulus=2.28e11 * (1.0 - 0.3**2),
+    poisson_ratio=0.3,
+    density=7800.0,
+    specific_heat=STEEL_52100.specific_heat,
+    thermal_conductivity=STEEL_52100.thermal_conductivity,
+    source="Li et al. 2018 (seed paper 000) Table 1: E' = 2.28e11 Pa and roller density "
+    "7800 kg/m^3; E = E'(1 - nu^2) so that two such bodies give E' = 2.28e11 Pa",
+    estimated={
+        "poisson_ratio": "paper 000 gives only E'; nu = 0.3 assumed (bearing steel)",
+        "specific_heat": "not in paper 000; 52100 value",
+        "thermal_conductivity": "not in paper 000; 52100 value",
+    },
+)
+
+PAPER004_STEEL = Material(
+    name="PAPER004_STEEL",
+    youngs_modulus=2.07e11,
+    poisson_ratio=0.3,
+    density=STEEL_52100.density,
+    specific_heat=STEEL_52100.specific_heat,
+    thermal_conductivity=STEEL_52100.thermal_conductivity,
+    source="Luo et al. 2022 (seed paper 004) Table 1: bearing steel E = 2.07e11 Pa, nu = 0.3",
+    estimated={
+        "density": "not in paper 004; 52100 value",
+        "specific_heat": "not in paper 004; 52100 value",
+        "thermal_conductivity": "not in paper 004; 52100 value",
+    },
+)
+
+MATERIALS: dict[str, Material] = {
+    m.name: m
+    for m in (STEEL_52100, GCR15, M50, SILICON_NITRIDE, BRASS, PEEK, PAPER000_STEEL,
+              PAPER001_STEEL, PAPER001_CAGE, PAPER004_STEEL)
+}
+
+_ALIASES = {
+    "AISI52100": "STEEL_52100",
+    "52100": "STEEL_52100",
+    "100CR6": "STEEL_52100",
+    "AISI_52100": "STEEL_52100",
+    "SI3N4": "SILICON_NITRIDE",
+    "M50_STEEL": "M50",
+}
+
+
+def material_names() -> list[str]:
+    """Names of the material presets."""
+    return sorted(MATERIALS)
+
+
+def get_material(name: str | Material) -> Material:
+    """The preset ``name`` (case-insensitive; aliases GCr15, 52100, 100Cr6, Si3N4).
+
+    A :class:`Material` is returned unchanged. Unknown names raise
+    :class:`UnknownNameError` listing the presets.
+    """
+    if isinstance(name, Material):
+        return name
+    if not isinstance(name, str):
+        raise InputError("material", name, "a preset name or a Material")
+    key = name.strip().upper().replace("-", "_").replace(" ", "_")
+    key = _ALIASES.get(key, key)
+    try:
+        return MATERIALS[key]
+    except KeyError:
+        raise UnknownNameError("material", name, MATERIALS) from None
