@@ -1,0 +1,76 @@
+"""The HTML report embeds every figure and has every section."""
+
+from __future__ import annotations
+
+import base64
+import re
+
+import numpy as np
+import pandas as pd
+
+from thermobearing.report import (
+    SECTIONS,
+    fig_csr,
+    fig_loss_bars,
+    fig_temperatures,
+    html_report,
+    temperature_errors,
+)
+from thermobearing.results import Results, ResultsWriter
+
+
+def _results() -> Results:
+    t = np.linspace(0, 3600, 61)
+    temps = pd.DataFrame({"time [s]": t, "time [min]": t / 60,
+                          "housing [degC]": 35 + 10 * (1 - np.exp(-t / 900)),
+                          "oil [degC]": 35 + 12 * (1 - np.exp(-t / 600))})
+    losses = pd.DataFrame([
+        {"step": i, "bearing": "de", "axial load [kN]": 2.0 * i, "source": s,
+         "component": s, "role": "oil", "power [W]": p * (1 + 0.1 * i)}
+        for i in range(4) for s, p in (("churning", 500.0), ("pocket", 150.0))])
+    kin = pd.DataFrame([{"bearing": "de", "speed [rpm]": 1800.0, "axial load [kN]": 2.0 * i,
+                         "cage speed ratio [-]": 0.45 + 0.01 * i,
+                         "theoretical cage speed ratio [-]": 0.452} for i in range(4)])
+    energy = pd.DataFrame({"time [s]": [3600.0], "generated [J]": [1e6], "stored [J]": [2e5],
+                           "to ambient [J]": [1e5], "to oil [J]": [7e5],
+                           "imbalance [J]": [1e-3]})
+    r = Results(tables={"temperatures": temps, "losses": losses, "kinematics": kin,
+                        "energy": energy},
+                scene_toml='title = "x"\n', chain=[("network", "four_node_paper002")],
+                citations=["Ref A"], warnings=["Lambda < 1 at step 0"])
+    measured = pd.DataFrame({"time [s]": t[::6], "TC1": temps["housing [degC]"][::6] + 0.5})
+    r.figures["temperatures"] = fig_temperatures(temps, measured, {"TC1": "housing"})
+    r.figures["losses"] = fig_loss_bars(losses)
+    r.figures["csr"] = fig_csr(kin)
+    return r
+
+
+def test_html_has_sections_and_embedded_images(tmp_path):
+    r = _results()
+    text = html_report(r, "demo")
+    for sec in SECTIONS:
+        assert f">{sec}</h2>" in text
+    imgs = re.findall(r'src="data:image/png;base64,([A-Za-z0-9+/=]+)"', text)
+    assert len(imgs) == len(r.figures) == 3
+    for data in imgs:
+        assert base64.b64decode(data)[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "Lambda &lt; 1" in text and "relative imbalance" in text
+    out = r.write(tmp_path)
+    assert (out / "temperatures.csv").is_file() and (out / "csr.png").is_file()
+
+
+def test_temperature_errors():
+    r = _results()
+    t = r["temperatures"]
+    measured = pd.DataFrame({"time [s]": t["time [s]"], "TC1": t["housing [degC]"] + 0.5})
+    err = temperature_errors(t, measured, {"TC1": "housing"})
+    assert err.loc[0, "RMSE [K]"] == 0.5 or abs(err.loc[0, "RMSE [K]"] - 0.5) < 1e-12
+    assert abs(err.loc[0, "max error [K]"] - 0.5) < 1e-12
+
+
+def test_writer_appends(tmp_path):
+    w = ResultsWriter(tmp_path)
+    w.append("losses", [{"a": 1, "b": 2}])
+    w.append("losses", [{"a": 3, "b": 4}])
+    df = pd.read_csv(tmp_path / "losses.csv")
+    assert df["a"].tolist() == [1, 3]

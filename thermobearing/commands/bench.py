@@ -1,0 +1,86 @@
+"""``thermobearing bench [NAME ...] [--full] [--json]``: run the benchmark scripts.
+
+Each script in ``benchmarks/bm*.py`` runs ours and its anchor in the same process and
+prints records (benchmark, case, method, setting, time_s, error, ratio_vs_anchor) with
+``--json``. This command runs them one after the other (``--quick`` unless ``--full``),
+collects the records and prints one ratio table (or all records as JSON).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from ..errors import UnknownNameError
+
+NAME = "bench"
+HELP = "run the speed-vs-error benchmarks and print their ratio tables"
+
+
+def benchmarks_dir() -> Path:
+    return Path(__file__).resolve().parents[2] / "benchmarks"
+
+
+def available() -> dict[str, Path]:
+    folder = benchmarks_dir()
+    return {p.stem: p for p in sorted(folder.glob("bm*.py"))}
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("names", nargs="*", help="benchmark script names (default: all)")
+    parser.add_argument("--full", action="store_true", help="full runs instead of --quick")
+    parser.add_argument("--json", action="store_true", help="print every record as JSON")
+
+
+def _parse_records(stdout: str) -> list[dict]:
+    text = stdout.strip()
+    try:
+        data = json.loads(text)
+        return data if isinstance(data, list) else [data]
+    except json.JSONDecodeError:
+        pass
+    records = []
+    for line in text.splitlines():
+        line = line.strip()
+        if line.startswith("{"):
+            try:
+                records.append(json.loads(line))
+            except json.JSONDecodeError:
+                continue
+    return records
+
+
+def run(args: argparse.Namespace) -> int:
+    scripts = available()
+    names = args.names or list(scripts)
+    for n in names:
+        if n not in scripts:
+            raise UnknownNameError("benchmark", n, scripts)
+    all_records: list[dict] = []
+    failed = []
+    for n in names:
+        cmd = [sys.executable, str(scripts[n]), "--json"] + ([] if args.full else ["--quick"])
+        if not args.json:
+            print(f"== {n}", flush=True)
+        proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+        if proc.returncode != 0:
+            failed.append(n)
+            print(f"{n} failed (exit {proc.returncode}):\n{proc.stderr[-2000:]}",
+                  file=sys.stderr)
+            continue
+        recs = _parse_records(proc.stdout)
+        all_records.extend(recs)
+        if not args.json:
+            for r in recs:
+                ratio = r.get("ratio_vs_anchor")
+                err = r.get("max_error_K", r.get("error"))
+                print(f"  {r.get('case', '')!s:28} {r.get('method', '')!s:22} "
+                      f"{r.get('setting', '')!s:14} time {float(r.get('time_s', 'nan')):.4g} s"
+                      + (f"  error {float(err):.3g}" if err is not None else "")
+                      + (f"  ratio {float(ratio):.3g}" if ratio is not None else ""))
+    if args.json:
+        print(json.dumps(all_records, indent=1))
+    return 1 if failed else 0

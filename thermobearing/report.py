@@ -1,0 +1,224 @@
+"""Figures and the self-contained HTML report of a run.
+
+Figures (PNG bytes, matplotlib with the Agg backend):
+
+- temperatures against time, measured data overlaid, with per-sensor RMSE / max error;
+- stacked power-loss bars per operating point (in the style of seed paper 002 Fig. 15);
+- cage speed ratio against axial load with the theoretical ratio (paper 002 Fig. 10);
+- speed x load maps of each loss component and oil-flow what-if curves (from a sweep
+  summary, paper 002 Figs. 16-17).
+
+:func:`html_report` writes one HTML file with every figure embedded as base64, the scene,
+the model chain that ran, its citations, the energy audit and the validity warnings.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import math
+from collections.abc import Mapping, Sequence
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from .results import Results  # noqa: E402
+
+SECTIONS = ("Scene", "Model chain", "Figures", "Energy audit", "Validity warnings",
+            "Tables", "Citations")
+
+
+def _png(fig: plt.Figure) -> bytes:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
+                       column_map: Mapping[str, str]) -> pd.DataFrame:
+    """Per-sensor RMSE and max |error| [K] of the predicted node temperature at the
+    measured times (linear interpolation in time).
+
+    ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
+    and one column per sensor in degC; ``column_map`` maps sensor -> node.
+    """
+    rows = []
+    t_model = temps["time [s]"].to_numpy()
+    for sensor, node in column_map.items():
+        col = f"{node} [degC]"
+        if col not in temps or sensor not in measured:
+            continue
+        t = measured["time [s]"].to_numpy()
+        inside = (t >= t_model[0]) & (t <= t_model[-1])
+        pred = np.interp(t[inside], t_model, temps[col].to_numpy())
+        err = pred - measured[sensor].to_numpy()[inside]
+        if err.size == 0:
+            continue
+        rows.append({"sensor": sensor, "node": node,
+                     "RMSE [K]": float(np.sqrt(np.mean(err**2))),
+                     "max error [K]": float(np.max(np.abs(err))),
+                     "points": int(err.size)})
+    return pd.DataFrame(rows)
+
+
+def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
+                     column_map: Mapping[str, str] | None = None) -> bytes:
+    """Node temperatures [degC] against time [min], measured points overlaid."""
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    t_min = temps["time [s]"].to_numpy() / 60.0
+    for col in temps.columns:
+        if col.endswith("[degC]"):
+            ax.plot(t_min, temps[col], label=col.replace(" [degC]", ""))
+    if measured is not None and column_map:
+        for sensor in column_map:
+            if sensor in measured:
+                ax.plot(measured["time [s]"] / 60.0, measured[sensor], "o", ms=3,
+                        label=f"{sensor} (measured)")
+    ax.set_xlabel("time [min]")
+    ax.set_ylabel("temperature [degC]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    return _png(fig)
+
+
+def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
+    """Stacked power-loss bars [W] per operating step, one colour per source."""
+    df = losses if bearing is None else losses[losses["bearing"] == bearing]
+    pivot = df.pivot_table(index="axial load [kN]", columns="source", values="power [W]",
+                           aggfunc="sum").fillna(0.0)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    bottom = np.zeros(len(pivot))
+    x = np.arange(len(pivot))
+    for src in pivot.columns:
+        ax.bar(x, pivot[src].to_numpy(), bottom=bottom, label=src)
+        bottom += pivot[src].to_numpy()
+    ax.set_xticks(x, [f"{v:g}" for v in pivot.index], rotation=90, fontsize=7)
+    ax.set_xlabel("axial load [kN]")
+    ax.set_ylabel("power loss [W]" + (f" ({bearing})" if bearing else ""))
+    ax.legend(fontsize=7)
+    ax.grid(axis="y", alpha=0.3)
+    return _png(fig)
+
+
+def fig_csr(kin: pd.DataFrame) -> bytes:
+    """Cage speed ratio against axial load, with the theoretical (epicyclic) ratio."""
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for (bearing, rpm), g in kin.groupby(["bearing", "speed [rpm]"]):
+        g = g.sort_values("axial load [kN]")
+        ax.plot(g["axial load [kN]"], g["cage speed ratio [-]"], "o-", ms=3,
+                label=f"{bearing}, {rpm:.0f} r/min")
+        if "theoretical cage speed ratio [-]" in g:
+            ax.plot(g["axial load [kN]"], g["theoretical cage speed ratio [-]"], "k--", lw=0.8)
+    ax.set_xlabel("axial load [kN]")
+    ax.set_ylabel("cage speed ratio CSR [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    return _png(fig)
+
+
+def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
+                  components: Sequence[str]) -> bytes:
+    """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17)."""
+    n = len(components)
+    cols = min(3, n)
+    rows = math.ceil(n / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3.3 * rows), squeeze=False)
+    for ax, comp in zip(axes.flat, components, strict=False):
+        pv = summary.pivot_table(index=y, columns=x, values=comp, aggfunc="mean")
+        cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
+                         levels=12)
+        fig.colorbar(cs, ax=ax)
+        ax.set_title(comp, fontsize=8)
+        ax.set_xlabel(x, fontsize=8)
+        ax.set_ylabel(y, fontsize=8)
+    for ax in list(axes.flat)[n:]:
+        ax.axis("off")
+    return _png(fig)
+
+
+def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
+               group: str | None = None) -> bytes:
+    """What-if curves: each result in ``ys`` against the swept ``x`` (e.g. oil flow)."""
+    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys), 3.5), squeeze=False)
+    groups = summary.groupby(group) if group else [(None, summary)]
+    for key, g in groups:
+        g = g.sort_values(x)
+        for ax, y in zip(axes.flat, ys, strict=True):
+            ax.plot(g[x], g[y], "o-", label=None if key is None else f"{group} = {key}")
+            ax.set_xlabel(x, fontsize=8)
+            ax.set_ylabel(y, fontsize=8)
+            ax.grid(alpha=0.3)
+    if group:
+        axes.flat[0].legend(fontsize=7)
+    return _png(fig)
+
+
+# ---------------------------------------------------------------------------
+def _img(name: str, png: bytes) -> str:
+    data = base64.b64encode(png).decode("ascii")
+    return (f'<figure><img alt="{html.escape(name)}" src="data:image/png;base64,{data}">'
+            f"<figcaption>{html.escape(name)}</figcaption></figure>")
+
+
+def _table(df: pd.DataFrame, max_rows: int = 60) -> str:
+    if df is None or df.empty:
+        return "<p>(empty)</p>"
+    shown = df if len(df) <= max_rows else df.iloc[:: max(1, len(df) // max_rows)]
+    return shown.to_html(index=False, float_format=lambda v: f"{v:.4g}", border=0)
+
+
+def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.DataFrame]
+                | None = None) -> str:
+    """The self-contained HTML report (figures embedded as base64 PNG)."""
+    esc = html.escape
+    parts = [
+        "<!DOCTYPE html><html><head><meta charset='utf-8'>",
+        f"<title>{esc(title)}</title>",
+        "<style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
+        "table{border-collapse:collapse;font-size:12px}td,th{padding:2px 6px;"
+        "border-bottom:1px solid #ddd}figure{margin:1em 0}img{max-width:100%}"
+        "pre{background:#f6f6f6;padding:0.5em;overflow-x:auto;font-size:12px}"
+        ".warn{color:#a40}</style></head><body>",
+        f"<h1>{esc(title)}</h1>",
+        "<h2 id='scene'>Scene</h2>",
+        f"<pre>{esc(results.scene_toml)}</pre>",
+        "<h2 id='model-chain'>Model chain</h2><ol>",
+    ]
+    parts += [f"<li><b>{esc(fam)}</b>: {esc(name)}</li>" for fam, name in results.chain]
+    parts.append("</ol>")
+    stats = {k: v for k, v in results.stats.items() if not isinstance(v, dict | list)}
+    if stats:
+        parts.append("<p>" + ", ".join(f"{esc(str(k))} = {esc(str(v))}"
+                                       for k, v in stats.items()) + "</p>")
+    parts.append("<h2 id='figures'>Figures</h2>")
+    parts += [_img(name, png) for name, png in results.figures.items()]
+    parts.append("<h2 id='energy-audit'>Energy audit</h2>")
+    energy = results.tables.get("energy")
+    if energy is not None and not energy.empty:
+        last = energy.iloc[-1]
+        parts.append(_table(pd.DataFrame([last])))
+        gen = float(last.get("generated [J]", float("nan")))
+        imb = float(last.get("imbalance [J]", float("nan")))
+        if gen and math.isfinite(gen) and math.isfinite(imb):
+            parts.append(f"<p>relative imbalance: {abs(imb) / abs(gen):.3e}</p>")
+    else:
+        parts.append("<p>(no transient run: no energy audit)</p>")
+    parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
+    if results.warnings:
+        parts.append("<ul>" + "".join(f"<li class='warn'>{esc(w)}</li>"
+                                      for w in results.warnings) + "</ul>")
+    else:
+        parts.append("<p>none</p>")
+    parts.append("<h2 id='tables'>Tables</h2>")
+    for name, df in {**results.tables, **(extra_tables or {})}.items():
+        parts.append(f"<h3>{esc(name)}</h3>{_table(df)}")
+    parts.append("<h2 id='citations'>Citations</h2><ol>")
+    parts += [f"<li>{esc(c)}</li>" for c in results.citations]
+    parts.append("</ol></body></html>")
+    return "\n".join(parts)
