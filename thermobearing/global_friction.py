@@ -505,3 +505,29 @@ def palmgren(
     total = comps["M0"] + comps["M1"]
     details = {"f0": f0, "f1": f1, "P1": p1, "d_m_mm": dm, "n_rpm": n, "nu_mm2s": nu}
     return GlobalFrictionResult("palmgren", total, total * speed, comps, details)
+
+
+def global_friction(
+    model: str,
+    bearing: Any,
+    lubricant: Any,
+    temperature: float,
+    speed: float,
+    radial_load: float,
+    axial_load: float = 0.0,
+    *,
+    lubrication: str = "oil_jet",
+    **options: Any,
+) -> GlobalFrictionResult:
+    """Run the registered global model ``model`` with a :class:`~thermobearing.lubricant.Lubricant`.
+
+    The viscosity is the lubricant's kinematic viscosity at ``temperature`` [K] (the
+    catalogue models take the operating viscosity of the bearing); for the SKF model the
+    lubricant's ``kind`` chooses mu_EHL (mineral 0.05, synthetic/ester 0.04) unless
+    ``lubricant_kind`` or ``mu_ehl`` is given in ``options``.
+    """
+    func = GLOBAL_FRICTION.get(model)
+    nu = float(lubricant.kinematic_viscosity(temperature))
+    if model == "skf_four_term":
+        options.setdefault("lubricant_kind", getattr(lubricant, "kind", "mineral"))
+    return func(bearing, nu, speed, radial_load, axial_load, lubrication=lubrication, **options)

@@ -625,6 +625,10 @@ def air_properties(T: ArrayLike, p: ArrayLike = 101325.0) -> AirProperties:
 # ---------------------------------------------------------------------------
 # the Lubricant
 # ---------------------------------------------------------------------------
+def _frozen(mapping: Mapping[str, Any]) -> tuple:
+    return tuple(sorted((k, repr(v)) for k, v in mapping.items()))
+
+
 @dataclass(frozen=True)
 class Lubricant:
     """One lubricant: its laws and their parameters (all SI).
@@ -711,6 +715,14 @@ class Lubricant:
             check_temperature(f"{self.name}.pressure_viscosity.reference_temperature",
                               pp["reference_temperature"])
         LUBRICANT_THERMAL.entry(self.thermal_model)
+
+    def __hash__(self) -> int:  # mappings are not hashable; hash their sorted items
+        return hash((
+            self.name, self.viscosity_law, _frozen(self.viscosity_parameters),
+            self.density_reference, self.density_reference_temperature, self.thermal_expansion,
+            self.density_pressure_law, self.pressure_law, _frozen(self.pressure_parameters),
+            self.alpha_correlation, self.thermal_model, _frozen(self.thermal_parameters),
+        ))
 
     # -- viscosity ----------------------------------------------------------
     def _vt(self, T: ArrayLike) -> ArrayLike:

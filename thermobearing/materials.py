@@ -51,6 +51,10 @@ class Material:
         check_positive(f"{self.name}.specific_heat", self.specific_heat)
         check_positive(f"{self.name}.thermal_conductivity", self.thermal_conductivity)
 
+    def __hash__(self) -> int:  # ``estimated`` is a dict; hash the numbers and the name
+        return hash((self.name, self.youngs_modulus, self.poisson_ratio, self.density,
+                     self.specific_heat, self.thermal_conductivity, self.source))
+
     @property
     def thermal_diffusivity(self) -> float:
         """k / (rho c) [m^2/s]."""

@@ -192,3 +192,20 @@ def test_geometry_objects_are_accepted():
     res = skf_four_term(brg, 20e-6, 2000 * RPM, 2000.0, series="63")
     ref = skf_four_term(B6304, 20e-6, 2000 * RPM, 2000.0, series="63")
     assert res.torque == pytest.approx(ref.torque, rel=0.05)
+
+
+def test_global_friction_with_lubricant():
+    from thermobearing.global_friction import global_friction
+    from thermobearing.lubricant import load_lubricant
+
+    oil = load_lubricant("ISO_VG46")
+    T = 333.15
+    nu = oil.kinematic_viscosity(T)
+    for name in ("skf_four_term", "palmgren"):
+        got = global_friction(name, QJ1044, oil, T, 1800 * RPM, 1000.0, 10000.0)
+        ref = GLOBAL_FRICTION.get(name)(QJ1044, nu, 1800 * RPM, 1000.0, 10000.0)
+        assert got.torque == pytest.approx(ref.torque, rel=1e-12)
+    ester = load_lubricant("MIL_PRF_23699")
+    res = global_friction("skf_four_term", QJ1044, ester, T, 1800 * RPM, 1000.0, 10000.0)
+    # at high n*nu phi_bl -> 0, so mu_sl -> mu_EHL = 0.04 for a synthetic oil
+    assert res.details["mu_sl"] == pytest.approx(0.04, abs=1e-3)
