@@ -1,0 +1,304 @@
+"""Hertz contact: elliptical point contact (exact and closed-form) and line contact.
+
+Conventions (contract): ``effective_modulus`` is E' = 2 / ((1-v1^2)/E1 + (1-v2^2)/E2) (Hamrock's,
+twice Johnson's E*). Reduced radii R_x (rolling direction) and R_y (transverse). The contact
+ellipse has semi-major axis ``a`` and semi-minor axis ``b``; for R_y >= R_x (every ball-raceway
+contact) ``a`` lies along y (transverse, along the groove) and ``b`` along x (rolling).
+Ellipticity k = a/b >= 1.
+
+Exact solution (Hamrock & Brewe 1983, eqs. 1-8; Harris & Kotzalas 2007 vol. 1 ch. 6):
+with the radius ratio alpha_r = R_big/R_small, k solves
+
+    alpha_r = (k^2 E(m) - K(m)) / (K(m) - E(m)),     m = 1 - 1/k^2          (ellipticity eq.)
+
+(K, E the complete elliptic integrals of the first and second kind with parameter m,
+:func:`scipy.special.ellipk`, :func:`scipy.special.ellipe`), and with
+R = 1/(1/R_x + 1/R_y):
+
+    a = (6 k^2 E W R / (pi E'))^(1/3),   b = (6 E W R / (pi k E'))^(1/3),
+    delta = K (9/(2 E R) (W/(pi k E'))^2)^(1/3),   p_max = 3 W / (2 pi a b).
+
+Closed form of Hamrock & Brewe (1983): k = alpha_r^(2/pi), E = 1 + (pi/2 - 1)/alpha_r,
+K = pi/2 + (pi/2 - 1) ln(alpha_r). The older Brewe & Hamrock (1977) fits (k = 1.0339
+alpha_r^0.636, E = 1.0003 + 0.5968/alpha_r, K = 1.5277 + 0.6023 ln alpha_r), used by paper 003
+eqs. 7-9, are available as ``method="brewe_hamrock_1977"``.
+
+Line contact (Hamrock, Schmid & Jacobson 2004 ch. 17; Johnson 1985 section 4.2): load per unit
+length w' = W / l, half-width b = (8 w' R_x / (pi E'))^(1/2), p_max = 2 w'/(pi b) = E' b / (4 R_x).
+Approach of a roller between two races: Palmgren's empirical steel formula
+delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N; Harris & Kotzalas 2007 vol. 1 eq. 6.48), i.e.
+Q = K_l delta^(10/9) with K_l = 8.06e4 l^(8/9) (N, mm).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import warnings
+from typing import Any, NamedTuple
+
+import numpy as np
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
+
+from .errors import ConvergenceError, InputError, ValidityWarning, check_positive
+
+POINT_METHODS = ("exact", "hamrock_brewe", "brewe_hamrock_1977")
+_Q = math.pi / 2.0 - 1.0
+_STEEL_E_PRIME = 2.28e11  # E' of a steel-steel pair [Pa]: E = 207.5 GPa, v = 0.3
+
+
+class PointContact(NamedTuple):
+    """Elliptical Hertz contact (arrays broadcast over the load).
+
+    a : semi-major axis [m]; b : semi-minor axis [m]; max_pressure : p_0 [Pa];
+    approach : mutual approach of distant points delta [m]; ellipticity : k = a/b [-];
+    first_kind, second_kind : complete elliptic integrals K, E used [-].
+    """
+
+    a: Any
+    b: Any
+    max_pressure: Any
+    approach: Any
+    ellipticity: Any
+    first_kind: Any
+    second_kind: Any
+
+
+class LineContact(NamedTuple):
+    """Line (or crowned-roller) contact.
+
+    half_width : b [m] in the rolling direction; max_pressure : p_0 [Pa]; approach : delta [m];
+    contact_length : loaded length [m] (the effective length, or 2a of the elliptical contact of
+    a crowned roller at light load); point_regime : True where the crowned contact is still
+    elliptical (2a < l).
+    """
+
+    half_width: Any
+    max_pressure: Any
+    approach: Any
+    contact_length: Any
+    point_regime: Any
+
+
+# ---------------------------------------------------------------------------
+# ellipticity
+# ---------------------------------------------------------------------------
+def ellipticity_residual(k: float, radius_ratio: float) -> float:
+    """Residual of the exact ellipticity equation, (k^2 E - K) - alpha_r (K - E) (scaled).
+
+    Divided by (K - E) so that the residual is alpha_r(k) - alpha_r [-].
+    """
+    m = 1.0 - 1.0 / k**2
+    big_k, big_e = float(ellipk(m)), float(ellipe(m))
+    return (k**2 * big_e - big_k) / (big_k - big_e) - radius_ratio
+
+
+@functools.lru_cache(maxsize=4096)
+def _exact_k(radius_ratio: float) -> float:
+    if radius_ratio - 1.0 < 1e-12:
+        return 1.0
+    # alpha_r(k) is monotonic increasing with alpha_r(1+) = 1; bracket k in (1, ~alpha_r]
+    lo = 1.0 + 1e-9
+    if ellipticity_residual(lo, radius_ratio) >= 0.0:  # ratio within ~1e-9 of a circle
+        return 1.0
+    hi = max(2.0, radius_ratio ** (2.0 / math.pi) * 1.5)
+    while ellipticity_residual(hi, radius_ratio) < 0.0:
+        hi *= 2.0
+        if hi > 1e8:
+            raise ConvergenceError("hertz ellipticity", radius_ratio,
+                                   "no bracket for the ellipticity", {"ratio": radius_ratio})
+    k = brentq(ellipticity_residual, lo, hi, args=(radius_ratio,), xtol=1e-15, rtol=1e-15,
+               maxiter=200)
+    res = ellipticity_residual(k, radius_ratio)
+    if abs(res) > 1e-10 * radius_ratio:
+        raise ConvergenceError("hertz ellipticity", abs(res), "ellipticity equation",
+                               {"ratio": radius_ratio, "k": k})
+    return float(k)
+
+
+def ellipticity(radius_ratio: Any, method: str = "exact") -> tuple[Any, Any, Any]:
+    """(k, K, E) for a radius ratio alpha_r = R_big/R_small >= 1 (vectorised).
+
+    ``method``: "exact" (solves the ellipticity equation to 1e-10 relative), "hamrock_brewe"
+    (1983 closed form) or "brewe_hamrock_1977" (curve fits).
+    """
+    ratio = np.asarray(radius_ratio, dtype=float)
+    if np.any(~np.isfinite(ratio)) or np.any(ratio < 1.0 - 1e-12):
+        raise InputError("radius_ratio", radius_ratio, "finite values >= 1 (R_big/R_small)")
+    ratio = np.maximum(ratio, 1.0)
+    if method == "exact":
+        flat = ratio.ravel()
+        uniq, inv = np.unique(flat, return_inverse=True)
+        ks = np.array([_exact_k(float(r)) for r in uniq])[inv].reshape(ratio.shape)
+        m = 1.0 - 1.0 / ks**2
+        return ks[()], ellipk(m)[()], ellipe(m)[()]
+    if method == "hamrock_brewe":
+        k = ratio ** (2.0 / math.pi)
+        return k[()], (math.pi / 2 + _Q * np.log(ratio))[()], (1.0 + _Q / ratio)[()]
+    if method == "brewe_hamrock_1977":
+        k = 1.0339 * ratio**0.636
+        return (np.maximum(k, 1.0)[()], (1.5277 + 0.6023 * np.log(ratio))[()],
+                (1.0003 + 0.5968 / ratio)[()])
+    raise InputError("method", method, "one of " + ", ".join(POINT_METHODS))
+
+
+# ---------------------------------------------------------------------------
+# point contact
+# ---------------------------------------------------------------------------
+def _reduced(rx: Any, ry: Any) -> tuple[np.ndarray, np.ndarray]:
+    rx_a = np.asarray(rx, dtype=float)
+    ry_a = np.asarray(ry, dtype=float)
+    check_positive("rx", rx_a)
+    if np.any(np.isnan(ry_a)) or np.any(ry_a <= 0):
+        raise InputError("ry", ry, "a value > 0 (inf for a cylinder)")
+    r = 1.0 / (1.0 / rx_a + 1.0 / ry_a)
+    ratio = np.maximum(rx_a, ry_a) / np.minimum(rx_a, ry_a)
+    return r, ratio
+
+
+def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
+                  method: str = "exact") -> PointContact:
+    """Hertz elliptical contact of two bodies with reduced radii ``rx``, ``ry``.
+
+    Parameters
+    ----------
+    load : normal load W [N] (>= 0; 0 gives zeros), any shape.
+    rx, ry : reduced radii of curvature [m] in the rolling and transverse directions
+        (1/R_x = 1/r_ax + 1/r_bx ...; both finite, > 0).
+    effective_modulus : E' [Pa] (Hamrock convention).
+    method : "exact" | "hamrock_brewe" | "brewe_hamrock_1977".
+
+    Returns
+    -------
+    PointContact(a, b, max_pressure, approach, ellipticity, first_kind, second_kind).
+
+    Notes
+    -----
+    Validity: linear elastic half-spaces, contact small against the radii, frictionless.
+    References: Hamrock & Brewe 1983 (``hamrock_brewe1983``); Harris & Kotzalas 2007.
+    """
+    w = np.asarray(load, dtype=float)
+    check_positive("load", w, allow_zero=True)
+    check_positive("effective_modulus", effective_modulus)
+    if np.any(np.isinf(np.asarray(rx, dtype=float))) or np.any(
+            np.isinf(np.asarray(ry, dtype=float))):
+        raise InputError("ry", ry, "finite radii (use line_contact for a cylinder)")
+    r, ratio = _reduced(rx, ry)
+    k, big_k, big_e = ellipticity(ratio, method)
+    ep = np.asarray(effective_modulus, dtype=float)
+    a = np.cbrt(6.0 * k**2 * big_e * w * r / (math.pi * ep))
+    b = np.cbrt(6.0 * big_e * w * r / (math.pi * k * ep))
+    delta = big_k * np.cbrt(9.0 / (2.0 * big_e * r) * (w / (math.pi * k * ep)) ** 2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = np.where(w > 0, 3.0 * w / (2.0 * math.pi * np.where(w > 0, a * b, 1.0)), 0.0)
+    k_b = np.broadcast_to(k, np.shape(a)) if np.ndim(a) else k
+    return PointContact(a[()], b[()], p[()], delta[()], np.asarray(k_b)[()],
+                        np.broadcast_to(big_k, np.shape(a))[()] if np.ndim(a) else big_k,
+                        np.broadcast_to(big_e, np.shape(a))[()] if np.ndim(a) else big_e)
+
+
+def point_contact_stiffness(rx: Any, ry: Any, effective_modulus: Any,
+                            method: str = "exact") -> Any:
+    """Load-deflection constant K [N/m^1.5] with Q = K delta^1.5.
+
+    K = pi k E' (2 E R / (9 K^3))^(1/2) (Hamrock & Brewe 1983; inverse of ``approach``).
+    """
+    check_positive("effective_modulus", effective_modulus)
+    r, ratio = _reduced(rx, ry)
+    k, big_k, big_e = ellipticity(ratio, method)
+    out = math.pi * k * np.asarray(effective_modulus, dtype=float) * np.sqrt(
+        2.0 * big_e * r / (9.0 * big_k**3))
+    return np.asarray(out)[()]
+
+
+# ---------------------------------------------------------------------------
+# line contact
+# ---------------------------------------------------------------------------
+def palmgren_approach(load: Any, length: Any) -> Any:
+    """Roller-raceway approach [m], delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N), steel on steel.
+
+    Palmgren (1959) as given by Harris & Kotzalas 2007 vol. 1 eq. 6.48; valid for steel rollers
+    and rings (E' about 2.28e11 Pa).
+    """
+    q = np.asarray(load, dtype=float)
+    check_positive("load", q, allow_zero=True)
+    check_positive("length", length)
+    l_mm = np.asarray(length, dtype=float) * 1e3
+    return (3.84e-5 * q**0.9 / l_mm**0.8 * 1e-3)[()]
+
+
+def line_contact_stiffness(length: Any, effective_modulus: Any = _STEEL_E_PRIME) -> Any:
+    """K_l [N/m^(10/9)] with Q = K_l delta^(10/9) from Palmgren's approach formula.
+
+    K_l = 8.06e4 l^(8/9) in N, mm (Harris & Kotzalas 2007 vol. 1 eq. 6.49), converted to SI.
+    Steel only: a different E' warns (:class:`ValidityWarning`) and is not corrected for.
+    """
+    check_positive("length", length)
+    _warn_not_steel(effective_modulus)
+    l_mm = np.asarray(length, dtype=float) * 1e3
+    # Q = (delta_mm l_mm^0.8 / 3.84e-5)^(10/9), delta_mm = 1e3 delta_m
+    return ((1e3 * l_mm**0.8 / 3.84e-5) ** (10.0 / 9.0))[()]
+
+
+def _warn_not_steel(effective_modulus: Any) -> None:
+    ep = np.asarray(effective_modulus, dtype=float)
+    if np.any(np.abs(ep / _STEEL_E_PRIME - 1.0) > 0.15):
+        warnings.warn(
+            f"Palmgren's roller approach is an empirical steel-steel law; E' = "
+            f"{float(np.max(ep)):.3g} Pa differs from steel ({_STEEL_E_PRIME:.3g} Pa)",
+            ValidityWarning, stacklevel=3)
+
+
+def line_contact(load: Any, length: Any, rx: Any, effective_modulus: Any, *,
+                 crown_radius: float | None = None) -> LineContact:
+    """Hertz line contact of a roller of effective ``length`` (optionally crowned).
+
+    Parameters
+    ----------
+    load : normal load Q [N] (>= 0), any shape.
+    length : effective (straight) contact length l [m].
+    rx : reduced radius in the rolling direction [m].
+    effective_modulus : E' [Pa].
+    crown_radius : axial crown radius of a fully crowned roller [m] (None: straight). A
+        crowned contact is elliptical (point contact with R_y = crown_radius) while its major
+        axis 2a is shorter than ``length``; at higher load the line-contact result is used.
+        Edge stresses of a partially crowned roller are not modelled.
+
+    Returns
+    -------
+    LineContact(half_width, max_pressure, approach, contact_length, point_regime)
+
+    Notes
+    -----
+    b = (8 w' R_x/(pi E'))^(1/2), p_0 = 2 w'/(pi b), w' = Q/l (Hamrock et al. 2004, ch. 17;
+    Johnson 1985 eq. 4.45). The approach is Palmgren's steel formula (see
+    :func:`palmgren_approach`); the elastic approach of a 2-D line contact is not defined
+    without the body sizes.
+    """
+    q = np.asarray(load, dtype=float)
+    check_positive("load", q, allow_zero=True)
+    check_positive("length", length)
+    check_positive("rx", rx)
+    check_positive("effective_modulus", effective_modulus)
+    length_a = np.asarray(length, dtype=float)
+    ep = np.asarray(effective_modulus, dtype=float)
+    rx_a = np.asarray(rx, dtype=float)
+    w_line = q / length_a
+    b = np.sqrt(8.0 * w_line * rx_a / (math.pi * ep))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = np.where(q > 0, 2.0 * w_line / (math.pi * np.where(q > 0, b, 1.0)), 0.0)
+    delta = palmgren_approach(q, length_a)
+    contact_len = np.broadcast_to(length_a, np.shape(b)).astype(float)
+    point_regime = np.zeros(np.shape(b), dtype=bool)
+    if crown_radius is not None:
+        check_positive("crown_radius", crown_radius)
+        pc = point_contact(q, rx_a, crown_radius, ep)
+        point_regime = np.asarray((2.0 * pc.a < length_a) & (q > 0))
+        b = np.where(point_regime, pc.b, b)
+        p = np.where(point_regime, pc.max_pressure, p)
+        delta = np.where(point_regime, pc.approach, delta)
+        contact_len = np.where(point_regime, 2.0 * pc.a, contact_len)
+    _warn_not_steel(ep)
+    return LineContact(np.asarray(b)[()], np.asarray(p)[()], np.asarray(delta)[()],
+                       np.asarray(contact_len)[()], np.asarray(point_regime)[()])
