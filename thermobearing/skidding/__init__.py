@@ -1,0 +1,71 @@
+"""Skidding solvers: cage and element speeds from the traction / drag balance.
+
+Public entry point: :func:`solve` dispatches on the bearing type
+
+- :class:`~thermobearing.geometry.BallBearing` -> :func:`thermobearing.skidding.ball.solve_ball`
+  (quasi-dynamic ball/cage/ring equilibrium with gyroscopic moment, four-point contact,
+  over-skidding; seed paper 002);
+- :class:`~thermobearing.geometry.RollerBearing` ->
+  :func:`thermobearing.skidding.roller.solve_roller` (paper 000, Z + 1 equations, whirl).
+
+All inputs SI: ``speed`` inner-ring speed [rad/s], loads [N], ``temperature`` [K].
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..errors import InputError
+
+__all__ = ["solve"]
+
+
+def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_load: float,
+          temperature: float, *, supply: Any = None, params: Any = None, models: Any = None,
+          guess: Any = None, n_balls: int | None = None, oil_temperature: float | None = None,
+          **options: Any) -> Any:
+    """Skidding state of a bearing at one operating point.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing.
+    lubricant : Lubricant.
+    speed : inner-ring speed [rad/s] (outer ring fixed).
+    radial_load, axial_load : [N].
+    temperature : contact / oil temperature [K].
+    supply : OilSupply (ball bearings: sets the oil fraction of the drag models).
+    params : ball bearings: :class:`thermobearing.skidding.ball_models.BallParameters`
+        (e.g. the calibrated set of ``configs/bearings/QJ1044.calibration.toml``).
+    models : ball bearings: ready-made :class:`~thermobearing.skidding.ball.BallModels`
+        (overrides ``params``).
+    guess : previous result of the same bearing (warm start).
+    n_balls : ball bearings: override of the ball count (benchmarks).
+    oil_temperature : churning temperature [K] (default ``temperature``).
+    **options : passed to the type's solver (``tol``, ``max_iter``, roller model options...).
+
+    Returns
+    -------
+    BallSkiddingResult (ball) or the roller solver's result; both carry ``cage_speed_ratio``,
+    ``theoretical_cage_speed_ratio``, ``converged``, ``residual_norm`` and per-element speeds.
+    """
+    from ..geometry import BallBearing, RollerBearing
+
+    if isinstance(bearing, BallBearing) or getattr(bearing, "kind", None) in (
+            "deep_groove", "angular_contact", "four_point"):
+        from .ball import solve_ball
+        from .ball_models import default_ball_models
+
+        if models is None:
+            models = default_ball_models(bearing, lubricant, temperature=temperature,
+                                         speed=speed, supply=supply, params=params,
+                                         oil_temperature=oil_temperature)
+        return solve_ball(bearing, models, speed, radial_load, axial_load, n_balls=n_balls,
+                          guess=guess, **options)
+    if isinstance(bearing, RollerBearing):
+        from .roller import solve_roller
+
+        if guess is not None:
+            options.setdefault("x0", guess)
+        return solve_roller(bearing, lubricant, speed, radial_load, axial_load, temperature,
+                            **options)
+    raise InputError("bearing", type(bearing).__name__, "a BallBearing or a RollerBearing")

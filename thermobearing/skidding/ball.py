@@ -1,0 +1,643 @@
+"""Quasi-dynamic skidding / over-skidding solver of ball bearings (paper 002, QJ1044).
+
+Steady state in the frame that turns with the cage. Every ball orbits with the cage (its
+mean advance in the pocket is zero) and carries, per ball j, six unknowns
+
+    x_j = (b_a, b_r, Omega_a, Omega_r, Omega_t, Q_p)
+
+- ball-centre axial / radial position (b_a, b_r) [m] (the contact angles and loads follow from
+  the raceway arcs of :mod:`thermobearing.loads`, every arc independent: two-, three- and
+  four-point contact of a gothic-arch bearing come out of the geometry);
+- the ball's angular velocity relative to the cage frame Omega [rad/s] in the local axes
+  (a = bearing axis, r = radial, t = orbital direction), i.e. spin magnitude, attitude (pitch)
+  angle beta = atan2(-Omega_r, Omega_a) and yaw angle (Omega_t, the "gyro-slip");
+- the cage-pocket normal force Q_p [N] (positive: the cage pushes the ball forward);
+
+and three global unknowns, the inner-ring displacements (delta_a, delta_r) [m] and the cage
+speed omega_c [rad/s]. Equations per ball (paper 002, Fig. 1(c) and eq. 9 in steady state;
+primer /work/shared/notes/over-skidding.md section 3.4 in vector form):
+
+    sum_k (-Q_k n_k + F_k) + m omega_c^2 b_r e_r - F_drag e_t + Q_p e_t + f_p = 0
+    sum_k (p_k x F_k + M_k) + p_p x f_p - omega_c e_a x (J Omega)            = 0
+
+with F_k, M_k the traction force and moment of contact k integrated over the Hertz ellipse
+with slip and spin by :func:`thermobearing.contact_traction.integrate` (the same code path as
+the raceway heat source, so heat = force x sliding speed), the centrifugal force, the
+churning drag of the ball (paper 002 eq. 10), the pocket force and its friction f_p
+(paper 002 eqs. 6-8 and 19) and the gyroscopic moment ``omega_c e_a x J Omega``
+(= J omega_R omega_m sin(beta) about the tangential axis; primer section 3.3). Globals: inner
+ring force balance (F_a, F_r) and the cage torque balance (pocket forces against the
+cage-guide and cage-churning torque, paper 002 eqs. 5 and 8).
+
+Nothing about over-skidding is imposed: the attitude angle, the contact angles (centrifugal
+splitting of alpha_i / alpha_o, three-point contact against the outer shim angle) and the
+rolling-direction slip all come out of these balances.
+
+Numerics (issue 5 item 4): Newton with a structured forward-difference Jacobian -- the six
+per-ball columns are perturbed for all balls at once (ball blocks are independent except
+through the globals), three more evaluations give the global columns; the 6x6 ball blocks
+are eliminated and the 3x3 Schur complement on the globals is solved; backtracking line
+search on the scaled residual norm; warm starts; continuation in axial load from a
+well-loaded state when a cold start fails. Failure raises ConvergenceError with the residual
+norm and the state.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..contact_traction import integrate
+from ..errors import ConvergenceError, InputError, check_finite, check_positive
+from ..loads import INNER, OUTER, ArcSet, arc_contacts, ball_arcs, ball_load_distribution
+
+__all__ = ["BallModels", "BallSkiddingResult", "solve_ball", "ball_residual_system"]
+
+N_BALL = 6
+N_GLOBAL = 3
+# largest Newton step per scaled unknown (positions in microns, spins / (omega_i d_m / D),
+# pocket force / F_s; ring displacement in microns, cage speed / omega_i)
+_CAP_X = np.array([20.0, 20.0, 0.2, 0.2, 0.2, 5.0])
+_CAP_G = np.array([20.0, 20.0, 0.1])
+
+
+@dataclass(frozen=True)
+class BallModels:
+    """The force models the ball solver balances (all SI).
+
+    Attributes
+    ----------
+    traction_law : a :mod:`thermobearing.traction` law (``shear_stress``).
+    pocket_friction : ball-pocket friction coefficient mu_p [-] (paper 002 eq. 19's f_bp =
+        mu_p F_bp).
+    ball_drag : callable(u [m/s]) -> drag force on one ball [N], u = orbital speed of the ball
+        centre relative to the oil (paper 002 eq. 10).
+    cage_torque : callable(omega_c [rad/s]) -> resisting torque on the cage [N m] (cage-guide
+        hydrodynamic moment, paper 002 eq. 5, plus cage churning, eq. 15 / omega_c).
+    inner_ring_torque : callable(omega_i) -> churning torque on the inner ring [N m] (paper 002
+        eq. 17 / omega_i); enters only the shaft torque and the energy balance.
+    film_thickness : callable(u_e [m/s], Q [N], rx [m], ry [m]) -> central film [m], or None
+        when the traction law needs no film.
+    temperature : contact temperature for the traction law [K].
+    n_major, n_minor : quadrature nodes of the contact integration.
+    oil_speed_ratio : speed of the oil the balls move through, as a fraction of the cage
+        speed [-] (0: oil at rest).
+    drag_radius : radius at which the drag law evaluates the ball speed [m]; the churning
+        heat source uses the pitch radius d_m/2, so with ``drag_radius = d_m/2`` the drag force
+        applied at the ball centre (radius b_r) is scaled by (d_m/2)/b_r so that its power is
+        exactly the source's heat (an O(1e-5) correction). None: the ball-centre radius.
+    """
+
+    traction_law: Any
+    pocket_friction: float
+    ball_drag: Callable[[Any], Any]
+    cage_torque: Callable[[float], float]
+    inner_ring_torque: Callable[[float], float] = lambda w: 0.0
+    film_thickness: Callable[..., Any] | None = None
+    temperature: float | None = None
+    n_major: int = 8
+    n_minor: int = 4
+    oil_speed_ratio: float = 0.0
+    drag_radius: float | None = None
+    parameters: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class BallSkiddingResult:
+    """Converged state of :func:`solve_ball` (arrays per ball, shape (Z,) or (Z, k)).
+
+    Attributes
+    ----------
+    cage_speed_ratio : CSR = omega_c / omega_i [-].
+    theoretical_cage_speed_ratio : (1 - gamma cos alpha)/2 at the quasi-static (zero-speed)
+        contact angle of the load distribution -- the CSR_th line of paper 002 Fig. 10 [-].
+    kinematic_cage_speed_ratio : pure-rolling (outer-race-control) CSR at the *operating*
+        inner/outer contact angles of the loaded balls (primer section 5, solver lesson) [-].
+    over_skid : CSR / CSR_th - 1 [-] (positive: over-skidding, negative: skidding).
+    converged, residual_norm, iterations, wall_time : solver diagnostics.
+    cage_speed : omega_c [rad/s]; inner_speed [rad/s].
+    ball_x, ball_r : ball-centre position [m]; delta_a, delta_r : ring displacement [m].
+    spin : Omega (Z, 3) relative to the cage [rad/s]; spin_speed |Omega| [rad/s];
+    attitude_angle : beta = atan2(-Omega_r, Omega_a) [rad]; yaw_angle [rad].
+    pocket_force : Q_p [N].
+    normal_load, contact_angle : (Z, k) per raceway arc [N], [rad]; ring (k,) 0/1.
+    sliding_speed, transverse_sliding_speed, spin_speed_contact, entrainment_speed : (Z, k).
+    heat : dict of total heat by component [W]; shaft_torque [N m].
+    kinematic_state : :class:`thermobearing.state.KinematicState` for the heat sources.
+    """
+
+    cage_speed_ratio: float
+    theoretical_cage_speed_ratio: float
+    kinematic_cage_speed_ratio: float
+    over_skid: float
+    converged: bool
+    residual_norm: float
+    iterations: int
+    wall_time: float
+    inner_speed: float
+    cage_speed: float
+    ball_x: np.ndarray
+    ball_r: np.ndarray
+    delta_a: float
+    delta_r: float
+    spin: np.ndarray
+    spin_speed: np.ndarray
+    attitude_angle: np.ndarray
+    yaw_angle: np.ndarray
+    pocket_force: np.ndarray
+    normal_load: np.ndarray
+    contact_angle: np.ndarray
+    ring: np.ndarray
+    sliding_speed: np.ndarray
+    transverse_sliding_speed: np.ndarray
+    spin_speed_contact: np.ndarray
+    entrainment_speed: np.ndarray
+    heat: dict
+    shaft_torque: float
+    kinematic_state: Any
+    unknowns: np.ndarray = field(repr=False, default=None)
+    extra: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def slip(self) -> float:
+        """Cage slip relative to CSR_th: 1 - CSR/CSR_th (positive = skidding) [-]."""
+        return -self.over_skid
+
+    @property
+    def orbital_speed(self) -> np.ndarray:
+        return np.full(self.ball_x.shape, self.cage_speed)
+
+
+# ---------------------------------------------------------------------------------------------
+# the residual system
+# ---------------------------------------------------------------------------------------------
+class ball_residual_system:  # noqa: N801 - used like a function returning an object
+    """Residual of the ball/cage/ring equilibrium at one operating point.
+
+    ``evaluate(X, G)`` with X (Z, 6) ball unknowns (SI) and G (3,) globals (SI) returns the
+    scaled ball residuals (Z, 6), the per-ball contributions to the global residuals (Z, 3),
+    the constant part of the global residuals (3,) and a dict of details.
+    """
+
+    def __init__(self, bearing, models: BallModels, speed: float, radial_load: float,
+                 axial_load: float, n_balls: int | None = None) -> None:
+        self.bearing = bearing
+        self.models = models
+        self.speed = float(speed)
+        self.Fr = float(radial_load)
+        self.Fa = float(axial_load)
+        self.arcs: ArcSet = ball_arcs(bearing)
+        self.Z = int(n_balls or bearing.n_balls)
+        self.psi = 2.0 * np.pi * np.arange(self.Z) / self.Z
+        self.D = self.arcs.ball_diameter
+        self.Rm = self.arcs.pitch_radius
+        self.m = float(bearing.ball_mass)
+        self.J = float(bearing.ball_inertia)
+        self.Ep = float(bearing.effective_modulus)
+        self.inner = self.arcs.ring == INNER
+        self.rd = 2.0 * self.arcs.conformity * self.D / (2.0 * self.arcs.conformity + 1.0)
+        w = abs(self.speed)
+        fc = self.m * (0.5 * w) ** 2 * self.Rm
+        self.F_s = max(abs(self.Fa) / self.Z, self.Fr / self.Z, fc, 10.0)
+        self.M_s = self.F_s * 0.5 * self.D
+        self.T_s = self.F_s * self.Rm
+        self.w_s = max(w, 1e-3)
+        self.n_eval = 0
+
+    # -- kinematics and forces ------------------------------------------------------------
+    def _contacts(self, X, G):
+        cf = arc_contacts(self.bearing, self.arcs, X[:, 0], X[:, 1], G[0], G[1], self.psi)
+        return cf
+
+    def evaluate(self, X: np.ndarray, G: np.ndarray, details: bool = False):
+        """Scaled residuals; see the class docstring."""
+        self.n_eval += 1
+        md = self.models
+        Z, D = self.Z, self.D
+        wi, wc = self.speed, G[2]
+        cf = self._contacts(X, G)
+        Q = cf.load
+        na, nr = cf.normal_x, cf.normal_r                     # (Z, k) unit, arc centre -> ball
+        half = 0.5 * D - 0.5 * np.maximum(cf.approach, 0.0)   # lever to the contact centre
+        pa, pr = half * na, half * nr                         # contact point - ball centre
+        br = X[:, 1:2]
+        Oa, Or, Ot = X[:, 2:3], X[:, 3:4], X[:, 4:5]
+        w_race = np.where(self.inner, wi, 0.0)[None, :]
+        # absolute velocities (a, r, t components) at the contact point
+        Rr = br + pr
+        # Omega x p with p = (pa, pr, 0): (Or*0 - Ot*pr, Ot*pa - Oa*0, Oa*pr - Or*pa)
+        vx_b = -Ot * pr
+        vr_b = Ot * pa
+        vt_b = wc * Rr + Oa * pr - Or * pa
+        vt_race = w_race * Rr
+        Va, Vr, Vt = vx_b, vr_b, vt_b - vt_race                # element minus race
+        # contact frame: e_x = (nr, -na, 0), e_y = e_t, e_z = -n
+        Vx = Va * nr - Vr * na
+        Vy = Vt
+        wa_rel = wc + Oa - w_race
+        Om_x = wa_rel * nr - Or * na
+        Om_y = np.broadcast_to(Ot, Q.shape)
+        Om_z = -(wa_rel * na + Or * nr)
+        # Hertz ellipse
+        a_ell, b_ell, p0, rx, ry = self._hertz(Q, cf.contact_angle)
+        ue = 0.5 * ((Oa * pr - Or * pa) + (w_race - wc) * Rr)
+        film = None
+        if md.film_thickness is not None:
+            film = md.film_thickness(np.abs(ue), Q, rx, ry)
+        tr = integrate(md.traction_law, normal_load=Q, semi_major=a_ell, semi_minor=b_ell,
+                       sliding_speed=Vy, transverse_sliding_speed=Vx, spin_speed=Om_z,
+                       roll_speed=Om_x, tilt_speed=Om_y, deformed_radius=self.rd[None, :],
+                       film_thickness=film, temperature=md.temperature, n_major=md.n_major,
+                       n_minor=md.n_minor)
+        Fx, Fy = tr.transverse_force, tr.rolling_force
+        Mx, My, Mz = tr.moment_transverse, tr.moment_rolling, tr.moment_normal
+        # contact force on the ball in (a, r, t)
+        Fa_k = -Q * na + Fx * nr
+        Fr_k = -Q * nr - Fx * na
+        Ft_k = Fy
+        # moment about the ball centre: p x F_tan + M (e_x, e_y, e_z)
+        # p x F with p = (pa, pr, 0), F = (Fa, Fr, Ft): (pr*Ft, -pa*Ft, pa*Fr - pr*Fa)
+        Ma_k = pr * Ft_k + Mx * nr - Mz * na
+        Mr_k = -pa * Ft_k - Mx * na - Mz * nr
+        Mt_k = pa * Fr_k - pr * Fa_k + My
+        # pocket: contact point p_c = (0, 0, -s D/2), friction f = mu Q_p w_hat with
+        # w = Omega x (D/2) e_t = (D/2)(Or, -Oa, 0) (ball surface velocity at +t, rel. cage)
+        Qp = X[:, 5]
+        s = np.where(Qp >= 0.0, 1.0, -1.0)
+        wa_, wr_ = 0.5 * D * X[:, 3], -0.5 * D * X[:, 2]
+        wn = np.hypot(wa_, wr_)
+        veps = 1e-6 * max(abs(wi) * self.Rm, 1e-3)
+        wden = np.sqrt(wn * wn + veps * veps)
+        mu_p = md.pocket_friction
+        fpa = mu_p * Qp * wa_ / wden
+        fpr = mu_p * Qp * wr_ / wden
+        pct = -s * 0.5 * D
+        # p_c x f_p with p_c = (0, 0, pct), f = (fpa, fpr, 0): (-pct*fpr, pct*fpa, 0)
+        Mpa, Mpr = -pct * fpr, pct * fpa
+        # drag and centrifugal
+        r_drag = X[:, 1] if md.drag_radius is None else md.drag_radius
+        u_ball = (wc * (1.0 - md.oil_speed_ratio)) * r_drag
+        Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball) * (
+            r_drag / X[:, 1])
+        Fc = self.m * wc * wc * X[:, 1]
+        J = self.J
+        R = np.empty((Z, N_BALL))
+        R[:, 0] = (Fa_k.sum(1) + fpa) / self.F_s
+        R[:, 1] = (Fr_k.sum(1) + fpr + Fc) / self.F_s
+        R[:, 2] = (Ft_k.sum(1) - Fd + Qp) / self.F_s
+        # gyroscopic: required moment omega_c e_a x J Omega = J wc (0, -Ot, Or)
+        R[:, 3] = (Ma_k.sum(1) + Mpa) / self.M_s
+        R[:, 4] = (Mr_k.sum(1) + Mpr + J * wc * X[:, 4]) / self.M_s
+        R[:, 5] = (Mt_k.sum(1) - J * wc * X[:, 3]) / self.M_s
+        # global contributions: ring force (reaction of inner contacts), cage torque
+        inn = self.inner[None, :]
+        ring_a = -np.where(inn, Fa_k, 0.0).sum(1)
+        ring_r = -np.where(inn, Fr_k, 0.0).sum(1) * np.cos(self.psi)
+        # torque on the cage about the axis from ball j: force -(fpa, fpr, Qp) at (ba, br, pct)
+        cage = -X[:, 1] * Qp + pct * fpr
+        Gc = np.stack([ring_a / self.F_s, ring_r / self.F_s, cage / self.T_s], axis=1)
+        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s,
+                       -float(md.cage_torque(wc)) / self.T_s])
+        if not details:
+            return R, Gc, G0, None
+        # heat and shaft torque (energy audit)
+        contact_heat = tr.heat
+        pocket_heat = -(fpa * (-s * wa_) + fpr * (-s * wr_))  # -f . v_rel, v_rel = -s w
+        drag_heat = Fd * wc * X[:, 1]   # power given to the oil (all dissipated)
+        cage_heat = float(md.cage_torque(wc)) * wc
+        inner_torque = float(md.inner_ring_torque(wi))
+        # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
+        Rp_r = br + pr
+        shaft = np.sum(np.where(inn, Rp_r * Ft_k + (Mx * nr - Mz * na), 0.0)) + inner_torque
+        det = dict(cf=cf, a=a_ell, b=b_ell, p0=p0, rx=rx, ry=ry, film=film, Vx=Vx, Vy=Vy,
+                   Om_x=Om_x, Om_y=Om_y, Om_z=Om_z, ue=ue, tr=tr, Fd=Fd, u_ball=u_ball,
+                   pocket_heat=pocket_heat, contact_heat=contact_heat, drag_heat=drag_heat,
+                   cage_heat=cage_heat, inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
+                   pocket_sliding=wn, Fc=Fc)
+        return R, Gc, G0, det
+
+    def _hertz(self, Q, alpha):
+        from ..hertz import point_contact
+
+        a = np.zeros_like(Q)
+        b = np.zeros_like(Q)
+        p0 = np.zeros_like(Q)
+        rx = np.empty_like(Q)
+        ry = np.empty_like(Q)
+        for ring, race in ((INNER, "inner"), (OUTER, "outer")):
+            sel = np.broadcast_to(self.arcs.ring == ring, Q.shape)
+            x, y = self.bearing.curvature(race, np.abs(alpha[sel]))
+            rx[sel], ry[sel] = x, y
+        loaded = Q > 0
+        if np.any(loaded):
+            pc = point_contact(Q[loaded], rx[loaded], ry[loaded], self.Ep, method="hamrock_brewe")
+            a[loaded], b[loaded], p0[loaded] = pc.a, pc.b, pc.max_pressure
+        return a, b, p0, rx, ry
+
+    # -- full residual vector (for scipy comparisons) -------------------------------------
+    def full_residual(self, y: np.ndarray, x_ref: np.ndarray, g_ref: np.ndarray) -> np.ndarray:
+        """Residual of the flat scaled unknown vector ``y`` (Z*6 + 3,)."""
+        X, G = self.unscale(y, x_ref, g_ref)
+        R, Gc, G0, _ = self.evaluate(X, G)
+        return np.concatenate([R.ravel(), Gc.sum(0) + G0])
+
+    # scaling of the unknowns: positions in microns from a reference, spins by omega_i d_m/D,
+    # pocket force by F_s, ring displacement in microns, cage speed by omega_i
+    def scales(self):
+        ws = self.w_s * 2.0 * self.Rm / self.D
+        xs = np.array([1e-6, 1e-6, ws, ws, ws, self.F_s])
+        gs = np.array([1e-6, 1e-6, self.w_s])
+        return xs, gs
+
+    def unscale(self, y, x_ref, g_ref):
+        xs, gs = self.scales()
+        Z = self.Z
+        X = x_ref + y[: Z * N_BALL].reshape(Z, N_BALL) * xs
+        G = g_ref + y[Z * N_BALL:] * gs
+        return X, G
+
+
+# ---------------------------------------------------------------------------------------------
+# Newton with block elimination
+# ---------------------------------------------------------------------------------------------
+def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
+                 tol: float = 1e-10, max_iter: int = 60, fd_step: float = 1e-6,
+                 max_step: float = 1.0):
+    """Damped Newton on (X, G) with the structured finite-difference Jacobian.
+
+    Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
+    """
+    xs, gs = system.scales()
+    Z = system.Z
+    X, G = X0.copy(), G0.copy()
+
+    def norm_of(R, Gc, Gk):
+        return float(np.sqrt(np.sum(R * R) + np.sum((Gc.sum(0) + Gk) ** 2)))
+
+    R, Gc, Gk, _ = system.evaluate(X, G)
+    nrm = norm_of(R, Gc, Gk)
+    it = 0
+    while nrm > tol and it < max_iter:
+        it += 1
+        A = np.empty((Z, N_BALL, N_BALL))
+        C = np.empty((Z, N_GLOBAL, N_BALL))
+        for c in range(N_BALL):
+            h = fd_step
+            Xp = X.copy()
+            Xp[:, c] += h * xs[c]
+            Rp, Gcp, _, _ = system.evaluate(Xp, G)
+            A[:, :, c] = (Rp - R) / h
+            C[:, :, c] = (Gcp - Gc) / h
+        B = np.empty((Z, N_BALL, N_GLOBAL))
+        Dg = np.empty((N_GLOBAL, N_GLOBAL))
+        for c in range(N_GLOBAL):
+            h = fd_step
+            Gp = G.copy()
+            Gp[c] += h * gs[c]
+            Rp, Gcp, Gkp, _ = system.evaluate(X, Gp)
+            B[:, :, c] = (Rp - R) / h
+            Dg[:, c] = ((Gcp.sum(0) + Gkp) - (Gc.sum(0) + Gk)) / h
+        try:
+            Ainv_R = np.linalg.solve(A, R[:, :, None])          # (Z, 6, 1)
+            Ainv_B = np.linalg.solve(A, B)                      # (Z, 6, 3)
+        except np.linalg.LinAlgError:
+            raise ConvergenceError("skidding.ball", nrm, "singular ball block",
+                                   {"iteration": it}) from None
+        S = Dg - np.einsum("zgi,zij->gj", C, Ainv_B)
+        rhs = -(Gc.sum(0) + Gk) + np.einsum("zgi,zi->g", C, Ainv_R[:, :, 0])
+        try:
+            dG = np.linalg.solve(S, rhs)
+        except np.linalg.LinAlgError:
+            dG = np.linalg.lstsq(S, rhs, rcond=None)[0]
+        dX = -Ainv_R[:, :, 0] - np.einsum("zij,j->zi", Ainv_B, dG)
+        big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
+        lam = min(1.0, max_step / big) if big > 0 else 1.0
+        while True:
+            Xn = X + lam * dX * xs
+            Gn = G + lam * dG * gs
+            ok = True
+            try:
+                Rn, Gcn, Gkn, _ = system.evaluate(Xn, Gn)
+                nn = norm_of(Rn, Gcn, Gkn)
+                ok = np.isfinite(nn)
+            except (InputError, FloatingPointError, ValueError):
+                ok, nn = False, np.inf
+            if ok and (nn < (1 - 1e-4 * lam) * nrm or lam < 1e-3):
+                break
+            lam *= 0.5
+            if lam < 1e-6:
+                break
+        if not ok or lam < 1e-6:
+            raise ConvergenceError("skidding.ball", nrm, "line search failed",
+                                   {"iteration": it, "cage_speed": G[2]})
+        X, G, R, Gc, Gk, nrm = Xn, Gn, Rn, Gcn, Gkn, nn
+    if not nrm <= tol:
+        raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
+                               {"cage_speed": G[2], "delta_a": G[0], "delta_r": G[1]})
+    return X, G, nrm, it
+
+
+# ---------------------------------------------------------------------------------------------
+# initial state from the load distribution and race control
+# ---------------------------------------------------------------------------------------------
+def race_control_guess(bearing, speed, radial_load, axial_load, n_balls=None):
+    """Ball positions from :func:`ball_load_distribution` and outer-race-control spin.
+
+    The spin vector follows the primer's (K1)-(K2) with the outer-race-control attitude
+    tan(beta) = sin(alpha_o)/(cos(alpha_o) + gamma') (primer section 2.3), gamma' = D/d_m.
+    """
+    D = float(bearing.ball_diameter)
+    dm = float(bearing.pitch_diameter)
+    a0 = float(bearing.contact_angle)
+    wm0 = 0.5 * speed * (1.0 - D * np.cos(a0) / dm)
+    ld = ball_load_distribution(bearing, radial_load, axial_load, speed, orbital_speed=wm0,
+                                n_balls=n_balls)
+    ai, ao = ld.inner_contact_angle, ld.outer_contact_angle
+    g = D / dm
+    beta = np.arctan2(np.sin(ao), np.cos(ao) + g) * (1.0 if axial_load >= 0 else -1.0)
+    ao = ao * (1.0 if axial_load >= 0 else -1.0)
+    ai = ai * (1.0 if axial_load >= 0 else -1.0)
+    T = np.tan(beta)
+    ci, co = np.cos(ai), np.cos(ao)
+    si, so = np.sin(ai), np.sin(ao)
+    num = (1 - g * ci) * (co + T * so)
+    wm = speed * num / (num + (1 + g * co) * (ci + T * si))
+    wR = -speed / (g * np.cos(beta) * ((co + T * so) / (1 + g * co) + (ci + T * si) / (1 - g * ci)))
+    # Omega = wR (cos beta, 0, -sin beta) in (a, r=z', t) -> components (a, r, t)
+    X = np.zeros((ld.ball_x.size, N_BALL))
+    X[:, 0], X[:, 1] = ld.ball_x, ld.ball_r
+    X[:, 2] = wR * np.cos(beta)
+    X[:, 3] = -wR * np.sin(beta)
+    G = np.array([ld.delta_a, ld.delta_r, float(np.mean(wm))])
+    return X, G, ld
+
+
+# ---------------------------------------------------------------------------------------------
+def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
+               axial_load: float, *, n_balls: int | None = None,
+               guess: BallSkiddingResult | None = None, tol: float = 1e-10,
+               max_iter: int = 60, continuation: bool = True,
+               theoretical_reference=None) -> BallSkiddingResult:
+    """Solve the ball/cage/ring equilibrium at one operating point.
+
+    Parameters
+    ----------
+    bearing : BallBearing.
+    models : BallModels (traction law, drag, cage torque, pocket friction).
+    speed : inner-ring speed [rad/s] (> 0; outer ring fixed).
+    radial_load, axial_load : [N] on the inner ring.
+    n_balls : override Z (benchmarks).
+    guess : previous result for a warm start.
+    tol : tolerance on the scaled residual norm (forces / F_s, moments / (F_s D/2)).
+    continuation : on a cold-start failure, continue from a higher axial load.
+
+    Returns
+    -------
+    BallSkiddingResult
+    """
+    check_positive("speed", speed)
+    check_positive("radial_load", radial_load, allow_zero=True)
+    check_finite("axial_load", axial_load)
+    t0 = time.perf_counter()
+    system = ball_residual_system(bearing, models, speed, radial_load, axial_load, n_balls)
+    iters = 0
+    if guess is not None and guess.ball_x.size == system.Z:
+        X0 = guess.unknowns[0].copy()
+        G0 = guess.unknowns[1].copy()
+        G0[2] = guess.cage_speed_ratio * speed
+        X0[:, 2:5] *= speed / guess.inner_speed
+        try:
+            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
+        except ConvergenceError:
+            guess = None
+    if guess is None:
+        X0, G0, _ = race_control_guess(bearing, speed, radial_load, axial_load, n_balls)
+        try:
+            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
+        except ConvergenceError as err:
+            if not continuation:
+                raise
+            X, G, nrm, iters = _continuation(bearing, models, speed, radial_load, axial_load,
+                                             n_balls, tol, max_iter, err)
+    return _result(system, X, G, nrm, iters, time.perf_counter() - t0, theoretical_reference)
+
+
+def _continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
+                  err):
+    """Continuation in axial load from a well-loaded state (issue 5 item 4)."""
+    Z = int(n_balls or bearing.n_balls)
+    fc = bearing.ball_mass * (0.25 * speed) ** 2 * 0.5 * bearing.pitch_diameter
+    F_hi = max(abs(axial_load), Z * fc * 4.0, 5000.0) * (1 if axial_load >= 0 else -1)
+    loads = np.concatenate([[F_hi], F_hi * np.geomspace(1.0, 1e-3, 13)[1:], [0.0]])
+    loads = loads[np.abs(loads) > abs(axial_load)]
+    loads = np.append(loads, axial_load)
+    X = G = None
+    total = 0
+    for Fa in loads:
+        system = ball_residual_system(bearing, models, speed, radial_load, Fa, n_balls)
+        if X is None:
+            X, G, _ = race_control_guess(bearing, speed, radial_load, Fa, n_balls)
+        try:
+            X, G, nrm, it = newton_block(system, X, G, tol=tol, max_iter=max_iter)
+        except ConvergenceError as e2:
+            raise ConvergenceError("skidding.ball", e2.residual,
+                                   f"continuation failed at axial load {Fa:.6g} N "
+                                   f"(cold start: {err})", {**e2.state, "axial_load": Fa}) from None
+        total += it
+    return X, G, nrm, total
+
+
+def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
+    from ..state import ContactSet, KinematicState
+
+    R, Gc, G0, det = system.evaluate(X, G, details=True)
+    b = system.bearing
+    cf = det["cf"]
+    Q = cf.load
+    wi, wc = system.speed, G[2]
+    csr = wc / wi
+    inner = system.inner
+    from ..loads import ring_weighted_angle
+
+    a0 = float(b.contact_angle)
+    ai = ring_weighted_angle(Q, cf.contact_angle, inner, a0)
+    ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, a0)
+    loaded = (np.where(inner[None, :], Q, 0).sum(1) > 0)
+    w = np.where(inner[None, :], Q, 0).sum(1)
+    if np.any(loaded):
+        ai_m = float(np.sum(w * ai) / np.sum(w))
+        ao_m = float(np.sum(w * ao) / np.sum(w))
+    else:
+        ai_m = ao_m = a0
+    g = b.ball_diameter / b.pitch_diameter
+    kin = float((1 - g * np.cos(ai_m)) / (1 + np.cos(ai_m - ao_m)))
+    if theoretical_reference is None:
+        theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
+    th = float(theoretical_reference)
+    Om = X[:, 2:5]
+    spin = np.linalg.norm(Om, axis=1)
+    beta = np.arctan2(Om[:, 1], -Om[:, 0])
+    yaw = np.arctan2(Om[:, 2], np.hypot(Om[:, 0], Om[:, 1]))
+    heat = {"raceway": float(np.sum(det["contact_heat"])),
+            "raceway_inner": float(np.sum(np.where(inner[None, :], det["contact_heat"], 0))),
+            "raceway_outer": float(np.sum(np.where(~inner[None, :], det["contact_heat"], 0))),
+            "ball_pocket": float(np.sum(det["pocket_heat"])),
+            "ball_drag": float(np.sum(det["drag_heat"])),
+            "cage": float(det["cage_heat"]),
+            "inner_ring_churning": float(det["inner_churn_heat"])}
+    heat["total"] = float(sum(v for k, v in heat.items()
+                              if k not in ("raceway_inner", "raceway_outer")))
+    names = []
+    sets = []
+    for k in range(system.arcs.n_arcs):
+        race = ("inner" if inner[k] else "outer")
+        nth = int(np.sum((inner == inner[k])[:k]))
+        name = race if nth == 0 else f"{race}_{nth + 1}"
+        names.append(name)
+        sets.append(ContactSet(
+            race=name, normal_load=Q[:, k], semi_major=det["a"][:, k], semi_minor=det["b"][:, k],
+            max_pressure=det["p0"][:, k], contact_angle=np.abs(cf.contact_angle[:, k]),
+            entrainment_speed=np.abs(det["ue"][:, k]), sliding_speed=det["Vy"][:, k],
+            transverse_sliding_speed=det["Vx"][:, k], spin_speed=det["Om_z"][:, k],
+            roll_speed=det["Om_x"][:, k], tilt_speed=det["Om_y"][:, k],
+            deformed_radius=system.rd[k],
+            film_thickness=None if det["film"] is None else np.maximum(det["film"][:, k], 0.0),
+            temperature=system.models.temperature,
+            reduced_radius_x=det["rx"][:, k], reduced_radius_y=det["ry"][:, k]))
+    ks = KinematicState(
+        inner_speed=wi, outer_speed=0.0, cage_speed=wc, orbital_speed=np.full(system.Z, wc),
+        element_spin=spin, contacts=tuple(sets), attitude_angle=beta, azimuth=system.psi,
+        pocket_normal_force=np.abs(X[:, 5]), pocket_sliding_speed=det["pocket_sliding"],
+        element_drag_force=np.abs(det["Fd"]), origin="skidding",
+        extras={"solver_heat": heat, "shaft_torque": det["shaft_torque"]})
+    return BallSkiddingResult(
+        cage_speed_ratio=float(csr), theoretical_cage_speed_ratio=th,
+        kinematic_cage_speed_ratio=kin, over_skid=float(csr / th - 1.0), converged=True,
+        residual_norm=float(nrm), iterations=int(iters), wall_time=float(wall), inner_speed=wi,
+        cage_speed=float(wc), ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
+        delta_r=float(G[1]), spin=Om.copy(), spin_speed=spin, attitude_angle=beta,
+        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=Q, contact_angle=cf.contact_angle,
+        ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
+        spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
+        shaft_torque=float(det["shaft_torque"]), kinematic_state=ks, unknowns=(X, G),
+        extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
+               "race_names": names, "residual": R})
+
+
+def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:
+    """Paper 002's CSR_th: (1 - gamma cos alpha)/2 at the quasi-static contact angle.
+
+    alpha is the load-weighted inner contact angle of the zero-speed load distribution under
+    the same radial and axial load (paper 002 section 4.1: CSR_th follows the contact-angle
+    distribution at 1 kN radial load and the applied axial load).
+    """
+    ld = ball_load_distribution(bearing, radial_load, axial_load, 0.0, n_balls=n_balls)
+    w = ld.inner_load
+    alpha = (float(np.sum(w * ld.inner_contact_angle) / np.sum(w)) if np.sum(w) > 0
+             else float(bearing.contact_angle))
+    g = bearing.ball_diameter * np.cos(alpha) / bearing.pitch_diameter
+    return float(0.5 * (1.0 - g))
