@@ -1,0 +1,56 @@
+"""Property test: random connected networks conserve energy and reach their steady state."""
+
+from __future__ import annotations
+
+import numpy as np
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from thermobearing.network import ThermalNetwork, integrate, solve_steady
+
+
+@st.composite
+def networks(draw):
+    n = draw(st.integers(2, 7))
+    caps = draw(st.lists(st.floats(1.0, 1e4), min_size=n, max_size=n))
+    net = ThermalNetwork("random")
+    net.add_boundary("amb", draw(st.floats(250.0, 350.0)))
+    for i, c in enumerate(caps):
+        net.add_node(f"n{i}", c)
+    g = st.floats(0.1, 100.0)
+    resist = 0.0
+    # a random spanning tree keeps it connected ...
+    for i in range(1, n):
+        j = draw(st.integers(0, i - 1))
+        w = draw(g)
+        resist += 1.0 / w
+        net.add_edge(f"n{i}", f"n{j}", w)
+    # ... plus random extra edges and at least one path to ambient
+    for _ in range(draw(st.integers(0, n))):
+        a, b = draw(st.integers(0, n - 1)), draw(st.integers(0, n - 1))
+        if a != b:
+            net.add_edge(f"n{a}", f"n{b}", draw(g))
+    w = draw(g)
+    resist += 1.0 / w
+    net.add_edge(f"n{draw(st.integers(0, n - 1))}", "amb", w)
+    heat = np.array(draw(st.lists(st.floats(1.0, 500.0), min_size=n, max_size=n)))
+    t_end = 40.0 * sum(caps) * resist  # >> slowest time constant
+    return net, heat, t_end
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(networks())
+def test_random_networks_conserve_energy_and_reach_steady(case):
+    net, heat, t_end = case
+    T_amb = net.boundary_temperature("amb")
+    res = integrate(net, heat, (0.0, t_end), T_amb, rtol=1e-9, atol=1e-9)
+    assert res.audit.relative_imbalance() < 1e-9
+    assert np.all(np.isfinite(res.temperatures))
+    steady = solve_steady(net, heat).temperatures_vector
+    scale = max(1.0, float(np.max(steady - T_amb)))
+    np.testing.assert_allclose(res.temperatures[-1], steady, atol=1e-5 * scale, rtol=0)
+    # energy: generated = stored + to ambient (no streams here)
+    tot = res.audit.totals()
+    stored = float(np.dot([net.capacity(n) for n in net.state_nodes],
+                          res.temperatures[-1] - T_amb))
+    assert abs(tot["stored"] - stored) <= 1e-9 * max(1.0, abs(stored))

@@ -1,0 +1,37 @@
+"""Thermal network of a bearing assembly and its implicit transient solvers.
+
+- :class:`ThermalNetwork` (:mod:`.graph`): nodes with capacities [J/K] (0 allowed) or fixed
+  temperatures [K], edges with conductance models (:mod:`.conductances`, registry
+  ``conductance``), directed oil enthalpy streams, roles and groups (one per bearing).
+- :func:`assemble` (:mod:`.assemble`): C, K, s of ``C dT/dt = -K T + s + q(t, T)``.
+- :func:`integrate`, :class:`TransientStepper`, :func:`solve_steady` (:mod:`.steppers`,
+  registry ``stepper``): TR-BDF2 (default), backward Euler; energy audit (:mod:`.audit`).
+- templates (:mod:`.templates`, registry ``network_template``): the four-node network of
+  paper 002 and a finer seven-node one, from a bearing and a lubricant.
+
+Quick use::
+
+    from thermobearing.network import ThermalNetwork, integrate, solve_steady
+    net = ThermalNetwork()
+    net.add_boundary("ambient", 308.15)
+    net.add_node("housing", 6.0e4, role="outer_ring")
+    net.add_edge("housing", "ambient", 5.0)
+    res = integrate(net, lambda t, T: [200.0], (0.0, 3600.0), 308.15,
+                    breakpoints=[600.0])
+    res.temperature("housing"), res.audit.totals()
+
+``heat(t, T)``: T over ``network.state_nodes`` [K]; returns W per state node (array, or
+dict by node name; :meth:`ThermalNetwork.distribute` maps heat-source roles to nodes).
+"""
+
+from .assemble import Assembler, System, assemble
+from .audit import EnergyAudit, SteadyResult, TransientResult
+from .conductances import CONDUCTANCE, ConductanceModel
+from .graph import ROLES, Stream, ThermalNetwork
+from .steppers import STEPPERS, StepOutcome, TransientStepper, integrate, solve_steady
+
+__all__ = [
+    "CONDUCTANCE", "ROLES", "STEPPERS", "Assembler", "ConductanceModel", "EnergyAudit",
+    "StepOutcome", "SteadyResult", "Stream", "System", "ThermalNetwork", "TransientResult",
+    "TransientStepper", "assemble", "integrate", "solve_steady",
+]

@@ -1,0 +1,210 @@
+"""Assembly: a :class:`~.graph.ThermalNetwork` -> capacity vector and conductance operator.
+
+For the state temperatures T (boundary nodes condensed out) the network's energy balance is
+
+    C dT/dt = f(t, T) = -K T + s + q(t, T)
+
+- ``C`` [J/K]: capacities (0 for algebraic nodes);
+- ``K`` [W/K]: the weighted graph Laplacian restricted to the state nodes, plus each
+  boundary conductance on the diagonal, plus the streams' upwind terms (row of node k gets
+  +W on its diagonal and -W on its upstream node: non-symmetric);
+- ``s`` [W]: boundary conductances times boundary temperatures plus W T_inlet of each
+  stream into its first node;
+- ``q`` [W]: heat sources.
+
+Energy flows for the audit: heat to the boundaries sum G_ib (T_i - T_b) and heat carried
+away by each stream W (T_last - T_inlet); their sum equals -sum_i(-K T + s)_i exactly.
+
+Dense ``K`` is used up to :data:`DENSE_LIMIT` state nodes (small dense LU beats sparse LU
+there: measured in ``benchmarks/bm1_work_precision.py``), CSC sparse above.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from .graph import ThermalNetwork
+
+#: state-node count up to which the operator is dense
+DENSE_LIMIT = 120
+
+
+@dataclass
+class System:
+    """Assembled linear part of the network at one set of conductances.
+
+    Attributes
+    ----------
+    names : state node names (order of every vector).
+    C : capacities [J/K], shape (n,).
+    K : conductance operator [W/K], (n, n) ndarray or scipy CSC matrix.
+    s : boundary source [W], (n,).
+    dense : whether K is dense.
+    bnd_index, bnd_G, bnd_T : conductive edges to boundaries: state index, G [W/K], T_b [K].
+    str_first, str_last, str_W, str_Tin : streams: first and last state index, W [W/K],
+        inlet temperature [K].
+    """
+
+    names: tuple[str, ...]
+    C: np.ndarray
+    K: np.ndarray | sp.csc_matrix
+    s: np.ndarray
+    dense: bool
+    bnd_index: np.ndarray
+    bnd_G: np.ndarray
+    bnd_T: np.ndarray
+    str_last: np.ndarray
+    str_W: np.ndarray
+    str_Tin: np.ndarray
+
+    @property
+    def n(self) -> int:
+        return len(self.names)
+
+    def flux(self, T: np.ndarray) -> np.ndarray:
+        """-K T + s [W] (the network part of f)."""
+        return self.s - self.K @ T
+
+    def to_boundaries(self, T: np.ndarray) -> float:
+        """Heat rate [W] conducted into all boundary nodes at state temperatures T."""
+        return float(self.bnd_G @ (T[self.bnd_index] - self.bnd_T))
+
+    def to_streams(self, T: np.ndarray) -> float:
+        """Heat rate [W] carried away by all streams, sum W (T_last - T_inlet)."""
+        return float(self.str_W @ (T[self.str_last] - self.str_Tin))
+
+
+class Assembler:
+    """Builds :class:`System` for a network; constant edges are assembled once.
+
+    Temperature-dependent edges are re-evaluated by :meth:`system` at the temperatures
+    given (the steppers call it once per step: the conductances are lagged one step).
+    """
+
+    def __init__(self, network: ThermalNetwork) -> None:
+        network.validate()
+        self.network = network
+        self.revision = network._revision
+        names = network.state_nodes
+        self.names = names
+        self.index = {n: i for i, n in enumerate(names)}
+        n = len(names)
+        self.n = n
+        self.dense = n <= DENSE_LIMIT
+        self.C = np.array([network.capacity(x) for x in names])
+        const_rows: list[int] = []
+        const_cols: list[int] = []
+        const_vals: list[float] = []
+        s = np.zeros(n)
+        bnd_i: list[int] = []
+        bnd_g: list[float] = []
+        bnd_t: list[float] = []
+        self.variable: list[tuple[str, str, int, object]] = []
+        for a, b, key, model in network.edges():
+            if model.temperature_dependent:
+                self.variable.append((a, b, key, model))
+                continue
+            g = network.edge_conductance(a, b, key, 300.0, 300.0)
+            self._stamp(a, b, g, const_rows, const_cols, const_vals, s, bnd_i, bnd_g, bnd_t)
+        str_last: list[int] = []
+        str_w: list[float] = []
+        str_tin: list[float] = []
+        for st in network.streams.values():
+            w = st.capacity_rate
+            t_in = network.boundary_temperature(st.path[0])
+            first = self.index[st.path[1]]
+            s[first] += w * t_in
+            prev = first
+            const_rows.append(first)
+            const_cols.append(first)
+            const_vals.append(w)
+            for node in st.path[2:]:
+                i = self.index[node]
+                const_rows += [i, i]
+                const_cols += [i, prev]
+                const_vals += [w, -w]
+                prev = i
+            str_last.append(prev)
+            str_w.append(w)
+            str_tin.append(t_in)
+        self.K0 = sp.coo_matrix((const_vals, (const_rows, const_cols)), shape=(n, n)).tocsc()
+        if self.dense:
+            self.K0 = self.K0.toarray()
+        self.s0 = s
+        self.bnd0 = (bnd_i, bnd_g, bnd_t)
+        self.str_last = np.array(str_last, dtype=int)
+        self.str_W = np.array(str_w)
+        self.str_Tin = np.array(str_tin)
+        self._constant_system: System | None = None
+
+    def _stamp(self, a, b, g, rows, cols, vals, s, bnd_i, bnd_g, bnd_t) -> None:
+        net = self.network
+        ka = net.graph.nodes[a]["kind"]
+        kb = net.graph.nodes[b]["kind"]
+        if ka == "state" and kb == "state":
+            i, j = self.index[a], self.index[b]
+            rows += [i, j, i, j]
+            cols += [i, j, j, i]
+            vals += [g, g, -g, -g]
+        elif ka == "state" or kb == "state":
+            inside, outside = (a, b) if ka == "state" else (b, a)
+            i = self.index[inside]
+            tb = net.boundary_temperature(outside)
+            rows.append(i)
+            cols.append(i)
+            vals.append(g)
+            s[i] += g * tb
+            bnd_i.append(i)
+            bnd_g.append(g)
+            bnd_t.append(tb)
+        # an edge between two boundaries carries heat between fixed temperatures only: it
+        # does not touch the state equations and is left out of the audit.
+
+    @property
+    def temperature_dependent(self) -> bool:
+        return bool(self.variable)
+
+    def system(self, T: np.ndarray | None = None) -> System:
+        """The assembled system; temperature-dependent edges evaluated at state T [K]."""
+        if not self.variable and self._constant_system is not None:
+            return self._constant_system
+        if self.variable and T is None:
+            T = np.full(self.n, 300.0)
+        rows: list[int] = []
+        cols: list[int] = []
+        vals: list[float] = []
+        s = self.s0.copy()
+        bnd_i, bnd_g, bnd_t = (list(x) for x in self.bnd0)
+        net = self.network
+        for a, b, key, _model in self.variable:
+            Ta = self._temp(a, T)
+            Tb = self._temp(b, T)
+            g = net.edge_conductance(a, b, key, Ta, Tb)
+            self._stamp(a, b, g, rows, cols, vals, s, bnd_i, bnd_g, bnd_t)
+        K = self.K0
+        if rows:
+            extra = sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n))
+            K = K + (extra.toarray() if self.dense else extra.tocsc())
+        system = System(
+            names=self.names, C=self.C, K=K, s=s, dense=self.dense,
+            bnd_index=np.array(bnd_i, dtype=int), bnd_G=np.array(bnd_g),
+            bnd_T=np.array(bnd_t), str_last=self.str_last, str_W=self.str_W,
+            str_Tin=self.str_Tin,
+        )
+        if not self.variable:
+            self._constant_system = system
+        return system
+
+    def _temp(self, node: str, T: np.ndarray) -> float:
+        i = self.index.get(node)
+        if i is None:
+            return self.network.boundary_temperature(node)
+        return float(T[i])
+
+
+def assemble(network: ThermalNetwork, T: np.ndarray | None = None) -> System:
+    """Assemble ``network`` (temperature-dependent edges at state temperatures ``T`` [K])."""
+    return Assembler(network).system(T)

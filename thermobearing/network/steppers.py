@@ -1,0 +1,735 @@
+"""Implicit time steppers and the steady Newton solve of the thermal network.
+
+Problem: ``C dT/dt = f(t, T) = -K T + s + q(t, T)`` (see :mod:`.assemble`), ``C_i = 0``
+allowed (algebraic nodes: a semi-explicit index-1 DAE).
+
+Steppers (registry ``stepper``)
+-------------------------------
+- ``tr_bdf2`` (default): TR-BDF2 of Bank et al. (1985) with gamma = 2 - sqrt(2), in the
+  form and with the embedded third-order error estimate of Hosea & Shampine (1996). One
+  iteration matrix ``C - d h J`` (d = gamma/2) serves both stages; L-stable, second order,
+  stiffly accurate. Adaptive step size (or fixed ``dt``).
+- ``backward_euler``: first order, L-stable; adaptive (error ~ h/2 (f1 - f0)) or fixed.
+- ``crank_nicolson``: trapezoidal rule, A- but not L-stable: it rings on stiff modes and on
+  zero-capacity nodes. Fixed step only; kept to show (BM-3) what the L-stable methods avoid.
+- ``explicit_euler``: forward Euler, unstable above h = 2 C/K on the smallest node.
+  Fixed step only; same purpose.
+
+Heat sources are treated implicitly: each stage is a Newton solve with the Jacobian
+``J = -K + dq/dT`` (``heat_jacobian(t, T)`` analytic if given -- an (n, n) array or the
+(n,) diagonal --, else finite differences: ``jacobian="fd"`` full (n extra heat
+evaluations) or ``"fd_diagonal"`` (1 extra; valid when q_i depends only on T_i), or
+``"none"`` (q independent of T)). The Jacobian and the LU factors are reused across
+steps while Newton converges; the LU is refactored when h changes. Temperature-dependent
+conductances are re-evaluated at the start of every step (lagged by one step).
+
+Error control: local error estimate ``e`` (filtered by the iteration matrix, Shampine)
+measured as max_i |e_i| / (atol + rtol |T_i|) <= 1, the same scaled max norm as
+scipy's solve_ivp tolerances (atol in K).
+
+Restarts: :func:`integrate` stops exactly at every breakpoint (load or speed steps),
+re-evaluates q, refreshes the Jacobian and re-initialises the zero-capacity nodes
+consistently, so a discontinuity in q never falls inside a step. Within a segment that
+ends at a breakpoint t_b, ``heat`` is called with times < t_b (a stage at t_b is passed
+``nextafter(t_b, -inf)``), so a right-continuous schedule is seen from the left there.
+
+Step-wise API (for a loop that re-solves kinematics between thermal steps)::
+
+    stepper = TransientStepper(network, method="tr_bdf2", rtol=1e-5, atol=1e-3)
+    T = initial_state_vector
+    for k in range(n):
+        out = stepper.advance(t, T, dt, heat, heat_jacobian=None)  # adaptive inside [t, t+dt]
+        T, t = out.temperatures, out.time
+        # ... re-solve kinematics with the new temperatures, build a new `heat` ...
+
+``heat(t, T)`` gets the state temperatures [K] (order ``network.state_nodes``, boundary
+nodes excluded) and returns watts per state node: an array of that length (or over all
+nodes, with zeros on boundary nodes) or a ``{node name: W}`` dict.
+
+A step whose Newton iteration fails is retried with h/4 and a fresh Jacobian; below
+``min_step`` a :class:`~thermobearing.errors.ConvergenceError` reports the time, the step
+size and the residual. Non-finite values are never returned.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+from scipy.linalg import lapack
+
+from ..errors import ConvergenceError, InputError
+from ..registry import Registry
+from .assemble import Assembler, System
+from .audit import EnergyAudit, SteadyResult, TransientResult
+from .graph import ThermalNetwork
+
+STEPPERS: Registry[type] = Registry("stepper", "time integration of the thermal network")
+
+HeatFn = Callable[[float, np.ndarray], "np.ndarray | Mapping[str, float]"]
+
+_GAMMA = 2.0 - math.sqrt(2.0)
+_D = _GAMMA / 2.0
+_W = math.sqrt(2.0) / 4.0
+# b - b_hat of Hosea & Shampine (1996): (4w-1)/3, -1/3, 2d/3 (they sum to zero)
+_E0 = (4.0 * _W - 1.0) / 3.0
+_E1 = -1.0 / 3.0
+_E2 = 2.0 * _D / 3.0
+
+
+class _NewtonFailure(Exception):
+    def __init__(self, residual: float, reason: str) -> None:
+        super().__init__(reason)
+        self.residual = residual
+        self.reason = reason
+
+
+# ===================================================================== the core
+class _Core:
+    """Evaluations, Jacobian and LU cache for one assembled system and heat function."""
+
+    def __init__(self, network: ThermalNetwork, asm: Assembler, rtol: float, atol: float,
+                 jacobian: str) -> None:
+        self.network = network
+        self.asm = asm
+        self.sys: System = asm.system()
+        self.C = self.sys.C
+        self.n = len(self.C)
+        self.alg = self.C == 0.0
+        self.has_alg = bool(self.alg.any())
+        self.diff = ~self.alg
+        self.invC = np.where(self.diff, 1.0 / np.where(self.diff, self.C, 1.0), 0.0)
+        self.rtol = rtol
+        self.atol = atol
+        self.jacobian_mode = jacobian
+        self.heat: HeatFn | None = None
+        self.t_end = math.inf
+        self.t_end_left = math.inf
+        self.heat_jacobian: Callable | None = None
+        self.Jq: np.ndarray | sp.spmatrix | None = None  # dq/dT
+        self.KmJ: np.ndarray | sp.spmatrix | None = None  # K - dq/dT
+        self.lu = None
+        self.lu_coef = -1.0
+        self.stats = {"steps": 0, "rejected": 0, "newton_failures": 0, "heat_evaluations": 0,
+                      "jacobians": 0, "factorizations": 0, "solves": 0}
+
+    # ------------------------------------------------------------ evaluations
+    def set_heat(self, heat: HeatFn | None, heat_jacobian: Callable | None) -> None:
+        self.heat = heat
+        self.heat_jacobian = heat_jacobian
+        self.Jq = None
+        self.KmJ = None
+        self.lu_coef = -1.0
+
+    def q(self, t: float, T: np.ndarray) -> np.ndarray:
+        self.stats["heat_evaluations"] += 1
+        if self.heat is None:
+            return np.zeros(self.n)
+        if t >= self.t_end:  # a segment sees its end breakpoint from the left
+            t = self.t_end_left
+        r = self.heat(t, T)
+        if type(r) is not np.ndarray or r.shape != (self.n,):
+            r = self.network.heat_vector(r)
+        if not math.isfinite(r.sum()):
+            raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
+        return r
+
+    def f(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(f, q): f = -K T + s + q [W]."""
+        q = self.q(t, T)
+        return self.sys.s - self.sys.K @ T + q, q
+
+    def update_system(self, T: np.ndarray) -> None:
+        """Re-evaluate temperature-dependent conductances at T (lagged)."""
+        if self.asm.temperature_dependent:
+            self.sys = self.asm.system(T)
+            self.KmJ = None
+            self.lu_coef = -1.0
+
+    def refresh_jacobian(self, t: float, T: np.ndarray, q0: np.ndarray | None = None) -> None:
+        self.stats["jacobians"] += 1
+        mode = self.jacobian_mode
+        n = self.n
+        if self.heat is None or mode == "none":
+            Jq = None
+        elif self.heat_jacobian is not None:
+            Jq = np.asarray(self.heat_jacobian(t, T), dtype=float)
+            if Jq.shape not in ((n,), (n, n)) or not np.all(np.isfinite(Jq)):
+                raise InputError("heat_jacobian", Jq.shape,
+                                 f"a finite ({n},) diagonal or ({n}, {n}) matrix")
+        else:
+            if q0 is None:
+                q0 = self.q(t, T)
+            delta = 1.49e-8 * np.maximum(np.abs(T), 1.0)
+            if mode == "fd_diagonal":
+                Jq = (self.q(t, T + delta) - q0) / delta
+            elif mode == "fd":
+                Jq = np.empty((n, n))
+                for j in range(n):
+                    Tp = T.copy()
+                    Tp[j] += delta[j]
+                    Jq[:, j] = (self.q(t, Tp) - q0) / delta[j]
+            else:
+                raise InputError("jacobian", mode, "'fd', 'fd_diagonal' or 'none'")
+        K = self.sys.K
+        if Jq is None:
+            KmJ = K
+        elif self.sys.dense:
+            KmJ = K - (np.diag(Jq) if Jq.ndim == 1 else Jq)
+        else:
+            KmJ = (K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))).tocsc()
+        self.Jq = Jq
+        self.KmJ = KmJ
+        self.lu_coef = -1.0
+
+    def factor(self, coef: float) -> None:
+        """LU of W = diag(C) + coef (K - dq/dT)."""
+        if coef == self.lu_coef:
+            return
+        self.stats["factorizations"] += 1
+        if self.sys.dense:
+            W = coef * self.KmJ
+            W[np.diag_indices(self.n)] += self.C
+            lu, piv, info = lapack.dgetrf(W)  # direct LAPACK: ~2 us at n = 4
+            if info != 0:
+                raise _NewtonFailure(math.inf, f"singular iteration matrix (dgetrf info {info})")
+            self.lu = (lu, piv)
+        else:
+            W = (sp.diags(self.C) + coef * self.KmJ).tocsc()
+            self.lu = spla.splu(W)
+        self.lu_coef = coef
+
+    def solve(self, r: np.ndarray) -> np.ndarray:
+        self.stats["solves"] += 1
+        if self.sys.dense:
+            return lapack.dgetrs(self.lu[0], self.lu[1], r)[0]
+        return self.lu.solve(r)
+
+    def scale(self, y: np.ndarray) -> np.ndarray:
+        return self.atol + self.rtol * np.abs(y)
+
+    # ------------------------------------------------------------------ Newton
+    def newton(self, t: float, y0: np.ndarray, y: np.ndarray, coef: float,
+               rhs: np.ndarray, kappa: float = 0.01,
+               max_iter: int = 7) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """Solve C (y - y0) - coef f(t, y) - rhs = 0; returns (y, f(y), q(y), iterations).
+
+        Accepts the iterate whose next Newton correction is below ``kappa`` times the
+        tolerance (the correction is not applied, so f and q are those of the returned y),
+        after at least one update: on a linear problem with an exact Jacobian the returned
+        y then solves the stage equation to round-off (the audit closes to ~1e-13).
+        """
+        C = self.C
+        prev = math.inf
+        for it in range(max_iter):
+            f, q = self.f(t, y)
+            R = C * (y - y0) - coef * f - rhs
+            dy = self.solve(R)
+            norm = float((np.abs(dy) / (self.atol + self.rtol * np.abs(y))).max())
+            if not math.isfinite(norm):
+                raise _NewtonFailure(float(np.max(np.abs(R))), "non-finite Newton update")
+            if norm <= kappa and it > 0:
+                return y, f, q, it + 1
+            if it > 0 and norm > 0.9 * prev:
+                raise _NewtonFailure(float(np.max(np.abs(R))), "Newton iteration diverges")
+            prev = norm
+            y = y - dy
+        f, q = self.f(t, y)
+        R = C * (y - y0) - coef * f - rhs
+        raise _NewtonFailure(float(np.max(np.abs(R))), f"no convergence in {max_iter} iterations")
+
+    def consistent_algebraic(self, t: float, y: np.ndarray) -> np.ndarray:
+        """Solve f_alg(t, y) = 0 for the zero-capacity nodes, the others fixed."""
+        if not self.has_alg:
+            return y
+        alg = self.alg
+        y = y.copy()
+        for _ in range(30):
+            f, q = self.f(t, y)
+            r = f[alg]
+            self.refresh_jacobian(t, y, q)
+            KmJ = self.KmJ.toarray() if sp.issparse(self.KmJ) else self.KmJ
+            # f = -(K - Jq) y + ...  ->  df_alg/dy_alg = -(KmJ)[alg][:, alg]
+            J_aa = -KmJ[np.ix_(alg, alg)]
+            dy = np.linalg.solve(J_aa, -r)
+            y[alg] += dy
+            if np.max(np.abs(dy)) <= 1e-13 * max(1.0, float(np.max(np.abs(y)))):
+                return y
+        raise ConvergenceError("network consistent initialisation",
+                               float(np.max(np.abs(r))),
+                               "zero-capacity node temperatures did not converge",
+                               {"time": t})
+
+
+# ================================================================== steppers
+@dataclass
+class _Trial:
+    y1: np.ndarray
+    f1: np.ndarray
+    q1: np.ndarray
+    err: float | None  # scaled error norm, None for fixed-step-only methods
+    gen: float  # J
+    to_b: float  # J
+    to_s: float  # J
+
+
+class _Method:
+    order = 1
+    adaptive = True
+    name = ""
+
+    def step(self, core: _Core, t: float, h: float, y0: np.ndarray, f0: np.ndarray,
+             q0: np.ndarray) -> _Trial:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+
+def _audit(core: _Core, h: float, weights: Sequence[float], ys: Sequence[np.ndarray],
+           qs: Sequence[np.ndarray]) -> tuple[float, float, float]:
+    ybar = sum(w * y for w, y in zip(weights, ys, strict=True))
+    gen = h * sum(w * float(q.sum()) for w, q in zip(weights, qs, strict=True))
+    return gen, h * core.sys.to_boundaries(ybar), h * core.sys.to_streams(ybar)
+
+
+@STEPPERS.register("tr_bdf2", references=["bank1985_trbdf2", "hosea_shampine1996"],
+                   parameters={"rtol": "-", "atol": "K"},
+                   validity="any stiffness; L-stable, 2nd order; DAE index 1 (C = 0 nodes)")
+class TRBDF2(_Method):
+    """TR-BDF2 (gamma = 2 - sqrt 2), L-stable 2nd order, embedded 3rd-order error estimate.
+
+    Bank et al. (1985) eq. (2.5)-(2.6); Hosea & Shampine (1996) sec. 2 for the one-matrix
+    form, the weights (w, w, d), w = sqrt(2)/4, d = gamma/2, and the error estimate
+    h [(4w-1)/3 f_n - 1/3 f_gamma + 2d/3 f_{n+1}] filtered by (C - d h J)^-1.
+    """
+
+    order = 2
+    name = "tr_bdf2"
+
+    def step(self, core, t, h, y0, f0, q0):
+        coef = _D * h
+        core.factor(coef)
+        ydot0 = f0 * core.invC
+        # stage 1: trapezoidal rule to t + gamma h
+        z, fg, qg, _ = core.newton(t + _GAMMA * h, y0, y0 + _GAMMA * h * ydot0, coef,
+                                   coef * f0)
+        # stage 2: BDF2 through y0, z to t + h
+        y1, f1, q1, _ = core.newton(t + h, y0, y0 + (z - y0) / _GAMMA, coef,
+                                    (h * _W) * (f0 + fg))
+        est = core.solve(h * (_E0 * f0 + _E1 * fg + _E2 * f1))
+        err = float((np.abs(est) / (core.atol + core.rtol * np.abs(y1))).max())
+        ybar = _W * (y0 + z) + _D * y1
+        gen = h * (_W * (q0.sum() + qg.sum()) + _D * q1.sum())
+        sys_ = core.sys
+        to_b = h * sys_.to_boundaries(ybar)
+        to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0
+        return _Trial(y1, f1, q1, err, gen, to_b, to_s)
+
+
+@STEPPERS.register("backward_euler", references=["hairer_wanner1996"],
+                   parameters={"rtol": "-", "atol": "K"},
+                   validity="any stiffness; L-stable, 1st order")
+class BackwardEuler(_Method):
+    """Backward (implicit) Euler, C (y1 - y0) = h f(t1, y1); L-stable, first order.
+
+    Hairer & Wanner (1996) sec. IV.3. Error estimate for step control: (h/2)(f1 - f0)
+    filtered by (C - h J)^-1 (the leading local-error term of the method).
+    """
+
+    order = 1
+    name = "backward_euler"
+
+    def step(self, core, t, h, y0, f0, q0):
+        core.factor(h)
+        ydot0 = f0 * core.invC
+        y1, f1, q1, _ = core.newton(t + h, y0, y0 + h * ydot0, h, np.zeros_like(y0))
+        est = core.solve(0.5 * h * (f1 - f0))
+        err = float((np.abs(est) / (core.atol + core.rtol * np.abs(y1))).max())
+        gen, to_b, to_s = _audit(core, h, (1.0,), (y1,), (q1,))
+        return _Trial(y1, f1, q1, err, gen, to_b, to_s)
+
+
+@STEPPERS.register("crank_nicolson", references=["crank_nicolson1947"],
+                   parameters={"dt": "s"},
+                   validity="A-stable, not L-stable: rings on stiff modes; fixed dt only; "
+                            "for comparison (BM-3)")
+class CrankNicolson(_Method):
+    """Crank-Nicolson (trapezoidal rule), C (y1 - y0) = h/2 (f0 + f1); fixed step only.
+
+    Crank & Nicolson (1947). Second order but not L-stable: the amplification factor tends
+    to -1 on stiff modes, so small-capacity nodes oscillate at large steps.
+    """
+
+    order = 2
+    adaptive = False
+    name = "crank_nicolson"
+
+    def step(self, core, t, h, y0, f0, q0):
+        core.factor(0.5 * h)
+        ydot0 = f0 * core.invC
+        y1, f1, q1, _ = core.newton(t + h, y0, y0 + h * ydot0, 0.5 * h, 0.5 * h * f0)
+        gen, to_b, to_s = _audit(core, h, (0.5, 0.5), (y0, y1), (q0, q1))
+        return _Trial(y1, f1, q1, None, gen, to_b, to_s)
+
+
+@STEPPERS.register("explicit_euler", references=["hairer_wanner1996"],
+                   parameters={"dt": "s"},
+                   validity="stable only for dt < 2 min(C_i / K_ii); no zero-capacity nodes; "
+                            "for comparison (BM-3)")
+class ExplicitEuler(_Method):
+    """Forward (explicit) Euler, y1 = y0 + h f0 / C; fixed step only, for comparison.
+
+    Unstable for h > 2 C_i/K_ii on the smallest node (Hairer & Wanner 1996, sec. IV.2).
+    """
+
+    order = 1
+    adaptive = False
+    name = "explicit_euler"
+
+    def step(self, core, t, h, y0, f0, q0):
+        if core.has_alg:
+            raise InputError("method", "explicit_euler", "a network without zero-capacity nodes")
+        y1 = y0 + h * f0 / core.C
+        if not np.all(np.isfinite(y1)):
+            raise _NewtonFailure(math.inf, "explicit Euler overflowed")
+        f1, q1 = core.f(t + h, y1)
+        gen, to_b, to_s = _audit(core, h, (1.0,), (y0,), (q0,))
+        return _Trial(y1, f1, q1, None, gen, to_b, to_s)
+
+
+# ==================================================================== driver
+class _Driver:
+    """Runs a stepper over [t0, t1] (one smooth segment) and records the steps."""
+
+    def __init__(self, network: ThermalNetwork, method: str, rtol: float, atol: float,
+                 dt: float | None, max_step: float, first_step: float | None,
+                 min_step: float, jacobian: str) -> None:
+        network.validate()
+        self.network = network
+        self.method: _Method = STEPPERS.get(method)()
+        self.method_name = method
+        if rtol < 0 or atol <= 0 or not math.isfinite(rtol) or not math.isfinite(atol):
+            raise InputError("rtol/atol", (rtol, atol), "rtol >= 0 and atol > 0 [K]")
+        if dt is not None and (not math.isfinite(dt) or dt <= 0):
+            raise InputError("dt", dt, "a step size > 0 s (or None for adaptive steps)")
+        if dt is None and not self.method.adaptive:
+            raise InputError("dt", dt, f"a fixed step size: {method!r} has no error control")
+        if max_step <= 0:
+            raise InputError("max_step", max_step, "a value > 0 s")
+        self.rtol, self.atol = float(rtol), float(atol)
+        self.dt = dt
+        self.max_step = float(max_step)
+        self.first_step = first_step
+        self.min_step = float(min_step)
+        self.jacobian = jacobian
+        self._build()
+        self.h_last: float | None = None
+
+    def _build(self) -> None:
+        self.asm = Assembler(self.network)
+        self.core = _Core(self.network, self.asm, self.rtol, self.atol, self.jacobian)
+
+    def _initial_step(self, t0: float, t1: float, y0: np.ndarray, f0: np.ndarray) -> float:
+        core = self.core
+        if self.first_step is not None:
+            return min(self.first_step, t1 - t0)
+        ydot = np.where(core.diff, f0 / np.where(core.diff, core.C, 1.0), 0.0)
+        d1 = float(np.max(np.abs(ydot) / core.scale(y0)))
+        h = 0.5 / d1 if d1 > 0 else (t1 - t0)
+        if self.h_last is not None:
+            h = min(h, 4.0 * self.h_last)
+        return max(min(h, t1 - t0, self.max_step), min(self.min_step * 10, t1 - t0))
+
+    def segment(self, t0: float, t1: float, y0: np.ndarray, heat: HeatFn | None,
+                heat_jacobian: Callable | None, rec: _Recorder) -> np.ndarray:
+        """Integrate one smooth segment; returns the state at t1 (exactly at t1)."""
+        if self.network._revision != self.asm.revision:
+            self._build()
+        core = self.core
+        core.set_heat(heat, heat_jacobian)
+        core.t_end = t1
+        core.t_end_left = float(np.nextafter(t1, -math.inf))
+        try:
+            core.update_system(y0)
+            if core.has_alg:
+                y_cons = core.consistent_algebraic(t0, y0)
+                if rec.active and np.any(y_cons != y0):
+                    rec.jump(t0, y_cons, core)
+                y0 = y_cons
+            f0, q0 = core.f(t0, y0)
+            core.refresh_jacobian(t0, y0, q0)
+        except _NewtonFailure as exc:
+            raise ConvergenceError(f"network stepper {self.method_name}", exc.residual,
+                                   exc.reason, {"time": t0, "step_size": 0.0,
+                                                "temperatures": y0}) from None
+        if not rec.started:
+            rec.start(t0, y0, f0, core)
+        t = t0
+        y = y0
+        if self.dt is not None:
+            h = min(self.dt, t1 - t0)
+        else:
+            h = self._initial_step(t0, t1, y0, f0)
+        method = self.method
+        p1 = method.order + 1.0
+        fresh_jac = True
+        tiny = 1e-12 * max(1.0, abs(t1))
+        while t < t1 - tiny:
+            if t + h >= t1 - 1e-3 * h:
+                h = t1 - t
+                last = True
+            else:
+                last = False
+            if core.asm.temperature_dependent:
+                core.update_system(y)
+                core.refresh_jacobian(t, y, q0)
+            try:
+                trial = method.step(core, t, h, y, f0, q0)
+            except _NewtonFailure as exc:
+                core.stats["newton_failures"] += 1
+                if not fresh_jac:
+                    core.refresh_jacobian(t, y, q0)
+                    fresh_jac = True
+                    continue
+                h_new = h / 4.0
+                if h_new < self.min_step or self.dt is not None and h_new < self.dt * 1e-6:
+                    raise ConvergenceError(
+                        f"network stepper {self.method_name}", exc.residual, exc.reason,
+                        {"time": t, "step_size": h, "temperatures": y}) from None
+                h = h_new
+                continue
+            err = trial.err
+            if self.dt is None and err is not None and err > 1.0:
+                core.stats["rejected"] += 1
+                h = h * max(0.2, 0.9 * err ** (-1.0 / p1))
+                if h < self.min_step:
+                    raise ConvergenceError(
+                        f"network stepper {self.method_name}", err,
+                        "step size underflow in error control",
+                        {"time": t, "step_size": h, "temperatures": y})
+                continue
+            # accept
+            core.stats["steps"] += 1
+            stored = float(np.dot(core.C, trial.y1 - y))
+            t = t1 if last else t + h
+            y, f0, q0 = trial.y1, trial.f1, trial.q1
+            rec.add(t, y, f0, core, trial.gen, stored, trial.to_b, trial.to_s)
+            fresh_jac = False
+            if self.dt is not None:
+                h = self.dt
+            else:
+                self.h_last = h
+                fac = 5.0 if err == 0.0 else min(5.0, max(0.2, 0.9 * err ** (-1.0 / p1)))
+                if not 1.0 <= fac <= 1.2:
+                    h = h * fac
+                h = min(h, self.max_step)
+        return y
+
+
+class _Recorder:
+    """Collects (t, T, dT/dt) and audit rows."""
+
+    def __init__(self, active: bool = True) -> None:
+        self.active = active
+        self.started = False
+        self.t: list[float] = []
+        self.y: list[np.ndarray] = []
+        self.r: list[np.ndarray] = []
+        self.rows: list[tuple[float, float, float, float, float]] = []
+
+    @staticmethod
+    def _rate(f: np.ndarray, core: _Core) -> np.ndarray:
+        return np.where(core.diff, f / np.where(core.diff, core.C, 1.0), 0.0)
+
+    def start(self, t, y, f, core) -> None:
+        self.started = True
+        if self.active:
+            self.t.append(t)
+            self.y.append(y.copy())
+            self.r.append(self._rate(f, core))
+
+    def jump(self, t, y, core) -> None:
+        if self.started:
+            f, _ = core.f(t, y)
+            self.t.append(t)
+            self.y.append(y.copy())
+            self.r.append(self._rate(f, core))
+
+    def add(self, t, y, f, core, gen, stored, to_b, to_s) -> None:
+        self.rows.append((t, gen, stored, to_b, to_s))
+        if self.active:
+            self.t.append(t)
+            self.y.append(y)
+            self.r.append(self._rate(f, core))
+
+    def audit(self) -> EnergyAudit:
+        a = np.array(self.rows, dtype=float).reshape(-1, 5)
+        return EnergyAudit(a[:, 0], a[:, 1], a[:, 2], a[:, 3], a[:, 4])
+
+
+# ================================================================== public API
+def _as_heat_fn(network: ThermalNetwork, heat) -> tuple[HeatFn | None, bool]:
+    """(callable or None, constant?) from a callable, a {node: W} dict or a vector."""
+    if heat is None:
+        return None, True
+    if callable(heat):
+        return heat, False
+    q = network.heat_vector(heat).copy()
+    return (lambda t, T: q), True
+
+
+def _initial_vector(network: ThermalNetwork, T0) -> np.ndarray:
+    names = network.state_nodes
+    if isinstance(T0, Mapping):
+        missing = [n for n in names if n not in T0]
+        if missing:
+            raise InputError("T0", sorted(T0), f"a temperature for every state node; missing "
+                                               f"{missing}")
+        y = np.array([float(T0[n]) for n in names])
+    elif np.ndim(T0) == 0:
+        y = np.full(len(names), float(T0))
+    else:
+        y = np.array(T0, dtype=float)
+        if y.shape != (len(names),):
+            raise InputError("T0", y.shape, f"shape ({len(names)},) in the order "
+                                            f"network.state_nodes")
+    if not np.all(np.isfinite(y)) or np.any(y <= 0):
+        raise InputError("T0", y, "finite temperatures > 0 K")
+    return y
+
+
+def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float, float], T0,
+              method: str = "tr_bdf2", rtol: float = 1e-5, atol: float = 1e-3,
+              breakpoints: Sequence[float] = (), heat_jacobian: Callable | None = None,
+              dt: float | None = None, max_step: float = math.inf,
+              first_step: float | None = None, min_step: float = 1e-10,
+              jacobian: str = "fd") -> TransientResult:
+    """Integrate the network from ``t_span[0]`` to ``t_span[1]`` [s].
+
+    Parameters
+    ----------
+    network : the :class:`ThermalNetwork`.
+    heat : ``heat(t, T) -> W`` per state node (see the module docstring); or a constant
+        vector / ``{node: W}`` dict; or None.
+    t_span : (t0, t1) [s].
+    T0 : initial temperatures [K]: scalar, array over ``network.state_nodes`` or dict.
+        Zero-capacity nodes are re-initialised consistently.
+    method : a :data:`STEPPERS` name (``tr_bdf2``, ``backward_euler``, ``crank_nicolson``,
+        ``explicit_euler``).
+    rtol, atol : error tolerances (scaled max norm; atol in K).
+    breakpoints : times [s] where ``heat`` (or anything) jumps; steps end exactly there and
+        the solver restarts.
+    heat_jacobian : ``(t, T) -> dq/dT`` [W/K], (n, n) or (n,) diagonal; default finite
+        differences (``jacobian``).
+    dt : fixed step size [s] (no error control), else adaptive.
+    max_step, first_step, min_step : step bounds [s].
+    jacobian : ``"fd"``, ``"fd_diagonal"`` or ``"none"`` when ``heat_jacobian`` is None.
+
+    Returns
+    -------
+    TransientResult with times, temperatures, rates, the energy audit and solver stats.
+    """
+    t0, t1 = (float(x) for x in t_span)
+    if not (math.isfinite(t0) and math.isfinite(t1)) or t1 <= t0:
+        raise InputError("t_span", t_span, "finite (t0, t1) with t1 > t0")
+    y = _initial_vector(network, T0)
+    heat, constant = _as_heat_fn(network, heat)
+    if constant:
+        jacobian = "none"
+    driver = _Driver(network, method, rtol, atol, dt, max_step, first_step, min_step, jacobian)
+    rec = _Recorder()
+    cuts = sorted({float(b) for b in breakpoints if t0 < float(b) < t1})
+    edges = [t0, *cuts, t1]
+    for a, b in zip(edges[:-1], edges[1:], strict=True):
+        y = driver.segment(a, b, y, heat, heat_jacobian, rec)
+    return TransientResult(
+        names=network.state_nodes,
+        boundary={n: network.boundary_temperature(n) for n in network.boundary_nodes},
+        times=np.array(rec.t), temperatures=np.array(rec.y), rates=np.array(rec.r),
+        audit=rec.audit(), stats=dict(driver.core.stats), method=method,
+    )
+
+
+@dataclass(frozen=True)
+class StepOutcome:
+    """Result of :meth:`TransientStepper.advance`: the state at ``time`` and the audit."""
+
+    time: float
+    temperatures: np.ndarray
+    audit: EnergyAudit
+    steps: int
+
+
+class TransientStepper:
+    """Step-wise integration for coupled loops (see the module docstring).
+
+    Each :meth:`advance` call is a restart (the heat function may have changed); the step
+    size, Jacobian policy and counters persist between calls. Changes to the network
+    (``set_stream_flow``, capacities, edges) are picked up at the next call.
+    """
+
+    def __init__(self, network: ThermalNetwork, method: str = "tr_bdf2", rtol: float = 1e-5,
+                 atol: float = 1e-3, dt: float | None = None, max_step: float = math.inf,
+                 min_step: float = 1e-10, jacobian: str = "fd") -> None:
+        self.network = network
+        self._driver = _Driver(network, method, rtol, atol, dt, max_step, None, min_step,
+                               jacobian)
+
+    @property
+    def stats(self) -> dict[str, int]:
+        return dict(self._driver.core.stats)
+
+    def advance(self, t: float, T, dt: float, heat: HeatFn | None,
+                heat_jacobian: Callable | None = None) -> StepOutcome:
+        """Advance from ``t`` to ``t + dt`` [s] from state ``T`` [K] with ``heat``."""
+        if not math.isfinite(dt) or dt <= 0:
+            raise InputError("dt", dt, "a step > 0 s")
+        y = _initial_vector(self.network, T)
+        heat, _ = _as_heat_fn(self.network, heat)
+        rec = _Recorder(active=False)
+        steps0 = self._driver.core.stats["steps"]
+        y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian, rec)
+        return StepOutcome(float(t) + float(dt), y1, rec.audit(),
+                           self._driver.core.stats["steps"] - steps0)
+
+
+def solve_steady(network: ThermalNetwork, heat: HeatFn | None = None, T_guess=None,
+                 t: float = 0.0, xtol: float = 1e-10, max_iter: int = 100,
+                 heat_jacobian: Callable | None = None, jacobian: str = "fd") -> SteadyResult:
+    """Steady state f(T) = -K(T) T + s + q(t, T) = 0 by Newton's method.
+
+    The Jacobian is -K + dq/dT (conductances' own temperature dependence is left out of
+    the Jacobian, so T-dependent edges converge linearly, not quadratically). Converged
+    when max |dT| <= xtol [K]. Zero-capacity nodes are no different here.
+    """
+    y = _initial_vector(network, 300.0 if T_guess is None else T_guess)
+    heat, constant = _as_heat_fn(network, heat)
+    if constant:
+        jacobian = "none"
+    asm = Assembler(network)
+    core = _Core(network, asm, 0.0, 1.0, jacobian)
+    core.set_heat(heat, heat_jacobian)
+    res = math.inf
+    for it in range(1, max_iter + 1):
+        core.update_system(y)
+        f, q = core.f(t, y)
+        res = float(np.max(np.abs(f)))
+        core.refresh_jacobian(t, y, q)
+        KmJ = core.KmJ
+        if sp.issparse(KmJ):
+            dy = spla.spsolve(KmJ.tocsc(), f)
+        else:
+            dy = np.linalg.solve(KmJ, f)
+        if not np.all(np.isfinite(dy)):
+            break
+        y = y + dy
+        if np.max(np.abs(dy)) <= xtol * max(1.0, 1e-3 * float(np.max(np.abs(y)))):
+            core.update_system(y)
+            f, q = core.f(t, y)
+            return SteadyResult(network.state_nodes, y, float(q.sum()),
+                                core.sys.to_boundaries(y), core.sys.to_streams(y), it,
+                                float(np.max(np.abs(f))))
+    raise ConvergenceError("network steady Newton", res, f"no convergence in {max_iter} "
+                           "iterations", {"temperatures": y})
