@@ -1,0 +1,328 @@
+"""Quasi-static load distribution of a radially loaded cylindrical roller bearing.
+
+Harris & Kotzalas (2007, vol. 1 ch. 7 "Distribution of internal loading"; vol. 2 ch. 2
+"High-speed operation") treat a cylindrical roller bearing under a radial load ``F_r``
+with diametral clearance ``P_d``: the inner ring moves by ``delta_r`` and the roller at
+azimuth ``psi_j`` is squeezed by
+
+    delta_j = delta_x cos(psi_j) + delta_y sin(psi_j) - P_d / 2          (interference)
+
+shared between its inner and outer contacts, ``delta_j = delta_ij + delta_oj``. Each roller
+is in radial equilibrium
+
+    Q_oj - Q_ij = F_j                                                   (1)
+
+where ``F_j`` is the outward body force on the roller: the centrifugal force
+``F_c = m_r (d_m / 2) omega_c^2`` (Harris & Kotzalas vol. 2 eq. 2.60 type; paper 000 eq. 20,
+``F_omega``) plus, in a whirling squeeze-film damper, the radial component of the inertial
+force ``-m_r e_ddot`` of paper 000 eqs. 3-4. Each contact is a line contact with the
+load-deflection law ``Q = K delta^n`` (Palmgren: n = 10/9, ``K`` from
+:func:`thermobearing.hertz.line_contact_stiffness`). The ring equilibrium
+
+    sum_j Q_ij (cos psi_j, sin psi_j) = (F_r, 0)                        (2)
+
+is solved by Newton on the two ring displacements ``(delta_x, delta_y)`` with the roller
+equilibrium (1) solved inside (bisection per roller, vectorised); the Jacobian is analytic
+(series stiffness of the two contacts). The radial load acts along ``psi = 0``.
+
+Reference: Harris TA, Kotzalas MN (2007) Rolling Bearing Analysis, 5th ed. (vol. 1 ch. 7,
+vol. 2 ch. 2) [harris_kotzalas2007]; paper 000 (Li et al. 2018) eqs. 1-4 and 20-25
+[li2018_nu214_skidding].
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import ConvergenceError, InputError, check_finite, check_positive
+
+#: Palmgren's line-contact load-deflection exponent (Harris & Kotzalas vol. 1 eq. 6.41).
+LINE_CONTACT_EXPONENT = 10.0 / 9.0
+
+
+@dataclass(frozen=True)
+class RollerLoadDistribution:
+    """Result of :func:`roller_load_distribution` (SI).
+
+    Attributes
+    ----------
+    azimuth : (Z,) roller azimuths psi_j [rad], 0 = direction of the radial load.
+    inner_load, outer_load : (Z,) contact normal loads Q_ij, Q_oj [N].
+    inner_deflection, outer_deflection : (Z,) contact approaches [m] (0 where unloaded).
+    interference : (Z,) delta_j = delta_r . e_j - P_d/2 [m] (negative: a gap).
+    body_force : (Z,) outward radial body force F_j on each roller [N].
+    ring_displacement : (2,) inner-ring displacement (delta_x, delta_y) [m].
+    loaded : (Z,) bool, True where the inner contact carries load.
+    residual : |sum Q_ij e_j - F| [N] at the solution.
+    iterations : Newton iterations.
+    """
+
+    azimuth: np.ndarray
+    inner_load: np.ndarray
+    outer_load: np.ndarray
+    inner_deflection: np.ndarray
+    outer_deflection: np.ndarray
+    interference: np.ndarray
+    body_force: np.ndarray
+    ring_displacement: np.ndarray
+    loaded: np.ndarray
+    residual: float
+    iterations: int
+
+    @property
+    def n_loaded(self) -> int:
+        """Number of rollers whose inner contact carries load."""
+        return int(np.count_nonzero(self.loaded))
+
+    @property
+    def loaded_fraction(self) -> float:
+        """Fraction of the rollers whose inner contact carries load (0..1) [-]."""
+        return self.n_loaded / self.azimuth.size
+
+
+def _power(x: np.ndarray, n: float) -> np.ndarray:
+    return np.where(x > 0.0, np.abs(x) ** n, 0.0)
+
+
+def split_roller_interference(
+    interference: np.ndarray,
+    body_force: np.ndarray,
+    k_inner: float,
+    k_outer: float,
+    exponent: float = LINE_CONTACT_EXPONENT,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Share each roller's interference between its inner and outer contact.
+
+    Solves ``K_o (delta_j - s)_+^n - K_i s_+^n = F_j`` for the inner approach ``s`` (eq. 1 of
+    the module docstring), vectorised by bisection; the left side falls monotonically in
+    ``s`` so the root is unique whenever one of the contacts is closed.
+
+    Parameters
+    ----------
+    interference : (Z,) delta_j [m].
+    body_force : (Z,) outward radial force on each roller F_j [N].
+    k_inner, k_outer : contact stiffness K in Q = K delta^n [N/m^n].
+    exponent : n [-].
+
+    Returns
+    -------
+    (inner_deflection, outer_deflection) : (Z,) arrays [m], each >= 0.
+
+    Reference: Harris & Kotzalas (2007) vol. 2 ch. 2 (roller equilibrium with centrifugal
+    force).
+    """
+    d = np.asarray(interference, dtype=float)
+    f = np.broadcast_to(np.asarray(body_force, dtype=float), d.shape)
+    n = exponent
+    # Bracket: the body force alone closes the outer contact by (F/K_o)^(1/n) and the inner
+    # one by (-F/K_i)^(1/n); the root lies in [d - (F+/K_o)^(1/n) - slack, d + ...].
+    so = (np.maximum(f, 0.0) / k_outer) ** (1.0 / n)
+    si = (np.maximum(-f, 0.0) / k_inner) ** (1.0 / n)
+    lo = np.minimum(d - so, -si) - 1e-12
+    hi = np.maximum(d + si, 0.0) + 1e-12
+    # g(lo) >= 0 >= g(hi)
+    tol = 1e-13 * np.maximum(np.maximum(np.abs(d), so), si) + 1e-22
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        g = k_outer * _power(d - mid, n) - k_inner * _power(mid, n) - f
+        pos = g > 0.0
+        lo = np.where(pos, mid, lo)
+        hi = np.where(pos, hi, mid)
+        if np.all(hi - lo <= tol):
+            break
+    s = 0.5 * (lo + hi)
+    # Both contacts open (F = 0 with a gap): no load either side.
+    inner = np.maximum(s, 0.0)
+    outer = np.maximum(d - s, 0.0)
+    both_open = (f == 0.0) & (d <= 0.0)
+    inner = np.where(both_open, 0.0, inner)
+    outer = np.where(both_open, 0.0, outer)
+    return inner, outer
+
+
+def roller_load_distribution(
+    n_rollers: int,
+    diametral_clearance: float,
+    radial_load: float,
+    k_inner: float,
+    k_outer: float,
+    *,
+    body_force: float | np.ndarray = 0.0,
+    azimuth: np.ndarray | None = None,
+    exponent: float = LINE_CONTACT_EXPONENT,
+    x0: tuple[float, float] | None = None,
+    rtol: float = 1e-10,
+    max_iter: int = 100,
+) -> RollerLoadDistribution:
+    """Load distribution of a cylindrical roller bearing with clearance and body forces.
+
+    Parameters
+    ----------
+    n_rollers : Z [-].
+    diametral_clearance : P_d [m] (>= 0; negative preload is not supported here).
+    radial_load : F_r [N] (>= 0), acting along psi = 0.
+    k_inner, k_outer : line-contact stiffness K with Q = K delta^n [N/m^n].
+    body_force : outward radial force on each roller [N] (centrifugal force plus the
+        radial part of the whirl inertia force), scalar or (Z,).
+    azimuth : (Z,) roller azimuths [rad]; default 2 pi j / Z (a roller under the load).
+    exponent : n [-] (10/9, Palmgren).
+    x0 : initial ring displacement (delta_x, delta_y) [m] (warm start).
+    rtol : tolerance on the force residual relative to max(F_r, K (P_d/2)^n * 1e-6) [-].
+
+    Returns
+    -------
+    RollerLoadDistribution
+
+    Raises
+    ------
+    InputError : bad input.  ConvergenceError : Newton failed (with residual and state).
+
+    Reference: Harris & Kotzalas (2007) vol. 1 ch. 7 (radially loaded roller bearing with
+    clearance), vol. 2 ch. 2 (centrifugal force); paper 000 eqs. 20 and 23.
+    """
+    if int(n_rollers) != n_rollers or n_rollers < 3:
+        raise InputError("n_rollers", n_rollers, "an integer >= 3")
+    z = int(n_rollers)
+    check_positive("diametral_clearance", diametral_clearance, allow_zero=True)
+    check_positive("radial_load", radial_load, allow_zero=True)
+    check_positive("k_inner", k_inner)
+    check_positive("k_outer", k_outer)
+    if azimuth is None:
+        psi = 2.0 * math.pi * np.arange(z) / z
+    else:
+        psi = np.asarray(azimuth, dtype=float)
+        if psi.shape != (z,):
+            raise InputError("azimuth", psi.shape, f"an array of shape ({z},)")
+    check_finite("azimuth", psi)
+    fb = np.broadcast_to(np.asarray(body_force, dtype=float), (z,)).copy()
+    check_finite("body_force", fb)
+    n = exponent
+    half = 0.5 * diametral_clearance
+    cos, sin = np.cos(psi), np.sin(psi)
+
+    def evaluate(dx: float, dy: float):
+        interf = dx * cos + dy * sin - half
+        di, do = split_roller_interference(interf, fb, k_inner, k_outer, n)
+        qi = k_inner * _power(di, n)
+        qo = k_outer * _power(do, n)
+        res = np.array([np.sum(qi * cos) - radial_load, np.sum(qi * sin)])
+        # series stiffness dQ_i/d(delta_j) where both contacts are closed
+        ki = n * k_inner * _power(di, n - 1.0)
+        ko = n * k_outer * _power(do, n - 1.0)
+        kser = np.where((ki > 0) & (ko > 0), ki * ko / np.maximum(ki + ko, 1e-300), 0.0)
+        # inner closed, outer open (roller pulled onto the inner ring): Q_i = -F, no stiffness
+        jac = np.array([[np.sum(kser * cos * cos), np.sum(kser * cos * sin)],
+                        [np.sum(kser * sin * cos), np.sum(kser * sin * sin)]])
+        return interf, di, do, qi, qo, res, jac
+
+    scale = max(radial_load, 1e-6 * k_inner * max(half, 1e-9) ** n, 1e-9)
+    if radial_load == 0.0 and x0 is None:
+        dx, dy = 0.0, 0.0
+    elif x0 is not None:
+        dx, dy = float(x0[0]), float(x0[1])
+    else:
+        # first guess: Stribeck's Q_max = 4.08 F_r / Z without clearance; with clearance only
+        # a few rollers carry the load, take F_r / 2
+        qmax = radial_load / 2.0 if half > 0 else 4.08 * radial_load / z
+        dser = (qmax / k_inner) ** (1 / n) + (qmax / k_outer) ** (1 / n)
+        dx, dy = half + dser, 0.0
+    it = 0
+    interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+    norm = float(np.hypot(*res))
+    while norm > rtol * scale:
+        if it >= max_iter:
+            raise ConvergenceError("roller_load_distribution", norm, "Newton did not converge",
+                                   {"delta_x": dx, "delta_y": dy, "iterations": it})
+        it += 1
+        if radial_load == 0.0 and not np.any(qi > 0.0):
+            break
+        n_closed = int(np.count_nonzero(qi > 0.0))
+        if n_closed == 0:
+            # no closed inner contact: move along the load to the first closure
+            close_at = (np.maximum(fb, 0.0) / k_outer) ** (1.0 / n)
+            c_safe = np.where(cos > 1e-3, cos, 1.0)
+            need = np.where(cos > 1e-3, (half + close_at - dy * sin) / c_safe, np.inf)
+            dx = max(float(np.min(need)), dx) * (1.0 + 1e-9) + 1e-13
+            interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+            norm = float(np.hypot(*res))
+            continue
+        if n_closed == 1 or abs(np.linalg.det(jac)) <= 1e-12 * float(np.trace(jac)) ** 2:
+            # one contact (rank-1 Jacobian): slide at right angles to it, towards the
+            # roller that can cancel the residual, until that roller closes
+            j = int(np.argmax(qi))
+            nvec = np.array([-sin[j], cos[j]])
+            if abs(float(res @ nvec)) <= 0.5 * rtol * scale:
+                # residual along the one contact: 1-D Newton along it
+                evec = np.array([cos[j], sin[j]])
+                kjj = float(evec @ jac @ evec)
+                jac = kjj * np.outer(evec, evec) + np.outer(nvec, nvec) * kjj
+                step = -np.linalg.solve(jac, res)
+                lam = 1.0
+                for _ in range(40):
+                    cand = evaluate(dx + lam * step[0], dy + lam * step[1])
+                    cn = float(np.hypot(*cand[5]))
+                    if cn < norm or lam < 1e-6:
+                        break
+                    lam *= 0.5
+                dx, dy = dx + lam * step[0], dy + lam * step[1]
+                interf, di, do, qi, qo, res, jac = cand
+                norm = cn
+                continue
+            direction = nvec * (1.0 if float(-res @ nvec) >= 0.0 else -1.0)
+            along = cos * direction[0] + sin * direction[1]
+            close_at = (np.maximum(fb, 0.0) / k_outer) ** (1.0 / n)
+            a_safe = np.where(along > 1e-9, along, 1.0)
+            dist = np.where((along > 1e-9) & (qi <= 0.0), (close_at - interf) / a_safe, np.inf)
+            tmin = float(np.min(dist))
+            if np.isfinite(tmin) and tmin > 0.0:
+                tmin = tmin * (1.0 + 1e-9) + 1e-13
+                dx, dy = dx + tmin * direction[0], dy + tmin * direction[1]
+                interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+                norm = float(np.hypot(*res))
+                continue
+            jac = jac + np.eye(2) * 1e-9 * float(np.trace(jac))
+        step = -np.linalg.solve(jac, res)
+        lam = 1.0
+        for _ in range(40):
+            cand = evaluate(dx + lam * step[0], dy + lam * step[1])
+            cn = float(np.hypot(*cand[5]))
+            if cn < norm or lam < 1e-6:
+                break
+            lam *= 0.5
+        dx, dy = dx + lam * step[0], dy + lam * step[1]
+        interf, di, do, qi, qo, res, jac = cand
+        norm = cn
+    return RollerLoadDistribution(
+        azimuth=psi, inner_load=qi, outer_load=qo, inner_deflection=di, outer_deflection=do,
+        interference=interf, body_force=fb, ring_displacement=np.array([dx, dy]),
+        loaded=qi > 0.0, residual=norm, iterations=it,
+    )
+
+
+def roller_body_force(
+    roller_mass: float,
+    pitch_diameter: float,
+    cage_speed: float,
+    azimuth: np.ndarray,
+    whirl_acceleration: tuple[float, float] = (0.0, 0.0),
+) -> np.ndarray:
+    """Outward radial body force on each roller [N].
+
+    ``F_j = m_r (d_m/2) omega_c^2 - m_r a_w . e_j`` with ``e_j = (cos psi_j, sin psi_j)``:
+    the centrifugal force of the orbiting roller (paper 000 ``F_omega``; Harris & Kotzalas
+    vol. 2 ch. 2) plus the d'Alembert force of the bearing-centre acceleration ``a_w``
+    (paper 000 eqs. 3-4, ``a_w = (e_x'', e_y'')``) in the frame that moves with the outer
+    ring.
+
+    Parameters
+    ----------
+    roller_mass : m_r [kg].  pitch_diameter : d_m [m].  cage_speed : omega_c [rad/s].
+    azimuth : (Z,) psi_j [rad].  whirl_acceleration : (a_x, a_y) [m/s^2].
+    """
+    psi = np.asarray(azimuth, dtype=float)
+    ax, ay = whirl_acceleration
+    return roller_mass * (0.5 * pitch_diameter * cage_speed**2
+                          - (ax * np.cos(psi) + ay * np.sin(psi)))

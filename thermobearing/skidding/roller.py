@@ -1,0 +1,489 @@
+"""Skidding of a cylindrical roller bearing: the Z + 1 equations of paper 000.
+
+Li, Chen, Zhang, Wang (2018), seed ``000_3b5ca6eed61dd596.txt`` [li2018_nu214_skidding],
+after Harris (1966) [harris_kotzalas2007]. Unknowns: the spin speed ``omega_r,j`` of every
+roller and the cage speed ``omega_c``. Equations (paper eqs. 12-15, 20-32):
+
+* kinematics (eqs. 12-15), in the cage frame, along each contact's race velocity:
+  inner  u_race = (d_m - D)/2 (omega - omega_c),  outer  u_race = (d_m + D)/2 omega_c,
+  roller surface speed u_roller = D/2 omega_r (both contacts), sliding V = u_race - u_roller;
+* roller moment about its axis (eqs. 22/25, 28/31):  S_i + S_o - f_d = 0, where S is the
+  shear force (Couette + Poiseuille, eq. 5/33-34) of a contact on the roller surface and
+  f_d the pocket-film friction (eq. 38);
+* roller force along the orbit (eqs. 21/24): the pocket normal force
+  F_d = (S_i + Q_xi) - (S_o + Q_xo) - m_r a_t,j  (Q_x the pressure's rolling force, eq. 35;
+  a_t the tangential whirl acceleration, eqs. 3-4);
+* cage (eq. 32): sum_j F_d,j = 0 (the paper's free cage; an optional cage drag torque
+  ``cage_drag_torque`` [N m] can be added: sum_j F_d,j = T_c / (d_m/2)).
+
+Radial equilibrium (eqs. 20/23) with the centrifugal force and the whirl inertia gives the
+contact loads (:mod:`thermobearing.loads_roller`); an unloaded roller has no inner contact
+(paper sec. 1: it rolls on the outer race, pressed by its centrifugal force).
+
+Numerics: Newton-Raphson on the Z + 1 equations with a structured finite-difference
+Jacobian (roller blocks are scalar and coupled only through the cage: an "arrow" matrix,
+two extra residual evaluations per iteration, eliminated in O(Z)), backtracking line
+search, warm starts, and an outer fixed point for the centrifugal loads. Failure raises
+:class:`~thermobearing.errors.ConvergenceError` with the residual and the state.
+
+Slip (paper eqs. 39-40): s_f = 1 - n / n_m, n_m = n_i (1 - D/d_m)/2.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError, check_finite, check_positive
+from ..loads_roller import LINE_CONTACT_EXPONENT, roller_body_force, roller_load_distribution
+from .roller_fluid import ROLLER_DRAG, LineContactForces, pocket_forces
+
+#: default pocket clearance when the cage geometry gives none [m] (estimated: 1-2 % of D)
+DEFAULT_POCKET_CLEARANCE_FRACTION = 0.015
+
+
+@dataclass(frozen=True)
+class RollerSkiddingResult:
+    """Quasi-static skidding state of a cylindrical roller bearing (SI).
+
+    Attributes
+    ----------
+    inner_speed : omega [rad/s].  cage_speed : omega_c [rad/s].
+    cage_speed_ratio : omega_c / omega [-].
+    theoretical_cage_speed_ratio : (1 - D/d_m)/2 (paper 000 eq. 40) [-].
+    slip : cage slip fraction s_f = 1 - CSR / CSR_th (paper 000 eq. 39) [-].
+    roller_speed : (Z,) roller spin omega_r about its own axis [rad/s] (positive = rolling
+        sense, the sense that pure rolling on the inner race gives).
+    azimuth : (Z,) roller azimuths [rad].
+    inner_load, outer_load : (Z,) [N].
+    inner_sliding_speed, outer_sliding_speed : (Z,) V = u_race - u_roller [m/s].
+    inner_entrainment_speed, outer_entrainment_speed : (Z,) (u_race + u_roller)/2 [m/s].
+    inner, outer : LineContactForces of the two contacts.
+    pocket_normal_force : (Z,) F_d [N] (positive: the roller pushes the cage forward).
+    pocket_friction : (Z,) f_d [N].
+    converged : bool.  residual_norm : scaled residual norm [-].  iterations : Newton steps.
+    residual : (Z+1,) force residuals [N] at the solution.
+    temperature [K], eta0 [Pa s] used.
+    """
+
+    inner_speed: float
+    cage_speed: float
+    cage_speed_ratio: float
+    theoretical_cage_speed_ratio: float
+    slip: float
+    roller_speed: np.ndarray
+    azimuth: np.ndarray
+    inner_load: np.ndarray
+    outer_load: np.ndarray
+    inner_sliding_speed: np.ndarray
+    outer_sliding_speed: np.ndarray
+    inner_entrainment_speed: np.ndarray
+    outer_entrainment_speed: np.ndarray
+    inner: LineContactForces
+    outer: LineContactForces
+    pocket_normal_force: np.ndarray
+    pocket_friction: np.ndarray
+    converged: bool
+    residual_norm: float
+    iterations: int
+    residual: np.ndarray
+    temperature: float
+    eta0: float
+    extras: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def cage_speed_rpm(self) -> float:
+        """Cage speed [r/min] (for reports)."""
+        return self.cage_speed * 30.0 / math.pi
+
+    @property
+    def element_speeds(self) -> np.ndarray:
+        """Alias of ``roller_speed`` (the common skidding-result name)."""
+        return self.roller_speed
+
+
+@dataclass(frozen=True)
+class RollerModel:
+    """Everything the residual needs, fixed during one solve (built by :func:`build_model`).
+
+    Geometry: pitch_diameter d_m, roller_diameter D, length l, n_rollers Z, roller_mass,
+    radii R_i, R_o [m], effective_modulus E' [Pa], diametral_clearance [m],
+    pocket_clearance [m], contact stiffnesses k_inner, k_outer [N/m^(10/9)].
+    Fluid: eta0 [Pa s], alpha [1/Pa], temperature [K], film(u_e, w, race) -> h_c [m],
+    traction_law, contact_forces (drag model callable), cage_drag_torque [N m].
+    """
+
+    pitch_diameter: float
+    roller_diameter: float
+    length: float
+    n_rollers: int
+    roller_mass: float
+    radius_inner: float
+    radius_outer: float
+    effective_modulus: float
+    diametral_clearance: float
+    pocket_clearance: float
+    k_inner: float
+    k_outer: float
+    eta0: float
+    alpha: float
+    temperature: float
+    film_inner: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    film_outer: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    traction_law: Any
+    contact_forces: Callable[..., LineContactForces]
+    cage_drag_torque: float = 0.0
+    rolling_force: str = "regime_min"
+
+    @property
+    def theoretical_cage_speed_ratio(self) -> float:
+        """(1 - D/d_m)/2, paper 000 eq. 40."""
+        return 0.5 * (1.0 - self.roller_diameter / self.pitch_diameter)
+
+
+def _film_for(lubricant: Any, temperature: float, eta0: float, alpha: float, radius: float,
+              e_prime: float, film_model: str | Callable[..., Any]
+              ) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """``film(u_e, w) -> h_c`` from a film model of :mod:`thermobearing.film` or a callable.
+
+    A callable is used as ``film_model(u_e [m/s], w [N/m], radius [m], eta0 [Pa s],
+    alpha [1/Pa], e_prime [Pa]) -> h_c [m]``.
+    """
+    if callable(film_model):
+        return lambda ue, w: np.asarray(film_model(ue, w, radius, eta0, alpha, e_prime))
+    from ..film import FILM
+
+    func = FILM.get(film_model)
+
+    def h(ue: np.ndarray, w: np.ndarray) -> np.ndarray:
+        # line-contact film formulas take (u, eta0, alpha, load, length, R_x, E'): pass the
+        # load per unit length with a unit length
+        return np.asarray(func(ue, eta0, alpha, w, 1.0, radius, effective_modulus=e_prime))
+
+    return h
+
+
+def default_traction_law(lubricant: Any, eyring_stress: float | None = None,
+                         limiting_shear_coefficient: float = 0.075) -> Any:
+    """Eyring/Newtonian film with a limiting shear stress (traction law of the force model).
+
+    ``eyring_stress=None`` gives the Newtonian film of paper 000 eq. 5 (capped by Lambda p).
+    """
+    from ..traction import make_traction_law
+
+    return make_traction_law("eyring_limiting_shear", lubricant=lubricant,
+                             limiting_shear_coefficient=limiting_shear_coefficient,
+                             eyring_stress=eyring_stress)
+
+
+def build_model(
+    bearing: Any,
+    lubricant: Any,
+    temperature: float,
+    *,
+    viscosity: float | None = None,
+    traction_law: Any = None,
+    eyring_stress: float | None = None,
+    limiting_shear_coefficient: float = 0.075,
+    film_model: str | Callable[..., Any] = "moes_line_central",
+    drag_model: str = "closed_form",
+    pocket_clearance: float | None = None,
+    cage_drag_torque: float = 0.0,
+    rolling_force: str = "regime_min",
+) -> RollerModel:
+    """Collect geometry, stiffness, fluid properties and models for the residual.
+
+    Parameters
+    ----------
+    bearing : :class:`thermobearing.geometry.RollerBearing`.
+    lubricant : :class:`thermobearing.lubricant.Lubricant`.
+    temperature : oil/contact temperature [K].
+    viscosity : ambient viscosity override eta0 [Pa s] (None: lubricant at temperature).
+        When given, the lubricant's viscosity law is replaced by an isothermal eta0 for the
+        traction law too.
+    traction_law : traction law object (default :func:`default_traction_law`).
+    eyring_stress, limiting_shear_coefficient : parameters of the default traction law.
+    film_model : line-contact central-film model in :data:`thermobearing.film.FILM` (default
+        Moes 1992, which spans the rigid-isoviscous regime of the centrifugally loaded rollers
+        and the EHL regime of the loaded ones) or a callable (see ``_film_for``).
+    drag_model : name in :data:`~thermobearing.skidding.roller_fluid.ROLLER_DRAG`.
+    pocket_clearance : c_p [m] (default: the cage's pocket clearance, else 1.5 % of D).
+    cage_drag_torque : resisting torque on the cage [N m] (paper 000: 0).
+    rolling_force : rolling (pressure) force model of the raceway contacts, see
+        :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
+    """
+    from ..hertz import line_contact_stiffness
+
+    check_positive("temperature", temperature)
+    if getattr(bearing, "kind", None) != "cylindrical":
+        raise InputError("bearing.kind", getattr(bearing, "kind", None),
+                         "a cylindrical roller bearing (RollerBearing)")
+    if viscosity is not None:
+        check_positive("viscosity", viscosity)
+        lubricant = dataclasses.replace(lubricant, viscosity_law="isothermal",
+                                        viscosity_parameters={"eta0": float(viscosity)})
+    eta0 = float(np.asarray(lubricant.dynamic_viscosity(temperature)))
+    alpha = float(np.asarray(lubricant.pressure_viscosity_coefficient(temperature)))
+    d_m = bearing.pitch_diameter
+    d = bearing.roller_diameter
+    length = bearing.roller_effective_length
+    e_prime = bearing.effective_modulus
+    r_i, _ = bearing.curvature("inner")
+    r_o, _ = bearing.curvature("outer")
+    k = float(line_contact_stiffness(length, e_prime))
+    if pocket_clearance is None:
+        cage = getattr(bearing, "cage", None)
+        pc = getattr(cage, "pocket_clearance", None) if cage is not None else None
+        pocket_clearance = pc if pc else DEFAULT_POCKET_CLEARANCE_FRACTION * d
+    check_positive("pocket_clearance", pocket_clearance)
+    law = traction_law if traction_law is not None else default_traction_law(
+        lubricant, eyring_stress, limiting_shear_coefficient)
+    return RollerModel(
+        pitch_diameter=d_m, roller_diameter=d, length=length, n_rollers=bearing.n_rollers,
+        roller_mass=bearing.roller_mass, radius_inner=r_i, radius_outer=r_o,
+        effective_modulus=e_prime, diametral_clearance=bearing.diametral_clearance,
+        pocket_clearance=float(pocket_clearance), k_inner=k, k_outer=k, eta0=eta0, alpha=alpha,
+        temperature=float(temperature),
+        film_inner=_film_for(lubricant, temperature, eta0, alpha, r_i, e_prime, film_model),
+        film_outer=_film_for(lubricant, temperature, eta0, alpha, r_o, e_prime, film_model),
+        traction_law=law, contact_forces=ROLLER_DRAG.get(drag_model)(),
+        cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
+    )
+
+
+@dataclass(frozen=True)
+class _Eval:
+    roller_eq: np.ndarray  # (Z,) moment balances / (D/2) [N]
+    pocket: np.ndarray  # (Z,) F_d [N]
+    cage_eq: float  # sum F_d - T_c/(d_m/2) [N]
+    inner: LineContactForces
+    outer: LineContactForces
+    friction: np.ndarray
+    v_i: np.ndarray
+    v_o: np.ndarray
+    ue_i: np.ndarray
+    ue_o: np.ndarray
+    q_o: np.ndarray
+
+
+def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: float,
+             inner_load: np.ndarray, body_force_const: np.ndarray, azimuth: np.ndarray,
+             whirl_acceleration: tuple[float, float]) -> _Eval:
+    """Residuals of the Z + 1 equations (module docstring) at (omega_r, omega_c).
+
+    ``body_force_const`` is the outward body force without the centrifugal term (whirl
+    inertia) [N]; the centrifugal force m (d_m/2) omega_c^2 is added here so that the outer
+    loads follow omega_c exactly.
+    """
+    d_m, d = model.pitch_diameter, model.roller_diameter
+    half_d = 0.5 * d
+    q_o = inner_load + body_force_const + model.roller_mass * 0.5 * d_m * omega_c**2
+    q_o = np.maximum(q_o, 0.0)
+    u_ri = 0.5 * (d_m - d) * (omega - omega_c) * np.ones_like(omega_r)
+    u_ro = 0.5 * (d_m + d) * omega_c * np.ones_like(omega_r)
+    u_roll = half_d * omega_r
+    common = dict(eta0=model.eta0, alpha=model.alpha, traction_law=model.traction_law,
+                  temperature=model.temperature, rolling_force=model.rolling_force)
+    fi = model.contact_forces(inner_load, model.length, model.radius_inner,
+                              model.effective_modulus, u_ri, u_roll, film=model.film_inner,
+                              **common)
+    fo = model.contact_forces(q_o, model.length, model.radius_outer, model.effective_modulus,
+                              u_ro, u_roll, film=model.film_outer, **common)
+    ax, ay = whirl_acceleration
+    a_t = -ax * np.sin(azimuth) + ay * np.cos(azimuth)
+    pocket = fi.orbital_force - fo.orbital_force - model.roller_mass * a_t
+    fric = pocket_forces(pocket, omega_r, d, model.length, model.eta0,
+                         model.pocket_clearance).friction
+    roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
+    cage_eq = float(np.sum(pocket)) - model.cage_drag_torque / (0.5 * d_m)
+    return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, u_ri - u_roll, u_ro - u_roll,
+                 0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o)
+
+
+def _newton(model: RollerModel, omega: float, x0: np.ndarray, inner_load: np.ndarray,
+            fb: np.ndarray, psi: np.ndarray, acc: tuple[float, float], *, tol: float,
+            max_iter: int) -> tuple[np.ndarray, _Eval, float, int, bool]:
+    """Newton with the arrow-structured FD Jacobian and backtracking. x = (omega_r, omega_c)."""
+    z = model.n_rollers
+    force_scale = max(float(np.max(inner_load, initial=0.0)),
+                      model.roller_mass * 0.5 * model.pitch_diameter * omega**2 * 0.05, 1e-3)
+
+    def ev(x: np.ndarray) -> tuple[_Eval, np.ndarray, np.ndarray]:
+        e = evaluate(model, omega, x[:z], x[z], inner_load, fb, psi, acc)
+        r = np.append(e.roller_eq, e.cage_eq) / force_scale
+        return e, r, e.pocket
+
+    x = np.array(x0, dtype=float)
+    e, r, pk = ev(x)
+    norm = float(np.linalg.norm(r))
+    it = 0
+    while norm > tol and it < max_iter:
+        it += 1
+        h = 1e-7 * omega
+        xp = x.copy()
+        xp[:z] += h
+        _, rp, pkp = ev(xp)
+        diag = (rp[:z] - r[:z]) / h
+        c_row = (pkp - pk) / (h * force_scale)
+        xq = x.copy()
+        xq[z] += h
+        _, rq, _ = ev(xq)
+        b_col = (rq[:z] - r[:z]) / h
+        d_cc = (rq[z] - r[z]) / h
+        diag = np.where(np.abs(diag) > 1e-300, diag, 1e-300)
+        denom = d_cc - np.sum(c_row * b_col / diag)
+        if not np.isfinite(denom) or denom == 0.0:
+            break
+        dwc = (-r[z] + np.sum(c_row * r[:z] / diag)) / denom
+        dwr = (-r[:z] - b_col * dwc) / diag
+        step = np.append(dwr, dwc)
+        # keep the cage inside (0, omega) and the rollers turning forward
+        lam = 1.0
+        limit = 0.5 * omega
+        big = np.max(np.abs(step) / limit)
+        if big > 1.0:
+            lam = 1.0 / big
+        accepted = False
+        for _ in range(30):
+            xn = x + lam * step
+            if 0.0 < xn[z] < omega and np.all(xn[:z] > 0.0):
+                en, rn, pkn = ev(xn)
+                nn = float(np.linalg.norm(rn))
+                if np.isfinite(nn) and nn < (1.0 - 1e-4 * lam) * norm:
+                    accepted = True
+                    break
+            lam *= 0.5
+        if not accepted:
+            break
+        x, e, r, pk, norm = xn, en, rn, pkn, nn
+    return x, e, norm, it, norm <= tol
+
+
+def initial_guess(model: RollerModel, omega: float, cage_ratio: float | None = None) -> np.ndarray:
+    """Cage at ``cage_ratio`` (default 0.8 of the theoretical CSR), rollers rolling on the
+    outer race (paper 000's unloaded-zone assumption)."""
+    csr = model.theoretical_cage_speed_ratio * (0.8 if cage_ratio is None else cage_ratio)
+    wc = csr * omega
+    wr = (model.pitch_diameter + model.roller_diameter) / model.roller_diameter * wc
+    return np.append(np.full(model.n_rollers, wr), wc)
+
+
+def solve_model(
+    model: RollerModel,
+    omega: float,
+    radial_load: float,
+    *,
+    azimuth: np.ndarray | None = None,
+    whirl_acceleration: tuple[float, float] = (0.0, 0.0),
+    x0: np.ndarray | None = None,
+    tol: float = 1e-9,
+    max_iter: int = 60,
+    load_x0: tuple[float, float] | None = None,
+) -> RollerSkiddingResult:
+    """Solve the Z + 1 equations for a prepared :class:`RollerModel` (see :func:`solve_roller`)."""
+    z = model.n_rollers
+    psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
+    starts = [x0] if x0 is not None else []
+    starts += [initial_guess(model, omega, c) for c in (0.8, 0.5, 0.95, 0.3)]
+    best = None
+    for start in starts:
+        x = np.array(start, dtype=float)
+        ring = load_x0
+        for _outer in range(8):
+            fb_total = roller_body_force(model.roller_mass, model.pitch_diameter, x[z], psi,
+                                         whirl_acceleration)
+            ld = roller_load_distribution(z, model.diametral_clearance, radial_load,
+                                          model.k_inner, model.k_outer, body_force=fb_total,
+                                          azimuth=psi, exponent=LINE_CONTACT_EXPONENT,
+                                          x0=ring)
+            ring = tuple(ld.ring_displacement)
+            fb_whirl = fb_total - model.roller_mass * 0.5 * model.pitch_diameter * x[z] ** 2
+            wc_old = x[z]
+            x, e, norm, it, ok = _newton(model, omega, x, ld.inner_load, fb_whirl, psi,
+                                         whirl_acceleration, tol=tol, max_iter=max_iter)
+            if not ok or abs(x[z] - wc_old) <= 1e-9 * omega:
+                break
+        if best is None or norm < best[2]:
+            best = (x, e, norm, it, ok, ld)
+        if ok:
+            break
+    x, e, norm, it, ok, ld = best
+    if not ok:
+        raise ConvergenceError(
+            "roller_skidding", norm, "Newton with line search stalled",
+            {"cage_speed": x[z], "cage_speed_ratio": x[z] / omega, "radial_load": radial_load,
+             "inner_speed": omega, "roller_speed_mean": float(np.mean(x[:z])),
+             "iterations": it})
+    csr = x[z] / omega
+    csr_th = model.theoretical_cage_speed_ratio
+    return RollerSkiddingResult(
+        inner_speed=omega, cage_speed=float(x[z]), cage_speed_ratio=float(csr),
+        theoretical_cage_speed_ratio=csr_th, slip=float(1.0 - csr / csr_th),
+        roller_speed=x[:z].copy(), azimuth=psi, inner_load=ld.inner_load, outer_load=e.q_o,
+        inner_sliding_speed=e.v_i, outer_sliding_speed=e.v_o,
+        inner_entrainment_speed=e.ue_i, outer_entrainment_speed=e.ue_o,
+        inner=e.inner, outer=e.outer, pocket_normal_force=e.pocket, pocket_friction=e.friction,
+        converged=True, residual_norm=norm, iterations=it,
+        residual=np.append(e.roller_eq, e.cage_eq), temperature=model.temperature,
+        eta0=model.eta0, extras={"ring_displacement": ld.ring_displacement,
+                                 "n_loaded": ld.n_loaded},
+    )
+
+
+def solve_roller(
+    bearing: Any,
+    lubricant: Any,
+    speed: float,
+    radial_load: float,
+    axial_load: float = 0.0,
+    temperature: float = 313.15,
+    *,
+    whirl: Any = None,
+    x0: np.ndarray | None = None,
+    azimuth: np.ndarray | None = None,
+    tol: float = 1e-9,
+    max_iter: int = 60,
+    **model_options: Any,
+) -> Any:
+    """Cage and roller speeds of a cylindrical roller bearing (paper 000 Z + 1 equations).
+
+    Parameters
+    ----------
+    bearing : :class:`thermobearing.geometry.RollerBearing`.
+    lubricant : :class:`thermobearing.lubricant.Lubricant`.
+    speed : inner-ring speed omega [rad/s] (> 0; outer ring fixed).
+    radial_load : F_r [N] (>= 0).
+    axial_load : must be 0 (a cylindrical roller bearing carries no axial load here) [N].
+    temperature : oil/contact temperature [K].
+    whirl : None, or a :class:`thermobearing.skidding.whirl.Whirl` (paper 000 eqs. 1-4):
+        the result is then a :class:`~thermobearing.skidding.whirl.WhirlResult` time series.
+    x0 : warm start (omega_r (Z,), omega_c) [rad/s].
+    azimuth : (Z,) roller azimuths [rad] (default: a roller under the load).
+    tol : tolerance on the residual norm scaled by the largest inner load [-].
+    **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
+        limiting_shear_coefficient, traction_law, film_model, drag_model, pocket_clearance,
+        cage_drag_torque).
+
+    Returns
+    -------
+    RollerSkiddingResult (or WhirlResult when ``whirl`` is given).
+    """
+    check_positive("speed", speed)
+    check_positive("radial_load", radial_load, allow_zero=True)
+    check_finite("axial_load", axial_load)
+    if axial_load != 0.0:
+        raise InputError("axial_load", axial_load,
+                         "0 for a cylindrical roller bearing (roller-rib thrust is not modelled "
+                         "in the skidding solver; see thermobearing.rib)")
+    model = build_model(bearing, lubricant, temperature, **model_options)
+    if whirl is not None:
+        from .whirl import solve_whirl
+
+        return solve_whirl(model, speed, radial_load, whirl, x0=x0, tol=tol, max_iter=max_iter)
+    return solve_model(model, speed, radial_load, azimuth=azimuth, x0=x0, tol=tol,
+                       max_iter=max_iter)

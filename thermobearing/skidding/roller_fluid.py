@@ -1,0 +1,344 @@
+"""Fluid forces on a cylindrical roller: raceway line contacts and the cage pocket.
+
+Closed-form route of paper 000 (Li et al. 2018, seed ``000_3b5ca6eed61dd596.txt``): the
+fluid frictional force on a surface of a lubricated line contact is (its eq. 5)
+
+    T = - int h/2 dp/dx dx  +  (u2 - u1) int eta / h dx           (Poiseuille + Couette)
+
+and the roller also feels the rolling-direction component of the film pressure, its
+``Q_x`` (eq. 35). The paper gets ``p(x)`` and ``h(x)`` from a numerical (multigrid) EHL
+solution; here they come in closed form, per contact:
+
+* Hertz zone |x| < b: semi-elliptic Hertz pressure, film thickness h_c from a closed-form
+  central-film formula (:mod:`thermobearing.film`, regime-spanning Moes formula by default),
+  shear stress from a traction law of :mod:`thermobearing.traction` (the same law object the
+  heat sources use) at the local Hertz pressure.
+* Inlet x < -b and outlet x > b: the gap of the elastic line contact outside the Hertz zone
+  (Johnson 1985 eq. 4.46 type separation, rigid ``x^2/2R`` far away) above h_c, ambient
+  viscosity; Newtonian Couette shear ``eta0 (u2 - u1)/h``, the outlet cavitated (film
+  fraction h_c/h of the gap carries the shear).
+* Rolling (Poiseuille) force: integrating eq. 5's first term by parts gives
+  ``-int h/2 dp/dx dx = int p/2 dh/dx dx``; for a cylinder on a plane this is exactly half
+  of the pressure's rolling-direction force on the cylinder, ``Q_x/2``, on each surface,
+  against the entrainment. ``Q_x`` is the smaller of the rigid-isoviscous value (Martin
+  cylinder with Reynolds outlet conditions, coefficients computed below from the Reynolds
+  equation) and the piezoviscous-elastic value of paper 000 eq. 35 (Dowson-Higginson
+  ``Q_x = 18.4 G^-0.3 U^0.7 E' R l``; the paper's factor (1 - D/d_m) belongs to its
+  normalisation by the roller radius and is absorbed in the contact radius R here). The
+  D-H formula is a heavy-load EHL fit and gives rolling forces of the order of the normal
+  load at the centrifugal-only loads of an unloaded roller, where the contact is
+  rigid-isoviscous; the minimum picks the regime.
+
+Cage pocket (paper 000 eqs. 37-38): a rigid roller turning at ``omega_r`` against a flat
+pocket face, isoviscous, Reynolds outlet condition. The garbled printed form
+(``2.447 eta/omega (D x/2)^2 / sqrt(h0)``) is read as the Martin load
+``w = 2.448 eta U R / h0`` (U = sum of the surface speeds = omega_r D/2, R = D/2), which is
+the coefficient printed, and a friction force ``~ eta U sqrt(R/h0)``: the normal force
+``F_d`` fixes the film ``h0`` and the friction follows, ``f_d ~ sqrt(eta U R F_d l)``.
+The film is capped by the pocket clearance ``c_p``: ``1/h0 = F_d/(k_w eta U R l) + 1/c_p``.
+
+All functions are vectorised over rollers; SI units throughout.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy import integrate as sint
+from scipy import optimize as sopt
+from scipy.special import roots_legendre
+
+from ..errors import UnknownNameError
+from ..registry import Registry
+
+ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
+
+#: Drag models of the roller skidding solver: name -> factory returning a
+#: ``contact_forces(...)`` callable (see :func:`closed_form_contact_forces`). A numerical
+#: line-contact EHL (thermobearing.ehl) can register here and replace the closed form.
+ROLLER_DRAG: Registry[Callable[..., Any]] = Registry(
+    "roller_drag", "fluid forces of roller-raceway line contacts for the roller skidding solver")
+
+
+@functools.lru_cache(maxsize=1)
+def martin_coefficients() -> tuple[float, float, float, float]:
+    """Rigid-isoviscous cylinder-on-plane coefficients (Reynolds outlet condition).
+
+    With X = x / sqrt(2 R h0), H = 1 + X^2 and the Reynolds equation
+    ``dp/dx = 6 eta U (h - h*)/h^3`` (U = u1 + u2), p = 0 at X -> -inf and
+    p = dp/dx = 0 at the outlet X*:
+
+    * load per unit length      ``w = k_w eta U R / h0``           (k_w = 2.448, Martin)
+    * pressure force on the cylinder along the entrainment ``Q_x = k_q eta U sqrt(R/h0)``
+      per unit length (each surface gets the Poiseuille force ``Q_x/2`` against U)
+    * Couette integral ``int_fluid dx / h = k_c sqrt(R/h0)`` (full film up to X*, then the
+      cavitated film of thickness h* spread over the gap: integrand h*/h^2).
+
+    Returns (k_w, k_q, k_c, X*). Reference: Hamrock et al. 2004 ch. 8 (Reynolds boundary
+    condition, rigid cylinder); paper 000 eqs. 5, 37-38.
+    """
+
+    def pi_at_outlet(xs: float) -> float:
+        hs = 1.0 + xs * xs
+        # Pi(X) = int_-inf^X (H - H*)/H^3 dX'  with  tan substitution X = tan g
+        g = math.atan(xs)
+        # int cos^2 - Hs cos^4 over g in (-pi/2, g)
+        c2 = 0.5 * (g + math.pi / 2) + 0.25 * math.sin(2 * g)
+        c4 = 3.0 / 8.0 * (g + math.pi / 2) + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
+        return c2 - hs * c4
+
+    xs = sopt.brentq(pi_at_outlet, 0.05, 1.5)
+    hs = 1.0 + xs * xs
+
+    def pi_of(x: float) -> float:
+        g = math.atan(x)
+        c2 = 0.5 * (g + math.pi / 2) + 0.25 * math.sin(2 * g)
+        c4 = 3.0 / 8.0 * (g + math.pi / 2) + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
+        return c2 - hs * c4
+
+    int_pi = sint.quad(pi_of, -np.inf, xs, limit=200)[0]
+    int_pix = sint.quad(lambda x: pi_of(x) * x, -np.inf, xs, limit=200)[0]
+    # p = 6 eta U sqrt(2R) h0^-1.5 Pi ; w = 12 eta U R/h0 int Pi
+    k_w = 12.0 * int_pi
+    # Q_x = -(1/R) int p x dx = -12 sqrt(2) eta U sqrt(R/h0) int Pi X dX
+    k_q = -12.0 * math.sqrt(2.0) * int_pix
+    couette = (sint.quad(lambda x: 1.0 / (1.0 + x * x), -np.inf, xs)[0]
+               + sint.quad(lambda x: hs / (1.0 + x * x) ** 2, xs, np.inf)[0])
+    k_c = math.sqrt(2.0) * couette
+    return k_w, k_q, k_c, xs
+
+
+@dataclass(frozen=True)
+class LineContactForces:
+    """Fluid forces of one set of roller-raceway contacts (arrays over rollers).
+
+    Sign convention: the contact axis points along the *race* surface velocity relative to
+    the cage; ``u_race`` and ``u_roller`` are the surface speeds along it.
+
+    Attributes
+    ----------
+    traction : Couette (shear) force on the roller along the axis [N], sign of V = u_race -
+        u_roller (Hertz zone by the traction law, inlet/outlet Newtonian).
+    dtraction_dslide : d traction / d V [N s/m].
+    poiseuille : Poiseuille (rolling) shear force on each surface [N], >= 0, acting against
+        the entrainment direction.
+    rolling_force : Q_x, pressure force on the roller along the entrainment [N] (>= 0).
+    entrainment_sign : sign of (u_race + u_roller) (+1 or -1).
+    film_thickness : central film h_c [m] (inf where unloaded).
+    half_width, max_pressure : Hertz b [m], p_H [Pa].
+    hertz_traction : part of ``traction`` carried by the Hertz zone [N].
+    """
+
+    traction: np.ndarray
+    dtraction_dslide: np.ndarray
+    poiseuille: np.ndarray
+    rolling_force: np.ndarray
+    entrainment_sign: np.ndarray
+    film_thickness: np.ndarray
+    half_width: np.ndarray
+    max_pressure: np.ndarray
+    hertz_traction: np.ndarray
+
+    @property
+    def shear_force(self) -> np.ndarray:
+        """Total shear force on the roller surface along the axis [N] (torque-producing)."""
+        return self.traction - self.poiseuille * self.entrainment_sign
+
+    @property
+    def orbital_force(self) -> np.ndarray:
+        """Total fluid force on the roller along the axis (shear + pressure) [N]."""
+        return self.shear_force + self.rolling_force * self.entrainment_sign
+
+
+def outer_gap(X: np.ndarray) -> np.ndarray:
+    """Separation outside the Hertz zone of a line contact, in units of b^2 / R.
+
+    g(X) = (|X| sqrt(X^2 - 1) - arccosh |X|) / 2 for |X| >= 1 (0 inside), which tends to
+    X^2/2 (the rigid gap x^2/(2R)) far from the contact. Johnson 1985, Contact Mechanics,
+    sec. 4.3 (surface displacements of a Hertz line contact).
+    """
+    ax = np.maximum(np.abs(X), 1.0)
+    return 0.5 * (ax * np.sqrt(ax * ax - 1.0) - np.arccosh(ax))
+
+
+_N_HERTZ = 24
+_N_SIDE = 24
+
+
+@functools.lru_cache(maxsize=4)
+def _nodes(n: int) -> tuple[np.ndarray, np.ndarray]:
+    x, w = roots_legendre(n)
+    return x, w
+
+
+def closed_form_contact_forces(
+    load: Any,
+    length: float,
+    radius: float,
+    effective_modulus: float,
+    u_race: Any,
+    u_roller: Any,
+    *,
+    eta0: float,
+    alpha: float,
+    film: Callable[[np.ndarray, np.ndarray], np.ndarray],
+    traction_law: Any,
+    temperature: float,
+    rolling_force: str = "regime_min",
+) -> LineContactForces:
+    """Fluid forces of roller-raceway line contacts, closed form (module docstring).
+
+    Parameters
+    ----------
+    load : (Z,) normal loads Q [N] (0: no contact, all forces 0).
+    length : effective contact length l [m].  radius : reduced radius R_x [m].
+    effective_modulus : E' [Pa].
+    u_race, u_roller : (Z,) surface speeds along the contact axis [m/s] (race relative to the
+        cage, roller surface relative to its centre).
+    eta0 : ambient dynamic viscosity [Pa s].  alpha : pressure-viscosity coefficient [1/Pa].
+    film : ``film(entrainment_speed [m/s], load_per_length [N/m]) -> h_c [m]``.
+    traction_law : object with ``shear_stress(slide_speed, pressure, film_thickness,
+        temperature) -> (stress, dstress)`` (:mod:`thermobearing.traction`).
+    temperature : contact temperature [K].
+    rolling_force : "regime_min" (default: min of rigid-isoviscous and Dowson-Higginson),
+        "dowson_higginson" (paper 000 eq. 35 at every loaded contact) or "rigid_isoviscous".
+
+    Returns
+    -------
+    LineContactForces
+    """
+    if rolling_force not in ROLLING_FORCE_MODELS:
+        raise UnknownNameError("rolling_force", rolling_force, ROLLING_FORCE_MODELS)
+    q = np.asarray(load, dtype=float)
+    ur = np.asarray(u_race, dtype=float)
+    uro = np.asarray(u_roller, dtype=float)
+    slide = ur - uro
+    usum = ur + uro
+    sign = np.where(usum >= 0.0, 1.0, -1.0)
+    loaded = q > 0.0
+    w = np.where(loaded, q / length, 0.0)
+    b = np.sqrt(8.0 * w * radius / (math.pi * effective_modulus))
+    p_h = np.where(loaded, 2.0 * w / (math.pi * np.where(loaded, b, 1.0)), 0.0)
+    ue = np.maximum(0.5 * np.abs(usum), 1e-6)
+    h_c = np.where(loaded, film(ue, np.where(loaded, w, 1.0)), np.inf)
+    hc_safe = np.where(loaded, h_c, 1.0)
+
+    # --- Hertz zone: traction law at the local Hertz pressure ----------------------------
+    xg, wg = _nodes(_N_HERTZ)
+    pres = p_h[..., None] * np.sqrt(1.0 - xg**2)
+    speed = np.abs(slide)[..., None] * np.ones_like(xg)
+    stress, dstress = traction_law.shear_stress(
+        speed, pres, hc_safe[..., None] * np.ones_like(xg),
+        temperature * np.ones_like(pres))
+    dx_w = (b[..., None] * wg) * length
+    f_hz = np.sum(np.asarray(stress) * dx_w, axis=-1)
+    df_hz = np.sum(np.asarray(dstress) * dx_w, axis=-1)
+
+    # --- inlet and outlet: Newtonian, ambient viscosity ----------------------------------
+    # x = -(b + L t/(1-t)), t in (0,1); L = sqrt(2 R h_c) sets the rigid length scale
+    lsc = np.sqrt(2.0 * radius * hc_safe)
+    ts, wt = _nodes(_N_SIDE)
+    t = 0.5 * (ts + 1.0)
+    wt = 0.5 * wt
+    s = lsc[..., None] * t / (1.0 - t)
+    ds = lsc[..., None] * wt / (1.0 - t) ** 2
+    b_safe = np.where(b > 0, b, 1.0)
+    X = np.where(b[..., None] > 0, 1.0 + s / b_safe[..., None], np.inf)
+    gap = np.where(b[..., None] > 0,
+                   (b_safe**2 / radius)[..., None] * outer_gap(np.minimum(X, 1e150)),
+                   s * s / (2.0 * radius))
+    gap = np.where(np.isfinite(gap), gap, s * s / (2.0 * radius))
+    h = hc_safe[..., None] + gap
+    inlet = np.sum(ds / h, axis=-1)
+    outlet = np.sum(ds * hc_safe[..., None] / h**2, axis=-1)
+    c_side = np.where(loaded, eta0 * length * (inlet + outlet), 0.0)
+    traction = np.where(loaded, f_hz * np.sign(slide) + c_side * slide, 0.0)
+    dtraction = np.where(loaded, df_hz + c_side, 0.0)
+
+    # --- rolling force Q_x: min(rigid-isoviscous, Dowson-Higginson eq. 35) --------------
+    k_w, k_q, k_c, _ = martin_coefficients()
+    usum_abs = np.abs(usum)
+    qx_rigid = k_q * eta0 * usum_abs * length * np.sqrt(radius / hc_safe)
+    big_u = eta0 * usum_abs / (effective_modulus * radius)
+    g_mat = alpha * effective_modulus
+    qx_dh = 18.4 * g_mat**-0.3 * big_u**0.7 * effective_modulus * radius * length
+    if rolling_force == "regime_min":
+        qx = np.minimum(qx_rigid, qx_dh)
+    elif rolling_force == "dowson_higginson":
+        qx = qx_dh
+    else:
+        qx = qx_rigid
+    qx = np.where(loaded, qx, 0.0)
+    return LineContactForces(
+        traction=traction, dtraction_dslide=dtraction, poiseuille=0.5 * qx, rolling_force=qx,
+        entrainment_sign=sign, film_thickness=h_c, half_width=b, max_pressure=p_h,
+        hertz_traction=np.where(loaded, f_hz * np.sign(slide), 0.0),
+    )
+
+
+@dataclass(frozen=True)
+class PocketForces:
+    """Roller-cage pocket film (paper 000 eqs. 37-38, consistent form).
+
+    Attributes
+    ----------
+    friction : f_d, friction force on the roller surface against its rotation [N] (>= 0).
+    film_thickness : pocket film h0 [m].
+    """
+
+    friction: np.ndarray
+    film_thickness: np.ndarray
+
+
+def pocket_forces(
+    normal_force: Any,
+    roller_speed: Any,
+    roller_diameter: float,
+    length: float,
+    eta0: float,
+    pocket_clearance: float,
+    smoothing: float = 1e-4,
+) -> PocketForces:
+    """Friction of the roller-pocket film for a given pocket normal force.
+
+    ``h0`` from the Martin load ``|F_d| = k_w eta0 U R l / h0`` with U = |omega_r| D/2 and
+    R = D/2, capped smoothly by the pocket clearance, ``1/h0 = |F_d|/(k_w eta0 U R l) +
+    1/c_p``; then ``f_d = (k_c + k_q/2) eta0 U l sqrt(R/h0)`` (Couette + Poiseuille on the
+    roller surface, both against its motion).
+
+    Parameters
+    ----------
+    normal_force : (Z,) F_d [N] (either sign; the face it acts on does not matter here).
+    roller_speed : (Z,) roller angular speed omega_r [rad/s].
+    roller_diameter : D [m].  length : pocket contact length [m].
+    eta0 : ambient viscosity [Pa s].  pocket_clearance : c_p [m] (> 0).
+    smoothing : |F_d| is replaced by sqrt(F_d^2 + smoothing^2) [N] (differentiable at 0).
+
+    Reference: paper 000 eqs. 37-38; Hamrock et al. 2004 ch. 8 (rigid cylinder).
+    """
+    k_w, k_q, k_c, _ = martin_coefficients()
+    fn = np.sqrt(np.asarray(normal_force, dtype=float) ** 2 + smoothing**2)
+    r = 0.5 * roller_diameter
+    u = np.abs(np.asarray(roller_speed, dtype=float)) * r
+    u_safe = np.maximum(u, 1e-9)
+    inv_h = fn / (k_w * eta0 * u_safe * r * length) + 1.0 / pocket_clearance
+    h0 = 1.0 / inv_h
+    fric = (k_c + 0.5 * k_q) * eta0 * u * length * np.sqrt(r * inv_h)
+    return PocketForces(friction=fric, film_thickness=h0)
+
+
+@ROLLER_DRAG.register(
+    "closed_form",
+    references=["li2018_nu214_skidding", "hamrock2004", "johnson1985"],
+    parameters={},
+    validity="steady line contacts, fully flooded inlet; Hertz-zone shear by the given "
+             "traction law; rolling force min(rigid-isoviscous, Dowson-Higginson EHL)",
+)
+def closed_form_drag_model() -> Callable[..., LineContactForces]:
+    """Closed-form line-contact fluid forces (paper 000 eqs. 5, 33-35 with a closed-form film)."""
+    return closed_form_contact_forces

@@ -1,0 +1,84 @@
+"""Validation runner of the roller-bearing skidding solver (paper 000, NU214 with whirl).
+
+Case ``paper000_nu214_cage_speed``: Li et al. 2018 (seed ``000_3b5ca6eed61dd596.txt``)
+Tables 2-3 (cage speed min/max/mean/fluctuation and slip at n_i = 5000 r/min, e = 6e-5 m,
+for F_r = 100/150/200 N at eta0 = 0.08 Pa s and eta0 = 0.06/0.08/0.10 Pa s at 150 N) and
+Fig. 4 (fluctuation grows with the whirl radius, F_r = 200 N).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+from ..errors import InputError
+from ..units import to_si
+from . import RUNNERS
+
+#: (radial load [N], eta0 [Pa s]) -> quantity suffix, the conditions of Tables 2-3
+CONDITIONS = {
+    (100.0, 0.08): "Fr100_eta0.08",
+    (150.0, 0.08): "Fr150_eta0.08",
+    (200.0, 0.08): "Fr200_eta0.08",
+    (150.0, 0.06): "Fr150_eta0.06",
+    (150.0, 0.10): "Fr150_eta0.10",
+}
+
+
+def _get(inputs: dict[str, Any], key: str, kind: str) -> float:
+    if key not in inputs:
+        raise InputError(f"inputs.{key}", None, f"a {kind} quantity")
+    return to_si(inputs[key], kind, field=f"inputs.{key}")
+
+
+@RUNNERS.register("paper000_nu214_cage_speed",
+                  references=["li2018_nu214_skidding", "harris1966_roller_skidding"])
+def paper000_nu214_cage_speed(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
+    """Mean/min/max cage speed and slip along the whirl orbit, and the Fig. 4 trend."""
+    from ..geometry import load_bearing
+    from ..lubricant import load_lubricant
+    from ..skidding.roller import solve_roller
+    from ..skidding.whirl import Whirl
+
+    bearing = load_bearing(inputs.get("bearing", "NU214"))
+    lubricant = load_lubricant(inputs.get("lubricant", "PAPER000_OIL"))
+    speed = _get(inputs, "inner_speed", "angular_speed")
+    temperature = _get(inputs, "temperature", "temperature")
+    radius = _get(inputs, "whirl_radius", "length")
+    n_samples = int(inputs.get("n_samples", 36))
+    options = dict(inputs.get("model", {}))
+    out: dict[str, float] = {
+        "theoretical_cage_speed": speed * bearing.theoretical_cage_speed_ratio(),
+    }
+    for (load, eta0), tag in CONDITIONS.items():
+        res = solve_roller(bearing, lubricant, speed, load, 0.0, temperature, viscosity=eta0,
+                           whirl=Whirl(radius, n_samples=n_samples), **options)
+        st, sl = res.cage_speed_stats, res.slip_stats
+        out[f"mean_cage_speed_{tag}"] = st.mean
+        out[f"min_cage_speed_{tag}"] = st.minimum
+        out[f"max_cage_speed_{tag}"] = st.maximum
+        out[f"cage_speed_fluctuation_{tag}"] = st.fluctuation
+        out[f"mean_slip_{tag}"] = sl.mean
+    # directions of change (paper: cage speed falls with load, rises with viscosity)
+    out["cage_speed_change_Fr100_to_Fr200"] = (out["mean_cage_speed_Fr200_eta0.08"]
+                                               - out["mean_cage_speed_Fr100_eta0.08"])
+    out["cage_speed_change_eta0.06_to_eta0.10"] = (out["mean_cage_speed_Fr150_eta0.10"]
+                                                   - out["mean_cage_speed_Fr150_eta0.06"])
+    # Fig. 4: fluctuation against whirl radius at F_r = 200 N
+    fig4_load = _get(inputs, "fig4_radial_load", "force")
+    radii = [to_si(r, "length", field="inputs.fig4_whirl_radii")
+             for r in inputs.get("fig4_whirl_radii", [])]
+    if len(radii) < 2:
+        raise InputError("inputs.fig4_whirl_radii", radii, "at least two whirl radii")
+    fluct = []
+    for e in radii:
+        res = solve_roller(bearing, lubricant, speed, fig4_load, 0.0, temperature,
+                           viscosity=0.08, whirl=Whirl(e, n_samples=n_samples), **options)
+        fluct.append(res.cage_speed_stats.fluctuation)
+    growth = min(b / a for a, b in zip(fluct[:-1], fluct[1:], strict=True) if a > 0) \
+        if all(f > 0 for f in fluct[:-1]) else math.nan
+    out["fig4_fluctuation_growth_ratio_min"] = growth
+    out["fig4_fluctuation_smallest_radius"] = fluct[0]
+    out["fig4_fluctuation_largest_radius"] = fluct[-1]
+    return out
