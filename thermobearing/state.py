@@ -352,3 +352,156 @@ class KinematicState:
     def with_(self, **changes: Any) -> KinematicState:
         """A copy with some fields replaced (validated again)."""
         return replace(self, **changes)
+
+    @classmethod
+    def from_race_control(cls, bearing: Any, operating: OperatingPoint, *,
+                          control: str = "outer_race", inner_load: Any = None,
+                          outer_load: Any = None, contact_angle_i: Any = None,
+                          contact_angle_o: Any = None, load_distribution: Any = None,
+                          lubricant: Any = None, temperature: float | None = None,
+                          ) -> KinematicState:
+        """Kinematic state of race control (no centre slip) for the heat sources.
+
+        See :func:`race_control_state` (this is the same function).
+        """
+        return race_control_state(
+            bearing, operating, control=control, inner_load=inner_load, outer_load=outer_load,
+            contact_angle_i=contact_angle_i, contact_angle_o=contact_angle_o,
+            load_distribution=load_distribution, lubricant=lubricant, temperature=temperature)
+
+
+RACE_CONTROLS = ("outer_race", "inner_race", "pure_rolling")
+
+
+def deformed_surface_radius(conformity: float, element_diameter: float) -> float:
+    """Transverse radius of the deformed ball-groove contact surface, 2 f D / (2 f + 1) [m].
+
+    Mean of the ball and groove curvatures (equal elastic bodies); Harris & Kotzalas 2007.
+    """
+    return 2.0 * conformity * element_diameter / (2.0 * conformity + 1.0)
+
+
+def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str = "outer_race",
+                       inner_load: Any = None, outer_load: Any = None,
+                       contact_angle_i: Any = None, contact_angle_o: Any = None,
+                       load_distribution: Any = None, lubricant: Any = None,
+                       temperature: float | None = None) -> KinematicState:
+    """Build a :class:`KinematicState` from race-control kinematics (``kinematics.py``).
+
+    Parameters
+    ----------
+    bearing : ``geometry.BallBearing`` or ``geometry.RollerBearing``.
+    operating : ring speeds (and loads, used when the distribution is solved here).
+    control : "outer_race" | "inner_race" | "pure_rolling" (B's kinematics functions).
+    inner_load, outer_load : (Z,) contact normal loads [N]; with
+    contact_angle_i, contact_angle_o : (Z,) operating angles [rad] (default nominal).
+    load_distribution : instead of the arrays, an object with ``inner_load``,
+        ``outer_load`` and (balls) ``inner_contact_angle``, ``outer_contact_angle`` (e.g.
+        ``loads.ball_load_distribution`` / ``loads_roller.roller_load_distribution``).
+        If neither is given, the quasi-static distribution is solved with the operating
+        point's loads (``loads.py``).
+    lubricant, temperature : if both given, the central film thickness (Hamrock-Dowson 1977
+        for balls, Pan-Hamrock 1989 for rollers; ``film.py``) and the contact temperature
+        [K] are filled in (needed by film traction laws).
+
+    Returns
+    -------
+    KinematicState with ``origin="race_control"``: rolling at the contact centres
+    (sliding_speed = 0), spin and roll from the race-control attitude, Hertz ellipses from
+    ``hertz.py``, zero pocket forces (race control knows no cage).
+    """
+    from . import hertz, kinematics
+
+    if control not in RACE_CONTROLS:
+        raise UnknownNameError("race control", control, RACE_CONTROLS)
+    is_ball = hasattr(bearing, "ball_diameter")
+    if load_distribution is None and inner_load is None:
+        if is_ball:
+            from .loads import ball_load_distribution
+
+            load_distribution = ball_load_distribution(
+                bearing, operating.radial_load, operating.axial_load,
+                operating.inner_speed - operating.outer_speed)
+        else:
+            from .loads_roller import roller_load_distribution
+
+            load_distribution = roller_load_distribution(bearing, operating.radial_load)
+    if load_distribution is not None:
+        inner_load = load_distribution.inner_load
+        outer_load = load_distribution.outer_load
+        if is_ball:
+            contact_angle_i = load_distribution.inner_contact_angle
+            contact_angle_o = load_distribution.outer_contact_angle
+    if outer_load is None:
+        raise InputError("outer_load", None, "outer contact loads with the inner ones")
+    qi = np.asarray(inner_load, dtype=float)
+    qo = np.asarray(outer_load, dtype=float)
+    z = bearing.n_elements
+    if qi.shape != (z,) or qo.shape != (z,):
+        raise InputError("inner_load/outer_load", (qi.shape, qo.shape), f"arrays of shape ({z},)")
+    if is_ball:
+        ai = np.broadcast_to(bearing.contact_angle if contact_angle_i is None
+                             else contact_angle_i, (z,)).astype(float)
+        ao = np.broadcast_to(ai if contact_angle_o is None else contact_angle_o,
+                             (z,)).astype(float)
+    else:
+        ai = ao = np.zeros(z)
+    fn = {"outer_race": kinematics.outer_race_control,
+          "inner_race": kinematics.inner_race_control,
+          "pure_rolling": kinematics.pure_rolling}[control]
+    kin = fn(bearing, operating.inner_speed, ai if is_ball else None,
+             ao if is_ball else None, outer_speed=operating.outer_speed)
+    e_mod = bearing.effective_modulus
+    d = bearing.element_diameter
+    sets = []
+    for race, q, ang, spin, roll, u in (
+            ("inner", qi, ai, kin.spin_inner, kin.roll_inner, kin.entrainment_inner),
+            ("outer", qo, ao, kin.spin_outer, kin.roll_outer, kin.entrainment_outer)):
+        rx, ry = bearing.curvature(race, ang if is_ball else None)
+        rx = np.broadcast_to(np.asarray(rx, dtype=float), (z,))
+        ry = np.broadcast_to(np.asarray(ry, dtype=float), (z,))
+        if is_ball:
+            pc = hertz.point_contact(q, rx, ry, e_mod)
+            a, b, p0 = pc.a, pc.b, pc.max_pressure
+            conformity = bearing.inner_conformity if race == "inner" else bearing.outer_conformity
+            rd = deformed_surface_radius(conformity, d)
+            kind = "point"
+        else:
+            length = bearing.roller_effective_length
+            lc = hertz.line_contact(q, length, rx, e_mod, crown_radius=bearing.crown_radius)
+            a = 0.5 * np.broadcast_to(np.asarray(lc.contact_length, dtype=float), (z,))
+            b, p0 = lc.half_width, lc.max_pressure
+            rd = math.inf
+            kind = "line"
+        film = temp = None
+        if lubricant is not None and temperature is not None:
+            from . import film as film_mod
+
+            temp = np.full(z, float(temperature))
+            eta = lubricant.dynamic_viscosity(temperature)
+            alpha = lubricant.pressure_viscosity_coefficient(temperature)
+            uu = np.broadcast_to(np.asarray(u, dtype=float), (z,))
+            loaded = q > 0
+            qq = np.where(loaded, q, 1.0)
+            if is_ball:
+                h = film_mod.hamrock_dowson_1977_central(uu, eta, alpha, qq, rx, ry,
+                                                         effective_modulus=e_mod)
+            else:
+                h = film_mod.pan_hamrock_central(uu, eta, alpha, qq,
+                                                 bearing.roller_effective_length, rx,
+                                                 effective_modulus=e_mod)
+            film = np.where(loaded, h, 0.0)
+        sets.append(ContactSet(
+            race=race, kind=kind, normal_load=q, contact_angle=ang, semi_major=a, semi_minor=b,
+            max_pressure=p0, entrainment_speed=u, sliding_speed=0.0,
+            transverse_sliding_speed=0.0, spin_speed=spin if is_ball else 0.0,
+            roll_speed=roll, deformed_radius=rd, film_thickness=film, temperature=temp,
+            reduced_radius_x=rx, reduced_radius_y=ry))
+    orbital = np.broadcast_to(np.asarray(kin.orbital_speed, dtype=float), (z,))
+    return KinematicState(
+        inner_speed=operating.inner_speed, outer_speed=operating.outer_speed,
+        cage_speed=float(np.mean(orbital)), orbital_speed=orbital,
+        element_spin=np.broadcast_to(np.asarray(kin.element_spin, dtype=float), (z,)),
+        attitude_angle=np.broadcast_to(np.asarray(kin.attitude_angle, dtype=float), (z,)),
+        contacts=tuple(sets), origin="race_control",
+        azimuth=getattr(load_distribution, "azimuth", None))

@@ -1,0 +1,46 @@
+"""Pocket source: paper 002 eq. 19 by hand, friction blend, bad coefficients."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.heat_sources import pocket
+
+from .conftest import make_context, uniform_state
+
+
+def test_eq19_by_hand(qj1044, vg46, race_control_state):
+    # Q_bp = sum omega_r D f_bp / 2 with f = mu F: 20 balls, F = 100 N, mu = 0.1,
+    # omega_r = -500 rad/s: each 500 * D * 10 / 2
+    op, _ = race_control_state
+    z = qj1044.n_elements
+    ks = uniform_state(z, spin=-500.0, pocket_force=100.0)
+    ctx = make_context(qj1044, vg46, op, ks, options={"pocket_friction": {
+        "friction_coefficient": 0.1}})
+    r = pocket.pocket_friction(ctx)
+    assert r.total == pytest.approx(z * 500 * qj1044.ball_diameter * 0.1 * 100 / 2, rel=1e-12)
+    assert r.power_by_role["elements"] == pytest.approx(0.5 * r.total)
+    assert r.components == {"ball pocket": pytest.approx(r.total)}
+    assert r.force_pairs[0].power == pytest.approx(r.total, rel=1e-12)
+
+
+def test_race_control_gives_no_pocket_heat(qj1044, vg46, race_control_state):
+    op, ks = race_control_state
+    assert pocket.pocket_friction(make_context(qj1044, vg46, op, ks)).total == 0.0
+
+
+def test_blend():
+    np.testing.assert_allclose(pocket.pocket_friction_coefficient([0.5, 2.0, 5.0], 0.1, 0.01),
+                               [0.1, 0.055, 0.01])
+
+
+@pytest.mark.parametrize("mu", [-0.1, 1.01])
+def test_friction_outside_unit_interval(qj1044, vg46, race_control_state, mu):
+    op, _ = race_control_state
+    ks = uniform_state(qj1044.n_elements, pocket_force=10.0)
+    ctx = make_context(qj1044, vg46, op, ks, options={"pocket_friction": {
+        "friction_coefficient": mu}})
+    with pytest.raises(InputError, match="friction_coefficient"):
+        pocket.pocket_friction(ctx)

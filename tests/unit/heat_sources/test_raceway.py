@@ -1,0 +1,94 @@
+"""Raceway sources: traction heat by hand, Blok partition, paper 000 eq. 35 rolling force."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.errors import InputError, ValidityWarning
+from thermobearing.heat_sources import raceway
+from thermobearing.state import ContactSet
+from thermobearing.traction import make_traction_law
+
+from .conftest import make_context, uniform_state
+
+COULOMB = make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=1e-12)
+
+
+def _sliding_state(z, load=1000.0, slide=0.5):
+    contacts = tuple(
+        ContactSet(race=race, normal_load=np.full(z, load), semi_major=2e-3, semi_minor=3e-4,
+                   max_pressure=1e9, entrainment_speed=10.0, sliding_speed=slide)
+        for race in ("inner", "outer"))
+    return uniform_state(z, contacts=contacts)
+
+
+def test_pure_sliding_heat_is_mu_q_v(qj1044, vg46, race_control_state):
+    # hand calculation: 2 races x Z balls x mu Q |V| = 2 * Z * 0.05 * 1000 * 0.5
+    op, _ = race_control_state
+    z = qj1044.n_elements
+    ctx = make_context(qj1044, vg46, op, _sliding_state(z), traction=COULOMB)
+    r = raceway.raceway_traction(ctx)
+    assert r.total == pytest.approx(2 * z * 0.05 * 1000 * 0.5, rel=1e-12)
+    assert r.components["inner contact"] == pytest.approx(z * 25.0, rel=1e-12)
+    # same material? no: steel balls and rings of QJ1044 -> shares from Blok's rule
+    share = raceway.blok_partition(10.0, 0.5, 3e-4, qj1044.ball_material, qj1044.ring_material)
+    assert r.power_by_role["elements"] == pytest.approx(float(share) * r.total, rel=1e-12)
+
+
+def test_blok_partition_limits(qj1044):
+    m = qj1044.ring_material
+    assert float(raceway.blok_partition(5.0, 0.0, 3e-4, m, m)) == pytest.approx(0.5)
+    # element surface 4x faster through the contact: share sqrt(4)/(sqrt(4)+1) = 2/3
+    u, v = 2.5 * 1.0, 3.0  # u_e = u + v/2 = 4, u_r = u - v/2 = 1
+    assert float(raceway.blok_partition(u, v, 3e-4, m, m)) == pytest.approx(2 / 3, rel=1e-9)
+
+
+def test_traction_law_required(qj1044, vg46, race_control_state):
+    op, ks = race_control_state
+    with pytest.raises(InputError, match="traction"):
+        raceway.raceway_traction(make_context(qj1044, vg46, op, ks))
+
+
+def test_film_law_uses_race_control_film(qj1044, vg46, race_control_state):
+    op, ks = race_control_state
+    law = make_traction_law("eyring_limiting_shear", lubricant=vg46)
+    r = raceway.raceway_traction(make_context(qj1044, vg46, op, ks, traction=law))
+    assert r.total > 0 and math.isfinite(r.total)
+    assert set(r.components) == {"inner contact", "outer contact"}
+
+
+def test_film_law_without_film_errors(qj1044, vg46, race_control_state):
+    op, _ = race_control_state
+    law = make_traction_law("eyring_limiting_shear", lubricant=vg46)
+    ctx = make_context(qj1044, vg46, op, _sliding_state(qj1044.n_elements), traction=law)
+    with pytest.raises(InputError, match="film"):
+        raceway.raceway_traction(ctx)
+
+
+def test_rolling_force_paper000_by_hand():
+    # eq. 35: Q_x = 18.4 (1 - g) G^-0.3 U^0.7 E' R l; E' = 2.28e11, R = 7e-3, l = 16 mm,
+    # eta0 = 0.08, u = 10 m/s, alpha = 2e-8, g = 0.2
+    e, r, l, eta, u, a, g = 2.28e11, 7e-3, 0.016, 0.08, 10.0, 2e-8, 0.2
+    big_u = eta * u / (e * r)
+    expected = 18.4 * (1 - g) * (a * e) ** -0.3 * big_u ** 0.7 * e * r * l
+    got = raceway.rolling_force_paper000(u, eta, a, e, r, l, g)
+    assert float(got) == pytest.approx(expected, rel=1e-12)
+    # by hand: U = 5.013e-10, U^0.7 = 3.09e-7, G^-0.3 = 4560^-0.3 = 0.0798,
+    # 14.72 * 0.0798 * 3.09e-7 = 3.63e-7; E' R l = 2.554e7 N -> 9.28 N
+    assert float(got) == pytest.approx(9.28, rel=5e-3)  # N
+
+
+def test_rolling_resistance_heat_is_qx_u(qj1044, vg46, race_control_state):
+    op, ks = race_control_state
+    ctx = make_context(qj1044, vg46, op, ks)
+    with pytest.warns(ValidityWarning, match="line-contact"):
+        r = raceway.ehl_rolling_resistance(ctx)
+    cs = ks.contact("inner")
+    qx = r.forces["inner_rolling_force"]
+    # no sliding under race control: heat = Q_x u (module docstring)
+    assert r.components["inner rolling resistance"] == pytest.approx(
+        float(np.sum(qx * cs.entrainment_speed)), rel=1e-12)
+    assert sum(p.power for p in r.force_pairs) == pytest.approx(r.total, rel=1e-12)

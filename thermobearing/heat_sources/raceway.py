@@ -1,0 +1,221 @@
+"""Raceway heat sources: traction (shear) heat and EHL rolling resistance of element contacts.
+
+``raceway_traction``
+    For every element-raceway contact of the kinematic state, the traction law is integrated
+    over the Hertz ellipse (or the line contact) by :func:`thermobearing.contact_traction.
+    integrate` -- the very function the skidding solver calls -- so the heat is the power of
+    the traction forces and moments (force x relative sliding speed). This is the bounded
+    form of paper 002 (seed 002_0add79adaca5495c.txt) eq. 11: eq. 11 writes the heat as
+    (1/h) * integral of eta(T, p, gamma) dU^2 over the ellipse; with the viscosity taken
+    literally at Hertzian pressure (Barus alpha = 2e-8 1/Pa at 1.5 GPa: e^30 ~ 1e13 times
+    eta0) that integral is unbounded for any sliding, so here the shear stress comes from a
+    traction law with a limiting shear stress (or a measured slip curve).
+    Heat split between element and ring: Blok's partition for two surfaces moving through
+    a flash-heated band at high Peclet number (Blok 1937/1963): each body takes a share
+    proportional to e_k sqrt(|u_k|), e = sqrt(k rho c) the thermal effusivity and u_k the
+    speed of surface k through the contact; the speed is floored at the Peclet-one speed
+    2 kappa / b so a stationary surface still takes its conductive share.
+``ehl_rolling_resistance``
+    Hydrodynamic (Poiseuille) rolling force of the EHL inlet, the pressure term
+    -integral (h/2) dp/dx dx of paper 000 (seed 000_3b5ca6eed61dd596.txt) eq. 5, in the
+    closed form the same paper uses, eq. 35:  Q_x / (E' R_x l) = 18.4 (1 - D/d_m) G^-0.3 U^0.7
+    with G = alpha E', U = eta0 |u| / (E' R_x), l the contact length. Q_x is the horizontal
+    (rolling-direction) pressure force on the element; integrating by parts,
+    Q_x = integral p dh/dx dx = -integral h dp/dx dx = 2 F_P, twice the Poiseuille shear force
+    F_P = -integral (h/2) dp/dx dx that eq. 5 puts on EACH surface. Only the shear forces do
+    work in the contact frame (the pressure acts along the surface normals of surfaces moving
+    tangentially), so the heat is F_P (|u_element| + |u_race|) = Q_x u for rolling with
+    sliding alike (u = entrainment speed). Eq. 35 is a line-contact formula; for ball contacts
+    the length is taken as the mean chord pi a / 2 of the ellipse (an extrapolation, flagged
+    by a ValidityWarning).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from ..contact_traction import integrate_contact_set
+from ..errors import InputError, ValidityWarning
+from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
+
+_Q_NAMES = ("transverse_sliding_speed", "sliding_speed", "roll_speed", "tilt_speed",
+            "spin_speed")
+
+
+def _materials(bearing):
+    elem = getattr(bearing, "ball_material", None) or getattr(bearing, "roller_material", None)
+    ring = getattr(bearing, "ring_material", None)
+    if elem is None or ring is None:
+        raise InputError("bearing materials", (elem, ring),
+                         "element and ring materials (density, specific heat, conductivity)")
+    return elem, ring
+
+
+def blok_partition(entrainment_speed, sliding_speed, semi_minor, element_material,
+                   ring_material):
+    """Share of contact heat that goes into the element (Blok's high-Peclet partition) [-].
+
+    share_e = e_e sqrt(s_e) / (e_e sqrt(s_e) + e_r sqrt(s_r)), with e = sqrt(k rho c) and
+    s_k = max(|u_k|, 2 kappa_k / b) the speed of surface k through the contact (u_element =
+    u + V/2, u_race = u - V/2) floored at the Peclet-one speed. Equal materials and speeds
+    give 1/2. Reference: Blok (1963), flash-temperature heat partition.
+
+    Parameters
+    ----------
+    entrainment_speed, sliding_speed : u, V [m/s] (V = element minus race).
+    semi_minor : b [m] (contact half-width in the rolling direction).
+    element_material, ring_material : Materials with thermal_conductivity [W/mK],
+        density [kg/m3], specific_heat [J/kgK].
+    """
+    u = np.asarray(entrainment_speed, float)
+    v = np.asarray(sliding_speed, float)
+    b = np.maximum(np.asarray(semi_minor, float), 1e-12)
+    out = []
+    for mat, speed in ((element_material, u + 0.5 * v), (ring_material, u - 0.5 * v)):
+        k, rho, c = mat.thermal_conductivity, mat.density, mat.specific_heat
+        kappa = k / (rho * c)
+        s = np.maximum(np.abs(speed), 2.0 * kappa / b)
+        out.append(math.sqrt(k * rho * c) * np.sqrt(s))
+    return out[0] / (out[0] + out[1])
+
+
+def _contact_temperature(ctx: HeatContext, cs) -> np.ndarray:
+    if cs.temperature is not None:
+        return cs.temperature
+    # the two surfaces entering the contact: mean of the element and ring node temperatures
+    t = 0.5 * (ctx.temperature("elements") + ctx.temperature(cs.ring_role))
+    return np.full(cs.n_elements, t)
+
+
+@HEAT_SOURCES.register(
+    "raceway_traction",
+    references=["gao2022_overskidding", "johnson1985", "harris_kotzalas2007",
+                "blok1963_flash_temperature"],
+    parameters={"n_major": "-", "n_minor": "-"},
+    validity="any kinematic state with contact sets; traction law from the context",
+)
+def raceway_traction(ctx: HeatContext) -> HeatResult:
+    """Shear heat of the element-raceway contacts from the traction law (bounded paper 002 eq. 11).
+
+    Options (``ctx.options["raceway_traction"]``): ``n_major`` (16), ``n_minor`` (8)
+    quadrature nodes. Needs ``ctx.traction``.
+    """
+    name = "raceway_traction"
+    if ctx.traction is None:
+        raise InputError(f"heat source {name!r} traction", None,
+                         "a traction law in the heat context (traction.make_traction_law)")
+    n_major = int(ctx.option(name, "n_major", 16))
+    n_minor = int(ctx.option(name, "n_minor", 8))
+    elem_mat, ring_mat = _materials(ctx.bearing)
+    roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
+    components: dict[str, float] = {}
+    pairs = []
+    forces = {}
+    for cs in ctx.kinematics.contacts:
+        cs_t = cs if cs.temperature is not None else cs.with_(
+            temperature=_contact_temperature(ctx, cs))
+        r = integrate_contact_set(ctx.traction, cs_t, n_major=n_major, n_minor=n_minor)
+        share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
+                               elem_mat, ring_mat)
+        heat = r.heat
+        roles["elements"] += float(np.sum(share * heat))
+        roles[cs.ring_role] += float(np.sum((1.0 - share) * heat))
+        components[f"{cs.race} contact"] = float(np.sum(heat))
+        q = np.stack([getattr(cs, n) for n in _Q_NAMES], axis=-1)
+        pairs.append(ForcePair(f"{cs.race} contact traction", r.generalized_force, q))
+        forces[f"{cs.race}_generalized_force"] = r.generalized_force
+    return HeatResult(
+        source=name, power_by_role=roles, components=components,
+        loss_class=dict.fromkeys(components, "load_dependent"),
+        forces=forces, force_pairs=tuple(pairs))
+
+
+def rolling_force_paper000(entrainment_speed, viscosity, pressure_viscosity, effective_modulus,
+                           reduced_radius_x, length, gamma):
+    """EHL hydrodynamic rolling force Q_x [N], paper 000 eq. 35 in dimensional form.
+
+    Q_x = 18.4 (1 - gamma) G^-0.3 U^0.7 E' R_x l,  G = alpha E', U = eta0 |u| / (E' R_x).
+
+    Parameters
+    ----------
+    entrainment_speed : u [m/s]; viscosity : eta0 at the inlet [Pa s];
+    pressure_viscosity : alpha [1/Pa]; effective_modulus : E' [Pa] (Hamrock convention);
+    reduced_radius_x : R_x [m]; length : contact length l [m]; gamma : D / d_m [-].
+
+    Reference: seed 000_3b5ca6eed61dd596.txt eq. 35 (dimensionless with E' R l as eq. 26-31
+    do), the closed form of the Poiseuille term of its eq. 5. Validity: fully flooded,
+    isothermal line contacts (the paper's roller bearing).
+    """
+    u = np.abs(np.asarray(entrainment_speed, float))
+    e = float(effective_modulus)
+    rx = np.asarray(reduced_radius_x, float)
+    big_u = np.asarray(viscosity, float) * u / (e * rx)
+    g = np.asarray(pressure_viscosity, float) * e
+    return 18.4 * (1.0 - gamma) * g ** -0.3 * big_u ** 0.7 * e * rx * np.asarray(length, float)
+
+
+@HEAT_SOURCES.register(
+    "ehl_rolling_resistance",
+    references=["li2018_nu214_skidding", "blok1963_flash_temperature"],
+    validity="fully flooded EHL; line contacts (ball contacts by the mean-chord extension)",
+)
+def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
+    """EHL rolling resistance (Poiseuille inlet force) of the raceway contacts, paper 000 eq. 35.
+
+    The inlet viscosity and pressure-viscosity coefficient are taken at the contact
+    temperature (contact set's, else the mean of element and ring nodes). Loaded contacts
+    only (Q > 0). Needs ``reduced_radius_x`` in the contact sets, else it is computed from
+    ``bearing.curvature(race, contact_angle)``.
+    """
+    name = "ehl_rolling_resistance"
+    bearing = ctx.bearing
+    elem_mat, ring_mat = _materials(bearing)
+    gamma = bearing.element_diameter / bearing.pitch_diameter
+    e_mod = bearing.effective_modulus
+    roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
+    components: dict[str, float] = {}
+    pairs = []
+    forces = {}
+    for cs in ctx.kinematics.contacts:
+        loaded = cs.normal_load > 0
+        temp = _contact_temperature(ctx, cs)
+        if cs.reduced_radius_x is not None:
+            rx = cs.reduced_radius_x
+        else:
+            race = cs.race.split("_")[0]
+            rx = np.asarray(bearing.curvature(race, cs.contact_angle)[0], float) * np.ones(
+                cs.n_elements)
+        if cs.kind == "line":
+            length = 2.0 * cs.semi_major
+        else:
+            if np.any(loaded):
+                warnings.warn(
+                    "ehl_rolling_resistance: paper 000 eq. 35 is a line-contact formula; "
+                    "ball contacts use the ellipse's mean chord pi*a/2 as length",
+                    ValidityWarning, stacklevel=2)
+            length = 0.5 * math.pi * cs.semi_major
+        eta = np.asarray(ctx.lubricant.dynamic_viscosity(temp), float)
+        alpha = np.asarray(ctx.lubricant.pressure_viscosity_coefficient(temp), float)
+        fr = np.where(loaded, rolling_force_paper000(cs.entrainment_speed, eta, alpha, e_mod,
+                                                     rx, length, gamma), 0.0)
+        u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
+        u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
+        f_p = 0.5 * fr  # Poiseuille shear force on each surface
+        heat_e = f_p * np.abs(u_e)
+        heat_r = f_p * np.abs(u_r)
+        share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
+                               elem_mat, ring_mat)
+        total = heat_e + heat_r
+        roles["elements"] += float(np.sum(share * total))
+        roles[cs.ring_role] += float(np.sum((1.0 - share) * total))
+        components[f"{cs.race} rolling resistance"] = float(np.sum(total))
+        pairs.append(ForcePair(f"{cs.race} film on element", -f_p * np.sign(u_e), u_e))
+        pairs.append(ForcePair(f"{cs.race} film on race", -f_p * np.sign(u_r), u_r))
+        forces[f"{cs.race}_rolling_force"] = fr
+    return HeatResult(
+        source=name, power_by_role=roles, components=components,
+        loss_class=dict.fromkeys(components, "load_independent"),
+        forces=forces, force_pairs=tuple(pairs))
