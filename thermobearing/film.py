@@ -6,7 +6,8 @@ All inputs SI. Dimensionless groups in Hamrock's notation (Hamrock, Schmid & Jac
     U = eta_0 u / (E' R_x),  G = alpha E',  W = w / (E' R_x^2) (point),  W' = w / (l E' R_x) (line)
 
 with u the entrainment (mean) speed (u_1 + u_2)/2 and E' the effective modulus (Hamrock's
-convention, twice Johnson's E*). Every formula warns with
+convention, twice Johnson's E*). Zero entrainment speed gives h = 0; zero load gives h = +inf
+(the power laws diverge as W -> 0; callers mask unloaded contacts). Every formula warns with
 :class:`~thermobearing.errors.ValidityWarning` when used outside the range its authors fitted it
 over (the range is stated in each docstring and in the registry entry); the value is still
 returned -- the point of the warning is that the user knows.
@@ -59,7 +60,9 @@ PH1989_RANGE = {"U": (1e-12, 1e-9), "W": (0.5e-5, 0.5e-3), "G": (1000.0, 8000.0)
 def _warn_range(model: str, **groups: tuple[Any, tuple[float, float]]) -> None:
     out = []
     for name, (value, (lo, hi)) in groups.items():
-        v = np.asarray(value, dtype=float)
+        v = np.asarray(value, dtype=float).ravel()
+        if name in ("W", "U"):  # unloaded / stationary contacts are handled, not extrapolated
+            v = v[v > 0]
         if v.size and (np.min(v) < lo * (1 - 1e-9) or np.max(v) > hi * (1 + 1e-9)):
             out.append(f"{name} in [{np.min(v):.3g}, {np.max(v):.3g}] outside [{lo:.3g}, {hi:.3g}]")
     if out:
@@ -102,7 +105,10 @@ def _k(reduced_radius_x: Any, reduced_radius_y: Any, ellipticity: Any) -> np.nda
     return np.asarray(hamrock_dowson_ellipticity(reduced_radius_x, reduced_radius_y))
 
 
-def _zero_where_no_speed(h: np.ndarray, big_u: np.ndarray) -> Any:
+def _finish(h: np.ndarray, big_u: np.ndarray, big_w: np.ndarray) -> Any:
+    """Zero load -> +inf (the power laws diverge as W -> 0: no EHL conjunction to size);
+    zero entrainment speed -> 0. Never NaN."""
+    h = np.where(big_w > 0, h, np.inf)
     return np.where(big_u > 0, h, 0.0)[()]
 
 
@@ -143,7 +149,7 @@ def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
     with np.errstate(divide="ignore"):
         h = rx * 2.69 * big_u**0.67 * big_g**0.53 * np.where(big_w > 0, big_w, 1.0) ** -0.067 * (
             1.0 - 0.61 * np.exp(-0.73 * k))
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 @FILM.register(
@@ -172,7 +178,7 @@ def hamrock_dowson_1977_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
                 G=(big_g, HD1977_RANGE["G"]))
     h = rx * 3.63 * big_u**0.68 * big_g**0.49 * np.where(big_w > 0, big_w, 1.0) ** -0.073 * (
         1.0 - np.exp(-0.68 * k))
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 def _line_groups(entrainment_speed: Any, dynamic_viscosity: Any,
@@ -211,7 +217,7 @@ def dowson_higginson_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
     _warn_range("dowson_higginson_minimum", U=(big_u, (1e-12, 1e-10)),
                 W=(big_w, (1e-5, 1e-4)), G=(big_g, (2500.0, 5000.0)))
     h = rx * 2.65 * big_u**0.70 * big_g**0.54 * np.where(big_w > 0, big_w, 1.0) ** -0.13
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 @FILM.register(
@@ -234,7 +240,7 @@ def pan_hamrock_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
     _warn_range("pan_hamrock_minimum", U=(big_u, PH1989_RANGE["U"]),
                 W=(big_w, PH1989_RANGE["W"]), G=(big_g, PH1989_RANGE["G"]))
     h = rx * 1.714 * np.where(big_w > 0, big_w, 1.0) ** -0.128 * big_u**0.694 * big_g**0.568
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 @FILM.register(
@@ -255,7 +261,7 @@ def pan_hamrock_central(entrainment_speed: Any, dynamic_viscosity: Any,
     _warn_range("pan_hamrock_central", U=(big_u, PH1989_RANGE["U"]),
                 W=(big_w, PH1989_RANGE["W"]), G=(big_g, PH1989_RANGE["G"]))
     h = rx * 2.922 * np.where(big_w > 0, big_w, 1.0) ** -0.166 * big_u**0.692 * big_g**0.470
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 @FILM.register(
@@ -282,10 +288,9 @@ def moes_line_central(entrainment_speed: Any, dynamic_viscosity: Any,
     big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
                                            pressure_viscosity_coefficient, load, length,
                                            reduced_radius_x, effective_modulus)
-    if np.any(big_w <= 0):
-        raise InputError("load", load, "a value > 0 (Moes' M is undefined at zero load)")
+    w_safe = np.where(big_w > 0, big_w, 1.0)
     two_u = np.where(big_u > 0, 2.0 * big_u, 1.0)
-    m = big_w * two_u**-0.5
+    m = w_safe * two_u**-0.5
     lam = big_g * two_u**0.25
     h_ri = 3.0 / m
     h_ei = 2.621 * m**-0.2
@@ -302,7 +307,7 @@ def moes_line_central(entrainment_speed: Any, dynamic_viscosity: Any,
                              0.0)
     big_h = (viscous + piezo) ** (1.0 / s)
     h = rx * big_h * two_u**0.5
-    return _zero_where_no_speed(h, big_u)
+    return _finish(h, big_u, big_w)
 
 
 # ---------------------------------------------------------------------------

@@ -158,3 +158,13 @@ def test_bad_input() -> None:
         film.hamrock_dowson_1977_central(**{**POINT, "dynamic_viscosity": 0.0})
     with pytest.raises(InputError, match="load"):
         film.dowson_higginson_minimum(**{**LINE, "load": -5.0})
+
+
+def test_zero_load_is_inf_not_nan() -> None:
+    loads = np.array([0.0, 1000.0])
+    for fn, args in ((film.hamrock_dowson_1977_minimum, POINT),
+                     (film.hamrock_dowson_1977_central, POINT),
+                     (film.dowson_higginson_minimum, LINE), (film.pan_hamrock_minimum, LINE),
+                     (film.pan_hamrock_central, LINE), (film.moes_line_central, LINE)):
+        h = fn(**{**args, "load": loads})
+        assert np.isinf(h[0]) and np.isfinite(h[1]) and h[1] > 0
