@@ -199,3 +199,15 @@ def test_drag_registry_entry():
     entry = ROLLER_DRAG.entry("closed_form")
     assert "li2018_nu214_skidding" in entry.references
     assert callable(entry.obj())
+
+
+def test_kinematic_state_for_heat_sources(state150):
+    ks = state150.kinematic_state
+    assert ks.origin == "skidding" and ks.n_elements == 18
+    assert ks.cage_speed_ratio == pytest.approx(state150.cage_speed_ratio)
+    inner = ks.contact("inner")
+    assert inner.kind == "line" and inner.ring_role == "inner_ring"
+    # state convention: element minus race
+    np.testing.assert_allclose(inner.sliding_speed, -state150.inner_sliding_speed)
+    np.testing.assert_allclose(ks.pocket_normal_force, np.abs(state150.pocket_normal_force))
+    assert np.all(np.isfinite(inner.film_thickness))

@@ -106,6 +106,38 @@ class RollerSkiddingResult:
         """Alias of ``roller_speed`` (the common skidding-result name)."""
         return self.roller_speed
 
+    @property
+    def kinematic_state(self) -> Any:
+        """The :class:`thermobearing.state.KinematicState` the heat sources consume.
+
+        Line contacts (``semi_major`` = l/2, ``semi_minor`` = Hertz b); sliding speeds in the
+        state's convention (element minus race = -V here); pocket force as a magnitude;
+        film thickness 0 where a contact carries no load; origin "skidding".
+        """
+        from ..state import ContactSet, KinematicState
+
+        length = float(self.extras["contact_length"])
+        sets = []
+        for race, f, v, ue, q, rx in (
+                ("inner", self.inner, self.inner_sliding_speed, self.inner_entrainment_speed,
+                 self.inner_load, self.extras["radius_inner"]),
+                ("outer", self.outer, self.outer_sliding_speed, self.outer_entrainment_speed,
+                 self.outer_load, self.extras["radius_outer"])):
+            loaded = q > 0
+            sets.append(ContactSet(
+                race=race, kind="line", normal_load=q,
+                semi_major=np.where(loaded, 0.5 * length, 0.0), semi_minor=f.half_width,
+                max_pressure=f.max_pressure, entrainment_speed=ue, sliding_speed=-v,
+                film_thickness=np.where(loaded, f.film_thickness, 0.0),
+                temperature=np.full(q.shape, self.temperature), reduced_radius_x=rx))
+        return KinematicState(
+            inner_speed=self.inner_speed, outer_speed=0.0, cage_speed=self.cage_speed,
+            orbital_speed=np.full(self.roller_speed.shape, self.cage_speed),
+            element_spin=self.roller_speed, contacts=tuple(sets), attitude_angle=0.0,
+            azimuth=self.azimuth, pocket_normal_force=np.abs(self.pocket_normal_force),
+            origin="skidding",
+            extras={"pocket_friction": self.pocket_friction, "slip": self.slip})
+
 
 @dataclass(frozen=True)
 class RollerModel:
@@ -431,7 +463,9 @@ def solve_model(
         converged=True, residual_norm=norm, iterations=it,
         residual=np.append(e.roller_eq, e.cage_eq), temperature=model.temperature,
         eta0=model.eta0, extras={"ring_displacement": ld.ring_displacement,
-                                 "n_loaded": ld.n_loaded},
+                                 "n_loaded": ld.n_loaded, "contact_length": model.length,
+                                 "radius_inner": model.radius_inner,
+                                 "radius_outer": model.radius_outer},
     )
 
 
