@@ -49,10 +49,12 @@ _LINE_PARAMS = {
     "reduced_radius_x": "m", "effective_modulus": "Pa",
 }
 
-#: Hamrock & Dowson (1977) Part III: the ranges of their 34 numerical cases (recalled from the
-#: paper's case table via Hamrock et al. 2004 ch. 22; approximate).
-HD1977_RANGE = {"k": (1.0, 8.0), "U": (0.1683e-11, 1.683e-11), "W": (0.3686e-6, 7.371e-6),
-                "G": (2522.0, 5044.0)}
+#: Hamrock & Dowson (1977) Part III: 34 cases with k from 1 to 8, U varied over "nearly two
+#: orders of magnitude", W over "one order of magnitude", bronze/steel/silicon-nitride solids with
+#: mineral oils (the paper's abstract). The numeric bounds below are approximate (the case table
+#: itself was not available): U 1e-12..1e-10, W 3.7e-7..7.4e-6, G 2000..8000.
+HD1977_RANGE = {"k": (1.0, 8.0), "U": (1e-12, 1e-10), "W": (0.3686e-6, 7.371e-6),
+                "G": (2000.0, 8000.0)}
 #: Pan & Hamrock (1989) line-contact ranges (as quoted by Hamrock et al. 2004, ch. 21).
 PH1989_RANGE = {"U": (1e-12, 1e-9), "W": (0.5e-5, 0.5e-3), "G": (1000.0, 8000.0)}
 
@@ -115,7 +117,7 @@ def _finish(h: np.ndarray, big_u: np.ndarray, big_w: np.ndarray) -> Any:
 @FILM.register(
     "hamrock_dowson_1977_central", references=["hamrock_dowson1977"],
     parameters=_POINT_PARAMS,
-    validity="1 <= k <= 8, 1.7e-12 <= U <= 1.7e-11, 3.7e-7 <= W <= 7.4e-6, 2500 <= G <= 5000 "
+    validity="1 <= k <= 8, 1e-12 <= U <= 1e-10, 3.7e-7 <= W <= 7.4e-6, 2000 <= G <= 8000 "
              "(isothermal, fully flooded, Newtonian)")
 def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
                                 pressure_viscosity_coefficient: Any, load: Any,
@@ -155,7 +157,7 @@ def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
 @FILM.register(
     "hamrock_dowson_1977_minimum", references=["hamrock_dowson1977"],
     parameters=_POINT_PARAMS,
-    validity="1 <= k <= 8, 1.7e-12 <= U <= 1.7e-11, 3.7e-7 <= W <= 7.4e-6, 2500 <= G <= 5000 "
+    validity="1 <= k <= 8, 1e-12 <= U <= 1e-10, 3.7e-7 <= W <= 7.4e-6, 2000 <= G <= 8000 "
              "(isothermal, fully flooded, Newtonian)")
 def hamrock_dowson_1977_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
                                 pressure_viscosity_coefficient: Any, load: Any,

@@ -108,7 +108,7 @@ def test_zero_speed_gives_zero_film_and_vectorises() -> None:
 def test_validity_warning_out_of_range() -> None:
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always")
-        film.hamrock_dowson_1977_minimum(**POINT)  # U = 2.9e-10 > 1.7e-11, W > 7.4e-6
+        film.hamrock_dowson_1977_minimum(**POINT)  # U = 2.9e-10 > 1e-10, W = 1.2e-4 > 7.4e-6
     assert any(issubclass(w.category, ValidityWarning) for w in rec)
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always")
