@@ -13,21 +13,31 @@ Pipeline (:func:`estimate_cage_speed`)
 --------------------------------------
 1. checks: finite, non-constant, 1-D, long enough, a rate high enough for the band.
 2. demodulation band: given, or chosen by the STFT spectral kurtosis (the kurtogram of
-   Antoni & Randall 2006): the window length / centre frequency of largest SK.
+   Antoni & Randall 2006): the disjoint cells of largest SK, whose envelope spectra are
+   pooled (a single band's envelope can miss a harmonic that another band carries).
 3. squared envelope of the band (analytic signal by FFT, shifted to base band so that the
    envelope is computed at a reduced rate), Hann window, zero padding.
 4. a harmonic-comb search over candidate cage frequencies: the comb holds the cage
    harmonics ``k f_c``, the ball-pass harmonics ``m Z f_c``, the cage modulation sidebands
    of the ball pass ``(Z -+ 1) f_c`` and the shaft sidebands
    ``n f_s +- f_c``; each line's power is normalised by the local noise floor (median of the
-   spectrum, which for noise bins is exponentially distributed: mean = median / ln 2).
-5. the best comb (lowest candidate whose score is within 70 % of the best, which rejects
-   the octave-up error ``2 f_c`` whose comb is a subset of the true one) is refined: each
+   spectrum, which for noise bins is exponentially distributed: mean = median / ln 2); the
+   comb score is the weighted mean of log(1 + normalised power) over its teeth (primary
+   teeth, the cage fundamental and ball-pass harmonics, weigh 1, the others 0.5), so that a
+   candidate
+   needs several lines (a sub-multiple of the cage frequency that catches only the strong
+   ball-pass line scores low).
+5. the best comb, corrected for octave errors (``2 f_c`` has a comb that is a subset of the
+   true one, ``f_c / 2`` a superset: a move is made only when the teeth that one comb has
+   and the other lacks hold a line above the noise), is refined: each
    line's frequency by Gaussian (log-parabolic) interpolation of the zero-padded Hann
    spectrum (sub-bin), then ``f_c`` by weighted least squares over the detected lines.
 6. confidence: Fisher's combination of the per-line false-alarm probabilities, Bonferroni
    corrected for the number of independent candidates searched; ``detected`` only when
-   the family-wise false-alarm probability is below ``alpha``. Otherwise the result is
+   the family-wise false-alarm probability is below ``alpha``, at least two lines stand
+   above the per-line threshold, at least half of them agree with the estimate within half
+   a bin, and a fundamental (the ball-pass fundamental ``Z f_c`` or the cage line ``f_c``)
+   is among them. Otherwise the result is
    flagged not detected and carries no frequency (never a made-up one).
 
 Conventions: frequencies in Hz, cage speed ratio ``CSR = f_cage / f_shaft`` (outer ring
@@ -58,7 +68,9 @@ __all__ = [
     "check_signal",
     "envelope_spectrum",
     "estimate_cage_speed",
+    "combine_envelope_spectra",
     "kurtogram_band",
+    "kurtogram_bands",
     "load_acceleration",
     "refine_peak",
 ]
@@ -230,18 +242,19 @@ class KurtogramResult:
     table: tuple[tuple[np.ndarray, np.ndarray], ...] = field(repr=False, default=())
 
 
-def kurtogram_band(x, sampling_rate: float, *, min_frequency: float = 0.0,
-                   min_bandwidth: float = 0.0,
-                   window_lengths: tuple[int, ...] = (8, 16, 32, 64, 128, 256, 512),
-                   ) -> KurtogramResult:
-    """Band of largest spectral kurtosis (STFT kurtogram).
+def kurtogram_bands(x, sampling_rate: float, n_bands: int = 1, *,
+                    min_frequency: float = 0.0, min_bandwidth: float = 0.0,
+                    window_lengths: tuple[int, ...] = (8, 16, 32, 64, 128, 256, 512),
+                    ) -> list[KurtogramResult]:
+    """The ``n_bands`` non-overlapping cells of largest spectral kurtosis (STFT kurtogram).
 
     ``SK(f) = <|X(t,f)|^4> / <|X(t,f)|^2>^2 - 2`` over STFT frames (Antoni & Randall 2006,
     eq. 2, for complex Gaussian noise SK = 0; impulsive resonances give SK > 0). Every
-    window length ``N_w`` gives a cell width ``fs / N_w`` (the Hann main lobe half-width x 2);
-    the cell of largest SK whose low edge is above ``min_frequency`` [Hz], whose width is at
-    least ``min_bandwidth`` [Hz] (the envelope spectrum of a band of width B reaches B) and
-    whose high edge is below Nyquist is returned.
+    window length ``N_w`` gives cells of width ``2 fs / N_w`` (the Hann main lobe) centred
+    on the STFT bins; the cells are ranked by SK and taken greedily when they overlap none
+    already taken. Only cells whose low edge is above ``min_frequency`` [Hz], whose width is
+    at least ``min_bandwidth`` [Hz] (the envelope spectrum of a band of width B reaches B)
+    and whose high edge is below Nyquist count.
 
     Reference: Antoni J, Randall RB (2006) The spectral kurtosis: application to the vibratory
     surveillance and diagnostics of rotating machines. MSSP 20: 308-331.
@@ -249,7 +262,7 @@ def kurtogram_band(x, sampling_rate: float, *, min_frequency: float = 0.0,
     fs = float(sampling_rate)
     arr = check_signal(x, fs)
     arr = arr - arr.mean()
-    best = (-math.inf, 0.0, 0.0, 0)
+    cells: list[tuple[float, float, float]] = []
     table = []
     nyq = fs / 2
     for nw in window_lengths:
@@ -265,18 +278,59 @@ def kurtogram_band(x, sampling_rate: float, *, min_frequency: float = 0.0,
         table.append((f, sk))
         half = fs / nw
         ok = (f - half >= min_frequency) & (f + half <= nyq) & (f - half > 0)
-        if not ok.any():
-            continue
-        i = int(np.argmax(np.where(ok, sk, -np.inf)))
-        if sk[i] > best[0]:
-            best = (float(sk[i]), float(f[i]), 2 * half, nw)
-    if best[3] == 0:
+        cells += [(float(sk[i]), float(f[i]), 2 * half) for i in np.flatnonzero(ok)]
+    if not cells:
         raise InputError("band", f"min_frequency {min_frequency:g} Hz, min_bandwidth "
                          f"{min_bandwidth:g} Hz",
                          f"room for such a band below Nyquist ({nyq:g} Hz)")
-    sk, centre, bw, _ = best
-    return KurtogramResult((centre - bw / 2, centre + bw / 2), centre, bw, sk,
-                           tuple(int(w) for w in window_lengths), tuple(table))
+    cells.sort(key=lambda c: -c[0])
+    chosen: list[KurtogramResult] = []
+    for sk_c, centre, bw in cells:
+        lo, hi = centre - bw / 2, centre + bw / 2
+        if any(lo < k.band[1] and hi > k.band[0] for k in chosen):
+            continue
+        chosen.append(KurtogramResult((lo, hi), centre, bw, sk_c,
+                                      tuple(int(w) for w in window_lengths), tuple(table)))
+        if len(chosen) == n_bands:
+            break
+    return chosen
+
+
+def kurtogram_band(x, sampling_rate: float, *, min_frequency: float = 0.0,
+                   min_bandwidth: float = 0.0,
+                   window_lengths: tuple[int, ...] = (8, 16, 32, 64, 128, 256, 512),
+                   ) -> KurtogramResult:
+    """The cell of largest spectral kurtosis (see :func:`kurtogram_bands`)."""
+    return kurtogram_bands(x, sampling_rate, 1, min_frequency=min_frequency,
+                           min_bandwidth=min_bandwidth, window_lengths=window_lengths)[0]
+
+
+def combine_envelope_spectra(spectra: list[EnvelopeSpectrum]) -> EnvelopeSpectrum:
+    """Pool the envelope spectra of disjoint bands (same record, same grid).
+
+    The mean R of the N normalised spectra is, for noise bins of disjoint bands, Gamma(N, 1/N)
+    distributed; it is mapped to the equivalent Exp(1) statistic -ln P(Gamma > R) so that the
+    returned ``normalised`` has the single-band meaning. ``power`` holds the mean normalised
+    power (for peak interpolation).
+    """
+    if len(spectra) == 1:
+        return spectra[0]
+    n = len(spectra)
+    ref = spectra[0]
+    for es in spectra[1:]:
+        if es.frequency.size != ref.frequency.size:
+            raise InputError("spectra", "different grids", "spectra of one record")
+    mean = np.mean([es.normalised for es in spectra], axis=0)
+    xg = n * mean
+    with np.errstate(divide="ignore", over="ignore"):
+        r_eq = -stats.gamma.logsf(xg, n)
+    # far tail: -ln Q(n, x) -> x - (n - 1) ln x + ln Gamma(n)
+    tail = xg - (n - 1) * np.log(np.maximum(xg, 1e-300)) + math.lgamma(n)
+    r_eq = np.where(np.isfinite(r_eq), r_eq, tail)
+    floor = np.where(r_eq > 1e-12, mean / np.maximum(r_eq, 1e-12), 1.0)
+    floor = np.where(floor > 0, floor, 1.0)
+    return EnvelopeSpectrum(ref.frequency, mean, floor, ref.band, ref.resolution, ref.padding,
+                            ref.band_kurtosis, tuple(es.band for es in spectra))
 
 
 # ---------------------------------------------------------------------------
@@ -294,6 +348,7 @@ class EnvelopeSpectrum:
     band : demodulation band (low, high) [Hz].
     resolution : native resolution 1 / T [Hz]; padding : zero-padding factor.
     band_kurtosis : spectral kurtosis of the band when chosen by the kurtogram, else NaN.
+    bands : all bands pooled (see :func:`combine_envelope_spectra`), else empty.
     """
 
     frequency: np.ndarray
@@ -303,6 +358,7 @@ class EnvelopeSpectrum:
     resolution: float
     padding: int
     band_kurtosis: float = math.nan
+    bands: tuple[tuple[float, float], ...] = ()
 
     @property
     def normalised(self) -> np.ndarray:
@@ -501,8 +557,9 @@ def _comb(n_balls: int, cage_h: int, bp_h: int, shaft_h: int) -> list[tuple[str,
 def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls: int,
                         csr_theoretical: float, *, band: tuple[float, float] | None = None,
                         search: tuple[float, float] = (0.3, 1.3), cage_harmonics: int = 3,
-                        ball_pass_harmonics: int = 2, shaft_sidebands: int = 2,
-                        alpha: float = 1e-3, padding: int = 8) -> CageSpeedEstimate:
+                        ball_pass_harmonics: int = 3, shaft_sidebands: int = 2,
+                        alpha: float = 1e-3, padding: int = 8,
+                        n_bands: int = 3) -> CageSpeedEstimate:
     """Cage frequency, CSR and slip from an acceleration record.
 
     Parameters
@@ -512,6 +569,8 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     n_balls : number of rolling elements Z.
     csr_theoretical : pure-rolling cage speed ratio (1 - D cos(alpha)/d_m)/2 [-].
     band : demodulation band [Hz] or None for the kurtogram.
+    n_bands : with ``band=None``, the number of disjoint kurtogram cells (largest SK first)
+        whose envelope spectra are pooled (:func:`combine_envelope_spectra`).
     search : the cage frequency is sought in ``search * csr_theoretical * shaft_frequency``
         (default: slip from -30 % to +70 %).
     cage_harmonics, ball_pass_harmonics, shaft_sidebands : size of the comb.
@@ -551,8 +610,18 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     if band is not None and band[1] - band[0] < f_top:
         raise InputError("band", band, f"a band at least {f_top:g} Hz wide (the envelope "
                          "spectrum of a band of width B only reaches B)")
-    es = envelope_spectrum(arr, fs, band, max_frequency=f_top * 1.1 + 2 * fs / arr.size,
-                           padding=padding, min_band_frequency=f_top, min_bandwidth=f_top)
+    f_max = f_top * 1.1 + 2 * fs / arr.size
+    if band is not None:
+        es = envelope_spectrum(arr, fs, band, max_frequency=f_max, padding=padding)
+    else:
+        cells = kurtogram_bands(arr, fs, n_bands, min_frequency=f_top, min_bandwidth=f_max)
+        parts = [envelope_spectrum(arr, fs, c.band, max_frequency=f_max, padding=padding)
+                 for c in cells]
+        size = min(e.frequency.size for e in parts)
+        parts = [EnvelopeSpectrum(e.frequency[:size], e.power[:size], e.noise_floor[:size],
+                                  e.band, e.resolution, e.padding, c.kurtosis)
+                 for e, c in zip(parts, cells, strict=True)]
+        es = combine_envelope_spectra(parts)
     df = es.resolution
     r = es.normalised
     step = es.frequency[1] - es.frequency[0]
@@ -560,24 +629,65 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     w = max(1, int(round(0.5 * df / step)))
     rmax = _max_filter(r, w)
     kmax = max(abs(k) for _, k, _ in comb)
-    cand = np.arange(f_lo, f_hi, 0.5 * df / kmax)
     ks = np.array([k for _, k, _ in comb], dtype=float)
     ns = np.array([n for _, _, n in comb], dtype=float)
-    fl = cand[:, None] * ks[None, :] + ns[None, :] * shaft_frequency
-    valid = (fl > 2 * df) & (fl < es.frequency[-1])
-    vals = np.where(valid, np.interp(fl, es.frequency, rmax), 0.0)
-    nvalid = np.maximum(valid.sum(axis=1), 1)
-    score = vals.sum(axis=1) / nvalid
-    best = float(score.max())
-    ok = np.flatnonzero(score >= 0.7 * best)
-    i_pick = int(ok[0])
-    # local maximum of the score around the first qualifying candidate
-    j = i_pick
-    while j + 1 < score.size and score[j + 1] >= score[j]:
-        j += 1
-    f0 = float(cand[j])
-    # refine each line, weighted least squares for f_c
+    f_end = float(es.frequency[-1])
+    # primary teeth (cage fundamental, ball-pass harmonics) weigh twice the secondary ones
+    # (cage harmonics, modulation and shaft sidebands): a wrong candidate whose secondary
+    # teeth happen to fall on ball-pass lines must not outscore the true one
+    weights = np.array([1.0 if (kind == "ball_pass" or (kind == "cage" and k == 1)) else 0.5
+                        for kind, k, _ in comb])
     n_indep_line = 2 * w + 1
+    thresh = math.log(n_indep_line / 0.01)  # per-line false alarm 1 % within its window
+    # evidence that decides between candidates: 0.1 % family-wise over all teeth
+    strict = math.log(n_indep_line * len(comb) / 1e-3)
+
+    pure = np.array(sorted({abs(k) for _, k, n in comb if n == 0}), dtype=float)
+
+    def teeth(fc: float) -> np.ndarray:
+        """Teeth that are multiples of the cage frequency alone (no shaft sidebands)."""
+        fl = fc * pure
+        return fl[(fl > 2 * df) & (fl < f_end)]
+
+    def score_at(fcs: np.ndarray) -> np.ndarray:
+        fl = fcs[:, None] * ks[None, :] + ns[None, :] * shaft_frequency
+        valid = (fl > 2 * df) & (fl < f_end)
+        # log-compressed tooth powers: one dominant line must not carry a comb on its own
+        vals = np.where(valid, np.log1p(np.interp(fl, es.frequency, rmax)), 0.0)
+        wv = valid * weights[None, :]
+        return (vals * wv).sum(axis=1) / np.maximum(wv.sum(axis=1), 1e-300)
+
+    def specific_evidence(a: float, b: float) -> bool:
+        """A tooth of comb a, away from every tooth of comb b, stands above the noise."""
+        ta, tb = teeth(a), teeth(b)
+        own = [f for f in ta if np.all(np.abs(tb - f) > df)]
+        return bool(own) and float(np.max(np.interp(own, es.frequency, rmax))) > strict
+
+    cand = np.arange(f_lo, f_hi, 0.5 * df / kmax)
+    score = score_at(cand)
+    f0 = float(cand[int(np.argmax(score))])
+    # octave (and twelfth) errors: a multiple m f of the cage frequency has a comb that is a
+    # subset of the true one, a sub-multiple f/m a superset. Move to m f when f's own teeth
+    # are empty; move to f/m when its own teeth hold a line and it scores comparably.
+    for _ in range(4):
+        moved = False
+        for m in (2, 3):
+            up = f0 * m
+            if up < f_hi and not specific_evidence(f0, up):
+                f0, moved = up, True
+                break
+            down = f0 / m
+            if down > f_lo and specific_evidence(down, f0) and (
+                    score_at(np.array([down]))[0] >= 0.7 * score_at(np.array([f0]))[0]):
+                f0, moved = down, True
+                break
+        if not moved:
+            break
+    # local maximum of the score on the fine grid around f0
+    near = np.abs(cand - f0) <= 0.5 * df
+    if near.any():
+        f0 = float(cand[near][int(np.argmax(score[near]))])
+    # refine each line, weighted least squares for f_c
     entries = []
     expected_all = np.array([k * f0 + n * shaft_frequency for _, k, n in comb])
     for i, (kind, k, n) in enumerate(comb):
@@ -589,7 +699,6 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             continue  # two teeth on one line: ambiguous, used by neither
         fm, snr = refine_peak(es, fe, 0.5 * df)
         entries.append((kind, k, n, fm, snr))
-    thresh = math.log(n_indep_line / 0.01)  # per-line false alarm 1 % within its window
     used = [(k, n, fm, snr) for (_, k, n, fm, snr) in entries if snr > thresh]
     if used:
         wts = np.array([k * k * snr for k, _, _, snr in used])
@@ -623,10 +732,13 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             shaft_meas = fm
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))
-    detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5
+    primary = any(kind == "ball_pass" and k == n_balls or kind == "cage" and k == 1
+                  for (kind, k, _n, _fm, snr) in entries if snr > strict)
+    detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary
     if not detected:
-        reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} >= {alpha:g}, "
-                  f"{len(used)} lines above threshold, consistency {consistency:.2f})")
+        reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} vs alpha "
+                  f"{alpha:g}, {len(used)} lines above threshold, consistency "
+                  f"{consistency:.2f}, fundamental line {'found' if primary else 'missing'})")
         return CageSpeedEstimate(False, None, None, None, None, float(shaft_frequency),
                                  shaft_meas, float(csr_theoretical), float(max(confidence, 0)),
                                  p_fa, consistency, tuple(lines), es, reason)
