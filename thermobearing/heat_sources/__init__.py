@@ -144,6 +144,10 @@ class HeatResult:
     force_pairs : forces with the relative velocities they act across; the sum of their
         dissipated powers equals the total heat (checked by tests).
     details : any further diagnostics (regime, Reynolds number, oil fraction...).
+    component_roles : optional component -> {role: W}, where a source with several
+        components heats different roles per component (e.g. inner vs outer contact); if
+        absent, each component is split over the roles in the proportion of
+        ``power_by_role``.
     """
 
     source: str
@@ -153,6 +157,7 @@ class HeatResult:
     forces: Mapping[str, Any] = field(default_factory=dict)
     force_pairs: tuple[ForcePair, ...] = ()
     details: Mapping[str, Any] = field(default_factory=dict)
+    component_roles: Mapping[str, Mapping[str, float]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         by_role = {}
@@ -181,6 +186,31 @@ class HeatResult:
             raise InputError(f"heat source {self.source!r}", (total_roles, total_comp),
                              "power by role and by component must have the same total")
         object.__setattr__(self, "force_pairs", tuple(self.force_pairs))
+        for comp, split in self.component_roles.items():
+            if comp not in comps:
+                raise UnknownNameError(f"heat source {self.source!r} component_roles", comp,
+                                       comps)
+            for role in split:
+                if role not in ROLES:
+                    raise UnknownNameError(f"heat source {self.source!r} role", role, ROLES)
+            if abs(sum(split.values()) - comps[comp]) > 1e-9 * max(1.0, abs(comps[comp])):
+                raise InputError(f"heat source {self.source!r} component_roles[{comp}]", split,
+                                 "role powers adding up to the component's power")
+
+    def split(self) -> list[tuple[str, str, float]]:
+        """(component, role, W) rows: ``component_roles`` where given, else proportional."""
+        total = self.total
+        rows = []
+        for comp, power in self.components.items():
+            if comp in self.component_roles:
+                rows.extend((comp, role, float(w)) for role, w in
+                            self.component_roles[comp].items())
+            elif total > 0:
+                rows.extend((comp, role, power * w / total) for role, w in
+                            self.power_by_role.items())
+            else:
+                rows.append((comp, next(iter(self.power_by_role), "oil"), power))
+        return rows
 
     @property
     def total(self) -> float:

@@ -112,6 +112,7 @@ def raceway_traction(ctx: HeatContext) -> HeatResult:
     elem_mat, ring_mat = _materials(ctx.bearing)
     roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
     components: dict[str, float] = {}
+    split: dict[str, dict[str, float]] = {}
     pairs = []
     forces = {}
     for cs in ctx.kinematics.contacts:
@@ -121,16 +122,19 @@ def raceway_traction(ctx: HeatContext) -> HeatResult:
         share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
                                elem_mat, ring_mat)
         heat = r.heat
-        roles["elements"] += float(np.sum(share * heat))
-        roles[cs.ring_role] += float(np.sum((1.0 - share) * heat))
+        to_elem = float(np.sum(share * heat))
+        to_ring = float(np.sum((1.0 - share) * heat))
+        roles["elements"] += to_elem
+        roles[cs.ring_role] += to_ring
         components[f"{cs.race} contact"] = float(np.sum(heat))
+        split[f"{cs.race} contact"] = {"elements": to_elem, cs.ring_role: to_ring}
         q = np.stack([getattr(cs, n) for n in _Q_NAMES], axis=-1)
         pairs.append(ForcePair(f"{cs.race} contact traction", r.generalized_force, q))
         forces[f"{cs.race}_generalized_force"] = r.generalized_force
     return HeatResult(
         source=name, power_by_role=roles, components=components,
         loss_class=dict.fromkeys(components, "load_dependent"),
-        forces=forces, force_pairs=tuple(pairs))
+        forces=forces, force_pairs=tuple(pairs), component_roles=split)
 
 
 def rolling_force_paper000(entrainment_speed, viscosity, pressure_viscosity, effective_modulus,
@@ -177,6 +181,7 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     e_mod = bearing.effective_modulus
     roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
     components: dict[str, float] = {}
+    split: dict[str, dict[str, float]] = {}
     pairs = []
     forces = {}
     for cs in ctx.kinematics.contacts:
@@ -209,13 +214,16 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
                                elem_mat, ring_mat)
         total = heat_e + heat_r
-        roles["elements"] += float(np.sum(share * total))
-        roles[cs.ring_role] += float(np.sum((1.0 - share) * total))
+        to_elem = float(np.sum(share * total))
+        to_ring = float(np.sum((1.0 - share) * total))
+        roles["elements"] += to_elem
+        roles[cs.ring_role] += to_ring
         components[f"{cs.race} rolling resistance"] = float(np.sum(total))
+        split[f"{cs.race} rolling resistance"] = {"elements": to_elem, cs.ring_role: to_ring}
         pairs.append(ForcePair(f"{cs.race} film on element", -f_p * np.sign(u_e), u_e))
         pairs.append(ForcePair(f"{cs.race} film on race", -f_p * np.sign(u_r), u_r))
         forces[f"{cs.race}_rolling_force"] = fr
     return HeatResult(
         source=name, power_by_role=roles, components=components,
         loss_class=dict.fromkeys(components, "load_independent"),
-        forces=forces, force_pairs=tuple(pairs))
+        forces=forces, force_pairs=tuple(pairs), component_roles=split)

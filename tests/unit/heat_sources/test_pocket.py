@@ -44,3 +44,19 @@ def test_friction_outside_unit_interval(qj1044, vg46, race_control_state, mu):
         "friction_coefficient": mu}})
     with pytest.raises(InputError, match="friction_coefficient"):
         pocket.pocket_friction(ctx)
+
+
+def test_roller_pocket(vg46):
+    # roller bearing NU214 (paper 000): same eq. 19 with the roller diameter
+    from thermobearing.geometry import load_bearing
+    from thermobearing.state import OperatingPoint
+
+    nu214 = load_bearing("NU214")
+    z = nu214.n_elements
+    ks = uniform_state(z, spin=-1000.0, pocket_force=20.0)
+    op = OperatingPoint(inner_speed=523.6, radial_load=150.0)
+    ctx = make_context(nu214, vg46, op, ks, options={"pocket_friction": {
+        "friction_coefficient": 0.05}})
+    r = pocket.pocket_friction(ctx)
+    assert r.components == {"roller pocket": pytest.approx(
+        z * 0.05 * 20.0 * 1000.0 * nu214.roller_diameter / 2)}
