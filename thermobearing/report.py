@@ -19,6 +19,8 @@ import html
 import io
 import math
 from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
 
 import matplotlib
 
@@ -222,3 +224,67 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     parts += [f"<li>{esc(c)}</li>" for c in results.citations]
     parts.append("</ol></body></html>")
     return "\n".join(parts)
+
+
+# ---------------------------------------------------------------------------
+def read_measured(scene: Any) -> pd.DataFrame | None:
+    """The scene's measured temperatures as ``time [s]`` + one degC column per sensor.
+
+    Raises InputError when a mapped column is missing from the file."""
+    from .errors import InputError
+    from .units import to_si
+
+    m = scene.measured
+    if m is None:
+        return None
+    path = scene.resolve_path(m.file)
+    if not path.is_file():
+        raise InputError("measured.file", m.file, "an existing CSV file")
+    df = pd.read_csv(path)
+    if m.time_column not in df:
+        raise InputError("measured.time_column", m.time_column,
+                         "a column of the file: " + ", ".join(df.columns))
+    for col in m.columns:
+        if col not in df:
+            raise InputError(f"measured.columns[{col!r}]", col,
+                             "a column of the file: " + ", ".join(df.columns))
+    unit = m.time_column.partition("[")[2].rstrip("] ") or "s"
+    out = pd.DataFrame({"time [s]": df[m.time_column].astype(float)
+                        * to_si(f"1 {unit}", "time", field="measured.time_column")})
+    for col in m.columns:
+        values = df[col].astype(float).to_numpy()
+        if m.unit == "K":
+            values = values - 273.15
+        elif m.unit == "degF":
+            values = (values - 32.0) * 5.0 / 9.0
+        out[col] = values
+    return out
+
+
+def attach_figures(results: Results, scene: Any) -> None:
+    """Add the standard figures of a run to ``results.figures`` (what its tables allow)."""
+    temps = results.tables.get("temperatures")
+    if temps is not None and not temps.empty:
+        measured = read_measured(scene)
+        cmap = dict(scene.measured.columns) if scene.measured is not None else None
+        results.figures["temperatures"] = fig_temperatures(temps, measured, cmap)
+    losses = results.tables.get("losses")
+    if losses is not None and not losses.empty:
+        first = losses["bearing"].iloc[0]
+        results.figures["power_losses"] = fig_loss_bars(losses, bearing=first)
+    kin = results.tables.get("kinematics")
+    if kin is not None and not kin.empty and kin["axial load [kN]"].nunique() > 1:
+        results.figures["cage_speed_ratio"] = fig_csr(kin)
+
+
+def write_report(results: Results, scene: Any, path: Path | str) -> Path:
+    """Write the self-contained HTML report of a run."""
+    extra = {}
+    temps = results.tables.get("temperatures")
+    if scene.measured is not None and temps is not None:
+        err = temperature_errors(temps, read_measured(scene), scene.measured.columns)
+        extra["measured vs predicted"] = err
+    text = html_report(results, scene.title, extra)
+    out = Path(path)
+    out.write_text(text, encoding="utf-8")
+    return out

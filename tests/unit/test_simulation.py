@@ -1,0 +1,74 @@
+"""Orchestrator: the chain holds only what the outputs need; runs produce the tables."""
+
+from __future__ import annotations
+
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.scene import loads_scene
+from thermobearing.simulation import Simulation, plan_chain
+
+BASE = """
+title = "t"
+[[bearings]]
+name = "de"
+preset = "QJ1044"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+flow = "33 L/min"
+inlet_temperature = "35 degC"
+[schedule]
+speed = "1800 rpm"
+radial_load = "1 kN"
+step_duration = "3 min"
+axial_load_steps = { start = "2 kN", stop = "6 kN", step = "4 kN" }
+[models]
+kinematics = "race_control"
+"""
+
+
+def scene(want, mode="steady"):
+    return loads_scene(BASE + f'[outputs]\nmode = "{mode}"\nwant = {want!r}\n'.replace("'", '"'))
+
+
+def test_film_scene_runs_no_kinematics_no_network():
+    sim = Simulation(scene(["film"]), progress=False)
+    families = [link.family for link in sim.chain]
+    assert "film" in families
+    assert "kinematics" not in families and "heat_source" not in families
+    assert "network_template" not in families and "stepper" not in families
+    res = sim.run()
+    film = res.tables["film"]
+    assert set(film["race"]) >= {"inner", "outer"} or len(film) >= 2
+    assert (film["central film [um]"] > 0).all()
+    assert "kinematics" not in res.tables
+
+
+def test_losses_scene_has_no_network_and_balances_roles():
+    sim = Simulation(scene(["kinematics", "losses"]), progress=False)
+    families = [link.family for link in sim.chain]
+    assert "heat_source" in families and "network_template" not in families
+    res = sim.run()
+    kin = res.tables["kinematics"]
+    assert len(kin) == 2
+    assert kin["cage speed ratio [-]"].between(0.4, 0.5).all()
+    losses = res.tables["losses"]
+    assert (losses["power [W]"] >= 0).all()
+    assert set(losses["source"]) >= {"raceway_traction", "churning_elements"}
+    assert res.citations
+
+
+def test_unknown_model_family_is_an_error():
+    bad = loads_scene(BASE.replace('kinematics = "race_control"',
+                                   'kinematics = "race_control"\ncolour = "red"'))
+    with pytest.raises(InputError) as info:
+        plan_chain(bad)
+    assert "models.colour" in str(info.value)
+
+
+def test_unknown_kinematics_lists_known():
+    bad = loads_scene(BASE.replace('"race_control"', '"magic"'))
+    with pytest.raises(InputError) as info:
+        Simulation(bad, progress=False)
+    assert "race_control" in str(info.value) and "skidding" in str(info.value)

@@ -1,0 +1,47 @@
+"""``thermobearing run [SCENE] [--out DIR] [--quiet]``: run a scene and write its results.
+
+With no SCENE the embedded default scene runs: the QJ1044 test rig of seed paper 002
+(1800 r/min, 33 L/min, axial load 0-42 kN in 2 kN steps of 3 min, 1 kN radial load,
+two test bearings on one shaft, 35 degC ambient). Results are written as they are
+computed; Ctrl-C keeps what was written and says where.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..scene import load_scene
+
+NAME = "run"
+HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and write results"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", nargs="?", help="scene TOML path or preset name")
+    parser.add_argument("--out", default=None,
+                        help="results folder (default: results/<scene file name>)")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar, less output")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..simulation import Simulation
+
+    scene = load_scene(args.scene)
+    name = Path(args.scene).stem if args.scene else "qj1044_rig"
+    out = Path(args.out) if args.out else Path("results") / name
+    progress = None if not args.quiet else False
+    sim = Simulation(scene, progress=progress)
+    if not args.quiet:
+        print(f"scene: {scene.title}")
+        print(sim.describe_chain())
+    try:
+        results = sim.run(out_dir=out)
+    except KeyboardInterrupt:
+        print(f"\ninterrupted: everything computed so far is in {out}/", file=sys.stderr)
+        return 130
+    if not args.quiet:
+        print(sim.summary_text(results))
+    print(f"results written to {out}/ (report: {out / 'report.html'})")
+    return 0

@@ -1,0 +1,44 @@
+"""``thermobearing sweep SCENE --set path=values ... --out DIR``: a resumable parameter sweep.
+
+Example: ``thermobearing sweep qj1044_rig --set supply.flow=15,20,25,33
+--set schedule.speed=600:1800:300 --out sweep_flow``. Every finished case is appended
+to ``DIR/cases.jsonl`` at once; rerunning the same command skips finished cases.
+``--scheduler ADDRESS`` runs the cases on an existing dask.distributed cluster.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..scene import load_scene
+from ..sweep import parse_set, run_sweep
+
+NAME = "sweep"
+HELP = "sweep scene parameters (cartesian product), locally or on dask, resumable"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", help="scene TOML path or preset name")
+    parser.add_argument("--set", action="append", required=True, dest="sets",
+                        metavar="PATH=VALUES",
+                        help="e.g. supply.flow=15,33 or schedule.speed=600:1800:300")
+    parser.add_argument("--out", required=True, help="results folder")
+    parser.add_argument("--workers", type=int, default=None, help="local processes")
+    parser.add_argument("--scheduler", default=None, help="dask scheduler address")
+    parser.add_argument("--fallback-local", action="store_true",
+                        help="run locally if the scheduler cannot be reached")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+
+
+def run(args: argparse.Namespace) -> int:
+    scene = load_scene(args.scene)
+    d = scene.to_dict()
+    params = [parse_set(s, d) for s in args.sets]
+    out = Path(args.out)
+    df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
+                   fallback_local=args.fallback_local,
+                   progress=False if args.quiet else None)
+    print(df.to_string(index=False, float_format=lambda v: f"{v:.4g}"))
+    print(f"summary written to {out / 'summary.csv'}")
+    return 0

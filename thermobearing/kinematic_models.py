@@ -1,0 +1,144 @@
+"""How element and cage speeds are found: race control or the skidding solver.
+
+Registry ``kinematics`` (scenes choose with ``[models] kinematics = "..."``):
+
+``race_control``
+    quasi-static load distribution (``loads.py``) and race-control kinematics (Jones; no
+    slip at the contact centres, ``state.race_control_state``): cheap, no cage dynamics.
+``skidding``
+    the skidding / over-skidding solver (``skidding.solve``): cage and element speeds
+    from the traction / drag balance, warm-started from the previous operating point.
+
+Both return a :class:`KinematicsResult` whose ``state`` is the
+:class:`~thermobearing.state.KinematicState` the heat sources read and whose
+``heat_options`` are the :class:`~thermobearing.heat_sources.HeatContext` options that
+match the force models the kinematics used (so heat = force x sliding speed).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from .registry import Registry
+from .state import KinematicState, OilSupply, OperatingPoint
+
+
+@dataclass(frozen=True)
+class KinematicsResult:
+    """Kinematic state of one bearing at one operating point.
+
+    Attributes
+    ----------
+    state : the KinematicState for the heat sources.
+    cage_speed_ratio : CSR = omega_cage / omega_inner [-].
+    theoretical_cage_speed_ratio : epicyclic CSR at the quasi-static contact angles [-].
+    converged, residual_norm, iterations : solver diagnostics (race control: exact).
+    heat_options : HeatContext options matching the force models used.
+    traction : the raceway traction law the kinematics used (the heat sources use it too).
+    raw : the solver's own result object (warm start of the next solve).
+    """
+
+    state: KinematicState
+    cage_speed_ratio: float
+    theoretical_cage_speed_ratio: float
+    converged: bool = True
+    residual_norm: float = 0.0
+    iterations: int = 0
+    heat_options: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
+    traction: Any = None
+    raw: Any = None
+
+    @property
+    def over_skid(self) -> float:
+        """CSR / CSR_th - 1 [-] (positive: over-skidding, negative: skidding)."""
+        return self.cage_speed_ratio / self.theoretical_cage_speed_ratio - 1.0
+
+
+def default_traction(bearing: Any, lubricant: Any, temperature: float, params: Any = None
+                     ) -> Any:
+    """The raceway traction law of the skidding solvers, at the contact temperature [K]:
+    Eyring with a limiting shear stress for balls (``skidding.ball_models.make_traction``),
+    the roller solver's law for rollers (``skidding.roller.default_traction_law``)."""
+    if hasattr(bearing, "ball_diameter"):
+        from .skidding.ball_models import BallParameters, make_traction
+
+        return make_traction(lubricant, params or BallParameters(), temperature)
+    from .skidding.roller import default_traction_law
+
+    return default_traction_law(lubricant)
+
+
+def _ball_heat_options(bearing: Any, supply: OilSupply, speed: float, params: Any
+                       ) -> dict[str, Any]:
+    from .skidding.ball_models import BallParameters, heat_context_options
+
+    opts = heat_context_options(bearing, supply, speed, params or BallParameters())
+    if "ball_pocket" in opts and "pocket_friction" not in opts:
+        opts["pocket_friction"] = opts.pop("ball_pocket")
+    return opts
+
+
+KINEMATICS: Registry[Any] = Registry(
+    "kinematics", "element and cage speeds: race control or the skidding solver")
+
+
+@KINEMATICS.register(
+    "race_control",
+    references=["harris_kotzalas2007", "johnson1985"],
+    summary="Quasi-static load distribution with race-control kinematics (no cage slip).",
+)
+def race_control(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
+                 contact_temperature: float, oil_temperature: float, supply: OilSupply,
+                 guess: KinematicsResult | None = None, options: Mapping[str, Any] | None = None
+                 ) -> KinematicsResult:
+    """Race-control kinematics (``state.race_control_state``, outer-race control by default)."""
+    from .state import race_control_state
+
+    opts = dict(options or {})
+    params = opts.get("params")
+    state = race_control_state(bearing, operating, control=opts.get("control", "outer_race"),
+                               lubricant=lubricant, temperature=contact_temperature)
+    csr = state.cage_speed_ratio
+    theo = bearing.theoretical_cage_speed_ratio()
+    heat_options = (_ball_heat_options(bearing, supply, operating.inner_speed, params)
+                    if hasattr(bearing, "ball_diameter") else {})
+    return KinematicsResult(state=state, cage_speed_ratio=csr,
+                            theoretical_cage_speed_ratio=float(theo), raw=state,
+                            heat_options=heat_options,
+                            traction=default_traction(bearing, lubricant, contact_temperature,
+                                                      params))
+
+
+@KINEMATICS.register(
+    "skidding",
+    references=["gao2022_overskidding", "li2018_nu214_skidding", "harris_kotzalas2007"],
+    summary="Skidding / over-skidding solver: cage and element speeds from the force balance.",
+)
+def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
+             contact_temperature: float, oil_temperature: float, supply: OilSupply,
+             guess: KinematicsResult | None = None, options: Mapping[str, Any] | None = None
+             ) -> KinematicsResult:
+    """The skidding solver (``skidding.solve``), warm-started from ``guess``."""
+    from .skidding import solve
+
+    opts = dict(options or {})
+    params = opts.pop("params", None)
+    raw_guess = guess.raw if guess is not None else None
+    res = solve(bearing, lubricant, operating.inner_speed, operating.radial_load,
+                operating.axial_load, contact_temperature, supply=supply, params=params,
+                guess=raw_guess, oil_temperature=oil_temperature, **opts)
+    heat_options = (_ball_heat_options(bearing, supply, operating.inner_speed, params)
+                    if hasattr(bearing, "ball_diameter") else {})
+    return KinematicsResult(
+        state=res.kinematic_state,
+        cage_speed_ratio=float(res.cage_speed_ratio),
+        theoretical_cage_speed_ratio=float(res.theoretical_cage_speed_ratio),
+        converged=bool(res.converged),
+        residual_norm=float(res.residual_norm),
+        iterations=int(getattr(res, "iterations", 0)),
+        heat_options=heat_options,
+        traction=default_traction(bearing, lubricant, contact_temperature, params),
+        raw=res,
+    )

@@ -1,0 +1,461 @@
+"""The one orchestrator: ``Simulation(scene).run() -> Results``.
+
+It wires, in a fixed order, only the models the scene's outputs need and holds no physics
+of its own:
+
+lubricant -> load distribution and contacts -> film -> kinematics (race control or the
+skidding solver, warm-started) -> heat sources -> thermal network -> temperatures, which
+feed back into the viscosity.
+
+Model only what a scene needs (:func:`plan_chain`): ``film`` alone runs no kinematics and
+no network; ``kinematics``/``losses`` run no network; ``temperatures``/``energy`` add the
+network and the transient stepper (or the steady solve in ``mode = "steady"``).
+
+Coupled transient (``mode = "transient"``)
+------------------------------------------
+Each schedule step is cut into ``chunks`` (solver.chunk, default 60 s). At the start of a
+chunk the heat sources are evaluated on the current kinematic state at the current node
+temperatures, and linearised in the node temperatures by finite differences (one extra
+evaluation per node of the bearing's group): q(T) = q0 + J (T - T0). The network stepper
+(TR-BDF2 by default) integrates the chunk with that affine heat and its constant Jacobian,
+so the temperature feedback on viscosity is implicit inside the step. The kinematics
+(skidding solver) are re-solved at a step change and whenever the oil viscosity at the
+contact temperature has moved by more than ``solver.kinematics_tolerance`` (relative)
+since the last solve: the losses scale with a power < 1 of the viscosity, so this bounds
+their change. Steady mode (``mode = "steady"``): for each step the coupled fixed point
+of network and heat sources by Newton (affine heat with its Jacobian), with the kinematics
+re-solved until the temperatures stop moving.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from .citations import cite
+from .errors import ConvergenceError, InputError, UnknownNameError, ValidityWarning
+from .kinematic_models import KINEMATICS, KinematicsResult
+from .results import Results, ResultsWriter
+from .scene import Scene, Step, loads_scene
+from .state import OilSupply, OperatingPoint
+from .units import from_si
+
+BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
+                "cage_guide", "pocket_friction")
+ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
+                  "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction")
+
+
+@dataclass(frozen=True)
+class ChainLink:
+    """One model of the chain: family, registered name, citation keys, why it runs."""
+
+    family: str
+    name: str
+    references: tuple[str, ...]
+    purpose: str
+
+
+def _needs(scene: Scene) -> dict[str, bool]:
+    want = set(scene.outputs.want)
+    thermal = bool(want & {"temperatures", "energy"})
+    losses = thermal or "losses" in want or "report" in want
+    kin = losses or "kinematics" in want
+    return {"film": True, "kinematics": kin, "losses": losses, "network": thermal,
+            "transient": thermal and scene.outputs.mode == "transient"}
+
+
+def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
+    """Heat sources of the scene (``[models] heat_sources``) or the defaults per type."""
+    names = scene.models.get("heat_sources")
+    if names is None:
+        return BALL_SOURCES if is_ball else ROLLER_SOURCES
+    if isinstance(names, str):
+        names = [names]
+    return tuple(names)
+
+
+def plan_chain(scene: Scene, lubricant: Any | None = None,
+               is_ball: bool = True) -> list[ChainLink]:
+    """The minimal model chain for the scene's outputs (see the module docstring)."""
+    from .film import FILM
+    from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
+
+    allowed = {"kinematics", "film", "traction", "heat_sources", "params", "control",
+               "heat_model"}
+    for key in scene.models:
+        if key not in allowed:
+            raise InputError(f"models.{key}", scene.models[key],
+                             "a known model family: " + ", ".join(sorted(allowed)))
+    need = _needs(scene)
+    links: list[ChainLink] = []
+
+    def add(registry: Any, name: str, purpose: str) -> None:
+        entry = registry.entry(name)
+        links.append(ChainLink(registry.family, name, entry.references, purpose))
+
+    if lubricant is not None:
+        add(VISCOSITY_TEMPERATURE, lubricant.viscosity_law, "oil viscosity at node temperatures")
+        add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
+    film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
+                            else "pan_hamrock_central")
+    add(FILM, film, "film thickness of the raceway contacts")
+    if need["kinematics"]:
+        add(KINEMATICS, scene.models.get("kinematics", "skidding"),
+            "cage and element speeds, sliding speeds")
+    if need["losses"]:
+        from .heat_sources import HEAT_SOURCES
+
+        for name in heat_source_names(scene, is_ball):
+            add(HEAT_SOURCES, name, "power loss")
+    if need["network"]:
+        from .network import STEPPERS
+        from .network.templates import NETWORK_TEMPLATES
+
+        add(NETWORK_TEMPLATES, scene.network.get("template", "four_node_paper002"),
+            "thermal network")
+        if need["transient"]:
+            add(STEPPERS, scene.solver.stepper, "transient temperatures")
+    return links
+
+
+# ---------------------------------------------------------------------------
+@dataclass
+class _Bearing:
+    """One bearing of the scene with its models and warm-start memory."""
+
+    name: str
+    bearing: Any
+    is_ball: bool
+    sources: tuple[str, ...]
+    kinematics_name: str
+    kin_options: dict[str, Any]
+    last: KinematicsResult | None = None
+    last_viscosity: float = math.nan
+    last_step: int = -1
+    solves: int = 0
+
+
+@dataclass
+class _Evaluation:
+    """Heat of one bearing at one state: per role, per source/component, and diagnostics."""
+
+    by_role: dict[str, float]
+    rows: list[dict[str, Any]] = field(default_factory=list)
+
+
+class Simulation:
+    """Run a scene.
+
+    Parameters
+    ----------
+    scene : the configured study (:func:`thermobearing.scene.load_scene`).
+    progress : show a progress bar (default: when stderr is a terminal).
+    """
+
+    def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
+        from . import load_lubricant
+        from .geometry import load_bearing
+
+        self.scene = scene
+        self.progress = sys.stderr.isatty() if progress is None else bool(progress)
+        lub_spec = scene.lubricant
+        self.lubricant = load_lubricant(lub_spec.get("preset") or
+                                        str(scene.resolve_path(lub_spec["path"])))
+        self.supply = OilSupply.from_scene(scene.supply)
+        kin_name = scene.models.get("kinematics", "skidding")
+        KINEMATICS.entry(kin_name)
+        kin_options: dict[str, Any] = {}
+        if "control" in scene.models:
+            kin_options["control"] = scene.models["control"]
+        self.bearings: list[_Bearing] = []
+        for spec in scene.bearings:
+            src = spec.preset or str(scene.resolve_path(spec.path))
+            b = load_bearing(src, overrides=spec.overrides or None)
+            is_ball = hasattr(b, "ball_diameter")
+            opts = dict(kin_options)
+            if kin_name == "skidding" and is_ball:
+                opts["params"] = _ball_parameters(b, scene)
+            self.bearings.append(_Bearing(spec.name, b, is_ball,
+                                          heat_source_names(scene, is_ball), kin_name, opts))
+        self.chain = plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
+        self.needs = _needs(scene)
+        self.network = None
+        self.warnings: list[str] = []
+
+    # ------------------------------------------------------------------ chain
+    def describe_chain(self, with_citations: bool = False) -> str:
+        """The model chain as text (``thermobearing check``)."""
+        lines = ["model chain:"]
+        for i, link in enumerate(self.chain, 1):
+            lines.append(f"  {i}. {link.family}: {link.name}  ({link.purpose})")
+            if with_citations:
+                lines.extend(f"       {c}" for c in cite(link.references))
+        return "\n".join(lines)
+
+    def citations(self) -> list[str]:
+        return cite(k for link in self.chain for k in link.references)
+
+    # ------------------------------------------------------------ evaluation
+    def _operating(self, step: Step) -> OperatingPoint:
+        return OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
+                              axial_load=step.axial_load)
+
+    def _kinematics(self, b: _Bearing, step_index: int, step: Step,
+                    temps: Mapping[str, float]) -> KinematicsResult:
+        """Solve (or reuse) the kinematics of one bearing at the current temperatures."""
+        t_contact = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
+        visc = float(self.lubricant.dynamic_viscosity(t_contact))
+        tol = self.scene.solver.kinematics_tolerance
+        if (b.last is not None and b.last_step == step_index
+                and abs(visc / b.last_viscosity - 1.0) <= tol):
+            return b.last
+        op = self._operating(step)
+        fn = KINEMATICS.get(b.kinematics_name)
+        guess = b.last if b.last is not None else None
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", ValidityWarning)
+            try:
+                res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
+                         oil_temperature=temps["oil"], supply=self.supply, guess=guess,
+                         options=b.kin_options)
+            except ConvergenceError:
+                if guess is None:
+                    raise
+                res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
+                         oil_temperature=temps["oil"], supply=self.supply, guess=None,
+                         options=b.kin_options)
+        self._note(caught, f"{b.name}, step {step_index}")
+        if not res.converged:
+            raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
+                                   res.residual_norm, "at step", {"step": step_index})
+        b.last, b.last_viscosity, b.last_step = res, visc, step_index
+        b.solves += 1
+        return res
+
+    def _note(self, caught: Sequence[warnings.WarningMessage], where: str) -> None:
+        for w in caught:
+            text = f"{where}: {w.message}"
+            if text not in self.warnings and len(self.warnings) < 200:
+                self.warnings.append(text)
+
+    def _heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
+              temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
+        """Heat of the bearing's sources at the given role temperatures."""
+        from .heat_sources import HeatContext, evaluate
+
+        ctx = HeatContext(bearing=b.bearing, lubricant=self.lubricant, supply=self.supply,
+                          operating=self._operating(step), temperatures=dict(temps),
+                          kinematics=kin.state, traction=kin.traction,
+                          options=kin.heat_options)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", ValidityWarning)
+            results = evaluate(b.sources, ctx)
+        if with_rows:
+            self._note(caught, b.name)
+        by_role = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 0.0)
+        rows = []
+        for r in results:
+            for role, p in r.power_by_role.items():
+                by_role[role] += p
+            if with_rows:
+                for comp, p in r.components.items():
+                    rows.append({"source": r.source, "component": comp,
+                                 "power [W]": p,
+                                 "load dependence": r.loss_class.get(comp, "")})
+        return _Evaluation(by_role, rows)
+
+    # ------------------------------------------------------------------- run
+    def run(self, out_dir: Path | str | None = None) -> Results:
+        """Run the scene; write results to ``out_dir`` as they are computed (if given)."""
+        writer = ResultsWriter(out_dir) if out_dir is not None else None
+        t_wall = time.perf_counter()
+        scene_toml = self.scene.to_toml()
+        if writer is not None:
+            (Path(out_dir) / "scene.toml").write_text(scene_toml, encoding="utf-8")
+        if self.needs["network"]:
+            from .coupled import run_coupled
+
+            tables, stats = run_coupled(self, writer)
+        else:
+            tables, stats = self._run_operating_points(writer)
+        stats["wall_time_s"] = time.perf_counter() - t_wall
+        stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
+        results = Results(tables=tables, scene_toml=scene_toml,
+                          chain=[(link.family, link.name) for link in self.chain],
+                          citations=self.citations(), warnings=list(self.warnings),
+                          stats=stats)
+        if out_dir is not None:
+            from .report import attach_figures, write_report
+
+            attach_figures(results, self.scene)
+            results.write(out_dir)
+            write_report(results, self.scene, Path(out_dir) / "report.html")
+        return results
+
+    def _run_operating_points(self, writer: ResultsWriter | None
+                              ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
+        """Kinematics and/or losses per schedule step at the initial temperature."""
+        from tqdm.auto import tqdm
+
+        t0 = self.scene.environment.initial_temperature
+        temps = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), t0)
+        kin_rows: list[dict[str, Any]] = []
+        loss_rows: list[dict[str, Any]] = []
+        film_rows: list[dict[str, Any]] = []
+        steps = self.scene.schedule.steps
+        for i, step in enumerate(tqdm(steps, disable=not self.progress, desc="steps")):
+            for b in self.bearings:
+                base = step_columns(i, 0.0, b.name, step)
+                if self.needs["kinematics"]:
+                    kin = self._kinematics(b, i, step, temps)
+                    row = {**base, **kinematics_columns(kin)}
+                    kin_rows.append(row)
+                    if writer:
+                        writer.append("kinematics", [row])
+                    if self.needs["losses"]:
+                        ev = self._heat(b, step, kin, temps, with_rows=True)
+                        rows = [{**base, **r} for r in ev.rows]
+                        loss_rows.extend(rows)
+                        if writer:
+                            writer.append("losses", rows)
+                else:
+                    rows = film_table(b, self.lubricant, step, temps)
+                    film_rows.extend({**base, **r} for r in rows)
+        tables = {}
+        if kin_rows:
+            tables["kinematics"] = pd.DataFrame(kin_rows)
+        if loss_rows:
+            tables["losses"] = pd.DataFrame(loss_rows)
+        if film_rows:
+            tables["film"] = pd.DataFrame(film_rows)
+        return tables, {"steps": len(steps)}
+
+    def summary_text(self, results: Results) -> str:
+        """A few lines for the terminal."""
+        lines = []
+        kin = results.tables.get("kinematics")
+        if kin is not None and not kin.empty:
+            first = kin.iloc[0]
+            lines.append(f"CSR at first step: {first['cage speed ratio [-]']:.4f} "
+                         f"(theoretical {first['theoretical cage speed ratio [-]']:.4f})")
+            k = kin["over-skidding [%]"].to_numpy()
+            lines.append(f"over-skidding: max {np.nanmax(k):+.2f} %, min {np.nanmin(k):+.2f} %")
+        losses = results.tables.get("losses")
+        if losses is not None and not losses.empty:
+            per_step = losses.groupby(["step", "bearing"])["power [W]"].sum()
+            lines.append(f"total loss per bearing: {per_step.min():.0f} - {per_step.max():.0f} W")
+        temps = results.tables.get("temperatures")
+        if temps is not None and not temps.empty:
+            cols = [c for c in temps.columns if c.endswith("[degC]")]
+            lines.append("final temperatures: " + ", ".join(
+                f"{c.replace(' [degC]', '')} {temps[c].iloc[-1]:.1f} degC" for c in cols))
+        energy = results.tables.get("energy")
+        if energy is not None and not energy.empty:
+            last = energy.iloc[-1]
+            gen = last["generated [J]"]
+            lines.append(f"energy audit: generated {gen / 1e6:.3f} MJ, imbalance "
+                         f"{abs(last['imbalance [J]']) / max(abs(gen), 1e-300):.2e} (relative)")
+        lines.append(f"wall time {results.stats.get('wall_time_s', float('nan')):.2f} s, "
+                     f"{results.stats.get('kinematics_solves', 0)} kinematics solves")
+        return "\n".join(lines)
+
+
+# ---------------------------------------------------------------------------
+def _ball_parameters(bearing: Any, scene: Scene) -> Any:
+    """Ball force-model parameters: the calibrated set of the preset if there is one."""
+    from .skidding.ball_models import BallParameters
+
+    try:
+        from .skidding.calibration import load_calibration
+    except ImportError:
+        return BallParameters()
+    params = load_calibration(bearing.name)
+    return params if params is not None else BallParameters()
+
+
+def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
+    """The columns that identify one operating step in the tables."""
+    return {"step": index, "time [s]": time_s, "bearing": bearing,
+            "speed [rpm]": from_si(step.speed, "rpm"),
+            "radial load [kN]": step.radial_load / 1e3,
+            "axial load [kN]": step.axial_load / 1e3}
+
+
+def kinematics_columns(kin: KinematicsResult) -> dict[str, Any]:
+    """Kinematics table columns of one result."""
+    return {"cage speed ratio [-]": kin.cage_speed_ratio,
+            "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
+            "over-skidding [%]": 100.0 * kin.over_skid,
+            "converged": kin.converged, "residual": kin.residual_norm,
+            "iterations": kin.iterations}
+
+
+def film_table(b: _Bearing, lubricant: Any, step: Step,
+               temps: Mapping[str, float]) -> list[dict[str, Any]]:
+    """Contact and film of the most loaded element (film-only scenes): race control."""
+    from .state import race_control_state
+
+    op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
+                        axial_load=step.axial_load)
+    t_c = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
+    state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
+    rows = []
+    for cs in state.contacts:
+        q = np.asarray(cs.normal_load)
+        j = int(np.argmax(q))
+        rows.append({"race": cs.race, "max load [N]": float(q[j]),
+                     "max pressure [GPa]": float(np.asarray(cs.max_pressure)[j]) / 1e9,
+                     "semi-major a [mm]": float(np.asarray(cs.semi_major)[j]) * 1e3,
+                     "semi-minor b [mm]": float(np.asarray(cs.semi_minor)[j]) * 1e3,
+                     "contact angle [deg]": math.degrees(float(np.asarray(cs.contact_angle)[j])),
+                     "entrainment speed [m/s]": float(np.asarray(cs.entrainment_speed)[j]),
+                     "central film [um]": (float(np.asarray(cs.film_thickness)[j]) * 1e6
+                                           if cs.film_thickness is not None else math.nan)})
+    return rows
+
+
+def summarize_scene(scene_toml: str) -> dict[str, float]:
+    """Sweep runner: run a scene and reduce it to a few numbers.
+
+    Returns total and per-source loss [W] (mean over steps, first bearing), the maximum
+    over-skidding [%], the final temperature of every node [degC] and its rise [K] when the
+    scene has a network.
+    """
+    scene = loads_scene(scene_toml)
+    res = Simulation(scene, progress=False).run()
+    out: dict[str, float] = {}
+    losses = res.tables.get("losses")
+    if losses is not None and not losses.empty:
+        first = losses[losses["bearing"] == losses["bearing"].iloc[0]]
+        per = first.groupby(["step", "source"])["power [W]"].sum().unstack(fill_value=0.0)
+        out["total loss [W]"] = float(per.sum(axis=1).mean())
+        out["max total loss [W]"] = float(per.sum(axis=1).max())
+        for src in per.columns:
+            out[f"{src} [W]"] = float(per[src].mean())
+    kin = res.tables.get("kinematics")
+    if kin is not None and not kin.empty:
+        out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
+        out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
+    temps = res.tables.get("temperatures")
+    if temps is not None and not temps.empty:
+        for c in temps.columns:
+            if c.endswith("[degC]"):
+                out[f"final {c}"] = float(temps[c].iloc[-1])
+                out[f"rise {c.replace('[degC]', '[K]')}"] = float(temps[c].iloc[-1]
+                                                                  - temps[c].iloc[0])
+    return out
+
+
+def check_known(name: str, known: Sequence[str], field_name: str) -> None:
+    if name not in known:
+        raise UnknownNameError(field_name, name, known)
