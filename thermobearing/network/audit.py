@@ -113,10 +113,13 @@ class TransientResult:
         return {n: float(v) for n, v in zip(self.names, self.temperatures[-1], strict=True)}
 
     def sample(self, t: np.ndarray) -> np.ndarray:
-        """Temperatures [K] at times ``t`` [s] by cubic Hermite interpolation in each step.
+        """Temperatures [K] at times ``t`` [s]: limited cubic Hermite within each step.
 
-        Uses the end values and rates of the step containing t (4th-order interpolation
-        error, below the 2nd/3rd-order local error of the steppers). Shape (len(t), n).
+        End values and rates of the step containing t; the rates are limited as in
+        Fritsch & Carlson (1980) (zero if their sign differs from the secant, scaled so
+        that alpha^2 + beta^2 <= 9), so that a stiff node whose rate f/C is dominated by
+        the Newton residual divided by a tiny C is interpolated monotonically instead of
+        overshooting. Shape (len(t), n).
         """
         t = np.atleast_1d(np.asarray(t, dtype=float))
         ts = self.times
@@ -136,8 +139,19 @@ class TransientResult:
         s = np.clip((t - t0) / h_safe, 0.0, 1.0)[:, None]
         y0 = self.temperatures[k]
         y1 = self.temperatures[k + 1]
+        dy = y1 - y0
         d0 = self.rates[k] * h_safe[:, None]
         d1 = self.rates[k + 1] * h_safe[:, None]
+        flat = dy == 0.0
+        dy_safe = np.where(flat, 1.0, dy)
+        a = np.where(flat, 0.0, d0 / dy_safe)
+        b = np.where(flat, 0.0, d1 / dy_safe)
+        a = np.maximum(a, 0.0)
+        b = np.maximum(b, 0.0)
+        r = np.hypot(a, b)
+        lim = np.where(r > 3.0, 3.0 / np.where(r > 0, r, 1.0), 1.0)
+        d0 = a * lim * dy
+        d1 = b * lim * dy
         h00 = 2 * s**3 - 3 * s**2 + 1
         h10 = s**3 - 2 * s**2 + s
         h01 = -2 * s**3 + 3 * s**2

@@ -109,9 +109,16 @@ class ViscousHeat:
     beta: float = 0.03
     T_ref: float = T_OIL_IN
 
+    def __post_init__(self) -> None:
+        self._k = 0  # cached step index: the lookup is O(1) while t stays in one step
+        self._edges = [float(x) for x in self.edges]
+
     def power(self, t: float) -> float:
-        k = int(np.searchsorted(self.edges, t, side="right")) - 1
-        k = min(max(k, 0), len(self.powers) - 1)
+        k, e = self._k, self._edges
+        if not (e[k] <= t < e[k + 1]):
+            k = int(np.searchsorted(self.edges, t, side="right")) - 1
+            k = min(max(k, 0), len(self.powers) - 1)
+            self._k = k
         return float(self.powers[k])
 
     def __call__(self, t: float, T: np.ndarray) -> np.ndarray:

@@ -426,6 +426,8 @@ class _Driver:
         self.jacobian = jacobian
         self._build()
         self.h_last: float | None = None
+        self.h0_factor = 2.0  # first step 2 / max|dT/dt / (atol + rtol |T|)| [s]
+        self.facmax = 5.0
 
     def _build(self) -> None:
         self.asm = Assembler(self.network)
@@ -437,7 +439,7 @@ class _Driver:
             return min(self.first_step, t1 - t0)
         ydot = np.where(core.diff, f0 / np.where(core.diff, core.C, 1.0), 0.0)
         d1 = float(np.max(np.abs(ydot) / core.scale(y0)))
-        h = 0.5 / d1 if d1 > 0 else (t1 - t0)
+        h = self.h0_factor / d1 if d1 > 0 else (t1 - t0)
         if self.h_last is not None:
             h = min(h, 4.0 * self.h_last)
         return max(min(h, t1 - t0, self.max_step), min(self.min_step * 10, t1 - t0))
@@ -503,7 +505,7 @@ class _Driver:
             err = trial.err
             if self.dt is None and err is not None and err > 1.0:
                 core.stats["rejected"] += 1
-                h = h * max(0.2, 0.9 * err ** (-1.0 / p1))
+                h = h * max(0.1, 0.9 * err ** (-1.0 / p1))
                 if h < self.min_step:
                     raise ConvergenceError(
                         f"network stepper {self.method_name}", err,
@@ -521,7 +523,8 @@ class _Driver:
                 h = self.dt
             else:
                 self.h_last = h
-                fac = 5.0 if err == 0.0 else min(5.0, max(0.2, 0.9 * err ** (-1.0 / p1)))
+                fac = (self.facmax if err == 0.0
+                       else min(self.facmax, max(0.2, 0.9 * err ** (-1.0 / p1))))
                 if not 1.0 <= fac <= 1.2:
                     h = h * fac
                 h = min(h, self.max_step)

@@ -1,0 +1,215 @@
+"""BM-1 work-precision of the network steppers against scipy's solve_ivp.
+
+Problem (thermobearing.network.problems): the stiff bearing network with 4, 20 or 100 state
+nodes (an oil stream of 946 W/K, capacities from 0.1 J/K to 6e4 J/K), a 66-min protocol of
+22 load steps (3 min each, two of them to zero load), and heat sources that fall with
+temperature as a viscous loss: q_i = P(t) share_i exp(-0.03 (T_i - T_ref)).
+
+Solvers, each timed in the same process (best of ``--repeat``):
+- ours: ``integrate(..., method="tr_bdf2" | "backward_euler", breakpoints=step times,
+  heat_jacobian=analytic diagonal)``;
+- anchors: ``scipy.integrate.solve_ivp`` with LSODA, BDF and Radau, analytic Jacobian,
+  restarted at every load step (one call per step, heat frozen in the step).
+Tolerances: the same (rtol, atol = 100 rtol [K]) pairs for everyone.
+Error: max over all nodes and a 10-s grid of |T - T_ref|, each solver using its own dense
+output (ours: cubic Hermite). Reference: Radau at rtol 1e-12 (restarted), checked against
+our TR-BDF2 at rtol 1e-11; their difference is printed.
+Ratios: each solver's time at max error = 0.01 K is interpolated (log-log) on its curve;
+``ratio_vs_anchor`` of a record is (LSODA time at the record's error) / (record time),
+i.e. the speed-up over LSODA at equal error (1 for LSODA itself).
+
+Usage: python benchmarks/bm1_work_precision.py [--quick] [--json] [--out DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from thermobearing.network import assemble, integrate
+from thermobearing.network.problems import bearing_network, load_protocol, viscous_heat_for
+
+TARGET_ERROR = 0.01  # K
+
+
+def make_case(n: int):
+    net = bearing_network(n)
+    edges, powers = load_protocol(22, 180.0)
+    heat = viscous_heat_for(net, edges, powers)
+    T0 = np.full(len(net.state_nodes), 308.15)
+    grid = np.linspace(0.0, edges[-1], int(edges[-1] / 10.0) + 1)
+    return net, edges, heat, T0, grid
+
+
+def run_ours(case, method: str, rtol: float, atol: float):
+    net, edges, heat, T0, grid = case
+    res = integrate(net, heat, (0.0, edges[-1]), T0, method=method, rtol=rtol, atol=atol,
+                    breakpoints=edges, heat_jacobian=heat.jacobian)
+    return res.sample(grid), res.stats["heat_evaluations"]
+
+
+def run_scipy(case, method: str, rtol: float, atol: float):
+    net, edges, heat, T0, grid = case
+    sys_ = assemble(net)
+    C, s = sys_.C, sys_.s
+    K = sys_.K if sys_.dense else sys_.K.toarray()
+    invC = 1.0 / C
+    y = T0.copy()
+    out = []
+    nsteps = 0
+    for k in range(len(edges) - 1):
+        q, jq = heat.at_segment(k)
+
+        def fun(t, T, q=q):
+            return (s - K @ T + q(t, T)) * invC
+
+        def jac(t, T, jq=jq):
+            J = -K.copy()
+            J[np.diag_indices_from(J)] += jq(t, T)
+            return J * invC[:, None]
+
+        a, b = edges[k], edges[k + 1]
+        last = k == len(edges) - 2
+        te = grid[(grid >= a) & ((grid < b) | last)]
+        r = solve_ivp(fun, (a, b), y, method=method, rtol=rtol, atol=atol, jac=jac,
+                      t_eval=te)
+        if not r.success:
+            raise RuntimeError(f"{method} failed: {r.message}")
+        out.append(r.y.T)
+        y = r.y[:, -1] if te[-1] == b else _end_state(fun, jac, a, b, y, method, rtol, atol)
+        nsteps += r.nfev
+    return np.vstack(out), nsteps
+
+
+def _end_state(fun, jac, a, b, y, method, rtol, atol):
+    r = solve_ivp(fun, (a, b), y, method=method, rtol=rtol, atol=atol, jac=jac)
+    return r.y[:, -1]
+
+
+def timed(fn, repeat: int):
+    best = np.inf
+    out = None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def time_at_error(records, target=TARGET_ERROR):
+    """Log-log interpolation of time at max error = target on one solver's curve."""
+    pts = sorted((r["max_error_K"], r["time_s"]) for r in records if r["max_error_K"] > 0)
+    if not pts:
+        return np.nan
+    errs = np.log([p[0] for p in pts])
+    times = np.log([p[1] for p in pts])
+    lt = np.log(target)
+    if lt < errs[0] or lt > errs[-1]:
+        return np.nan  # not bracketed: no extrapolation
+    return float(np.exp(np.interp(lt, errs, times)))
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="4 and 20 nodes, fewer tolerances")
+    ap.add_argument("--json", action="store_true", help="print JSON records")
+    ap.add_argument("--out", default="benchmarks/out", help="folder for the PNG plot")
+    ap.add_argument("--repeat", type=int, default=None)
+    args = ap.parse_args(argv)
+    sizes = [4, 20] if args.quick else [4, 20, 100]
+    repeat = args.repeat or (1 if args.quick else 3)
+    ours_rtols = [1e-4, 3e-5, 1e-5, 3e-6, 1e-6] if not args.quick else [1e-4, 3e-5, 1e-5]
+    scipy_rtols = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7] if not args.quick else [1e-4, 1e-5, 1e-6]
+    solvers = [("tr_bdf2", "ours", ours_rtols), ("backward_euler", "ours", [1e-5, 1e-6]),
+               ("LSODA", "scipy", scipy_rtols), ("BDF", "scipy", scipy_rtols),
+               ("Radau", "scipy", scipy_rtols)]
+    if args.quick:
+        solvers[1] = ("backward_euler", "ours", [1e-6])
+    records = []
+    summary = []
+    for n in sizes:
+        case = make_case(n)
+        t_ref, (ref, _) = timed(lambda c=case: run_scipy(c, "Radau", 1e-12, 1e-10), 1)
+        ours_tight, _ = run_ours(case, "tr_bdf2", 1e-11, 1e-9)
+        ref_diff = float(np.max(np.abs(ours_tight - ref)))
+        print(f"\n== {n} nodes: reference Radau(1e-12) in {t_ref:.1f} s; "
+              f"|ours(1e-11) - Radau(1e-12)| = {ref_diff:.2e} K", file=sys.stderr)
+        case_recs = []
+        for method, kind, rtols in solvers:
+            for rtol in rtols:
+                atol = 100.0 * rtol
+                runner = run_ours if kind == "ours" else run_scipy
+                try:
+                    t, (Y, steps) = timed(lambda r=runner, m=method, a=rtol, b=atol:
+                                          r(case, m, a, b), repeat)
+                except Exception as exc:  # a solver failure is a result, not a crash
+                    print(f"{method} rtol={rtol:g} failed: {exc}", file=sys.stderr)
+                    continue
+                err = float(np.max(np.abs(Y - ref)))
+                case_recs.append({"benchmark": "BM-1", "case": f"{n}_nodes", "method": method,
+                                  "setting": f"rtol={rtol:g},atol={atol:g}", "time_s": t,
+                                  "max_error_K": err, "f_evals": int(steps),
+                                  "reference_uncertainty_K": ref_diff})
+        lsoda = [r for r in case_recs if r["method"] == "LSODA"]
+        for r in case_recs:
+            t_l = time_at_error(lsoda, r["max_error_K"])
+            r["ratio_vs_anchor"] = (t_l / r["time_s"]) if np.isfinite(t_l) else None
+        at = {m: time_at_error([r for r in case_recs if r["method"] == m])
+              for m, _, _ in solvers}
+        summary.append((n, at))
+        records += case_recs
+    # ------------------------------------------------------------------ output
+    if args.json:
+        print(json.dumps(records, indent=1))
+    print(f"\n{'case':>10} {'method':>15} {'setting':>22} {'time [ms]':>10} {'fevals':>6} "
+          f"{'max err [K]':>12} {'x LSODA':>8}")
+    for r in records:
+        ratio = "" if r["ratio_vs_anchor"] is None else f"{r['ratio_vs_anchor']:.2f}"
+        print(f"{r['case']:>10} {r['method']:>15} {r['setting']:>22} "
+              f"{1e3 * r['time_s']:10.1f} {r['f_evals']:6d} {r['max_error_K']:12.3e} {ratio:>8}")
+    print(f"\nTime at max error {TARGET_ERROR} K (interpolated on each curve; nan = not "
+          "bracketed) and speed-up of tr_bdf2:")
+    for n, at in summary:
+        ours = at["tr_bdf2"]
+        parts = [f"{m} {1e3 * v:.1f} ms" for m, v in at.items()]
+        ratios = [f"{m}/ours = {v / ours:.1f}x" for m, v in at.items()
+                  if m not in ("tr_bdf2",) and np.isfinite(v) and np.isfinite(ours)]
+        print(f"  {n:3d} nodes: " + ", ".join(parts))
+        print("             " + ", ".join(ratios))
+    _plot(records, sizes, Path(args.out))
+    return 0
+
+
+def _plot(records, sizes, out: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out.mkdir(parents=True, exist_ok=True)
+    fig, axes = plt.subplots(1, len(sizes), figsize=(5 * len(sizes), 4), squeeze=False)
+    for ax, n in zip(axes[0], sizes, strict=True):
+        for m in ("tr_bdf2", "backward_euler", "LSODA", "BDF", "Radau"):
+            rs = sorted((r["max_error_K"], r["time_s"]) for r in records
+                        if r["case"] == f"{n}_nodes" and r["method"] == m)
+            if rs:
+                ax.loglog([x[0] for x in rs], [x[1] for x in rs], "o-", label=m)
+        ax.axvline(TARGET_ERROR, color="k", lw=0.8, ls="--")
+        ax.set_xlabel("max error [K]")
+        ax.set_ylabel("time [s]")
+        ax.set_title(f"BM-1: {n} nodes, 22 load steps")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "bm1_work_precision.png", dpi=120)
+    plt.close(fig)
+    print(f"plot: {out / 'bm1_work_precision.png'}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
