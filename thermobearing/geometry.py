@@ -504,6 +504,32 @@ class BallBearing:
         return race_control_cage_ratio(self.ball_diameter / self.pitch_diameter, ai,
                                        outer_contact_angle, control)
 
+    def summary(self) -> dict[str, tuple[float, str]]:
+        """Derived quantities for tables and reports: name -> (SI value, unit)."""
+        rx_i, ry_i = self.curvature("inner")
+        rx_o, ry_o = self.curvature("outer")
+        out = {
+            "pitch_diameter": (self.pitch_diameter, "m"),
+            "ball_diameter": (self.ball_diameter, "m"),
+            "n_balls": (float(self.n_balls), "-"),
+            "nominal_contact_angle": (self.contact_angle, "rad"),
+            "free_contact_angle": (self.free_contact_angle, "rad"),
+            "gamma": (float(self.gamma()), "-"),
+            "theoretical_cage_speed_ratio": (float(self.theoretical_cage_speed_ratio()), "-"),
+            "inner_raceway_diameter": (self.inner_raceway_diameter, "m"),
+            "outer_raceway_diameter": (self.outer_raceway_diameter, "m"),
+            "rx_inner": (float(rx_i), "m"), "ry_inner": (float(ry_i), "m"),
+            "rx_outer": (float(rx_o), "m"), "ry_outer": (float(ry_o), "m"),
+            "ball_mass": (self.ball_mass, "kg"), "ball_inertia": (self.ball_inertia, "kg*m**2"),
+            "cage_mass": (self.cage_mass, "kg"),
+            "effective_modulus": (self.effective_modulus, "Pa"),
+        }
+        if self.kind == "four_point":
+            out["gothic_arch_offset"] = (float(self.gothic_arch_offset or 0.0), "m")
+            out["shim_angle_inner"] = (self.shim_angle("inner"), "rad")
+            out["shim_angle_outer"] = (self.shim_angle("outer"), "rad")
+        return out
+
     def characteristic_frequencies(self, shaft_speed_hz: float, contact_angle: Any = None,
                                    cage_slip: float = 0.0,
                                    outer_speed_hz: float = 0.0) -> CharacteristicFrequencies:
@@ -685,6 +711,26 @@ class RollerBearing:
                                      control: str = "outer_race") -> float:
         """(1 - D_w/d_m)/2, paper 000 eq. 40 (n_m = n_i (1 - D_b/d_m)/2)."""
         return _cage_ratio(self.gamma())
+
+    def summary(self) -> dict[str, tuple[float, str]]:
+        """Derived quantities for tables and reports: name -> (SI value, unit)."""
+        rx_i, ry_i = self.curvature("inner")
+        rx_o, _ = self.curvature("outer")
+        return {
+            "pitch_diameter": (self.pitch_diameter, "m"),
+            "roller_diameter": (self.roller_diameter, "m"),
+            "roller_effective_length": (float(self.roller_effective_length or 0.0), "m"),
+            "n_rollers": (float(self.n_rollers), "-"),
+            "gamma": (self.gamma(), "-"),
+            "theoretical_cage_speed_ratio": (self.theoretical_cage_speed_ratio(), "-"),
+            "inner_raceway_diameter": (self.inner_raceway_diameter, "m"),
+            "outer_raceway_diameter": (self.outer_raceway_diameter, "m"),
+            "rx_inner": (rx_i, "m"), "rx_outer": (rx_o, "m"), "ry": (ry_i, "m"),
+            "roller_mass": (self.roller_mass, "kg"), "roller_inertia": (self.roller_inertia,
+                                                                       "kg*m**2"),
+            "cage_mass": (self.cage_mass, "kg"),
+            "effective_modulus": (self.effective_modulus, "Pa"),
+        }
 
     def characteristic_frequencies(self, shaft_speed_hz: float, contact_angle: Any = None,
                                    cage_slip: float = 0.0,

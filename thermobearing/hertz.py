@@ -3,7 +3,8 @@
 Conventions (contract): ``effective_modulus`` is E' = 2 / ((1-v1^2)/E1 + (1-v2^2)/E2) (Hamrock's,
 twice Johnson's E*). Reduced radii R_x (rolling direction) and R_y (transverse). The contact
 ellipse has semi-major axis ``a`` and semi-minor axis ``b``; for R_y >= R_x (every ball-raceway
-contact) ``a`` lies along y (transverse, along the groove) and ``b`` along x (rolling).
+contact) ``a`` lies along y (transverse, along the groove) and ``b`` along x (rolling); if
+R_x > R_y (e.g. some roller-end/rib contacts) the major axis lies along x instead.
 Ellipticity k = a/b >= 1.
 
 Exact solution (Hamrock & Brewe 1983, eqs. 1-8; Harris & Kotzalas 2007 vol. 1 ch. 6):

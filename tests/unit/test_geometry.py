@@ -223,3 +223,10 @@ def test_frozen() -> None:
         b.n_balls = 8  # type: ignore[misc]
     c = replace(b, ball_material=STEEL_52100)
     assert c.ball_material.name == "STEEL_52100"
+
+
+@pytest.mark.parametrize("name", PRESETS)
+def test_summary_is_finite(name: str) -> None:
+    for key, (value, unit) in load_bearing(name).summary().items():
+        assert math.isfinite(value) or key == "ry", key
+        assert unit
