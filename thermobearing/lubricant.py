@@ -495,6 +495,23 @@ def linear_expansion_density(
     return _out(rho)
 
 
+def astm_d1250_lube_density(T: ArrayLike, rho15: float) -> ArrayLike:
+    """Density of a lubricating oil vs temperature by the ASTM D1250 / API MPMS 11.1 volume
+    correction for lubricating oils (Table 54D, group D; ISO 91-1).
+
+    rho(T) = rho15 exp[-a15 dt (1 + 0.8 a15 dt)],  a15 = K0/rho15^2 + K1/rho15
+
+    with K0 = 0, K1 = 0.6278 kg/(m^3 degC) for lubricating oils, Delta t = t - 15 degC and
+    rho15 [kg/m^3] at 15 degC. For rho15 = 876 kg/m^3, alpha15 = 7.17e-4 1/K.
+    Tables valid from -18 to 150 degC for densities 800-1164 kg/m^3.
+    """
+    check_temperature("temperature", T)
+    check_positive("rho15", rho15)
+    a15 = 0.6278 / rho15
+    dt = np.asarray(T, dtype=float) - 288.15
+    return _out(rho15 * np.exp(-a15 * dt * (1.0 + 0.8 * a15 * dt)))
+
+
 # ---------------------------------------------------------------------------
 # thermal properties
 # ---------------------------------------------------------------------------
@@ -644,8 +661,10 @@ class Lubricant:
         (temperature at which a given alpha holds, for converting it to z).
     alpha_correlation : key of :data:`PRESSURE_VISCOSITY_COEFFICIENT` used when neither
         alpha nor z is given: alpha(T) follows the viscosity.
-    density_reference [kg/m^3] at density_reference_temperature [K]; thermal_expansion
-        [1/K]; density_pressure_law "dowson_higginson" or "incompressible".
+    density_reference [kg/m^3] at density_reference_temperature [K];
+        density_temperature_law "linear" (with thermal_expansion [1/K]) or
+        "astm_d1250_lube" (reference temperature must be 15 degC);
+        density_pressure_law "dowson_higginson" or "incompressible".
     thermal_model : key of :data:`LUBRICANT_THERMAL`; thermal_parameters its arguments.
     kind : "mineral", "ester", ... (informative).
     estimated : field -> reasoning, for values not taken from a source.
@@ -659,6 +678,7 @@ class Lubricant:
     density_reference_temperature: float = 288.15
     thermal_expansion: float = 6.4e-4
     density_pressure_law: str = "dowson_higginson"
+    density_temperature_law: str = "linear"
     pressure_law: str = "roelands"
     pressure_parameters: Mapping[str, float] = field(default_factory=dict)
     alpha_correlation: str | None = None
@@ -689,6 +709,14 @@ class Lubricant:
         if not 0.0 <= self.thermal_expansion < 5e-3:
             raise InputError(f"{self.name}.thermal_expansion", self.thermal_expansion,
                              "a value in [0, 5e-3) 1/K")
+        if self.density_temperature_law not in ("linear", "astm_d1250_lube"):
+            raise UnknownNameError(f"{self.name}.density_temperature_law",
+                                   self.density_temperature_law, ["linear", "astm_d1250_lube"])
+        if (self.density_temperature_law == "astm_d1250_lube"
+                and abs(self.density_reference_temperature - 288.15) > 1e-9):
+            raise InputError(f"{self.name}.density_reference_temperature",
+                             self.density_reference_temperature,
+                             "15 degC (288.15 K) with the astm_d1250_lube law")
         if self.density_pressure_law not in ("dowson_higginson", "incompressible"):
             raise UnknownNameError(f"{self.name}.density_pressure_law",
                                    self.density_pressure_law,
@@ -720,7 +748,8 @@ class Lubricant:
         return hash((
             self.name, self.viscosity_law, _frozen(self.viscosity_parameters),
             self.density_reference, self.density_reference_temperature, self.thermal_expansion,
-            self.density_pressure_law, self.pressure_law, _frozen(self.pressure_parameters),
+            self.density_pressure_law, self.density_temperature_law, self.pressure_law,
+            _frozen(self.pressure_parameters),
             self.alpha_correlation, self.thermal_model, _frozen(self.thermal_parameters),
         ))
 
@@ -813,10 +842,16 @@ class Lubricant:
 
     # -- density and thermal ------------------------------------------------
     def density(self, T: ArrayLike, p: ArrayLike = 0.0) -> ArrayLike:
-        """Density [kg/m^3]: linear thermal expansion, then Dowson-Higginson (paper 000 eq. 10)."""
-        rho = linear_expansion_density(
-            T, self.density_reference, self.density_reference_temperature, self.thermal_expansion
-        )
+        """Density [kg/m^3] at T [K], p [Pa]: temperature law, then Dowson-Higginson.
+
+        The pressure factor is paper 000 eq. 10 (:func:`dowson_higginson_density`).
+        """
+        if self.density_temperature_law == "astm_d1250_lube":
+            rho = astm_d1250_lube_density(T, self.density_reference)
+        else:
+            rho = linear_expansion_density(T, self.density_reference,
+                                           self.density_reference_temperature,
+                                           self.thermal_expansion)
         if self.density_pressure_law == "incompressible":
             check_finite("pressure", p)
             return _out(np.broadcast_to(np.asarray(rho), np.broadcast(rho, p).shape).copy())
@@ -849,6 +884,7 @@ class Lubricant:
         T1: float = 313.15,
         T2: float = 373.15,
         thermal_expansion: float = 6.4e-4,
+        density_temperature_law: str = "astm_d1250_lube",
         pressure_law: str = "roelands",
         alpha: float | None = None,
         z: float | None = None,
@@ -861,7 +897,8 @@ class Lubricant:
         """A lubricant whose nu(T) is the ASTM D341 line through (T1, nu40) and (T2, nu100).
 
         nu40, nu100 [m^2/s] at T1 = 40 degC and T2 = 100 degC by default; density15
-        [kg/m^3] at 15 degC. Without alpha, z or alpha_correlation the mineral-oil
+        [kg/m^3] at 15 degC; density vs temperature by ASTM D1250 for lubricating oils unless
+        ``density_temperature_law="linear"``. Without alpha, z or alpha_correlation the mineral-oil
         correlation ``asme1953_mineral_fit`` is used. nu100 >= nu40 raises InputError.
         """
         A, B = walther_constants(nu40, T1, nu100, T2)
@@ -880,6 +917,7 @@ class Lubricant:
             density_reference=density15,
             density_reference_temperature=288.15,
             thermal_expansion=thermal_expansion,
+            density_temperature_law=density_temperature_law,
             pressure_law=pressure_law,
             pressure_parameters=pp,
             alpha_correlation=alpha_correlation,
@@ -916,7 +954,7 @@ _SECTION_UNITS: dict[str, dict[str, str]] = {
                            "reference_temperature": "K", "alpha_correlation": "",
                            "source": ""},
     "density": {"value": "kg/m**3", "reference_temperature": "K", "expansion": "1/K",
-                "pressure_law": "", "source": ""},
+                "pressure_law": "", "temperature_law": "", "source": ""},
     "thermal": {"model": "", "fluid": "", "specific_heat": "J/(kg*K)",
                 "thermal_conductivity": "W/(m*K)", "source": ""},
 }
@@ -967,6 +1005,7 @@ def lubricant_from_dict(data: Mapping[str, Any], where: str = "lubricant") -> Lu
         "density_reference_temperature": den.get("reference_temperature", 288.15),
         "thermal_expansion": den.get("expansion", 6.4e-4),
         "density_pressure_law": den.get("pressure_law", "dowson_higginson"),
+        "density_temperature_law": den.get("temperature_law", "linear"),
         "pressure_law": pv.pop("law", "roelands"),
         "alpha_correlation": pv.pop("alpha_correlation", None),
         "thermal_model": th.pop("model", "cragoe"),
