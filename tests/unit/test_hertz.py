@@ -141,3 +141,13 @@ def test_palmgren_warns_for_non_steel() -> None:
         warnings.simplefilter("always")
         hertz.line_contact(100.0, 0.01, 0.005, 3.2e11)
     assert any(issubclass(w.category, ValidityWarning) for w in rec)
+
+
+def test_vectorised_ellipticity_matches_bracketed_solve() -> None:
+    ratios = np.concatenate([[1.0, 1.0000001, 1.0005, 1.001], np.geomspace(1.001, 1e4, 300)])
+    k_vec, _, _ = hertz.ellipticity(ratios)
+    k_ref = np.array([hertz._exact_k(float(r)) for r in ratios])
+    assert np.allclose(k_vec, k_ref, rtol=1e-11, atol=0)
+    for k, r in zip(k_vec, ratios, strict=True):
+        if k > 1.0:
+            assert abs(hertz.ellipticity_residual(k, r)) <= 1e-10 * r
