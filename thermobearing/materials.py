@@ -176,6 +176,22 @@ BRASS = Material(
     },
 )
 
+STEEL_LOW_CARBON = Material(
+    name="STEEL_LOW_CARBON",
+    youngs_modulus=200e9,
+    poisson_ratio=0.29,
+    density=7832.0,
+    specific_heat=434.0,
+    thermal_conductivity=63.9,
+    source="low-carbon sheet steel of pressed cages (AISI 1010 class): density, c_p and k "
+    "at 300 K from Incropera et al., Fundamentals of Heat and Mass Transfer, Table A.1 "
+    "(AISI 1010)",
+    estimated={
+        "youngs_modulus": "200 GPa: typical of plain carbon steels (not in Incropera's table)",
+        "poisson_ratio": "0.29: typical of plain carbon steels",
+    },
+)
+
 PEEK = Material(
     name="PEEK",
     youngs_modulus=3.6e9,
@@ -251,7 +267,8 @@ PAPER004_STEEL = Material(
 
 MATERIALS: dict[str, Material] = {
     m.name: m
-    for m in (STEEL_52100, GCR15, M50, SILICON_NITRIDE, BRASS, PEEK, PAPER000_STEEL,
+    for m in (STEEL_52100, GCR15, M50, SILICON_NITRIDE, BRASS, STEEL_LOW_CARBON, PEEK,
+              PAPER000_STEEL,
               PAPER001_STEEL, PAPER001_CAGE, PAPER004_STEEL)
 }
 
