@@ -1,0 +1,62 @@
+"""``thermobearing lubricant [NAME|PATH]``: property table of a lubricant preset or TOML file."""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+
+from ..lubricant import load_lubricant, preset_names
+from ..units import to_si
+
+NAME = "lubricant"
+HELP = "print viscosity, density, pressure-viscosity and thermal properties of a lubricant"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("name", nargs="?", help="preset name or TOML path (default: list presets)")
+    parser.add_argument(
+        "--temperatures",
+        default="20,40,60,80,100,120",
+        help="comma-separated temperatures in degC (default 20,40,60,80,100,120)",
+    )
+    parser.add_argument("--pressure", default="0 Pa",
+                        help="gauge pressure for the viscosity/density columns, e.g. '1 GPa'")
+
+
+def run(args: argparse.Namespace) -> int:
+    if not args.name:
+        print("lubricant presets: " + ", ".join(preset_names()))
+        return 0
+    lub = load_lubricant(args.name)
+    temps_c = [float(t) for t in str(args.temperatures).split(",") if t.strip()]
+    T = np.array(temps_c) + 273.15
+    p = to_si(args.pressure, "Pa", field="--pressure")
+    print(f"{lub.name} ({lub.kind})")
+    print(f"  source: {lub.source}")
+    print(f"  viscosity law: {lub.viscosity_law}; pressure law: {lub.pressure_law}; "
+          f"density: {lub.density_temperature_law} / {lub.density_pressure_law}; "
+          f"thermal: {lub.thermal_model}")
+    for key, why in lub.estimated.items():
+        print(f"  estimated {key}: {why}")
+    header = (f"{'T [degC]':>9} {'nu [mm2/s]':>11} {'eta [mPa s]':>12} {'rho [kg/m3]':>12} "
+              f"{'alpha [1/GPa]':>13} {'z [-]':>7} {'cp [J/kgK]':>11} {'k [W/mK]':>9}")
+    if p:
+        header += f"   at p = {p:.4g} Pa: eta [Pa s], rho [kg/m3]"
+    print(header)
+    nu = np.atleast_1d(lub.kinematic_viscosity(T))
+    eta = np.atleast_1d(lub.dynamic_viscosity(T))
+    rho = np.atleast_1d(lub.density(T))
+    alpha = np.atleast_1d(lub.pressure_viscosity_coefficient(T))
+    z = np.atleast_1d(lub.roelands_index(T))
+    cp = np.atleast_1d(lub.specific_heat(T))
+    k = np.atleast_1d(lub.thermal_conductivity(T))
+    eta_p = np.atleast_1d(lub.dynamic_viscosity(T, p)) if p else None
+    rho_p = np.atleast_1d(lub.density(T, p)) if p else None
+    for i, tc in enumerate(temps_c):
+        line = (f"{tc:9.1f} {nu[i] * 1e6:11.4g} {eta[i] * 1e3:12.4g} {rho[i]:12.1f} "
+                f"{alpha[i] * 1e9:13.4g} {z[i]:7.3f} {cp[i]:11.1f} {k[i]:9.4f}")
+        if eta_p is not None and rho_p is not None:
+            line += f"   {eta_p[i]:.4g}  {rho_p[i]:.1f}"
+        print(line)
+    return 0
