@@ -39,7 +39,13 @@ from typing import Any, NamedTuple
 import numpy as np
 from scipy.optimize import brentq
 
-from .errors import InputError, UnknownNameError, check_positive, check_range
+from .errors import (
+    InputError,
+    UnknownNameError,
+    check_positive,
+    check_range,
+    check_temperature,
+)
 from .materials import Material, effective_modulus, get_material
 from .units import to_si
 
@@ -195,6 +201,70 @@ def _frequencies(shaft_hz: float, gamma: float, n: int, pitch: float, element: f
     bpfi = n * abs(shaft_hz - cage)
     spin = abs(cage - outer_hz) * pitch * (1.0 + gamma) / element
     return CharacteristicFrequencies(shaft_hz, cage, bpfo, bpfi, spin)
+
+
+def _diagonal_free_angle(d: float, fi: float, fo: float, offset: float, clearance: float,
+                         field: str = "diametral_clearance") -> float:
+    """Free contact angle [rad] of a diagonal arc pair (or a single-arc groove, offset 0).
+
+    cos(alpha_f) = [(f_i - 1/2) D cos(theta_i) + (f_o - 1/2) D cos(theta_o) - P_d/2] / A with
+    sin(theta_k) = s / ((2 f_k - 1) D) and A = (f_i + f_o - 1) D (see
+    :meth:`BallBearing.free_contact_angle_for`).
+    """
+    big_a = (fi + fo - 1.0) * d
+    radial = -0.5 * clearance
+    for f in (fi, fo):
+        half = (f - 0.5) * d
+        sin_t = offset / (2.0 * half)
+        if not 0.0 <= sin_t < 1.0:
+            raise InputError("bearing.gothic_arch_offset", offset,
+                             f"a value < (2 f - 1) D = {2 * half:.6g} m")
+        radial += half * math.sqrt(1.0 - sin_t * sin_t)
+    c = radial / big_a
+    if c <= 0.0:
+        raise InputError(field, clearance,
+                         "a clearance small enough that the balls stay in the grooves")
+    return math.acos(min(c, 1.0))
+
+
+#: Linear thermal expansion coefficient of through-hardened bearing steel [1/K] used when a
+#: material carries none: about 11.9e-6 1/K for AISI 52100 between 20 and 100 degC (a typical
+#: handbook value, recalled; bearing steels lie within 11-12.5e-6 1/K).
+STEEL_EXPANSION = 11.9e-6
+
+
+def _expansion(material: Any, given: float | None) -> float:
+    if given is not None:
+        check_positive("expansion_coefficient", given, allow_zero=True)
+        return float(given)
+    value = getattr(material, "thermal_expansion", None)
+    return float(value) if value is not None else STEEL_EXPANSION
+
+
+def _thermal_clearance(bearing: Any, inner_ring_temperature: float,
+                       outer_ring_temperature: float, element_temperature: float,
+                       reference_temperature: float, ring_expansion: float | None,
+                       element_expansion: float | None, fit_reduction: float) -> float:
+    """P_d(T) = P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fits.
+
+    Free (unconstrained) thermal growth of the raceway diameters and of the elements
+    (Harris & Kotzalas 2007 vol. 1, operating clearance): d -> d (1 + G dT). A negative
+    result is a preload; the caller decides what to do with it.
+    """
+    for name, t in (("inner_ring_temperature", inner_ring_temperature),
+                    ("outer_ring_temperature", outer_ring_temperature),
+                    ("element_temperature", element_temperature),
+                    ("reference_temperature", reference_temperature)):
+        check_temperature(name, t)
+    check_positive("fit_reduction", fit_reduction, allow_zero=True)
+    g_r = _expansion(bearing.ring_material, ring_expansion)
+    elem_mat = getattr(bearing, "ball_material", None) or bearing.roller_material
+    g_e = _expansion(elem_mat, element_expansion)
+    t0 = reference_temperature
+    grow = g_r * (bearing.outer_raceway_diameter * (outer_ring_temperature - t0)
+                  - bearing.inner_raceway_diameter * (inner_ring_temperature - t0))
+    grow -= 2.0 * g_e * bearing.element_diameter * (element_temperature - t0)
+    return float(bearing.diametral_clearance + grow - fit_reduction)
 
 
 # ---------------------------------------------------------------------------
@@ -428,16 +498,22 @@ class BallBearing:
         check_positive("diametral_clearance", diametral_clearance, allow_zero=True)
         if self.kind == "angular_contact":
             return self.contact_angle
-        big_a = self.total_curvature_distance
-        d = self.ball_diameter
-        radial = ((self.inner_conformity - 0.5) * d * math.cos(self.shim_angle("inner"))
-                  + (self.outer_conformity - 0.5) * d * math.cos(self.shim_angle("outer"))
-                  - 0.5 * diametral_clearance)
-        c = radial / big_a
-        if c <= 0.0:
-            raise InputError("diametral_clearance", diametral_clearance,
-                             "a clearance small enough that the balls stay in the grooves")
-        return math.acos(min(c, 1.0))
+        offset = float(self.gothic_arch_offset or 0.0) if self.kind == "four_point" else 0.0
+        return _diagonal_free_angle(self.ball_diameter, self.inner_conformity,
+                                    self.outer_conformity, offset, diametral_clearance)
+
+    def with_clearance(self, diametral_clearance: float) -> BallBearing:
+        """The same bearing with another diametral clearance (e.g. after fits or heating).
+
+        Four-point: the gothic-arch offset (the ground geometry) is kept and the nominal
+        contact angle becomes the new free diagonal angle. Deep groove / angular contact: only
+        the clearance changes.
+        """
+        check_positive("diametral_clearance", diametral_clearance, allow_zero=True)
+        if self.kind != "four_point":
+            return replace(self, diametral_clearance=float(diametral_clearance))
+        angle = self.free_contact_angle_for(diametral_clearance)
+        return replace(self, diametral_clearance=float(diametral_clearance), contact_angle=angle)
 
     @property
     def free_contact_angle(self) -> float:
@@ -503,6 +579,22 @@ class BallBearing:
 
         return race_control_cage_ratio(self.ball_diameter / self.pitch_diameter, ai,
                                        outer_contact_angle, control)
+
+    def operating_clearance(self, inner_ring_temperature: float, outer_ring_temperature: float,
+                            element_temperature: float, reference_temperature: float = 293.15,
+                            *, ring_expansion: float | None = None,
+                            element_expansion: float | None = None,
+                            fit_reduction: float = 0.0) -> float:
+        """Diametral clearance [m] at the given component temperatures [K].
+
+        P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fit_reduction,
+        free thermal growth (Harris & Kotzalas 2007); expansion coefficients [1/K] default to the
+        materials' ``thermal_expansion`` if present, else :data:`STEEL_EXPANSION`. Negative =
+        preload.
+        """
+        return _thermal_clearance(self, inner_ring_temperature, outer_ring_temperature,
+                                  element_temperature, reference_temperature, ring_expansion,
+                                  element_expansion, fit_reduction)
 
     def summary(self) -> dict[str, tuple[float, str]]:
         """Derived quantities for tables and reports: name -> (SI value, unit)."""
@@ -712,6 +804,22 @@ class RollerBearing:
         """(1 - D_w/d_m)/2, paper 000 eq. 40 (n_m = n_i (1 - D_b/d_m)/2)."""
         return _cage_ratio(self.gamma())
 
+    def operating_clearance(self, inner_ring_temperature: float, outer_ring_temperature: float,
+                            element_temperature: float, reference_temperature: float = 293.15,
+                            *, ring_expansion: float | None = None,
+                            element_expansion: float | None = None,
+                            fit_reduction: float = 0.0) -> float:
+        """Diametral clearance [m] at the given component temperatures [K].
+
+        P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fit_reduction,
+        free thermal growth (Harris & Kotzalas 2007); expansion coefficients [1/K] default to the
+        materials' ``thermal_expansion`` if present, else :data:`STEEL_EXPANSION`. Negative =
+        preload.
+        """
+        return _thermal_clearance(self, inner_ring_temperature, outer_ring_temperature,
+                                  element_temperature, reference_temperature, ring_expansion,
+                                  element_expansion, fit_reduction)
+
     def summary(self) -> dict[str, tuple[float, str]]:
         """Derived quantities for tables and reports: name -> (SI value, unit)."""
         rx_i, ry_i = self.curvature("inner")
@@ -883,6 +991,13 @@ def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Be
         if key not in data:
             raise InputError(f"{origin}.{key}", None, "a material name or table")
         kw[key] = _material(data[key], f"{origin}.{key}")
+    if kind == "four_point" and "contact_angle" not in kw and "gothic_arch_offset" in kw:
+        needed = ("ball_diameter", "inner_conformity", "outer_conformity")
+        if all(k in kw for k in needed):
+            kw["contact_angle"] = _diagonal_free_angle(
+                kw["ball_diameter"], kw["inner_conformity"], kw["outer_conformity"],
+                kw["gothic_arch_offset"], kw.get("diametral_clearance", 0.0),
+                field=f"{origin}.diametral_clearance")
     cls = BallBearing if ball else RollerBearing
     names = {f.name for f in fields(cls)}
     wrong = sorted(set(kw) - names)
@@ -902,7 +1017,9 @@ def load_bearing(name_or_path: str | Path,
     """Load a bearing from a preset name (``"QJ1044"``) or a TOML path.
 
     ``overrides`` replaces top-level keys (unit strings allowed, e.g.
-    ``{"diametral_clearance": "0.1 mm"}``) before the bearing is built. Unknown keys, unknown
+    ``{"diametral_clearance": "0.1 mm"}``) before the bearing is built. For a four-point preset
+    with a gothic-arch offset, overriding only the clearance keeps the offset and lets the
+    contact angle follow (as :meth:`BallBearing.with_clearance`). Unknown keys, unknown
     presets and bad values raise :class:`~thermobearing.errors.InputError`.
     """
     text = str(name_or_path)
@@ -919,7 +1036,13 @@ def load_bearing(name_or_path: str | Path,
         raise InputError("bearing file", str(path), f"valid TOML ({exc})") from None
     data.pop("notes", None)
     if overrides:
-        data = {**data, **dict(overrides)}
+        overrides = dict(overrides)
+        if (data.get("kind") == "four_point" and "gothic_arch_offset" in data
+                and "diametral_clearance" in overrides and "contact_angle" not in overrides
+                and "gothic_arch_offset" not in overrides):
+            # the ground gothic arch stays; the free contact angle follows the new clearance
+            data = {k: v for k, v in data.items() if k != "contact_angle"}
+        data = {**data, **overrides}
     data.setdefault("name", path.stem)
     return bearing_from_dict(data, origin=f"bearing[{path.stem}]")
 

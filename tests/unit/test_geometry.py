@@ -230,3 +230,33 @@ def test_summary_is_finite(name: str) -> None:
     for key, (value, unit) in load_bearing(name).summary().items():
         assert math.isfinite(value) or key == "ry", key
         assert unit
+
+
+def test_operating_clearance_thermal_growth() -> None:
+    b = geometry.load_bearing("SKF6304")
+    g = geometry.STEEL_EXPANSION
+    # inner ring 10 K warmer than the outer ring and balls at the reference: the clearance
+    # shrinks by G d_i 10 K = 11.9e-6 * 26.4675e-3 * 10 = 3.150e-6 m
+    pd = b.operating_clearance(303.15, 293.15, 293.15)
+    assert pd == pytest.approx(15e-6 - g * b.inner_raceway_diameter * 10.0, rel=1e-12)
+    # uniform heating of a one-material bearing scales P_d by (1 + G dT) (similar geometry)
+    pd_u = b.operating_clearance(343.15, 343.15, 343.15)
+    assert pd_u == pytest.approx(15e-6 * (1 + g * 50.0), rel=1e-9)
+    # a hot inner ring can consume the clearance: negative = preload
+    assert b.operating_clearance(393.15, 293.15, 343.15) < 0
+    with pytest.raises(InputError, match="inner_ring_temperature"):
+        b.operating_clearance(-1.0, 293.15, 293.15)
+
+
+def test_with_clearance_keeps_gothic_arch() -> None:
+    b = geometry.load_bearing("QJ1044")
+    c = b.with_clearance(0.2e-3)
+    assert c.gothic_arch_offset == b.gothic_arch_offset
+    assert c.contact_angle == pytest.approx(b.free_contact_angle_for(0.2e-3))
+    assert c.contact_angle > b.contact_angle  # more play, steeper diagonal angle
+    # the same through a scene-style override of the preset
+    o = geometry.load_bearing("QJ1044", overrides={"diametral_clearance": "0.2 mm"})
+    assert o.contact_angle == pytest.approx(c.contact_angle, rel=1e-12)
+    assert o.gothic_arch_offset == pytest.approx(b.gothic_arch_offset)
+    d = geometry.load_bearing("SKF6304").with_clearance(5e-6)
+    assert d.diametral_clearance == 5e-6
