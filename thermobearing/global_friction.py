@@ -45,6 +45,8 @@ GLOBAL_FRICTION: Registry[Callable[..., Any]] = Registry(
 
 KINDS = ("deep_groove", "angular_contact", "four_point", "cylindrical")
 LUBRICATION = ("oil_bath", "oil_jet", "circulating", "oil_air", "grease")
+#: OilSupply.method spellings (thermobearing.state) -> the names used here
+_LUBRICATION_ALIASES = {"jet": "oil_jet", "circulation": "circulating"}
 _RPM_PER_RAD_S = 60.0 / (2.0 * math.pi)
 
 
@@ -220,6 +222,14 @@ class GlobalFrictionResult:
     details: Mapping[str, float] = field(default_factory=dict)
 
 
+def _lubrication(name: str) -> str:
+    """Canonical lubrication name (accepts the OilSupply spellings "jet", "circulation")."""
+    name = _LUBRICATION_ALIASES.get(name, name)
+    if name not in LUBRICATION:
+        raise UnknownNameError("lubrication", name, LUBRICATION)
+    return name
+
+
 def _check_common(speed: float, nu: float, radial: float, axial: float, lubrication: str) -> None:
     check_range("speed", speed, 0.0, math.inf, unit="rad/s")
     check_positive("kinematic_viscosity", nu)
@@ -341,6 +351,7 @@ def skf_four_term(
     GlobalFrictionResult with components rolling, sliding, seal, drag [N m].
     """
     env = envelope_of(bearing)
+    lubrication = _lubrication(lubrication)
     _check_common(speed, kinematic_viscosity, radial_load, axial_load, lubrication)
     check_range("mu_bl", mu_bl, 0.0, 1.0)
     series = series or infer_skf_series(env)
@@ -484,6 +495,7 @@ def palmgren(
     of M0 carry f0 (Thermca's low-speed branch omits it; that slip is not copied).
     """
     env = envelope_of(bearing)
+    lubrication = _lubrication(lubrication)
     _check_common(speed, kinematic_viscosity, radial_load, axial_load, lubrication)
     f0_grease, f0_bath, f1_tab = PALMGREN_FACTORS[env.kind]
     if f0 is None:
@@ -517,6 +529,7 @@ def global_friction(
     axial_load: float = 0.0,
     *,
     lubrication: str = "oil_jet",
+    supply: Any = None,
     **options: Any,
 ) -> GlobalFrictionResult:
     """Run the registered global model ``model`` with a :class:`~thermobearing.lubricant.Lubricant`.
@@ -524,9 +537,15 @@ def global_friction(
     The viscosity is the lubricant's kinematic viscosity at ``temperature`` [K] (the
     catalogue models take the operating viscosity of the bearing); for the SKF model the
     lubricant's ``kind`` chooses mu_EHL (mineral 0.05, synthetic/ester 0.04) unless
-    ``lubricant_kind`` or ``mu_ehl`` is given in ``options``.
+    ``lubricant_kind`` or ``mu_ehl`` is given in ``options``. A ``supply``
+    (:class:`thermobearing.state.OilSupply`) sets the lubrication method and, for the SKF
+    model, the oil-bath level.
     """
     func = GLOBAL_FRICTION.get(model)
+    if supply is not None:
+        lubrication = supply.method
+        if model == "skf_four_term" and getattr(supply, "level", None) is not None:
+            options.setdefault("oil_level", supply.level)
     nu = float(lubricant.kinematic_viscosity(temperature))
     if model == "skf_four_term":
         options.setdefault("lubricant_kind", getattr(lubricant, "kind", "mineral"))

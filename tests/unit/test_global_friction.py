@@ -209,3 +209,19 @@ def test_global_friction_with_lubricant():
     res = global_friction("skf_four_term", QJ1044, ester, T, 1800 * RPM, 1000.0, 10000.0)
     # at high n*nu phi_bl -> 0, so mu_sl -> mu_EHL = 0.04 for a synthetic oil
     assert res.details["mu_sl"] == pytest.approx(0.04, abs=1e-3)
+
+
+def test_oil_supply_spellings_and_object():
+    from thermobearing.global_friction import global_friction
+    from thermobearing.lubricant import load_lubricant
+
+    a = palmgren(B6304, 20e-6, 2000 * RPM, 2000.0, lubrication="jet")
+    b = palmgren(B6304, 20e-6, 2000 * RPM, 2000.0, lubrication="oil_jet")
+    assert a.torque == b.torque
+    state = pytest.importorskip("thermobearing.state")
+    supply = state.OilSupply(method="oil_bath", flow_rate=0.0, inlet_temperature=313.15,
+                             level=0.01)
+    oil = load_lubricant("ISO_VG68")
+    res = global_friction("skf_four_term", QJ1044, oil, 330.0, 1800 * RPM, 1000.0, 5000.0,
+                          supply=supply)
+    assert res.details["oil_level_mm"] == pytest.approx(10.0)
