@@ -73,6 +73,7 @@ __all__ = [
     "kurtogram_bands",
     "load_acceleration",
     "refine_peak",
+    "spectral_peak",
 ]
 
 #: minimum number of samples an analysis accepts.
@@ -466,6 +467,32 @@ def refine_peak(es: EnvelopeSpectrum, frequency: float, half_width: float
     delta = 0.5 * (a - c) / den if den < 0 else 0.0
     delta = max(-0.5, min(0.5, delta))
     return float(f[i] + delta * step), float(es.normalised[i])
+
+
+def spectral_peak(x, sampling_rate: float, low: float, high: float, *, padding: int = 8
+                  ) -> tuple[float, float]:
+    """Largest line of the raw spectrum in [low, high] Hz: (frequency [Hz], amplitude).
+
+    Hann window, zero padding ``padding`` times, Gaussian (log-parabolic) interpolation of
+    the peak bin and its neighbours (sub-bin). The amplitude is that of the peak bin,
+    corrected for the window gain (a sine of amplitude A reads about A).
+    """
+    fs = float(sampling_rate)
+    arr = check_signal(x, fs)
+    if not (0 <= low < high <= fs / 2):
+        raise InputError("range", (low, high), f"0 <= low < high <= Nyquist ({fs / 2:g} Hz)")
+    w = np.hanning(arr.size)
+    nfft = padding * arr.size
+    amp = np.abs(np.fft.rfft((arr - arr.mean()) * w, nfft)) * 2.0 / w.sum()
+    step = fs / nfft
+    i0, i1 = max(1, int(math.ceil(low / step))), min(amp.size - 2, int(high / step))
+    if i1 <= i0:
+        raise InputError("range", (low, high), f"wider than one bin ({fs / arr.size:g} Hz)")
+    i = i0 + int(np.argmax(amp[i0:i1 + 1]))
+    a, b, c = (math.log(max(amp[j], 1e-300)) for j in (i - 1, i, i + 1))
+    den = a - 2 * b + c
+    delta = max(-0.5, min(0.5, 0.5 * (a - c) / den)) if den < 0 else 0.0
+    return float((i + delta) * step), float(amp[i])
 
 
 # ---------------------------------------------------------------------------

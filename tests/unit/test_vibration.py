@@ -1,0 +1,164 @@
+"""Tests of thermobearing.vibration (paper 004 lumped model with cage slip)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from thermobearing import signal as S
+from thermobearing import vibration as V
+from thermobearing.errors import ConvergenceError, InputError
+from thermobearing.traction import make_traction_law
+
+WS = 2000.0 * 2.0 * math.pi / 60.0  # paper 004: 2000 r/min
+LOAD = 2000.0  # paper 004: W = 2000 N
+
+
+@pytest.fixture(scope="module")
+def params():
+    return V.paper004_parameters()
+
+
+@pytest.fixture(scope="module")
+def mild():
+    # paper 004 Figs. 11-13 use mu_m = 0.01; dv_m is not given in the paper (estimated)
+    return make_traction_law("linear_saturating", mu_max=0.01, slip_speed_max=0.1)
+
+
+def test_table1_parameters(params):
+    # paper 004 Table 1
+    assert params.n_balls == 7
+    assert params.ball_diameter == pytest.approx(9.525e-3)
+    assert params.pitch_diameter == pytest.approx(36e-3)
+    assert params.radial_clearance == pytest.approx(15e-6)
+    assert params.inner_ring_mass == 0.4 and params.ball_inertia == 3.18e-8
+    assert params.support_damping == 350.0
+    # Hertz point-contact constants of a 6304 are of order 1e10 N/m^1.5 (Harris &
+    # Kotzalas 2007 vol. 1 ch. 6 example values 1e10-3e10 for 10 mm balls)
+    assert 1e10 < params.outer_stiffness < params.inner_stiffness < 5e10
+
+
+def test_bpfo_no_slip_formula(params):
+    # paper 004 eq. 27 and section 4.3: 85.5 Hz at 2000 r/min without slip (within 0.5 %)
+    f = params.ball_pass_frequency_outer(2000.0 / 60.0)
+    assert f == pytest.approx(85.5, rel=5e-3)
+    assert params.ball_pass_frequency_outer(2000.0 / 60.0, 0.1) == pytest.approx(0.9 * f)
+
+
+@pytest.mark.parametrize("slip", [0.0, 0.1])
+def test_simulated_bpfo_follows_one_minus_slip(params, mild, slip):
+    # the strongest line of the ring acceleration below 1.5 BPFO is the ball pass (Fig. 11)
+    r = V.simulate(params, WS, LOAD, traction=mild, cage_slip=slip, duration=0.5,
+                   settle_time=0.03, sampling_rate=25600.0)
+    f_th = params.ball_pass_frequency_outer(WS / (2 * math.pi), slip)
+    f, _ = S.spectral_peak(r.acceleration_x, r.sampling_rate, 0.5 * f_th, 1.5 * f_th)
+    assert f == pytest.approx(f_th, rel=2e-3)
+    assert r.ball_pass_frequency_outer == pytest.approx(f_th, rel=1e-12)
+
+
+def test_mean_ring_position_is_static_equilibrium(params, mild):
+    # time-averaged ring displacement = quasi-static Hertz solution sum K (x cos - Pd)^1.5 cos = W
+    # averaged over the cage positions (balls in series contact: K = (Ki^-2/3 + Ko^-2/3)^-3/2)
+    r = V.simulate(params, WS, LOAD, traction=mild, duration=0.2, settle_time=0.05)
+    k = (params.inner_stiffness ** (-2 / 3) + params.outer_stiffness ** (-2 / 3)) ** -1.5
+    z = params.n_balls
+
+    def static_x(phase):
+        th = 2 * math.pi * np.arange(z) / z + phase
+
+        def residual(x):
+            d = np.maximum(x * np.cos(th) - params.radial_clearance, 0.0)
+            return float(np.sum(k * d**1.5 * np.cos(th))) - LOAD
+        return brentq(residual, 0.0, 1e-3)
+
+    x_static = np.mean([static_x(ph) for ph in np.linspace(0, 2 * math.pi / z, 16)])
+    assert np.mean(r.displacement_x) == pytest.approx(x_static, rel=0.02)
+    assert abs(np.mean(r.displacement_y)) < 0.05 * x_static
+    # the ring does not accelerate on average
+    assert abs(np.mean(r.acceleration_x)) < 0.05 * np.std(r.acceleration_x)
+
+
+def test_split_and_rk4_agree(params):
+    law = make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.1)
+    kw = dict(traction=law, cage_slip=0.05, duration=0.01, settle_time=0.03)
+    a = V.simulate(params, WS, LOAD, method="rk4", max_step=1.25e-6, **kw)
+    b = V.simulate(params, WS, LOAD, method="split", max_step=2.5e-6, **kw)
+    scale = np.max(np.abs(a.acceleration_x))
+    assert np.max(np.abs(a.acceleration_x - b.acceleration_x)) < 1e-3 * scale
+
+
+def test_paper_step_is_unstable_for_table1_bearing(params, mild):
+    # the ball between two Hertz contacts rings at ~2.9e5 rad/s: omega h = 2.9 at 1e-5 s,
+    # outside RK4's stability interval (2.83 on the imaginary axis)
+    rep = V.stability_report(params, LOAD, mild)
+    assert rep.ball_radial * 1e-5 > 2.83
+    with pytest.raises(ConvergenceError):
+        V.simulate(params, WS, LOAD, traction=mild, method="rk4", max_step=1e-5,
+                   duration=0.02, settle_time=0.0)
+
+
+def test_exact_spin_flow_matches_ode():
+    # J w' = T(w) with frozen loads: compare the piecewise-exponential flow with a tight
+    # numerical solution (Radau) of the same scalar ODE
+    law = make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.05)
+    tv, tmu = V.traction_table(law, 10.0)
+    a_i, a_o, q_i, q_o, r, half_d, jr = 2.0, 2.1, 900.0, 950.0, 4.76e-3, 4.76e-3, 3.18e-8
+
+    def torque(w):
+        return V._torque(w, a_i, a_o, q_i, q_o, r, half_d, tv, tmu)
+
+    for w0 in (300.0, 430.0, 600.0):
+        for tau in (1e-7, 2e-6, 1e-4):
+            exact = V._spin_flow(w0, tau, a_i, a_o, q_i, q_o, r, half_d, jr, tv, tmu)
+            sol = solve_ivp(lambda t, w: [torque(w[0]) / jr], (0, tau), [w0], method="Radau",
+                            rtol=1e-11, atol=1e-9)
+            assert exact == pytest.approx(sol.y[0, -1], rel=1e-7, abs=1e-6)
+
+
+def test_fig12_trend_rms_falls_with_slip(params, mild):
+    # paper 004 Fig. 12(b): RMS of the x acceleration falls with the cage slip (mu_m = 0.01)
+    rms = [V.simulate(params, WS, LOAD, traction=mild, cage_slip=s, duration=0.25,
+                      settle_time=0.03).statistics_x.rms for s in (0.0, 0.05, 0.1)]
+    assert rms[0] > rms[1] > rms[2]
+
+
+def test_statistics_definitions():
+    t = np.linspace(0, 1, 10001)[:-1]
+    x = np.sin(2 * np.pi * 5 * t)
+    st = V.statistics(x)
+    assert st.ptp == pytest.approx(2.0, rel=1e-6)
+    assert st.rms == pytest.approx(1 / math.sqrt(2), rel=1e-6)
+    assert st.kurtosis == pytest.approx(1.5, rel=1e-6)  # sine: 3/2
+    with pytest.raises(InputError):
+        V.statistics(np.ones(100))
+
+
+def test_off_size_ball_puts_cage_line_in_signal(params, mild):
+    # one ball 2 um oversize: its passage modulates the ball pass at f_cage
+    p = V.VibrationParameters(**{**params.__dict__,
+                                 "ball_diameter_deviation": (2e-6,) + (0.0,) * 6})
+    r = V.simulate(p, WS, LOAD, traction=mild, cage_slip=0.05, duration=1.0,
+                   settle_time=0.03, sampling_rate=25600.0)
+    fc = r.cage_speed / (2 * math.pi)
+    f, _ = S.spectral_peak(r.acceleration_x, r.sampling_rate, 0.7 * fc, 1.3 * fc)
+    assert f == pytest.approx(fc, rel=5e-3)
+
+
+def test_bad_inputs(params, mild):
+    with pytest.raises(InputError):
+        V.simulate(params, -1.0, LOAD, traction=mild)
+    with pytest.raises(InputError):
+        V.simulate(params, WS, LOAD, traction=mild, cage_slip=1.2)
+    with pytest.raises(InputError):
+        V.simulate(params, WS, LOAD, traction=mild, method="euler")
+    with pytest.raises(InputError):
+        V.simulate(params, WS, LOAD, traction=mild, cage_speed=2 * WS)
+    with pytest.raises(InputError):
+        V.VibrationParameters(**{**params.__dict__, "ball_diameter_deviation": (1e-6,)})
+    eyring = type("FilmLaw", (), {"requires_film": True})()
+    with pytest.raises(InputError):
+        V.traction_table(eyring, 1.0)
