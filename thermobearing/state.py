@@ -207,15 +207,16 @@ class ContactSet:
             except ValueError:
                 raise InputError(f"contacts[{self.race}].{name}", value,
                                  f"an array broadcastable to shape {n}") from None
-            if name != "deformed_radius":
+            if name in ("deformed_radius", "reduced_radius_y"):  # inf = flat / straight
+                if np.any(np.isnan(arr)) or np.any(arr <= 0):
+                    raise InputError(f"contacts[{self.race}].{name}", value,
+                                     "radii > 0 [m] (inf for a flat surface)")
+            else:
                 check_finite(f"contacts[{self.race}].{name}", arr)
             arr.flags.writeable = False
             object.__setattr__(self, name, arr)
         for name in ("normal_load", "semi_major", "semi_minor", "max_pressure"):
             check_positive(f"contacts[{self.race}].{name}", getattr(self, name), allow_zero=True)
-        if np.any(np.isnan(self.deformed_radius)) or np.any(self.deformed_radius <= 0):
-            raise InputError(f"contacts[{self.race}].deformed_radius", self.deformed_radius,
-                             "radii > 0 [m] (inf for a flat surface)")
         if self.film_thickness is not None:
             check_positive(f"contacts[{self.race}].film_thickness", self.film_thickness,
                            allow_zero=True)
@@ -399,7 +400,9 @@ def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str 
         ``outer_load`` and (balls) ``inner_contact_angle``, ``outer_contact_angle`` (e.g.
         ``loads.ball_load_distribution`` / ``loads_roller.roller_load_distribution``).
         If neither is given, the quasi-static distribution is solved with the operating
-        point's loads (``loads.py``).
+        point's loads (``loads.ball_load_distribution``; for rollers
+        ``loads_roller.roller_load_distribution`` with Palmgren line stiffness and the
+        centrifugal force at the epicyclic cage speed).
     lubricant, temperature : if both given, the central film thickness (Hamrock-Dowson 1977
         for balls, Pan-Hamrock 1989 for rollers; ``film.py``) and the contact temperature
         [K] are filled in (needed by film traction laws).
@@ -423,9 +426,20 @@ def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str 
                 bearing, operating.radial_load, operating.axial_load,
                 operating.inner_speed - operating.outer_speed)
         else:
-            from .loads_roller import roller_load_distribution
+            from .hertz import line_contact_stiffness
+            from .loads_roller import roller_body_force, roller_load_distribution
 
-            load_distribution = roller_load_distribution(bearing, operating.radial_load)
+            z = bearing.n_elements
+            k = float(line_contact_stiffness(bearing.roller_effective_length,
+                                             bearing.effective_modulus))
+            cage_ratio = float(bearing.theoretical_cage_speed_ratio())
+            w_cage = operating.outer_speed + cage_ratio * (operating.inner_speed
+                                                           - operating.outer_speed)
+            psi = 2.0 * math.pi * np.arange(z) / z
+            load_distribution = roller_load_distribution(
+                z, bearing.diametral_clearance, operating.radial_load, k, k,
+                body_force=roller_body_force(bearing.roller_mass, bearing.pitch_diameter,
+                                             w_cage, psi), azimuth=psi)
     if load_distribution is not None:
         inner_load = load_distribution.inner_load
         outer_load = load_distribution.outer_load

@@ -68,3 +68,41 @@ def test_kinematic_state():
         KinematicState(100.0, 0.0, 45.0, np.full(4, 45.0), 0.0, contacts=(_cs(), _cs()))
     with pytest.raises(InputError, match="eccentricity"):
         KinematicState(100.0, 0.0, 45.0, np.full(4, 45.0), 0.0, contacts=(), cage_eccentricity=1)
+
+
+def test_race_control_state_ball_and_roller():
+    import math
+    import warnings
+
+    from thermobearing.errors import ValidityWarning
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.state import deformed_surface_radius
+
+    oil = load_lubricant("ISO_VG46")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        b = load_bearing("QJ1044")
+        op = OperatingPoint(inner_speed=1800 * math.pi / 30, radial_load=1000, axial_load=20000)
+        ks = KinematicState.from_race_control(b, op, lubricant=oil, temperature=318.15)
+        assert ks.origin == "race_control" and len(ks.contacts) == 2
+        # outer-race control: no spin at the outer contact
+        np.testing.assert_allclose(ks.contact("outer").spin_speed, 0.0, atol=1e-9)
+        assert np.all(ks.contact("inner").film_thickness > 0)
+        assert ks.contact("inner").deformed_radius[0] == pytest.approx(
+            deformed_surface_radius(b.inner_conformity, b.ball_diameter))
+        assert np.all(ks.contact("inner").sliding_speed == 0)
+        r = load_bearing("NU214")
+        op = OperatingPoint(inner_speed=5000 * math.pi / 30, radial_load=150)
+        ks = KinematicState.from_race_control(r, op, lubricant=oil, temperature=330.0)
+    cs = ks.contact("outer")
+    assert cs.kind == "line" and np.all(np.isinf(cs.deformed_radius))
+    assert np.all(cs.normal_load > 0)  # centrifugal force loads every outer contact
+    assert ks.cage_speed_ratio == pytest.approx(r.theoretical_cage_speed_ratio(), rel=1e-9)
+
+
+def test_deformed_radius_formula():
+    from thermobearing.state import deformed_surface_radius
+
+    # 2 f D / (2 f + 1): f = 0.53, D = 35 mm -> 18.01 mm ... = 0.515 D
+    assert deformed_surface_radius(0.53, 0.035) == pytest.approx(2 * 0.53 * 0.035 / 2.06)

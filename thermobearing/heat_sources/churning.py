@@ -280,7 +280,8 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
 def churning_elements(ctx: HeatContext) -> HeatResult:
     """Drag/churning of the rolling elements, paper 002 eqs. 10 and 16 (SI form).
 
-    Options: ``form`` "paper002" (eq. 16 SI, default) or "harris" (eq. 10 per element);
+    Options: ``form`` "paper002" (eq. 16 SI, default for balls) or "harris" (eq. 10 per
+    element, default for rollers: eq. 16 is a ball formula);
     ``drag_coefficient`` c_d (0.45: sphere drag plateau, Harris & Kotzalas; rollers 1.0,
     cylinder plateau); ``oil_swirl`` s: the mixture orbits at s * cage speed (default 0).
     Per-element drag force F_j (for the solver) with heat sum F_j |u_j|, u_j = (omega_m,j -
@@ -289,10 +290,10 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
     name = "churning_elements"
     b = ctx.bearing
     rho, nu = _oil(ctx)
-    form = str(ctx.option(name, "form", "paper002"))
+    is_ball = hasattr(b, "ball_diameter")
+    form = str(ctx.option(name, "form", "paper002" if is_ball else "harris"))
     if form not in ("paper002", "harris"):
         raise InputError(f"options[{name}].form", form, "'paper002' or 'harris'")
-    is_ball = hasattr(b, "ball_diameter")
     cd = float(ctx.option(name, "drag_coefficient", 0.45 if is_ball else 1.0))
     if not 0 < cd < 10:
         raise InputError(f"options[{name}].drag_coefficient", cd, "a value in (0, 10)")

@@ -19,7 +19,10 @@
     Hydrodynamic (Poiseuille) rolling force of the EHL inlet, the pressure term
     -integral (h/2) dp/dx dx of paper 000 (seed 000_3b5ca6eed61dd596.txt) eq. 5, in the
     closed form the same paper uses, eq. 35:  Q_x / (E' R_x l) = 18.4 (1 - D/d_m) G^-0.3 U^0.7
-    with G = alpha E', U = eta0 |u| / (E' R_x), l the contact length. Q_x is the horizontal
+    with G = alpha E', U = eta0 (|u_1| + |u_2|) / (E' R_x) (the paper's eqs. 14 and 18 define U
+    with the SUM of the surface speeds, twice the entrainment speed), l the contact length, and
+    the factor (1 - D/d_m) applied as printed to both races (the paper prints only the inner
+    form). Q_x is the horizontal
     (rolling-direction) pressure force on the element; integrating by parts,
     Q_x = integral p dh/dx dx = -integral h dp/dx dx = 2 F_P, twice the Poiseuille shear force
     F_P = -integral (h/2) dp/dx dx that eq. 5 puts on EACH surface. Only the shear forces do
@@ -27,7 +30,10 @@
     tangentially), so the heat is F_P (|u_element| + |u_race|) = Q_x u for rolling with
     sliding alike (u = entrainment speed). Eq. 35 is a line-contact formula; for ball contacts
     the length is taken as the mean chord pi a / 2 of the ellipse (an extrapolation, flagged
-    by a ValidityWarning).
+    by a ValidityWarning). Eq. 35 is isothermal: at high speed inlet shear heating thins the
+    film and, since the inlet force scales with the film (F_P ~ h_c / alpha), the rolling
+    force too; option ``thermal_reduction`` multiplies Q_x by a film thermal-reduction factor
+    phi_T from ``film.THERMAL_FILM`` ("none" by default, "gupta_1992", "wilson_sheu_1983").
 """
 
 from __future__ import annotations
@@ -145,7 +151,8 @@ def rolling_force_paper000(entrainment_speed, viscosity, pressure_viscosity, eff
 
     Parameters
     ----------
-    entrainment_speed : u [m/s]; viscosity : eta0 at the inlet [Pa s];
+    entrainment_speed : u [m/s], the speed that enters U (paper 000 eqs. 14 and 18 use the
+        sum of the surface speeds); viscosity : eta0 at the inlet [Pa s];
     pressure_viscosity : alpha [1/Pa]; effective_modulus : E' [Pa] (Hamrock convention);
     reduced_radius_x : R_x [m]; length : contact length l [m]; gamma : D / d_m [-].
 
@@ -161,9 +168,26 @@ def rolling_force_paper000(entrainment_speed, viscosity, pressure_viscosity, eff
     return 18.4 * (1.0 - gamma) * g ** -0.3 * big_u ** 0.7 * e * rx * np.asarray(length, float)
 
 
+def _thermal_factor(model, ctx, cs, temp, eta):
+    """Film thermal-reduction factor phi_T of ``film.THERMAL_FILM[model]`` per contact [-]."""
+    from ..film import THERMAL_FILM
+
+    lub = ctx.lubricant
+    beta = -(np.log(np.asarray(lub.dynamic_viscosity(temp + 0.5), float))
+             - np.log(np.asarray(lub.dynamic_viscosity(temp - 0.5), float)))
+    k_oil = np.asarray(lub.thermal_conductivity(temp), float)
+    phi = THERMAL_FILM.get(model)(
+        entrainment_speed=cs.entrainment_speed, dynamic_viscosity=eta,
+        temperature_viscosity_coefficient=beta, thermal_conductivity=k_oil,
+        slide_to_roll=cs.slide_to_roll, max_pressure=cs.max_pressure,
+        effective_modulus=ctx.bearing.effective_modulus)
+    return np.asarray(phi, float)
+
+
 @HEAT_SOURCES.register(
     "ehl_rolling_resistance",
     references=["li2018_nu214_skidding", "blok1963_flash_temperature"],
+    parameters={"thermal_reduction": "-"},
     validity="fully flooded EHL; line contacts (ball contacts by the mean-chord extension)",
 )
 def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
@@ -172,9 +196,15 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     The inlet viscosity and pressure-viscosity coefficient are taken at the contact
     temperature (contact set's, else the mean of element and ring nodes). Loaded contacts
     only (Q > 0). Needs ``reduced_radius_x`` in the contact sets, else it is computed from
-    ``bearing.curvature(race, contact_angle)``.
+    ``bearing.curvature(race, contact_angle)``. Option ``thermal_reduction``: a
+    ``film.THERMAL_FILM`` name (default "none"); the temperature-viscosity coefficient it needs
+    is -d ln(eta)/dT of the lubricant by a central difference (+-0.5 K).
     """
     name = "ehl_rolling_resistance"
+    thermal = str(ctx.option(name, "thermal_reduction", "none"))
+    from ..film import THERMAL_FILM
+
+    THERMAL_FILM.entry(thermal)  # unknown names raise, listing the known ones
     bearing = ctx.bearing
     elem_mat, ring_mat = _materials(bearing)
     gamma = bearing.element_diameter / bearing.pitch_diameter
@@ -204,10 +234,12 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             length = 0.5 * math.pi * cs.semi_major
         eta = np.asarray(ctx.lubricant.dynamic_viscosity(temp), float)
         alpha = np.asarray(ctx.lubricant.pressure_viscosity_coefficient(temp), float)
-        fr = np.where(loaded, rolling_force_paper000(cs.entrainment_speed, eta, alpha, e_mod,
-                                                     rx, length, gamma), 0.0)
         u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
         u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
+        fr = np.where(loaded, rolling_force_paper000(np.abs(u_e) + np.abs(u_r), eta, alpha,
+                                                     e_mod, rx, length, gamma), 0.0)
+        if thermal != "none":
+            fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
         f_p = 0.5 * fr  # Poiseuille shear force on each surface
         heat_e = f_p * np.abs(u_e)
         heat_r = f_p * np.abs(u_r)

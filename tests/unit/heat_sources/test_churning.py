@@ -113,7 +113,7 @@ def test_oil_bath_and_grease(qj1044, vg46, race_control_state):
         assert ch.churning_inner_ring(ctx).total == 0.0
 
 
-def test_roller_bearing_needs_harris_form(vg46):
+def test_roller_bearing_uses_eq10_drag(vg46):
     from thermobearing.errors import InputError
     from thermobearing.geometry import load_bearing
     from thermobearing.state import OperatingPoint
@@ -122,9 +122,9 @@ def test_roller_bearing_needs_harris_form(vg46):
     op = OperatingPoint(inner_speed=523.6, radial_load=150.0)
     ks = uniform_state(nu214.n_elements, cage_speed=220.0)
     with pytest.raises(InputError, match="harris"):
-        ch.churning_elements(make_context(nu214, vg46, op, ks))
-    r = ch.churning_elements(make_context(nu214, vg46, op, ks, options={
-        "churning_elements": {"form": "harris"}}))
+        ch.churning_elements(make_context(nu214, vg46, op, ks, options={
+            "churning_elements": {"form": "paper002"}}))
+    r = ch.churning_elements(make_context(nu214, vg46, op, ks))  # default: eq. 10 drag
     area = nu214.roller_diameter * nu214.roller_length
     u = 220.0 * nu214.pitch_diameter / 2
     rho = r.details["oil_fraction"] * float(vg46.density(318.15))

@@ -92,3 +92,29 @@ def test_rolling_resistance_heat_is_qx_u(qj1044, vg46, race_control_state):
     assert r.components["inner rolling resistance"] == pytest.approx(
         float(np.sum(qx * cs.entrainment_speed)), rel=1e-12)
     assert sum(p.power for p in r.force_pairs) == pytest.approx(r.total, rel=1e-12)
+    # paper 000 eqs. 14/18: U uses the sum of the surface speeds (2u under rolling)
+    loaded = cs.normal_load > 0
+    eta = float(vg46.dynamic_viscosity(cs.temperature[0]))
+    alpha = float(vg46.pressure_viscosity_coefficient(cs.temperature[0]))
+    length = np.pi * cs.semi_major / 2
+    expected = raceway.rolling_force_paper000(2 * cs.entrainment_speed, eta, alpha,
+                                              qj1044.effective_modulus, cs.reduced_radius_x,
+                                              length, qj1044.ball_diameter / qj1044.pitch_diameter)
+    np.testing.assert_allclose(qx[loaded], expected[loaded], rtol=1e-12)
+
+
+def test_rolling_resistance_thermal_reduction(qj1044, vg46, race_control_state):
+    op, ks = race_control_state
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        iso = raceway.ehl_rolling_resistance(make_context(qj1044, vg46, op, ks)).total
+        hot = raceway.ehl_rolling_resistance(make_context(qj1044, vg46, op, ks, options={
+            "ehl_rolling_resistance": {"thermal_reduction": "gupta_1992"}})).total
+    assert 0 < hot < iso
+    from thermobearing.errors import UnknownNameError
+
+    with pytest.raises(UnknownNameError):
+        raceway.ehl_rolling_resistance(make_context(qj1044, vg46, op, ks, options={
+            "ehl_rolling_resistance": {"thermal_reduction": "magic"}}))
