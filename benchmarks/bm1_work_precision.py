@@ -146,8 +146,8 @@ def main(argv=None) -> int:
                 atol = 100.0 * rtol
                 runner = run_ours if kind == "ours" else run_scipy
                 try:
-                    t, (Y, steps) = timed(lambda r=runner, m=method, a=rtol, b=atol:
-                                          r(case, m, a, b), repeat)
+                    t, (Y, steps) = timed(lambda r=runner, c=case, m=method, a=rtol,
+                                          b=atol: r(c, m, a, b), repeat)
                 except Exception as exc:  # a solver failure is a result, not a crash
                     print(f"{method} rtol={rtol:g} failed: {exc}", file=sys.stderr)
                     continue

@@ -29,9 +29,11 @@ from .audit import EnergyAudit, SteadyResult, TransientResult
 from .conductances import CONDUCTANCE, ConductanceModel
 from .graph import ROLES, Stream, ThermalNetwork
 from .steppers import STEPPERS, StepOutcome, TransientStepper, integrate, solve_steady
+from .templates import TEMPLATES, four_node_paper002, oil_capacity_rate, seven_node
 
 __all__ = [
     "CONDUCTANCE", "ROLES", "STEPPERS", "Assembler", "ConductanceModel", "EnergyAudit",
-    "StepOutcome", "SteadyResult", "Stream", "System", "ThermalNetwork", "TransientResult",
-    "TransientStepper", "assemble", "integrate", "solve_steady",
+    "StepOutcome", "SteadyResult", "Stream", "System", "TEMPLATES", "ThermalNetwork",
+    "TransientResult", "TransientStepper", "assemble", "four_node_paper002", "integrate",
+    "oil_capacity_rate", "seven_node", "solve_steady",
 ]
