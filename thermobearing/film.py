@@ -55,7 +55,8 @@ _LINE_PARAMS = {
 #: itself was not available): U 1e-12..1e-10, W 3.7e-7..7.4e-6, G 2000..8000.
 HD1977_RANGE = {"k": (1.0, 8.0), "U": (1e-12, 1e-10), "W": (0.3686e-6, 7.371e-6),
                 "G": (2000.0, 8000.0)}
-#: Pan & Hamrock (1989) line-contact ranges (as quoted by Hamrock et al. 2004, ch. 21).
+#: Pan & Hamrock (1989) line-contact ranges: approximate bounds of their numerical solutions
+#: (recalled, not checked against the paper).
 PH1989_RANGE = {"U": (1e-12, 1e-9), "W": (0.5e-5, 0.5e-3), "G": (1000.0, 8000.0)}
 
 
@@ -347,7 +348,9 @@ def no_thermal_reduction(**_: Any) -> float:
 
 
 @THERMAL_FILM.register(
-    "wilson_sheu_1983", references=["wilson_sheu1983"], parameters=_THERMAL_PARAMS,
+    "wilson_sheu_1983", references=["wilson_sheu1983"],
+    parameters={k: v for k, v in _THERMAL_PARAMS.items()
+                if k not in ("max_pressure", "effective_modulus")},
     validity="0 <= L <= about 10, slide-to-roll 0..2 (fit to Newtonian inlet analyses)")
 def wilson_sheu_1983(entrainment_speed: Any, dynamic_viscosity: Any,
                      temperature_viscosity_coefficient: Any, thermal_conductivity: Any,
