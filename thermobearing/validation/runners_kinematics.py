@@ -34,6 +34,8 @@ def paper004_bpfo(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
                                                 cage_slip=float(slip))
         out[f"bpfo_slip_{float(slip):g}"] = fs.bpfo
     out["ball_inertia"] = bearing.element_inertia
+    out["inner_raceway_diameter"] = bearing.inner_raceway_diameter
+    out["outer_raceway_diameter"] = bearing.outer_raceway_diameter
     return out
 
 
