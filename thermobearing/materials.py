@@ -128,19 +128,17 @@ GCR15 = Material(
 
 M50 = Material(
     name="M50",
-    youngs_modulus=203e9,
-    poisson_ratio=0.28,
-    density=7830.0,
-    specific_heat=460.0,
-    thermal_conductivity=15.0,
-    source="AMS 6491 M50 (80MoCrV42-16, Cr4Mo4V) aero-engine bearing steel; c and k as "
-    "paper 001 Table 1 gives for the steel of its aero-engine bearing D1842926",
+    youngs_modulus=190e9,
+    poisson_ratio=0.29,
+    density=7900.0,
+    specific_heat=470.0,
+    thermal_conductivity=35.0,
+    source="AMS 6491 / SAE-AISI M50 (80MoCrV42-16, Cr4Mo4V) aero-engine bearing steel: "
+    "E, nu, density, c and k from the MakeItFrom data sheet 'Annealed M50 Tool Steel'",
     estimated={
-        "youngs_modulus": "203 GPa: typical of hardened M50 (within 1-2 % of 52100), recalled",
-        "poisson_ratio": "0.28: typical of hardened tool/bearing steels, recalled",
-        "density": "7830 kg/m^3: M50 is ~4 % Cr, 4 % Mo, 1 % V; density close to 52100",
-        "material_identity": "paper 001 does not name its steel; its c = 460 J/(kg K) and "
-        "k = 15 W/(m K) are adopted here as representative of high-alloy aero bearing steel",
+        "condition": "the data sheet is for the annealed condition; through-hardened bearing "
+        "M50 has a somewhat lower k (the hardened M52 sheet of the same source gives 31 "
+        "W/(m K)) and E is usually quoted near 200 GPa in bearing work",
     },
 )
 
@@ -149,14 +147,14 @@ SILICON_NITRIDE = Material(
     youngs_modulus=310e9,
     poisson_ratio=0.27,
     density=3200.0,
-    specific_heat=690.0,
+    specific_heat=750.0,
     thermal_conductivity=29.0,
-    source="hot-isostatically-pressed bearing-grade Si3N4 (ASTM F2094 class): typical values "
-    "quoted for hybrid-bearing balls (Harris & Kotzalas 2007, vol. 1, materials chapter: "
-    "E about 310 GPa, density about 3.2 g/cm^3)",
+    source="hot-isostatically-pressed bearing-grade Si3N4 (ASTM F2094 class): E about 310 GPa "
+    "and density about 3.2 g/cm^3 as quoted for hybrid-bearing balls (Harris & Kotzalas "
+    "2007, vol. 1, materials chapter); c = 750 J/(kg K) for hot-pressed Si3N4 from "
+    "Callister, Materials Science and Engineering, Table B.8",
     estimated={
         "poisson_ratio": "0.26-0.28 in manufacturer data; 0.27 taken",
-        "specific_heat": "680-800 J/(kg K) in manufacturer data at room temperature; 690 taken",
         "thermal_conductivity": "25-35 W/(m K) in manufacturer data; 29 taken",
     },
 )
@@ -165,14 +163,15 @@ BRASS = Material(
     name="BRASS",
     youngs_modulus=100e9,
     poisson_ratio=0.34,
-    density=8450.0,
-    specific_heat=380.0,
-    thermal_conductivity=115.0,
-    source="machined-cage brass CuZn39Pb3 / CW614N-class alpha-beta brass: typical "
-    "handbook values",
+    density=0.306 * 27679.9,  # 0.306 lb/in^3 = 8470 kg/m^3
+    specific_heat=0.096 * 4186.8,  # 0.096 Btu/(lb F) = 402 J/(kg K)
+    thermal_conductivity=69.33 * 1.730735,  # 69.33 Btu/(h ft F) = 120 W/(m K)
+    source="machined-cage brass: yellow-brass density, specific heat and conductivity "
+    "from the Engineers Edge table 'Thermal properties of metals' (0.306 lb/in^3, "
+    "0.096 Btu/(lb F), 69.33 Btu/(h ft F))",
     estimated={
-        "all": "typical handbook values of leaded alpha-beta brass (E 97-105 GPa, "
-        "rho 8.4-8.5 g/cm^3, c 375-385 J/(kg K), k 110-125 W/(m K)); no single source seen",
+        "youngs_modulus": "97-105 GPa for alpha-beta brasses in handbooks; 100 taken",
+        "poisson_ratio": "typical of brasses (0.33-0.35)",
     },
 )
 
