@@ -101,16 +101,15 @@ STEEL_52100 = Material(
     youngs_modulus=29.5e6 * 6894.757,  # 29.5e6 psi = 203.4 GPa
     poisson_ratio=0.30,
     density=0.283 * 27679.9,  # 0.283 lb/in^3 = 7833 kg/m^3
-    specific_heat=475.0,
-    thermal_conductivity=46.6,
+    specific_heat=470.0,
+    thermal_conductivity=47.0,
     source="AISI 52100 (GCr15, 100Cr6) through-hardened bearing steel: E = 29.5e6 psi and "
     "density 0.283 lb/in^3 from a ball manufacturer's 52100 data sheet; nu = 0.3 as in "
-    "paper 004 Table 1 and paper 001 Table 1; c and k typical handbook values for 52100",
+    "paper 004 Table 1 and paper 001 Table 1; c = 470 J/(kg K) and k = 47 W/(m K) from the "
+    "MakeItFrom SAE-AISI 52100 data sheet",
     estimated={
-        "specific_heat": "475 J/(kg K): typical handbook value for 52100 at room temperature "
-        "(MatWeb-type data sheets, recalled); paper 001 uses 460 for its bearing steel",
-        "thermal_conductivity": "46.6 W/(m K): typical handbook value for 52100 (recalled); "
-        "hardened 52100 is often quoted 38-46 W/(m K)",
+        "thermal_conductivity": "the data-sheet value is not specific to the hardened "
+        "condition; hardened 52100 is also quoted near 40 W/(m K)",
     },
 )
 
