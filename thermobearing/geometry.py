@@ -8,9 +8,9 @@ Kinematic conventions (outer ring fixed unless an outer speed is given):
 
 - gamma = D cos(alpha) / d_m (Harris & Kotzalas 2007, vol. 1 ch. 2; ``harris_kotzalas2007``).
 - Epicyclic cage speed ratio with equal contact angles, CSR = (1 - gamma)/2; paper 000 eq. 40
-  (``li2018_nu214_skidding``) for rollers, paper 004 eq. 1 (``luo2022_cage_slip_vibration``)
-  for balls. With unequal inner/outer angles the race-control forms of
-  :mod:`thermobearing.kinematics` are used.
+  (``li2018_nu214_skidding``) for rollers, paper 004 section 2, omega_ct
+  (``luo2022_cage_slip_vibration``) for balls. With unequal inner/outer angles the
+  race-control forms of :mod:`thermobearing.kinematics` are used.
 - Characteristic frequencies: BPFO = Z f_cage, BPFI = Z (f_shaft - f_cage); with cage slip
   s_c, f_cage = (1 - s_c) f_cage,th (paper 004, the f_bpo rule after its Fig. 11).
 
@@ -487,7 +487,7 @@ class BallBearing:
     def free_contact_angle_for(self, diametral_clearance: float) -> float:
         """Unloaded contact angle [rad] for a given diametral clearance.
 
-        Deep groove: cos(alpha_f) = 1 - P_d/(2A) (Harris & Kotzalas 2007, vol. 1 eq. 2.8).
+        Deep groove: cos(alpha_f) = 1 - P_d/(2A) (Harris & Kotzalas 2007, vol. 1 ch. 2).
         Four-point (diagonal pair of arcs, one inner and the opposite outer arc): at zero
         clearance the centres are A apart along the shim-angle line; a clearance P_d moves them
         radially by P_d/2 and the rings shift axially until the centres are A apart again:
@@ -568,8 +568,8 @@ class BallBearing:
         """Cage/inner-ring speed ratio of pure rolling, outer ring fixed.
 
         With one angle (or equal inner and outer angles): (1 - gamma)/2, gamma = D cos a / d_m
-        (paper 004 eq. 1; paper 002's CSR_th). With unequal angles the ball-spin axis matters;
-        the race-control limit ``control`` ("outer_race" | "inner_race") of
+        (paper 004 section 2, omega_ct; paper 002's CSR_th). With unequal angles the ball-spin
+        axis matters; the race-control limit ``control`` ("outer_race" | "inner_race") of
         :mod:`thermobearing.kinematics` is used (Jones 1960; Harris & Kotzalas 2007).
         """
         ai = self.contact_angle if contact_angle is None else contact_angle

@@ -7,7 +7,7 @@ contact) ``a`` lies along y (transverse, along the groove) and ``b`` along x (ro
 R_x > R_y (e.g. some roller-end/rib contacts) the major axis lies along x instead.
 Ellipticity k = a/b >= 1.
 
-Exact solution (Hamrock & Brewe 1983, eqs. 1-8; Harris & Kotzalas 2007 vol. 1 ch. 6):
+Exact solution (Hamrock & Brewe 1983; Harris & Kotzalas 2007 vol. 1, Hertz contact chapter):
 with the radius ratio alpha_r = R_big/R_small, k solves
 
     alpha_r = (k^2 E(m) - K(m)) / (K(m) - E(m)),     m = 1 - 1/k^2          (ellipticity eq.)
@@ -27,7 +27,7 @@ eqs. 7-9, are available as ``method="brewe_hamrock_1977"``.
 Line contact (Hamrock, Schmid & Jacobson 2004 ch. 17; Johnson 1985 section 4.2): load per unit
 length w' = W / l, half-width b = (8 w' R_x / (pi E'))^(1/2), p_max = 2 w'/(pi b) = E' b / (4 R_x).
 Approach of a roller between two races: Palmgren's empirical steel formula
-delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N; Harris & Kotzalas 2007 vol. 1 eq. 6.48), i.e.
+delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N; Palmgren 1959, as quoted by Harris & Kotzalas 2007), i.e.
 Q = K_l delta^(10/9) with K_l = 8.06e4 l^(8/9) (N, mm).
 """
 
@@ -258,7 +258,7 @@ def point_contact_stiffness(rx: Any, ry: Any, effective_modulus: Any,
 def palmgren_approach(load: Any, length: Any) -> Any:
     """Roller-raceway approach [m], delta = 3.84e-5 Q^0.9 / l^0.8 (mm, N), steel on steel.
 
-    Palmgren (1959) as given by Harris & Kotzalas 2007 vol. 1 eq. 6.48; valid for steel rollers
+    Palmgren (1959) as quoted by Harris & Kotzalas 2007 vol. 1; valid for steel rollers
     and rings (E' about 2.28e11 Pa).
     """
     q = np.asarray(load, dtype=float)
@@ -271,7 +271,7 @@ def palmgren_approach(load: Any, length: Any) -> Any:
 def line_contact_stiffness(length: Any, effective_modulus: Any = _STEEL_E_PRIME) -> Any:
     """K_l [N/m^(10/9)] with Q = K_l delta^(10/9) from Palmgren's approach formula.
 
-    K_l = 8.06e4 l^(8/9) in N, mm (Harris & Kotzalas 2007 vol. 1 eq. 6.49), converted to SI.
+    K_l = 8.06e4 l^(8/9) in N, mm (Palmgren 1959 via Harris & Kotzalas 2007), converted to SI.
     Steel only: a different E' warns (:class:`ValidityWarning`) and is not corrected for.
     """
     check_positive("length", length)
@@ -312,7 +312,7 @@ def line_contact(load: Any, length: Any, rx: Any, effective_modulus: Any, *,
     Notes
     -----
     b = (8 w' R_x/(pi E'))^(1/2), p_0 = 2 w'/(pi b), w' = Q/l (Hamrock et al. 2004, ch. 17;
-    Johnson 1985 eq. 4.45). The approach is Palmgren's steel formula (see
+    Johnson 1985 section 4.2). The approach is Palmgren's steel formula (see
     :func:`palmgren_approach`); the elastic approach of a 2-D line contact is not defined
     without the body sizes.
     """

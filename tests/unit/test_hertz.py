@@ -17,7 +17,7 @@ RATIOS = np.geomspace(1.0, 100.0, 41)
 
 
 def _johnson_gap_coefficients(a: float, b: float, p0: float, e_prime: float):
-    """Johnson (1985) eqs. 3.? for an elliptical Hertz pressure with a > b:
+    """Johnson (1985) section 3.5 for an elliptical Hertz pressure with a > b:
 
     the surface displacement sum is delta - A x^2 - B y^2 with (x along a)
     A = p0 b (K - E) / (E* e^2 a^2), B = p0 b ((a/b)^2 E - K) / (E* e^2 a^2), delta = p0 b K / E*,
@@ -48,7 +48,7 @@ def test_exact_satisfies_hertz_equations(ratio: float) -> None:
 
 
 def test_circular_contact_matches_closed_form() -> None:
-    # Johnson (1985) eqs. 4.22-4.23 for spheres: a = (3 W R / (4 E*))^(1/3), delta = a^2/R, with
+    # Johnson (1985) section 4.2 for spheres: a = (3 W R / (4 E*))^(1/3), delta = a^2/R, with
     # Johnson's relative radius R = R_x = R_y here (not Hamrock's 1/(1/R_x + 1/R_y))
     rx = ry = 0.01
     r = 0.01
