@@ -123,16 +123,25 @@ def split_roller_interference(
     si = (np.maximum(-f, 0.0) / k_inner) ** (1.0 / n)
     lo = np.minimum(d - so, -si) - 1e-12
     hi = np.maximum(d + si, 0.0) + 1e-12
-    # g(lo) >= 0 >= g(hi)
+    # g(lo) >= 0 >= g(hi); safeguarded Newton (bisection when the step leaves the bracket)
     tol = 1e-13 * np.maximum(np.maximum(np.abs(d), so), si) + 1e-22
+    x = 0.5 * (lo + hi)
     for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        g = k_outer * _power(d - mid, n) - k_inner * _power(mid, n) - f
+        do_ = d - x
+        g = k_outer * _power(do_, n) - k_inner * _power(x, n) - f
+        dg = -(n * k_outer * _power(do_, n - 1.0) + n * k_inner * _power(x, n - 1.0))
         pos = g > 0.0
-        lo = np.where(pos, mid, lo)
-        hi = np.where(pos, hi, mid)
-        if np.all(hi - lo <= tol):
+        lo = np.where(pos, x, lo)
+        hi = np.where(pos, hi, x)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            xn = x - g / dg
+        bad = ~np.isfinite(xn) | (xn <= lo) | (xn >= hi)
+        xn = np.where(bad, 0.5 * (lo + hi), xn)
+        step = np.abs(xn - x)
+        x = xn
+        if np.all((step <= tol) | (hi - lo <= tol)):
             break
+    lo = hi = x
     s = 0.5 * (lo + hi)
     # Both contacts open (F = 0 with a gap): no load either side.
     inner = np.maximum(s, 0.0)

@@ -18,6 +18,8 @@ from thermobearing.skidding.roller_fluid import (
     martin_coefficients,
     outer_gap,
     pocket_forces,
+    rigid_starved_film,
+    starved_coefficients,
 )
 from thermobearing.skidding.whirl import Whirl
 
@@ -135,6 +137,11 @@ def test_warm_start_converges_immediately(nu214, oil, state150):
     r = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, x0=x0)
     assert r.iterations <= 1
     assert r.cage_speed == pytest.approx(state150.cage_speed, rel=1e-8)
+    # the public dispatcher passes a previous result as ``guess``
+    from thermobearing.skidding import solve
+
+    r2 = solve(nu214, oil, OMEGA, 150.0, 0.0, T, guess=state150)
+    assert r2.iterations <= 1 and r2.cage_speed == pytest.approx(state150.cage_speed, rel=1e-8)
 
 
 def test_more_viscous_contact_at_fixed_geometry_changes_cage_speed(nu214, oil):
@@ -211,3 +218,32 @@ def test_kinematic_state_for_heat_sources(state150):
     np.testing.assert_allclose(inner.sliding_speed, -state150.inner_sliding_speed)
     np.testing.assert_allclose(ks.pocket_normal_force, np.abs(state150.pocket_normal_force))
     assert np.all(np.isfinite(inner.film_thickness))
+
+
+def test_starved_coefficients_tend_to_martin_and_fall_with_starvation():
+    k_w0, k_q0, _, xs0 = martin_coefficients()
+    kw_far, kq_far, _, xs_far = starved_coefficients(-300.0)
+    assert kw_far == pytest.approx(k_w0, rel=1e-2) and kq_far == pytest.approx(k_q0, rel=2e-2)
+    kws = [starved_coefficients(x)[0] for x in (-10.0, -3.0, -1.0, -0.3)]
+    assert all(a > b > 0 for a, b in zip(kws[:-1], kws[1:], strict=False))
+    assert starved_coefficients(-1.0)[3] < xs0  # the outlet moves in as the inlet starves
+
+
+def test_rigid_starved_film_limits():
+    w, u, r, eta = np.array([658.0]), np.array([14.0]), 7.37e-3, 0.08
+    h_flood, kw, _ = rigid_starved_film(w, u, r, eta, None)
+    assert h_flood[0] == pytest.approx(martin_coefficients()[0] * eta * 14.0 * r / 658.0)
+    h_big, _, _ = rigid_starved_film(w, u, r, eta, 1e3 * h_flood[0])
+    assert h_big[0] == pytest.approx(h_flood[0], rel=5e-3)  # meniscus at X = -31.6
+    h_st, kw_st, _ = rigid_starved_film(w, u, r, eta, 0.5 * h_flood[0])
+    assert h_st[0] < 0.5 * h_flood[0]
+    # the starved film still carries the load
+    assert kw_st[0] * eta * 14.0 * r / h_st[0] == pytest.approx(658.0, rel=1e-6)
+
+
+def test_starvation_reduces_drag_and_slip(nu214, oil, state150):
+    starved = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, oil_layer=3e-5)
+    assert starved.converged
+    assert starved.cage_speed > state150.cage_speed
+    assert np.all(starved.outer.rolling_force[starved.inner_load == 0]
+                  < state150.outer.rolling_force[state150.inner_load == 0])

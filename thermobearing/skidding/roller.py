@@ -171,6 +171,7 @@ class RollerModel:
     contact_forces: Callable[..., LineContactForces]
     cage_drag_torque: float = 0.0
     rolling_force: str = "regime_min"
+    oil_layer: float | None = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -227,6 +228,7 @@ def build_model(
     pocket_clearance: float | None = None,
     cage_drag_torque: float = 0.0,
     rolling_force: str = "regime_min",
+    oil_layer: float | None = None,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -248,7 +250,11 @@ def build_model(
     cage_drag_torque : resisting torque on the cage [N m] (paper 000: 0).
     rolling_force : rolling (pressure) force model of the raceway contacts, see
         :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
+    oil_layer : available inlet oil layer [m] (None: fully flooded contacts), see
+        :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
     """
+    if oil_layer is not None:
+        check_positive("oil_layer", oil_layer)
     from ..hertz import line_contact_stiffness
 
     check_positive("temperature", temperature)
@@ -285,6 +291,7 @@ def build_model(
         film_outer=_film_for(lubricant, temperature, eta0, alpha, r_o, e_prime, film_model),
         traction_law=law, contact_forces=ROLLER_DRAG.get(drag_model)(),
         cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
+        oil_layer=None if oil_layer is None else float(oil_layer),
     )
 
 
@@ -320,7 +327,8 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     u_ro = 0.5 * (d_m + d) * omega_c * np.ones_like(omega_r)
     u_roll = half_d * omega_r
     common = dict(eta0=model.eta0, alpha=model.alpha, traction_law=model.traction_law,
-                  temperature=model.temperature, rolling_force=model.rolling_force)
+                  temperature=model.temperature, rolling_force=model.rolling_force,
+                  oil_layer=model.oil_layer)
     fi = model.contact_forces(inner_load, model.length, model.radius_inner,
                               model.effective_modulus, u_ri, u_roll, film=model.film_inner,
                               **common)
@@ -438,7 +446,7 @@ def solve_model(
             wc_old = x[z]
             x, e, norm, it, ok = _newton(model, omega, x, ld.inner_load, fb_whirl, psi,
                                          whirl_acceleration, tol=tol, max_iter=max_iter)
-            if not ok or abs(x[z] - wc_old) <= 1e-9 * omega:
+            if not ok or abs(x[z] - wc_old) <= 1e-8 * omega:
                 break
         if best is None or norm < best[2]:
             best = (x, e, norm, it, ok, ld)
@@ -469,6 +477,21 @@ def solve_model(
     )
 
 
+def as_warm_start(guess: Any) -> np.ndarray | None:
+    """(omega_r, omega_c) array from an array, a RollerSkiddingResult or a WhirlResult."""
+    if guess is None:
+        return None
+    states = getattr(guess, "states", None)
+    if states:
+        guess = states[-1]
+    if hasattr(guess, "roller_speed") and hasattr(guess, "cage_speed"):
+        return np.append(np.asarray(guess.roller_speed, dtype=float), float(guess.cage_speed))
+    arr = np.asarray(guess, dtype=float)
+    if arr.ndim != 1 or arr.size < 4:
+        raise InputError("x0", guess, "an array (omega_r..., omega_c) or a previous result")
+    return arr
+
+
 def solve_roller(
     bearing: Any,
     lubricant: Any,
@@ -496,7 +519,8 @@ def solve_roller(
     temperature : oil/contact temperature [K].
     whirl : None, or a :class:`thermobearing.skidding.whirl.Whirl` (paper 000 eqs. 1-4):
         the result is then a :class:`~thermobearing.skidding.whirl.WhirlResult` time series.
-    x0 : warm start (omega_r (Z,), omega_c) [rad/s].
+    x0 : warm start: an array (omega_r (Z,), omega_c) [rad/s], or a previous
+        RollerSkiddingResult / WhirlResult (its last sample) of the same bearing.
     azimuth : (Z,) roller azimuths [rad] (default: a roller under the load).
     tol : tolerance on the residual norm scaled by the largest inner load [-].
     **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
@@ -514,6 +538,7 @@ def solve_roller(
         raise InputError("axial_load", axial_load,
                          "0 for a cylindrical roller bearing (roller-rib thrust is not modelled "
                          "in the skidding solver; see thermobearing.rib)")
+    x0 = as_warm_start(x0)
     model = build_model(bearing, lubricant, temperature, **model_options)
     if whirl is not None:
         from .whirl import solve_whirl

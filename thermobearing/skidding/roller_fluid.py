@@ -65,52 +65,113 @@ ROLLER_DRAG: Registry[Callable[..., Any]] = Registry(
     "roller_drag", "fluid forces of roller-raceway line contacts for the roller skidding solver")
 
 
-@functools.lru_cache(maxsize=1)
-def martin_coefficients() -> tuple[float, float, float, float]:
-    """Rigid-isoviscous cylinder-on-plane coefficients (Reynolds outlet condition).
+def _pi_function(x: float, xm: float, hs: float) -> float:
+    """Pi(X) = int_{X_m}^{X} (H - H*)/H^3 dX' in closed form (X = tan g)."""
+
+    def f2(g: float) -> float:
+        return 0.5 * g + 0.25 * math.sin(2 * g)
+
+    def f4(g: float) -> float:
+        return 3.0 / 8.0 * g + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
+
+    gm = -math.pi / 2 if math.isinf(xm) else math.atan(xm)
+    g = math.atan(x)
+    return (f2(g) - f2(gm)) - hs * (f4(g) - f4(gm))
+
+
+@functools.lru_cache(maxsize=512)
+def starved_coefficients(inlet: float) -> tuple[float, float, float, float]:
+    """Rigid-isoviscous cylinder-on-plane coefficients with the inlet meniscus at X_m.
 
     With X = x / sqrt(2 R h0), H = 1 + X^2 and the Reynolds equation
-    ``dp/dx = 6 eta U (h - h*)/h^3`` (U = u1 + u2), p = 0 at X -> -inf and
-    p = dp/dx = 0 at the outlet X*:
+    ``dp/dx = 6 eta U (h - h*)/h^3`` (U = u1 + u2), p = 0 at the inlet meniscus
+    X_m = ``inlet`` (< 0; ``-inf`` = fully flooded) and p = dp/dx = 0 at the outlet X*:
 
-    * load per unit length      ``w = k_w eta U R / h0``           (k_w = 2.448, Martin)
+    * load per unit length      ``w = k_w eta U R / h0``       (flooded k_w = 2.448, Martin)
     * pressure force on the cylinder along the entrainment ``Q_x = k_q eta U sqrt(R/h0)``
       per unit length (each surface gets the Poiseuille force ``Q_x/2`` against U)
-    * Couette integral ``int_fluid dx / h = k_c sqrt(R/h0)`` (full film up to X*, then the
-      cavitated film of thickness h* spread over the gap: integrand h*/h^2).
+    * Couette integral ``int_fluid dx / h = k_c sqrt(R/h0)`` (full film from X_m to X*, then
+      the cavitated film of thickness h* spread over the gap: integrand h*/h^2).
 
-    Returns (k_w, k_q, k_c, X*). Reference: Hamrock et al. 2004 ch. 8 (Reynolds boundary
-    condition, rigid cylinder); paper 000 eqs. 5, 37-38.
+    Returns (k_w, k_q, k_c, X*). Reference: Martin 1916; Hamrock et al. 2004 ch. 8 (Reynolds
+    boundary condition, rigid cylinder); paper 000 eqs. 5, 37-38 (coefficient 2.447).
     """
+    xm = float(inlet)
+    if not xm < 0.0:
+        raise ValueError("inlet meniscus X_m must be < 0")
 
-    def pi_at_outlet(xs: float) -> float:
-        hs = 1.0 + xs * xs
-        # Pi(X) = int_-inf^X (H - H*)/H^3 dX'  with  tan substitution X = tan g
-        g = math.atan(xs)
-        # int cos^2 - Hs cos^4 over g in (-pi/2, g)
-        c2 = 0.5 * (g + math.pi / 2) + 0.25 * math.sin(2 * g)
-        c4 = 3.0 / 8.0 * (g + math.pi / 2) + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
-        return c2 - hs * c4
+    def at_outlet(xs: float) -> float:
+        return _pi_function(xs, xm, 1.0 + xs * xs)
 
-    xs = sopt.brentq(pi_at_outlet, 0.05, 1.5)
+    xs = sopt.brentq(at_outlet, 1e-12, 1.5, xtol=1e-14)
     hs = 1.0 + xs * xs
-
-    def pi_of(x: float) -> float:
-        g = math.atan(x)
-        c2 = 0.5 * (g + math.pi / 2) + 0.25 * math.sin(2 * g)
-        c4 = 3.0 / 8.0 * (g + math.pi / 2) + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
-        return c2 - hs * c4
-
-    int_pi = sint.quad(pi_of, -np.inf, xs, limit=200)[0]
-    int_pix = sint.quad(lambda x: pi_of(x) * x, -np.inf, xs, limit=200)[0]
+    lo = -np.inf if math.isinf(xm) else xm
+    int_pi = sint.quad(lambda x: _pi_function(x, xm, hs), lo, xs, limit=200)[0]
+    int_pix = sint.quad(lambda x: _pi_function(x, xm, hs) * x, lo, xs, limit=200)[0]
     # p = 6 eta U sqrt(2R) h0^-1.5 Pi ; w = 12 eta U R/h0 int Pi
     k_w = 12.0 * int_pi
     # Q_x = -(1/R) int p x dx = -12 sqrt(2) eta U sqrt(R/h0) int Pi X dX
     k_q = -12.0 * math.sqrt(2.0) * int_pix
-    couette = (sint.quad(lambda x: 1.0 / (1.0 + x * x), -np.inf, xs)[0]
+    couette = (sint.quad(lambda x: 1.0 / (1.0 + x * x), lo, xs)[0]
                + sint.quad(lambda x: hs / (1.0 + x * x) ** 2, xs, np.inf)[0])
     k_c = math.sqrt(2.0) * couette
     return k_w, k_q, k_c, xs
+
+
+def martin_coefficients() -> tuple[float, float, float, float]:
+    """Fully flooded rigid-isoviscous coefficients (k_w, k_q, k_c, X*), see
+    :func:`starved_coefficients`; k_w = 2.448 is Martin's (1916) load coefficient."""
+    return starved_coefficients(-math.inf)
+
+
+@functools.lru_cache(maxsize=1)
+def _starved_table() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """ln(-X_m) grid and k_w, k_q on it (for vectorised interpolation)."""
+    lnx = np.linspace(math.log(1e-3), math.log(300.0), 120)
+    kw = np.empty_like(lnx)
+    kq = np.empty_like(lnx)
+    for i, v in enumerate(lnx):
+        kw[i], kq[i], _, _ = starved_coefficients(-math.exp(v))
+    return lnx, kw, kq
+
+
+def rigid_starved_film(load_per_length: Any, sum_speed: Any, radius: float, eta0: float,
+                       oil_layer: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rigid-isoviscous film h0 [m], load and rolling-force coefficients with starvation.
+
+    The inlet meniscus sits where the gap equals the available oil layer ``oil_layer``
+    (total of both surfaces) [m]: ``h0 (1 + X_m^2) = h_oil``; the load balance
+    ``w = k_w(X_m) eta0 U R / h0`` is solved for h0 (bisection in ln h0, vectorised).
+    ``oil_layer=None``: fully flooded (Martin). Returns (h0, k_w, k_q).
+    """
+    w = np.asarray(load_per_length, dtype=float)
+    u = np.abs(np.asarray(sum_speed, dtype=float))
+    k_w0, k_q0, _, _ = martin_coefficients()
+    w_safe = np.where(w > 0, w, 1.0)
+    h_flood = k_w0 * eta0 * u * radius / w_safe
+    if oil_layer is None:
+        return h_flood, np.full(w.shape, k_w0), np.full(w.shape, k_q0)
+    lnx, kw_t, kq_t = _starved_table()
+
+    def coeffs(h0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        ratio = np.maximum(oil_layer / h0 - 1.0, 1e-300)
+        lx = 0.5 * np.log(ratio)
+        kw = np.where(lx > lnx[-1], k_w0, np.interp(lx, lnx, kw_t, left=0.0))
+        kq = np.where(lx > lnx[-1], k_q0, np.interp(lx, lnx, kq_t, left=0.0))
+        return kw, kq
+
+    lo = np.log(np.minimum(h_flood, oil_layer) * 1e-6)
+    hi = np.full(w.shape, math.log(oil_layer))
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        h0 = np.exp(mid)
+        kw, _ = coeffs(h0)
+        too_thin = kw * eta0 * u * radius / h0 > w_safe  # carries more than w: thicken
+        lo = np.where(too_thin, mid, lo)
+        hi = np.where(too_thin, hi, mid)
+    h0 = np.exp(0.5 * (lo + hi))
+    kw, kq = coeffs(h0)
+    return h0, kw, kq
 
 
 @dataclass(frozen=True)
@@ -190,6 +251,7 @@ def closed_form_contact_forces(
     traction_law: Any,
     temperature: float,
     rolling_force: str = "regime_min",
+    oil_layer: float | None = None,
 ) -> LineContactForces:
     """Fluid forces of roller-raceway line contacts, closed form (module docstring).
 
@@ -207,6 +269,13 @@ def closed_form_contact_forces(
     temperature : contact temperature [K].
     rolling_force : "regime_min" (default: min of rigid-isoviscous and Dowson-Higginson),
         "dowson_higginson" (paper 000 eq. 35 at every loaded contact) or "rigid_isoviscous".
+    oil_layer : available oil layer at the inlet, both surfaces together [m] (None: fully
+        flooded). Starvation: the inlet meniscus sits where the gap holds this layer; the
+        rigid-isoviscous film, load and rolling-force coefficients follow
+        (:func:`rigid_starved_film`), the inlet Couette integral ends at the meniscus, and the
+        closed-form film h_c is scaled by the rigid starved/flooded film ratio (an
+        approximation for elastic contacts, where that ratio is close to 1 unless the oil
+        layer is comparable with the film).
 
     Returns
     -------
@@ -214,9 +283,28 @@ def closed_form_contact_forces(
     """
     if rolling_force not in ROLLING_FORCE_MODELS:
         raise UnknownNameError("rolling_force", rolling_force, ROLLING_FORCE_MODELS)
-    q = np.asarray(load, dtype=float)
-    ur = np.asarray(u_race, dtype=float)
-    uro = np.asarray(u_roller, dtype=float)
+    q, ur, uro = np.broadcast_arrays(*(np.asarray(v, dtype=float)
+                                       for v in (load, u_race, u_roller)))
+    if q.ndim == 1 and 0 < np.count_nonzero(q > 0.0) < q.size:
+        # evaluate the loaded contacts only, zeros elsewhere
+        idx = np.nonzero(q > 0.0)[0]
+        sub = closed_form_contact_forces(
+            q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0,
+            alpha=alpha, film=film, traction_law=traction_law, temperature=temperature,
+            rolling_force=rolling_force, oil_layer=oil_layer)
+
+        def full(a: np.ndarray, fill: float) -> np.ndarray:
+            out = np.full(q.shape, fill)
+            out[idx] = a
+            return out
+
+        return LineContactForces(
+            traction=full(sub.traction, 0.0), dtraction_dslide=full(sub.dtraction_dslide, 0.0),
+            poiseuille=full(sub.poiseuille, 0.0), rolling_force=full(sub.rolling_force, 0.0),
+            entrainment_sign=np.where(ur + uro >= 0.0, 1.0, -1.0),
+            film_thickness=full(sub.film_thickness, np.inf),
+            half_width=full(sub.half_width, 0.0), max_pressure=full(sub.max_pressure, 0.0),
+            hertz_traction=full(sub.hertz_traction, 0.0))
     slide = ur - uro
     usum = ur + uro
     sign = np.where(usum >= 0.0, 1.0, -1.0)
@@ -225,7 +313,14 @@ def closed_form_contact_forces(
     b = np.sqrt(8.0 * w * radius / (math.pi * effective_modulus))
     p_h = np.where(loaded, 2.0 * w / (math.pi * np.where(loaded, b, 1.0)), 0.0)
     ue = np.maximum(0.5 * np.abs(usum), 1e-6)
-    h_c = np.where(loaded, film(ue, np.where(loaded, w, 1.0)), np.inf)
+    w_safe = np.where(loaded, w, 1.0)
+    h_flooded = np.where(loaded, film(ue, w_safe), np.inf)
+    # rigid-isoviscous film, flooded and starved (the starved/flooded ratio scales h_c)
+    h_r, k_wr, k_qr = rigid_starved_film(w_safe, 2.0 * ue, radius, eta0, oil_layer)
+    if oil_layer is not None:
+        h_r_flood = martin_coefficients()[0] * eta0 * 2.0 * ue * radius / w_safe
+        h_flooded = h_flooded * np.minimum(1.0, h_r / h_r_flood)
+    h_c = h_flooded
     hc_safe = np.where(loaded, h_c, 1.0)
 
     # --- Hertz zone: traction law at the local Hertz pressure ----------------------------
@@ -240,30 +335,41 @@ def closed_form_contact_forces(
     df_hz = np.sum(np.asarray(dstress) * dx_w, axis=-1)
 
     # --- inlet and outlet: Newtonian, ambient viscosity ----------------------------------
-    # x = -(b + L t/(1-t)), t in (0,1); L = sqrt(2 R h_c) sets the rigid length scale
+    # outlet (and flooded inlet): x = b + L t/(1-t), t in (0,1); L = sqrt(2 R h_c) is the
+    # rigid length scale. Starved inlet: x = b + s_m t^2 up to the meniscus, where the
+    # (rigid) gap holds the oil layer, s_m = sqrt(2 R (h_oil - h_c)).
     lsc = np.sqrt(2.0 * radius * hc_safe)
     ts, wt = _nodes(_N_SIDE)
     t = 0.5 * (ts + 1.0)
     wt = 0.5 * wt
     s = lsc[..., None] * t / (1.0 - t)
     ds = lsc[..., None] * wt / (1.0 - t) ** 2
+    if oil_layer is None:
+        s_in, ds_in = s, ds
+    else:
+        s_m = np.sqrt(2.0 * radius * np.maximum(oil_layer - hc_safe, 0.0))
+        s_in = s_m[..., None] * t * t
+        ds_in = 2.0 * s_m[..., None] * t * wt
     b_safe = np.where(b > 0, b, 1.0)
-    X = np.where(b[..., None] > 0, 1.0 + s / b_safe[..., None], np.inf)
-    gap = np.where(b[..., None] > 0,
-                   (b_safe**2 / radius)[..., None] * outer_gap(np.minimum(X, 1e150)),
-                   s * s / (2.0 * radius))
-    gap = np.where(np.isfinite(gap), gap, s * s / (2.0 * radius))
-    h = hc_safe[..., None] + gap
-    inlet = np.sum(ds / h, axis=-1)
+
+    def film_gap(sv: np.ndarray) -> np.ndarray:
+        xx = np.where(b[..., None] > 0, 1.0 + sv / b_safe[..., None], np.inf)
+        g = np.where(b[..., None] > 0,
+                     (b_safe**2 / radius)[..., None] * outer_gap(np.minimum(xx, 1e150)),
+                     sv * sv / (2.0 * radius))
+        g = np.where(np.isfinite(g), g, sv * sv / (2.0 * radius))
+        return hc_safe[..., None] + g
+
+    h = film_gap(s)
+    inlet = np.sum(ds_in / film_gap(s_in), axis=-1)
     outlet = np.sum(ds * hc_safe[..., None] / h**2, axis=-1)
     c_side = np.where(loaded, eta0 * length * (inlet + outlet), 0.0)
     traction = np.where(loaded, f_hz * np.sign(slide) + c_side * slide, 0.0)
     dtraction = np.where(loaded, df_hz + c_side, 0.0)
 
     # --- rolling force Q_x: min(rigid-isoviscous, Dowson-Higginson eq. 35) --------------
-    k_w, k_q, k_c, _ = martin_coefficients()
     usum_abs = np.abs(usum)
-    qx_rigid = k_q * eta0 * usum_abs * length * np.sqrt(radius / hc_safe)
+    qx_rigid = k_qr * eta0 * usum_abs * length * np.sqrt(radius / h_r)
     big_u = eta0 * usum_abs / (effective_modulus * radius)
     g_mat = alpha * effective_modulus
     qx_dh = 18.4 * g_mat**-0.3 * big_u**0.7 * effective_modulus * radius * length
