@@ -251,3 +251,22 @@ def select_race_control(load_i: Any, load_o: Any, a_i: Any, a_o: Any, second_kin
            * np.cos(np.asarray(contact_angle_i) - np.asarray(contact_angle_o)))
     rhs = np.asarray(load_i) * np.asarray(a_i) * np.asarray(second_kind_i)
     return np.where(lhs > rhs, "outer_race", "inner_race")[()]
+
+
+def race_control_for_loads(bearing: Any, load_i: Any, load_o: Any, contact_angle_i: Any,
+                           contact_angle_o: Any) -> Any:
+    """Jones's race-control verdict per element from the contact loads [N] and angles [rad].
+
+    Computes the Hertz semi-major axes and E(e) of both contacts of a ball bearing
+    (:func:`thermobearing.hertz.point_contact`, exact) and applies
+    :func:`select_race_control`. Unloaded contacts count as zero.
+    """
+    from .hertz import point_contact
+
+    e_prime = bearing.effective_modulus
+    rx_i, ry_i = bearing.curvature("inner", contact_angle_i)
+    rx_o, ry_o = bearing.curvature("outer", contact_angle_o)
+    pc_i = point_contact(load_i, rx_i, ry_i, e_prime)
+    pc_o = point_contact(load_o, rx_o, ry_o, e_prime)
+    return select_race_control(load_i, load_o, pc_i.a, pc_o.a, pc_i.second_kind,
+                               pc_o.second_kind, contact_angle_i, contact_angle_o)

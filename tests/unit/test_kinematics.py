@@ -143,3 +143,31 @@ def test_vectorised_over_elements_and_selection() -> None:
     verdict = kin.select_race_control([100.0, 100.0], [300.0, 50.0], [1e-3, 1e-3], [1e-3, 1e-3],
                                       [1.1, 1.1], [1.1, 1.1], ai[:2], ao[:2])
     assert list(verdict) == ["outer_race", "inner_race"]
+
+
+# primer /work/shared/notes/over-skidding.md section 5 table (D = 35.1 mm, d_m = 280 mm):
+# (alpha_i, alpha_o) [deg] -> CSR_ORC, CSR(beta = 0), rounded to 3 decimals in the primer
+PRIMER_TABLE = [((44.6, 35.1), 0.459, 0.487), ((41.1, 40.8), 0.453, 0.454),
+                ((53.8, 20.1), 0.505, 0.568), ((57.2, 9.3), 0.558, 0.602),
+                ((51.8, 24.6), 0.488, 0.549), ((44.6, 35.9), 0.458, 0.485),
+                ((42.2, 39.7), 0.454, 0.462)]
+
+
+@pytest.mark.parametrize(("angles", "csr_orc", "csr_beta0"), PRIMER_TABLE)
+def test_primer_table_columns(angles, csr_orc, csr_beta0) -> None:
+    gp = 35.1 / 280.0
+    ai, ao = (math.radians(a) for a in angles)
+    assert kin.race_control_cage_ratio(gp, ai, ao, "outer_race") == pytest.approx(
+        csr_orc, abs=6e-4)
+    assert kin.rolling_speeds(gp, ai, ao, 0.0)[0] == pytest.approx(csr_beta0, abs=6e-4)
+
+
+def test_race_control_for_loads() -> None:
+    b = load_bearing("QJ1044")
+    ai = np.radians([45.0, 45.0])
+    ao = np.radians([35.0, 35.0])
+    # a heavily loaded outer contact (centrifugal force) -> outer-race control; a tiny one ->
+    # inner-race control
+    verdict = kin.race_control_for_loads(b, np.array([500.0, 500.0]), np.array([2000.0, 1.0]),
+                                         ai, ao)
+    assert list(verdict) == ["outer_race", "inner_race"]
