@@ -162,3 +162,21 @@ def test_bad_inputs(params, mild):
     eyring = type("FilmLaw", (), {"requires_film": True})()
     with pytest.raises(InputError):
         V.traction_table(eyring, 1.0)
+
+
+@pytest.mark.parametrize("slip", [-0.12, 0.0, 0.2, 0.4, 0.6])
+def test_round_trip_csr_at_0db(params, mild, slip):
+    # issue 8: simulated signals with known slip from -12 % (over-skidding) to +60 %, white
+    # noise of the signal's power (SNR 0 dB): the analyser recovers the CSR within 0.5 %
+    fs = 25600.0
+    r = V.simulate(params, WS, LOAD, traction=mild, cage_slip=slip, duration=1.0,
+                   settle_time=0.03, sampling_rate=fs)
+    a = r.acceleration_x - r.acceleration_x.mean()
+    rng = np.random.default_rng(int(round(1000 * (slip + 1))))
+    x = a + rng.normal(scale=np.sqrt(np.mean(a * a)), size=a.size)
+    est = S.estimate_cage_speed(x, fs, WS / (2 * math.pi), params.n_balls,
+                                params.theoretical_cage_speed_ratio)
+    csr_true = r.cage_speed / WS
+    assert est.detected, est.reason
+    assert abs(est.csr / csr_true - 1) < 0.005
+    assert est.slip == pytest.approx(slip, abs=0.005)

@@ -1,0 +1,121 @@
+"""Validation runners of the vibration model and the cage-speed analyser (engineer E).
+
+Cases: ``paper004_vibration_stats`` (Luo et al. 2022 Table 2 and Fig. 12 trends),
+``paper004_bpfo_with_slip`` (the ball-pass line of the *simulated* acceleration falls as
+(1 - s_c), paper 004 eq. 27), ``paper002_cage_frequency_arithmetic`` (Gao et al. 2022
+section 4.2: CSR = CRF / f_i, by arithmetic and through the analyser on a synthetic record).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .. import signal as S
+from .. import vibration as V
+from ..traction import make_traction_law
+from ..units import to_si
+from . import RUNNERS
+
+
+def _law(inputs: dict[str, Any]) -> Any:
+    return make_traction_law(
+        "linear_saturating", mu_max=float(inputs.get("mu_max", 0.01)),
+        slip_speed_max=to_si(inputs.get("slip_speed_max", "0.1 m/s"), "speed",
+                             field="slip_speed_max"))
+
+
+@RUNNERS.register("paper004_vibration_stats",
+                  references=["luo2022_cage_slip_vibration", "sunnersjo1978_varying_compliance"])
+def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
+    """PTP, RMS, kurtosis of the ring x acceleration (Table 2) and their slip trends (Fig. 12)."""
+    params = V.paper004_parameters()
+    ws = to_si(inputs["shaft_speed"], "angular_speed", field="shaft_speed")
+    load = to_si(inputs["radial_load"], "force", field="radial_load")
+    kw = dict(traction=_law(inputs),
+              duration=to_si(inputs.get("duration", "0.5 s"), "time", field="duration"),
+              settle_time=to_si(inputs.get("settle_time", "0.05 s"), "time",
+                                field="settle_time"),
+              sampling_rate=to_si(inputs.get("sampling_rate", "100 kHz"), "frequency",
+                                  field="sampling_rate"))
+    base = V.simulate(params, ws, load, cage_slip=0.0, **kw).statistics_x
+    out = {"ptp": base.ptp, "rms": base.rms, "kurtosis": base.kurtosis}
+    for slip in inputs.get("cage_slips", []):
+        st = V.simulate(params, ws, load, cage_slip=float(slip), **kw).statistics_x
+        tag = f"{100 * float(slip):g}pct"
+        out[f"ptp_ratio_slip_{tag}"] = st.ptp / base.ptp
+        out[f"rms_ratio_slip_{tag}"] = st.rms / base.rms
+        out[f"kurtosis_ratio_slip_{tag}"] = st.kurtosis / base.kurtosis
+    return out
+
+
+@RUNNERS.register("paper004_bpfo_with_slip", references=["luo2022_cage_slip_vibration"])
+def paper004_bpfo_with_slip(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
+    """Ball-pass line measured on the simulated ring acceleration at several cage slips.
+
+    The line is the largest peak of the Hann, zero-padded spectrum between 0.5 and 1.5 times
+    the no-slip BPFO (:func:`thermobearing.signal.spectral_peak`), so it is measured, not set.
+    """
+    params = V.paper004_parameters()
+    ws = to_si(inputs["shaft_speed"], "angular_speed", field="shaft_speed")
+    load = to_si(inputs["radial_load"], "force", field="radial_load")
+    fs = to_si(inputs.get("sampling_rate", "25.6 kHz"), "frequency", field="sampling_rate")
+    dur = to_si(inputs.get("duration", "2 s"), "time", field="duration")
+    f0 = params.ball_pass_frequency_outer(ws / (2 * math.pi))
+    out: dict[str, float] = {}
+    for slip in inputs["cage_slips"]:
+        r = V.simulate(params, ws, load, traction=_law(inputs), cage_slip=float(slip),
+                       duration=dur, settle_time=0.05, sampling_rate=fs)
+        f, _ = S.spectral_peak(r.acceleration_x, fs, 0.5 * f0 * (1 - float(slip)),
+                               1.5 * f0 * (1 - float(slip)))
+        out[f"bpfo_slip_{100 * float(slip):g}pct"] = f
+    return out
+
+
+@RUNNERS.register("paper002_cage_frequency_arithmetic",
+                  references=["gao2022_overskidding", "randall_antoni2011_tutorial"])
+def paper002_cage_frequency_arithmetic(inputs: dict[str, Any], case_dir: Path
+                                       ) -> dict[str, float]:
+    """CSR = CRF / f_i for the three points of paper 002 Fig. 12, and the analyser's CSR of a
+    synthetic QJ1044 record (ball-pass impulses modulated at CRF, ringing a 3 kHz resonance,
+    white noise at 0 dB) with the paper's 10 s at 25.6 kHz."""
+    from ..geometry import load_bearing
+
+    f_i = to_si(inputs["shaft_frequency"], "frequency", field="shaft_frequency")
+    out: dict[str, float] = {}
+    for name, crf in inputs["cage_frequencies"].items():
+        f_c = to_si(crf, "frequency", field=f"cage_frequencies.{name}")
+        out[f"csr_{name}"] = S.cage_speed_ratio(f_c, f_i)
+    bearing = load_bearing(inputs.get("bearing", "QJ1044"))
+    csr_th = float(bearing.theoretical_cage_speed_ratio(bearing.contact_angle))
+    fs = 25600.0
+    duration = to_si(inputs.get("duration", "10 s"), "time", field="duration")
+    rng = np.random.default_rng(2022)
+    for name, crf in inputs["cage_frequencies"].items():
+        f_c = to_si(crf, "frequency", field=f"cage_frequencies.{name}")
+        x = _synthetic_record(f_c, bearing.n_balls, fs, duration, rng)
+        est = S.estimate_cage_speed(x, fs, f_i, bearing.n_balls, csr_th, search=(0.3, 1.4))
+        if est.detected:
+            out[f"analyser_csr_{name}"] = est.csr
+    return out
+
+
+def _synthetic_record(f_cage: float, n_balls: int, fs: float, duration: float,
+                      rng: np.random.Generator) -> np.ndarray:
+    """Ball-pass impulses at Z f_c, amplitude modulated by 30 % at f_c (a cage line, as in
+    paper 002 Fig. 12), exciting a 3 kHz, 3 %-damped resonance, plus white noise of equal
+    power (0 dB)."""
+    n = int(fs * duration)
+    imp = np.zeros(n)
+    for tk in np.arange(0.0, duration, 1.0 / (n_balls * f_cage)):
+        i = int(round(tk * fs))
+        if i < n:
+            imp[i] += 1.0 + 0.3 * math.cos(2 * math.pi * f_cage * tk)
+    th = np.arange(int(0.01 * fs)) / fs
+    w = 2 * math.pi * 3000.0
+    h = np.exp(-0.03 * w * th) * np.sin(w * th)
+    x = np.convolve(imp, h)[:n]
+    return x + rng.normal(scale=math.sqrt(float(np.mean(x * x))), size=n)
