@@ -151,3 +151,28 @@ def test_vectorised_ellipticity_matches_bracketed_solve() -> None:
     for k, r in zip(k_vec, ratios, strict=True):
         if k > 1.0:
             assert abs(hertz.ellipticity_residual(k, r)) <= 1e-10 * r
+
+
+def test_sliced_roller_straight_reproduces_palmgren_and_line_contact() -> None:
+    s = hertz.sliced_roller_contact(2000.0, 0.0108, 0.0108, None, 5.5e-3, E_PRIME)
+    assert s.approach == pytest.approx(hertz.palmgren_approach(2000.0, 0.0108), rel=1e-10)
+    lc = hertz.line_contact(2000.0, 0.0108, 5.5e-3, E_PRIME)
+    assert s.max_pressure == pytest.approx(lc.max_pressure, rel=1e-10)
+    assert s.loaded_length == pytest.approx(0.0108)
+
+
+def test_sliced_roller_crowned_ends() -> None:
+    loads = np.array([0.0, 100.0, 2000.0, 20000.0])
+    s = hertz.sliced_roller_contact(loads, 0.012, 0.0108, 0.05, 5.5e-3, E_PRIME)
+    assert np.allclose(s.slice_loads.sum(axis=-1), loads, rtol=1e-9)
+    assert s.approach[0] == 0 and s.max_pressure[0] == 0
+    assert np.all(np.diff(s.loaded_length) >= 0)  # the crowns come into contact with load
+    # crown drop at the roller end: (0.6 mm)^2 / (2 * 50 mm) = 3.6 um; at 20 kN the approach
+    # exceeds it, so the whole length carries load
+    assert hertz.crown_drop(0.006, 0.0108, 0.05) == pytest.approx(3.6e-6)
+    assert s.loaded_length[-1] == pytest.approx(0.012)
+    # the crowned roller is no stiffer than a straight one of the full length
+    straight = hertz.sliced_roller_contact(loads[1:], 0.012, 0.012, None, 5.5e-3, E_PRIME)
+    assert np.all(s.approach[1:] >= straight.approach * (1 - 1e-12))
+    with pytest.raises(InputError, match="straight_length"):
+        hertz.sliced_roller_contact(1.0, 0.01, 0.02, 0.05, 5.5e-3, E_PRIME)
