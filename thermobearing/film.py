@@ -287,6 +287,8 @@ def moes_line_central(entrainment_speed: Any, dynamic_viscosity: Any,
     Reference: Moes, Optimum similarity analysis with applications to elastohydrodynamic
     lubrication, Wear 159 (1992) 57-66; Venner & Lubrecht, Multilevel Methods in Lubrication
     (Elsevier 2000), ch. 5. The rigid-isoviscous asymptote H_RI = 3/M is Martin's central film.
+    The coefficients were written from memory of those sources (not re-read); the tests check
+    the Martin limit exactly and agreement with Dowson-Toyoda's central film within 5 %.
     """
     big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
                                            pressure_viscosity_coefficient, load, length,
