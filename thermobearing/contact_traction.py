@@ -219,14 +219,15 @@ def integrate(
         if np.any(h[loaded] <= 0):
             raise InputError("contact_traction.film_thickness", "values <= 0 at loaded contacts",
                              "a film thickness > 0 [m]")
-        h_nodes = np.where(loaded, h, 1.0)[e] * np.ones_like(xg)
+        h_nodes = np.where(loaded, h, 1.0)[e]  # shape S + (1,): broadcast over the nodes
     t_nodes = None
     if temperature is not None:
-        t_nodes = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s)[e] \
-            * np.ones_like(xg)
+        # per-contact temperature, shape S + (1,): the law evaluates the temperature part of
+        # the viscosity once per contact and broadcasts it over the nodes
+        t_nodes = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s)[e]
     tau, dtau = law.shear_stress(speed, pressure, h_nodes, t_nodes)
-    tau = np.asarray(tau, dtype=float)
-    dtau = np.asarray(dtau, dtype=float)
+    tau = np.broadcast_to(np.asarray(tau, dtype=float), speed.shape)
+    dtau = np.broadcast_to(np.asarray(dtau, dtype=float), speed.shape)
 
     moving = speed > 0.0
     safe_speed = np.where(moving, speed, 1.0)
@@ -249,18 +250,27 @@ def integrate(
         axx = -(dtau * ex * ex + ratio * (1.0 - ex * ex)) * weight
         ayy = -(dtau * ey * ey + ratio * (1.0 - ey * ey)) * weight
         axy = -(dtau - ratio) * ex * ey * weight
-        zero = np.zeros_like(x)
-        one = np.ones_like(x)
-        gx = np.stack([one, zero, zero, z, -y], axis=-1)  # d dv_x / dq
-        gy = np.stack([zero, one, -z, zero, x], axis=-1)  # d dv_y / dq
-        cx = axx[..., None] * gx + axy[..., None] * gy  # (d t_x / d q) * dA
-        cy = axy[..., None] * gx + ayy[..., None] * gy
-        g_all = np.concatenate([gx, gy], axis=-2)  # (..., 2K, 5)
-        c_all = np.concatenate([cx, cy], axis=-2)
-        jac = np.swapaxes(g_all, -1, -2) @ c_all
+        # J_ij = sum_k gx_i (A gx_j + B gy_j) + gy_i (B gx_j + C gy_j) with
+        # gx = d dv_x/dq = (1, 0, 0, z, -y), gy = d dv_y/dq = (0, 1, -z, 0, x); written out
+        # entry by entry (symmetric) to avoid (..., K, 5) temporaries
+        a_, b_, c_ = axx, axy, ayy
+        az, bz, cz = a_ * z, b_ * z, c_ * z
+        t4x = -a_ * y + b_ * x  # (A gx + B gy)_4
+        t4y = -b_ * y + c_ * x  # (B gx + C gy)_4
+        entries = {
+            (0, 0): a_, (0, 1): b_, (0, 2): -bz, (0, 3): az, (0, 4): t4x,
+            (1, 1): c_, (1, 2): -cz, (1, 3): bz, (1, 4): t4y,
+            (2, 2): cz * z, (2, 3): -bz * z, (2, 4): -z * t4y,
+            (3, 3): az * z, (3, 4): z * t4x,
+            (4, 4): -y * t4x + x * t4y,
+        }
+        jac = np.empty(shape_s + (5, 5))
+        for (i, j), term in entries.items():
+            jac[..., i, j] = jac[..., j, i] = term.sum(-1)
         dheat = (dtau * speed + tau) * weight  # d(tau s)/ds * dA
-        h_all = np.concatenate([dheat * ex, dheat * ey], axis=-1)[..., None, :]
-        grad = (h_all @ g_all)[..., 0, :]
+        hx, hy = dheat * ex, dheat * ey
+        grad = np.stack([hx.sum(-1), hy.sum(-1), -(hy * z).sum(-1), (hx * z).sum(-1),
+                         (-hx * y + hy * x).sum(-1)], axis=-1)
     return ContactTraction(fx, fy, mx, my, mz, heat, jac, grad)
 
 
