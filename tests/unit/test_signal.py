@@ -141,3 +141,28 @@ def test_load_csv_and_npy(tmp_path):
         S.load_acceleration(tmp_path / "c.csv", sampling_rate=FS)
     with pytest.raises(InputError):
         S.load_acceleration(tmp_path / "missing.csv", sampling_rate=FS)
+
+
+def test_cage_speed_command(tmp_path, capsys):
+    # thermobearing cage-speed FILE --rpm --bearing: QJ1044 preset (Z from the preset), a
+    # synthetic record with the cage at 15.13 Hz at f_i = 30.2 Hz (paper 002 point 2)
+    from thermobearing.cli import main
+    from thermobearing.geometry import load_bearing
+
+    z = load_bearing("QJ1044").n_balls
+    x = impulse_train(15.13 / 30.2, f_shaft=30.2, n_balls=z, duration=4.0, seed=5)
+    np.save(tmp_path / "rec.npy", x)
+    plot = tmp_path / "out.png"
+    rc = main(["cage-speed", str(tmp_path / "rec.npy"), "--fs", "25.6 kHz", "--rpm", "1812",
+               "--bearing", "QJ1044", "--plot", str(plot)])
+    out = capsys.readouterr().out
+    assert rc == 0
+    assert "CSR         0.5010" in out and "over-skidding" in out
+    assert plot.is_file() and plot.stat().st_size > 10_000
+    np.save(tmp_path / "noise.npy", np.random.default_rng(3).normal(size=int(4 * FS)))
+    rc = main(["cage-speed", str(tmp_path / "noise.npy"), "--fs", "25600", "--rpm", "1812",
+               "--bearing", "QJ1044", "--no-plot"])
+    assert rc == 3
+    assert "NOT DETECTED" in capsys.readouterr().out
+    assert main(["cage-speed", str(tmp_path / "noise.npy"), "--rpm", "1812",
+                 "--bearing", "QJ1044"]) == 1  # no sampling rate: clear error

@@ -1,0 +1,176 @@
+"""``thermobearing cage-speed FILE --rpm 1800 --bearing QJ1044``: cage speed from vibration.
+
+Reads an acceleration record (``.csv`` with a time column, or ``.npy``/one-column ``.csv``
+with ``--fs``), finds the cage frequency in its envelope spectrum (paper 002 section 4.2,
+:func:`thermobearing.signal.estimate_cage_speed`), prints the cage speed ratio, the cage slip
+against the bearing's pure-rolling ratio and the confidence of the detection, and writes the
+spectrum plot. Exit code 0 when a cage comb is detected, 3 when it is not (then no frequency
+is printed).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from pathlib import Path
+
+from .. import signal as S
+from ..errors import InputError
+from ..units import to_si
+
+NAME = "cage-speed"
+HELP = "measure the cage speed ratio and slip from a vibration record (envelope spectrum)"
+
+EXIT_NOT_DETECTED = 3
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", help="acceleration record: .csv (time, accel), .npy or .npz")
+    parser.add_argument("--rpm", type=float, required=True,
+                        help="inner-ring (shaft) speed in r/min (tachometer)")
+    parser.add_argument("--bearing", required=True, help="bearing preset name or TOML path")
+    parser.add_argument("--fs", default=None,
+                        help="sampling rate (e.g. 25600 or '25.6 kHz'); needed unless the "
+                             "file has a time column or a rate")
+    parser.add_argument("--column", default=None,
+                        help="CSV column of the samples (index or header name)")
+    parser.add_argument("--contact-angle", default=None,
+                        help="contact angle for the pure-rolling ratio (e.g. '40 deg'; "
+                             "default: the bearing's nominal angle)")
+    parser.add_argument("--band", nargs=2, type=float, metavar=("LOW", "HIGH"),
+                        help="demodulation band in Hz (default: kurtogram)")
+    parser.add_argument("--search", nargs=2, type=float, default=(0.3, 1.3),
+                        metavar=("LOW", "HIGH"),
+                        help="search range of CSR / CSR_th (default 0.3 1.3)")
+    parser.add_argument("--plot", default=None,
+                        help="PNG path of the spectrum plot (default: <file>_cage_speed.png)")
+    parser.add_argument("--no-plot", action="store_true", help="do not write the plot")
+    parser.add_argument("--json", action="store_true", help="print a JSON record instead")
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..geometry import load_bearing
+
+    if not (math.isfinite(args.rpm) and args.rpm > 0):
+        raise InputError("--rpm", args.rpm, "a shaft speed > 0 r/min")
+    fs = None
+    if args.fs is not None:
+        try:
+            fs = float(args.fs)  # a bare number is in Hz
+        except ValueError:
+            fs = to_si(args.fs, "frequency", field="--fs")
+    column = args.column
+    if column is not None and column.isdigit():
+        column = int(column)
+    record = S.load_acceleration(args.file, sampling_rate=fs, column=column)
+    bearing = load_bearing(args.bearing)
+    angle = (bearing.contact_angle if args.contact_angle is None
+             else to_si(args.contact_angle, "angle", field="--contact-angle"))
+    csr_th = float(bearing.theoretical_cage_speed_ratio(angle))
+    n_elem = int(bearing.n_elements)
+    shaft_hz = args.rpm / 60.0
+    est = S.estimate_cage_speed(record.data, record.sampling_rate, shaft_hz, n_elem, csr_th,
+                                band=tuple(args.band) if args.band else None,
+                                search=tuple(args.search))
+    plot_path = None
+    if not args.no_plot:
+        plot_path = Path(args.plot) if args.plot else Path(args.file).with_name(
+            Path(args.file).stem + "_cage_speed.png")
+        _plot(est, record, plot_path, bearing.name)
+    if args.json:
+        print(json.dumps(_record(est, record, bearing.name, plot_path), indent=1))
+    else:
+        _print(est, record, bearing.name, plot_path)
+    return 0 if est.detected else EXIT_NOT_DETECTED
+
+
+def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
+            plot: Path | None) -> dict:
+    return {
+        "file": record.source, "sampling_rate_hz": record.sampling_rate,
+        "duration_s": record.duration, "bearing": name,
+        "shaft_frequency_hz": est.shaft_frequency,
+        "measured_shaft_frequency_hz": est.measured_shaft_frequency,
+        "csr_theoretical": est.csr_theoretical, "detected": est.detected,
+        "cage_frequency_hz": est.cage_frequency, "csr": est.csr, "slip": est.slip,
+        "ball_pass_frequency_hz": est.ball_pass_frequency, "confidence": est.confidence,
+        "false_alarm_probability": est.false_alarm_probability,
+        "bands_hz": list(est.spectrum.bands or (est.spectrum.band,)), "reason": est.reason,
+        "lines": [{"kind": ln.kind, "order": list(ln.order), "expected_hz": ln.expected,
+                   "measured_hz": None if math.isnan(ln.measured) else ln.measured,
+                   "snr": ln.snr, "detected": ln.detected} for ln in est.lines],
+        "plot": str(plot) if plot else None,
+    }
+
+
+def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
+           plot: Path | None) -> None:
+    bands = ", ".join(f"{lo:.0f}-{hi:.0f} Hz" for lo, hi in
+                      (est.spectrum.bands or (est.spectrum.band,)))
+    print(f"record      {record.source}: {record.data.size} samples at "
+          f"{record.sampling_rate:g} Hz ({record.duration:.3g} s)")
+    print(f"bearing     {name}: CSR_th = {est.csr_theoretical:.4f}; shaft "
+          f"{est.shaft_frequency:.4g} Hz" + (
+              f" (envelope line at {est.measured_shaft_frequency:.4f} Hz)"
+              if est.measured_shaft_frequency else ""))
+    print(f"bands       {bands}")
+    if est.detected:
+        print(f"cage        {est.cage_frequency:.4f} Hz   "
+              f"(ball pass {est.ball_pass_frequency:.3f} Hz)")
+        print(f"CSR         {est.csr:.4f}")
+        kind = "over-skidding" if est.slip < 0 else "skidding"
+        print(f"slip        {100 * est.slip:+.2f} %  ({kind}; s = 1 - CSR/CSR_th)")
+        print(f"confidence  {est.confidence:.3f}  (false-alarm probability "
+              f"{est.false_alarm_probability:.2g})")
+    else:
+        print(f"cage        NOT DETECTED: {est.reason}")
+    print("lines:")
+    for ln in est.lines:
+        meas = "-" if math.isnan(ln.measured) else f"{ln.measured:.4f}"
+        print(f"  {ln.kind:<19} k={ln.order[0]:<3} n={ln.order[1]}  expected "
+              f"{ln.expected:9.4f} Hz  measured {meas:>10}  snr {ln.snr:8.1f}"
+              f"{'  *' if ln.detected else ''}")
+    if plot:
+        print(f"plot        {plot}")
+
+
+def _plot(est: S.CageSpeedEstimate, record: S.AccelerationRecord, path: Path,
+          name: str) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    es = est.spectrum
+    fig, (ax0, ax1) = plt.subplots(2, 1, figsize=(9, 7), constrained_layout=True)
+    x = record.data - record.data.mean()
+    win = np.hanning(x.size)
+    a = np.abs(np.fft.rfft(x * win)) * 2.0 / win.sum()
+    f = np.fft.rfftfreq(x.size, 1.0 / record.sampling_rate)
+    ax0.semilogy(f, np.maximum(a, 1e-300), lw=0.6)
+    ax0.set_xlabel("frequency [Hz]")
+    ax0.set_ylabel("amplitude")
+    ax0.set_title(f"{Path(record.source).name}: spectrum ({name})")
+    for lo, hi in es.bands or (es.band,):
+        ax0.axvspan(lo, hi, color="tab:orange", alpha=0.2)
+    ax1.plot(es.frequency, es.normalised, lw=0.7, color="k")
+    ax1.set_xlabel("frequency [Hz]")
+    ax1.set_ylabel("envelope power / noise floor")
+    colours = {"cage": "tab:red", "ball_pass": "tab:blue", "ball_pass_sideband": "tab:cyan",
+               "sideband": "tab:green", "shaft": "tab:purple"}
+    for ln in est.lines:
+        if ln.detected:
+            ax1.axvline(ln.measured, color=colours.get(ln.kind, "grey"), lw=0.8, ls="--",
+                        alpha=0.8, label=ln.kind)
+    handles, labels = ax1.get_legend_handles_labels()
+    uniq = dict(zip(labels, handles, strict=True))
+    if uniq:
+        ax1.legend(uniq.values(), uniq.keys(), loc="upper right", fontsize=8)
+    title = (f"CSR = {est.csr:.4f}, slip {100 * est.slip:+.2f} %, confidence "
+             f"{est.confidence:.2f}" if est.detected else "cage line not detected")
+    ax1.set_title("squared-envelope spectrum: " + title)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
