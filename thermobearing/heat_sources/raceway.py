@@ -17,23 +17,33 @@
     2 kappa / b so a stationary surface still takes its conductive share.
 ``ehl_rolling_resistance``
     Hydrodynamic (Poiseuille) rolling force of the EHL inlet, the pressure term
-    -integral (h/2) dp/dx dx of paper 000 (seed 000_3b5ca6eed61dd596.txt) eq. 5, in the
-    closed form the same paper uses, eq. 35:  Q_x / (E' R_x l) = 18.4 (1 - D/d_m) G^-0.3 U^0.7
-    with G = alpha E', U = eta0 (|u_1| + |u_2|) / (E' R_x) (the paper's eqs. 14 and 18 define U
-    with the SUM of the surface speeds, twice the entrainment speed), l the contact length, and
-    the factor (1 - D/d_m) applied as printed to both races (the paper prints only the inner
-    form). Q_x is the horizontal
-    (rolling-direction) pressure force on the element; integrating by parts,
+    -integral (h/2) dp/dx dx of paper 000 (seed 000_3b5ca6eed61dd596.txt) eq. 5. Q_x, the
+    rolling-direction pressure force on the element, is by parts
     Q_x = integral p dh/dx dx = -integral h dp/dx dx = 2 F_P, twice the Poiseuille shear force
-    F_P = -integral (h/2) dp/dx dx that eq. 5 puts on EACH surface. Only the shear forces do
-    work in the contact frame (the pressure acts along the surface normals of surfaces moving
-    tangentially), so the heat is F_P (|u_element| + |u_race|) = Q_x u for rolling with
-    sliding alike (u = entrainment speed). Eq. 35 is a line-contact formula; for ball contacts
-    the length is taken as the mean chord pi a / 2 of the ellipse (an extrapolation, flagged
-    by a ValidityWarning). Eq. 35 is isothermal: at high speed inlet shear heating thins the
-    film and, since the inlet force scales with the film (F_P ~ h_c / alpha), the rolling
-    force too; option ``thermal_reduction`` multiplies Q_x by a film thermal-reduction factor
-    phi_T from ``film.THERMAL_FILM`` ("none" by default, "gupta_1992", "wilson_sheu_1983").
+    F_P that eq. 5 puts on EACH surface. Only the shear forces do work in the contact frame
+    (the pressure acts along the normals of surfaces moving tangentially), so the heat is
+    F_P (|u_element| + |u_race|) = Q_x u, rolling and sliding alike (u = entrainment speed).
+    Q_x in closed form, the same three options and the same reading of the paper as the
+    roller skidding solver (``skidding/roller_fluid.py``, one set of formulas):
+
+    - "dowson_higginson": paper 000 eq. 35, Q_x = 18.4 G^-0.3 U^0.7 E' R_x l with G = alpha E',
+      U = eta0 (|u_1| + |u_2|) / (E' R_x) (the paper's eqs. 14 and 18 build U from the SUM of
+      the surface speeds); the printed factor (1 - D/d_m) is the paper's normalisation by the
+      roller radius (R_x,inner = (D/2)(1 - D/d_m)) and is carried by R_x here;
+    - "rigid_isoviscous": Martin's rigid cylinder, Q_x = k_q eta0 U_sum l sqrt(R_x/h_0),
+      h_0 = k_w eta0 U_sum R_x / w (coefficients from the Reynolds equation in
+      ``roller_fluid.martin_coefficients``);
+    - "regime_min" (default): the smaller of the two. The Dowson-Higginson fit is a
+      heavy-load EHL result and exceeds the rigid-isoviscous force at light loads (e.g. the
+      centrifugal-only outer contacts of unloaded rollers), where the contact is rigid.
+
+    Eq. 35 is a line-contact formula; for ball contacts the length is the mean chord pi a / 2
+    of the ellipse (an extrapolation, flagged by a ValidityWarning). Both forms are
+    isothermal and fully flooded: at high speed inlet shear heating and starvation thin the
+    film, and since the inlet force scales with the film (F_P ~ h_c / alpha) the rolling force
+    too; option ``thermal_reduction`` multiplies Q_x by a film thermal-reduction factor phi_T
+    from ``film.THERMAL_FILM`` ("none" by default, "gupta_1992", "wilson_sheu_1983"). The
+    cross-check case shows the isothermal value against the SKF rolling term.
 """
 
 from __future__ import annotations
@@ -44,7 +54,7 @@ import warnings
 import numpy as np
 
 from ..contact_traction import integrate_contact_set
-from ..errors import InputError, ValidityWarning
+from ..errors import InputError, UnknownNameError, ValidityWarning
 from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
 
 _Q_NAMES = ("transverse_sliding_speed", "sliding_speed", "roll_speed", "tilt_speed",
@@ -143,29 +153,53 @@ def raceway_traction(ctx: HeatContext) -> HeatResult:
         forces=forces, force_pairs=tuple(pairs), component_roles=split)
 
 
-def rolling_force_paper000(entrainment_speed, viscosity, pressure_viscosity, effective_modulus,
-                           reduced_radius_x, length, gamma):
-    """EHL hydrodynamic rolling force Q_x [N], paper 000 eq. 35 in dimensional form.
+def rolling_force_paper000(sum_speed, viscosity, pressure_viscosity, effective_modulus,
+                           reduced_radius_x, length):
+    """EHL rolling force Q_x [N], paper 000 eq. 35 (Dowson-Higginson form), dimensional.
 
-    Q_x = 18.4 (1 - gamma) G^-0.3 U^0.7 E' R_x l,  G = alpha E', U = eta0 |u| / (E' R_x).
+    Q_x = 18.4 G^-0.3 U^0.7 E' R_x l,  G = alpha E',  U = eta0 |u_1 + u_2| / (E' R_x).
 
     Parameters
     ----------
-    entrainment_speed : u [m/s], the speed that enters U (paper 000 eqs. 14 and 18 use the
-        sum of the surface speeds); viscosity : eta0 at the inlet [Pa s];
-    pressure_viscosity : alpha [1/Pa]; effective_modulus : E' [Pa] (Hamrock convention);
-    reduced_radius_x : R_x [m]; length : contact length l [m]; gamma : D / d_m [-].
+    sum_speed : u_1 + u_2, sum of the surface speeds [m/s] (paper 000 eqs. 14, 18);
+    viscosity : eta0 at the inlet [Pa s]; pressure_viscosity : alpha [1/Pa];
+    effective_modulus : E' [Pa] (Hamrock convention); reduced_radius_x : R_x [m];
+    length : contact length l [m].
 
-    Reference: seed 000_3b5ca6eed61dd596.txt eq. 35 (dimensionless with E' R l as eq. 26-31
-    do), the closed form of the Poiseuille term of its eq. 5. Validity: fully flooded,
-    isothermal line contacts (the paper's roller bearing).
+    Reference: seed 000_3b5ca6eed61dd596.txt eq. 35; the factor (1 - D/d_m) printed there is
+    carried by R_x (module docstring). Validity: fully flooded, isothermal EHL line contacts.
     """
-    u = np.abs(np.asarray(entrainment_speed, float))
+    u = np.abs(np.asarray(sum_speed, float))
     e = float(effective_modulus)
     rx = np.asarray(reduced_radius_x, float)
     big_u = np.asarray(viscosity, float) * u / (e * rx)
     g = np.asarray(pressure_viscosity, float) * e
-    return 18.4 * (1.0 - gamma) * g ** -0.3 * big_u ** 0.7 * e * rx * np.asarray(length, float)
+    return 18.4 * g ** -0.3 * big_u ** 0.7 * e * rx * np.asarray(length, float)
+
+
+def rolling_force_rigid_isoviscous(sum_speed, viscosity, load, reduced_radius_x, length):
+    """Rigid-isoviscous (Martin) rolling force Q_x [N] of a cylinder, fully flooded.
+
+    h_0 = k_w eta0 U R / w,  Q_x = k_q eta0 U l sqrt(R / h_0), w = load / l, U = sum speed;
+    k_w = 2.448 (Martin 1916) and k_q from the Reynolds equation with Reynolds outlet
+    conditions (``skidding.roller_fluid.martin_coefficients``, engineer G). Hamrock 2004.
+    """
+    from ..skidding.roller_fluid import martin_coefficients
+
+    k_w, k_q, _, _ = martin_coefficients()
+    u = np.abs(np.asarray(sum_speed, float))
+    length = np.asarray(length, float)
+    q = np.asarray(load, float)
+    w = np.divide(q, length, out=np.zeros(np.broadcast(q, length).shape), where=length > 0)
+    rx = np.asarray(reduced_radius_x, float)
+    eta = np.asarray(viscosity, float)
+    w_safe = np.where(w > 0, w, 1.0)
+    u_safe = np.where(u > 0, u, 1.0)
+    h0 = k_w * eta * u_safe * rx / w_safe
+    return np.where((w > 0) & (u > 0), k_q * eta * u * length * np.sqrt(rx / h0), 0.0)
+
+
+ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 
 
 def _thermal_factor(model, ctx, cs, temp, eta):
@@ -187,11 +221,14 @@ def _thermal_factor(model, ctx, cs, temp, eta):
 @HEAT_SOURCES.register(
     "ehl_rolling_resistance",
     references=["li2018_nu214_skidding", "blok1963_flash_temperature"],
-    parameters={"thermal_reduction": "-"},
+    parameters={"thermal_reduction": "-", "rolling_force": "-"},
     validity="fully flooded EHL; line contacts (ball contacts by the mean-chord extension)",
 )
 def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
-    """EHL rolling resistance (Poiseuille inlet force) of the raceway contacts, paper 000 eq. 35.
+    """EHL rolling resistance (Poiseuille inlet force) of the raceway contacts, paper 000 eq. 5/35.
+
+    Option ``rolling_force``: "regime_min" (default), "dowson_higginson", "rigid_isoviscous"
+    (module docstring).
 
     The inlet viscosity and pressure-viscosity coefficient are taken at the contact
     temperature (contact set's, else the mean of element and ring nodes). Loaded contacts
@@ -205,9 +242,11 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     from ..film import THERMAL_FILM
 
     THERMAL_FILM.entry(thermal)  # unknown names raise, listing the known ones
+    model = str(ctx.option(name, "rolling_force", "regime_min"))
+    if model not in ROLLING_FORCE_MODELS:
+        raise UnknownNameError(f"options[{name}].rolling_force", model, ROLLING_FORCE_MODELS)
     bearing = ctx.bearing
     elem_mat, ring_mat = _materials(bearing)
-    gamma = bearing.element_diameter / bearing.pitch_diameter
     e_mod = bearing.effective_modulus
     roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
     components: dict[str, float] = {}
@@ -236,8 +275,12 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         alpha = np.asarray(ctx.lubricant.pressure_viscosity_coefficient(temp), float)
         u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
         u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
-        fr = np.where(loaded, rolling_force_paper000(np.abs(u_e) + np.abs(u_r), eta, alpha,
-                                                     e_mod, rx, length, gamma), 0.0)
+        usum = np.abs(u_e) + np.abs(u_r)
+        q_dh = rolling_force_paper000(usum, eta, alpha, e_mod, rx, length)
+        q_ri = rolling_force_rigid_isoviscous(usum, eta, cs.normal_load, rx, length)
+        q_x = {"regime_min": np.minimum(q_dh, q_ri), "dowson_higginson": q_dh,
+               "rigid_isoviscous": q_ri}[model]
+        fr = np.where(loaded, q_x, 0.0)
         if thermal != "none":
             fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
         f_p = 0.5 * fr  # Poiseuille shear force on each surface

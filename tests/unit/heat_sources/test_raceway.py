@@ -69,16 +69,28 @@ def test_film_law_without_film_errors(qj1044, vg46, race_control_state):
 
 
 def test_rolling_force_paper000_by_hand():
-    # eq. 35: Q_x = 18.4 (1 - g) G^-0.3 U^0.7 E' R l; E' = 2.28e11, R = 7e-3, l = 16 mm,
-    # eta0 = 0.08, u = 10 m/s, alpha = 2e-8, g = 0.2
-    e, r, l, eta, u, a, g = 2.28e11, 7e-3, 0.016, 0.08, 10.0, 2e-8, 0.2
+    # eq. 35: Q_x = 18.4 G^-0.3 U^0.7 E' R l; E' = 2.28e11, R = 7e-3, l = 16 mm,
+    # eta0 = 0.08, sum speed 10 m/s, alpha = 2e-8
+    e, r, l, eta, u, a = 2.28e11, 7e-3, 0.016, 0.08, 10.0, 2e-8
     big_u = eta * u / (e * r)
-    expected = 18.4 * (1 - g) * (a * e) ** -0.3 * big_u ** 0.7 * e * r * l
-    got = raceway.rolling_force_paper000(u, eta, a, e, r, l, g)
+    expected = 18.4 * (a * e) ** -0.3 * big_u ** 0.7 * e * r * l
+    got = raceway.rolling_force_paper000(u, eta, a, e, r, l)
     assert float(got) == pytest.approx(expected, rel=1e-12)
     # by hand: U = 5.013e-10, U^0.7 = 3.09e-7, G^-0.3 = 4560^-0.3 = 0.0798,
-    # 14.72 * 0.0798 * 3.09e-7 = 3.63e-7; E' R l = 2.554e7 N -> 9.28 N
-    assert float(got) == pytest.approx(9.28, rel=5e-3)  # N
+    # 18.4 * 0.0798 * 3.09e-7 = 4.54e-7; E' R l = 2.554e7 N -> 11.6 N
+    assert float(got) == pytest.approx(11.6, rel=5e-3)  # N
+
+
+def test_rigid_isoviscous_rolling_force_by_hand():
+    # Martin: h0 = 2.448 eta U R / w; Q_x = k_q eta U l sqrt(R/h0)
+    from thermobearing.skidding.roller_fluid import martin_coefficients
+
+    k_w, k_q, _, _ = martin_coefficients()
+    assert k_w == pytest.approx(2.448, rel=1e-3)
+    eta, u, r, l, q = 0.05, 20.0, 5e-3, 0.01, 10.0
+    h0 = k_w * eta * u * r / (q / l)
+    got = raceway.rolling_force_rigid_isoviscous(u, eta, q, r, l)
+    assert float(got) == pytest.approx(k_q * eta * u * l * np.sqrt(r / h0), rel=1e-12)
 
 
 def test_rolling_resistance_heat_is_qx_u(qj1044, vg46, race_control_state):
@@ -97,10 +109,11 @@ def test_rolling_resistance_heat_is_qx_u(qj1044, vg46, race_control_state):
     eta = float(vg46.dynamic_viscosity(cs.temperature[0]))
     alpha = float(vg46.pressure_viscosity_coefficient(cs.temperature[0]))
     length = np.pi * cs.semi_major / 2
-    expected = raceway.rolling_force_paper000(2 * cs.entrainment_speed, eta, alpha,
-                                              qj1044.effective_modulus, cs.reduced_radius_x,
-                                              length, qj1044.ball_diameter / qj1044.pitch_diameter)
-    np.testing.assert_allclose(qx[loaded], expected[loaded], rtol=1e-12)
+    q_dh = raceway.rolling_force_paper000(2 * cs.entrainment_speed, eta, alpha,
+                                          qj1044.effective_modulus, cs.reduced_radius_x, length)
+    q_ri = raceway.rolling_force_rigid_isoviscous(2 * cs.entrainment_speed, eta, cs.normal_load,
+                                                  cs.reduced_radius_x, length)
+    np.testing.assert_allclose(qx[loaded], np.minimum(q_dh, q_ri)[loaded], rtol=1e-12)
 
 
 def test_rolling_resistance_thermal_reduction(qj1044, vg46, race_control_state):
