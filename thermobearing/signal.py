@@ -717,19 +717,26 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     # refine each line, weighted least squares for f_c
     entries = []
     expected_all = np.array([k * f0 + n * shaft_frequency for _, k, n in comb])
+    rank = np.array([_priority(kind, k) for kind, k, _ in comb])
+    shared = []
     for i, (kind, k, n) in enumerate(comb):
         fe = expected_all[i]
         if not (2 * df < fe < es.frequency[-1]):
             continue
-        others = np.delete(expected_all, i)
-        if np.any(np.abs(others - fe) < 1.5 * df):
-            continue  # two teeth on one line: ambiguous, used by neither
+        close = np.abs(expected_all - fe) < 1.5 * df
+        close[i] = False
+        if np.any(rank[close] <= rank[i]):
+            continue  # a tooth of higher (or equal) rank claims this line
         fm, snr = refine_peak(es, fe, 0.5 * df)
         entries.append((kind, k, n, fm, snr))
-    used = [(k, n, fm, snr) for (_, k, n, fm, snr) in entries if snr > thresh]
+        shared.append(bool(close.any()))
+    used = [(k, n, fm, snr, sh) for (_, k, n, fm, snr), sh in zip(entries, shared, strict=True)
+            if snr > thresh]
     if used:
-        wts = np.array([k * k * snr for k, _, _, snr in used])
-        est = np.array([(fm - n * shaft_frequency) / k for k, n, fm, _ in used])
+        # weight: n_c^2 SNR (frequency variance ~ 1/SNR, divided by n_c); a line that a
+        # lower-rank tooth could also explain counts a quarter
+        wts = np.array([k * k * snr * (0.25 if sh else 1.0) for k, _, _, snr, sh in used])
+        est = np.array([(fm - n * shaft_frequency) / k for k, n, fm, _, _ in used])
         fc = float(np.sum(wts * est) / np.sum(wts))
     else:
         fc = f0
@@ -742,7 +749,7 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     n_cand = max(1.0, (f_hi - f_lo) / (df / kmax))
     p_fa = min(1.0, p_comb * n_cand)
     consistent = 0
-    for k, n, fm, _ in used:
+    for k, n, fm, _, _ in used:
         if abs((fm - n * shaft_frequency) - k * fc) <= 0.5 * df:
             consistent += 1
     consistency = consistent / len(used) if used else 0.0
@@ -773,6 +780,15 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     return CageSpeedEstimate(True, fc, csr, cage_slip(csr, csr_theoretical), n_balls * fc,
                              float(shaft_frequency), shaft_meas, float(csr_theoretical),
                              float(confidence), p_fa, consistency, tuple(lines), es, "")
+
+
+def _priority(kind: str, k: int) -> int:
+    """Rank of a comb tooth when two fall on one line (0 claims first)."""
+    if kind == "ball_pass":
+        return 0
+    if kind == "cage":
+        return 1 if k == 1 else 3
+    return 2 if kind == "ball_pass_sideband" else 4
 
 
 def _max_filter(a: np.ndarray, w: int) -> np.ndarray:
