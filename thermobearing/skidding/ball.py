@@ -76,8 +76,11 @@ class BallModels:
         mu_p F_bp).
     ball_drag : callable(u [m/s]) -> drag force on one ball [N], u = orbital speed of the ball
         centre relative to the oil (paper 002 eq. 10).
-    cage_torque : callable(omega_c [rad/s]) -> resisting torque on the cage [N m] (cage-guide
-        hydrodynamic moment, paper 002 eq. 5, plus cage churning, eq. 15 / omega_c).
+    cage_torque : callable(omega_c [rad/s]) -> resisting torque on the cage [N m] from the oil
+        (cage churning, paper 002 eq. 15 / omega_c); heat = torque x omega_c.
+    cage_guide_torque : callable(omega_c, omega_g) -> resisting torque on the cage from the
+        guide land [N m] (paper 002 eq. 5), or None; heat = torque x (omega_c - omega_g).
+    guide_on_inner_ring : the land is on the inner ring (its reaction then loads the shaft).
     inner_ring_torque : callable(omega_i) -> churning torque on the inner ring [N m] (paper 002
         eq. 17 / omega_i); enters only the shaft torque and the energy balance.
     film_thickness : callable(u_e [m/s], Q [N], rx [m], ry [m]) -> central film [m], or None
@@ -96,6 +99,8 @@ class BallModels:
     pocket_friction: float
     ball_drag: Callable[[Any], Any]
     cage_torque: Callable[[float], float]
+    cage_guide_torque: Callable[[float, float], float] | None = None
+    guide_on_inner_ring: bool = False
     inner_ring_torque: Callable[[float], float] = lambda w: 0.0
     film_thickness: Callable[..., Any] | None = None
     temperature: float | None = None
@@ -300,25 +305,36 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         # torque on the cage about the axis from ball j: force -(fpa, fpr, Qp) at (ba, br, pct)
         cage = -X[:, 1] * Qp + pct * fpr
         Gc = np.stack([ring_a / self.F_s, ring_r / self.F_s, cage / self.T_s], axis=1)
-        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s,
-                       -float(md.cage_torque(wc)) / self.T_s])
+        t_churn, t_guide, wg = self._cage_torques(wc)
+        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s, -(t_churn + t_guide) / self.T_s])
         if not details:
             return R, Gc, G0, None
         # heat and shaft torque (energy audit)
         contact_heat = tr.heat
         pocket_heat = -(fpa * (-s * wa_) + fpr * (-s * wr_))  # -f . v_rel, v_rel = -s w
         drag_heat = Fd * wc * X[:, 1]   # power given to the oil (all dissipated)
-        cage_heat = float(md.cage_torque(wc)) * wc
+        cage_heat = t_churn * wc
+        guide_heat = t_guide * (wc - wg)
         inner_torque = float(md.inner_ring_torque(wi))
+        if md.guide_on_inner_ring:
+            inner_torque += t_guide       # the land's reaction on the inner ring
         # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
         Rp_r = br + pr
         shaft = np.sum(np.where(inn, Rp_r * Ft_k + (Mx * nr - Mz * na), 0.0)) + inner_torque
         det = dict(cf=cf, a=a_ell, b=b_ell, p0=p0, rx=rx, ry=ry, film=film, Vx=Vx, Vy=Vy,
                    Om_x=Om_x, Om_y=Om_y, Om_z=Om_z, ue=ue, tr=tr, Fd=Fd, u_ball=u_ball,
                    pocket_heat=pocket_heat, contact_heat=contact_heat, drag_heat=drag_heat,
-                   cage_heat=cage_heat, inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
+                   cage_heat=cage_heat, guide_heat=guide_heat,
+                   inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
                    pocket_sliding=wn, Fc=Fc)
         return R, Gc, G0, det
+
+    def _cage_torques(self, wc):
+        md = self.models
+        t_churn = float(md.cage_torque(wc))
+        wg = self.speed if md.guide_on_inner_ring else 0.0
+        t_guide = 0.0 if md.cage_guide_torque is None else float(md.cage_guide_torque(wc, wg))
+        return t_churn, t_guide, wg
 
     def _hertz(self, Q, alpha):
         from ..hertz import point_contact
@@ -365,7 +381,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
 # Newton with block elimination
 # ---------------------------------------------------------------------------------------------
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
-                 tol: float = 1e-10, max_iter: int = 60, fd_step: float = 1e-6,
+                 tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
                  max_step: float = 1.0):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
@@ -479,7 +495,7 @@ def race_control_guess(bearing, speed, radial_load, axial_load, n_balls=None):
 # ---------------------------------------------------------------------------------------------
 def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                axial_load: float, *, n_balls: int | None = None,
-               guess: BallSkiddingResult | None = None, tol: float = 1e-10,
+               guess: BallSkiddingResult | None = None, tol: float = 1e-9,
                max_iter: int = 60, continuation: bool = True,
                theoretical_reference=None) -> BallSkiddingResult:
     """Solve the ball/cage/ring equilibrium at one operating point.
@@ -588,6 +604,7 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
             "ball_pocket": float(np.sum(det["pocket_heat"])),
             "ball_drag": float(np.sum(det["drag_heat"])),
             "cage": float(det["cage_heat"]),
+            "cage_guide": float(det["guide_heat"]),
             "inner_ring_churning": float(det["inner_churn_heat"])}
     heat["total"] = float(sum(v for k, v in heat.items()
                               if k not in ("raceway_inner", "raceway_outer")))
@@ -625,7 +642,8 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
         spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
         shaft_torque=float(det["shaft_torque"]), kinematic_state=ks, unknowns=(X, G),
         extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
-               "race_names": names, "residual": R})
+               "race_names": names, "residual": R,
+               "traction_law": system.models.traction_law})
 
 
 def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:

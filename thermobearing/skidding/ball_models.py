@@ -12,7 +12,7 @@ drag model here is a thin adapter around the functions of :mod:`thermobearing.he
   fraction X (Parker's correlation of ``heat_sources.churning.parker_oil_fraction`` with a
   calibratable constant, or a fixed fraction);
 - cage: churning (paper 002 eq. 15, ``churning_cage``) plus the cage-guide land torque
-  (paper 002 eq. 5, ``heat_sources.cage_guide`` when present);
+  (paper 002 eq. 5, ``heat_sources.cage_guide.land_drag_torque``, centred cage);
 - inner ring churning (paper 002 eq. 17, ``churning_inner_ring``) for the shaft torque;
 - ball-pocket friction coefficient mu_p (paper 002 eq. 19, ``heat_sources.pocket``).
 
@@ -23,7 +23,6 @@ to round-off, the solver's own heat (the energy test of issue 5).
 
 from __future__ import annotations
 
-import importlib
 import math
 import warnings
 from dataclasses import dataclass, field, replace
@@ -93,15 +92,46 @@ def heat_context_options(bearing, supply, speed: float, params: BallParameters) 
                               "oil_fraction": x, "oil_swirl": 0.0},
         "churning_cage": {"oil_fraction": x},
         "churning_inner_ring": {"oil_fraction": x},
-        "cage_guide": {},
-        "ball_pocket": {"friction_coefficient": params.pocket_friction},
+        "cage_guide": {"form": "short_bearing", "cage_share": 0.0},
+        "pocket_friction": {"friction_coefficient": params.pocket_friction},
     }
 
 
-def make_traction(lubricant, params: BallParameters):
+class IsothermalViscosity:
+    """The lubricant's eta(T, p) at one temperature, tabulated in p for speed.
+
+    ``ln eta(T0, p)`` of the lubricant's own pressure-viscosity law (owner A) is tabulated on
+    a uniform grid of 4001 points over 0-5 GPa and interpolated linearly (relative error
+    < 1e-6 for Barus/Roelands); other temperatures or pressures beyond the grid fall back to
+    the lubricant. The traction law evaluates eta at every quadrature node of every contact
+    in every Newton residual, which otherwise dominates the solver's run time.
+    """
+
+    def __init__(self, lubricant, temperature: float, p_max: float = 5.0e9, n: int = 4001):
+        self.lubricant = lubricant
+        self.temperature = float(temperature)
+        self._p = np.linspace(0.0, p_max, n)
+        self._ln = np.log(np.asarray(lubricant.dynamic_viscosity(self.temperature, self._p),
+                                     float))
+        self.p_max = p_max
+
+    def dynamic_viscosity(self, T, p=0.0):
+        T = np.asarray(T, float)
+        p = np.asarray(p, float)
+        if np.all(T == self.temperature) and np.all(p <= self.p_max):
+            return np.exp(np.interp(p, self._p, self._ln))
+        return self.lubricant.dynamic_viscosity(T, p)
+
+    def __getattr__(self, name):
+        return getattr(self.lubricant, name)
+
+
+def make_traction(lubricant, params: BallParameters, temperature: float | None = None):
     """The solver's default traction law (Eyring with limiting shear, smooth cap)."""
     from ..traction import make_traction_law
 
+    if temperature is not None:
+        lubricant = IsothermalViscosity(lubricant, temperature)
     return make_traction_law("eyring_limiting_shear", lubricant=lubricant,
                              limiting_shear_coefficient=params.limiting_shear_coefficient,
                              eyring_stress=params.eyring_stress, cap="smooth")
@@ -134,7 +164,7 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     E = bearing.effective_modulus
     x = _oil_fraction(bearing, supply, speed, p)
     rho_e = x * rho
-    law = make_traction(lubricant, p)
+    law = make_traction(lubricant, p, temperature)
 
     def film(u, Q, rx, ry):
         with warnings.catch_warnings():
@@ -154,13 +184,21 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
     d_in, d_out = bearing.inner_land_diameter, bearing.outer_land_diameter
     gap_c = max(0.25 * ((d_out - d_in) - (cage.outer_diameter - cage.inner_diameter)), 1e-4)
-    guide = _cage_guide_torque(bearing, lubricant, t_oil)
+    guide = None
+    if cage.guidance in ("outer_ring", "inner_ring"):
+        from ..heat_sources.cage_guide import land_drag_torque
+
+        land = cage.land_width if cage.land_width is not None else cage.width
+        c_r = 0.5 * cage.guide_clearance
+
+        def guide(wc, wg):
+            # centred cage (eccentricity 0): Petroff drag of paper 002 eq. 5 (F's form)
+            return -land_drag_torque(eta_oil, cage.guide_land_diameter, wg, wc, land, c_r, 0.0)
 
     def cage_torque(wc):
         reg = ch.viscous_friction_coefficient(0.5 * d_c, wc, gap_c, nu)
         q = float(ch.cage_churning_power(rho_e, reg.mu_v, wc, cage.width, d_c))
-        m = q / wc if wc != 0 else 0.0
-        return m + (guide(wc) if guide is not None else 0.0)
+        return q / wc if wc != 0 else 0.0
 
     arc = D
     shoulder = max(0.5 * (bearing.width - D), 0.0)
@@ -172,25 +210,10 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
         return q / wi if wi != 0 else 0.0
 
     return BallModels(traction_law=law, pocket_friction=p.pocket_friction,
-                      ball_drag=ball_drag, cage_torque=cage_torque,
+                      ball_drag=ball_drag, cage_torque=cage_torque, cage_guide_torque=guide,
+                      guide_on_inner_ring=cage.guidance == "inner_ring",
                       inner_ring_torque=inner_torque, film_thickness=film,
                       temperature=float(temperature), n_major=p.n_major, n_minor=p.n_minor,
                       drag_radius=0.5 * dm,
                       parameters={"oil_fraction": x, "params": p,
                                   "cage_guide_model": guide is not None})
-
-
-def _cage_guide_torque(bearing, lubricant, t_oil):
-    """Cage-land drag torque callable from ``heat_sources.cage_guide`` if that module exists."""
-    try:
-        mod = importlib.import_module("thermobearing.heat_sources.cage_guide")
-    except ImportError:
-        return None
-    fn = getattr(mod, "cage_guide_torque", None)
-    if fn is None:
-        return None
-
-    def torque(wc):
-        return float(fn(bearing, lubricant, t_oil, wc))
-
-    return torque

@@ -99,3 +99,32 @@ def test_warm_start_reduces_iterations(bearing, models):
 def test_bad_input():
     with pytest.raises(InputError):
         solve_ball(qj_like(), None, -1.0, 0.0, 0.0)
+
+
+def test_energy_balance_with_registered_heat_sources():
+    # Issue 5 "Energy": shaft torque x inner-ring speed equals the total heat of the heat
+    # sources (owner F) run on the solver's KinematicState, to 1e-8 relative.
+    from thermobearing.geometry import load_bearing
+    from thermobearing.heat_sources import HeatContext, evaluate
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding import solve
+    from thermobearing.skidding.ball_models import BallParameters, heat_context_options
+    from thermobearing.state import OilSupply, OperatingPoint
+    from thermobearing.traction import make_traction_law  # noqa: F401 - law comes from models
+
+    b = load_bearing("QJ1044")
+    lub = load_lubricant("ISO_VG46")
+    T = 318.15
+    supply = OilSupply("jet", 33 / 60000, T)
+    params = BallParameters()
+    for fa in (20e3, 2e3):
+        r = solve(b, lub, W1800, 1000.0, fa, T, supply=supply, params=params)
+        ctx = HeatContext.isothermal(
+            T, bearing=b, lubricant=lub, supply=supply,
+            operating=OperatingPoint(W1800, 0.0, 1000.0, fa), kinematics=r.kinematic_state,
+            traction=r.extra["traction_law"],
+            options=heat_context_options(b, supply, W1800, params))
+        names = ["raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
+                 "cage_guide", "pocket_friction"]
+        total = sum(h.total for h in evaluate(names, ctx))
+        assert math.isclose(r.shaft_torque * W1800, total, rel_tol=1e-8)

@@ -1,0 +1,215 @@
+"""BM-5: speed and robustness of the ball skidding solver (issue 5 item 5).
+
+Time per converged point and Newton iterations of :func:`thermobearing.skidding.ball.solve_ball`
+for Z in {8, 16, 32} over a speed x axial-load map (20 x 20 by default, 5 x 5 with --quick)
+of the QJ1044 geometry (ball count overridden; Z = 32 overlaps the balls geometrically, it is a
+numerical size test), including light-load high-speed points, cold (30 degC) and hot (80 degC)
+oil, and cold starts (race-control guess) against warm starts (previous point of the load
+sweep). The anchor: :func:`scipy.optimize.root` (method "hybr") and
+:func:`scipy.optimize.least_squares` (method "trf") on the identical scaled residual from the
+identical cold start, on a subset of points; failures of each method are counted.
+
+Usage: python benchmarks/bm5_skidding.py [--quick] [--json] [--out DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+RPM = math.pi / 30.0
+
+
+def _setup(Z: int, temperature: float, speed: float):
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.ball_models import default_ball_models
+    from thermobearing.state import OilSupply
+
+    b = load_bearing("QJ1044")
+    lub = load_lubricant("ISO_VG46")
+    supply = OilSupply("jet", 33 / 60000, min(temperature, 313.15))
+    models = default_ball_models(b, lub, temperature=temperature, speed=speed, supply=supply)
+    return b, models
+
+
+def run_map(Z, speeds, loads, temperature, warm):
+    """Our solver over the map; returns list of dicts (one per point)."""
+    from thermobearing.errors import ConvergenceError
+    from thermobearing.skidding.ball import solve_ball
+
+    rows = []
+    for n in speeds:
+        w = n * RPM
+        b, models = _setup(Z, temperature, w)
+        prev = None
+        for fa in loads:          # loads sorted high -> low (continuation direction)
+            t0 = time.perf_counter()
+            try:
+                r = solve_ball(b, models, w, 1000.0, fa, n_balls=Z,
+                               guess=prev if warm else None, theoretical_reference=0.45)
+                ok, it, res = True, r.iterations, r.residual_norm
+                prev = r
+            except ConvergenceError as err:
+                ok, it, res = False, -1, err.residual
+                prev = None
+            rows.append(dict(speed_rpm=n, axial_load=fa, ok=ok, iterations=it, residual=res,
+                             time_s=time.perf_counter() - t0))
+    return rows
+
+
+def run_scipy(Z, points, temperature):
+    """root(hybr) and least_squares(trf) on the identical residual from the same cold start."""
+    from scipy.optimize import least_squares, root
+
+    from thermobearing.errors import ConvergenceError
+    from thermobearing.skidding.ball import (
+        ball_residual_system,
+        newton_block,
+        race_control_guess,
+    )
+
+    out = []
+    for n, fa in points:
+        w = n * RPM
+        b, models = _setup(Z, temperature, w)
+        X0, G0, _ = race_control_guess(b, w, 1000.0, fa, Z)
+        sysm = ball_residual_system(b, models, w, 1000.0, fa, Z)
+        y0 = np.zeros(Z * 6 + 3)
+
+        def f(y, sysm=sysm, X0=X0, G0=G0):
+            return sysm.full_residual(y, X0, G0)
+
+        rec = {}
+        t0 = time.perf_counter()
+        try:
+            _, _, nrm, it = newton_block(sysm, X0, G0)
+            rec["newton"] = (True, time.perf_counter() - t0, nrm)
+        except ConvergenceError as err:
+            rec["newton"] = (False, time.perf_counter() - t0, err.residual)
+        t0 = time.perf_counter()
+        try:
+            s = root(f, y0, method="hybr", options={"xtol": 1e-12, "maxfev": 200 * (Z * 6 + 3)})
+            nrm = float(np.linalg.norm(f(s.x)))
+            rec["root_hybr"] = (bool(nrm < 1e-7), time.perf_counter() - t0, nrm)
+        except Exception as err:  # noqa: BLE001 - count any failure of the anchor
+            rec["root_hybr"] = (False, time.perf_counter() - t0, float("nan"))
+            del err
+        t0 = time.perf_counter()
+        try:
+            s = least_squares(f, y0, method="trf", xtol=1e-12, ftol=1e-14, gtol=1e-14,
+                              max_nfev=50 * (Z * 6 + 3))
+            nrm = float(np.linalg.norm(f(s.x)))
+            rec["least_squares_trf"] = (bool(nrm < 1e-7), time.perf_counter() - t0, nrm)
+        except Exception as err:  # noqa: BLE001
+            rec["least_squares_trf"] = (False, time.perf_counter() - t0, float("nan"))
+            del err
+        out.append(((n, fa), rec))
+    return out
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="5 x 5 map, Z = 16 only")
+    ap.add_argument("--json", action="store_true", help="print JSON records")
+    ap.add_argument("--out", default="benchmarks/out", help="folder for the PNG")
+    args = ap.parse_args(argv)
+    nmap = 5 if args.quick else 20
+    zs = (16,) if args.quick else (8, 16, 32)
+    speeds = np.linspace(300.0, 3000.0, nmap)
+    loads = np.concatenate([[40e3], np.geomspace(40e3, 200.0, nmap - 2)[1:], [200.0, 0.0]])
+    loads = np.unique(loads)[::-1][:nmap]
+    temps = {"cold_oil": 303.15, "hot_oil": 353.15}
+    records = []
+    summary = []
+    for Z in zs:
+        for tname, T in temps.items():
+            for warm in (False, True):
+                t0 = time.perf_counter()
+                rows = run_map(Z, speeds, loads, T, warm)
+                total = time.perf_counter() - t0
+                ok = [r for r in rows if r["ok"]]
+                fails = len(rows) - len(ok)
+                tpp = np.mean([r["time_s"] for r in ok]) if ok else float("nan")
+                its = np.mean([r["iterations"] for r in ok]) if ok else float("nan")
+                setting = f"Z={Z},{tname},{'warm' if warm else 'cold'}"
+                summary.append((setting, len(rows), fails, tpp, its, total))
+                records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
+                                    method="newton_block", setting=setting, time_s=tpp,
+                                    error=float(max((r["residual"] for r in ok), default=np.nan)),
+                                    ratio_vs_anchor=None, iterations=its, failures=fails,
+                                    points=len(rows)))
+    # anchor comparison on a subset (same residual, same cold start)
+    sub_speeds = speeds[:: max(1, nmap // 3)]
+    sub_loads = loads[:: max(1, nmap // 3)]
+    pts = [(float(n), float(fa)) for n in sub_speeds for fa in sub_loads]
+    if args.quick:
+        pts = pts[:4]
+    anchor_rows = []
+    for Z in ((16,) if args.quick else (8, 16)):
+        res = run_scipy(Z, pts, temps["hot_oil"])
+        for meth in ("newton", "root_hybr", "least_squares_trf"):
+            t = [rec[meth][1] for _, rec in res]
+            f = sum(not rec[meth][0] for _, rec in res)
+            anchor_rows.append((Z, meth, float(np.mean(t)), f, len(res)))
+        tn = np.mean([rec["newton"][1] for _, rec in res])
+        for meth in ("root_hybr", "least_squares_trf"):
+            tm = np.mean([rec[meth][1] for _, rec in res])
+            records.append(dict(benchmark="bm5_skidding", case=f"anchor_subset_Z{Z}",
+                                method=meth, setting="cold start, hot oil", time_s=float(tm),
+                                error=float(np.nanmax([rec[meth][2] for _, rec in res])),
+                                ratio_vs_anchor=float(tm / tn),
+                                failures=sum(not rec[meth][0] for _, rec in res),
+                                points=len(res)))
+        records.append(dict(benchmark="bm5_skidding", case=f"anchor_subset_Z{Z}",
+                            method="newton_block", setting="cold start, hot oil",
+                            time_s=float(tn),
+                            error=float(np.nanmax([rec["newton"][2] for _, rec in res])),
+                            ratio_vs_anchor=1.0,
+                            failures=sum(not rec["newton"][0] for _, rec in res),
+                            points=len(res)))
+    if args.json:
+        print(json.dumps(records, indent=1, default=float))
+    else:
+        print(f"{'setting':34s} {'points':>6s} {'fail':>5s} {'ms/pt':>8s} {'iters':>6s}")
+        for s, npt, f, tpp, its, _ in summary:
+            print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.1f} {its:6.1f}")
+        print("\nanchor subset (cold start, identical scaled residual):")
+        base = {z: t for z, m, t, f, n in anchor_rows if m == "newton"}
+        for z, m, t, f, n in anchor_rows:
+            print(f"  Z={z:2d} {m:20s} {1e3 * t:9.1f} ms/pt  failures {f}/{n}"
+                  f"  time ratio vs newton_block {t / base[z]:6.1f}x")
+    _plot(summary, anchor_rows, Path(args.out))
+    return 0
+
+
+def _plot(summary, anchor_rows, out: Path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+    labels = [s for s, *_ in summary]
+    ax[0].barh(labels, [1e3 * t for _, _, _, t, _, _ in summary])
+    ax[0].set_xlabel("ms per converged point")
+    ax[0].tick_params(axis="y", labelsize=7)
+    lab2 = [f"Z={z} {m}" for z, m, *_ in anchor_rows]
+    ax[1].barh(lab2, [1e3 * t for _, _, t, _, _ in anchor_rows], color="C1")
+    ax[1].set_xscale("log")
+    ax[1].set_xlabel("ms per point (cold start), log")
+    ax[1].tick_params(axis="y", labelsize=7)
+    fig.tight_layout()
+    fig.savefig(out / "bm5_skidding.png", dpi=110)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
