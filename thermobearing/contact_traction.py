@@ -47,7 +47,10 @@ Line contacts (``kind="line"``): uniform load along the length (Gauss-Legendre i
 Hertz half-ellipse across the width. p0 is taken as 3Q/(2 pi a b) (point) or Q/(pi a b)
 (line, a = half length) so that the pressures are consistent with the loads.
 Zero-slip lines (spin, Heathcote) make the integrand kinked (or, for laws with tau(0) > 0,
-discontinuous); the error then falls as O(n^-2) (O(n^-1)) in the node count. The
+discontinuous); the error then falls as O(n^-2) (O(n^-1)) in the node count. Measured on
+a spinning ball contact with Heathcote slip (tests): the default 16 x 8 nodes give the heat
+and the spin moment within about 0.5 % of a 256 x 64 rule; the net rolling force, a small
+difference of large opposing tractions, converges less regularly (errors up to ~1 %). The
 power identity above holds exactly at any node count.
 
 References: Johnson 1985 (Contact Mechanics, ch. 8, spin and Heathcote slip); Harris &
