@@ -247,3 +247,20 @@ def test_starvation_reduces_drag_and_slip(nu214, oil, state150):
     assert starved.cage_speed > state150.cage_speed
     assert np.all(starved.outer.rolling_force[starved.inner_load == 0]
                   < state150.outer.rolling_force[state150.inner_load == 0])
+
+
+def test_no_inner_contact_is_a_clear_error(nu214, oil):
+    # F_r = 0 with clearance: every roller rides on the outer race only; paper 000's model
+    # then has no drive at all -> a ConvergenceError that says so, never NaN
+    with pytest.raises(ConvergenceError, match="no roller touches the inner ring"):
+        solve_roller(nu214, oil, OMEGA, 0.0, 0.0, T)
+
+
+@pytest.mark.slow
+def test_heavy_load_near_pure_rolling_uses_bracketed_fallback(nu214, oil):
+    # 50 kN at 1000 r/min: the tractions saturate within a tiny slip, the cage equation
+    # jumps across pure rolling and Newton stalls; the bracketed fallback finds the cage at
+    # the theoretical speed (Harris: heavily loaded roller bearings do not skid)
+    r = solve_roller(nu214, oil, 1000 * math.pi / 30, 50000.0, 0.0, T)
+    assert r.converged
+    assert r.cage_speed_ratio == pytest.approx(r.theoretical_cage_speed_ratio, rel=1e-3)
