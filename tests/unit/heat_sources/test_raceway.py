@@ -138,7 +138,7 @@ def test_paper002_eq11_taken_literally_is_unbounded():
     # Q = (dU^2 / h) * eta0 * int exp(alpha p) dA = (dU^2/h) eta0 2 pi a b [e^c (c-1) + 1]/c^2,
     # c = alpha p0 (closed form, see test_contact_traction). For a QJ1044-size contact
     # (Q = 2 kN, a = 2 mm, b = 0.3 mm, p0 = 1.6 GPa, alpha = 2e-8, eta0 = 0.03 Pa s,
-    # h = 1 um, dU = 1 m/s) that is ~1e10 W, against ~1e2 W from a limiting-shear law.
+    # h = 1 um, dU = 1 m/s) that is ~2e11 W, against ~1e2 W from a limiting-shear law.
     q, a, b, eta0, alpha, h, du = 2000.0, 2e-3, 3e-4, 0.03, 2e-8, 1e-6, 1.0
     p0 = 3 * q / (2 * math.pi * a * b)
     c = alpha * p0
