@@ -65,6 +65,7 @@ __all__ = [
     "amplitude_spectrum",
     "paper004_parameters",
     "simulate",
+    "simulate_with_skidding",
     "stability_report",
     "statistics",
     "traction_table",
@@ -687,3 +688,34 @@ def simulate(params: VibrationParameters, shaft_speed: float, radial_load: float
     return VibrationResult(t, float(sampling_rate), out[0], out[1], out[2], out[3], out[4],
                            out[5], float(shaft_speed), float(wc), float(cage_slip),
                            float(radial_load), method, h, int(evals), wall, params)
+
+
+def simulate_with_skidding(bearing: Any, lubricant: Any, shaft_speed: float,
+                           radial_load: float, temperature: float, *, supply: Any,
+                           traction: Any, params: VibrationParameters | None = None,
+                           skidding_options: dict | None = None, **simulate_options: Any
+                           ) -> tuple[VibrationResult, Any]:
+    """Vibration of a bearing whose cage speed comes from the skidding solver.
+
+    Calls :func:`thermobearing.skidding.solve` (quasi-dynamic traction/drag balance, axial
+    load 0: the planar model of paper 004 is for radial load) and runs :func:`simulate` with
+    ``cage_speed = CSR * shaft_speed``. ``params`` defaults to
+    :meth:`VibrationParameters.from_bearing` with paper 004 Table 1's ring mass (0.4 kg) and
+    damping (350 N s/m), which are estimates for any other bearing. Returns (vibration result,
+    skidding result); raises :class:`~thermobearing.errors.ConvergenceError` when the
+    skidding solver did not converge.
+    """
+    from . import skidding
+    from .errors import ConvergenceError
+
+    sk = skidding.solve(bearing, lubricant, shaft_speed, radial_load, 0.0, temperature,
+                        supply=supply, **(skidding_options or {}))
+    if not getattr(sk, "converged", False):
+        raise ConvergenceError("skidding.solve", float(getattr(sk, "residual_norm", math.inf)),
+                               "the cage speed for the vibration model is not available")
+    if params is None:
+        params = VibrationParameters.from_bearing(bearing, inner_ring_mass=0.4,
+                                                  support_damping=350.0)
+    result = simulate(params, shaft_speed, radial_load, traction=traction,
+                      cage_speed=float(sk.cage_speed_ratio) * shaft_speed, **simulate_options)
+    return result, sk

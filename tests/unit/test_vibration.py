@@ -180,3 +180,26 @@ def test_round_trip_csr_at_0db(params, mild, slip):
     assert est.detected, est.reason
     assert abs(est.csr / csr_true - 1) < 0.005
     assert est.slip == pytest.approx(slip, abs=0.005)
+
+
+def test_closed_loop_with_skidding_solver(params, mild):
+    # issue 8 item 3: cage speed from the skidding solver (SKF 6304, ISO VG 68 at 50 degC,
+    # jet 0.5 L/min: estimated conditions, paper 004 names no oil), vibration simulated with
+    # it, acceleration + 0 dB noise through the analyser: the solver's CSR comes back
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.state import OilSupply
+
+    fs = 25600.0
+    supply = OilSupply("jet", 0.5e-3 / 60.0, 323.15)
+    r, sk = V.simulate_with_skidding(load_bearing("SKF6304"), load_lubricant("ISO_VG68"), WS,
+                                     LOAD, 323.15, supply=supply, traction=mild, params=params,
+                                     duration=1.0, settle_time=0.03, sampling_rate=fs)
+    assert sk.converged
+    assert r.cage_speed == pytest.approx(sk.cage_speed_ratio * WS, rel=1e-12)
+    a = r.acceleration_x - r.acceleration_x.mean()
+    x = a + np.random.default_rng(4).normal(scale=np.sqrt(np.mean(a * a)), size=a.size)
+    est = S.estimate_cage_speed(x, fs, WS / (2 * math.pi), params.n_balls,
+                                params.theoretical_cage_speed_ratio)
+    assert est.detected
+    assert est.csr == pytest.approx(sk.cage_speed_ratio, rel=5e-3)
