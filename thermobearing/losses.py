@@ -17,6 +17,8 @@ Functions
 :func:`loss_breakdown`  results of the heat sources -> tidy DataFrame
 :func:`compute_losses`  run named sources on a context -> tidy DataFrame
 :func:`loss_totals`     per point: load-dependent, load-independent, total [W]
+:func:`by_source`       per point and source: power and share of the total
+:func:`role_map`        role -> node names of a thermal network
 """
 
 from __future__ import annotations
@@ -32,6 +34,12 @@ from .heat_sources import HeatContext, HeatResult, evaluate
 COLUMNS = ("point", "source", "component", "role", "node", "loss class", "power [W]")
 
 
+def role_map(network: Any, group: str | None = None) -> dict[str, str]:
+    """Role -> node name(s) of a :class:`thermobearing.network.ThermalNetwork` (joined by
+    ", " where a role is carried by several nodes, which then share its heat equally)."""
+    return {role: ", ".join(nodes) for role, nodes in network.roles(group).items()}
+
+
 def loss_breakdown(results: Iterable[HeatResult], *, point: Any = 0,
                    role_to_node: Mapping[str, str] | None = None) -> pd.DataFrame:
     """Tidy breakdown of heat-source results at one operating point.
@@ -42,7 +50,8 @@ def loss_breakdown(results: Iterable[HeatResult], *, point: Any = 0,
     point : label of the operating point (e.g. axial load, step index).
     role_to_node : the thermal network's role -> node map (e.g. four-node template of paper
         002: outer_ring -> housing, inner_ring -> shaft, elements -> balls, cage/oil -> oil);
-        without it the node column repeats the role. A role missing from the map raises
+        without it the node column repeats the role (:func:`role_map` builds the map from a
+        ``ThermalNetwork``). A role missing from the map raises
         :class:`~thermobearing.errors.InputError` (a heat source naming a node the network
         lacks).
 

@@ -50,3 +50,18 @@ def test_component_roles_must_add_up():
     with pytest.raises(InputError, match="component_roles"):
         HeatResult(source="s", power_by_role={"oil": 2.0}, components={"c": 2.0},
                    component_roles={"c": {"oil": 1.0}})
+
+
+def test_role_map_from_a_network():
+    from thermobearing.losses import role_map
+    from thermobearing.network import ThermalNetwork
+
+    net = ThermalNetwork()
+    net.add_node("housing", capacity=1.0, role="outer_ring")
+    net.add_node("shaft", capacity=1.0, role="inner_ring")
+    net.add_node("balls", capacity=1.0, role="elements")
+    net.add_node("oil", capacity=1.0, role=["cage", "oil"])
+    m = role_map(net)
+    assert m == FOUR_NODE
+    df = loss_breakdown(_results(), role_to_node=m)
+    assert set(df.node) == {"housing", "shaft", "balls", "oil"}
