@@ -31,7 +31,7 @@ from typing import Any
 
 import pandas as pd
 
-TABLES = ("temperatures", "losses", "kinematics", "energy", "film")
+TABLES = ("temperatures", "steady_temperatures", "losses", "kinematics", "energy", "film")
 
 
 @dataclass

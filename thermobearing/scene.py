@@ -52,7 +52,8 @@ Layout (every table optional unless marked)::
     [solver]
     stepper = "tr_bdf2"
     rtol = 1e-4
-    kinematics_tolerance = 0.01        # relative change of losses that triggers a re-solve
+    kinematics_tolerance = 0.01        # relative viscosity change that triggers a re-solve
+    chunk = "60 s"                     # coupling interval: heat re-linearised, output row
 
     [outputs]
     mode = "transient"                 # transient | steady
@@ -387,6 +388,7 @@ class Solver:
     atol: float = 1e-3
     kinematics_tolerance: float = 0.01
     max_step: float = 600.0
+    chunk: float = 60.0
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Solver:
@@ -401,16 +403,17 @@ class Solver:
                 if not v > 0:
                     raise InputError(f"solver.{key}", data[key], "a value > 0")
                 kw[key] = v
-        if "max_step" in data:
-            kw["max_step"] = to_si(data["max_step"], "time", field="solver.max_step")
-            if kw["max_step"] <= 0:
-                raise InputError("solver.max_step", data["max_step"], "a time > 0")
+        for key in ("max_step", "chunk"):
+            if key in data:
+                kw[key] = to_si(data[key], "time", field=f"solver.{key}")
+                if kw[key] <= 0:
+                    raise InputError(f"solver.{key}", data[key], "a time > 0")
         return cls(**kw)
 
     def to_dict(self) -> dict[str, Any]:
         return {"stepper": self.stepper, "rtol": self.rtol, "atol": self.atol,
                 "kinematics_tolerance": self.kinematics_tolerance,
-                "max_step": _fmt(self.max_step, "s")}
+                "max_step": _fmt(self.max_step, "s"), "chunk": _fmt(self.chunk, "s")}
 
 
 @dataclass(frozen=True)

@@ -90,8 +90,7 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
     from .film import FILM
     from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
 
-    allowed = {"kinematics", "film", "traction", "heat_sources", "params", "control",
-               "heat_model"}
+    allowed = {"kinematics", "film", "heat_sources", "control", "churning_heat_to"}
     for key in scene.models:
         if key not in allowed:
             raise InputError(f"models.{key}", scene.models[key],
@@ -119,9 +118,9 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
             add(HEAT_SOURCES, name, "power loss")
     if need["network"]:
         from .network import STEPPERS
-        from .network.templates import NETWORK_TEMPLATES
+        from .network.templates import TEMPLATES
 
-        add(NETWORK_TEMPLATES, scene.network.get("template", "four_node_paper002"),
+        add(TEMPLATES, scene.network.get("template", "four_node_paper002"),
             "thermal network")
         if need["transient"]:
             add(STEPPERS, scene.solver.stepper, "transient temperatures")
@@ -134,6 +133,7 @@ class _Bearing:
     """One bearing of the scene with its models and warm-start memory."""
 
     name: str
+    key: str
     bearing: Any
     is_ball: bool
     sources: tuple[str, ...]
@@ -185,12 +185,16 @@ class Simulation:
             opts = dict(kin_options)
             if kin_name == "skidding" and is_ball:
                 opts["params"] = _ball_parameters(b, scene)
-            self.bearings.append(_Bearing(spec.name, b, is_ball,
+            key = repr((spec.preset, spec.path, sorted(spec.overrides.items())))
+            self.bearings.append(_Bearing(spec.name, key, b, is_ball,
                                           heat_source_names(scene, is_ball), kin_name, opts))
         self.chain = plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
         self.needs = _needs(scene)
         self.network = None
         self.warnings: list[str] = []
+        # identical bearings (same preset and overrides) at the same state share results
+        self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
+        self._heat_memo: dict[tuple[Any, ...], _Evaluation] = {}
 
     # ------------------------------------------------------------------ chain
     def describe_chain(self, with_citations: bool = False) -> str:
@@ -219,6 +223,10 @@ class Simulation:
         if (b.last is not None and b.last_step == step_index
                 and abs(visc / b.last_viscosity - 1.0) <= tol):
             return b.last
+        shared = self._kin_shared.get((b.key, step_index))
+        if shared is not None and abs(visc / shared[0] - 1.0) <= tol:
+            b.last, b.last_viscosity, b.last_step = shared[1], shared[0], step_index
+            return shared[1]
         op = self._operating(step)
         fn = KINEMATICS.get(b.kinematics_name)
         guess = b.last if b.last is not None else None
@@ -239,6 +247,7 @@ class Simulation:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
                                    res.residual_norm, "at step", {"step": step_index})
         b.last, b.last_viscosity, b.last_step = res, visc, step_index
+        self._kin_shared[(b.key, step_index)] = (visc, res)
         b.solves += 1
         return res
 
@@ -250,13 +259,21 @@ class Simulation:
 
     def _heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
               temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
-        """Heat of the bearing's sources at the given role temperatures."""
+        """Heat of the bearing's sources at the given role temperatures (memoised: two
+        identical bearings in the same state are evaluated once)."""
         from .heat_sources import HeatContext, evaluate
+
+        memo_key = (b.key, step, id(kin), tuple(sorted(temps.items())), with_rows)
+        hit = self._heat_memo.get(memo_key)
+        if hit is not None:
+            return hit
+        if len(self._heat_memo) > 256:
+            self._heat_memo.clear()
 
         ctx = HeatContext(bearing=b.bearing, lubricant=self.lubricant, supply=self.supply,
                           operating=self._operating(step), temperatures=dict(temps),
                           kinematics=kin.state, traction=kin.traction,
-                          options=kin.heat_options)
+                          options=self._heat_options(kin))
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ValidityWarning)
             results = evaluate(b.sources, ctx)
@@ -272,7 +289,27 @@ class Simulation:
                     rows.append({"source": r.source, "component": comp,
                                  "power [W]": p,
                                  "load dependence": r.loss_class.get(comp, "")})
-        return _Evaluation(by_role, rows)
+        ev = _Evaluation(by_role, rows)
+        self._heat_memo[memo_key] = ev
+        return ev
+
+    def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:
+        """Heat-source options: those matching the kinematics' force models, plus where
+        churning heat is booked (``[models] churning_heat_to``).
+
+        ``"oil"`` (default): the viscous dissipation of churning and drag happens in the oil
+        and the oil stream carries it away, so all churning heat goes to the oil node.
+        ``"paper002"``: as paper 002 eqs. 22-25 book it (ball churning on the balls, inner
+        ring churning on the shaft, cage churning on the oil+cage node).
+        """
+        opts = {k: dict(v) for k, v in kin.heat_options.items()}
+        target = self.scene.models.get("churning_heat_to", "oil")
+        if target not in ("oil", "paper002"):
+            raise InputError("models.churning_heat_to", target, "'oil' or 'paper002'")
+        if target == "oil":
+            for src in ("churning_elements", "churning_inner_ring", "churning_cage"):
+                opts.setdefault(src, {})["role"] = "oil"
+        return opts
 
     # ------------------------------------------------------------------- run
     def run(self, out_dir: Path | str | None = None) -> Results:

@@ -1,0 +1,298 @@
+"""Coupled kinematics -> heat sources -> thermal network runs (transient and steady).
+
+Used by :class:`thermobearing.simulation.Simulation` when a scene asks for temperatures
+(see its module docstring for the algorithm). Kept apart so that the orchestrator stays
+short; it holds no physics: heat comes from the registered heat sources, temperatures
+from the network stepper.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import pandas as pd
+
+from .errors import ConvergenceError
+from .results import ResultsWriter
+from .scene import Step
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .simulation import Simulation, _Bearing
+
+ROLES = ("inner_ring", "outer_ring", "elements", "cage", "oil")
+
+
+def build_network(sim: Simulation) -> Any:
+    """The scene's thermal network: one template instance per bearing (group = bearing
+    name, node names prefixed ``<bearing>.``), sharing the ambient and oil-inlet boundaries.
+
+    ``[network] parameters`` are the template's parameters (unit strings allowed, converted
+    with the units the template registers); the ambient and oil-inlet temperatures and the
+    oil flow come from the scene's environment and supply.
+    """
+    from .errors import InputError
+    from .network.templates import TEMPLATES
+    from .units import to_si
+
+    scene = sim.scene
+    spec = dict(scene.network)
+    name = spec.pop("template", "four_node_paper002")
+    raw = dict(spec.pop("parameters", {}))
+    if spec:
+        key = next(iter(spec))
+        raise InputError(f"network.{key}", spec[key], "the keys 'template' and 'parameters'")
+    entry = TEMPLATES.entry(name)
+    params: dict[str, Any] = {}
+    for key, value in raw.items():
+        unit = entry.parameters.get(key)
+        if unit is None:
+            raise InputError(f"network.parameters.{key}", value,
+                             f"a parameter of template {name!r}: "
+                             + ", ".join(sorted(entry.parameters)))
+        if isinstance(value, str) and unit == "-":
+            params[key] = value
+        else:
+            params[key] = to_si(value, unit if unit != "-" else "dimensionless",
+                                field=f"network.parameters.{key}")
+    for key in ("ambient_temperature", "oil_inlet_temperature", "oil_flow"):
+        if key in params:
+            raise InputError(f"network.parameters.{key}", raw[key],
+                             "set in [environment] / [supply], not in the network")
+    net = None
+    for b in sim.bearings:
+        net = entry.obj(b.bearing, sim.lubricant, network=net, group=b.name,
+                        prefix=f"{b.name}.",
+                        ambient_temperature=scene.environment.ambient_temperature,
+                        oil_inlet_temperature=scene.supply.inlet_temperature,
+                        oil_flow=scene.supply.flow, **params)
+    net.validate()
+    return net
+
+
+@dataclass
+class _Linear:
+    """Affine heat model over the state nodes: q(T) = q0 + J (T - T0)."""
+
+    q0: np.ndarray
+    J: np.ndarray
+    T0: np.ndarray
+
+    def heat(self, t: float, T: np.ndarray) -> np.ndarray:
+        return self.q0 + self.J @ (T - self.T0)
+
+    def jac(self, t: float, T: np.ndarray) -> np.ndarray:
+        return self.J
+
+
+class _Coupler:
+    """Evaluates every bearing's heat on the network's state vector."""
+
+    def __init__(self, sim: Simulation, net: Any) -> None:
+        self.sim = sim
+        self.net = net
+        self.names = list(net.state_nodes)
+        self.index = {n: i for i, n in enumerate(self.names)}
+        self.role_nodes: dict[str, dict[str, list[int]]] = {}
+        for b in sim.bearings:
+            roles = net.roles(b.name)
+            self.role_nodes[b.name] = {r: [self.index[n] for n in roles.get(r, [])]
+                                       for r in ROLES}
+            missing = [r for r in ROLES if not self.role_nodes[b.name][r]]
+            if missing:
+                from .errors import InputError
+
+                raise InputError(f"network group {b.name!r} roles", missing,
+                                 "a node for every heat-source role "
+                                 "(inner_ring, outer_ring, elements, cage, oil)")
+
+    def role_temperatures(self, b: _Bearing, T: np.ndarray) -> dict[str, float]:
+        return {r: float(np.mean(T[idx])) for r, idx in self.role_nodes[b.name].items()}
+
+    def kinematics(self, step_index: int, step: Step, T: np.ndarray) -> None:
+        for b in self.sim.bearings:
+            self.sim._kinematics(b, step_index, step, self.role_temperatures(b, T))
+
+    def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray) -> np.ndarray:
+        q = np.zeros(len(self.names))
+        ev = self.sim._heat(b, step, b.last, self.role_temperatures(b, T))
+        return self.net.distribute(ev.by_role, group=b.name, out=q)
+
+    def heat(self, step: Step, T: np.ndarray) -> np.ndarray:
+        return sum((self._bearing_heat(b, step, T) for b in self.sim.bearings),
+                   np.zeros(len(self.names)))
+
+    def linearize(self, step: Step, T: np.ndarray, dT: float = 0.5) -> _Linear:
+        """Heat and its finite-difference Jacobian: each bearing's heat is differentiated
+        in its own group's node temperatures only (one evaluation per node)."""
+        n = len(T)
+        q0 = np.zeros(n)
+        J = np.zeros((n, n))
+        for b in self.sim.bearings:
+            qb = self._bearing_heat(b, step, T)
+            q0 += qb
+            cols = sorted({i for idx in self.role_nodes[b.name].values() for i in idx})
+            for j in cols:
+                Tp = T.copy()
+                Tp[j] += dT
+                J[:, j] += (self._bearing_heat(b, step, Tp) - qb) / dT
+        return _Linear(q0, J, T.copy())
+
+    def loss_rows(self, step_index: int, time_s: float, step: Step,
+                  T: np.ndarray) -> list[dict[str, Any]]:
+        from .simulation import step_columns
+
+        rows = []
+        for b in self.sim.bearings:
+            ev = self.sim._heat(b, step, b.last, self.role_temperatures(b, T), with_rows=True)
+            base = step_columns(step_index, time_s, b.name, step)
+            rows.extend({**base, **r} for r in ev.rows)
+        return rows
+
+
+def _temperature_row(t: float, names: list[str], T: np.ndarray) -> dict[str, float]:
+    row = {"time [s]": t, "time [min]": t / 60.0}
+    for n, v in zip(names, T, strict=True):
+        row[f"{n} [degC]"] = float(v) - 273.15
+    return row
+
+
+def run_coupled(sim: Simulation, writer: ResultsWriter | None
+                ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
+    """Transient or steady coupled run of the whole schedule (see Simulation)."""
+    net = build_network(sim)
+    sim.network = net
+    if sim.scene.outputs.mode == "steady":
+        return _run_steady(sim, net, writer)
+    return _run_transient(sim, net, writer)
+
+
+def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
+                   ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
+    from tqdm.auto import tqdm
+
+    from .network import TransientStepper
+    from .network.audit import EnergyAudit
+    from .simulation import kinematics_columns, step_columns
+
+    scene = sim.scene
+    solver = scene.solver
+    coupler = _Coupler(sim, net)
+    names = coupler.names
+    T = np.full(len(names), scene.environment.initial_temperature)
+    stepper = TransientStepper(net, method=solver.stepper, rtol=solver.rtol, atol=solver.atol,
+                               max_step=solver.max_step)
+    chunk = solver.chunk
+    t = 0.0
+    temp_rows = [_temperature_row(t, names, T)]
+    if writer:
+        writer.append("temperatures", temp_rows)
+    kin_rows: list[dict[str, Any]] = []
+    loss_rows: list[dict[str, Any]] = []
+    energy_rows: list[dict[str, Any]] = []
+    audits: list[EnergyAudit] = []
+    cum = dict.fromkeys(("generated", "stored", "to_boundaries", "to_streams"), 0.0)
+    relinearizations = 0
+    steps = scene.schedule.steps
+    bar = tqdm(total=scene.schedule.duration, disable=not sim.progress, desc="protocol",
+               unit="s", bar_format="{l_bar}{bar}| {n:.0f}/{total:.0f} s [{elapsed}]")
+    try:
+        for i, step in enumerate(steps):
+            n_chunks = max(1, math.ceil(step.duration / chunk - 1e-9))
+            h = step.duration / n_chunks
+            for k in range(n_chunks):
+                coupler.kinematics(i, step, T)
+                if k == 0:
+                    for b in sim.bearings:
+                        row = {**step_columns(i, t, b.name, step),
+                               **kinematics_columns(b.last)}
+                        kin_rows.append(row)
+                        if writer:
+                            writer.append("kinematics", [row])
+                lin = coupler.linearize(step, T)
+                relinearizations += 1
+                out = stepper.advance(t, T, h, lin.heat, lin.jac)
+                audits.append(out.audit)
+                T, t = out.temperatures, out.time
+                if not np.all(np.isfinite(T)):
+                    raise ConvergenceError("coupled transient", math.inf,
+                                           "non-finite temperature", {"time": t, "step": i})
+                row = _temperature_row(t, names, T)
+                temp_rows.append(row)
+                a = out.audit
+                for key in cum:
+                    cum[key] += float(np.sum(getattr(a, key)))
+                e_row = {"time [s]": t, "generated [J]": cum["generated"],
+                         "stored [J]": cum["stored"], "to ambient [J]": cum["to_boundaries"],
+                         "to oil [J]": cum["to_streams"],
+                         "imbalance [J]": cum["generated"] - cum["stored"]
+                         - cum["to_boundaries"] - cum["to_streams"]}
+                energy_rows.append(e_row)
+                if writer:
+                    writer.append("temperatures", [row])
+                    writer.append("energy", [e_row])
+                bar.update(h)
+            rows = coupler.loss_rows(i, t, step, T)
+            loss_rows.extend(rows)
+            if writer:
+                writer.append("losses", rows)
+    finally:
+        bar.close()
+    audit = EnergyAudit.concatenate(audits)
+    stats = {"steps": len(steps), "linearizations": relinearizations,
+             "relative_energy_imbalance": audit.relative_imbalance(),
+             **{f"stepper_{k}": v for k, v in stepper.stats.items()}}
+    tables = {"temperatures": pd.DataFrame(temp_rows), "kinematics": pd.DataFrame(kin_rows),
+              "losses": pd.DataFrame(loss_rows), "energy": pd.DataFrame(energy_rows)}
+    return tables, stats
+
+
+def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
+                ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
+    """Each schedule step as its own steady operating point (coupled fixed point)."""
+    from .network import solve_steady
+    from .simulation import kinematics_columns, step_columns
+
+    coupler = _Coupler(sim, net)
+    names = coupler.names
+    T = np.full(len(names), sim.scene.environment.initial_temperature)
+    temp_rows, kin_rows, loss_rows = [], [], []
+    outer_iterations = 0
+    for i, step in enumerate(sim.scene.schedule.steps):
+        for _ in range(1, 31):
+            coupler.kinematics(i, step, T)
+            lin = coupler.linearize(step, T)
+            res = solve_steady(net, lin.heat, T_guess=T, heat_jacobian=lin.jac)
+            T_new = np.array([res.temperatures[n] for n in names])
+            change = float(np.max(np.abs(T_new - T)))
+            T = T_new
+            outer_iterations += 1
+            if change < 1e-3:
+                break
+        else:
+            raise ConvergenceError("coupled steady state", change,
+                                   "temperatures still move after 30 kinematics updates",
+                                   {"step": i})
+        for b in sim.bearings:
+            kin_rows.append({**step_columns(i, 0.0, b.name, step),
+                             **kinematics_columns(b.last)})
+        row = {"step": i, **_temperature_row(0.0, names, T)}
+        temp_rows.append(row)
+        rows = coupler.loss_rows(i, 0.0, step, T)
+        loss_rows.extend(rows)
+        if writer:
+            writer.append("steady_temperatures", [row])
+            writer.append("kinematics", kin_rows[-len(sim.bearings):])
+            writer.append("losses", rows)
+    tables = {"steady_temperatures": pd.DataFrame(temp_rows),
+              "kinematics": pd.DataFrame(kin_rows), "losses": pd.DataFrame(loss_rows)}
+    return tables, {"steps": len(sim.scene.schedule.steps),
+                    "outer_iterations": outer_iterations}
+
+
+def role_map(net: Any, group: str) -> Mapping[str, list[str]]:
+    """Role -> nodes of one bearing (for reports)."""
+    return net.roles(group)
