@@ -495,8 +495,13 @@ def solve_model(
     tol: float = 1e-9,
     max_iter: int = 60,
     load_x0: tuple[float, float] | None = None,
+    fallback: bool = True,
 ) -> RollerSkiddingResult:
-    """Solve the Z + 1 equations for a prepared :class:`RollerModel` (see :func:`solve_roller`)."""
+    """Solve the Z + 1 equations for a prepared :class:`RollerModel` (see :func:`solve_roller`).
+
+    ``fallback=False`` skips the (slow, robust) bracketed solve when Newton fails and raises
+    the ConvergenceError at once.
+    """
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
 
@@ -535,7 +540,7 @@ def solve_model(
             best = (x, e, norm, it, ok, ld)
         if ok:
             break
-    if not best[4]:
+    if not best[4] and fallback:
         # robust fallback: roller equations by vectorised bisection inside a bracketed
         # (Brent) solve of the cage equation, then a Newton polish
         x, e, norm, it, ok, ld = _nested(model, omega, loads, psi, whirl_acceleration, tol,
