@@ -1,0 +1,412 @@
+"""Isothermal numerical EHL of a line contact: dimensionless (Moes M, L) and dimensional front ends.
+
+The discrete problem and the Newton solvers are in :mod:`thermobearing.ehl.solver`; this module
+picks the domain and grids, runs nested iteration (a robust implicit time march to the steady
+state on a coarse grid, then Newton on successively doubled grids from the interpolated
+solution), estimates the discretisation error from the last two grids, and returns dimensional
+profiles, films, pressures and the traction split of paper 000 eq. 5.
+
+Conventions (contract): E' = 2/((1-v1^2)/E1 + (1-v2^2)/E2); entrainment speed
+``u_m = (u1 + u2)/2``; slide-to-roll ratio ``(u1 - u2)/u_m``. Dimensionless groups (Hamrock):
+``U = eta0 u_m/(E' R)``, ``W = w'/(E' R)`` (w' load per unit length), ``G = alpha E'``; Moes:
+``M = W (2U)^-1/2``, ``L = G (2U)^1/4``, ``H_Moes = (h/R)(2U)^-1/2``. Hertz:
+``b = R sqrt(8W/pi)``, ``p_H = E' sqrt(W/(2 pi))``. Then ``lam = 3 pi^2/(8 M^2)``,
+``alpha p_H = L sqrt(M/(2 pi))`` and ``H_Moes = (8M/pi) h R/b^2``.
+
+References: paper 000 (seed ``000_3b5ca6eed61dd596.txt``) eqs. 5, 7-11; Venner & Lubrecht,
+Multilevel Methods in Lubrication (2000); Moes (1992).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError, check_positive, check_range
+from .solver import LineProblem, NewtonReport, Rheology, newton_solve, time_march
+
+#: Range of the Moes parameters over which the solver is tested (BM-6 and unit tests).
+M_RANGE = (1.0, 3000.0)
+L_RANGE = (0.0, 40.0)
+_POINTER = (
+    "use a closed-form film model instead (thermobearing.film: moes_line_central, "
+    "dowson_higginson_minimum, pan_hamrock_minimum)"
+)
+
+
+@dataclass(frozen=True)
+class LineEHLSolution:
+    """Solution of a line-contact EHL problem (SI unless marked dimensionless).
+
+    Attributes
+    ----------
+    x : node coordinates in the rolling direction [m] (0 at the Hertz centre).
+    pressure : film pressure [Pa].
+    film : film thickness [m].
+    viscosity : viscosity at the nodes [Pa s] (film mean in the thermal case).
+    central_film, minimum_film : film at x = 0 and its minimum [m].
+    max_pressure : maximum pressure [Pa].
+    hertz_half_width, hertz_pressure : b [m], p_H [Pa].
+    M, L : Moes parameters [-].
+    n : number of nodes; dx : node spacing [m].
+    error_estimate : Richardson estimate of the relative error of ``central_film`` from the
+        last two grids (second order) [-].
+    central_film_extrapolated : ``h_c`` Richardson-extrapolated from the last two grids [m].
+    entrainment_speed : u_m [m/s].
+    report : Newton statistics; seconds : wall time [s].
+    X, P, H : dimensionless profiles (x/b, p/p_H, h R/b^2).
+    """
+
+    x: np.ndarray
+    pressure: np.ndarray
+    film: np.ndarray
+    viscosity: np.ndarray
+    central_film: float
+    minimum_film: float
+    max_pressure: float
+    hertz_half_width: float
+    hertz_pressure: float
+    M: float
+    L: float
+    n: int
+    dx: float
+    error_estimate: float
+    central_film_extrapolated: float
+    entrainment_speed: float
+    reduced_radius: float
+    report: NewtonReport
+    seconds: float
+    X: np.ndarray = field(repr=False)
+    P: np.ndarray = field(repr=False)
+    H: np.ndarray = field(repr=False)
+
+    @property
+    def central_film_moes(self) -> float:
+        """Central film in Moes' scaling ``H = (h_c/R)(2U)^-1/2`` [-]."""
+        return 8.0 * self.M / math.pi * float(np.interp(0.0, self.X, self.H))
+
+    def traction(
+        self, slide_to_roll: float, limiting_shear_coefficient: float | None = None
+    ) -> Traction:
+        """Film force per unit length on surface 1 in the rolling direction (paper 000 eq. 5).
+
+        ``T = -int (h/2) dp/dx dx + (u2 - u1) int eta/h dx``: the first (Poiseuille, rolling)
+        term, the second (Couette, sliding) term, with ``u2 - u1 = -SRR u_m``. Newtonian: at
+        Hertzian pressures the Couette stress ``eta du/h`` is unbounded in practice, so an
+        optional limiting shear stress ``tau_L = limiting_shear_coefficient * p`` (Bair & Winer
+        1979 form, ``tau_L/p`` about 0.05-0.1) caps it node by node. In the cavitated outlet
+        the Couette term is scaled by the film fill fraction (mass conservation of the
+        rupture flux).
+
+        Parameters
+        ----------
+        slide_to_roll : (u1 - u2)/u_m [-].
+        limiting_shear_coefficient : tau_L/p [-], or None for the Newtonian law.
+
+        Returns
+        -------
+        Traction : per-unit-length forces [N/m] (multiply by the contact length).
+        """
+        x, p, h, eta = self.x, self.pressure, self.film, self.viscosity
+        du = -float(slide_to_roll) * self.entrainment_speed  # u2 - u1
+        dpdx = np.gradient(p, x)
+        poise = -float(np.trapezoid(0.5 * h * dpdx, x))
+        # fill fraction after the rupture point (last pressurised node)
+        pos = np.nonzero(p > 0)[0]
+        fill = np.ones_like(h)
+        if pos.size:
+            k = pos[-1] + 1
+            if k < h.size:
+                fill[k:] = np.minimum(1.0, h[k] / h[k:])
+        tau = eta * du / h
+        if limiting_shear_coefficient is not None:
+            lim = limiting_shear_coefficient * np.maximum(p, 0.0)
+            tau = np.where(p > 0, np.sign(tau) * np.minimum(np.abs(tau), lim), tau)
+        couette = float(np.trapezoid(tau * fill, x))
+        return Traction(poise, couette, poise + couette)
+
+
+@dataclass(frozen=True)
+class Traction:
+    """Film force per unit length on surface 1 (paper 000 eq. 5) [N/m]."""
+
+    poiseuille: float
+    couette: float
+    total: float
+
+
+def default_domain(M: float) -> tuple[float, float]:
+    """Inlet and outlet of the domain in Hertz half-widths for a given M.
+
+    Heavily loaded contacts build pressure close to the Hertz zone; light loads need a
+    longer inlet (the inlet meniscus sits farther upstream in units of b). The choice is
+    checked by the Moes comparison (tests) and by ``tests/unit/ehl`` domain checks.
+    """
+    if M >= 50.0:
+        return -2.5, 1.5
+    if M >= 5.0:
+        return -4.5, 1.5
+    return -8.0, 2.0
+
+
+def _initial_guess(prob: LineProblem, hc_guess: float) -> tuple[np.ndarray, float]:
+    X = prob.x
+    P = np.sqrt(np.maximum(1.0 - X**2, 0.0))
+    base = prob.x2 + prob.kernel.apply(P)
+    return P, hc_guess - float(np.interp(0.0, X, base))
+
+
+def _moes_dimensionless(M: float, L: float) -> float:
+    """Moes central film H(M, L) evaluated through :func:`thermobearing.film.moes_line_central`."""
+    from ..film import moes_line_central
+
+    # any dimensional case with these M, L: unit E', R, length; U = 1e-10
+    two_u = 2e-10
+    w = M * math.sqrt(two_u)
+    g = L / two_u**0.25
+    h = moes_line_central(
+        two_u / 2, 1.0, g, w, 1.0, 1.0, effective_modulus=1.0
+    ) if L > 0 else moes_line_central(two_u / 2, 1.0, 1e-30, w, 1.0, 1.0, effective_modulus=1.0)
+    return float(h) / math.sqrt(two_u)
+
+
+def solve_dimensionless(
+    M: float,
+    L: float,
+    *,
+    n: int = 1024,
+    rheology: Rheology | None = None,
+    domain: tuple[float, float] | None = None,
+    coarse_n: int | None = None,
+    linear: str = "krylov",
+    max_grid_error: float = 0.05,
+    f_e: np.ndarray | None = None,
+    f_r: np.ndarray | None = None,
+    initial: tuple[np.ndarray, np.ndarray, float] | None = None,
+    reference: tuple[float, float, float, float] = (1.0, 1.0, 1.0, 1.0),
+) -> LineEHLSolution:
+    """Solve the isothermal line-contact EHL problem for Moes parameters ``M``, ``L``.
+
+    Parameters
+    ----------
+    M, L : Moes load and lubricant parameters [-] (``M_RANGE``, ``L_RANGE``).
+    n : number of nodes on the finest grid (>= 64).
+    rheology : :class:`Rheology`; default Barus with ``alpha p_H = L sqrt(M/(2 pi))``,
+        incompressible (the setting of Moes' fit).
+    domain : (x_in, x_out) in Hertz half-widths; default :func:`default_domain`.
+    coarse_n : grid of the initial time march (default: n/4, at least 128).
+    linear : ``"krylov"`` (fast) or ``"dense"`` (baseline) Newton linear solver.
+    max_grid_error : raise if the Richardson error estimate of h_c exceeds this [-].
+    f_e, f_r : thermal factors at the finest-grid nodes (see :mod:`.solver`), or None.
+    initial : (X, P, H0) of a previous solution to start from (skips the time march).
+    reference : (R [m], b [m], p_H [Pa], eta0 [Pa s]) to make the outputs dimensional; the
+        default 1's give dimensionless outputs (x = X, p = P, h = H R/b^2 ...).
+
+    Raises
+    ------
+    InputError : M or L outside the tested range, or n too small for the Hertz zone.
+    ConvergenceError : Newton / time march failure, or the grid error estimate above
+        ``max_grid_error``; the message gives M, L, the residual and a pointer to the
+        closed-form models.
+    """
+    check_range("M", M, *M_RANGE, unit="(Moes load parameter; " + _POINTER + ")")
+    check_range("L", L, *L_RANGE, unit="(Moes lubricant parameter; " + _POINTER + ")")
+    x_in, x_out = domain if domain is not None else default_domain(M)
+    nodes_in_hertz = 2.0 * (n - 1) / (x_out - x_in)
+    if n < 64 or nodes_in_hertz < 24:
+        raise InputError("n", n, f"at least 64 nodes and 24 across the Hertz zone ({_POINTER})")
+    if rheology is None:
+        rheology = Rheology(law="barus", alpha_bar=L * math.sqrt(M / (2 * math.pi)),
+                            compressible=False)
+    lam = 3.0 * math.pi**2 / (8.0 * M**2)
+    t0 = time.perf_counter()
+    levels = [n]
+    cn = coarse_n or max(512 if M >= 300 else 128, n // 4)
+    while levels[-1] // 2 >= cn:
+        levels.append(levels[-1] // 2)
+    levels = levels[::-1]
+    xs_fine = np.linspace(x_in, x_out, n)
+
+    def factors(nk: int, arr: np.ndarray | None) -> np.ndarray | None:
+        if arr is None:
+            return None
+        return np.interp(np.linspace(x_in, x_out, nk), xs_fine, arr)
+
+    hc_levels: list[float] = []
+    hm_levels: list[float] = []
+    its = lin = 0
+    P = H0 = X = None
+    state = {"M": M, "L": L}
+    try:
+        for k, nk in enumerate(levels):
+            prob = LineProblem(nk, x_in, x_out, lam, rheology, factors(nk, f_e), factors(nk, f_r))
+            lin_k = "dense" if nk <= 384 else linear
+            if k == 0:
+                if initial is not None:
+                    Xi, Pi, H0i = initial
+                    Pg = np.interp(prob.x, Xi, Pi)
+                    try:
+                        P, H0, rep = newton_solve(prob, Pg, H0i, linear=lin_k, tol=1e-8)
+                    except ConvergenceError:
+                        P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2)
+                else:
+                    P0, H00 = _initial_guess(prob, _moes_dimensionless(M, L) * math.pi / (8 * M))
+                    P, H0, rep = time_march(prob, P0, H00, linear=lin_k)
+            else:
+                Pg = np.interp(prob.x, X, P)
+                try:
+                    P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=1e-8)
+                except ConvergenceError:
+                    P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5)
+            its += rep.iterations
+            lin += rep.linear_iterations
+            X = prob.x
+            H = prob.film(P, H0)
+            hc_levels.append(float(np.interp(0.0, X, H)))
+            hm_levels.append(float(H.min()))
+    except ConvergenceError as err:
+        raise ConvergenceError(
+            "ehl.line", err.residual,
+            f"line-contact EHL failed for M={M:.4g}, L={L:.4g}: {err}; {_POINTER}",
+            {"M": M, "L": L, "n": n},
+        ) from err
+    seconds = time.perf_counter() - t0
+    if len(hc_levels) >= 2:
+        diff = hc_levels[-1] - hc_levels[-2]
+        hc_ex = hc_levels[-1] + diff / 3.0
+        err_est = abs(diff / 3.0) / abs(hc_ex)
+    else:
+        hc_ex, err_est = hc_levels[-1], math.nan
+    if not (math.isfinite(err_est) and err_est <= max_grid_error):
+        raise ConvergenceError(
+            "ehl.line", err_est,
+            f"grid too coarse: estimated central-film error {err_est:.1%} > {max_grid_error:.0%}"
+            f" at n={n} for M={M:.4g}, L={L:.4g}; increase n or {_POINTER}", state,
+        )
+    R, b, pH, eta0 = reference
+    eta, _ = rheology.viscosity(P)
+    H = prob.film(P, H0)
+    scale_h = b * b / R
+    return LineEHLSolution(
+        x=X * b, pressure=P * pH, film=H * scale_h, viscosity=eta * eta0,
+        central_film=hc_levels[-1] * scale_h, minimum_film=hm_levels[-1] * scale_h,
+        max_pressure=float(P.max()) * pH, hertz_half_width=b, hertz_pressure=pH,
+        M=M, L=L, n=n, dx=prob.dx * b, error_estimate=err_est,
+        central_film_extrapolated=hc_ex * scale_h, entrainment_speed=state.get("u", 0.0),
+        reduced_radius=R, report=NewtonReport(its, rep.residual, lin, True), seconds=seconds,
+        X=X, P=P, H=H,
+    )
+
+
+@dataclass(frozen=True)
+class LineContactCase:
+    """Dimensional line contact and its dimensionless groups (SI).
+
+    Attributes: load_per_length w' [N/m], radius R [m], effective_modulus E' [Pa],
+    entrainment_speed u_m [m/s], viscosity eta0 [Pa s], alpha [1/Pa], roelands_z [-] or None,
+    U, W, G, M, L [-], half_width b [m], hertz_pressure p_H [Pa].
+    """
+
+    load_per_length: float
+    radius: float
+    effective_modulus: float
+    entrainment_speed: float
+    viscosity: float
+    alpha: float
+    roelands_z: float | None
+    U: float
+    W: float
+    G: float
+    M: float
+    L: float
+    half_width: float
+    hertz_pressure: float
+
+    def rheology(self, compressible: bool = True) -> Rheology:
+        """Roelands (if ``roelands_z``) or Barus viscosity; Dowson-Higginson density."""
+        if self.roelands_z is not None:
+            return Rheology(law="roelands", roelands_a=math.log(self.viscosity) + 9.67,
+                            roelands_z=self.roelands_z, hertz_pressure=self.hertz_pressure,
+                            compressible=compressible)
+        return Rheology(law="barus", alpha_bar=self.alpha * self.hertz_pressure,
+                        hertz_pressure=self.hertz_pressure, compressible=compressible)
+
+
+def line_contact_case(
+    load_per_length: float,
+    radius: float,
+    effective_modulus: float,
+    entrainment_speed: float,
+    viscosity: float,
+    *,
+    alpha: float | None = None,
+    roelands_z: float | None = None,
+) -> LineContactCase:
+    """Build the dimensionless groups of a line contact.
+
+    Parameters
+    ----------
+    load_per_length : w' [N/m]; radius : reduced radius R_x [m]; effective_modulus : E' [Pa];
+    entrainment_speed : u_m = (u1+u2)/2 [m/s]; viscosity : eta0 at the inlet [Pa s];
+    alpha : pressure-viscosity coefficient [1/Pa] (Barus, or the Roelands-equivalent
+        ``z (ln eta0 + 9.67)/p0`` if only ``roelands_z`` is given);
+    roelands_z : Roelands index z [-]; if given the Roelands law (paper 000 eq. 9) is used.
+    """
+    for name, v in (("load_per_length", load_per_length), ("radius", radius),
+                    ("effective_modulus", effective_modulus),
+                    ("entrainment_speed", entrainment_speed), ("viscosity", viscosity)):
+        check_positive(name, v)
+    if alpha is None and roelands_z is None:
+        raise InputError("alpha", None, "alpha [1/Pa] or roelands_z must be given")
+    if alpha is None:
+        alpha = roelands_z * (math.log(viscosity) + 9.67) / 1.96e8
+    check_positive("alpha", alpha, allow_zero=True)
+    U = viscosity * entrainment_speed / (effective_modulus * radius)
+    W = load_per_length / (effective_modulus * radius)
+    G = alpha * effective_modulus
+    M = W / math.sqrt(2 * U)
+    L = G * (2 * U) ** 0.25
+    b = radius * math.sqrt(8 * W / math.pi)
+    pH = effective_modulus * math.sqrt(W / (2 * math.pi))
+    return LineContactCase(load_per_length, radius, effective_modulus, entrainment_speed,
+                           viscosity, alpha, roelands_z, U, W, G, M, L, b, pH)
+
+
+def solve_line_contact(
+    load_per_length: float,
+    radius: float,
+    effective_modulus: float,
+    entrainment_speed: float,
+    viscosity: float,
+    *,
+    alpha: float | None = None,
+    roelands_z: float | None = None,
+    compressible: bool = True,
+    n: int = 1024,
+    linear: str = "krylov",
+    max_grid_error: float = 0.05,
+    domain: tuple[float, float] | None = None,
+) -> LineEHLSolution:
+    """Isothermal Newtonian EHL of a line contact, dimensional front end.
+
+    Parameters as :func:`line_contact_case`; ``compressible`` applies Dowson-Higginson
+    (paper 000 eq. 10); ``n`` nodes on the finest grid. See :func:`solve_dimensionless` for
+    the errors raised. Returns a :class:`LineEHLSolution` in SI units.
+    """
+    case = line_contact_case(load_per_length, radius, effective_modulus, entrainment_speed,
+                             viscosity, alpha=alpha, roelands_z=roelands_z)
+    sol = solve_dimensionless(
+        case.M, case.L, n=n, rheology=case.rheology(compressible), linear=linear,
+        max_grid_error=max_grid_error, domain=domain,
+        reference=(radius, case.half_width, case.hertz_pressure, viscosity),
+    )
+    return _with_speed(sol, entrainment_speed)
+
+
+def _with_speed(sol: LineEHLSolution, u: float) -> LineEHLSolution:
+    from dataclasses import replace
+
+    return replace(sol, entrainment_speed=float(u))
