@@ -49,6 +49,15 @@ def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str
         out[f"ptp_ratio_slip_{tag}"] = st.ptp / base.ptp
         out[f"rms_ratio_slip_{tag}"] = st.rms / base.rms
         out[f"kurtosis_ratio_slip_{tag}"] = st.kurtosis / base.kurtosis
+    # Fig. 12 table: statistics at every (mu_m, s_c) pair, printed by `validate`
+    for mu in inputs.get("fig12_mu_max", []):
+        law = make_traction_law("linear_saturating", mu_max=float(mu),
+                                slip_speed_max=kw["traction"].slip_speed_max)
+        for slip in inputs.get("fig12_slips", []):
+            st = V.simulate(params, ws, load, cage_slip=float(slip),
+                            **{**kw, "traction": law}).statistics_x
+            tag = f"mu{float(mu):g}_slip_{100 * float(slip):g}pct"
+            out[f"ptp_{tag}"], out[f"rms_{tag}"], out[f"kurtosis_{tag}"] = st
     return out
 
 
