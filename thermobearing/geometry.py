@@ -180,6 +180,19 @@ def _check_envelope(prefix: str, bore: float, outer: float, width: float, elemen
                          f"{element:.6g} m on the pitch circle (they would overlap)")
 
 
+def _check_rings(bearing: Any) -> None:
+    """The raceways must lie inside the ring envelope (rings of positive thickness)."""
+    if bearing.inner_raceway_diameter <= bearing.bore:
+        raise InputError("bearing.pitch_diameter", bearing.pitch_diameter,
+                         f"a value leaving an inner ring: raceway diameter "
+                         f"{bearing.inner_raceway_diameter:.6g} m <= bore {bearing.bore:.6g} m")
+    if bearing.outer_raceway_diameter >= bearing.outer_diameter:
+        raise InputError("bearing.pitch_diameter", bearing.pitch_diameter,
+                         f"a value leaving an outer ring: raceway diameter "
+                         f"{bearing.outer_raceway_diameter:.6g} m >= outer diameter "
+                         f"{bearing.outer_diameter:.6g} m")
+
+
 def _cage_ratio(gamma: Any) -> Any:
     """Epicyclic cage/inner-ring speed ratio (1 - gamma)/2 (outer ring fixed)."""
     return 0.5 * (1.0 - gamma)
@@ -357,6 +370,7 @@ class BallBearing:
             raise InputError("bearing.contact_angle", self.contact_angle,
                              "0 for a deep-groove bearing (the free angle follows from the "
                              "clearance)")
+        _check_rings(self)
 
     def _derive_offset(self) -> float:
         """Arc-centre offset s [m] giving the nominal free diagonal contact angle.
@@ -706,6 +720,7 @@ class RollerBearing:
         if self.ribbed_ring not in ("inner", "outer", "both"):
             raise UnknownNameError("bearing.ribbed_ring", self.ribbed_ring,
                                    ("inner", "outer", "both"))
+        _check_rings(self)
 
     contact_angle = 0.0
 

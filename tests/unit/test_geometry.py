@@ -260,3 +260,11 @@ def test_with_clearance_keeps_gothic_arch() -> None:
     assert o.gothic_arch_offset == pytest.approx(b.gothic_arch_offset)
     d = geometry.load_bearing("SKF6304").with_clearance(5e-6)
     assert d.diametral_clearance == 5e-6
+
+
+def test_raceways_inside_the_rings() -> None:
+    # d_m = 31 mm with D = 11 mm: inner raceway 19.99 mm < bore 20 mm (no inner ring left)
+    with pytest.raises(InputError, match="pitch_diameter"):
+        bearing_from_dict(_ball_dict(pitch_diameter="31 mm", ball_diameter="11 mm"))
+    with pytest.raises(InputError, match="pitch_diameter"):
+        bearing_from_dict(_ball_dict(pitch_diameter="42.6 mm"))
