@@ -41,10 +41,11 @@ def _state(bearing, op, oil, temperature):
                                                 temperature=temperature)
 
 
-def _local(bearing, oil, op, ks, supply, temperature, sources=LOCAL):
+def _local(bearing, oil, op, ks, supply, temperature, sources=LOCAL, options=None):
     ctx = HeatContext.isothermal(
         temperature, bearing=bearing, lubricant=oil, supply=supply, operating=op,
-        kinematics=ks, traction=make_traction_law("eyring_limiting_shear", lubricant=oil))
+        kinematics=ks, traction=make_traction_law("eyring_limiting_shear", lubricant=oil),
+        options=options or {})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityWarning)
         return {r.source: r.total for r in evaluate(sources, ctx)}
@@ -64,20 +65,23 @@ def paper002_churning_flow_ratio(inputs: dict[str, Any], case_dir: Path) -> dict
     t_op = to_si(inputs["operating_temperature"], "temperature", field="operating_temperature")
     ks = _state(bearing, op, oil, t_op)
     out: dict[str, float] = {}
-    res = {}
-    for label, key in (("low", "low_flow"), ("high", "high_flow")):
-        flow = to_si(inputs[key], "volume_flow", field=key)
-        parts = _local(bearing, oil, op, ks, OilSupply("jet", flow, t_in), t_op)
-        churn = sum(parts[s] for s in CHURNING)
-        total = sum(parts.values())
-        res[label] = (churn, total)
-        out[f"churning_{label}_flow"] = churn
-        out[f"total_{label}_flow"] = total
-        out[f"churning_share_{label}_flow"] = churn / total
-    out["churning_ratio_low_over_high"] = res["low"][0] / res["high"][0]
-    out["total_ratio_low_over_high"] = res["low"][1] / res["high"][1]
-    out["churning_share_drop"] = (out["churning_share_high_flow"]
-                                  - out["churning_share_low_flow"])
+    # default: ball churning by paper 002 eq. 16 (SI); sensitivity: plain eq. 10 drag
+    for suffix, form in (("", "paper002"), ("_eq10_drag", "harris")):
+        res = {}
+        for label, key in (("low", "low_flow"), ("high", "high_flow")):
+            flow = to_si(inputs[key], "volume_flow", field=key)
+            parts = _local(bearing, oil, op, ks, OilSupply("jet", flow, t_in), t_op,
+                           options={"churning_elements": {"form": form}})
+            churn = sum(parts[s] for s in CHURNING)
+            total = sum(parts.values())
+            res[label] = (churn, total)
+            out[f"churning_{label}_flow{suffix}"] = churn
+            out[f"total_{label}_flow{suffix}"] = total
+            out[f"churning_share_{label}_flow{suffix}"] = churn / total
+        out[f"churning_ratio_low_over_high{suffix}"] = res["low"][0] / res["high"][0]
+        out[f"total_ratio_low_over_high{suffix}"] = res["low"][1] / res["high"][1]
+        out[f"churning_share_drop{suffix}"] = (out[f"churning_share_high_flow{suffix}"]
+                                               - out[f"churning_share_low_flow{suffix}"])
     return out
 
 
