@@ -25,6 +25,7 @@ from ..film import (
     dowson_higginson_minimum,
     equivalent_ellipticity_of_roller,
     hamrock_dowson_1977_minimum,
+    pan_hamrock_minimum,
     wilson_sheu_1983,
 )
 from ..geometry import RollerBearing, load_bearing
@@ -80,7 +81,8 @@ def _roller_loads(bearing: RollerBearing, radial_load: float, inner_speed: float
 
 @RUNNERS.register("paper001_film_closed_form",
                   references=["shi2015_tehl_roller", "hamrock_dowson1977",
-                              "dowson_higginson1966", "wilson_sheu1983", "palmgren1959"])
+                              "dowson_higginson1966", "pan_hamrock1989", "wilson_sheu1983",
+                              "palmgren1959"])
 def paper001_film_closed_form(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
     """Closed-form minimum films at the most loaded inner contact of D1842926 (paper 001)."""
     bearing = load_bearing(inputs.get("bearing", "D1842926"))
@@ -110,11 +112,14 @@ def paper001_film_closed_form(inputs: dict[str, Any], case_dir: Path) -> dict[st
                 u, eta, alpha, q_max, rx, ellipticity=k_eq, effective_modulus=e_prime))
             h_dh = float(dowson_higginson_minimum(u, eta, alpha, q_max, length, rx,
                                                   effective_modulus=e_prime))
+            h_ph = float(pan_hamrock_minimum(u, eta, alpha, q_max, length, rx,
+                                             effective_modulus=e_prime))
             phi = float(wilson_sheu_1983(u, eta, beta, k_f, slide_to_roll=0.0))
         out[f"max_roller_load_{tag}"] = q_max
         out[f"loaded_rollers_{tag}"] = float(np.count_nonzero(q > 0))
         out[f"hamrock_dowson_min_{tag}"] = h_hd
         out[f"dowson_higginson_min_{tag}"] = h_dh
+        out[f"pan_hamrock_min_{tag}"] = h_ph
         out[f"hamrock_dowson_wilson_sheu_min_{tag}"] = h_hd * phi
         out["roller_centrifugal_force"] = f_c
         out["wilson_sheu_factor"] = phi
