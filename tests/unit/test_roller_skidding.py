@@ -166,13 +166,13 @@ def test_whirl_fluctuation_grows_with_radius(nu214, oil):
     # paper 000 Fig. 4 (F_r = 200 N): the cage-speed amplitude grows with the whirl radius
     flucts = []
     for e in (0.0, 3e-5, 1e-4):
-        res = solve_roller(nu214, oil, OMEGA, 200.0, 0.0, T, whirl=Whirl(e, n_samples=12))
+        res = solve_roller(nu214, oil, OMEGA, 200.0, 0.0, T, whirl=Whirl(e, n_samples=8))
         assert res.converged
         flucts.append(res.cage_speed_stats.fluctuation)
         st = res.cage_speed_stats
         assert st.minimum <= st.mean <= st.maximum
         assert res.slip_stats.fluctuation >= 0
-        assert res.cage_speed.shape == (12,) and res.times.shape == (12,)
+        assert res.cage_speed.shape == (8,) and res.times.shape == (8,)
     assert flucts[0] < 1e-9 * OMEGA
     assert flucts[0] < flucts[1] < flucts[2]
 

@@ -23,8 +23,11 @@ contact loads (:mod:`thermobearing.loads_roller`); an unloaded roller has no inn
 Numerics: Newton-Raphson on the Z + 1 equations with a structured finite-difference
 Jacobian (roller blocks are scalar and coupled only through the cage: an "arrow" matrix,
 two extra residual evaluations per iteration, eliminated in O(Z)), backtracking line
-search, warm starts, and an outer fixed point for the centrifugal loads. Failure raises
-:class:`~thermobearing.errors.ConvergenceError` with the residual and the state.
+search, warm starts, and an outer fixed point for the centrifugal loads. When Newton stalls
+(heavy loads: the tractions saturate within a tiny slip and the cage equation jumps across
+pure rolling) a bracketed fallback solves each roller's moment balance by bisection inside a
+Brent solve of the cage equation. Failure raises :class:`~thermobearing.errors.ConvergenceError`
+with the residual and the state; so does a state without any inner-ring contact (no drive).
 
 Slip (paper eqs. 39-40): s_f = 1 - n / n_m, n_m = n_i (1 - D/d_m)/2.
 """
