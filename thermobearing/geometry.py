@@ -29,10 +29,8 @@ by the geometry of :meth:`BallBearing.free_contact_angle`).
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
-from dataclasses import MISSING as dataclasses_missing
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -46,8 +44,7 @@ from .errors import (
     check_range,
     check_temperature,
 )
-from .materials import Material, effective_modulus, get_material
-from .units import to_si
+from .materials import Material, effective_modulus
 
 BALL_KINDS = ("deep_groove", "angular_contact", "four_point")
 ROLLER_KINDS = ("cylindrical",)
@@ -867,164 +864,27 @@ Bearing = BallBearing | RollerBearing
 
 
 # ---------------------------------------------------------------------------
-# loading presets
+# loading presets (implementation in :mod:`thermobearing.bearing_config`)
 # ---------------------------------------------------------------------------
-#: field -> unit kind of the scalar fields of a bearing TOML (None: not a quantity).
-_LENGTH_FIELDS = (
-    "bore", "outer_diameter", "width", "ball_diameter", "pitch_diameter", "diametral_clearance",
-    "gothic_arch_offset", "inner_shoulder_diameter", "outer_shoulder_diameter",
-    "roller_diameter", "roller_length", "roller_effective_length", "crown_radius",
-    "end_face_crown_radius", "axial_clearance", "rib_height",
-)
-_ANGLE_FIELDS = ("contact_angle", "rib_angle")
-_PLAIN_FIELDS = ("inner_conformity", "outer_conformity")
-_INT_FIELDS = ("n_balls", "n_rollers")
-_TEXT_FIELDS = ("name", "kind", "source", "ribbed_ring")
-_TABLE_FIELDS = ("cage", "estimated", "ball_material", "roller_material", "ring_material",
-                 "notes")
-_CAGE_LENGTHS = ("guide_land_diameter", "guide_clearance", "land_width", "pocket_clearance",
-                 "width", "inner_diameter", "outer_diameter")
-_MATERIAL_KEYS = ("base", "name", "youngs_modulus", "poisson_ratio", "density", "specific_heat",
-                  "thermal_conductivity", "source", "estimated")
-_MATERIAL_UNITS = {"youngs_modulus": "pressure", "poisson_ratio": "dimensionless",
-                   "density": "density", "specific_heat": "specific_heat",
-                   "thermal_conductivity": "thermal_conductivity"}
-
-
 def configs_dir() -> Path:
     """The repository's ``configs`` folder."""
-    import thermobearing
+    from .bearing_config import configs_dir as _f
 
-    return Path(thermobearing.__file__).resolve().parents[1] / "configs"
+    return _f()
 
 
 def preset_names() -> list[str]:
     """Names of the bearing presets in ``configs/bearings``."""
-    folder = configs_dir() / "bearings"
-    return sorted(p.stem for p in folder.glob("*.toml")) if folder.is_dir() else []
+    from .bearing_config import preset_names as _f
 
-
-def _material(value: Any, field_name: str) -> Material:
-    if isinstance(value, Material):
-        return value
-    if isinstance(value, str):
-        return get_material(value)
-    if not isinstance(value, Mapping):
-        raise InputError(field_name, value, "a material name or a table of properties")
-    unknown = sorted(set(value) - set(_MATERIAL_KEYS))
-    if unknown:
-        raise InputError(f"{field_name}.{unknown[0]}", value[unknown[0]],
-                         "one of the keys " + ", ".join(_MATERIAL_KEYS))
-    base_name = value.get("base")
-    changes: dict[str, Any] = {}
-    for key, kind in _MATERIAL_UNITS.items():
-        if key in value:
-            changes[key] = to_si(value[key], kind, field=f"{field_name}.{key}")
-    if "source" in value:
-        changes["source"] = str(value["source"])
-    if "name" in value:
-        changes["name"] = str(value["name"])
-    if "estimated" in value:
-        changes["estimated"] = {str(k): str(v) for k, v in dict(value["estimated"]).items()}
-    if base_name is not None:
-        return replace(get_material(str(base_name)), **changes)
-    missing = [k for k in ("name", *_MATERIAL_UNITS, "source") if k not in changes]
-    if missing:
-        raise InputError(f"{field_name}.{missing[0]}", None,
-                         "a value (or give 'base' = a known material to inherit from)")
-    return Material(**changes)
-
-
-def _cage(data: Any) -> CageGeometry:
-    if not isinstance(data, Mapping):
-        raise InputError("cage", data, "a table")
-    allowed = ("guidance", *_CAGE_LENGTHS, "mass", "material", "source")
-    unknown = sorted(set(data) - set(allowed))
-    if unknown:
-        raise InputError(f"cage.{unknown[0]}", data[unknown[0]],
-                         "one of the keys " + ", ".join(allowed))
-    kwargs: dict[str, Any] = {"guidance": data.get("guidance", "rolling_element"),
-                              "source": str(data.get("source", ""))}
-    for key in _CAGE_LENGTHS:
-        if key in data:
-            kwargs[key] = to_si(data[key], "length", field=f"cage.{key}")
-    for key in ("width", "inner_diameter", "outer_diameter", "pocket_clearance"):
-        if key not in kwargs:
-            raise InputError(f"cage.{key}", None, "a value (required)")
-    if "mass" in data:
-        kwargs["mass"] = to_si(data["mass"], "mass", field="cage.mass")
-    if "material" in data:
-        kwargs["material"] = _material(data["material"], "cage.material")
-    return CageGeometry(**kwargs)
+    return _f()
 
 
 def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Bearing:
     """Build a bearing from a config mapping (unit strings allowed); unknown keys are errors."""
-    allowed = set(_LENGTH_FIELDS + _ANGLE_FIELDS + _PLAIN_FIELDS + _INT_FIELDS + _TEXT_FIELDS
-                  + _TABLE_FIELDS)
-    for key in data:
-        if key not in allowed:
-            raise InputError(f"{origin}.{key}", data[key],
-                             "a known bearing key: " + ", ".join(sorted(allowed)))
-    kind = data.get("kind")
-    if kind is None:
-        raise InputError(f"{origin}.kind", None, "one of " + ", ".join(BALL_KINDS + ROLLER_KINDS))
-    if kind not in BALL_KINDS + ROLLER_KINDS:
-        raise UnknownNameError(f"{origin}.kind", kind, BALL_KINDS + ROLLER_KINDS)
-    if not str(data.get("source", "")).strip():
-        raise InputError(f"{origin}.source", data.get("source"), "a non-empty source")
-    kw: dict[str, Any] = {}
-    for key in _LENGTH_FIELDS:
-        if key in data:
-            kw[key] = to_si(data[key], "length", field=f"{origin}.{key}")
-    for key in _ANGLE_FIELDS:
-        if key in data:
-            kw[key] = to_si(data[key], "angle", field=f"{origin}.{key}")
-    for key in _PLAIN_FIELDS:
-        if key in data:
-            kw[key] = to_si(data[key], "dimensionless", field=f"{origin}.{key}")
-    for key in _INT_FIELDS:
-        if key in data:
-            value = data[key]
-            if isinstance(value, bool) or not isinstance(value, int):
-                raise InputError(f"{origin}.{key}", value, "an integer >= 3")
-            kw[key] = value
-    for key in ("name", "kind", "source", "ribbed_ring"):
-        if key in data:
-            kw[key] = str(data[key])
-    kw.setdefault("name", "unnamed")
-    estimated = data.get("estimated", {})
-    if not isinstance(estimated, Mapping):
-        raise InputError(f"{origin}.estimated", estimated, "a table field -> reasoning")
-    kw["estimated"] = {str(k): str(v) for k, v in estimated.items()}
-    if "cage" not in data:
-        raise InputError(f"{origin}.cage", None, "a [cage] table")
-    kw["cage"] = _cage(data["cage"])
-    ball = kind in BALL_KINDS
-    elem_mat = "ball_material" if ball else "roller_material"
-    for key in (elem_mat, "ring_material"):
-        if key not in data:
-            raise InputError(f"{origin}.{key}", None, "a material name or table")
-        kw[key] = _material(data[key], f"{origin}.{key}")
-    if kind == "four_point" and "contact_angle" not in kw and "gothic_arch_offset" in kw:
-        needed = ("ball_diameter", "inner_conformity", "outer_conformity")
-        if all(k in kw for k in needed):
-            kw["contact_angle"] = _diagonal_free_angle(
-                kw["ball_diameter"], kw["inner_conformity"], kw["outer_conformity"],
-                kw["gothic_arch_offset"], kw.get("diametral_clearance", 0.0),
-                field=f"{origin}.diametral_clearance")
-    cls = BallBearing if ball else RollerBearing
-    names = {f.name for f in fields(cls)}
-    wrong = sorted(set(kw) - names)
-    if wrong:
-        raise InputError(f"{origin}.{wrong[0]}", data.get(wrong[0]),
-                         f"a key of a {kind} bearing (not {wrong[0]})")
-    required = [f.name for f in fields(cls)
-                if f.default is dataclasses_missing and f.default_factory is dataclasses_missing]
-    for key in required:
-        if key not in kw:
-            raise InputError(f"{origin}.{key}", None, "a value (required)")
-    return cls(**kw)
+    from .bearing_config import bearing_from_dict as _f
+
+    return _f(data, origin=origin)
 
 
 def load_bearing(name_or_path: str | Path,
@@ -1034,30 +894,9 @@ def load_bearing(name_or_path: str | Path,
     ``overrides`` replaces top-level keys (unit strings allowed, e.g.
     ``{"diametral_clearance": "0.1 mm"}``) before the bearing is built. For a four-point preset
     with a gothic-arch offset, overriding only the clearance keeps the offset and lets the
-    contact angle follow (as :meth:`BallBearing.with_clearance`). Unknown keys, unknown
-    presets and bad values raise :class:`~thermobearing.errors.InputError`.
+    contact angle follow (as :meth:`BallBearing.with_clearance`). Unknown keys, unknown presets
+    and bad values raise :class:`~thermobearing.errors.InputError`.
     """
-    text = str(name_or_path)
-    path = Path(text)
-    if not (text.endswith(".toml") or path.is_file()):
-        path = configs_dir() / "bearings" / f"{text}.toml"
-        if not path.is_file():
-            raise UnknownNameError("bearing preset", text, preset_names())
-    elif not path.is_file():
-        raise InputError("bearing path", text, "an existing TOML file")
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError("bearing file", str(path), f"valid TOML ({exc})") from None
-    data.pop("notes", None)
-    if overrides:
-        overrides = dict(overrides)
-        if (data.get("kind") == "four_point" and "gothic_arch_offset" in data
-                and "diametral_clearance" in overrides and "contact_angle" not in overrides
-                and "gothic_arch_offset" not in overrides):
-            # the ground gothic arch stays; the free contact angle follows the new clearance
-            data = {k: v for k, v in data.items() if k != "contact_angle"}
-        data = {**data, **overrides}
-    data.setdefault("name", path.stem)
-    return bearing_from_dict(data, origin=f"bearing[{path.stem}]")
+    from .bearing_config import load_bearing as _f
 
+    return _f(name_or_path, overrides)
