@@ -203,3 +203,14 @@ def test_closed_loop_with_skidding_solver(params, mild):
                                 params.theoretical_cage_speed_ratio)
     assert est.detected
     assert est.csr == pytest.approx(sk.cage_speed_ratio, rel=5e-3)
+
+
+def test_sunnersjo_model_equilibrium_and_ball_pass(params):
+    # Sunnersjo 1978: massless balls at pure rolling; the acceleration averages to zero and
+    # its main low-frequency line is the ball pass Z f_c (85.8 Hz here)
+    fs = 25600.0
+    a = V.simulate_sunnersjo(params, WS, LOAD, duration=0.5, sampling_rate=fs)
+    assert abs(a.mean()) < 0.05 * a.std()
+    f_bp = params.ball_pass_frequency_outer(WS / (2 * math.pi))
+    f, _ = S.spectral_peak(a, fs, 0.5 * f_bp, 1.5 * f_bp)
+    assert f == pytest.approx(f_bp, rel=2e-3)

@@ -43,6 +43,10 @@ def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str
                                   field="sampling_rate"))
     base = V.simulate(params, ws, load, cage_slip=0.0, **kw).statistics_x
     out = {"ptp": base.ptp, "rms": base.rms, "kurtosis": base.kurtosis}
+    sun = V.statistics(V.simulate_sunnersjo(params, ws, load, duration=kw["duration"],
+                                            settle_time=kw["settle_time"],
+                                            sampling_rate=kw["sampling_rate"]))
+    out.update(sunnersjo_ptp=sun.ptp, sunnersjo_rms=sun.rms, sunnersjo_kurtosis=sun.kurtosis)
     for slip in inputs.get("cage_slips", []):
         st = V.simulate(params, ws, load, cage_slip=float(slip), **kw).statistics_x
         tag = f"{100 * float(slip):g}pct"
