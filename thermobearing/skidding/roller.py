@@ -205,17 +205,18 @@ def _film_for(lubricant: Any, temperature: float, eta0: float, alpha: float, rad
 
 
 def default_traction_law(lubricant: Any, eyring_stress: float | None = None,
-                         limiting_shear_coefficient: float = 0.075) -> Any:
+                         limiting_shear_coefficient: float = 0.075, cap: str = "min") -> Any:
     """Eyring/Newtonian film with a limiting shear stress (traction law of the force model).
 
     ``eyring_stress=None`` gives the Newtonian film of paper 000 eq. 5, capped by Lambda p
-    with the smooth cap (differentiable, for Newton).
+    (``cap="min"``, the literal cap; ``"smooth"`` is differentiable but lowers the traction
+    near the cap, by 29 % where the Newtonian stress equals Lambda p).
     """
     from ..traction import make_traction_law
 
     return make_traction_law("eyring_limiting_shear", lubricant=lubricant,
                              limiting_shear_coefficient=limiting_shear_coefficient,
-                             eyring_stress=eyring_stress, cap="smooth")
+                             eyring_stress=eyring_stress, cap=cap)
 
 
 def build_model(
