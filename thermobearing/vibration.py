@@ -50,7 +50,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 import numba
 import numpy as np
@@ -450,25 +450,12 @@ def _integrate(method, y, t0, h, sub, n_out, P, dev, tv, tmu, ax, ay, xs, ys, q0
 # ---------------------------------------------------------------------------
 # results and statistics
 # ---------------------------------------------------------------------------
-class VibrationStatistics(tuple):
-    """(ptp [m/s^2], rms [m/s^2], kurtosis [-]) of an acceleration record."""
+class VibrationStatistics(NamedTuple):
+    """Statistical indicators of an acceleration record (paper 004 section 4.3)."""
 
-    __slots__ = ()
-
-    def __new__(cls, ptp: float, rms: float, kurtosis: float) -> VibrationStatistics:
-        return super().__new__(cls, (ptp, rms, kurtosis))
-
-    @property
-    def ptp(self) -> float:
-        return self[0]
-
-    @property
-    def rms(self) -> float:
-        return self[1]
-
-    @property
-    def kurtosis(self) -> float:
-        return self[2]
+    ptp: float  #: peak-to-peak [m/s^2]
+    rms: float  #: root mean square [m/s^2]
+    kurtosis: float  #: Pearson kurtosis [-] (3 for Gaussian)
 
 
 def statistics(acceleration: Any) -> VibrationStatistics:

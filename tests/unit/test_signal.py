@@ -136,6 +136,10 @@ def test_load_csv_and_npy(tmp_path):
     assert np.allclose(rec.data, x)
     with pytest.raises(InputError, match="rate of the file"):
         S.load_acceleration(tmp_path / "b.csv", sampling_rate=10000.0)
+    gap = np.column_stack([np.delete(t, np.s_[100:110]), np.delete(x, np.s_[100:110])])
+    np.savetxt(tmp_path / "gap.csv", gap, delimiter=",")
+    with pytest.raises(InputError, match="non-uniform"):
+        S.load_acceleration(tmp_path / "gap.csv")
     np.savetxt(tmp_path / "c.csv", np.full(1000, 1.0))
     with pytest.raises(InputError, match="constant"):
         S.load_acceleration(tmp_path / "c.csv", sampling_rate=FS)
