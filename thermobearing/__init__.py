@@ -20,11 +20,13 @@ if TYPE_CHECKING:  # pragma: no cover
     from .lubricant import Lubricant
 
 
-def load_bearing(name_or_path: str) -> BallBearing | RollerBearing:
-    """Load a bearing from a preset name in ``configs/bearings`` or a TOML file path."""
+def load_bearing(name_or_path: str, overrides: dict[str, Any] | None = None
+                 ) -> BallBearing | RollerBearing:
+    """Load a bearing from a preset name in ``configs/bearings`` or a TOML file path;
+    ``overrides`` replaces top-level keys (unit strings allowed)."""
     from .geometry import load_bearing as _load
 
-    return _load(name_or_path)
+    return _load(name_or_path, overrides=overrides)
 
 
 def load_lubricant(name_or_path: str) -> Lubricant:
