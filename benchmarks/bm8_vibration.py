@@ -164,7 +164,7 @@ def _plot(records: list[dict], out: Path) -> Path:
                           label=method)
                 for r in rows:
                     ax.annotate(f"{r['step']:.2g}", (r["time_s"], r["error"]), fontsize=7)
-        ax.set_xlabel("wall time per simulated second [s]")
+        ax.set_xlabel("CPU time per simulated second [s]")
         ax.set_ylabel("max error / max |a_ref|")
         ax.set_title(f"{regime} traction (labels: step [s])")
         ax.legend()
