@@ -162,7 +162,7 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
 
 
 # ---------------------------------------------------------------------------
-def _img(name: str, png: bytes) -> str:
+def figure_html(name: str, png: bytes) -> str:
     data = base64.b64encode(png).decode("ascii")
     return (f'<figure><img alt="{html.escape(name)}" src="data:image/png;base64,{data}">'
             f"<figcaption>{html.escape(name)}</figcaption></figure>")
@@ -199,7 +199,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
         parts.append("<p>" + ", ".join(f"{esc(str(k))} = {esc(str(v))}"
                                        for k, v in stats.items()) + "</p>")
     parts.append("<h2 id='figures'>Figures</h2>")
-    parts += [_img(name, png) for name, png in results.figures.items()]
+    parts += [figure_html(name, png) for name, png in results.figures.items()]
     parts.append("<h2 id='energy-audit'>Energy audit</h2>")
     energy = results.tables.get("energy")
     if energy is not None and not energy.empty:

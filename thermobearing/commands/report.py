@@ -1,0 +1,110 @@
+"""``thermobearing report DIR``: (re)write the HTML report of a run or a sweep folder.
+
+A run folder (from ``thermobearing run --out DIR``) is re-rendered from its tables,
+``scene.toml`` and ``metadata.json``. A sweep folder (``summary.csv`` from
+``thermobearing sweep``) gets what-if curves of every result against each swept
+parameter and, with two numeric swept parameters, contour maps of each loss component
+(the style of seed paper 002 Figs. 16-17).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import pandas as pd
+
+from ..errors import InputError
+
+NAME = "report"
+HELP = "write report.html for a run folder or a sweep folder"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("folder", help="results folder of `run` or `sweep`")
+
+
+def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
+    """Swept values like '15 L/min' -> numbers in a column named 'supply.flow [L/min]'."""
+    out = df.copy()
+    for p in params:
+        values = out[p].astype(str)
+        m = values.str.extract(r"^\s*([-+0-9.eE]+)\s*(.*)$")
+        if m[0].notna().all():
+            unit = m[1].iloc[0].strip()
+            out[f"{p} [{unit}]" if unit else p] = m[0].astype(float)
+            if unit:
+                out = out.drop(columns=[p])
+    return out
+
+
+def sweep_report(folder: Path) -> Path:
+    from ..report import fig_loss_maps, fig_whatif, figure_html
+
+    df = pd.read_csv(folder / "summary.csv")
+    first = json.loads((folder / "cases.jsonl").read_text().splitlines()[0])
+    params = list(first["params"])
+    df = _numeric_params(df, params)
+    pcols = [c for c in df.columns if any(c == p or c.startswith(p + " [") for p in params)]
+    results = [c for c in df.columns if c not in pcols and c != "case"]
+    figs: dict[str, bytes] = {}
+    losses = [c for c in results if c.endswith("[W]") and not c.startswith("max")]
+    temps = [c for c in results if c.startswith("final") or c.startswith("rise")]
+    for x in pcols:
+        if not pd.api.types.is_numeric_dtype(df[x]):
+            continue
+        group = next((p for p in pcols if p != x), None)
+        ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + temps[:2]
+        if ys:
+            figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)
+    numeric = [c for c in pcols if pd.api.types.is_numeric_dtype(df[c])]
+    if len(numeric) >= 2 and losses:
+        figs["loss maps"] = fig_loss_maps(df, numeric[0], numeric[1], losses)
+    html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
+            "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
+            "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
+            "td,th{padding:2px 6px;border-bottom:1px solid #ddd}</style></head><body>",
+            f"<h1>Sweep report: {folder.name}</h1>",
+            f"<p>{len(df)} cases; swept: {', '.join(params)}</p>",
+            "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
+            "<h2>Summary</h2>", df.to_html(index=False, float_format=lambda v: f"{v:.4g}"),
+            "</body></html>"]
+    out = folder / "report.html"
+    out.write_text("\n".join(html), encoding="utf-8")
+    return out
+
+
+def run_report(folder: Path) -> Path:
+    from ..report import attach_figures, write_report
+    from ..results import TABLES, Results
+    from ..scene import loads_scene
+
+    scene_toml = (folder / "scene.toml").read_text(encoding="utf-8")
+    scene = loads_scene(scene_toml, base_dir=folder)
+    meta = json.loads((folder / "metadata.json").read_text()) \
+        if (folder / "metadata.json").is_file() else {}
+    tables = {t: pd.read_csv(folder / f"{t}.csv") for t in TABLES
+              if (folder / f"{t}.csv").is_file()}
+    results = Results(tables=tables, scene_toml=scene_toml,
+                      chain=[tuple(x) for x in meta.get("chain", [])],
+                      citations=meta.get("citations", []), warnings=meta.get("warnings", []),
+                      stats=meta.get("stats", {}))
+    attach_figures(results, scene)
+    return write_report(results, scene, folder / "report.html")
+
+
+def run(args: argparse.Namespace) -> int:
+    folder = Path(args.folder)
+    if (folder / "summary.csv").is_file() and (folder / "cases.jsonl").is_file():
+        out = sweep_report(folder)
+    elif (folder / "scene.toml").is_file():
+        out = run_report(folder)
+    else:
+        raise InputError("folder", str(folder),
+                         "a folder written by `thermobearing run` (scene.toml) or "
+                         "`thermobearing sweep` (summary.csv, cases.jsonl)")
+    print(f"report written to {out}")
+    return 0
+
+
