@@ -165,6 +165,14 @@ def run_coupled(sim: Simulation, writer: ResultsWriter | None
     """Transient or steady coupled run of the whole schedule (see Simulation)."""
     net = build_network(sim)
     sim.network = net
+    measured = sim.scene.measured
+    if measured is not None:
+        for column, node in measured.columns.items():
+            if node not in net.state_nodes:
+                from .errors import InputError
+
+                raise InputError(f"measured.columns[{column!r}]", node,
+                                 "a node of the network: " + ", ".join(net.state_nodes))
     if sim.scene.outputs.mode == "steady":
         return _run_steady(sim, net, writer)
     return _run_transient(sim, net, writer)

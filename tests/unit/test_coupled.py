@@ -84,3 +84,23 @@ want = ["temperatures"]
     tr = long.tables["temperatures"].iloc[-1]
     for node in ("de.balls", "de.housing", "de.shaft", "de.oil"):
         assert tr[f"{node} [degC]"] == pytest.approx(st[f"{node} [degC]"], abs=0.05)
+
+
+def test_measured_column_to_unknown_node_is_an_error(tmp_path):
+    from thermobearing.errors import InputError
+
+    (tmp_path / "rig.csv").write_text("time [min],T1\n0,35\n1,36\n", encoding="utf-8")
+    text = BASE + """
+[schedule]
+speed = "600 rpm"
+radial_load = "1 kN"
+axial_load = "4 kN"
+duration = "1 min"
+[measured]
+file = "rig.csv"
+columns = { T1 = "de.gearbox" }
+"""
+    sim = Simulation(loads_scene(text, base_dir=tmp_path), progress=False)
+    with pytest.raises(InputError) as info:
+        sim.run()
+    assert "de.gearbox" in str(info.value) and "de.housing" in str(info.value)
