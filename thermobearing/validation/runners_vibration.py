@@ -31,7 +31,8 @@ def _law(inputs: dict[str, Any]) -> Any:
 @RUNNERS.register("paper004_vibration_stats",
                   references=["luo2022_cage_slip_vibration", "sunnersjo1978_varying_compliance"])
 def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
-    """PTP, RMS, kurtosis of the ring x acceleration (Table 2) and their slip trends (Fig. 12)."""
+    """PTP, RMS, kurtosis of the ring x acceleration (Table 2), their slip trends (Fig. 12) and
+    speed trends (Fig. 13, ratios against the case's shaft speed at s_c = 2 %)."""
     params = V.paper004_parameters()
     ws = to_si(inputs["shaft_speed"], "angular_speed", field="shaft_speed")
     load = to_si(inputs["radial_load"], "force", field="radial_load")
@@ -53,6 +54,16 @@ def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str
         out[f"ptp_ratio_slip_{tag}"] = st.ptp / base.ptp
         out[f"rms_ratio_slip_{tag}"] = st.rms / base.rms
         out[f"kurtosis_ratio_slip_{tag}"] = st.kurtosis / base.kurtosis
+    # Fig. 13 (s_c = 2 %, mu_m = 0.01): statistics against shaft speed, relative to ws
+    if inputs.get("fig13_speeds"):
+        ref13 = V.simulate(params, ws, load, cage_slip=0.02, **kw).statistics_x
+        for speed in inputs["fig13_speeds"]:
+            w13 = to_si(speed, "angular_speed", field="fig13_speeds")
+            st = V.simulate(params, w13, load, cage_slip=0.02, **kw).statistics_x
+            tag = f"{w13 * 60 / (2 * math.pi):.0f}rpm"
+            out[f"ptp_ratio_{tag}"] = st.ptp / ref13.ptp
+            out[f"rms_ratio_{tag}"] = st.rms / ref13.rms
+            out[f"kurtosis_ratio_{tag}"] = st.kurtosis / ref13.kurtosis
     # Fig. 12 table: statistics at every (mu_m, s_c) pair, printed by `validate`
     for mu in inputs.get("fig12_mu_max", []):
         law = make_traction_law("linear_saturating", mu_max=float(mu),
