@@ -38,7 +38,7 @@ def networks(draw):
     return net, heat, t_end
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(networks())
 def test_random_networks_conserve_energy_and_reach_steady(case):
     net, heat, t_end = case
