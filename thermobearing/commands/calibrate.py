@@ -1,0 +1,91 @@
+"""``thermobearing calibrate SCENE --fit PATH[,PATH...] [--out DIR]``: fit scene parameters to
+the scene's measured temperatures.
+
+Example (synthetic data shipped with the repository, see ``examples/README.md``)::
+
+    thermobearing calibrate qj1044_synthetic_measured \\
+        --fit network.parameters.h_oil,network.parameters.h_air --out calibrated
+
+Prints the fitted values with approximate (linearised) 95 % confidence intervals, the
+residual RMSE per sensor and the number of model runs, and writes ``DIR/<scene>_calibrated.toml``
+(the calibrated scene), ``DIR/calibration.csv``, ``DIR/calibration_sensors.csv`` and
+``DIR/calibration.json``. Every function evaluation runs the whole scene once.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..errors import InputError
+from ..scene import load_scene
+
+NAME = "calibrate"
+HELP = "fit scene parameters (e.g. network.parameters.h_oil) to the measured temperatures"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("scene", help="scene TOML path or preset name (needs a [measured] table)")
+    parser.add_argument("--fit", required=True, action="append",
+                        help="comma-separated dotted scene paths, e.g. "
+                             "network.parameters.h_oil,network.parameters.h_air "
+                             "(repeatable)")
+    parser.add_argument("--out", default=None,
+                        help="folder for the calibrated scene and tables "
+                             "(default: calibration/<scene name>)")
+    parser.add_argument("--x0", action="append", default=[], metavar="PATH=VALUE",
+                        help="starting value, e.g. network.parameters.h_air='10 W/(m**2*K)'")
+    parser.add_argument("--bounds", action="append", default=[], metavar="PATH=LOW:HIGH",
+                        help="bounds, e.g. network.parameters.h_oil=50:5000 (SI or units)")
+    parser.add_argument("--max-runs", type=int, default=60,
+                        help="limit on least-squares function evaluations (default 60)")
+    parser.add_argument("--quiet", action="store_true", help="no per-run progress lines")
+
+
+def _pairs(items: list[str], option: str) -> dict[str, str]:
+    out = {}
+    for item in items:
+        path, sep, value = item.partition("=")
+        if not sep or not path.strip() or not value.strip():
+            raise InputError(option, item, "PATH=VALUE")
+        out[path.strip()] = value.strip()
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..calibrate import calibrate
+
+    scene = load_scene(args.scene)
+    fit = [p.strip() for group in args.fit for p in group.split(",") if p.strip()]
+    x0 = _pairs(args.x0, "--x0")
+    bounds = {}
+    for path, value in _pairs(args.bounds, "--bounds").items():
+        low, sep, high = value.partition(":")
+        if not sep:
+            raise InputError("--bounds", value, "LOW:HIGH")
+        bounds[path] = tuple(_number_or_text(v) for v in (low, high))
+    name = Path(args.scene).stem
+    out = Path(args.out) if args.out else Path("calibration") / name
+
+    def progress(run_no: int, values: dict[str, float], rmse: float) -> None:
+        shown = ", ".join(f"{k.rsplit('.', 1)[-1]}={v:.5g}" for k, v in values.items())
+        print(f"  run {run_no:3d}: {shown}  RMSE {rmse:.4g} K", file=sys.stderr, flush=True)
+
+    if not args.quiet:
+        print(f"scene: {scene.title}")
+        print(f"fitting {', '.join(fit)} to {scene.measured.file if scene.measured else '?'} "
+              "(one scene run per evaluation)", flush=True)
+    result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
+                       callback=None if args.quiet else progress)
+    print(result.summary_text())
+    paths = result.write(out, scene_name=f"{name}_calibrated.toml")
+    print(f"calibrated scene written to {paths['scene']} (tables in {out}/)")
+    return 0
+
+
+def _number_or_text(text: str) -> float | str:
+    try:
+        return float(text)
+    except ValueError:
+        return text.strip()
