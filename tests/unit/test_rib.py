@@ -1,0 +1,118 @@
+"""Tests of thermobearing.rib (paper 003 eqs. 1-17, 21-24)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.geometry import load_bearing
+from thermobearing.hertz import point_contact
+from thermobearing.rib import (
+    lubricant_drag,
+    rib_forces,
+    rib_geometry,
+    rib_sliding_speed,
+    unbalance_check,
+)
+
+
+@pytest.fixture(scope="module")
+def geom():
+    return rib_geometry(load_bearing("CRB_50x75x16"))
+
+
+def test_contact_height_eq11(geom):
+    # hand value: H = D/2 - R_s sin(theta_f) = 3 mm - 300 mm * sin(0.3 deg) = 1.42921 mm
+    assert geom.contact_height() == pytest.approx(3e-3 - 0.3 * math.sin(math.radians(0.3)))
+    assert geom.contact_height() == pytest.approx(1.42921e-3, rel=1e-5)
+
+
+def test_approach_eq1_hand_value(geom):
+    # eq. 1 with R_p - L_p/2 = R_s - L_r/2 = 297 mm, C_a/2 = 15 um, C_af = 0, X = 0:
+    # alpha = 0.012 rad -> (1 - cos 0.012) * 0.297 - 15e-6 = 6.3838e-6 m, times cos(0.3 deg)
+    dl, dr = geom.approach(0.012, 0.0)
+    expect = ((1 - math.cos(0.012)) * 0.297 - 15e-6) * math.cos(math.radians(0.3))
+    assert dl == pytest.approx(expect) and dr == pytest.approx(expect)
+    # an axial shift opens the left side and closes the right (eq. 5)
+    dl, dr = geom.approach(0.0, 5e-6)
+    assert dr - dl == pytest.approx(2 * 5e-6 * math.cos(math.radians(0.3)))
+    assert dl < 0
+
+
+def test_curvature_eq10(geom):
+    rx, ry = geom.curvature()
+    r_c = 0.5 * geom.inner_raceway_diameter + geom.contact_height()
+    assert ry == pytest.approx(0.3)
+    assert 1 / rx == pytest.approx(1 / 0.3 + math.tan(math.radians(0.3)) / r_c)
+    assert ry / rx >= 1.0
+
+
+def test_force_is_hertz_point_contact(geom):
+    # Q = K delta^1.5 must invert hertz.point_contact's approach
+    q = 200.0
+    rx, ry = geom.curvature()
+    delta = point_contact(q, rx, ry, geom.effective_modulus).approach
+    from thermobearing.rib import rib_normal_force
+    assert rib_normal_force(geom, delta) == pytest.approx(q, rel=1e-6)
+    assert rib_normal_force(geom, -1e-6) == 0.0
+
+
+def test_sliding_speed_pure_rolling(geom):
+    # at pure rolling omega_r = (w_i - w_c) d_i / D the rib slides at
+    # (w_i - w_c) H (1 + d_i/D) (derived in rib.py)
+    wi, wc = 3000.0, 1300.0
+    wr = (wi - wc) * geom.inner_raceway_diameter / geom.roller_diameter
+    v = rib_sliding_speed(geom, wi, wc, wr)
+    h = geom.contact_height()
+    assert v == pytest.approx((wi - wc) * h * (1 + geom.inner_raceway_diameter
+                                              / geom.roller_diameter))
+    # a skew rate adds -/+ alpha_dot L/2 on the two faces
+    vl = rib_sliding_speed(geom, wi, wc, wr, 10.0, side=-1)
+    vr = rib_sliding_speed(geom, wi, wc, wr, 10.0, side=+1)
+    assert vr - vl == pytest.approx(10.0 * geom.roller_length)
+
+
+def test_forces_balance_and_signs(geom):
+    f = rib_forces(geom, 0.012, 2e-6, inner_speed=3141.6, cage_speed=1400.0,
+                   roller_spin=16000.0, skew_rate=0.0, friction_coefficient=0.05)
+    assert f.normal_right > f.normal_left > 0          # shifted right: right rib harder
+    assert f.axial_force < 0                           # pushed back to the left
+    assert f.skew_moment < 0                           # restores a positive skew (M_er)
+    assert f.friction_left == pytest.approx(0.05 * f.normal_left)  # v_i > v_r: C = +1
+    assert f.pv_right == pytest.approx(f.pressure_right * abs(f.sliding_right))
+    assert f.heat_right == pytest.approx(abs(f.friction_right * f.sliding_right))
+    pc = point_contact(f.normal_right, *geom.curvature(), geom.effective_modulus)
+    assert f.pressure_right == pytest.approx(3 * f.normal_right / (2 * math.pi * pc.a * pc.b))
+    # no contact at zero skew and centred roller
+    f0 = rib_forces(geom, 0.0, 0.0, inner_speed=3141.6, cage_speed=1400.0, roller_spin=1e4)
+    assert f0.normal_left == 0 and f0.pv_left == 0 and f0.heat_left == 0
+
+
+def test_lubricant_drag_units(geom):
+    # eq. 14-15 (repaired): F = dw eta (4/3)(R0/Ca) h sqrt(r^2 - (r-h)^2)
+    f, m = lubricant_drag(geom, 3000.0, 1000.0, 1e-3)
+    r, h = 3e-3, 1.5e-3
+    r0 = 0.5 * geom.inner_raceway_diameter + geom.contact_height()
+    expect = 2000.0 * 1e-3 * 4 / 3 * r0 / 3e-5 * h * math.sqrt(r * r - (r - h) ** 2)
+    assert f == pytest.approx(expect)
+    assert m == pytest.approx(expect * (r - h / 2))
+
+
+def test_bad_input_names_field():
+    b = load_bearing("CRB_50x75x16")
+    with pytest.raises(InputError, match="rib_height"):
+        rib_geometry(b, rib_height=1.0e-3)          # contact point 1.43 mm above a 1 mm rib
+    with pytest.raises(InputError, match="axial_clearance"):
+        rib_geometry(b, axial_clearance=-1e-6)
+    with pytest.raises(InputError, match="unbalance_mass"):
+        unbalance_check(2e-3, b.roller_mass)
+    with pytest.raises(InputError, match="crown_radius"):
+        rib_geometry(b, crown_radius=2e-3)
+
+
+def test_vectorised(geom):
+    a = np.linspace(0, 0.015, 5)
+    f = rib_forces(geom, a, 0.0, inner_speed=3000.0, cage_speed=1300.0, roller_spin=1.6e4)
+    assert f.normal_left.shape == (5,)
+    assert np.all(np.diff(f.normal_left) >= 0)

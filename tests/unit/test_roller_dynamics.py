@@ -1,0 +1,102 @@
+"""Tests of thermobearing.skidding.roller_dynamics (paper 003 eqs. 18, 21-25)."""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.geometry import load_bearing
+from thermobearing.lubricant import load_lubricant
+from thermobearing.rib import rib_forces
+from thermobearing.skidding import roller_dynamics as rd
+
+SPEED = 30000 * math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def base():
+    b = load_bearing("CRB_50x75x16")
+    lub = load_lubricant("MIL_PRF_23699")
+    return b, lub, rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3)
+
+
+def test_scalar_rhs_matches_rib_forces(base):
+    _, _, m = base
+    c = rd._consts(m)
+    y = np.array([3e-6, 0.01, 0.0125, 20.0])
+    xd, xdd, ad, add, m_spin = rd._roller_rhs(m, c, y, 0.0, 0.0, 15000.0, 0.0)
+    rf = rib_forces(m.geom, y[2], y[0], inner_speed=m.inner_speed, cage_speed=m.cage_speed,
+                    roller_spin=15000.0, skew_rate=y[3], friction_coefficient=m.rib_friction,
+                    mixture_viscosity=m.mixture_viscosity, smooth_sign=rd.SIGN_REGULARISATION)
+    assert xdd * m.roller_mass == pytest.approx(float(rf.axial_force), rel=1e-9)
+    assert m_spin == pytest.approx(float(rf.spin_moment), rel=1e-9)
+    # skew: rib + race damping + pocket (none at 0.0125 rad < 0.2 mm / 6 mm) + unbalance (psi=0)
+    arm = m.effective_length / (2 * math.sqrt(3))
+    m_race = -m.traction_limit * 0.0 * arm  # no raceway load passed
+    assert add * m.transverse_inertia == pytest.approx(float(rf.skew_moment) + m_race, rel=1e-9)
+
+
+def test_unbalance_moment_hand_value(base):
+    b, _, m = base
+    # F_cv = m_u e (w_r - w_c)^2 at e = x_u = 2.5 mm; M = -x_u F sin(psi)
+    c = rd._consts(m)
+    y = np.zeros(4)
+    add = rd._roller_rhs(m, c, y, 0.0, 0.0, 16000.0, math.pi / 2)[3]
+    f = 0.08e-3 * 2.5e-3 * (16000.0 - m.cage_speed) ** 2
+    assert add * m.transverse_inertia == pytest.approx(-2.5e-3 * f, rel=1e-9)
+
+
+def test_bad_input(base):
+    b, lub, m = base
+    qs = m.extras["quasi_static"]
+    with pytest.raises(InputError, match="unbalance_mass"):
+        rd.build_model(b, lub, SPEED, 3000.0, 2.0 * b.roller_mass, quasi_static=qs)
+    with pytest.raises(InputError, match="pocket_clearance"):
+        rd.build_model(b, lub, SPEED, 3000.0, 1e-4, pocket_clearance=-1e-5, quasi_static=qs)
+    with pytest.raises(InputError, match="axial_clearance"):
+        rd.build_model(b, lub, SPEED, 3000.0, 1e-4, rib={"axial_clearance": -1e-6},
+                       quasi_static=qs)
+    with pytest.raises(InputError, match="rib_height"):
+        rd.build_model(b, lub, SPEED, 3000.0, 1e-4, rib={"rib_height": 1e-3}, quasi_static=qs)
+    with pytest.raises(InputError, match="model"):
+        rd.simulate(m, "bogus")
+
+
+def test_load_states_weights(base):
+    _, _, m = base
+    states = rd.load_states(m)
+    assert sum(s[3] for s in states) == pytest.approx(1.0)
+    assert len(states) < len(m.azimuth)   # the unloaded rollers share one state
+
+
+def test_no_unbalance_no_rib_contact(base):
+    _, _, m = base
+    m0 = dataclasses.replace(m, unbalance=rd.Unbalance(0.0, 2.5e-3, 2.5e-3))
+    r = rd.simulate_reduced(m0, periods=2, warmup_periods=1)
+    assert r.pv == 0.0 and r.rib_contact_fraction == 0.0 and r.max_skew < 1e-6
+    # the slip is then the quasi-static rolling slip of the skidding solver (orbit mean)
+    u_i = (m.inner_speed - m.cage_speed) * 0.5 * m.geom.inner_raceway_diameter
+    v = np.abs(u_i - m.spin * 0.5 * m.geom.roller_diameter)
+    assert r.slip_speed == pytest.approx(float(np.mean(v)), rel=1e-3)
+
+
+def test_pv_grows_with_unbalance(base):
+    _, _, m = base
+    small = dataclasses.replace(m, unbalance=dataclasses.replace(m.unbalance, mass=0.06e-3))
+    r_small = rd.simulate_reduced(small)
+    r_big = rd.simulate_reduced(m)
+    assert r_big.pv_left + r_big.pv_right > r_small.pv_left + r_small.pv_right > 0
+    assert r_big.max_skew > 0.5 * math.sqrt(2 * 15e-6 / 0.297)  # reaches the rib
+
+
+@pytest.mark.slow
+def test_full_vs_reduced_within_10_percent(base):
+    _, _, m = base
+    full = rd.simulate_full(m)
+    red = rd.simulate_reduced(m)
+    pv_f, pv_r = full.pv_left + full.pv_right, red.pv_left + red.pv_right
+    assert abs(pv_r / pv_f - 1) < 0.10
+    assert abs(red.slip_speed / full.slip_speed - 1) < 0.10
+    assert red.cost_s < full.cost_s

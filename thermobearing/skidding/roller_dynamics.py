@@ -1,0 +1,464 @@
+"""Roller skew and axial motion with dynamic unbalance; PV and slip speed (paper 003).
+
+Zhang et al. 2021, seed ``003_743e023ae6e45686.txt`` [zhang2021_abnormal_wear], eqs. 18
+(roller), 21-25 (PV of the end face, slip speed of the working surface), with the rib
+contact of :mod:`thermobearing.rib` (eqs. 1-17).
+
+What is modelled (and what is not)
+----------------------------------
+The paper integrates roller (6 DOF), cage (eq. 19) and inner ring (eq. 20) together with
+GSTIFF [gear1971_dae]. Here the ring and cage motions are *prescribed* by the quasi-static
+skidding solution of :func:`thermobearing.skidding.roller.solve_roller` (paper 000's
+Z + 1 equations: cage speed, roller spins and raceway loads per azimuth), and one roller is
+followed with the degrees of freedom in which the unbalance acts:
+
+* ``full`` model (:func:`simulate_full`): axial position X, skew alpha, spin omega_r and the
+  spin phase psi of one roller travelling a whole orbit (azimuth phi = omega_c t) through
+  the load zone; raceway loads and the quasi-static spin follow phi. Stiff (the spin is
+  tied to the raceway traction on a ~1e-7 s scale, the rib contact is a stiff Hertz
+  spring): scipy's Radau IIA, variable step [hairer_wanner1996].
+* ``reduced`` model (:func:`simulate_reduced`): skew and axial position only, at frozen
+  azimuths (one per distinct load state of the quasi-static solution, weighted by the
+  share of the orbit it represents), spin fixed to the quasi-static value, the mean rib
+  spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega.
+
+Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
+
+    m X''      = Q_ez^X + N_i mu(s_i) + N_o mu(s_o)                       (eq. 18, line 1)
+    J_t alpha'' = M_unb + M_rib + M_race + M_pocket                        (eq. 18, skew line)
+    J_p omega_r' = -k_omega (omega_r - omega_qs(phi)) + M_rib,x            (full only)
+
+* unbalance (paper sec. 4; its refs [16,17] [cui2017_roller_unbalance] were not seen, so the
+  force is derived from rigid-body kinematics): a mass m_u at axial position x_u and radius
+  e_u rotating with the roller: F_cv = m_u e_u (omega_r - omega_c)^2 (absolute spin rate),
+  circumferential component F_cv sin(psi), psi' = omega_r; skew moment
+  M_unb = -x_u F_cv sin(psi). Its radial component (tilt, raceway load ripple) is not
+  followed: the line contacts hold the tilt to ~1e-5 rad (H_contact changes < 0.2 um).
+* raceway axial sliding of a skewed roller s_i = -u_i sin(alpha) - X', s_o = u_o sin(alpha)
+  - X' (u_i = (omega_i - omega_c) d_i/2, u_o = omega_c d_o/2) with a regularised Coulomb
+  traction mu(s) = mu_t tanh(s/s_0) (the shape of an EHL traction curve,
+  [johnson_tevaarwerk1977_traction]; mu_t, s_0 estimated); the skew rate's sliding -alpha' x
+  along the line gives M_race = -sum N mu_t tanh(alpha' l/s_0) l, l = L_e/(2 sqrt 3) (the
+  rms arm of a uniform line load).
+* cage bars: the roller corners touch the bars when |alpha| L_r/2 > c_p/2 (c_p the pocket
+  circumferential clearance, roller centred): M_pocket = -2 k_c (|alpha| L_r/2 - c_p/2) L_r/2
+  sign(alpha), k_c estimated.
+* k_omega = (D_w/2)^2 (N_i + N_o) mu_t/s_0: the sensitivity of the raceway traction torque to
+  the spin (from the same traction curve).
+
+Outputs (paper 003 eqs. 21-25): PV per end face = time mean of P |v_i - v_r| over the
+periodic state [Pa m/s] (and its peak); slip speed = time mean of the inner-contact sliding
+speed magnitude sqrt(V_roll^2 + s_i^2 + (alpha' L_e)^2/12), V_roll = (omega_i - omega_c)
+d_i/2 - omega_r D_w/2. Eq. 25 as printed is garbled (it multiplies a speed difference by a
+length difference); its first factor is V_roll, which we keep, and we add the skew-induced
+components the paper's discussion attributes the slip rise to. Units: SI.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any, NamedTuple
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..errors import ConvergenceError, InputError, check_positive, check_range
+from ..rib import (
+    DEFAULT_RIB_FRICTION,
+    SIGN_REGULARISATION,
+    RibGeometry,
+    lubricant_drag,
+    rib_forces,
+    rib_geometry,
+    unbalance_check,
+)
+
+#: raceway traction limit mu_t [-] (estimated: typical EHL traction plateau 0.03-0.08)
+DEFAULT_TRACTION_LIMIT = 0.05
+#: slide speed s_0 of the traction curve's initial slope [m/s] (estimated)
+DEFAULT_TRACTION_SPEED = 0.5
+#: cage-bar contact stiffness [N/m] (estimated: brass bar, line contact over the roller length)
+DEFAULT_POCKET_STIFFNESS = 2.0e7
+#: oil volume fraction of the oil/air mixture at the rib (estimated, jet lubrication)
+DEFAULT_OIL_FRACTION = 0.05
+
+
+@dataclass(frozen=True)
+class Unbalance:
+    """Dynamic unbalance of a roller: mass [kg] at axial position x_u [m] (+ right end) and
+    radius e_u [m] from the roller axis (paper 003 sec. 8: at the right chamfer)."""
+
+    mass: float
+    axial_position: float
+    radius: float
+
+    @property
+    def moment_coefficient(self) -> float:
+        """m_u e_u x_u [kg m^2] (a product of inertia)."""
+        return self.mass * self.radius * self.axial_position
+
+
+def chamfer_unbalance(bearing: Any, mass: float, side: int = +1,
+                      chamfer: float = 0.5e-3) -> Unbalance:
+    """Unbalance ``mass`` [kg] at the chamfer of the ``side`` end (+1 right, -1 left)."""
+    unbalance_check(mass, bearing.roller_mass)
+    if side not in (-1, 1):
+        raise InputError("side", side, "+1 (right) or -1 (left)")
+    check_range("chamfer", chamfer, 0.0, 0.5 * bearing.roller_diameter)
+    return Unbalance(mass, side * (0.5 * bearing.roller_length - chamfer),
+                     0.5 * bearing.roller_diameter - chamfer)
+
+
+@dataclass(frozen=True)
+class DynamicsModel:
+    """Everything the roller integrators need (SI).
+
+    Per-azimuth arrays come from the quasi-static skidding solution (``azimuth`` sorted,
+    one orbit): ``inner_load``, ``outer_load`` [N], ``spin`` omega_qs [rad/s].
+    """
+
+    geom: RibGeometry
+    inner_speed: float
+    cage_speed: float
+    azimuth: np.ndarray
+    inner_load: np.ndarray
+    outer_load: np.ndarray
+    spin: np.ndarray
+    roller_mass: float
+    transverse_inertia: float
+    polar_inertia: float
+    effective_length: float
+    outer_raceway_diameter: float
+    pocket_clearance: float
+    unbalance: Unbalance
+    rib_friction: float = DEFAULT_RIB_FRICTION
+    mixture_viscosity: float = 0.0
+    traction_limit: float = DEFAULT_TRACTION_LIMIT
+    traction_speed: float = DEFAULT_TRACTION_SPEED
+    pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS
+    extras: dict[str, Any] = field(default_factory=dict)
+
+    def at(self, phi: float) -> tuple[float, float, float]:
+        """(N_i, N_o, omega_qs) at azimuth ``phi`` [rad] (periodic linear interpolation)."""
+        p = phi % (2.0 * math.pi)
+        az = self.azimuth
+        n = len(az)
+        j = int(np.searchsorted(az, p, side="right")) - 1
+        j0 = j % n
+        j1 = (j + 1) % n
+        a0 = az[j0] if j >= 0 else az[-1] - 2.0 * math.pi
+        a1 = az[j1] + (2.0 * math.pi if j1 <= j0 and j >= 0 else 0.0)
+        w = (p - a0) / (a1 - a0) if a1 > a0 else 0.0
+        return tuple(float(arr[j0] + w * (arr[j1] - arr[j0]))
+                     for arr in (self.inner_load, self.outer_load, self.spin))
+
+    def spin_stiffness(self, n_i: float, n_o: float) -> float:
+        """k_omega = (D/2)^2 (N_i + N_o) mu_t / s_0 [N m s]."""
+        r = 0.5 * self.geom.roller_diameter
+        return r * r * (n_i + n_o) * self.traction_limit / self.traction_speed
+
+
+def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
+                unbalance_mass: float, *, temperature: float = 353.15, side: int = +1,
+                rib: dict[str, float] | None = None, pocket_clearance: float | None = None,
+                rib_friction: float = DEFAULT_RIB_FRICTION,
+                oil_fraction: float = DEFAULT_OIL_FRACTION,
+                traction_limit: float = DEFAULT_TRACTION_LIMIT,
+                traction_speed: float = DEFAULT_TRACTION_SPEED,
+                pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS,
+                quasi_static: Any = None) -> DynamicsModel:
+    """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
+
+    ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
+    ``axial_clearance`` [m], ...). ``pocket_clearance`` [m] (default: the cage's).
+    ``quasi_static``: a previous :class:`~thermobearing.skidding.roller.RollerSkiddingResult`
+    of the same speed/load/temperature (skips the solve; maps reuse it).
+    Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
+    raises InputError naming the field.
+    """
+    from ..lubricant_properties import air_properties
+    from .roller import solve_roller
+
+    check_positive("speed", speed)
+    check_positive("radial_load", radial_load, allow_zero=True)
+    geom = rib_geometry(bearing, **(rib or {}))
+    cp = bearing.cage.pocket_clearance if pocket_clearance is None else pocket_clearance
+    check_positive("pocket_clearance", cp, allow_zero=True)
+    check_range("oil_fraction", oil_fraction, 0.0, 1.0)
+    check_positive("traction_limit", traction_limit)
+    check_positive("traction_speed", traction_speed)
+    check_positive("pocket_stiffness", pocket_stiffness)
+    unb = chamfer_unbalance(bearing, unbalance_mass, side, geom.chamfer)
+    qs = quasi_static if quasi_static is not None else solve_roller(
+        bearing, lubricant, speed, radial_load, 0.0, temperature)
+    order = np.argsort(np.mod(qs.azimuth, 2.0 * math.pi))
+    eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
+           + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
+    return DynamicsModel(
+        geom=geom, inner_speed=float(speed), cage_speed=float(qs.cage_speed),
+        azimuth=np.mod(qs.azimuth, 2.0 * math.pi)[order],
+        inner_load=np.asarray(qs.inner_load, float)[order],
+        outer_load=np.asarray(qs.outer_load, float)[order],
+        spin=np.asarray(qs.roller_speed, float)[order],
+        roller_mass=bearing.roller_mass, transverse_inertia=bearing.roller_transverse_inertia,
+        polar_inertia=bearing.roller_inertia,
+        effective_length=float(bearing.roller_effective_length),
+        outer_raceway_diameter=bearing.outer_raceway_diameter, pocket_clearance=float(cp),
+        unbalance=unb, rib_friction=rib_friction, mixture_viscosity=float(eta),
+        traction_limit=traction_limit, traction_speed=traction_speed,
+        pocket_stiffness=pocket_stiffness,
+        extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load})
+
+
+class _Consts(NamedTuple):
+    k: float
+    ct: float
+    arm: float
+    half: float
+    base: float
+    rho: float
+    r_c: float
+    f_g: float
+    r_g: float
+    u_i: float
+    u_o: float
+    l_arm: float
+
+
+def _consts(m: DynamicsModel) -> _Consts:
+    """Scalars of the rib contact and raceways, computed once per model."""
+    g = m.geom
+    f_g = 0.0
+    if m.mixture_viscosity > 0.0 and g.axial_clearance > 0.0:
+        f_g = abs(float(lubricant_drag(g, m.inner_speed, m.cage_speed,
+                                       m.mixture_viscosity)[0]))
+    h = float(g.contact_height())
+    wc = m.cage_speed
+    return _Consts(
+        k=g.stiffness, ct=math.cos(g.rib_angle), arm=g.crown_radius - 0.5 * g.roller_length,
+        half=0.5 * g.roller_length + 0.5 * g.axial_clearance,
+        base=-(0.5 * g.axial_clearance + float(g.unilateral_clearance())),
+        rho=0.5 * g.roller_diameter - h, r_c=0.5 * g.inner_raceway_diameter + h, f_g=f_g,
+        r_g=0.5 * g.roller_diameter - 0.5 * g.rib_height,
+        u_i=(m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter,
+        u_o=wc * 0.5 * m.outer_raceway_diameter,
+        l_arm=m.effective_length / (2.0 * math.sqrt(3.0)))
+
+
+def _roller_rhs(m: DynamicsModel, c: _Consts, y: Any, n_i: float, n_o: float,
+                spin: float, psi: float) -> tuple[float, float, float, float, float]:
+    """(X', X'', alpha', alpha'', rib spin moment): the scalar form of
+    :func:`thermobearing.rib.rib_forces` (same equations; a test checks they agree)."""
+    x, xd, a, ad = float(y[0]), float(y[1]), float(y[2]), float(y[3])
+    g = m.geom
+    wc = m.cage_speed
+    b = (1.0 - math.cos(a)) * c.arm + c.base
+    d_l, d_r = (b - x) * c.ct, (b + x) * c.ct
+    q_l = c.k * d_l * math.sqrt(d_l) if d_l > 0 else 0.0
+    q_r = c.k * d_r * math.sqrt(d_r) if d_r > 0 else 0.0
+    v_i = (m.inner_speed - wc) * c.r_c
+    hl = 0.5 * g.roller_length
+    s_l = math.tanh((v_i - (spin * c.rho + ad * hl)) / SIGN_REGULARISATION)
+    s_r = math.tanh((v_i - (spin * c.rho - ad * hl)) / SIGN_REGULARISATION)
+    mu = m.rib_friction
+    fr_l, fr_r = s_l * (c.f_g + mu * q_l), s_r * (c.f_g + mu * q_r)
+    sa = math.sin(a)
+    m_rib = -(q_l + q_r) * c.ct * c.arm * sa + (fr_l - fr_r) * c.half
+    m_spin = (s_l * mu * q_l + s_r * mu * q_r) * c.rho + (s_l + s_r) * c.f_g * c.r_g
+    mu_t, s0 = m.traction_limit, m.traction_speed
+    f_race = (n_i * mu_t * math.tanh((-c.u_i * sa - xd) / s0)
+              + n_o * mu_t * math.tanh((c.u_o * sa - xd) / s0))
+    m_race = -(n_i + n_o) * mu_t * math.tanh(ad * c.l_arm / s0) * c.l_arm
+    over = abs(a) * hl - 0.5 * m.pocket_clearance
+    m_pocket = -math.copysign(1.0, a) * 2.0 * m.pocket_stiffness * over * hl if over > 0 else 0.0
+    f_cv = m.unbalance.mass * m.unbalance.radius * (spin - wc) ** 2
+    m_unb = -m.unbalance.axial_position * f_cv * math.sin(psi)
+    xdd = ((q_l - q_r) * c.ct + f_race) / m.roller_mass
+    add = (m_rib + m_race + m_pocket + m_unb) / m.transverse_inertia
+    return xd, xdd, ad, add, m_spin
+
+
+@dataclass(frozen=True)
+class RollerResponse:
+    """PV and slip of one roller over the periodic state (paper 003 eqs. 21-25), SI.
+
+    pv_left, pv_right : time-mean P |v| per end face [Pa m/s]; pv_peak_* the maxima.
+    slip_speed : time-mean inner-contact sliding speed magnitude [m/s].
+    rolling_slip_speed : its rolling-direction part |V_roll| (mean) [m/s].
+    rib_heat_left, rib_heat_right : time-mean friction heat |Q_e_theta v| per face [W].
+    max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
+    mean_spin_moment : time-mean rib moment about the roller axis [N m].
+    model : "full" | "reduced".  cost_s : wall time [s].  n_rhs : right-hand-side calls.
+    """
+
+    pv_left: float
+    pv_right: float
+    pv_peak_left: float
+    pv_peak_right: float
+    slip_speed: float
+    rolling_slip_speed: float
+    rib_heat_left: float
+    rib_heat_right: float
+    max_skew: float
+    rib_contact_fraction: float
+    mean_spin_moment: float
+    model: str
+    cost_s: float
+    n_rhs: int
+    series: dict[str, np.ndarray] = field(default_factory=dict, repr=False)
+
+    @property
+    def pv(self) -> float:
+        """Larger of the two end faces' mean PV [Pa m/s]."""
+        return max(self.pv_left, self.pv_right)
+
+    @property
+    def rib_heat(self) -> float:
+        """Mean rib friction heat of one roller, both faces [W]."""
+        return self.rib_heat_left + self.rib_heat_right
+
+
+def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.ndarray,
+          ad: np.ndarray, spin: np.ndarray) -> dict[str, np.ndarray]:
+    """PV, heat and slip along a sampled trajectory (exact sign of eq. 13)."""
+    g = m.geom
+    rf = rib_forces(g, a, x, inner_speed=m.inner_speed, cage_speed=m.cage_speed,
+                    roller_spin=spin, skew_rate=ad, friction_coefficient=m.rib_friction,
+                    mixture_viscosity=m.mixture_viscosity)
+    wc = m.cage_speed
+    u_i = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
+    v_roll = u_i - spin * 0.5 * g.roller_diameter
+    s_ax = -u_i * np.sin(a) - xd
+    slip = np.sqrt(v_roll**2 + s_ax**2 + (ad * m.effective_length) ** 2 / 12.0)
+    return {"pv_left": rf.pv_left, "pv_right": rf.pv_right, "heat_left": rf.heat_left,
+            "heat_right": rf.heat_right, "slip": slip, "v_roll": np.abs(v_roll),
+            "contact": (rf.normal_left + rf.normal_right) > 0, "skew": a,
+            "spin_moment": rf.spin_moment, "t": t}
+
+
+def _mean(v: np.ndarray, t: np.ndarray) -> float:
+    span = t[-1] - t[0]
+    return float(np.trapezoid(v, t) / span) if span > 0 else float(np.mean(v))
+
+
+def simulate_full(m: DynamicsModel, *, n_orbits: float = 1.0, warmup_periods: float = 3.0,
+                  rtol: float = 1e-6, samples_per_period: int = 64,
+                  start_azimuth: float = 0.0) -> RollerResponse:
+    """Integrate X, alpha, omega_r, psi of one roller over ``n_orbits`` orbits (Radau).
+
+    The first ``warmup_periods`` spin periods (at the quasi-static spin) are integrated
+    and discarded; statistics are taken over the following ``n_orbits`` orbits.
+    ConvergenceError if the integrator fails.
+    """
+    t0 = time.perf_counter()
+    n_calls = [0]
+    g = m.geom
+    c = _consts(m)
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        n_calls[0] += 1
+        phi = start_azimuth + m.cage_speed * t
+        n_i, n_o, w_qs = m.at(phi)
+        d0, d1, d2, d3, m_spin = _roller_rhs(m, c, y, n_i, n_o, y[4], y[5])
+        k = m.spin_stiffness(n_i, n_o)
+        wdot = (-k * (y[4] - w_qs) + m_spin) / m.polar_inertia
+        return np.array([d0, d1, d2, d3, wdot, y[4]])
+
+    _, _, w0 = m.at(start_azimuth)
+    period = 2.0 * math.pi / max(abs(w0), 1.0)
+    t_warm = warmup_periods * period
+    t_end = t_warm + n_orbits * 2.0 * math.pi / m.cage_speed
+    n_out = int(samples_per_period * (t_end - t_warm) / period) + 2
+    t_eval = np.linspace(t_warm, t_end, n_out)
+    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-2, 1e-6])
+    sol = solve_ivp(rhs, (0.0, t_end), np.array([0.0, 0.0, 0.0, 0.0, w0, 0.0]),
+                    method="Radau", rtol=rtol, atol=atol, t_eval=t_eval,
+                    max_step=period / 8.0)
+    if not sol.success:
+        raise ConvergenceError("roller_dynamics.full", float("nan"), sol.message,
+                               {"t": sol.t[-1] if sol.t.size else 0.0})
+    y = sol.y
+    post = _post(m, sol.t, y[0], y[1], y[2], y[3], y[4])
+    return _response(post, "full", time.perf_counter() - t0, n_calls[0], g)
+
+
+def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
+              g: RibGeometry, weights: list[tuple[float, dict]] | None = None
+              ) -> RollerResponse:
+    if weights is None:
+        weights = [(1.0, post)]
+    keys = ("pv_left", "pv_right", "heat_left", "heat_right", "slip", "v_roll",
+            "spin_moment")
+    mean = {k: sum(w * _mean(p[k], p["t"]) for w, p in weights) for k in keys}
+    contact = sum(w * _mean(p["contact"].astype(float), p["t"]) for w, p in weights)
+    return RollerResponse(
+        pv_left=mean["pv_left"], pv_right=mean["pv_right"],
+        pv_peak_left=max(float(np.max(p["pv_left"])) for _, p in weights),
+        pv_peak_right=max(float(np.max(p["pv_right"])) for _, p in weights),
+        slip_speed=mean["slip"], rolling_slip_speed=mean["v_roll"],
+        rib_heat_left=mean["heat_left"], rib_heat_right=mean["heat_right"],
+        max_skew=max(float(np.max(np.abs(p["skew"]))) for _, p in weights),
+        rib_contact_fraction=contact, mean_spin_moment=mean["spin_moment"],
+        model=model, cost_s=cost, n_rhs=n_rhs,
+        series={k: v for k, v in weights[0][1].items()} if model == "full" else {})
+
+
+def load_states(m: DynamicsModel, decimals: int = 6) -> list[tuple[float, float, float, float]]:
+    """Distinct (N_i, N_o, omega_qs, weight) states of the orbit (weights sum to 1)."""
+    states: dict[tuple[float, float, float], int] = {}
+    for n_i, n_o, w in zip(m.inner_load, m.outer_load, m.spin, strict=True):
+        key = (round(float(n_i), 3), round(float(n_o), 3), round(float(w), 3))
+        states[key] = states.get(key, 0) + 1
+    n = len(m.azimuth)
+    return [(k[0], k[1], k[2], c / n) for k, c in states.items()]
+
+
+def simulate_reduced(m: DynamicsModel, *, periods: float = 4.0, warmup_periods: float = 3.0,
+                     rtol: float = 1e-6, samples_per_period: int = 64) -> RollerResponse:
+    """Skew and axial motion at the orbit's distinct frozen load states (see module notes).
+
+    Each state is integrated (LSODA: the stiff spin is gone, the rib contact switches the
+    stiffness on and off) for ``warmup_periods`` + ``periods`` spin periods; statistics over
+    the last ``periods``, averaged with the states' orbit shares. The mean rib spin moment
+    changes the spin quasi-statically by M / k_omega before the slip is evaluated.
+    """
+    t0 = time.perf_counter()
+    n_calls = [0]
+    weights = []
+    c = _consts(m)
+    for n_i, n_o, w_qs, share in load_states(m):
+        def rhs(t: float, y: np.ndarray, n_i=n_i, n_o=n_o, w=w_qs) -> np.ndarray:
+            n_calls[0] += 1
+            return np.array(_roller_rhs(m, c, y, n_i, n_o, w, w * t)[:4])
+
+        period = 2.0 * math.pi / max(abs(w_qs), 1.0)
+        t_warm = warmup_periods * period
+        t_end = t_warm + periods * period
+        t_eval = np.linspace(t_warm, t_end, int(samples_per_period * periods) + 1)
+        sol = solve_ivp(rhs, (0.0, t_end), np.zeros(4), method="LSODA", rtol=rtol,
+                        atol=np.array([1e-9, 1e-6, 1e-7, 1e-3]), t_eval=t_eval,
+                        max_step=period / 8.0)
+        if not sol.success:
+            raise ConvergenceError("roller_dynamics.reduced", float("nan"), sol.message,
+                                   {"state": (n_i, n_o, w_qs)})
+        y = sol.y
+        spin = np.full(sol.t.shape, w_qs)
+        post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin)
+        k = m.spin_stiffness(n_i, n_o)
+        dw = _mean(post["spin_moment"], post["t"]) / k if k > 0 else 0.0
+        if dw != 0.0:
+            post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin + dw)
+        weights.append((share, post))
+    return _response(weights[0][1], "reduced", time.perf_counter() - t0, n_calls[0], m.geom,
+                     weights)
+
+
+def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> RollerResponse:
+    """Dispatch to :func:`simulate_full` or :func:`simulate_reduced`."""
+    if model == "full":
+        return simulate_full(m, **options)
+    if model == "reduced":
+        return simulate_reduced(m, **options)
+    raise InputError("model", model, ("full", "reduced"))
