@@ -11,10 +11,14 @@ roller and the cage speed ``omega_c``. Equations (paper eqs. 12-15, 20-32):
   shear force (Couette + Poiseuille, eq. 5/33-34) of a contact on the roller surface and
   f_d the pocket-film friction (eq. 38);
 * roller force along the orbit (eqs. 21/24): the pocket normal force
-  F_d = (S_i + Q_xi) - (S_o + Q_xo) - m_r a_t,j  (Q_x the pressure's rolling force, eq. 35;
+  F_d = (S_i + (1 - D/d_m) Q_xi) - (S_o + (1 + D/d_m) Q_xo) - m_r a_t,j  (Q_x the rolling
+  resultant of the film pressure, eq. 35, of which the roller takes the share R_x/(D/2);
   a_t the tangential whirl acceleration, eqs. 3-4);
-* cage (eq. 32): sum_j F_d,j = 0 (the paper's free cage; an optional cage drag torque
-  ``cage_drag_torque`` [N m] can be added: sum_j F_d,j = T_c / (d_m/2)).
+* cage (eq. 32): sum_j F_d,j = (D/d_m) sum_j f_d,j + T_c / (d_m/2). Paper 000 writes
+  sum F_d = 0; the radial pocket friction f_d acts D/2 beside the roller centre and retards
+  the cage on either pocket face, and without it the energy balance (shaft power = the
+  dissipation, :attr:`RollerSkiddingResult.power_loss`) does not close. ``cage_drag_torque``
+  T_c [N m] is an optional extra drag (default 0, as the paper).
 
 Radial equilibrium (eqs. 20/23) with the centrifugal force and the whirl inertia gives the
 contact loads (:mod:`thermobearing.loads_roller`); an unloaded roller has no inner contact
@@ -108,6 +112,39 @@ class RollerSkiddingResult:
     def element_speeds(self) -> np.ndarray:
         """Alias of ``roller_speed`` (the common skidding-result name)."""
         return self.roller_speed
+
+    @property
+    def shaft_torque(self) -> float:
+        """Torque the shaft delivers to the inner ring [N m].
+
+        T = (d_m - D)/2 * sum_j (S_ij + Q_xij): minus the tangential fluid force on the inner
+        raceway (shear plus pressure), at the raceway radius of paper 000 eq. 12.
+        """
+        r_i = float(self.extras["raceway_radius_inner"])
+        return r_i * float(np.sum(self.inner.race_shear_force))
+
+    @property
+    def power_loss(self) -> dict[str, float]:
+        """Power dissipated by mechanism [W] (frame independent, from relative speeds).
+
+        At a raceway contact the film takes ``C V + Q_x u_e`` (Couette force times the sliding
+        V = u_race - u_roller, plus the rolling resistance Q_x times the entrainment speed
+        u_e = (u_race + u_roller)/2, which is the Poiseuille shear Q_x/2 on each surface);
+        in the pocket film ``f_d omega_r D/2``. Keys:
+        ``inner_shear``, ``inner_rolling``, ``outer_shear``, ``outer_rolling``, ``pocket``,
+        ``total``. In a converged state ``total`` equals ``shaft_torque * inner_speed``
+        (energy balance; it follows from the roller moment and cage equations).
+        """
+        d = float(self.extras["roller_diameter"])
+        out = {}
+        for race, f, v, ue in (
+                ("inner", self.inner, self.inner_sliding_speed, self.inner_entrainment_speed),
+                ("outer", self.outer, self.outer_sliding_speed, self.outer_entrainment_speed)):
+            out[f"{race}_shear"] = float(np.sum(f.traction * v))
+            out[f"{race}_rolling"] = float(np.sum(f.rolling_force * np.abs(ue)))
+        out["pocket"] = float(np.sum(self.pocket_friction * np.abs(self.roller_speed) * 0.5 * d))
+        out["total"] = sum(out.values())
+        return out
 
     @property
     def kinematic_state(self) -> Any:
@@ -341,11 +378,15 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
                               u_ro, u_roll, film=model.film_outer, **common)
     ax, ay = whirl_acceleration
     a_t = -ax * np.sin(azimuth) + ay * np.cos(azimuth)
-    pocket = fi.orbital_force - fo.orbital_force - model.roller_mass * a_t
+    share_i, share_o = model.radius_inner / half_d, model.radius_outer / half_d
+    pocket = fi.orbital_force(share_i) - fo.orbital_force(share_o) - model.roller_mass * a_t
     fric = pocket_forces(pocket, omega_r, d, model.length, model.eta0,
                          model.pocket_clearance).friction
     roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
-    cage_eq = float(np.sum(pocket)) - model.cage_drag_torque / (0.5 * d_m)
+    # cage: pocket normal forces at d_m/2; the (radial) pocket friction acts at D/2 beside
+    # the roller centre and retards the cage on either pocket face
+    cage_eq = (float(np.sum(pocket)) - (d / d_m) * float(np.sum(fric))
+               - model.cage_drag_torque / (0.5 * d_m))
     return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, u_ri - u_roll, u_ro - u_roll,
                  0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o)
 
@@ -574,7 +615,10 @@ def solve_model(
         eta0=model.eta0, extras={"ring_displacement": ld.ring_displacement, "method": method,
                                  "n_loaded": ld.n_loaded, "contact_length": model.length,
                                  "radius_inner": model.radius_inner,
-                                 "radius_outer": model.radius_outer},
+                                 "radius_outer": model.radius_outer,
+                                 "roller_diameter": model.roller_diameter,
+                                 "raceway_radius_inner": 0.5 * (model.pitch_diameter
+                                                                - model.roller_diameter)},
     )
 
 

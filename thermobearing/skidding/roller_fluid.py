@@ -23,8 +23,10 @@ solution; here they come in closed form, per contact:
   against the entrainment. ``Q_x`` is the smaller of the rigid-isoviscous value (Martin
   cylinder with Reynolds outlet conditions, coefficients computed below from the Reynolds
   equation) and the piezoviscous-elastic value of paper 000 eq. 35 (Dowson-Higginson
-  ``Q_x = 18.4 G^-0.3 U^0.7 E' R l``; the paper's factor (1 - D/d_m) belongs to its
-  normalisation by the roller radius and is absorbed in the contact radius R here). The
+  ``Q_x = 18.4 G^-0.3 U^0.7 E' R l`` for both bodies together).
+  (The factor (1 - D/d_m) of eq. 35 is the roller's share of Q_x: the pressure acts normal to
+  both surfaces, so the roller takes R_x/(D/2) of the rolling-direction resultant and the
+  raceway the rest; see :meth:`LineContactForces.orbital_force`.) The
   D-H formula is a heavy-load EHL fit and gives rolling forces of the order of the normal
   load at the centrifugal-only loads of an unloaded roller, where the contact is
   rigid-isoviscous; the minimum picks the regime.
@@ -188,7 +190,9 @@ class LineContactForces:
     dtraction_dslide : d traction / d V [N s/m].
     poiseuille : Poiseuille (rolling) shear force on each surface [N], >= 0, acting against
         the entrainment direction.
-    rolling_force : Q_x, pressure force on the roller along the entrainment [N] (>= 0).
+    rolling_force : Q_x = int p dh/dx dx, the rolling-direction resultant of the film
+        pressure on both bodies [N] (>= 0, along the entrainment); the roller takes the
+        share R_x/(D/2) of it (:meth:`orbital_force`).
     entrainment_sign : sign of (u_race + u_roller) (+1 or -1).
     film_thickness : central film h_c [m] (inf where unloaded).
     half_width, max_pressure : Hertz b [m], p_H [Pa].
@@ -210,10 +214,26 @@ class LineContactForces:
         """Total shear force on the roller surface along the axis [N] (torque-producing)."""
         return self.traction - self.poiseuille * self.entrainment_sign
 
+    def orbital_force(self, roller_share: float) -> np.ndarray:
+        """Fluid force on the roller along the axis: shear + its share of the pressure [N].
+
+        The film pressure acts normal to both surfaces; its rolling-direction resultant
+        ``Q_x = int p dh/dx dx`` splits between the bodies in proportion to their surface
+        slopes, so the roller takes ``roller_share = R_x / (D/2)`` of it (1 - D/d_m at the
+        inner race, 1 + D/d_m at the outer: the factor of paper 000 eq. 35) and the raceway the
+        rest. Both shares pass through the body's centre (roller axis, bearing axis), which
+        keeps the film free of torque about the bearing axis.
+        """
+        return self.shear_force + roller_share * self.rolling_force * self.entrainment_sign
+
     @property
-    def orbital_force(self) -> np.ndarray:
-        """Total fluid force on the roller along the axis (shear + pressure) [N]."""
-        return self.shear_force + self.rolling_force * self.entrainment_sign
+    def race_shear_force(self) -> np.ndarray:
+        """Shear force of the film on the raceway, against the axis [N] (Couette + Poiseuille).
+
+        The raceway gets ``-(C + Q_x/2)`` along the axis: the torque the ring must be driven
+        with is (raceway radius) x this force.
+        """
+        return self.traction + self.poiseuille * self.entrainment_sign
 
 
 def outer_gap(X: np.ndarray) -> np.ndarray:
