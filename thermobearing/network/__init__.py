@@ -22,6 +22,19 @@ Quick use::
 
 ``heat(t, T)``: T over ``network.state_nodes`` [K]; returns W per state node (array, or
 dict by node name; :meth:`ThermalNetwork.distribute` maps heat-source roles to nodes).
+Pass ``heat_jacobian(t, T)`` (dq/dT, (n,) diagonal or (n, n)) when you have it, and
+``heat_time_dependent=False`` when q changes with t only at the breakpoints.
+
+Step-wise use (a coupled loop that re-solves kinematics between thermal steps)::
+
+    stepper = TransientStepper(net, method="tr_bdf2", rtol=1e-5, atol=1e-3)
+    out = stepper.advance(t, T, dt, heat)      # adaptive sub-steps inside [t, t + dt]
+    t, T = out.time, out.temperatures          # out.audit: energy flows of the interval
+
+Templates: ``four_node_paper002(bearing, lubricant, housing_outer_diameter=...,
+housing_length=..., oil_flow=...)`` and ``seven_node(...)``; ``TEMPLATES`` registry.
+Oil-flow what-if: ``net.set_stream_flow("oil", oil_capacity_rate(lub, Q, T_in))``.
+Scene TOML: ``net.to_dict()`` / ``ThermalNetwork.from_dict(d)``.
 """
 
 from .assemble import Assembler, System, assemble

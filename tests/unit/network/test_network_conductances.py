@@ -180,3 +180,31 @@ def test_two_bearings_one_rig_and_seven_node(qj1044):
     # the seven-node split conserves the total heat capacity
     assert sum(n7.capacity(n) for n in n7.state_nodes) == pytest.approx(
         sum(four.capacity(n) for n in four.state_nodes), rel=1e-12)
+
+
+def test_oil_forced_convection_models_by_hand():
+    lub_mod = pytest.importorskip("thermobearing.lubricant")
+    from thermobearing.network.conductances import (
+        OilForcedConvectionPlate,
+        OilForcedConvectionSphere,
+    )
+
+    lub = lub_mod.load_lubricant("ISO_VG46")
+    Tb, Ta = 330.0, 340.0  # oil, ball
+    rho, mu = float(lub.density(Tb)), float(lub.dynamic_viscosity(Tb))
+    k, cp = float(lub.thermal_conductivity(Tb)), float(lub.specific_heat(Tb))
+    mu_s = float(lub.dynamic_viscosity(Ta))
+    D, v = 0.035, 3.0
+    re, pr = rho * v * D / mu, mu * cp / k
+    nu = 2 + (0.4 * re**0.5 + 0.06 * re ** (2 / 3)) * pr**0.4 * (mu / mu_s) ** 0.25
+    m = OilForcedConvectionSphere("ISO_VG46", D, v, 20)
+    assert m.conductance(Ta, Tb) == pytest.approx(20 * math.pi * D**2 * nu * k / D, rel=1e-9)
+    # plate, laminar, Pr > 10: Nu = 0.678 Re^0.5 Pr^(1/3) (ht, Baehr) at the film temperature
+    Tf = 0.5 * (Ta + Tb)
+    rho, mu = float(lub.density(Tf)), float(lub.dynamic_viscosity(Tf))
+    k, cp = float(lub.thermal_conductivity(Tf)), float(lub.specific_heat(Tf))
+    L = 0.05
+    re, pr = rho * v * L / mu, mu * cp / k
+    h = 0.678 * re**0.5 * pr ** (1 / 3) * k / L
+    p = OilForcedConvectionPlate("ISO_VG46", L, v, 0.02)
+    assert p.conductance(Ta, Tb) == pytest.approx(h * 0.02, rel=1e-9)
