@@ -1,0 +1,29 @@
+"""Numerical (thermal) EHL of line contacts (engineer D).
+
+Public API
+----------
+:func:`solve_dimensionless` (Moes M, L), :func:`solve_line_contact` (dimensional, isothermal),
+:func:`solve_thermal_line_contact` (thermal, paper 001), :class:`FilmTable` (cache /
+interpolation table for transients), registry :data:`EHL_SOLVERS` (``"numerical_ehl"``,
+``"numerical_tehl"``). See :mod:`.line`, :mod:`.thermal`, :mod:`.solver`, :mod:`.kernel`,
+:mod:`.cache`.
+"""
+
+from .cache import EHL_SOLVERS, FilmPoint, FilmTable, numerical_ehl, numerical_tehl
+from .line import (
+    LineContactCase,
+    LineEHLSolution,
+    Traction,
+    line_contact_case,
+    moes_dimensionless,
+    solve_dimensionless,
+    solve_line_contact,
+)
+from .thermal import SolidThermal, ThermalLineEHLSolution, solve_thermal_line_contact
+
+__all__ = [
+    "EHL_SOLVERS", "FilmPoint", "FilmTable", "LineContactCase", "LineEHLSolution",
+    "SolidThermal", "ThermalLineEHLSolution", "Traction", "line_contact_case",
+    "moes_dimensionless", "numerical_ehl", "numerical_tehl", "solve_dimensionless",
+    "solve_line_contact", "solve_thermal_line_contact",
+]

@@ -159,7 +159,7 @@ def _initial_guess(prob: LineProblem, hc_guess: float) -> tuple[np.ndarray, floa
     return P, hc_guess - float(np.interp(0.0, X, base))
 
 
-def _moes_dimensionless(M: float, L: float) -> float:
+def moes_dimensionless(M: float, L: float) -> float:
     """Moes central film H(M, L) evaluated through :func:`thermobearing.film.moes_line_central`."""
     from ..film import moes_line_central
 
@@ -253,7 +253,7 @@ def solve_dimensionless(
                     except ConvergenceError:
                         P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2)
                 else:
-                    P0, H00 = _initial_guess(prob, _moes_dimensionless(M, L) * math.pi / (8 * M))
+                    P0, H00 = _initial_guess(prob, moes_dimensionless(M, L) * math.pi / (8 * M))
                     P, H0, rep = time_march(prob, P0, H00, linear=lin_k)
             else:
                 Pg = np.interp(prob.x, X, P)

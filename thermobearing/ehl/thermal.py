@@ -208,9 +208,14 @@ def _film_fields(lub, T, p, h, zeta, dpdx, ua, ub):
     tau = dpdx[:, None] * (z - (F1h / F0h)[:, None]) + ((ub - ua) / F0h)[:, None]
     eta_e = h / F0h
     eta_e1 = h**2 / F1h
-    rho_e = cumint(rho)[:, -1] / h
-    rho_e1 = cumint(rho * F0)[:, -1] / h**2
-    rho_e2 = cumint(rho * F1)[:, -1] / h**3
+    # outer integrals by Simpson's rule (exact for the quadratic rho*F1 of a uniform film)
+    nz = zeta.size
+    wts = np.ones(nz)
+    wts[1:-1:2], wts[2:-1:2] = 4.0, 2.0
+    wts *= (zeta[1] - zeta[0]) / 3.0
+    rho_e = (rho @ wts)
+    rho_e1 = ((rho * F0) @ wts) / h
+    rho_e2 = ((rho * F1) @ wts) / h**2
     rho_over_eta_e = 12.0 * (eta_e * rho_e1 / eta_e1 - rho_e2)
     couette = rho_e * ua + eta_e * rho_e1 * (ub - ua)
     return eta, rho, u, tau, rho_over_eta_e, couette
@@ -258,6 +263,8 @@ def solve_thermal_line_contact(
     """
     t0 = time.perf_counter()
     check_temperature("inlet_temperature", inlet_temperature)
+    if nz < 5 or nz % 2 == 0:
+        raise InputError("nz", nz, "an odd number >= 5 (Simpson's rule across the film)")
     check_positive("entrainment_speed", entrainment_speed)
     if not abs(slide_to_roll) < 2.0:
         raise InputError("slide_to_roll", slide_to_roll, "|SRR| < 2 (both surfaces moving)")

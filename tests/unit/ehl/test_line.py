@@ -1,0 +1,87 @@
+"""Isothermal line-contact EHL: convergence, formulas, errors, traction (engineer D)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.ehl.line import (
+    moes_dimensionless,
+    solve_dimensionless,
+    solve_line_contact,
+)
+from thermobearing.errors import ConvergenceError, InputError
+
+
+def _hc(M, L, n):
+    return solve_dimensionless(M, L, n=n, max_grid_error=1.0).central_film_moes
+
+
+def test_grid_convergence_second_order_and_n512_within_1_percent():
+    # M = 10, L = 5: central film on n = 256, 512, 1024 nodes; the discretisation is second
+    # order (conservative central Poiseuille term, second-order upwind wedge). Measured:
+    # 3.79504, 3.81233, 3.81662 (order 2.01; with n = 2048 as well the next pair gives 2.01).
+    hs = [_hc(10.0, 5.0, n) for n in (256, 512, 1024)]
+    d1, d2 = hs[1] - hs[0], hs[2] - hs[1]
+    order = math.log2(abs(d1 / d2))
+    extrap = hs[2] + d2 / 3.0
+    err512 = abs(hs[1] - extrap) / extrap
+    print(f"\nM=10 L=5 h_c: {hs}, observed order {order:.2f}, N=512 error {err512:.3%}")
+    assert 1.6 < order < 2.6
+    assert err512 < 0.01
+
+
+@pytest.mark.slow
+def test_grid_convergence_heavier_loads_reported():
+    # Honest record: at M = 100 the inlet zone is thin and the error constant large; the
+    # N = 512 central film is about 2 % (M=100, L=10, domain [-2.5, 1.5]) from the
+    # extrapolated value, i.e. the 1 % target is met there only from N = 1024 on.
+    rows = []
+    for M, L in ((10.0, 10.0), (100.0, 5.0), (100.0, 10.0)):
+        hs = [_hc(M, L, n) for n in (512, 1024, 2048)]
+        d1, d2 = hs[1] - hs[0], hs[2] - hs[1]
+        extrap = hs[2] + d2 / 3.0
+        rows.append((M, L, math.log2(abs(d1 / d2)), abs(hs[0] - extrap) / extrap,
+                     abs(hs[1] - extrap) / extrap))
+    print("\n  M     L   order  err(N=512)  err(N=1024)")
+    for r in rows:
+        print(f"{r[0]:5g} {r[1]:5g} {r[2]:6.2f} {r[3]:10.3%} {r[4]:10.3%}")
+    for r in rows:
+        assert 1.5 < r[2] < 2.7
+        assert r[4] < 0.01
+
+
+def test_central_film_close_to_moes_formula_m10():
+    # Moes (1992) line-contact formula (B's film.moes_line_central): measured +4 % at M=10, L=5
+    h = solve_dimensionless(10.0, 5.0, n=1024).central_film_extrapolated * 8 * 10 / math.pi
+    assert h == pytest.approx(moes_dimensionless(10.0, 5.0), rel=0.10)
+
+
+def test_out_of_range_and_coarse_grid_errors_name_m_l_and_pointer():
+    with pytest.raises(InputError, match="thermobearing.film"):
+        solve_dimensionless(1e5, 10.0)
+    with pytest.raises(InputError):
+        solve_dimensionless(10.0, 5.0, n=32)
+    with pytest.raises(ConvergenceError, match=r"grid too coarse.*M=10.*thermobearing\.film"):
+        solve_dimensionless(10.0, 2.0, n=256, max_grid_error=1e-6)
+
+
+def test_dimensional_front_end_and_traction_split():
+    # steel roller pair, 1e5 N/m, R = 10 mm, 5 m/s, eta0 = 0.05 Pa s, alpha = 2e-8 1/Pa
+    sol = solve_line_contact(1e5, 0.01, 2.2e11, 5.0, 0.05, alpha=2e-8, n=512)
+    assert 1 < sol.M < 3000
+    assert sol.minimum_film < sol.central_film
+    assert sol.max_pressure > 0.9 * sol.hertz_pressure
+    # load balance: integral of the pressure = load per length
+    assert np.trapezoid(sol.pressure, sol.x) == pytest.approx(1e5, rel=2e-3)
+    t0 = sol.traction(0.0)
+    t1 = sol.traction(0.01)
+    t2 = sol.traction(0.02)
+    assert t0.couette == 0.0
+    assert t1.couette < 0.0 < t1.total - t1.couette + abs(t1.couette) * 10  # sign: u2 - u1 < 0
+    assert t2.couette == pytest.approx(2 * t1.couette, rel=1e-12)  # Newtonian: linear in SRR
+    assert t1.poiseuille == t2.poiseuille
+    capped = sol.traction(0.02, limiting_shear_coefficient=0.05)
+    assert abs(capped.couette) < abs(t2.couette)

@@ -1,0 +1,187 @@
+"""Cached / tabulated numerical EHL films for the quasi-dynamics, and the ``ehl_solver`` registry.
+
+A roller-bearing transient calls the film model for every loaded contact at every step; the
+numerical (T)EHL solve costs seconds. :class:`FilmTable` answers from a table over
+(load per length, entrainment speed, slide-to-roll ratio, inlet temperature): each query is
+located in a grid cell (log-spaced in load and speed, uniform in slide-to-roll ratio and
+temperature); the solver runs only at cell corners it has not seen before, and the answer is
+the multilinear interpolation of ``ln h`` (films vary as powers of load and speed, so the
+interpolation is linear in ``ln w``, ``ln u``) and of the other outputs. ``mode="nearest"``
+returns the nearest corner (one solve per new cell, coarser).
+
+The registry :data:`EHL_SOLVERS` holds the numerical line-contact models under the names a
+scene uses (``film = "numerical_ehl"`` or ``"numerical_tehl"``); they are kept out of
+:data:`thermobearing.film.FILM` because they need a lubricant object and an inlet temperature
+rather than the closed-form keyword set.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError, check_positive
+from ..registry import Registry
+
+EHL_SOLVERS: Registry[Callable[..., object]] = Registry(
+    "ehl_solver", "numerical line-contact EHL film and traction (isothermal or thermal)"
+)
+
+_PARAMS = {
+    "load_per_length": "N/m", "reduced_radius_x": "m", "effective_modulus": "Pa",
+    "entrainment_speed": "m/s", "slide_to_roll": "-", "inlet_temperature": "K",
+}
+
+
+@dataclass(frozen=True)
+class FilmPoint:
+    """Outputs of one line-contact solve (SI): central_film [m], minimum_film [m],
+    max_pressure [Pa], traction [N/m] (film force per unit length on surface 1, rolling
+    direction), rolling_traction [N/m] (its Poiseuille part), max_temperature_rise [K]."""
+
+    central_film: float
+    minimum_film: float
+    max_pressure: float
+    traction: float
+    rolling_traction: float
+    max_temperature_rise: float
+
+
+@EHL_SOLVERS.register(
+    "numerical_ehl",
+    references=["li2018_nu214_skidding", "venner_lubrecht2000", "liu_wang_liu2000_dcfft",
+                "fischer1992"],
+    parameters=_PARAMS,
+    validity="1 <= M <= 3000, 0 <= L <= 40 (Moes); isothermal Newtonian; errors outside",
+)
+def numerical_ehl(load_per_length: float, reduced_radius_x: float, effective_modulus: float,
+                  entrainment_speed: float, slide_to_roll: float, inlet_temperature: float,
+                  *, lubricant, n: int = 512,
+                  limiting_shear_coefficient: float | None = None) -> FilmPoint:
+    """Isothermal numerical line-contact EHL at the inlet temperature (paper 000 eqs. 5, 7-11).
+
+    Viscosity at ``inlet_temperature`` from ``lubricant`` (Roelands index or Barus alpha),
+    Dowson-Higginson density. Traction by paper 000 eq. 5 (optional limiting shear stress).
+    """
+    from .line import solve_line_contact
+
+    T = float(inlet_temperature)
+    eta = float(lubricant.dynamic_viscosity(T))
+    if getattr(lubricant, "pressure_law", "roelands") == "barus":
+        kw = {"alpha": float(lubricant.pressure_viscosity_coefficient(T))}
+    else:
+        kw = {"roelands_z": float(lubricant.roelands_index(T))}
+    sol = solve_line_contact(load_per_length, reduced_radius_x, effective_modulus,
+                             entrainment_speed, eta, n=n, **kw)
+    tr = sol.traction(slide_to_roll, limiting_shear_coefficient)
+    return FilmPoint(sol.central_film, sol.minimum_film, sol.max_pressure, tr.total,
+                     tr.poiseuille, 0.0)
+
+
+@EHL_SOLVERS.register(
+    "numerical_tehl",
+    references=["shi2015_tehl_roller", "yang_wen1990", "venner_lubrecht2000"],
+    parameters=_PARAMS,
+    validity="1 <= M <= 3000, 0 <= L <= 40 at the inlet temperature; |SRR| < 2; Newtonian",
+)
+def numerical_tehl(load_per_length: float, reduced_radius_x: float, effective_modulus: float,
+                   entrainment_speed: float, slide_to_roll: float, inlet_temperature: float,
+                   *, lubricant, solid, n: int = 512) -> FilmPoint:
+    """Thermal numerical line-contact EHL (paper 001 eqs. 6 and 8, line-contact form).
+
+    ``solid``: :class:`thermobearing.ehl.thermal.SolidThermal` of both bodies (or a
+    :class:`thermobearing.materials.Material`).
+    """
+    from .thermal import SolidThermal, solve_thermal_line_contact
+
+    s = solid if isinstance(solid, SolidThermal) else SolidThermal.of(solid)
+    sol = solve_thermal_line_contact(load_per_length, reduced_radius_x, effective_modulus,
+                                     entrainment_speed, slide_to_roll, lubricant,
+                                     inlet_temperature, solid1=s, n=n)
+    return FilmPoint(sol.central_film, sol.minimum_film, sol.max_pressure, sol.shear_force,
+                     sol.rolling_force, sol.max_temperature - float(inlet_temperature))
+
+
+class FilmTable:
+    """Lazily filled interpolation table of a registered EHL solver for one contact geometry.
+
+    Parameters
+    ----------
+    model : name in :data:`EHL_SOLVERS` (``"numerical_ehl"`` or ``"numerical_tehl"``).
+    reduced_radius_x : R_x [m]; effective_modulus : E' [Pa]; lubricant, and for the thermal
+        model ``solid``.
+    load_step, speed_step : ratio between neighbouring grid values of load and speed (> 1).
+    srr_step : grid spacing of the slide-to-roll ratio [-]; temperature_step [K].
+    mode : ``"linear"`` (multilinear, up to 16 solves for a new cell) or ``"nearest"``.
+    **solver_kwargs : passed to the solver (``n``, ...).
+
+    The instance is a mutable memo (it is not global state: its owner decides its lifetime).
+    """
+
+    def __init__(self, model: str, reduced_radius_x: float, effective_modulus: float, *,
+                 lubricant, load_step: float = 1.25, speed_step: float = 1.25,
+                 srr_step: float = 0.02, temperature_step: float = 5.0,
+                 mode: str = "linear", **solver_kwargs) -> None:
+        self.solver = EHL_SOLVERS.get(model)
+        check_positive("reduced_radius_x", reduced_radius_x)
+        check_positive("effective_modulus", effective_modulus)
+        for name, v in (("load_step", load_step), ("speed_step", speed_step)):
+            if not v > 1.0:
+                raise InputError(name, v, "a ratio > 1")
+        check_positive("srr_step", srr_step)
+        check_positive("temperature_step", temperature_step)
+        if mode not in ("linear", "nearest"):
+            raise InputError("mode", mode, "'linear' or 'nearest'")
+        self.rx = float(reduced_radius_x)
+        self.ep = float(effective_modulus)
+        self.lubricant = lubricant
+        self.steps = (math.log(load_step), math.log(speed_step), float(srr_step),
+                      float(temperature_step))
+        self.mode = mode
+        self.kwargs = solver_kwargs
+        self._nodes: dict[tuple[int, int, int, int], FilmPoint] = {}
+        self.solves = 0
+        self.queries = 0
+
+    def _coords(self, w: float, u: float, srr: float, T: float) -> np.ndarray:
+        return np.array([math.log(w), math.log(u), srr, T]) / np.array(self.steps)
+
+    def _node(self, idx: tuple[int, int, int, int]) -> FilmPoint:
+        got = self._nodes.get(idx)
+        if got is None:
+            lw, lu, s, t = (i * st for i, st in zip(idx, self.steps, strict=True))
+            got = self.solver(math.exp(lw), self.rx, self.ep, math.exp(lu), s, t,
+                              lubricant=self.lubricant, **self.kwargs)
+            self._nodes[idx] = got
+            self.solves += 1
+        return got
+
+    def __call__(self, load_per_length: float, entrainment_speed: float,
+                 slide_to_roll: float, inlet_temperature: float) -> FilmPoint:
+        """Film and traction at one operating point (SI), from the table."""
+        check_positive("load_per_length", load_per_length)
+        check_positive("entrainment_speed", entrainment_speed)
+        self.queries += 1
+        c = self._coords(load_per_length, entrainment_speed, slide_to_roll, inlet_temperature)
+        if self.mode == "nearest":
+            return self._node(tuple(int(v) for v in np.rint(c)))
+        lo = np.floor(c).astype(int)
+        frac = c - lo
+        acc = np.zeros(6)
+        for corner in itertools.product((0, 1), repeat=4):
+            wgt = float(np.prod([f if b else 1.0 - f for f, b in zip(frac, corner,
+                                                                        strict=True)]))
+            if wgt == 0.0:
+                continue
+            p = self._node(tuple(int(v) for v in lo + np.array(corner)))
+            acc += wgt * np.array([math.log(p.central_film), math.log(p.minimum_film),
+                                   p.max_pressure, p.traction, p.rolling_traction,
+                                   p.max_temperature_rise])
+        return FilmPoint(math.exp(acc[0]), math.exp(acc[1]), *acc[2:].tolist())
+
+    def __len__(self) -> int:
+        return len(self._nodes)
