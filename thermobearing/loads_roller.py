@@ -1,7 +1,7 @@
 """Quasi-static load distribution of a radially loaded cylindrical roller bearing.
 
-Harris & Kotzalas (2007, vol. 1 ch. 7 "Distribution of internal loading"; vol. 2 ch. 2
-"High-speed operation") treat a cylindrical roller bearing under a radial load ``F_r``
+Harris & Kotzalas (2007; vol. 1, internal load distribution; vol. 2, high-speed operation)
+treat a cylindrical roller bearing under a radial load ``F_r``
 with diametral clearance ``P_d``: the inner ring moves by ``delta_r`` and the roller at
 azimuth ``psi_j`` is squeezed by
 
@@ -13,7 +13,7 @@ is in radial equilibrium
     Q_oj - Q_ij = F_j                                                   (1)
 
 where ``F_j`` is the outward body force on the roller: the centrifugal force
-``F_c = m_r (d_m / 2) omega_c^2`` (Harris & Kotzalas vol. 2 eq. 2.60 type; paper 000 eq. 20,
+``F_c = m_r (d_m / 2) omega_c^2`` (Harris & Kotzalas vol. 2 ch. 2; paper 000 eq. 20,
 ``F_omega``) plus, in a whirling squeeze-film damper, the radial component of the inertial
 force ``-m_r e_ddot`` of paper 000 eqs. 3-4. Each contact is a line contact with the
 load-deflection law ``Q = K delta^n`` (Palmgren: n = 10/9, ``K`` from
@@ -39,7 +39,7 @@ import numpy as np
 
 from .errors import ConvergenceError, InputError, check_finite, check_positive
 
-#: Palmgren's line-contact load-deflection exponent (Harris & Kotzalas vol. 1 eq. 6.41).
+#: Palmgren's line-contact load-deflection exponent (Harris & Kotzalas 2007 vol. 1 ch. 6).
 LINE_CONTACT_EXPONENT = 10.0 / 9.0
 
 
