@@ -345,18 +345,24 @@ def _spin_flow(w0, tau, a_i, a_o, q_i, q_o, r, half_d, jr, tv, tmu):
         if t0 == 0.0 or rem <= 0.0:
             return w
         direction = 1.0 if t0 > 0.0 else -1.0
+        # nearest kink of T ahead: w where a contact's sliding speed a - r w = +-tv[k]
         bp = math.inf
         dist = math.inf
+        eps = 1e-12 * (abs(w) + 1.0)
         for k in range(tv.size):
-            for sgn in (1.0, -1.0):
-                for a_c, q_c in ((a_i, q_i), (a_o, q_o)):
-                    if q_c <= 0.0:
+            for m in range(4):
+                if m < 2:
+                    if q_i <= 0.0:
                         continue
-                    wb = (a_c - sgn * tv[k]) / r
-                    dd = (wb - w) * direction
-                    if dd > 1e-12 * (abs(w) + 1.0) and dd < dist:
-                        dist = dd
-                        bp = wb
+                    wb = (a_i - tv[k]) / r if m == 0 else (a_i + tv[k]) / r
+                else:
+                    if q_o <= 0.0:
+                        continue
+                    wb = (a_o - tv[k]) / r if m == 2 else (a_o + tv[k]) / r
+                dd = (wb - w) * direction
+                if eps < dd < dist:
+                    dist = dd
+                    bp = wb
         probe = w + direction * (0.5 * dist if dist < math.inf else 1.0)
         b = (_torque(probe, a_i, a_o, q_i, q_o, r, half_d, tv, tmu) - t0) / (probe - w)
         if b == 0.0:
