@@ -60,9 +60,18 @@ from ..registry import Registry
 
 ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 
-#: Drag models of the roller skidding solver: name -> factory returning a
-#: ``contact_forces(...)`` callable (see :func:`closed_form_contact_forces`). A numerical
-#: line-contact EHL (thermobearing.ehl) can register here and replace the closed form.
+#: Drag models of the roller skidding solver: name -> factory (no arguments) returning a
+#: callable with the signature of :func:`closed_form_contact_forces`::
+#:
+#:     contact_forces(load, length, radius, effective_modulus, u_race, u_roller, *, eta0,
+#:                    alpha, film, traction_law, temperature, rolling_force, oil_layer)
+#:         -> LineContactForces
+#:
+#: (arrays over rollers; a model may ignore the keywords it does not need). A numerical
+#: line-contact EHL (thermobearing.ehl) registers here with its Couette force (``traction``,
+#: ``dtraction_dslide``), Poiseuille force per surface (``poiseuille``) and the pressure's
+#: rolling resultant (``rolling_force`` = int p dh/dx dx) and is selected with
+#: ``solve_roller(..., drag_model="<name>")``.
 ROLLER_DRAG: Registry[Callable[..., Any]] = Registry(
     "roller_drag", "fluid forces of roller-raceway line contacts for the roller skidding solver")
 
