@@ -1,8 +1,9 @@
 """Skidding of a cylindrical roller bearing: the Z + 1 equations of paper 000.
 
 Li, Chen, Zhang, Wang (2018), seed ``000_3b5ca6eed61dd596.txt`` [li2018_nu214_skidding],
-after Harris (1966) [harris_kotzalas2007]. Unknowns: the spin speed ``omega_r,j`` of every
-roller and the cage speed ``omega_c``. Equations (paper eqs. 12-15, 20-32):
+after Harris (1966) [harris1966_roller_skidding; harris_kotzalas2007]. Unknowns: the spin
+speed ``omega_r,j`` of every roller and the cage speed ``omega_c``. Equations (paper eqs.
+12-15, 20-32):
 
 * kinematics (eqs. 12-15), in the cage frame, along each contact's race velocity:
   inner  u_race = (d_m - D)/2 (omega - omega_c),  outer  u_race = (d_m + D)/2 omega_c,

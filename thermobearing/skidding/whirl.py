@@ -16,6 +16,9 @@ sample the Z + 1 equations are
 solved quasi-statically (paper 000: Newton-Raphson), warm-started from the previous sample;
 the result is a time series of cage speed and slip with the min / max / mean / fluctuation
 (max - min) of paper 000 Tables 2-3.
+
+References: paper 000 [li2018_nu214_skidding] sec. 2.1 and 3.1; its whirl-skidding
+predecessor Li & Chen 2014 [li_chen2014_whirl_skidding].
 """
 
 from __future__ import annotations
