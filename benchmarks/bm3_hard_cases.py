@@ -15,7 +15,8 @@ Cases (each yields records with a pass/fail flag ``ok`` and the measured violati
 Each case runs ours (backward_euler, tr_bdf2) and, to show that the checks bite, explicit
 Euler and Crank-Nicolson on the same network and steps: explicit Euler blows up once
 dt > 2 C/K of the smallest node (and refuses a C = 0 node), Crank-Nicolson rings (its
-amplification tends to -1 on stiff modes and algebraic nodes flip sign every step).
+amplification tends to -1 on stiff modes; the residual of an algebraic node that is off its
+constraint at the start of a step flips sign every step).
 
 Usage: python benchmarks/bm3_hard_cases.py [--quick] [--json] [--out DIR]
 """
