@@ -12,14 +12,16 @@ Residuals
     scene's ``temperatures`` table interpolated linearly in time.
 Parameters
     Positive quantities (heat-transfer coefficients, dimensions, flows) are fitted as
-    z = ln(value), so they stay positive and a step means a relative change; temperatures
-    are fitted linearly in kelvin.
+    z = ln(value / start), so they stay positive and a step means a relative change;
+    temperatures are fitted linearly, z = T - T_start in kelvin (other quantities that can
+    be negative: z = (value - start) / |start|). z = 0 at the start, so least_squares'
+    first trust region (radius 1) allows a factor e or 1 K.
 Jacobian
     Forward finite differences in z (default step 0.01 in ln, i.e. 1 %, and 0.1 K for
     temperatures): each Jacobian costs one model run per fitted parameter. The model is a
     transient simulation with adaptive steps; its output is smooth in the parameters at
     that step size (checked for h_oil/h_air on the QJ1044 scene: the 0.1 % and 1 %
-    differences agree to 0.1 %), a much smaller step would only resolve solver noise.
+    differences agree within 0.5 %); a much smaller step would only resolve solver noise.
 Confidence intervals (approximate, linearised)
     cov(z) = s^2 (J^T J)^-1 with s^2 = SSR / (m - p) and J the Jacobian at the optimum;
     the 95 % interval is z +- t_{0.975, m-p} sqrt(cov_jj), mapped back through exp for
@@ -88,10 +90,12 @@ class FitParameter:
     path : dotted scene path (``network.parameters.h_oil``).
     unit : SI unit of the value (pint spelling; ``""`` when dimensionless or unknown).
     display_unit : unit used in tables and in the calibrated scene (``"W/(m**2*K)"``).
-    transform : ``"log"`` (z = ln value) or ``"linear"`` (z = value in SI).
-    initial : starting value [SI].
+    transform : ``"log"`` (z = ln(value / initial)) or ``"linear"``
+        (z = (value - initial) / scale).
+    initial : starting value [SI]; z = 0 there.
     lower, upper : bounds [SI] (``-inf``/``inf`` when free; ``0`` for log parameters).
     fd_step : finite-difference step in z.
+    scale : unit of z for linear parameters (1 K for temperatures, else |initial| or 1).
     """
 
     path: str
@@ -102,19 +106,27 @@ class FitParameter:
     lower: float
     upper: float
     fd_step: float
+    scale: float = 1.0
 
     def to_z(self, value: float) -> float:
-        return math.log(value) if self.transform == "log" else float(value)
+        """Fitted coordinate: ln(value / initial) (log) or (value - initial) / scale."""
+        if self.transform == "log":
+            return math.log(value / self.initial)
+        return (float(value) - self.initial) / self.scale
 
     def from_z(self, z: float) -> float:
-        return math.exp(z) if self.transform == "log" else float(z)
+        if self.transform == "log":
+            return self.initial * math.exp(z)
+        return self.initial + self.scale * float(z)
 
     def z_bounds(self) -> tuple[float, float]:
         if self.transform == "log":
-            lo = math.log(self.lower) if self.lower > 0 else -np.inf
-            hi = math.log(self.upper) if math.isfinite(self.upper) else np.inf
+            lo = self.to_z(self.lower) if self.lower > 0 else -np.inf
+            hi = self.to_z(self.upper) if math.isfinite(self.upper) else np.inf
             return lo, hi
-        return self.lower, self.upper
+        lo = self.to_z(self.lower) if math.isfinite(self.lower) else -np.inf
+        hi = self.to_z(self.upper) if math.isfinite(self.upper) else np.inf
+        return lo, hi
 
     def show(self, value: float) -> float:
         """SI value in the display unit."""
@@ -135,7 +147,7 @@ class FittedParameter:
 
     ``ci_low``/``ci_high`` bound the approximate (linearised) 95 % confidence interval;
     ``std_error_z`` is the standard error in the fitted coordinate (in ln for log
-    parameters, i.e. roughly a relative standard error).
+    parameters, i.e. roughly a relative standard error; in K for temperatures).
     """
 
     path: str
@@ -379,10 +391,12 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         if not lo <= value <= hi:
             raise InputError(f"x0[{path}]", value, f"a start inside the bounds [{lo}, {hi}]")
     transform = "linear" if (is_temp or value <= 0 or lo < 0) else "log"
-    step = fd_step.get(path, 0.1 if is_temp else (0.01 if transform == "log"
-                                                   else 1e-3 * max(abs(value), 1.0)))
+    scale = 1.0 if (is_temp or value == 0) else abs(value)
+    step = fd_step.get(path, 0.1 if is_temp else 0.01)
+    if not step > 0:
+        raise InputError(f"fd_step[{path}]", step, "a step > 0")
     return FitParameter(path, unit, display, transform, float(value), float(lo), float(hi),
-                        float(step))
+                        float(step), float(scale))
 
 
 def _apply(scene_dict: Mapping[str, Any], params: Sequence[FitParameter],
@@ -664,10 +678,22 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
         initial_rmse=float(np.sqrt(np.mean(r_initial**2))),
         residual_sd=math.sqrt(s2), points=m, dof=dof, runs=model.runs,
         success=bool(sol.success), message=str(sol.message), covariance=cov,
-        correlation=corr, identifiable=identifiable, scene=model.scene(z),
+        correlation=corr, identifiable=identifiable, scene=_stamped(model.scene(z), fitted,
+                                                                  scene),
         measured_file=str(scene.resolve_path(scene.measured.file).resolve()),
         column_map=column_map,
         notes=notes)
+
+
+def _stamped(calibrated: Scene, fitted: Sequence[FittedParameter], original: Scene) -> Scene:
+    """The calibrated scene with a line in ``source`` saying what was fitted to what (the
+    TOML header comments do not survive a load/save round trip; ``source`` does)."""
+    data = original.measured.file if original.measured is not None else "measured data"
+    what = ", ".join(f"{p.path} = {p.value:.6g} {p.unit}".rstrip() for p in fitted)
+    line = (f"Calibrated with thermobearing.calibrate against {data}: "
+            f"{what}.")
+    text = f"{original.source}\n{line}" if original.source else line
+    return calibrated.with_changes(source=text)
 
 
 # ---------------------------------------------------------------------------
@@ -702,7 +728,7 @@ def synthetic_measurements(scene: Scene, sensors: Mapping[str, str], *,
     """
     if noise_sd < 0 or not math.isfinite(noise_sd):
         raise InputError("noise_sd", noise_sd, "a standard deviation >= 0 K")
-    d = scene.to_dict()
+    d = json.loads(json.dumps(scene.to_dict()))  # deep copy: to_dict shares nested tables
     d.pop("measured", None)
     for path, v in (values or {}).items():
         _check_path(d, path)

@@ -80,6 +80,7 @@ def test_recovers_known_parameters_within_confidence_intervals(tmp_path, short_d
     text = paths["scene"].read_text()
     assert text.startswith("# Calibrated scene") and "linearised" in text
     back = loads_scene(text, base_dir=paths["scene"].parent)
+    assert "Calibrated with thermobearing.calibrate against rig.csv" in back.source
     h_oil = back.network["parameters"]["h_oil"]
     assert math.isclose(float(h_oil.split()[0]), res.parameters[0].value, rel_tol=1e-8)
     assert back.resolve_path(back.measured.file).resolve() == (tmp_path / "rig.csv").resolve()
@@ -87,20 +88,27 @@ def test_recovers_known_parameters_within_confidence_intervals(tmp_path, short_d
     assert summary["runs"] == res.runs
 
 
-def test_noise_free_data_give_the_true_value(tmp_path):
-    """Without noise the only error left is the finite-difference Jacobian and the solver
-    noise: the fitted h_oil must hit 400 W/(m^2 K) closely (one parameter, quick)."""
+def test_noise_free_data_give_the_true_values_log_and_linear(tmp_path):
+    """Without noise only the finite-difference Jacobian and the solver are left: a log
+    parameter (h_oil 270 -> 400 W/(m^2 K)) and a linear one in kelvin (oil inlet
+    35 -> 38 degC) must come back closely. A housing and an oil sensor."""
+    sensors = {"TC_DE": "drive_end.housing", "TC_oil": "non_drive_end.oil"}
     scene0 = _short_scene(tmp_path, measured=False)
-    data = synthetic_measurements(scene0, SENSORS, values=TRUE, noise_sd=0.0, every=300.0,
+    before = scene0.to_toml()
+    truth = {"network.parameters.h_oil": "400 W/(m**2*K)",
+             "supply.inlet_temperature": "38 degC"}
+    data = synthetic_measurements(scene0, sensors, values=truth, noise_sd=0.0, every=300.0,
                                   decimals=6)
-    scene = _short_scene(tmp_path, data)
-    scene = Scene.from_dict({**scene.to_dict(), "network": {
-        **scene.network, "parameters": {**scene.network["parameters"],
-                                        "h_air": "15 W/(m**2*K)"}}}, tmp_path)
-    res = calibrate(scene, ["network.parameters.h_oil"])
-    (p,) = res.parameters
-    assert p.value == pytest.approx(400.0, rel=2e-3)
-    assert res.rmse < 1e-3
+    assert scene0.to_toml() == before  # the input scene is not modified
+    scene = _short_scene(tmp_path, data, sensors=sensors)
+    res = calibrate(scene, list(truth))
+    h_oil, t_in = res.parameters
+    assert (h_oil.initial, h_oil.transform) == (pytest.approx(270.0), "log")
+    assert (t_in.initial, t_in.unit, t_in.transform) == (pytest.approx(35.0), "degC", "linear")
+    assert h_oil.value == pytest.approx(400.0, rel=2e-3)
+    assert t_in.value == pytest.approx(38.0, abs=0.01)
+    assert res.scene.supply.inlet_temperature == pytest.approx(311.15, abs=0.01)
+    assert res.rmse < 1e-3 < res.initial_rmse
 
 
 def test_cli_writes_calibrated_scene(tmp_path, short_data, capsys):
