@@ -591,7 +591,7 @@ class _Recorder:
 
     @staticmethod
     def _rate(f: np.ndarray, core: _Core) -> np.ndarray:
-        return np.where(core.diff, f / np.where(core.diff, core.C, 1.0), 0.0)
+        return f * core.invC  # dT/dt; 0 on zero-capacity nodes
 
     def start(self, t, y, f, core) -> None:
         self.started = True
