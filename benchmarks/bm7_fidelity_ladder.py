@@ -1,0 +1,229 @@
+"""BM-7: the fidelity ladder -- wall time against temperature and power-loss error.
+
+Problem: the default scene (``configs/scenes/qj1044_rig.toml``: two QJ1044 four-point ball
+bearings on one shaft, 1800 r/min, 33 L/min jet, axial load 0-42 kN in 22 steps of 3 min,
+four-node network per bearing); ``--quick``: every 6th load step (0, 12, 24, 36 kN).
+
+Levels (all on the same network, stepper and schedule):
+
+- L0: a global friction model, no kinematics: the SKF four-term model or Palmgren's
+  M0 + M1 (:mod:`thermobearing.global_friction`), oil viscosity at the bearing's oil-node
+  temperature, the whole loss on the oil node (driver in ``benchmarks/_protocol.py``:
+  the package has no scene-level L0 model yet);
+- L1 race control: quasi-static loads with race-control kinematics
+  (``[models] kinematics = "race_control"``) + closed-form film + the local heat sources;
+- L1 skidding: the scene's default (skidding solver + closed-form film + heat sources);
+- L2 (numerical EHL in the contacts): not run. The scene is a ball bearing and the
+  package's numerical EHL (``thermobearing.ehl``) solves line contacts only; no roller
+  scene with numerical EHL exists in ``configs/scenes``. Printed as skipped.
+
+Reference ("the highest level run", tightest settings): L1 skidding with
+``kinematics_tolerance`` 0.003, ``chunk`` 15 s, stepper rtol 1e-6.
+
+Errors, on the end of every load step: temperature = max |T - T_ref| over the 8 nodes [K];
+loss = max |P - P_ref| / P_ref over the bearings' total losses [-]. Budget: 1 K and 5 %
+(``--budget-K``, ``--budget-loss``): the script prints the cheapest level (at the scene's
+solver settings) and the cheapest solver setting of L1 skidding within the budget.
+
+Solver sweeps of L1 skidding against the same reference: ``solver.kinematics_tolerance``
+0.3, 0.1, 0.03, 0.01, 0.003 (chunk 60 s) and ``solver.chunk`` 180, 90, 60, 30, 15 s
+(tolerance 0.01). ``ratio_vs_anchor`` = (time of the scene's default, L1 skidding at
+tolerance 0.01 and chunk 60 s) / (record time): > 1 is cheaper than the default.
+
+Timing: one warm-up run of a 2-step protocol first (lazy imports, caches) so that no
+record pays first-call costs. Wall times on a shared machine are noisy: compare ratios.
+
+Usage: python benchmarks/bm7_fidelity_ladder.py [--quick] [--json] [--out DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from _protocol import (  # noqa: E402
+    default_scene,
+    errors,
+    run_l0,
+    run_l1,
+    with_models,
+    with_solver,
+)
+
+KIN_TOLERANCES = (0.3, 0.1, 0.03, 0.01, 0.003)
+CHUNKS = (180.0, 90.0, 60.0, 30.0, 15.0)
+REFERENCE = {"kinematics_tolerance": 0.003, "chunk": 15.0, "rtol": 1e-6}
+L0_MODELS = ("skf_four_term", "palmgren")
+
+
+def _setting(scene) -> str:
+    s = scene.solver
+    return f"kin_tol={s.kinematics_tolerance:g},chunk={s.chunk:g}s,rtol={s.rtol:g}"
+
+
+def l2_status(scene) -> str:
+    """Why L2 (numerical EHL) is not run on this scene (or '' if it could be)."""
+    from thermobearing.film import FILM
+    from thermobearing.geometry import load_bearing
+
+    balls = [b for b in scene.bearings
+             if hasattr(load_bearing(b.preset or str(scene.resolve_path(b.path))),
+                        "ball_diameter")]
+    numerical = [n for n in FILM.names() if "ehl" in n or "numerical" in n]
+    if balls:
+        return ("L2 skipped: the scene's bearings are ball bearings and the package's "
+                "numerical EHL (thermobearing.ehl) solves line contacts only; no roller "
+                "scene with numerical EHL exists in configs/scenes"
+                + ("" if numerical else "; no numerical-EHL film model is registered"))
+    if not numerical:
+        return "L2 skipped: no numerical-EHL film model is registered in the film family"
+    return ""
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="4 load steps instead of 22")
+    ap.add_argument("--json", action="store_true")
+    ap.add_argument("--out", default="benchmarks/out")
+    ap.add_argument("--budget-K", type=float, default=1.0, help="temperature budget [K]")
+    ap.add_argument("--budget-loss", type=float, default=0.05,
+                    help="relative total-loss budget [-]")
+    ap.add_argument("--no-sweeps", action="store_true", help="ladder only")
+    args = ap.parse_args(argv)
+
+    base = default_scene(quick=args.quick)
+    case = "qj1044_rig_quick" if args.quick else "qj1044_rig"
+    print(f"== BM-7 {case}: {len(base.schedule.steps)} load steps, "
+          f"{base.schedule.duration / 60:.0f} min", file=sys.stderr)
+    run_l1("warm-up", default_scene(stride=11))  # first-call costs out of every record
+
+    runs = {}  # (kind, setting) -> ProtocolRun (the default appears in both sweeps: run once)
+
+    def l1(kind: str, scene):
+        key = (kind, _setting(scene))
+        if key not in runs:
+            runs[key] = run_l1(f"L1 {kind}", scene)
+            r = runs[key]
+            print(f"  {r.label:>20} {key[1]:>40} {r.time_s:8.2f} s, "
+                  f"{r.kinematics_solves} kinematics solves", file=sys.stderr)
+        return runs[key]
+
+    ref = l1("skidding", with_solver(base, **REFERENCE))
+    ladder = []
+    for m in L0_MODELS:
+        r = run_l0(f"L0 {m}", base, m)
+        print(f"  {r.label:>20} {'':>40} {r.time_s:8.2f} s", file=sys.stderr)
+        ladder.append(("L0", m, r, _setting(base)))
+    ladder.append(("L1", "race_control",
+                    l1("race_control", with_models(base, kinematics="race_control")),
+                    _setting(base)))
+    default = l1("skidding", base)
+    ladder.append(("L1", "skidding (default)", default, _setting(base)))
+    l2_note = l2_status(base)
+
+    records = []
+
+    def record(level: str, method: str, run, setting: str, sweep: str) -> dict:
+        dT, dP = errors(run, ref)
+        rec = {"benchmark": "BM-7", "case": case, "method": f"{level} {method}",
+               "setting": setting, "sweep": sweep, "time_s": run.time_s, "cpu_s": run.cpu_s,
+               "max_error_K": dT,
+               "error": dP, "kinematics_solves": run.kinematics_solves,
+               "ratio_vs_anchor": default.time_s / run.time_s}
+        records.append(rec)
+        return rec
+
+    for level, method, run, setting in ladder:
+        record(level, method, run, setting, "ladder")
+    if not args.no_sweeps:
+        for tol in KIN_TOLERANCES:
+            sc = with_solver(base, kinematics_tolerance=tol)
+            record("L1", "skidding", l1("skidding", sc), _setting(sc), "kinematics_tolerance")
+        for chunk in CHUNKS:
+            sc = with_solver(base, chunk=chunk)
+            record("L1", "skidding", l1("skidding", sc), _setting(sc), "chunk")
+    ref_rec = {"benchmark": "BM-7", "case": case, "method": "L1 skidding (reference)",
+               "setting": _setting(with_solver(base, **REFERENCE)), "sweep": "reference",
+               "time_s": ref.time_s, "cpu_s": ref.cpu_s, "max_error_K": 0.0, "error": 0.0,
+               "kinematics_solves": ref.kinematics_solves,
+               "ratio_vs_anchor": default.time_s / ref.time_s}
+    records.append(ref_rec)
+
+    if args.json:  # JSON lines: what `thermobearing bench` parses next to the table
+        for r in records:
+            print(json.dumps(r))
+    print(f"{'sweep':>20} {'method':>24} {'setting':>36} {'time [s]':>9} {'cpu [s]':>8} "
+          f"{'kin':>4} {'dT max [K]':>11} {'dP/P max':>9} {'default/x':>9}")
+    for r in records:
+        print(f"{r['sweep']:>20} {r['method']:>24} {r['setting']:>36} {r['time_s']:9.2f} "
+              f"{r['cpu_s']:8.2f} {r['kinematics_solves']:4d} {r['max_error_K']:11.3g} "
+              f"{r['error']:9.3g} {r['ratio_vs_anchor']:9.2f}")
+    print(l2_note or "L2: available but not run by this script")
+    budget = f"{args.budget_K:g} K on temperature, {100 * args.budget_loss:g} % on total loss"
+    inside = [r for r in records if r["sweep"] == "ladder"
+              and r["max_error_K"] <= args.budget_K and r["error"] <= args.budget_loss]
+    if inside:
+        best = min(inside, key=lambda r: r["time_s"])
+        print(f"cheapest level within the budget ({budget}): {best['method']} "
+              f"({best['time_s']:.2f} s, dT {best['max_error_K']:.3g} K, "
+              f"dP/P {100 * best['error']:.2g} %)")
+    else:
+        print(f"no level at the scene's settings stays within the budget ({budget})")
+    settings = [r for r in records if r["sweep"] in ("kinematics_tolerance", "chunk")
+                and r["max_error_K"] <= args.budget_K and r["error"] <= args.budget_loss]
+    if settings:
+        best = min(settings, key=lambda r: r["time_s"])
+        print(f"cheapest L1 skidding setting within the budget: {best['setting']} "
+              f"({best['time_s']:.2f} s, dT {best['max_error_K']:.3g} K, "
+              f"dP/P {100 * best['error']:.2g} %)")
+    print(f"reference: {ref_rec['setting']}, {ref.time_s:.2f} s; energy imbalance of the "
+          f"default run {default.extra.get('energy_imbalance', math.nan):.1e}")
+    _plot(records, Path(args.out), case, args.budget_K, args.budget_loss)
+    return 0
+
+
+def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out.mkdir(parents=True, exist_ok=True)
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    floor = 1e-4
+    for ax, key, label, budget in ((axes[0], "max_error_K", "max temperature error [K]",
+                                    budget_K),
+                                   (axes[1], "error", "max relative total-loss error [-]",
+                                    budget_loss)):
+        for r in records:
+            if r["sweep"] == "ladder":
+                ax.loglog(max(r[key], floor), r["time_s"], "o", ms=8, label=r["method"])
+        for sweep, marker in (("kinematics_tolerance", "s-"), ("chunk", "^-")):
+            pts = [r for r in records if r["sweep"] == sweep]
+            if pts:
+                ax.loglog([max(r[key], floor) for r in pts], [r["time_s"] for r in pts],
+                          marker, alpha=0.7, label=f"L1 skidding, {sweep} sweep")
+                for r in pts:
+                    tag = r["setting"].split(",")[0 if sweep == "kinematics_tolerance" else 1]
+                    ax.annotate(tag.split("=")[1], (max(r[key], floor), r["time_s"]),
+                                fontsize=6)
+        ax.axvline(budget, color="k", ls=":", lw=1)
+        ax.set_xlabel(label + f" (floor {floor:g})")
+        ax.set_ylabel("wall time [s]")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle(f"BM-7 fidelity ladder, {case}: errors vs L1 skidding at tight settings")
+    fig.tight_layout()
+    path = out / "bm7_fidelity_ladder.png"
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print(f"plot: {path}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,290 @@
+"""BM-E2E: the full default protocol end to end, ours against the same chain on solve_ivp.
+
+Problem: the default scene (``configs/scenes/qj1044_rig.toml``: two QJ1044 bearings on one
+shaft, 1800 r/min, 33 L/min, axial load 0-42 kN in 22 steps of 3 min = 66 min, four-node
+network per bearing = 8 state nodes), run by ``Simulation(scene).run()`` with the scene's
+solver settings (TR-BDF2, rtol 1e-4, 60-s coupling chunks, kinematics re-solved when the
+oil viscosity at the contact temperature moved by more than 1 %). ``--quick``: every 6th
+load step (4 steps, 12 min).
+
+Timed separately:
+
+- import: ``import thermobearing.simulation`` + the modules the run imports lazily, in a
+  fresh interpreter (subprocess);
+- first call: a cold run of a 2-step protocol minus the same run warm (caches, tabulated
+  viscosities, CoolProp, lazy imports);
+- the protocol: warm wall time of ``Simulation(scene).run()`` (best of ``--repeat``).
+
+The solve_ivp driver (:func:`run_scipy`) integrates the same chain: the same scene
+network (:func:`thermobearing.coupled.build_network`), the same kinematics and heat
+evaluation (:class:`thermobearing.coupled._Coupler`: kinematics re-solved by the same
+viscosity-change rule at the same 60-s chunk boundaries, heat sources at the node
+temperatures), as the right-hand side of C dT/dt = s - K(T) T + q(T) with the exact
+nonlinear heat at every call (no linearisation), restarted at every chunk boundary (so
+at every load step). Conductances K(T) are evaluated at each restart (lagged over the
+chunk; ours lags them over one internal step): this spares LSODA one network assembly
+(~CoolProp air properties) per call. LSODA runs at several tolerances; the ratio printed
+is LSODA's time at the cheapest tolerance whose error is equal to or below ours, divided
+by ours.
+
+Error: max over the 8 nodes and every chunk end (every 60 s) of |T - T_ref|; reference:
+the same solve_ivp driver with LSODA at rtol 1e-9, atol 1e-7 K and K(T) evaluated at
+every right-hand-side call (the un-lagged ODE). The kinematics solves and heat-source
+evaluations dominate both runs; the solver counts are printed so that the ratio can be
+read against them.
+
+Usage: python benchmarks/bm_e2e.py [--quick] [--json] [--out DIR] [--repeat N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from _protocol import default_scene, with_models, with_solver  # noqa: E402
+
+IMPORTS = ("import thermobearing.simulation, thermobearing.coupled, thermobearing.skidding, "
+           "thermobearing.heat_sources, thermobearing.network, thermobearing.kinematic_models, "
+           "thermobearing.report")
+LSODA_SETTINGS = [(1e-3, 1e-1), (1e-4, 1e-2), (1e-5, 1e-3), (1e-6, 1e-4)]
+
+
+def import_time() -> float:
+    """Seconds to import the modules of a run in a fresh interpreter."""
+    code = f"import time; t = time.perf_counter(); {IMPORTS}; print(time.perf_counter() - t)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    return float(out.stdout.strip().splitlines()[-1])
+
+
+def chunk_grid(scene) -> np.ndarray:
+    """Chunk-end times [s] of the coupled transient (the comparison grid)."""
+    t, out = 0.0, []
+    for step in scene.schedule.steps:
+        n = max(1, math.ceil(step.duration / scene.solver.chunk - 1e-9))
+        h = step.duration / n
+        for k in range(1, n + 1):
+            out.append(t + k * h)
+        t += step.duration
+    return np.array(out)
+
+
+def run_ours(scene) -> tuple[float, np.ndarray, dict]:
+    """Warm wall time [s], temperatures (n_chunks, n_nodes) [K] at the chunk ends, stats
+    (with ``cpu_s``, the process CPU time of the run)."""
+    from thermobearing.simulation import Simulation
+
+    t0, c0 = time.perf_counter(), time.process_time()
+    res = Simulation(scene, progress=False).run()
+    dt, cpu = time.perf_counter() - t0, time.process_time() - c0
+    temps = res.tables["temperatures"]
+    cols = [c for c in temps.columns if c.endswith(" [degC]")]
+    T = temps[cols].to_numpy(dtype=float)[1:] + 273.15
+    return dt, T, {**res.stats, "cpu_s": cpu}
+
+
+def run_scipy(scene, method: str, rtol: float, atol: float,
+              conductance: str = "chunk") -> tuple[float, np.ndarray, dict]:
+    """The same chain on ``solve_ivp`` (see the module docstring).
+
+    ``conductance``: "chunk" evaluates K(T) at each restart, "rhs" at every call.
+    Returns (wall time [s], temperatures at the chunk ends (n_chunks, n_nodes) [K], stats
+    with ``nfev``, ``njev``, ``cpu_s`` and ``kinematics_solves``).
+    """
+    from scipy.integrate import solve_ivp
+
+    from thermobearing.coupled import _Coupler, build_network
+    from thermobearing.network.assemble import Assembler
+    from thermobearing.simulation import Simulation
+
+    t_start, c_start = time.perf_counter(), time.process_time()
+    sim = Simulation(scene, progress=False)
+    net = build_network(sim)
+    sim.network = net
+    cp = _Coupler(sim, net)
+    asm = Assembler(net)
+    C = np.asarray(asm.C, dtype=float)
+    if np.any(C <= 0):
+        raise ValueError("the solve_ivp driver needs a capacity on every node (no algebraic "
+                         "nodes)")
+    T = np.full(len(cp.names), scene.environment.initial_temperature)
+    t = 0.0
+    out = []
+    nfev = njev = 0
+    for i, step in enumerate(scene.schedule.steps):
+        n = max(1, math.ceil(step.duration / scene.solver.chunk - 1e-9))
+        h = step.duration / n
+        for _ in range(n):
+            cp.kinematics(i, step, T)
+            lagged = asm.system(T)
+
+            def rhs(_t, y, step=step, lagged=lagged):
+                S = asm.system(y) if conductance == "rhs" else lagged
+                return (S.s - S.K @ y + cp.heat(step, y)) / C
+
+            sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
+            if not sol.success:
+                raise RuntimeError(f"{method}: {sol.message}")
+            nfev += sol.nfev
+            njev += sol.njev
+            T = sol.y[:, -1].copy()
+            t += h
+            out.append(T)
+    dt, cpu = time.perf_counter() - t_start, time.process_time() - c_start
+    return dt, np.array(out), {"nfev": nfev, "njev": int(njev), "cpu_s": cpu,
+                               "kinematics_solves": sum(b.solves for b in sim.bearings)}
+
+
+def first_call_cost() -> tuple[float, float]:
+    """(cold, warm) wall time [s] of a 2-step protocol; call before anything else runs."""
+    from thermobearing.simulation import Simulation
+
+    small = default_scene(stride=11)
+    t0 = time.perf_counter()
+    Simulation(small, progress=False).run()
+    cold = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    Simulation(small, progress=False).run()
+    warm = time.perf_counter() - t0
+    return cold, warm
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="4 load steps instead of 22")
+    ap.add_argument("--json", action="store_true")
+    ap.add_argument("--out", default="benchmarks/out")
+    ap.add_argument("--repeat", type=int, default=1, help="timed repeats of ours (best of)")
+    ap.add_argument("--ref-rtol", type=float, default=1e-9,
+                    help="rtol of the LSODA reference (atol = 100 x rtol K)")
+    ap.add_argument("--no-import-time", action="store_true",
+                    help="skip the subprocess import timing")
+    args = ap.parse_args(argv)
+
+    t_imp = None if args.no_import_time else import_time()
+    t0 = time.perf_counter()
+    import thermobearing.simulation  # noqa: F401
+    t_imp_here = time.perf_counter() - t0
+    cold, warm = first_call_cost()
+    scene = default_scene(quick=args.quick)
+    case = "qj1044_rig_quick" if args.quick else "qj1044_rig"
+    grid = chunk_grid(scene)
+    print(f"== BM-E2E {case}: {len(scene.schedule.steps)} load steps, "
+          f"{scene.schedule.duration / 60:.0f} min, {len(grid)} chunks", file=sys.stderr)
+
+    ref_set = f"rtol={args.ref_rtol:g},atol={100 * args.ref_rtol:g},K(T) per call"
+    t_ref, T_ref, st_ref = run_scipy(scene, "LSODA", args.ref_rtol, 100 * args.ref_rtol,
+                                     conductance="rhs")
+    print(f"reference (LSODA {ref_set}): {t_ref:.1f} s wall, {st_ref['cpu_s']:.1f} s CPU, "
+          f"{st_ref['nfev']} calls", file=sys.stderr)
+
+    def rec(method: str, setting: str, t: float, T: np.ndarray, st: dict, fev: str) -> dict:
+        return {"benchmark": "BM-E2E", "case": case, "method": method, "setting": setting,
+                "time_s": t, "cpu_s": st["cpu_s"],
+                "max_error_K": float(np.max(np.abs(T - T_ref))),
+                "kinematics_solves": int(st.get("kinematics_solves", 0)),
+                "f_evals": int(st.get(fev, 0))}
+
+    best = None
+    for _ in range(max(1, args.repeat)):
+        out = run_ours(scene)
+        if best is None or out[2]["cpu_s"] < best[2]["cpu_s"]:
+            best = out
+    s = scene.solver
+    records = [rec("ours (Simulation.run)", f"tr_bdf2,rtol={s.rtol:g},chunk={s.chunk:g}s,"
+                   f"kin_tol={s.kinematics_tolerance:g}", *best, "stepper_heat_evaluations")]
+    ours = records[0]
+    tight = with_solver(scene, rtol=1e-6)
+    records.append(rec("ours, tighter stepper", f"tr_bdf2,rtol=1e-06,chunk={s.chunk:g}s,"
+                       f"kin_tol={s.kinematics_tolerance:g}", *run_ours(tight),
+                       "stepper_heat_evaluations"))
+    for rtol, atol in LSODA_SETTINGS:
+        try:
+            out = run_scipy(scene, "LSODA", rtol, atol)
+        except RuntimeError as exc:  # a failure is a result
+            print(f"LSODA rtol={rtol:g} failed: {exc}", file=sys.stderr)
+            continue
+        records.append(rec("solve_ivp LSODA", f"rtol={rtol:g},atol={atol:g},K per chunk",
+                           *out, "nfev"))
+    records.append(rec("solve_ivp LSODA (reference)", ref_set, t_ref, T_ref, st_ref, "nfev"))
+    rc = with_models(scene, kinematics="race_control")
+    records.append(rec("ours, race_control (info)", "chain without the skidding solver",
+                       *run_ours(rc), "stepper_heat_evaluations"))
+    lsoda = [r for r in records if r["method"] == "solve_ivp LSODA"]
+    ok = [r for r in lsoda if r["max_error_K"] <= ours["max_error_K"]]
+    anchor = min(ok, key=lambda r: r["cpu_s"]) if ok else None
+    for r in records:
+        r["ratio_vs_anchor"] = anchor["cpu_s"] / r["cpu_s"] if anchor else None
+    records.append({"benchmark": "BM-E2E", "case": case, "method": "startup",
+                    "setting": "import (fresh interpreter); first-call extra of a 2-step run",
+                    "time_s": t_imp, "first_call_extra_s": cold - warm,
+                    "import_in_process_s": t_imp_here, "max_error_K": None,
+                    "ratio_vs_anchor": None})
+
+    if args.json:  # JSON lines: what `thermobearing bench` parses next to the table
+        for r in records:
+            print(json.dumps(r))
+    print(f"{'method':>28} {'setting':>44} {'wall [s]':>9} {'cpu [s]':>8} {'kin':>4} "
+          f"{'fevals':>7} {'max err [K]':>12} {'anchor/x':>9}")
+    for r in records[:-1]:
+        ratio = "" if r["ratio_vs_anchor"] is None else f"{r['ratio_vs_anchor']:.2f}"
+        print(f"{r['method']:>28} {r['setting']:>44} {r['time_s']:9.2f} {r['cpu_s']:8.2f} "
+              f"{r['kinematics_solves']:4d} {r['f_evals']:7d} {r['max_error_K']:12.3e} "
+              f"{ratio:>9}")
+    imp = "not measured" if t_imp is None else f"{t_imp:.2f} s (fresh interpreter)"
+    print(f"startup, excluded from the protocol time: import {imp}; first-call extra "
+          f"{cold - warm:.2f} s (2-step run cold {cold:.2f} s, warm {warm:.2f} s, wall)")
+    verdict = ("n/a (quick run)" if args.quick else
+               "met" if min(ours["time_s"], ours["cpu_s"]) <= 1.0 else "NOT met")
+    print(f"ours: {ours['time_s']:.2f} s wall, {ours['cpu_s']:.2f} s CPU for the "
+          f"{'quick' if args.quick else 'full'} protocol (target <= 1 s for the full one: "
+          f"{verdict})")
+    if anchor:
+        print(f"LSODA at equal or better error ({anchor['setting']}, "
+              f"{anchor['max_error_K']:.2e} K <= ours {ours['max_error_K']:.2e} K): "
+              f"{anchor['cpu_s']:.2f} s CPU = {anchor['cpu_s'] / ours['cpu_s']:.2f} x ours "
+              f"(wall {anchor['time_s'] / ours['time_s']:.2f} x; target >= 20 x)")
+    else:
+        b = min(lsoda, key=lambda r: r["max_error_K"]) if lsoda else None
+        msg = (f"its best error {b['max_error_K']:.2e} K in {b['cpu_s']:.2f} s CPU"
+               if b else "all failed")
+        print(f"no LSODA tolerance reached ours' error {ours['max_error_K']:.2e} K ({msg})")
+    _plot(records[:-1], Path(args.out), case)
+    return 0
+
+
+def _plot(records, out: Path, case: str) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    out.mkdir(parents=True, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for r in records:
+        if not r["max_error_K"]:
+            continue
+        marker = "o" if r["method"].startswith("ours") else "s"
+        ax.loglog(r["max_error_K"], r["cpu_s"], marker, label=f"{r['method']} {r['setting']}")
+    ax.set_xlabel("max temperature error vs reference [K]")
+    ax.set_ylabel("CPU time [s]")
+    ax.set_title(f"BM-E2E {case}: coupled protocol, ours vs solve_ivp LSODA")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    path = out / "bm_e2e.png"
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print(f"plot: {path}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
