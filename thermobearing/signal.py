@@ -554,7 +554,8 @@ class CageSpeedEstimate:
     shaft_frequency : the shaft frequency used [Hz]; measured_shaft_frequency : sub-bin
         shaft line of the envelope spectrum when significant [Hz], else None.
     csr_theoretical : [-]; confidence : 1 - family-wise false-alarm probability, times the
-        fraction of detected lines consistent with the estimate; false_alarm_probability.
+        fraction of detected lines consistent with the estimate (0 without a fundamental line
+        or with fewer than two lines); false_alarm_probability.
     lines : the comb lines; spectrum : the envelope spectrum analysed.
     """
 
@@ -741,6 +742,11 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         wts = np.array([k * k * snr * (0.25 if sh else 1.0) for k, _, _, snr, sh in used])
         est = np.array([(fm - n * shaft_frequency) / k for k, n, fm, _, _ in used])
         fc = float(np.sum(wts * est) / np.sum(wts))
+        # refit without the lines that miss the first fit by more than half a bin
+        kk = np.array([k for k, *_ in used], dtype=float)
+        keep = np.abs(kk * (est - fc)) <= 0.5 * df
+        if keep.any() and not keep.all():
+            fc = float(np.sum(wts[keep] * est[keep]) / np.sum(wts[keep]))
     else:
         fc = f0
     # significance: Fisher's method over all comb lines, Bonferroni over candidates
@@ -756,7 +762,9 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         if abs((fm - n * shaft_frequency) - k * fc) <= 0.5 * df:
             consistent += 1
     consistency = consistent / len(used) if used else 0.0
-    confidence = (1.0 - p_fa) * consistency
+    primary = any(kind == "ball_pass" and k == n_balls or kind == "cage" and k == 1
+                  for (kind, k, _n, _fm, snr) in entries if snr > strict)
+    confidence = (1.0 - p_fa) * consistency if (primary and len(used) >= 2) else 0.0
     lines = []
     for (kind, k, n, fm, snr) in entries:
         lines.append(DetectedLine(kind, (k, n), k * fc + n * shaft_frequency,
@@ -769,8 +777,6 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             shaft_meas = fm
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))
-    primary = any(kind == "ball_pass" and k == n_balls or kind == "cage" and k == 1
-                  for (kind, k, _n, _fm, snr) in entries if snr > strict)
     detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary
     if not detected:
         reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} vs alpha "
