@@ -20,7 +20,8 @@ Pipeline (:func:`estimate_cage_speed`)
 4. a harmonic-comb search over candidate cage frequencies: the comb holds the cage
    harmonics ``k f_c``, the ball-pass harmonics ``m Z f_c``, the cage modulation sidebands
    of the ball pass ``(Z -+ 1) f_c`` and the shaft sidebands
-   ``n f_s +- f_c``; each line's power is normalised by the local noise floor (median of the
+   ``n f_s +- f_c`` (teeth that fall on a shaft harmonic ``m f_s`` are left out: such a line
+   belongs to the shaft); each line's power is normalised by the local noise floor (median of the
    spectrum, which for noise bins is exponentially distributed: mean = median / ln 2); the
    comb score is the weighted mean of log(1 + normalised power) over its teeth (primary
    teeth, the cage fundamental and ball-pass harmonics, weigh 1, the others 0.5), so that a
@@ -680,9 +681,15 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         fl = fc * pure
         return fl[(fl > 2 * df) & (fl < f_end)]
 
+    def off_shaft(fl: np.ndarray) -> np.ndarray:
+        """True where a tooth is clear of every shaft harmonic m f_s (those lines belong to
+        the shaft: runout, unbalance)."""
+        ratio = fl / shaft_frequency
+        return np.abs(ratio - np.round(ratio)) * shaft_frequency > 1.5 * df
+
     def score_at(fcs: np.ndarray) -> np.ndarray:
         fl = fcs[:, None] * ks[None, :] + ns[None, :] * shaft_frequency
-        valid = (fl > 2 * df) & (fl < f_end)
+        valid = (fl > 2 * df) & (fl < f_end) & off_shaft(fl)
         # log-compressed tooth powers: one dominant line must not carry a comb on its own
         vals = np.where(valid, np.log1p(np.interp(fl, es.frequency, rmax)), 0.0)
         wv = valid * weights[None, :]
@@ -725,7 +732,7 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     shared = []
     for i, (kind, k, n) in enumerate(comb):
         fe = expected_all[i]
-        if not (2 * df < fe < es.frequency[-1]):
+        if not (2 * df < fe < es.frequency[-1]) or not off_shaft(np.array([fe]))[0]:
             continue
         close = np.abs(expected_all - fe) < 1.5 * df
         close[i] = False

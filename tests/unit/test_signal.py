@@ -170,3 +170,11 @@ def test_cage_speed_command(tmp_path, capsys):
     assert "NOT DETECTED" in capsys.readouterr().out
     assert main(["cage-speed", str(tmp_path / "noise.npy"), "--rpm", "1812",
                  "--bearing", "QJ1044"]) == 1  # no sampling rate: clear error
+
+
+def test_shaft_modulation_alone_is_not_a_cage_line():
+    # impulses once per shaft revolution (runout/unbalance) give envelope lines at m f_s
+    # only; f_s / 7 would put the ball pass of a 7-ball bearing on them: not a cage speed
+    x = impulse_train(1.0 / 7.0, n_balls=7, cage_modulation=0.0, snr_db=0.0, seed=9)
+    est = S.estimate_cage_speed(x, FS, 30.0, 7, 0.37, search=(0.3, 1.3))
+    assert not est.detected
