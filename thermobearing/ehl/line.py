@@ -224,7 +224,7 @@ def solve_dimensionless(
     lam = 3.0 * math.pi**2 / (8.0 * M**2)
     t0 = time.perf_counter()
     levels = [n]
-    cn = coarse_n or max(512 if M >= 300 else 128, n // 4)
+    cn = coarse_n or (512 if M >= 300 else 128)
     while levels[-1] // 2 >= cn:
         levels.append(levels[-1] // 2)
     levels = levels[::-1]
@@ -254,7 +254,7 @@ def solve_dimensionless(
                         P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2)
                 else:
                     P0, H00 = _initial_guess(prob, moes_dimensionless(M, L) * math.pi / (8 * M))
-                    P, H0, rep = time_march(prob, P0, H00, linear=lin_k)
+                    P, H0, rep = time_march(prob, P0, H00, linear=lin_k, dt0=0.2, dt_final=1e3)
             else:
                 Pg = np.interp(prob.x, X, P)
                 try:
