@@ -351,6 +351,7 @@ class _Eval:
     ue_i: np.ndarray
     ue_o: np.ndarray
     q_o: np.ndarray
+    cage_terms: np.ndarray  # (Z,) per-roller parts of the cage equation [N]
 
 
 def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: float,
@@ -386,10 +387,10 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
     # cage: pocket normal forces at d_m/2; the (radial) pocket friction acts at D/2 beside
     # the roller centre and retards the cage on either pocket face
-    cage_eq = (float(np.sum(pocket)) - (d / d_m) * float(np.sum(fric))
-               - model.cage_drag_torque / (0.5 * d_m))
+    cage_terms = pocket - (d / d_m) * fric
+    cage_eq = float(np.sum(cage_terms)) - model.cage_drag_torque / (0.5 * d_m)
     return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, u_ri - u_roll, u_ro - u_roll,
-                 0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o)
+                 0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o, cage_terms)
 
 
 def _newton(model: RollerModel, omega: float, x0: np.ndarray, inner_load: np.ndarray,
@@ -403,7 +404,7 @@ def _newton(model: RollerModel, omega: float, x0: np.ndarray, inner_load: np.nda
     def ev(x: np.ndarray) -> tuple[_Eval, np.ndarray, np.ndarray]:
         e = evaluate(model, omega, x[:z], x[z], inner_load, fb, psi, acc)
         r = np.append(e.roller_eq, e.cage_eq) / force_scale
-        return e, r, e.pocket
+        return e, r, e.cage_terms
 
     x = np.array(x0, dtype=float)
     e, r, pk = ev(x)
@@ -472,7 +473,7 @@ def _roller_speeds(model: RollerModel, omega: float, wc: float, inner_load: np.n
     top = 2.0 * max((d_m - d) / d * (omega - wc), (d_m + d) / d * wc) + 1e-9 * omega
     lo = np.full(model.n_rollers, 1e-12 * omega)
     hi = np.full(model.n_rollers, top)
-    for _ in range(54):
+    for _ in range(44):  # bracket width 2^-44 ~ 6e-14 of the top speed
         mid = 0.5 * (lo + hi)
         r = evaluate(model, omega, mid, wc, inner_load, fb, psi, acc).roller_eq
         lo = np.where(r > 0.0, mid, lo)
@@ -481,18 +482,20 @@ def _roller_speeds(model: RollerModel, omega: float, wc: float, inner_load: np.n
 
 
 def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np.ndarray,
-            acc: tuple[float, float], tol: float, max_iter: int, ld0: Any
-            ) -> tuple[np.ndarray, _Eval, float, int, bool, Any]:
+            acc: tuple[float, float], tol: float, max_iter: int, ld0: Any,
+            wc0: float | None = None) -> tuple[np.ndarray, _Eval, float, int, bool, Any]:
     """Bracketed fallback: Brent on the cage equation with bisected roller spins."""
     from scipy.optimize import brentq
 
     z = model.n_rollers
     ld, fb = ld0, None
     wc = None
+    first = wc0
     csr_th = model.theoretical_cage_speed_ratio
     lo_c, hi_c = 1e-6 * csr_th * omega, min(0.999, 1.5 * csr_th) * omega
     for _outer in range(4):
-        wc_guess = lo_c if wc is None else wc
+        wc_guess = (first if first is not None and 0 < first < omega else lo_c) \
+            if wc is None else wc
         ld, fb = loads(wc_guess, tuple(ld.ring_displacement))
 
         def cage(w: float, ld: Any = ld, fb: np.ndarray = fb) -> float:
@@ -502,7 +505,7 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
         f_lo, f_hi = cage(lo_c), cage(hi_c)
         if not (f_lo > 0.0 > f_hi):
             break
-        wc_new, info = brentq(cage, lo_c, hi_c, xtol=1e-12 * omega, rtol=1e-14, maxiter=200,
+        wc_new, info = brentq(cage, lo_c, hi_c, xtol=1e-10 * omega, rtol=1e-14, maxiter=200,
                               full_output=True, disp=False)
         if not info.converged:
             wc = None
@@ -590,7 +593,7 @@ def solve_model(
         # robust fallback: roller equations by vectorised bisection inside a bracketed
         # (Brent) solve of the cage equation, then a Newton polish
         x, e, norm, it, ok, ld = _nested(model, omega, loads, psi, whirl_acceleration, tol,
-                                         max_iter, best[5])
+                                         max_iter, best[5], float(best[0][z]))
         if ok:
             best = (x, e, norm, it, ok, ld)
             method = "bracketed"
