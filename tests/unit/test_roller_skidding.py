@@ -177,6 +177,8 @@ def test_whirl_fluctuation_grows_with_radius(nu214, oil):
         assert res.cage_speed.shape == (8,) and res.times.shape == (8,)
     assert flucts[0] < 1e-9 * OMEGA
     assert flucts[0] < flucts[1] < flucts[2]
+    ks = res.kinematic_states
+    assert len(ks) == 8 and ks[3].cage_speed == pytest.approx(res.cage_speed[3])
 
 
 def test_whirl_acceleration_eqs_3_4():

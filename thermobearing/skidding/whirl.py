@@ -131,6 +131,11 @@ class WhirlResult:
         return self.mean_cage_speed_ratio
 
     @property
+    def kinematic_states(self) -> tuple:
+        """The :class:`thermobearing.state.KinematicState` of every sample (heat sources)."""
+        return tuple(s.kinematic_state for s in self.states)
+
+    @property
     def roller_speed(self) -> np.ndarray:
         """(N, Z) roller spin speeds [rad/s]."""
         return np.array([s.roller_speed for s in self.states])
