@@ -90,7 +90,8 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
     from .film import FILM
     from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
 
-    allowed = {"kinematics", "film", "heat_sources", "control", "churning_heat_to"}
+    allowed = {"kinematics", "film", "heat_sources", "control", "churning_heat_to",
+               "calibration"}
     for key in scene.models:
         if key not in allowed:
             raise InputError(f"models.{key}", scene.models[key],
@@ -178,20 +179,24 @@ class Simulation:
         if "control" in scene.models:
             kin_options["control"] = scene.models["control"]
         self.bearings: list[_Bearing] = []
+        self.calibration_notes: list[str] = []
         for spec in scene.bearings:
             src = spec.preset or str(scene.resolve_path(spec.path))
             b = load_bearing(src, overrides=spec.overrides or None)
             is_ball = hasattr(b, "ball_diameter")
             opts = dict(kin_options)
-            if kin_name == "skidding" and is_ball:
-                opts["params"] = _ball_parameters(b, scene)
+            if is_ball:
+                params, b, note = _apply_calibration(b, spec, scene)
+                opts["params"] = params
+                if note and note not in self.calibration_notes:
+                    self.calibration_notes.append(note)
             key = repr((spec.preset, spec.path, sorted(spec.overrides.items())))
             self.bearings.append(_Bearing(spec.name, key, b, is_ball,
                                           heat_source_names(scene, is_ball), kin_name, opts))
         self.chain = plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
         self.needs = _needs(scene)
         self.network = None
-        self.warnings: list[str] = []
+        self.warnings: list[str] = list(self.calibration_notes)
         # identical bearings (same preset and overrides) at the same state share results
         self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
         self._heat_memo: dict[tuple[Any, ...], _Evaluation] = {}
@@ -204,6 +209,7 @@ class Simulation:
             lines.append(f"  {i}. {link.family}: {link.name}  ({link.purpose})")
             if with_citations:
                 lines.extend(f"       {c}" for c in cite(link.references))
+        lines.extend(f"  note: {n}" for n in self.calibration_notes)
         return "\n".join(lines)
 
     def citations(self) -> list[str]:
@@ -408,16 +414,34 @@ class Simulation:
 
 
 # ---------------------------------------------------------------------------
-def _ball_parameters(bearing: Any, scene: Scene) -> Any:
-    """Ball force-model parameters: the calibrated set of the preset if there is one."""
+def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any, str]:
+    """Ball force-model parameters and bearing for the skidding solver.
+
+    With ``[models] calibration = "preset"`` (default) and a file
+    ``configs/bearings/<preset>.calibration.toml`` (written by the skidding calibration,
+    fitted on one stated condition), its parameters are used and its diametral clearance
+    replaces the preset's estimate unless the scene overrides the clearance. Returns
+    (parameters, bearing, note); ``calibration = "none"`` keeps the defaults.
+    """
+    from .geometry import configs_dir
     from .skidding.ball_models import BallParameters
 
-    try:
-        from .skidding.calibration import load_calibration
-    except ImportError:
-        return BallParameters()
-    params = load_calibration(bearing.name)
-    return params if params is not None else BallParameters()
+    mode = scene.models.get("calibration", "preset")
+    if mode not in ("preset", "none"):
+        raise InputError("models.calibration", mode, "'preset' or 'none'")
+    path = Path(configs_dir()) / "bearings" / f"{bearing.name}.calibration.toml"
+    if mode == "none" or not path.is_file():
+        return BallParameters(), bearing, ""
+    from .skidding.qj1044 import load_calibration, with_clearance
+
+    cal = load_calibration(path)
+    if "diametral_clearance" not in (spec.overrides or {}):
+        bearing = with_clearance(bearing, cal["diametral_clearance"])
+    cond = cal["condition"]
+    note = (f"calibrated ball force-model parameters from {path.name} "
+            f"(fitted at {cond.get('speed')}, {cond.get('flow')}; other conditions are "
+            f"predictions)")
+    return cal["params"], bearing, note
 
 
 def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
