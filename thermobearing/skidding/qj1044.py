@@ -35,8 +35,8 @@ from ..errors import ConvergenceError, InputError
 from .ball import solve_ball, theoretical_csr
 from .ball_models import BallParameters, default_ball_models
 
-__all__ = ["CSRCurve", "calibrate", "csr_curve", "load_calibration", "plot_csr_vs_axial_load",
-           "with_clearance", "CALIBRATION_FILE"]
+__all__ = ["CSRCurve", "calibrate", "csr_curve", "load_calibration", "paper002_curves",
+           "paper002_figure10", "plot_csr_vs_axial_load", "with_clearance", "CALIBRATION_FILE"]
 
 RPM = math.pi / 30.0
 LPM = 1.0 / 60000.0
@@ -309,3 +309,42 @@ def plot_csr_vs_axial_load(curves, path: str | Path, *, measured: dict | None = 
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
+
+
+def paper002_curves(speeds=(600, 900, 1200, 1500, 1800), flows=(33, 15), axial_loads=None,
+                    *, radial_load: float = 1000.0, calibration=None,
+                    lubricant: str | None = None) -> dict[tuple[int, int], CSRCurve]:
+    """CSR curves of the calibrated QJ1044 at speeds [r/min] and flows [L/min].
+
+    Keys are (speed in r/min, flow in L/min). ``axial_loads`` [N] default: the paper's
+    protocol (0-42 kN in 2 kN steps) plus 0.5 and 1 kN.
+    """
+    from ..geometry import load_bearing
+    from ..lubricant import load_lubricant
+
+    cal = load_calibration(calibration)
+    bearing = with_clearance(load_bearing("QJ1044"), cal["diametral_clearance"])
+    lub = load_lubricant(lubricant or cal["condition"].get("lubricant", "ISO_VG46"))
+    loads = PROTOCOL_LOADS if axial_loads is None else np.asarray(axial_loads, float)
+    out = {}
+    for q in flows:
+        for n in speeds:
+            out[(int(round(n)), int(round(q)))] = csr_curve(
+                bearing, lub, n * RPM, q * LPM, loads, cal["params"], radial_load=radial_load,
+                temperature=cal["temperature"])
+    return out
+
+
+def paper002_figure10(path: str | Path, flow: float = 33, curves=None, **kwargs) -> Path:
+    """Compute (or reuse ``curves``) and plot CSR vs F_a at the five speeds (paper 002 Fig. 10).
+
+    The measured points quoted in the paper's text are overlaid: CSR = 0.22 at 0 kN,
+    0.501 at 1 kN and CSR_th (0.452) at 36 kN, 1800 r/min.
+    """
+    if curves is None:
+        curves = paper002_curves(flows=(flow,), **kwargs)
+    sel = [c for (n, q), c in sorted(curves.items()) if q == int(round(flow))]
+    measured = {"paper 002, 1800 r/min (text)": ([0.0, 1000.0, 36000.0], [0.22, 0.501, 0.4526])}
+    return plot_csr_vs_axial_load(sel, path, measured=measured,
+                                  title=f"QJ1044, {flow:g} L/min: CSR vs axial load "
+                                        "(model; paper 002 Fig. 10 style)")

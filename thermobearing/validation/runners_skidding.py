@@ -19,29 +19,19 @@ from . import RUNNERS
 
 
 def _curves(inputs: dict[str, Any]):
-    from ..geometry import load_bearing
-    from ..lubricant import load_lubricant
-    from ..skidding.qj1044 import csr_curve, load_calibration, with_clearance
+    from ..skidding.qj1044 import paper002_curves
 
-    cal = load_calibration(inputs.get("calibration"))
-    bearing = with_clearance(load_bearing(inputs.get("bearing", "QJ1044")),
-                             cal["diametral_clearance"])
-    lub = load_lubricant(inputs.get("lubricant", cal["condition"].get("lubricant", "ISO_VG46")))
-    temperature = cal["temperature"]
+    speeds = [to_si(v, "angular_speed", field="speeds") * 30 / math.pi for v in inputs["speeds"]]
+    flows = [to_si(v, "volume_flow", field="flows") * 60000 for v in inputs["flows"]]
+    loads = [to_si(v, "force", field="axial_loads") for v in inputs["axial_loads"]]
     fr = to_si(inputs.get("radial_load", "1 kN"), "force", field="radial_load")
-    loads = np.array([to_si(v, "force", field="axial_loads") for v in inputs["axial_loads"]])
-    curves = {}
-    for flow_s in inputs["flows"]:
-        flow = to_si(flow_s, "volume_flow", field="flows")
-        for speed_s in inputs["speeds"]:
-            speed = to_si(speed_s, "angular_speed", field="speeds")
-            curves[(round(speed * 30 / math.pi), round(flow * 60000))] = csr_curve(
-                bearing, lub, speed, flow, loads, cal["params"], radial_load=fr,
-                temperature=temperature)
-    return curves
+    return paper002_curves(speeds, flows, loads, radial_load=fr,
+                           calibration=inputs.get("calibration"),
+                           lubricant=inputs.get("lubricant"))
 
 
-@RUNNERS.register("paper002_csr_vs_axial_load", references=["gao2022_overskidding"])
+@RUNNERS.register("paper002_csr_vs_axial_load",
+                  references=["gao2022_overskidding", "harris_kotzalas2007", "jones1960"])
 def paper002_csr_vs_axial_load(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
     """CSR(F_a) of the QJ1044 at five speeds and two flows; peaks, limits, failures.
 
