@@ -47,7 +47,13 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_finite, check_positive
+from ..errors import (
+    ConvergenceError,
+    InputError,
+    check_finite,
+    check_positive,
+    check_temperature,
+)
 from ..loads_roller import LINE_CONTACT_EXPONENT, roller_body_force, roller_load_distribution
 from .roller_fluid import ROLLER_DRAG, LineContactForces, pocket_forces
 
@@ -300,7 +306,7 @@ def build_model(
         check_positive("oil_layer", oil_layer)
     from ..hertz import line_contact_stiffness
 
-    check_positive("temperature", temperature)
+    check_temperature("temperature", temperature)
     if getattr(bearing, "kind", None) != "cylindrical":
         raise InputError("bearing.kind", getattr(bearing, "kind", None),
                          "a cylindrical roller bearing (RollerBearing)")
