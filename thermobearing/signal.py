@@ -20,8 +20,7 @@ Pipeline (:func:`estimate_cage_speed`)
 4. a harmonic-comb search over candidate cage frequencies: the comb holds the cage
    harmonics ``k f_c``, the ball-pass harmonics ``m Z f_c``, the cage modulation sidebands
    of the ball pass ``(Z -+ 1) f_c`` and the shaft sidebands
-   ``n f_s +- f_c`` (teeth that fall on a shaft harmonic ``m f_s`` are left out: such a line
-   belongs to the shaft); each line's power is normalised by the local noise floor (median of the
+   ``n f_s +- f_c``; each line's power is normalised by the local noise floor (median of the
    spectrum, which for noise bins is exponentially distributed: mean = median / ln 2); the
    comb score is the weighted mean of log(1 + normalised power) over its teeth (primary
    teeth, the cage fundamental and ball-pass harmonics, weigh 1, the others 0.5), so that a
@@ -37,8 +36,9 @@ Pipeline (:func:`estimate_cage_speed`)
    corrected for the number of independent candidates searched; ``detected`` only when
    the family-wise false-alarm probability is below ``alpha``, at least two lines stand
    above the per-line threshold, at least half of them agree with the estimate within half
-   a bin, and a fundamental (the ball-pass fundamental ``Z f_c`` or the cage line ``f_c``)
-   is among them. Otherwise the result is
+   a bin, a fundamental (the ball-pass fundamental ``Z f_c`` or the cage line ``f_c``)
+   is among them, and at least one strong line is away from every shaft harmonic ``m f_s``
+   (a comb sitting only on shaft harmonics is a once-per-revolution signal). Otherwise the result is
    flagged not detected and carries no frequency (never a made-up one).
 
 Conventions: frequencies in Hz, cage speed ratio ``CSR = f_cage / f_shaft`` (outer ring
@@ -555,8 +555,9 @@ class CageSpeedEstimate:
     shaft_frequency : the shaft frequency used [Hz]; measured_shaft_frequency : sub-bin
         shaft line of the envelope spectrum when significant [Hz], else None.
     csr_theoretical : [-]; confidence : 1 - family-wise false-alarm probability, times the
-        fraction of detected lines consistent with the estimate (0 without a fundamental line
-        or with fewer than two lines); false_alarm_probability.
+        fraction of detected lines consistent with the estimate (0 without a fundamental line,
+        with fewer than two lines or with all strong lines on shaft harmonics);
+        false_alarm_probability.
     lines : the comb lines; spectrum : the envelope spectrum analysed.
     """
 
@@ -689,7 +690,7 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
 
     def score_at(fcs: np.ndarray) -> np.ndarray:
         fl = fcs[:, None] * ks[None, :] + ns[None, :] * shaft_frequency
-        valid = (fl > 2 * df) & (fl < f_end) & off_shaft(fl)
+        valid = (fl > 2 * df) & (fl < f_end)
         # log-compressed tooth powers: one dominant line must not carry a comb on its own
         vals = np.where(valid, np.log1p(np.interp(fl, es.frequency, rmax)), 0.0)
         wv = valid * weights[None, :]
@@ -732,7 +733,7 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     shared = []
     for i, (kind, k, n) in enumerate(comb):
         fe = expected_all[i]
-        if not (2 * df < fe < es.frequency[-1]) or not off_shaft(np.array([fe]))[0]:
+        if not (2 * df < fe < es.frequency[-1]):
             continue
         close = np.abs(expected_all - fe) < 1.5 * df
         close[i] = False
@@ -771,7 +772,10 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     consistency = consistent / len(used) if used else 0.0
     primary = any(kind == "ball_pass" and k == n_balls or kind == "cage" and k == 1
                   for (kind, k, _n, _fm, snr) in entries if snr > strict)
-    confidence = (1.0 - p_fa) * consistency if (primary and len(used) >= 2) else 0.0
+    # at least one strong line away from every shaft harmonic: a comb that only sits on
+    # m f_s is a once-per-revolution signal (runout, unbalance), not a cage
+    off = any(snr > strict and off_shaft(np.array([fm]))[0] for _, _, fm, snr, _ in used)
+    confidence = (1.0 - p_fa) * consistency if (primary and off and len(used) >= 2) else 0.0
     lines = []
     for (kind, k, n, fm, snr) in entries:
         lines.append(DetectedLine(kind, (k, n), k * fc + n * shaft_frequency,
@@ -784,11 +788,12 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             shaft_meas = fm
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))
-    detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary
+    detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary and off
     if not detected:
         reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} vs alpha "
                   f"{alpha:g}, {len(used)} lines above threshold, consistency "
-                  f"{consistency:.2f}, fundamental line {'found' if primary else 'missing'})")
+                  f"{consistency:.2f}, fundamental line {'found' if primary else 'missing'}"
+                  f"{'' if off else ', all strong lines on shaft harmonics'})")
         return CageSpeedEstimate(False, None, None, None, None, float(shaft_frequency),
                                  shaft_meas, float(csr_theoretical), float(max(confidence, 0)),
                                  p_fa, consistency, tuple(lines), es, reason)
