@@ -13,7 +13,7 @@ is in radial equilibrium
     Q_oj - Q_ij = F_j                                                   (1)
 
 where ``F_j`` is the outward body force on the roller: the centrifugal force
-``F_c = m_r (d_m / 2) omega_c^2`` (Harris & Kotzalas vol. 2 ch. 2; paper 000 eq. 20,
+``F_c = m_r (d_m / 2) omega_c^2`` (Harris & Kotzalas vol. 2; paper 000 eq. 20,
 ``F_omega``) plus, in a whirling squeeze-film damper, the radial component of the inertial
 force ``-m_r e_ddot`` of paper 000 eqs. 3-4. Each contact is a line contact with the
 load-deflection law ``Q = K delta^n`` (Palmgren: n = 10/9, ``K`` from
@@ -25,9 +25,9 @@ is solved by Newton on the two ring displacements ``(delta_x, delta_y)`` with th
 equilibrium (1) solved inside (bisection per roller, vectorised); the Jacobian is analytic
 (series stiffness of the two contacts). The radial load acts along ``psi = 0``.
 
-Reference: Harris TA, Kotzalas MN (2007) Rolling Bearing Analysis, 5th ed. (vol. 1 ch. 7,
-vol. 2 ch. 2) [harris_kotzalas2007]; paper 000 (Li et al. 2018) eqs. 1-4 and 20-25
-[li2018_nu214_skidding].
+Reference: Harris TA, Kotzalas MN (2007) Rolling Bearing Analysis, 5th ed. (vol. 1: load
+distribution; vol. 2: high-speed operation) [harris_kotzalas2007]; paper 000 (Li et al.
+2018) eqs. 1-4 and 20-25 [li2018_nu214_skidding].
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ import numpy as np
 
 from .errors import ConvergenceError, InputError, check_finite, check_positive
 
-#: Palmgren's line-contact load-deflection exponent (Harris & Kotzalas 2007 vol. 1 ch. 6).
+#: Palmgren's line-contact load-deflection exponent (Harris & Kotzalas 2007 vol. 1).
 LINE_CONTACT_EXPONENT = 10.0 / 9.0
 
 
@@ -111,7 +111,7 @@ def split_roller_interference(
     -------
     (inner_deflection, outer_deflection) : (Z,) arrays [m], each >= 0.
 
-    Reference: Harris & Kotzalas (2007) vol. 2 ch. 2 (roller equilibrium with centrifugal
+    Reference: Harris & Kotzalas (2007) vol. 2 (roller equilibrium with centrifugal
     force).
     """
     d = np.asarray(interference, dtype=float)
@@ -189,8 +189,8 @@ def roller_load_distribution(
     ------
     InputError : bad input.  ConvergenceError : Newton failed (with residual and state).
 
-    Reference: Harris & Kotzalas (2007) vol. 1 ch. 7 (radially loaded roller bearing with
-    clearance), vol. 2 ch. 2 (centrifugal force); paper 000 eqs. 20 and 23.
+    Reference: Harris & Kotzalas (2007) vol. 1 (radially loaded roller bearing with
+    clearance), vol. 2 (centrifugal force); paper 000 eqs. 20 and 23.
     """
     if int(n_rollers) != n_rollers or n_rollers < 3:
         raise InputError("n_rollers", n_rollers, "an integer >= 3")
@@ -322,7 +322,7 @@ def roller_body_force(
 
     ``F_j = m_r (d_m/2) omega_c^2 - m_r a_w . e_j`` with ``e_j = (cos psi_j, sin psi_j)``:
     the centrifugal force of the orbiting roller (paper 000 ``F_omega``; Harris & Kotzalas
-    vol. 2 ch. 2) plus the d'Alembert force of the bearing-centre acceleration ``a_w``
+    vol. 2) plus the d'Alembert force of the bearing-centre acceleration ``a_w``
     (paper 000 eqs. 3-4, ``a_w = (e_x'', e_y'')``) in the frame that moves with the outer
     ring.
 

@@ -20,7 +20,7 @@ K = 1.0e10  # N/m^(10/9), order of a 13 mm steel roller (Palmgren)
 
 def test_stribeck_constant_line_contact():
     # Zero clearance, no body force: Z Q_max / F_r = 4.08 for line contacts
-    # (Stribeck's number for line contacts, Harris & Kotzalas 2007 vol. 1 ch. 7: 4.08).
+    # (Stribeck's number for line contacts, Harris & Kotzalas 2007 vol. 1: 4.08).
     z, fr = 18, 5000.0
     r = roller_load_distribution(z, 0.0, fr, K, K)
     assert z * r.inner_load.max() / fr == pytest.approx(4.08, rel=0.01)

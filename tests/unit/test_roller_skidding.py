@@ -44,7 +44,7 @@ def state150(nu214, oil):
 
 def test_martin_coefficients():
     # Rigid isoviscous cylinder on a plane, Reynolds outlet condition: w = 2.448 eta U R/h0
-    # with U = u1 + u2 and the outlet at X* = 0.475 (Martin 1916; Hamrock et al. 2004 ch. 8);
+    # with U = u1 + u2 and the outlet at X* = 0.475 (Martin 1916; Hamrock et al. 2004);
     # paper 000 eqs. 37-38 print the coefficient 2.447.
     k_w, k_q, k_c, xs = martin_coefficients()
     assert k_w == pytest.approx(2.4475, abs=2e-4)

@@ -14,9 +14,9 @@ solution; here they come in closed form, per contact:
   shear stress from a traction law of :mod:`thermobearing.traction` (the same law object the
   heat sources use) at the local Hertz pressure.
 * Inlet x < -b and outlet x > b: the gap of the elastic line contact outside the Hertz zone
-  (Johnson 1985 eq. 4.46 type separation, rigid ``x^2/2R`` far away) above h_c, ambient
-  viscosity; Newtonian Couette shear ``eta0 (u2 - u1)/h``, the outlet cavitated (film
-  fraction h_c/h of the gap carries the shear).
+  (the separation outside a 2-D Hertz contact, Johnson 1985; rigid ``x^2/2R`` far away)
+  above h_c, ambient viscosity; Newtonian Couette shear ``eta0 (u2 - u1)/h``, the outlet
+  cavitated (film fraction h_c/h of the gap carries the shear).
 * Rolling (Poiseuille) force: integrating eq. 5's first term by parts gives
   ``-int h/2 dp/dx dx = int p/2 dh/dx dx``; for a cylinder on a plane this is exactly half
   of the pressure's rolling-direction force on the cylinder, ``Q_x/2``, on each surface,
@@ -104,8 +104,8 @@ def starved_coefficients(inlet: float) -> tuple[float, float, float, float]:
     * Couette integral ``int_fluid dx / h = k_c sqrt(R/h0)`` (full film from X_m to X*, then
       the cavitated film of thickness h* spread over the gap: integrand h*/h^2).
 
-    Returns (k_w, k_q, k_c, X*). Reference: Martin 1916; Hamrock et al. 2004 ch. 8 (Reynolds
-    boundary condition, rigid cylinder); paper 000 eqs. 5, 37-38 (coefficient 2.447).
+    Returns (k_w, k_q, k_c, X*). Reference: Martin 1916; Hamrock et al. 2004 (rigid
+    cylinder, Reynolds boundary condition); paper 000 eqs. 5, 37-38 (coefficient 2.447).
     """
     xm = float(inlet)
     if not xm < 0.0:
@@ -249,8 +249,8 @@ def outer_gap(X: np.ndarray) -> np.ndarray:
     """Separation outside the Hertz zone of a line contact, in units of b^2 / R.
 
     g(X) = (|X| sqrt(X^2 - 1) - arccosh |X|) / 2 for |X| >= 1 (0 inside), which tends to
-    X^2/2 (the rigid gap x^2/(2R)) far from the contact. Johnson 1985, Contact Mechanics,
-    sec. 4.3 (surface displacements of a Hertz line contact).
+    X^2/2 (the rigid gap x^2/(2R)) far from the contact. Johnson 1985, Contact Mechanics
+    (surface displacements of a two-dimensional Hertz contact).
     """
     ax = np.maximum(np.abs(X), 1.0)
     return 0.5 * (ax * np.sqrt(ax * ax - 1.0) - np.arccosh(ax))
@@ -454,7 +454,7 @@ def pocket_forces(
     eta0 : ambient viscosity [Pa s].  pocket_clearance : c_p [m] (> 0).
     smoothing : |F_d| is replaced by sqrt(F_d^2 + smoothing^2) [N] (differentiable at 0).
 
-    Reference: paper 000 eqs. 37-38; Hamrock et al. 2004 ch. 8 (rigid cylinder).
+    Reference: paper 000 eqs. 37-38; Martin 1916 and Hamrock et al. 2004 (rigid cylinder).
     """
     k_w, k_q, k_c, _ = martin_coefficients()
     fn = np.sqrt(np.asarray(normal_force, dtype=float) ** 2 + smoothing**2)
@@ -469,7 +469,8 @@ def pocket_forces(
 
 @ROLLER_DRAG.register(
     "closed_form",
-    references=["li2018_nu214_skidding", "hamrock2004", "johnson1985"],
+    references=["li2018_nu214_skidding", "martin1916_gear_lubrication", "hamrock2004",
+                "johnson1985", "dowson_higginson1966"],
     parameters={},
     validity="steady line contacts, fully flooded inlet; Hertz-zone shear by the given "
              "traction law; rolling force min(rigid-isoviscous, Dowson-Higginson EHL)",
