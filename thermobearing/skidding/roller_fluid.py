@@ -56,6 +56,7 @@ from scipy import optimize as sopt
 from scipy.special import roots_legendre
 
 from ..errors import UnknownNameError
+from ..hertz import line_contact
 from ..registry import Registry
 
 ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
@@ -339,8 +340,9 @@ def closed_form_contact_forces(
     sign = np.where(usum >= 0.0, 1.0, -1.0)
     loaded = q > 0.0
     w = np.where(loaded, q / length, 0.0)
-    b = np.sqrt(8.0 * w * radius / (math.pi * effective_modulus))
-    p_h = np.where(loaded, 2.0 * w / (math.pi * np.where(loaded, b, 1.0)), 0.0)
+    hz = line_contact(q, length, radius, effective_modulus)  # Hertz b, p_H (straight roller)
+    b = np.asarray(hz.half_width, dtype=float)
+    p_h = np.where(loaded, np.asarray(hz.max_pressure, dtype=float), 0.0)
     ue = np.maximum(0.5 * np.abs(usum), 1e-6)
     w_safe = np.where(loaded, w, 1.0)
     h_flooded = np.where(loaded, film(ue, w_safe), np.inf)
