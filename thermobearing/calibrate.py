@@ -116,7 +116,10 @@ class FitParameter:
 
     def from_z(self, z: float) -> float:
         if self.transform == "log":
-            return self.initial * math.exp(z)
+            try:
+                return self.initial * math.exp(z)
+            except OverflowError:
+                return math.inf
         return self.initial + self.scale * float(z)
 
     def z_bounds(self) -> tuple[float, float]:
@@ -659,6 +662,10 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
                         or np.isfinite(hi[j]) and abs(z[j] - hi[j]) < 1e-9)
         if at_bound:
             notes.append(f"{p.path} ended on its bound: the interval is not meaningful")
+        if p.transform == "log" and abs(z[j]) > math.log(100.0):
+            notes.append(f"{p.path} moved by more than a factor 100 from its start: the data "
+                         "may not determine it, or the model misses something the data show "
+                         "(check the model, the sensors and the node map; set bounds)")
         half = tq * sd[j]
         z_lo, z_hi = z[j] - half, z[j] + half
         v_lo = p.from_z(z_lo) if math.isfinite(z_lo) else (0.0 if p.transform == "log"

@@ -195,14 +195,19 @@ def test_bad_bounds_and_steady_mode(tmp_path, short_data):
 
 
 # --------------------------------------------------------------------------- overlay
-def test_measured_overlay_in_report(tmp_path):
-    """Run the shipped synthetic example with out_dir: the report has the measured-vs-
-    predicted table (per-sensor RMSE equal to a direct computation) and the figure."""
+def test_measured_overlay_in_report_and_example_data_up_to_date(tmp_path):
+    """Run the shipped synthetic example with out_dir at the values that made its data: the
+    report has the measured-vs-predicted table (per-sensor RMSE equal to a direct
+    computation) and the temperature figure, and the RMSE is the added noise (0.1 K), which
+    also guards against the committed CSV going stale when the physics change."""
     from thermobearing.simulation import Simulation
 
     scene = load_scene(EXAMPLE)
     measured = read_measured(scene)
     assert len(measured) == 61 and measured["time [s]"].iloc[-1] == 3600.0
+    d = scene.to_dict()
+    d["network"]["parameters"].update({"h_oil": "400 W/(m**2*K)", "h_air": "15 W/(m**2*K)"})
+    scene = Scene.from_dict(d, Path(scene.base_dir))
     res = Simulation(scene, progress=False).run(out_dir=tmp_path)
     html = (tmp_path / "report.html").read_text()
     assert "<h3>measured vs predicted</h3>" in html
@@ -218,9 +223,10 @@ def test_measured_overlay_in_report(tmp_path):
         rmse = float(np.sqrt(np.mean((pred - measured[sensor]) ** 2)))
         row = err[err["sensor"] == sensor].iloc[0]
         assert row["RMSE [K]"] == pytest.approx(rmse, rel=1e-12)
-        # nominal h_oil/h_air (270/10) against data made with 400/15: off by more than
-        # the 0.1 K noise, but by well under a kelvin on this 1-hour protocol
-        assert 0.2 < rmse < 1.5
+        # noise sd 0.1 K; the scene's 300-s coupling interval vs the 60 s of the generating
+        # run adds about 0.02 K. Larger: the model has changed since the CSV was made --
+        # rerun examples/make_synthetic_rig_data.py and update examples/README.md.
+        assert 0.06 < rmse < 0.15, ("examples/synthetic_rig_temperatures.csv is stale?", rmse)
 
 
 @pytest.mark.slow
