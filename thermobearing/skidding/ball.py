@@ -496,7 +496,7 @@ def race_control_guess(bearing, speed, radial_load, axial_load, n_balls=None):
 def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                axial_load: float, *, n_balls: int | None = None,
                guess: BallSkiddingResult | None = None, tol: float = 1e-9,
-               max_iter: int = 60, continuation: bool = True,
+               max_iter: int = 150, continuation: bool = True,
                theoretical_reference=None) -> BallSkiddingResult:
     """Solve the ball/cage/ring equilibrium at one operating point.
 
