@@ -116,3 +116,50 @@ def test_vectorised(geom):
     f = rib_forces(geom, a, 0.0, inner_speed=3000.0, cage_speed=1300.0, roller_spin=1.6e4)
     assert f.normal_left.shape == (5,)
     assert np.all(np.diff(f.normal_left) >= 0)
+
+
+_SKID = {}
+
+
+def _ctx(axial_load=0.0, options=None):
+    from thermobearing.heat_sources import HeatContext
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.roller import solve_roller
+    from thermobearing.state import OilSupply, OperatingPoint
+
+    b = load_bearing("CRB_50x75x16")
+    lub = load_lubricant("MIL_PRF_23699")
+    w = 30000 * math.pi / 30
+    if "res" not in _SKID:
+        _SKID["res"] = solve_roller(b, lub, w, 3000.0, 0.0, 353.15)
+    res = _SKID["res"]
+    return HeatContext.isothermal(
+        353.15, bearing=b, lubricant=lub,
+        supply=OilSupply(method="jet", flow_rate=1e-5, inlet_temperature=353.15, level=None),
+        operating=OperatingPoint(inner_speed=w, radial_load=3000.0, axial_load=axial_load),
+        kinematics=res.kinematic_state, options=options or {})
+
+
+def test_rib_heat_source_thrust_and_network_roles():
+    from thermobearing.heat_sources import HEAT_SOURCES, evaluate
+
+    assert "rib_friction" in HEAT_SOURCES
+    drag_only = HEAT_SOURCES.get("rib_friction")(_ctx(0.0))
+    thrust = HEAT_SOURCES.get("rib_friction")(_ctx(480.0))
+    # thrust: Q = F_a / (Z cos theta) per roller; heat = sum mu Q |v| + drag (hand check)
+    kin = _ctx(480.0).kinematics
+    g = rib_geometry(load_bearing("CRB_50x75x16"))
+    v = rib_sliding_speed(g, kin.inner_speed, kin.cage_speed, np.abs(kin.element_spin))
+    q = 480.0 / (24 * math.cos(g.rib_angle))
+    f = 0.05 * q + drag_only.details["drag_force"] * 2
+    assert thrust.total == pytest.approx(float(np.sum(np.abs(f * v))), rel=1e-9)
+    assert thrust.total > drag_only.total > 0
+    # heat == sum of force x relative speed
+    assert sum(p.power for p in thrust.force_pairs) == pytest.approx(thrust.total, rel=1e-9)
+    # own loss component, split elements / inner ring (Blok partition, 0 < share < 1)
+    assert set(thrust.power_by_role) == {"elements", "inner_ring"}
+    assert 0 < thrust.details["element_share"] < 1
+    assert list(thrust.components) == ["roller end face / rib"]
+    # a network without an inner-ring node is refused
+    with pytest.raises(InputError, match="rib_friction"):
+        evaluate(["rib_friction"], _ctx(480.0), node_roles=["elements", "oil"])

@@ -59,9 +59,10 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
+from numba import njit
 from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError, InputError, check_positive, check_range
@@ -212,23 +213,13 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load})
 
 
-class _Consts(NamedTuple):
-    k: float
-    ct: float
-    arm: float
-    half: float
-    base: float
-    rho: float
-    r_c: float
-    f_g: float
-    r_g: float
-    u_i: float
-    u_o: float
-    l_arm: float
+# parameter vector of the jitted right-hand side (indices)
+(_K, _CT, _ARM, _BASE, _RHO, _RC, _FG, _RG, _UI, _UO, _LARM, _WI, _WC, _HL, _SREG, _MU,
+ _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS, _JT, _HALF) = range(25)
 
 
-def _consts(m: DynamicsModel) -> _Consts:
-    """Scalars of the rib contact and raceways, computed once per model."""
+def _params(m: DynamicsModel) -> np.ndarray:
+    """Scalars of the rib contact, raceways, cage and unbalance, computed once per model."""
     g = m.geom
     f_g = 0.0
     if m.mixture_viscosity > 0.0 and g.axial_clearance > 0.0:
@@ -236,48 +227,108 @@ def _consts(m: DynamicsModel) -> _Consts:
                                        m.mixture_viscosity)[0]))
     h = float(g.contact_height())
     wc = m.cage_speed
-    return _Consts(
-        k=g.stiffness, ct=math.cos(g.rib_angle), arm=g.crown_radius - 0.5 * g.roller_length,
-        half=0.5 * g.roller_length + 0.5 * g.axial_clearance,
-        base=-(0.5 * g.axial_clearance + float(g.unilateral_clearance())),
-        rho=0.5 * g.roller_diameter - h, r_c=0.5 * g.inner_raceway_diameter + h, f_g=f_g,
-        r_g=0.5 * g.roller_diameter - 0.5 * g.rib_height,
-        u_i=(m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter,
-        u_o=wc * 0.5 * m.outer_raceway_diameter,
-        l_arm=m.effective_length / (2.0 * math.sqrt(3.0)))
+    p = np.zeros(25)
+    p[_K] = g.stiffness
+    p[_CT] = math.cos(g.rib_angle)
+    p[_ARM] = g.crown_radius - 0.5 * g.roller_length
+    p[_BASE] = -(0.5 * g.axial_clearance + float(g.unilateral_clearance()))
+    p[_RHO] = 0.5 * g.roller_diameter - h
+    p[_RC] = 0.5 * g.inner_raceway_diameter + h
+    p[_FG] = f_g
+    p[_RG] = 0.5 * g.roller_diameter - 0.5 * g.rib_height
+    p[_UI] = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
+    p[_UO] = wc * 0.5 * m.outer_raceway_diameter
+    p[_LARM] = m.effective_length / (2.0 * math.sqrt(3.0))
+    p[_WI] = m.inner_speed
+    p[_WC] = wc
+    p[_HL] = 0.5 * g.roller_length
+    p[_SREG] = SIGN_REGULARISATION
+    p[_MU] = m.rib_friction
+    p[_MUT] = m.traction_limit
+    p[_S0] = m.traction_speed
+    p[_CP] = m.pocket_clearance
+    p[_KC] = m.pocket_stiffness
+    p[_MUE] = m.unbalance.mass * m.unbalance.radius
+    p[_XU] = m.unbalance.axial_position
+    p[_MASS] = m.roller_mass
+    p[_JT] = m.transverse_inertia
+    p[_HALF] = 0.5 * g.roller_length + 0.5 * g.axial_clearance
+    return p
 
 
-def _roller_rhs(m: DynamicsModel, c: _Consts, y: Any, n_i: float, n_o: float,
-                spin: float, psi: float) -> tuple[float, float, float, float, float]:
+@njit(cache=True)
+def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, n_i: float, n_o: float,
+         spin: float, psi: float) -> tuple[float, float, float, float, float]:
     """(X', X'', alpha', alpha'', rib spin moment): the scalar form of
-    :func:`thermobearing.rib.rib_forces` (same equations; a test checks they agree)."""
-    x, xd, a, ad = float(y[0]), float(y[1]), float(y[2]), float(y[3])
-    g = m.geom
-    wc = m.cage_speed
-    b = (1.0 - math.cos(a)) * c.arm + c.base
-    d_l, d_r = (b - x) * c.ct, (b + x) * c.ct
-    q_l = c.k * d_l * math.sqrt(d_l) if d_l > 0 else 0.0
-    q_r = c.k * d_r * math.sqrt(d_r) if d_r > 0 else 0.0
-    v_i = (m.inner_speed - wc) * c.r_c
-    hl = 0.5 * g.roller_length
-    s_l = math.tanh((v_i - (spin * c.rho + ad * hl)) / SIGN_REGULARISATION)
-    s_r = math.tanh((v_i - (spin * c.rho - ad * hl)) / SIGN_REGULARISATION)
-    mu = m.rib_friction
-    fr_l, fr_r = s_l * (c.f_g + mu * q_l), s_r * (c.f_g + mu * q_r)
+    :func:`thermobearing.rib.rib_forces` plus raceway, cage and unbalance terms (module
+    notes; a test checks it against rib_forces)."""
+    b = (1.0 - math.cos(a)) * p[_ARM] + p[_BASE]
+    d_l = (b - x) * p[_CT]
+    d_r = (b + x) * p[_CT]
+    q_l = p[_K] * d_l * math.sqrt(d_l) if d_l > 0 else 0.0
+    q_r = p[_K] * d_r * math.sqrt(d_r) if d_r > 0 else 0.0
+    v_i = (p[_WI] - p[_WC]) * p[_RC]
+    s_l = math.tanh((v_i - (spin * p[_RHO] + ad * p[_HL])) / p[_SREG])
+    s_r = math.tanh((v_i - (spin * p[_RHO] - ad * p[_HL])) / p[_SREG])
+    mu = p[_MU]
+    fr_l = s_l * (p[_FG] + mu * q_l)
+    fr_r = s_r * (p[_FG] + mu * q_r)
     sa = math.sin(a)
-    m_rib = -(q_l + q_r) * c.ct * c.arm * sa + (fr_l - fr_r) * c.half
-    m_spin = (s_l * mu * q_l + s_r * mu * q_r) * c.rho + (s_l + s_r) * c.f_g * c.r_g
-    mu_t, s0 = m.traction_limit, m.traction_speed
-    f_race = (n_i * mu_t * math.tanh((-c.u_i * sa - xd) / s0)
-              + n_o * mu_t * math.tanh((c.u_o * sa - xd) / s0))
-    m_race = -(n_i + n_o) * mu_t * math.tanh(ad * c.l_arm / s0) * c.l_arm
-    over = abs(a) * hl - 0.5 * m.pocket_clearance
-    m_pocket = -math.copysign(1.0, a) * 2.0 * m.pocket_stiffness * over * hl if over > 0 else 0.0
-    f_cv = m.unbalance.mass * m.unbalance.radius * (spin - wc) ** 2
-    m_unb = -m.unbalance.axial_position * f_cv * math.sin(psi)
-    xdd = ((q_l - q_r) * c.ct + f_race) / m.roller_mass
-    add = (m_rib + m_race + m_pocket + m_unb) / m.transverse_inertia
+    m_rib = -(q_l + q_r) * p[_CT] * p[_ARM] * sa + (fr_l - fr_r) * p[_HALF]
+    m_spin = (s_l * mu * q_l + s_r * mu * q_r) * p[_RHO] + (s_l + s_r) * p[_FG] * p[_RG]
+    mu_t = p[_MUT]
+    s0 = p[_S0]
+    f_race = (n_i * mu_t * math.tanh((-p[_UI] * sa - xd) / s0)
+              + n_o * mu_t * math.tanh((p[_UO] * sa - xd) / s0))
+    m_race = -(n_i + n_o) * mu_t * math.tanh(ad * p[_LARM] / s0) * p[_LARM]
+    over = abs(a) * p[_HL] - 0.5 * p[_CP]
+    m_pocket = 0.0
+    if over > 0:
+        m_pocket = -math.copysign(1.0, a) * 2.0 * p[_KC] * over * p[_HL]
+    f_cv = p[_MUE] * (spin - p[_WC]) ** 2
+    m_unb = -p[_XU] * f_cv * math.sin(psi)
+    xdd = ((q_l - q_r) * p[_CT] + f_race) / p[_MASS]
+    add = (m_rib + m_race + m_pocket + m_unb) / p[_JT]
     return xd, xdd, ad, add, m_spin
+
+
+@njit(cache=True)
+def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, h: float,
+                n_warm: int, n_keep: int, every: int) -> np.ndarray:
+    """Classical RK4 at a frozen load state; returns (n_keep // every, 5) rows
+    (t, X, X', alpha, alpha') after ``n_warm`` discarded steps."""
+    y = np.zeros(4)
+    k = np.zeros((4, 4))
+    out = np.zeros((n_keep // every, 5))
+    t = 0.0
+    j = 0
+    for step in range(n_warm + n_keep):
+        for stage in range(4):
+            c = 0.0 if stage == 0 else (0.5 if stage < 3 else 1.0)
+            yy = y + c * h * k[stage - 1] if stage > 0 else y.copy()
+            tt = t + c * h
+            r = _rhs(p, yy[0], yy[1], yy[2], yy[3], n_i, n_o, spin, spin * tt)
+            k[stage, 0] = r[0]
+            k[stage, 1] = r[1]
+            k[stage, 2] = r[2]
+            k[stage, 3] = r[3]
+        y = y + h / 6.0 * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])
+        t += h
+        if step >= n_warm and (step - n_warm) % every == 0 and j < out.shape[0]:
+            out[j, 0] = t
+            out[j, 1:] = y
+            j += 1
+    return out
+
+
+def _roller_rhs(m: DynamicsModel, c: np.ndarray, y: Any, n_i: float, n_o: float,
+                spin: float, psi: float) -> tuple[float, float, float, float, float]:
+    """Python entry to the jitted right-hand side (``c`` = :func:`_params` of ``m``)."""
+    return _rhs(c, float(y[0]), float(y[1]), float(y[2]), float(y[3]), float(n_i),
+                float(n_o), float(spin), float(psi))
+
+
+_consts = _params
 
 
 @dataclass(frozen=True)
@@ -343,7 +394,7 @@ def _mean(v: np.ndarray, t: np.ndarray) -> float:
     return float(np.trapezoid(v, t) / span) if span > 0 else float(np.mean(v))
 
 
-def simulate_full(m: DynamicsModel, *, n_orbits: float = 1.0, warmup_periods: float = 3.0,
+def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: float = 3.0,
                   rtol: float = 1e-6, samples_per_period: int = 64,
                   start_azimuth: float = 0.0) -> RollerResponse:
     """Integrate X, alpha, omega_r, psi of one roller over ``n_orbits`` orbits (Radau).
@@ -355,7 +406,7 @@ def simulate_full(m: DynamicsModel, *, n_orbits: float = 1.0, warmup_periods: fl
     t0 = time.perf_counter()
     n_calls = [0]
     g = m.geom
-    c = _consts(m)
+    c = _params(m)
 
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         n_calls[0] += 1
@@ -415,43 +466,47 @@ def load_states(m: DynamicsModel, decimals: int = 6) -> list[tuple[float, float,
     return [(k[0], k[1], k[2], c / n) for k, c in states.items()]
 
 
-def simulate_reduced(m: DynamicsModel, *, periods: float = 4.0, warmup_periods: float = 3.0,
-                     rtol: float = 1e-6, samples_per_period: int = 64) -> RollerResponse:
+def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods: float = 3.0,
+                     steps_per_period: int = 400, samples_per_period: int = 100
+                     ) -> RollerResponse:
     """Skew and axial motion at the orbit's distinct frozen load states (see module notes).
 
-    Each state is integrated (LSODA: the stiff spin is gone, the rib contact switches the
-    stiffness on and off) for ``warmup_periods`` + ``periods`` spin periods; statistics over
-    the last ``periods``, averaged with the states' orbit shares. The mean rib spin moment
-    changes the spin quasi-statically by M / k_omega before the slip is evaluated.
+    Each state is integrated with classical RK4 at a fixed step of 1/``steps_per_period``
+    spin period, and at most 1/omega_c with omega_c the rib contact's axial frequency at a
+    20 um approach (~6e5 rad/s: h <= 1.6 us; RK4 is stable to h omega < 2.8) for
+    ``warmup_periods`` + ``periods`` spin periods; statistics over the last ``periods``,
+    averaged with the states' orbit shares. The mean rib spin moment changes the spin
+    quasi-statically by M / k_omega before the slip is evaluated.
     """
     t0 = time.perf_counter()
-    n_calls = [0]
+    n_calls = 0
     weights = []
-    c = _consts(m)
+    c = _params(m)
+    # RK4 stability: h omega_c < 2.8 for the rib contact's axial mode at a 20 um approach
+    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
+    h_max = 1.0 / omega_c
     for n_i, n_o, w_qs, share in load_states(m):
-        def rhs(t: float, y: np.ndarray, n_i=n_i, n_o=n_o, w=w_qs) -> np.ndarray:
-            n_calls[0] += 1
-            return np.array(_roller_rhs(m, c, y, n_i, n_o, w, w * t)[:4])
-
         period = 2.0 * math.pi / max(abs(w_qs), 1.0)
-        t_warm = warmup_periods * period
-        t_end = t_warm + periods * period
-        t_eval = np.linspace(t_warm, t_end, int(samples_per_period * periods) + 1)
-        sol = solve_ivp(rhs, (0.0, t_end), np.zeros(4), method="LSODA", rtol=rtol,
-                        atol=np.array([1e-9, 1e-6, 1e-7, 1e-3]), t_eval=t_eval,
-                        max_step=period / 8.0)
-        if not sol.success:
-            raise ConvergenceError("roller_dynamics.reduced", float("nan"), sol.message,
+        n_per = max(steps_per_period, int(math.ceil(period / h_max)))
+        h = period / n_per
+        n_warm = int(round(warmup_periods * n_per))
+        n_keep = int(round(periods * n_per))
+        every = max(1, n_per // samples_per_period)
+        rows = _rk4_frozen(c, float(n_i), float(n_o), float(w_qs), h, n_warm, n_keep, every)
+        n_calls += 4 * (n_warm + n_keep)
+        if not np.all(np.isfinite(rows)):
+            raise ConvergenceError("roller_dynamics.reduced", float("inf"),
+                                   "RK4 diverged (reduce the step: steps_per_period)",
                                    {"state": (n_i, n_o, w_qs)})
-        y = sol.y
-        spin = np.full(sol.t.shape, w_qs)
-        post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin)
+        spin = np.full(rows.shape[0], w_qs)
+        post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin)
         k = m.spin_stiffness(n_i, n_o)
         dw = _mean(post["spin_moment"], post["t"]) / k if k > 0 else 0.0
         if dw != 0.0:
-            post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin + dw)
+            post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4],
+                         spin + dw)
         weights.append((share, post))
-    return _response(weights[0][1], "reduced", time.perf_counter() - t0, n_calls[0], m.geom,
+    return _response(weights[0][1], "reduced", time.perf_counter() - t0, n_calls, m.geom,
                      weights)
 
 
@@ -462,3 +517,53 @@ def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> Roller
     if model == "reduced":
         return simulate_reduced(m, **options)
     raise InputError("model", model, ("full", "reduced"))
+
+
+#: map parameters of paper 003 Figs. 7-12 and their SI units
+MAP_PARAMETERS = {"radial_load": "N", "speed": "rad/s", "axial_clearance": "m",
+                  "pocket_clearance": "m", "rib_angle": "rad", "crown_radius": "m"}
+
+#: paper 003 base case (sec. 9-10): 30000 r/min, 3000 N, C_a 0.03 mm, pocket 0.2 mm,
+#: rib angle 0.3 deg, end-face crown radius 300 mm
+PAPER003_BASE = {"speed": 30000.0 * math.pi / 30.0, "radial_load": 3000.0,
+                 "axial_clearance": 0.03e-3, "pocket_clearance": 0.2e-3,
+                 "rib_angle": math.radians(0.3), "crown_radius": 0.3}
+
+
+def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
+                unbalance_masses: Any, *, base: dict[str, float] | None = None,
+                model: str = "reduced", temperature: float = 353.15,
+                cache: dict | None = None, **model_options: Any) -> list[dict[str, float]]:
+    """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
+
+    One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
+    pv_right [Pa m/s], slip_speed [m/s], ...). ``base`` overrides :data:`PAPER003_BASE`.
+    ``cache`` (a dict) keeps the quasi-static skidding solutions by (speed, load).
+    """
+    if parameter not in MAP_PARAMETERS:
+        raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
+    cfg = dict(PAPER003_BASE)
+    cfg.update(base or {})
+    cache = {} if cache is None else cache
+    rows = []
+    for value in np.atleast_1d(np.asarray(values, float)):
+        point = dict(cfg)
+        point[parameter] = float(value)
+        key = (round(point["speed"], 6), round(point["radial_load"], 6))
+        for mass in np.atleast_1d(np.asarray(unbalance_masses, float)):
+            m = build_model(
+                bearing, lubricant, point["speed"], point["radial_load"], float(mass),
+                temperature=temperature, pocket_clearance=point["pocket_clearance"],
+                rib={"axial_clearance": point["axial_clearance"],
+                     "rib_angle": point["rib_angle"], "crown_radius": point["crown_radius"]},
+                quasi_static=cache.get(key), **model_options)
+            cache[key] = m.extras["quasi_static"]
+            r = simulate(m, model)
+            rows.append({"parameter": parameter, "value": float(value),
+                         "unbalance_mass": float(mass), "pv_left": r.pv_left,
+                         "pv_right": r.pv_right, "pv_peak_left": r.pv_peak_left,
+                         "pv_peak_right": r.pv_peak_right, "slip_speed": r.slip_speed,
+                         "rolling_slip_speed": r.rolling_slip_speed,
+                         "max_skew": r.max_skew, "rib_contact_fraction": r.rib_contact_fraction,
+                         "rib_heat": r.rib_heat, "cost_s": r.cost_s})
+    return rows

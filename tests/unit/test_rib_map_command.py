@@ -1,0 +1,17 @@
+"""Test of the ``thermobearing rib-map`` command (CSV + PNG of paper 003 style maps)."""
+
+import csv
+
+from thermobearing.cli import main
+
+
+def test_rib_map_writes_csv_and_png(tmp_path, capsys):
+    rc = main(["rib-map", "--param", "rib_angle", "--values", "0.3,0.5 deg",
+               "--unbalance", "0.11 g", "--out", str(tmp_path)])
+    assert rc == 0
+    rows = list(csv.reader((tmp_path / "rib_map_rib_angle.csv").open()))
+    assert rows[0][0] == "rib_angle [deg]" and len(rows) == 3
+    assert float(rows[1][0]) == 0.3 and float(rows[2][0]) == 0.5
+    assert all(float(r[2]) > 0 and float(r[4]) > 0 for r in rows[1:])   # PV, slip
+    assert (tmp_path / "rib_map_rib_angle.png").stat().st_size > 1000
+    assert "PV L" in capsys.readouterr().out

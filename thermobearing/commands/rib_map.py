@@ -1,0 +1,157 @@
+"""``thermobearing rib-map``: PV and slip maps of a cylindrical roller bearing (paper 003).
+
+Sweeps radial load, speed, axial clearance, cage-pocket circumferential clearance, rib
+angle and end-face crown radius around the paper 003 base case (30000 r/min, 3000 N,
+C_a 0.03 mm, pocket 0.2 mm, rib angle 0.3 deg, crown radius 300 mm) for several roller
+unbalance masses, with :func:`thermobearing.skidding.roller_dynamics.pv_slip_map`. Writes
+``<out>/rib_map_<parameter>.csv`` (SI columns plus PV in MPa m/s) and a two-panel PNG per
+parameter in the style of paper 003 Figs. 7-12 (a: PV of the left and right end faces,
+b: slip speed). ``--cost`` prints the wall time of one base-case point with the full and
+the reduced model.
+
+Example: ``thermobearing rib-map --param rib_angle --values "0.3,0.45,0.55,0.7 deg"
+--unbalance "0.06,0.11 g" --out ribmap``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import math
+from pathlib import Path
+
+from ..errors import InputError
+from ..units import to_si
+
+NAME = "rib-map"
+HELP = "roller end-face PV and slip-speed maps (paper 003 Figs. 7-12), CSV + PNG"
+
+#: default sweep values per parameter (display unit, values) -- the ranges of Figs. 7-12
+DEFAULT_SWEEPS = {
+    "radial_load": ("N", [1000, 2000, 3000, 5000, 7000, 9000]),
+    "speed": ("rpm", [10000, 15000, 20000, 25000, 30000, 35000]),
+    "axial_clearance": ("mm", [0.01, 0.02, 0.03, 0.04, 0.05, 0.07, 0.09]),
+    "pocket_clearance": ("mm", [0.05, 0.1, 0.2, 0.3, 0.35, 0.4, 0.5]),
+    "rib_angle": ("deg", [0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.8]),
+    "crown_radius": ("mm", [300, 400, 450, 500, 550, 600, 700]),
+}
+KINDS = {"radial_load": "force", "speed": "angular_speed", "axial_clearance": "length",
+         "pocket_clearance": "length", "rib_angle": "angle", "crown_radius": "length"}
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--bearing", default="CRB_50x75x16", help="bearing preset or TOML")
+    parser.add_argument("--lubricant", default="MIL_PRF_23699", help="lubricant preset")
+    parser.add_argument("--temperature", default="80 degC", help="oil/roller temperature")
+    parser.add_argument("--param", action="append", dest="params", default=None,
+                        choices=sorted(DEFAULT_SWEEPS), help="parameter(s) to sweep "
+                        "(repeatable; default: all six)")
+    parser.add_argument("--values", default=None,
+                        help="sweep values with one unit, e.g. '0.3,0.5,0.7 deg' (only with "
+                             "a single --param)")
+    parser.add_argument("--unbalance", default="0.06,0.08,0.11 g",
+                        help="roller unbalance masses, e.g. '0.06,0.11 g'")
+    parser.add_argument("--model", default="reduced", choices=("reduced", "full"))
+    parser.add_argument("--cost", action="store_true",
+                        help="print the cost of one base-case point (full and reduced)")
+    parser.add_argument("--out", default="rib_map", help="output folder")
+    parser.add_argument("--no-plot", action="store_true", help="CSV only")
+
+
+def _parse_list(text: str, kind: str, field: str) -> list[float]:
+    parts = text.strip().split()
+    unit = parts[-1] if len(parts) > 1 else ""
+    nums = "".join(parts[:-1]) if len(parts) > 1 else parts[0]
+    out = []
+    for tok in nums.split(","):
+        if not tok:
+            continue
+        out.append(to_si(f"{tok} {unit}".strip(), kind, field=field) if unit else float(tok))
+    if not out:
+        raise InputError(field, text, "a comma-separated list of values with a unit")
+    return out
+
+
+def _plot(rows: list[dict], parameter: str, unit: str, scale: float, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    masses = sorted({r["unbalance_mass"] for r in rows})
+    for i, mu in enumerate(masses):
+        sel = [r for r in rows if r["unbalance_mass"] == mu]
+        x = [r["value"] / scale for r in sel]
+        color = f"C{i}"
+        ax1.plot(x, [r["pv_left"] / 1e6 for r in sel], "o--", color=color,
+                 label=f"L, {mu * 1e3:.2f} g")
+        ax1.plot(x, [r["pv_right"] / 1e6 for r in sel], "s-", color=color,
+                 label=f"R, {mu * 1e3:.2f} g")
+        ax2.plot(x, [r["slip_speed"] for r in sel], "o-", color=color,
+                 label=f"{mu * 1e3:.2f} g")
+    ax1.set_xlabel(f"{parameter} [{unit}]")
+    ax1.set_ylabel("PV of the roller end face [MPa m/s]")
+    ax1.set_title("(a) PV value")
+    ax2.set_xlabel(f"{parameter} [{unit}]")
+    ax2.set_ylabel("roller slip speed [m/s]")
+    ax2.set_title("(b) slip speed")
+    ax1.legend(fontsize=7)
+    ax2.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..geometry import load_bearing
+    from ..lubricant import load_lubricant
+    from ..skidding import roller_dynamics as rd
+
+    bearing = load_bearing(args.bearing)
+    lubricant = load_lubricant(args.lubricant)
+    temperature = to_si(args.temperature, "temperature", field="--temperature")
+    masses = _parse_list(args.unbalance, "mass", "--unbalance")
+    params = args.params or list(DEFAULT_SWEEPS)
+    if args.values is not None and len(params) != 1:
+        raise InputError("--values", args.values, "exactly one --param with --values")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    cache: dict = {}
+    if args.cost:
+        m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
+                           rd.PAPER003_BASE["radial_load"], max(masses),
+                           temperature=temperature)
+        full, red = rd.simulate_full(m), rd.simulate_reduced(m)
+        print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
+              f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
+        for r in (full, red):
+            print(f"  {r.model:8s} PV L/R {r.pv_left / 1e6:.4g}/{r.pv_right / 1e6:.4g} MPa m/s,"
+                  f" slip {r.slip_speed:.4g} m/s")
+    for p in params:
+        unit, defaults = DEFAULT_SWEEPS[p]
+        values = (_parse_list(args.values, KINDS[p], "--values") if args.values is not None
+                  else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
+        scale = to_si(f"1 {unit}", KINDS[p], field=p)
+        rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
+                              temperature=temperature, cache=cache)
+        path = out / f"rib_map_{p}.csv"
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow([f"{p} [{unit}]", "unbalance_mass [g]", "pv_left [MPa m/s]",
+                        "pv_right [MPa m/s]", "slip_speed [m/s]", "max_skew [deg]",
+                        "rib_contact_fraction [-]", "rib_heat_per_roller [W]", "cost [s]"])
+            for r in rows:
+                w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
+                            f"{r['pv_left'] / 1e6:.6g}", f"{r['pv_right'] / 1e6:.6g}",
+                            f"{r['slip_speed']:.6g}", f"{math.degrees(r['max_skew']):.5g}",
+                            f"{r['rib_contact_fraction']:.4g}", f"{r['rib_heat']:.5g}",
+                            f"{r['cost_s']:.3g}"])
+        print(f"{p}: {path}")
+        for r in rows:
+            print(f"  {r['value'] / scale:8.4g} {unit:4s} m_u {r['unbalance_mass'] * 1e3:.3g} g"
+                  f"  PV L {r['pv_left'] / 1e6:8.4g}  R {r['pv_right'] / 1e6:8.4g} MPa m/s"
+                  f"  slip {r['slip_speed']:.4g} m/s")
+        if not args.no_plot:
+            _plot(rows, p, unit, scale, out / f"rib_map_{p}.png")
+    return 0
