@@ -147,12 +147,25 @@ class _Core:
         q = self.q(t, T)
         return self.sys.s - self.sys.K @ T + q, q
 
-    def update_system(self, T: np.ndarray) -> None:
-        """Re-evaluate temperature-dependent conductances at T (lagged)."""
+    def update_system(self, T: np.ndarray, keep_heat_jacobian: bool = False) -> None:
+        """Re-evaluate temperature-dependent conductances at T (lagged).
+
+        With ``keep_heat_jacobian`` the last dq/dT is reused (K - dq/dT rebuilt without new
+        heat evaluations), else the Jacobian must be refreshed before the next factor.
+        """
         if self.asm.temperature_dependent:
             self.sys = self.asm.system(T)
-            self.KmJ = None
             self.lu_coef = -1.0
+            if not keep_heat_jacobian:
+                self.KmJ = None
+                return
+            K, Jq = self.sys.K, self.Jq
+            if Jq is None:
+                self.KmJ = K
+            elif self.sys.dense:
+                self.KmJ = K - (np.diag(Jq) if Jq.ndim == 1 else Jq)
+            else:
+                self.KmJ = (K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))).tocsc()
 
     def refresh_jacobian(self, t: float, T: np.ndarray, q0: np.ndarray | None = None) -> None:
         self.stats["jacobians"] += 1
@@ -532,8 +545,7 @@ class _Driver:
             else:
                 last = False
             if core.asm.temperature_dependent:
-                core.update_system(y)
-                core.refresh_jacobian(t, y, q0)
+                core.update_system(y, keep_heat_jacobian=True)
             try:
                 trial = method.step(core, t, h, y, f0, q0)
             except _NewtonFailure as exc:
