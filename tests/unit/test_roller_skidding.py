@@ -164,6 +164,16 @@ def test_paper000_direction_with_load(nu214, oil):
     assert n200 < n100
 
 
+@pytest.mark.xfail(strict=True, reason="known discrepancy with paper 000 Table 3: here the "
+                   "rolling resistance of the centrifugally loaded rollers (~sqrt(eta0)) grows "
+                   "faster than the drive, so the cage slows with viscosity; the paper reports "
+                   "the reverse (see validation case paper000_nu214_cage_speed SOURCE.md)")
+def test_paper000_direction_with_viscosity(nu214, oil):
+    n06 = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, viscosity=0.06).cage_speed
+    n10 = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, viscosity=0.10).cage_speed
+    assert n10 > n06
+
+
 def test_whirl_fluctuation_grows_with_radius(nu214, oil):
     # paper 000 Fig. 4 (F_r = 200 N): the cage-speed amplitude grows with the whirl radius
     flucts = []
