@@ -111,6 +111,13 @@ def test_energy_audit_nonlinear_to_tolerance():
     res = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-6)
     # the books close to the Newton tolerance, far below the energy moved
     assert res.audit.relative_imbalance() < 1e-6
+    # the piecewise-constant shortcut (Newton started from the last stage's q) agrees
+    fast = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-6,
+                     heat_time_dependent=False)
+    assert fast.stats["heat_evaluations"] < 0.7 * res.stats["heat_evaluations"]
+    assert fast.audit.relative_imbalance() < 1e-6
+    grid = np.linspace(0.0, edges[-1], 50)
+    np.testing.assert_allclose(fast.sample(grid), res.sample(grid), atol=5e-3)
     steps = res.audit
     # per-step generated heat equals the quadrature of q: compare with the P schedule bound
     assert np.all(steps.generated <= P.max() * np.diff(np.r_[0.0, steps.step_end_times]) + 1e-9)
