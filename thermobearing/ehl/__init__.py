@@ -10,6 +10,7 @@ interpolation table for transients), registry :data:`EHL_SOLVERS` (``"numerical_
 """
 
 from .cache import EHL_SOLVERS, FilmPoint, FilmTable, numerical_ehl, numerical_tehl
+from .drag import NumericalRollerDrag  # registers "numerical_ehl" in ROLLER_DRAG (skidding)
 from .line import (
     LineContactCase,
     LineEHLSolution,
@@ -22,7 +23,8 @@ from .line import (
 from .thermal import SolidThermal, ThermalLineEHLSolution, solve_thermal_line_contact
 
 __all__ = [
-    "EHL_SOLVERS", "FilmPoint", "FilmTable", "LineContactCase", "LineEHLSolution",
+    "EHL_SOLVERS", "NumericalRollerDrag", "FilmPoint", "FilmTable", "LineContactCase",
+    "LineEHLSolution",
     "SolidThermal", "ThermalLineEHLSolution", "Traction", "line_contact_case",
     "moes_dimensionless", "numerical_ehl", "numerical_tehl", "solve_dimensionless",
     "solve_line_contact", "solve_thermal_line_contact",

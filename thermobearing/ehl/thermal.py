@@ -53,6 +53,7 @@ from ..errors import ConvergenceError, InputError, check_positive, check_tempera
 from .line import (
     LineEHLSolution,
     line_contact_case,
+    nodes_for,
     solve_dimensionless,
 )
 from .solver import LineProblem, newton_solve, time_march
@@ -252,7 +253,8 @@ def solve_thermal_line_contact(
     inlet_temperature : oil and solid bulk temperature [K];
     solid1, solid2 : thermal properties of the two bodies (surface 1 moves at u1 and sits at
         z = 0); solid2 defaults to solid1;
-    n : pressure/temperature nodes in x; nz : nodes across the film; ns : nodes in each solid;
+    n : pressure/temperature nodes in x (minimum; raised by :func:`.line.nodes_for` for light
+        loads); nz : nodes across the film; ns : nodes in each solid;
     relax : under-relaxation of the temperature update; max_outer : fixed-point limit;
     tol_temperature : convergence on max |dT| between outer iterations [K].
 
@@ -280,6 +282,7 @@ def solve_thermal_line_contact(
                                  eta0, roelands_z=float(lubricant.roelands_index(T_in)))
     rheo = case.rheology(compressible=True)
     b, pH = case.half_width, case.hertz_pressure
+    n = nodes_for(case.M, n, case.L)
     iso = solve_dimensionless(case.M, case.L, n=n, rheology=rheo, max_grid_error=max_grid_error,
                               reference=(radius, b, pH, eta0))
     from dataclasses import replace

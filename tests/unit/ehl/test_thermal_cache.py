@@ -44,6 +44,7 @@ def test_slow_rolling_is_nearly_isothermal():
     assert sol.max_temperature - 303.15 < 2.0
 
 
+@pytest.mark.slow
 def test_fast_rolling_heats_and_thins_the_film():
     # paper 001 conditions (53 m/s, oil 4109): strong inlet heating, film several times thinner
     sol = solve_thermal_line_contact(1.8e5, 5.535e-3, 2.3956e11, 53.3, 0.0, LUB, 303.15,
