@@ -531,7 +531,16 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         except ConvergenceError:
             guess = None
     if guess is None:
-        X0, G0, _ = race_control_guess(bearing, speed, radial_load, axial_load, n_balls)
+        X0, G0, ld0 = race_control_guess(bearing, speed, radial_load, axial_load, n_balls)
+        if not np.any(ld0.inner_load > 0.0):
+            # e.g. no external load at speed: centrifugal force seats every ball in the outer
+            # groove, no ball touches the inner ring and nothing in this model drives the
+            # balls or the cage (no inner-ring oil drag): the steady state is undefined.
+            raise ConvergenceError(
+                "skidding.ball", float("inf"),
+                "no ball touches the inner ring (centrifugal force holds every ball in the "
+                "outer groove): nothing drives the cage, CSR undefined in this model",
+                {"radial_load": radial_load, "axial_load": axial_load, "speed": speed})
         try:
             X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
         except ConvergenceError as err:
