@@ -46,11 +46,11 @@ overall. Both share one right-hand side (numba).
 
 Measured (``benchmarks/bm8_vibration.py``, SKF 6304, 2000 r/min, 2000 N, s_c = 5 %): RK4 at the
 paper's 1e-5 s diverges (ball radial mode, omega h = 2.9). With the paper's mild slope (mu_m =
-0.01, dv_m = 0.1 m/s) both schemes are limited by the same mechanical error and RK4 is about
-1.9 times cheaper at equal accuracy (the exact spin flow costs about as much as the four RK4
-stages); with a steep slope (mu_m = 0.05, dv_m = 0.01 m/s) RK4 needs 3e-7 s and the split scheme
-is 3.6-6 times cheaper at errors of 1e-4-1e-3. ``method="auto"`` picks between them from
-:func:`stability_report`.
+0.01, dv_m = 0.1 m/s) both schemes are limited by the same mechanical error and RK4 is 1.3-1.4
+times cheaper at equal accuracy (the cost of the exact spin flows); with a steep slope (mu_m =
+0.05, dv_m = 0.01 m/s) RK4 needs 3e-7 s and the split scheme is 4-7 times cheaper at errors of
+1e-4-1e-3 (CPU time, one run; the ratios move by some 20 % between runs on a shared machine).
+``method="auto"`` picks between them from :func:`stability_report`.
 """
 
 from __future__ import annotations
