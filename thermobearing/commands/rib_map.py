@@ -52,6 +52,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--unbalance", default="0.06,0.08,0.11 g",
                         help="roller unbalance masses, e.g. '0.06,0.11 g'")
     parser.add_argument("--model", default="reduced", choices=("reduced", "full"))
+    parser.add_argument("--spin", default="skidding", choices=("skidding", "rolling"),
+                        help="roller spins from the quasi-static skidding solver (default) or "
+                             "pure rolling for every roller (sensitivity)")
     parser.add_argument("--cost", action="store_true",
                         help="print the cost of one base-case point (full and reduced)")
     parser.add_argument("--out", default="rib_map", help="output folder")
@@ -121,7 +124,7 @@ def run(args: argparse.Namespace) -> int:
     if args.cost:
         m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], max(masses),
-                           temperature=temperature)
+                           temperature=temperature, spin=args.spin)
         full, red = rd.simulate_full(m), rd.simulate_reduced(m)
         print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
               f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
@@ -134,7 +137,7 @@ def run(args: argparse.Namespace) -> int:
                   else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
-                              temperature=temperature, cache=cache)
+                              temperature=temperature, cache=cache, spin=args.spin)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)

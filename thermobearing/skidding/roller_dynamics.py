@@ -169,11 +169,15 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 traction_limit: float = DEFAULT_TRACTION_LIMIT,
                 traction_speed: float = DEFAULT_TRACTION_SPEED,
                 pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS,
-                quasi_static: Any = None) -> DynamicsModel:
+                quasi_static: Any = None, spin: str = "skidding") -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
     ``axial_clearance`` [m], ...). ``pocket_clearance`` [m] (default: the cage's).
+    ``spin``: "skidding" (the quasi-static solver's roller spins: unloaded rollers skid) or
+    "rolling" (every roller at the pure-rolling spin (omega_i - omega_c) d_i / D_w on the
+    solver's cage speed) -- a sensitivity switch: the rib sliding speed of eq. 24 depends
+    on it strongly (see the validation case's SOURCE.md).
     ``quasi_static``: a previous :class:`~thermobearing.skidding.roller.RollerSkiddingResult`
     of the same speed/load/temperature (skips the solve; maps reuse it).
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
@@ -195,6 +199,12 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     qs = quasi_static if quasi_static is not None else solve_roller(
         bearing, lubricant, speed, radial_load, 0.0, temperature)
     order = np.argsort(np.mod(qs.azimuth, 2.0 * math.pi))
+    spins = np.asarray(qs.roller_speed, float)[order]
+    if spin == "rolling":
+        spins = np.full(spins.shape, (speed - float(qs.cage_speed))
+                        * geom.inner_raceway_diameter / geom.roller_diameter)
+    elif spin != "skidding":
+        raise InputError("spin", spin, ("skidding", "rolling"))
     eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
            + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
     return DynamicsModel(
@@ -202,7 +212,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         azimuth=np.mod(qs.azimuth, 2.0 * math.pi)[order],
         inner_load=np.asarray(qs.inner_load, float)[order],
         outer_load=np.asarray(qs.outer_load, float)[order],
-        spin=np.asarray(qs.roller_speed, float)[order],
+        spin=spins,
         roller_mass=bearing.roller_mass, transverse_inertia=bearing.roller_transverse_inertia,
         polar_inertia=bearing.roller_inertia,
         effective_length=float(bearing.roller_effective_length),
@@ -210,7 +220,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         unbalance=unb, rib_friction=rib_friction, mixture_viscosity=float(eta),
         traction_limit=traction_limit, traction_speed=traction_speed,
         pocket_stiffness=pocket_stiffness,
-        extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load})
+        extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
+                "spin": spin})
 
 
 # parameter vector of the jitted right-hand side (indices)

@@ -63,9 +63,10 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     cache: dict = {}
     out: dict[str, float] = {}
 
-    def sweep(parameter: str, values: list[float], masses: list[float]) -> list[dict]:
+    def sweep(parameter: str, values: list[float], masses: list[float],
+              spin: str = "skidding") -> list[dict]:
         return rd.pv_slip_map(bearing, lub, parameter, values, masses,
-                              temperature=temperature, cache=cache)
+                              temperature=temperature, cache=cache, spin=spin)
 
     # unbalance at the base case (Fig. 7 at 3000 N): PV and slip grow, unbalance side larger
     base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
@@ -119,6 +120,9 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         pv = [_pv(r) for r in rows]
         out[f"pv_minimum_{par}"] = parabolic_minimum(vals, pv)
         out[f"slip_ratio_{par}_last_vs_first"] = rows[-1]["slip_speed"] / rows[0]["slip_speed"]
+        # sensitivity: every roller at its pure-rolling spin (SOURCE.md, point 3)
+        rows = sweep(par, vals, [m_hi], spin="rolling")
+        out[f"pv_minimum_{par}_rolling_spin"] = parabolic_minimum(vals, [_pv(r) for r in rows])
 
     # cost of one base-case point, full vs reduced
     m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
