@@ -214,3 +214,19 @@ def test_sunnersjo_model_equilibrium_and_ball_pass(params):
     f_bp = params.ball_pass_frequency_outer(WS / (2 * math.pi))
     f, _ = S.spectral_peak(a, fs, 0.5 * f_bp, 1.5 * f_bp)
     assert f == pytest.approx(f_bp, rel=2e-3)
+
+
+def test_unbalance_puts_shaft_line_in_signal(params, mild):
+    # a rotating force m_u e omega_s^2 (here 1e-4 kg m: 4.4 N at 2000 r/min) at f_s
+    p = V.VibrationParameters(**{**params.__dict__, "unbalance": 1e-4})
+    r = V.simulate(p, WS, LOAD, traction=mild, duration=1.0, settle_time=0.03,
+                   sampling_rate=25600.0)
+    fsh = WS / (2 * math.pi)
+    f, amp = S.spectral_peak(r.acceleration_x, r.sampling_rate, 0.8 * fsh, 1.2 * fsh)
+    assert f == pytest.approx(fsh, rel=2e-3)
+    # quasi-static (f_s far below the 3 kHz ring mode): the ring follows the force through
+    # the radial bearing stiffness k, so the line is omega_s^2 F / k; k from the linearised
+    # Stribeck estimate of stability_report, which is rough (load zone): within a factor 2
+    k = p.inner_ring_mass * V.stability_report(p, LOAD, mild).ring ** 2
+    expected = WS**2 * (1e-4 * WS**2) / k
+    assert 0.5 * expected < amp < 2.0 * expected
