@@ -83,7 +83,7 @@ class NumericalRollerDrag:
             np.trapezoid(tau * fill, x),
             np.trapezoid(dtau * fill, x),
             abs(np.trapezoid(0.5 * h * dpdx, x)),
-            np.trapezoid(p * dhdx, x),
+            abs(np.trapezoid(p * dhdx, x)),  # G2's Q_x >= 0 along the entrainment
             np.trapezoid(np.where(hertz, tau, 0.0), x),
         ])
 

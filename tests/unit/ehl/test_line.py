@@ -85,3 +85,32 @@ def test_dimensional_front_end_and_traction_split():
     assert t1.poiseuille == t2.poiseuille
     capped = sol.traction(0.02, limiting_shear_coefficient=0.05)
     assert abs(capped.couette) < abs(t2.couette)
+
+
+def test_light_load_reproduces_martin_rigid_isoviscous_film():
+    # Martin (1916) rigid cylinder, isoviscous, Reynolds outlet condition:
+    # w' = 4.8966 eta0 u_m R / h0 (Hamrock et al. 2004 ch. 8), i.e. H = 2.448/M in Moes' scaling
+    M = 0.1
+    sol = solve_dimensionless(M, 0.0, n=2048)
+    assert sol.central_film_moes * M == pytest.approx(2.448, rel=0.005)
+
+
+def test_numerical_roller_drag_forces():
+    from thermobearing.ehl.drag import NumericalRollerDrag
+
+    class Newtonian:  # ambient-viscosity Newtonian shear: tau = eta0 |V| / h
+        def shear_stress(self, s, p, h, T):
+            return 0.05 * s / h, 0.05 / h
+
+    drag = NumericalRollerDrag(n=512)
+    load = np.array([0.0, 2000.0, 2000.0])
+    u_race = np.array([5.0, 5.1, 4.9])
+    u_roll = np.array([5.0, 4.9, 5.1])
+    f = drag(load, 0.01, 0.01, 2.2e11, u_race, u_roll, eta0=0.05, alpha=2e-8,
+             traction_law=Newtonian(), temperature=313.15)
+    assert f.traction[0] == 0.0 and f.film_thickness[0] == np.inf
+    assert f.traction[1] > 0.0 and f.traction[2] == pytest.approx(-f.traction[1], rel=1e-12)
+    assert np.all(f.poiseuille[1:] > 0.0) and np.all(f.rolling_force[1:] > 0.0)
+    assert 1e-8 < f.film_thickness[1] < 1e-5
+    # linear in V for a Newtonian law; derivative consistent
+    assert f.dtraction_dslide[1] == pytest.approx(f.traction[1] / 0.2, rel=1e-9)
