@@ -54,6 +54,7 @@ class ArcSet:
     free_distance : (k,) ``(f_k - 1/2) D``: centre distance at which contact starts [m].
     conformity : (k,) ``f_k = r_k / D`` [-].
     ball_diameter, pitch_radius : D and d_m / 2 [m].
+    effective_modulus : E' of the ball-ring pair [Pa] (cached from the bearing).
     """
 
     ring: np.ndarray
@@ -63,6 +64,7 @@ class ArcSet:
     conformity: np.ndarray
     ball_diameter: float
     pitch_radius: float
+    effective_modulus: float = 0.0
 
     @property
     def n_arcs(self) -> int:
@@ -117,7 +119,8 @@ def ball_arcs(bearing) -> ArcSet:
     else:
         raise InputError("bearing.kind", kind, "deep_groove, angular_contact or four_point")
     return ArcSet(ring=ring, centre_x=cx, centre_r=cr, free_distance=(conf - 0.5) * D,
-                  conformity=conf, ball_diameter=D, pitch_radius=Rm)
+                  conformity=conf, ball_diameter=D, pitch_radius=Rm,
+                  effective_modulus=float(bearing.effective_modulus))
 
 
 @dataclass(frozen=True)
@@ -160,7 +163,7 @@ def _stiffness(bearing, arcs: ArcSet, contact_angle: np.ndarray) -> np.ndarray:
         if not np.any(sel):
             continue
         rx, ry = bearing.curvature(race, alpha[sel])
-        K[sel] = point_contact_stiffness(rx, ry, bearing.effective_modulus,
+        K[sel] = point_contact_stiffness(rx, ry, arcs.effective_modulus,
                                          method="hamrock_brewe")
     return K
 

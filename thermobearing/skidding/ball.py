@@ -382,8 +382,14 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
 # ---------------------------------------------------------------------------------------------
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
-                 max_step: float = 1.0):
+                 max_step: float = 1.0, reuse_ratio: float = 0.25):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
+
+    The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) costs
+    N_BALL + N_GLOBAL = 9 residual evaluations whatever Z is. It is reused for the next step
+    (chord / Shamanskii step) while the full step cut the residual norm below
+    ``reuse_ratio`` times its previous value; a stale step that does not reduce the norm is
+    discarded and the Jacobian refreshed.
 
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """
@@ -394,44 +400,73 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     def norm_of(R, Gc, Gk):
         return float(np.sqrt(np.sum(R * R) + np.sum((Gc.sum(0) + Gk) ** 2)))
 
-    R, Gc, Gk, _ = system.evaluate(X, G)
-    nrm = norm_of(R, Gc, Gk)
-    it = 0
-    while nrm > tol and it < max_iter:
-        it += 1
+    def jacobian(X, G, R, Gc, Gk):
         A = np.empty((Z, N_BALL, N_BALL))
         C = np.empty((Z, N_GLOBAL, N_BALL))
         for c in range(N_BALL):
-            h = fd_step
             Xp = X.copy()
-            Xp[:, c] += h * xs[c]
+            Xp[:, c] += fd_step * xs[c]
             Rp, Gcp, _, _ = system.evaluate(Xp, G)
-            A[:, :, c] = (Rp - R) / h
-            C[:, :, c] = (Gcp - Gc) / h
+            A[:, :, c] = (Rp - R) / fd_step
+            C[:, :, c] = (Gcp - Gc) / fd_step
         B = np.empty((Z, N_BALL, N_GLOBAL))
         Dg = np.empty((N_GLOBAL, N_GLOBAL))
         for c in range(N_GLOBAL):
-            h = fd_step
             Gp = G.copy()
-            Gp[c] += h * gs[c]
+            Gp[c] += fd_step * gs[c]
             Rp, Gcp, Gkp, _ = system.evaluate(X, Gp)
-            B[:, :, c] = (Rp - R) / h
-            Dg[:, c] = ((Gcp.sum(0) + Gkp) - (Gc.sum(0) + Gk)) / h
+            B[:, :, c] = (Rp - R) / fd_step
+            Dg[:, c] = ((Gcp.sum(0) + Gkp) - (Gc.sum(0) + Gk)) / fd_step
         try:
-            Ainv_R = np.linalg.solve(A, R[:, :, None])          # (Z, 6, 1)
-            Ainv_B = np.linalg.solve(A, B)                      # (Z, 6, 3)
+            Ainv = np.linalg.inv(A)
         except np.linalg.LinAlgError:
-            raise ConvergenceError("skidding.ball", nrm, "singular ball block",
-                                   {"iteration": it}) from None
+            raise ConvergenceError("skidding.ball", norm_of(R, Gc, Gk), "singular ball block",
+                                   {"cage_speed": G[2]}) from None
+        Ainv_B = Ainv @ B
         S = Dg - np.einsum("zgi,zij->gj", C, Ainv_B)
-        rhs = -(Gc.sum(0) + Gk) + np.einsum("zgi,zi->g", C, Ainv_R[:, :, 0])
+        return Ainv, Ainv_B, C, S
+
+    def step(jac, R, Gc, Gk):
+        Ainv, Ainv_B, C, S = jac
+        Ainv_R = np.einsum("zij,zj->zi", Ainv, R)
+        rhs = -(Gc.sum(0) + Gk) + np.einsum("zgi,zi->g", C, Ainv_R)
         try:
             dG = np.linalg.solve(S, rhs)
         except np.linalg.LinAlgError:
             dG = np.linalg.lstsq(S, rhs, rcond=None)[0]
-        dX = -Ainv_R[:, :, 0] - np.einsum("zij,j->zi", Ainv_B, dG)
+        return -Ainv_R - np.einsum("zij,j->zi", Ainv_B, dG), dG
+
+    R, Gc, Gk, _ = system.evaluate(X, G)
+    nrm = norm_of(R, Gc, Gk)
+    it = 0
+    jac = None
+    while nrm > tol and it < max_iter:
+        it += 1
+        stale = jac is not None
+        if jac is None:
+            jac = jacobian(X, G, R, Gc, Gk)
+        dX, dG = step(jac, R, Gc, Gk)
         big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
         lam = min(1.0, max_step / big) if big > 0 else 1.0
+        if stale:
+            # chord step: full step only, accepted if it reduces the norm
+            ok, nn = False, np.inf
+            if lam == 1.0:
+                try:
+                    Rn, Gcn, Gkn, _ = system.evaluate(X + dX * xs, G + dG * gs)
+                    nn = norm_of(Rn, Gcn, Gkn)
+                    ok = bool(np.isfinite(nn) and nn < nrm)
+                except (InputError, FloatingPointError, ValueError):
+                    ok = False
+            if ok:
+                X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
+                if nn > reuse_ratio * nrm:
+                    jac = None
+                nrm = nn
+            else:
+                jac = None
+                it -= 1
+            continue
         while True:
             Xn = X + lam * dX * xs
             Gn = G + lam * dG * gs
@@ -450,6 +485,8 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         if not ok or lam < 1e-6:
             raise ConvergenceError("skidding.ball", nrm, "line search failed",
                                    {"iteration": it, "cage_speed": G[2]})
+        if not (lam == 1.0 and nn < reuse_ratio * nrm):
+            jac = None
         X, G, R, Gc, Gk, nrm = Xn, Gn, Rn, Gcn, Gkn, nn
     if not nrm <= tol:
         raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
