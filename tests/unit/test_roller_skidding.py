@@ -291,3 +291,30 @@ def test_energy_balance_shaft_power_equals_dissipation(nu214, oil, load, rpm):
     loss = r.power_loss
     assert loss["total"] > 0 and all(v >= -1e-12 for k, v in loss.items() if k != "total")
     assert r.shaft_torque * omega == pytest.approx(loss["total"], rel=1e-8)
+
+
+def test_clearance_film_forces_martin_scaling():
+    # Rigid flooded film of the gap (Martin 1916): w = 2.448 eta U R l / h0 with U = u1 + u2;
+    # Couette force k_c eta l sqrt(R/h0) V; halving the gap doubles w and raises C by sqrt 2.
+    from thermobearing.skidding.roller_fluid import clearance_film_forces
+
+    gap = np.array([1e-5, 5e-6, np.inf])
+    f, w = clearance_film_forces(gap, 0.013, 5.6e-3, np.full(3, 19.0), np.full(3, 11.0), 0.08)
+    assert w[0] == pytest.approx(2.4475 * 0.08 * 30.0 * 5.6e-3 * 0.013 / 1e-5, rel=2e-4)
+    assert w[1] == pytest.approx(2 * w[0], rel=1e-12)
+    assert f.traction[1] == pytest.approx(math.sqrt(2) * f.traction[0], rel=1e-12)
+    assert f.traction[0] > 0 and w[2] == 0.0 and f.traction[2] == 0.0
+    assert f.rolling_force[0] > 0
+
+
+def test_clearance_film_drives_unloaded_rollers_and_keeps_energy_balance(nu214, oil, state150):
+    # With the film across the clearance the unloaded rollers are driven by the inner ring
+    # (forward traction on them), the cage runs faster than without it (150 N, 5000 r/min),
+    # and shaft power still equals the dissipation.
+    r = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, clearance_film=True, tol=1e-12)
+    unloaded = r.inner_load == 0.0
+    assert np.all(r.inner.traction[unloaded] > 0.0)
+    assert np.all(r.outer_load[unloaded] > nu214.roller_mass * 0.5 * nu214.pitch_diameter
+                  * r.cage_speed**2)
+    assert r.cage_speed > state150.cage_speed
+    assert r.shaft_torque * OMEGA == pytest.approx(r.power_loss["total"], rel=1e-8)

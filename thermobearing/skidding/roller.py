@@ -55,7 +55,12 @@ from ..errors import (
     check_temperature,
 )
 from ..loads_roller import LINE_CONTACT_EXPONENT, roller_body_force, roller_load_distribution
-from .roller_fluid import ROLLER_DRAG, LineContactForces, pocket_forces
+from .roller_fluid import (
+    ROLLER_DRAG,
+    LineContactForces,
+    clearance_film_forces,
+    pocket_forces,
+)
 
 #: default pocket clearance when the cage geometry gives none [m] (estimated: 1-2 % of D)
 DEFAULT_POCKET_CLEARANCE_FRACTION = 0.015
@@ -219,6 +224,9 @@ class RollerModel:
     cage_drag_torque: float = 0.0
     rolling_force: str = "regime_min"
     oil_layer: float | None = None
+    clearance_film: bool = False
+    clearance_film_floor: float = 1e-6
+    inner_gap: np.ndarray | None = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -278,6 +286,8 @@ def build_model(
     cage_drag_torque: float = 0.0,
     rolling_force: str = "regime_min",
     oil_layer: float | None = None,
+    clearance_film: bool = False,
+    clearance_film_floor: float = 1e-6,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -301,9 +311,16 @@ def build_model(
         :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
     oil_layer : available inlet oil layer [m] (None: fully flooded contacts), see
         :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
+    clearance_film : add the flooded hydrodynamic film across the radial gap of every roller
+        without a Hertz inner contact (drive from the inner ring, rolling force, film load
+        onto the outer race; :func:`~thermobearing.skidding.roller_fluid.clearance_film_forces`).
+        Default False: paper 000's unloaded rollers have no inner-ring force. The film load is
+        not fed back into the ring equilibrium.
+    clearance_film_floor : smallest gap used by the clearance film [m].
     """
     if oil_layer is not None:
         check_positive("oil_layer", oil_layer)
+    check_positive("clearance_film_floor", clearance_film_floor)
     from ..hertz import line_contact_stiffness
 
     check_temperature("temperature", temperature)
@@ -341,7 +358,15 @@ def build_model(
         traction_law=law, contact_forces=ROLLER_DRAG.get(drag_model)(),
         cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
         oil_layer=None if oil_layer is None else float(oil_layer),
+        clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
     )
+
+
+def _gapped(model: RollerModel, ld: Any) -> RollerModel:
+    """The model with the inner gaps -delta_j of a load distribution (clearance film)."""
+    if not model.clearance_film:
+        return model
+    return dataclasses.replace(model, inner_gap=-np.asarray(ld.interference, dtype=float))
 
 
 @dataclass(frozen=True)
@@ -382,6 +407,12 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     fi = model.contact_forces(inner_load, model.length, model.radius_inner,
                               model.effective_modulus, u_ri, u_roll, film=model.film_inner,
                               **common)
+    if model.clearance_film and model.inner_gap is not None:
+        cf, w_h = clearance_film_forces(
+            np.where(inner_load > 0.0, np.inf, model.inner_gap), model.length,
+            model.radius_inner, u_ri, u_roll, model.eta0, model.clearance_film_floor)
+        fi = fi.combined(cf)
+        q_o = q_o + w_h
     fo = model.contact_forces(q_o, model.length, model.radius_outer, model.effective_modulus,
                               u_ro, u_roll, film=model.film_outer, **common)
     ax, ay = whirl_acceleration
@@ -503,10 +534,11 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
         wc_guess = (first if first is not None and 0 < first < omega else lo_c) \
             if wc is None else wc
         ld, fb = loads(wc_guess, tuple(ld.ring_displacement))
+        mg = _gapped(model, ld)
 
-        def cage(w: float, ld: Any = ld, fb: np.ndarray = fb) -> float:
-            wr = _roller_speeds(model, omega, w, ld.inner_load, fb, psi, acc)
-            return evaluate(model, omega, wr, w, ld.inner_load, fb, psi, acc).cage_eq
+        def cage(w: float, ld: Any = ld, fb: np.ndarray = fb, mg: RollerModel = mg) -> float:
+            wr = _roller_speeds(mg, omega, w, ld.inner_load, fb, psi, acc)
+            return evaluate(mg, omega, wr, w, ld.inner_load, fb, psi, acc).cage_eq
 
         f_lo, f_hi = cage(lo_c), cage(hi_c)
         if not (f_lo > 0.0 > f_hi):
@@ -523,6 +555,7 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
     if wc is None:
         x = np.append(np.zeros(z), 0.0)
         return x, None, math.inf, 0, False, ld
+    model = _gapped(model, ld)
     wr = _roller_speeds(model, omega, wc, ld.inner_load, fb, psi, acc)
     x = np.append(wr, wc)
     xp, e, norm, it, ok = _newton(model, omega, x, ld.inner_load, fb, psi, acc, tol=tol,
@@ -587,7 +620,8 @@ def solve_model(
                     {"radial_load": radial_load, "inner_speed": omega})
             ring = tuple(ld.ring_displacement)
             wc_old = x[z]
-            x, e, norm, it, ok = _newton(model, omega, x, ld.inner_load, fb_whirl, psi,
+            x, e, norm, it, ok = _newton(_gapped(model, ld), omega, x, ld.inner_load, fb_whirl,
+                                         psi,
                                          whirl_acceleration, tol=tol, max_iter=max_iter)
             if not ok or abs(x[z] - wc_old) <= 1e-8 * omega:
                 break

@@ -245,6 +245,79 @@ class LineContactForces:
         """
         return self.traction + self.poiseuille * self.entrainment_sign
 
+    def combined(self, other: LineContactForces) -> LineContactForces:
+        """Sum of two force sets acting on the same contacts (same speeds, so the same
+        entrainment sign): forces add, film/Hertz data are taken where this set has a load
+        (finite film), else from ``other``."""
+        own = np.isfinite(self.film_thickness)
+        return LineContactForces(
+            traction=self.traction + other.traction,
+            dtraction_dslide=self.dtraction_dslide + other.dtraction_dslide,
+            poiseuille=self.poiseuille + other.poiseuille,
+            rolling_force=self.rolling_force + other.rolling_force,
+            entrainment_sign=self.entrainment_sign,
+            film_thickness=np.where(own, self.film_thickness, other.film_thickness),
+            half_width=self.half_width, max_pressure=self.max_pressure,
+            hertz_traction=self.hertz_traction)
+
+
+def clearance_film_forces(gap: Any, length: float, radius: float, u_race: Any, u_roller: Any,
+                          eta0: float, floor: float = 1e-6
+                          ) -> tuple[LineContactForces, np.ndarray]:
+    """Hydrodynamic forces of the oil film across the radial gap of an unloaded roller.
+
+    A roller outside the load zone rides on the outer race (centrifugal force) and faces
+    the inner raceway across the gap ``h0`` = -(delta_r . e_j - P_d/2) (diametral clearance
+    minus the ring displacement toward it). The flooded rigid-isoviscous cylinder-on-plane
+    film of that gap (Martin 1916; the coefficients of :func:`martin_coefficients`, the
+    same Reynolds solution as the pocket film of paper 000 eqs. 37-38) gives, per contact,
+
+    * Couette (drive) force on the roller  ``C = k_c eta0 l sqrt(R/h0) (u_race - u_roller)``
+      (paper 000 eq. 5, second term),
+    * rolling force ``Q_x = k_q eta0 l sqrt(R/h0) (u_race + u_roller)`` (eq. 5, first term;
+      ``Q_x/2`` Poiseuille shear on each surface),
+    * film normal force ``w = k_w eta0 (u_race + u_roller) R l / h0`` pressing the roller
+      onto the outer race.
+
+    Paper 000 keeps its unloaded rollers rolling on the outer race (sec. 1) without naming
+    what spins them; this film is that drive (the inner ring across the clearance).
+
+    Parameters
+    ----------
+    gap : (Z,) gap h0 [m]; ``inf`` where the roller has a Hertz contact instead (no
+        clearance-film force there). Gaps below ``floor`` [m] are raised to it (keeps 1/h0
+        finite at the edge of the load zone; 0.2-3 um changes nothing in paper 000's cases).
+    length : l [m].  radius : reduced radius R_x [m].
+    u_race, u_roller : (Z,) surface speeds along the contact axis [m/s] (cage frame).
+    eta0 : dynamic viscosity [Pa s].
+
+    Returns
+    -------
+    (LineContactForces, w (Z,) [N])
+
+    Validity: flooded film, h0 << R, isoviscous (film pressures w / (l sqrt(R h0)) of a few
+    MPa), no elastic deformation; the ring equilibrium does not include w (see the case
+    SOURCE.md).
+    """
+    g = np.asarray(gap, dtype=float)
+    ur, uro = np.broadcast_arrays(np.asarray(u_race, float), np.asarray(u_roller, float))
+    active = np.isfinite(g)
+    h0 = np.where(active, np.maximum(g, floor), 1.0)
+    k_w, k_q, k_c, _ = martin_coefficients()
+    root = np.where(active, length * np.sqrt(radius / h0), 0.0)
+    slide = ur - uro
+    usum = ur + uro
+    c = k_c * eta0 * root
+    qx = k_q * eta0 * root * np.abs(usum)
+    w = np.where(active, k_w * eta0 * np.abs(usum) * radius * length / h0, 0.0)
+    zero = np.zeros(g.shape)
+    forces = LineContactForces(
+        traction=c * slide, dtraction_dslide=c, poiseuille=0.5 * qx, rolling_force=qx,
+        entrainment_sign=np.where(usum >= 0.0, 1.0, -1.0),
+        film_thickness=np.where(active, h0, np.inf), half_width=zero, max_pressure=zero,
+        hertz_traction=zero)
+    return forces, w
+
 
 def outer_gap(X: np.ndarray) -> np.ndarray:
     """Separation outside the Hertz zone of a line contact, in units of b^2 / R.
