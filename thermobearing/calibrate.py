@@ -57,7 +57,7 @@ import pandas as pd
 
 from .errors import ConvergenceError, InputError
 from .scene import Scene, dumps_toml
-from .sweep import _UNIT_FIELDS, _assign, _check_path, _get
+from .sweep import DISPLAY_UNITS, assign_path, check_path, get_path
 from .units import from_si, to_si, unit_registry
 
 REFERENCES = ("virtanen2020_scipy", "bates_watts1988", "seber_wild1989")
@@ -360,9 +360,9 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         else:
             value = None
     else:
-        _check_path(scene_dict, path)
+        check_path(scene_dict, path)
         try:
-            raw = _get(scene_dict, path)
+            raw = get_path(scene_dict, path)
         except (KeyError, IndexError, ValueError, TypeError):
             raw = None
         kind = _SCENE_KINDS.get(path)
@@ -370,7 +370,7 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
             from .units import si_unit
 
             unit = si_unit(kind)
-            display = _UNIT_FIELDS.get(parts[-1], unit)
+            display = DISPLAY_UNITS.get(parts[-1], unit)
             value = None if raw is None else to_si(raw, unit, field=path)
         elif raw is None:
             value, unit, display = None, "", ""
@@ -406,7 +406,7 @@ def _apply(scene_dict: Mapping[str, Any], params: Sequence[FitParameter],
            values: Sequence[float], base_dir: Path | None) -> Scene:
     d = json.loads(json.dumps(scene_dict))
     for p, v in zip(params, values, strict=True):
-        _assign(d, p.path, p.scene_value(v))
+        assign_path(d, p.path, p.scene_value(v))
     return Scene.from_dict(d, base_dir)
 
 
@@ -738,8 +738,8 @@ def synthetic_measurements(scene: Scene, sensors: Mapping[str, str], *,
     d = json.loads(json.dumps(scene.to_dict()))  # deep copy: to_dict shares nested tables
     d.pop("measured", None)
     for path, v in (values or {}).items():
-        _check_path(d, path)
-        _assign(d, path, v)
+        check_path(d, path)
+        assign_path(d, path, v)
     sc = Scene.from_dict(d, Path(scene.base_dir) if scene.base_dir else None)
     temps = predicted_temperatures(sc)
     for col, node in sensors.items():

@@ -240,7 +240,7 @@ def read_measured(scene: Any) -> pd.DataFrame | None:
     path = scene.resolve_path(m.file)
     if not path.is_file():
         raise InputError("measured.file", m.file, "an existing CSV file")
-    df = pd.read_csv(path)
+    df = pd.read_csv(path, comment="#")
     if m.time_column not in df:
         raise InputError("measured.time_column", m.time_column,
                          "a column of the file: " + ", ".join(df.columns))

@@ -68,6 +68,7 @@ Layout (every table optional unless marked)::
 
 from __future__ import annotations
 
+import copy
 import csv
 import math
 import tomllib
@@ -494,7 +495,11 @@ class Scene:
         )
 
     def to_dict(self) -> dict[str, Any]:
-        """The resolved scene as a TOML-ready dict (SI floats back to unit strings)."""
+        """The resolved scene as a TOML-ready dict (SI floats back to unit strings); a deep
+        copy, so editing it never changes the scene."""
+        return copy.deepcopy(self._to_dict())
+
+    def _to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {"title": self.title}
         if self.source:
             out["source"] = self.source

@@ -38,7 +38,7 @@ from .scene import Scene, loads_scene
 
 Runner = Callable[[str], Mapping[str, float]]
 
-_UNIT_FIELDS = {  # display unit used when the scene's own value carries none
+DISPLAY_UNITS = {  # display unit used when the scene's own value carries none
     "speed": "rpm", "radial_load": "kN", "axial_load": "kN", "duration": "min",
     "flow": "L/min", "inlet_temperature": "degC", "ambient_temperature": "degC",
     "initial_temperature": "degC", "level": "mm",
@@ -76,14 +76,14 @@ def _number(text: str, field: str) -> float:
 def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
     """Unit of the field's current value in the scene (for bare sweep numbers)."""
     try:
-        value = _get(scene_dict, path)
+        value = get_path(scene_dict, path)
     except KeyError:
         value = None
     if isinstance(value, str):
         parts = value.split(maxsplit=1)
         if len(parts) == 2:
             return parts[1]
-    return _UNIT_FIELDS.get(path.rsplit(".", 1)[-1], "")
+    return DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
 
 
 def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
@@ -93,7 +93,7 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
     path, raw = (s.strip() for s in spec.split("=", 1))
     if not path or not raw:
         raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
-    _check_path(scene_dict, path)
+    check_path(scene_dict, path)
     numbers, unit = _split_unit(raw)
     if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):  # strings: lubricant presets etc.
         values: tuple[Any, ...] = tuple(v.strip() for v in raw.split(",") if v.strip())
@@ -116,7 +116,8 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
     return SweepParameter(path, values)
 
 
-def _get(d: Mapping[str, Any], path: str) -> Any:
+def get_path(d: Mapping[str, Any], path: str) -> Any:
+    """Value at a dotted path of a scene dict (``schedule.<field>``: the first step's)."""
     cur: Any = d
     parts = path.split(".")
     if parts[0] == "schedule" and len(parts) == 2 and "steps" in d.get("schedule", {}):
@@ -138,10 +139,11 @@ _SETTABLE_NEW = {  # optional fields a sweep may set although the scene leaves t
 }
 
 
-def _check_path(scene_dict: Mapping[str, Any], path: str) -> None:
+def check_path(scene_dict: Mapping[str, Any], path: str) -> None:
+    """Raise InputError unless ``path`` names a field a sweep or a fit may set."""
     parts = path.split(".")
     try:
-        _get(scene_dict, path)
+        get_path(scene_dict, path)
         return
     except (KeyError, IndexError, ValueError, TypeError):
         pass
@@ -156,7 +158,8 @@ def _check_path(scene_dict: Mapping[str, Any], path: str) -> None:
                      "bearings.0.overrides.<field>, network.parameters.<name>)")
 
 
-def _assign(d: dict[str, Any], path: str, value: Any) -> None:
+def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
+    """Set a dotted path of a scene dict (``schedule.<field>``: in every step)."""
     parts = path.split(".")
     if parts[0] == "schedule" and len(parts) == 2:
         for step in d["schedule"]["steps"]:
@@ -193,7 +196,7 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
         assignments = tuple((p.path, v) for p, v in zip(params, combo, strict=True))
         d = json.loads(json.dumps(base))
         for path, value in assignments:
-            _assign(d, path, value)
+            assign_path(d, path, value)
         sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
         key = json.dumps([base_text, [list(a) for a in assignments]], sort_keys=True)
         cid = hashlib.sha1(key.encode()).hexdigest()[:12]
