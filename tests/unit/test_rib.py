@@ -163,3 +163,15 @@ def test_rib_heat_source_thrust_and_network_roles():
     # a network without an inner-ring node is refused
     with pytest.raises(InputError, match="rib_friction"):
         evaluate(["rib_friction"], _ctx(480.0), node_roles=["elements", "oil"])
+
+
+def test_rib_heat_source_unbalance_option():
+    from thermobearing.heat_sources import HEAT_SOURCES
+
+    plain = HEAT_SOURCES.get("rib_friction")(_ctx(0.0))
+    dyn = HEAT_SOURCES.get("rib_friction")(_ctx(0.0, {"rib_friction": {"unbalance_mass": 1e-4}}))
+    assert dyn.total > plain.total
+    assert dyn.details["dynamic_heat"] == pytest.approx(dyn.total - plain.total, rel=1e-9)
+    assert sum(p.power for p in dyn.force_pairs) == pytest.approx(dyn.total, rel=1e-9)
+    with pytest.raises(InputError, match="unbalance_mass"):
+        HEAT_SOURCES.get("rib_friction")(_ctx(0.0, {"rib_friction": {"unbalance_mass": -1.0}}))

@@ -102,14 +102,16 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                                      b.roller_material, b.ring_material))
     check_range(f"options[{name}].element_share", share, 0.0, 1.0)
     comp = "roller end face / rib"
+    pairs = (ForcePair("rib on roller end face (thrust + drag)", friction * np.sign(v), -v),)
+    if dynamic > 0:
+        # time-mean power of |Q_e_theta v| of the skew contacts, as F [W/(1 m/s)] x 1 m/s
+        pairs += (ForcePair("rib skew contacts (time mean)", np.array(dynamic),
+                            np.array(-1.0)),)
     return HeatResult(
         source=name,
         power_by_role={"elements": share * total, "inner_ring": (1.0 - share) * total},
         components={comp: total},
         loss_class={comp: "load_dependent"},
         forces={"rib_friction_force": friction},
-        force_pairs=(ForcePair("rib on roller end face (thrust + drag)", friction * np.sign(v),
-                               -v),) + ((ForcePair("rib skew contacts (mean)",
-                                                   np.array(dynamic), np.array(-1.0)),)
-                                        if dynamic > 0 else ()),
+        force_pairs=pairs,
         details={**details, "element_share": share})
