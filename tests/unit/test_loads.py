@@ -83,3 +83,15 @@ def test_warm_start_is_cheaper():
     ld = ball_load_distribution(b, 1000.0, 3000.0, w)
     ld2 = ball_load_distribution(b, 1000.0, 3100.0, w, guess=ld)
     assert ld2.iterations <= ld.iterations
+
+
+def test_gyroscopic_friction_option_balances_the_ring():
+    # "shared" gyroscopic moment carried by transverse friction (MESYS option, primer 2.3):
+    # the moment is J w_R w_m sin(beta) > 0 and the axial ring balance still holds.
+    b = qj_like()
+    w = 1800 * math.pi / 30
+    ld = ball_load_distribution(b, 0.0, 5000.0, w, gyroscopic="shared")
+    assert np.all(ld.gyroscopic_moment > 0)
+    # order of magnitude of the primer's table (about 0.3-0.8 N m at 1800 r/min, D = 35 mm)
+    assert 0.1 < ld.gyroscopic_moment.mean() < 2.0
+    assert ld.converged and ld.residual_norm < 1e-3
