@@ -20,7 +20,14 @@ followed with the degrees of freedom in which the unbalance acts:
 * ``reduced`` model (:func:`simulate_reduced`): skew and axial position only, at frozen
   azimuths (one per distinct load state of the quasi-static solution, weighted by the
   share of the orbit it represents), spin fixed to the quasi-static value, the mean rib
-  spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega.
+  spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega;
+  integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib contact's axial
+  mode). Base case (0.11 g): PV +1.6 %, slip +0.3 % against the full model at ~1/130 of
+  its cost (validation case ``paper003_pv_slip_trends``).
+* roller spins: ``spin="skidding"`` (default) takes them from the quasi-static solver, whose
+  unloaded rollers skid (about half the rolling speed at the base case); ``spin="rolling"``
+  puts every roller at its pure-rolling spin (a sensitivity switch; it moves the PV minima
+  against rib angle / crown radius onto the paper's values, see the case's SOURCE.md).
 
 Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
 
