@@ -68,13 +68,15 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="M in {10, 100}, L = 10, N <= 1024")
     ap.add_argument("--json", action="store_true", help="print one JSON record per line")
     ap.add_argument("--out", default="benchmarks/out", help="folder of the PNG plot")
+    ap.add_argument("--max-n", type=int, default=4096, help="largest N of the timed runs")
     args = ap.parse_args(argv)
     if args.quick:
         cases = [(10.0, 10.0), (100.0, 10.0)]
         ns, dense_max, ref_n = [256, 512, 1024], 1024, 2048
     else:
         cases = [(m, ell) for m in (10.0, 100.0, 1000.0) for ell in (5.0, 10.0, 20.0)]
-        ns, dense_max, ref_n = [256, 512, 1024, 2048, 4096], 2048, 8192
+        ns = [n for n in (256, 512, 1024, 2048, 4096) if n <= args.max_n]
+        dense_max, ref_n = min(2048, args.max_n), 2 * ns[-1]
     records = []
     for M, L in cases:
         case = f"M={M:g},L={L:g}"
