@@ -114,3 +114,21 @@ def test_numerical_roller_drag_forces():
     assert 1e-8 < f.film_thickness[1] < 1e-5
     # linear in V for a Newtonian law; derivative consistent
     assert f.dtraction_dslide[1] == pytest.approx(f.traction[1] / 0.2, rel=1e-9)
+
+
+def test_numerical_roller_drag_rigid_rescaling_matches_martin():
+    # a contact below the solver's M range is rescaled from Martin's self-similar solution:
+    # its central film must follow h_c = 4.8966 eta0 u R / w' (Hamrock et al. 2004 ch. 8)
+    from thermobearing.ehl.drag import NumericalRollerDrag
+
+    class Newtonian:
+        def shear_stress(self, s, p, h, T):
+            return 0.08 * s / h, 0.08 / h
+
+    drag = NumericalRollerDrag(n=512)
+    q = np.array([1e-6, 1e-3])  # N over 10 mm: far below M = 0.002
+    f = drag(q, 0.01, 0.01, 2.2e11, np.array([10.0, 10.0]), np.array([10.0, 10.0]),
+             eta0=0.08, alpha=2e-8, traction_law=Newtonian(), temperature=313.15)
+    martin = 4.8966 * 0.08 * 10.0 * 0.01 / (q / 0.01)
+    assert np.allclose(f.film_thickness, martin, rtol=0.01)
+    assert np.all(f.poiseuille > 0)
