@@ -52,7 +52,8 @@ from .units import from_si
 BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
                 "cage_guide", "pocket_friction")
 ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
-                  "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction")
+                  "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction",
+                  "rib_friction")
 
 
 @dataclass(frozen=True)
