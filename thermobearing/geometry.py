@@ -769,6 +769,28 @@ class RollerBearing:
         return self.pitch_diameter + self.roller_diameter + 0.5 * self.diametral_clearance
 
     @property
+    def _rib_height_or_estimate(self) -> float:
+        """Rib height [m]: given, or 0.2 D_w as an estimate (typical rib of a cylindrical
+        roller bearing; used only for land diameters and the cavity volume)."""
+        return self.rib_height if self.rib_height is not None else 0.2 * self.roller_diameter
+
+    @property
+    def inner_land_diameter(self) -> float:
+        """Inner-ring land (rib or raceway) diameter [m]: d_i + 2 h_f on a ribbed inner ring,
+        the raceway diameter otherwise."""
+        ribbed = self.ribbed_ring in ("inner", "both")
+        return self.inner_raceway_diameter + (2.0 * self._rib_height_or_estimate if ribbed
+                                              else 0.0)
+
+    @property
+    def outer_land_diameter(self) -> float:
+        """Outer-ring land (rib or raceway) diameter [m]: d_o - 2 h_f on a ribbed outer ring,
+        the raceway diameter otherwise."""
+        ribbed = self.ribbed_ring in ("outer", "both")
+        return self.outer_raceway_diameter - (2.0 * self._rib_height_or_estimate if ribbed
+                                              else 0.0)
+
+    @property
     def roller_centre_height(self) -> float:
         """H_rollercm: distance from the roller centre to the inner raceway [m] (paper 003)."""
         return 0.5 * self.roller_diameter

@@ -104,3 +104,40 @@ columns = { T1 = "de.gearbox" }
     with pytest.raises(InputError) as info:
         sim.run()
     assert "de.gearbox" in str(info.value) and "de.housing" in str(info.value)
+
+
+def test_cylindrical_roller_scene_books_rib_friction_in_the_network():
+    """Issue 9: the rib friction heat enters the network of a CRB scene as its own loss."""
+    text = """
+title = "CRB with axial load"
+[[bearings]]
+name = "crb"
+preset = "CRB_50x75x16"
+[lubricant]
+preset = "MIL_PRF_23699"
+[supply]
+flow = "4 L/min"
+inlet_temperature = "80 degC"
+[environment]
+ambient_temperature = "35 degC"
+[schedule]
+speed = "10000 rpm"
+radial_load = "3 kN"
+axial_load = "0.2 kN"
+duration = "2 min"
+[models]
+kinematics = "race_control"
+[network]
+template = "four_node_paper002"
+parameters = { housing_outer_diameter = "110 mm", housing_length = "30 mm" }
+[outputs]
+want = ["temperatures", "losses", "energy"]
+"""
+    res = Simulation(loads_scene(text), progress=False).run()
+    losses = res.tables["losses"]
+    rib = losses[losses["source"] == "rib_friction"]["power [W]"]
+    assert len(rib) == 1 and rib.iloc[0] > 0
+    temps = res.tables["temperatures"]
+    assert np.all(np.isfinite(temps.filter(like="[degC]").to_numpy()))
+    e = res.tables["energy"].iloc[-1]
+    assert abs(e["imbalance [J]"]) <= 1e-4 * e["generated [J]"]

@@ -51,15 +51,41 @@ def _material(m):
 
 
 def _contact_axes(bearing, ball_load: float) -> dict[str, tuple[float, float]]:
-    """Semi-axes (a, b) [m] of the inner and outer contacts at ball load Q [N] (Hertz)."""
-    from ..hertz import point_contact
+    """Semi-axes (a, b) [m] of the inner and outer contacts at element load Q [N] (Hertz):
+    the contact ellipse of a ball, or for a roller half its effective length and the
+    half-width of the line contact."""
+    from ..hertz import line_contact, point_contact
 
     out = {}
     for race in ("inner", "outer"):
         rx, ry = bearing.curvature(race)
-        pc = point_contact(ball_load, rx, ry, bearing.effective_modulus)
-        out[race] = (float(pc.a), float(pc.b))
+        if _is_ball(bearing):
+            pc = point_contact(ball_load, rx, ry, bearing.effective_modulus)
+            out[race] = (float(pc.a), float(pc.b))
+        else:
+            length = bearing.roller_effective_length or bearing.roller_length
+            lc = line_contact(ball_load, length, rx, bearing.effective_modulus)
+            out[race] = (0.5 * float(length), float(lc.half_width))
     return out
+
+
+def _is_ball(bearing) -> bool:
+    return hasattr(bearing, "ball_diameter")
+
+
+def _element(bearing) -> dict[str, Any]:
+    """Rolling elements of a ball or roller bearing: material, count Z, diameter, mass of one
+    element [kg], volume of one [m^3] and wetted surface of one [m^2] (ball pi D^2; roller
+    pi D L + 2 pi D^2 / 4)."""
+    if _is_ball(bearing):
+        D = bearing.ball_diameter
+        return {"material": bearing.ball_material, "Z": bearing.n_balls, "D": D,
+                "mass": bearing.ball_mass, "volume": math.pi * D**3 / 6.0,
+                "area": math.pi * D**2}
+    D, L = bearing.roller_diameter, bearing.roller_length
+    return {"material": bearing.roller_material, "Z": bearing.n_rollers, "D": D,
+            "mass": bearing.roller_mass, "volume": math.pi * D**2 * L / 4.0,
+            "area": math.pi * D * L + 0.5 * math.pi * D**2}
 
 
 def _oil_properties(lubricant, T: float) -> tuple[float, float]:
@@ -79,9 +105,8 @@ def _cavity(bearing) -> dict[str, float]:
     B = bearing.width
     d_li = bearing.inner_land_diameter
     d_lo = bearing.outer_land_diameter
-    D = bearing.ball_diameter
-    Z = bearing.n_balls
-    v_balls = Z * math.pi * D**3 / 6.0
+    el = _element(bearing)
+    v_balls = el["Z"] * el["volume"]
     cage = bearing.cage
     v_cage = 0.0
     if cage.material is not None:
@@ -176,11 +201,11 @@ def four_node_paper002(
     L_s = shaft_length or L_h
     ring = bearing.ring_material
     hous = _material(housing_material)
-    ball = bearing.ball_material
-    Z = bearing.n_balls
-    Db = bearing.ball_diameter
+    el = _element(bearing)
+    ball = el["material"]
+    Z = el["Z"]
 
-    c_balls = Z * bearing.ball_mass * ball.specific_heat
+    c_balls = Z * el["mass"] * ball.specific_heat
     v_house = math.pi / 4.0 * (D_h**2 - D**2) * L_h
     v_outer = math.pi / 4.0 * (D**2 - d_lo**2) * B
     c_house = hous.density * hous.specific_heat * v_house + ring.density * ring.specific_heat \
@@ -204,7 +229,7 @@ def four_node_paper002(
         a, b = axes[race]
         net.add_edge(p + "balls", p + node, _contact(contact_model, a, b, ball, ring, Z),
                      name=f"{p}balls--{node} (Hertz, eq. 26)")
-    A_boil = Z * math.pi * Db**2
+    A_boil = Z * el["area"]
     A_hoil = math.pi * d_lo * L_h
     A_soil = math.pi * d_li * L_h
     net.add_edge(p + "balls", p + "oil", Convection(h_oil, A_boil), name=f"{p}balls--oil")
