@@ -246,7 +246,8 @@ def main(argv=None) -> int:
             r["max_error_K"] = None
     records.append({"benchmark": "BM-E2E", "case": case, "method": "startup",
                     "setting": "import (fresh interpreter); first-call extra of a 2-step run",
-                    "time_s": t_imp, "first_call_extra_s": cold[0] - warm[0],
+                    "time_s": math.nan if t_imp is None else t_imp,
+                    "first_call_extra_s": cold[0] - warm[0],
                     "first_call_extra_cpu_s": cold[1] - warm[1],
                     "import_in_process_s": t_imp_here, "max_error_K": None,
                     "ratio_vs_anchor": None})
