@@ -60,8 +60,18 @@ def run_map(Z, speeds, loads, temperature, warm):
             except ConvergenceError as err:
                 ok, it, res = False, -1, err.residual
                 prev = None
-            rows.append(dict(speed_rpm=n, axial_load=fa, ok=ok, iterations=it, residual=res,
-                             time_s=time.process_time() - t0))
+            row = dict(speed_rpm=n, axial_load=fa, ok=ok, iterations=it, residual=res,
+                       time_s=time.process_time() - t0)
+            if ok and warm:
+                # transient-like warm start: the same point after a 2 % (+20 N) load change
+                t1 = time.process_time()
+                try:
+                    r2 = solve_ball(b, models, w, 1000.0, 1.02 * fa + 20.0, n_balls=Z,
+                                    guess=prev, theoretical_reference=0.45)
+                    row["small_step"] = (True, time.process_time() - t1, r2.iterations)
+                except ConvergenceError:
+                    row["small_step"] = (False, time.process_time() - t1, -1)
+            rows.append(row)
     return rows
 
 
@@ -141,6 +151,20 @@ def main(argv=None) -> int:
                 its = np.mean([r["iterations"] for r in ok]) if ok else float("nan")
                 setting = f"Z={Z},{tname},{'warm' if warm else 'cold'}"
                 summary.append((setting, len(rows), fails, tpp, its, total))
+                small = [r["small_step"] for r in rows if "small_step" in r]
+                if small:
+                    ok_s = [x for x in small if x[0]]
+                    summary.append((f"Z={Z},{tname},warm +2% load step", len(small),
+                                    len(small) - len(ok_s),
+                                    float(np.mean([x[1] for x in ok_s])) if ok_s else np.nan,
+                                    float(np.mean([x[2] for x in ok_s])) if ok_s else np.nan,
+                                    0.0))
+                    records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
+                                        method="newton_block",
+                                        setting=f"Z={Z},{tname},warm +2% load step",
+                                        time_s=summary[-1][3], error=None, ratio_vs_anchor=None,
+                                        iterations=summary[-1][4], failures=summary[-1][2],
+                                        points=len(small)))
                 records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
                                     method="newton_block", setting=setting, time_s=tpp,
                                     error=float(max((r["residual"] for r in ok), default=np.nan)),
