@@ -56,9 +56,12 @@ def configs_dir() -> Path:
 
 
 def preset_names() -> list[str]:
-    """Names of the bearing presets in ``configs/bearings``."""
+    """Names of the bearing presets in ``configs/bearings`` (companion files such as
+    ``QJ1044.calibration.toml`` are not presets)."""
     folder = configs_dir() / "bearings"
-    return sorted(p.stem for p in folder.glob("*.toml")) if folder.is_dir() else []
+    if not folder.is_dir():
+        return []
+    return sorted(p.stem for p in folder.glob("*.toml") if "." not in p.stem)
 
 
 def _material(value: Any, field_name: str) -> Material:
