@@ -184,7 +184,7 @@ def test_paper000_direction_with_viscosity_eq9_newtonian(nu214, oil):
 
     speeds = []
     for eta0 in (0.06, 0.10):
-        lub = paper000_eq9_lubricant(oil, eta0, nu214.effective_modulus)
+        lub = paper000_eq9_lubricant(oil, eta0, T)
         assert lub.pressure_viscosity_coefficient(T) == pytest.approx(
             2.1930e-8 * (math.log(eta0) + 9.67) / (math.log(0.08) + 9.67), rel=1e-3)
         speeds.append(solve_roller(nu214, lub, OMEGA, 150.0, 0.0, T, viscosity=eta0,

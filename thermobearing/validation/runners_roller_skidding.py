@@ -36,7 +36,7 @@ def _get(inputs: dict[str, Any], key: str, kind: str) -> float:
 ROELANDS_P0 = 1.0 / 5.1e-9
 
 
-def paper000_eq9_lubricant(lubricant: Any, eta0: float, effective_modulus: float,
+def paper000_eq9_lubricant(lubricant: Any, eta0: float, temperature: float = 313.15,
                            reference_eta0: float = 0.08) -> Any:
     """The lubricant with the pressure-viscosity coefficient of paper 000 eq. 9 at ``eta0``.
 
@@ -44,12 +44,12 @@ def paper000_eq9_lubricant(lubricant: Any, eta0: float, effective_modulus: float
     Pa, so its initial slope alpha = z (ln eta0 + 9.67) / p0 [1/Pa] rises with eta0 (the
     printed exponent "2" is read as the Roelands index z, which Table 1's G = alpha E' =
     5000 at eta0 = 0.08 Pa s fixes to z = 0.602). The preset keeps alpha = G/E' for every
-    eta0; this returns the preset with alpha scaled by (ln eta0 + 9.67)/(ln 0.08 + 9.67).
-    eta0 [Pa s], effective_modulus E' [Pa] (unused beyond documenting G = alpha E').
+    eta0; this returns the preset with alpha (at ``temperature`` [K]) scaled by
+    (ln eta0 + 9.67)/(ln reference_eta0 + 9.67). eta0, reference_eta0 [Pa s].
     """
     import dataclasses
 
-    alpha0 = float(lubricant.pressure_viscosity_coefficient(313.15))
+    alpha0 = float(lubricant.pressure_viscosity_coefficient(temperature))
     ratio = (math.log(eta0) + 9.67) / (math.log(reference_eta0) + 9.67)
     params = dict(lubricant.pressure_parameters)
     params["alpha"] = alpha0 * ratio
@@ -77,7 +77,7 @@ def paper000_nu214_cage_speed(inputs: dict[str, Any], case_dir: Path) -> dict[st
     }
     eq9 = bool(inputs.get("paper_eq9_alpha", False))
     for (load, eta0), tag in CONDITIONS.items():
-        lub = paper000_eq9_lubricant(lubricant, eta0, bearing.effective_modulus) if eq9 \
+        lub = paper000_eq9_lubricant(lubricant, eta0, temperature) if eq9 \
             else lubricant
         res = solve_roller(bearing, lub, speed, load, 0.0, temperature, viscosity=eta0,
                            whirl=Whirl(radius, n_samples=n_samples), **options)
