@@ -87,6 +87,7 @@ def test_dimensional_front_end_and_traction_split():
     assert abs(capped.couette) < abs(t2.couette)
 
 
+@pytest.mark.slow
 def test_light_load_reproduces_martin_rigid_isoviscous_film():
     # Martin (1916) rigid cylinder, isoviscous, Reynolds outlet condition:
     # w' = 4.8966 eta0 u_m R / h0 (Hamrock et al. 2004 ch. 8), i.e. H = 2.448/M in Moes' scaling
@@ -95,6 +96,7 @@ def test_light_load_reproduces_martin_rigid_isoviscous_film():
     assert sol.central_film_moes * M == pytest.approx(2.448, rel=0.005)
 
 
+@pytest.mark.slow
 def test_numerical_roller_drag_forces():
     from thermobearing.ehl.drag import NumericalRollerDrag
 
