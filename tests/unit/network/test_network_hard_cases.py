@@ -59,9 +59,7 @@ def test_steady_limit(bm3):
 
 
 @pytest.mark.slow
-def test_full_bm3_with_one_second_steps(bm3, request):
-    if "slow" not in (request.config.getoption("markexpr") or ""):
-        pytest.skip("slow (~1-2 min): run with -m slow")
+def test_full_bm3_with_one_second_steps(bm3):
     recs = bm3.case_tiny_capacity(quick=False) + bm3.case_dt_sweep(quick=False)
     assert all(r["ok"] for r in _by(recs, "backward_euler"))
     assert all(r["ok"] for r in recs if r["method"] == "tr_bdf2" and r["setting"].endswith("=1"))
