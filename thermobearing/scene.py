@@ -53,7 +53,7 @@ Layout (every table optional unless marked)::
     stepper = "tr_bdf2"
     rtol = 1e-4
     kinematics_tolerance = 0.01        # relative viscosity change that triggers a re-solve
-    chunk = "60 s"                     # coupling interval: heat re-linearised, output row
+    chunk = "90 s"                     # coupling interval: heat re-linearised, output row
 
     [outputs]
     mode = "transient"                 # transient | steady
@@ -389,7 +389,7 @@ class Solver:
     atol: float = 1e-3
     kinematics_tolerance: float = 0.01
     max_step: float = 600.0
-    chunk: float = 60.0
+    chunk: float = 90.0
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Solver:

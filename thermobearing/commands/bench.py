@@ -36,20 +36,26 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _parse_records(stdout: str) -> list[dict]:
-    text = stdout.strip()
-    try:
-        data = json.loads(text)
-        return data if isinstance(data, list) else [data]
-    except json.JSONDecodeError:
-        pass
-    records = []
-    for line in text.splitlines():
-        line = line.strip()
-        if line.startswith("{"):
-            try:
-                records.append(json.loads(line))
-            except json.JSONDecodeError:
-                continue
+    """Benchmark records from a script's stdout: a JSON array (possibly followed or
+    preceded by a printed table) or one JSON object per line."""
+    decoder = json.JSONDecoder()
+    records: list[dict] = []
+    for i, line in enumerate(stdout.splitlines(keepends=True)):
+        text = line.lstrip()
+        if not text.startswith(("[", "{")):
+            continue
+        start = sum(len(x) for x in stdout.splitlines(keepends=True)[:i]) + (
+            len(line) - len(text))
+        try:
+            value, _ = decoder.raw_decode(stdout[start:])
+        except json.JSONDecodeError:
+            continue
+        if isinstance(value, list):
+            records.extend(v for v in value if isinstance(v, dict))
+            if records:
+                return records
+        elif isinstance(value, dict):
+            records.append(value)
     return records
 
 

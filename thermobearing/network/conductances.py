@@ -13,6 +13,7 @@ Paper 002 (Gao et al. 2022, ``seeds/002_*.txt``) eq. 27 writes a convective resi
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
@@ -264,6 +265,14 @@ class HertzContactPaper002(ConductanceModel):
 
 # --------------------------------------------------------------- correlations
 def _air(T: float):
+    """Air properties (rho, mu, k, c_p) at T [K], memoised on T rounded to 0.01 K (the
+    properties change by < 1e-4 relative over 0.01 K; a CoolProp call costs ~10 ms and the
+    stepper re-evaluates temperature-dependent edges every step)."""
+    return _air_at(round(float(T), 2))
+
+
+@functools.lru_cache(maxsize=4096)
+def _air_at(T: float):
     """Air properties at T [K]: thermobearing.lubricant.air_properties if present, else CoolProp."""
     try:
         from ..lubricant import air_properties  # engineer A's CoolProp wrapper
