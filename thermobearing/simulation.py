@@ -19,7 +19,9 @@ chunk the heat sources are evaluated on the current kinematic state at the curre
 temperatures, and linearised in the node temperatures by finite differences (one extra
 evaluation per node of the bearing's group): q(T) = q0 + J (T - T0). The network stepper
 (TR-BDF2 by default) integrates the chunk with that affine heat and its constant Jacobian,
-so the temperature feedback on viscosity is implicit inside the step. The kinematics
+so the temperature feedback on viscosity is implicit inside the step. The Jacobian is
+recomputed at each load step and after each kinematics re-solve, and reused (with fresh heat)
+for the other chunks. The kinematics
 (skidding solver) are re-solved at a step change and whenever the oil viscosity at the
 contact temperature has moved by more than ``solver.kinematics_tolerance`` (relative)
 since the last solve: the losses scale with a power < 1 of the viscosity, so this bounds
