@@ -142,3 +142,27 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
         traction=default_traction(bearing, lubricant, contact_temperature, params),
         raw=res,
     )
+
+
+@KINEMATICS.register(
+    "none",
+    references=["harris_kotzalas2007"],
+    summary="No kinematics: epicyclic cage speed only, for whole-bearing (global) loss models.",
+)
+def no_kinematics(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
+                  contact_temperature: float, oil_temperature: float, supply: OilSupply,
+                  guess: KinematicsResult | None = None,
+                  options: Mapping[str, Any] | None = None) -> KinematicsResult:
+    """The epicyclic (pure-rolling) cage speed at the nominal contact angle and no contact
+    detail: the cheapest rung, for heat sources that need only speeds and loads (the
+    ``global_friction`` source). Sources that integrate contacts cannot run on it."""
+    import numpy as np
+
+    csr = float(bearing.theoretical_cage_speed_ratio())
+    w_c = operating.outer_speed + csr * (operating.inner_speed - operating.outer_speed)
+    z = bearing.n_elements
+    state = KinematicState(inner_speed=operating.inner_speed, outer_speed=operating.outer_speed,
+                           cage_speed=w_c, orbital_speed=np.full(z, w_c),
+                           element_spin=np.zeros(z), contacts=(), origin="given")
+    return KinematicsResult(state=state, cage_speed_ratio=csr,
+                            theoretical_cage_speed_ratio=csr)

@@ -82,6 +82,8 @@ def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
     """Heat sources of the scene (``[models] heat_sources``) or the defaults per type."""
     names = scene.models.get("heat_sources")
     if names is None:
+        if scene.models.get("kinematics") == "none":
+            return ("global_friction",)
         return BALL_SOURCES if is_ball else ROLLER_SOURCES
     if isinstance(names, str):
         names = [names]

@@ -72,3 +72,19 @@ def test_unknown_kinematics_lists_known():
     with pytest.raises(InputError) as info:
         Simulation(bad, progress=False)
     assert "race_control" in str(info.value) and "skidding" in str(info.value)
+
+
+def test_global_friction_rung_runs_without_kinematics():
+    """L0 of the fidelity ladder: [models] kinematics = "none" with the global model."""
+    text = BASE.replace('kinematics = "race_control"', 'kinematics = "none"') + (
+        '[outputs]\nmode = "steady"\nwant = ["kinematics", "losses"]\n')
+    sim = Simulation(loads_scene(text), progress=False)
+    names = [(link.family, link.name) for link in sim.chain]
+    assert ("heat_source", "global_friction") in names
+    assert ("heat_source", "raceway_traction") not in names
+    res = sim.run()
+    losses = res.tables["losses"]
+    assert set(losses["source"]) == {"global_friction"}
+    assert (losses["power [W]"] > 0).all()
+    kin = res.tables["kinematics"]
+    assert (kin["over-skidding [%]"] == 0).all()

@@ -1,0 +1,50 @@
+"""A catalogue-level heat source: the whole bearing loss from a global friction model.
+
+The ``global_friction`` source is the cheapest rung of the fidelity ladder (L0 of BM-7):
+the SKF four-term model or Palmgren's M0 + M1 (:mod:`thermobearing.global_friction`) gives
+the frictional torque of the whole bearing at the oil viscosity of the node temperature,
+and the power M * omega is booked on one node role (the oil by default). It needs no
+kinematic detail: use it with ``[models] kinematics = "none"`` and
+``heat_sources = ["global_friction"]``.
+"""
+
+from __future__ import annotations
+
+from ..global_friction import global_friction
+from . import HEAT_SOURCES, ROLES, HeatContext, HeatResult
+
+_MODELS = ("skf_four_term", "palmgren")
+
+
+@HEAT_SOURCES.register(
+    "global_friction",
+    references=["harris_kotzalas2007"],
+    parameters={"model": "-", "temperature_role": "-", "role": "-"},
+    validity="as the chosen catalogue model (see `thermobearing models global_friction`)",
+    summary="Whole-bearing loss from the SKF four-term or Palmgren model (no kinematics).",
+)
+def global_friction_source(ctx: HeatContext) -> HeatResult:
+    """Power loss M * |omega_i - omega_o| [W] of the global model ``model`` (option,
+    default ``skf_four_term``), with the kinematic viscosity at the temperature of
+    ``temperature_role`` (default ``oil``), booked on ``role`` (default ``oil``)."""
+    from ..errors import InputError, UnknownNameError
+
+    name = "global_friction"
+    model = ctx.option(name, "model", "skf_four_term")
+    if model not in _MODELS:
+        raise UnknownNameError(f"heat source {name!r} option model", model, _MODELS)
+    t_role = ctx.option(name, "temperature_role", "oil")
+    role = ctx.option(name, "role", "oil")
+    if role not in ROLES:
+        raise UnknownNameError(f"heat source {name!r} option role", role, ROLES)
+    op = ctx.operating
+    speed = abs(op.inner_speed - op.outer_speed)
+    res = global_friction(model, ctx.bearing, ctx.lubricant, ctx.temperature(t_role), speed,
+                          op.radial_load, op.axial_load, supply=ctx.supply)
+    power = float(res.power)
+    if not power >= 0.0:
+        raise InputError(f"heat source {name!r} power", power, "a finite loss >= 0 W")
+    comps = {f"{model} total": power}
+    return HeatResult(source=name, power_by_role={role: power}, components=comps,
+                      loss_class={f"{model} total": "load_dependent"},
+                      details={"torque [N m]": float(res.torque)})
