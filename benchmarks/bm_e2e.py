@@ -19,7 +19,7 @@ Timed separately:
 
 The solve_ivp driver (:func:`run_scipy`) integrates the same chain: the same scene
 network (:func:`thermobearing.coupled.build_network`), the same kinematics and heat
-evaluation (:class:`thermobearing.coupled._Coupler`: kinematics re-solved by the same
+evaluation (:class:`thermobearing.coupled.Coupler`: kinematics re-solved by the same
 viscosity-change rule at the same 60-s chunk boundaries, heat sources at the node
 temperatures), as the right-hand side of C dT/dt = s - K(T) T + q(T) with the exact
 nonlinear heat at every call (no linearisation), restarted at every chunk boundary (so
@@ -106,7 +106,7 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     """
     from scipy.integrate import solve_ivp
 
-    from thermobearing.coupled import _Coupler, build_network
+    from thermobearing.coupled import Coupler, build_network
     from thermobearing.network.assemble import Assembler
     from thermobearing.simulation import Simulation
 
@@ -114,7 +114,7 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     sim = Simulation(scene, progress=False)
     net = build_network(sim)
     sim.network = net
-    cp = _Coupler(sim, net)
+    cp = Coupler(sim, net)
     asm = Assembler(net)
     C = np.asarray(asm.C, dtype=float)
     if np.any(C <= 0):

@@ -88,8 +88,9 @@ class _Linear:
         return self.J
 
 
-class _Coupler:
-    """Evaluates every bearing's heat on the network's state vector."""
+class Coupler:
+    """Evaluates every bearing's heat on the network's state vector (public: outside
+    integrators, e.g. the solve_ivp driver of ``benchmarks/bm_e2e.py``, use it)."""
 
     def __init__(self, sim: Simulation, net: Any) -> None:
         self.sim = sim
@@ -114,11 +115,11 @@ class _Coupler:
 
     def kinematics(self, step_index: int, step: Step, T: np.ndarray) -> None:
         for b in self.sim.bearings:
-            self.sim._kinematics(b, step_index, step, self.role_temperatures(b, T))
+            self.sim.solve_kinematics(b, step_index, step, self.role_temperatures(b, T))
 
     def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray) -> np.ndarray:
         q = np.zeros(len(self.names))
-        ev = self.sim._heat(b, step, b.last, self.role_temperatures(b, T))
+        ev = self.sim.evaluate_heat(b, step, b.last, self.role_temperatures(b, T))
         return self.net.distribute(ev.by_role, group=b.name, out=q)
 
     def heat(self, step: Step, T: np.ndarray) -> np.ndarray:
@@ -147,7 +148,8 @@ class _Coupler:
 
         rows = []
         for b in self.sim.bearings:
-            ev = self.sim._heat(b, step, b.last, self.role_temperatures(b, T), with_rows=True)
+            ev = self.sim.evaluate_heat(b, step, b.last, self.role_temperatures(b, T),
+                                        with_rows=True)
             base = step_columns(step_index, time_s, b.name, step)
             rows.extend({**base, **r} for r in ev.rows)
         return rows
@@ -188,7 +190,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
 
     scene = sim.scene
     solver = scene.solver
-    coupler = _Coupler(sim, net)
+    coupler = Coupler(sim, net)
     names = coupler.names
     T = np.full(len(names), scene.environment.initial_temperature)
     stepper = TransientStepper(net, method=solver.stepper, rtol=solver.rtol, atol=solver.atol,
@@ -273,7 +275,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     from .network import solve_steady
     from .simulation import kinematics_columns, step_columns
 
-    coupler = _Coupler(sim, net)
+    coupler = Coupler(sim, net)
     names = coupler.names
     T = np.full(len(names), sim.scene.environment.initial_temperature)
     temp_rows, kin_rows, loss_rows = [], [], []

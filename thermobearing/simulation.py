@@ -226,7 +226,7 @@ class Simulation:
         return OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
                               axial_load=step.axial_load)
 
-    def _kinematics(self, b: _Bearing, step_index: int, step: Step,
+    def solve_kinematics(self, b: _Bearing, step_index: int, step: Step,
                     temps: Mapping[str, float]) -> KinematicsResult:
         """Solve (or reuse) the kinematics of one bearing at the current temperatures."""
         t_contact = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
@@ -269,7 +269,7 @@ class Simulation:
             if text not in self.warnings and len(self.warnings) < 200:
                 self.warnings.append(text)
 
-    def _heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
+    def evaluate_heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
               temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
         """Heat of the bearing's sources at the given role temperatures (memoised: two
         identical bearings in the same state are evaluated once)."""
@@ -366,13 +366,13 @@ class Simulation:
             for b in self.bearings:
                 base = step_columns(i, 0.0, b.name, step)
                 if self.needs["kinematics"]:
-                    kin = self._kinematics(b, i, step, temps)
+                    kin = self.solve_kinematics(b, i, step, temps)
                     row = {**base, **kinematics_columns(kin)}
                     kin_rows.append(row)
                     if writer:
                         writer.append("kinematics", [row])
                     if self.needs["losses"]:
-                        ev = self._heat(b, step, kin, temps, with_rows=True)
+                        ev = self.evaluate_heat(b, step, kin, temps, with_rows=True)
                         rows = [{**base, **r} for r in ev.rows]
                         loss_rows.extend(rows)
                         if writer:
