@@ -22,7 +22,7 @@ Reduced radii of a ball-raceway contact (Hamrock, Schmid & Jacobson 2004, ch. 17
 
 Four-point (gothic-arch) rings: each ring has two arcs of radius f D whose curvature centres are
 offset axially by +-s/2; a centred ball touches both arcs at the shim angle theta_s with
-sin(theta_s) = s / ((2 f - 1) D) (``/work/shared/notes/over-skidding.md`` section 4, checked here
+sin(theta_s) = s / ((2 f - 1) D) (``../shared/notes/over-skidding.md`` section 4, checked here
 by the geometry of :meth:`BallBearing.free_contact_angle`).
 """
 

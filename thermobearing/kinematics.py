@@ -1,6 +1,6 @@
 """Race-control kinematics of ball and roller bearings (used until/alongside the skidding solver).
 
-Frame and symbols (``/work/shared/notes/over-skidding.md`` section 1-2, re-derived here):
+Frame and symbols (``../shared/notes/over-skidding.md`` section 1-2, re-derived here):
 cage frame x' axial, y' tangential, z' radially outward at the element centre; outer ring fixed
 unless ``outer_speed`` is given (then everything is solved in the outer ring's frame and the
 outer speed is added back); gamma' = D/d_m; alpha_i, alpha_o operating contact angles; beta the

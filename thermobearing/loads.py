@@ -9,7 +9,7 @@ ball blocks are 2 x 2 and independent except through the ring unknowns, so each 
 solved by block elimination (Schur complement on the ring unknowns).
 
 Raceway geometry (Jones 1959 in the form of Harris & Kotzalas 2007, vol. 2, ch. 1-3; the
-gothic-arch extension of the over-skidding primer /work/shared/notes/over-skidding.md
+gothic-arch extension of the over-skidding primer ../shared/notes/over-skidding.md
 section 4, where every arc is an independent contact): arc k of radius ``f_k D`` has its
 curvature centre ``c_k`` in the axial plane of the ball (outer arcs fixed, inner arcs moving
 with the inner ring). With ``L = |b - c_k|`` the ball centre distance, the elastic approach is

@@ -1,6 +1,6 @@
 """Envelope analysis of bearing vibration and the cage speed measured from it.
 
-Paper 002 (Gao et al. 2022, ``/work/shared/seeds/002_0add79adaca5495c.txt``, section 4.2)
+Paper 002 (Gao et al. 2022, ``../shared/seeds/002_0add79adaca5495c.txt``, section 4.2)
 measures the cage speed of a QJ1044 bearing *indirectly*: the envelope spectrum of the
 housing acceleration carries the cage rotation frequency (CRF) and its harmonics and
 sidebands of the shaft frequency (``2 f_i - 1 CRF``, ``2 f_i + 1 CRF``), so the cage speed

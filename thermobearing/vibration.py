@@ -1,6 +1,6 @@
 """Lumped-parameter vibration model of a radially loaded ball bearing with cage slip.
 
-Model of Luo et al. 2022 (seed paper 004, ``/work/shared/seeds/004_0105d7aba121b014.txt``):
+Model of Luo et al. 2022 (seed paper 004, ``../shared/seeds/004_0105d7aba121b014.txt``):
 
 * inner ring: two translations x, y (mass m_i, support damping c), radial load W along +x;
 * every ball j: radial displacement d_j (mass m_r, damping c) and spin omega_j (inertia J_r);

@@ -145,7 +145,7 @@ def test_vectorised_over_elements_and_selection() -> None:
     assert list(verdict) == ["outer_race", "inner_race"]
 
 
-# primer /work/shared/notes/over-skidding.md section 5 table (D = 35.1 mm, d_m = 280 mm):
+# primer ../shared/notes/over-skidding.md section 5 table (D = 35.1 mm, d_m = 280 mm):
 # (alpha_i, alpha_o) [deg] -> CSR_ORC, CSR(beta = 0), rounded to 3 decimals in the primer
 PRIMER_TABLE = [((44.6, 35.1), 0.459, 0.487), ((41.1, 40.8), 0.453, 0.454),
                 ((53.8, 20.1), 0.505, 0.568), ((57.2, 9.3), 0.558, 0.602),

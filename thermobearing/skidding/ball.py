@@ -15,7 +15,7 @@ mean advance in the pocket is zero) and carries, per ball j, six unknowns
 
 and three global unknowns, the inner-ring displacements (delta_a, delta_r) [m] and the cage
 speed omega_c [rad/s]. Equations per ball (paper 002, Fig. 1(c) and eq. 9 in steady state;
-primer /work/shared/notes/over-skidding.md section 3.4 in vector form):
+primer ../shared/notes/over-skidding.md section 3.4 in vector form):
 
     sum_k (-Q_k n_k + F_k) + m omega_c^2 b_r e_r - F_drag e_t + Q_p e_t + f_p = 0
     sum_k (p_k x F_k + M_k) + p_p x f_p - omega_c e_a x (J Omega)            = 0
