@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
+import sys
 
 from .. import validation
 
@@ -21,7 +23,11 @@ def run(args: argparse.Namespace) -> int:
     if args.list:
         print("\n".join(validation.case_ids()))
         return 0
-    records = validation.run_cases(args.cases or None)
+    if args.json:  # anything a model prints goes to stderr: stdout is the JSON document
+        with contextlib.redirect_stdout(sys.stderr):
+            records = validation.run_cases(args.cases or None)
+    else:
+        records = validation.run_cases(args.cases or None)
     if args.json:
         print(json.dumps(validation.records_as_dicts(records), indent=1))
     else:

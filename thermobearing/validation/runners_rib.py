@@ -12,7 +12,6 @@ as well.
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 from typing import Any
 
@@ -129,13 +128,10 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                        m_hi, temperature=temperature, quasi_static=cache.get(
                            (round(rd.PAPER003_BASE["speed"], 6),
                             round(rd.PAPER003_BASE["radial_load"], 6))))
-    t0 = time.perf_counter()
     full = rd.simulate_full(m)
     red = rd.simulate_reduced(m)
     out["cost_full_s"] = full.cost_s
     out["cost_reduced_s"] = red.cost_s
     out["reduced_vs_full_pv"] = (red.pv_left + red.pv_right) / (full.pv_left + full.pv_right)
     out["reduced_vs_full_slip"] = red.slip_speed / full.slip_speed
-    print(f"cost of one base-case point: full {full.cost_s:.2f} s, reduced {red.cost_s:.2f} s "
-          f"(wall {time.perf_counter() - t0:.2f} s)")
     return out
