@@ -280,8 +280,29 @@ def _thermal_clearance(bearing: Any, inner_ring_temperature: float,
 # ---------------------------------------------------------------------------
 # ball bearings
 # ---------------------------------------------------------------------------
+class _ThermalClearance:
+    """Operating clearance of a bearing from its component temperatures (shared by both
+    bearing classes)."""
+
+    def operating_clearance(self, inner_ring_temperature: float, outer_ring_temperature: float,
+                            element_temperature: float, reference_temperature: float = 293.15,
+                            *, ring_expansion: float | None = None,
+                            element_expansion: float | None = None,
+                            fit_reduction: float = 0.0) -> float:
+        """Diametral clearance [m] at the given component temperatures [K].
+
+        P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fit_reduction,
+        free thermal growth (Harris & Kotzalas 2007); expansion coefficients [1/K] default to the
+        materials' ``thermal_expansion`` if present, else :data:`STEEL_EXPANSION`. Negative =
+        preload.
+        """
+        return _thermal_clearance(self, inner_ring_temperature, outer_ring_temperature,
+                                  element_temperature, reference_temperature, ring_expansion,
+                                  element_expansion, fit_reduction)
+
+
 @dataclass(frozen=True)
-class BallBearing:
+class BallBearing(_ThermalClearance):
     """A deep-groove, angular-contact or four-point-contact ball bearing (frozen, SI).
 
     Attributes
@@ -591,22 +612,6 @@ class BallBearing:
         return race_control_cage_ratio(self.ball_diameter / self.pitch_diameter, ai,
                                        outer_contact_angle, control)
 
-    def operating_clearance(self, inner_ring_temperature: float, outer_ring_temperature: float,
-                            element_temperature: float, reference_temperature: float = 293.15,
-                            *, ring_expansion: float | None = None,
-                            element_expansion: float | None = None,
-                            fit_reduction: float = 0.0) -> float:
-        """Diametral clearance [m] at the given component temperatures [K].
-
-        P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fit_reduction,
-        free thermal growth (Harris & Kotzalas 2007); expansion coefficients [1/K] default to the
-        materials' ``thermal_expansion`` if present, else :data:`STEEL_EXPANSION`. Negative =
-        preload.
-        """
-        return _thermal_clearance(self, inner_ring_temperature, outer_ring_temperature,
-                                  element_temperature, reference_temperature, ring_expansion,
-                                  element_expansion, fit_reduction)
-
     def summary(self) -> dict[str, tuple[float, str]]:
         """Derived quantities for tables and reports: name -> (SI value, unit)."""
         rx_i, ry_i = self.curvature("inner")
@@ -650,7 +655,7 @@ class BallBearing:
 # roller bearings
 # ---------------------------------------------------------------------------
 @dataclass(frozen=True)
-class RollerBearing:
+class RollerBearing(_ThermalClearance):
     """A cylindrical roller bearing (frozen, SI).
 
     Attributes
@@ -837,22 +842,6 @@ class RollerBearing:
                                      control: str = "outer_race") -> float:
         """(1 - D_w/d_m)/2, paper 000 eq. 40 (n_m = n_i (1 - D_b/d_m)/2)."""
         return _cage_ratio(self.gamma())
-
-    def operating_clearance(self, inner_ring_temperature: float, outer_ring_temperature: float,
-                            element_temperature: float, reference_temperature: float = 293.15,
-                            *, ring_expansion: float | None = None,
-                            element_expansion: float | None = None,
-                            fit_reduction: float = 0.0) -> float:
-        """Diametral clearance [m] at the given component temperatures [K].
-
-        P_d + G_r [d_o (T_o - T_0) - d_i (T_i - T_0)] - 2 G_e D (T_e - T_0) - fit_reduction,
-        free thermal growth (Harris & Kotzalas 2007); expansion coefficients [1/K] default to the
-        materials' ``thermal_expansion`` if present, else :data:`STEEL_EXPANSION`. Negative =
-        preload.
-        """
-        return _thermal_clearance(self, inner_ring_temperature, outer_ring_temperature,
-                                  element_temperature, reference_temperature, ring_expansion,
-                                  element_expansion, fit_reduction)
 
     def summary(self) -> dict[str, tuple[float, str]]:
         """Derived quantities for tables and reports: name -> (SI value, unit)."""

@@ -12,6 +12,7 @@ Paper 002 (Gao et al. 2022, ``seeds/002_*.txt``) eq. 27 writes a convective resi
 
 from __future__ import annotations
 
+import abc
 import dataclasses
 import functools
 import math
@@ -32,14 +33,15 @@ CONDUCTANCE: Registry[type] = Registry(
 G_STANDARD = 9.80665
 
 
-class ConductanceModel:
+class ConductanceModel(abc.ABC):
     """Base class: subclasses are frozen dataclasses registered in :data:`CONDUCTANCE`."""
 
     model_name: ClassVar[str] = ""
     temperature_dependent: ClassVar[bool] = False
 
-    def conductance(self, Ta: float, Tb: float) -> float:  # pragma: no cover - abstract
-        raise NotImplementedError
+    @abc.abstractmethod
+    def conductance(self, Ta: float, Tb: float) -> float:
+        """Conductance [W/K] between the edge's nodes at temperatures Ta, Tb [K]."""
 
     def to_dict(self) -> dict[str, Any]:
         """``{"model": name, **parameters}`` (floats, strings)."""

@@ -53,6 +53,7 @@ size and the residual. Non-finite values are never returned.
 
 from __future__ import annotations
 
+import abc
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -314,14 +315,15 @@ class _Trial:
     to_s: float  # J
 
 
-class _Method:
+class _Method(abc.ABC):
     order = 1
     adaptive = True
     name = ""
 
+    @abc.abstractmethod
     def step(self, core: _Core, t: float, h: float, y0: np.ndarray, f0: np.ndarray,
-             q0: np.ndarray) -> _Trial:  # pragma: no cover - abstract
-        raise NotImplementedError
+             q0: np.ndarray) -> _Trial:
+        """One trial step of size h from (t, y0)."""
 
 
 def _audit(core: _Core, h: float, weights: Sequence[float], ys: Sequence[np.ndarray],
