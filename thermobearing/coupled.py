@@ -155,6 +155,24 @@ class Coupler:
         return rows
 
 
+#: node temperature [K] above which a run is stopped as a thermal runaway (300 degC: beyond
+#: the service range of bearing steels and lubricants)
+RUNAWAY_TEMPERATURE = 573.15
+
+
+def _check_runaway(names: list[str], T: np.ndarray, t: float, step: int, lin: _Linear) -> None:
+    """Stop with a clear error when a node runs away thermally (heat in >> heat out)."""
+    j = int(np.argmax(T))
+    if T[j] > RUNAWAY_TEMPERATURE:
+        raise ConvergenceError(
+            "coupled transient", float(T[j] - RUNAWAY_TEMPERATURE),
+            f"thermal runaway: node {names[j]!r} reached {T[j] - 273.15:.0f} degC "
+            f"(limit {RUNAWAY_TEMPERATURE - 273.15:.0f} degC) with {float(np.sum(lin.q0)):.0f} W "
+            "of heat; the losses exceed what the network removes -- check the oil flow, the "
+            "cooling paths and the speed/load of the schedule",
+            {"time": t, "step": step})
+
+
 def _temperature_row(t: float, names: list[str], T: np.ndarray) -> dict[str, float]:
     row = {"time [s]": t, "time [min]": t / 60.0}
     for n, v in zip(names, T, strict=True):
@@ -239,6 +257,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 if not np.all(np.isfinite(T)):
                     raise ConvergenceError("coupled transient", math.inf,
                                            "non-finite temperature", {"time": t, "step": i})
+                _check_runaway(names, T, t, i, lin)
                 row = _temperature_row(t, names, T)
                 temp_rows.append(row)
                 a = out.audit

@@ -141,3 +141,34 @@ want = ["temperatures", "losses", "energy"]
     assert np.all(np.isfinite(temps.filter(like="[degC]").to_numpy()))
     e = res.tables["energy"].iloc[-1]
     assert abs(e["imbalance [J]"]) <= 1e-4 * e["generated [J]"]
+
+
+def test_thermal_runaway_stops_with_a_clear_error():
+    """12 kW in a 50 mm bearing with 1 L/min of oil: stopped at 300 degC, never NaN."""
+    from thermobearing.errors import ConvergenceError
+
+    text = """
+title = "runaway"
+[[bearings]]
+name = "crb"
+preset = "CRB_50x75x16"
+[lubricant]
+preset = "MIL_PRF_23699"
+[supply]
+flow = "1 L/min"
+inlet_temperature = "80 degC"
+[schedule]
+speed = "30000 rpm"
+radial_load = "3 kN"
+axial_load = "0.2 kN"
+duration = "3 min"
+[models]
+kinematics = "race_control"
+[network]
+parameters = { housing_outer_diameter = "110 mm", housing_length = "30 mm" }
+[outputs]
+want = ["temperatures"]
+"""
+    with pytest.raises(ConvergenceError) as info:
+        Simulation(loads_scene(text), progress=False).run()
+    assert "thermal runaway" in str(info.value) and "crb." in str(info.value)
