@@ -152,6 +152,19 @@ def split_roller_interference(
     return inner, outer
 
 
+def _backtrack(evaluate, dx: float, dy: float, step: np.ndarray, norm: float):
+    """Halve the Newton step until the force residual norm falls (at most 40 halvings);
+    returns the new ring displacement, the evaluation there and its residual norm."""
+    lam = 1.0
+    for _ in range(40):
+        cand = evaluate(dx + lam * step[0], dy + lam * step[1])
+        cn = float(np.hypot(*cand[5]))
+        if cn < norm or lam < 1e-6:
+            break
+        lam *= 0.5
+    return dx + lam * step[0], dy + lam * step[1], cand, cn
+
+
 def roller_load_distribution(
     n_rollers: int,
     diametral_clearance: float,
@@ -268,17 +281,9 @@ def roller_load_distribution(
                 evec = np.array([cos[j], sin[j]])
                 kjj = float(evec @ jac @ evec)
                 jac = kjj * np.outer(evec, evec) + np.outer(nvec, nvec) * kjj
-                step = -np.linalg.solve(jac, res)
-                lam = 1.0
-                for _ in range(40):
-                    cand = evaluate(dx + lam * step[0], dy + lam * step[1])
-                    cn = float(np.hypot(*cand[5]))
-                    if cn < norm or lam < 1e-6:
-                        break
-                    lam *= 0.5
-                dx, dy = dx + lam * step[0], dy + lam * step[1]
+                dx, dy, cand, norm = _backtrack(evaluate, dx, dy, -np.linalg.solve(jac, res),
+                                                norm)
                 interf, di, do, qi, qo, res, jac = cand
-                norm = cn
                 continue
             direction = nvec * (1.0 if float(-res @ nvec) >= 0.0 else -1.0)
             along = cos * direction[0] + sin * direction[1]
@@ -293,17 +298,8 @@ def roller_load_distribution(
                 norm = float(np.hypot(*res))
                 continue
             jac = jac + np.eye(2) * 1e-9 * float(np.trace(jac))
-        step = -np.linalg.solve(jac, res)
-        lam = 1.0
-        for _ in range(40):
-            cand = evaluate(dx + lam * step[0], dy + lam * step[1])
-            cn = float(np.hypot(*cand[5]))
-            if cn < norm or lam < 1e-6:
-                break
-            lam *= 0.5
-        dx, dy = dx + lam * step[0], dy + lam * step[1]
+        dx, dy, cand, norm = _backtrack(evaluate, dx, dy, -np.linalg.solve(jac, res), norm)
         interf, di, do, qi, qo, res, jac = cand
-        norm = cn
     return RollerLoadDistribution(
         azimuth=psi, inner_load=qi, outer_load=qo, inner_deflection=di, outer_deflection=do,
         interference=interf, body_force=fb, ring_displacement=np.array([dx, dy]),
