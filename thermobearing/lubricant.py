@@ -424,6 +424,45 @@ def _frozen(mapping: Mapping[str, Any]) -> tuple:
     return tuple(sorted((k, repr(v)) for k, v in mapping.items()))
 
 
+_MEMO_SIZE = 4096
+
+
+def _memo_scalar(method: Callable[..., Any]) -> Callable[..., Any]:
+    """Memoise a property method for scalar arguments, per lubricant instance.
+
+    The transient re-evaluates the same few oil properties at the same node temperatures
+    many times per chunk (every heat source, every finite-difference column); for scalar
+    (T, p) the result is a float and is kept in the instance's bounded memo. Array
+    arguments, and calls that raise a warning (which must reach every caller), bypass it.
+    """
+    name = method.__name__
+
+    def wrapper(self: Lubricant, *args: Any, **kwargs: Any) -> Any:
+        if kwargs or not all(isinstance(a, (float, int)) and not isinstance(a, bool)
+                             for a in args):
+            return method(self, *args, **kwargs)
+        key = (name, *args)
+        memo = self._memo
+        hit = memo.get(key)
+        if hit is not None:
+            return hit
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            value = method(self, *args)
+        for w in caught:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        if not caught and isinstance(value, float):
+            if len(memo) >= _MEMO_SIZE:
+                memo.clear()
+            memo[key] = value
+        return value
+
+    wrapper.__name__ = name
+    wrapper.__qualname__ = method.__qualname__
+    wrapper.__doc__ = method.__doc__
+    return wrapper
+
+
 @dataclass(frozen=True)
 class Lubricant:
     """One lubricant: its laws and their parameters (all SI).
@@ -466,6 +505,7 @@ class Lubricant:
     estimated: Mapping[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "_memo", {})
         law = VISCOSITY_TEMPERATURE.entry(self.viscosity_law)
         missing = set(law.parameters) - set(self.viscosity_parameters)
         extra = set(self.viscosity_parameters) - set(law.parameters)
@@ -535,6 +575,7 @@ class Lubricant:
     def _vt(self, T: ArrayLike) -> ArrayLike:
         return VISCOSITY_TEMPERATURE.get(self.viscosity_law)(T, **self.viscosity_parameters)
 
+    @_memo_scalar
     def kinematic_viscosity(self, T: ArrayLike) -> ArrayLike:
         """Kinematic viscosity [m^2/s] at atmospheric pressure, T [K] (vectorised)."""
         v = self._vt(T)
@@ -552,6 +593,7 @@ class Lubricant:
     def _p0(self) -> float:
         return float(self.pressure_parameters.get("p0", ROELANDS_P0))
 
+    @_memo_scalar
     def roelands_index(self, T: ArrayLike) -> ArrayLike:
         """Roelands pressure-viscosity index z [-] at T [K].
 
@@ -579,6 +621,7 @@ class Lubricant:
             return entry.obj(self.kinematic_viscosity(T))
         return entry.obj(self._eta_atm(T))
 
+    @_memo_scalar
     def pressure_viscosity_coefficient(
         self, T: ArrayLike, definition: str = "initial_slope"
     ) -> ArrayLike:
@@ -608,6 +651,7 @@ class Lubricant:
             self._eta_atm(t), self.roelands_index(t), self._p0
         )
 
+    @_memo_scalar
     def dynamic_viscosity(self, T: ArrayLike, p: ArrayLike = 0.0) -> ArrayLike:
         """Dynamic viscosity [Pa s] at T [K] and gauge pressure p [Pa] (vectorised, broadcast)."""
         check_finite("pressure", p)
@@ -619,6 +663,7 @@ class Lubricant:
         return roelands_viscosity(eta0, p, self.roelands_index(T), self._p0)
 
     # -- density and thermal ------------------------------------------------
+    @_memo_scalar
     def density(self, T: ArrayLike, p: ArrayLike = 0.0) -> ArrayLike:
         """Density [kg/m^3] at T [K], p [Pa]: temperature law, then Dowson-Higginson.
 
@@ -641,10 +686,12 @@ class Lubricant:
             params.setdefault("density15", float(self.density(288.15)))
         return LUBRICANT_THERMAL.get(self.thermal_model)(T, **params)
 
+    @_memo_scalar
     def specific_heat(self, T: ArrayLike) -> ArrayLike:
         """Specific heat c_p [J/(kg K)] at T [K]."""
         return self._thermal(T)[0]
 
+    @_memo_scalar
     def thermal_conductivity(self, T: ArrayLike) -> ArrayLike:
         """Thermal conductivity k [W/(m K)] at T [K]."""
         return self._thermal(T)[1]
