@@ -124,11 +124,20 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     return float(out)
 
 
+@functools.lru_cache(maxsize=256)
+def _from_si_affine(unit: str) -> tuple[float, float]:
+    """(a, b) with value_in_unit = a * value_SI + b (every pint unit conversion is affine)."""
+    ureg = unit_registry()
+    base = ureg.Quantity(1.0, unit).to_base_units().units
+    y0 = float(ureg.Quantity(0.0, base).to(unit).magnitude)
+    y1 = float(ureg.Quantity(1.0, base).to(unit).magnitude)
+    return y1 - y0, y0
+
+
 def from_si(value: float, unit: str) -> float:
     """Convert an SI float to ``unit`` (for report labels and printed tables)."""
-    ureg = unit_registry()
-    q = ureg.Quantity(value, ureg.Quantity(1.0, unit).to_base_units().units)
-    return float(q.to(unit).magnitude)
+    a, b = _from_si_affine(unit)
+    return float(a * value + b)
 
 
 def format_quantity(value: float, unit: str, digits: int = 4) -> str:
