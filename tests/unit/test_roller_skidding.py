@@ -336,3 +336,29 @@ def test_clearance_film_drives_unloaded_rollers_and_keeps_energy_balance(nu214, 
                   * r.cage_speed**2)
     assert r.cage_speed > state150.cage_speed
     assert r.shaft_torque * OMEGA == pytest.approx(r.power_loss["total"], rel=1e-8)
+
+
+def test_outer_pure_rolling_unloaded_zone(nu214, oil, state150):
+    # Paper 000 sec. 1: outside the load zone the roller "purely rolls along the outer ring
+    # raceway": omega_r = (d_m + D)/D omega_c, no sliding at the outer contact, and the
+    # outer shear on the roller equals the pocket friction (eq. 31); eq. 30 gives F_d < 0
+    # (the cage pushes the roller). The constraint does no work: shaft power = dissipation.
+    r = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, unloaded_zone="outer_pure_rolling",
+                     tol=1e-12)
+    free = r.inner_load == 0.0
+    assert np.count_nonzero(free) >= 15
+    d_m, d = nu214.pitch_diameter, nu214.roller_diameter
+    assert r.roller_speed[free] == pytest.approx((d_m + d) / d * r.cage_speed, rel=1e-9)
+    assert np.max(np.abs(r.outer_sliding_speed[free])) < 1e-9
+    assert r.outer.shear_force[free] == pytest.approx(r.pocket_friction[free], rel=1e-6)
+    assert np.all(r.pocket_normal_force[free] < 0.0)
+    assert r.shaft_torque * OMEGA == pytest.approx(r.power_loss["total"], rel=1e-8)
+    # the free rollers spin about 10x faster than in the moment-balance model and drag the
+    # cage harder: the cage is slower (paper 000 conditions: 986 -> 748 r/min at 150 N)
+    assert np.mean(r.roller_speed[free]) > 5.0 * np.mean(state150.roller_speed[free])
+    assert r.cage_speed < state150.cage_speed
+
+
+def test_unknown_unloaded_zone_model_is_an_error(nu214, oil):
+    with pytest.raises(InputError):
+        solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, unloaded_zone="rolls")

@@ -23,7 +23,13 @@ speed ``omega_r,j`` of every roller and the cage speed ``omega_c``. Equations (p
 
 Radial equilibrium (eqs. 20/23) with the centrifugal force and the whirl inertia gives the
 contact loads (:mod:`thermobearing.loads_roller`); an unloaded roller has no inner contact
-(paper sec. 1: it rolls on the outer race, pressed by its centrifugal force).
+(paper sec. 1: it rolls on the outer race, pressed by its centrifugal force). By default its
+spin follows from its moment balance (eq. 31 with the eq. 5 shear: outer-race Couette against
+Poiseuille and pocket friction), which lets it slide on the outer race; with
+``unloaded_zone="outer_pure_rolling"`` it rolls purely on the outer race as paper 000 sec. 1
+states (omega_r = (d_m + D)/D omega_c, the outer shear = f_d as a constraint force). The
+second is not consistent with eq. 5 (a Newtonian film carries no Couette shear at zero
+sliding), hence not the default.
 
 Numerics: Newton-Raphson on the Z + 1 equations with a structured finite-difference
 Jacobian (roller blocks are scalar and coupled only through the cage: an "arrow" matrix,
@@ -64,6 +70,9 @@ from .roller_fluid import (
 
 #: default pocket clearance when the cage geometry gives none [m] (estimated: 1-2 % of D)
 DEFAULT_POCKET_CLEARANCE_FRACTION = 0.015
+
+#: models of the rollers outside the load zone (see :func:`build_model`)
+UNLOADED_ZONE_MODELS = ("moment_balance", "outer_pure_rolling")
 
 
 @dataclass(frozen=True)
@@ -227,6 +236,7 @@ class RollerModel:
     clearance_film: bool = False
     clearance_film_floor: float = 1e-6
     inner_gap: np.ndarray | None = None
+    unloaded_zone: str = "moment_balance"
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -288,6 +298,7 @@ def build_model(
     oil_layer: float | None = None,
     clearance_film: bool = False,
     clearance_film_floor: float = 1e-6,
+    unloaded_zone: str = "moment_balance",
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -317,7 +328,16 @@ def build_model(
         Default False: paper 000's unloaded rollers have no inner-ring force. The film load is
         not fed back into the ring equilibrium.
     clearance_film_floor : smallest gap used by the clearance film [m].
+    unloaded_zone : how a roller without an inner contact spins (one of
+        :data:`UNLOADED_ZONE_MODELS`). ``"moment_balance"`` (default): its spin follows from
+        its moment balance (outer-race shear against pocket friction, eq. 31 with the traction
+        law). ``"outer_pure_rolling"``: paper 000 sec. 1, "the roller purely rolls along the
+        outer ring raceway for the unloaded zone": omega_r = (d_m + D)/D omega_c, the outer
+        contact supplies whatever tangential force eq. 31 needs (rigid rolling constraint, no
+        sliding work) and eq. 30 gives the pocket force.
     """
+    if unloaded_zone not in UNLOADED_ZONE_MODELS:
+        raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
     if oil_layer is not None:
         check_positive("oil_layer", oil_layer)
     check_positive("clearance_film_floor", clearance_film_floor)
@@ -359,6 +379,7 @@ def build_model(
         cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
         oil_layer=None if oil_layer is None else float(oil_layer),
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
+        unloaded_zone=unloaded_zone,
     )
 
 
@@ -400,6 +421,12 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     q_o = np.maximum(q_o, 0.0)
     u_ri = 0.5 * (d_m - d) * (omega - omega_c) * np.ones_like(omega_r)
     u_ro = 0.5 * (d_m + d) * omega_c * np.ones_like(omega_r)
+    free = None
+    if model.unloaded_zone == "outer_pure_rolling" and not model.clearance_film:
+        # paper 000 sec. 1: outside the load zone the roller rolls purely on the outer race
+        free = inner_load <= 0.0
+        spin_in = omega_r
+        omega_r = np.where(free, (d_m + d) / d * omega_c, omega_r)
     u_roll = half_d * omega_r
     common = dict(eta0=model.eta0, alpha=model.alpha, traction_law=model.traction_law,
                   temperature=model.temperature, rolling_force=model.rolling_force,
@@ -418,10 +445,27 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     ax, ay = whirl_acceleration
     a_t = -ax * np.sin(azimuth) + ay * np.cos(azimuth)
     share_i, share_o = model.radius_inner / half_d, model.radius_outer / half_d
+    if free is not None and np.any(free):
+        # eqs. 30-31 with a rigid rolling constraint at the outer race: the outer shear on
+        # the roller S_o equals the pocket friction f_d (eq. 31), the pocket force follows
+        # from eq. 30, F_d = -(S_o + share_o Q_xo) - m a_t, and f_d depends on F_d
+        # (eqs. 37-38): a contraction (df_d/dF_d ~ 0.1), solved by fixed point
+        base = (-share_o * fo.rolling_force * fo.entrainment_sign
+                - model.roller_mass * a_t)
+        s_o = np.zeros_like(base)
+        for _ in range(8):
+            s_o = pocket_forces(base - s_o, omega_r, d, model.length, model.eta0,
+                                model.pocket_clearance).friction
+        fo = dataclasses.replace(fo, traction=np.where(
+            free, s_o + fo.poiseuille * fo.entrainment_sign, fo.traction))
     pocket = fi.orbital_force(share_i) - fo.orbital_force(share_o) - model.roller_mass * a_t
     fric = pocket_forces(pocket, omega_r, d, model.length, model.eta0,
                          model.pocket_clearance).friction
     roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
+    if free is not None:
+        # the constraint replaces the moment balance of a free roller (N per rad/s scale)
+        roller_eq = np.where(free, (omega_r - spin_in) * model.roller_mass * omega * half_d,
+                             roller_eq)
     # cage: pocket normal forces at d_m/2; the (radial) pocket friction acts at D/2 beside
     # the roller centre and retards the cage on either pocket face
     cage_terms = pocket - (d / d_m) * fric
