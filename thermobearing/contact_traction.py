@@ -194,8 +194,32 @@ def integrate(
     if np.any(np.isnan(rd)) or np.any(rd <= 0):
         raise InputError("contact_traction.deformed_radius", "values <= 0 or NaN",
                          "radii > 0 (inf: flat)")
-    shape_s = q_load.shape
-    xg, yg, pshape, area_w = _rule(kind, int(n_major), int(n_minor))
+    curvature = np.where(np.isinf(rd), 0.0, 1.0 / np.where(np.isinf(rd), 1.0, rd))
+    h = None
+    if film_thickness is not None:
+        h = np.broadcast_to(np.asarray(film_thickness, dtype=float), q_load.shape)
+        if np.any(h[(q_load > 0) & (a > 0) & (b > 0)] <= 0):
+            raise InputError("contact_traction.film_thickness", "values <= 0 at loaded contacts",
+                             "a film thickness > 0 [m]")
+    return _integrate_core(law, q_load, a, b, vy, vx, wz, wx, wy, curvature, h, temperature,
+                           kind, int(n_major), int(n_minor), jacobian)
+
+
+def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.ndarray,
+                    vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
+                    wy: np.ndarray, curvature: np.ndarray, h: np.ndarray | None,
+                    temperature: Any, kind: str, n_major: int, n_minor: int,
+                    jacobian: bool) -> ContactTraction:
+    """Unchecked core of :func:`integrate` (the one code path of the contact integration).
+
+    All arrays are float and broadcast to the contact shape S; ``curvature`` = 1/R_d [1/m]
+    (0: flat); ``h`` the film thickness (> 0 at loaded contacts) or None. The skidding
+    solvers call this directly inside their residuals after validating their inputs once;
+    :func:`integrate` validates and calls it.
+    """
+    shape_s = np.broadcast_shapes(q_load.shape, a.shape, b.shape)
+    q_load = np.broadcast_to(q_load, shape_s)
+    xg, yg, pshape, area_w = _rule(kind, n_major, n_minor)
 
     loaded = (q_load > 0) & (a > 0) & (b > 0)
     ab = a * b
@@ -208,46 +232,45 @@ def integrate(
     e = (...,) + (None,)
     x = a[e] * xg
     y = b[e] * yg
-    curvature = np.where(np.isinf(rd), 0.0, 1.0 / np.where(np.isinf(rd), 1.0, rd))
-    z = 0.5 * curvature[e] * x * x
+    z = (0.5 * np.asarray(curvature)[e]) * x * x
     dvx = vx[e] + wy[e] * z - wz[e] * y
     dvy = vy[e] + wz[e] * x - wx[e] * z
-    speed = np.hypot(dvx, dvy)
+    speed = np.sqrt(dvx * dvx + dvy * dvy)
     pressure = p0[e] * pshape
     weight = np.where(loaded, ab, 0.0)[e] * area_w  # dA [m^2]
 
     h_nodes = None
-    if film_thickness is not None:
-        h = np.broadcast_to(np.asarray(film_thickness, dtype=float), shape_s)
-        if np.any(h[loaded] <= 0):
-            raise InputError("contact_traction.film_thickness", "values <= 0 at loaded contacts",
-                             "a film thickness > 0 [m]")
+    if h is not None:
         h_nodes = np.where(loaded, h, 1.0)[e]  # shape S + (1,): broadcast over the nodes
     t_nodes = None
     if temperature is not None:
         # per-contact temperature, shape S + (1,): the law evaluates the temperature part of
         # the viscosity once per contact and broadcasts it over the nodes
         t_nodes = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s)[e]
-    tau, dtau = law.shear_stress(speed, pressure, h_nodes, t_nodes)
+    core = getattr(law, "_stress", None)   # unchecked core of the law's shear_stress
+    tau, dtau = (core if core is not None else law.shear_stress)(speed, pressure, h_nodes,
+                                                                  t_nodes)
     tau = np.broadcast_to(np.asarray(tau, dtype=float), speed.shape)
     dtau = np.broadcast_to(np.asarray(dtau, dtype=float), speed.shape)
 
     moving = speed > 0.0
     safe_speed = np.where(moving, speed, 1.0)
-    ex = np.where(moving, dvx / safe_speed, 0.0)
-    ey = np.where(moving, dvy / safe_speed, 0.0)
-    tx = -tau * ex * weight  # traction force on the element per node [N]
-    ty = -tau * ey * weight
+    tw = tau * weight                               # |traction| per node [N]
+    per_speed = np.where(moving, tw / safe_speed, 0.0)
+    tx = -per_speed * dvx  # traction force on the element per node [N], against the slip
+    ty = -per_speed * dvy
 
     fx = tx.sum(-1)
     fy = ty.sum(-1)
     mx = -(z * ty).sum(-1)
     my = (z * tx).sum(-1)
     mz = (x * ty - y * tx).sum(-1)
-    heat = (tau * speed * weight).sum(-1)
+    heat = (tw * speed).sum(-1)
 
     jac = grad = None
     if jacobian:
+        ex = np.where(moving, dvx / safe_speed, 0.0)
+        ey = np.where(moving, dvy / safe_speed, 0.0)
         # d t / d dv = -[tau' e e^T + (tau/s)(I - e e^T)] (per unit area)
         ratio = np.where(moving, tau / safe_speed, dtau)
         axx = -(dtau * ex * ex + ratio * (1.0 - ex * ex)) * weight

@@ -149,10 +149,34 @@ def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
     _warn_range("hamrock_dowson_1977_central", k=(k, HD1977_RANGE["k"]),
                 U=(big_u, HD1977_RANGE["U"]), W=(big_w, HD1977_RANGE["W"]),
                 G=(big_g, HD1977_RANGE["G"]))
+    return _hd1977_central_core(big_u, big_g, big_w, rx, k)
+
+
+def _hd1977_central_core(big_u: Any, big_g: Any, big_w: Any, rx: Any, k: Any) -> Any:
+    """H_c of Hamrock-Dowson 1977 from the dimensionless groups (unchecked) [m]."""
     with np.errstate(divide="ignore"):
         h = rx * 2.69 * big_u**0.67 * big_g**0.53 * np.where(big_w > 0, big_w, 1.0) ** -0.067 * (
             1.0 - 0.61 * np.exp(-0.73 * k))
     return _finish(h, big_u, big_w)
+
+
+def _hd1977_central_unchecked(entrainment_speed: Any, dynamic_viscosity: float,
+                              pressure_viscosity_coefficient: float, load: Any,
+                              reduced_radius_x: Any, reduced_radius_y: Any,
+                              effective_modulus: float) -> Any:
+    """:func:`hamrock_dowson_1977_central` without input checks or range warnings [m].
+
+    For hot loops (the ball skidding residual) whose inputs were validated once: float
+    arrays, speed and load >= 0, radii > 0, viscosity and E' > 0. Same formula and code
+    (:func:`_hd1977_central_core`) as the public function.
+    """
+    ep = effective_modulus
+    rx = reduced_radius_x
+    big_u = dynamic_viscosity * np.abs(entrainment_speed) / (ep * rx)
+    big_g = pressure_viscosity_coefficient * ep
+    big_w = load / (ep * rx**2)
+    k = 1.03 * (reduced_radius_y / rx) ** 0.64
+    return _hd1977_central_core(big_u, big_g, big_w, rx, k)
 
 
 @FILM.register(

@@ -179,8 +179,8 @@ def ellipticity(radius_ratio: Any, method: str = "exact") -> tuple[Any, Any, Any
         m = 1.0 - 1.0 / ks**2
         return ks[()], ellipk(m)[()], ellipe(m)[()]
     if method == "hamrock_brewe":
-        k = ratio ** (2.0 / math.pi)
-        return k[()], (math.pi / 2 + _Q * np.log(ratio))[()], (1.0 + _Q / ratio)[()]
+        k, big_k, big_e = _hamrock_brewe_kke(ratio)
+        return k[()], big_k[()], big_e[()]
     if method == "brewe_hamrock_1977":
         k = 1.0339 * ratio**0.636
         return (np.maximum(k, 1.0)[()], (1.5277 + 0.6023 * np.log(ratio))[()],
@@ -188,18 +188,60 @@ def ellipticity(radius_ratio: Any, method: str = "exact") -> tuple[Any, Any, Any
     raise InputError("method", method, "one of " + ", ".join(POINT_METHODS))
 
 
+def _hamrock_brewe_kke(ratio: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(k, K, E) of the Hamrock-Brewe 1983 closed form for radius ratios >= 1 (unchecked)."""
+    k = ratio ** (2.0 / math.pi)
+    return k, math.pi / 2 + _Q * np.log(ratio), 1.0 + _Q / ratio
+
+
 # ---------------------------------------------------------------------------
 # point contact
 # ---------------------------------------------------------------------------
+def _point_contact_hb_unchecked(load: np.ndarray, rx: np.ndarray, ry: np.ndarray,
+                                effective_modulus: float
+                                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Hamrock-Brewe point contact without input checks: (a, b, max_pressure, K_stiffness).
+
+    The same formulas as :func:`point_contact` / :func:`point_contact_stiffness` with
+    ``method="hamrock_brewe"`` (which validate and then share the helpers used here), for
+    hot loops that validated their inputs once: float arrays, load >= 0, rx, ry > 0 finite.
+    K_stiffness is K [N/m^1.5] with Q = K delta^1.5; a, b, p are 0 where load is 0.
+    """
+    r, ratio = _reduced_unchecked(rx, ry)
+    k, big_k, big_e = _hamrock_brewe_kke(ratio)
+    a, b, p = _ellipse(load, r, k, big_e, effective_modulus)
+    stiff = _stiffness_from(r, k, big_k, big_e, effective_modulus)
+    return a, b, p, stiff
+
+
+def _ellipse(w: np.ndarray, r: np.ndarray, k: np.ndarray, big_e: np.ndarray,
+             ep: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Semi-axes a, b [m] and p_max [Pa] (0 at zero load) from W, R, k, E (unchecked)."""
+    a = np.cbrt(6.0 * k**2 * big_e * w * r / (math.pi * ep))
+    b = np.cbrt(6.0 * big_e * w * r / (math.pi * k * ep))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p = np.where(w > 0, 3.0 * w / (2.0 * math.pi * np.where(w > 0, a * b, 1.0)), 0.0)
+    return a, b, p
+
+
+def _stiffness_from(r: Any, k: Any, big_k: Any, big_e: Any, ep: Any) -> Any:
+    """K = pi k E' (2 E R / (9 K^3))^(1/2) [N/m^1.5] (unchecked)."""
+    return math.pi * k * ep * np.sqrt(2.0 * big_e * r / (9.0 * big_k**3))
+
+
+def _reduced_unchecked(rx: Any, ry: Any) -> tuple[Any, Any]:
+    r = 1.0 / (1.0 / rx + 1.0 / ry)
+    ratio = np.maximum(rx, ry) / np.minimum(rx, ry)
+    return r, ratio
+
+
 def _reduced(rx: Any, ry: Any) -> tuple[np.ndarray, np.ndarray]:
     rx_a = np.asarray(rx, dtype=float)
     ry_a = np.asarray(ry, dtype=float)
     check_positive("rx", rx_a)
     if np.any(np.isnan(ry_a)) or np.any(ry_a <= 0):
         raise InputError("ry", ry, "a value > 0 (inf for a cylinder)")
-    r = 1.0 / (1.0 / rx_a + 1.0 / ry_a)
-    ratio = np.maximum(rx_a, ry_a) / np.minimum(rx_a, ry_a)
-    return r, ratio
+    return _reduced_unchecked(rx_a, ry_a)
 
 
 def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
@@ -232,11 +274,8 @@ def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
     r, ratio = _reduced(rx, ry)
     k, big_k, big_e = ellipticity(ratio, method)
     ep = np.asarray(effective_modulus, dtype=float)
-    a = np.cbrt(6.0 * k**2 * big_e * w * r / (math.pi * ep))
-    b = np.cbrt(6.0 * big_e * w * r / (math.pi * k * ep))
+    a, b, p = _ellipse(w, r, k, big_e, ep)
     delta = big_k * np.cbrt(9.0 / (2.0 * big_e * r) * (w / (math.pi * k * ep)) ** 2)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        p = np.where(w > 0, 3.0 * w / (2.0 * math.pi * np.where(w > 0, a * b, 1.0)), 0.0)
     k_b = np.broadcast_to(k, np.shape(a)) if np.ndim(a) else k
     return PointContact(a[()], b[()], p[()], delta[()], np.asarray(k_b)[()],
                         np.broadcast_to(big_k, np.shape(a))[()] if np.ndim(a) else big_k,
@@ -252,8 +291,7 @@ def point_contact_stiffness(rx: Any, ry: Any, effective_modulus: Any,
     check_positive("effective_modulus", effective_modulus)
     r, ratio = _reduced(rx, ry)
     k, big_k, big_e = ellipticity(ratio, method)
-    out = math.pi * k * np.asarray(effective_modulus, dtype=float) * np.sqrt(
-        2.0 * big_e * r / (9.0 * big_k**3))
+    out = _stiffness_from(r, k, big_k, big_e, np.asarray(effective_modulus, dtype=float))
     return np.asarray(out)[()]
 
 

@@ -29,6 +29,7 @@ Use :func:`make_traction_law` to build a law by name from a scene's parameters.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any, NamedTuple, Protocol
@@ -114,8 +115,11 @@ class LinearSaturatingTraction:
     def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
                      temperature: Any = None) -> ShearStress:
         """Shear stress tau = mu(dv) p [Pa] and d tau / d dv [Pa s/m]."""
-        s = _as_speed(slide_speed)
-        p = np.asarray(pressure, dtype=float)
+        return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
+
+    def _stress(self, s: np.ndarray, p: np.ndarray, film_thickness: Any = None,
+                temperature: Any = None) -> ShearStress:
+        """Unchecked core of :meth:`shear_stress` (float arrays, s >= 0 finite)."""
         below = s < self.slip_speed_max
         mu = self.mu_max * np.where(below, s / self.slip_speed_max, 1.0)
         dmu = np.where(below, self.mu_max / self.slip_speed_max, 0.0)
@@ -190,8 +194,13 @@ class EyringLimitingShearTraction:
                              "a contact temperature [K]")
         h = np.asarray(film_thickness, dtype=float)
         check_positive("traction[eyring_limiting_shear].film_thickness", h)
-        s = _as_speed(slide_speed)
-        p = np.maximum(np.asarray(pressure, dtype=float), 0.0)
+        return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float), h,
+                            temperature)
+
+    def _stress(self, s: np.ndarray, p: np.ndarray, h: np.ndarray,
+                temperature: Any) -> ShearStress:
+        """Unchecked core of :meth:`shear_stress` (float arrays; s >= 0 finite, h > 0)."""
+        p = np.maximum(p, 0.0)
         eta = np.asarray(self.lubricant.dynamic_viscosity(temperature, p), dtype=float)
         rate_coeff = eta / h  # d(eta*gamma)/d(dv) [Pa s/m]
         tau_n = rate_coeff * s
@@ -200,7 +209,7 @@ class EyringLimitingShearTraction:
         else:
             x = tau_n / self.eyring_stress
             tau_e = self.eyring_stress * np.arcsinh(x)
-            dtau_e = rate_coeff / np.hypot(1.0, x)
+            dtau_e = rate_coeff / np.sqrt(1.0 + x * x)
         tau_l = self.limiting_shear_coefficient * p
         if self.cap == "min":
             capped = tau_e >= tau_l
@@ -300,6 +309,11 @@ class FourParameterTraction:
     @property
     def coefficients(self) -> tuple[float, float, float, float]:
         """(A, B, C, D)."""
+        return self._coefficients
+
+    @functools.cached_property
+    def _coefficients(self) -> tuple[float, float, float, float]:
+        # fitted once per law (a brentq root solve; the law is frozen)
         return fit_four_parameter(self.mu_zero, self.mu_max, self.slip_speed_at_max,
                                   self.mu_infinity)
 
@@ -312,9 +326,12 @@ class FourParameterTraction:
     def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
                      temperature: Any = None) -> ShearStress:
         """Shear stress mu(u) p [Pa] and its derivative [Pa s/m]."""
-        a, b, c, d = self.coefficients
-        u = _as_speed(slide_speed)
-        p = np.asarray(pressure, dtype=float)
+        return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
+
+    def _stress(self, u: np.ndarray, p: np.ndarray, film_thickness: Any = None,
+                temperature: Any = None) -> ShearStress:
+        """Unchecked core of :meth:`shear_stress` (float arrays, u >= 0 finite)."""
+        a, b, c, d = self._coefficients
         e = np.exp(-c * u)
         mu = (a + b * u) * e + d
         dmu = (b - c * (a + b * u)) * e

@@ -51,9 +51,16 @@ from typing import Any
 
 import numpy as np
 
-from ..contact_traction import integrate
+from ..contact_traction import _integrate_core
 from ..errors import ConvergenceError, InputError, check_finite, check_positive
-from ..loads import INNER, OUTER, ArcSet, arc_contacts, ball_arcs, ball_load_distribution
+from ..hertz import _ellipse, _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
+from ..loads import (
+    INNER,
+    ArcSet,
+    ContactField,
+    ball_arcs,
+    ball_load_distribution,
+)
 
 __all__ = ["BallModels", "BallSkiddingResult", "solve_ball", "ball_residual_system"]
 
@@ -212,52 +219,96 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.T_s = self.F_s * self.Rm
         self.w_s = max(w, 1e-3)
         self.n_eval = 0
+        # constants of the residual, computed once (validated here, used unchecked inside)
+        arcs = self.arcs
+        self.cx0 = arcs.centre_x.astype(float)
+        self.cr0 = arcs.centre_r.astype(float)
+        self.free = arcs.free_distance.astype(float)
+        self.inner_f = self.inner.astype(float)
+        self.cpsi = np.cos(self.psi)
+        dm = float(bearing.pitch_diameter)
+        self.D_dm = self.D / dm
+        self.rx_half = 0.5 * self.D
+        self.rx_sign = np.where(self.inner, 1.0, -1.0)   # R_x = D/2 (1 -+ D cos(alpha)/d_m)
+        self.ry = arcs.conformity * self.D / (2.0 * arcs.conformity - 1.0)
+        check_positive("skidding.ball R_y", self.ry)
+        self.curv = 1.0 / self.rd                          # deformed-surface curvature [1/m]
+        self.w_race = np.where(self.inner, self.speed, 0.0)
+        self.veps = 1e-6 * max(abs(self.speed) * self.Rm, 1e-3)
+        self._torque_memo: dict[float, tuple[float, float, float]] = {}
+        self.last_jacobian: JacobianBlocks | None = None
+        check_positive("skidding.ball effective_modulus", self.Ep)
+        check_positive("skidding.ball ball_mass", self.m)
+        if models.n_major < 2 or models.n_minor < 1:
+            raise InputError("skidding.ball n_major/n_minor", (models.n_major, models.n_minor),
+                             "n_major >= 2 and n_minor >= 1")
+        if getattr(models.traction_law, "requires_film", False) and models.film_thickness is None:
+            raise InputError("skidding.ball film_thickness", None,
+                             "a film-thickness model: the traction law shears a fluid film")
 
     # -- kinematics and forces ------------------------------------------------------------
-    def _contacts(self, X, G):
-        cf = arc_contacts(self.bearing, self.arcs, X[:, 0], X[:, 1], G[0], G[1], self.psi)
-        return cf
-
     def evaluate(self, X: np.ndarray, G: np.ndarray, details: bool = False):
-        """Scaled residuals; see the class docstring."""
-        self.n_eval += 1
+        """Scaled residuals; see the class docstring.
+
+        X may carry leading batch dimensions, (..., Z, 6) with G (..., 3): every state of
+        the batch is evaluated in the same numpy pass (the structured Jacobian evaluates its
+        nine perturbed states at once). ``details`` needs a single state.
+        """
+        X = np.asarray(X, dtype=float)
+        G = np.asarray(G, dtype=float)
+        batch = X.shape[:-2]
+        self.n_eval += int(np.prod(batch)) if batch else 1
+        if not (np.all(np.isfinite(X)) and np.all(np.isfinite(G))):
+            raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
         md = self.models
-        Z, D = self.Z, self.D
-        wi, wc = self.speed, G[2]
-        cf = self._contacts(X, G)
-        Q = cf.load
-        na, nr = cf.normal_x, cf.normal_r                     # (Z, k) unit, arc centre -> ball
-        half = 0.5 * D - 0.5 * np.maximum(cf.approach, 0.0)   # lever to the contact centre
+        D = self.D
+        wi = self.speed
+        e2 = (...,) + (None, None)
+        wc = G[..., 2][e2]                                    # (..., 1, 1)
+        br = X[..., 1:2]                                      # (..., Z, 1)
+        # raceway arcs (loads.arc_contacts, the same geometry; Hertz constants unchecked)
+        cx = self.cx0 + self.inner_f * G[..., 0][e2]
+        cr = self.cr0 + self.inner_f * (G[..., 1][e2] * self.cpsi[:, None])
+        dx, dr = X[..., 0:1] - cx, br - cr
+        L = np.hypot(dx, dr)
+        na, nr = dx / L, dr / L                               # (..., Z, k) arc centre -> ball
+        approach = L - self.free
+        alpha = np.arctan2(na, np.abs(nr))
+        rx = self.rx_half * (1.0 - self.rx_sign * (self.D_dm * np.cos(alpha)))
+        r_red, ratio = _reduced_unchecked(rx, self.ry)
+        k_el, big_k, big_e = _hamrock_brewe_kke(ratio)
+        K = _stiffness_from(r_red, k_el, big_k, big_e, self.Ep)
+        Q = K * np.maximum(approach, 0.0) ** 1.5
+        a_ell, b_ell, p0 = _ellipse(Q, r_red, k_el, big_e, self.Ep)
+        half = 0.5 * D - 0.5 * np.maximum(approach, 0.0)    # lever to the contact centre
         pa, pr = half * na, half * nr                         # contact point - ball centre
-        br = X[:, 1:2]
-        Oa, Or, Ot = X[:, 2:3], X[:, 3:4], X[:, 4:5]
-        w_race = np.where(self.inner, wi, 0.0)[None, :]
+        Oa, Or, Ot = X[..., 2:3], X[..., 3:4], X[..., 4:5]
+        w_race = self.w_race
         # absolute velocities (a, r, t components) at the contact point
         Rr = br + pr
         # Omega x p with p = (pa, pr, 0): (Or*0 - Ot*pr, Ot*pa - Oa*0, Oa*pr - Or*pa)
         vx_b = -Ot * pr
         vr_b = Ot * pa
-        vt_b = wc * Rr + Oa * pr - Or * pa
-        vt_race = w_race * Rr
-        Va, Vr, Vt = vx_b, vr_b, vt_b - vt_race                # element minus race
-        # contact frame: e_x = (nr, -na, 0), e_y = e_t, e_z = -n
-        Vx = Va * nr - Vr * na
-        Vy = Vt
+        spin_t = Oa * pr - Or * pa
+        vt_b = wc * Rr + spin_t
+        # element minus race; contact frame: e_x = (nr, -na, 0), e_y = e_t, e_z = -n
+        Vx = vx_b * nr - vr_b * na
+        Vy = vt_b - w_race * Rr
         wa_rel = wc + Oa - w_race
         Om_x = wa_rel * nr - Or * na
         Om_y = np.broadcast_to(Ot, Q.shape)
         Om_z = -(wa_rel * na + Or * nr)
-        # Hertz ellipse
-        a_ell, b_ell, p0, rx, ry = self._hertz(Q, cf.contact_angle)
-        ue = 0.5 * ((Oa * pr - Or * pa) + (w_race - wc) * Rr)
+        ue = 0.5 * (spin_t + (w_race - wc) * Rr)
         film = None
         if md.film_thickness is not None:
-            film = md.film_thickness(np.abs(ue), Q, rx, ry)
-        tr = integrate(md.traction_law, normal_load=Q, semi_major=a_ell, semi_minor=b_ell,
-                       sliding_speed=Vy, transverse_sliding_speed=Vx, spin_speed=Om_z,
-                       roll_speed=Om_x, tilt_speed=Om_y, deformed_radius=self.rd[None, :],
-                       film_thickness=film, temperature=md.temperature, n_major=md.n_major,
-                       n_minor=md.n_minor)
+            film = md.film_thickness(np.abs(ue), Q, rx, np.broadcast_to(self.ry, Q.shape))
+            film = np.broadcast_to(np.asarray(film, dtype=float), Q.shape)
+            if not np.all(film[Q > 0] > 0):
+                raise InputError("skidding.ball film_thickness", "values <= 0 at loaded "
+                                 "contacts", "a film thickness > 0 [m]")
+        tr = _integrate_core(md.traction_law, Q, a_ell, b_ell, Vy, Vx, Om_z, Om_x, Om_y,
+                             self.curv, film, md.temperature, "point", md.n_major,
+                             md.n_minor, False)
         Fx, Fy = tr.transverse_force, tr.rolling_force
         Mx, My, Mz = tr.moment_transverse, tr.moment_rolling, tr.moment_normal
         # contact force on the ball in (a, r, t)
@@ -271,12 +322,11 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         Mt_k = pa * Fr_k - pr * Fa_k + My
         # pocket: contact point p_c = (0, 0, -s D/2), friction f = mu Q_p w_hat with
         # w = Omega x (D/2) e_t = (D/2)(Or, -Oa, 0) (ball surface velocity at +t, rel. cage)
-        Qp = X[:, 5]
+        Qp = X[..., 5]
         s = np.where(Qp >= 0.0, 1.0, -1.0)
-        wa_, wr_ = 0.5 * D * X[:, 3], -0.5 * D * X[:, 2]
+        wa_, wr_ = 0.5 * D * X[..., 3], -0.5 * D * X[..., 2]
         wn = np.hypot(wa_, wr_)
-        veps = 1e-6 * max(abs(wi) * self.Rm, 1e-3)
-        wden = np.sqrt(wn * wn + veps * veps)
+        wden = np.sqrt(wn * wn + self.veps * self.veps)
         mu_p = md.pocket_friction
         fpa = mu_p * Qp * wa_ / wden
         fpr = mu_p * Qp * wr_ / wden
@@ -284,31 +334,43 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         # p_c x f_p with p_c = (0, 0, pct), f = (fpa, fpr, 0): (-pct*fpr, pct*fpa, 0)
         Mpa, Mpr = -pct * fpr, pct * fpa
         # drag and centrifugal
-        r_drag = X[:, 1] if md.drag_radius is None else md.drag_radius
-        u_ball = (wc * (1.0 - md.oil_speed_ratio)) * r_drag
+        wc1 = G[..., 2:3]                                     # (..., 1)
+        r_drag = X[..., 1] if md.drag_radius is None else md.drag_radius
+        u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * r_drag
         Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball) * (
-            r_drag / X[:, 1])
-        Fc = self.m * wc * wc * X[:, 1]
+            r_drag / X[..., 1])
+        Fc = self.m * wc1 * wc1 * X[..., 1]
         J = self.J
-        R = np.empty((Z, N_BALL))
-        R[:, 0] = (Fa_k.sum(1) + fpa) / self.F_s
-        R[:, 1] = (Fr_k.sum(1) + fpr + Fc) / self.F_s
-        R[:, 2] = (Ft_k.sum(1) - Fd + Qp) / self.F_s
+        R = np.empty(batch + (self.Z, N_BALL))
+        R[..., 0] = (Fa_k.sum(-1) + fpa) / self.F_s
+        R[..., 1] = (Fr_k.sum(-1) + fpr + Fc) / self.F_s
+        R[..., 2] = (Ft_k.sum(-1) - Fd + Qp) / self.F_s
         # gyroscopic: required moment omega_c e_a x J Omega = J wc (0, -Ot, Or)
-        R[:, 3] = (Ma_k.sum(1) + Mpa) / self.M_s
-        R[:, 4] = (Mr_k.sum(1) + Mpr + J * wc * X[:, 4]) / self.M_s
-        R[:, 5] = (Mt_k.sum(1) - J * wc * X[:, 3]) / self.M_s
+        R[..., 3] = (Ma_k.sum(-1) + Mpa) / self.M_s
+        R[..., 4] = (Mr_k.sum(-1) + Mpr + J * wc1 * X[..., 4]) / self.M_s
+        R[..., 5] = (Mt_k.sum(-1) - J * wc1 * X[..., 3]) / self.M_s
         # global contributions: ring force (reaction of inner contacts), cage torque
-        inn = self.inner[None, :]
-        ring_a = -np.where(inn, Fa_k, 0.0).sum(1)
-        ring_r = -np.where(inn, Fr_k, 0.0).sum(1) * np.cos(self.psi)
+        Gc = np.empty(batch + (self.Z, N_GLOBAL))
+        Gc[..., 0] = -(Fa_k @ self.inner_f) / self.F_s
+        Gc[..., 1] = -(Fr_k @ self.inner_f) * self.cpsi / self.F_s
         # torque on the cage about the axis from ball j: force -(fpa, fpr, Qp) at (ba, br, pct)
-        cage = -X[:, 1] * Qp + pct * fpr
-        Gc = np.stack([ring_a / self.F_s, ring_r / self.F_s, cage / self.T_s], axis=1)
-        t_churn, t_guide, wg = self._cage_torques(wc)
-        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s, -(t_churn + t_guide) / self.T_s])
+        Gc[..., 2] = (-X[..., 1] * Qp + pct * fpr) / self.T_s
+        G0 = np.empty(batch + (N_GLOBAL,))
+        G0[..., 0] = self.Fa / self.F_s
+        G0[..., 1] = self.Fr / self.F_s
+        wcs = G[..., 2]
+        G0[..., 2] = np.reshape([-sum(self._cage_torques(float(w))[:2]) / self.T_s
+                                 for w in np.ravel(wcs)], wcs.shape)
         if not details:
             return R, Gc, G0, None
+        if batch:
+            raise InputError("skidding.ball evaluate(details=True)", X.shape,
+                             "a single state (Z, 6)")
+        t_churn, t_guide, wg = self._cage_torques(float(G[2]))
+        wc = float(G[2])
+        inn = self.inner[None, :]
+        cf = ContactField(approach, Q, na, nr, L, alpha, K)
+        ry = np.broadcast_to(self.ry, Q.shape)
         # heat and shaft torque (energy audit)
         contact_heat = tr.heat
         pocket_heat = -(fpa * (-s * wa_) + fpr * (-s * wr_))  # -f . v_rel, v_rel = -s w
@@ -329,30 +391,20 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                    pocket_sliding=wn, Fc=Fc)
         return R, Gc, G0, det
 
-    def _cage_torques(self, wc):
+    def _cage_torques(self, wc: float):
+        """(churning torque, guide torque, guide speed) at cage speed wc (memoised: the
+        Jacobian's ball columns and the line search revisit the same wc)."""
+        hit = self._torque_memo.get(wc)
+        if hit is not None:
+            return hit
         md = self.models
         t_churn = float(md.cage_torque(wc))
         wg = self.speed if md.guide_on_inner_ring else 0.0
         t_guide = 0.0 if md.cage_guide_torque is None else float(md.cage_guide_torque(wc, wg))
+        if len(self._torque_memo) > 64:
+            self._torque_memo.clear()
+        self._torque_memo[wc] = (t_churn, t_guide, wg)
         return t_churn, t_guide, wg
-
-    def _hertz(self, Q, alpha):
-        from ..hertz import point_contact
-
-        a = np.zeros_like(Q)
-        b = np.zeros_like(Q)
-        p0 = np.zeros_like(Q)
-        rx = np.empty_like(Q)
-        ry = np.empty_like(Q)
-        for ring, race in ((INNER, "inner"), (OUTER, "outer")):
-            sel = np.broadcast_to(self.arcs.ring == ring, Q.shape)
-            x, y = self.bearing.curvature(race, np.abs(alpha[sel]))
-            rx[sel], ry[sel] = x, y
-        loaded = Q > 0
-        if np.any(loaded):
-            pc = point_contact(Q[loaded], rx[loaded], ry[loaded], self.Ep, method="hamrock_brewe")
-            a[loaded], b[loaded], p0[loaded] = pc.a, pc.b, pc.max_pressure
-        return a, b, p0, rx, ry
 
     # -- full residual vector (for scipy comparisons) -------------------------------------
     def full_residual(self, y: np.ndarray, x_ref: np.ndarray, g_ref: np.ndarray) -> np.ndarray:
@@ -380,51 +432,91 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
 # ---------------------------------------------------------------------------------------------
 # Newton with block elimination
 # ---------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class JacobianBlocks:
+    """Structured Jacobian of the scaled residual in the scaled unknowns.
+
+    A (Z, 6, 6) ball blocks, B (Z, 6, 3) ball rows / global columns, C (Z, 3, 6) global
+    rows / ball columns, Dg (3, 3); with the scales it was taken at (F_s, xs, gs) so that a
+    later solve can reuse it as a chord Jacobian (:meth:`rescaled`).
+    """
+
+    A: np.ndarray
+    B: np.ndarray
+    C: np.ndarray
+    Dg: np.ndarray
+    F_s: float
+    xs: np.ndarray
+    gs: np.ndarray
+    Z: int
+
+    def rescaled(self, system: ball_residual_system) -> JacobianBlocks:
+        """The same physical Jacobian in the scaling of ``system``.
+
+        Every residual row is divided by a multiple of F_s (forces F_s, moments F_s D/2,
+        cage torque F_s d_m/2) and column c is multiplied by the unknown's scale, so
+        J_new = J_old (F_s,old / F_s,new) (scale_new / scale_old) column by column.
+        """
+        xs, gs = system.scales()
+        f = self.F_s / system.F_s
+        rx, rg = f * xs / self.xs, f * gs / self.gs
+        return JacobianBlocks(self.A * rx, self.B * rg, self.C * rx, self.Dg * rg, system.F_s,
+                              xs, gs, self.Z)
+
+
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
-                 max_step: float = 1.0, reuse_ratio: float = 0.25):
+                 max_step: float = 1.0, reuse_ratio: float = 0.25,
+                 jacobian: JacobianBlocks | None = None):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
-    The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) costs
-    N_BALL + N_GLOBAL = 9 residual evaluations whatever Z is. It is reused for the next step
+    The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) needs
+    N_BALL + N_GLOBAL = 9 perturbed states whatever Z is; they are evaluated as one batch
+    (:meth:`ball_residual_system.evaluate` on (9, Z, 6)). It is reused for the next step
     (chord / Shamanskii step) while the full step cut the residual norm below
     ``reuse_ratio`` times its previous value; a stale step that does not reduce the norm is
-    discarded and the Jacobian refreshed.
+    discarded and the Jacobian refreshed. ``jacobian``: blocks of an earlier solve (warm
+    start, rescaled to this system by :meth:`JacobianBlocks.rescaled`) used as the first
+    chord Jacobian. The last fresh Jacobian is left in ``system.last_jacobian``.
 
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """
     xs, gs = system.scales()
     Z = system.Z
     X, G = X0.copy(), G0.copy()
+    nb = N_BALL + N_GLOBAL
+    eye_x = np.zeros((N_BALL, 1, N_BALL))
+    eye_x[np.arange(N_BALL), 0, np.arange(N_BALL)] = fd_step * xs
+    eye_g = np.zeros((nb, N_GLOBAL))
+    eye_g[N_BALL + np.arange(N_GLOBAL), np.arange(N_GLOBAL)] = fd_step * gs
 
     def norm_of(R, Gc, Gk):
         return float(np.sqrt(np.sum(R * R) + np.sum((Gc.sum(0) + Gk) ** 2)))
 
-    def jacobian(X, G, R, Gc, Gk):
-        A = np.empty((Z, N_BALL, N_BALL))
-        C = np.empty((Z, N_GLOBAL, N_BALL))
-        for c in range(N_BALL):
-            Xp = X.copy()
-            Xp[:, c] += fd_step * xs[c]
-            Rp, Gcp, _, _ = system.evaluate(Xp, G)
-            A[:, :, c] = (Rp - R) / fd_step
-            C[:, :, c] = (Gcp - Gc) / fd_step
-        B = np.empty((Z, N_BALL, N_GLOBAL))
-        Dg = np.empty((N_GLOBAL, N_GLOBAL))
-        for c in range(N_GLOBAL):
-            Gp = G.copy()
-            Gp[c] += fd_step * gs[c]
-            Rp, Gcp, Gkp, _ = system.evaluate(X, Gp)
-            B[:, :, c] = (Rp - R) / fd_step
-            Dg[:, c] = ((Gcp.sum(0) + Gkp) - (Gc.sum(0) + Gk)) / fd_step
+    def jacobian_fd(X, G, R, Gc, Gk):
+        Xb = np.empty((nb, Z, N_BALL))
+        Xb[:] = X
+        Xb[:N_BALL] += eye_x
+        Gb = G + eye_g
+        Rb, Gcb, Gkb, _ = system.evaluate(Xb, Gb)
+        dR = (Rb - R) / fd_step                      # (9, Z, 6): column c in axis 0
+        A = np.moveaxis(dR[:N_BALL], 0, -1)          # (Z, 6, 6)
+        B = np.moveaxis(dR[N_BALL:], 0, -1)          # (Z, 6, 3)
+        C = np.moveaxis((Gcb[:N_BALL] - Gc) / fd_step, 0, -1)   # (Z, 3, 6)
+        Dg = (((Gcb[N_BALL:].sum(1) + Gkb[N_BALL:]) - (Gc.sum(0) + Gk)) / fd_step).T
+        blocks = JacobianBlocks(A, B, C, Dg, system.F_s, xs, gs, Z)
+        system.last_jacobian = blocks
+        return factor(blocks, R, Gc, Gk, G)
+
+    def factor(blocks, R, Gc, Gk, G):
         try:
-            Ainv = np.linalg.inv(A)
+            Ainv = np.linalg.inv(blocks.A)
         except np.linalg.LinAlgError:
             raise ConvergenceError("skidding.ball", norm_of(R, Gc, Gk), "singular ball block",
                                    {"cage_speed": G[2]}) from None
-        Ainv_B = Ainv @ B
-        S = Dg - np.einsum("zgi,zij->gj", C, Ainv_B)
-        return Ainv, Ainv_B, C, S
+        Ainv_B = Ainv @ blocks.B
+        S = blocks.Dg - np.einsum("zgi,zij->gj", blocks.C, Ainv_B)
+        return Ainv, Ainv_B, blocks.C, S
 
     def step(jac, R, Gc, Gk):
         Ainv, Ainv_B, C, S = jac
@@ -440,11 +532,18 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     nrm = norm_of(R, Gc, Gk)
     it = 0
     jac = None
+    if jacobian is not None and jacobian.Z == Z:
+        system.last_jacobian = jacobian.rescaled(system)
+        if nrm > tol:
+            try:
+                jac = factor(system.last_jacobian, R, Gc, Gk, G)
+            except ConvergenceError:
+                jac = None
     while nrm > tol and it < max_iter:
         it += 1
         stale = jac is not None
         if jac is None:
-            jac = jacobian(X, G, R, Gc, Gk)
+            jac = jacobian_fd(X, G, R, Gc, Gk)
         dX, dG = step(jac, R, Gc, Gk)
         big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
         lam = min(1.0, max_step / big) if big > 0 else 1.0
@@ -564,7 +663,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         G0[2] = guess.cage_speed_ratio * speed
         X0[:, 2:5] *= speed / guess.inner_speed
         try:
-            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
+            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter,
+                                            jacobian=guess.extra.get("jacobian"))
         except ConvergenceError:
             guess = None
     if guess is None:
@@ -583,8 +683,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         except ConvergenceError as err:
             if not continuation:
                 raise
-            X, G, nrm, iters = _continuation(bearing, models, speed, radial_load, axial_load,
-                                             n_balls, tol, max_iter, err)
+            X, G, nrm, iters, system.last_jacobian = _continuation(
+                bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter, err)
     return _result(system, X, G, nrm, iters, time.perf_counter() - t0, theoretical_reference)
 
 
@@ -599,18 +699,21 @@ def _continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol,
     loads = np.append(loads, axial_load)
     X = G = None
     total = 0
+    jac = None
     for Fa in loads:
         system = ball_residual_system(bearing, models, speed, radial_load, Fa, n_balls)
         if X is None:
             X, G, _ = race_control_guess(bearing, speed, radial_load, Fa, n_balls)
         try:
-            X, G, nrm, it = newton_block(system, X, G, tol=tol, max_iter=max_iter)
+            X, G, nrm, it = newton_block(system, X, G, tol=tol, max_iter=max_iter,
+                                         jacobian=jac)
+            jac = system.last_jacobian
         except ConvergenceError as e2:
             raise ConvergenceError("skidding.ball", e2.residual,
                                    f"continuation failed at axial load {Fa:.6g} N "
                                    f"(cold start: {err})", {**e2.state, "axial_load": Fa}) from None
         total += it
-    return X, G, nrm, total
+    return X, G, nrm, total, jac
 
 
 def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
@@ -689,7 +792,8 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
         shaft_torque=float(det["shaft_torque"]), kinematic_state=ks, unknowns=(X, G),
         extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
                "race_names": names, "residual": R,
-               "traction_law": system.models.traction_law})
+               "traction_law": system.models.traction_law,
+               "jacobian": system.last_jacobian})
 
 
 def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:

@@ -24,13 +24,12 @@ to round-off, the solver's own heat (the energy test of issue 5).
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, ValidityWarning
+from ..errors import InputError
 from .ball import BallModels
 
 __all__ = ["BallParameters", "default_ball_models", "heat_context_options"]
@@ -113,13 +112,19 @@ class IsothermalViscosity:
         self._p = np.linspace(0.0, p_max, n)
         self._ln = np.log(np.asarray(lubricant.dynamic_viscosity(self.temperature, self._p),
                                      float))
+        self._slope = np.append(np.diff(self._ln), 0.0)   # per grid step
+        self._inv_dp = (n - 1) / p_max
         self.p_max = p_max
 
     def dynamic_viscosity(self, T, p=0.0):
         T = np.asarray(T, float)
         p = np.asarray(p, float)
-        if np.all(T == self.temperature) and np.all(p <= self.p_max):
-            return np.exp(np.interp(p, self._p, self._ln))
+        if np.all(T == self.temperature) and np.all(p <= self.p_max) and np.all(p >= 0.0):
+            # linear interpolation on the uniform grid (what np.interp does, without its
+            # bisection search)
+            u = p * self._inv_dp
+            i = np.minimum(u.astype(np.intp), self._ln.size - 1)
+            return np.exp(self._ln[i] + (u - i) * self._slope[i])
         return self.lubricant.dynamic_viscosity(T, p)
 
     def __getattr__(self, name):
@@ -151,7 +156,8 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     params : BallParameters (default values when None).
     oil_temperature : oil temperature for churning [K] (default ``temperature``).
     """
-    from ..film import hamrock_dowson_1977_central
+    from ..errors import check_positive
+    from ..film import _hd1977_central_unchecked
     from ..heat_sources import churning as ch
 
     p = params or BallParameters()
@@ -166,11 +172,15 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     rho_e = x * rho
     law = make_traction(lubricant, p, temperature)
 
+    check_positive("lubricant dynamic_viscosity", eta_c)
+    check_positive("lubricant pressure_viscosity_coefficient", alpha_c, allow_zero=True)
+    check_positive("bearing effective_modulus", E)
+
     def film(u, Q, rx, ry):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ValidityWarning)
-            h = hamrock_dowson_1977_central(np.maximum(u, 1e-3), eta_c, alpha_c,
-                                            np.maximum(Q, 1e-3), rx, ry, effective_modulus=E)
+        # film.hamrock_dowson_1977_central without its per-call checks and range warnings
+        # (inputs validated above and by the solver; the range is not checked in the loop)
+        h = _hd1977_central_unchecked(np.maximum(u, 1e-3), eta_c, alpha_c,
+                                      np.maximum(Q, 1e-3), rx, ry, E)
         return np.maximum(h, 1e-9)
 
     D = bearing.ball_diameter
