@@ -19,9 +19,23 @@ rms): mu = mu_boundary for Lambda <= 1, mu_hydrodynamic for Lambda >= 3, linear 
 mu_hydrodynamic = 0.01, no film given -> boundary. Heat split: paper 002 lists Q_bp in
 both the ball (eq. 22) and the oil/cage (eq. 25) balances, which would count it twice; we
 send ``element_share`` (default 0.5) to the elements and the rest to the cage.
+
+Steady-state identity (derived here from paper 002 eqs. 8 and 19): in a steady state the
+cage torque balance (eq. 8) makes the pocket forces carry exactly the cage's drag torque,
+sum_j F_bp,j D_m/2 = M_drag (cage-guide land + cage churning), so when every pocket pushes
+the same way
+
+    Q_bp = mu * omega_r D_b / (omega_c D_m) * P_drag,   P_drag = M_drag omega_c,
+
+about mu (1 + gamma) P_drag at pure rolling (omega_r / omega_c = (D_m / D_b)(1 + gamma)).
+Pocket forces that alternate in sign around the bearing (balls with different free orbital
+speeds) add to Q_bp without adding to P_drag; :func:`pocket_circulation` measures that.
+:func:`steady_pocket_drag_ratio` gives the factor; the ``details`` of the source carry both.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -38,6 +52,37 @@ def pocket_friction_coefficient(film_parameter, mu_boundary=0.1, mu_hydrodynamic
     lam = np.asarray(film_parameter, float)
     w = np.clip((lam - 1.0) / 2.0, 0.0, 1.0)
     return mu_boundary + w * (mu_hydrodynamic - mu_boundary)
+
+
+def steady_pocket_drag_ratio(friction_coefficient, spin_speed, element_diameter, cage_speed,
+                             pitch_diameter):
+    """Pocket heat per watt of cage drag when all pockets push one way [-] (module docstring).
+
+    k = mu |omega_r| D_b / (|omega_c| D_m): friction_coefficient mu [-], spin_speed omega_r
+    [rad/s] (element spin relative to the cage), element_diameter D_b [m], cage_speed
+    omega_c [rad/s] (> 0 in magnitude), pitch_diameter D_m [m]. Derived from paper 002
+    eqs. 8 and 19 (steady cage torque balance); vectorised over the spin speed.
+    """
+    wc = abs(float(cage_speed))
+    if wc == 0.0:
+        raise InputError("cage_speed", cage_speed, "a non-zero cage speed")
+    check_range("friction_coefficient", friction_coefficient, 0.0, 1.0)
+    return (float(friction_coefficient) * np.abs(np.asarray(spin_speed, float))
+            * float(element_diameter) / (wc * float(pitch_diameter)))
+
+
+def pocket_circulation(normal_force) -> float:
+    """sum_j |F_j| / |sum_j F_j| [-] of signed pocket normal forces (>= 1; inf if they cancel).
+
+    1 when every pocket pushes the cage the same way (the pocket forces then carry only the
+    cage's drag torque); larger when balls push and brake the cage at the same time.
+    """
+    f = np.asarray(normal_force, float)
+    net = abs(float(np.sum(f)))
+    total = float(np.sum(np.abs(f)))
+    if total == 0.0:
+        return 1.0
+    return total / net if net > 0.0 else math.inf
 
 
 def pocket_heat(normal_force, friction_coefficient, sliding_speed):
@@ -94,4 +139,9 @@ def pocket_friction(ctx: HeatContext) -> HeatResult:
         components={comp: q}, loss_class={comp: "load_independent"},
         forces={"pocket_friction_force": friction},
         force_pairs=(ForcePair("pocket on element surface", -friction * np.sign(v), v),),
-        details={"friction_coefficient": mu, "regime": regime})
+        details={"friction_coefficient": mu, "regime": regime,
+                 "normal_force_sum": float(np.sum(np.abs(force))),
+                 "mean_sliding_speed": float(np.mean(np.abs(v))),
+                 "sliding_over_cage_speed": (float(np.mean(np.abs(v))) / abs(
+                     0.5 * ctx.bearing.pitch_diameter * kin.cage_speed)
+                     if kin.cage_speed != 0 else math.inf)})

@@ -60,3 +60,47 @@ def test_roller_pocket(vg46):
     r = pocket.pocket_friction(ctx)
     assert r.components == {"roller pocket": pytest.approx(
         z * 0.05 * 20.0 * 1000.0 * nu214.roller_diameter / 2)}
+
+
+def test_steady_ratio_pure_rolling():
+    # pure rolling (outer ring fixed): omega_r = omega_i (D_m / 2D)(1 - gamma^2),
+    # omega_c = omega_i (1 - gamma)/2, so k = mu omega_r D / (omega_c D_m) = mu (1 + gamma)
+    d, dm, mu, wi = 0.034925, 0.28, 0.3, 188.5
+    gamma = d / dm
+    wr = wi * dm / (2 * d) * (1 - gamma**2)
+    wc = wi * (1 - gamma) / 2
+    assert pocket.steady_pocket_drag_ratio(mu, wr, d, wc, dm) == pytest.approx(
+        mu * (1 + gamma), rel=1e-12)
+    # QJ1044 at the over-skidding peak (validation case paper002_loss_ratios SOURCE.md):
+    # mu 0.3, |omega_r| 911 rad/s, omega_c 92.7 rad/s -> 0.3 * 911 * 0.034925 / (92.7 * 0.28)
+    assert pocket.steady_pocket_drag_ratio(0.3, -911.0, d, 92.7, dm) == pytest.approx(
+        0.3 * 911 * 0.034925 / (92.7 * 0.28), rel=1e-12)
+    with pytest.raises(InputError, match="cage_speed"):
+        pocket.steady_pocket_drag_ratio(0.3, 911.0, d, 0.0, dm)
+
+
+def test_steady_identity_with_eq19(qj1044, vg46, race_control_state):
+    # all pockets push one way: the cage drag power they carry is sum F (D_m/2) omega_c and
+    # eq. 19's heat is k times that (k from steady_pocket_drag_ratio)
+    op, _ = race_control_state
+    z = qj1044.n_elements
+    ks = uniform_state(z, spin=-900.0, pocket_force=2.0)
+    ctx = make_context(qj1044, vg46, op, ks, options={"pocket_friction": {
+        "friction_coefficient": 0.3}})
+    r = pocket.pocket_friction(ctx)
+    wc = ks.cage_speed
+    drag_power = z * 2.0 * 0.5 * qj1044.pitch_diameter * abs(wc)
+    k = pocket.steady_pocket_drag_ratio(0.3, 900.0, qj1044.ball_diameter, wc,
+                                        qj1044.pitch_diameter)
+    assert r.total == pytest.approx(k * drag_power, rel=1e-12)
+    assert r.details["normal_force_sum"] == pytest.approx(2.0 * z)
+    assert r.details["sliding_over_cage_speed"] == pytest.approx(
+        900.0 * 0.5 * qj1044.ball_diameter / (0.5 * qj1044.pitch_diameter * abs(wc)))
+
+
+def test_circulation():
+    assert pocket.pocket_circulation([-2.0, -2.0, -2.0]) == pytest.approx(1.0)
+    # 8 kN point of the QJ1044 (SOURCE.md): some balls brake the cage, others push it
+    assert pocket.pocket_circulation([3.0, -1.0, -1.0, -1.0, -1.0, -1.0]) == pytest.approx(4.0)
+    assert pocket.pocket_circulation([1.0, -1.0]) == float("inf")
+    assert pocket.pocket_circulation([0.0, 0.0]) == 1.0

@@ -1,0 +1,175 @@
+"""Hand check of the loss shares at the over-skidding peak (evidence for SOURCE.md).
+
+Run from the checkout: ``python validation/cases/paper002_loss_ratios/diagnose.py``
+(``--load 4`` kN is the peak step of the validation run, ``--sensitivity`` adds the
+cage-land / pocket-friction sweep). Not a test: it prints the numbers quoted in SOURCE.md.
+
+Same inputs as the case's runner at its peak step (default scene, one QJ1044, calibrated
+ball parameters and clearance of configs/bearings/QJ1044.calibration.toml, ISO VG 46 at the
+35 degC inlet temperature everywhere, 1800 r/min, 33 L/min, 1 kN radial load): the direct
+solve reproduces the runner's per-source losses to the watt.
+
+Prints
+1. the magnitudes by hand: pocket normal forces, sliding speed at the pocket, the land
+   film shear (Petroff) of the cage guide;
+2. the steady-state identity of the cage torque balance (paper 002 eqs. 8 and 19):
+   Q_bp = k * circulation * (Q_cg + Q_ch,c), k = mu_p omega_r D_b / (omega_c D_m);
+3. the shares as this model books them (every watt = a force times a sliding speed) and as
+   paper 002 books them (ball churning by its eq. 16 in SI instead of the eq. 10 drag power,
+   cage guide by its eq. 18, mu_c |F_cg| D_m (omega_g - omega_c) / 2, with the land carrying
+   the cage weight), and the energy each bookkeeping leaves out.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import math
+
+import numpy as np
+
+RPM = math.pi / 30.0
+G = 9.80665
+
+
+def _setup():
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.qj1044 import load_calibration, with_clearance
+    from thermobearing.state import OilSupply
+
+    cal = load_calibration()
+    bearing = with_clearance(load_bearing("QJ1044"), cal["diametral_clearance"])
+    lub = load_lubricant("ISO_VG46")
+    t_in = 308.15
+    supply = OilSupply("jet", 33.0 / 6e4, t_in)
+    return bearing, lub, supply, cal["params"], t_in
+
+
+def _solve(bearing, lub, supply, params, t, fa, speed=1800 * RPM):
+    from thermobearing.skidding import solve
+
+    return solve(bearing, lub, speed, 1000.0, fa, t, supply=supply, params=params,
+                 oil_temperature=t)
+
+
+def _sources(bearing, lub, supply, params, t, res, fa, overrides=None):
+    from thermobearing.heat_sources import HeatContext, evaluate
+    from thermobearing.simulation import BALL_SOURCES
+    from thermobearing.skidding.ball_models import heat_context_options
+    from thermobearing.state import OperatingPoint
+
+    op = OperatingPoint(inner_speed=res.inner_speed, radial_load=1000.0, axial_load=fa)
+    opts = heat_context_options(bearing, supply, res.inner_speed, params)
+    for k, v in (overrides or {}).items():
+        opts[k] = {**opts.get(k, {}), **v}
+    ctx = HeatContext.isothermal(t, bearing=bearing, lubricant=lub, supply=supply,
+                                 operating=op, kinematics=res.kinematic_state, options=opts,
+                                 traction=res.extra["traction_law"])
+    return {r.source: r for r in evaluate(BALL_SOURCES, ctx)}
+
+
+def _shares(heat: dict[str, float]) -> str:
+    tot = sum(heat.values())
+    churn = heat["churning_elements"] + heat["churning_cage"] + heat["churning_inner_ring"]
+    pocket, guide = heat["pocket_friction"], heat["cage_guide"]
+    rows = [f"    {k:22s} {v:8.1f} W  {v / tot:6.3f}" for k, v in heat.items()]
+    rows.append(f"    {'total':22s} {tot:8.1f} W")
+    rows.append(f"    pocket share {pocket / tot:.3f} (asked 0.20-0.40), churning share "
+                f"{churn / tot:.3f} (0.55-0.85), cage guide / pocket {guide / pocket:.2f} "
+                "(0.1-0.4)")
+    return "\n".join(rows)
+
+
+def main(argv=None) -> int:
+    from thermobearing.heat_sources.pocket import pocket_circulation, steady_pocket_drag_ratio
+
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--load", type=float, default=4.0, help="axial load [kN] (peak step: 4)")
+    ap.add_argument("--mu-c", type=float, default=0.1,
+                    help="paper 002 eq. 18 hydrodynamic friction coefficient (not given)")
+    ap.add_argument("--sensitivity", action="store_true")
+    a = ap.parse_args(argv)
+    bearing, lub, supply, params, t = _setup()
+    res = _solve(bearing, lub, supply, params, t, a.load * 1e3)
+    wc, wi = res.cage_speed, res.inner_speed
+    eta = float(lub.dynamic_viscosity(t))
+    print(f"QJ1044, 1800 r/min, 33 L/min, Fr 1 kN, Fa {a.load:g} kN, oil {t - 273.15:.0f} degC "
+          f"(eta {eta:.4f} Pa s); CSR {res.cage_speed_ratio:.4f}, over-skid "
+          f"{100 * res.over_skid:.2f} %")
+    src = _sources(bearing, lub, supply, params, t, res, a.load * 1e3)
+    heat = {k: r.total for k, r in src.items()}
+    print("1. magnitudes by hand")
+    qp = res.pocket_force
+    rp = res.ball_r
+    print(f"  pocket normal force per ball {np.min(qp):.2f} .. {np.max(qp):.2f} N, sum |F| "
+          f"{np.abs(qp).sum():.1f} N; cage torque they carry sum F r = "
+          f"{-np.sum(qp * rp):.3f} N m")
+    t_guide = heat["cage_guide"] / wc
+    t_churn = heat["churning_cage"] / wc
+    print(f"  cage drag torque: land {t_guide:.3f} N m + churning {t_churn:.3f} N m = "
+          f"{t_guide + t_churn:.3f} N m")
+    v = res.kinematic_state.pocket_sliding_speed
+    d, dm = bearing.ball_diameter, bearing.pitch_diameter
+    print(f"  ball spin rel. cage {np.mean(res.spin_speed):.0f} rad/s -> surface speed "
+          f"omega_r D/2 = {np.mean(res.spin_speed) * d / 2:.2f} m/s (solver: {np.mean(v):.2f} "
+          f"m/s); cage pitch speed omega_c D_m/2 = {wc * dm / 2:.2f} m/s")
+    mu_p = params.pocket_friction
+    print(f"  pocket heat mu F v = {mu_p:.3f} x {np.abs(qp).sum():.1f} N x {np.mean(v):.2f} m/s"
+          f" = {mu_p * np.sum(np.abs(qp) * v):.1f} W (source: {heat['pocket_friction']:.1f} W)")
+    cage = bearing.cage
+    c = 0.5 * cage.guide_clearance
+    dv = wc * cage.guide_land_diameter / 2
+    tau = eta * dv / c
+    area = math.pi * cage.guide_land_diameter * cage.land_width
+    print(f"  land film: c = {c * 1e3:.2f} mm radial, B = {cage.land_width * 1e3:.0f} mm, "
+          f"D_g = {cage.guide_land_diameter * 1e3:.0f} mm: tau = eta dv/c = {tau:.0f} Pa, "
+          f"force {tau * area:.1f} N, power {tau * area * dv:.1f} W "
+          f"(source: {heat['cage_guide']:.1f} W)")
+    print("2. steady-state identity (cage torque balance, paper 002 eqs. 8 and 19)")
+    k = float(np.mean(steady_pocket_drag_ratio(mu_p, res.spin_speed, d, wc, dm)))
+    circ = pocket_circulation(qp)
+    pred = k * circ * (heat["cage_guide"] + heat["churning_cage"]) * np.mean(rp) / (dm / 2)
+    print(f"  k = mu_p omega_r D_b/(omega_c D_m) = {k:.3f} (mu_p (1+gamma) = "
+          f"{mu_p * (1 + d * math.cos(bearing.contact_angle) / dm):.3f} at pure rolling); "
+          f"circulation sum|F|/|sum F| = {circ:.3f}")
+    print(f"  Q_bp = k circ (Q_cg + Q_ch,c) = {pred:.1f} W (computed "
+          f"{heat['pocket_friction']:.1f} W)")
+    kk = k * circ
+    print(f"  so guide/pocket >= 1/(k circ) - Q_ch,c/Q_cg; pocket share >= 0.2 with guide/pocket"
+          f" <= 0.4 needs Q_ch,c >= {0.2 * (1 - 0.4 * kk) / kk:.2f} of the total (model: "
+          f"{heat['churning_cage'] / sum(heat.values()):.3f})")
+    print("3a. shares as this model books them (energy-consistent)")
+    print(_shares(heat))
+    print(f"    solver shaft power minus booked heat: "
+          f"{res.shaft_torque * wi - sum(heat.values()):+.2f} W")
+    m_cage = cage.effective_mass(d, bearing.n_balls)
+    paper = _sources(bearing, lub, supply, params, t, res, a.load * 1e3, overrides={
+        "churning_elements": {"form": "paper002"},
+        "cage_guide": {"form": "paper002_eq18", "friction_coefficient": a.mu_c,
+                       "load": m_cage * G}})
+    pheat = {k: r.total for k, r in paper.items()}
+    print(f"3b. shares as paper 002 books them (eq. 16 SI for the balls, eq. 18 with mu_c "
+          f"{a.mu_c:g} and the land carrying the cage weight {m_cage * G:.1f} N)")
+    print(_shares(pheat))
+    print(f"    dissipated (shaft power) but not booked: "
+          f"{res.shaft_torque * wi - sum(pheat.values()):.1f} W of {res.shaft_torque * wi:.1f} W")
+    if a.sensitivity:
+        print("4. sensitivity at this load (solver re-run): land clearance, land width, mu_p")
+        for cl, lw, mu in [(0.6, 10, None), (0.3, 10, None), (1.2, 10, None), (2.4, 10, None),
+                           (0.6, 5, None), (0.6, 20, None), (0.6, 10, 0.1)]:
+            cg = dataclasses.replace(cage, guide_clearance=cl * 1e-3, land_width=lw * 1e-3,
+                                     outer_diameter=cage.guide_land_diameter - cl * 1e-3)
+            b2 = dataclasses.replace(bearing, cage=cg)
+            p2 = params if mu is None else params.with_(pocket_friction=mu)
+            r2 = _solve(b2, lub, supply, p2, t, a.load * 1e3)
+            h = r2.heat
+            print(f"  guide clearance {cl:3.1f} mm, land {lw:2d} mm, mu_p {p2.pocket_friction:.2f}"
+                  f": over-skid {100 * r2.over_skid:5.2f} %, pocket share "
+                  f"{h['ball_pocket'] / h['total']:.3f}, guide/pocket "
+                  f"{h['cage_guide'] / h['ball_pocket']:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
