@@ -17,17 +17,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("cases", nargs="*", help="case ids (default: all)")
     parser.add_argument("--json", action="store_true", help="print JSON records instead")
     parser.add_argument("--list", action="store_true", help="list the case ids and exit")
+    parser.add_argument("--jobs", "-j", type=int, default=1,
+                        help="run the cases in this many processes (default 1)")
+    parser.add_argument("--quiet", action="store_true",
+                        help="no progress lines on stderr")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.list:
         print("\n".join(validation.case_ids()))
         return 0
+    def progress(line: str) -> None:
+        print(line, file=sys.stderr, flush=True)
+
+    kwargs = {"jobs": args.jobs, "progress": None if args.quiet else progress}
     if args.json:  # anything a model prints goes to stderr: stdout is the JSON document
         with contextlib.redirect_stdout(sys.stderr):
-            records = validation.run_cases(args.cases or None)
+            records = validation.run_cases(args.cases or None, **kwargs)
     else:
-        records = validation.run_cases(args.cases or None)
+        records = validation.run_cases(args.cases or None, **kwargs)
     if args.json:
         print(json.dumps(validation.records_as_dicts(records), indent=1))
     else:

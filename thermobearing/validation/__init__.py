@@ -25,11 +25,14 @@ from __future__ import annotations
 import csv
 import importlib
 import math
+import multiprocessing
 import os
 import pkgutil
+import time
 import tomllib
 import traceback
 from collections.abc import Callable, Iterable
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
@@ -214,14 +217,48 @@ def run_case(case_id: str, folder: Path | None = None) -> list[Record]:
     return records
 
 
-def run_cases(ids: Iterable[str] | None = None, folder: Path | None = None) -> list[Record]:
-    """Run the given cases (all when ``ids`` is None)."""
+def _timed_case(case_id: str, folder: Path) -> tuple[list[Record], float]:
+    t0 = time.perf_counter()
+    records = run_case(case_id, folder)
+    return records, time.perf_counter() - t0
+
+
+def run_cases(ids: Iterable[str] | None = None, folder: Path | None = None, *,
+              jobs: int = 1, progress: Callable[[str], None] | None = None) -> list[Record]:
+    """Run the given cases (all when ``ids`` is None), in the order given.
+
+    ``jobs`` > 1 runs the cases in that many worker processes (the paper 002 protocols
+    take minutes each); ``progress`` receives one line per finished case (its verdict and
+    wall time) as soon as it finishes.
+    """
     folder = folder or cases_dir()
     chosen = list(ids) if ids else case_ids(folder)
-    out: list[Record] = []
-    for cid in chosen:
-        out.extend(run_case(cid, folder))
-    return out
+    for cid in chosen:  # unknown ids fail before any work starts
+        if not (folder / cid / "case.toml").is_file():
+            raise UnknownNameError("validation case", cid, case_ids(folder))
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise InputError("jobs", jobs, "an integer >= 1")
+
+    def report(cid: str, records: list[Record], wall: float) -> None:
+        if progress is not None:
+            failed = sum(r.gated and not r.passed for r in records)
+            verdict = f"{failed} gated check(s) FAIL" if failed else "ok"
+            progress(f"[{cid}] {verdict} ({wall:.1f} s)")
+
+    results: dict[str, list[Record]] = {}
+    if jobs == 1 or len(chosen) <= 1:
+        for cid in chosen:
+            results[cid], wall = _timed_case(cid, folder)
+            report(cid, results[cid], wall)
+    else:
+        ctx = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=min(jobs, len(chosen)), mp_context=ctx) as pool:
+            futures = {pool.submit(_timed_case, cid, folder): cid for cid in chosen}
+            for fut in as_completed(futures):
+                cid = futures[fut]
+                results[cid], wall = fut.result()
+                report(cid, results[cid], wall)
+    return [r for cid in chosen for r in results[cid]]
 
 
 def format_table(records: list[Record]) -> str:
