@@ -19,6 +19,7 @@ Functions
 :func:`loss_totals`     per point: load-dependent, load-independent, total [W]
 :func:`by_source`       per point and source: power and share of the total
 :func:`role_map`        role -> node names of a thermal network
+:func:`paper002_bookkeeping`  the same state booked as paper 002 books it (diagnostic)
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ from typing import Any
 
 import pandas as pd
 
-from .errors import InputError
+from .errors import InputError, check_range
 from .heat_sources import HeatContext, HeatResult, evaluate
 
 COLUMNS = ("point", "source", "component", "role", "node", "loss class", "power [W]")
@@ -104,3 +105,54 @@ def by_source(breakdown: pd.DataFrame) -> pd.DataFrame:
     totals = g.groupby("point")["power [W]"].transform("sum")
     g["share [-]"] = g["power [W]"] / totals.where(totals > 0, 1.0)
     return g
+
+
+#: scalar gravity for the cage weight of :func:`paper002_bookkeeping` [m/s^2]
+STANDARD_GRAVITY = 9.80665
+
+
+def paper002_bookkeeping(ctx: HeatContext, *, guide_friction: float,
+                         guide_load: float | None = None,
+                         sources: Iterable[str] = ("raceway_traction", "churning_elements",
+                                                   "churning_cage", "churning_inner_ring",
+                                                   "cage_guide", "pocket_friction"),
+                         ) -> dict[str, float]:
+    """Heat per source [W] of one state booked the way seed paper 002 books it (diagnostic).
+
+    Paper 002 (002_0add79adaca5495c.txt) books two losses with formulas that are not the
+    power of the forces its dynamics uses:
+
+    - ball churning by eq. 16 (in SI, ``churning_elements`` form ``"paper002"``), which is
+      mu_v / 4 times the power of the eq. 10 drag that enters the ball balance (eq. 9);
+    - the cage guide by eq. 18, Q_cg = mu_c |F_cg| D_m (omega_g - omega_c) / 2
+      (``cage_guide`` form ``"paper002_eq18"``), a hydrodynamic friction coefficient times the
+      film force, while its cage balance (eq. 8) uses the viscous drag torque of eq. 5.
+
+    Every other source is evaluated as in ``ctx``. The result is NOT energy-consistent (the
+    difference to the shaft power is dissipated but not booked); it exists to show how the
+    paper's loss shares follow from its bookkeeping (validation case paper002_loss_ratios).
+
+    Parameters
+    ----------
+    ctx : the heat context of the state (kinematics from the skidding solver).
+    guide_friction : mu_c of eq. 18 [-] (not given by the paper), in [0, 1].
+    guide_load : load the land film carries [N]; default the cage weight m_c g (cage mass
+        from ``CageGeometry.effective_mass``).
+    sources : the sources to evaluate (paper 002 eq. 20's six by default).
+    """
+    from dataclasses import replace
+
+    from .heat_sources import evaluate
+
+    check_range("guide_friction", guide_friction, 0.0, 1.0)
+    b = ctx.bearing
+    if guide_load is None:
+        length = getattr(b, "roller_length", None)
+        guide_load = STANDARD_GRAVITY * b.cage.effective_mass(b.element_diameter, b.n_elements,
+                                                              length)
+    opts = {k: dict(v) for k, v in ctx.options.items()}
+    opts["churning_elements"] = {**opts.get("churning_elements", {}), "form": "paper002"}
+    opts["cage_guide"] = {**opts.get("cage_guide", {}), "form": "paper002_eq18",
+                          "friction_coefficient": float(guide_friction),
+                          "load": float(guide_load)}
+    return {r.source: r.total for r in evaluate(sources, replace(ctx, options=opts))}

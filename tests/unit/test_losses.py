@@ -65,3 +65,53 @@ def test_role_map_from_a_network():
     assert m == FOUR_NODE
     df = loss_breakdown(_results(), role_to_node=m)
     assert set(df.node) == {"housing", "shaft", "balls", "oil"}
+
+
+def test_paper002_bookkeeping_by_hand():
+    # a QJ1044 state with the cage at 80 rad/s (outer-ring land fixed), 2 N per pocket:
+    # eq. 18 books mu_c |F| D_m omega_c / 2 with |F| = the cage weight the land film carries,
+    # eq. 16 books mu_v / 4 of the eq. 10 drag power (churning.py module docstring)
+    import math
+
+    import numpy as np
+
+    from thermobearing.geometry import load_bearing
+    from thermobearing.heat_sources import HeatContext, evaluate
+    from thermobearing.losses import STANDARD_GRAVITY, paper002_bookkeeping
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.state import KinematicState, OilSupply, OperatingPoint
+
+    b = load_bearing("QJ1044")
+    z = b.n_elements
+    ks = KinematicState(inner_speed=188.5, outer_speed=0.0, cage_speed=80.0,
+                        orbital_speed=np.full(z, 80.0), element_spin=-900.0, contacts=(),
+                        pocket_normal_force=2.0)
+    opts = {"churning_elements": {"form": "harris", "oil_fraction": 0.1},
+            "churning_cage": {"oil_fraction": 0.1}, "churning_inner_ring": {"oil_fraction": 0.1},
+            "pocket_friction": {"friction_coefficient": 0.3}}
+    ctx = HeatContext.isothermal(
+        318.15, bearing=b, lubricant=load_lubricant("ISO_VG46"),
+        supply=OilSupply("jet", 33.0 / 6e4, 308.15),
+        operating=OperatingPoint(inner_speed=188.5, radial_load=1000.0, axial_load=4000.0),
+        kinematics=ks, options=opts)
+    names = ("churning_elements", "churning_cage", "churning_inner_ring", "cage_guide",
+             "pocket_friction")
+    own = {r.source: r for r in evaluate(names, ctx)}
+    booked = paper002_bookkeeping(ctx, guide_friction=0.1, sources=names)
+    weight = STANDARD_GRAVITY * b.cage.effective_mass(b.ball_diameter, z)
+    assert booked["cage_guide"] == pytest.approx(0.1 * weight * b.pitch_diameter * 80.0 / 2,
+                                                 rel=1e-6)
+    # the energy-consistent land loss is the Petroff drag power, an order of magnitude more
+    assert own["cage_guide"].total > 5 * booked["cage_guide"]
+    paper_elem = evaluate(["churning_elements"], HeatContext.isothermal(
+        318.15, bearing=b, lubricant=ctx.lubricant, supply=ctx.supply, operating=ctx.operating,
+        kinematics=ks, options={**opts, "churning_elements": {"form": "paper002",
+                                                               "oil_fraction": 0.1}}))[0]
+    mu_v = paper_elem.details["mu_v"]
+    assert booked["churning_elements"] == pytest.approx(
+        own["churning_elements"].total * mu_v / 4, rel=1e-9)
+    for name in ("churning_cage", "churning_inner_ring", "pocket_friction"):
+        assert booked[name] == pytest.approx(own[name].total, rel=1e-12)
+    assert math.isfinite(sum(booked.values()))
+    with pytest.raises(InputError, match="guide_friction"):
+        paper002_bookkeeping(ctx, guide_friction=1.5, sources=names)

@@ -53,20 +53,16 @@ def _solve(bearing, lub, supply, params, t, fa, speed=1800 * RPM):
                  oil_temperature=t)
 
 
-def _sources(bearing, lub, supply, params, t, res, fa, overrides=None):
-    from thermobearing.heat_sources import HeatContext, evaluate
-    from thermobearing.simulation import BALL_SOURCES
+def _context(bearing, lub, supply, params, t, res, fa):
+    from thermobearing.heat_sources import HeatContext
     from thermobearing.skidding.ball_models import heat_context_options
     from thermobearing.state import OperatingPoint
 
     op = OperatingPoint(inner_speed=res.inner_speed, radial_load=1000.0, axial_load=fa)
     opts = heat_context_options(bearing, supply, res.inner_speed, params)
-    for k, v in (overrides or {}).items():
-        opts[k] = {**opts.get(k, {}), **v}
-    ctx = HeatContext.isothermal(t, bearing=bearing, lubricant=lub, supply=supply,
-                                 operating=op, kinematics=res.kinematic_state, options=opts,
-                                 traction=res.extra["traction_law"])
-    return {r.source: r for r in evaluate(BALL_SOURCES, ctx)}
+    return HeatContext.isothermal(t, bearing=bearing, lubricant=lub, supply=supply,
+                                  operating=op, kinematics=res.kinematic_state, options=opts,
+                                  traction=res.extra["traction_law"])
 
 
 def _shares(heat: dict[str, float]) -> str:
@@ -97,8 +93,12 @@ def main(argv=None) -> int:
     print(f"QJ1044, 1800 r/min, 33 L/min, Fr 1 kN, Fa {a.load:g} kN, oil {t - 273.15:.0f} degC "
           f"(eta {eta:.4f} Pa s); CSR {res.cage_speed_ratio:.4f}, over-skid "
           f"{100 * res.over_skid:.2f} %")
-    src = _sources(bearing, lub, supply, params, t, res, a.load * 1e3)
-    heat = {k: r.total for k, r in src.items()}
+    from thermobearing.heat_sources import evaluate
+    from thermobearing.losses import paper002_bookkeeping
+    from thermobearing.simulation import BALL_SOURCES
+
+    ctx = _context(bearing, lub, supply, params, t, res, a.load * 1e3)
+    heat = {r.source: r.total for r in evaluate(BALL_SOURCES, ctx)}
     print("1. magnitudes by hand")
     qp = res.pocket_force
     rp = res.ball_r
@@ -144,11 +144,7 @@ def main(argv=None) -> int:
     print(f"    solver shaft power minus booked heat: "
           f"{res.shaft_torque * wi - sum(heat.values()):+.2f} W")
     m_cage = cage.effective_mass(d, bearing.n_balls)
-    paper = _sources(bearing, lub, supply, params, t, res, a.load * 1e3, overrides={
-        "churning_elements": {"form": "paper002"},
-        "cage_guide": {"form": "paper002_eq18", "friction_coefficient": a.mu_c,
-                       "load": m_cage * G}})
-    pheat = {k: r.total for k, r in paper.items()}
+    pheat = paper002_bookkeeping(ctx, guide_friction=a.mu_c, guide_load=m_cage * G)
     print(f"3b. shares as paper 002 books them (eq. 16 SI for the balls, eq. 18 with mu_c "
           f"{a.mu_c:g} and the land carrying the cage weight {m_cage * G:.1f} N)")
     print(_shares(pheat))
