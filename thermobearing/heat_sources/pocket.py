@@ -39,7 +39,7 @@ import math
 
 import numpy as np
 
-from ..errors import InputError, check_range
+from ..errors import InputError, check_positive, check_range
 from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
 
 
@@ -83,6 +83,79 @@ def pocket_circulation(normal_force) -> float:
     if total == 0.0:
         return 1.0
     return total / net if net > 0.0 else math.inf
+
+
+def pocket_shear_damping(viscosity, ball_diameter, radial_clearance, section_inner,
+                         section_outer, n_axial=400, n_around=96) -> np.ndarray:
+    """Couette damping matrix C of a ball spinning in a flooded cylindrical pocket [N m s].
+
+    Not in paper 002 (its eq. 19 has only the Coulomb friction of the pocket force): the
+    oil in the pocket clearance is sheared by the ball surface even without a normal
+    force. Frame of the ball solver: a = bearing axis, r = radial (the pocket bore's
+    axis), t = orbital direction. The pocket wall is the cylinder of radius R + c about
+    e_r over the cage section x_r in [section_inner, section_outer] (measured from the
+    ball centre, m; e.g. cage bore radius minus ball-centre radius and cage outer radius
+    minus ball-centre radius). Under the wall point (R_p cos phi, x_r, R_p sin phi) the ball
+    surface point is p = (rho cos phi, x_r, rho sin phi), rho = sqrt(R^2 - x_r^2), gap
+    h = R + c - rho. With the ball spin Omega relative to the cage, the surface velocity is
+    v = Omega x p, its part tangential to the wall v_t = (I - n n^T) v (n = (cos phi, 0,
+    sin phi)), the Couette stress on the ball tau = -eta v_t / h, and the moment about the
+    centre
+
+        M = int p x tau dA = -C Omega,   C = int (eta / h) S^T (I - n n^T) S dA,
+
+    S = skew(p), dA = R_p dphi dx_r; power Omega^T C Omega >= 0 (derived here; Petroff-type
+    estimate: pressure flow and cavitation neglected, pocket fully flooded -- scale
+    ``viscosity`` for an oil-air mixture). Gauss-Legendre quadrature in x_r (``n_axial``
+    nodes, clustered by x = sqrt(2 R c) sinh(s)) and the trapezoid rule in phi
+    (``n_around``).
+
+    Parameters
+    ----------
+    viscosity : dynamic viscosity of the oil in the pocket [Pa s].
+    ball_diameter : D [m]. radial_clearance : c [m] (half the diametral pocket clearance).
+    section_inner, section_outer : the cage section relative to the ball centre [m]
+        (section_inner < section_outer; clipped to the ball, |x_r| < R).
+
+    Returns
+    -------
+    (3, 3) symmetric positive semi-definite matrix in the (a, r, t) axes [N m s].
+    """
+    check_positive("pocket_shear.viscosity", viscosity)
+    check_positive("pocket_shear.ball_diameter", ball_diameter)
+    check_positive("pocket_shear.radial_clearance", radial_clearance)
+    if not section_inner < section_outer:
+        raise InputError("pocket_shear.section", (section_inner, section_outer),
+                         "section_inner < section_outer [m]")
+    r = 0.5 * float(ball_diameter)
+    c = float(radial_clearance)
+    lo = max(float(section_inner), -0.999 * r)
+    hi = min(float(section_outer), 0.999 * r)
+    if not lo < hi:
+        raise InputError("pocket_shear.section", (section_inner, section_outer),
+                         "a cage section that overlaps the ball")
+    scale = math.sqrt(2.0 * r * c)
+    s_lo, s_hi = math.asinh(lo / scale), math.asinh(hi / scale)
+    g, w = np.polynomial.legendre.leggauss(int(n_axial))
+    s = 0.5 * (s_hi - s_lo) * g + 0.5 * (s_hi + s_lo)
+    x = scale * np.sinh(s)
+    wx = w * 0.5 * (s_hi - s_lo) * scale * np.cosh(s)
+    phi = np.linspace(0.0, 2.0 * math.pi, int(n_around), endpoint=False)
+    wphi = 2.0 * math.pi / int(n_around)
+    xx, pp = np.meshgrid(x, phi, indexing="ij")
+    rho = np.sqrt(r * r - xx * xx)
+    h = r + c - rho
+    p = np.stack([rho * np.cos(pp), xx, rho * np.sin(pp)], axis=-1)
+    n = np.stack([np.cos(pp), np.zeros_like(pp), np.sin(pp)], axis=-1)
+    skew = np.zeros(p.shape + (3,))
+    skew[..., 0, 1], skew[..., 0, 2] = -p[..., 2], p[..., 1]
+    skew[..., 1, 0], skew[..., 1, 2] = p[..., 2], -p[..., 0]
+    skew[..., 2, 0], skew[..., 2, 1] = -p[..., 1], p[..., 0]
+    proj = np.eye(3) - n[..., :, None] * n[..., None, :]
+    integrand = np.einsum("...ji,...jk,...kl->...il", skew, proj, skew)
+    weight = float(viscosity) * (r + c) * wphi * wx[:, None] / h
+    cmat = np.einsum("ij,ijkl->kl", weight, integrand)
+    return 0.5 * (cmat + cmat.T)
 
 
 def pocket_heat(normal_force, friction_coefficient, sliding_speed):

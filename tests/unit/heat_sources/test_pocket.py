@@ -104,3 +104,33 @@ def test_circulation():
     assert pocket.pocket_circulation([3.0, -1.0, -1.0, -1.0, -1.0, -1.0]) == pytest.approx(4.0)
     assert pocket.pocket_circulation([1.0, -1.0]) == float("inf")
     assert pocket.pocket_circulation([0.0, 0.0]) == 1.0
+
+
+def test_shear_damping_against_one_dimensional_integrals():
+    # Omega along a: |v_t|^2 = Omega^2 (x^2 cos^2 phi + rho^2 sin^2 phi), integrated over phi:
+    # C_aa = pi eta R_p R^2 int dx / h;  Omega along r (the pocket axis): |v_t| = Omega rho,
+    # C_rr = 2 pi eta R_p int rho^2 / h dx  (h = R + c - sqrt(R^2 - x^2); derived by hand)
+    import math
+
+    from scipy.integrate import quad
+
+    eta, d, c, lo, hi = 0.05, 0.034925, 0.3e-3, -8e-3, 10.2e-3
+    r = d / 2
+
+    def h(x):
+        return r + c - math.sqrt(r * r - x * x)
+
+    caa = math.pi * eta * (r + c) * r * r * quad(lambda x: 1 / h(x), lo, hi, points=[0.0])[0]
+    crr = 2 * math.pi * eta * (r + c) * quad(lambda x: (r * r - x * x) / h(x), lo, hi,
+                                             points=[0.0])[0]
+    cm = pocket.pocket_shear_damping(eta, d, c, lo, hi)
+    assert cm[0, 0] == pytest.approx(caa, rel=1e-8)
+    assert cm[2, 2] == pytest.approx(caa, rel=1e-8)  # a and t equivalent about the bore axis
+    assert cm[1, 1] == pytest.approx(crr, rel=1e-8)
+    assert np.max(np.abs(cm - np.diag(np.diag(cm)))) < 1e-12 * cm[1, 1]
+    # QJ1044 peak (SOURCE.md): Omega = (-905.7, 101.3, -15.6) rad/s, eta 0.0504 -> ~19 W
+    om = np.array([-905.66, 101.34, -15.57])
+    cq = pocket.pocket_shear_damping(0.0504, d, c, lo, hi)
+    assert om @ cq @ om == pytest.approx(18.9, abs=0.05)
+    with pytest.raises(InputError, match="section"):
+        pocket.pocket_shear_damping(eta, d, c, 1e-3, -1e-3)

@@ -150,8 +150,21 @@ def main(argv=None) -> int:
     print(_shares(pheat))
     print(f"    dissipated (shaft power) but not booked: "
           f"{res.shaft_torque * wi - sum(pheat.values()):.1f} W of {res.shaft_torque * wi:.1f} W")
+    from thermobearing.heat_sources.pocket import pocket_shear_damping
+
+    x_oil = ctx.options["churning_cage"]["oil_fraction"]
+    r_b = float(np.mean(rp))
+    cmat = pocket_shear_damping(eta, d, 0.5 * cage.pocket_clearance,
+                                0.5 * cage.inner_diameter - r_b, 0.5 * cage.outer_diameter - r_b)
+    shear = float(np.einsum("ji,ik,jk->", res.spin, cmat, res.spin))
+    print(f"4. not modelled (nor in paper 002): Couette shear of a flooded pocket by the spinning "
+          f"ball (pocket.pocket_shear_damping): {shear / bearing.n_balls:.1f} W per pocket, "
+          f"{shear:.0f} W in all at eta = {eta:.4f} Pa s; {x_oil * shear:.0f} W with the mixture "
+          f"viscosity X eta (X = {x_oil:.3f}); fully flooded: pocket share "
+          f"{(heat['pocket_friction'] + shear) / (sum(heat.values()) + shear):.3f}, guide/pocket "
+          f"{heat['cage_guide'] / (heat['pocket_friction'] + shear):.2f}")
     if a.sensitivity:
-        print("4. sensitivity at this load (solver re-run): land clearance, land width, mu_p")
+        print("5. sensitivity at this load (solver re-run): land clearance, land width, mu_p")
         for cl, lw, mu in [(0.6, 10, None), (0.3, 10, None), (1.2, 10, None), (2.4, 10, None),
                            (0.6, 5, None), (0.6, 20, None), (0.6, 10, 0.1)]:
             cg = dataclasses.replace(cage, guide_clearance=cl * 1e-3, land_width=lw * 1e-3,
