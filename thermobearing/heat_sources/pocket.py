@@ -31,6 +31,11 @@ about mu (1 + gamma) P_drag at pure rolling (omega_r / omega_c = (D_m / D_b)(1 +
 Pocket forces that alternate in sign around the bearing (balls with different free orbital
 speeds) add to Q_bp without adding to P_drag; :func:`pocket_circulation` measures that.
 :func:`steady_pocket_drag_ratio` gives the factor; the ``details`` of the source carry both.
+
+Not in paper 002 and not in the source's heat: the Couette shear of the oil in a flooded
+pocket by the spinning element, :func:`pocket_shear_damping` (a damping matrix the ball
+solver would need for a consistent spin-damping moment; used by the diagnosis of the
+validation case paper002_loss_ratios).
 """
 
 from __future__ import annotations
