@@ -5,7 +5,9 @@
   ``conductance``), directed oil enthalpy streams, roles and groups (one per bearing).
 - :func:`assemble` (:mod:`.assemble`): C, K, s of ``C dT/dt = -K T + s + q(t, T)``.
 - :func:`integrate`, :class:`TransientStepper`, :func:`solve_steady` (:mod:`.steppers`,
-  registry ``stepper``): TR-BDF2 (default), backward Euler; energy audit (:mod:`.audit`).
+  registry ``stepper``): TR-BDF2 (default), backward Euler; exponential Rosenbrock
+  ``exprb43`` (:mod:`.exponential`: exact on the stiff linear network); energy audit
+  (:mod:`.audit`).
 - templates (:mod:`.templates`, registry ``network_template``): the four-node network of
   paper 002 and a finer seven-node one, from a bearing and a lubricant.
 
@@ -40,13 +42,15 @@ Scene TOML: ``net.to_dict()`` / ``ThermalNetwork.from_dict(d)``.
 from .assemble import Assembler, System, assemble
 from .audit import EnergyAudit, SteadyResult, TransientResult
 from .conductances import CONDUCTANCE, ConductanceModel
+from .exponential import ExpRosenbrock43, phi_functions
 from .graph import ROLES, Stream, ThermalNetwork
 from .steppers import STEPPERS, StepOutcome, TransientStepper, integrate, solve_steady
 from .templates import TEMPLATES, four_node_paper002, oil_capacity_rate, seven_node
 
 __all__ = [
     "CONDUCTANCE", "ROLES", "STEPPERS", "Assembler", "ConductanceModel", "EnergyAudit",
-    "StepOutcome", "SteadyResult", "Stream", "System", "TEMPLATES", "ThermalNetwork",
+    "ExpRosenbrock43", "StepOutcome", "SteadyResult", "Stream", "System", "TEMPLATES",
+    "ThermalNetwork",
     "TransientResult", "TransientStepper", "assemble", "four_node_paper002", "integrate",
-    "oil_capacity_rate", "seven_node", "solve_steady",
+    "oil_capacity_rate", "phi_functions", "seven_node", "solve_steady",
 ]

@@ -83,6 +83,9 @@ class TransientResult:
     audit : the :class:`EnergyAudit`.
     stats : solver counters (steps, rejected, heat evaluations, Jacobians, LU factorizations).
     method : stepper name.
+    dense : the stepper's own dense output, one callable piece per accepted step with
+        attributes ``t0``, ``h`` (``exprb43``: the exact solution of the linearised step);
+        empty for the other steppers, which :meth:`sample` interpolates (cubic Hermite).
     """
 
     names: tuple[str, ...]
@@ -93,6 +96,7 @@ class TransientResult:
     audit: EnergyAudit
     stats: dict[str, int] = field(default_factory=dict)
     method: str = ""
+    dense: tuple = ()
 
     def temperature(self, name: str) -> np.ndarray:
         """Temperature history [K] of node ``name`` (constant for a boundary node)."""
@@ -129,6 +133,8 @@ class TransientResult:
 
             raise InputError("sample times", (float(t.min()), float(t.max())),
                              f"times within [{ts[0]}, {ts[-1]}]")
+        if self.dense:
+            return self._sample_dense(t)
         # right-most interval with ts[k] <= t < ts[k+1]; duplicates (jumps) take the right side
         k = np.searchsorted(ts, t, side="right") - 1
         k = np.clip(k, 0, len(ts) - 2)
@@ -160,6 +166,19 @@ class TransientResult:
         zero_h = h <= 0
         if np.any(zero_h):
             out[zero_h] = y1[zero_h]
+        return out
+
+    def _sample_dense(self, t: np.ndarray) -> np.ndarray:
+        """Sample the stepper's own dense output (a right-continuous piece at a step start)."""
+        starts = np.array([p.t0 for p in self.dense])
+        k = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, len(starts) - 1)
+        order = np.argsort(k, kind="stable")
+        ks = k[order]
+        cuts = np.flatnonzero(np.diff(ks)) + 1
+        out = np.empty((len(t), self.temperatures.shape[1]))
+        for lo, hi in zip(np.r_[0, cuts], np.r_[cuts, len(ks)], strict=True):
+            idx = order[lo:hi]
+            out[idx] = self.dense[ks[lo]](t[idx])
         return out
 
     def to_dataframe(self):

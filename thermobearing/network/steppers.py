@@ -119,6 +119,9 @@ class _Core:
         self.W0 = None
         self.eta = 1.0  # Newton convergence-rate estimate theta/(1 - theta)
         self.theta = 0.0
+        self.jac_y: np.ndarray | None = None  # the state of the last Jacobian (identity)
+        self.jac_t = math.nan
+        self.adaptive = True  # error-controlled steps (a rejected trial may stop early)
         self.stats = {"steps": 0, "rejected": 0, "newton_failures": 0, "heat_evaluations": 0,
                       "jacobians": 0, "factorizations": 0, "solves": 0}
 
@@ -202,6 +205,7 @@ class _Core:
             KmJ = (K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))).tocsc()
         self.Jq = Jq
         self.KmJ = KmJ
+        self.jac_y, self.jac_t = T, t
         self.lu_coef = -1.0
         self.eta = 1.0
 
@@ -313,12 +317,15 @@ class _Trial:
     gen: float  # J
     to_b: float  # J
     to_s: float  # J
+    dense: object = None  # a method's own dense output of the step (callable of t)
 
 
 class _Method(abc.ABC):
     order = 1
+    error_order: int | None = None  # order of the embedded solution (default: order)
     adaptive = True
     name = ""
+    trial_first_step = False  # first step of a segment: try the whole segment
 
     @abc.abstractmethod
     def step(self, core: _Core, t: float, h: float, y0: np.ndarray, f0: np.ndarray,
@@ -480,17 +487,25 @@ class _Driver:
         self.jacobian = jacobian
         self._build()
         self.h_last: float | None = None
+        self.h_first: float | None = None  # first accepted step of the last segment
         self.h0_factor = 2.0  # first step 2 / max|dT/dt / (atol + rtol |T|)| [s]
         self.facmax = 5.0
 
     def _build(self) -> None:
         self.asm = Assembler(self.network)
         self.core = _Core(self.network, self.asm, self.rtol, self.atol, self.jacobian)
+        self.core.adaptive = self.dt is None
 
     def _initial_step(self, t0: float, t1: float, y0: np.ndarray, f0: np.ndarray) -> float:
         core = self.core
         if self.first_step is not None:
             return min(self.first_step, t1 - t0)
+        if self.method.trial_first_step:
+            # exact on the stiff linear part: the error estimate of a trial step sizes it
+            h = min(t1 - t0, self.max_step)
+            if self.h_first is not None:
+                h = min(h, 4.0 * self.h_first)
+            return h
         # rates filtered by the node's own conductance at a trial step h_b (the backward-
         # Euler increment per unit time): a stiff node (C/K << h_b) whose raw rate f/C is
         # huge is damped by the L-stable steppers and must not dictate the first step.
@@ -537,8 +552,9 @@ class _Driver:
         else:
             h = self._initial_step(t0, t1, y0, f0)
         method = self.method
-        p1 = method.order + 1.0
+        p1 = (method.error_order or method.order) + 1.0
         fresh_jac = True
+        first_in_segment = True
         tiny = 1e-12 * max(1.0, abs(t1))
         while t < t1 - tiny:
             if t + h >= t1 - 1e-3 * h:
@@ -574,11 +590,14 @@ class _Driver:
                         {"time": t, "step_size": h, "temperatures": y})
                 continue
             # accept
+            if first_in_segment:
+                self.h_first = h
+                first_in_segment = False
             core.stats["steps"] += 1
             stored = float(np.dot(core.C, trial.y1 - y))
             t = t1 if last else t + h
             y, f0, q0 = trial.y1, trial.f1, trial.q1
-            rec.add(t, y, f0, core, trial.gen, stored, trial.to_b, trial.to_s)
+            rec.add(t, y, f0, core, trial.gen, stored, trial.to_b, trial.to_s, trial.dense)
             fresh_jac = False
             if self.dt is not None:
                 h = self.dt
@@ -602,6 +621,7 @@ class _Recorder:
         self.y: list[np.ndarray] = []
         self.r: list[np.ndarray] = []
         self.rows: list[tuple[float, float, float, float, float]] = []
+        self.pieces: list = []  # dense output pieces of methods that have their own
 
     @staticmethod
     def _rate(f: np.ndarray, core: _Core) -> np.ndarray:
@@ -621,9 +641,11 @@ class _Recorder:
             self.y.append(y.copy())
             self.r.append(self._rate(f, core))
 
-    def add(self, t, y, f, core, gen, stored, to_b, to_s) -> None:
+    def add(self, t, y, f, core, gen, stored, to_b, to_s, dense=None) -> None:
         self.rows.append((t, gen, stored, to_b, to_s))
         if self.active:
+            if dense is not None:
+                self.pieces.append(dense)
             self.t.append(t)
             self.y.append(y)
             self.r.append(self._rate(f, core))
@@ -719,6 +741,7 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
         boundary={n: network.boundary_temperature(n) for n in network.boundary_nodes},
         times=np.array(rec.t), temperatures=np.array(rec.y), rates=np.array(rec.r),
         audit=rec.audit(), stats=dict(driver.core.stats), method=method,
+        dense=tuple(rec.pieces) if len(rec.pieces) == len(rec.rows) else (),
     )
 
 

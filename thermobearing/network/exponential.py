@@ -1,0 +1,399 @@
+"""Exponential Rosenbrock stepper ``exprb43`` for the thermal network.
+
+Method
+------
+Hochbruck, Ostermann & Schweitzer (2009), "Exponential Rosenbrock-type methods", SIAM J.
+Numer. Anal. 47(1), 786-803, method ``exprb43`` (4th order, embedded 3rd order); also
+Hochbruck & Ostermann (2010), Acta Numerica 19, sec. 2.4 and 5. At every step the network
+equation ``C dT/dt = f(t, T) = -K T + s + q(t, T)`` is linearised at (t_n, y_n)::
+
+    C y' = f_n + J (y - y_n) + v s + g_n(t_n + s, y),   J = -K + dq/dT,  v = dq/dt,
+    g_n = q(t_n + s, y) - q_n - dq/dT (y - y_n) - v s   (the nonlinear remainder, O(|y - y_n|^2))
+
+The linear part is integrated *exactly* (matrix exponential and phi functions of the small
+dense Jacobian), so stiffness costs nothing; the step size is limited only by the
+nonlinearity of the heat sources and their time dependence. With G(s) a polynomial
+interpolant of g_n along the step, the stage and step values are the exact solution of
+``C y' = f_n + J (y - y_n) + G(s)`` at s = tau::
+
+    y(tau) - y_n = sum_k k! tau theta^k phi_{k+1}(tau A) c_k,   theta = tau / h,
+    G(s) = sum_{k>=1} c_k (s/h)^k,  c_0 = f_n                   (variation of constants)
+
+exprb43 (HOS 2009, Table 5.2 in the form of their eq. (5.6)):
+U2 = y_n + (h/2) phi1(h/2 A) F_n;  U3 = y_n + h phi1(h A) (F_n + D2);
+y_{n+1} = y_n + h phi1 F_n + h (16 phi3 - 48 phi4) D2 + h (-2 phi3 + 12 phi4) D3,
+D_i = g_n(U_i). These weights are exactly the quadratic-plus-cubic interpolant
+G(s) = a2 (s/h)^2 + a3 (s/h)^3 through G(h/2) = D2, G(h) = D3: a2 = 8 D2 - D3,
+a3 = 2 D3 - 8 D2 (so 2 phi3 a2 + 6 phi4 a3 reproduces the weights above). The embedded
+3rd-order solution drops the cubic term; the error estimate is therefore
+``e = 6 h phi4(h A) a3`` (O(h^4): step control with exponent 1/4). For a heat source with
+continuous time dependence (``heat_time_dependent=True``) v is a one-sided difference
+quotient of q in t (one extra heat evaluation per step) and enters as c_1 = v h; for a
+source piecewise constant in t (restarted at the breakpoints) v = 0.
+
+Dense output is the same formula at any tau in (0, h]: exact for the linear network,
+the interpolated remainder otherwise (no Hermite interpolation across fast transients).
+
+Linear algebra
+--------------
+A = C^-1 J (reduced, below) is diagonalised once per step, ``A = V diag(lambda) V^-1``
+(``numpy.linalg.eig``; eigenvalues may be complex for the upwind stream coupling: the
+arithmetic is then complex and the real part is taken), and phi_k(tau lambda) are
+evaluated elementwise (recurrence phi_{k+1}(z) = (phi_k(z) - 1/k!) / z for |z| >= 1,
+Taylor series below). The eigendecomposition is O(n^3) per step: intended for the small
+dense networks of a bearing (4 to ~120 nodes); TR-BDF2 is the stepper for large sparse
+ones. An ill-conditioned eigenvector basis (cond(V) > 1e8, a near-defective matrix) is
+refused with a ConvergenceError-reporting failure of the step (the driver then halves h;
+use ``tr_bdf2`` for such a network).
+
+Zero-capacity (algebraic) nodes a are eliminated per step by the Schur complement of the
+linearised equations: 0 = r_a(s) + J_ad dy_d + J_aa dy_a gives
+dy_a = -J_aa^-1 (r_a + J_ad dy_d), and the capacity nodes d obey
+C_d dy_d' = (r_d - J_da J_aa^-1 r_a) + (J_dd - J_da J_aa^-1 J_ad) dy_d.
+
+Discrete energy balance (exact for this method)
+-----------------------------------------------
+Integrating the linearised equation over the step, summed over all nodes,
+sum C (y_{n+1} - y_n) = h sum f_n + sum J I + sum int G, I = int_0^h (y - y_n) ds
+= h^2 sum_k k! phi_{k+2}(h A) c_k. With J = -K + dq/dT and the identity
+-sum(-K y + s) = (heat to boundaries) + (heat to streams) (linear in y, see assemble):
+
+    generated  = h sum q_n + sum (dq/dT I) + sum int G ds   [int G = h sum_k c_k/(k+1)]
+    to_bounds  = h Q_b(y_bar),  to_streams = h Q_s(y_bar),  y_bar = y_n + I / h
+
+and generated - stored - to_bounds - to_streams = 0 up to round-off in the exponential.
+``generated`` is the method's own quadrature of q along its continuous solution (it
+differs from the exact integral of q by the local error).
+
+Positivity: for a linear network the step is the exact flow exp(h A), whose matrix is
+non-negative (A is a Metzler matrix: C^-1 times minus an M-matrix), so no temperature
+leaves the bounds at any step size; with temperature-dependent sources the interpolated
+remainder can perturb this by the local error (tested at dt = 600 s).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from .steppers import STEPPERS, _Core, _Method, _NewtonFailure, _Trial
+
+_FACT = (1.0, 1.0, 2.0, 6.0, 24.0, 120.0, 720.0)
+_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
+_COND_MAX = 1e8
+
+
+def phi_functions(z: np.ndarray, kmax: int) -> list[np.ndarray]:
+    """[phi_0(z), ..., phi_kmax(z)] elementwise (real or complex z, any shape).
+
+    phi_0 = exp(z), phi_{k+1}(z) = (phi_k(z) - 1/k!) / z (Hochbruck & Ostermann 2010,
+    eq. 2.10) for |z| >= 1; below, where that recurrence cancels, phi_kmax from its
+    Taylor series sum_j z^j / (j + kmax)! (17 terms: truncation < 1e-16 relative) and the
+    stable downward recurrence phi_k = z phi_{k+1} + 1/k!.
+    """
+    z = np.asarray(z)
+    small = np.abs(z) < 1.0
+    n_small = int(np.count_nonzero(small))
+    out: list = [None] * (kmax + 1)
+    if n_small:
+        acc = _INV_FACT[kmax + 16] * z + _INV_FACT[kmax + 15]
+        for j in range(14, -1, -1):
+            acc = acc * z + _INV_FACT[kmax + j]
+        ser = [None] * (kmax + 1)
+        ser[kmax] = acc
+        for k in range(kmax - 1, -1, -1):
+            ser[k] = z * ser[k + 1] + _INV_FACT[k]
+        if n_small == small.size:
+            return ser
+    with np.errstate(over="ignore", invalid="ignore"):
+        zs = np.where(small, 1.0, z) if n_small else z
+        out[0] = np.exp(zs)
+        for k in range(1, kmax + 1):
+            out[k] = (out[k - 1] - _INV_FACT[k - 1]) / zs
+    if n_small:
+        out = [np.where(small, a, b) for a, b in zip(ser, out, strict=True)]
+    return out
+
+
+# ------------------------------------------------------------ compiled kernels
+# One call per stage keeps the per-step cost at a few microseconds for small networks
+# (numpy's per-call overhead would dominate at n = 4). Same formulas as phi_functions.
+@numba.njit(cache=True)
+def _nb_phi_row(z, kmax, out):  # pragma: no cover - compiled
+    """out[k] = phi_k(z), k = 0..kmax, for one complex z."""
+    if abs(z) < 1.0:
+        acc = _NB_INV_FACT[kmax + 16] * z + _NB_INV_FACT[kmax + 15]
+        for j in range(14, -1, -1):
+            acc = acc * z + _NB_INV_FACT[kmax + j]
+        out[kmax] = acc
+        for k in range(kmax - 1, -1, -1):
+            out[k] = z * out[k + 1] + _NB_INV_FACT[k]
+    else:
+        out[0] = np.exp(z)
+        for k in range(1, kmax + 1):
+            out[k] = (out[k - 1] - _NB_INV_FACT[k - 1]) / z
+
+
+@numba.njit(cache=True)
+def _nb_combine(lam, V, W, cs, use, tau, h, shift):  # pragma: no cover - compiled
+    """Reduced increment sum_k k! tau theta^k phi_{k+1+shift}(tau lam) (W c_k), mapped back
+    by V; ``shift`` = 1 gives the time integral h^2 sum_k k! phi_{k+2}(h lam) W c_k / tau
+    times tau (i.e. pass tau = h)."""
+    nd = lam.shape[0]
+    n = W.shape[1]
+    ph = np.empty(7, dtype=np.complex128)
+    acc = np.zeros(nd, dtype=np.complex128)
+    th = tau / h
+    for i in range(nd):
+        _nb_phi_row(tau * lam[i], 6, ph)
+        tot = 0.0j
+        fk = 1.0
+        thk = 1.0
+        for k in range(cs.shape[0]):
+            if k > 0:
+                fk *= k
+                thk *= th
+            if use[k]:
+                m = 0.0j
+                for j in range(n):
+                    m += W[i, j] * cs[k, j]
+                if shift == 0:
+                    tot += fk * tau * thk * ph[k + 1] * m
+                else:
+                    tot += fk * tau * tau * ph[k + 2] * m
+        acc[i] = tot
+    out = np.empty(nd)
+    for r in range(nd):
+        v = 0.0j
+        for i in range(nd):
+            v += V[r, i] * acc[i]
+        out[r] = v.real
+    return out
+
+
+@numba.njit(cache=True)
+def _nb_increment(lam, V, W, cs, use, tau, h, shift, d, a, Jaa_inv, Jad):  # pragma: no cover
+    """Full-state increment (shift 0: y(tau) - y_n; shift 1: int_0^h (y - y_n) ds with
+    tau = h): the capacity nodes from _nb_combine, the zero-capacity nodes lifted by
+    dy_a = -J_aa^-1 (r_a + J_ad dy_d)."""
+    dd = _nb_combine(lam, V, W, cs, use, tau, h, shift)
+    na = a.shape[0]
+    if na == 0:
+        return dd
+    n = W.shape[1]
+    out = np.empty(n)
+    for i in range(d.shape[0]):
+        out[d[i]] = dd[i]
+    th = tau / h
+    r = np.zeros(na)
+    for j in range(na):
+        wk = 1.0
+        for k in range(cs.shape[0]):
+            if k > 0:
+                wk *= th
+            if use[k]:
+                r[j] += (wk if shift == 0 else h / (k + 1)) * cs[k, a[j]]
+        for i in range(d.shape[0]):
+            r[j] += Jad[j, i] * dd[i]
+    for j in range(na):
+        v = 0.0
+        for m in range(na):
+            v -= Jaa_inv[j, m] * r[m]
+        out[a[j]] = v
+    return out
+
+
+@numba.njit(cache=True)
+def _nb_final(lam, V, W, cs, use, h, d, a, Jaa_inv, Jad, y0, atol, rtol):  # pragma: no cover
+    """(y_{n+1}, scaled error norm, int_0^h (y - y_n) ds) of an exprb43 step."""
+    y1 = y0 + _nb_increment(lam, V, W, cs, use, h, h, 0, d, a, Jaa_inv, Jad)
+    est_use = np.zeros(4, dtype=np.bool_)
+    est_use[3] = True
+    est = _nb_increment(lam, V, W, cs, est_use, h, h, 0, d, a, Jaa_inv, Jad)
+    err = 0.0
+    for i in range(y1.shape[0]):
+        e = abs(est[i]) / (atol + rtol * abs(y1[i]))
+        if not e <= err:  # also catches NaN
+            err = e
+    integral = _nb_increment(lam, V, W, cs, use, h, h, 1, d, a, Jaa_inv, Jad)
+    return y1, err, integral
+
+
+@numba.njit(cache=True)
+def _nb_dense(lam, V, W, cs, use, taus, h, d, a, Jaa_inv, Jad):  # pragma: no cover
+    """Full-state increments y(tau) - y_n at several tau (rows)."""
+    out = np.empty((taus.shape[0], W.shape[1]))
+    for p in range(taus.shape[0]):
+        if taus[p] == 0.0:
+            out[p, :] = 0.0
+        else:
+            out[p, :] = _nb_increment(lam, V, W, cs, use, taus[p], h, 0, d, a, Jaa_inv, Jad)
+    return out
+
+
+@numba.njit(cache=True)
+def _nb_eig(A):  # pragma: no cover - compiled
+    lam, V = np.linalg.eig(A.astype(np.complex128))
+    Vi = np.linalg.inv(V)
+    return lam, V, Vi
+
+
+_NB_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
+
+
+class _Linearization:
+    """Reduced, diagonalised linearisation at one step start (t_n, y_n)."""
+
+    __slots__ = ("lam", "V", "W", "Jq", "d", "a", "Jaa_inv", "Jad", "y0", "t", "n")
+
+    def __init__(self, core: _Core, t: float, y0: np.ndarray) -> None:
+        KmJ = core.KmJ
+        if not isinstance(KmJ, np.ndarray):
+            KmJ = KmJ.toarray()
+        J = -KmJ  # W/K
+        self.Jq = core.Jq
+        self.t = t
+        self.y0 = y0
+        self.n = core.n
+        invC = core.invC
+        if core.has_alg:
+            d = np.flatnonzero(core.diff)
+            a = np.flatnonzero(core.alg)
+            try:
+                Jaa_inv = np.linalg.inv(J[np.ix_(a, a)])
+            except np.linalg.LinAlgError:
+                raise _NewtonFailure(math.inf, "singular zero-capacity block") from None
+            Jad = J[np.ix_(a, d)]
+            X = J[np.ix_(d, a)] @ Jaa_inv  # (nd, na)
+            S = J[np.ix_(d, d)] - X @ Jad
+            M = np.zeros((len(d), core.n))
+            M[np.arange(len(d)), d] = 1.0
+            M[:, a] = -X
+            M *= invC[d][:, None]
+            A = S * invC[d][:, None]
+            self.d, self.a, self.Jaa_inv, self.Jad = d, a, Jaa_inv, Jad
+        else:
+            M = None
+            A = J * invC[:, None]
+            self.d = np.arange(core.n)
+            self.a = np.zeros(0, dtype=np.int64)
+            self.Jaa_inv = np.zeros((0, 0))
+            self.Jad = np.zeros((0, core.n))
+        if not np.all(np.isfinite(A)):
+            raise _NewtonFailure(math.inf, "non-finite Jacobian")
+        if A.shape[0]:
+            lam, V, Vi = _nb_eig(np.ascontiguousarray(A))
+            cond = float(np.abs(V).sum(axis=0).max() * np.abs(Vi).sum(axis=0).max())
+            if not math.isfinite(cond) or cond > _COND_MAX:
+                raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
+                                               "use method='tr_bdf2' for this network")
+        else:
+            lam = np.zeros(0, complex)
+            V = Vi = np.zeros((0, 0), complex)
+        self.lam = lam
+        self.V = V
+        self.W = np.ascontiguousarray(Vi * invC[None, :] if M is None else Vi @ M)
+
+    def increment(self, tau: float, h: float, cs: np.ndarray, use: np.ndarray) -> np.ndarray:
+        """y(tau) - y_n for the forcing sum_k cs[k] (s/h)^k [W] (rows with use[k])."""
+        return _nb_increment(self.lam, self.V, self.W, cs, use, tau, h, 0, self.d, self.a,
+                             self.Jaa_inv, self.Jad)
+
+
+class ExpPiece:
+    """Dense output of one exprb43 step on [t0, t0 + h] (exact for the linearised step)."""
+
+    __slots__ = ("t0", "h", "y0", "lin", "cs", "use")
+
+    def __init__(self, t0, h, y0, lin, cs, use) -> None:
+        self.t0, self.h, self.y0, self.lin, self.cs, self.use = t0, h, y0, lin, cs, use
+
+    def __call__(self, t: np.ndarray) -> np.ndarray:
+        """Temperatures [K] at times t (within the step), shape (len(t), n)."""
+        tau = np.clip(np.asarray(t, dtype=float) - self.t0, 0.0, self.h)
+        lin = self.lin
+        return self.y0 + _nb_dense(lin.lam, lin.V, lin.W, self.cs, self.use, tau, self.h,
+                                   lin.d, lin.a, lin.Jaa_inv, lin.Jad)
+
+
+_USE_F = np.array([True, False, False, False])
+_USE_FV = np.array([True, True, False, False])
+_USE_ALL = np.array([True, False, True, True])
+_USE_ALL_V = np.array([True, True, True, True])
+
+
+@STEPPERS.register("exprb43", references=["hochbruck2009_exprb", "hochbruck_ostermann2010"],
+                   parameters={"rtol": "-", "atol": "K"},
+                   validity="dense networks (O(n^3) per step, n <~ 120); exact on the "
+                            "linear network, order 4 in the heat-source nonlinearity; "
+                            "zero-capacity nodes by Schur elimination")
+class ExpRosenbrock43(_Method):
+    """Exponential Rosenbrock exprb43: exact linear network, 4th order nonlinearity.
+
+    Hochbruck, Ostermann & Schweitzer (2009) method exprb43 with its embedded 3rd-order
+    solution; linear part by eigendecomposition of the small dense Jacobian, exact dense
+    output; see the module docstring for the formulas, the zero-capacity elimination and
+    the discrete energy balance.
+    """
+
+    order = 4
+    error_order = 3
+    name = "exprb43"
+    trial_first_step = True
+
+    def __init__(self) -> None:
+        self._lin: _Linearization | None = None
+
+    def step(self, core, t, h, y0, f0, q0):
+        lin = self._lin
+        if lin is None or lin.y0 is not y0 or lin.t != t or core.KmJ is None:
+            if not (core.jac_y is y0 and core.jac_t == t and core.KmJ is not None):
+                core.refresh_jacobian(t, y0, q0)
+            lin = self._lin = _Linearization(core, t, y0)
+        Jq = lin.Jq
+        n = core.n
+        cs = np.zeros((4, n))
+        cs[0] = f0
+        td = core.time_dependent and core.heat is not None
+        if td:  # c1 = h dq/dt, one-sided difference inside the segment
+            dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
+            cs[1] = (core.q(t + dt_fd, y0) - q0) * (h / dt_fd)
+
+        def g(tau: float, U: np.ndarray) -> np.ndarray:
+            """Nonlinear remainder g_n(t + tau, U) [W]."""
+            dU = U - y0
+            r = core.q(t + tau, U) - q0
+            if Jq is not None:
+                r -= Jq * dU if Jq.ndim == 1 else Jq @ dU
+            if td:
+                r -= cs[1] * (tau / h)
+            return r
+
+        use1 = _USE_FV if td else _USE_F
+        D2 = g(0.5 * h, y0 + lin.increment(0.5 * h, h, cs, use1))
+        cs[0] = f0 + D2
+        D3 = g(h, y0 + lin.increment(h, h, cs, use1))
+        cs[0] = f0
+        cs[2] = 8.0 * D2 - D3
+        cs[3] = 2.0 * D3 - 8.0 * D2
+        use = _USE_ALL_V if td else _USE_ALL
+        y1, err, I = _nb_final(lin.lam, lin.V, lin.W, cs, use, h, lin.d, lin.a,  # noqa: E741
+                               lin.Jaa_inv, lin.Jad, y0, core.atol, core.rtol)
+        if not (math.isfinite(err) and math.isfinite(y1.sum())):
+            raise _NewtonFailure(math.inf, "non-finite exponential step")
+        if err > 1.0 and core.adaptive:
+            return _Trial(y1, None, None, err, 0.0, 0.0, 0.0)  # rejected: no more work
+        f1, q1 = core.f(t + h, y1)
+        # discrete energy balance (module docstring)
+        gen = h * float(q0.sum()) + h * (float(cs[2].sum()) / 3.0 + float(cs[3].sum()) / 4.0)
+        if td:
+            gen += h * float(cs[1].sum()) / 2.0
+        if Jq is not None:
+            gen += float((Jq * I).sum() if Jq.ndim == 1 else (Jq @ I).sum())
+        ybar = y0 + I / h
+        sys_ = core.sys
+        to_b = h * sys_.to_boundaries(ybar)
+        to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0
+        return _Trial(y1, f1, q1, err, gen, to_b, to_s, ExpPiece(t, h, y0, lin, cs, use))
