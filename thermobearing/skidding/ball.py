@@ -44,6 +44,7 @@ norm and the state.
 
 from __future__ import annotations
 
+import functools
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -139,7 +140,8 @@ class BallSkiddingResult:
     normal_load, contact_angle : (Z, k) per raceway arc [N], [rad]; ring (k,) 0/1.
     sliding_speed, transverse_sliding_speed, spin_speed_contact, entrainment_speed : (Z, k).
     heat : dict of total heat by component [W]; shaft_torque [N m].
-    kinematic_state : :class:`thermobearing.state.KinematicState` for the heat sources.
+    kinematic_state : :class:`thermobearing.state.KinematicState` for the heat sources (built
+        on first access: its validation costs more than a warm-started solve).
     """
 
     cage_speed_ratio: float
@@ -170,9 +172,14 @@ class BallSkiddingResult:
     entrainment_speed: np.ndarray
     heat: dict
     shaft_torque: float
-    kinematic_state: Any
+    state_builder: Callable[[], Any] = field(repr=False, default=None, compare=False)
     unknowns: np.ndarray = field(repr=False, default=None)
     extra: dict = field(default_factory=dict, repr=False)
+
+    @functools.cached_property
+    def kinematic_state(self) -> Any:
+        """:class:`thermobearing.state.KinematicState` of this solution (built once)."""
+        return self.state_builder()
 
     @property
     def slip(self) -> float:
@@ -383,7 +390,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
         Rp_r = br + pr
         shaft = np.sum(np.where(inn, Rp_r * Ft_k + (Mx * nr - Mz * na), 0.0)) + inner_torque
-        det = dict(cf=cf, a=a_ell, b=b_ell, p0=p0, rx=rx, ry=ry, film=film, Vx=Vx, Vy=Vy,
+        det = dict(cf=cf, wc=wc, a=a_ell, b=b_ell, p0=p0, rx=rx, ry=ry, film=film, Vx=Vx, Vy=Vy,
                    Om_x=Om_x, Om_y=Om_y, Om_z=Om_z, ue=ue, tr=tr, Fd=Fd, u_ball=u_ball,
                    pocket_heat=pocket_heat, contact_heat=contact_heat, drag_heat=drag_heat,
                    cage_heat=cage_heat, guide_heat=guide_heat,
@@ -466,7 +473,7 @@ class JacobianBlocks:
 
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
-                 max_step: float = 1.0, reuse_ratio: float = 0.25,
+                 max_step: float = 1.0, reuse_ratio: float = 0.25, max_broyden: int = 12,
                  jacobian: JacobianBlocks | None = None):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
@@ -539,16 +546,35 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 jac = factor(system.last_jacobian, R, Gc, Gk, G)
             except ConvergenceError:
                 jac = None
+    steps: list[np.ndarray] = []     # full steps taken since ``jac`` was factorised
+    nx = Z * N_BALL
     while nrm > tol and it < max_iter:
         it += 1
         stale = jac is not None
         if jac is None:
             jac = jacobian_fd(X, G, R, Gc, Gk)
+            steps = []
         dX, dG = step(jac, R, Gc, Gk)
+        if stale and steps:
+            # Broyden ("good") update of the chord Jacobian in product form, from the
+            # full steps s_0..s_n taken since the factorisation (Kelley 1995, Iterative
+            # Methods for Linear and Nonlinear Equations, sec. 7.3, Algorithm brsol):
+            # z = -J0^-1 F; z += s_(j+1) (s_j.z)/|s_j|^2, j < n; s_(n+1) = z/(1 - s_n.z/|s_n|^2)
+            z = np.concatenate([dX.ravel(), dG])
+            for j in range(len(steps) - 1):
+                z += steps[j + 1] * (np.dot(steps[j], z) / np.dot(steps[j], steps[j]))
+            den = 1.0 - np.dot(steps[-1], z) / np.dot(steps[-1], steps[-1])
+            if abs(den) < 0.1 or len(steps) > max_broyden:
+                jac = jacobian_fd(X, G, R, Gc, Gk)
+                steps, stale = [], False
+                dX, dG = step(jac, R, Gc, Gk)
+            else:
+                z /= den
+                dX, dG = z[:nx].reshape(Z, N_BALL), z[nx:]
         big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
-            # chord step: full step only, accepted if it reduces the norm
+            # chord / Broyden step: full step only, accepted if it reduces the norm
             ok, nn = False, np.inf
             if lam == 1.0:
                 try:
@@ -559,6 +585,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                     ok = False
             if ok:
                 X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
+                steps.append(np.concatenate([dX.ravel(), dG]))
                 if nn > reuse_ratio * nrm:
                     jac = None
                 nrm = nn
@@ -586,6 +613,8 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                                    {"iteration": it, "cage_speed": G[2]})
         if not (lam == 1.0 and nn < reuse_ratio * nrm):
             jac = None
+        else:
+            steps = [np.concatenate([dX.ravel(), dG])]
         X, G, R, Gc, Gk, nrm = Xn, Gn, Rn, Gcn, Gkn, nn
     if not nrm <= tol:
         raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
@@ -717,7 +746,6 @@ def _continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol,
 
 
 def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
-    from ..state import ContactSet, KinematicState
 
     R, Gc, G0, det = system.evaluate(X, G, details=True)
     b = system.bearing
@@ -758,12 +786,38 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
     heat["total"] = float(sum(v for k, v in heat.items()
                               if k not in ("raceway_inner", "raceway_outer")))
     names = []
-    sets = []
     for k in range(system.arcs.n_arcs):
         race = ("inner" if inner[k] else "outer")
         nth = int(np.sum((inner == inner[k])[:k]))
-        name = race if nth == 0 else f"{race}_{nth + 1}"
-        names.append(name)
+        names.append(race if nth == 0 else f"{race}_{nth + 1}")
+
+    def build_state():
+        return _kinematic_state(system, X, det, names, heat)
+
+    return BallSkiddingResult(
+        cage_speed_ratio=float(csr), theoretical_cage_speed_ratio=th,
+        kinematic_cage_speed_ratio=kin, over_skid=float(csr / th - 1.0), converged=True,
+        residual_norm=float(nrm), iterations=int(iters), wall_time=float(wall), inner_speed=wi,
+        cage_speed=float(wc), ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
+        delta_r=float(G[1]), spin=Om.copy(), spin_speed=spin, attitude_angle=beta,
+        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=Q, contact_angle=cf.contact_angle,
+        ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
+        spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
+        shaft_torque=float(det["shaft_torque"]), state_builder=build_state, unknowns=(X, G),
+        extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
+               "race_names": names, "residual": R,
+               "traction_law": system.models.traction_law,
+               "jacobian": system.last_jacobian})
+
+
+def _kinematic_state(system: ball_residual_system, X, det, names, heat):
+    """The :class:`~thermobearing.state.KinematicState` of a converged solution."""
+    from ..state import ContactSet, KinematicState
+
+    cf = det["cf"]
+    Q = cf.load
+    sets = []
+    for k, name in enumerate(names):
         sets.append(ContactSet(
             race=name, normal_load=Q[:, k], semi_major=det["a"][:, k], semi_minor=det["b"][:, k],
             max_pressure=det["p0"][:, k], contact_angle=np.abs(cf.contact_angle[:, k]),
@@ -774,26 +828,14 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
             film_thickness=None if det["film"] is None else np.maximum(det["film"][:, k], 0.0),
             temperature=system.models.temperature,
             reduced_radius_x=det["rx"][:, k], reduced_radius_y=det["ry"][:, k]))
-    ks = KinematicState(
-        inner_speed=wi, outer_speed=0.0, cage_speed=wc, orbital_speed=np.full(system.Z, wc),
-        element_spin=spin, contacts=tuple(sets), attitude_angle=beta, azimuth=system.psi,
-        pocket_normal_force=np.abs(X[:, 5]), pocket_sliding_speed=det["pocket_sliding"],
-        element_drag_force=np.abs(det["Fd"]), origin="skidding",
-        extras={"solver_heat": heat, "shaft_torque": det["shaft_torque"]})
-    return BallSkiddingResult(
-        cage_speed_ratio=float(csr), theoretical_cage_speed_ratio=th,
-        kinematic_cage_speed_ratio=kin, over_skid=float(csr / th - 1.0), converged=True,
-        residual_norm=float(nrm), iterations=int(iters), wall_time=float(wall), inner_speed=wi,
-        cage_speed=float(wc), ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
-        delta_r=float(G[1]), spin=Om.copy(), spin_speed=spin, attitude_angle=beta,
-        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=Q, contact_angle=cf.contact_angle,
-        ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
-        spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
-        shaft_torque=float(det["shaft_torque"]), kinematic_state=ks, unknowns=(X, G),
-        extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
-               "race_names": names, "residual": R,
-               "traction_law": system.models.traction_law,
-               "jacobian": system.last_jacobian})
+    wc = float(det["wc"])
+    return KinematicState(
+        inner_speed=system.speed, outer_speed=0.0, cage_speed=wc,
+        orbital_speed=np.full(system.Z, wc), element_spin=np.linalg.norm(X[:, 2:5], axis=1),
+        contacts=tuple(sets), attitude_angle=np.arctan2(X[:, 3], -X[:, 2]),
+        azimuth=system.psi, pocket_normal_force=np.abs(X[:, 5]),
+        pocket_sliding_speed=det["pocket_sliding"], element_drag_force=np.abs(det["Fd"]),
+        origin="skidding", extras={"solver_heat": heat, "shaft_torque": det["shaft_torque"]})
 
 
 def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:
