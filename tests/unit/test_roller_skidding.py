@@ -362,3 +362,18 @@ def test_outer_pure_rolling_unloaded_zone(nu214, oil, state150):
 def test_unknown_unloaded_zone_model_is_an_error(nu214, oil):
     with pytest.raises(InputError):
         solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, unloaded_zone="rolls")
+
+
+def test_cage_force_balance_is_zero_at_the_solution(nu214, oil, state150):
+    # At the solved cage speed the drive of the loaded rollers equals the drag of the others
+    # (cage equation, paper 000 eq. 32); a faster cage has more drag than drive.
+    from thermobearing.skidding.roller import cage_force_balance
+
+    model = build_model(nu214, oil, T)
+    at = cage_force_balance(model, OMEGA, 150.0, state150.cage_speed)
+    assert at.n_loaded == state150.extras["n_loaded"]
+    assert at.drive > 0 and at.drag > 0
+    assert abs(at.residual) < 1e-6 * at.drive
+    assert at.roller_speed == pytest.approx(state150.roller_speed, rel=1e-6)
+    fast = cage_force_balance(model, OMEGA, 150.0, 1.2 * state150.cage_speed)
+    assert fast.residual < 0 and fast.drag > at.drag

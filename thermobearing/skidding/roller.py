@@ -710,6 +710,62 @@ def solve_model(
     )
 
 
+@dataclass(frozen=True)
+class CageForceBalance:
+    """Pocket forces at a prescribed cage speed (see :func:`cage_force_balance`) [N].
+
+    Attributes
+    ----------
+    cage_speed : the prescribed omega_c [rad/s].
+    drive : sum of the cage-equation terms of the rollers with an inner contact [N].
+    drag : minus the sum over the rollers without one [N] (positive: they hold the cage back).
+    residual : the cage equation, drive - drag - T_c/(d_m/2) [N] (> 0: the cage would speed up).
+    n_loaded : rollers with an inner contact.  roller_speed : (Z,) [rad/s].
+    """
+
+    cage_speed: float
+    drive: float
+    drag: float
+    residual: float
+    n_loaded: int
+    roller_speed: np.ndarray
+
+
+def cage_force_balance(model: RollerModel, omega: float, radial_load: float, cage_speed: float,
+                       *, azimuth: np.ndarray | None = None,
+                       whirl_acceleration: tuple[float, float] = (0.0, 0.0)
+                       ) -> CageForceBalance:
+    """Drive of the loaded rollers and drag of the others at a prescribed cage speed.
+
+    Diagnostic of the Z + 1 equations of paper 000: at ``cage_speed`` [rad/s] every roller is
+    put in moment balance (eqs. 28/31, bisection), the loads follow from the load
+    distribution with the centrifugal force at that cage speed (eqs. 20/23), and the cage
+    equation (eq. 32, energy-consistent form, module docstring) is split into the part of
+    the rollers with an inner contact (``drive``) and of those without (``drag``). At the
+    solved cage speed ``residual`` is 0; at a published cage speed it is the force the model
+    lacks (< 0) or has in excess (> 0) to run there. omega [rad/s], radial_load [N].
+    """
+    check_positive("speed", omega)
+    check_positive("cage_speed", cage_speed)
+    z = model.n_rollers
+    psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
+    fb = roller_body_force(model.roller_mass, model.pitch_diameter, cage_speed, psi,
+                           whirl_acceleration)
+    ld = roller_load_distribution(z, model.diametral_clearance, radial_load, model.k_inner,
+                                  model.k_outer, body_force=fb, azimuth=psi,
+                                  exponent=LINE_CONTACT_EXPONENT)
+    fbw = fb - model.roller_mass * 0.5 * model.pitch_diameter * cage_speed**2
+    mg = _gapped(model, ld)
+    wr = _roller_speeds(mg, omega, cage_speed, ld.inner_load, fbw, psi, whirl_acceleration)
+    e = evaluate(mg, omega, wr, cage_speed, ld.inner_load, fbw, psi, whirl_acceleration)
+    loaded = ld.inner_load > 0.0
+    drive = float(np.sum(e.cage_terms[loaded]))
+    drag = -float(np.sum(e.cage_terms[~loaded]))
+    return CageForceBalance(cage_speed=float(cage_speed), drive=drive, drag=drag,
+                            residual=float(e.cage_eq), n_loaded=int(np.count_nonzero(loaded)),
+                            roller_speed=wr)
+
+
 def as_warm_start(guess: Any) -> np.ndarray | None:
     """(omega_r, omega_c) array from an array, a RollerSkiddingResult or a WhirlResult."""
     if guess is None:
