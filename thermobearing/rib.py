@@ -14,29 +14,49 @@ inner raceway moves along +z), as in :mod:`thermobearing.skidding.roller`.
 
 Readings of the paper (it is garbled or under-specified in places; each is a choice):
 
-* eq. 1: ``R_p - L_p/2`` with eqs. 2-3 reduces identically to ``R_s - L_r/2``; we use the
-  reduced form. The approach of side K is
-  ``delta_K = [(1 - cos alpha)(R_s - L_r/2) - (C_a/2 + C_af) + X_K] cos(theta_f)``,
-  ``X_L = -X``, ``X_R = +X`` (eq. 5).
-* eq. 11: ``H_contact = H_rollercm - R_s sin(theta_f) +- L_r/2 sin(alpha_e)`` is the height
-  of the contact point above the inner raceway; its distance from the roller axis is
-  ``rho = D_w/2 - H_contact`` (the arm of eq. 16's ``M_e_theta_x``). A contact point above
-  the rib (``H_contact > h_f``) cannot exist: :class:`InputError`. A contact point below
-  the raceway level (``H_contact < 0``, large rib angle x crown radius) is kept as the
-  paper's own sweeps (rib angle to 0.7 deg and more, crown radius 600 mm and more at
-  R_s sin(theta_f) > D_w/2) require it; it means an undercut rib root.
-* eq. 6 is the Hertz point-contact law Q = K delta^1.5; we evaluate it with
-  :func:`thermobearing.hertz.point_contact_stiffness` (``method="brewe_hamrock_1977"`` are
-  the paper's eqs. 7-9 fits; the default "exact" differs by < 3 %).
+* eq. 1: ``R_p - L_p/2`` with eqs. 2-3 reduces identically to ``R_s - L_r/2``. Eq. 1 is the
+  change, with skew ``alpha`` and axial shift ``X``, of the *support function* of the
+  crowned end face (a sphere of radius R_s centred on the roller axis at ``x = +-(L_r/2 -
+  R_s)``) in the direction of the rib normal ``n_K = (+-cos theta_f, -sin theta_f, 0)``,
+  ``delta_K = h_K(alpha) - h_K(0) + (X_K - C_a/2 - C_af) cos(theta_f)``; for the sphere
+  ``h_K(alpha) - h_K(0) = (R_s - L_r/2)(1 - cos alpha) cos(theta_f)``, the paper's term. We
+  evaluate it in this general form (:func:`face_contact`), which also gives *where* the
+  contact is: the point of the sphere whose normal is ``n_K``, i.e. ``c_K + R_s m`` with
+  ``m = R(alpha)^T n_K`` in roller axes. Its height above the inner raceway is eq. 11
+  (independent of skew), but it moves **circumferentially** by
+  ``z_K = (R_s - L_r/2) sin(alpha)`` -- about 3 mm at the 0.6 deg skew at which a centred
+  roller of the base case reaches the rib: a contact point that far from the roller axis
+  slides radially at ``omega_r z_K`` over the rib (eq. 24 below). Larger axial clearance ->
+  contact at larger skew -> larger offset and sliding speed (paper 003 Fig. 9).
+  ``end_face="cap"`` (an option, not the paper's model) bounds the sphere by the chamfer:
+  a toroidal blend of radius = chamfer between the sphere and the roller's cylinder;
+  beyond its edge the contact moves onto the blend (smaller curvature radius, point
+  closer to the roller axis height).
+* eq. 6 is the Hertz point-contact law Q = K delta^1.5 with the Brewe-Hamrock 1977 fits of
+  eqs. 7-9. As printed, eq. 6 has the two elliptic integrals swapped: with the paper's own
+  eq. 9 (Gamma = 1.0003 + 0.5968 R_x/R_y is the *second* kind E, Pi = 1.5277 + 0.6023
+  ln(R_y/R_x) the *first* kind K) the consistent law is
+  ``Q = (pi k E'/3) [2 R_eff Gamma (delta/Pi)^3]^(1/2)`` (Hamrock & Dowson; it inverts the
+  approach delta = K [(9/(2 E R))(Q/(pi k E'))^2]^(1/3)); eq. 23 uses Gamma correctly.
 * eq. 15 as printed has ``sqrt((D_w/2)^2 - (D_w/2)^2) = 0``; the consistent form is the
   area of the end-face segment covered by a rib of height h_f,
   ``int R/C_a dA = (4/3)(R_0/C_a) h_f sqrt((D_w/2)^2 - (D_w/2 - h_f)^2)`` (segment area
   ~ 4/3 x height x half chord). ``nu rho_e`` is the dynamic viscosity of the oil/air
   mixture in the gap; eq. 14 then has units Pa s x 1/s x m^2 = N.
-* eq. 24: the rib speed at the contact point is ``(omega_i - omega_c) (d_i/2 + H_contact)``
-  and the roller end-face speed ``omega_r rho - alpha_dot x_K`` (our kinematics, the
-  paper gives no formula); the skew-rate term is the "roller swing speed" the paper's
-  discussion of Figs. 11-12 invokes.
+* eq. 24 ``V' = |v_i - v_r|`` is taken as the magnitude of the *vector* difference of the
+  rib and end-face velocities at the contact point, tangential to the rib (the paper gives
+  no formula). In the cage frame the rib turns at ``omega_i - omega_c`` about the bearing
+  axis; the roller spins at ``omega_r`` about its skewed axis and skews at ``alpha_dot``.
+  At the contact point of eq. 11 (``rho = R_s sin(theta_f)`` below the roller axis) and
+  offset ``z_K`` this gives a circumferential part
+  ``(omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho - alpha_dot x_K`` (the only part
+  for ``alpha = 0``) and a radial part ``~ -(omega_r + omega_i - omega_c) z_K``. The
+  friction of eq. 12 acts along this sliding direction, so its radial part brakes the
+  roller spin with the arm ``z_K`` (M_e_theta_x of eq. 16 generalised) -- the "drag of the
+  rib on the roller end face" that the paper's discussion of Figs. 9, 11, 12 invokes.
+* eq. 12-13: the drag F_G of eq. 14 acts on each face (with or without contact) along the
+  circumferential sliding at the rib mid-height, arm D_w/2 - h_f/2 (eq. 17); the
+  Coulomb part mu Q_ez along the sliding direction at the contact point.
 """
 
 from __future__ import annotations
@@ -46,9 +66,13 @@ from dataclasses import dataclass, replace
 from typing import Any, NamedTuple
 
 import numpy as np
+from numba import njit
 
 from .errors import InputError, check_positive, check_range
 from .hertz import point_contact, point_contact_stiffness
+
+#: end-face shapes: the paper's sphere (eqs. 1, 11) or the sphere cap with a chamfer blend
+END_FACES = ("sphere", "cap")
 
 #: default roller chamfer [m] (paper 003 sec. 11: 0.5 +- 0.1 mm before, 0.5 +- 0.05 after)
 DEFAULT_CHAMFER = 0.5e-3
@@ -70,7 +94,9 @@ class RibGeometry:
     rib_angle : theta_f [rad] (eq. 4).  axial_clearance : C_a [m] (eq. 1, total).
     rib_height : h_f [m] (eq. 15).  inner_raceway_diameter : d_i [m].
     effective_modulus : E' [Pa] (Hamrock convention).
-    pitch_diameter : d_m [m].  chamfer : roller chamfer [m].
+    pitch_diameter : d_m [m].  chamfer : roller chamfer [m] (blend radius of ``"cap"``).
+    end_face : "sphere" (paper eqs. 1, 11: the crowned face as a whole sphere) or "cap"
+        (sphere cap bounded by a toroidal chamfer blend; see module notes).
     """
 
     roller_diameter: float
@@ -83,6 +109,7 @@ class RibGeometry:
     effective_modulus: float
     pitch_diameter: float
     chamfer: float = DEFAULT_CHAMFER
+    end_face: str = "sphere"
 
     def __post_init__(self) -> None:
         for name in ("roller_diameter", "roller_length", "crown_radius", "rib_height",
@@ -91,6 +118,8 @@ class RibGeometry:
         check_positive("rib.axial_clearance", self.axial_clearance, allow_zero=True)
         check_range("rib.rib_angle", self.rib_angle, 0.0, math.radians(10.0), unit="rad")
         check_range("rib.chamfer", self.chamfer, 0.0, 0.5 * self.roller_diameter, unit="m")
+        if self.end_face not in END_FACES:
+            raise InputError("rib.end_face", self.end_face, END_FACES)
         if self.crown_radius <= 0.5 * self.roller_length:
             raise InputError("rib.crown_radius", self.crown_radius,
                              f"a value > L_r/2 = {0.5 * self.roller_length:.4g} m")
@@ -139,20 +168,67 @@ class RibGeometry:
         """(delta_L, delta_R) [m] end-face/rib approach, eqs. 1-5 (negative = gap).
 
         skew alpha_r [rad]; axial_shift X_r [m] of the roller relative to the inner ring
-        (positive towards the right rib).
+        (positive towards the right rib). Evaluated as the change of the end face's support
+        function along the rib normal (module notes; identical to eq. 1 for the sphere).
         """
         a = np.asarray(skew, float)
         x = np.asarray(axial_shift, float)
-        base = ((1.0 - np.cos(a)) * (self.crown_radius - 0.5 * self.roller_length)
-                - (0.5 * self.axial_clearance + self.unilateral_clearance(centre_height)))
-        c = math.cos(self.rib_angle)
-        return (base - x) * c, (base + x) * c
+        gp = self.params()
+        gp[_G_CA2] = 0.5 * self.axial_clearance + float(
+            np.max(self.unilateral_clearance(centre_height)))
+        out = []
+        for side in (-1, 1):
+            sup = np.vectorize(lambda aa, s=side: _support(gp, s, aa)[0])(a)
+            out.append((sup - gp[_G_S0] + (side * x - gp[_G_CA2]) * gp[_G_CT])[()])
+        return out[0], out[1]
+
+    def contact_point(self, skew: Any, side: int = 1) -> tuple[Any, Any, Any]:
+        """(H_contact [m], z_K [m], on_blend) of side ``side`` at skew ``skew`` [rad].
+
+        H_contact: height of the contact point above the inner raceway (eq. 11 for the
+        sphere); z_K: its circumferential offset from the roller's radial plane
+        ((R_s - L_r/2) sin alpha for the sphere); on_blend: True where a ``"cap"`` face
+        touches with its chamfer blend.
+        """
+        gp = self.params()
+
+        def one(aa: float) -> tuple[float, float, float]:
+            _, px, py, pz, blend = _support(gp, side, aa)
+            c, s = math.cos(aa), math.sin(aa)
+            return 0.5 * self.roller_diameter + py, -px * s + pz * c, blend
+
+        h, z, b = np.vectorize(one)(np.asarray(skew, float))
+        return h[()], z[()], (b > 0.5)[()]
+
+    def params(self) -> np.ndarray:
+        """Float vector of the geometry for the jitted contact (:func:`face_contact`)."""
+        gp = np.zeros(_G_N)
+        gp[_G_RS] = self.crown_radius
+        gp[_G_HL] = 0.5 * self.roller_length
+        gp[_G_R] = 0.5 * self.roller_diameter
+        gp[_G_CT] = math.cos(self.rib_angle)
+        gp[_G_ST] = math.sin(self.rib_angle)
+        gp[_G_CA2] = 0.5 * self.axial_clearance + float(self.unilateral_clearance())
+        gp[_G_RC0] = 0.5 * self.inner_raceway_diameter + 0.5 * self.roller_diameter
+        gp[_G_DI2] = 0.5 * self.inner_raceway_diameter
+        gp[_G_E] = self.effective_modulus
+        gp[_G_RG] = 0.5 * self.roller_diameter - 0.5 * self.rib_height
+        if self.end_face == "cap" and self.chamfer > 0.0:
+            rc = self.chamfer
+            rt = 0.5 * self.roller_diameter - rc
+            gp[_G_CAP] = 1.0
+            gp[_G_RCH] = rc
+            gp[_G_RT] = rt
+            gp[_G_XT] = math.sqrt((self.crown_radius - rc) ** 2 - rt**2)
+        gp[_G_S0] = _support(gp, 1, 0.0)[0]
+        return gp
 
     @property
     def stiffness(self) -> float:
-        """K [N/m^1.5] with Q = K delta^1.5 (eq. 6 via hertz.point_contact_stiffness)."""
+        """K [N/m^1.5] with Q = K delta^1.5 at zero skew (eqs. 6-10, Brewe-Hamrock fits)."""
         rx, ry = self.curvature()
-        return float(point_contact_stiffness(rx, ry, self.effective_modulus))
+        return float(point_contact_stiffness(rx, ry, self.effective_modulus,
+                                             method="brewe_hamrock_1977"))
 
 
 def rib_geometry(bearing: Any, **overrides: Any) -> RibGeometry:
@@ -180,7 +256,7 @@ def rib_geometry(bearing: Any, **overrides: Any) -> RibGeometry:
         if fields[key] is None:
             name = "end_face_crown_radius" if key == "crown_radius" else key
             raise InputError(f"bearing.{name}", None, "a value (needed by the rib contact)")
-    return RibGeometry(**{k: float(v) for k, v in fields.items()})
+    return RibGeometry(**{k: (v if k == "end_face" else float(v)) for k, v in fields.items()})
 
 
 def with_changes(geom: RibGeometry, **changes: Any) -> RibGeometry:
@@ -229,15 +305,169 @@ def rib_sliding_speed(geom: RibGeometry, inner_speed: Any, cage_speed: Any, roll
     return vi - vr
 
 
+# indices of the geometry vector RibGeometry.params() (jitted contact)
+(_G_RS, _G_HL, _G_R, _G_CT, _G_ST, _G_CA2, _G_RC0, _G_DI2, _G_E, _G_RG, _G_CAP, _G_RCH,
+ _G_RT, _G_XT, _G_S0, _G_N) = range(16)
+#: columns of :func:`face_contact`'s result
+(F_Q, F_FX, F_FY, F_FZ, F_MSKEW, F_MSPIN, F_VT, F_VZ, F_RX, F_RY, F_H, F_Z, F_HEAT,
+ F_FRZ, F_N) = range(15)
+
+
+@njit(cache=True)
+def _support(gp: np.ndarray, side: int, a: float) -> tuple[float, float, float, float, float]:
+    """(h, p_x, p_y, p_z, on_blend): support value of end face ``side`` along its rib normal
+    n = (side cos theta_f, -sin theta_f, 0) at skew ``a`` [rad], and the contact point in
+    roller axes [m] (module notes; for the sphere h changes as paper 003 eq. 1)."""
+    ct = gp[_G_CT]
+    mx = ct * math.cos(a)
+    my = -gp[_G_ST]
+    mz = side * ct * math.sin(a)
+    rs = gp[_G_RS]
+    hl = gp[_G_HL]
+    myz = math.sqrt(my * my + mz * mz)
+    if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
+        rt = gp[_G_RT]
+        rc = gp[_G_RCH]
+        xt = hl - rs + gp[_G_XT]
+        h = mx * xt + rt * myz + rc
+        return (h, side * (xt + rc * mx), rt * my / myz + rc * my, rt * mz / myz + rc * mz,
+                1.0)
+    return (hl - rs) * mx + rs, side * (hl - rs + rs * mx), rs * my, rs * mz, 0.0
+
+
+@njit(cache=True)
+def _stiffness_bh(rx: float, ry: float, ep: float) -> float:
+    """K [N/m^1.5] of Q = K delta^1.5, Brewe-Hamrock fits (paper 003 eqs. 6-9, consistent
+    form: module notes)."""
+    ratio = max(rx, ry) / min(rx, ry)
+    r = 1.0 / (1.0 / rx + 1.0 / ry)
+    k = max(1.0339 * ratio**0.636, 1.0)
+    big_e = 1.0003 + 0.5968 / ratio
+    big_k = 1.5277 + 0.6023 * math.log(ratio)
+    return math.pi * k * ep * math.sqrt(2.0 * big_e * r / (9.0 * big_k**3))
+
+
+@njit(cache=True)
+def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
+                 om: float, xd: float, mu: float, f_g: float, sreg: float) -> np.ndarray:
+    """One end face / rib contact (paper 003 eqs. 1-17, 24), jitted scalar kernel.
+
+    gp : :meth:`RibGeometry.params`.  side : -1 left, +1 right.  a : skew alpha [rad].
+    x : axial shift X [m].  ad : skew rate [rad/s].  wr : roller spin omega_r [rad/s]
+    (rolling sense).  om : omega_i - omega_c [rad/s].  xd : axial speed X' [m/s].
+    mu : Coulomb coefficient [-].  f_g : lubricant drag force of eq. 14 [N] (>= 0).
+    sreg : regularising speed [m/s] of the friction direction (0: exact).
+
+    Returns a vector indexed by the ``F_*`` constants: Q_ez [N]; force on the roller
+    (x axial, y radial, z circumferential) [N]; skew moment (about y) and spin moment
+    (about the roller axis, rolling sense positive) [N m]; tangential sliding speed
+    |v_i - v_r| (eq. 24) [m/s]; its circumferential part [m/s]; contact radii R_x, R_y [m];
+    H_contact [m]; circumferential offset z_K [m]; friction heat mu Q |v| + F_G |v_g| [W];
+    circumferential friction (Coulomb + drag) on the roller [N].
+    """
+    out = np.zeros(F_N)
+    h, px, py, pz, blend = _support(gp, side, a)
+    ct = gp[_G_CT]
+    st = gp[_G_ST]
+    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
+    rs = gp[_G_RS]
+    if blend > 0.5:
+        rho = math.sqrt(py * py + pz * pz)
+        mz = side * ct * math.sin(a)
+        rx = gp[_G_RCH]
+        ry = rho / math.sqrt(st * st + mz * mz)
+    else:
+        rx = 1.0 / (1.0 / rs + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py))
+        ry = rs
+    q = 0.0
+    if delta > 0.0:
+        q = _stiffness_bh(rx, ry, gp[_G_E]) * delta * math.sqrt(delta)
+    c = math.cos(a)
+    s = math.sin(a)
+    # contact point from the roller centre, cage axes
+    r_x = px * c + pz * s
+    r_y = py
+    r_z = -px * s + pz * c
+    # roller angular velocity: spin about the skewed axis (rolling sense = -axis) + skew rate
+    wx = -wr * c
+    wy = ad
+    wz = wr * s
+    vrx = wy * r_z - wz * r_y + xd
+    vry = wz * r_x - wx * r_z
+    vrz = wx * r_y - wy * r_x
+    # rib: turns at om about the bearing axis, which lies rc0 below the roller axis
+    sx = -vrx
+    sy = -om * r_z - vry
+    sz = om * (r_y + gp[_G_RC0]) - vrz
+    sn = sx * side * ct - sy * st
+    tx = sx - sn * side * ct
+    ty = sy + sn * st
+    tz = sz
+    vt = math.sqrt(tx * tx + ty * ty + tz * tz)
+    if sreg > 0.0:
+        ff = mu * q / math.sqrt(vt * vt + sreg * sreg)
+    else:
+        ff = mu * q / vt if vt > 0.0 else 0.0
+    fx = -q * side * ct + ff * tx
+    fy = q * st + ff * ty
+    fz = ff * tz
+    mxm = r_y * fz - r_z * fy
+    mym = r_z * fx - r_x * fz
+    mzm = r_x * fy - r_y * fx
+    # lubricant drag (eqs. 14, 17): circumferential, at the rib mid-height of the face
+    gx = side * gp[_G_HL] * c
+    gy = -gp[_G_RG]
+    vg = om * (gy + gp[_G_RC0]) - (wx * gy - wy * gx)
+    fd = 0.0
+    if f_g > 0.0:
+        if sreg > 0.0:
+            fd = f_g * math.tanh(vg / sreg)
+        else:
+            fd = f_g if vg >= 0.0 else -f_g
+    mxm += gy * fd
+    mym -= gx * fd
+    fz += fd
+    out[F_Q] = q
+    out[F_FX] = fx
+    out[F_FY] = fy
+    out[F_FZ] = fz
+    out[F_MSKEW] = mym
+    out[F_MSPIN] = -mxm * c + mzm * s
+    out[F_VT] = vt
+    out[F_VZ] = tz
+    out[F_RX] = rx
+    out[F_RY] = ry
+    out[F_H] = gp[_G_R] + r_y
+    out[F_Z] = r_z
+    out[F_HEAT] = ff * vt * vt + abs(fd * vg)
+    out[F_FRZ] = ff * tz + fd
+    return out
+
+
+@njit(cache=True)
+def _faces(gp: np.ndarray, a: np.ndarray, x: np.ndarray, ad: np.ndarray, wr: np.ndarray,
+           om: float, xd: np.ndarray, mu: float, f_g: float, sreg: float) -> np.ndarray:
+    """:func:`face_contact` of both faces over 1-D arrays -> (n, 2, F_N)."""
+    n = a.shape[0]
+    out = np.zeros((n, 2, F_N))
+    for i in range(n):
+        out[i, 0] = face_contact(gp, -1, a[i], x[i], ad[i], wr[i], om, xd[i], mu, f_g, sreg)
+        out[i, 1] = face_contact(gp, 1, a[i], x[i], ad[i], wr[i], om, xd[i], mu, f_g, sreg)
+    return out
+
+
 class RibForces(NamedTuple):
     """Forces and moments of both ribs on one roller (paper 003 eq. 16), SI.
 
-    normal_left/right : Q_ez^K [N].  friction_left/right : Q_e_theta^K [N] along +z.
-    sliding_left/right : v_i - v_r [m/s].  pressure_left/right : P = 3Q/(2 pi a b) [Pa].
-    pv_left/right : P |v| [Pa m/s] (eqs. 21-24).  heat_left/right : |Q_e_theta v| [W].
-    axial_force : Q_ez^X on the roller along +x [N].  radial_force : Q_ez^Y [N].
-    skew_moment : moment about y (skew axis) [N m].  spin_moment : about the roller axis,
-    positive in the rolling sense [N m].  tangential_force : sum of Q_e_theta [N].
+    normal_left/right : Q_ez^K [N].  friction_left/right : circumferential friction on the
+    roller, Coulomb + drag (Q_e_theta^K of eq. 12) [N].  sliding_left/right : circumferential
+    part of v_i - v_r at the contact point [m/s] (eq. 13's sign).  pressure_left/right :
+    P = 3Q/(2 pi a b) [Pa].  pv_left/right : P |v_i - v_r| with the full tangential sliding
+    speed (eqs. 21-24) [Pa m/s].  heat_left/right : friction power [W].  axial_force : on
+    the roller along +x [N].  radial_force [N].  skew_moment : about y [N m].  spin_moment :
+    about the roller axis, rolling sense positive [N m].  tangential_force : sum of the
+    circumferential forces [N].  slide_speed_left/right : |v_i - v_r| (eq. 24) [m/s].
+    contact_height_left/right : H_contact [m].  contact_offset_left/right : z_K [m].
     """
 
     normal_left: Any
@@ -257,11 +487,17 @@ class RibForces(NamedTuple):
     skew_moment: Any
     spin_moment: Any
     tangential_force: Any
+    slide_speed_left: Any = 0.0
+    slide_speed_right: Any = 0.0
+    contact_height_left: Any = 0.0
+    contact_height_right: Any = 0.0
+    contact_offset_left: Any = 0.0
+    contact_offset_right: Any = 0.0
 
 
 def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: float,
                cage_speed: float, roller_spin: Any, skew_rate: Any = 0.0,
-               friction_coefficient: float = DEFAULT_RIB_FRICTION,
+               axial_speed: Any = 0.0, friction_coefficient: float = DEFAULT_RIB_FRICTION,
                mixture_viscosity: float = 0.0, smooth_sign: float | None = None,
                with_pressure: bool = True) -> RibForces:
     """Both end-face/rib contacts of a roller, paper 003 eqs. 1-17 and 21-24.
@@ -272,61 +508,56 @@ def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: f
     skew : alpha_r [rad].  axial_shift : X_r [m] (towards the right rib).
     inner_speed, cage_speed : omega_i, omega_c [rad/s].
     roller_spin : omega_r [rad/s] (rolling sense, cage frame).
-    skew_rate : alpha_dot [rad/s].
+    skew_rate : alpha_dot [rad/s].  axial_speed : X' [m/s].
     friction_coefficient : mu of eq. 12 [-].
     mixture_viscosity : nu rho_e of eq. 14 [Pa s] (0: no drag term).
-    smooth_sign : None -> the exact sign of eq. 13; a speed v_s [m/s] -> tanh(v / v_s) (for
-        the integrator).
-    with_pressure : compute P and PV (Hertz a, b; eq. 22-23) -- skip inside the dynamics.
+    smooth_sign : None -> the exact direction of eq. 13; a speed v_s [m/s] -> the
+        regularised direction v / sqrt(v^2 + v_s^2) (for the integrator).
+    with_pressure : compute P and PV (Hertz a, b; eqs. 22-23) -- skip inside the dynamics.
 
     Returns
     -------
-    :class:`RibForces`. Sign conventions in the module docstring. Friction is along the
-    rib's velocity relative to the roller (eq. 13: C = +1 for v_i >= v_r).
+    :class:`RibForces` (arrays broadcast over the inputs). Sign conventions in the module
+    docstring. Kernel: :func:`face_contact`.
     """
     check_range("friction_coefficient", friction_coefficient, 0.0, 1.0)
     check_positive("mixture_viscosity", mixture_viscosity, allow_zero=True)
-    d_l, d_r = geom.approach(skew, axial_shift)
-    q_l, q_r = rib_normal_force(geom, d_l), rib_normal_force(geom, d_r)
-    h = geom.contact_height()
-    rho = 0.5 * geom.roller_diameter - h
-    v_l = rib_sliding_speed(geom, inner_speed, cage_speed, roller_spin, skew_rate, -1, h)
-    v_r = rib_sliding_speed(geom, inner_speed, cage_speed, roller_spin, skew_rate, +1, h)
+    arrs = np.broadcast_arrays(*(np.asarray(v, float) for v in (
+        skew, axial_shift, skew_rate, roller_spin, axial_speed)))
+    shape = arrs[0].shape
+    flat = [np.ascontiguousarray(v.ravel()) for v in arrs]
+    f_g = 0.0
     if mixture_viscosity > 0.0:
-        f_g, _ = lubricant_drag(geom, inner_speed, cage_speed, mixture_viscosity)
-        f_g = abs(float(f_g))
-    else:
-        f_g = 0.0
-    if smooth_sign is None:
-        c_l, c_r = np.where(v_l >= 0, 1.0, -1.0), np.where(v_r >= 0, 1.0, -1.0)
-    else:
-        c_l, c_r = np.tanh(v_l / smooth_sign), np.tanh(v_r / smooth_sign)
-    fr_l = c_l * (f_g + friction_coefficient * q_l)
-    fr_r = c_r * (f_g + friction_coefficient * q_r)
-    ct, st = math.cos(geom.rib_angle), math.sin(geom.rib_angle)
-    arm = geom.crown_radius - 0.5 * geom.roller_length
-    half = 0.5 * geom.roller_length + 0.5 * geom.axial_clearance
-    sa = np.sin(np.asarray(skew, float))
-    skew_moment = (-(q_l + q_r) * ct * arm * sa        # M_er, restoring (eq. 16)
-                   + (fr_l - fr_r) * half)            # M_e_theta (eq. 16)
-    # spin moment: eq. 16 M_e_theta_x with the friction at arm rho and the drag at the
-    # mid-rib arm of eq. 17, both along the friction direction
-    r_g = 0.5 * geom.roller_diameter - 0.5 * geom.rib_height
-    spin_moment = (c_l * friction_coefficient * q_l + c_r * friction_coefficient * q_r) * rho \
-        + (c_l + c_r) * f_g * r_g
+        f_g = abs(float(lubricant_drag(geom, inner_speed, cage_speed, mixture_viscosity)[0]))
+    sreg = 0.0 if smooth_sign is None else float(smooth_sign)
+    res = _faces(geom.params(), flat[0], flat[1], flat[2], flat[3],
+                 float(inner_speed) - float(cage_speed), flat[4], friction_coefficient, f_g,
+                 sreg)
+
+    def col(side: int, j: int) -> Any:
+        return res[:, side, j].reshape(shape)[()]
+
+    q_l, q_r = col(0, F_Q), col(1, F_Q)
     if with_pressure:
-        rx, ry = geom.curvature(h)
-        p_l = point_contact(q_l, rx, ry, geom.effective_modulus).max_pressure
-        p_r = point_contact(q_r, rx, ry, geom.effective_modulus).max_pressure
+        p_l = point_contact(q_l, col(0, F_RX), col(0, F_RY), geom.effective_modulus,
+                            method="brewe_hamrock_1977").max_pressure
+        p_r = point_contact(q_r, col(1, F_RX), col(1, F_RY), geom.effective_modulus,
+                            method="brewe_hamrock_1977").max_pressure
     else:
-        p_l = p_r = np.zeros(np.shape(q_l))
+        p_l = p_r = np.zeros(shape)[()]
+    v_l, v_r = col(0, F_VT), col(1, F_VT)
     return RibForces(
-        normal_left=q_l, normal_right=q_r, friction_left=fr_l, friction_right=fr_r,
-        sliding_left=v_l, sliding_right=v_r, pressure_left=p_l, pressure_right=p_r,
-        pv_left=p_l * np.abs(v_l), pv_right=p_r * np.abs(v_r),
-        heat_left=np.abs(fr_l * v_l), heat_right=np.abs(fr_r * v_r),
-        axial_force=(q_l - q_r) * ct, radial_force=(q_l + q_r) * st,
-        skew_moment=skew_moment, spin_moment=spin_moment, tangential_force=fr_l + fr_r)
+        normal_left=q_l, normal_right=q_r, friction_left=col(0, F_FRZ),
+        friction_right=col(1, F_FRZ), sliding_left=col(0, F_VZ), sliding_right=col(1, F_VZ),
+        pressure_left=p_l, pressure_right=p_r, pv_left=p_l * v_l, pv_right=p_r * v_r,
+        heat_left=col(0, F_HEAT), heat_right=col(1, F_HEAT),
+        axial_force=col(0, F_FX) + col(1, F_FX), radial_force=col(0, F_FY) + col(1, F_FY),
+        skew_moment=col(0, F_MSKEW) + col(1, F_MSKEW),
+        spin_moment=col(0, F_MSPIN) + col(1, F_MSPIN),
+        tangential_force=col(0, F_FZ) + col(1, F_FZ),
+        slide_speed_left=v_l, slide_speed_right=v_r,
+        contact_height_left=col(0, F_H), contact_height_right=col(1, F_H),
+        contact_offset_left=col(0, F_Z), contact_offset_right=col(1, F_Z))
 
 
 def unbalance_check(unbalance_mass: float, roller_mass: float) -> None:

@@ -52,7 +52,9 @@ def test_force_is_hertz_point_contact(geom):
     # Q = K delta^1.5 must invert hertz.point_contact's approach
     q = 200.0
     rx, ry = geom.curvature()
-    delta = point_contact(q, rx, ry, geom.effective_modulus).approach
+    # eqs. 6-9 are the Brewe-Hamrock fits: invert hertz's approach with the same method
+    delta = point_contact(q, rx, ry, geom.effective_modulus,
+                          method="brewe_hamrock_1977").approach
     from thermobearing.rib import rib_normal_force
     assert rib_normal_force(geom, delta) == pytest.approx(q, rel=1e-6)
     assert rib_normal_force(geom, -1e-6) == 0.0
@@ -79,14 +81,61 @@ def test_forces_balance_and_signs(geom):
     assert f.normal_right > f.normal_left > 0          # shifted right: right rib harder
     assert f.axial_force < 0                           # pushed back to the left
     assert f.skew_moment < 0                           # restores a positive skew (M_er)
-    assert f.friction_left == pytest.approx(0.05 * f.normal_left)  # v_i > v_r: C = +1
-    assert f.pv_right == pytest.approx(f.pressure_right * abs(f.sliding_right))
-    assert f.heat_right == pytest.approx(abs(f.friction_right * f.sliding_right))
-    pc = point_contact(f.normal_right, *geom.curvature(), geom.effective_modulus)
+    # Coulomb friction mu Q along the sliding direction: its circumferential part is
+    # mu Q v_z / |v| (v_z > 0: C = +1 of eq. 13), the heat mu Q |v|
+    assert f.sliding_left > 0
+    assert f.friction_left == pytest.approx(
+        0.05 * f.normal_left * f.sliding_left / f.slide_speed_left)
+    assert f.heat_right == pytest.approx(0.05 * f.normal_right * f.slide_speed_right)
+    assert f.pv_right == pytest.approx(f.pressure_right * f.slide_speed_right)
+    pc = point_contact(f.normal_right, *geom.curvature(), geom.effective_modulus,
+                       method="brewe_hamrock_1977")
     assert f.pressure_right == pytest.approx(3 * f.normal_right / (2 * math.pi * pc.a * pc.b))
+    # the radial sliding of the offset contact point brakes the spin (rolling sense < 0)
+    assert f.spin_moment < 0
     # no contact at zero skew and centred roller
     f0 = rib_forces(geom, 0.0, 0.0, inner_speed=3141.6, cage_speed=1400.0, roller_spin=1e4)
     assert f0.normal_left == 0 and f0.pv_left == 0 and f0.heat_left == 0
+
+
+def test_contact_point_moves_with_skew(geom):
+    # sphere end face: the contact point stays at the eq. 11 height but moves
+    # circumferentially by (R_s - L_r/2) sin(alpha) (hand value 297 mm x sin 0.0101)
+    h, z, blend = geom.contact_point(0.0101, side=1)
+    assert h == pytest.approx(geom.contact_height())
+    assert z == pytest.approx(0.297 * math.sin(0.0101), rel=1e-9)
+    assert not blend
+    _, z_left, _ = geom.contact_point(0.0101, side=-1)
+    assert z_left == pytest.approx(-z)
+    # sliding speed at skew (rigid-body velocities, hand formulas): circumferential part
+    # (w_i - w_c)(d_i/2 + H) - w_r rho cos(alpha); radial part (w_i - w_c) z + w_r p_z, with
+    # p_z = R_s cos(theta_f) sin(alpha) the point's offset from the (skewed) spin axis
+    wi, wc, wr = 3141.6, 1400.0, 16000.0
+    f = rib_forces(geom, 0.0101, 1e-5, inner_speed=wi, cage_speed=wc, roller_spin=wr)
+    rho = 0.5 * geom.roller_diameter - h
+    vz = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - wr * rho * math.cos(0.0101)
+    vy = (wi - wc) * z + wr * 0.3 * math.cos(geom.rib_angle) * math.sin(0.0101)
+    assert f.sliding_right == pytest.approx(vz, rel=1e-6)
+    # (the kernel removes the slide's component along the rib normal, (v_y sin theta_f)^2:
+    # 1e-5 relative here)
+    assert f.slide_speed_right == pytest.approx(math.hypot(vz, vy), rel=1e-4)
+    assert f.contact_offset_right == pytest.approx(z)
+
+
+def test_cap_end_face_blend(geom):
+    from thermobearing.rib import with_changes
+
+    cap = with_changes(geom, end_face="cap")
+    # at zero skew the sphere point (1.57 mm off the axis) is inside the 2.5 mm flat face:
+    # same approach as the sphere
+    assert cap.approach(0.0, 0.0)[1] == pytest.approx(geom.approach(0.0, 0.0)[1])
+    # at 0.0101 rad the sphere point would be 3.4 mm off the axis: the chamfer blend
+    # touches instead, higher up and with a smaller approach than the whole sphere
+    h, z, blend = cap.contact_point(0.0101)
+    assert blend and h > geom.contact_height()
+    assert cap.approach(0.0101, 0.0)[1] < geom.approach(0.0101, 0.0)[1]
+    with pytest.raises(InputError, match="end_face"):
+        with_changes(geom, end_face="flat")
 
 
 def test_lubricant_drag_units(geom):

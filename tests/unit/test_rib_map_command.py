@@ -12,6 +12,12 @@ def test_rib_map_writes_csv_and_png(tmp_path, capsys):
     rows = list(csv.reader((tmp_path / "rib_map_rib_angle.csv").open()))
     assert rows[0][0] == "rib_angle [deg]" and len(rows) == 3
     assert float(rows[1][0]) == 0.3 and float(rows[2][0]) == 0.5
-    assert all(float(r[2]) > 0 and float(r[4]) > 0 for r in rows[1:])   # PV, slip
+    col = {name: j for j, name in enumerate(rows[0])}
+    for r in rows[1:]:
+        assert float(r[col["pv_left [MPa m/s]"]]) > 0
+        assert float(r[col["slip_speed [m/s]"]]) > 0
+        # peak >= time mean; the mean while in contact >= the time mean
+        assert float(r[col["pv_peak_left [MPa m/s]"]]) >= float(r[col["pv_left [MPa m/s]"]])
+        assert float(r[col["pv_contact_left [MPa m/s]"]]) >= float(r[col["pv_left [MPa m/s]"]])
     assert (tmp_path / "rib_map_rib_angle.png").stat().st_size > 1000
     assert "PV L" in capsys.readouterr().out

@@ -28,7 +28,8 @@ def test_scalar_rhs_matches_rib_forces(base):
     y = np.array([3e-6, 0.01, 0.0125, 20.0])
     xd, xdd, ad, add, m_spin = rd._roller_rhs(m, c, y, 0.0, 0.0, 15000.0, 0.0)
     rf = rib_forces(m.geom, y[2], y[0], inner_speed=m.inner_speed, cage_speed=m.cage_speed,
-                    roller_spin=15000.0, skew_rate=y[3], friction_coefficient=m.rib_friction,
+                    roller_spin=15000.0, skew_rate=y[3], axial_speed=y[1],
+                    friction_coefficient=m.rib_friction,
                     mixture_viscosity=m.mixture_viscosity, smooth_sign=rd.SIGN_REGULARISATION)
     assert xdd * m.roller_mass == pytest.approx(float(rf.axial_force), rel=1e-9)
     assert m_spin == pytest.approx(float(rf.spin_moment), rel=1e-9)

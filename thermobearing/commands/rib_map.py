@@ -55,6 +55,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--spin", default="skidding", choices=("skidding", "rolling"),
                         help="roller spins from the quasi-static skidding solver (default) or "
                              "pure rolling for every roller (sensitivity)")
+    parser.add_argument("--end-face", default="sphere", choices=("sphere", "cap"),
+                        dest="end_face",
+                        help="roller end face: the paper's whole sphere (default) or the sphere "
+                             "cap with a chamfer blend (thermobearing.rib notes)")
     parser.add_argument("--cost", action="store_true",
                         help="print the cost of one base-case point (full and reduced)")
     parser.add_argument("--out", default="rib_map", help="output folder")
@@ -124,7 +128,8 @@ def run(args: argparse.Namespace) -> int:
     if args.cost:
         m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], max(masses),
-                           temperature=temperature, spin=args.spin)
+                           temperature=temperature, spin=args.spin,
+                           rib={"end_face": args.end_face})
         full, red = rd.simulate_full(m), rd.simulate_reduced(m)
         print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
               f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
@@ -137,17 +142,25 @@ def run(args: argparse.Namespace) -> int:
                   else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
-                              temperature=temperature, cache=cache, spin=args.spin)
+                              temperature=temperature, cache=cache, spin=args.spin,
+                              end_face=args.end_face)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow([f"{p} [{unit}]", "unbalance_mass [g]", "pv_left [MPa m/s]",
-                        "pv_right [MPa m/s]", "slip_speed [m/s]", "max_skew [deg]",
+                        "pv_right [MPa m/s]", "pv_peak_left [MPa m/s]",
+                        "pv_peak_right [MPa m/s]", "pv_contact_left [MPa m/s]",
+                        "pv_contact_right [MPa m/s]", "contact_slide_speed [m/s]",
+                        "slip_speed [m/s]", "max_skew [deg]",
                         "rib_contact_fraction [-]", "rib_heat_per_roller [W]", "cost [s]"])
             for r in rows:
                 w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
                             f"{r['pv_left'] / 1e6:.6g}", f"{r['pv_right'] / 1e6:.6g}",
-                            f"{r['slip_speed']:.6g}", f"{math.degrees(r['max_skew']):.5g}",
+                            f"{r['pv_peak_left'] / 1e6:.6g}", f"{r['pv_peak_right'] / 1e6:.6g}",
+                            f"{r['pv_contact_left'] / 1e6:.6g}",
+                            f"{r['pv_contact_right'] / 1e6:.6g}",
+                            f"{r['contact_slide_speed']:.6g}", f"{r['slip_speed']:.6g}",
+                            f"{math.degrees(r['max_skew']):.5g}",
                             f"{r['rib_contact_fraction']:.4g}", f"{r['rib_heat']:.5g}",
                             f"{r['cost_s']:.3g}"])
         print(f"{p}: {path}")

@@ -22,12 +22,20 @@ followed with the degrees of freedom in which the unbalance acts:
   share of the orbit it represents), spin fixed to the quasi-static value, the mean rib
   spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega;
   integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib contact's axial
-  mode). Base case (0.11 g): PV +1.6 %, slip +0.3 % against the full model at ~1/130 of
-  its cost (validation case ``paper003_pv_slip_trends``).
+  mode). Base case (0.11 g): PV -3.4 %, slip +0.3 % against the full model at ~1/57 of
+  its cost (24 s vs 0.42 s wall on a loaded 2-core machine; validation case
+  ``paper003_pv_slip_trends``).
 * roller spins: ``spin="skidding"`` (default) takes them from the quasi-static solver, whose
   unloaded rollers skid (about half the rolling speed at the base case); ``spin="rolling"``
   puts every roller at its pure-rolling spin (a sensitivity switch; it moves the PV minima
   against rib angle / crown radius onto the paper's values, see the case's SOURCE.md).
+
+Rib contact: both end faces through the jitted kernel :func:`thermobearing.rib.face_contact`
+(the same code as :func:`~thermobearing.rib.rib_forces`): the contact point moves
+circumferentially with the skew (z_K = (R_s - L_r/2) sin alpha for the paper's spherical
+end face), the friction acts along the full sliding velocity at that point (eq. 24 as a
+vector), so its radial part brakes the roller spin (M_rib,x below) and its circumferential
+part turns the roller about the skew axis.
 
 Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
 
@@ -74,9 +82,14 @@ from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError, InputError, check_positive, check_range
 from ..rib import (
+    _G_N,
     DEFAULT_RIB_FRICTION,
+    F_FX,
+    F_MSKEW,
+    F_MSPIN,
     SIGN_REGULARISATION,
     RibGeometry,
+    face_contact,
     lubricant_drag,
     rib_forces,
     rib_geometry,
@@ -231,9 +244,10 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 "spin": spin})
 
 
-# parameter vector of the jitted right-hand side (indices)
-(_K, _CT, _ARM, _BASE, _RHO, _RC, _FG, _RG, _UI, _UO, _LARM, _WI, _WC, _HL, _SREG, _MU,
- _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS, _JT, _HALF) = range(25)
+# parameter vector of the jitted right-hand side: the rib geometry vector
+# (RibGeometry.params, _G_N entries) followed by these dynamics scalars (indices)
+(_FG, _SREG, _MU, _UI, _UO, _LARM, _OM, _WC, _HL, _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS,
+ _JT, _NP) = range(_G_N, _G_N + 18)
 
 
 def _params(m: DynamicsModel) -> np.ndarray:
@@ -243,25 +257,18 @@ def _params(m: DynamicsModel) -> np.ndarray:
     if m.mixture_viscosity > 0.0 and g.axial_clearance > 0.0:
         f_g = abs(float(lubricant_drag(g, m.inner_speed, m.cage_speed,
                                        m.mixture_viscosity)[0]))
-    h = float(g.contact_height())
     wc = m.cage_speed
-    p = np.zeros(25)
-    p[_K] = g.stiffness
-    p[_CT] = math.cos(g.rib_angle)
-    p[_ARM] = g.crown_radius - 0.5 * g.roller_length
-    p[_BASE] = -(0.5 * g.axial_clearance + float(g.unilateral_clearance()))
-    p[_RHO] = 0.5 * g.roller_diameter - h
-    p[_RC] = 0.5 * g.inner_raceway_diameter + h
+    p = np.zeros(_NP)
+    p[:_G_N] = g.params()
     p[_FG] = f_g
-    p[_RG] = 0.5 * g.roller_diameter - 0.5 * g.rib_height
+    p[_SREG] = SIGN_REGULARISATION
+    p[_MU] = m.rib_friction
     p[_UI] = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
     p[_UO] = wc * 0.5 * m.outer_raceway_diameter
     p[_LARM] = m.effective_length / (2.0 * math.sqrt(3.0))
-    p[_WI] = m.inner_speed
+    p[_OM] = m.inner_speed - wc
     p[_WC] = wc
     p[_HL] = 0.5 * g.roller_length
-    p[_SREG] = SIGN_REGULARISATION
-    p[_MU] = m.rib_friction
     p[_MUT] = m.traction_limit
     p[_S0] = m.traction_speed
     p[_CP] = m.pocket_clearance
@@ -270,32 +277,23 @@ def _params(m: DynamicsModel) -> np.ndarray:
     p[_XU] = m.unbalance.axial_position
     p[_MASS] = m.roller_mass
     p[_JT] = m.transverse_inertia
-    p[_HALF] = 0.5 * g.roller_length + 0.5 * g.axial_clearance
     return p
 
 
 @njit(cache=True)
 def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, n_i: float, n_o: float,
          spin: float, psi: float) -> tuple[float, float, float, float, float]:
-    """(X', X'', alpha', alpha'', rib spin moment): the scalar form of
-    :func:`thermobearing.rib.rib_forces` plus raceway, cage and unbalance terms (module
-    notes; a test checks it against rib_forces)."""
-    b = (1.0 - math.cos(a)) * p[_ARM] + p[_BASE]
-    d_l = (b - x) * p[_CT]
-    d_r = (b + x) * p[_CT]
-    q_l = p[_K] * d_l * math.sqrt(d_l) if d_l > 0 else 0.0
-    q_r = p[_K] * d_r * math.sqrt(d_r) if d_r > 0 else 0.0
-    v_i = (p[_WI] - p[_WC]) * p[_RC]
-    s_l = math.tanh((v_i - (spin * p[_RHO] + ad * p[_HL])) / p[_SREG])
-    s_r = math.tanh((v_i - (spin * p[_RHO] - ad * p[_HL])) / p[_SREG])
-    mu = p[_MU]
-    fr_l = s_l * (p[_FG] + mu * q_l)
-    fr_r = s_r * (p[_FG] + mu * q_r)
-    sa = math.sin(a)
-    m_rib = -(q_l + q_r) * p[_CT] * p[_ARM] * sa + (fr_l - fr_r) * p[_HALF]
-    m_spin = (s_l * mu * q_l + s_r * mu * q_r) * p[_RHO] + (s_l + s_r) * p[_FG] * p[_RG]
+    """(X', X'', alpha', alpha'', rib spin moment): both faces of
+    :func:`thermobearing.rib.face_contact` (the kernel of :func:`~thermobearing.rib.rib_forces`)
+    plus raceway, cage and unbalance terms (module notes)."""
+    gp = p[:_G_N]
+    fl = face_contact(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fr = face_contact(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    m_rib = fl[F_MSKEW] + fr[F_MSKEW]
+    m_spin = fl[F_MSPIN] + fr[F_MSPIN]
     mu_t = p[_MUT]
     s0 = p[_S0]
+    sa = math.sin(a)
     f_race = (n_i * mu_t * math.tanh((-p[_UI] * sa - xd) / s0)
               + n_o * mu_t * math.tanh((p[_UO] * sa - xd) / s0))
     m_race = -(n_i + n_o) * mu_t * math.tanh(ad * p[_LARM] / s0) * p[_LARM]
@@ -305,7 +303,7 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, n_i: float, n_
         m_pocket = -math.copysign(1.0, a) * 2.0 * p[_KC] * over * p[_HL]
     f_cv = p[_MUE] * (spin - p[_WC]) ** 2
     m_unb = -p[_XU] * f_cv * math.sin(psi)
-    xdd = ((q_l - q_r) * p[_CT] + f_race) / p[_MASS]
+    xdd = (fl[F_FX] + fr[F_FX] + f_race) / p[_MASS]
     add = (m_rib + m_race + m_pocket + m_unb) / p[_JT]
     return xd, xdd, ad, add, m_spin
 
@@ -360,6 +358,9 @@ class RollerResponse:
     max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
     mean_spin_moment : time-mean rib moment about the roller axis [N m].
     model : "full" | "reduced".  cost_s : wall time [s].  n_rhs : right-hand-side calls.
+    pv_contact_left, pv_contact_right : mean P |v| over the time the face is in contact
+        [Pa m/s] (= pv_* / that face's contact fraction).
+    contact_slide_speed : mean |v_i - v_r| (eq. 24) of the faces while in contact [m/s].
     """
 
     pv_left: float
@@ -377,6 +378,9 @@ class RollerResponse:
     cost_s: float
     n_rhs: int
     series: dict[str, np.ndarray] = field(default_factory=dict, repr=False)
+    pv_contact_left: float = 0.0
+    pv_contact_right: float = 0.0
+    contact_slide_speed: float = 0.0
 
     @property
     def pv(self) -> float:
@@ -394,7 +398,8 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
     """PV, heat and slip along a sampled trajectory (exact sign of eq. 13)."""
     g = m.geom
     rf = rib_forces(g, a, x, inner_speed=m.inner_speed, cage_speed=m.cage_speed,
-                    roller_spin=spin, skew_rate=ad, friction_coefficient=m.rib_friction,
+                    roller_spin=spin, skew_rate=ad, axial_speed=xd,
+                    friction_coefficient=m.rib_friction,
                     mixture_viscosity=m.mixture_viscosity)
     wc = m.cage_speed
     u_i = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
@@ -404,6 +409,10 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
     return {"pv_left": rf.pv_left, "pv_right": rf.pv_right, "heat_left": rf.heat_left,
             "heat_right": rf.heat_right, "slip": slip, "v_roll": np.abs(v_roll),
             "contact": (rf.normal_left + rf.normal_right) > 0, "skew": a,
+            "contact_left": (rf.normal_left > 0).astype(float),
+            "contact_right": (rf.normal_right > 0).astype(float),
+            "slide_in_contact": (np.where(rf.normal_left > 0, rf.slide_speed_left, 0.0)
+                                 + np.where(rf.normal_right > 0, rf.slide_speed_right, 0.0)),
             "spin_moment": rf.spin_moment, "t": t}
 
 
@@ -459,10 +468,15 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
     if weights is None:
         weights = [(1.0, post)]
     keys = ("pv_left", "pv_right", "heat_left", "heat_right", "slip", "v_roll",
-            "spin_moment")
+            "spin_moment", "contact_left", "contact_right", "slide_in_contact")
     mean = {k: sum(w * _mean(p[k], p["t"]) for w, p in weights) for k in keys}
     contact = sum(w * _mean(p["contact"].astype(float), p["t"]) for w, p in weights)
+    f_l, f_r = mean["contact_left"], mean["contact_right"]
     return RollerResponse(
+        pv_contact_left=mean["pv_left"] / f_l if f_l > 0 else 0.0,
+        pv_contact_right=mean["pv_right"] / f_r if f_r > 0 else 0.0,
+        contact_slide_speed=(mean["slide_in_contact"] / (f_l + f_r)
+                             if f_l + f_r > 0 else 0.0),
         pv_left=mean["pv_left"], pv_right=mean["pv_right"],
         pv_peak_left=max(float(np.max(p["pv_left"])) for _, p in weights),
         pv_peak_right=max(float(np.max(p["pv_right"])) for _, p in weights),
@@ -551,12 +565,14 @@ PAPER003_BASE = {"speed": 30000.0 * math.pi / 30.0, "radial_load": 3000.0,
 def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                 unbalance_masses: Any, *, base: dict[str, float] | None = None,
                 model: str = "reduced", temperature: float = 353.15,
-                cache: dict | None = None, **model_options: Any) -> list[dict[str, float]]:
+                cache: dict | None = None, end_face: str = "sphere",
+                **model_options: Any) -> list[dict[str, float]]:
     """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
 
     One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
     pv_right [Pa m/s], slip_speed [m/s], ...). ``base`` overrides :data:`PAPER003_BASE`.
     ``cache`` (a dict) keeps the quasi-static skidding solutions by (speed, load).
+    ``end_face``: "sphere" (paper 003 eqs. 1, 11) or "cap" (:mod:`thermobearing.rib`).
     """
     if parameter not in MAP_PARAMETERS:
         raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
@@ -573,14 +589,18 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                 bearing, lubricant, point["speed"], point["radial_load"], float(mass),
                 temperature=temperature, pocket_clearance=point["pocket_clearance"],
                 rib={"axial_clearance": point["axial_clearance"],
-                     "rib_angle": point["rib_angle"], "crown_radius": point["crown_radius"]},
+                     "rib_angle": point["rib_angle"], "crown_radius": point["crown_radius"],
+                     "end_face": end_face},
                 quasi_static=cache.get(key), **model_options)
             cache[key] = m.extras["quasi_static"]
             r = simulate(m, model)
             rows.append({"parameter": parameter, "value": float(value),
                          "unbalance_mass": float(mass), "pv_left": r.pv_left,
                          "pv_right": r.pv_right, "pv_peak_left": r.pv_peak_left,
-                         "pv_peak_right": r.pv_peak_right, "slip_speed": r.slip_speed,
+                         "pv_peak_right": r.pv_peak_right, "pv_contact_left": r.pv_contact_left,
+                         "pv_contact_right": r.pv_contact_right,
+                         "contact_slide_speed": r.contact_slide_speed,
+                         "slip_speed": r.slip_speed,
                          "rolling_slip_speed": r.rolling_slip_speed,
                          "max_skew": r.max_skew, "rib_contact_fraction": r.rib_contact_fraction,
                          "rib_heat": r.rib_heat, "cost_s": r.cost_s})
