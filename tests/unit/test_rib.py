@@ -224,3 +224,24 @@ def test_rib_heat_source_unbalance_option():
     assert sum(p.power for p in dyn.force_pairs) == pytest.approx(dyn.total, rel=1e-9)
     with pytest.raises(InputError, match="unbalance_mass"):
         HEAT_SOURCES.get("rib_friction")(_ctx(0.0, {"rib_friction": {"unbalance_mass": -1.0}}))
+
+
+def test_contact_skew_and_sliding_grow_with_axial_clearance(geom):
+    # paper 003 sec. 10.1: with a larger axial clearance the roller skews further before
+    # its end face reaches the rib; the contact point is then further off the roller's
+    # radial plane (z_K = (R_s - L_r/2) sin alpha) and slides faster over the rib.
+    from scipy.optimize import brentq
+
+    from thermobearing.rib import with_changes
+
+    skews, slides = [], []
+    for ca in (0.01e-3, 0.05e-3, 0.09e-3):
+        g = with_changes(geom, axial_clearance=ca)
+        a = brentq(lambda s, g=g: float(g.approach(s, 0.0)[1]), 0.0, 0.1)
+        # eq. 1 at X = 0: (R_s - L_r/2)(1 - cos a) = C_a/2 (hand inversion)
+        assert a == pytest.approx(math.acos(1.0 - 0.5 * ca / 0.297), rel=1e-6)
+        f = rib_forces(g, a, 0.0, inner_speed=3141.6, cage_speed=730.0, roller_spin=16700.0)
+        skews.append(a)
+        slides.append(float(f.slide_speed_right))
+    assert skews[0] < skews[1] < skews[2]
+    assert slides[0] < slides[1] < slides[2]

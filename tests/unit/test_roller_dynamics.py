@@ -122,3 +122,22 @@ def test_rk4_step_convergence(base):
     assert r2.max_skew == pytest.approx(r1.max_skew, rel=0.02)
     assert r2.slip_speed == pytest.approx(r1.slip_speed, rel=1e-3)
     assert (r2.pv_left + r2.pv_right) == pytest.approx(r1.pv_left + r1.pv_right, rel=0.15)
+
+
+def test_contact_pv_and_skew_grow_with_axial_clearance(base):
+    # the mechanism of paper 003 Fig. 9 in the reduced model: larger clearance -> larger
+    # skew at contact and faster sliding while in contact, less time on the rib (the
+    # time-mean PV then falls: reported in the validation case's SOURCE.md)
+    b, lub, m = base
+    qs = m.extras["quasi_static"]
+    out = []
+    for ca in (0.01e-3, 0.09e-3):
+        mm = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3, quasi_static=qs,
+                            rib={"axial_clearance": ca})
+        out.append(rd.simulate_reduced(mm))
+    small, large = out
+    assert large.max_skew > small.max_skew
+    assert large.contact_slide_speed > small.contact_slide_speed
+    assert (large.pv_contact_left + large.pv_contact_right
+            > small.pv_contact_left + small.pv_contact_right)
+    assert large.rib_contact_fraction < small.rib_contact_fraction

@@ -22,8 +22,8 @@ followed with the degrees of freedom in which the unbalance acts:
   share of the orbit it represents), spin fixed to the quasi-static value, the mean rib
   spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega;
   integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib contact's axial
-  mode). Base case (0.11 g): PV -3.4 %, slip +0.3 % against the full model at ~1/57 of
-  its cost (24 s vs 0.42 s wall on a loaded 2-core machine; validation case
+  mode). Base case (0.11 g): PV -3.4 %, slip +0.3 % against the full model at 1/130 of
+  its cost (19.1 s vs 0.145 s wall; 1/57 on a loaded 2-core machine; validation case
   ``paper003_pv_slip_trends``).
 * roller spins: ``spin="skidding"`` (default) takes them from the quasi-static solver, whose
   unloaded rollers skid (about half the rolling speed at the base case); ``spin="rolling"``
