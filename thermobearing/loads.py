@@ -154,18 +154,27 @@ def _stiffness(bearing, arcs: ArcSet, contact_angle: np.ndarray) -> np.ndarray:
     elliptic-integral solution, Hamrock 2004 ch. 17) because this runs inside every Newton
     residual; the exact form costs a root solve per contact.
     """
-    from .hertz import point_contact_stiffness
+    return _arc_hertz(arcs, float(bearing.pitch_diameter), contact_angle)[5]
 
-    alpha = np.abs(contact_angle)
-    K = np.empty_like(alpha)
-    for ring, race in ((INNER, "inner"), (OUTER, "outer")):
-        sel = np.broadcast_to(arcs.ring == ring, alpha.shape)
-        if not np.any(sel):
-            continue
-        rx, ry = bearing.curvature(race, alpha[sel])
-        K[sel] = point_contact_stiffness(rx, ry, arcs.effective_modulus,
-                                         method="hamrock_brewe")
-    return K
+
+def _arc_hertz(arcs: ArcSet, pitch_diameter: float, contact_angle: np.ndarray) -> tuple:
+    """Hertz constants of every arc contact at ``contact_angle`` (no input checks).
+
+    R_x = D (d_m -+ D cos(alpha)) / (2 d_m) (:meth:`geometry.BallBearing.curvature`, upper
+    sign inner ring), R_y = f D / (2 f - 1), and the Hamrock-Brewe closed form through the
+    unchecked cores of :mod:`thermobearing.hertz` (the bearing's radii and E' were validated
+    when it was built). Returns (R_x, R_y, R, k, E, K) with Q = K delta^1.5; the ball
+    skidding residual uses the same function.
+    """
+    from .hertz import _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
+
+    D = arcs.ball_diameter
+    sign = np.where(arcs.ring == INNER, 1.0, -1.0)
+    rx = 0.5 * D * (1.0 - sign * (D * np.cos(contact_angle) / pitch_diameter))
+    ry = arcs.conformity * D / (2.0 * arcs.conformity - 1.0)
+    r, ratio = _reduced_unchecked(rx, ry)
+    k, big_k, big_e = _hamrock_brewe_kke(ratio)
+    return rx, ry, r, k, big_e, _stiffness_from(r, k, big_k, big_e, arcs.effective_modulus)
 
 
 def arc_contacts(bearing, arcs: ArcSet, ball_x, ball_r, delta_a, delta_r, azimuth,

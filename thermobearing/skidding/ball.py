@@ -54,11 +54,12 @@ import numpy as np
 
 from ..contact_traction import _integrate_core
 from ..errors import ConvergenceError, InputError, check_finite, check_positive
-from ..hertz import _ellipse, _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
+from ..hertz import _ellipse
 from ..loads import (
     INNER,
     ArcSet,
     ContactField,
+    _arc_hertz,
     ball_arcs,
     ball_load_distribution,
 )
@@ -233,10 +234,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.free = arcs.free_distance.astype(float)
         self.inner_f = self.inner.astype(float)
         self.cpsi = np.cos(self.psi)
-        dm = float(bearing.pitch_diameter)
-        self.D_dm = self.D / dm
-        self.rx_half = 0.5 * self.D
-        self.rx_sign = np.where(self.inner, 1.0, -1.0)   # R_x = D/2 (1 -+ D cos(alpha)/d_m)
+        self.dm = float(bearing.pitch_diameter)
         self.ry = arcs.conformity * self.D / (2.0 * arcs.conformity - 1.0)
         check_positive("skidding.ball R_y", self.ry)
         self.curv = 1.0 / self.rd                          # deformed-surface curvature [1/m]
@@ -281,10 +279,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         na, nr = dx / L, dr / L                               # (..., Z, k) arc centre -> ball
         approach = L - self.free
         alpha = np.arctan2(na, np.abs(nr))
-        rx = self.rx_half * (1.0 - self.rx_sign * (self.D_dm * np.cos(alpha)))
-        r_red, ratio = _reduced_unchecked(rx, self.ry)
-        k_el, big_k, big_e = _hamrock_brewe_kke(ratio)
-        K = _stiffness_from(r_red, k_el, big_k, big_e, self.Ep)
+        rx, _, r_red, k_el, big_e, K = _arc_hertz(self.arcs, self.dm, alpha)
         Q = K * np.maximum(approach, 0.0) ** 1.5
         a_ell, b_ell, p0 = _ellipse(Q, r_red, k_el, big_e, self.Ep)
         half = 0.5 * D - 0.5 * np.maximum(approach, 0.0)    # lever to the contact centre
@@ -474,6 +469,7 @@ class JacobianBlocks:
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
                  max_step: float = 1.0, reuse_ratio: float = 0.25, max_broyden: int = 12,
+                 polish_ratio: float = 1e-2,
                  jacobian: JacobianBlocks | None = None):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
@@ -482,7 +478,11 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     (:meth:`ball_residual_system.evaluate` on (9, Z, 6)). It is reused for the next step
     (chord / Shamanskii step) while the full step cut the residual norm below
     ``reuse_ratio`` times its previous value; a stale step that does not reduce the norm is
-    discarded and the Jacobian refreshed. ``jacobian``: blocks of an earlier solve (warm
+    discarded and the Jacobian refreshed. Between refreshes the chord Jacobian gets good
+    Broyden updates (product form, full steps only); steps shortened by the step cap keep it
+    while they achieve half the predicted decrease. A solve that ends on a linearly
+    converging chord step takes one more (``polish_ratio``) so that the residual, and with
+    it the energy balance, ends well below ``tol``. ``jacobian``: blocks of an earlier solve (warm
     start, rescaled to this system by :meth:`JacobianBlocks.rescaled`) used as the first
     chord Jacobian. The last fresh Jacobian is left in ``system.last_jacobian``.
 
@@ -548,7 +548,15 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 jac = None
     steps: list[np.ndarray] = []     # full steps taken since ``jac`` was factorised
     nx = Z * N_BALL
-    while nrm > tol and it < max_iter:
+    last_ratio, polished = 1.0, False
+    while it < max_iter:
+        if nrm <= tol:
+            # a chord / Broyden iteration converges linearly and stops just below tol,
+            # where a Newton step would overshoot by orders of magnitude: one more step
+            # with the current Jacobian (the energy balance closes with the residual)
+            if polished or last_ratio < polish_ratio or jac is None:
+                break
+            polished = True
         it += 1
         stale = jac is not None
         if jac is None:
@@ -574,21 +582,24 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
-            # chord / Broyden step: full step only, accepted if it reduces the norm
+            # chord / Broyden step at the capped length, no backtracking: accepted if it
+            # gives a sufficient decrease, else discarded and the Jacobian refreshed
             ok, nn = False, np.inf
-            if lam == 1.0:
-                try:
-                    Rn, Gcn, Gkn, _ = system.evaluate(X + dX * xs, G + dG * gs)
-                    nn = norm_of(Rn, Gcn, Gkn)
-                    ok = bool(np.isfinite(nn) and nn < nrm)
-                except (InputError, FloatingPointError, ValueError):
-                    ok = False
+            try:
+                Rn, Gcn, Gkn, _ = system.evaluate(X + lam * dX * xs, G + lam * dG * gs)
+                nn = norm_of(Rn, Gcn, Gkn)
+                ok = bool(np.isfinite(nn) and nn < (1.0 - 0.1 * lam) * nrm)
+            except (InputError, FloatingPointError, ValueError):
+                ok = False
             if ok:
-                X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
-                steps.append(np.concatenate([dX.ravel(), dG]))
-                if nn > reuse_ratio * nrm:
+                X, G, R, Gc, Gk = X + lam * dX * xs, G + lam * dG * gs, Rn, Gcn, Gkn
+                if lam == 1.0:
+                    steps.append(np.concatenate([dX.ravel(), dG]))
+                else:
+                    steps = []          # Broyden history holds full steps only
+                if not _jacobian_still_good(lam, nn, nrm, reuse_ratio):
                     jac = None
-                nrm = nn
+                nrm, last_ratio = nn, nn / nrm
             else:
                 jac = None
                 it -= 1
@@ -611,15 +622,26 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         if not ok or lam < 1e-6:
             raise ConvergenceError("skidding.ball", nrm, "line search failed",
                                    {"iteration": it, "cage_speed": G[2]})
-        if not (lam == 1.0 and nn < reuse_ratio * nrm):
+        if not _jacobian_still_good(lam, nn, nrm, reuse_ratio):
             jac = None
         else:
-            steps = [np.concatenate([dX.ravel(), dG])]
-        X, G, R, Gc, Gk, nrm = Xn, Gn, Rn, Gcn, Gkn, nn
+            steps = [np.concatenate([dX.ravel(), dG])] if lam == 1.0 else []
+        X, G, R, Gc, Gk, nrm, last_ratio = Xn, Gn, Rn, Gcn, Gkn, nn, nn / nrm
     if not nrm <= tol:
         raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
                                {"cage_speed": G[2], "delta_a": G[0], "delta_r": G[1]})
     return X, G, nrm, it
+
+
+def _jacobian_still_good(lam: float, new_norm: float, old_norm: float,
+                         reuse_ratio: float) -> bool:
+    """Keep the Jacobian after a step of length ``lam``? A full step must cut the residual
+    norm below ``reuse_ratio`` times the old one; a step shortened by the step cap (the
+    linear model predicts the factor 1 - lam) must achieve at least half the predicted
+    decrease."""
+    if lam >= 1.0:
+        return new_norm < reuse_ratio * old_norm
+    return new_norm < (1.0 - 0.5 * lam) * old_norm
 
 
 # ---------------------------------------------------------------------------------------------
