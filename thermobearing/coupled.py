@@ -117,29 +117,32 @@ class Coupler:
         for b in self.sim.bearings:
             self.sim.solve_kinematics(b, step_index, step, self.role_temperatures(b, T))
 
-    def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray) -> np.ndarray:
+    def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray
+                      ) -> tuple[np.ndarray, frozenset[str]]:
         q = np.zeros(len(self.names))
         ev = self.sim.evaluate_heat(b, step, b.last, self.role_temperatures(b, T))
-        return self.net.distribute(ev.by_role, group=b.name, out=q)
+        return self.net.distribute(ev.by_role, group=b.name, out=q), ev.reads
 
     def heat(self, step: Step, T: np.ndarray) -> np.ndarray:
-        return sum((self._bearing_heat(b, step, T) for b in self.sim.bearings),
+        return sum((self._bearing_heat(b, step, T)[0] for b in self.sim.bearings),
                    np.zeros(len(self.names)))
 
     def linearize(self, step: Step, T: np.ndarray, dT: float = 0.5) -> _Linear:
         """Heat and its finite-difference Jacobian: each bearing's heat is differentiated
-        in its own group's node temperatures only (one evaluation per node)."""
+        in the nodes of the temperature roles its sources read (one evaluation per node;
+        a role no source read cannot change the heat at a fixed kinematic state)."""
         n = len(T)
         q0 = np.zeros(n)
         J = np.zeros((n, n))
         for b in self.sim.bearings:
-            qb = self._bearing_heat(b, step, T)
+            qb, reads = self._bearing_heat(b, step, T)
             q0 += qb
-            cols = sorted({i for idx in self.role_nodes[b.name].values() for i in idx})
+            nodes = self.role_nodes[b.name]
+            cols = sorted({i for role in reads for i in nodes[role]})
             for j in cols:
                 Tp = T.copy()
                 Tp[j] += dT
-                J[:, j] += (self._bearing_heat(b, step, Tp) - qb) / dT
+                J[:, j] += (self._bearing_heat(b, step, Tp)[0] - qb) / dT
         return _Linear(q0, J, T.copy())
 
     def loss_rows(self, step_index: int, time_s: float, step: Step,

@@ -158,6 +158,8 @@ class _Evaluation:
 
     by_role: dict[str, float]
     rows: list[dict[str, Any]] = field(default_factory=list)
+    #: temperature roles the sources read (the heat depends on no other node temperature)
+    reads: frozenset[str] = frozenset(("inner_ring", "outer_ring", "elements", "cage", "oil"))
 
 
 class Simulation:
@@ -205,7 +207,7 @@ class Simulation:
         self.warnings: list[str] = list(self.calibration_notes)
         # identical bearings (same preset and overrides) at the same state share results
         self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
-        self._heat_memo: dict[tuple[Any, ...], _Evaluation] = {}
+        self._heat_memo: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
 
     # ------------------------------------------------------------------ chain
     def describe_chain(self, with_citations: bool = False) -> str:
@@ -270,30 +272,50 @@ class Simulation:
                 self.warnings.append(text)
 
     def evaluate_heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
-              temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
-        """Heat of the bearing's sources at the given role temperatures (memoised: two
-        identical bearings in the same state are evaluated once)."""
-        from .heat_sources import HeatContext, evaluate
+                      temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
+        """Heat of the bearing's sources at the given role temperatures.
 
-        memo_key = (b.key, step, id(kin), tuple(sorted(temps.items())), with_rows)
-        hit = self._heat_memo.get(memo_key)
-        if hit is not None:
-            return hit
-        if len(self._heat_memo) > 256:
-            self._heat_memo.clear()
+        Memoised per source: a source's result is reused while the kinematic state is the
+        same and every temperature role it read (``heat_sources.RoleTemperatures``) is
+        unchanged -- e.g. the raceway shear of a skidding state, computed at the solver's
+        contact temperature, is evaluated once per kinematics solve, not once per
+        finite-difference column. Two identical bearings in the same state share results.
+        ``reads`` of the evaluation is the union of the roles the sources read.
+        """
+        from .heat_sources import HeatContext, evaluate_recorded
 
-        ctx = HeatContext(bearing=b.bearing, lubricant=self.lubricant, supply=self.supply,
-                          operating=self._operating(step), temperatures=dict(temps),
-                          kinematics=kin.state, traction=kin.traction,
-                          options=self._heat_options(kin))
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always", ValidityWarning)
-            results = evaluate(b.sources, ctx)
-        if with_rows:
+        temps = {r: float(v) for r, v in temps.items()}
+        memo = self._heat_memo
+        if len(memo) > 512:
+            memo.clear()
+        found: dict[str, tuple[Any, frozenset[str]]] = {}
+        for name in b.sources:
+            for entry_kin, entry_step, reads, values, result in memo.get((b.key, name), ()):
+                if (entry_kin is kin and entry_step == step
+                        and all(temps.get(r) == values[r] for r in reads)):
+                    found[name] = (result, reads)
+                    break
+        missing = [name for name in b.sources if name not in found]
+        if missing:
+            ctx = HeatContext(bearing=b.bearing, lubricant=self.lubricant, supply=self.supply,
+                              operating=self._operating(step), temperatures=temps,
+                              kinematics=kin.state, traction=kin.traction,
+                              options=self._heat_options(kin))
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", ValidityWarning)
+                computed = evaluate_recorded(missing, ctx)
             self._note(caught, b.name)
+            for name, (result, reads) in zip(missing, computed, strict=True):
+                found[name] = (result, reads)
+                entries = memo.setdefault((b.key, name), [])
+                entries.insert(0, (kin, step, reads, {r: temps.get(r) for r in reads}, result))
+                del entries[8:]
         by_role = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 0.0)
         rows = []
-        for r in results:
+        reads_all: set[str] = set()
+        for name in b.sources:
+            r, reads = found[name]
+            reads_all |= reads
             for role, p in r.power_by_role.items():
                 by_role[role] += p
             if with_rows:
@@ -301,9 +323,7 @@ class Simulation:
                     rows.append({"source": r.source, "component": comp,
                                  "power [W]": p,
                                  "load dependence": r.loss_class.get(comp, "")})
-        ev = _Evaluation(by_role, rows)
-        self._heat_memo[memo_key] = ev
-        return ev
+        return _Evaluation(by_role, rows, frozenset(reads_all))
 
     def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:
         """Heat-source options: those matching the kinematics' force models, plus where

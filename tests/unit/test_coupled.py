@@ -172,3 +172,52 @@ want = ["temperatures"]
     with pytest.raises(ConvergenceError) as info:
         Simulation(loads_scene(text), progress=False).run()
     assert "thermal runaway" in str(info.value) and "crb." in str(info.value)
+
+
+@pytest.mark.parametrize("kinematics", ["race_control", "skidding"])
+def test_linearisation_over_read_roles_equals_full_finite_differences(kinematics):
+    """The heat Jacobian is differentiated only in the nodes of the roles the sources read
+    (heat_sources.RoleTemperatures); every other column must be exactly zero, and the
+    read columns equal a brute-force difference over every node."""
+    from thermobearing import coupled
+
+    text = BASE.replace('kinematics = "race_control"', f'kinematics = "{kinematics}"') + """
+[schedule]
+speed = "1800 rpm"
+radial_load = "1 kN"
+axial_load = "6 kN"
+duration = "3 min"
+"""
+    sim = Simulation(loads_scene(text), progress=False)
+    net = coupled.build_network(sim)
+    sim.network = net
+    cp = coupled.Coupler(sim, net)
+    step = sim.scene.schedule.steps[0]
+    T = np.linspace(315.0, 330.0, len(cp.names))
+    cp.kinematics(0, step, T)
+    lin = cp.linearize(step, T, dT=0.5)
+    full = np.zeros_like(lin.J)
+    q0 = cp.heat(step, T)
+    for j in range(len(T)):
+        Tp = T.copy()
+        Tp[j] += 0.5
+        full[:, j] = (cp.heat(step, Tp) - q0) / 0.5
+    np.testing.assert_allclose(lin.q0, q0, rtol=1e-12)
+    np.testing.assert_allclose(lin.J, full, rtol=1e-9, atol=1e-9 * np.abs(full).max())
+    reads = sim.evaluate_heat(sim.bearings[0], step, sim.bearings[0].last,
+                              cp.role_temperatures(sim.bearings[0], T)).reads
+    assert "oil" in reads  # churning and the cage guide read the oil temperature
+    if kinematics == "skidding":  # raceway shear at the solver's contact temperature
+        assert not {"elements", "inner_ring", "outer_ring"} & reads
+
+
+def test_role_temperatures_record_reads():
+    from thermobearing.heat_sources import RoleTemperatures
+
+    t = RoleTemperatures({"oil": 310.0, "elements": 320.0})
+    assert not t.reads
+    assert t["oil"] == 310.0 and t.get("cage") is None
+    assert t.reads == {"oil", "cage"}
+    t.reads.clear()
+    dict(t.items())
+    assert t.reads == {"oil", "elements"}

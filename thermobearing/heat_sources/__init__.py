@@ -66,6 +66,57 @@ class ForcePair:
         return float(-np.sum(np.asarray(self.force, float) * np.asarray(self.velocity, float)))
 
 
+class RoleTemperatures(dict):
+    """Role -> temperature [K] that records which roles a heat source read.
+
+    A source that never reads a role's temperature cannot depend on it (everything else it
+    sees is fixed by the kinematic state and the options), so the coupled transient
+    re-evaluates a source only when a role it read has changed, and differentiates the heat
+    only in the nodes of roles that were read. Any bulk access (iteration, ``items``,
+    ``values``, ``copy``...) counts as reading every role.
+    """
+
+    __slots__ = ("reads",)
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        self.reads: set[str] = set()
+
+    def __getitem__(self, role: str) -> float:
+        self.reads.add(role)
+        return super().__getitem__(role)
+
+    def get(self, role: str, default: Any = None) -> Any:
+        self.reads.add(role)
+        return super().get(role, default)
+
+    def _all(self) -> None:
+        self.reads.update(super().keys())
+
+    def __iter__(self):  # type: ignore[override]
+        self._all()
+        return super().__iter__()
+
+    def keys(self):  # type: ignore[override]
+        self._all()
+        return super().keys()
+
+    def values(self):  # type: ignore[override]
+        self._all()
+        return super().values()
+
+    def items(self):  # type: ignore[override]
+        self._all()
+        return super().items()
+
+    def copy(self) -> dict[str, float]:  # type: ignore[override]
+        self._all()
+        return dict(super().items())
+
+    def __reduce__(self):  # pickles as a plain dict of its values
+        return (RoleTemperatures, (dict(super().items()),))
+
+
 @dataclass(frozen=True)
 class HeatContext:
     """Everything a heat source may read.
@@ -93,13 +144,13 @@ class HeatContext:
     options: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
-        temps = dict(self.temperatures)
-        for role, value in temps.items():
+        temps = RoleTemperatures()
+        for role, value in dict(self.temperatures).items():
             if role not in ROLES:
                 raise UnknownNameError("heat context temperatures role", role, ROLES)
             if not (math.isfinite(float(value)) and float(value) > 0):
                 raise InputError(f"temperatures[{role}]", value, "a temperature > 0 K")
-            temps[role] = float(value)
+            dict.__setitem__(temps, role, float(value))
         object.__setattr__(self, "temperatures", temps)
         if not isinstance(self.supply, OilSupply):
             raise InputError("heat context supply", self.supply, "an OilSupply")
@@ -232,20 +283,30 @@ def evaluate(names: Iterable[str], ctx: HeatContext,
     role the network lacks raises :class:`~thermobearing.errors.InputError` naming the
     source and the role.
     """
+    return [r for r, _ in evaluate_recorded(names, ctx, node_roles)]
+
+
+def evaluate_recorded(names: Iterable[str], ctx: HeatContext,
+                      node_roles: Iterable[str] | None = None
+                      ) -> list[tuple[HeatResult, frozenset[str]]]:
+    """As :func:`evaluate`, with the set of temperature roles each source read."""
     roles = None if node_roles is None else set(node_roles)
     if roles is not None:
         unknown = roles - set(ROLES)
         if unknown:
             raise UnknownNameError("network node role", sorted(unknown)[0], ROLES)
     results = []
+    temps = ctx.temperatures
     for name in names:
+        temps.reads.clear()
         result = HEAT_SOURCES.get(name)(ctx)
         if roles is not None:
             for role, power in result.power_by_role.items():
                 if role not in roles and power != 0.0:
                     raise InputError(f"heat source {name!r} role", role,
                                      "a role the thermal network has: " + ", ".join(sorted(roles)))
-        results.append(result)
+        results.append((result, frozenset(temps.reads)))
+    temps.reads.clear()
     return results
 
 
