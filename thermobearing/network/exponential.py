@@ -234,26 +234,115 @@ def _nb_dense(lam, V, W, cs, use, taus, h, d, a, Jaa_inv, Jad):  # pragma: no co
 
 
 @numba.njit(cache=True)
-def _nb_eig(A):  # pragma: no cover - compiled
-    lam, V = np.linalg.eig(A.astype(np.complex128))
+def _nb_diagonalise(A, M, invC, use_M):  # pragma: no cover - compiled
+    """(lambda, V, W = V^-1 M, cond_1(V)) of A = V diag(lambda) V^-1 (real or complex
+    A: numba's real eig raises ValueError when the spectrum is complex, and the caller
+    retries in complex arithmetic). Without zero-capacity nodes M = diag(invC)."""
+    lam, V = np.linalg.eig(A)
     Vi = np.linalg.inv(V)
-    return lam, V, Vi
+    n = A.shape[0]
+    if use_M:
+        W = Vi @ M
+    else:
+        W = Vi * invC.reshape(1, -1)
+    c1 = 0.0
+    c2 = 0.0
+    for j in range(n):
+        s1 = 0.0
+        s2 = 0.0
+        for i in range(n):
+            s1 += abs(V[i, j])
+            s2 += abs(Vi[i, j])
+        c1 = max(c1, s1)
+        c2 = max(c2, s2)
+    return lam, V, W, c1 * c2
+
+
+@numba.njit(cache=True)
+def _nb_remainder(U, qU, q0, JqM, y0, c1, frac):  # pragma: no cover - compiled
+    """g_n = q(U) - q_n - dq/dT (U - y_n) - frac c_1 [W]."""
+    n = U.shape[0]
+    r = np.empty(n)
+    for i in range(n):
+        v = qU[i] - q0[i] - frac * c1[i]
+        for j in range(n):
+            v -= JqM[i, j] * (U[j] - y0[j])
+        r[i] = v
+    return r
+
+
+@numba.njit(cache=True)
+def _nb_stage2(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h):  # pragma: no cover
+    """U2 = y_n + (y(h/2) - y_n) for the forcing f_n (+ c_1 s/h)."""
+    cs = np.zeros((4, y0.shape[0]))
+    cs[0] = f0
+    cs[1] = c1
+    use = np.zeros(4, dtype=np.bool_)
+    use[0] = True
+    use[1] = td
+    return y0 + _nb_increment(lam, V, W, cs, use, 0.5 * h, h, 0, d, a, Jaa_inv, Jad)
+
+
+@numba.njit(cache=True)
+def _nb_stage3(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U2, q2, q0,
+               JqM):  # pragma: no cover - compiled
+    """(D2, U3): D2 = g_n(U2); U3 = y_n + (y(h) - y_n) for the forcing f_n + D2 (+ c_1 s/h)."""
+    D2 = _nb_remainder(U2, q2, q0, JqM, y0, c1, 0.5 if td else 0.0)
+    cs = np.zeros((4, y0.shape[0]))
+    cs[0] = f0 + D2
+    cs[1] = c1
+    use = np.zeros(4, dtype=np.bool_)
+    use[0] = True
+    use[1] = td
+    return D2, y0 + _nb_increment(lam, V, W, cs, use, h, h, 0, d, a, Jaa_inv, Jad)
+
+
+@numba.njit(cache=True)
+def _nb_finish(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U3, q3, q0, JqM, D2,
+               atol, rtol):  # pragma: no cover - compiled
+    """(y_{n+1}, err, cs, use, generated - h sum q_n [J], y_bar): the step completion,
+    its error estimate and the terms of the discrete energy balance (module docstring)."""
+    n = y0.shape[0]
+    D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
+    cs = np.zeros((4, n))
+    cs[0] = f0
+    cs[1] = c1
+    use = np.ones(4, dtype=np.bool_)
+    use[1] = td
+    for i in range(n):
+        cs[2, i] = 8.0 * D2[i] - D3[i]
+        cs[3, i] = 2.0 * D3[i] - 8.0 * D2[i]
+    y1, err, integral = _nb_final(lam, V, W, cs, use, h, d, a, Jaa_inv, Jad, y0, atol, rtol)
+    gen = 0.0
+    for i in range(n):
+        gen += h * (cs[2, i] / 3.0 + cs[3, i] / 4.0)
+        if td:
+            gen += h * cs[1, i] / 2.0
+        for j in range(n):
+            gen += JqM[i, j] * integral[j]
+    ybar = y0 + integral / h
+    return y1, err, cs, use, gen, ybar
 
 
 _NB_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
+_EMPTY2 = np.zeros((0, 0))
 
 
 class _Linearization:
     """Reduced, diagonalised linearisation at one step start (t_n, y_n)."""
 
-    __slots__ = ("lam", "V", "W", "Jq", "d", "a", "Jaa_inv", "Jad", "y0", "t", "n")
+    __slots__ = ("lam", "V", "W", "Jq", "JqM", "d", "a", "Jaa_inv", "Jad", "y0", "t", "n")
 
     def __init__(self, core: _Core, t: float, y0: np.ndarray) -> None:
         KmJ = core.KmJ
         if not isinstance(KmJ, np.ndarray):
             KmJ = KmJ.toarray()
         J = -KmJ  # W/K
-        self.Jq = core.Jq
+        Jq = self.Jq = core.Jq
+        if Jq is None:
+            self.JqM = np.zeros((core.n, core.n))
+        else:
+            self.JqM = np.diag(Jq) if Jq.ndim == 1 else np.ascontiguousarray(Jq)
         self.t = t
         self.y0 = y0
         self.n = core.n
@@ -281,20 +370,30 @@ class _Linearization:
             self.a = np.zeros(0, dtype=np.int64)
             self.Jaa_inv = np.zeros((0, 0))
             self.Jad = np.zeros((0, core.n))
-        if not np.all(np.isfinite(A)):
+        if not math.isfinite(A.sum()):
             raise _NewtonFailure(math.inf, "non-finite Jacobian")
         if A.shape[0]:
-            lam, V, Vi = _nb_eig(np.ascontiguousarray(A))
-            cond = float(np.abs(V).sum(axis=0).max() * np.abs(Vi).sum(axis=0).max())
-            if not math.isfinite(cond) or cond > _COND_MAX:
+            Mx = M if M is not None else _EMPTY2
+            try:
+                lam, V, W, cond = _nb_diagonalise(A, Mx, invC, M is not None)
+            except ValueError:  # complex spectrum (upwind stream coupling)
+                try:
+                    lam, V, W, cond = _nb_diagonalise(A.astype(complex), Mx.astype(complex),
+                                                      invC.astype(complex), M is not None)
+                except (ValueError, np.linalg.LinAlgError):
+                    cond = math.inf
+            except np.linalg.LinAlgError:
+                cond = math.inf
+            if not cond <= _COND_MAX:
                 raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
                                                "use method='tr_bdf2' for this network")
         else:
-            lam = np.zeros(0, complex)
-            V = Vi = np.zeros((0, 0), complex)
+            lam = np.zeros(0)
+            V = np.zeros((0, 0))
+            W = np.zeros((0, core.n))
         self.lam = lam
         self.V = V
-        self.W = np.ascontiguousarray(Vi * invC[None, :] if M is None else Vi @ M)
+        self.W = W
 
     def increment(self, tau: float, h: float, cs: np.ndarray, use: np.ndarray) -> np.ndarray:
         """y(tau) - y_n for the forcing sum_k cs[k] (s/h)^k [W] (rows with use[k])."""
@@ -345,6 +444,7 @@ class ExpRosenbrock43(_Method):
 
     def __init__(self) -> None:
         self._lin: _Linearization | None = None
+        self._zeros = np.zeros(0)
 
     def step(self, core, t, h, y0, f0, q0):
         lin = self._lin
@@ -352,47 +452,26 @@ class ExpRosenbrock43(_Method):
             if not (core.jac_y is y0 and core.jac_t == t and core.KmJ is not None):
                 core.refresh_jacobian(t, y0, q0)
             lin = self._lin = _Linearization(core, t, y0)
-        Jq = lin.Jq
-        n = core.n
-        cs = np.zeros((4, n))
-        cs[0] = f0
         td = core.time_dependent and core.heat is not None
         if td:  # c1 = h dq/dt, one-sided difference inside the segment
             dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
-            cs[1] = (core.q(t + dt_fd, y0) - q0) * (h / dt_fd)
-
-        def g(tau: float, U: np.ndarray) -> np.ndarray:
-            """Nonlinear remainder g_n(t + tau, U) [W]."""
-            dU = U - y0
-            r = core.q(t + tau, U) - q0
-            if Jq is not None:
-                r -= Jq * dU if Jq.ndim == 1 else Jq @ dU
-            if td:
-                r -= cs[1] * (tau / h)
-            return r
-
-        use1 = _USE_FV if td else _USE_F
-        D2 = g(0.5 * h, y0 + lin.increment(0.5 * h, h, cs, use1))
-        cs[0] = f0 + D2
-        D3 = g(h, y0 + lin.increment(h, h, cs, use1))
-        cs[0] = f0
-        cs[2] = 8.0 * D2 - D3
-        cs[3] = 2.0 * D3 - 8.0 * D2
-        use = _USE_ALL_V if td else _USE_ALL
-        y1, err, I = _nb_final(lin.lam, lin.V, lin.W, cs, use, h, lin.d, lin.a,  # noqa: E741
-                               lin.Jaa_inv, lin.Jad, y0, core.atol, core.rtol)
+            c1 = (core.q(t + dt_fd, y0) - q0) * (h / dt_fd)
+        else:
+            c1 = self._zeros if len(self._zeros) == core.n else np.zeros(core.n)
+            self._zeros = c1
+        L = (lin.lam, lin.V, lin.W, lin.d, lin.a, lin.Jaa_inv, lin.Jad)
+        U2 = _nb_stage2(*L, y0, f0, c1, td, h)
+        q2 = core.q(t + 0.5 * h, U2)
+        D2, U3 = _nb_stage3(*L, y0, f0, c1, td, h, U2, q2, q0, lin.JqM)
+        q3 = core.q(t + h, U3)
+        y1, err, cs, use, gen, ybar = _nb_finish(*L, y0, f0, c1, td, h, U3, q3, q0, lin.JqM,
+                                                 D2, core.atol, core.rtol)
         if not (math.isfinite(err) and math.isfinite(y1.sum())):
             raise _NewtonFailure(math.inf, "non-finite exponential step")
         if err > 1.0 and core.adaptive:
             return _Trial(y1, None, None, err, 0.0, 0.0, 0.0)  # rejected: no more work
         f1, q1 = core.f(t + h, y1)
-        # discrete energy balance (module docstring)
-        gen = h * float(q0.sum()) + h * (float(cs[2].sum()) / 3.0 + float(cs[3].sum()) / 4.0)
-        if td:
-            gen += h * float(cs[1].sum()) / 2.0
-        if Jq is not None:
-            gen += float((Jq * I).sum() if Jq.ndim == 1 else (Jq @ I).sum())
-        ybar = y0 + I / h
+        gen += h * float(q0.sum())
         sys_ = core.sys
         to_b = h * sys_.to_boundaries(ybar)
         to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0

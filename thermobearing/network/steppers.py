@@ -555,6 +555,7 @@ class _Driver:
         p1 = (method.error_order or method.order) + 1.0
         fresh_jac = True
         first_in_segment = True
+        rejected_in_row = False
         tiny = 1e-12 * max(1.0, abs(t1))
         while t < t1 - tiny:
             if t + h >= t1 - 1e-3 * h:
@@ -582,7 +583,13 @@ class _Driver:
             err = trial.err
             if self.dt is None and err is not None and err > 1.0:
                 core.stats["rejected"] += 1
-                h = h * max(0.1, 0.9 * err ** (-1.0 / p1))
+                fac = max(0.1, 0.9 * err ** (-1.0 / p1))
+                if method.trial_first_step and rejected_in_row:
+                    # a trial step far outside the asymptotic range (the estimate does
+                    # not yet scale like h^p1): halve at least
+                    fac = min(fac, 0.5)
+                rejected_in_row = True
+                h = h * fac
                 if h < self.min_step:
                     raise ConvergenceError(
                         f"network stepper {self.method_name}", err,
@@ -590,6 +597,7 @@ class _Driver:
                         {"time": t, "step_size": h, "temperatures": y})
                 continue
             # accept
+            rejected_in_row = False
             if first_in_segment:
                 self.h_first = h
                 first_in_segment = False
