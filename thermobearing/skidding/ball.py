@@ -242,6 +242,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.veps = 1e-6 * max(abs(self.speed) * self.Rm, 1e-3)
         self._torque_memo: dict[float, tuple[float, float, float]] = {}
         self.last_jacobian: JacobianBlocks | None = None
+        self._last = None            # (X, G, (R, Gc, G0), details builder) of the last state
         check_positive("skidding.ball effective_modulus", self.Ep)
         check_positive("skidding.ball ball_mass", self.m)
         if models.n_major < 2 or models.n_minor < 1:
@@ -262,12 +263,16 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         X = np.asarray(X, dtype=float)
         G = np.asarray(G, dtype=float)
         batch = X.shape[:-2]
+        last = self._last
+        if (details and last is not None and np.array_equal(X, last[0])
+                and np.array_equal(G, last[1])):
+            # the converged state was the last one evaluated: its details from that pass
+            return (*last[2], last[3]())
         self.n_eval += int(np.prod(batch)) if batch else 1
         if not (np.all(np.isfinite(X)) and np.all(np.isfinite(G))):
             raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
         md = self.models
         D = self.D
-        wi = self.speed
         e2 = (...,) + (None, None)
         wc = G[..., 2][e2]                                    # (..., 1, 1)
         br = X[..., 1:2]                                      # (..., Z, 1)
@@ -363,11 +368,26 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         wcs = G[..., 2]
         G0[..., 2] = np.reshape([-sum(self._cage_torques(float(w))[:2]) / self.T_s
                                  for w in np.ravel(wcs)], wcs.shape)
-        if not details:
-            return R, Gc, G0, None
         if batch:
-            raise InputError("skidding.ball evaluate(details=True)", X.shape,
-                             "a single state (Z, 6)")
+            if details:
+                raise InputError("skidding.ball evaluate(details=True)", X.shape,
+                                 "a single state (Z, 6)")
+            return R, Gc, G0, None
+
+        def make_details():
+            return self._details(X, G, approach, Q, na, nr, L, alpha, K, tr, s, wa_, wr_, fpa,
+                                 fpr, Fd, br, pr, Ft_k, Mx, Mz, a_ell, b_ell, p0, rx, film, Vx,
+                                 Vy, Om_x, Om_y, Om_z, ue, u_ball, wn, Fc)
+
+        self._last = (X.copy(), G.copy(), (R, Gc, G0), make_details)
+        return R, Gc, G0, (make_details() if details else None)
+
+    def _details(self, X, G, approach, Q, na, nr, L, alpha, K, tr, s, wa_, wr_, fpa, fpr, Fd,
+                 br, pr, Ft_k, Mx, Mz, a_ell, b_ell, p0, rx, film, Vx, Vy, Om_x, Om_y, Om_z, ue,
+                 u_ball, wn, Fc):
+        """Heat, shaft torque and the contact fields of one evaluated state (energy audit)."""
+        md = self.models
+        wi = self.speed
         t_churn, t_guide, wg = self._cage_torques(float(G[2]))
         wc = float(G[2])
         inn = self.inner[None, :]
@@ -391,7 +411,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                    cage_heat=cage_heat, guide_heat=guide_heat,
                    inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
                    pocket_sliding=wn, Fc=Fc)
-        return R, Gc, G0, det
+        return det
 
     def _cage_torques(self, wc: float):
         """(churning torque, guide torque, guide speed) at cage speed wc (memoised: the
