@@ -11,8 +11,10 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
+from test_network_property import networks  # same folder (pytest prepend import mode)
 
 from thermobearing.errors import ConvergenceError
 from thermobearing.network import (
@@ -272,3 +274,31 @@ def test_nan_heat_never_returns_nan():
     with pytest.raises(ConvergenceError):
         integrate(rc(), lambda t, T: np.array([np.nan]), (0.0, 10.0), T_AMB,
                   method="exprb43", min_step=1e-3)
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(networks())
+def test_random_networks_conserve_energy_and_reach_steady(case):
+    """The hypothesis property of test_network_property.py, with exprb43."""
+    net, heat, t_end = case
+    T_amb = net.boundary_temperature("amb")
+    res = integrate(net, heat, (0.0, t_end), T_amb, method="exprb43")
+    assert res.audit.relative_imbalance() < 1e-9
+    assert np.all(np.isfinite(res.temperatures))
+    steady = solve_steady(net, heat).temperatures_vector
+    scale = max(1.0, float(np.max(steady - T_amb)))
+    np.testing.assert_allclose(res.temperatures[-1], steady, atol=1e-8 * scale, rtol=0)
+
+
+def test_defective_stream_chain_is_refused_with_advice():
+    """Three equal nodes on an oil stream with no conduction: A is a Jordan block (one
+    eigenvalue, one eigenvector); the eigenbasis is refused, the error says what to use."""
+    net = ThermalNetwork()
+    net.add_boundary("inlet", T_AMB)
+    for k in range(3):
+        net.add_node(f"o{k}", 100.0)
+    net.add_stream(["inlet", "o0", "o1", "o2"], 50.0)
+    with pytest.raises(ConvergenceError, match="tr_bdf2"):
+        integrate(net, {"o0": 100.0}, (0.0, 60.0), T_AMB, method="exprb43")
+    ok = integrate(net, {"o0": 100.0}, (0.0, 60.0), T_AMB, method="tr_bdf2")
+    assert np.all(np.isfinite(ok.temperatures))
