@@ -11,6 +11,7 @@ from thermobearing.errors import InputError
 from thermobearing.loads_roller import (
     LINE_CONTACT_EXPONENT,
     roller_body_force,
+    roller_film_load_distribution,
     roller_load_distribution,
     split_roller_interference,
 )
@@ -91,3 +92,43 @@ def test_bad_inputs():
         roller_load_distribution(10, -1e-6, 10.0, K, K)
     with pytest.raises(InputError):
         roller_load_distribution(10, 0.0, 10.0, K, K, azimuth=np.zeros(3))
+
+
+def _rigid_films(a_inner: float, a_outer: float):
+    # rigid-isoviscous line-contact films h = A / Q (Martin 1916: h0 = 2.448 eta U R l / Q)
+    return (lambda q: a_inner / np.asarray(q), lambda q: a_outer / np.asarray(q))
+
+
+@pytest.mark.parametrize("fr", [0.0, 150.0, 2000.0])
+def test_film_load_distribution_fills_the_gaps_and_balances_the_ring(fr):
+    # Every roller fills its radial gap with its two films minus the Hertz approaches,
+    # h_i(Q_i) + h_o(Q_i + F) - (Q_i/K)^(9/10) - (Q_o/K)^(9/10) = P_d/2 - delta . e_j,
+    # and the ring is in equilibrium on all 18 film loads (F_r along psi = 0).
+    z, pd, fb = 18, 2.5e-5, 7.0
+    fi, fo = _rigid_films(2.0e-4, 3.0e-4)  # 20 N at 10 um inner, 30 N at 10 um outer
+    r = roller_film_load_distribution(z, pd, fr, fi, fo, K, K, body_force=fb)
+    psi = r.azimuth
+    assert np.all(r.loaded) and np.all(r.inner_load > 0.0)
+    assert np.sum(r.inner_load * np.cos(psi)) == pytest.approx(fr, abs=1e-6 * max(fr, 1.0))
+    assert abs(np.sum(r.inner_load * np.sin(psi))) < 1e-6 * max(fr, 1.0)
+    assert r.outer_load == pytest.approx(r.inner_load + fb, rel=1e-12)
+    gap = -r.interference
+    filled = (fi(r.inner_load) + fo(r.outer_load) - (r.inner_load / K) ** 0.9
+              - (r.outer_load / K) ** 0.9)
+    assert filled == pytest.approx(gap, rel=1e-9, abs=1e-15)
+    if fr == 0.0:
+        assert np.ptp(r.inner_load) < 1e-9 * r.inner_load.mean()
+        assert np.hypot(*r.ring_displacement) < 1e-15
+    else:
+        # the roller under the load carries the most, the one opposite the least
+        assert np.argmax(r.inner_load) == 0 and np.argmin(r.inner_load) == z // 2
+        assert r.ring_displacement[0] > 0.0
+
+
+def test_film_load_distribution_warm_start_gives_the_same_answer():
+    fi, fo = _rigid_films(2.0e-4, 3.0e-4)
+    cold = roller_film_load_distribution(18, 2.5e-5, 150.0, fi, fo, K, K, body_force=7.0)
+    warm = roller_film_load_distribution(18, 2.5e-5, 150.0, fi, fo, K, K, body_force=7.0,
+                                         x0=tuple(cold.ring_displacement),
+                                         q0=cold.inner_load * 1.1)
+    assert warm.inner_load == pytest.approx(cold.inner_load, rel=1e-9)

@@ -377,3 +377,29 @@ def test_cage_force_balance_is_zero_at_the_solution(nu214, oil, state150):
     assert at.roller_speed == pytest.approx(state150.roller_speed, rel=1e-6)
     fast = cage_force_balance(model, OMEGA, 150.0, 1.2 * state150.cage_speed)
     assert fast.residual < 0 and fast.drag > at.drag
+
+
+def test_film_supported_ring(nu214, oil, state150):
+    # ring_support="films": the films (4-30 um at 5000 r/min, 0.08 Pa s) are as thick as the
+    # radial clearance P_d/2 = 12.5 um, so every roller fills its gap with its inner and outer
+    # films (same Moes film as the traction) and the ring rests on all of them. The films the
+    # solver uses fill the gaps, the ring is in equilibrium, energy is conserved, and the cage
+    # runs faster than with the dry load distribution (more rollers driven).
+    r = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, ring_support="films", tol=1e-12)
+    assert r.extras["n_loaded"] == nu214.n_rollers
+    assert np.all(r.inner_load > 0.0)
+    psi = r.azimuth
+    assert np.sum(r.inner_load * np.cos(psi)) == pytest.approx(150.0, rel=1e-6)
+    k = build_model(nu214, oil, T).k_inner
+    gap = 0.5 * nu214.diametral_clearance - (r.extras["ring_displacement"][0] * np.cos(psi)
+                                             + r.extras["ring_displacement"][1] * np.sin(psi))
+    filled = (r.inner.film_thickness + r.outer.film_thickness
+              - (r.inner_load / k) ** 0.9 - (r.outer_load / k) ** 0.9)
+    assert filled == pytest.approx(gap, rel=1e-6)
+    assert r.shaft_torque * OMEGA == pytest.approx(r.power_loss["total"], rel=1e-8)
+    assert r.cage_speed > state150.cage_speed
+    with pytest.raises(InputError):
+        solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, ring_support="films",
+                     clearance_film=True)
+    with pytest.raises(InputError):
+        solve_roller(nu214, oil, OMEGA, 150.0, 0.0, T, ring_support="floating")

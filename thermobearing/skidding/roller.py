@@ -60,7 +60,12 @@ from ..errors import (
     check_positive,
     check_temperature,
 )
-from ..loads_roller import LINE_CONTACT_EXPONENT, roller_body_force, roller_load_distribution
+from ..loads_roller import (
+    LINE_CONTACT_EXPONENT,
+    roller_body_force,
+    roller_film_load_distribution,
+    roller_load_distribution,
+)
 from .roller_fluid import (
     ROLLER_DRAG,
     LineContactForces,
@@ -73,6 +78,9 @@ DEFAULT_POCKET_CLEARANCE_FRACTION = 0.015
 
 #: models of the rollers outside the load zone (see :func:`build_model`)
 UNLOADED_ZONE_MODELS = ("moment_balance", "outer_pure_rolling")
+
+#: models of the inner-ring support (see :func:`build_model`)
+RING_SUPPORT_MODELS = ("contacts", "films")
 
 
 @dataclass(frozen=True)
@@ -237,6 +245,7 @@ class RollerModel:
     clearance_film_floor: float = 1e-6
     inner_gap: np.ndarray | None = None
     unloaded_zone: str = "moment_balance"
+    ring_support: str = "contacts"
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -299,6 +308,7 @@ def build_model(
     clearance_film: bool = False,
     clearance_film_floor: float = 1e-6,
     unloaded_zone: str = "moment_balance",
+    ring_support: str = "contacts",
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -335,9 +345,24 @@ def build_model(
         outer ring raceway for the unloaded zone": omega_r = (d_m + D)/D omega_c, the outer
         contact supplies whatever tangential force eq. 31 needs (rigid rolling constraint, no
         sliding work) and eq. 30 gives the pocket force.
+    ring_support : ``"contacts"`` (default): dry load distribution with clearance and
+        centrifugal force (:func:`~thermobearing.loads_roller.roller_load_distribution`,
+        Harris; rollers outside the load zone have no inner contact). ``"films"``: every
+        roller fills its radial gap with its inner and outer films (the film formula
+        ``film_model`` at the current entrainment speeds) and the ring rests on all of them
+        (:func:`~thermobearing.loads_roller.roller_film_load_distribution`); coupled to the
+        speeds by a fixed point. For films as thick as the clearance (paper 000: 4-30 um
+        against P_d/2 = 12.5 um), where the dry distribution is not consistent with the films
+        the traction uses.
     """
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
+    if ring_support not in RING_SUPPORT_MODELS:
+        raise InputError("ring_support", ring_support, RING_SUPPORT_MODELS)
+    if ring_support == "films" and (clearance_film or oil_layer is not None):
+        raise InputError("ring_support", ring_support,
+                         "'contacts' with clearance_film or oil_layer (the film-supported "
+                         "distribution assumes flooded Hertz-zone films at every roller)")
     if oil_layer is not None:
         check_positive("oil_layer", oil_layer)
     check_positive("clearance_film_floor", clearance_film_floor)
@@ -379,7 +404,7 @@ def build_model(
         cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
         oil_layer=None if oil_layer is None else float(oil_layer),
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
-        unloaded_zone=unloaded_zone,
+        unloaded_zone=unloaded_zone, ring_support=ring_support,
     )
 
 
@@ -616,6 +641,34 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
     return x, e, norm, it, True, ld
 
 
+def _load_distribution(model: RollerModel, omega: float, radial_load: float, wc: float,
+                       wr: np.ndarray | None, psi: np.ndarray, acc: tuple[float, float],
+                       ring: Any = None, q0: np.ndarray | None = None
+                       ) -> tuple[Any, np.ndarray]:
+    """Load distribution at cage speed ``wc`` (and roller spins ``wr`` for film support) and
+    the body force without the centrifugal term (see :func:`evaluate`)."""
+    z = model.n_rollers
+    fb_total = roller_body_force(model.roller_mass, model.pitch_diameter, wc, psi, acc)
+    if model.ring_support == "films":
+        d_m, d = model.pitch_diameter, model.roller_diameter
+        spin = np.full(z, (d_m + d) / d * wc) if wr is None else np.asarray(wr, dtype=float)
+        u_roll = 0.5 * d * spin
+        # entrainment speeds as closed_form_contact_forces forms them (same film, same h)
+        ue_i = np.maximum(0.5 * np.abs(0.5 * (d_m - d) * (omega - wc) + u_roll), 1e-6)
+        ue_o = np.maximum(0.5 * np.abs(0.5 * (d_m + d) * wc + u_roll), 1e-6)
+        length = model.length
+        ld = roller_film_load_distribution(
+            z, model.diametral_clearance, radial_load,
+            lambda q: model.film_inner(ue_i, q / length),
+            lambda q: model.film_outer(ue_o, q / length), model.k_inner, model.k_outer,
+            body_force=fb_total, azimuth=psi, exponent=LINE_CONTACT_EXPONENT, x0=ring, q0=q0)
+    else:
+        ld = roller_load_distribution(z, model.diametral_clearance, radial_load, model.k_inner,
+                                      model.k_outer, body_force=fb_total, azimuth=psi,
+                                      exponent=LINE_CONTACT_EXPONENT, x0=ring)
+    return ld, fb_total - model.roller_mass * 0.5 * model.pitch_diameter * wc**2
+
+
 def solve_model(
     model: RollerModel,
     omega: float,
@@ -637,13 +690,13 @@ def solve_model(
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
 
-    def loads(wc: float, ring: Any) -> tuple[Any, np.ndarray]:
-        fb_total = roller_body_force(model.roller_mass, model.pitch_diameter, wc, psi,
-                                     whirl_acceleration)
-        ld = roller_load_distribution(z, model.diametral_clearance, radial_load, model.k_inner,
-                                      model.k_outer, body_force=fb_total, azimuth=psi,
-                                      exponent=LINE_CONTACT_EXPONENT, x0=ring)
-        return ld, fb_total - model.roller_mass * 0.5 * model.pitch_diameter * wc**2
+    last_q: list[np.ndarray | None] = [None]
+
+    def loads(wc: float, ring: Any, wr: np.ndarray | None = None) -> tuple[Any, np.ndarray]:
+        ld, fbw = _load_distribution(model, omega, radial_load, wc, wr, psi,
+                                     whirl_acceleration, ring, last_q[0])
+        last_q[0] = ld.inner_load
+        return ld, fbw
 
     starts = [x0] if x0 is not None else []
     starts += [initial_guess(model, omega, c) for c in (0.8, 0.4)]
@@ -652,8 +705,9 @@ def solve_model(
     for start in starts:
         x = np.array(start, dtype=float)
         ring = load_x0
-        for _outer in range(8):
-            ld, fb_whirl = loads(x[z], ring)
+        films = model.ring_support == "films"
+        for _outer in range(60 if films else 8):
+            ld, fb_whirl = loads(x[z], ring, x[:z])
             if ld.n_loaded == 0:
                 raise ConvergenceError(
                     "roller_skidding", math.inf,
@@ -663,11 +717,11 @@ def solve_model(
                     "the cage speed is undetermined",
                     {"radial_load": radial_load, "inner_speed": omega})
             ring = tuple(ld.ring_displacement)
-            wc_old = x[z]
+            x_old = x.copy()
             x, e, norm, it, ok = _newton(_gapped(model, ld), omega, x, ld.inner_load, fb_whirl,
                                          psi,
                                          whirl_acceleration, tol=tol, max_iter=max_iter)
-            if not ok or abs(x[z] - wc_old) <= 1e-8 * omega:
+            if not ok or float(np.max(np.abs(x - x_old))) <= 1e-8 * omega:
                 break
         if best is None or norm < best[2]:
             best = (x, e, norm, it, ok, ld)
@@ -749,14 +803,18 @@ def cage_force_balance(model: RollerModel, omega: float, radial_load: float, cag
     check_positive("cage_speed", cage_speed)
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
-    fb = roller_body_force(model.roller_mass, model.pitch_diameter, cage_speed, psi,
-                           whirl_acceleration)
-    ld = roller_load_distribution(z, model.diametral_clearance, radial_load, model.k_inner,
-                                  model.k_outer, body_force=fb, azimuth=psi,
-                                  exponent=LINE_CONTACT_EXPONENT)
-    fbw = fb - model.roller_mass * 0.5 * model.pitch_diameter * cage_speed**2
-    mg = _gapped(model, ld)
-    wr = _roller_speeds(mg, omega, cage_speed, ld.inner_load, fbw, psi, whirl_acceleration)
+    wr = None
+    for _ in range(60 if model.ring_support == "films" else 1):
+        # film support: loads and spins by fixed point (contraction ~0.2 per step)
+        ld, fbw = _load_distribution(model, omega, radial_load, cage_speed, wr, psi,
+                                     whirl_acceleration)
+        mg = _gapped(model, ld)
+        wr_new = _roller_speeds(mg, omega, cage_speed, ld.inner_load, fbw, psi,
+                                whirl_acceleration)
+        done = wr is not None and float(np.max(np.abs(wr_new - wr))) <= 1e-9 * omega
+        wr = wr_new
+        if done:
+            break
     e = evaluate(mg, omega, wr, cage_speed, ld.inner_load, fbw, psi, whirl_acceleration)
     loaded = ld.inner_load > 0.0
     drive = float(np.sum(e.cage_terms[loaded]))

@@ -175,14 +175,17 @@ def solve_whirl(model: RollerModel, omega: float, radial_load: float, whirl: Whi
     states = []
     times = []
     x = x0
+    ring = None
     for k in range(n):
         t = k * dt
         acc = whirl.acceleration(t, omega_w)
         res = solve_model(model, omega, radial_load, azimuth=base + phase,
-                          whirl_acceleration=acc, x0=x, tol=tol, max_iter=max_iter)
+                          whirl_acceleration=acc, x0=x, tol=tol, max_iter=max_iter,
+                          load_x0=ring)
         states.append(res)
         times.append(t)
         x = np.append(res.roller_speed, res.cage_speed)
+        ring = tuple(float(v) for v in res.extras["ring_displacement"])
         if whirl.cage_rotation:
             phase = (phase + res.cage_speed * dt) % (2.0 * math.pi)
     wc = np.array([s.cage_speed for s in states])
