@@ -107,8 +107,10 @@ def test_rolling_spin_option(base):
     b, lub, m = base
     qs = m.extras["quasi_static"]
     mr = rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3, quasi_static=qs, spin="rolling")
-    expect = (SPEED - m.cage_speed) * m.geom.inner_raceway_diameter / m.geom.roller_diameter
+    # rolling spins on the quasi-static solver's cage speed (no rib coupling with them)
+    expect = (SPEED - qs.cage_speed) * m.geom.inner_raceway_diameter / m.geom.roller_diameter
     assert np.allclose(mr.spin, expect)
+    assert mr.cage_speed == qs.cage_speed and mr.spin_bias is None
     with pytest.raises(InputError, match="spin"):
         rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3, quasi_static=qs, spin="bogus")
 
@@ -141,3 +143,32 @@ def test_contact_pv_and_skew_grow_with_axial_clearance(base):
     assert (large.pv_contact_left + large.pv_contact_right
             > small.pv_contact_left + small.pv_contact_right)
     assert large.rib_contact_fraction < small.rib_contact_fraction
+
+
+def test_coupled_spins_balance_rib_moments(base):
+    # couple_spins: the spins and cage speed solve paper 000's roller moment balances with
+    # the mean rib moment added (T_j + M_j = 0) and the cage balance with the mean rib
+    # circumferential forces; the spin stiffness is that of the same traction model
+    from thermobearing.skidding.roller import build_model as race_model
+
+    b, lub, m = base
+    info = m.extras["coupling"]["passes"][-1]
+    assert info["residual"] < 1e-8
+    rm = race_model(b, lub, 353.15)
+    e = rd._race_eval(rm, m, m.spin, m.cage_speed)
+    half = 0.5 * b.roller_diameter
+    scale = float(np.max(m.inner_load))
+    assert np.max(np.abs(e.roller_eq + m.spin_bias / half)) < 1e-6 * scale
+    assert abs(e.cage_eq + float(np.sum(info["rib_tangential_force"]))) < 1e-6 * scale
+    # the rib pushes the rollers forward on balance -> the cage turns faster than without
+    qs = m.extras["quasi_static"]
+    assert np.sum(info["rib_tangential_force"]) > 0 and m.cage_speed > qs.cage_speed
+    # unloaded rollers (no inner contact) have a far weaker spin stiffness than loaded ones
+    loaded, unloaded = m.inner_load > 0, m.inner_load == 0
+    assert np.min(m.spin_k[loaded]) > 0 and np.max(m.spin_k[unloaded]) > 0
+    assert np.max(m.spin_k[unloaded]) < 0.1 * np.max(m.spin_k[loaded])
+    # the uncoupled option keeps the quasi-static spins and cage speed
+    m0 = rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3, quasi_static=qs, coupling="none")
+    assert m0.cage_speed == qs.cage_speed and m0.spin_bias is None
+    with pytest.raises(InputError, match="coupling"):
+        rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3, quasi_static=qs, coupling="bogus")

@@ -71,6 +71,7 @@ components the paper's discussion attributes the slip rise to. Units: SI.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass, field
@@ -160,6 +161,8 @@ class DynamicsModel:
     traction_speed: float = DEFAULT_TRACTION_SPEED
     pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS
     extras: dict[str, Any] = field(default_factory=dict)
+    spin_k: np.ndarray | None = None
+    spin_bias: np.ndarray | None = None
 
     def at(self, phi: float) -> tuple[float, float, float]:
         """(N_i, N_o, omega_qs) at azimuth ``phi`` [rad] (periodic linear interpolation)."""
@@ -176,9 +179,31 @@ class DynamicsModel:
                      for arr in (self.inner_load, self.outer_load, self.spin))
 
     def spin_stiffness(self, n_i: float, n_o: float) -> float:
-        """k_omega = (D/2)^2 (N_i + N_o) mu_t / s_0 [N m s]."""
+        """k_omega = (D/2)^2 (N_i + N_o) mu_t / s_0 [N m s] (fallback when the model
+        carries no ``spin_k`` of the quasi-static traction model)."""
         r = 0.5 * self.geom.roller_diameter
         return r * r * (n_i + n_o) * self.traction_limit / self.traction_speed
+
+    def bias_at(self, phi: float) -> float:
+        """Mean rib moment [N m] that the spins of a coupled model already balance
+        (:func:`couple_spins`; 0 without coupling), interpolated at azimuth ``phi``."""
+        if self.spin_bias is None:
+            return 0.0
+        p = phi % (2.0 * math.pi)
+        az = np.append(self.azimuth, self.azimuth[0] + 2.0 * math.pi)
+        b = np.append(self.spin_bias, self.spin_bias[0])
+        return float(np.interp(p if p >= az[0] else p + 2.0 * math.pi, az, b))
+
+    def stiffness_at(self, phi: float) -> float:
+        """Spin stiffness k_omega [N m s] at azimuth ``phi``: ``spin_k`` interpolated like
+        :meth:`at`, else :meth:`spin_stiffness`."""
+        if self.spin_k is None:
+            n_i, n_o, _ = self.at(phi)
+            return self.spin_stiffness(n_i, n_o)
+        p = phi % (2.0 * math.pi)
+        az = np.append(self.azimuth, self.azimuth[0] + 2.0 * math.pi)
+        k = np.append(self.spin_k, self.spin_k[0])
+        return float(np.interp(p if p >= az[0] else p + 2.0 * math.pi, az, k))
 
 
 def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
@@ -189,7 +214,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 traction_limit: float = DEFAULT_TRACTION_LIMIT,
                 traction_speed: float = DEFAULT_TRACTION_SPEED,
                 pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS,
-                quasi_static: Any = None, spin: str = "skidding") -> DynamicsModel:
+                quasi_static: Any = None, spin: str = "skidding",
+                coupling: str = "rib") -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -200,6 +226,11 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     on it strongly (see the validation case's SOURCE.md).
     ``quasi_static``: a previous :class:`~thermobearing.skidding.roller.RollerSkiddingResult`
     of the same speed/load/temperature (skips the solve; maps reuse it).
+    ``coupling``: "rib" (default with ``spin="skidding"``: the mean rib moments and forces
+    are fed back into the quasi-static spin and cage equations, :func:`couple_spins`) or
+    "none" (spins and cage speed as the quasi-static solver gives them). The spin
+    stiffness of the dynamics is always that of the quasi-static traction model
+    (:func:`race_spin_stiffness`).
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
     """
@@ -225,9 +256,11 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                         * geom.inner_raceway_diameter / geom.roller_diameter)
     elif spin != "skidding":
         raise InputError("spin", spin, ("skidding", "rolling"))
+    if coupling not in ("rib", "none"):
+        raise InputError("coupling", coupling, ("rib", "none"))
     eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
            + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
-    return DynamicsModel(
+    model = DynamicsModel(
         geom=geom, inner_speed=float(speed), cage_speed=float(qs.cage_speed),
         azimuth=np.mod(qs.azimuth, 2.0 * math.pi)[order],
         inner_load=np.asarray(qs.inner_load, float)[order],
@@ -241,7 +274,13 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         traction_limit=traction_limit, traction_speed=traction_speed,
         pocket_stiffness=pocket_stiffness,
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
-                "spin": spin})
+                "spin": spin, "coupling": None})
+    if coupling == "rib" and spin == "skidding" and unbalance_mass > 0.0:
+        return couple_spins(model, bearing, lubricant)
+    from .roller import build_model as race_model
+
+    k = race_spin_stiffness(race_model(bearing, lubricant, temperature), model)
+    return dataclasses.replace(model, spin_k=k)
 
 
 # parameter vector of the jitted right-hand side: the rib geometry vector
@@ -413,7 +452,7 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
             "contact_right": (rf.normal_right > 0).astype(float),
             "slide_in_contact": (np.where(rf.normal_left > 0, rf.slide_speed_left, 0.0)
                                  + np.where(rf.normal_right > 0, rf.slide_speed_right, 0.0)),
-            "spin_moment": rf.spin_moment, "t": t}
+            "spin_moment": rf.spin_moment, "tangential_force": rf.tangential_force, "t": t}
 
 
 def _mean(v: np.ndarray, t: np.ndarray) -> float:
@@ -423,26 +462,37 @@ def _mean(v: np.ndarray, t: np.ndarray) -> float:
 
 def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: float = 3.0,
                   rtol: float = 1e-6, samples_per_period: int = 64,
-                  start_azimuth: float = 0.0) -> RollerResponse:
-    """Integrate X, alpha, omega_r, psi of one roller over ``n_orbits`` orbits (Radau).
+                  start_azimuth: float = 0.0, spin_dof: bool = False) -> RollerResponse:
+    """Integrate X, alpha and psi of one roller over ``n_orbits`` orbits (Radau), the load
+    state following the azimuth.
 
-    The first ``warmup_periods`` spin periods (at the quasi-static spin) are integrated
-    and discarded; statistics are taken over the following ``n_orbits`` orbits.
-    ConvergenceError if the integrator fails.
+    ``spin_dof=False`` (default): the spin follows the orbit's spins of the model (for a
+    coupled model, :func:`couple_spins`, the quasi-static balance of the raceway, pocket
+    and mean rib moments). ``spin_dof=True`` adds omega_r as a degree of freedom,
+    J_p omega_r' = -k (omega_r - omega(phi)) - M_bias(phi) + M_rib,x(t), with k the spin
+    stiffness of the quasi-static traction model: for unloaded rollers J_p/k is ~13 ms,
+    three orbits at the base case, so that option needs many more orbits to settle.
+    The first ``warmup_periods`` spin periods are integrated and discarded; statistics
+    are taken over the following ``n_orbits`` orbits. ConvergenceError if the integrator
+    fails.
     """
     t0 = time.perf_counter()
     n_calls = [0]
     g = m.geom
     c = _params(m)
 
+    # state: X, X', alpha, alpha', psi (, omega_r with spin_dof)
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         n_calls[0] += 1
         phi = start_azimuth + m.cage_speed * t
         n_i, n_o, w_qs = m.at(phi)
-        d0, d1, d2, d3, m_spin = _roller_rhs(m, c, y, n_i, n_o, y[4], y[5])
-        k = m.spin_stiffness(n_i, n_o)
-        wdot = (-k * (y[4] - w_qs) + m_spin) / m.polar_inertia
-        return np.array([d0, d1, d2, d3, wdot, y[4]])
+        w = y[5] if spin_dof else w_qs
+        d0, d1, d2, d3, m_spin = _roller_rhs(m, c, y, n_i, n_o, w, y[4])
+        if not spin_dof:
+            return np.array([d0, d1, d2, d3, w])
+        k = m.stiffness_at(phi)
+        wdot = (-k * (y[5] - w_qs) - m.bias_at(phi) + m_spin) / m.polar_inertia
+        return np.array([d0, d1, d2, d3, w, wdot])
 
     _, _, w0 = m.at(start_azimuth)
     period = 2.0 * math.pi / max(abs(w0), 1.0)
@@ -450,15 +500,18 @@ def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: fl
     t_end = t_warm + n_orbits * 2.0 * math.pi / m.cage_speed
     n_out = int(samples_per_period * (t_end - t_warm) / period) + 2
     t_eval = np.linspace(t_warm, t_end, n_out)
-    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-2, 1e-6])
-    sol = solve_ivp(rhs, (0.0, t_end), np.array([0.0, 0.0, 0.0, 0.0, w0, 0.0]),
+    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-6, 1e-2])[:6 if spin_dof else 5]
+    y0 = np.array([0.0, 0.0, 0.0, 0.0, 0.0, w0])[:6 if spin_dof else 5]
+    sol = solve_ivp(rhs, (0.0, t_end), y0,
                     method="Radau", rtol=rtol, atol=atol, t_eval=t_eval,
                     max_step=period / 8.0)
     if not sol.success:
         raise ConvergenceError("roller_dynamics.full", float("nan"), sol.message,
                                {"t": sol.t[-1] if sol.t.size else 0.0})
     y = sol.y
-    post = _post(m, sol.t, y[0], y[1], y[2], y[3], y[4])
+    spin = (y[5] if spin_dof else
+            np.array([m.at(start_azimuth + m.cage_speed * t)[2] for t in sol.t]))
+    post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin)
     return _response(post, "full", time.perf_counter() - t0, n_calls[0], g)
 
 
@@ -488,14 +541,23 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
         series={k: v for k, v in weights[0][1].items()} if model == "full" else {})
 
 
-def load_states(m: DynamicsModel, decimals: int = 6) -> list[tuple[float, float, float, float]]:
-    """Distinct (N_i, N_o, omega_qs, weight) states of the orbit (weights sum to 1)."""
-    states: dict[tuple[float, float, float], int] = {}
-    for n_i, n_o, w in zip(m.inner_load, m.outer_load, m.spin, strict=True):
+def load_states(m: DynamicsModel, decimals: int = 6
+                ) -> list[tuple[float, float, float, float, float]]:
+    """Distinct (N_i, N_o, omega, weight, k_omega) states of the orbit (weights sum to 1;
+    k_omega the spin stiffness [N m s] of the state's first roller)."""
+    states: dict[tuple[float, float, float], list[int]] = {}
+    for j, (n_i, n_o, w) in enumerate(zip(m.inner_load, m.outer_load, m.spin, strict=True)):
         key = (round(float(n_i), 3), round(float(n_o), 3), round(float(w), 3))
-        states[key] = states.get(key, 0) + 1
+        states.setdefault(key, []).append(j)
     n = len(m.azimuth)
-    return [(k[0], k[1], k[2], c / n) for k, c in states.items()]
+    out = []
+    for idx in states.values():
+        j = idx[0]
+        k = (float(m.spin_k[j]) if m.spin_k is not None
+             else m.spin_stiffness(float(m.inner_load[j]), float(m.outer_load[j])))
+        out.append((float(m.inner_load[j]), float(m.outer_load[j]), float(m.spin[j]),
+                    len(idx) / n, k))
+    return out
 
 
 def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods: float = 3.0,
@@ -514,29 +576,10 @@ def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods:
     n_calls = 0
     weights = []
     c = _params(m)
-    # RK4 stability: h omega_c < 2.8 for the rib contact's axial mode at a 20 um approach
-    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
-    h_max = 1.0 / omega_c
-    for n_i, n_o, w_qs, share in load_states(m):
-        period = 2.0 * math.pi / max(abs(w_qs), 1.0)
-        n_per = max(steps_per_period, int(math.ceil(period / h_max)))
-        h = period / n_per
-        n_warm = int(round(warmup_periods * n_per))
-        n_keep = int(round(periods * n_per))
-        every = max(1, n_per // samples_per_period)
-        rows = _rk4_frozen(c, float(n_i), float(n_o), float(w_qs), h, n_warm, n_keep, every)
-        n_calls += 4 * (n_warm + n_keep)
-        if not np.all(np.isfinite(rows)):
-            raise ConvergenceError("roller_dynamics.reduced", float("inf"),
-                                   "RK4 diverged (reduce the step: steps_per_period)",
-                                   {"state": (n_i, n_o, w_qs)})
-        spin = np.full(rows.shape[0], w_qs)
-        post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin)
-        k = m.spin_stiffness(n_i, n_o)
-        dw = _mean(post["spin_moment"], post["t"]) / k if k > 0 else 0.0
-        if dw != 0.0:
-            post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4],
-                         spin + dw)
+    for n_i, n_o, w_qs, share, _k in load_states(m):
+        post, calls = _state_post(m, c, n_i, n_o, w_qs, periods, warmup_periods,
+                                  steps_per_period, samples_per_period)
+        n_calls += calls
         weights.append((share, post))
     return _response(weights[0][1], "reduced", time.perf_counter() - t0, n_calls, m.geom,
                      weights)
@@ -549,6 +592,173 @@ def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> Roller
     if model == "reduced":
         return simulate_reduced(m, **options)
     raise InputError("model", model, ("full", "reduced"))
+
+
+# ---------------------------------------------------------------------------
+# coupling of the rib moments with the roller spins and the cage speed
+# ---------------------------------------------------------------------------
+def _race_eval(rm: Any, m: DynamicsModel, spins: np.ndarray, wc: float) -> Any:
+    """Paper 000 Z + 1 residuals (:func:`thermobearing.skidding.roller.evaluate`) of the
+    quasi-static model ``rm`` at roller spins ``spins`` (azimuth order of ``m``) and cage
+    speed ``wc`` [rad/s]; no whirl."""
+    from .roller import evaluate
+
+    z = len(m.azimuth)
+    return evaluate(rm, m.inner_speed, np.asarray(spins, float), float(wc), m.inner_load,
+                    np.zeros(z), m.azimuth, (0.0, 0.0))
+
+
+def race_spin_stiffness(rm: Any, m: DynamicsModel, spins: np.ndarray | None = None,
+                        cage_speed: float | None = None) -> np.ndarray:
+    """k_j = -dT_j/d omega_r [N m s] of the raceway + pocket moment T_j on every roller (the
+    moment balance of paper 000 eqs. 22-31 times D/2), by a forward difference of the
+    quasi-static model ``rm`` (:func:`thermobearing.skidding.roller.build_model`): the
+    spin stiffness of the *same* traction model that set the spins. Floor 1e-12 N m s."""
+    w = m.spin if spins is None else np.asarray(spins, float)
+    wc = m.cage_speed if cage_speed is None else cage_speed
+    h = 1e-4 * np.maximum(np.abs(w), 1.0)
+    half = 0.5 * m.geom.roller_diameter
+    e0 = _race_eval(rm, m, w, wc)
+    e1 = _race_eval(rm, m, w + h, wc)
+    return np.maximum(-(e1.roller_eq - e0.roller_eq) / h * half, 1e-12)
+
+
+def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: float,
+                periods: float, warmup_periods: float, steps_per_period: int,
+                samples_per_period: int) -> tuple[dict[str, np.ndarray], int]:
+    """RK4 run of the skew/axial motion at one frozen load state and spin ``w`` [rad/s]:
+    (post-processed samples, right-hand-side calls). ConvergenceError if it diverges."""
+    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
+    h_max = 1.0 / omega_c
+    period = 2.0 * math.pi / max(abs(w), 1.0)
+    n_per = max(steps_per_period, int(math.ceil(period / h_max)))
+    h = period / n_per
+    n_warm = int(round(warmup_periods * n_per))
+    n_keep = int(round(periods * n_per))
+    every = max(1, n_per // samples_per_period)
+    rows = _rk4_frozen(c, float(n_i), float(n_o), float(w), h, n_warm, n_keep, every)
+    if not np.all(np.isfinite(rows)):
+        raise ConvergenceError("roller_dynamics.reduced", float("inf"),
+                               "RK4 diverged (reduce the step: steps_per_period)",
+                               {"state": (n_i, n_o, w)})
+    spin = np.full(rows.shape[0], w)
+    post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin)
+    return post, 4 * (n_warm + n_keep)
+
+
+def couple_spins(m: DynamicsModel, bearing: Any, lubricant: Any, *, passes: int = 1,
+                 periods: float = 10.0, tol: float = 1e-8, max_iter: int = 30
+                 ) -> DynamicsModel:
+    """Roller spins and cage speed with the rib contact fed back (paper 003 eqs. 18-19).
+
+    The paper couples the rib moments of eq. 16 to the roller spin (eq. 18, line 4) and,
+    through the rollers' orbital forces, to the cage (eq. 19). Here, per load state of the
+    orbit, the time-mean rib moment about the roller axis M_j and circumferential force
+    F_j over the periodic skew motion (reduced model) are added to the quasi-static
+    Z + 1 equations of paper 000 (:mod:`thermobearing.skidding.roller`):
+
+        T_j(omega_j, omega_c) + M_j(omega_j) = 0,   cage_eq(omega, omega_c) + sum F_j = 0,
+
+    with M_j linearised in the spin (secant between the state's spin and the pure-rolling
+    spin, or -10 % for rollers near rolling; slope clipped to <= 0), solved by Newton with
+    the arrow-shaped Jacobian of that module; ``passes`` re-linearisations.
+    Returns a copy of ``m`` with the new spins, cage speed, outer loads and the spin
+    stiffness of the traction model (``spin_k``); ``extras["coupling"]`` holds the
+    iterations and residuals. ConvergenceError if Newton stalls. Costs ~10 reduced runs.
+    """
+    from dataclasses import replace as dc_replace
+
+    from .roller import build_model as race_model
+
+    rm = race_model(bearing, lubricant, m.extras.get("temperature", 353.15))
+    half = 0.5 * m.geom.roller_diameter
+    z = len(m.azimuth)
+    force_scale = max(float(np.max(m.inner_load, initial=0.0)), 1.0)
+    cur = m
+    history = []
+    for _pass in range(passes):
+        c = _params(cur)
+        states = load_states(cur)
+        w_roll = ((cur.inner_speed - cur.cage_speed) * cur.geom.inner_raceway_diameter
+                  / cur.geom.roller_diameter)
+        m0 = np.zeros(z)
+        slope = np.zeros(z)
+        f_t = np.zeros(z)
+        for n_i, n_o, w, _share, _k in states:
+            sel = ((np.round(cur.inner_load, 3) == round(n_i, 3))
+                   & (np.round(cur.outer_load, 3) == round(n_o, 3))
+                   & (np.round(cur.spin, 3) == round(w, 3)))
+            # secant over a wide spin step: the mean of the impacting motion scatters by
+            # ~10 %, so a small step would give a slope of noise; the moment falls with the
+            # spin (friction opposes the slide), a positive slope is noise -> clipped to 0
+            w2 = w_roll if abs(w_roll - w) > 0.1 * w else 0.9 * w
+            p0, _ = _state_post(cur, c, n_i, n_o, w, periods, 2.0, 400, 100)
+            p1, _ = _state_post(cur, c, n_i, n_o, w2, periods, 2.0, 400, 100)
+            a0 = _mean(p0["spin_moment"], p0["t"])
+            a1 = _mean(p1["spin_moment"], p1["t"])
+            m0[sel] = a0
+            slope[sel] = min((a1 - a0) / (w2 - w), 0.0)
+            f_t[sel] = _mean(p0["tangential_force"], p0["t"])
+        w_ref = cur.spin.copy()
+
+        def resid(x: np.ndarray, cur: DynamicsModel = cur, m0: np.ndarray = m0,
+                  slope: np.ndarray = slope, w_ref: np.ndarray = w_ref,
+                  f_sum: float = float(np.sum(f_t))) -> tuple[np.ndarray, Any]:
+            e = _race_eval(rm, cur, x[:z], x[z])
+            r = np.append(e.roller_eq + (m0 + slope * (x[:z] - w_ref)) / half,
+                          e.cage_eq + f_sum)
+            return r, e
+
+        x = np.append(cur.spin, cur.cage_speed)
+        r, e = resid(x)
+        norm = float(np.linalg.norm(r)) / force_scale
+        it = 0
+        while norm > tol and it < max_iter:
+            it += 1
+            h = 1e-6 * np.maximum(np.abs(x[:z]), 1.0)
+            xp = x.copy()
+            xp[:z] += h
+            rp, ep = resid(xp)
+            diag = (rp[:z] - r[:z]) / h
+            c_row = (ep.cage_terms - e.cage_terms) / h
+            hc = 1e-6 * max(abs(x[z]), 1.0)
+            xq = x.copy()
+            xq[z] += hc
+            rq, _ = resid(xq)
+            b_col = (rq[:z] - r[:z]) / hc
+            d_cc = (rq[z] - r[z]) / hc
+            diag = np.where(np.abs(diag) > 1e-300, diag, 1e-300)
+            denom = d_cc - np.sum(c_row * b_col / diag)
+            if not np.isfinite(denom) or denom == 0.0:
+                break
+            dwc = (-r[z] + np.sum(c_row * r[:z] / diag)) / denom
+            step = np.append((-r[:z] - b_col * dwc) / diag, dwc)
+            lam = min(1.0, 0.5 * m.inner_speed / max(float(np.max(np.abs(step))), 1e-300))
+            for _ in range(30):
+                xn = x + lam * step
+                if 0.0 < xn[z] < m.inner_speed and np.all(xn[:z] > 0.0):
+                    rn, en = resid(xn)
+                    nn = float(np.linalg.norm(rn)) / force_scale
+                    if np.isfinite(nn) and nn < (1.0 - 1e-4 * lam) * norm:
+                        break
+                lam *= 0.5
+            else:
+                break
+            x, r, e, norm = xn, rn, en, nn
+        if norm > max(tol, 1e-6):
+            raise ConvergenceError("roller_dynamics.couple_spins", norm,
+                                   "Newton on the Z + 1 equations with the rib moments stalled",
+                                   {"pass": _pass, "iterations": it})
+        bias = m0 + slope * (x[:z] - w_ref)
+        history.append({"iterations": it, "residual": norm, "cage_speed": float(x[z]),
+                        "mean_rib_moment": bias.copy(), "rib_tangential_force": f_t.copy()})
+        cur = dc_replace(cur, spin=x[:z].copy(), cage_speed=float(x[z]),
+                         outer_load=np.asarray(e.q_o, float).copy())
+    k = race_spin_stiffness(rm, cur)
+    extras = dict(cur.extras)
+    extras["coupling"] = {"passes": history, "cage_speed_quasi_static": m.cage_speed,
+                          "spin_quasi_static": m.spin.copy()}
+    return dc_replace(cur, spin_k=k, spin_bias=bias, extras=extras)
 
 
 #: map parameters of paper 003 Figs. 7-12 and their SI units
