@@ -324,6 +324,26 @@ def _nb_finish(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U3, q3, q0, JqM
     return y1, err, cs, use, gen, ybar
 
 
+@numba.njit(cache=True)
+def _nb_dense_batch(lams, Vs, Ws, css, uses, y0s, t0s, hs, k, t):  # pragma: no cover
+    """Dense output at times t, t[i] in step k[i] (no zero-capacity nodes)."""
+    n = y0s.shape[1]
+    out = np.empty((t.shape[0], n))
+    d = np.arange(n)
+    a = np.zeros(0, dtype=np.int64)
+    e0 = np.zeros((0, 0))
+    e1 = np.zeros((0, n))
+    for i in range(t.shape[0]):
+        j = k[i]
+        tau = min(max(t[i] - t0s[j], 0.0), hs[j])
+        if tau == 0.0:
+            out[i] = y0s[j]
+        else:
+            out[i] = y0s[j] + _nb_increment(lams[j], Vs[j], Ws[j], css[j], uses[j], tau, hs[j],
+                                            0, d, a, e0, e1)
+    return out
+
+
 _NB_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
 _EMPTY2 = np.zeros((0, 0))
 
@@ -403,6 +423,29 @@ class _Linearization:
 
 class ExpPiece:
     """Dense output of one exprb43 step on [t0, t0 + h] (exact for the linearised step)."""
+
+    @staticmethod
+    def sample_batch(pieces: tuple, t: np.ndarray) -> np.ndarray:
+        """Temperatures [K] at times t from a run's pieces (right-continuous at a step
+        start), evaluated in one compiled call when no zero-capacity nodes are present."""
+        starts = np.array([p.t0 for p in pieces])
+        k = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, len(starts) - 1)
+        if any(len(p.lin.a) for p in pieces):
+            out = np.empty((len(t), len(pieces[0].y0)))
+            for j in np.unique(k):
+                sel = k == j
+                out[sel] = pieces[j](t[sel])
+            return out
+        cplx = any(np.iscomplexobj(p.lin.lam) for p in pieces)
+        dt = complex if cplx else float
+        lams = np.array([p.lin.lam for p in pieces], dtype=dt)
+        Vs = np.array([p.lin.V for p in pieces], dtype=dt)
+        Ws = np.array([p.lin.W for p in pieces], dtype=dt)
+        css = np.array([p.cs for p in pieces])
+        uses = np.array([p.use for p in pieces])
+        y0s = np.array([p.y0 for p in pieces])
+        hs = np.array([p.h for p in pieces])
+        return _nb_dense_batch(lams, Vs, Ws, css, uses, y0s, starts, hs, k, t)
 
     __slots__ = ("t0", "h", "y0", "lin", "cs", "use")
 
