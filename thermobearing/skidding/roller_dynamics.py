@@ -7,28 +7,35 @@ contact of :mod:`thermobearing.rib` (eqs. 1-17).
 What is modelled (and what is not)
 ----------------------------------
 The paper integrates roller (6 DOF), cage (eq. 19) and inner ring (eq. 20) together with
-GSTIFF [gear1971_dae]. Here the ring and cage motions are *prescribed* by the quasi-static
-skidding solution of :func:`thermobearing.skidding.roller.solve_roller` (paper 000's
-Z + 1 equations: cage speed, roller spins and raceway loads per azimuth), and one roller is
-followed with the degrees of freedom in which the unbalance acts:
+GSTIFF [gear1971_dae]. Here the inner-ring motion and the raceway loads per azimuth are
+*prescribed* by the quasi-static skidding solution of
+:func:`thermobearing.skidding.roller.solve_roller` (paper 000's Z + 1 equations), and one
+roller is followed with the degrees of freedom in which the unbalance acts (axial
+position X, skew alpha, spin phase psi). The rib acts back on the roller spins and the
+cage speed quasi-statically (:func:`couple_spins`, default): the time-mean rib moment about
+each roller's axis and the mean circumferential rib force are added to the Z + 1 moment
+and cage balances, which are re-solved (cage speed +1.1 %, base-case slip -2 %). What is
+not modelled: the inner-ring and cage whirl, the roller tilt and radial motion, the
+cage-bar friction on the skewing roller.
 
-* ``full`` model (:func:`simulate_full`): axial position X, skew alpha, spin omega_r and the
-  spin phase psi of one roller travelling a whole orbit (azimuth phi = omega_c t) through
-  the load zone; raceway loads and the quasi-static spin follow phi. Stiff (the spin is
-  tied to the raceway traction on a ~1e-7 s scale, the rib contact is a stiff Hertz
-  spring): scipy's Radau IIA, variable step [hairer_wanner1996].
-* ``reduced`` model (:func:`simulate_reduced`): skew and axial position only, at frozen
-  azimuths (one per distinct load state of the quasi-static solution, weighted by the
-  share of the orbit it represents), spin fixed to the quasi-static value, the mean rib
-  spin moment fed back as a quasi-static spin change delta omega = M_rib / k_omega;
-  integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib contact's axial
-  mode). Base case (0.11 g): PV -3.4 %, slip +0.3 % against the full model at 1/130 of
-  its cost (19.1 s vs 0.145 s wall; 1/57 on a loaded 2-core machine; validation case
+* ``full`` model (:func:`simulate_full`): X, alpha and psi of one roller travelling a whole
+  orbit (azimuth phi = omega_c t) through the load zone; raceway loads and the (coupled)
+  spin follow phi; option ``spin_dof`` adds omega_r. Stiff (the rib contact is a stiff
+  Hertz spring): scipy's Radau IIA, variable step [hairer_wanner1996].
+* ``reduced`` model (:func:`simulate_reduced`): the same equations at frozen azimuths (one
+  per distinct load state of the orbit, weighted by the share of the orbit it
+  represents), integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib
+  contact's axial mode). Base case (0.11 g): PV -5.5 %, slip 0.0 % against the full model
+  at 1/67 of its cost (37 s vs 0.56 s wall on a loaded 2-core machine, both on the same
+  coupled spins; the coupling itself costs ~1 s; validation case
   ``paper003_pv_slip_trends``).
-* roller spins: ``spin="skidding"`` (default) takes them from the quasi-static solver, whose
-  unloaded rollers skid (about half the rolling speed at the base case); ``spin="rolling"``
-  puts every roller at its pure-rolling spin (a sensitivity switch; it moves the PV minima
-  against rib angle / crown radius onto the paper's values, see the case's SOURCE.md).
+* roller spins: ``spin="skidding"`` (default) starts from the quasi-static solver, whose
+  unloaded rollers skid (about half the rolling speed at the base case), then couples;
+  ``spin="rolling"`` puts every roller at its pure-rolling spin, uncoupled (a sensitivity
+  switch, see the case's SOURCE.md).
+* spin stiffness k_omega (the full model's ``spin_dof``): -dT/d omega_r of the raceway and
+  pocket moment T of the same quasi-static traction model (:func:`race_spin_stiffness`):
+  ~6e-5 N m s for the loaded and ~5e-7 N m s for the unloaded rollers at the base case.
 
 Rib contact: both end faces through the jitted kernel :func:`thermobearing.rib.face_contact`
 (the same code as :func:`~thermobearing.rib.rib_forces`): the contact point moves
@@ -41,7 +48,7 @@ Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
 
     m X''      = Q_ez^X + N_i mu(s_i) + N_o mu(s_o)                       (eq. 18, line 1)
     J_t alpha'' = M_unb + M_rib + M_race + M_pocket                        (eq. 18, skew line)
-    J_p omega_r' = -k_omega (omega_r - omega_qs(phi)) + M_rib,x            (full only)
+    T_j(omega_r, omega_c) + <M_rib,x> = 0, cage balance + sum <F_rib,z> = 0   (couple_spins)
 
 * unbalance (paper sec. 4; its refs [16,17] [cui2017_roller_unbalance] were not seen, so the
   force is derived from rigid-body kinematics): a mass m_u at axial position x_u and radius
@@ -58,8 +65,6 @@ Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
 * cage bars: the roller corners touch the bars when |alpha| L_r/2 > c_p/2 (c_p the pocket
   circumferential clearance, roller centred): M_pocket = -2 k_c (|alpha| L_r/2 - c_p/2) L_r/2
   sign(alpha), k_c estimated.
-* k_omega = (D_w/2)^2 (N_i + N_o) mu_t/s_0: the sensitivity of the raceway traction torque to
-  the spin (from the same traction curve).
 
 Outputs (paper 003 eqs. 21-25): PV per end face = time mean of P |v_i - v_r| over the
 periodic state [Pa m/s] (and its peak); slip speed = time mean of the inner-contact sliding
