@@ -29,7 +29,10 @@ Poiseuille and pocket friction), which lets it slide on the outer race; with
 ``unloaded_zone="outer_pure_rolling"`` it rolls purely on the outer race as paper 000 sec. 1
 states (omega_r = (d_m + D)/D omega_c, the outer shear = f_d as a constraint force). The
 second is not consistent with eq. 5 (a Newtonian film carries no Couette shear at zero
-sliding), hence not the default.
+sliding), hence not the default. With ``ring_support="films"`` the ring rests on the films of
+every roller instead of a dry load zone (films as thick as the clearance; see
+:func:`thermobearing.loads_roller.roller_film_load_distribution`); every roller then has an
+inner contact, and a bearing without radial load has a defined cage speed.
 
 Numerics: Newton-Raphson on the Z + 1 equations with a structured finite-difference
 Jacobian (roller blocks are scalar and coupled only through the cage: an "arrow" matrix,
