@@ -55,6 +55,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--spin", default="skidding", choices=("skidding", "rolling"),
                         help="roller spins from the quasi-static skidding solver (default) or "
                              "pure rolling for every roller (sensitivity)")
+    parser.add_argument("--coupling", default="rib", choices=("rib", "none"),
+                        help="feed the mean rib moments back into the roller spins and the "
+                             "cage speed (default) or keep the quasi-static solver's")
     parser.add_argument("--end-face", default="sphere", choices=("sphere", "cap"),
                         dest="end_face",
                         help="roller end face: the paper's whole sphere (default) or the sphere "
@@ -129,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
         m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], max(masses),
                            temperature=temperature, spin=args.spin,
-                           rib={"end_face": args.end_face})
+                           rib={"end_face": args.end_face}, coupling=args.coupling)
         full, red = rd.simulate_full(m), rd.simulate_reduced(m)
         print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
               f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
@@ -143,7 +146,7 @@ def run(args: argparse.Namespace) -> int:
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
                               temperature=temperature, cache=cache, spin=args.spin,
-                              end_face=args.end_face)
+                              end_face=args.end_face, coupling=args.coupling)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
