@@ -499,8 +499,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     (chord / Shamanskii step) while the full step cut the residual norm below
     ``reuse_ratio`` times its previous value; a stale step that does not reduce the norm is
     discarded and the Jacobian refreshed. Between refreshes the chord Jacobian gets good
-    Broyden updates (product form, full steps only); steps shortened by the step cap keep it
-    while they achieve half the predicted decrease. A solve that ends on a linearly
+    Broyden updates (product form, full steps only). A solve that ends on a linearly
     converging chord step takes one more (``polish_ratio``) so that the residual, and with
     it the energy balance, ends well below ``tol``. ``give_up = (n, f)``: raise
     ConvergenceError when the residual norm is still above f times its start after n
@@ -608,22 +607,21 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
-            # chord / Broyden step at the capped length, no backtracking: accepted if it
-            # gives a sufficient decrease, else discarded and the Jacobian refreshed
+            # chord / Broyden step: full step only (a step the cap would shorten refreshes
+            # the Jacobian: measured, capped chord steps can stall a cold start), accepted
+            # if it reduces the norm, else discarded and the Jacobian refreshed
             ok, nn = False, np.inf
-            try:
-                Rn, Gcn, Gkn, _ = system.evaluate(X + lam * dX * xs, G + lam * dG * gs)
-                nn = norm_of(Rn, Gcn, Gkn)
-                ok = bool(np.isfinite(nn) and nn < (1.0 - 0.1 * lam) * nrm)
-            except (InputError, FloatingPointError, ValueError):
-                ok = False
+            if lam == 1.0:
+                try:
+                    Rn, Gcn, Gkn, _ = system.evaluate(X + dX * xs, G + dG * gs)
+                    nn = norm_of(Rn, Gcn, Gkn)
+                    ok = bool(np.isfinite(nn) and nn < nrm)
+                except (InputError, FloatingPointError, ValueError):
+                    ok = False
             if ok:
-                X, G, R, Gc, Gk = X + lam * dX * xs, G + lam * dG * gs, Rn, Gcn, Gkn
-                if lam == 1.0:
-                    steps.append(np.concatenate([dX.ravel(), dG]))
-                else:
-                    steps = []          # Broyden history holds full steps only
-                if not _jacobian_still_good(lam, nn, nrm, reuse_ratio):
+                X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
+                steps.append(np.concatenate([dX.ravel(), dG]))
+                if nn > reuse_ratio * nrm:
                     jac = None
                 nrm, last_ratio = nn, nn / nrm
             else:
@@ -648,26 +646,15 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         if not ok or lam < 1e-6:
             raise ConvergenceError("skidding.ball", nrm, "line search failed",
                                    {"iteration": it, "cage_speed": G[2]})
-        if not _jacobian_still_good(lam, nn, nrm, reuse_ratio):
+        if not (lam == 1.0 and nn < reuse_ratio * nrm):
             jac = None
         else:
-            steps = [np.concatenate([dX.ravel(), dG])] if lam == 1.0 else []
+            steps = [np.concatenate([dX.ravel(), dG])]
         X, G, R, Gc, Gk, nrm, last_ratio = Xn, Gn, Rn, Gcn, Gkn, nn, nn / nrm
     if not nrm <= tol:
         raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
                                {"cage_speed": G[2], "delta_a": G[0], "delta_r": G[1]})
     return X, G, nrm, it
-
-
-def _jacobian_still_good(lam: float, new_norm: float, old_norm: float,
-                         reuse_ratio: float) -> bool:
-    """Keep the Jacobian after a step of length ``lam``? A full step must cut the residual
-    norm below ``reuse_ratio`` times the old one; a step shortened by the step cap (the
-    linear model predicts the factor 1 - lam) must achieve at least half the predicted
-    decrease."""
-    if lam >= 1.0:
-        return new_norm < reuse_ratio * old_norm
-    return new_norm < (1.0 - 0.5 * lam) * old_norm
 
 
 # ---------------------------------------------------------------------------------------------
