@@ -12,7 +12,8 @@ Cases (each yields records with a pass/fail flag ``ok`` and the measured violati
 4. ``steady_limit``: one step of dt = 1e14 s equals the steady Newton solution (to
    C/(dt K) ~ 1e-10 K).
 
-Each case runs ours (backward_euler, tr_bdf2) and, to show that the checks bite, explicit
+Each case runs ours (backward_euler, tr_bdf2, exprb43 -- the exponential method is exact on
+these linear cases, so its bounds hold at any dt) and, to show that the checks bite, explicit
 Euler and Crank-Nicolson on the same network and steps: explicit Euler blows up once
 dt > 2 C/K of the smallest node (and refuses a C = 0 node), Crank-Nicolson rings (its
 amplification tends to -1 on stiff modes; the residual of an algebraic node that is off its
@@ -35,7 +36,7 @@ from thermobearing.errors import ConvergenceError, InputError
 from thermobearing.network import integrate, solve_steady
 from thermobearing.network.problems import T_AMBIENT, bearing_network
 
-OURS = ("backward_euler", "tr_bdf2")
+OURS = ("backward_euler", "tr_bdf2", "exprb43")
 OTHERS = ("explicit_euler", "crank_nicolson")
 
 
@@ -126,6 +127,7 @@ def case_load_drop(quick=False):
 
     steady = solve_steady(net, q).temperatures_vector
     for method, dt in (("backward_euler", 60.0), ("tr_bdf2", None), ("tr_bdf2", 60.0),
+                       ("exprb43", None), ("exprb43", 600.0),
                        ("crank_nicolson", 60.0), ("explicit_euler", 60.0)):
         t0 = time.perf_counter()
         try:
@@ -154,7 +156,7 @@ def case_steady_limit(quick=False):
     net = bearing_network(20, film_capacity=0.0)
     q = _heat(net)
     steady = solve_steady(net, q).temperatures_vector
-    for method in ("backward_euler", "tr_bdf2", "crank_nicolson"):
+    for method in ("backward_euler", "tr_bdf2", "exprb43", "crank_nicolson"):
         res, t, fail = _run(net, q, 1e14, method, 1e14)
         if res is None:
             out.append(_record("steady_limit", method, "dt=1e14", t, False, np.inf, note=fail))

@@ -10,6 +10,10 @@ Steppers (registry ``stepper``)
   iteration matrix ``C - d h J`` (d = gamma/2) serves both stages; L-stable, second order,
   stiffly accurate. Adaptive step size (or fixed ``dt``).
 - ``backward_euler``: first order, L-stable; adaptive (error ~ h/2 (f1 - f0)) or fixed.
+- ``exprb43`` (module :mod:`.exponential`): exponential Rosenbrock method of order 4
+  (Hochbruck, Ostermann & Schweitzer 2009): the linearised network is integrated exactly
+  (eigendecomposition of the small dense Jacobian), so steps are limited only by the
+  nonlinearity of q; exact dense output; O(n^3) per step (dense networks only).
 - ``crank_nicolson``: trapezoidal rule, A- but not L-stable: it rings on stiff modes and on
   zero-capacity nodes. Fixed step only; kept to show (BM-3) what the L-stable methods avoid.
 - ``explicit_euler``: forward Euler, unstable above h = 2 C/K on the smallest node.

@@ -1,6 +1,7 @@
 """BM-3 hard cases run as tests (benchmarks/bm3_hard_cases.py, quick settings).
 
-Ours (backward Euler at any step, TR-BDF2 under error control) must pass every check;
+Ours (backward Euler and exprb43 at any step, TR-BDF2 under error control) must pass every
+check;
 explicit Euler and Crank-Nicolson must fail the same checks, so that they are seen to bite.
 """
 
@@ -35,11 +36,15 @@ def test_tiny_and_zero_capacity_nodes(bm3):
     # TR-BDF2 at a fixed 60 s: accurate at the end, bounded overshoot on the way (R(z) < 0)
     for r in _by(recs, "tr_bdf2"):
         assert r["max_error_K"] < 1e-3 and r["violation_K"] < 0.21 * 15.0
+    # exprb43 is the exact flow on this linear network: within bounds, error ~ round-off
+    for r in _by(recs, "exprb43"):
+        assert r["ok"] and r["max_error_K"] < 1e-6
 
 
 def test_step_size_sweep_maximum_principle(bm3):
     recs = bm3.case_dt_sweep(quick=True)
     assert all(r["ok"] for r in _by(recs, "backward_euler"))
+    assert all(r["ok"] for r in _by(recs, "exprb43"))
     assert not any(r["ok"] for r in _by(recs, "crank_nicolson"))
     assert not any(r["ok"] for r in _by(recs, "explicit_euler"))
 
@@ -48,6 +53,7 @@ def test_load_drop_to_zero(bm3):
     recs = bm3.case_load_drop()
     assert _by(recs, "backward_euler")[0]["ok"]
     assert _by(recs, "tr_bdf2", "adaptive")[0]["ok"]
+    assert all(r["ok"] for r in _by(recs, "exprb43"))
     assert not _by(recs, "crank_nicolson")[0]["ok"]
 
 
@@ -55,6 +61,7 @@ def test_steady_limit(bm3):
     recs = bm3.case_steady_limit()
     assert _by(recs, "backward_euler")[0]["ok"]
     assert _by(recs, "tr_bdf2")[0]["ok"]
+    assert _by(recs, "exprb43")[0]["ok"]
     assert not _by(recs, "crank_nicolson")[0]["ok"]
 
 
