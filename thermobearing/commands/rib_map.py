@@ -154,7 +154,7 @@ def run(args: argparse.Namespace) -> int:
                         "pv_right [MPa m/s]", "pv_peak_left [MPa m/s]",
                         "pv_peak_right [MPa m/s]", "pv_contact_left [MPa m/s]",
                         "pv_contact_right [MPa m/s]", "contact_slide_speed [m/s]",
-                        "slip_speed [m/s]", "max_skew [deg]",
+                        "slip_speed [m/s]", "surface_slip_speed [m/s]", "max_skew [deg]",
                         "rib_contact_fraction [-]", "rib_heat_per_roller [W]", "cost [s]"])
             for r in rows:
                 w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
@@ -163,6 +163,7 @@ def run(args: argparse.Namespace) -> int:
                             f"{r['pv_contact_left'] / 1e6:.6g}",
                             f"{r['pv_contact_right'] / 1e6:.6g}",
                             f"{r['contact_slide_speed']:.6g}", f"{r['slip_speed']:.6g}",
+                            f"{r['surface_slip_speed']:.6g}",
                             f"{math.degrees(r['max_skew']):.5g}",
                             f"{r['rib_contact_fraction']:.4g}", f"{r['rib_heat']:.5g}",
                             f"{r['cost_s']:.3g}"])

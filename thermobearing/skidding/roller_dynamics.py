@@ -14,7 +14,7 @@ roller is followed with the degrees of freedom in which the unbalance acts (axia
 position X, skew alpha, spin phase psi). The rib acts back on the roller spins and the
 cage speed quasi-statically (:func:`couple_spins`, default): the time-mean rib moment about
 each roller's axis and the mean circumferential rib force are added to the Z + 1 moment
-and cage balances, which are re-solved (cage speed +1.1 %, base-case slip -2 %). What is
+and cage balances, which are re-solved (cage speed +1.1 %, base-case slip -3 %). What is
 not modelled: the inner-ring and cage whirl, the roller tilt and radial motion, the
 cage-bar friction on the skewing roller.
 
@@ -26,8 +26,8 @@ cage-bar friction on the skewing roller.
   per distinct load state of the orbit, weighted by the share of the orbit it
   represents), integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib
   contact's axial mode). Base case (0.11 g): PV -5.5 %, slip 0.0 % against the full model
-  at 1/67 of its cost (37 s vs 0.56 s wall on a loaded 2-core machine, both on the same
-  coupled spins; the coupling itself costs ~1 s; validation case
+  at 1/57 of its cost (8.0 s vs 0.14 s wall; 37 s vs 0.56 s on a loaded 2-core machine),
+  both on the same coupled spins; the coupling itself costs ~1 s (validation case
   ``paper003_pv_slip_trends``).
 * roller spins: ``spin="skidding"`` (default) starts from the quasi-static solver, whose
   unloaded rollers skid (about half the rolling speed at the base case), then couples;
@@ -67,11 +67,14 @@ Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
   sign(alpha), k_c estimated.
 
 Outputs (paper 003 eqs. 21-25): PV per end face = time mean of P |v_i - v_r| over the
-periodic state [Pa m/s] (and its peak); slip speed = time mean of the inner-contact sliding
-speed magnitude sqrt(V_roll^2 + s_i^2 + (alpha' L_e)^2/12), V_roll = (omega_i - omega_c)
-d_i/2 - omega_r D_w/2. Eq. 25 as printed is garbled (it multiplies a speed difference by a
-length difference); its first factor is V_roll, which we keep, and we add the skew-induced
-components the paper's discussion attributes the slip rise to. Units: SI.
+periodic state [Pa m/s] (also its peak and its mean over the time in contact); slip speed =
+time mean of |V_roll|, V_roll = (omega_i - omega_c) d_i/2 - omega_r D_w/2. Eq. 25 as printed,
+abs[(omega_ix d_i/2 - omega_rxj)(R_ro - omega_rsxj D_w/2)], multiplies a speed by a length
+difference; with the parentheses moved, |(omega_ix - omega_rxj)(R_ro - D_w/2) -
+omega_rsxj D_w/2| with omega_rxj the roller's orbital speed (= omega_c), R_ro - D_w/2 =
+d_i/2 and omega_rsxj its spin, it is exactly |V_roll|, the rolling slip at the inner
+raceway. The full sliding magnitude with the skew-induced parts,
+sqrt(V_roll^2 + s_i^2 + (alpha' L_e)^2/12), is ``surface_slip_speed``. Units: SI.
 """
 
 from __future__ import annotations
@@ -396,8 +399,10 @@ class RollerResponse:
     """PV and slip of one roller over the periodic state (paper 003 eqs. 21-25), SI.
 
     pv_left, pv_right : time-mean P |v| per end face [Pa m/s]; pv_peak_* the maxima.
-    slip_speed : time-mean inner-contact sliding speed magnitude [m/s].
-    rolling_slip_speed : its rolling-direction part |V_roll| (mean) [m/s].
+    slip_speed : time mean of the slip speed of eq. 25, |V_roll| at the inner contact [m/s].
+    rolling_slip_speed : the same (kept for existing callers) [m/s].
+    surface_slip_speed : time mean of the full sliding-speed magnitude of the inner contact,
+        sqrt(V_roll^2 + s_i^2 + (alpha' L_e)^2/12), skew-induced parts included [m/s].
     rib_heat_left, rib_heat_right : time-mean friction heat |Q_e_theta v| per face [W].
     max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
     mean_spin_moment : time-mean rib moment about the roller axis [N m].
@@ -422,6 +427,7 @@ class RollerResponse:
     cost_s: float
     n_rhs: int
     series: dict[str, np.ndarray] = field(default_factory=dict, repr=False)
+    surface_slip_speed: float = 0.0
     pv_contact_left: float = 0.0
     pv_contact_right: float = 0.0
     contact_slide_speed: float = 0.0
@@ -538,7 +544,8 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
         pv_left=mean["pv_left"], pv_right=mean["pv_right"],
         pv_peak_left=max(float(np.max(p["pv_left"])) for _, p in weights),
         pv_peak_right=max(float(np.max(p["pv_right"])) for _, p in weights),
-        slip_speed=mean["slip"], rolling_slip_speed=mean["v_roll"],
+        slip_speed=mean["v_roll"], rolling_slip_speed=mean["v_roll"],
+        surface_slip_speed=mean["slip"],
         rib_heat_left=mean["heat_left"], rib_heat_right=mean["heat_right"],
         max_skew=max(float(np.max(np.abs(p["skew"]))) for _, p in weights),
         rib_contact_fraction=contact, mean_spin_moment=mean["spin_moment"],
@@ -817,6 +824,7 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                          "contact_slide_speed": r.contact_slide_speed,
                          "slip_speed": r.slip_speed,
                          "rolling_slip_speed": r.rolling_slip_speed,
+                         "surface_slip_speed": r.surface_slip_speed,
                          "max_skew": r.max_skew, "rib_contact_fraction": r.rib_contact_fraction,
                          "rib_heat": r.rib_heat, "cost_s": r.cost_s})
     return rows
