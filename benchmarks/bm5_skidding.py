@@ -10,7 +10,7 @@ sweep). The anchor: :func:`scipy.optimize.root` (method "hybr") and
 identical cold start, on a subset of points; failures of each method are counted.
 Times are process CPU times (the build machine is shared; wall time is not meaningful there).
 
-Usage: python benchmarks/bm5_skidding.py [--quick] [--json] [--out DIR]
+Usage: python benchmarks/bm5_skidding.py [--quick] [--nmap N] [--z 8,16,32] [--json] [--out DIR]
 """
 
 from __future__ import annotations
@@ -156,9 +156,16 @@ def main(argv=None) -> int:
     ap.add_argument("--quick", action="store_true", help="5 x 5 map, Z = 16 only")
     ap.add_argument("--json", action="store_true", help="print JSON records")
     ap.add_argument("--out", default="benchmarks/out", help="folder for the PNG")
+    ap.add_argument("--nmap", type=int, default=None,
+                    help="map size n x n (default 20, 5 with --quick)")
+    ap.add_argument("--z", default=None, help="ball counts, e.g. 8,16,32 (default 8,16,32; "
+                    "16 with --quick)")
+    ap.add_argument("--anchor-points", type=int, default=None,
+                    help="points of the scipy anchor subset (default all, 4 with --quick)")
     args = ap.parse_args(argv)
-    nmap = 5 if args.quick else 20
-    zs = (16,) if args.quick else (8, 16, 32)
+    nmap = args.nmap or (5 if args.quick else 20)
+    zs = (tuple(int(z) for z in args.z.split(",")) if args.z
+          else ((16,) if args.quick else (8, 16, 32)))
     speeds = np.linspace(300.0, 3000.0, nmap)
     loads = np.concatenate([[40e3], np.geomspace(40e3, 200.0, nmap - 2)[1:], [200.0, 0.0]])
     loads = np.unique(loads)[::-1][:nmap]
@@ -203,10 +210,12 @@ def main(argv=None) -> int:
     sub_speeds = speeds[:: max(1, nmap // 3)]
     sub_loads = loads[:: max(1, nmap // 3)]
     pts = [(float(n), float(fa)) for n in sub_speeds for fa in sub_loads]
-    if args.quick:
+    if args.anchor_points:
+        pts = pts[:: max(1, len(pts) // args.anchor_points)][:args.anchor_points]
+    elif args.quick:
         pts = pts[:4]
     anchor_rows = []
-    for Z in ((16,) if args.quick else (8, 16)):
+    for Z in [z for z in zs if z <= 16]:
         res = run_scipy(Z, pts, temps["hot_oil"])
         for meth in ("newton", "root_hybr", "least_squares_trf"):
             t = [rec[meth][1] for _, rec in res]
