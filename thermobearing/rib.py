@@ -26,8 +26,10 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   (independent of skew), but it moves **circumferentially** by
   ``z_K = (R_s - L_r/2) sin(alpha)`` -- about 3 mm at the 0.6 deg skew at which a centred
   roller of the base case reaches the rib: a contact point that far from the roller axis
-  slides radially at ``omega_r z_K`` over the rib (eq. 24 below). Larger axial clearance ->
-  contact at larger skew -> larger offset and sliding speed (paper 003 Fig. 9).
+  slides radially at about ``omega_r R_s sin(alpha)`` over the rib (eq. 24 below). Larger
+  axial clearance -> contact at larger skew -> larger offset and sliding speed (paper 003
+  Fig. 9). With the paper's sphere the point may lie beyond the roller's chamfer
+  (3.4 mm from the axis at the base case, flat face 2.5 mm): the paper's model, kept.
   ``end_face="cap"`` (an option, not the paper's model) bounds the sphere by the chamfer:
   a toroidal blend of radius = chamfer between the sphere and the roller's cylinder;
   beyond its edge the contact moves onto the blend (smaller curvature radius, point
@@ -50,7 +52,8 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   At the contact point of eq. 11 (``rho = R_s sin(theta_f)`` below the roller axis) and
   offset ``z_K`` this gives a circumferential part
   ``(omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho - alpha_dot x_K`` (the only part
-  for ``alpha = 0``) and a radial part ``~ -(omega_r + omega_i - omega_c) z_K``. The
+  for ``alpha = 0``) and a radial part
+  ``-(omega_i - omega_c) z_K - omega_r R_s cos(theta_f) sin(alpha)``. The
   friction of eq. 12 acts along this sliding direction, so its radial part brakes the
   roller spin with the arm ``z_K`` (M_e_theta_x of eq. 16 generalised) -- the "drag of the
   rib on the roller end face" that the paper's discussion of Figs. 9, 11, 12 invokes.
