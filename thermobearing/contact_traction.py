@@ -130,6 +130,18 @@ def _rule(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
     return xg, yg, shape, area_w
 
 
+@functools.lru_cache(maxsize=64)
+def _bases(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
+    """xg^2 and the node-vector bases (1, xg^2, yg), (1, xg^2, xg) of the moment sums."""
+    xg, yg, _, _ = _rule(kind, n_major, n_minor)
+    xg2 = xg * xg
+    base_x = np.ascontiguousarray(np.stack([np.ones_like(xg), xg2, yg], axis=1))
+    base_y = np.ascontiguousarray(np.stack([np.ones_like(xg), xg2, xg], axis=1))
+    for arr in (xg2, base_x, base_y):
+        arr.flags.writeable = False
+    return xg2, base_x, base_y
+
+
 def integrate(
     law: TractionLaw,
     *,
@@ -230,11 +242,12 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
         p0 = np.where(loaded, q_load / (np.pi * safe_ab), 0.0)
 
     e = (...,) + (None,)
-    x = a[e] * xg
-    y = b[e] * yg
-    z = (0.5 * np.asarray(curvature)[e]) * x * x
-    dvx = vx[e] + wy[e] * z - wz[e] * y
-    dvy = vy[e] + wz[e] * x - wx[e] * z
+    xg2, base_x, base_y = _bases(kind, n_major, n_minor)
+    # node (x, y, z) = (a xg, b yg, a2c xg^2) with z = x^2 / (2 R_d): per-contact
+    # coefficients times fixed node vectors
+    a2c = 0.5 * np.asarray(curvature) * a * a
+    dvx = vx[e] + (wy * a2c)[e] * xg2 - (wz * b)[e] * yg
+    dvy = vy[e] + (wz * a)[e] * xg - (wx * a2c)[e] * xg2
     speed = np.sqrt(dvx * dvx + dvy * dvy)
     pressure = p0[e] * pshape
     weight = np.where(loaded, ab, 0.0)[e] * area_w  # dA [m^2]
@@ -248,27 +261,33 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
         # the viscosity once per contact and broadcasts it over the nodes
         t_nodes = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s)[e]
     core = getattr(law, "_stress", None)   # unchecked core of the law's shear_stress
-    tau, dtau = (core if core is not None else law.shear_stress)(speed, pressure, h_nodes,
-                                                                  t_nodes)
+    if core is not None:
+        tau, dtau = core(speed, pressure, h_nodes, t_nodes, derivative=jacobian)
+    else:
+        tau, dtau = law.shear_stress(speed, pressure, h_nodes, t_nodes)
     tau = np.broadcast_to(np.asarray(tau, dtype=float), speed.shape)
-    dtau = np.broadcast_to(np.asarray(dtau, dtype=float), speed.shape)
 
     moving = speed > 0.0
     safe_speed = np.where(moving, speed, 1.0)
     tw = tau * weight                               # |traction| per node [N]
     per_speed = np.where(moving, tw / safe_speed, 0.0)
-    tx = -per_speed * dvx  # traction force on the element per node [N], against the slip
-    ty = -per_speed * dvy
-
-    fx = tx.sum(-1)
-    fy = ty.sum(-1)
-    mx = -(z * ty).sum(-1)
-    my = (z * tx).sum(-1)
-    mz = (x * ty - y * tx).sum(-1)
+    # traction on the element per node: t = -per_speed dv (against the slip); its sums and
+    # first moments over the nodes as two small matrix products with the node vectors
+    sx = (per_speed * dvx) @ base_x               # (sum, sum xg^2, sum yg) of -t_x
+    sy = (per_speed * dvy) @ base_y               # (sum, sum xg^2, sum xg) of -t_y
+    fx = -sx[..., 0]
+    fy = -sy[..., 0]
+    mx = a2c * sy[..., 1]                         # -sum z t_y
+    my = -a2c * sx[..., 1]                        # sum z t_x
+    mz = b * sx[..., 2] - a * sy[..., 2]          # sum (x t_y - y t_x)
     heat = (tw * speed).sum(-1)
 
     jac = grad = None
     if jacobian:
+        dtau = np.broadcast_to(np.asarray(dtau, dtype=float), speed.shape)
+        x = a[e] * xg
+        y = b[e] * yg
+        z = a2c[e] * xg2
         ex = np.where(moving, dvx / safe_speed, 0.0)
         ey = np.where(moving, dvy / safe_speed, 0.0)
         # d t / d dv = -[tau' e e^T + (tau/s)(I - e e^T)] (per unit area)

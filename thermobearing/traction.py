@@ -118,7 +118,7 @@ class LinearSaturatingTraction:
         return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
 
     def _stress(self, s: np.ndarray, p: np.ndarray, film_thickness: Any = None,
-                temperature: Any = None) -> ShearStress:
+                temperature: Any = None, derivative: bool = True) -> ShearStress:
         """Unchecked core of :meth:`shear_stress` (float arrays, s >= 0 finite)."""
         below = s < self.slip_speed_max
         mu = self.mu_max * np.where(below, s / self.slip_speed_max, 1.0)
@@ -198,26 +198,32 @@ class EyringLimitingShearTraction:
                             temperature)
 
     def _stress(self, s: np.ndarray, p: np.ndarray, h: np.ndarray,
-                temperature: Any) -> ShearStress:
-        """Unchecked core of :meth:`shear_stress` (float arrays; s >= 0 finite, h > 0)."""
+                temperature: Any, derivative: bool = True) -> ShearStress:
+        """Unchecked core of :meth:`shear_stress` (float arrays; s >= 0 finite, h > 0).
+
+        ``derivative=False`` skips d tau / d dv (returned as None) for callers that only
+        need the stress (the contact integration without its Jacobian)."""
         p = np.maximum(p, 0.0)
         eta = np.asarray(self.lubricant.dynamic_viscosity(temperature, p), dtype=float)
         rate_coeff = eta / h  # d(eta*gamma)/d(dv) [Pa s/m]
         tau_n = rate_coeff * s
+        dtau_e = None
         if self.eyring_stress is None:
             tau_e, dtau_e = tau_n, rate_coeff
         else:
             x = tau_n / self.eyring_stress
             tau_e = self.eyring_stress * np.arcsinh(x)
-            dtau_e = rate_coeff / np.sqrt(1.0 + x * x)
+            if derivative:
+                dtau_e = rate_coeff / np.sqrt(1.0 + x * x)
         tau_l = self.limiting_shear_coefficient * p
         if self.cap == "min":
             capped = tau_e >= tau_l
-            return ShearStress(np.where(capped, tau_l, tau_e), np.where(capped, 0.0, dtau_e))
+            return ShearStress(np.where(capped, tau_l, tau_e),
+                               np.where(capped, 0.0, dtau_e) if derivative else None)
         ratio = np.divide(tau_e, tau_l, out=np.full_like(tau_e, np.inf), where=tau_l > 0)
         ratio = np.minimum(ratio, 1e150)
         factor = 1.0 / np.sqrt(1.0 + ratio * ratio)
-        return ShearStress(tau_e * factor, dtau_e * factor ** 3)
+        return ShearStress(tau_e * factor, dtau_e * factor ** 3 if derivative else None)
 
     def coefficient(self, slide_speed: Any, pressure: Any, film_thickness: Any,
                     temperature: Any) -> np.ndarray:
@@ -329,7 +335,7 @@ class FourParameterTraction:
         return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
 
     def _stress(self, u: np.ndarray, p: np.ndarray, film_thickness: Any = None,
-                temperature: Any = None) -> ShearStress:
+                temperature: Any = None, derivative: bool = True) -> ShearStress:
         """Unchecked core of :meth:`shear_stress` (float arrays, u >= 0 finite)."""
         a, b, c, d = self._coefficients
         e = np.exp(-c * u)
