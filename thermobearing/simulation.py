@@ -114,7 +114,17 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
         add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
     film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
                             else "pan_hamrock_central")
-    add(FILM, film, "film thickness of the raceway contacts")
+    if film in _numerical_film_models():
+        from .ehl import EHL_SOLVERS
+
+        check_film_model(film, is_ball)
+        add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
+            "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
+    else:
+        if film not in FILM:
+            raise UnknownNameError("models.film", film,
+                                   FILM.names() + _numerical_film_models())
+        add(FILM, film, "film thickness of the raceway contacts")
     if need["kinematics"]:
         add(KINEMATICS, scene.models.get("kinematics", "skidding"),
             "cage and element speeds, sliding speeds")
@@ -132,6 +142,45 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
         if need["transient"]:
             add(STEPPERS, scene.solver.stepper, "transient temperatures")
     return links
+
+
+def _numerical_film_models() -> list[str]:
+    """Names of the numerical line-contact film models (``thermobearing.ehl.EHL_SOLVERS``)."""
+    from .ehl import EHL_SOLVERS
+
+    return EHL_SOLVERS.names()
+
+
+def check_film_model(film: str, is_ball: bool) -> None:
+    """Numerical EHL film models are line-contact (roller) models: InputError for balls."""
+    if is_ball and film in _numerical_film_models():
+        from .film import FILM
+
+        raise InputError(
+            "models.film", film,
+            "a closed-form film model for ball bearings (" + ", ".join(FILM.names())
+            + "); " + " and ".join(repr(n) for n in _numerical_film_models())
+            + " solve line contacts and apply to roller bearings only")
+
+
+def film_kinematics_options(film: str | None, bearing: Any, lubricant: Any,
+                            is_ball: bool) -> dict[str, Any]:
+    """Roller-solver options that put a numerical film model in the quasi-dynamics.
+
+    ``numerical_tehl``: a :class:`thermobearing.ehl.coupling.TehlFilmModel` (one per bearing,
+    its interpolation table lives as long as the Simulation) as ``film_model`` and the
+    ``numerical_tehl`` drag model; ``numerical_ehl``: the isothermal numerical drag model.
+    Closed-form names: no options (the roller solver keeps its own default film).
+    """
+    if film is None or film not in _numerical_film_models():
+        return {}
+    check_film_model(film, is_ball)
+    if film == "numerical_tehl":
+        from .ehl.coupling import roller_film_model
+
+        return {"film_model": roller_film_model(bearing, lubricant),
+                "drag_model": "numerical_tehl"}
+    return {"drag_model": film}
 
 
 # ---------------------------------------------------------------------------
@@ -193,6 +242,8 @@ class Simulation:
             b = load_bearing(src, overrides=spec.overrides or None)
             is_ball = hasattr(b, "ball_diameter")
             opts = dict(kin_options)
+            opts.update(film_kinematics_options(scene.models.get("film"), b, self.lubricant,
+                                                is_ball))
             if is_ball:
                 params, b, note = _apply_calibration(b, spec, scene)
                 opts["params"] = params
@@ -497,9 +548,14 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
     t_c = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
     state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
     rows = []
+    numerical = _numerical_film_of(b, lubricant)
     for cs in state.contacts:
         q = np.asarray(cs.normal_load)
         j = int(np.argmax(q))
+        extra: dict[str, Any] = {}
+        if numerical is not None:
+            extra = numerical(cs.race, float(q[j]),
+                              float(np.asarray(cs.entrainment_speed)[j]), t_c)
         rows.append({"race": cs.race, "max load [N]": float(q[j]),
                      "max pressure [GPa]": float(np.asarray(cs.max_pressure)[j]) / 1e9,
                      "semi-major a [mm]": float(np.asarray(cs.semi_major)[j]) * 1e3,
@@ -508,7 +564,44 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
                      "entrainment speed [m/s]": float(np.asarray(cs.entrainment_speed)[j]),
                      "central film [um]": (float(np.asarray(cs.film_thickness)[j]) * 1e6
                                            if cs.film_thickness is not None else math.nan)})
+        if extra:
+            row = rows[-1]
+            row["closed-form central film [um]"] = row["central film [um]"]
+            row["central film [um]"] = extra["numerical central film [um]"]
+            row["minimum film [um]"] = extra["numerical minimum film [um]"]
+            row["film model"] = extra["film model"]
     return rows
+
+
+def _numerical_film_of(b: _Bearing, lubricant: Any) -> Any:
+    """For film-only scenes with a numerical film model: ``f(race, load, u_e, T) -> columns``
+    (central and minimum film of the numerical model at pure rolling, the closed-form
+    central film beside it), else None."""
+    model = b.kin_options.get("film_model")
+    drag = b.kin_options.get("drag_model")
+    if model is None and drag != "numerical_ehl":
+        return None
+    bearing = b.bearing
+    length = bearing.roller_effective_length
+    e_prime = bearing.effective_modulus
+
+    def columns(race: str, load: float, ue: float, temperature: float) -> dict[str, Any]:
+        rx, _ = bearing.curvature(race)
+        w = load / length
+        if model is not None:
+            res = model.films(w, ue, 0.0, temperature, rx, e_prime)
+            hc, hm = float(res.central_film[0]), float(res.minimum_film[0])
+            name = "numerical_tehl"
+        else:
+            from .ehl import EHL_SOLVERS
+
+            p = EHL_SOLVERS.get("numerical_ehl")(w, rx, e_prime, ue, 0.0, temperature,
+                                                 lubricant=lubricant)
+            hc, hm, name = p.central_film, p.minimum_film, "numerical_ehl"
+        return {"film model": name, "numerical central film [um]": hc * 1e6,
+                "numerical minimum film [um]": hm * 1e6}
+
+    return columns
 
 
 def summarize_scene(scene_toml: str) -> dict[str, float]:

@@ -4,12 +4,15 @@ Public API
 ----------
 :func:`solve_dimensionless` (Moes M, L), :func:`solve_line_contact` (dimensional, isothermal),
 :func:`solve_thermal_line_contact` (thermal, paper 001), :class:`FilmTable` (cache /
-interpolation table for transients), registry :data:`EHL_SOLVERS` (``"numerical_ehl"``,
-``"numerical_tehl"``). See :mod:`.line`, :mod:`.thermal`, :mod:`.solver`, :mod:`.kernel`,
+interpolation table for transients), :class:`TehlFilmModel` (the table-backed film model of
+the roller quasi-dynamics, scene ``film = "numerical_tehl"``, see :mod:`.coupling`),
+registry :data:`EHL_SOLVERS` (``"numerical_ehl"``, ``"numerical_tehl"``).
+See :mod:`.line`, :mod:`.thermal`, :mod:`.solver`, :mod:`.kernel`,
 :mod:`.cache`.
 """
 
 from .cache import EHL_SOLVERS, FilmPoint, FilmTable, numerical_ehl, numerical_tehl
+from .coupling import TehlFilmModel, roller_film_model, tehl_contact_forces  # "numerical_tehl"
 from .drag import NumericalRollerDrag  # registers "numerical_ehl" in ROLLER_DRAG (skidding)
 from .line import (
     LineContactCase,
@@ -25,7 +28,8 @@ from .thermal import SolidThermal, ThermalLineEHLSolution, solve_thermal_line_co
 __all__ = [
     "EHL_SOLVERS", "NumericalRollerDrag", "FilmPoint", "FilmTable", "LineContactCase",
     "LineEHLSolution",
-    "SolidThermal", "ThermalLineEHLSolution", "Traction", "line_contact_case",
+    "SolidThermal", "TehlFilmModel", "ThermalLineEHLSolution", "Traction",
+    "line_contact_case", "roller_film_model", "tehl_contact_forces",
     "moes_dimensionless", "numerical_ehl", "numerical_tehl", "solve_dimensionless",
     "solve_line_contact", "solve_thermal_line_contact",
 ]

@@ -84,24 +84,33 @@ def numerical_ehl(load_per_length: float, reduced_radius_x: float, effective_mod
 
 @EHL_SOLVERS.register(
     "numerical_tehl",
-    references=["shi2015_tehl_roller", "yang_wen1990", "venner_lubrecht2000"],
+    references=["shi2015_tehl_roller", "yang_wen1990", "venner_lubrecht2000",
+                "johnson_tevaarwerk1977_traction"],
     parameters=_PARAMS,
-    validity="1 <= M <= 3000, 0 <= L <= 40 at the inlet temperature; |SRR| < 2; Newtonian",
+    validity="1 <= M <= 3000, 0 <= L <= 40 at the inlet temperature; |SRR| < 2; Newtonian "
+             "(or Ree-Eyring with eyring_stress)",
 )
 def numerical_tehl(load_per_length: float, reduced_radius_x: float, effective_modulus: float,
                    entrainment_speed: float, slide_to_roll: float, inlet_temperature: float,
-                   *, lubricant, solid, n: int = 512) -> FilmPoint:
+                   *, lubricant, solid, solid2=None, n: int = 512,
+                   **solver_kwargs) -> FilmPoint:
     """Thermal numerical line-contact EHL (paper 001 eqs. 6 and 8, line-contact form).
 
-    ``solid``: :class:`thermobearing.ehl.thermal.SolidThermal` of both bodies (or a
-    :class:`thermobearing.materials.Material`).
+    ``solid``: :class:`thermobearing.ehl.thermal.SolidThermal` of surface 1 (moving at
+    ``u_m (1 + SRR/2)``) and, unless ``solid2`` is given, of surface 2 (or a
+    :class:`thermobearing.materials.Material`). ``solver_kwargs`` go to
+    :func:`thermobearing.ehl.thermal.solve_thermal_line_contact` (``nz``, ``ns``,
+    ``tol_temperature``, ...).
     """
     from .thermal import SolidThermal, solve_thermal_line_contact
 
     s = solid if isinstance(solid, SolidThermal) else SolidThermal.of(solid)
+    s2 = None if solid2 is None else (solid2 if isinstance(solid2, SolidThermal)
+                                      else SolidThermal.of(solid2))
     sol = solve_thermal_line_contact(load_per_length, reduced_radius_x, effective_modulus,
                                      entrainment_speed, slide_to_roll, lubricant,
-                                     inlet_temperature, solid1=s, n=n)
+                                     inlet_temperature, solid1=s, solid2=s2, n=n,
+                                     **solver_kwargs)
     return FilmPoint(sol.central_film, sol.minimum_film, sol.max_pressure, sol.shear_force,
                      sol.rolling_force, sol.max_temperature - float(inlet_temperature))
 

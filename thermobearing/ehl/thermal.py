@@ -190,10 +190,35 @@ def _solid_grid(depth: float, ns: int, first: float) -> np.ndarray:
     return np.concatenate(([0.0], np.cumsum(steps) * depth / np.sum(steps)))
 
 
-def _film_fields(lub, T, p, h, zeta, dpdx, ua, ub):
-    """Viscosity, density, velocity, shear stress and the effective integrals (n, nz)."""
+def _couette_eyring_stress(eta, h, zeta, du, tau0):
+    """Couette shear stress [Pa] of a Ree-Eyring film column, signed like ``du``.
+
+    Uniform stress across the film, strain rate ``(tau0/eta) sinh(tau/tau0)`` (Johnson &
+    Tevaarwerk 1977): ``int_0^h (tau0/eta) sinh(tau/tau0) dz = |du|`` gives
+    ``tau = tau0 asinh(|du| / (tau0 F0(h)))`` with ``F0(h) = int_0^h dz/eta``.
+    ``eta`` (n, nz) [Pa s], ``h`` (n,) [m], ``du`` (n,) [m/s].
+    """
+    dzeta = np.diff(zeta)
+    f0 = np.sum(0.5 * (1.0 / eta[:, 1:] + 1.0 / eta[:, :-1]) * dzeta[None, :], axis=1) * h
+    return np.sign(du) * tau0 * np.arcsinh(np.abs(du) / (tau0 * f0))
+
+
+def _film_fields(lub, T, p, h, zeta, dpdx, ua, ub, eyring_stress=None):
+    """Viscosity, density, velocity, shear stress and the effective integrals (n, nz).
+
+    With ``eyring_stress`` tau0 [Pa] the viscosity is the Ree-Eyring effective viscosity of
+    the column's Couette stress tau_c, ``eta x/sinh(x)``, ``x = tau_c/tau0``
+    (:func:`_couette_eyring_stress`), so that the Couette flow still carries the surface speed
+    difference; in pure rolling (``ua == ub``) this is the Newtonian field.
+    """
     eta = np.asarray(lub.dynamic_viscosity(T, p[:, None] * np.ones_like(T)), dtype=float)
     rho = np.asarray(lub.density(T, p[:, None] * np.ones_like(T)), dtype=float)
+    if eyring_stress is not None and np.any(ub != ua):
+        du = np.broadcast_to(np.asarray(ub - ua, dtype=float), h.shape)
+        tc = np.abs(_couette_eyring_stress(eta, h, zeta, du, eyring_stress))
+        x = np.minimum(tc / eyring_stress, 700.0)
+        fac = np.where(x > 1e-8, x / np.sinh(np.maximum(x, 1e-8)), 1.0)
+        eta = eta * fac[:, None]
     z = h[:, None] * zeta[None, :]
     dzeta = np.diff(zeta)
 
@@ -240,6 +265,7 @@ def solve_thermal_line_contact(
     max_outer: int = 120,
     tol_temperature: float = 0.1,
     max_grid_error: float = 0.05,
+    eyring_stress: float | None = None,
 ) -> ThermalLineEHLSolution:
     """Thermal Newtonian EHL of a line contact (paper 001 eqs. 6 and 8, line-contact form).
 
@@ -257,6 +283,12 @@ def solve_thermal_line_contact(
         loads); nz : nodes across the film; ns : nodes in each solid;
     relax : under-relaxation of the temperature update; max_outer : fixed-point limit;
     tol_temperature : convergence on max |dT| between outer iterations [K].
+    eyring_stress : None (Newtonian, paper 001) or the Eyring stress tau0 [Pa] of a
+        Ree-Eyring film (Johnson & Tevaarwerk 1977; typically 2-10 MPa): the Couette flow of a
+        sliding contact then shears at the Eyring effective viscosity (see
+        :func:`_film_fields`). Newtonian sliding at Hertzian pressures and tens of m/s gives a
+        shear heating that the fixed point cannot carry (the film viscosity runs away below
+        the Roelands range and the solver raises); pure rolling is the same in both.
 
     Raises
     ------
@@ -318,7 +350,8 @@ def solve_thermal_line_contact(
         h = prob.film(P, H0) * b * b / radius
         dpdx = np.gradient(p, x)
         Tf = T[:, ns - 1: ns - 1 + nz]
-        eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub)
+        eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub,
+                                                      eyring_stress)
         if outer > 1:
             # pressure gradient consistent with the flow the Reynolds solve balanced: at a
             # fixed flux deficit dp/dx scales with 1/(rho/eta)_e, so a hotter, thinner oil
@@ -329,7 +362,7 @@ def solve_thermal_line_contact(
             roe_used = prob.f_e * (rho_c / eta_c) * (rho0 / eta0)
             dpdx = dpdx * np.minimum(1.0, roe_used / roe)
             eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua,
-                                                          ub)
+                                                          ub, eyring_stress)
         # ---- energy equation -------------------------------------------------
         rho_t = np.asarray(lubricant.density(Tf + dTdT, p[:, None] * np.ones_like(Tf)))
         drho_dT = (rho_t - rho) / dTdT
@@ -374,7 +407,8 @@ def solve_thermal_line_contact(
         change = float(np.max(np.abs(T - T_old)))
         # ---- generalized Reynolds with the new temperatures ------------------
         Tf = T[:, ns - 1: ns - 1 + nz]
-        eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub)
+        eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub,
+                                                      eyring_stress)
         eta_iso, _ = rheo.viscosity(P)
         rho_iso, _ = rheo.density(P)
         f_e = (roe / (rho0 / eta0)) / (rho_iso / eta_iso)
@@ -400,7 +434,8 @@ def solve_thermal_line_contact(
     h = H * b * b / radius
     dpdx = np.gradient(p, x)
     Tf = T[:, ns - 1: ns - 1 + nz]
-    eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub)
+    eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub,
+                                                      eyring_stress)
     pos = np.nonzero(P > 0)[0]
     fill = np.ones(n)
     if pos.size and pos[-1] + 1 < n:

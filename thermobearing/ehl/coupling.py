@@ -1,0 +1,349 @@
+"""Numerical thermal EHL in the roller-bearing quasi-dynamics (scene ``film = "numerical_tehl"``).
+
+Paper 001 (Shi & Wang 2015, seed ``001_5ba4564faedebfb7.txt``, section 3 and Fig. 3) couples
+the quasi-dynamics of a roller bearing with a thermal EHL analysis of its contacts: the
+quasi-dynamics give every roller-race contact its load and surface speeds, the TEHL gives
+the film that the closed-form film formula (Hamrock-Dowson) got wrong at high speed. Here:
+
+* :class:`TehlFilmModel` is the film model of :func:`thermobearing.skidding.roller.build_model`
+  (``film_model=`` callable, ``(u_e, w', R_x, eta0, alpha, E') -> h_c``). It answers from one
+  :class:`~thermobearing.ehl.cache.FilmTable` per contact radius (inner and outer race) over
+  (load per length, entrainment speed, slide-to-roll ratio, inlet temperature): the thermal
+  solver (:func:`~thermobearing.ehl.cache.numerical_tehl`) runs only at table nodes it has
+  not solved before, so a transient or a load sweep re-uses what it knows. The instance is
+  the memo; its owner (the :class:`~thermobearing.simulation.Simulation` of a scene) decides
+  its lifetime.
+* :func:`tehl_contact_forces` is the roller drag model ``"numerical_tehl"`` of
+  :data:`thermobearing.skidding.roller_fluid.ROLLER_DRAG`. It computes the slide-to-roll
+  ratio ``(u_race - u_roller)/u_e`` of every loaded contact and the inlet temperature, hands
+  them to the film model for the duration of the call (a :class:`contextvars.ContextVar`:
+  the film callable of ``build_model`` carries only ``(u_e, w')``). Contacts that slide
+  grossly (``|SRR|`` above twice ``max_slide_to_roll``; the Newton iterates of the
+  quasi-dynamics pass through such states, with cage speeds anywhere between 0 and the
+  shaft's) get the isothermal closed-form film without a thermal solve, blended smoothly
+  into the thermal one (:meth:`TehlFilmModel.films`). It returns the
+  closed-form line-contact forces of :func:`~thermobearing.skidding.roller_fluid.
+  closed_form_contact_forces` evaluated on the TEHL central film (Hertz-zone traction law
+  and inlet/outlet Couette shear on the thermal film), with the Poiseuille (rolling) force
+  of paper 000 eq. 5, ``-int (h/2) dp/dx dx``, taken from the thermal solution.
+
+Light loads: below Moes ``M = min_moes_m`` (default 1, the rigid/elastic transition) the
+thermal solver needs very long inlet domains (thousands of nodes) and the contact carries
+little; there the film is the closed-form Moes film (:func:`thermobearing.film.
+moes_line_central`, which spans the rigid-isoviscous regime) times the thermal reduction
+``h_TEHL / h_Moes`` of the table at ``M = min_moes_m`` (same speed, sliding and
+temperature), which is continuous at the boundary; the rolling force there stays the closed
+form's. The couette stress in the Hertz zone is the skidding solver's traction law (limiting
+shear stress), not the Newtonian stress of the thermal solution (unbounded at GPa pressures).
+
+Units: SI (m, N/m, m/s, K, Pa).
+"""
+
+from __future__ import annotations
+
+import math
+from contextvars import ContextVar
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError, check_positive
+from .cache import FilmTable
+
+#: Per-call data the drag model hands to the film model: slide-to-roll ratios and inlet
+#: temperature of the contacts being evaluated, and (out) the table answers.
+_CALL: ContextVar[dict[str, Any] | None] = ContextVar("tehl_contact_call", default=None)
+
+
+@dataclass(frozen=True)
+class TehlFilms:
+    """Table answers for a set of contacts (arrays, SI): central_film, minimum_film [m],
+    rolling_traction [N/m] (Poiseuille force per length, >= 0), max_temperature_rise [K],
+    numerical (bool: from the TEHL table, False: closed form x thermal reduction)."""
+
+    central_film: np.ndarray
+    minimum_film: np.ndarray
+    rolling_traction: np.ndarray
+    max_temperature_rise: np.ndarray
+    numerical: np.ndarray
+
+
+class TehlFilmModel:
+    """Tabulated thermal-EHL film of roller-race line contacts (see the module docstring).
+
+    Parameters
+    ----------
+    lubricant : :class:`thermobearing.lubricant.Lubricant`.
+    race_solid, roller_solid : thermal properties of the race (surface 1) and the roller
+        (surface 2): :class:`~thermobearing.ehl.thermal.SolidThermal` or a
+        :class:`~thermobearing.materials.Material`.
+    n : minimum number of pressure nodes of a thermal solve (raised for light loads).
+    load_step, speed_step : ratio between neighbouring table values of w' and u_e (> 1).
+    srr_step : table spacing of the slide-to-roll ratio [-]; temperature_step [K].
+    mode : FilmTable interpolation (``"linear"`` or ``"nearest"``).
+    min_moes_m : smallest Moes M solved numerically (see the module docstring) [-].
+    max_slide_to_roll : slide-to-roll ratios are clipped to +-this [-] (see below).
+    eyring_stress : Ree-Eyring stress tau0 of the film [Pa] (None: Newtonian, paper 001);
+        default 5 MPa, the ball skidding solver's value (Johnson & Tevaarwerk 1977 range).
+
+    Sliding: the Newtonian film of paper 001 cannot carry sliding at Hertzian pressures and
+    tens of m/s (the shear heating runs the film viscosity out of the Roelands range), and
+    even the Eyring film heats by hundreds of kelvin at SRR = 0.2 and 53 m/s (paper 001's
+    inner contact), where the fixed point fails. Loaded rollers of a converged quasi-dynamic
+    state slide little, so the table covers ``|SRR| <= max_slide_to_roll`` (default 0.05)
+    and larger ratios (Newton's intermediate iterates, gross skidding) are evaluated at the
+    clip: their film is then overestimated (sliding heats and thins it).
+    **solver_kwargs : passed to the thermal solver (``nz``, ``ns``, ``tol_temperature``...).
+    """
+
+    def __init__(self, lubricant: Any, race_solid: Any, roller_solid: Any = None, *,
+                 n: int = 512, load_step: float = 1.5, speed_step: float = 1.25,
+                 srr_step: float = 0.05, temperature_step: float = 5.0,
+                 mode: str = "linear", min_moes_m: float = 1.0,
+                 max_slide_to_roll: float = 0.05, eyring_stress: float | None = 5.0e6,
+                 **solver_kwargs: Any) -> None:
+        from .thermal import SolidThermal
+
+        check_positive("min_moes_m", min_moes_m)
+        if not 0.0 <= max_slide_to_roll < 2.0:
+            raise InputError("max_slide_to_roll", max_slide_to_roll, "0 <= value < 2")
+        self.lubricant = lubricant
+        s1 = race_solid if isinstance(race_solid, SolidThermal) else SolidThermal.of(race_solid)
+        s2 = roller_solid if roller_solid is not None else s1
+        s2 = s2 if isinstance(s2, SolidThermal) else SolidThermal.of(s2)
+        self.solids = (s1, s2)
+        self.table_options = {"load_step": load_step, "speed_step": speed_step,
+                              "srr_step": srr_step, "temperature_step": temperature_step,
+                              "mode": mode}
+        self.n = int(n)
+        self.min_moes_m = float(min_moes_m)
+        self.max_srr = float(max_slide_to_roll)
+        if eyring_stress is not None:
+            check_positive("eyring_stress", eyring_stress)
+        self.solver_kwargs = {"eyring_stress": eyring_stress, **solver_kwargs}
+        self.tables: dict[tuple[float, float], FilmTable] = {}
+
+    # ----------------------------------------------------------------- tables
+    def table(self, radius: float, effective_modulus: float) -> FilmTable:
+        """The table of one contact geometry (created on first use)."""
+        key = (float(radius), float(effective_modulus))
+        tab = self.tables.get(key)
+        if tab is None:
+            tab = FilmTable("numerical_tehl", key[0], key[1], lubricant=self.lubricant,
+                            solid=self.solids[0], solid2=self.solids[1], n=self.n,
+                            **self.table_options, **self.solver_kwargs)
+            self.tables[key] = tab
+        return tab
+
+    @property
+    def solves(self) -> int:
+        """Thermal EHL solves run so far (all tables)."""
+        return sum(t.solves for t in self.tables.values())
+
+    @property
+    def queries(self) -> int:
+        """Table queries answered so far (all tables)."""
+        return sum(t.queries for t in self.tables.values())
+
+    def temperature_of(self, eta0: float) -> float:
+        """Inlet temperature [K] at which the lubricant has viscosity ``eta0`` [Pa s]
+        (bisection on the monotone viscosity law; used when no temperature is given)."""
+        lo, hi = 200.0, 600.0
+        f = self.lubricant.dynamic_viscosity
+        if not float(f(hi)) <= eta0 <= float(f(lo)):
+            raise InputError("eta0", eta0, "a viscosity of the lubricant between 200 and 600 K")
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if float(f(mid)) > eta0:
+                lo = mid
+            else:
+                hi = mid
+        return 0.5 * (lo + hi)
+
+    def _w_min(self, ue: float, radius: float, e_prime: float, eta0: float) -> float:
+        """Load per length at Moes M = min_moes_m [N/m]: w' = M sqrt(2U) E' R."""
+        two_u = 2.0 * eta0 * ue / (e_prime * radius)
+        return self.min_moes_m * math.sqrt(two_u) * e_prime * radius
+
+    @staticmethod
+    def _query(tab: FilmTable, w: float, u: float, srr: float, T: float) -> Any:
+        """One table query; a failing thermal solve becomes a ConvergenceError naming the
+        contact and the closed-form alternative."""
+        try:
+            return tab(w, u, srr, T)
+        except (InputError, ConvergenceError) as err:
+            res = getattr(err, "residual", math.nan)
+            raise ConvergenceError(
+                "ehl.coupling", res,
+                f"thermal EHL table node failed near w'={w:.4g} N/m, u_e={u:.4g} m/s, "
+                f"SRR={srr:.3g}, T_in={T:.1f} K ({err}); use a closed-form film "
+                "(models.film = 'moes_line_central' or 'pan_hamrock_central')",
+                {"load_per_length": w, "entrainment_speed": u, "slide_to_roll": srr},
+            ) from err
+
+    def films(self, load_per_length: Any, entrainment_speed: Any, slide_to_roll: Any,
+              temperature: float, radius: float, effective_modulus: float) -> TehlFilms:
+        """Films of contacts (arrays over contacts; loads > 0), SI.
+
+        Per contact, with the closed-form (isothermal Moes) film ``h_cf`` and the thermal
+        reduction ``phi = h_TEHL/h_cf`` from the table (at ``M = min_moes_m`` for lighter
+        loads): ``h = h_cf [(1 - s) phi + s]``, where the sliding weight ``s`` rises smoothly
+        from 0 at ``|SRR| = max_slide_to_roll`` to 1 at twice that, and ``s = 1`` outside the
+        solver's range (``M > 3000`` or ``L > 40``). Grossly sliding contacts (which the
+        Newton iterates of the quasi-dynamics visit on their way) thus get the isothermal
+        closed-form film without a thermal solve; near-rolling contacts the thermal one.
+        """
+        from ..film import moes_line_central
+        from .line import L_RANGE, M_RANGE
+
+        w = np.atleast_1d(np.asarray(load_per_length, dtype=float))
+        ue = np.maximum(np.broadcast_to(np.asarray(entrainment_speed, dtype=float), w.shape),
+                        1e-6)
+        srr_raw = np.broadcast_to(np.asarray(slide_to_roll, dtype=float), w.shape)
+        tab = self.table(radius, effective_modulus)
+        T = float(temperature)
+        eta0 = float(self.lubricant.dynamic_viscosity(T))
+        alpha = float(self.lubricant.pressure_viscosity_coefficient(T))
+        h_cf = np.asarray(moes_line_central(ue, eta0, alpha, w, 1.0, radius,
+                                            effective_modulus=effective_modulus), dtype=float)
+        if self.max_srr > 0.0:
+            t = np.clip(np.abs(srr_raw) / self.max_srr - 1.0, 0.0, 1.0)
+        else:
+            t = np.where(srr_raw == 0.0, 0.0, 1.0)
+        weight = t * t * (3.0 - 2.0 * t)  # smoothstep
+        two_u = 2.0 * eta0 * ue / (effective_modulus * radius)
+        moes_m = w / (effective_modulus * radius) / np.sqrt(two_u)
+        moes_l = alpha * effective_modulus * two_u**0.25
+        weight = np.where((moes_m > M_RANGE[1]) | (moes_l > L_RANGE[1]), 1.0, weight)
+        srr = np.clip(srr_raw, -self.max_srr, self.max_srr)
+        out = np.zeros((5, w.size))
+        out[0] = out[1] = h_cf
+        out[2] = math.nan
+        for j in range(w.size):
+            if weight[j] >= 1.0:
+                continue
+            wj, uj, sj = float(w[j]), float(ue[j]), float(srr[j])
+            w_min = self._w_min(uj, radius, effective_modulus, eta0)
+            numerical = wj >= w_min
+            w_q = wj if numerical else w_min
+            p = self._query(tab, w_q, uj, sj, T)
+            h_q = h_cf[j] if numerical else float(moes_line_central(
+                uj, eta0, alpha, w_q, 1.0, radius, effective_modulus=effective_modulus))
+            phi = (1.0 - weight[j]) * p.central_film / h_q + weight[j]
+            out[0, j] = phi * h_cf[j]
+            out[1, j] = out[0, j] * p.minimum_film / p.central_film
+            out[2, j] = abs(p.rolling_traction) if numerical else math.nan
+            out[3, j] = p.max_temperature_rise
+            out[4, j] = 1.0 if (numerical and weight[j] == 0.0) else 0.0
+        return TehlFilms(out[0], out[1], out[2], out[3], out[4].astype(bool))
+
+    # --------------------------------------------------- film_model protocol
+    def __call__(self, entrainment_speed: Any, load_per_length: Any, radius: float,
+                 eta0: float, alpha: float, effective_modulus: float) -> np.ndarray:
+        """Central film h_c [m] (the ``film_model`` callable of the roller solver).
+
+        Slide-to-roll ratio and inlet temperature come from the drag model's call
+        (:func:`tehl_contact_forces`); called outside one, pure rolling at the temperature
+        of ``eta0`` is assumed. ``alpha`` is not used (the table's solver takes the
+        lubricant's own pressure-viscosity law).
+        """
+        w = np.atleast_1d(np.asarray(load_per_length, dtype=float))
+        ctx = _CALL.get()
+        if ctx is None:
+            return self.films(w, entrainment_speed, np.zeros(w.shape),
+                              self.temperature_of(float(eta0)), radius,
+                              effective_modulus).central_film
+        res = self.films(w, entrainment_speed, ctx["slide_to_roll"], ctx["temperature"],
+                         radius, effective_modulus)
+        ctx["result"] = res
+        return res.central_film
+
+
+def tehl_contact_forces(load: Any, length: float, radius: float, effective_modulus: float,
+                        u_race: Any, u_roller: Any, *, eta0: float, alpha: float,
+                        film: Any, traction_law: Any, temperature: float,
+                        rolling_force: str = "regime_min", oil_layer: float | None = None):
+    """Roller-race fluid forces with the tabulated thermal-EHL film (module docstring).
+
+    Signature of :func:`thermobearing.skidding.roller_fluid.closed_form_contact_forces`;
+    ``film`` must be the roller solver's wrapper of a :class:`TehlFilmModel`
+    (``solve_roller(..., film_model=TehlFilmModel(...), drag_model="numerical_tehl")``).
+    """
+    from ..skidding.roller_fluid import LineContactForces, closed_form_contact_forces
+
+    q, ur, uro = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float))
+                                       for v in (load, u_race, u_roller)))
+    idx = np.nonzero(q > 0.0)[0]
+    usum = ur + uro
+    sign = np.where(usum >= 0.0, 1.0, -1.0)
+    z = q.shape
+    if idx.size == 0:
+        zero = np.zeros(z)
+        return LineContactForces(zero, zero.copy(), zero.copy(), zero.copy(), sign,
+                                 np.full(z, np.inf), zero.copy(), zero.copy(), zero.copy())
+    ue = np.maximum(0.5 * np.abs(usum[idx]), 1e-6)
+    srr = (ur[idx] - uro[idx]) / ue
+    ctx: dict[str, Any] = {"slide_to_roll": srr, "temperature": float(temperature)}
+    token = _CALL.set(ctx)
+    try:
+        h = np.asarray(film(ue, q[idx] / length), dtype=float)
+    finally:
+        _CALL.reset(token)
+    res: TehlFilms | None = ctx.get("result")
+    if res is None:
+        raise InputError("film_model", film,
+                         "a thermobearing.ehl.coupling.TehlFilmModel with "
+                         "drag_model='numerical_tehl'")
+    sub = closed_form_contact_forces(
+        q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0, alpha=alpha,
+        film=lambda _ue, _w: h, traction_law=traction_law, temperature=temperature,
+        rolling_force=rolling_force, oil_layer=oil_layer)
+    poise = np.where(res.numerical, res.rolling_traction * length, sub.poiseuille)
+    roll = np.where(res.numerical, 2.0 * res.rolling_traction * length, sub.rolling_force)
+
+    def full(a: np.ndarray, fill: float) -> np.ndarray:
+        o = np.full(z, fill)
+        o[idx] = a
+        return o
+
+    return LineContactForces(
+        traction=full(sub.traction, 0.0), dtraction_dslide=full(sub.dtraction_dslide, 0.0),
+        poiseuille=full(poise, 0.0), rolling_force=full(roll, 0.0), entrainment_sign=sign,
+        film_thickness=full(sub.film_thickness, np.inf), half_width=full(sub.half_width, 0.0),
+        max_pressure=full(sub.max_pressure, 0.0),
+        hertz_traction=full(sub.hertz_traction, 0.0))
+
+
+def roller_film_model(bearing: Any, lubricant: Any, **options: Any) -> TehlFilmModel:
+    """:class:`TehlFilmModel` of a cylindrical roller bearing: race and roller materials
+    from the bearing (``ring_material``, ``roller_material``); ``options`` as the class."""
+    if getattr(bearing, "kind", None) != "cylindrical":
+        raise InputError("bearing", getattr(bearing, "name", bearing),
+                         "a cylindrical roller bearing (numerical_tehl is a line-contact model)")
+    return TehlFilmModel(lubricant, bearing.ring_material, bearing.roller_material, **options)
+
+
+def _register() -> None:
+    """Register ``"numerical_tehl"`` in the roller drag family (skidding.roller_fluid)."""
+    try:
+        from ..skidding.roller_fluid import ROLLER_DRAG
+    except ImportError:  # pragma: no cover - the skidding package is part of the product
+        return
+    if "numerical_tehl" in ROLLER_DRAG:
+        return
+
+    @ROLLER_DRAG.register(
+        "numerical_tehl",
+        references=["shi2015_tehl_roller", "yang_wen1990", "li2018_nu214_skidding"],
+        parameters={},
+        validity="cylindrical roller bearings; film from a TehlFilmModel table "
+                 "(Newtonian thermal line-contact EHL, M >= min_moes_m, |SRR| < 2); "
+                 "Hertz-zone shear by the given traction law",
+    )
+    def numerical_tehl_drag_model():
+        """Roller-race forces on the tabulated thermal-EHL film (paper 001 Fig. 3 coupling)."""
+        return tehl_contact_forces
+
+
+_register()
