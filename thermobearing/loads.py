@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import ConvergenceError, InputError, check_finite, check_positive
+from .hertz import _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
 
 __all__ = [
     "ArcSet",
@@ -166,8 +167,6 @@ def _arc_hertz(arcs: ArcSet, pitch_diameter: float, contact_angle: np.ndarray) -
     when it was built). Returns (R_x, R_y, R, k, E, K) with Q = K delta^1.5; the ball
     skidding residual uses the same function.
     """
-    from .hertz import _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
-
     D = arcs.ball_diameter
     sign = np.where(arcs.ring == INNER, 1.0, -1.0)
     rx = 0.5 * D * (1.0 - sign * (D * np.cos(contact_angle) / pitch_diameter))
