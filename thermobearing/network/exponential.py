@@ -302,25 +302,38 @@ def _nb_stage3(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U2, q2, q0,
 
 @numba.njit(cache=True)
 def _nb_finish(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U3, q3, q0, JqM, D2,
-               atol, rtol):  # pragma: no cover - compiled
+               atol, rtol, rk, has_rk):  # pragma: no cover - compiled
     """(y_{n+1}, err, cs, use, generated - h sum q_n [J], y_bar): the step completion,
-    its error estimate and the terms of the discrete energy balance (module docstring)."""
+    its error estimate and the terms of the discrete energy balance (module docstring).
+    ``rk``: conductance drift -(K(U3) - K_n) U3 + s(U3) - s_n [W] of temperature-dependent
+    edges, applied as a forcing growing linearly over the step (``has_rk``); its own
+    response is added to the error estimate (the conductances are otherwise lagged)."""
     n = y0.shape[0]
     D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
     cs = np.zeros((4, n))
     cs[0] = f0
-    cs[1] = c1
+    cs[1] = c1 + rk
     use = np.ones(4, dtype=np.bool_)
-    use[1] = td
+    use[1] = td or has_rk
     for i in range(n):
         cs[2, i] = 8.0 * D2[i] - D3[i]
         cs[3, i] = 2.0 * D3[i] - 8.0 * D2[i]
     y1, err, integral = _nb_final(lam, V, W, cs, use, h, d, a, Jaa_inv, Jad, y0, atol, rtol)
+    if has_rk:
+        ck = np.zeros((4, n))
+        ck[1] = rk
+        uk = np.zeros(4, dtype=np.bool_)
+        uk[1] = True
+        ek = _nb_increment(lam, V, W, ck, uk, h, h, 0, d, a, Jaa_inv, Jad)
+        for i in range(n):
+            e = abs(ek[i]) / (atol + rtol * abs(y1[i]))
+            if not e <= err:
+                err = e
     gen = 0.0
     for i in range(n):
         gen += h * (cs[2, i] / 3.0 + cs[3, i] / 4.0)
         if td:
-            gen += h * cs[1, i] / 2.0
+            gen += h * c1[i] / 2.0
         for j in range(n):
             gen += JqM[i, j] * integral[j]
     ybar = y0 + integral / h
@@ -498,6 +511,9 @@ class ExpRosenbrock43(_Method):
             if not (core.jac_y is y0 and core.jac_t == t and core.KmJ is not None):
                 core.refresh_jacobian(t, y0, q0)
             lin = self._lin = _Linearization(core, t, y0)
+        sys_ = core.sys
+        if core.asm.temperature_dependent:  # f_n with the conductances at y_n
+            f0 = sys_.s - sys_.K @ y0 + q0
         td = core.time_dependent and core.heat is not None
         if td:  # c1 = h dq/dt, one-sided difference inside the segment
             dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
@@ -510,15 +526,23 @@ class ExpRosenbrock43(_Method):
         q2 = core.q(t + 0.5 * h, U2)
         D2, U3 = _nb_stage3(*L, y0, f0, c1, td, h, U2, q2, q0, lin.JqM)
         q3 = core.q(t + h, U3)
+        has_rk = core.asm.temperature_dependent
+        if has_rk:  # temperature-dependent conductances: their drift over the step
+            sys3 = core.asm.system(U3)
+            rk = (sys3.s - sys3.K @ U3) - (sys_.s - sys_.K @ U3)
+            drift_b = sys3.to_boundaries(U3) - sys_.to_boundaries(U3)
+        else:
+            rk, drift_b = c1 if not td else np.zeros(core.n), 0.0
         y1, err, cs, use, gen, ybar = _nb_finish(*L, y0, f0, c1, td, h, U3, q3, q0, lin.JqM,
-                                                 D2, core.atol, core.rtol)
+                                                 D2, core.atol, core.rtol, rk, has_rk)
         if not (math.isfinite(err) and math.isfinite(y1.sum())):
             raise _NewtonFailure(math.inf, "non-finite exponential step")
         if err > 1.0 and core.adaptive:
             return _Trial(y1, None, None, err, 0.0, 0.0, 0.0)  # rejected: no more work
         f1, q1 = core.f(t + h, y1)
         gen += h * float(q0.sum())
-        sys_ = core.sys
-        to_b = h * sys_.to_boundaries(ybar)
+        # the drift forcing rk (s/h) sums to -(change of the heat to the boundaries):
+        # its integral h sum(rk)/2 = -h drift_b/2 belongs to the boundary column
+        to_b = h * sys_.to_boundaries(ybar) + 0.5 * h * drift_b
         to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0
         return _Trial(y1, f1, q1, err, gen, to_b, to_s, ExpPiece(t, h, y0, lin, cs, use))

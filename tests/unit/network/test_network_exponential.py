@@ -302,3 +302,20 @@ def test_defective_stream_chain_is_refused_with_advice():
         integrate(net, {"o0": 100.0}, (0.0, 60.0), T_AMB, method="exprb43")
     ok = integrate(net, {"o0": 100.0}, (0.0, 60.0), T_AMB, method="tr_bdf2")
     assert np.all(np.isfinite(ok.temperatures))
+
+
+def test_temperature_dependent_conductances_are_not_lagged_silently():
+    """Seven-node template (oil and air convection with temperature-dependent properties):
+    the conductance drift over a step enters as a forcing growing linearly over the step
+    and as an error indicator, so long steps stay accurate; the books still close."""
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.network import seven_node
+
+    net = seven_node(load_bearing("QJ1044"), load_lubricant("ISO_VG68"),
+                     housing_outer_diameter=0.5, housing_length=0.2)
+    q = np.full(len(net.state_nodes), 100.0)
+    ref = integrate(net, q, (0.0, 3600.0), 308.15, rtol=1e-9, atol=1e-9)
+    res = integrate(net, q, (0.0, 3600.0), 308.15, method="exprb43", rtol=1e-6, atol=1e-5)
+    assert np.max(np.abs(res.temperatures[-1] - ref.temperatures[-1])) < 2e-3
+    assert res.audit.relative_imbalance() < 1e-10
