@@ -172,3 +172,18 @@ def test_coupled_spins_balance_rib_moments(base):
     assert m0.cage_speed == qs.cage_speed and m0.spin_bias is None
     with pytest.raises(InputError, match="coupling"):
         rd.build_model(b, lub, SPEED, 3000.0, 0.08e-3, quasi_static=qs, coupling="bogus")
+
+
+def test_cap_end_face_in_dynamics(base):
+    # the chamfer-bounded end face ("cap") touches with its 0.5 mm blend at the base case:
+    # the same skew dynamics, far higher contact pressure (Hertz radius 0.5 mm vs 300 mm)
+    b, lub, m = base
+    qs = m.extras["quasi_static"]
+    out = {}
+    for face in ("sphere", "cap"):
+        mm = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3, quasi_static=qs, coupling="none",
+                            rib={"end_face": face})
+        out[face] = rd.simulate_reduced(mm, periods=5)
+    assert out["cap"].rib_contact_fraction > 0 and out["sphere"].rib_contact_fraction > 0
+    assert (out["cap"].pv_contact_left + out["cap"].pv_contact_right
+            > 3.0 * (out["sphere"].pv_contact_left + out["sphere"].pv_contact_right))
