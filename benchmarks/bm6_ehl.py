@@ -13,29 +13,39 @@ run and the same nested-grid code path:
   dimensional case: G = alpha E' = 5000 is fixed, U follows from L, W from M.
 
 Targets (printed, not asserted): N = 1024 in <= 50 ms and >= 10x faster than dense at N = 2048.
+Times are CPU (process) times with one BLAS thread (set at the top of this script).
 Usage: ``python benchmarks/bm6_ehl.py [--quick] [--json] [--out DIR]``.
 """
 
 from __future__ import annotations
 
-import argparse
-import json
-import math
-import time
-import warnings
-from pathlib import Path
+import os
 
-from thermobearing.ehl.line import solve_dimensionless
-from thermobearing.errors import ConvergenceError, ValidityWarning
+# one BLAS thread: the dense baseline's LU is otherwise timed against thread contention on
+# the shared cores (a 254 x 254 solve took 29 ms with OpenBLAS threads, 1.3 ms without);
+# set before numpy is imported (this file is run as a script)
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import math  # noqa: E402
+import time  # noqa: E402
+import warnings  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+from thermobearing.ehl.line import solve_dimensionless  # noqa: E402
+from thermobearing.errors import ConvergenceError, ValidityWarning  # noqa: E402
 
 
 def _solve(M, L, n, linear):
-    t0 = time.perf_counter()
+    """One solve; its CPU time [s] (process time: the machine's cores are shared)."""
+    t0 = time.process_time()
     try:
         sol = solve_dimensionless(M, L, n=n, linear=linear, max_grid_error=math.inf)
     except ConvergenceError as err:
-        return None, time.perf_counter() - t0, str(err)[:120]
-    return sol, time.perf_counter() - t0, ""
+        return None, time.process_time() - t0, str(err)[:120]
+    return sol, time.process_time() - t0, ""
 
 
 def _formulas(M, L):

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError, check_positive
+from ..errors import ConvergenceError, InputError, check_positive
 from ..registry import Registry
 
 EHL_SOLVERS: Registry[Callable[..., object]] = Registry(
@@ -129,6 +129,7 @@ class FilmTable:
     **solver_kwargs : passed to the solver (``n``, ...).
 
     The instance is a mutable memo (it is not global state: its owner decides its lifetime).
+    A node whose solve failed is remembered too and raises the same error again at once.
     """
 
     def __init__(self, model: str, reduced_radius_x: float, effective_modulus: float, *,
@@ -153,6 +154,7 @@ class FilmTable:
         self.mode = mode
         self.kwargs = solver_kwargs
         self._nodes: dict[tuple[int, int, int, int], FilmPoint] = {}
+        self._failed: dict[tuple[int, int, int, int], Exception] = {}
         self.solves = 0
         self.queries = 0
 
@@ -162,11 +164,18 @@ class FilmTable:
     def _node(self, idx: tuple[int, int, int, int]) -> FilmPoint:
         got = self._nodes.get(idx)
         if got is None:
+            failed = self._failed.get(idx)
+            if failed is not None:  # a node that failed once fails again: do not re-solve
+                raise failed
             lw, lu, s, t = (i * st for i, st in zip(idx, self.steps, strict=True))
-            got = self.solver(math.exp(lw), self.rx, self.ep, math.exp(lu), s, t,
-                              lubricant=self.lubricant, **self.kwargs)
-            self._nodes[idx] = got
             self.solves += 1
+            try:
+                got = self.solver(math.exp(lw), self.rx, self.ep, math.exp(lu), s, t,
+                                  lubricant=self.lubricant, **self.kwargs)
+            except (InputError, ConvergenceError) as err:
+                self._failed[idx] = err
+                raise
+            self._nodes[idx] = got
         return got
 
     def __call__(self, load_per_length: float, entrainment_speed: float,

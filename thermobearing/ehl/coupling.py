@@ -42,13 +42,14 @@ Units: SI (m, N/m, m/s, K, Pa).
 from __future__ import annotations
 
 import math
+import warnings
 from contextvars import ContextVar
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_positive
+from ..errors import ConvergenceError, InputError, ValidityWarning, check_positive
 from .cache import FilmTable
 
 #: Per-call data the drag model hands to the film model: slide-to-roll ratios and inlet
@@ -123,6 +124,8 @@ class TehlFilmModel:
             check_positive("eyring_stress", eyring_stress)
         self.solver_kwargs = {"eyring_stress": eyring_stress, **solver_kwargs}
         self.tables: dict[tuple[float, float], FilmTable] = {}
+        self.failures = 0
+        self._warned: set[tuple[float, ...]] = set()
 
     # ----------------------------------------------------------------- tables
     def table(self, radius: float, effective_modulus: float) -> FilmTable:
@@ -166,21 +169,23 @@ class TehlFilmModel:
         two_u = 2.0 * eta0 * ue / (e_prime * radius)
         return self.min_moes_m * math.sqrt(two_u) * e_prime * radius
 
-    @staticmethod
-    def _query(tab: FilmTable, w: float, u: float, srr: float, T: float) -> Any:
-        """One table query; a failing thermal solve becomes a ConvergenceError naming the
-        contact and the closed-form alternative."""
+    def _query(self, tab: FilmTable, w: float, u: float, srr: float, T: float) -> Any:
+        """One table query, or None where a table node's thermal solve failed (the contact
+        then gets the closed-form film; a ValidityWarning names the state, once per node
+        set, and :attr:`failures` counts them)."""
         try:
             return tab(w, u, srr, T)
         except (InputError, ConvergenceError) as err:
-            res = getattr(err, "residual", math.nan)
-            raise ConvergenceError(
-                "ehl.coupling", res,
-                f"thermal EHL table node failed near w'={w:.4g} N/m, u_e={u:.4g} m/s, "
-                f"SRR={srr:.3g}, T_in={T:.1f} K ({err}); use a closed-form film "
-                "(models.film = 'moes_line_central' or 'pan_hamrock_central')",
-                {"load_per_length": w, "entrainment_speed": u, "slide_to_roll": srr},
-            ) from err
+            self.failures += 1
+            key = (round(math.log(w), 1), round(math.log(u), 1), round(srr, 2), round(T))
+            if key not in self._warned:
+                self._warned.add(key)
+                warnings.warn(
+                    f"numerical_tehl: thermal EHL failed near w'={w:.4g} N/m, u_e={u:.4g} m/s,"
+                    f" SRR={srr:.3g}, T_in={T:.1f} K ({str(err)[:160]}); the closed-form "
+                    "(isothermal Moes) film is used for this contact state",
+                    ValidityWarning, stacklevel=3)
+            return None
 
     def films(self, load_per_length: Any, entrainment_speed: Any, slide_to_roll: Any,
               temperature: float, radius: float, effective_modulus: float) -> TehlFilms:
@@ -228,6 +233,8 @@ class TehlFilmModel:
             numerical = wj >= w_min
             w_q = wj if numerical else w_min
             p = self._query(tab, w_q, uj, sj, T)
+            if p is None:
+                continue
             h_q = h_cf[j] if numerical else float(moes_line_central(
                 uj, eta0, alpha, w_q, 1.0, radius, effective_modulus=effective_modulus))
             phi = (1.0 - weight[j]) * p.central_film / h_q + weight[j]

@@ -52,11 +52,12 @@ BALL_SCENE = SCENE.replace('preset = "D1842926"', 'preset = "QJ1044"').replace(
 FAST = {"n": 256, "mode": "nearest", "min_moes_m": 5.0}
 
 
-def _sim(want: str) -> Simulation:
+def _sim(want: str, **table) -> Simulation:
     sim = Simulation(loads_scene(SCENE.replace("{want}", want)), progress=False)
     b = sim.bearings[0]
     # coarse table for the test (the scene's default is n = 512, multilinear)
-    b.kin_options["film_model"] = roller_film_model(b.bearing, sim.lubricant, **FAST)
+    b.kin_options["film_model"] = roller_film_model(b.bearing, sim.lubricant,
+                                                    **{**FAST, **table})
     return sim
 
 
@@ -107,8 +108,9 @@ def test_film_only_scene_reports_thermal_film_below_closed_form():
 
 @pytest.mark.slow
 def test_kinematics_scene_runs_end_to_end_with_tehl_film():
-    # the first roller solve explores cage speeds between 0 and the shaft's: ~1-2 min
-    sim = _sim("kinematics")
+    # the first roller solve explores cage speeds between 0 and the shaft's, and the table
+    # fills at every near-rolling state it passes through: a few minutes
+    sim = _sim("kinematics", load_step=2.0, speed_step=2.0)
     res = sim.run()
     kin = res.tables["kinematics"]
     assert bool(kin["converged"].iloc[0])
