@@ -197,23 +197,6 @@ def _hamrock_brewe_kke(ratio: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
 # ---------------------------------------------------------------------------
 # point contact
 # ---------------------------------------------------------------------------
-def _point_contact_hb_unchecked(load: np.ndarray, rx: np.ndarray, ry: np.ndarray,
-                                effective_modulus: float
-                                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Hamrock-Brewe point contact without input checks: (a, b, max_pressure, K_stiffness).
-
-    The same formulas as :func:`point_contact` / :func:`point_contact_stiffness` with
-    ``method="hamrock_brewe"`` (which validate and then share the helpers used here), for
-    hot loops that validated their inputs once: float arrays, load >= 0, rx, ry > 0 finite.
-    K_stiffness is K [N/m^1.5] with Q = K delta^1.5; a, b, p are 0 where load is 0.
-    """
-    r, ratio = _reduced_unchecked(rx, ry)
-    k, big_k, big_e = _hamrock_brewe_kke(ratio)
-    a, b, p = _ellipse(load, r, k, big_e, effective_modulus)
-    stiff = _stiffness_from(r, k, big_k, big_e, effective_modulus)
-    return a, b, p, stiff
-
-
 def _ellipse(w: np.ndarray, r: np.ndarray, k: np.ndarray, big_e: np.ndarray,
              ep: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Semi-axes a, b [m] and p_max [Pa] (0 at zero load) from W, R, k, E (unchecked)."""
