@@ -360,6 +360,30 @@ def _nb_dense_batch(lams, Vs, Ws, css, uses, y0s, t0s, hs, k, t):  # pragma: no 
     return out
 
 
+@numba.njit(cache=True)
+def _nb_flows(y, bnd_index, bnd_G, bnd_T, str_last, str_W, str_Tin):  # pragma: no cover
+    """(heat rate to the boundaries, heat rate carried by the streams) [W] at state y:
+    System.to_boundaries and System.to_streams in one call."""
+    to_b = 0.0
+    for i in range(bnd_index.shape[0]):
+        to_b += bnd_G[i] * (y[bnd_index[i]] - bnd_T[i])
+    to_s = 0.0
+    for i in range(str_last.shape[0]):
+        to_s += str_W[i] * (y[str_last[i]] - str_Tin[i])
+    return to_b, to_s
+
+
+@numba.njit(cache=True)
+def _nb_scaled_jacobian(KmJ, invC):  # pragma: no cover - compiled
+    """A = C^-1 J = -diag(1/C) (K - dq/dT) [1/s]."""
+    n = KmJ.shape[0]
+    A = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            A[i, j] = -KmJ[i, j] * invC[i]
+    return A
+
+
 _NB_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
 _EMPTY2 = np.zeros((0, 0))
 
@@ -373,7 +397,6 @@ class _Linearization:
         KmJ = core.KmJ
         if not isinstance(KmJ, np.ndarray):
             KmJ = KmJ.toarray()
-        J = -KmJ  # W/K
         Jq = self.Jq = core.Jq
         if Jq is None:
             self.JqM = np.zeros((core.n, core.n))
@@ -384,6 +407,7 @@ class _Linearization:
         self.n = core.n
         invC = core.invC
         if core.has_alg:
+            J = -KmJ  # W/K
             d = np.flatnonzero(core.diff)
             a = np.flatnonzero(core.alg)
             try:
@@ -401,7 +425,7 @@ class _Linearization:
             self.d, self.a, self.Jaa_inv, self.Jad = d, a, Jaa_inv, Jad
         else:
             M = None
-            A = J * invC[:, None]
+            A = _nb_scaled_jacobian(KmJ, invC)
             self.d = np.arange(core.n)
             self.a = np.zeros(0, dtype=np.int64)
             self.Jaa_inv = np.zeros((0, 0))
@@ -535,7 +559,7 @@ class ExpRosenbrock43(_Method):
             rk, drift_b = c1 if not td else np.zeros(core.n), 0.0
         y1, err, cs, use, gen, ybar = _nb_finish(*L, y0, f0, c1, td, h, U3, q3, q0, lin.JqM,
                                                  D2, core.atol, core.rtol, rk, has_rk)
-        if not (math.isfinite(err) and math.isfinite(y1.sum())):
+        if not math.isfinite(err):  # NaN or inf anywhere in y1 makes err non-finite
             raise _NewtonFailure(math.inf, "non-finite exponential step")
         if err > 1.0 and core.adaptive:
             return _Trial(y1, None, None, err, 0.0, 0.0, 0.0)  # rejected: no more work
@@ -543,6 +567,8 @@ class ExpRosenbrock43(_Method):
         gen += h * float(q0.sum())
         # the drift forcing rk (s/h) sums to -(change of the heat to the boundaries):
         # its integral h sum(rk)/2 = -h drift_b/2 belongs to the boundary column
-        to_b = h * sys_.to_boundaries(ybar) + 0.5 * h * drift_b
-        to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0
+        fb, fs = _nb_flows(ybar, sys_.bnd_index, sys_.bnd_G, sys_.bnd_T, sys_.str_last,
+                           sys_.str_W, sys_.str_Tin)
+        to_b = h * fb + 0.5 * h * drift_b
+        to_s = h * fs
         return _Trial(y1, f1, q1, err, gen, to_b, to_s, ExpPiece(t, h, y0, lin, cs, use))
