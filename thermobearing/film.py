@@ -310,9 +310,14 @@ def moes_line_central(entrainment_speed: Any, dynamic_viscosity: Any,
     (2U uses the sum speed u_1 + u_2 = 2u). Parameters as :func:`dowson_higginson_minimum`.
     Reference: Moes, Optimum similarity analysis with applications to elastohydrodynamic
     lubrication, Wear 159 (1992) 57-66; Venner & Lubrecht, Multilevel Methods in Lubrication
-    (Elsevier 2000), ch. 5. The rigid-isoviscous asymptote H_RI = 3/M is Martin's central film.
-    The coefficients were written from memory of those sources (not re-read); the tests check
-    the Martin limit exactly and agreement with Dowson-Toyoda's central film within 5 %.
+    (Elsevier 2000), ch. 5. H_RI = 3/M is Moes' rigid-isoviscous asymptote of the central
+    film; it is not Martin's (1916) minimum film, which in these variables is 2.448/M (the
+    Reynolds-outlet solution, see ``skidding.roller_fluid.martin_coefficients``).
+    The coefficients were written from memory of those sources (not re-read against them).
+    Evidence that they are right: the tests check the formula's own limits and agreement with
+    Dowson-Toyoda's central film within 5 %, and the numerical line-contact EHL solver
+    (:mod:`thermobearing.ehl`, an independent code path) lands within 0.3-6.8 % of it for
+    M = 10-300, L = 2-20 (validation case ``ehl_moes_line``).
     """
     big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
                                            pressure_viscosity_coefficient, load, length,

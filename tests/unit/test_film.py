@@ -78,7 +78,7 @@ def test_pan_hamrock_by_hand() -> None:
 
 
 def test_moes_asymptotes() -> None:
-    # rigid-isoviscous limit (alpha = 0, light load): H_RI = 3/M dominates, i.e. Martin's
+    # rigid-isoviscous limit (alpha = 0, light load): Moes' H_RI = 3/M dominates, i.e. the
     # central film h_c = 6 U R / W' (Moes 1992): W' = 1e-3/(0.01 * 2.28e11 * 6e-3) = 7.30994e-8,
     # h_c = 6 * 2.92398e-10 * 6e-3 / 7.30994e-8 = 0.144 m (a test of the formula's limit only)
     light = {**LINE, "pressure_viscosity_coefficient": 0.0, "load": 1e-3}
