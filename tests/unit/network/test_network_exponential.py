@@ -315,7 +315,7 @@ def test_temperature_dependent_conductances_are_not_lagged_silently():
     net = seven_node(load_bearing("QJ1044"), load_lubricant("ISO_VG68"),
                      housing_outer_diameter=0.5, housing_length=0.2)
     q = np.full(len(net.state_nodes), 100.0)
-    ref = integrate(net, q, (0.0, 3600.0), 308.15, rtol=1e-9, atol=1e-9)
-    res = integrate(net, q, (0.0, 3600.0), 308.15, method="exprb43", rtol=1e-6, atol=1e-5)
-    assert np.max(np.abs(res.temperatures[-1] - ref.temperatures[-1])) < 2e-3
+    ref = integrate(net, q, (0.0, 1800.0), 308.15, rtol=1e-9, atol=1e-9)
+    res = integrate(net, q, (0.0, 1800.0), 308.15, method="exprb43", rtol=1e-6, atol=1e-5)
+    assert np.max(np.abs(res.temperatures[-1] - ref.temperatures[-1])) < 2e-3  # 2.8e-4 K
     assert res.audit.relative_imbalance() < 1e-10
