@@ -569,6 +569,9 @@ class _Driver:
                 last = False
             if core.asm.temperature_dependent:
                 core.update_system(y, keep_heat_jacobian=True)
+                # f at the step start with the conductances the step uses (q unchanged),
+                # so that the stage equations and the audit see one K
+                f0 = core.sys.s - core.sys.K @ y + q0
             try:
                 trial = method.step(core, t, h, y, f0, q0)
             except _NewtonFailure as exc:
