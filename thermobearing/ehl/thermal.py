@@ -261,7 +261,7 @@ def solve_thermal_line_contact(
     n: int = 512,
     nz: int = 11,
     ns: int = 14,
-    relax: float = 0.3,
+    relax: float = 0.6,
     max_outer: int = 120,
     tol_temperature: float = 0.1,
     max_grid_error: float = 0.05,
@@ -281,7 +281,9 @@ def solve_thermal_line_contact(
         z = 0); solid2 defaults to solid1;
     n : pressure/temperature nodes in x (minimum; raised by :func:`.line.nodes_for` for light
         loads); nz : nodes across the film; ns : nodes in each solid;
-    relax : under-relaxation of the temperature update; max_outer : fixed-point limit;
+    relax : under-relaxation of the temperature update (0.6: paper 001's D1842926 contacts
+        converge in 30-50 outer iterations against 48-100 at 0.3, films within 0.1 %);
+        max_outer : fixed-point limit;
     tol_temperature : convergence on max |dT| between outer iterations [K].
     eyring_stress : None (Newtonian, paper 001) or the Eyring stress tau0 [Pa] of a
         Ree-Eyring film (Johnson & Tevaarwerk 1977; typically 2-10 MPa): the Couette flow of a
