@@ -185,3 +185,26 @@ def test_jacobian_reuse_converges_to_the_fresh_newton_state(bearing, models):
     assert math.isclose(fast.cage_speed / W1800, G[2] / W1800, rel_tol=1e-8)
     np.testing.assert_allclose(fast.unknowns[0][:, 5], X[:, 5], rtol=1e-6,
                                atol=1e-7 * np.max(np.abs(X[:, 5])))
+
+
+@pytest.mark.parametrize("n_balls, rpm, axial_load, max_iterations", [
+    (8, 300.0, 0.0, 80),                  # stalled with chord steps at the capped length
+    (32, 300.0 + 2700.0 / 7.0, 577.0799623628855, 60),   # stalled with Broyden updates
+])
+def test_cold_starts_that_regressed_once_converge_without_continuation(
+        n_balls, rpm, axial_load, max_iterations):
+    # BM-5 map points (QJ1044, hot oil) that the previous solver solved from the cold start
+    # and two tried variants of the Jacobian reuse did not (measured; see benchmarks/README)
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.ball_models import default_ball_models
+    from thermobearing.state import OilSupply
+
+    b = load_bearing("QJ1044")
+    w = rpm * math.pi / 30
+    models = default_ball_models(b, load_lubricant("ISO_VG46"), temperature=353.15, speed=w,
+                                 supply=OilSupply("jet", 33 / 60000, 313.15))
+    r = solve_ball(b, models, w, 1000.0, axial_load, n_balls=n_balls, continuation=False,
+                   theoretical_reference=0.45)
+    assert r.residual_norm <= 1e-9
+    assert r.iterations <= max_iterations
