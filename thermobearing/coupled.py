@@ -227,6 +227,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     audits: list[EnergyAudit] = []
     cum = dict.fromkeys(("generated", "stored", "to_boundaries", "to_streams"), 0.0)
     relinearizations = 0
+    fallback_used = False
     lin: _Linear | None = None
     last_kin: tuple[int, ...] = ()
     steps = scene.schedule.steps
@@ -254,7 +255,20 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     # linearisation (it changes only through the slow viscosity drift)
                     lin = _Linear(coupler.heat(step, T), lin.J, T.copy())
                 last_kin = kin_id
-                out = stepper.advance(t, T, h, lin.heat, lin.jac)
+                try:
+                    out = stepper.advance(t, T, h, lin.heat, lin.jac)
+                except ConvergenceError as exc:
+                    if solver.stepper != "exprb43" or fallback_used:
+                        raise
+                    # the exponential method refuses near-defective Jacobians (e.g. equal
+                    # nodes on an oil stream without conduction): go on with TR-BDF2
+                    fallback_used = True
+                    sim.warnings.append(
+                        f"stepper exprb43 failed at t = {t:.0f} s ({exc}); the run continues "
+                        "with tr_bdf2 (set [solver] stepper = \"tr_bdf2\" to use it throughout)")
+                    stepper = TransientStepper(net, method="tr_bdf2", rtol=solver.rtol,
+                                               atol=solver.atol, max_step=solver.max_step)
+                    out = stepper.advance(t, T, h, lin.heat, lin.jac)
                 audits.append(out.audit)
                 T, t = out.temperatures, out.time
                 if not np.all(np.isfinite(T)):

@@ -50,7 +50,7 @@ Layout (every table optional unless marked)::
     parameters = { ... }               # template parameters, unit strings allowed
 
     [solver]
-    stepper = "tr_bdf2"
+    stepper = "exprb43"                # exprb43 | tr_bdf2 | backward_euler ...
     rtol = 1e-4
     kinematics_tolerance = 0.01        # relative viscosity change that triggers a re-solve
     chunk = "90 s"                     # coupling interval: heat re-linearised, output row
@@ -384,7 +384,7 @@ class Measured:
 class Solver:
     """Solver settings."""
 
-    stepper: str = "tr_bdf2"
+    stepper: str = "exprb43"
     rtol: float = 1e-4
     atol: float = 1e-3
     kinematics_tolerance: float = 0.01

@@ -221,3 +221,34 @@ def test_role_temperatures_record_reads():
     t.reads.clear()
     dict(t.items())
     assert t.reads == {"oil", "elements"}
+
+
+def test_exprb43_refusal_falls_back_to_tr_bdf2_with_a_warning(monkeypatch):
+    import thermobearing.network as network
+    from thermobearing.errors import ConvergenceError
+
+    real = network.TransientStepper
+
+    class Refusing(real):
+        def __init__(self, net, method="tr_bdf2", **kw):
+            super().__init__(net, method=method, **kw)
+            self.method = method
+
+        def advance(self, *args, **kwargs):
+            if self.method == "exprb43":
+                raise ConvergenceError("exprb43", float("inf"), "near-defective Jacobian", {})
+            return super().advance(*args, **kwargs)
+
+    monkeypatch.setattr(network, "TransientStepper", Refusing)
+    text = BASE.replace('chunk = "90 s"', 'chunk = "90 s"\nstepper = "exprb43"') + """
+[schedule]
+speed = "1200 rpm"
+radial_load = "1 kN"
+axial_load = "6 kN"
+duration = "3 min"
+"""
+    sim = Simulation(loads_scene(text), progress=False)
+    res = sim.run()
+    temps = res.tables["temperatures"]
+    assert np.all(np.isfinite(temps.filter(like="[degC]").to_numpy()))
+    assert any("exprb43 failed" in w and "tr_bdf2" in w for w in sim.warnings)
