@@ -114,7 +114,7 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
         add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
     film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
                             else "pan_hamrock_central")
-    if film in _numerical_film_models():
+    if film not in FILM and film in _numerical_film_models():
         from .ehl import EHL_SOLVERS
 
         check_film_model(film, is_ball)
@@ -153,9 +153,9 @@ def _numerical_film_models() -> list[str]:
 
 def check_film_model(film: str, is_ball: bool) -> None:
     """Numerical EHL film models are line-contact (roller) models: InputError for balls."""
-    if is_ball and film in _numerical_film_models():
-        from .film import FILM
+    from .film import FILM
 
+    if is_ball and film not in FILM and film in _numerical_film_models():
         raise InputError(
             "models.film", film,
             "a closed-form film model for ball bearings (" + ", ".join(FILM.names())
@@ -172,7 +172,9 @@ def film_kinematics_options(film: str | None, bearing: Any, lubricant: Any,
     ``numerical_tehl`` drag model; ``numerical_ehl``: the isothermal numerical drag model.
     Closed-form names: no options (the roller solver keeps its own default film).
     """
-    if film is None or film not in _numerical_film_models():
+    from .film import FILM
+
+    if film is None or film in FILM or film not in _numerical_film_models():
         return {}
     check_film_model(film, is_ball)
     if film == "numerical_tehl":
