@@ -33,8 +33,17 @@ little; there the film is the closed-form Moes film (:func:`thermobearing.film.
 moes_line_central`, which spans the rigid-isoviscous regime) times the thermal reduction
 ``h_TEHL / h_Moes`` of the table at ``M = min_moes_m`` (same speed, sliding and
 temperature), which is continuous at the boundary; the rolling force there stays the closed
-form's. The couette stress in the Hertz zone is the skidding solver's traction law (limiting
-shear stress), not the Newtonian stress of the thermal solution (unbounded at GPa pressures).
+form's. The Couette stress in the Hertz zone is the skidding solver's traction law (limiting
+shear stress), not the stress of the thermal solution (Newtonian: unbounded at GPa pressures).
+
+Failures: where a table node's thermal solve fails (fixed point not converged, out of the
+solver's range) the node is remembered as failed, the contact gets the closed-form film and
+a ValidityWarning names the state (the Simulation collects it among the scene's warnings).
+The cage-speed search of the roller solver passes through such states (e.g. outer-race
+entrainment near 100 m/s); a failure at the converged state shows in the warnings.
+
+Cost: the first skidding solve fills the table along the solver's search (tens of thermal
+solves of 2-10 s CPU each at n = 512); see benchmarks/README.md, section BM-6.
 
 Units: SI (m, N/m, m/s, K, Pa).
 """
