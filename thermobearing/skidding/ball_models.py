@@ -102,9 +102,10 @@ class IsothermalViscosity:
     ``ln eta(T0, p)`` of the lubricant's own pressure-viscosity law (owner A) is tabulated on
     a uniform grid of 4001 points over 0-5 GPa and interpolated linearly (relative error
     measured 6e-6 for the Roelands law of ISO VG46 at 330 K, tests/unit/skidding/
-    test_ball_fast_path.py; exact for Barus); other temperatures or pressures beyond the grid fall back to
-    the lubricant. The traction law evaluates eta at every quadrature node of every contact
-    in every Newton residual, which otherwise dominates the solver's run time.
+    test_ball_fast_path.py; exact for Barus); other temperatures or pressures beyond the
+    grid fall back to the lubricant. The traction law evaluates eta at every quadrature
+    node of every contact in every Newton residual, which otherwise dominates the solver's
+    run time.
     """
 
     def __init__(self, lubricant, temperature: float, p_max: float = 5.0e9, n: int = 4001):
