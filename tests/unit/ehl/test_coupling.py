@@ -156,6 +156,13 @@ def test_contact_forces_thermal_film_and_gross_sliding_fallback():
     c = closed_form_contact_forces(q, length, rx, e_p, u_race, u_roll, eta0=eta0, alpha=alpha,
                                    film=moes, traction_law=law, temperature=T)
     assert model.solves >= 1
+    # the table remembers: the same contacts again (a later step of a transient) and a
+    # nearby load in the same table cell need no new thermal solve
+    solves = model.solves
+    f2 = tehl_contact_forces(q * 1.01, length, rx, e_p, u_race, u_roll, eta0=eta0,
+                             alpha=alpha, film=film, traction_law=law, temperature=T)
+    assert model.solves == solves and model.queries > 1
+    assert f2.film_thickness[0] == pytest.approx(f.film_thickness[0], rel=0.02)
     # rolling contact: thermal film about 5x below the isothermal closed form (paper 001)
     assert f.film_thickness[0] < 0.3 * c.film_thickness[0]
     # unloaded: no forces; gross sliding: the isothermal closed-form film, no thermal solve
