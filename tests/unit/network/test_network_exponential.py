@@ -15,6 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 from test_network_property import networks  # same folder (pytest prepend import mode)
+from test_network_steppers import T_AMB, chain, rc
 
 from thermobearing.errors import ConvergenceError
 from thermobearing.network import (
@@ -26,27 +27,6 @@ from thermobearing.network import (
     solve_steady,
 )
 from thermobearing.network.problems import bearing_network, load_protocol, viscous_heat_for
-
-T_AMB = 300.0
-
-
-def rc(capacity=1000.0, g=2.0) -> ThermalNetwork:
-    net = ThermalNetwork("rc")
-    net.add_boundary("amb", T_AMB)
-    net.add_node("a", capacity)
-    net.add_edge("a", "amb", g)
-    return net
-
-
-def chain() -> ThermalNetwork:
-    """Two-node chain: a (C=500) -- 3 W/K -- b (C=2000) -- 1 W/K -- ambient."""
-    net = ThermalNetwork("chain")
-    net.add_boundary("amb", T_AMB)
-    net.add_node("a", 500.0)
-    net.add_node("b", 2000.0)
-    net.add_edge("a", "b", 3.0)
-    net.add_edge("b", "amb", 1.0)
-    return net
 
 
 def chain_exact(t, Q=(100.0, 0.0), T0=T_AMB) -> np.ndarray:
