@@ -1,0 +1,142 @@
+"""Result of the cylindrical-roller skidding solve and the quantities derived from it.
+
+One job: the :class:`RollerSkiddingResult` dataclass of the paper 000 Z + 1 equations (Li,
+Chen, Zhang, Wang 2018, seed ``000_3b5ca6eed61dd596.txt`` [li2018_nu214_skidding]) with its
+derived shaft torque, power balance and the :class:`thermobearing.state.KinematicState` the
+heat sources consume. Solved by :func:`thermobearing.skidding.roller.solve_model`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .roller_fluid import LineContactForces
+
+
+@dataclass(frozen=True)
+class RollerSkiddingResult:
+    """Quasi-static skidding state of a cylindrical roller bearing (SI).
+
+    Attributes
+    ----------
+    inner_speed : omega [rad/s].  cage_speed : omega_c [rad/s].
+    cage_speed_ratio : omega_c / omega [-].
+    theoretical_cage_speed_ratio : (1 - D/d_m)/2 (paper 000 eq. 40) [-].
+    slip : cage slip fraction s_f = 1 - CSR / CSR_th (paper 000 eq. 39) [-].
+    roller_speed : (Z,) roller spin omega_r about its own axis [rad/s] (positive = rolling
+        sense, the sense that pure rolling on the inner race gives).
+    azimuth : (Z,) roller azimuths [rad].
+    inner_load, outer_load : (Z,) [N].
+    inner_sliding_speed, outer_sliding_speed : (Z,) V = u_race - u_roller [m/s].
+    inner_entrainment_speed, outer_entrainment_speed : (Z,) (u_race + u_roller)/2 [m/s].
+    inner, outer : LineContactForces of the two contacts.
+    pocket_normal_force : (Z,) F_d [N] (positive: the roller pushes the cage forward).
+    pocket_friction : (Z,) f_d [N].
+    converged : bool.  residual_norm : scaled residual norm [-].  iterations : Newton steps.
+    residual : (Z+1,) force residuals [N] at the solution.
+    temperature [K], eta0 [Pa s] used.
+    """
+
+    inner_speed: float
+    cage_speed: float
+    cage_speed_ratio: float
+    theoretical_cage_speed_ratio: float
+    slip: float
+    roller_speed: np.ndarray
+    azimuth: np.ndarray
+    inner_load: np.ndarray
+    outer_load: np.ndarray
+    inner_sliding_speed: np.ndarray
+    outer_sliding_speed: np.ndarray
+    inner_entrainment_speed: np.ndarray
+    outer_entrainment_speed: np.ndarray
+    inner: LineContactForces
+    outer: LineContactForces
+    pocket_normal_force: np.ndarray
+    pocket_friction: np.ndarray
+    converged: bool
+    residual_norm: float
+    iterations: int
+    residual: np.ndarray
+    temperature: float
+    eta0: float
+    extras: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def cage_speed_rpm(self) -> float:
+        """Cage speed [r/min] (for reports)."""
+        return self.cage_speed * 30.0 / math.pi
+
+    @property
+    def element_speeds(self) -> np.ndarray:
+        """Alias of ``roller_speed`` (the common skidding-result name)."""
+        return self.roller_speed
+
+    @property
+    def shaft_torque(self) -> float:
+        """Torque the shaft delivers to the inner ring [N m].
+
+        T = (d_m - D)/2 * sum_j (S_ij + Q_xij): minus the tangential fluid force on the inner
+        raceway (shear plus pressure), at the raceway radius of paper 000 eq. 12.
+        """
+        r_i = float(self.extras["raceway_radius_inner"])
+        return r_i * float(np.sum(self.inner.race_shear_force))
+
+    @property
+    def power_loss(self) -> dict[str, float]:
+        """Power dissipated by mechanism [W] (frame independent, from relative speeds).
+
+        At a raceway contact the film takes ``C V + Q_x u_e`` (Couette force times the sliding
+        V = u_race - u_roller, plus the rolling resistance Q_x times the entrainment speed
+        u_e = (u_race + u_roller)/2, which is the Poiseuille shear Q_x/2 on each surface);
+        in the pocket film ``f_d omega_r D/2``. Keys:
+        ``inner_shear``, ``inner_rolling``, ``outer_shear``, ``outer_rolling``, ``pocket``,
+        ``total``. In a converged state ``total`` equals ``shaft_torque * inner_speed``
+        (energy balance; it follows from the roller moment and cage equations).
+        """
+        d = float(self.extras["roller_diameter"])
+        out = {}
+        for race, f, v, ue in (
+                ("inner", self.inner, self.inner_sliding_speed, self.inner_entrainment_speed),
+                ("outer", self.outer, self.outer_sliding_speed, self.outer_entrainment_speed)):
+            out[f"{race}_shear"] = float(np.sum(f.traction * v))
+            out[f"{race}_rolling"] = float(np.sum(f.rolling_force * np.abs(ue)))
+        out["pocket"] = float(np.sum(self.pocket_friction * np.abs(self.roller_speed) * 0.5 * d))
+        out["total"] = sum(out.values())
+        return out
+
+    @property
+    def kinematic_state(self) -> Any:
+        """The :class:`thermobearing.state.KinematicState` the heat sources consume.
+
+        Line contacts (``semi_major`` = l/2, ``semi_minor`` = Hertz b); sliding speeds in the
+        state's convention (element minus race = -V here); pocket force as a magnitude;
+        film thickness 0 where a contact carries no load; origin "skidding".
+        """
+        from ..state import ContactSet, KinematicState
+
+        length = float(self.extras["contact_length"])
+        sets = []
+        for race, f, v, ue, q, rx in (
+                ("inner", self.inner, self.inner_sliding_speed, self.inner_entrainment_speed,
+                 self.inner_load, self.extras["radius_inner"]),
+                ("outer", self.outer, self.outer_sliding_speed, self.outer_entrainment_speed,
+                 self.outer_load, self.extras["radius_outer"])):
+            loaded = q > 0
+            sets.append(ContactSet(
+                race=race, kind="line", normal_load=q,
+                semi_major=np.where(loaded, 0.5 * length, 0.0), semi_minor=f.half_width,
+                max_pressure=f.max_pressure, entrainment_speed=ue, sliding_speed=-v,
+                film_thickness=np.where(loaded, f.film_thickness, 0.0),
+                temperature=np.full(q.shape, self.temperature), reduced_radius_x=rx))
+        return KinematicState(
+            inner_speed=self.inner_speed, outer_speed=0.0, cage_speed=self.cage_speed,
+            orbital_speed=np.full(self.roller_speed.shape, self.cage_speed),
+            element_spin=self.roller_speed, contacts=tuple(sets), attitude_angle=0.0,
+            azimuth=self.azimuth, pocket_normal_force=np.abs(self.pocket_normal_force),
+            origin="skidding",
+            extras={"pocket_friction": self.pocket_friction, "slip": self.slip})
