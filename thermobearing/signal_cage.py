@@ -1,0 +1,379 @@
+"""Cage speed from the envelope spectrum of a vibration record (harmonic-comb search).
+
+One job: :func:`estimate_cage_speed` finds the cage rotation frequency, the cage speed ratio
+and the cage slip in an acceleration record; :func:`cage_speed_ratio` and :func:`cage_slip`
+convert between them. Paper 002 (Gao et al. 2022, ``../shared/seeds/002_0add79adaca5495c.txt``,
+section 4.2; CSR = CRF / f_i) and paper 004 (Luo et al. 2022, ``004_0105d7aba121b014.txt``
+eq. 2 and eq. 27, BPFO = Z f_cage); see :mod:`thermobearing.signal`.
+
+Pipeline (:func:`estimate_cage_speed`)
+--------------------------------------
+1. checks: finite, non-constant, 1-D, long enough, a rate high enough for the band.
+2. demodulation band: given, or chosen by the STFT spectral kurtosis (the kurtogram of
+   Antoni & Randall 2006): the disjoint cells of largest SK, whose envelope spectra are
+   pooled (a single band's envelope can miss a harmonic that another band carries).
+3. squared envelope of the band (analytic signal by FFT, shifted to base band so that the
+   envelope is computed at a reduced rate), Hann window, zero padding.
+4. a harmonic-comb search over candidate cage frequencies: the comb holds the cage
+   harmonics ``k f_c``, the ball-pass harmonics ``m Z f_c``, the cage modulation sidebands
+   of the ball pass ``(Z -+ 1) f_c`` and the shaft sidebands
+   ``n f_s +- f_c``; each line's power is normalised by the local noise floor (median of the
+   spectrum, which for noise bins is exponentially distributed: mean = median / ln 2); the
+   comb score is the weighted mean of log(1 + normalised power) over its teeth (primary
+   teeth, the cage fundamental and ball-pass harmonics, weigh 1, the others 0.5), so that a
+   candidate
+   needs several lines (a sub-multiple of the cage frequency that catches only the strong
+   ball-pass line scores low).
+5. the best comb, corrected for octave errors (``2 f_c`` has a comb that is a subset of the
+   true one, ``f_c / 2`` a superset: a move is made only when the teeth that one comb has
+   and the other lacks hold a line above the noise), is refined: each
+   line's frequency by Gaussian (log-parabolic) interpolation of the zero-padded Hann
+   spectrum (sub-bin), then ``f_c`` by weighted least squares over the detected lines.
+6. confidence: Fisher's combination of the per-line false-alarm probabilities, Bonferroni
+   corrected for the number of independent candidates searched; ``detected`` only when
+   the family-wise false-alarm probability is below ``alpha``, at least two lines stand
+   above the per-line threshold, at least half of them agree with the estimate within half
+   a bin, a fundamental (the ball-pass fundamental ``Z f_c`` or the cage line ``f_c``)
+   is among them, and at least one strong line is away from every shaft harmonic ``m f_s``
+   (a comb sitting only on shaft harmonics is a once-per-revolution signal). Otherwise the result is
+   flagged not detected and carries no frequency (never a made-up one).
+
+Conventions: frequencies in Hz, cage speed ratio ``CSR = f_cage / f_shaft`` (outer ring
+fixed), cage slip ``s_c = 1 - CSR / CSR_th`` (paper 004 eq. 2; negative = over-skidding).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import stats
+
+from .errors import InputError
+from .signal_envelope import (
+    EnvelopeSpectrum,
+    combine_envelope_spectra,
+    envelope_spectrum,
+    refine_peak,
+)
+from .signal_input import check_signal
+from .signal_kurtogram import kurtogram_bands
+
+
+def cage_speed_ratio(cage_frequency, shaft_frequency):
+    """Cage speed ratio ``CSR = f_cage / f_shaft`` (paper 002 section 4.2), both [Hz]."""
+    cage = np.asarray(cage_frequency, dtype=float)
+    shaft = np.asarray(shaft_frequency, dtype=float)
+    if np.any(~np.isfinite(shaft)) or np.any(shaft <= 0):
+        raise InputError("shaft_frequency", shaft_frequency, "a finite frequency > 0 Hz")
+    if np.any(~np.isfinite(cage)) or np.any(cage < 0):
+        raise InputError("cage_frequency", cage_frequency, "a finite frequency >= 0 Hz")
+    out = cage / shaft
+    return float(out) if out.ndim == 0 else out
+
+
+def cage_slip(csr, csr_theoretical):
+    """Cage slip ``s_c = 1 - CSR / CSR_th`` [-] (paper 004 eq. 2; < 0 is over-skidding)."""
+    th = np.asarray(csr_theoretical, dtype=float)
+    if np.any(~np.isfinite(th)) or np.any(th <= 0):
+        raise InputError("csr_theoretical", csr_theoretical, "a finite ratio > 0")
+    out = 1.0 - np.asarray(csr, dtype=float) / th
+    return float(out) if out.ndim == 0 else out
+
+
+@dataclass(frozen=True)
+class DetectedLine:
+    """One spectral line of the comb.
+
+    kind : "cage" (k f_c), "ball_pass" (m Z f_c), "ball_pass_sideband" ((Z -+ 1) f_c),
+        "sideband" (n f_s + k f_c) or "shaft".
+    order : (k, n): multiple of the cage and of the shaft frequency in the line.
+    expected : [Hz] from the final estimate; measured : [Hz] sub-bin peak (NaN if weak).
+    snr : normalised power (power / local noise mean); detected : snr above threshold.
+    """
+
+    kind: str
+    order: tuple[int, int]
+    expected: float
+    measured: float
+    snr: float
+    detected: bool
+
+
+@dataclass(frozen=True)
+class CageSpeedEstimate:
+    """Cage speed measured from a vibration record.
+
+    Attributes
+    ----------
+    detected : a significant, consistent comb was found. When False, ``cage_frequency``,
+        ``csr``, ``slip`` and ``ball_pass_frequency`` are None and ``reason`` says why.
+    cage_frequency : [Hz]; csr : cage speed ratio [-]; slip : 1 - CSR/CSR_th [-].
+    ball_pass_frequency : Z f_cage [Hz] (BPFO, outer ring fixed).
+    shaft_frequency : the shaft frequency used [Hz]; measured_shaft_frequency : sub-bin
+        shaft line of the envelope spectrum when significant [Hz], else None.
+    csr_theoretical : [-]; confidence : 1 - family-wise false-alarm probability, times the
+        fraction of detected lines consistent with the estimate (0 without a fundamental line,
+        with fewer than two lines or with all strong lines on shaft harmonics);
+        false_alarm_probability.
+    lines : the comb lines; spectrum : the envelope spectrum analysed.
+    """
+
+    detected: bool
+    cage_frequency: float | None
+    csr: float | None
+    slip: float | None
+    ball_pass_frequency: float | None
+    shaft_frequency: float
+    measured_shaft_frequency: float | None
+    csr_theoretical: float
+    confidence: float
+    false_alarm_probability: float
+    consistency: float
+    lines: tuple[DetectedLine, ...]
+    spectrum: EnvelopeSpectrum = field(repr=False)
+    reason: str = ""
+
+
+def _comb(n_balls: int, cage_h: int, bp_h: int, shaft_h: int) -> list[tuple[str, int, int]]:
+    lines = [("cage", k, 0) for k in range(1, cage_h + 1)]
+    lines += [("ball_pass", m * n_balls, 0) for m in range(1, bp_h + 1)]
+    if n_balls > 2 * cage_h:  # cage modulation of the ball pass: (Z -+ 1) f_c
+        lines += [("ball_pass_sideband", n_balls - 1, 0), ("ball_pass_sideband", n_balls + 1, 0)]
+    for n in range(1, shaft_h + 1):
+        lines += [("sideband", 1, n), ("sideband", -1, n)]
+    return lines
+
+
+def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls: int,
+                        csr_theoretical: float, *, band: tuple[float, float] | None = None,
+                        search: tuple[float, float] = (0.3, 1.3), cage_harmonics: int = 3,
+                        ball_pass_harmonics: int = 3, shaft_sidebands: int = 2,
+                        alpha: float = 1e-3, padding: int = 8,
+                        n_bands: int = 3) -> CageSpeedEstimate:
+    """Cage frequency, CSR and slip from an acceleration record.
+
+    Parameters
+    ----------
+    x : acceleration samples; sampling_rate : [Hz].
+    shaft_frequency : inner-ring rotation frequency [Hz] (tachometer / rpm / 60).
+    n_balls : number of rolling elements Z.
+    csr_theoretical : pure-rolling cage speed ratio (1 - D cos(alpha)/d_m)/2 [-].
+    band : demodulation band [Hz] or None for the kurtogram.
+    n_bands : with ``band=None``, the number of disjoint kurtogram cells (largest SK first)
+        whose envelope spectra are pooled (:func:`combine_envelope_spectra`).
+    search : the cage frequency is sought in ``search * csr_theoretical * shaft_frequency``
+        (default: slip from -30 % to +70 %).
+    cage_harmonics, ball_pass_harmonics, shaft_sidebands : size of the comb.
+    alpha : family-wise false-alarm probability below which the comb counts as detected.
+
+    Raises
+    ------
+    InputError : bad record (NaN, constant, too short), a band above Nyquist, a sampling
+        rate too low for the comb or the band.
+    """
+    fs = float(sampling_rate)
+    arr = check_signal(x, fs)
+    for name, v in (("shaft_frequency", shaft_frequency), ("csr_theoretical", csr_theoretical)):
+        if not (math.isfinite(float(v)) and float(v) > 0):
+            raise InputError(name, v, "a finite value > 0")
+    if int(n_balls) != n_balls or n_balls < 1:
+        raise InputError("n_balls", n_balls, "an integer >= 1")
+    lo_s, hi_s = float(search[0]), float(search[1])
+    if not 0 < lo_s < hi_s:
+        raise InputError("search", search, "(low, high) with 0 < low < high")
+    f_lo = lo_s * csr_theoretical * shaft_frequency
+    f_hi = hi_s * csr_theoretical * shaft_frequency
+    comb = _comb(int(n_balls), cage_harmonics, ball_pass_harmonics, shaft_sidebands)
+    f_top = max(k * f_hi + n * shaft_frequency for _, k, n in comb)
+    nyq = fs / 2
+    if f_top * 2 > nyq:
+        raise InputError("sampling_rate", fs, f"a rate above {4 * f_top:g} Hz for lines up to "
+                         f"{f_top:g} Hz (a demodulation band as wide as the lines must fit "
+                         "above them)")
+    duration = arr.size / fs
+    if duration * f_lo < 3:
+        raise InputError("signal.duration", duration,
+                         f"at least {3 / f_lo:.3g} s (3 cage revolutions at the lowest "
+                         "cage frequency searched, so that its line clears the DC bins)")
+    if band is not None and (band[1] > nyq or band[0] < 0):
+        raise InputError("band", band, f"a band within [0, {nyq:g}] Hz (Nyquist)")
+    if band is not None and band[1] - band[0] < f_top:
+        raise InputError("band", band, f"a band at least {f_top:g} Hz wide (the envelope "
+                         "spectrum of a band of width B only reaches B)")
+    f_max = f_top * 1.1 + 2 * fs / arr.size
+    if band is not None:
+        es = envelope_spectrum(arr, fs, band, max_frequency=f_max, padding=padding)
+    else:
+        cells = kurtogram_bands(arr, fs, n_bands, min_frequency=f_top, min_bandwidth=f_max)
+        parts = [envelope_spectrum(arr, fs, c.band, max_frequency=f_max, padding=padding)
+                 for c in cells]
+        size = min(e.frequency.size for e in parts)
+        parts = [EnvelopeSpectrum(e.frequency[:size], e.power[:size], e.noise_floor[:size],
+                                  e.band, e.resolution, e.padding, c.kurtosis)
+                 for e, c in zip(parts, cells, strict=True)]
+        es = combine_envelope_spectra(parts)
+    df = es.resolution
+    r = es.normalised
+    step = es.frequency[1] - es.frequency[0]
+    # max-filter of one native bin so that comb teeth tolerate the candidate grid step
+    w = max(1, int(round(0.5 * df / step)))
+    rmax = _max_filter(r, w)
+    kmax = max(abs(k) for _, k, _ in comb)
+    ks = np.array([k for _, k, _ in comb], dtype=float)
+    ns = np.array([n for _, _, n in comb], dtype=float)
+    f_end = float(es.frequency[-1])
+    # primary teeth (cage fundamental, ball-pass harmonics) weigh twice the secondary ones
+    # (cage harmonics, modulation and shaft sidebands): a wrong candidate whose secondary
+    # teeth happen to fall on ball-pass lines must not outscore the true one
+    weights = np.array([1.0 if (kind == "ball_pass" or (kind == "cage" and k == 1)) else 0.5
+                        for kind, k, _ in comb])
+    n_indep_line = 2 * w + 1
+    thresh = math.log(n_indep_line / 0.01)  # per-line false alarm 1 % within its window
+    # evidence that decides between candidates: 0.1 % family-wise over all teeth
+    strict = math.log(n_indep_line * len(comb) / 1e-3)
+
+    pure = np.array(sorted({abs(k) for _, k, n in comb if n == 0}), dtype=float)
+
+    def teeth(fc: float) -> np.ndarray:
+        """Teeth that are multiples of the cage frequency alone (no shaft sidebands)."""
+        fl = fc * pure
+        return fl[(fl > 2 * df) & (fl < f_end)]
+
+    def off_shaft(fl: np.ndarray) -> np.ndarray:
+        """True where a tooth is clear of every shaft harmonic m f_s (those lines belong to
+        the shaft: runout, unbalance)."""
+        ratio = fl / shaft_frequency
+        return np.abs(ratio - np.round(ratio)) * shaft_frequency > 1.5 * df
+
+    def score_at(fcs: np.ndarray) -> np.ndarray:
+        fl = fcs[:, None] * ks[None, :] + ns[None, :] * shaft_frequency
+        valid = (fl > 2 * df) & (fl < f_end)
+        # log-compressed tooth powers: one dominant line must not carry a comb on its own
+        vals = np.where(valid, np.log1p(np.interp(fl, es.frequency, rmax)), 0.0)
+        wv = valid * weights[None, :]
+        return (vals * wv).sum(axis=1) / np.maximum(wv.sum(axis=1), 1e-300)
+
+    def specific_evidence(a: float, b: float) -> bool:
+        """A tooth of comb a, away from every tooth of comb b, stands above the noise."""
+        ta, tb = teeth(a), teeth(b)
+        own = [f for f in ta if np.all(np.abs(tb - f) > df)]
+        return bool(own) and float(np.max(np.interp(own, es.frequency, rmax))) > strict
+
+    cand = np.arange(f_lo, f_hi, 0.5 * df / kmax)
+    score = score_at(cand)
+    f0 = float(cand[int(np.argmax(score))])
+    # octave (and twelfth) errors: a multiple m f of the cage frequency has a comb that is a
+    # subset of the true one, a sub-multiple f/m a superset. Move to m f when f's own teeth
+    # are empty; move to f/m when its own teeth hold a line and it scores comparably.
+    for _ in range(4):
+        moved = False
+        for m in (2, 3):
+            up = f0 * m
+            if up < f_hi and not specific_evidence(f0, up):
+                f0, moved = up, True
+                break
+            down = f0 / m
+            if down > f_lo and specific_evidence(down, f0) and (
+                    score_at(np.array([down]))[0] >= 0.7 * score_at(np.array([f0]))[0]):
+                f0, moved = down, True
+                break
+        if not moved:
+            break
+    # local maximum of the score on the fine grid around f0
+    near = np.abs(cand - f0) <= 0.5 * df
+    if near.any():
+        f0 = float(cand[near][int(np.argmax(score[near]))])
+    # refine each line, weighted least squares for f_c
+    entries = []
+    expected_all = np.array([k * f0 + n * shaft_frequency for _, k, n in comb])
+    rank = np.array([_priority(kind, k) for kind, k, _ in comb])
+    shared = []
+    for i, (kind, k, n) in enumerate(comb):
+        fe = expected_all[i]
+        if not (2 * df < fe < es.frequency[-1]):
+            continue
+        close = np.abs(expected_all - fe) < 1.5 * df
+        close[i] = False
+        if np.any(rank[close] <= rank[i]):
+            continue  # a tooth of higher (or equal) rank claims this line
+        fm, snr = refine_peak(es, fe, 0.5 * df)
+        entries.append((kind, k, n, fm, snr))
+        shared.append(bool(close.any()))
+    used = [(k, n, fm, snr, sh) for (_, k, n, fm, snr), sh in zip(entries, shared, strict=True)
+            if snr > thresh]
+    if used:
+        # weight: n_c^2 SNR (frequency variance ~ 1/SNR, divided by n_c); a line that a
+        # lower-rank tooth could also explain counts a quarter
+        wts = np.array([k * k * snr * (0.25 if sh else 1.0) for k, _, _, snr, sh in used])
+        est = np.array([(fm - n * shaft_frequency) / k for k, n, fm, _, _ in used])
+        fc = float(np.sum(wts * est) / np.sum(wts))
+        # refit without the lines that miss the first fit by more than half a bin
+        kk = np.array([k for k, *_ in used], dtype=float)
+        keep = np.abs(kk * (est - fc)) <= 0.5 * df
+        if keep.any() and not keep.all():
+            fc = float(np.sum(wts[keep] * est[keep]) / np.sum(wts[keep]))
+    else:
+        fc = f0
+    # significance: Fisher's method over all comb lines, Bonferroni over candidates
+    pvals = np.array([min(1.0, n_indep_line * math.exp(-min(snr, 700.0)))
+                      for *_, snr in entries])
+    pvals = np.clip(pvals, 1e-300, 1.0)
+    chi = float(-2.0 * np.sum(np.log(pvals)))
+    p_comb = float(stats.chi2.sf(chi, 2 * len(pvals))) if len(pvals) else 1.0
+    n_cand = max(1.0, (f_hi - f_lo) / (df / kmax))
+    p_fa = min(1.0, p_comb * n_cand)
+    consistent = 0
+    for k, n, fm, _, _ in used:
+        if abs((fm - n * shaft_frequency) - k * fc) <= 0.5 * df:
+            consistent += 1
+    consistency = consistent / len(used) if used else 0.0
+    primary = any(kind == "ball_pass" and k == n_balls or kind == "cage" and k == 1
+                  for (kind, k, _n, _fm, snr) in entries if snr > strict)
+    # at least one strong line away from every shaft harmonic: a comb that only sits on
+    # m f_s is a once-per-revolution signal (runout, unbalance), not a cage
+    off = any(snr > strict and off_shaft(np.array([fm]))[0] for _, _, fm, snr, _ in used)
+    confidence = (1.0 - p_fa) * consistency if (primary and off and len(used) >= 2) else 0.0
+    lines = []
+    for (kind, k, n, fm, snr) in entries:
+        lines.append(DetectedLine(kind, (k, n), k * fc + n * shaft_frequency,
+                                  fm if snr > thresh else math.nan, snr, snr > thresh))
+    # the shaft line itself (information only)
+    shaft_meas = None
+    if shaft_frequency < es.frequency[-1] - df:
+        fm, snr = refine_peak(es, shaft_frequency, 0.02 * shaft_frequency + df)
+        if snr > math.log(n_indep_line / alpha):
+            shaft_meas = fm
+        lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
+                                  fm if shaft_meas else math.nan, snr, shaft_meas is not None))
+    detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary and off
+    if not detected:
+        reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} vs alpha "
+                  f"{alpha:g}, {len(used)} lines above threshold, consistency "
+                  f"{consistency:.2f}, fundamental line {'found' if primary else 'missing'}"
+                  f"{'' if off else ', all strong lines on shaft harmonics'})")
+        return CageSpeedEstimate(False, None, None, None, None, float(shaft_frequency),
+                                 shaft_meas, float(csr_theoretical), float(max(confidence, 0)),
+                                 p_fa, consistency, tuple(lines), es, reason)
+    csr = cage_speed_ratio(fc, shaft_frequency)
+    return CageSpeedEstimate(True, fc, csr, cage_slip(csr, csr_theoretical), n_balls * fc,
+                             float(shaft_frequency), shaft_meas, float(csr_theoretical),
+                             float(confidence), p_fa, consistency, tuple(lines), es, "")
+
+
+def _priority(kind: str, k: int) -> int:
+    """Rank of a comb tooth when two fall on one line (0 claims first)."""
+    if kind == "ball_pass":
+        return 0
+    if kind == "cage":
+        return 1 if k == 1 else 3
+    return 2 if kind == "ball_pass_sideband" else 4
+
+
+def _max_filter(a: np.ndarray, w: int) -> np.ndarray:
+    out = a.copy()
+    for s in range(1, w + 1):
+        out[:-s] = np.maximum(out[:-s], a[s:])
+        out[s:] = np.maximum(out[s:], a[:-s])
+    return out
