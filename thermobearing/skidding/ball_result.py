@@ -1,0 +1,201 @@
+"""Result of the ball skidding solver: the converged state, its heat and kinematic state.
+
+One job: build :class:`BallSkiddingResult` from a converged solution of
+:class:`~thermobearing.skidding.ball_residual.ball_residual_system` (:func:`_result`: CSR,
+contact angles, heat by component, the lazily built
+:class:`~thermobearing.state.KinematicState` for the heat sources) and the reference line
+CSR_th of paper 002 (:func:`theoretical_csr`).
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..loads import ball_load_distribution
+from .ball_residual import ball_residual_system
+
+__all__ = ["BallSkiddingResult", "theoretical_csr"]
+
+@dataclass(frozen=True)
+class BallSkiddingResult:
+    """Converged state of :func:`solve_ball` (arrays per ball, shape (Z,) or (Z, k)).
+
+    Attributes
+    ----------
+    cage_speed_ratio : CSR = omega_c / omega_i [-].
+    theoretical_cage_speed_ratio : (1 - gamma cos alpha)/2 at the quasi-static (zero-speed)
+        contact angle of the load distribution -- the CSR_th line of paper 002 Fig. 10 [-].
+    kinematic_cage_speed_ratio : pure-rolling (outer-race-control) CSR at the *operating*
+        inner/outer contact angles of the loaded balls (primer section 5, solver lesson) [-].
+    over_skid : CSR / CSR_th - 1 [-] (positive: over-skidding, negative: skidding).
+    converged, residual_norm, iterations, wall_time : solver diagnostics.
+    cage_speed : omega_c [rad/s]; inner_speed [rad/s].
+    ball_x, ball_r : ball-centre position [m]; delta_a, delta_r : ring displacement [m].
+    spin : Omega (Z, 3) relative to the cage [rad/s]; spin_speed |Omega| [rad/s];
+    attitude_angle : beta = atan2(-Omega_r, Omega_a) [rad]; yaw_angle [rad].
+    pocket_force : Q_p [N].
+    normal_load, contact_angle : (Z, k) per raceway arc [N], [rad]; ring (k,) 0/1.
+    sliding_speed, transverse_sliding_speed, spin_speed_contact, entrainment_speed : (Z, k).
+    heat : dict of total heat by component [W]; shaft_torque [N m].
+    kinematic_state : :class:`thermobearing.state.KinematicState` for the heat sources (built
+        on first access: its validation costs more than a warm-started solve).
+    """
+
+    cage_speed_ratio: float
+    theoretical_cage_speed_ratio: float
+    kinematic_cage_speed_ratio: float
+    over_skid: float
+    converged: bool
+    residual_norm: float
+    iterations: int
+    wall_time: float
+    inner_speed: float
+    cage_speed: float
+    ball_x: np.ndarray
+    ball_r: np.ndarray
+    delta_a: float
+    delta_r: float
+    spin: np.ndarray
+    spin_speed: np.ndarray
+    attitude_angle: np.ndarray
+    yaw_angle: np.ndarray
+    pocket_force: np.ndarray
+    normal_load: np.ndarray
+    contact_angle: np.ndarray
+    ring: np.ndarray
+    sliding_speed: np.ndarray
+    transverse_sliding_speed: np.ndarray
+    spin_speed_contact: np.ndarray
+    entrainment_speed: np.ndarray
+    heat: dict
+    shaft_torque: float
+    state_builder: Callable[[], Any] = field(repr=False, default=None, compare=False)
+    unknowns: np.ndarray = field(repr=False, default=None)
+    extra: dict = field(default_factory=dict, repr=False)
+
+    @functools.cached_property
+    def kinematic_state(self) -> Any:
+        """:class:`thermobearing.state.KinematicState` of this solution (built once)."""
+        return self.state_builder()
+
+    @property
+    def slip(self) -> float:
+        """Cage slip relative to CSR_th: 1 - CSR/CSR_th (positive = skidding) [-]."""
+        return -self.over_skid
+
+    @property
+    def orbital_speed(self) -> np.ndarray:
+        return np.full(self.ball_x.shape, self.cage_speed)
+
+
+def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
+
+    R, Gc, G0, det = system.evaluate(X, G, details=True)
+    b = system.bearing
+    cf = det["cf"]
+    Q = cf.load
+    wi, wc = system.speed, G[2]
+    csr = wc / wi
+    inner = system.inner
+    from ..loads import ring_weighted_angle
+
+    a0 = float(b.contact_angle)
+    ai = ring_weighted_angle(Q, cf.contact_angle, inner, a0)
+    ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, a0)
+    loaded = (np.where(inner[None, :], Q, 0).sum(1) > 0)
+    w = np.where(inner[None, :], Q, 0).sum(1)
+    if np.any(loaded):
+        ai_m = float(np.sum(w * ai) / np.sum(w))
+        ao_m = float(np.sum(w * ao) / np.sum(w))
+    else:
+        ai_m = ao_m = a0
+    g = b.ball_diameter / b.pitch_diameter
+    kin = float((1 - g * np.cos(ai_m)) / (1 + np.cos(ai_m - ao_m)))
+    if theoretical_reference is None:
+        theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
+    th = float(theoretical_reference)
+    Om = X[:, 2:5]
+    spin = np.linalg.norm(Om, axis=1)
+    beta = np.arctan2(Om[:, 1], -Om[:, 0])
+    yaw = np.arctan2(Om[:, 2], np.hypot(Om[:, 0], Om[:, 1]))
+    heat = {"raceway": float(np.sum(det["contact_heat"])),
+            "raceway_inner": float(np.sum(np.where(inner[None, :], det["contact_heat"], 0))),
+            "raceway_outer": float(np.sum(np.where(~inner[None, :], det["contact_heat"], 0))),
+            "ball_pocket": float(np.sum(det["pocket_heat"])),
+            "ball_drag": float(np.sum(det["drag_heat"])),
+            "cage": float(det["cage_heat"]),
+            "cage_guide": float(det["guide_heat"]),
+            "inner_ring_churning": float(det["inner_churn_heat"])}
+    heat["total"] = float(sum(v for k, v in heat.items()
+                              if k not in ("raceway_inner", "raceway_outer")))
+    names = []
+    for k in range(system.arcs.n_arcs):
+        race = ("inner" if inner[k] else "outer")
+        nth = int(np.sum((inner == inner[k])[:k]))
+        names.append(race if nth == 0 else f"{race}_{nth + 1}")
+
+    def build_state():
+        return _kinematic_state(system, X, det, names, heat)
+
+    return BallSkiddingResult(
+        cage_speed_ratio=float(csr), theoretical_cage_speed_ratio=th,
+        kinematic_cage_speed_ratio=kin, over_skid=float(csr / th - 1.0), converged=True,
+        residual_norm=float(nrm), iterations=int(iters), wall_time=float(wall), inner_speed=wi,
+        cage_speed=float(wc), ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
+        delta_r=float(G[1]), spin=Om.copy(), spin_speed=spin, attitude_angle=beta,
+        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=Q, contact_angle=cf.contact_angle,
+        ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
+        spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
+        shaft_torque=float(det["shaft_torque"]), state_builder=build_state, unknowns=(X, G),
+        extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
+               "race_names": names, "residual": R,
+               "traction_law": system.models.traction_law,
+               "jacobian": system.last_jacobian})
+
+
+def _kinematic_state(system: ball_residual_system, X, det, names, heat):
+    """The :class:`~thermobearing.state.KinematicState` of a converged solution."""
+    from ..state import ContactSet, KinematicState
+
+    cf = det["cf"]
+    Q = cf.load
+    sets = []
+    for k, name in enumerate(names):
+        sets.append(ContactSet(
+            race=name, normal_load=Q[:, k], semi_major=det["a"][:, k], semi_minor=det["b"][:, k],
+            max_pressure=det["p0"][:, k], contact_angle=np.abs(cf.contact_angle[:, k]),
+            entrainment_speed=np.abs(det["ue"][:, k]), sliding_speed=det["Vy"][:, k],
+            transverse_sliding_speed=det["Vx"][:, k], spin_speed=det["Om_z"][:, k],
+            roll_speed=det["Om_x"][:, k], tilt_speed=det["Om_y"][:, k],
+            deformed_radius=system.rd[k],
+            film_thickness=None if det["film"] is None else np.maximum(det["film"][:, k], 0.0),
+            temperature=system.models.temperature,
+            reduced_radius_x=det["rx"][:, k], reduced_radius_y=det["ry"][:, k]))
+    wc = float(det["wc"])
+    return KinematicState(
+        inner_speed=system.speed, outer_speed=0.0, cage_speed=wc,
+        orbital_speed=np.full(system.Z, wc), element_spin=np.linalg.norm(X[:, 2:5], axis=1),
+        contacts=tuple(sets), attitude_angle=np.arctan2(X[:, 3], -X[:, 2]),
+        azimuth=system.psi, pocket_normal_force=np.abs(X[:, 5]),
+        pocket_sliding_speed=det["pocket_sliding"], element_drag_force=np.abs(det["Fd"]),
+        origin="skidding", extras={"solver_heat": heat, "shaft_torque": det["shaft_torque"]})
+
+
+def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:
+    """Paper 002's CSR_th: (1 - gamma cos alpha)/2 at the quasi-static contact angle.
+
+    alpha is the load-weighted inner contact angle of the zero-speed load distribution under
+    the same radial and axial load (paper 002 section 4.1: CSR_th follows the contact-angle
+    distribution at 1 kN radial load and the applied axial load).
+    """
+    ld = ball_load_distribution(bearing, radial_load, axial_load, 0.0, n_balls=n_balls)
+    w = ld.inner_load
+    alpha = (float(np.sum(w * ld.inner_contact_angle) / np.sum(w)) if np.sum(w) > 0
+             else float(bearing.contact_angle))
+    g = bearing.ball_diameter * np.cos(alpha) / bearing.pitch_diameter
+    return float(0.5 * (1.0 - g))
