@@ -15,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 from test_network_property import networks  # same folder (pytest prepend import mode)
-from test_network_steppers import T_AMB, chain, rc
+from test_network_steppers import T_AMB, _dmp_case, chain, rc
 
 from thermobearing.errors import ConvergenceError
 from thermobearing.network import (
@@ -151,15 +151,6 @@ def test_energy_audit_nonlinear_and_accuracy_on_the_protocol():
                    breakpoints=edges, rtol=1e-5, atol=1e-4, heat_jacobian=heat.jacobian)
     assert np.max(np.abs(td.sample(grid) - ref.sample(grid))) < 1e-3
     assert td.audit.relative_imbalance() < 1e-10
-
-
-def _dmp_case():
-    net = bearing_network(20, film_capacity=1e-6)
-    q = np.zeros(len(net.state_nodes))
-    q[net.state_nodes.index("balls_0")] = 800.0
-    q[net.state_nodes.index("oil_0")] = 400.0
-    steady = solve_steady(net, q).temperatures_vector
-    return net, q, steady
 
 
 def test_discrete_maximum_principle_600s():
