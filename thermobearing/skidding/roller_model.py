@@ -80,6 +80,7 @@ class RollerModel:
     inner_gap: np.ndarray | None = None
     unloaded_zone: str = "moment_balance"
     ring_support: str = "contacts"
+    fluid_shear_modulus: float | None = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -143,6 +144,7 @@ def build_model(
     clearance_film_floor: float = 1e-6,
     unloaded_zone: str = "moment_balance",
     ring_support: str = "contacts",
+    fluid_shear_modulus: float | None = None,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -188,6 +190,12 @@ def build_model(
         speeds by a fixed point. For films as thick as the clearance (paper 000: 4-30 um
         against P_d/2 = 12.5 um), where the dry distribution is not consistent with the films
         the traction uses.
+    fluid_shear_modulus : elastic shear modulus G of the oil in the Hertz zone [Pa]. None
+        (default): the Hertz-zone shear follows the traction law point by point (viscous
+        film). Given: the film is a Maxwell element (Johnson & Tevaarwerk 1977), the stress
+        builds up along the contact and the traction at small slip is elastic, linear in the
+        roller load instead of growing like exp(alpha p_H)
+        (:mod:`thermobearing.skidding.roller_maxwell`).
     """
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
@@ -200,6 +208,8 @@ def build_model(
     if oil_layer is not None:
         check_positive("oil_layer", oil_layer)
     check_positive("clearance_film_floor", clearance_film_floor)
+    if fluid_shear_modulus is not None:
+        check_positive("fluid_shear_modulus", fluid_shear_modulus)
     from ..hertz import line_contact_stiffness
 
     check_temperature("temperature", temperature)
@@ -226,6 +236,11 @@ def build_model(
     check_positive("pocket_clearance", pocket_clearance)
     law = traction_law if traction_law is not None else default_traction_law(
         lubricant, eyring_stress, limiting_shear_coefficient)
+    forces = ROLLER_DRAG.get(drag_model)()
+    if fluid_shear_modulus is not None:
+        from .roller_maxwell import maxwell_contact_forces
+
+        forces = maxwell_contact_forces(forces, float(fluid_shear_modulus))
     return RollerModel(
         pitch_diameter=d_m, roller_diameter=d, length=length, n_rollers=bearing.n_rollers,
         roller_mass=bearing.roller_mass, radius_inner=r_i, radius_outer=r_o,
@@ -234,9 +249,10 @@ def build_model(
         temperature=float(temperature),
         film_inner=_film_for(lubricant, temperature, eta0, alpha, r_i, e_prime, film_model),
         film_outer=_film_for(lubricant, temperature, eta0, alpha, r_o, e_prime, film_model),
-        traction_law=law, contact_forces=ROLLER_DRAG.get(drag_model)(),
+        traction_law=law, contact_forces=forces,
         cage_drag_torque=float(cage_drag_torque), rolling_force=rolling_force,
         oil_layer=None if oil_layer is None else float(oil_layer),
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
         unloaded_zone=unloaded_zone, ring_support=ring_support,
+        fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
     )
