@@ -58,7 +58,7 @@ def run_ours(case, method: str, rtol: float, atol: float):
     net, edges, heat, T0, grid = case
     res = integrate(net, heat, (0.0, edges[-1]), T0, method=method, rtol=rtol, atol=atol,
                     breakpoints=edges, heat_jacobian=heat.jacobian,
-                    heat_time_dependent=False)
+                    heat_with_jacobian=heat.with_jacobian, heat_time_dependent=False)
     return res.sample(grid), res.stats["heat_evaluations"]
 
 

@@ -91,6 +91,8 @@ class ThermalNetwork:
         self.graph = nx.MultiGraph()
         self.streams: dict[str, Stream] = {}
         self._revision = 0  # bumped on every change; the assembler caches on it
+        self._validated = -1  # revision at the last successful validate()
+        self._assembler_cache = None  # assemble.assembler_for: Assembler at a revision
 
     # ------------------------------------------------------------------ nodes
     def _touch(self) -> None:
@@ -408,8 +410,11 @@ class ThermalNetwork:
         """Check the network can be solved; raise :class:`InputError` naming the culprit.
 
         Every state node needs a path (through edges with conductance > 0 or streams) to a
-        boundary node, else its temperature is undetermined at steady state.
+        boundary node, else its temperature is undetermined at steady state. The result is
+        remembered until the next change of the network (its revision).
         """
+        if self._validated == self._revision:
+            return
         if not self.boundary_nodes:
             raise InputError("network", self.name, "at least one fixed-temperature node")
         g = nx.Graph()
@@ -428,6 +433,7 @@ class ThermalNetwork:
         if lost:
             raise InputError(f"node {lost[0]!r}", lost,
                              "a path of conductances or streams to a fixed-temperature node")
+        self._validated = self._revision
 
     # --------------------------------------------------------- serialization
     def to_dict(self) -> dict[str, Any]:

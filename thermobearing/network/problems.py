@@ -128,6 +128,11 @@ class ViscousHeat:
         """Diagonal dq_i/dT_i [W/K]."""
         return -self.beta * self(t, T)
 
+    def with_jacobian(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(q [W], diagonal dq/dT [W/K]) from one evaluation: dq_i/dT_i = -beta q_i."""
+        q = self(t, T)
+        return q, -self.beta * q
+
     def at_segment(self, k: int):
         """(heat, jacobian) with P frozen at step k (for solvers restarted per step)."""
         p = float(self.powers[k])

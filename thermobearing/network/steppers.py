@@ -69,7 +69,7 @@ from scipy.linalg import lapack
 
 from ..errors import ConvergenceError, InputError
 from ..registry import Registry
-from .assemble import Assembler, System
+from .assemble import Assembler, System, assembler_for
 from .audit import EnergyAudit, SteadyResult, TransientResult
 from .graph import ThermalNetwork
 
@@ -471,7 +471,6 @@ class _Driver:
     def __init__(self, network: ThermalNetwork, method: str, rtol: float, atol: float,
                  dt: float | None, max_step: float, first_step: float | None,
                  min_step: float, jacobian: str) -> None:
-        network.validate()
         self.network = network
         self.method: _Method = STEPPERS.get(method)()
         self.method_name = method
@@ -490,15 +489,17 @@ class _Driver:
         self.min_step = float(min_step)
         self.jacobian = jacobian
         self._build()
+        self.fast_info: tuple | None = None  # exp_fast: (K symmetric?, C^-1/2) of the build
         self.h_last: float | None = None
         self.h_first: float | None = None  # first accepted step of the last segment
         self.h0_factor = 2.0  # first step 2 / max|dT/dt / (atol + rtol |T|)| [s]
         self.facmax = 5.0
 
     def _build(self) -> None:
-        self.asm = Assembler(self.network)
+        self.asm = assembler_for(self.network)  # validates the network
         self.core = _Core(self.network, self.asm, self.rtol, self.atol, self.jacobian)
         self.core.adaptive = self.dt is None
+        self.fast_info = None
 
     def _initial_step(self, t0: float, t1: float, y0: np.ndarray, f0: np.ndarray) -> float:
         core = self.core
@@ -525,7 +526,8 @@ class _Driver:
 
     def segment(self, t0: float, t1: float, y0: np.ndarray, heat: HeatFn | None,
                 heat_jacobian: Callable | None, rec: _Recorder,
-                time_dependent: bool = True) -> np.ndarray:
+                time_dependent: bool = True,
+                heat_with_jacobian: Callable | None = None) -> np.ndarray:
         """Integrate one smooth segment; returns the state at t1 (exactly at t1)."""
         if self.network._revision != self.asm.revision:
             self._build()
@@ -534,6 +536,12 @@ class _Driver:
         core.set_heat(heat, heat_jacobian)
         core.t_end = t1
         core.t_end_left = float(np.nextafter(t1, -math.inf))
+        if self.method.name == "exprb43":
+            from . import exp_fast
+
+            if exp_fast.applies(self):
+                return exp_fast.run_segment(self, t0, t1, y0, heat, heat_jacobian,
+                                            heat_with_jacobian, rec, time_dependent)
         try:
             core.update_system(y0)
             if core.has_alg:
@@ -637,6 +645,7 @@ class _Recorder:
         self.r: list[np.ndarray] = []
         self.rows: list[tuple[float, float, float, float, float]] = []
         self.pieces: list = []  # dense output pieces of methods that have their own
+        self.fast_store = None  # exp_fast.DenseStore of the compiled exprb43 path
 
     @staticmethod
     def _rate(f: np.ndarray, core: _Core) -> np.ndarray:
@@ -701,12 +710,21 @@ def _initial_vector(network: ThermalNetwork, T0) -> np.ndarray:
     return y
 
 
+def _jacobian_of(heat_jacobian: Callable | None,
+                 heat_with_jacobian: Callable | None) -> Callable | None:
+    """heat_jacobian, or the Jacobian part of heat_with_jacobian when only that is given."""
+    if heat_jacobian is not None or heat_with_jacobian is None:
+        return heat_jacobian
+    return lambda t, T: heat_with_jacobian(t, T)[1]
+
+
 def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float, float], T0,
               method: str = "tr_bdf2", rtol: float = 1e-5, atol: float = 1e-3,
               breakpoints: Sequence[float] = (), heat_jacobian: Callable | None = None,
               dt: float | None = None, max_step: float = math.inf,
               first_step: float | None = None, min_step: float = 1e-14,
-              jacobian: str = "fd", heat_time_dependent: bool = True) -> TransientResult:
+              jacobian: str = "fd", heat_time_dependent: bool = True,
+              heat_with_jacobian: Callable | None = None) -> TransientResult:
     """Integrate the network from ``t_span[0]`` to ``t_span[1]`` [s].
 
     Parameters
@@ -732,6 +750,11 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
         iteration from the previous stage value with its known q, saving two of the four
         heat evaluations per step. Leave True (default) for ramps or any continuous
         time dependence.
+    heat_with_jacobian : optional ``(t, T) -> (q [W], dq/dT [W/K])`` from one call, for a
+        source that computes both at once (the same values as ``heat`` and
+        ``heat_jacobian``). ``exprb43`` calls it at every step start instead of the two
+        separate calls; the other steppers use ``heat`` and ``heat_jacobian`` (derived
+        from this one when not given).
 
     Returns
     -------
@@ -744,13 +767,15 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
     heat, constant = _as_heat_fn(network, heat)
     if constant:
         jacobian = "none"
+        heat_with_jacobian = None
+    heat_jacobian = _jacobian_of(heat_jacobian, heat_with_jacobian)
     driver = _Driver(network, method, rtol, atol, dt, max_step, first_step, min_step, jacobian)
     rec = _Recorder()
     cuts = sorted({float(b) for b in breakpoints if t0 < float(b) < t1})
     edges = [t0, *cuts, t1]
     td = bool(heat_time_dependent) and not constant
     for a, b in zip(edges[:-1], edges[1:], strict=True):
-        y = driver.segment(a, b, y, heat, heat_jacobian, rec, td)
+        y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
     return TransientResult(
         names=network.state_nodes,
         boundary={n: network.boundary_temperature(n) for n in network.boundary_nodes},
@@ -791,17 +816,22 @@ class TransientStepper:
 
     def advance(self, t: float, T, dt: float, heat: HeatFn | None,
                 heat_jacobian: Callable | None = None,
-                heat_time_dependent: bool = True) -> StepOutcome:
+                heat_time_dependent: bool = True,
+                heat_with_jacobian: Callable | None = None) -> StepOutcome:
         """Advance from ``t`` to ``t + dt`` [s] from state ``T`` [K] with ``heat``
-        (``heat_time_dependent`` as in :func:`integrate`)."""
+        (``heat_time_dependent`` and ``heat_with_jacobian`` as in :func:`integrate`)."""
         if not math.isfinite(dt) or dt <= 0:
             raise InputError("dt", dt, "a step > 0 s")
         y = _initial_vector(self.network, T)
         heat, constant = _as_heat_fn(self.network, heat)
+        if constant:
+            heat_with_jacobian = None
+        heat_jacobian = _jacobian_of(heat_jacobian, heat_with_jacobian)
         rec = _Recorder(active=False)
         steps0 = self._driver.core.stats["steps"]
         y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian, rec,
-                                  bool(heat_time_dependent) and not constant)
+                                  bool(heat_time_dependent) and not constant,
+                                  heat_with_jacobian)
         return StepOutcome(float(t) + float(dt), y1, rec.audit(),
                            self._driver.core.stats["steps"] - steps0)
 

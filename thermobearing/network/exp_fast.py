@@ -1,0 +1,504 @@
+"""Compiled step path of ``exprb43`` for small dense networks (the BM-1 case).
+
+Same method, formulas, step-size control and energy audit as
+:class:`thermobearing.network.exponential.ExpRosenbrock43` (Hochbruck, Ostermann &
+Schweitzer 2009, method exprb43; see the module docstring of :mod:`.exponential` for the
+stage equations, the error estimate ``6 h phi4(h A) a3`` and the discrete energy balance),
+with the per-step work reorganised so that a 4-node step costs a few microseconds of
+compiled code around the (Python) heat-source calls:
+
+- **one compiled kernel per stage** (linearisation + stage 2; stage 3; completion +
+  error estimate + energy-audit terms + dense-output coefficients), instead of ~60 small
+  numpy operations and several kernels per step in a Python driver;
+- **symmetric linear part by** ``eigh``: when K is symmetric (no oil stream through more
+  than one node) and dq/dT is diagonal, ``A = C^-1 J`` is similar to the symmetric
+  ``S = C^-1/2 J C^-1/2`` (Golub & Van Loan 2013, sec. 8.7, the symmetric-definite
+  problem ``J x = lambda C x``), so ``A = V diag(lambda) V^-1`` with ``V = C^-1/2 Q`` and
+  ``V^-1 = Q^T C^1/2`` from one symmetric eigendecomposition ``S = Q diag(lambda) Q^T``:
+  real eigenvalues, an orthogonal basis (never defective), no inverse and no condition
+  check. Otherwise the general eigendecomposition of :mod:`.exponential` is used;
+- **fewer heat calls**: the step-end heat q(y_{n+1}) is the next step's q_n, and with
+  ``heat_with_jacobian`` (``(t, T) -> (q, dq/dT)`` in one call) the step start needs one
+  call for both. The last step of a segment (ending at a breakpoint, where the source
+  jumps) calls no step-end heat at all: the rate recorded there is the derivative of the
+  step's own continuous solution, ``C y'(h) = f_n + J (y_{n+1} - y_n) + G(h)``;
+- **dense output stored in flat arrays** (eigenvalues, eigenvectors and the projected
+  forcing ``M = V^-1 C^-1 [c_0 .. c_3]`` per step), evaluated for any number of sample
+  times in one compiled call.
+
+Applies when the network is dense (<= ``assemble.DENSE_LIMIT`` nodes), has no
+zero-capacity nodes and no temperature-dependent conductances, and the steps are
+adaptive; the general path in :mod:`.exponential` handles the rest. Units: times [s],
+temperatures [K], heat [W], conductances [W/K], capacities [J/K], energies [J].
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from .exponential import (
+    _nb_combine,
+    _nb_diagonalise,
+    _nb_flows,
+    _nb_phi_row,
+    _nb_remainder,
+    _nb_scaled_jacobian,
+)
+from .steppers import _NewtonFailure
+
+_COND_MAX = 1e8
+
+
+# ------------------------------------------------------------ compiled kernels
+@numba.njit(cache=True)
+def _fk_stage2(lam, V, W, y0, f0, c1, td, h):  # pragma: no cover - compiled
+    """U2 = y_n + (y(h/2) - y_n) for the forcing f_n (+ c_1 s/h) [K]."""
+    n = y0.shape[0]
+    cs = np.zeros((4, n))
+    use = np.zeros(4, dtype=np.bool_)
+    use[0] = True
+    use[1] = td
+    for i in range(n):
+        cs[0, i] = f0[i]
+        cs[1, i] = c1[i]
+    return y0 + _nb_combine(lam, V, W, cs, use, 0.5 * h, h, 0)
+
+
+@numba.njit(cache=True)
+def _fk_start_sym(K, s, jq, rs, y0, q0, c1, td, h):  # pragma: no cover - compiled
+    """Step start on a symmetric network: (lambda, V, W, dq/dT matrix, f_n, U2).
+
+    S = -C^-1/2 (K - diag(jq)) C^-1/2 = Q diag(lambda) Q^T (``eigh``), V = C^-1/2 Q,
+    W = V^-1 C^-1 = Q^T C^-1/2; ``rs`` = C^-1/2 [(J/K)^-1/2], ``jq`` = diagonal dq/dT [W/K].
+    """
+    n = y0.shape[0]
+    f0 = np.empty(n)
+    S = np.empty((n, n))
+    JqM = np.zeros((n, n))
+    for i in range(n):
+        v = s[i] + q0[i]
+        for j in range(n):
+            v -= K[i, j] * y0[j]
+            S[i, j] = -K[i, j] * rs[i] * rs[j]
+        f0[i] = v
+        S[i, i] += jq[i] * rs[i] * rs[i]
+        JqM[i, i] = jq[i]
+    lam, Q = np.linalg.eigh(S)
+    V = np.empty((n, n))
+    W = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            V[i, j] = rs[i] * Q[i, j]
+            W[j, i] = Q[i, j] * rs[i]
+    U2 = _fk_stage2(lam, V, W, y0, f0, c1, td, h)
+    return lam, V, W, JqM, f0, U2
+
+
+@numba.njit(cache=True)
+def _fk_stage3(lam, V, W, JqM, y0, f0, c1, td, h, U2, q2, q0):  # pragma: no cover
+    """(D2, U3): D2 = g_n(U2) [W]; U3 = y_n + (y(h) - y_n) for f_n + D2 (+ c_1 s/h) [K]."""
+    n = y0.shape[0]
+    D2 = _nb_remainder(U2, q2, q0, JqM, y0, c1, 0.5 if td else 0.0)
+    cs = np.zeros((4, n))
+    use = np.zeros(4, dtype=np.bool_)
+    use[0] = True
+    use[1] = td
+    for i in range(n):
+        cs[0, i] = f0[i] + D2[i]
+        cs[1, i] = c1[i]
+    return D2, y0 + _nb_combine(lam, V, W, cs, use, h, h, 0)
+
+
+@numba.njit(cache=True)
+def _fk_finish(lam, V, W, JqM, y0, f0, c1, td, h, U3, q3, q0, D2, atol, rtol, adaptive,
+               K, C, invC, bnd_index, bnd_G, bnd_T, str_last, str_W, str_Tin,
+               s_lam, s_V, s_M, j):  # pragma: no cover - compiled
+    """Step completion: (y_{n+1} [K], scaled error, generated, to_boundaries, to_streams,
+    stored [J], rate at the step end from the step's own solution [K/s]).
+
+    y_{n+1} = y_n + h phi1 F_n + 2 h phi3 a2 + 6 h phi4 a3 with a2 = 8 D2 - D3,
+    a3 = 2 D3 - 8 D2 (exponential.py); error estimate 6 h phi4 a3 in the max norm of
+    |e| / (atol + rtol |y_{n+1}|). For an accepted step (err <= 1 or fixed steps) the audit
+    terms of the discrete energy balance and, when ``j >= 0``, the dense-output
+    coefficients of the step are written to row j of the store (s_lam, s_V, s_M).
+    """
+    n = y0.shape[0]
+    D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
+    cs = np.zeros((4, n))
+    use = np.ones(4, dtype=np.bool_)
+    use[1] = td
+    for i in range(n):
+        cs[0, i] = f0[i]
+        cs[1, i] = c1[i]
+        cs[2, i] = 8.0 * D2[i] - D3[i]
+        cs[3, i] = 2.0 * D3[i] - 8.0 * D2[i]
+    y1 = y0 + _nb_combine(lam, V, W, cs, use, h, h, 0)
+    est_use = np.zeros(4, dtype=np.bool_)
+    est_use[3] = True
+    est = _nb_combine(lam, V, W, cs, est_use, h, h, 0)
+    err = 0.0
+    for i in range(n):
+        e = abs(est[i]) / (atol + rtol * abs(y1[i]))
+        if not e <= err:  # also catches NaN
+            err = e
+    rate = np.zeros(n)
+    if (err > 1.0 and adaptive) or not math.isfinite(err):
+        return y1, err, 0.0, 0.0, 0.0, 0.0, rate
+    integral = _nb_combine(lam, V, W, cs, use, h, h, 1)
+    gen = 0.0
+    stored = 0.0
+    for i in range(n):
+        gen += h * (q0[i] + cs[2, i] / 3.0 + cs[3, i] / 4.0)
+        if td:
+            gen += h * c1[i] / 2.0
+        for m in range(n):
+            gen += JqM[i, m] * integral[m]
+        stored += C[i] * (y1[i] - y0[i])
+    ybar = y0 + integral / h
+    fb, fs = _nb_flows(ybar, bnd_index, bnd_G, bnd_T, str_last, str_W, str_Tin)
+    # C y'(h) = f_n + (-K + dq/dT)(y_{n+1} - y_n) + G(h), G(h) = sum_{k>=1, used} c_k
+    for i in range(n):
+        v = f0[i] + cs[2, i] + cs[3, i]
+        if td:
+            v += c1[i]
+        for m in range(n):
+            v += (JqM[i, m] - K[i, m]) * (y1[m] - y0[m])
+        rate[i] = v * invC[i]
+    if j >= 0:
+        for e in range(n):
+            s_lam[j, e] = lam[e]
+            for r in range(n):
+                s_V[j, r, e] = V[r, e]
+            for k in range(4):
+                acc = 0.0j
+                if use[k]:
+                    for m in range(n):
+                        acc += W[e, m] * cs[k, m]
+                s_M[j, e, k] = acc
+    return y1, err, gen, h * fb, h * fs, stored, rate
+
+
+@numba.njit(cache=True)
+def _fk_dense(s_lam, s_V, s_M, s_y0, s_t0, s_h, idx, t):  # pragma: no cover - compiled
+    """Temperatures [K] at times t[i] from stored step idx[i] (right-continuous at a start):
+    y_n + V sum_k k! tau theta^k phi_{k+1}(tau lambda) M[:, k], theta = tau / h."""
+    n = s_y0.shape[1]
+    out = np.empty((t.shape[0], n))
+    ph = np.empty(7, dtype=np.complex128)
+    acc = np.empty(n, dtype=np.complex128)
+    for p in range(t.shape[0]):
+        j = idx[p]
+        tau = min(max(t[p] - s_t0[j], 0.0), s_h[j])
+        if tau == 0.0:
+            for r in range(n):
+                out[p, r] = s_y0[j, r]
+            continue
+        th = tau / s_h[j]
+        for e in range(n):
+            _nb_phi_row(tau * s_lam[j, e], 4, ph)
+            acc[e] = tau * (ph[1] * s_M[j, e, 0] + th * ph[2] * s_M[j, e, 1]
+                            + 2.0 * th * th * ph[3] * s_M[j, e, 2]
+                            + 6.0 * th * th * th * ph[4] * s_M[j, e, 3])
+        for r in range(n):
+            v = 0.0j
+            for e in range(n):
+                v += s_V[j, r, e] * acc[e]
+            out[p, r] = s_y0[j, r] + v.real
+    return out
+
+
+# ------------------------------------------------------------ dense output store
+class DenseStore:
+    """Per-run arrays of the dense output: step start t0 [s], size h [s], start state y0 [K],
+    eigenvalues [1/s], eigenvectors and projected forcing (complex; real spectra are stored
+    with zero imaginary part). Grown by doubling."""
+
+    __slots__ = ("count", "t0", "h", "y0", "lam", "V", "M")
+
+    def __init__(self, n: int, capacity: int = 64) -> None:
+        self.count = 0
+        self.t0 = np.empty(capacity)
+        self.h = np.empty(capacity)
+        self.y0 = np.empty((capacity, n))
+        self.lam = np.empty((capacity, n), dtype=complex)
+        self.V = np.empty((capacity, n, n), dtype=complex)
+        self.M = np.empty((capacity, n, 4), dtype=complex)
+
+    def reserve(self) -> int:
+        """Index of the next row (grown if full)."""
+        j = self.count
+        if j == len(self.t0):
+            for name in ("t0", "h", "y0", "lam", "V", "M"):
+                a = getattr(self, name)
+                setattr(self, name, np.concatenate([a, np.empty_like(a)]))
+        return j
+
+
+class StorePiece:
+    """Dense output of one step of the compiled exprb43 path on [t0, t0 + h]."""
+
+    __slots__ = ("store", "j", "t0", "h")
+
+    def __init__(self, store: DenseStore, j: int, t0: float, h: float) -> None:
+        self.store, self.j, self.t0, self.h = store, j, t0, h
+
+    @property
+    def y0(self) -> np.ndarray:
+        return self.store.y0[self.j]
+
+    def __call__(self, t: np.ndarray) -> np.ndarray:
+        """Temperatures [K] at times t (within the step), shape (len(t), n)."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        st = self.store
+        return _fk_dense(st.lam, st.V, st.M, st.y0, st.t0, st.h,
+                         np.full(len(t), self.j, dtype=np.int64), t)
+
+    @staticmethod
+    def sample_batch(pieces: tuple, t: np.ndarray) -> np.ndarray:
+        """Temperatures [K] at times t from a run's pieces in one compiled call."""
+        starts = np.array([p.t0 for p in pieces])
+        k = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, len(starts) - 1)
+        store = pieces[0].store if isinstance(pieces[0], StorePiece) else None
+        if store is not None and all(type(p) is StorePiece and p.store is store
+                                     for p in pieces):
+            rows = np.array([p.j for p in pieces], dtype=np.int64)[k]
+            return _fk_dense(store.lam, store.V, store.M, store.y0, store.t0, store.h,
+                             rows, t)
+        out = np.empty((len(t), len(pieces[0].y0)))
+        for j in np.unique(k):
+            sel = k == j
+            out[sel] = pieces[j](t[sel])
+        return out
+
+
+# ------------------------------------------------------------ the segment loop
+def applies(driver) -> bool:
+    """Whether the compiled path can run this driver's network (see the module docstring)."""
+    core = driver.core
+    return (driver.dt is None and core.sys.dense and not core.has_alg
+            and not core.asm.temperature_dependent and core.n > 0)
+
+
+def _general_start(core, K, jq, y0, q0, c1, td, h):
+    """Step start on a non-symmetric network (or a full dq/dT): the general
+    eigendecomposition of exponential.py (real, else complex; defective bases refused)."""
+    n = core.n
+    JqM = np.diag(jq) if jq.ndim == 1 else np.ascontiguousarray(jq)
+    A = _nb_scaled_jacobian(K - JqM, core.invC)
+    if not math.isfinite(A.sum()):
+        raise _NewtonFailure(math.inf, "non-finite Jacobian")
+    empty = np.zeros((0, 0))
+    try:
+        lam, V, W, cond = _nb_diagonalise(A, empty, core.invC, False)
+    except ValueError:  # complex spectrum (upwind stream coupling)
+        try:
+            lam, V, W, cond = _nb_diagonalise(A.astype(complex), empty.astype(complex),
+                                              core.invC.astype(complex), False)
+        except (ValueError, np.linalg.LinAlgError):
+            cond = math.inf
+    except np.linalg.LinAlgError:
+        cond = math.inf
+    if not cond <= _COND_MAX:
+        raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
+                                       "use method='tr_bdf2' for this network")
+    f0 = core.sys.s - K @ y0 + q0
+    U2 = _fk_stage2(lam, V, W, y0, f0, c1, td, h)
+    del n
+    return lam, V, W, JqM, f0, U2
+
+
+def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobian,
+                heat_with_jacobian, rec, td: bool) -> np.ndarray:
+    """Integrate one smooth segment [t0, t1] with the compiled exprb43 path; returns the
+    state at t1. Records into ``rec`` like the generic driver loop (steppers._Driver)."""
+    from ..errors import ConvergenceError
+
+    core = driver.core
+    sys_ = core.sys
+    K, s, C, invC = sys_.K, sys_.s, core.C, core.invC
+    n = core.n
+    stats = core.stats
+    info = driver.fast_info
+    if info is None:
+        sym = bool(np.array_equal(K, K.T))
+        info = driver.fast_info = (sym, 1.0 / np.sqrt(C))
+    sym, rs = info
+    t_left = float(np.nextafter(t1, -math.inf))
+    net = driver.network
+    zeros = np.zeros(n)
+    jac_mode = core.jacobian_mode
+    if heat is None:
+        jac_mode = "none"
+
+    def q_of(t: float, T: np.ndarray) -> np.ndarray:
+        stats["heat_evaluations"] += 1
+        if heat is None:
+            return zeros
+        r = heat(t if t < t1 else t_left, T)
+        if type(r) is not np.ndarray or r.shape != (n,):
+            r = net.heat_vector(r)
+        return r
+
+    def start(t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(q, dq/dT) at a step start; dq/dT (n,) diagonal or (n, n)."""
+        stats["jacobians"] += 1
+        tt = t if t < t1 else t_left
+        if heat_with_jacobian is not None and heat is not None:
+            stats["heat_evaluations"] += 1
+            r, jq = heat_with_jacobian(tt, T)
+            if type(r) is not np.ndarray or r.shape != (n,):
+                r = net.heat_vector(r)
+            jq = np.asarray(jq, dtype=float)
+        else:
+            r = q_of(t, T)
+            if heat is None or jac_mode == "none":
+                jq = zeros
+            elif heat_jacobian is not None:
+                jq = np.asarray(heat_jacobian(tt, T), dtype=float)
+            else:
+                core.refresh_jacobian(t, T, r)
+                stats["jacobians"] -= 1  # counted above
+                jq = core.Jq if core.Jq is not None else zeros
+        if not math.isfinite(r.sum()):
+            raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
+        if jq.shape not in ((n,), (n, n)) or not math.isfinite(jq.sum()):
+            from ..errors import InputError
+
+            raise InputError("heat_jacobian", jq.shape,
+                             f"a finite ({n},) diagonal or ({n}, {n}) matrix")
+        return r, jq
+
+    def fail(exc, t, h, y):
+        return ConvergenceError(f"network stepper {driver.method_name}", exc.residual,
+                                exc.reason, {"time": t, "step_size": h, "temperatures": y})
+
+    store = None
+    if rec.active:
+        store = rec.fast_store
+        if store is None or store.y0.shape[1] != n:
+            store = rec.fast_store = DenseStore(n)
+    s_lam, s_V, s_M = ((store.lam, store.V, store.M) if store is not None else
+                       (np.zeros((0, n), complex), np.zeros((0, n, n), complex),
+                        np.zeros((0, n, 4), complex)))
+    try:
+        q0, jq = start(t0, y0)
+    except _NewtonFailure as exc:
+        raise fail(exc, t0, 0.0, y0) from None
+    t, y = t0, y0
+    # first trial step: the whole segment (exact linear part), capped as in the driver
+    if driver.first_step is not None:
+        h = min(driver.first_step, t1 - t0)
+    else:
+        h = min(t1 - t0, driver.max_step)
+        if driver.h_first is not None:
+            h = min(h, 4.0 * driver.h_first)
+    p1 = 4.0  # error order 3 + 1
+    first_in_segment = True
+    rejected_in_row = False
+    pending_rate = not rec.started  # the run's first point needs its rate
+    if not rec.started:
+        rec.started = True
+        if rec.active:
+            rec.t.append(t0)
+            rec.y.append(y0.copy())
+    tiny = 1e-12 * max(1.0, abs(t1))
+    lin = None
+    sym_now = sym and jq.ndim == 1
+    bnd = (sys_.bnd_index, sys_.bnd_G, sys_.bnd_T, sys_.str_last, sys_.str_W, sys_.str_Tin)
+    while t < t1 - tiny:
+        if t + h >= t1 - 1e-3 * h:
+            h = t1 - t
+            last = True
+        else:
+            last = False
+        try:
+            if td:  # c1 = h dq/dt, one-sided difference inside the segment
+                dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
+                c1 = (q_of(t + dt_fd, y) - q0) * (h / dt_fd)
+            else:
+                c1 = zeros
+            if lin is None:
+                if sym_now:
+                    lam, V, W, JqM, f0, U2 = _fk_start_sym(K, s, jq, rs, y, q0, c1, td, h)
+                else:
+                    lam, V, W, JqM, f0, U2 = _general_start(core, K, jq, y, q0, c1, td, h)
+                lin = True
+                if pending_rate and rec.active:
+                    rec.r.append(f0 * invC)
+                pending_rate = False
+            else:
+                U2 = _fk_stage2(lam, V, W, y, f0, c1, td, h)
+            q2 = q_of(t + 0.5 * h, U2)
+            D2, U3 = _fk_stage3(lam, V, W, JqM, y, f0, c1, td, h, U2, q2, q0)
+            q3 = q_of(t + h, U3)
+            if store is not None:
+                j = store.reserve()
+                s_lam, s_V, s_M = store.lam, store.V, store.M
+            else:
+                j = -1
+            y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
+                lam, V, W, JqM, y, f0, c1, td, h, U3, q3, q0, D2, core.atol, core.rtol,
+                True, K, C, invC, *bnd, s_lam, s_V, s_M, j)
+            if not math.isfinite(err):
+                raise _NewtonFailure(math.inf, "non-finite exponential step")
+        except _NewtonFailure as exc:
+            stats["newton_failures"] += 1
+            h_new = h / 4.0
+            if h_new < driver.min_step:
+                raise fail(exc, t, h, y) from None
+            h = h_new
+            continue
+        if err > 1.0:
+            stats["rejected"] += 1
+            fac = max(0.1, 0.9 * err ** (-1.0 / p1))
+            if rejected_in_row:
+                fac = min(fac, 0.5)
+            rejected_in_row = True
+            h = h * fac
+            if h < driver.min_step:
+                raise ConvergenceError(
+                    f"network stepper {driver.method_name}", err,
+                    "step size underflow in error control",
+                    {"time": t, "step_size": h, "temperatures": y})
+            continue
+        # accept
+        rejected_in_row = False
+        if first_in_segment:
+            driver.h_first = h
+            first_in_segment = False
+        stats["steps"] += 1
+        t_start = t
+        t = t1 if last else t + h
+        rec.rows.append((t, gen, stored, to_b, to_s))
+        if store is not None:
+            store.t0[j] = t_start
+            store.h[j] = h
+            store.y0[j] = y
+            store.count = j + 1
+            rec.pieces.append(StorePiece(store, j, t_start, h))
+            rec.t.append(t)
+            rec.y.append(y1)
+            if last:
+                rec.r.append(rate)
+        y = y1
+        if not last:
+            try:
+                q0, jq = start(t, y)
+            except _NewtonFailure as exc:
+                raise fail(exc, t, h, y) from None
+            sym_now = sym and jq.ndim == 1
+            lin = None
+            pending_rate = True
+        driver.h_last = h
+        fac = (driver.facmax if err == 0.0
+               else min(driver.facmax, max(0.2, 0.9 * err ** (-1.0 / p1))))
+        if not 1.0 <= fac <= 1.2:
+            h = h * fac
+        h = min(h, driver.max_step)
+    if pending_rate and rec.active:  # (a segment ended by the tolerance guard)
+        f, _ = core.f(t, y)
+        rec.r.append(f * invC)
+    return y
