@@ -61,15 +61,17 @@ Kotzalas 2007 (deformed-surface radius, spinning moment 3 mu Q a E(k) / 8); seed
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 from typing import Any
 
+import numba
 import numpy as np
 from scipy.special import roots_jacobi, roots_legendre
 
 from .errors import InputError
 from .state import ContactSet
-from .traction import TractionLaw
+from .traction import EYRING, TractionLaw, _law_stress
 
 GENERALIZED = ("transverse_force", "rolling_force", "moment_transverse", "moment_rolling",
                "moment_normal")
@@ -128,18 +130,6 @@ def _rule(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
     for arr in (xg, yg, shape, area_w):
         arr.flags.writeable = False
     return xg, yg, shape, area_w
-
-
-@functools.lru_cache(maxsize=64)
-def _bases(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
-    """xg^2 and the node-vector bases (1, xg^2, yg), (1, xg^2, xg) of the moment sums."""
-    xg, yg, _, _ = _rule(kind, n_major, n_minor)
-    xg2 = xg * xg
-    base_x = np.ascontiguousarray(np.stack([np.ones_like(xg), xg2, yg], axis=1))
-    base_y = np.ascontiguousarray(np.stack([np.ones_like(xg), xg2, xg], axis=1))
-    for arr in (xg2, base_x, base_y):
-        arr.flags.writeable = False
-    return xg2, base_x, base_y
 
 
 def integrate(
@@ -217,106 +207,249 @@ def integrate(
                            kind, int(n_major), int(n_minor), jacobian)
 
 
+@numba.njit(cache=True, inline="always")
+def _peak_pressure(q: float, a: float, b: float, point: bool) -> float:
+    """p0 [Pa] consistent with the load: 3Q/(2 pi a b) (point), Q/(pi a b) (line); 0 unloaded."""
+    if not (q > 0.0 and a > 0.0 and b > 0.0):
+        return 0.0
+    if point:
+        return 3.0 * q / (2.0 * math.pi * (a * b))
+    return q / (math.pi * (a * b))
+
+
+@numba.njit(cache=True, inline="always")
+def _table_viscosity(p: float, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                     inv_dp: float) -> float:
+    """eta [Pa s] by linear interpolation of ln eta on a uniform pressure grid (0..p_max)."""
+    u = p * inv_dp
+    i = int(u)
+    if i > ln_tab.size - 1:
+        i = ln_tab.size - 1
+    return math.exp(ln_tab[i] + (u - i) * slope_tab[i])
+
+
+@numba.njit(cache=True)
+def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
+                        ln_tab: np.ndarray, slope_tab: np.ndarray, inv_dp: float,
+                        eta_nodes: np.ndarray, q: np.ndarray, a: np.ndarray, b: np.ndarray,
+                        vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
+                        wy: np.ndarray, curv: np.ndarray, h: np.ndarray, xg: np.ndarray,
+                        yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray, point: bool,
+                        jacobian: bool, out: np.ndarray, jac: np.ndarray,
+                        grad: np.ndarray) -> None:
+    """The contact integration (compiled; see the module docstring), contact by contact.
+
+    Flat float64 inputs of length N (h: film thickness, unused by laws without a film);
+    the rule (xg, yg, p/p0, dA/(a b)) of :func:`_rule`. The viscosity of the film law at a
+    node: ``visc_mode`` 1: table ``ln_tab``/``slope_tab`` on a uniform pressure grid
+    (step 1/inv_dp); 2: ``eta_nodes[c, k]``; 0: not needed. Writes ``out[c]`` = (F_x, F_y,
+    M_x, M_y, M_z, heat) and, when ``jacobian``, ``jac[c]`` = dQ/dq (5 x 5) and ``grad[c]``
+    = d heat / dq. Unloaded contacts (Q, a or b = 0) give zeros.
+    """
+    n = q.size
+    nk = xg.size
+    for c in range(n):
+        for j in range(6):
+            out[c, j] = 0.0
+        if jacobian:
+            for i in range(5):
+                grad[c, i] = 0.0
+                for j in range(5):
+                    jac[c, i, j] = 0.0
+        p0 = _peak_pressure(q[c], a[c], b[c], point)
+        if p0 == 0.0:
+            continue
+        ac, bc = a[c], b[c]
+        ab = ac * bc
+        a2c = 0.5 * curv[c] * ac * ac
+        cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
+        cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
+        hc = h[c]
+        sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
+        j00 = j01 = j02 = j03 = j04 = j11 = j12 = j13 = j14 = 0.0
+        j22 = j23 = j24 = j33 = j34 = j44 = 0.0
+        g0 = g1 = g2 = g3 = g4 = 0.0
+        for k in range(nk):
+            xk, yk = xg[k], yg[k]
+            xk2 = xk * xk
+            dvx = vx[c] + cx2 * xk2 - cy * yk
+            dvy = vy[c] + cx * xk - cy2 * xk2
+            speed = math.sqrt(dvx * dvx + dvy * dvy)
+            pres = p0 * pshape[k]
+            weight = ab * area_w[k]
+            if visc_mode == 1:
+                eta = _table_viscosity(pres, ln_tab, slope_tab, inv_dp)
+            elif visc_mode == 2:
+                eta = eta_nodes[c, k]
+            else:
+                eta = 0.0
+            tau, dtau = _law_stress(law_id, law_params, speed, pres, eta, hc)
+            tw = tau * weight                   # |traction| of the node [N]
+            per_speed = tw / speed if speed > 0.0 else 0.0
+            px, py = per_speed * dvx, per_speed * dvy   # -t_x, -t_y
+            sx0 += px
+            sx1 += px * xk2
+            sx2 += px * yk
+            sy0 += py
+            sy1 += py * xk2
+            sy2 += py * xk
+            heat += tw * speed
+            if jacobian:
+                x = ac * xk
+                y = bc * yk
+                z = a2c * xk2
+                if speed > 0.0:
+                    ex, ey = dvx / speed, dvy / speed
+                    ratio = tau / speed
+                else:
+                    ex = ey = 0.0
+                    ratio = dtau
+                # d t / d dv = -[tau' e e^T + (tau/s)(I - e e^T)] dA
+                axx = -(dtau * ex * ex + ratio * (1.0 - ex * ex)) * weight
+                ayy = -(dtau * ey * ey + ratio * (1.0 - ey * ey)) * weight
+                axy = -(dtau - ratio) * ex * ey * weight
+                # J = sum gx (A gx + B gy) + gy (B gx + C gy), gx = (1, 0, 0, z, -y),
+                # gy = (0, 1, -z, 0, x)
+                t4x = -axx * y + axy * x
+                t4y = -axy * y + ayy * x
+                j00 += axx
+                j01 += axy
+                j02 += -axy * z
+                j03 += axx * z
+                j04 += t4x
+                j11 += ayy
+                j12 += -ayy * z
+                j13 += axy * z
+                j14 += t4y
+                j22 += ayy * z * z
+                j23 += -axy * z * z
+                j24 += -z * t4y
+                j33 += axx * z * z
+                j34 += z * t4x
+                j44 += -y * t4x + x * t4y
+                dheat = (dtau * speed + tau) * weight   # d(tau s)/ds dA
+                hx, hy = dheat * ex, dheat * ey
+                g0 += hx
+                g1 += hy
+                g2 += -hy * z
+                g3 += hx * z
+                g4 += -hx * y + hy * x
+        out[c, 0] = -sx0
+        out[c, 1] = -sy0
+        out[c, 2] = a2c * sy1                    # -sum z t_y
+        out[c, 3] = -a2c * sx1                   # sum z t_x
+        out[c, 4] = bc * sx2 - ac * sy2          # sum (x t_y - y t_x)
+        out[c, 5] = heat
+        if jacobian:
+            vals = (j00, j01, j02, j03, j04, j11, j12, j13, j14, j22, j23, j24, j33, j34, j44)
+            idx = 0
+            for i in range(5):
+                for j in range(i, 5):
+                    jac[c, i, j] = vals[idx]
+                    jac[c, j, i] = vals[idx]
+                    idx += 1
+            grad[c, 0], grad[c, 1], grad[c, 2], grad[c, 3], grad[c, 4] = g0, g1, g2, g3, g4
+
+
+@numba.njit(cache=True)
+def _node_pressures(q: np.ndarray, a: np.ndarray, b: np.ndarray, pshape: np.ndarray,
+                    point: bool) -> np.ndarray:
+    """Hertz pressure [Pa] at every node of every contact, (N, K) (for visc_mode 2)."""
+    out = np.empty((q.size, pshape.size))
+    for c in range(q.size):
+        p0 = _peak_pressure(q[c], a[c], b[c], point)
+        for k in range(pshape.size):
+            out[c, k] = p0 * pshape[k]
+    return out
+
+
+def viscosity_source(law: Any, temperature: Any, max_pressure: float) -> tuple:
+    """How the compiled integration gets the film law's viscosity: (visc_mode, ln_tab,
+    slope_tab, inv_dp). Mode 1 (table) when the law's lubricant offers an isothermal table
+    (``viscosity_table(T, p_max)``, e.g. the ball solver's tabulated lubricant) at this
+    temperature up to ``max_pressure``; else mode 2 (eta at every node from the lubricant,
+    in numpy) for film laws and 0 for the others."""
+    empty = _EMPTY
+    if law.kernel[0] != EYRING:
+        return 0, empty, empty, 0.0
+    table = getattr(law.lubricant, "viscosity_table", None)
+    if table is not None and temperature is not None:
+        tab = table(temperature, max_pressure)
+        if tab is not None:
+            return (1, *tab)
+    return 2, empty, empty, 0.0
+
+
+@numba.njit(cache=True)
+def _table_viscosity_array(p: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                           inv_dp: float) -> np.ndarray:
+    """:func:`_table_viscosity` over a flat array of pressures in [0, p_max] [Pa s]."""
+    out = np.empty(p.size)
+    for i in range(p.size):
+        out[i] = _table_viscosity(p[i], ln_tab, slope_tab, inv_dp)
+    return out
+
+
+_EMPTY = np.zeros(0)
+_EMPTY2 = np.zeros((0, 0))
+_EMPTY3 = np.zeros((0, 0, 0))
+
+
 def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.ndarray,
                     vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
                     wy: np.ndarray, curvature: np.ndarray, h: np.ndarray | None,
                     temperature: Any, kind: str, n_major: int, n_minor: int,
                     jacobian: bool) -> ContactTraction:
-    """Unchecked core of :func:`integrate` (the one code path of the contact integration).
+    """Unchecked core of :func:`integrate`: flattens the contacts and runs the compiled
+    :func:`_integrate_contacts` (the one code path of the contact integration; the ball
+    skidding residual calls :func:`_integrate_contacts` inside its own compiled kernel).
 
     All arrays are float and broadcast to the contact shape S; ``curvature`` = 1/R_d [1/m]
-    (0: flat); ``h`` the film thickness (> 0 at loaded contacts) or None. The skidding
-    solvers call this directly inside their residuals after validating their inputs once;
-    :func:`integrate` validates and calls it.
+    (0: flat); ``h`` the film thickness (> 0 at loaded contacts) or None. ``law`` is a
+    registered law (it has ``kernel``; other objects raise InputError).
     """
-    shape_s = np.broadcast_shapes(q_load.shape, a.shape, b.shape)
-    q_load = np.broadcast_to(q_load, shape_s)
-    xg, yg, pshape, area_w = _rule(kind, n_major, n_minor)
-
-    loaded = (q_load > 0) & (a > 0) & (b > 0)
-    ab = a * b
-    safe_ab = np.where(loaded, ab, 1.0)
-    if kind == "point":
-        p0 = np.where(loaded, 3.0 * q_load / (2.0 * np.pi * safe_ab), 0.0)
-    else:
-        p0 = np.where(loaded, q_load / (np.pi * safe_ab), 0.0)
-
-    e = (...,) + (None,)
-    xg2, base_x, base_y = _bases(kind, n_major, n_minor)
-    # node (x, y, z) = (a xg, b yg, a2c xg^2) with z = x^2 / (2 R_d): per-contact
-    # coefficients times fixed node vectors
-    a2c = 0.5 * np.asarray(curvature) * a * a
-    dvx = vx[e] + (wy * a2c)[e] * xg2 - (wz * b)[e] * yg
-    dvy = vy[e] + (wz * a)[e] * xg - (wx * a2c)[e] * xg2
-    speed = np.sqrt(dvx * dvx + dvy * dvy)
-    pressure = p0[e] * pshape
-    weight = np.where(loaded, ab, 0.0)[e] * area_w  # dA [m^2]
-
-    h_nodes = None
+    if not hasattr(law, "kernel"):
+        raise InputError("contact_traction.law", type(law).__name__,
+                         "a registered traction law (traction.TRACTION) with a compiled kernel")
+    arrays = np.broadcast_arrays(q_load, a, b, vy, vx, wz, wx, wy, curvature,
+                                 1.0 if h is None else h)
+    shape_s = arrays[0].shape
+    q, a_, b_, vy_, vx_, wz_, wx_, wy_, cv, hh = (
+        np.ascontiguousarray(x, dtype=np.float64).ravel() for x in arrays)
     if h is not None:
-        h_nodes = np.where(loaded, h, 1.0)[e]  # shape S + (1,): broadcast over the nodes
-    t_nodes = None
-    if temperature is not None:
-        # per-contact temperature, shape S + (1,): the law evaluates the temperature part of
-        # the viscosity once per contact and broadcasts it over the nodes
-        t_nodes = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s)[e]
-    core = getattr(law, "_stress", None)   # unchecked core of the law's shear_stress
-    if core is not None:
-        tau, dtau = core(speed, pressure, h_nodes, t_nodes, derivative=jacobian)
-    else:
-        tau, dtau = law.shear_stress(speed, pressure, h_nodes, t_nodes)
-    tau = np.broadcast_to(np.asarray(tau, dtype=float), speed.shape)
-
-    moving = speed > 0.0
-    safe_speed = np.where(moving, speed, 1.0)
-    tw = tau * weight                               # |traction| per node [N]
-    per_speed = np.where(moving, tw / safe_speed, 0.0)
-    # traction on the element per node: t = -per_speed dv (against the slip); its sums and
-    # first moments over the nodes as two small matrix products with the node vectors
-    sx = (per_speed * dvx) @ base_x               # (sum, sum xg^2, sum yg) of -t_x
-    sy = (per_speed * dvy) @ base_y               # (sum, sum xg^2, sum xg) of -t_y
-    fx = -sx[..., 0]
-    fy = -sy[..., 0]
-    mx = a2c * sy[..., 1]                         # -sum z t_y
-    my = -a2c * sx[..., 1]                        # sum z t_x
-    mz = b * sx[..., 2] - a * sy[..., 2]          # sum (x t_y - y t_x)
-    heat = (tw * speed).sum(-1)
-
-    jac = grad = None
-    if jacobian:
-        dtau = np.broadcast_to(np.asarray(dtau, dtype=float), speed.shape)
-        x = a[e] * xg
-        y = b[e] * yg
-        z = a2c[e] * xg2
-        ex = np.where(moving, dvx / safe_speed, 0.0)
-        ey = np.where(moving, dvy / safe_speed, 0.0)
-        # d t / d dv = -[tau' e e^T + (tau/s)(I - e e^T)] (per unit area)
-        ratio = np.where(moving, tau / safe_speed, dtau)
-        axx = -(dtau * ex * ex + ratio * (1.0 - ex * ex)) * weight
-        ayy = -(dtau * ey * ey + ratio * (1.0 - ey * ey)) * weight
-        axy = -(dtau - ratio) * ex * ey * weight
-        # J_ij = sum_k gx_i (A gx_j + B gy_j) + gy_i (B gx_j + C gy_j) with
-        # gx = d dv_x/dq = (1, 0, 0, z, -y), gy = d dv_y/dq = (0, 1, -z, 0, x); written out
-        # entry by entry (symmetric) to avoid (..., K, 5) temporaries
-        a_, b_, c_ = axx, axy, ayy
-        az, bz, cz = a_ * z, b_ * z, c_ * z
-        t4x = -a_ * y + b_ * x  # (A gx + B gy)_4
-        t4y = -b_ * y + c_ * x  # (B gx + C gy)_4
-        entries = {
-            (0, 0): a_, (0, 1): b_, (0, 2): -bz, (0, 3): az, (0, 4): t4x,
-            (1, 1): c_, (1, 2): -cz, (1, 3): bz, (1, 4): t4y,
-            (2, 2): cz * z, (2, 3): -bz * z, (2, 4): -z * t4y,
-            (3, 3): az * z, (3, 4): z * t4x,
-            (4, 4): -y * t4x + x * t4y,
-        }
-        jac = np.empty(shape_s + (5, 5))
-        for (i, j), term in entries.items():
-            jac[..., i, j] = jac[..., j, i] = term.sum(-1)
-        dheat = (dtau * speed + tau) * weight  # d(tau s)/ds * dA
-        hx, hy = dheat * ex, dheat * ey
-        grad = np.stack([hx.sum(-1), hy.sum(-1), -(hy * z).sum(-1), (hx * z).sum(-1),
-                         (-hx * y + hy * x).sum(-1)], axis=-1)
-    return ContactTraction(fx, fy, mx, my, mz, heat, jac, grad)
+        loaded = (q > 0) & (a_ > 0) & (b_ > 0)
+        hh = np.where(loaded, hh, 1.0)
+    xg, yg, pshape, area_w = _rule(kind, n_major, n_minor)
+    point = kind == "point"
+    law_id, params = law.kernel
+    n = q.size
+    visc_mode, ln_tab, slope_tab, inv_dp = 0, _EMPTY, _EMPTY, 0.0
+    eta_nodes = _EMPTY2
+    if law_id == EYRING:
+        if temperature is None:
+            raise InputError(f"traction law {type(law).__name__}.temperature", None,
+                             "a contact temperature [K]: this law shears a fluid film")
+        pn = _node_pressures(q, a_, b_, pshape, point)
+        pmax = float(pn.max()) if pn.size else 0.0
+        temp = np.broadcast_to(np.asarray(temperature, dtype=float), shape_s).ravel()
+        t_one = temp.size > 0 and bool(np.all(temp == temp[0]))
+        visc_mode, ln_tab, slope_tab, inv_dp = viscosity_source(
+            law, float(temp[0]) if t_one else None, pmax)
+        if visc_mode == 2:
+            # the temperature part of the viscosity once per contact, broadcast over nodes
+            eta_nodes = np.ascontiguousarray(np.broadcast_to(np.asarray(
+                law.lubricant.dynamic_viscosity(temp[:, None], np.maximum(pn, 0.0)),
+                dtype=float), pn.shape))
+    out = np.empty((n, 6))
+    jac = np.empty((n, 5, 5)) if jacobian else _EMPTY3
+    grad = np.empty((n, 5)) if jacobian else _EMPTY2
+    _integrate_contacts(law_id, params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes, q,
+                        a_, b_, vy_, vx_, wz_, wx_, wy_, cv, hh, xg, yg, pshape, area_w, point,
+                        jacobian, out, jac, grad)
+    res = out.reshape(shape_s + (6,))
+    return ContactTraction(res[..., 0], res[..., 1], res[..., 2], res[..., 3], res[..., 4],
+                           res[..., 5], jac.reshape(shape_s + (5, 5)) if jacobian else None,
+                           grad.reshape(shape_s + (5,)) if jacobian else None)
 
 
 def integrate_contact_set(law: TractionLaw, contacts: ContactSet, *, n_major: int = 16,

@@ -43,6 +43,7 @@ import math
 import warnings
 from typing import Any, NamedTuple
 
+import numba
 import numpy as np
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
@@ -204,6 +205,35 @@ def _ellipse(w: np.ndarray, r: np.ndarray, k: np.ndarray, big_e: np.ndarray,
     b = np.cbrt(6.0 * big_e * w * r / (math.pi * k * ep))
     with np.errstate(divide="ignore", invalid="ignore"):
         p = np.where(w > 0, 3.0 * w / (2.0 * math.pi * np.where(w > 0, a * b, 1.0)), 0.0)
+    return a, b, p
+
+
+@numba.njit(cache=True)
+def _hamrock_brewe_point_nb(rx: float, ry: float, ep: float
+                            ) -> tuple[float, float, float, float]:
+    """Compiled scalar fast path (unchecked; rx, ry, ep > 0) of the Hamrock-Brewe 1983
+    closed form used by :func:`_hamrock_brewe_kke` / :func:`_stiffness_from`: returns
+    (R [m], k [-], E [-], K [N/m^1.5]) with 1/R = 1/rx + 1/ry, k = (R_big/R_small)^(2/pi),
+    E = 1 + (pi/2 - 1)/ratio, script-K = pi/2 + (pi/2 - 1) ln(ratio) and
+    K = pi k E' (2 E R / (9 script-K^3))^(1/2) (Q = K delta^1.5). For compiled callers
+    (the ball skidding residual); the public functions are unchanged."""
+    r = 1.0 / (1.0 / rx + 1.0 / ry)
+    ratio = max(rx, ry) / min(rx, ry)
+    k = ratio ** (2.0 / math.pi)
+    big_k = math.pi / 2 + _Q * math.log(ratio)
+    big_e = 1.0 + _Q / ratio
+    return r, k, big_e, math.pi * k * ep * math.sqrt(2.0 * big_e * r / (9.0 * big_k**3))
+
+
+@numba.njit(cache=True)
+def _ellipse_nb(w: float, r: float, k: float, big_e: float,
+                ep: float) -> tuple[float, float, float]:
+    """Compiled scalar fast path of :func:`_ellipse` for compiled callers:
+    a = (6 k^2 E W R / (pi E'))^(1/3), b = (6 E W R / (pi k E'))^(1/3) [m],
+    p_max = 3 W / (2 pi a b) [Pa] (0 at zero load); unchecked (W >= 0)."""
+    a = np.cbrt(6.0 * k**2 * big_e * w * r / (math.pi * ep))
+    b = np.cbrt(6.0 * big_e * w * r / (math.pi * k * ep))
+    p = 3.0 * w / (2.0 * math.pi * (a * b)) if w > 0 else 0.0
     return a, b, p
 
 

@@ -34,6 +34,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, NamedTuple, Protocol
 
+import numba
 import numpy as np
 from scipy.optimize import brentq
 
@@ -71,6 +72,86 @@ def _as_speed(slide_speed: Any) -> np.ndarray:
         raise InputError("traction.slide_speed", "negative or non-finite values",
                          "sliding-speed magnitudes >= 0 [m/s]")
     return s
+
+
+# ---------------------------------------------------------------------------
+# Compiled kernels: the ONE implementation of every law's stress. ``shear_stress`` (below)
+# and the contact integration (contact_traction._integrate_contacts, also inside the ball
+# skidding residual) call these same functions. A law is handed to compiled code as
+# (law id, params): params is the law's float64[4] (see each law's ``kernel``).
+LINEAR_SATURATING, EYRING, FOUR_PARAMETER = 0, 1, 2
+
+
+@numba.njit(cache=True, inline="always")
+def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, eta: float,
+                h: float) -> tuple[float, float]:
+    """(tau [Pa], d tau / d s [Pa s/m]) of law ``law_id`` at the slide speed s >= 0 [m/s],
+    pressure p [Pa], viscosity eta(T, p) [Pa s] and film thickness h [m] (eta and h are used
+    by the film law only). The formulas are documented on the law classes below."""
+    if law_id == LINEAR_SATURATING:
+        # paper 004 Fig. 3: mu = mu_m min(s / dv_m, 1), tau = mu p
+        mu_m, dv_m = params[0], params[1]
+        if s < dv_m:
+            return mu_m * (s / dv_m) * p, (mu_m / dv_m) * p
+        return mu_m * p, 0.0 * p
+    if law_id == EYRING:
+        # params: (Lambda, tau0 (0: Newtonian), 1.0 smooth cap / 0.0 min cap, unused)
+        lam, tau0, smooth = params[0], params[1], params[2]
+        if p < 0.0:
+            p = 0.0
+        rate = eta / h                       # d(eta gamma)/d(dv) [Pa s/m]
+        tau_n = rate * s
+        if tau0 > 0.0:
+            x = tau_n / tau0
+            tau_e = tau0 * math.asinh(x)
+            dtau_e = rate / math.sqrt(1.0 + x * x)
+        else:
+            tau_e, dtau_e = tau_n, rate
+        tau_l = lam * p
+        if smooth == 0.0:
+            if tau_e >= tau_l:
+                return tau_l, 0.0
+            return tau_e, dtau_e
+        ratio = tau_e / tau_l if tau_l > 0.0 else math.inf
+        if ratio > 1e150:
+            ratio = 1e150
+        factor = 1.0 / math.sqrt(1.0 + ratio * ratio)
+        return tau_e * factor, dtau_e * (factor * factor * factor)
+    # FOUR_PARAMETER: mu = (A + B u) exp(-C u) + D, tau = mu p
+    a, b, c, d = params[0], params[1], params[2], params[3]
+    e = math.exp(-c * s)
+    return ((a + b * s) * e + d) * p, ((b - c * (a + b * s)) * e) * p
+
+
+@numba.njit(cache=True)
+def _stress_array(law_id: int, params: np.ndarray, s: np.ndarray, p: np.ndarray,
+                  eta: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_law_stress` over flat float64 arrays of one length (eta and h may have
+    length 1: the same value for every point)."""
+    n = s.size
+    tau = np.empty(n)
+    dtau = np.empty(n)
+    one_e = eta.size == 1
+    one_h = h.size == 1
+    for i in range(n):
+        tau[i], dtau[i] = _law_stress(law_id, params, s[i], p[i], eta[0 if one_e else i],
+                                      h[0 if one_h else i])
+    return tau, dtau
+
+
+def _call_kernel(law_id: int, params: np.ndarray, s: Any, p: Any, eta: Any = None,
+                 h: Any = None) -> ShearStress:
+    """Broadcast the inputs, run :func:`_stress_array`, give the broadcast shape back."""
+    arrays = [np.asarray(s, dtype=float), np.asarray(p, dtype=float)]
+    if eta is not None:
+        arrays += [np.asarray(eta, dtype=float), np.asarray(h, dtype=float)]
+    arrays = np.broadcast_arrays(*arrays)
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).ravel() for a in arrays]
+    one = np.ones(1)
+    e_, h_ = (flat[2], flat[3]) if eta is not None else (one, one)
+    tau, dtau = _stress_array(law_id, params, flat[0], flat[1], e_, h_)
+    return ShearStress(tau.reshape(shape), dtau.reshape(shape))
 
 
 # ---------------------------------------------------------------------------
@@ -117,13 +198,16 @@ class LinearSaturatingTraction:
         """Shear stress tau = mu(dv) p [Pa] and d tau / d dv [Pa s/m]."""
         return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
 
+    @functools.cached_property
+    def kernel(self) -> tuple[int, np.ndarray]:
+        """(law id, params) for the compiled kernels: (mu_max, slip_speed_max, 0, 0)."""
+        return LINEAR_SATURATING, np.array([self.mu_max, self.slip_speed_max, 0.0, 0.0])
+
     def _stress(self, s: np.ndarray, p: np.ndarray, film_thickness: Any = None,
                 temperature: Any = None, derivative: bool = True) -> ShearStress:
-        """Unchecked core of :meth:`shear_stress` (float arrays, s >= 0 finite)."""
-        below = s < self.slip_speed_max
-        mu = self.mu_max * np.where(below, s / self.slip_speed_max, 1.0)
-        dmu = np.where(below, self.mu_max / self.slip_speed_max, 0.0)
-        return ShearStress(mu * p, dmu * p)
+        """Unchecked core of :meth:`shear_stress` (float arrays, s >= 0 finite): the
+        compiled :func:`_law_stress`."""
+        return _call_kernel(*self.kernel, s, p)
 
 
 # ---------------------------------------------------------------------------
@@ -197,33 +281,25 @@ class EyringLimitingShearTraction:
         return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float), h,
                             temperature)
 
+    @functools.cached_property
+    def kernel(self) -> tuple[int, np.ndarray]:
+        """(law id, params) for the compiled kernels: (Lambda, tau0 or 0 for Newtonian,
+        1 for the smooth cap or 0 for the min cap, 0)."""
+        tau0 = 0.0 if self.eyring_stress is None else float(self.eyring_stress)
+        return EYRING, np.array([self.limiting_shear_coefficient, tau0,
+                                 1.0 if self.cap == "smooth" else 0.0, 0.0])
+
     def _stress(self, s: np.ndarray, p: np.ndarray, h: np.ndarray,
                 temperature: Any, derivative: bool = True) -> ShearStress:
         """Unchecked core of :meth:`shear_stress` (float arrays; s >= 0 finite, h > 0).
 
-        ``derivative=False`` skips d tau / d dv (returned as None) for callers that only
-        need the stress (the contact integration without its Jacobian)."""
-        p = np.maximum(p, 0.0)
-        eta = np.asarray(self.lubricant.dynamic_viscosity(temperature, p), dtype=float)
-        rate_coeff = eta / h  # d(eta*gamma)/d(dv) [Pa s/m]
-        tau_n = rate_coeff * s
-        dtau_e = None
-        if self.eyring_stress is None:
-            tau_e, dtau_e = tau_n, rate_coeff
-        else:
-            x = tau_n / self.eyring_stress
-            tau_e = self.eyring_stress * np.arcsinh(x)
-            if derivative:
-                dtau_e = rate_coeff / np.sqrt(1.0 + x * x)
-        tau_l = self.limiting_shear_coefficient * p
-        if self.cap == "min":
-            capped = tau_e >= tau_l
-            return ShearStress(np.where(capped, tau_l, tau_e),
-                               np.where(capped, 0.0, dtau_e) if derivative else None)
-        ratio = np.divide(tau_e, tau_l, out=np.full_like(tau_e, np.inf), where=tau_l > 0)
-        ratio = np.minimum(ratio, 1e150)
-        factor = 1.0 / np.sqrt(1.0 + ratio * ratio)
-        return ShearStress(tau_e * factor, dtau_e * factor ** 3 if derivative else None)
+        The viscosity eta(T, max(p, 0)) comes from the lubricant, the stress from the
+        compiled :func:`_law_stress`. ``derivative`` is accepted for the callers'
+        convenience; the derivative is always returned (it costs nothing in the kernel)."""
+        p = np.asarray(p, dtype=float)
+        eta = np.asarray(self.lubricant.dynamic_viscosity(temperature, np.maximum(p, 0.0)),
+                         dtype=float)
+        return _call_kernel(*self.kernel, s, p, eta, h)
 
     def coefficient(self, slide_speed: Any, pressure: Any, film_thickness: Any,
                     temperature: Any) -> np.ndarray:
@@ -334,14 +410,16 @@ class FourParameterTraction:
         """Shear stress mu(u) p [Pa] and its derivative [Pa s/m]."""
         return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
 
+    @functools.cached_property
+    def kernel(self) -> tuple[int, np.ndarray]:
+        """(law id, params) for the compiled kernels: (A, B, C, D)."""
+        return FOUR_PARAMETER, np.array(self._coefficients, dtype=float)
+
     def _stress(self, u: np.ndarray, p: np.ndarray, film_thickness: Any = None,
                 temperature: Any = None, derivative: bool = True) -> ShearStress:
-        """Unchecked core of :meth:`shear_stress` (float arrays, u >= 0 finite)."""
-        a, b, c, d = self._coefficients
-        e = np.exp(-c * u)
-        mu = (a + b * u) * e + d
-        dmu = (b - c * (a + b * u)) * e
-        return ShearStress(mu * p, dmu * p)
+        """Unchecked core of :meth:`shear_stress` (float arrays, u >= 0 finite): the
+        compiled :func:`_law_stress`."""
+        return _call_kernel(*self.kernel, u, p)
 
 
 def make_traction_law(name: str, **parameters: Any) -> TractionLaw:

@@ -29,10 +29,12 @@ from typing import Any
 
 import numpy as np
 
+from ..contact_traction import _table_viscosity_array
 from ..errors import InputError
 from .ball import BallModels
+from .ball_residual import guarded_film_array
 
-__all__ = ["BallParameters", "default_ball_models", "heat_context_options"]
+__all__ = ["BallParameters", "GuardedFilm", "default_ball_models", "heat_context_options"]
 
 
 @dataclass(frozen=True)
@@ -118,19 +120,69 @@ class IsothermalViscosity:
         self._inv_dp = (n - 1) / p_max
         self.p_max = p_max
 
+    def viscosity_table(self, T, p_max: float):
+        """(ln eta grid, slope per step, 1/step) for the compiled contact integration
+        (:func:`thermobearing.contact_traction.viscosity_source`) when ``T`` is this
+        table's temperature and the pressures stay within the grid, else None."""
+        if float(T) == self.temperature and 0.0 <= p_max <= self.p_max:
+            return self._ln, self._slope, self._inv_dp
+        return None
+
     def dynamic_viscosity(self, T, p=0.0):
         T = np.asarray(T, float)
         p = np.asarray(p, float)
         if np.all(T == self.temperature) and np.all(p <= self.p_max) and np.all(p >= 0.0):
-            # linear interpolation on the uniform grid (what np.interp does, without its
-            # bisection search)
-            u = p * self._inv_dp
-            i = np.minimum(u.astype(np.intp), self._ln.size - 1)
-            return np.exp(self._ln[i] + (u - i) * self._slope[i])
+            # linear interpolation on the uniform grid: the compiled interpolation the
+            # contact integration uses (contact_traction._table_viscosity)
+            shape = np.broadcast_shapes(T.shape, p.shape)
+            flat = np.ascontiguousarray(np.broadcast_to(p, shape)).ravel()
+            return _table_viscosity_array(flat, self._ln, self._slope,
+                                          self._inv_dp).reshape(shape)
         return self.lubricant.dynamic_viscosity(T, p)
 
     def __getattr__(self, name):
         return getattr(self.lubricant, name)
+
+
+@dataclass(frozen=True)
+class GuardedFilm:
+    """Central film thickness of the ball contacts [m]: Hamrock & Dowson 1977 (film.py,
+    :func:`thermobearing.film.hamrock_dowson_1977_central`, unchecked compiled core) at the
+    entrainment speed max(|u|, u_min) and load max(Q, Q_min), floored at h_min (a film
+    must stay positive where the traction law divides by it).
+
+    Called as ``film(u [m/s], Q [N], rx [m], ry [m])``; ``kernel_params`` lets the ball
+    residual evaluate it inside its compiled kernel
+    (:func:`thermobearing.skidding.ball_residual.guarded_film`, the same code).
+    """
+
+    dynamic_viscosity: float          #: eta0 at the contact inlet temperature [Pa s]
+    pressure_viscosity_coefficient: float   #: alpha [1/Pa]
+    effective_modulus: float          #: E' [Pa]
+    speed_floor: float = 1e-3         #: u_min [m/s]
+    load_floor: float = 1e-3          #: Q_min [N]
+    thickness_floor: float = 1e-9     #: h_min [m] (> 0)
+
+    def __post_init__(self) -> None:
+        from ..errors import check_positive
+
+        check_positive("film.dynamic_viscosity", self.dynamic_viscosity)
+        check_positive("film.pressure_viscosity_coefficient",
+                       self.pressure_viscosity_coefficient, allow_zero=True)
+        check_positive("film.effective_modulus", self.effective_modulus)
+        for name in ("speed_floor", "load_floor", "thickness_floor"):
+            check_positive(f"film.{name}", getattr(self, name))
+
+    @property
+    def kernel_params(self) -> np.ndarray:
+        return np.array([self.dynamic_viscosity, self.pressure_viscosity_coefficient,
+                         self.effective_modulus, self.speed_floor, self.load_floor,
+                         self.thickness_floor])
+
+    def __call__(self, u, Q, rx, ry):
+        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (u, Q, rx, ry)))
+        flat = [np.ascontiguousarray(a).ravel() for a in arrays]
+        return guarded_film_array(*flat, self.kernel_params).reshape(arrays[0].shape)
 
 
 def make_traction(lubricant, params: BallParameters, temperature: float | None = None):
@@ -159,7 +211,6 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     oil_temperature : oil temperature for churning [K] (default ``temperature``).
     """
     from ..errors import check_positive
-    from ..film import _hd1977_central_unchecked
     from ..heat_sources import churning as ch
 
     p = params or BallParameters()
@@ -178,12 +229,9 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     check_positive("lubricant pressure_viscosity_coefficient", alpha_c, allow_zero=True)
     check_positive("bearing effective_modulus", E)
 
-    def film(u, Q, rx, ry):
-        # film.hamrock_dowson_1977_central without its per-call checks and range warnings
-        # (inputs validated above and by the solver; the range is not checked in the loop)
-        h = _hd1977_central_unchecked(np.maximum(u, 1e-3), eta_c, alpha_c,
-                                      np.maximum(Q, 1e-3), rx, ry, E)
-        return np.maximum(h, 1e-9)
+    # film.hamrock_dowson_1977_central without its per-call checks and range warnings
+    # (inputs validated above and by the solver; the range is not checked in the loop)
+    film = GuardedFilm(eta_c, alpha_c, E)
 
     D = bearing.ball_diameter
     area = 0.25 * math.pi * D * D

@@ -23,22 +23,33 @@ cage-guide and cage-churning torque, paper 002 eqs. 5 and 8).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+import numba
 import numpy as np
 
-from ..contact_traction import _integrate_core
+from ..contact_traction import (
+    _EMPTY,
+    _EMPTY2,
+    ContactTraction,
+    _integrate_contacts,
+    _node_pressures,
+    _rule,
+    viscosity_source,
+)
 from ..errors import InputError, check_positive
-from ..hertz import _ellipse
+from ..film import _hd1977_central_nb
+from ..hertz import _ellipse_nb, _hamrock_brewe_point_nb
 from ..loads import (
     INNER,
     ArcSet,
     ContactField,
-    _arc_hertz,
     ball_arcs,
 )
+from ..traction import EYRING
 
 if TYPE_CHECKING:
     from .ball_newton import JacobianBlocks
@@ -93,6 +104,214 @@ class BallModels:
     oil_speed_ratio: float = 0.0
     drag_radius: float | None = None
     parameters: dict = field(default_factory=dict)
+
+
+# ---------------------------------------------------------------------------------------------
+# compiled kernels (numba, cache=True): the ONE implementation of the residual. Per-contact
+# fields of stage 1 live in rows of a (N_GEO, B*Z*k) array (contiguous rows for the contact
+# integration); the film between the stages is compiled (film model with ``kernel_params``)
+# or any Python callable.
+# ---------------------------------------------------------------------------------------------
+(G_APPROACH, G_Q, G_NA, G_NR, G_L, G_ALPHA, G_K, G_RX, G_A, G_B, G_P0, G_PA, G_PR, G_VX, G_VY,
+ G_OMX, G_OMY, G_OMZ, G_UE, G_CURV) = range(20)
+N_GEO = 20
+# per-ball outputs: pocket sign s, pocket sliding components (wa, wr) and magnitude, pocket
+# friction (fpa, fpr), centrifugal force
+P_S, P_WA, P_WR, P_WN, P_FPA, P_FPR, P_FC = range(7)
+N_POCKET = 7
+# float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p
+(C_D, C_DM, C_EP, C_M, C_J, C_FS, C_MS, C_TS, C_VEPS, C_MUP) = range(10)
+# arc table rows: centre x, centre r, free distance, inner (1/0), sign (+1 inner / -1 outer),
+# R_y, deformed-surface curvature 1/R_d, race speed
+(A_CX, A_CR, A_FREE, A_INNER, A_SIGN, A_RY, A_CURV, A_WRACE) = range(8)
+
+
+@numba.njit(cache=True)
+def guarded_film(u: float, q: float, rx: float, ry: float, fp: np.ndarray) -> float:
+    """Central film [m] of the solver's film model: Hamrock-Dowson 1977
+    (:func:`thermobearing.film._hd1977_central_nb`) at max(|u|, u_min), max(Q, Q_min),
+    floored at h_min; fp = (eta0 [Pa s], alpha [1/Pa], E' [Pa], u_min [m/s], Q_min [N],
+    h_min [m])."""
+    h = _hd1977_central_nb(max(abs(u), fp[3]), fp[0], fp[1], max(q, fp[4]), rx, ry, fp[2])
+    return max(h, fp[5])
+
+
+@numba.njit(cache=True)
+def guarded_film_array(u: np.ndarray, q: np.ndarray, rx: np.ndarray, ry: np.ndarray,
+                       fp: np.ndarray) -> np.ndarray:
+    """:func:`guarded_film` over flat arrays (ry may have length 1)."""
+    out = np.empty(u.size)
+    one = ry.size == 1
+    for i in range(u.size):
+        out[i] = guarded_film(u[i], q[i], rx[i], ry[0 if one else i], fp)
+    return out
+
+
+@numba.njit(cache=True)
+def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                   c: np.ndarray, geo: np.ndarray) -> None:
+    """Stage 1: raceway-arc contacts (``loads.arc_contacts`` geometry, Hamrock-Brewe Hertz
+    constants ``loads._arc_hertz``, the Hertz ellipse) and the slip kinematics of every
+    (state, ball, arc) contact, written into ``geo`` (N_GEO, B*Z*k); see the module
+    docstring of :mod:`thermobearing.contact_traction` for the contact frame."""
+    nb, nz = X.shape[0], X.shape[1]
+    nk = arc.shape[1]
+    D, dm, ep = c[C_D], c[C_DM], c[C_EP]
+    for i in range(nb):
+        da, dr_, wc = G[i, 0], G[i, 1], G[i, 2]
+        for j in range(nz):
+            bx, br = X[i, j, 0], X[i, j, 1]
+            Oa, Or, Ot = X[i, j, 2], X[i, j, 3], X[i, j, 4]
+            for k in range(nk):
+                n = (i * nz + j) * nk + k
+                inner = arc[A_INNER, k]
+                cx = arc[A_CX, k] + inner * da
+                cr = arc[A_CR, k] + inner * (dr_ * cpsi[j])
+                dx, dr = bx - cx, br - cr
+                L = math.hypot(dx, dr)
+                na, nr = dx / L, dr / L                      # arc centre -> ball centre
+                approach = L - arc[A_FREE, k]
+                alpha = math.atan2(na, abs(nr))
+                rx = 0.5 * D * (1.0 - arc[A_SIGN, k] * (D * math.cos(alpha) / dm))
+                r_red, k_el, big_e, K = _hamrock_brewe_point_nb(rx, arc[A_RY, k], ep)
+                pen = max(approach, 0.0)
+                Q = K * pen ** 1.5
+                a_e, b_e, p0 = _ellipse_nb(Q, r_red, k_el, big_e, ep)
+                half = 0.5 * D - 0.5 * pen                   # lever to the contact centre
+                pa, pr = half * na, half * nr                # contact point - ball centre
+                w_race = arc[A_WRACE, k]
+                Rr = br + pr
+                # Omega x p, p = (pa, pr, 0): (-Ot pr, Ot pa, Oa pr - Or pa)
+                spin_t = Oa * pr - Or * pa
+                vt_b = wc * Rr + spin_t
+                # element minus race; contact frame e_x = (nr, -na, 0), e_y = e_t, e_z = -n
+                wa_rel = wc + Oa - w_race
+                geo[G_APPROACH, n] = approach
+                geo[G_Q, n] = Q
+                geo[G_NA, n] = na
+                geo[G_NR, n] = nr
+                geo[G_L, n] = L
+                geo[G_ALPHA, n] = alpha
+                geo[G_K, n] = K
+                geo[G_RX, n] = rx
+                geo[G_A, n] = a_e
+                geo[G_B, n] = b_e
+                geo[G_P0, n] = p0
+                geo[G_PA, n] = pa
+                geo[G_PR, n] = pr
+                geo[G_VX, n] = (-Ot * pr) * nr - (Ot * pa) * na
+                geo[G_VY, n] = vt_b - w_race * Rr
+                geo[G_OMX, n] = wa_rel * nr - Or * na
+                geo[G_OMY, n] = Ot
+                geo[G_OMZ, n] = -(wa_rel * na + Or * nr)
+                geo[G_UE, n] = 0.5 * (spin_t + (w_race - wc) * Rr)
+                geo[G_CURV, n] = arc[A_CURV, k]
+
+
+@numba.njit(cache=True)
+def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                 c: np.ndarray, geo: np.ndarray, film: np.ndarray, law_id: int,
+                 law_params: np.ndarray, visc_mode: int, ln_tab: np.ndarray,
+                 slope_tab: np.ndarray, inv_dp: float, eta_nodes: np.ndarray,
+                 xg: np.ndarray, yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
+                 Fd: np.ndarray, tr: np.ndarray, pocket: np.ndarray, R: np.ndarray,
+                 Gc: np.ndarray) -> None:
+    """Stage 2: tractions of every contact (:func:`thermobearing.contact_traction.
+    _integrate_contacts`, the code path of ``contact_traction.integrate``) into ``tr``
+    (B*Z*k, 6), then the ball force/moment balances (scaled) into R (B, Z, 6), the per-ball
+    contributions to the globals into Gc (B, Z, 3) and the pocket quantities into ``pocket``
+    (B, Z, N_POCKET). Equations: module docstring."""
+    _integrate_contacts(law_id, law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
+                        geo[G_Q], geo[G_A], geo[G_B], geo[G_VY], geo[G_VX], geo[G_OMZ],
+                        geo[G_OMX], geo[G_OMY], geo[G_CURV], film, xg, yg, pshape, area_w,
+                        True, False, tr, np.empty((0, 5, 5)), np.empty((0, 5)))
+    nb, nz = X.shape[0], X.shape[1]
+    nk = arc.shape[1]
+    D, m, J = c[C_D], c[C_M], c[C_J]
+    F_s, M_s, T_s = c[C_FS], c[C_MS], c[C_TS]
+    for i in range(nb):
+        wc = G[i, 2]
+        for j in range(nz):
+            sfa = sfr = sft = sma = smr = smt = gfa = gfr = 0.0
+            for k in range(nk):
+                n = (i * nz + j) * nk + k
+                Q, na, nr = geo[G_Q, n], geo[G_NA, n], geo[G_NR, n]
+                pa, pr = geo[G_PA, n], geo[G_PR, n]
+                Fx, Fy, Mx, My, Mz = tr[n, 0], tr[n, 1], tr[n, 2], tr[n, 3], tr[n, 4]
+                # contact force on the ball in (a, r, t)
+                fa = -Q * na + Fx * nr
+                fr = -Q * nr - Fx * na
+                ft = Fy
+                sfa += fa
+                sfr += fr
+                sft += ft
+                # moment about the ball centre: p x F + M, p = (pa, pr, 0)
+                sma += pr * ft + Mx * nr - Mz * na
+                smr += -pa * ft - Mx * na - Mz * nr
+                smt += pa * fr - pr * fa + My
+                inner = arc[A_INNER, k]
+                gfa += fa * inner
+                gfr += fr * inner
+            # pocket: contact point p_c = (0, 0, -s D/2), friction f = mu Q_p w_hat with
+            # w = Omega x (D/2) e_t = (D/2)(Or, -Oa, 0) (ball surface velocity rel. cage)
+            br = X[i, j, 1]
+            Qp = X[i, j, 5]
+            sgn = 1.0 if Qp >= 0.0 else -1.0
+            wa_, wr_ = 0.5 * D * X[i, j, 3], -0.5 * D * X[i, j, 2]
+            wn = math.hypot(wa_, wr_)
+            wden = math.sqrt(wn * wn + c[C_VEPS] * c[C_VEPS])
+            fpa = c[C_MUP] * Qp * wa_ / wden
+            fpr = c[C_MUP] * Qp * wr_ / wden
+            pct = -sgn * 0.5 * D
+            Fc = m * wc * wc * br
+            R[i, j, 0] = (sfa + fpa) / F_s
+            R[i, j, 1] = (sfr + fpr + Fc) / F_s
+            R[i, j, 2] = (sft - Fd[i, j] + Qp) / F_s
+            # gyroscopic: required moment omega_c e_a x J Omega = J wc (0, -Ot, Or)
+            R[i, j, 3] = (sma - pct * fpr) / M_s
+            R[i, j, 4] = (smr + pct * fpa + J * wc * X[i, j, 4]) / M_s
+            R[i, j, 5] = (smt - J * wc * X[i, j, 3]) / M_s
+            # globals: ring force (reaction of the inner contacts), cage torque from ball j
+            # (force -(fpa, fpr, Qp) at (ba, br, pct))
+            Gc[i, j, 0] = -gfa / F_s
+            Gc[i, j, 1] = -gfr * cpsi[j] / F_s
+            Gc[i, j, 2] = (-br * Qp + pct * fpr) / T_s
+            pocket[i, j, P_S] = sgn
+            pocket[i, j, P_WA] = wa_
+            pocket[i, j, P_WR] = wr_
+            pocket[i, j, P_WN] = wn
+            pocket[i, j, P_FPA] = fpa
+            pocket[i, j, P_FPR] = fpr
+            pocket[i, j, P_FC] = Fc
+
+
+@numba.njit(cache=True)
+def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                         c: np.ndarray, film_params: np.ndarray, law_id: int,
+                         law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                         inv_dp: float, p_max: float, xg: np.ndarray, yg: np.ndarray,
+                         pshape: np.ndarray, area_w: np.ndarray, Fd: np.ndarray,
+                         geo: np.ndarray, film: np.ndarray, tr: np.ndarray,
+                         pocket: np.ndarray, R: np.ndarray, Gc: np.ndarray) -> bool:
+    """Stage 1, the compiled film (:func:`guarded_film`) and stage 2 in one call, with the
+    film law's viscosity from the table (``visc_mode`` 1) when ``ln_tab`` is not empty.
+    Returns False (nothing written to R) when a node pressure leaves the table's range
+    [0, p_max]: the caller then takes the staged path."""
+    _ball_geometry(X, G, cpsi, arc, c, geo)
+    n = geo.shape[1]
+    visc_mode = 0
+    if ln_tab.size > 0:
+        visc_mode = 1
+        for i in range(n):
+            if geo[G_P0, i] > p_max:
+                return False
+    for i in range(n):
+        film[i] = guarded_film(geo[G_UE, i], geo[G_Q, i], geo[G_RX, i],
+                               arc[A_RY, i % arc.shape[1]], film_params)
+    _ball_forces(X, G, cpsi, arc, c, geo, film, law_id, law_params, visc_mode, ln_tab,
+                 slope_tab, inv_dp, np.empty((0, 0)), xg, yg, pshape, area_w, Fd, tr, pocket,
+                 R, Gc)
+    return True
 
 
 # ---------------------------------------------------------------------------------------------
@@ -154,14 +373,43 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         if getattr(models.traction_law, "requires_film", False) and models.film_thickness is None:
             raise InputError("skidding.ball film_thickness", None,
                              "a film-thickness model: the traction law shears a fluid film")
+        law = models.traction_law
+        if not hasattr(law, "kernel"):
+            raise InputError("skidding.ball traction_law", type(law).__name__,
+                             "a registered traction law (traction.TRACTION)")
+        self._law_id, self._law_params = law.kernel
+        if self._law_id == EYRING and models.temperature is None:
+            raise InputError("skidding.ball temperature", None,
+                             "a contact temperature [K] for the film traction law")
+        # constants of the compiled kernels
+        self._c = np.array([self.D, self.dm, self.Ep, self.m, self.J, self.F_s, self.M_s,
+                            self.T_s, self.veps, float(models.pocket_friction)])
+        self._arc = np.ascontiguousarray(np.stack([
+            self.cx0, self.cr0, self.free, self.inner_f, np.where(self.inner, 1.0, -1.0),
+            np.broadcast_to(self.ry, self.cx0.shape), np.broadcast_to(self.curv,
+                                                                      self.cx0.shape),
+            self.w_race]).astype(float))
+        self._cpsi = np.ascontiguousarray(self.cpsi, dtype=float)
+        self._rule = _rule("point", models.n_major, models.n_minor)
+        fp = getattr(models.film_thickness, "kernel_params", None)
+        self._film_params = None if fp is None else np.asarray(fp, dtype=float)
+        self._tab = None
+        if self._law_id == EYRING:
+            mode, ln_tab, slope_tab, inv_dp = viscosity_source(law, models.temperature, 0.0)
+            if mode == 1:
+                p_max = (ln_tab.size - 1) / inv_dp / float(np.max(self._rule[2]))
+                self._tab = (ln_tab, slope_tab, inv_dp, p_max)
+        # one fused compiled call when the film is compiled and the viscosity (if any) tabulated
+        self._fused = self._film_params is not None and (self._law_id != EYRING
+                                                         or self._tab is not None)
 
     # -- kinematics and forces ------------------------------------------------------------
     def evaluate(self, X: np.ndarray, G: np.ndarray, details: bool = False):
         """Scaled residuals; see the class docstring.
 
         X may carry leading batch dimensions, (..., Z, 6) with G (..., 3): every state of
-        the batch is evaluated in the same numpy pass (the structured Jacobian evaluates its
-        nine perturbed states at once). ``details`` needs a single state.
+        the batch is evaluated in the same compiled call (the structured Jacobian evaluates
+        its nine perturbed states at once). ``details`` needs a single state.
         """
         X = np.asarray(X, dtype=float)
         G = np.asarray(G, dtype=float)
@@ -171,133 +419,117 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                 and np.array_equal(G, last[1])):
             # the converged state was the last one evaluated: its details from that pass
             return (*last[2], last[3]())
-        self.n_eval += int(np.prod(batch)) if batch else 1
-        if not (np.all(np.isfinite(X)) and np.all(np.isfinite(G))):
+        if details and batch:
+            raise InputError("skidding.ball evaluate(details=True)", X.shape,
+                             "a single state (Z, 6)")
+        n_states = int(np.prod(batch)) if batch else 1
+        self.n_eval += n_states
+        if not (np.isfinite(X).all() and np.isfinite(G).all()):
             raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
         md = self.models
-        D = self.D
-        e2 = (...,) + (None, None)
-        wc = G[..., 2][e2]                                    # (..., 1, 1)
-        br = X[..., 1:2]                                      # (..., Z, 1)
-        # raceway arcs (loads.arc_contacts, the same geometry; Hertz constants unchecked)
-        cx = self.cx0 + self.inner_f * G[..., 0][e2]
-        cr = self.cr0 + self.inner_f * (G[..., 1][e2] * self.cpsi[:, None])
-        dx, dr = X[..., 0:1] - cx, br - cr
-        L = np.hypot(dx, dr)
-        na, nr = dx / L, dr / L                               # (..., Z, k) arc centre -> ball
-        approach = L - self.free
-        alpha = np.arctan2(na, np.abs(nr))
-        rx, _, r_red, k_el, big_e, K = _arc_hertz(self.arcs, self.dm, alpha)
-        Q = K * np.maximum(approach, 0.0) ** 1.5
-        a_ell, b_ell, p0 = _ellipse(Q, r_red, k_el, big_e, self.Ep)
-        half = 0.5 * D - 0.5 * np.maximum(approach, 0.0)    # lever to the contact centre
-        pa, pr = half * na, half * nr                         # contact point - ball centre
-        Oa, Or, Ot = X[..., 2:3], X[..., 3:4], X[..., 4:5]
-        w_race = self.w_race
-        # absolute velocities (a, r, t components) at the contact point
-        Rr = br + pr
-        # Omega x p with p = (pa, pr, 0): (Or*0 - Ot*pr, Ot*pa - Oa*0, Oa*pr - Or*pa)
-        vx_b = -Ot * pr
-        vr_b = Ot * pa
-        spin_t = Oa * pr - Or * pa
-        vt_b = wc * Rr + spin_t
-        # element minus race; contact frame: e_x = (nr, -na, 0), e_y = e_t, e_z = -n
-        Vx = vx_b * nr - vr_b * na
-        Vy = vt_b - w_race * Rr
-        wa_rel = wc + Oa - w_race
-        Om_x = wa_rel * nr - Or * na
-        Om_y = np.broadcast_to(Ot, Q.shape)
-        Om_z = -(wa_rel * na + Or * nr)
-        ue = 0.5 * (spin_t + (w_race - wc) * Rr)
-        film = None
-        if md.film_thickness is not None:
-            film = md.film_thickness(np.abs(ue), Q, rx, np.broadcast_to(self.ry, Q.shape))
-            film = np.broadcast_to(np.asarray(film, dtype=float), Q.shape)
-            if not np.all(film[Q > 0] > 0):
-                raise InputError("skidding.ball film_thickness", "values <= 0 at loaded "
-                                 "contacts", "a film thickness > 0 [m]")
-        tr = _integrate_core(md.traction_law, Q, a_ell, b_ell, Vy, Vx, Om_z, Om_x, Om_y,
-                             self.curv, film, md.temperature, "point", md.n_major,
-                             md.n_minor, False)
-        Fx, Fy = tr.transverse_force, tr.rolling_force
-        Mx, My, Mz = tr.moment_transverse, tr.moment_rolling, tr.moment_normal
-        # contact force on the ball in (a, r, t)
-        Fa_k = -Q * na + Fx * nr
-        Fr_k = -Q * nr - Fx * na
-        Ft_k = Fy
-        # moment about the ball centre: p x F_tan + M (e_x, e_y, e_z)
-        # p x F with p = (pa, pr, 0), F = (Fa, Fr, Ft): (pr*Ft, -pa*Ft, pa*Fr - pr*Fa)
-        Ma_k = pr * Ft_k + Mx * nr - Mz * na
-        Mr_k = -pa * Ft_k - Mx * na - Mz * nr
-        Mt_k = pa * Fr_k - pr * Fa_k + My
-        # pocket: contact point p_c = (0, 0, -s D/2), friction f = mu Q_p w_hat with
-        # w = Omega x (D/2) e_t = (D/2)(Or, -Oa, 0) (ball surface velocity at +t, rel. cage)
-        Qp = X[..., 5]
-        s = np.where(Qp >= 0.0, 1.0, -1.0)
-        wa_, wr_ = 0.5 * D * X[..., 3], -0.5 * D * X[..., 2]
-        wn = np.hypot(wa_, wr_)
-        wden = np.sqrt(wn * wn + self.veps * self.veps)
-        mu_p = md.pocket_friction
-        fpa = mu_p * Qp * wa_ / wden
-        fpr = mu_p * Qp * wr_ / wden
-        pct = -s * 0.5 * D
-        # p_c x f_p with p_c = (0, 0, pct), f = (fpa, fpr, 0): (-pct*fpr, pct*fpa, 0)
-        Mpa, Mpr = -pct * fpr, pct * fpa
-        # drag and centrifugal
+        Z = self.Z
+        nk = self._arc.shape[1]
+        Xb = np.ascontiguousarray(X.reshape(n_states, Z, N_BALL))
+        Gb = np.ascontiguousarray(G.reshape(n_states, N_GLOBAL))
+        # drag on each ball (Python model callable), applied at the ball centre
         wc1 = G[..., 2:3]                                     # (..., 1)
         r_drag = X[..., 1] if md.drag_radius is None else md.drag_radius
         u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * r_drag
         Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball) * (
             r_drag / X[..., 1])
-        Fc = self.m * wc1 * wc1 * X[..., 1]
-        J = self.J
-        R = np.empty(batch + (self.Z, N_BALL))
-        R[..., 0] = (Fa_k.sum(-1) + fpa) / self.F_s
-        R[..., 1] = (Fr_k.sum(-1) + fpr + Fc) / self.F_s
-        R[..., 2] = (Ft_k.sum(-1) - Fd + Qp) / self.F_s
-        # gyroscopic: required moment omega_c e_a x J Omega = J wc (0, -Ot, Or)
-        R[..., 3] = (Ma_k.sum(-1) + Mpa) / self.M_s
-        R[..., 4] = (Mr_k.sum(-1) + Mpr + J * wc1 * X[..., 4]) / self.M_s
-        R[..., 5] = (Mt_k.sum(-1) - J * wc1 * X[..., 3]) / self.M_s
-        # global contributions: ring force (reaction of inner contacts), cage torque
-        Gc = np.empty(batch + (self.Z, N_GLOBAL))
-        Gc[..., 0] = -(Fa_k @ self.inner_f) / self.F_s
-        Gc[..., 1] = -(Fr_k @ self.inner_f) * self.cpsi / self.F_s
-        # torque on the cage about the axis from ball j: force -(fpa, fpr, Qp) at (ba, br, pct)
-        Gc[..., 2] = (-X[..., 1] * Qp + pct * fpr) / self.T_s
+        Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, batch + (Z,)).reshape(n_states, Z))
+        n = n_states * Z * nk
+        geo = np.empty((N_GEO, n))
+        film = np.empty(n)
+        tr = np.empty((n, 6))
+        pocket = np.empty((n_states, Z, N_POCKET))
+        R = np.empty((n_states, Z, N_BALL))
+        Gc = np.empty((n_states, Z, N_GLOBAL))
+        xg, yg, pshape, area_w = self._rule
+        done = False
+        if self._fused:
+            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
+                                                                             0.0, 0.0)
+            done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
+                                        self._film_params, self._law_id, self._law_params,
+                                        ln_tab, slope_tab, inv_dp, p_max, xg, yg, pshape,
+                                        area_w, Fd_b, geo, film, tr, pocket, R, Gc)
+        film_out = film
+        if not done:
+            film_out = self._staged(Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc)
         G0 = np.empty(batch + (N_GLOBAL,))
         G0[..., 0] = self.Fa / self.F_s
         G0[..., 1] = self.Fr / self.F_s
         wcs = G[..., 2]
         G0[..., 2] = np.reshape([-sum(self._cage_torques(float(w))[:2]) / self.T_s
                                  for w in np.ravel(wcs)], wcs.shape)
+        R = R.reshape(batch + (Z, N_BALL))
+        Gc = Gc.reshape(batch + (Z, N_GLOBAL))
         if batch:
-            if details:
-                raise InputError("skidding.ball evaluate(details=True)", X.shape,
-                                 "a single state (Z, 6)")
             return R, Gc, G0, None
 
         def make_details():
-            return self._details(X, G, approach, Q, na, nr, L, alpha, K, tr, s, wa_, wr_, fpa,
-                                 fpr, Fd, br, pr, Ft_k, Mx, Mz, a_ell, b_ell, p0, rx, film, Vx,
-                                 Vy, Om_x, Om_y, Om_z, ue, u_ball, wn, Fc)
+            return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),
+                                 pocket[0], Fd, u_ball,
+                                 None if film_out is None else film_out.reshape(Z, nk))
 
         self._last = (X.copy(), G.copy(), (R, Gc, G0), make_details)
         return R, Gc, G0, (make_details() if details else None)
 
-    def _details(self, X, G, approach, Q, na, nr, L, alpha, K, tr, s, wa_, wr_, fpa, fpr, Fd,
-                 br, pr, Ft_k, Mx, Mz, a_ell, b_ell, p0, rx, film, Vx, Vy, Om_x, Om_y, Om_z, ue,
-                 u_ball, wn, Fc):
+    def _staged(self, Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc):
+        """The residual in stages: compiled geometry, the film model and the film law's
+        viscosity in Python (any callables), compiled forces. Returns the film (or None)."""
+        md = self.models
+        _ball_geometry(Xb, Gb, self._cpsi, self._arc, self._c, geo)
+        n = geo.shape[1]
+        xg, yg, pshape, area_w = self._rule
+        out_film = None
+        if self._film_params is not None:
+            ry = np.ascontiguousarray(np.tile(self._arc[A_RY], n // self._arc.shape[1]))
+            film[:] = guarded_film_array(geo[G_UE], geo[G_Q], geo[G_RX], ry, self._film_params)
+            out_film = film
+        elif md.film_thickness is not None:
+            Q = geo[G_Q]
+            ry = np.tile(self._arc[A_RY], n // self._arc.shape[1])
+            h = md.film_thickness(np.abs(geo[G_UE]), Q, geo[G_RX], ry)
+            film[:] = np.broadcast_to(np.asarray(h, dtype=float), Q.shape)
+            if not np.all(film[Q > 0] > 0):
+                raise InputError("skidding.ball film_thickness", "values <= 0 at loaded "
+                                 "contacts", "a film thickness > 0 [m]")
+            out_film = film
+        else:
+            film[:] = 1.0        # unused by laws without a film
+        visc_mode, ln_tab, slope_tab, inv_dp = 0, _EMPTY, _EMPTY, 0.0
+        eta_nodes = _EMPTY2
+        if self._law_id == EYRING:
+            pn = _node_pressures(geo[G_Q], geo[G_A], geo[G_B], pshape, True)
+            visc_mode, ln_tab, slope_tab, inv_dp = viscosity_source(
+                md.traction_law, md.temperature, float(pn.max()) if pn.size else 0.0)
+            if visc_mode == 2:
+                eta_nodes = np.ascontiguousarray(np.broadcast_to(np.asarray(
+                    md.traction_law.lubricant.dynamic_viscosity(md.temperature, pn),
+                    dtype=float), pn.shape))
+        _ball_forces(Xb, Gb, self._cpsi, self._arc, self._c, geo, film, self._law_id,
+                     self._law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes, xg, yg,
+                     pshape, area_w, Fd_b, tr, pocket, R, Gc)
+        return out_film
+
+    def _details(self, X, G, geo, tr, pocket, Fd, u_ball, film):
         """Heat, shaft torque and the contact fields of one evaluated state (energy audit)."""
         md = self.models
         wi = self.speed
         t_churn, t_guide, wg = self._cage_torques(float(G[2]))
         wc = float(G[2])
         inn = self.inner[None, :]
-        cf = ContactField(approach, Q, na, nr, L, alpha, K)
+        approach, Q, na, nr = geo[G_APPROACH], geo[G_Q], geo[G_NA], geo[G_NR]
+        cf = ContactField(approach, Q, na, nr, geo[G_L], geo[G_ALPHA], geo[G_K])
         ry = np.broadcast_to(self.ry, Q.shape)
+        ctr = ContactTraction(tr[..., 0], tr[..., 1], tr[..., 2], tr[..., 3], tr[..., 4],
+                              tr[..., 5])
+        s = pocket[:, P_S]
+        wa_, wr_ = pocket[:, P_WA], pocket[:, P_WR]
+        fpa, fpr = pocket[:, P_FPA], pocket[:, P_FPR]
         # heat and shaft torque (energy audit)
-        contact_heat = tr.heat
         pocket_heat = -(fpa * (-s * wa_) + fpr * (-s * wr_))  # -f . v_rel, v_rel = -s w
         drag_heat = Fd * wc * X[:, 1]   # power given to the oil (all dissipated)
         cage_heat = t_churn * wc
@@ -306,14 +538,16 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         if md.guide_on_inner_ring:
             inner_torque += t_guide       # the land's reaction on the inner ring
         # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
-        Rp_r = br + pr
+        Ft_k, Mx, Mz = ctr.rolling_force, ctr.moment_transverse, ctr.moment_normal
+        Rp_r = X[:, 1:2] + geo[G_PR]
         shaft = np.sum(np.where(inn, Rp_r * Ft_k + (Mx * nr - Mz * na), 0.0)) + inner_torque
-        det = dict(cf=cf, wc=wc, a=a_ell, b=b_ell, p0=p0, rx=rx, ry=ry, film=film, Vx=Vx, Vy=Vy,
-                   Om_x=Om_x, Om_y=Om_y, Om_z=Om_z, ue=ue, tr=tr, Fd=Fd, u_ball=u_ball,
-                   pocket_heat=pocket_heat, contact_heat=contact_heat, drag_heat=drag_heat,
+        det = dict(cf=cf, wc=wc, a=geo[G_A], b=geo[G_B], p0=geo[G_P0], rx=geo[G_RX], ry=ry,
+                   film=film, Vx=geo[G_VX], Vy=geo[G_VY], Om_x=geo[G_OMX], Om_y=geo[G_OMY],
+                   Om_z=geo[G_OMZ], ue=geo[G_UE], tr=ctr, Fd=Fd, u_ball=u_ball,
+                   pocket_heat=pocket_heat, contact_heat=ctr.heat, drag_heat=drag_heat,
                    cage_heat=cage_heat, guide_heat=guide_heat,
                    inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
-                   pocket_sliding=wn, Fc=Fc)
+                   pocket_sliding=pocket[:, P_WN], Fc=pocket[:, P_FC])
         return det
 
     def _cage_torques(self, wc: float):
