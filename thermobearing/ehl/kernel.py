@@ -18,6 +18,8 @@ Liu, Wang & Liu 2000), which is exact for the linear (non-periodic) convolution.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from scipy.linalg import toeplitz
 
@@ -79,3 +81,47 @@ class LogKernel:
     def banded(self, width: int) -> np.ndarray:
         """Coefficients ``K_0..K_width`` (the near field used by the preconditioner)."""
         return self.coeffs[: width + 1].copy()
+
+
+def smooth_kernel(k: np.ndarray, dx: float, width: float) -> np.ndarray:
+    """Smooth part ``Ks`` of the influence coefficients, for a near/far split ``K = Kn + Ks``.
+
+    ``Ks(k) = K(k)`` (the cell-integrated log kernel of :func:`influence_coefficients`,
+    continued to real ``k``) for ``|k| >= width``; inside, the even quartic
+    ``a0 + a2 k^2 + a4 k^4`` that matches ``K``, ``K'`` and ``K''`` at ``k = width`` (C2).
+    The near part ``Kn = K - Ks`` then vanishes for ``|k| >= width`` (a band), and ``Ks`` is
+    smooth on the scale ``width``, so it is represented to ``O((h/width)^2)`` by linear
+    interpolation from a coarse grid of spacing ``h`` -- the idea of multilevel
+    multi-integration (Brandt & Lubrecht 1990, J. Comput. Phys. 90:348-370; Venner &
+    Lubrecht 2000, ch. 8), used here only inside a preconditioner.
+
+    Parameters
+    ----------
+    k : distances in node spacings [-] (any real values).
+    dx : dimensionless node spacing [-].
+    width : split distance in node spacings [-] (> 1).
+
+    Returns
+    -------
+    Ks : array like ``k`` [-] (the same units as the influence coefficients).
+    """
+    k = np.abs(np.asarray(k, dtype=float))
+    w = float(width)
+
+    def kfun(kk):
+        xp = (kk + 0.5) * dx
+        xm = (kk - 0.5) * dx
+        return -(xp * (np.log(xp) - 1.0) - xm * (np.log(xm) - 1.0)) / np.pi
+
+    # derivatives of K(k) in k: F(x) = x (ln x - 1), F' = ln x, F'' = 1/x, x = (k +- 1/2) dx
+    f0 = kfun(w)
+    f1 = -dx * (math.log((w + 0.5) * dx) - math.log((w - 0.5) * dx)) / math.pi
+    f2 = -dx * (1.0 / (w + 0.5) - 1.0 / (w - 0.5)) / math.pi
+    a4 = (f2 * w - f1) / (8.0 * w**3)
+    a2 = 0.5 * (f2 - 12.0 * a4 * w * w)
+    a0 = f0 - a2 * w * w - a4 * w**4
+    out = a0 + k * k * (a2 + a4 * k * k)
+    far = k >= w
+    if np.any(far):
+        out[far] = kfun(k[far])
+    return out

@@ -2,9 +2,9 @@
 
 The discrete problem and the Newton solvers are in :mod:`thermobearing.ehl.solver`; this module
 picks the domain and grids, runs nested iteration (a robust implicit time march to the steady
-state on a coarse grid, then Newton on successively doubled grids from the interpolated
-solution), estimates the discretisation error from the last two grids, and returns dimensional
-profiles, films, pressures and the traction split of paper 000 eq. 5.
+state on a coarse grid, then Newton on finer grids -- n/2 and n, below n/2 every other power
+of two -- from the interpolated solution), estimates the discretisation error from the last two
+grids, and returns dimensional profiles, films, pressures and the traction split of paper 000 eq. 5.
 
 Conventions (contract): E' = 2/((1-v1^2)/E1 + (1-v2^2)/E2); entrainment speed
 ``u_m = (u1 + u2)/2``; slide-to-roll ratio ``(u1 - u2)/u_m``. Dimensionless groups (Hamrock):
@@ -31,6 +31,10 @@ from .solver import LineProblem, NewtonReport, Rheology, newton_solve, time_marc
 #: Range of the Moes parameters over which the solver is tested (BM-6 and unit tests).
 M_RANGE = (0.002, 3000.0)
 L_RANGE = (0.0, 40.0)
+#: Newton iterations allowed from the Hertz/Moes initial guess before the coarse-grid time
+#: march takes over (BM-6, session 4: heavy loads converge directly in 6-12 iterations,
+#: M = 10 does not converge at all without the march).
+DIRECT_START_ITERATIONS = 15
 _POINTER = (
     "use a closed-form film model instead (thermobearing.film: moes_line_central, "
     "dowson_higginson_minimum, pan_hamrock_minimum)"
@@ -220,7 +224,10 @@ def solve_dimensionless(
     rheology : :class:`Rheology`; default Barus with ``alpha p_H = L sqrt(M/(2 pi))``,
         incompressible (the setting of Moes' fit).
     domain : (x_in, x_out) in Hertz half-widths; default :func:`default_domain`.
-    coarse_n : grid of the initial time march (default: n/4, at least 128).
+    coarse_n : grid of the initial time march (default 128; 512 for M >= 300, whose exit
+        spike a coarser march does not resolve). The nested grids are ``coarse_n``, then
+        ``n/2^(2k+1)``... down from ``n``: n/2 and n (the Richardson pair) and every other
+        power of two below n/2 (e.g. 128 -> 512 -> 1024).
     linear : ``"krylov"`` (fast) or ``"dense"`` (baseline) Newton linear solver.
     max_grid_error : raise if the Richardson error estimate of h_c exceeds this [-].
     f_e, f_r : thermal factors at the finest-grid nodes (see :mod:`.solver`), or None.
@@ -247,10 +254,18 @@ def solve_dimensionless(
                             compressible=False)
     lam = 3.0 * math.pi**2 / (8.0 * M**2)
     t0 = time.perf_counter()
-    levels = [n]
+    # nested grids: n, n/2 (the Richardson pair), then factors of 4 down to the march grid
+    # (128, or 512 for heavy loads): each level's Newton re-adjusts the exit spike in a few
+    # iterations whatever the jump, so skipping every other coarse level saves its solve
+    # (BM-6, N = 1024: 128 -> 512 -> 1024 is ~25 % faster than 128 -> 256 -> 512 -> 1024)
     cn = coarse_n or (512 if M >= 300 else 128)
-    while levels[-1] // 2 >= cn:
-        levels.append(levels[-1] // 2)
+    levels = [n]
+    if n // 2 >= cn:
+        levels.append(n // 2)
+        while levels[-1] // 4 >= cn:
+            levels.append(levels[-1] // 4)
+        if levels[-1] > cn:
+            levels.append(cn)
     levels = levels[::-1]
     xs_fine = np.linspace(x_in, x_out, n)
 
@@ -268,23 +283,31 @@ def solve_dimensionless(
         for k, nk in enumerate(levels):
             prob = LineProblem(nk, x_in, x_out, lam, rheology, factors(nk, f_e), factors(nk, f_r))
             lin_k = "dense" if nk <= 384 else linear
+            # coarse levels only feed the next grid (and the Richardson estimate, whose
+            # discretisation difference is >= 1e-4): 1e-6 saves their last Newton iteration
+            tol_k = 1e-8 if nk == n else 1e-6
             if k == 0:
                 if initial is not None:
                     Xi, Pi, H0i = initial
                     Pg = np.interp(prob.x, Xi, Pi)
                     try:
-                        P, H0, rep = newton_solve(prob, Pg, H0i, linear=lin_k, tol=1e-8)
+                        P, H0, rep = newton_solve(prob, Pg, H0i, linear=lin_k, tol=tol_k)
                     except ConvergenceError:
-                        P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2)
+                        P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2, tol=tol_k)
                 else:
                     P0, H00 = _initial_guess(prob, moes_dimensionless(M, L) * math.pi / (8 * M))
-                    P, H0, rep = time_march(prob, P0, H00, linear=lin_k, dt0=0.2, dt_final=1e3)
+                    try:  # steady Newton from the Hertz/Moes guess first (M >= ~100 converge)
+                        P, H0, rep = newton_solve(prob, P0, H00, linear=lin_k, tol=tol_k,
+                                                  max_iter=DIRECT_START_ITERATIONS)
+                    except ConvergenceError:
+                        P, H0, rep = time_march(prob, P0, H00, linear=lin_k, dt0=0.2,
+                                                dt_final=1e3, tol=tol_k)
             else:
                 Pg = np.interp(prob.x, X, P)
                 try:
-                    P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=1e-8)
+                    P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=tol_k)
                 except ConvergenceError:
-                    P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5)
+                    P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5, tol=tol_k)
             its += rep.iterations
             lin += rep.linear_iterations
             X = prob.x

@@ -31,9 +31,11 @@ Two linear solvers for the Newton step, same residual and Jacobian:
 ``"dense"`` -- the full Jacobian with the dense influence matrix, LU (LAPACK): the baseline,
     O(n^3) per step.
 ``"krylov"`` -- GMRES on the exact Jacobian applied matrix-free with the DC-FFT deformation
-    (O(n log n) per product), preconditioned by the banded Jacobian in which the influence matrix
-    is truncated to ``|i-j| <= band`` (banded LU, O(n band^2)); the bordered load-balance row
-    is eliminated by a Schur complement inside the preconditioner.
+    (O(n log n) per product), preconditioned by the two-level near/far split of
+    :mod:`thermobearing.ehl.precond` (banded near field within ``band`` nodes, the smooth far
+    field of the log kernel on a coarse grid, combined exactly by Sherman-Morrison-Woodbury);
+    the bordered load-balance row is eliminated by a Schur complement inside the
+    preconditioner.
 """
 
 from __future__ import annotations
@@ -47,6 +49,7 @@ from scipy.sparse.linalg import LinearOperator, gmres
 
 from ..errors import ConvergenceError
 from .kernel import LogKernel
+from .precond import TwoLevelPreconditioner
 
 #: Roelands reference pressure p0 [Pa] (paper 000 eq. 9 writes 5.1e-9 1/Pa = 1/p0).
 ROELANDS_P0 = 1.96e8
@@ -140,6 +143,8 @@ class LineProblem:
         self.f_e = np.ones(self.n) if f_e is None else np.asarray(f_e, float)
         self.f_r = np.ones(self.n) if f_r is None else np.asarray(f_r, float)
         self.x2 = 0.5 * self.x**2
+        #: per-grid data reused between Newton iterations (preconditioner geometry)
+        self.cache: dict = {}
         #: implicit (backward Euler) squeeze term: time step [b/u_m] and the old rho*H
         self.dt: float | None = None
         self.q_old: np.ndarray | None = None
@@ -240,18 +245,19 @@ class LineProblem:
         return out
 
     def dense_jacobian_r(self, st: dict) -> np.ndarray:
-        """Full ``dR/dP`` over interior nodes (dense; baseline)."""
+        """Full ``dR/dP`` over interior nodes (dense; baseline): ``S + B K`` with the rows of
+        ``B K`` formed as four row-scaled shifts of the (cached) influence matrix."""
         m = self.n - 2
-        Kd = self.kernel.dense()
+        Kd = self.cache.get("dense_kernel")
+        if Kd is None:
+            Kd = self.cache["dense_kernel"] = self.kernel.dense()[:, 1:-1]
         b_m2, b_m1, b_0, b_p1 = st["b"]
-        rows = np.arange(m)
-        Bk = np.zeros((m, self.n))
-        Bk[rows, rows + 1] = b_0
-        Bk[rows, rows] = b_m1
-        Bk[rows, rows + 2] = b_p1
-        Bk[rows[1:], rows[1:] - 1] = b_m2[1:]
-        J = Bk @ Kd[:, 1:-1]
+        J = b_0[:, None] * Kd[1:-1]
+        J += b_m1[:, None] * Kd[:-2]
+        J += b_p1[:, None] * Kd[2:]
+        J[1:] += b_m2[1:, None] * Kd[: m - 1]
         s_m2, s_m1, s_0, s_p1 = st["s"]
+        rows = np.arange(m)
         J[rows, rows] += s_0
         J[rows[1:], rows[1:] - 1] += s_m1[1:]
         J[rows[2:], rows[2:] - 2] += s_m2[2:]
@@ -259,12 +265,14 @@ class LineProblem:
         return J
 
     def banded_jacobian_r(
-        self, st: dict, band: int, row_scale: np.ndarray, diag_add: np.ndarray
+        self, st: dict, band: int, row_scale: np.ndarray, diag_add: np.ndarray,
+        coeffs: np.ndarray | None = None,
     ) -> tuple[np.ndarray, int, int]:
         """``diag(row_scale) dR/dP + diag(diag_add)`` with the influence matrix truncated to
-        ``|i-j| <= band``, in LAPACK band storage (``A[i, j]`` at ``ab[kl + ku + i - j, j]``)."""
+        ``|i-j| <= band``, in LAPACK band storage (``A[i, j]`` at ``ab[kl + ku + i - j, j]``).
+        ``coeffs`` replaces the influence coefficients (e.g. the near part of a split)."""
         m = self.n - 2
-        K = self.kernel.coeffs
+        K = self.kernel.coeffs if coeffs is None else coeffs
         kl, ku = band + 2, band + 1
         offs = np.arange(-kl, ku + 1)
         d = np.array([-2, -1, 0, 1])
@@ -321,16 +329,19 @@ def newton_solve(
     prob : the discrete problem.
     P : initial pressure at all n nodes [-] (end values are forced to 0).
     H0 : initial rigid-body film constant [-].
-    linear : ``"krylov"`` (GMRES + DC-FFT + banded preconditioner) or ``"dense"`` (LU).
+    linear : ``"krylov"`` (GMRES + DC-FFT + two-level preconditioner) or ``"dense"`` (LU).
     tol : convergence tolerance on ``max |F|`` (FB residuals and load balance) [-].
     max_iter : Newton iteration limit.
-    band : half-bandwidth of the influence matrix kept in the preconditioner
-        (default ``max(16, n // 8)``: the far field of the log kernel is smooth, but the
-        preconditioner degrades quickly when the band covers less than the pressure spike).
+    band : near-field half-width (nodes) of the two-level preconditioner
+        (:class:`thermobearing.ehl.precond.TwoLevelPreconditioner`; default 16, its far
+        field is carried on a coarse grid of spacing ``band/2``).
     gmres_rtol : relative tolerance of the inner GMRES solve (an inexact Newton forcing
         term, Dembo, Eisenstat & Steihaug 1982): 1e-2 left the Newton iteration counts of
         BM-6 unchanged (+-1) and cut its GMRES iterations by about a quarter against 1e-4.
-    reuse_gmres : the banded LU of the preconditioner is kept from one Newton iteration to
+        (An Eisenstat-Walker adaptive forcing term was tried in session 4: the same Newton
+        iteration counts, 305 against 306 over BM-6 at N = 1024 -- the last iterations are
+        slowed by the degenerate complementarity node at the film rupture, not by GMRES.)
+    reuse_gmres : the preconditioner (its factorisations) is kept from one Newton iteration to
         the next while the last GMRES solve took at most this many iterations (a lagged
         preconditioner: the Newton step is the same, only GMRES may take a few more
         iterations); 0 refactors at every iteration (BM-6 measured both).
@@ -343,7 +354,7 @@ def newton_solve(
     P[0] = P[-1] = 0.0
     n = prob.n
     if band is None:
-        band = max(16, n // 8)
+        band = 16
     m = n - 2
     dx = prob.dx
     half_pi = 0.5 * math.pi
@@ -366,7 +377,7 @@ def newton_solve(
         )
     res = math.inf
     history: list[float] = []
-    factor = None  # banded LU of the preconditioner, reused while GMRES converges fast
+    factor = None  # the preconditioner, reused while GMRES converges fast
     factorizations = 0
     last_gmres = 0
     for it in range(1, max_iter + 1):
@@ -387,28 +398,15 @@ def newton_solve(
             A[:m, m] = col_h0
             A[m, :m] = dx
             A[m, m] = 0.0
-            step = np.linalg.solve(A, -F)
+            _lu, _piv, step, info = lapack.dgesv(A, -F, overwrite_a=True)
+            if info != 0:
+                raise ConvergenceError("ehl.newton", res, "singular Newton matrix",
+                                       {"iteration": it, "n": n})
         else:
             if factor is None or last_gmres > reuse_gmres:
-                ab, kl, ku = prob.banded_jacobian_r(st, band, beta, da)
-                lu, piv, info = lapack.dgbtrf(ab, kl, ku)
-                if info != 0:
-                    raise ConvergenceError("ehl.newton", res, "singular banded preconditioner")
-                factor = (lu, piv, kl, ku)
+                factor = TwoLevelPreconditioner(prob, st, beta, da, col_h0, width=band)
                 factorizations += 1
-            lu, piv, kl, ku = factor
-
-            def psolve(v, lu=lu, piv=piv, kl=kl, ku=ku):
-                x, _ = lapack.dgbtrs(lu, kl, ku, v, piv)
-                return x
-
-            zc = psolve(col_h0)
-            fz = dx * np.sum(zc)
-
-            def prec(r, zc=zc, fz=fz, psolve=psolve):
-                z = psolve(r[:m])
-                d = (dx * np.sum(z) - r[m]) / fz
-                return np.concatenate((z - zc * d, [d]))
+            prec = factor
 
             b = st["b"]
 
@@ -471,6 +469,7 @@ def time_march(
     max_steps: int = 200,
     tol: float = 1e-8,
     band: int | None = None,
+    step_tol: float = 1e-5,
 ) -> tuple[np.ndarray, float, NewtonReport]:
     """Reach the steady solution from a poor guess by implicit time stepping of the transient
     Reynolds equation (squeeze term ``d(rho H)/dT``, ``T = t u_m / b``), load balanced at every
@@ -479,6 +478,11 @@ def time_march(
     This is the physical globalisation of Newton for EHL: each backward-Euler step is a small
     change that Newton solves in a few iterations, and the transient decays as the oil crosses
     the contact (a few ``b/u_m``).
+
+    The transient steps are solved to ``step_tol`` only (they are a path to the steady state,
+    not a result: at 1e-8 the Fischer-Burmeister Newton often spent its 12 iterations at a
+    residual of 1e-5 near the exit spike and the step was rejected); the final steady Newton
+    solve goes to ``tol``.
     """
     dt = dt0
     steps = its = lin = 0
@@ -490,7 +494,7 @@ def time_march(
             prob.q_old = prob.f_r * prob.rheology.density(P)[0] * prob.film(P, H0)
             try:
                 Pn, H0n, rep = newton_solve(
-                    prob, P, H0, linear=linear, max_iter=12, tol=tol, band=band
+                    prob, P, H0, linear=linear, max_iter=12, tol=max(tol, step_tol), band=band
                 )
             except ConvergenceError as err:
                 dt *= 0.3
