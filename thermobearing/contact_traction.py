@@ -132,6 +132,47 @@ def _rule(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
     return xg, yg, shape, area_w
 
 
+def refresh_stale_caches(tag: str, dispatchers: tuple, dependencies: tuple) -> bool:
+    """Flush the on-disk numba caches of ``dispatchers`` when the source of a module they
+    call into (``dependencies``) changed since the caches were written.
+
+    numba's cache checks only the file that defines a cached function, not the files of the
+    compiled functions it calls (numba documentation, "Notes on caching": "Cache
+    invalidation fails to recognize changes in functions defined in a different file"), so
+    an edit of e.g. traction.py would otherwise leave the ball residual's cached kernel
+    running the old law. A digest of the dependencies' sources is kept next to the cache
+    (``<tag>.deps``); on a mismatch the caches are emptied (recompiled on first call).
+    Returns True when it flushed. Called once at import by the modules with such kernels.
+    """
+    import hashlib
+    import os
+
+    digest = hashlib.sha256()
+    for mod in dependencies:
+        with open(mod.__file__, "rb") as fh:
+            digest.update(fh.read())
+    text = digest.hexdigest()
+    try:
+        stamp = os.path.join(dispatchers[0]._cache.cache_path, f"{tag}.deps")
+    except AttributeError:            # caching disabled
+        return False
+    try:
+        with open(stamp) as fh:
+            if fh.read() == text:
+                return False
+    except OSError:
+        pass
+    for disp in dispatchers:
+        disp._cache.flush()
+    try:
+        os.makedirs(os.path.dirname(stamp), exist_ok=True)
+        with open(stamp, "w") as fh:
+            fh.write(text)
+    except OSError:
+        pass
+    return True
+
+
 def integrate(
     law: TractionLaw,
     *,
@@ -264,7 +305,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
         a2c = 0.5 * curv[c] * ac * ac
         cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
         cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
-        hc = h[c]
+        inv_h = 1.0 / h[c]
         sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
         j00 = j01 = j02 = j03 = j04 = j11 = j12 = j13 = j14 = 0.0
         j22 = j23 = j24 = j33 = j34 = j44 = 0.0
@@ -278,12 +319,12 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
             pres = p0 * pshape[k]
             weight = ab * area_w[k]
             if visc_mode == 1:
-                eta = _table_viscosity(pres, ln_tab, slope_tab, inv_dp)
+                rate = _table_viscosity(pres, ln_tab, slope_tab, inv_dp) * inv_h
             elif visc_mode == 2:
-                eta = eta_nodes[c, k]
+                rate = eta_nodes[c, k] * inv_h
             else:
-                eta = 0.0
-            tau, dtau = _law_stress(law_id, law_params, speed, pres, eta, hc)
+                rate = 0.0
+            tau, dtau = _law_stress(law_id, law_params, speed, pres, rate, jacobian)
             tw = tau * weight                   # |traction| of the node [N]
             per_speed = tw / speed if speed > 0.0 else 0.0
             px, py = per_speed * dvx, per_speed * dvy   # -t_x, -t_y
@@ -488,3 +529,8 @@ def spin_moment_harris(mu: Any, normal_load: Any, semi_major: Any, semi_minor: A
     b = np.asarray(semi_minor, dtype=float)
     m = 1.0 - (b / a) ** 2
     return 3.0 * np.asarray(mu) * np.asarray(normal_load) * a * ellipe(m) / 8.0
+
+
+from . import traction as _traction  # noqa: E402  (the law kernels inlined above)
+
+refresh_stale_caches("contact_traction", (_integrate_contacts,), (_traction,))

@@ -83,11 +83,12 @@ LINEAR_SATURATING, EYRING, FOUR_PARAMETER = 0, 1, 2
 
 
 @numba.njit(cache=True, inline="always")
-def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, eta: float,
-                h: float) -> tuple[float, float]:
-    """(tau [Pa], d tau / d s [Pa s/m]) of law ``law_id`` at the slide speed s >= 0 [m/s],
-    pressure p [Pa], viscosity eta(T, p) [Pa s] and film thickness h [m] (eta and h are used
-    by the film law only). The formulas are documented on the law classes below."""
+def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, rate: float,
+                need_d: bool) -> tuple[float, float]:
+    """(tau [Pa], d tau / d s [Pa s/m]) of law ``law_id`` at the slide speed s >= 0 [m/s] and
+    pressure p [Pa]; ``rate`` = eta(T, p) / h [Pa s/m] (viscosity over film thickness, used by
+    the film law only). ``need_d`` False returns 0 for the derivative (skips its work). The
+    formulas are documented on the law classes below."""
     if law_id == LINEAR_SATURATING:
         # paper 004 Fig. 3: mu = mu_m min(s / dv_m, 1), tau = mu p
         mu_m, dv_m = params[0], params[1]
@@ -95,16 +96,17 @@ def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, eta: float,
             return mu_m * (s / dv_m) * p, (mu_m / dv_m) * p
         return mu_m * p, 0.0 * p
     if law_id == EYRING:
-        # params: (Lambda, tau0 (0: Newtonian), 1.0 smooth cap / 0.0 min cap, unused)
+        # params: (Lambda, tau0 (0: Newtonian), 1.0 smooth cap / 0.0 min cap, 1/tau0)
         lam, tau0, smooth = params[0], params[1], params[2]
         if p < 0.0:
             p = 0.0
-        rate = eta / h                       # d(eta gamma)/d(dv) [Pa s/m]
-        tau_n = rate * s
+        tau_n = rate * s                     # Newtonian stress eta dv / h
+        dtau_e = 0.0
         if tau0 > 0.0:
-            x = tau_n / tau0
+            x = tau_n * params[3]
             tau_e = tau0 * math.asinh(x)
-            dtau_e = rate / math.sqrt(1.0 + x * x)
+            if need_d:
+                dtau_e = rate / math.sqrt(1.0 + x * x)
         else:
             tau_e, dtau_e = tau_n, rate
         tau_l = lam * p
@@ -112,11 +114,17 @@ def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, eta: float,
             if tau_e >= tau_l:
                 return tau_l, 0.0
             return tau_e, dtau_e
-        ratio = tau_e / tau_l if tau_l > 0.0 else math.inf
-        if ratio > 1e150:
-            ratio = 1e150
-        factor = 1.0 / math.sqrt(1.0 + ratio * ratio)
-        return tau_e * factor, dtau_e * (factor * factor * factor)
+        if tau_l > 0.0:
+            # tau_E / sqrt(1 + (tau_E / tau_L)^2) = tau_E tau_L / sqrt(tau_L^2 + tau_E^2)
+            inv = 1.0 / math.sqrt(tau_l * tau_l + tau_e * tau_e)
+            factor = tau_l * inv
+            tau = tau_e * factor
+        else:
+            factor = 1e-150                  # tau_E / tau_L -> inf, capped at 1e150
+            tau = tau_e * factor
+        if need_d:
+            return tau, dtau_e * (factor * factor * factor)
+        return tau, 0.0
     # FOUR_PARAMETER: mu = (A + B u) exp(-C u) + D, tau = mu p
     a, b, c, d = params[0], params[1], params[2], params[3]
     e = math.exp(-c * s)
@@ -134,8 +142,8 @@ def _stress_array(law_id: int, params: np.ndarray, s: np.ndarray, p: np.ndarray,
     one_e = eta.size == 1
     one_h = h.size == 1
     for i in range(n):
-        tau[i], dtau[i] = _law_stress(law_id, params, s[i], p[i], eta[0 if one_e else i],
-                                      h[0 if one_h else i])
+        tau[i], dtau[i] = _law_stress(law_id, params, s[i], p[i],
+                                      eta[0 if one_e else i] / h[0 if one_h else i], True)
     return tau, dtau
 
 
@@ -284,10 +292,11 @@ class EyringLimitingShearTraction:
     @functools.cached_property
     def kernel(self) -> tuple[int, np.ndarray]:
         """(law id, params) for the compiled kernels: (Lambda, tau0 or 0 for Newtonian,
-        1 for the smooth cap or 0 for the min cap, 0)."""
+        1 for the smooth cap or 0 for the min cap, 1/tau0 or 0)."""
         tau0 = 0.0 if self.eyring_stress is None else float(self.eyring_stress)
         return EYRING, np.array([self.limiting_shear_coefficient, tau0,
-                                 1.0 if self.cap == "smooth" else 0.0, 0.0])
+                                 1.0 if self.cap == "smooth" else 0.0,
+                                 1.0 / tau0 if tau0 > 0 else 0.0])
 
     def _stress(self, s: np.ndarray, p: np.ndarray, h: np.ndarray,
                 temperature: Any, derivative: bool = True) -> ShearStress:

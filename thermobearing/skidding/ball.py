@@ -131,7 +131,13 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     check_positive("radial_load", radial_load, allow_zero=True)
     check_finite("axial_load", axial_load)
     t0 = time.perf_counter()
-    system = ball_residual_system(bearing, models, speed, radial_load, axial_load, n_balls)
+    prev = guess.extra.get("system") if guess is not None else None
+    if (prev is not None and prev.bearing is bearing and prev.models is models
+            and prev.speed == float(speed) and prev.Z == int(n_balls or bearing.n_balls)):
+        # same bearing, models, speed and Z: the previous system at the new loads
+        system = prev.reloaded(radial_load, axial_load)
+    else:
+        system = ball_residual_system(bearing, models, speed, radial_load, axial_load, n_balls)
     iters = 0
     if guess is not None and guess.ball_x.size == system.Z:
         X0 = guess.unknowns[0].copy()

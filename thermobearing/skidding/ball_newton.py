@@ -11,8 +11,10 @@ residual norm. Failure raises ConvergenceError with the residual norm and the st
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from ..errors import ConvergenceError, InputError
@@ -24,6 +26,63 @@ __all__ = ["JacobianBlocks", "newton_block"]
 # pocket force / F_s; ring displacement in microns, cage speed / omega_i)
 _CAP_X = np.array([20.0, 20.0, 0.2, 0.2, 0.2, 5.0])
 _CAP_G = np.array([20.0, 20.0, 0.1])
+
+
+@numba.njit(cache=True)
+def _block_step(Ainv: np.ndarray, Ainv_B: np.ndarray, C: np.ndarray, Sinv: np.ndarray,
+                R: np.ndarray, gres: np.ndarray, cap_x: np.ndarray,
+                cap_g: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+    """Newton step by block elimination (compiled): with the factors of :func:`newton_block`
+    (A^-1, A^-1 B, C, S^-1, S = D - C A^-1 B), ball residuals R (Z, 6) and global residuals
+    ``gres`` (3,):  dG = S^-1 (-g + sum_z C_z A_z^-1 R_z),  dX_z = -A_z^-1 (R_z + B_z dG).
+    Also returns max |step| / cap over all unknowns."""
+    nz, nb = R.shape
+    ng = gres.size
+    air = np.empty((nz, nb))
+    rhs = -gres.copy()
+    for z in range(nz):
+        for i in range(nb):
+            acc = 0.0
+            for j in range(nb):
+                acc += Ainv[z, i, j] * R[z, j]
+            air[z, i] = acc
+        for g in range(ng):
+            acc = 0.0
+            for i in range(nb):
+                acc += C[z, g, i] * air[z, i]
+            rhs[g] += acc
+    dG = np.empty(ng)
+    big = 0.0
+    for g in range(ng):
+        acc = 0.0
+        for h in range(ng):
+            acc += Sinv[g, h] * rhs[h]
+        dG[g] = acc
+        big = max(big, abs(acc) / cap_g[g])
+    dX = np.empty((nz, nb))
+    for z in range(nz):
+        for i in range(nb):
+            acc = air[z, i]
+            for g in range(ng):
+                acc += Ainv_B[z, i, g] * dG[g]
+            dX[z, i] = -acc
+            big = max(big, abs(dX[z, i]) / cap_x[i])
+    return dX, dG, big
+
+
+@numba.njit(cache=True)
+def _residual_norm(R: np.ndarray, Gc: np.ndarray, Gk: np.ndarray) -> float:
+    """sqrt(|R|^2 + |sum_z Gc_z + Gk|^2) of one state (compiled)."""
+    acc = 0.0
+    for z in range(R.shape[0]):
+        for i in range(R.shape[1]):
+            acc += R[z, i] * R[z, i]
+    for g in range(Gk.size):
+        t = Gk[g]
+        for z in range(Gc.shape[0]):
+            t += Gc[z, g]
+        acc += t * t
+    return math.sqrt(acc)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -61,11 +120,32 @@ class JacobianBlocks:
                               xs, gs, self.Z)
 
 
+def _broyden_step(steps: list, dX: np.ndarray, dG: np.ndarray, Z: int):
+    """Good-Broyden step from the chord step z = -J0^-1 F(x_n+1) and the previous steps
+    s_0..s_n (scaled unknowns), Kelley 1995 (Iterative Methods for Linear and Nonlinear
+    Equations, SIAM, algorithm ``brsol`` with full steps):
+    z <- z + s_(j+1) (s_j . z) / |s_j|^2 (j < n), then s_(n+1) = z / (1 - s_n . z / |s_n|^2).
+    Returns (dX, dG, max |step| / cap), or (None, None, 0) when the denominator is small."""
+    z = np.concatenate([dX.ravel(), dG])
+    for j in range(len(steps) - 1):
+        sj = steps[j]
+        z += steps[j + 1] * (float(sj @ z) / float(sj @ sj))
+    sn = steps[-1]
+    den = 1.0 - float(sn @ z) / float(sn @ sn)
+    if abs(den) < 0.1:
+        return None, None, 0.0
+    z /= den
+    dX = z[: Z * N_BALL].reshape(Z, N_BALL)
+    dG = z[Z * N_BALL:]
+    big = max(float(np.max(np.abs(dX) / _CAP_X)), float(np.max(np.abs(dG) / _CAP_G)))
+    return dX, dG, big
+
+
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
                  max_step: float = 1.0, reuse_ratio: float = 0.25,
                  polish_ratio: float = 1e-2, give_up: tuple[int, float] | None = None,
-                 jacobian: JacobianBlocks | None = None):
+                 jacobian: JacobianBlocks | None = None, broyden_warm: bool = True):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
     The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) needs
@@ -95,7 +175,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     eye_g[N_BALL + np.arange(N_GLOBAL), np.arange(N_GLOBAL)] = fd_step * gs
 
     def norm_of(R, Gc, Gk):
-        return float(np.sqrt(np.sum(R * R) + np.sum((Gc.sum(0) + Gk) ** 2)))
+        return _residual_norm(R, Gc, Gk)
 
     def jacobian_fd(X, G, R, Gc, Gk):
         Xb = np.empty((nb, Z, N_BALL))
@@ -118,19 +198,17 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         except np.linalg.LinAlgError:
             raise ConvergenceError("skidding.ball", norm_of(R, Gc, Gk), "singular ball block",
                                    {"cage_speed": G[2]}) from None
-        Ainv_B = Ainv @ blocks.B
+        Ainv_B = np.ascontiguousarray(Ainv @ blocks.B)
         S = blocks.Dg - np.einsum("zgi,zij->gj", blocks.C, Ainv_B)
-        return Ainv, Ainv_B, blocks.C, S
+        try:
+            Sinv = np.linalg.inv(S)
+        except np.linalg.LinAlgError:
+            Sinv = np.linalg.pinv(S)       # least-squares step of a singular Schur complement
+        return (np.ascontiguousarray(Ainv), Ainv_B, np.ascontiguousarray(blocks.C),
+                np.ascontiguousarray(Sinv))
 
     def step(jac, R, Gc, Gk):
-        Ainv, Ainv_B, C, S = jac
-        Ainv_R = np.einsum("zij,zj->zi", Ainv, R)
-        rhs = -(Gc.sum(0) + Gk) + np.einsum("zgi,zi->g", C, Ainv_R)
-        try:
-            dG = np.linalg.solve(S, rhs)
-        except np.linalg.LinAlgError:
-            dG = np.linalg.lstsq(S, rhs, rcond=None)[0]
-        return -Ainv_R - np.einsum("zij,j->zi", Ainv_B, dG), dG
+        return _block_step(*jac, R, Gc.sum(0) + Gk, _CAP_X, _CAP_G)
 
     R, Gc, Gk, _ = system.evaluate(X, G)
     nrm = norm_of(R, Gc, Gk)
@@ -144,6 +222,10 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
             except ConvergenceError:
                 jac = None
     last_ratio, polished, nrm0 = 1.0, False, nrm
+    # Broyden (good) updates of the warm start's chord Jacobian, in Kelley's stored-step
+    # form: only while the Jacobian handed over from the previous solve is in use
+    broyden = jac is not None and broyden_warm
+    steps: list[np.ndarray] = []
     while it < max_iter:
         if nrm <= tol:
             # a chord iteration converges linearly and stops just below tol,
@@ -160,8 +242,13 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         stale = jac is not None
         if jac is None:
             jac = jacobian_fd(X, G, R, Gc, Gk)
-        dX, dG = step(jac, R, Gc, Gk)
-        big = max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G))
+            broyden = False
+        dX, dG, big = step(jac, R, Gc, Gk)
+        if broyden and steps:
+            dX, dG, big = _broyden_step(steps, dX, dG, Z)
+            if dX is None:                # degenerate update: plain chord step, new history
+                steps.clear()
+                dX, dG, big = step(jac, R, Gc, Gk)
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
             # chord step: full step only (a step the cap would shorten refreshes
@@ -179,6 +266,8 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
                 if nn > reuse_ratio * nrm:
                     jac = None
+                elif broyden:
+                    steps.append(np.concatenate([dX.ravel(), dG]))
                 nrm, last_ratio = nn, nn / nrm
             else:
                 jac = None

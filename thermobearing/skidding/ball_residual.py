@@ -23,6 +23,7 @@ cage-guide and cage-churning torque, paper 002 eqs. 5 and 8).
 
 from __future__ import annotations
 
+import copy
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -38,6 +39,7 @@ from ..contact_traction import (
     _integrate_contacts,
     _node_pressures,
     _rule,
+    refresh_stale_caches,
     viscosity_source,
 )
 from ..errors import InputError, check_positive
@@ -314,6 +316,17 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
     return True
 
 
+
+def _refresh_caches() -> None:
+    from .. import contact_traction, film, hertz, traction
+
+    refresh_stale_caches("ball_residual", (guarded_film, guarded_film_array, _ball_geometry,
+                                           _ball_forces, _ball_residual_fused),
+                         (contact_traction, traction, hertz, film))
+
+
+_refresh_caches()
+
 # ---------------------------------------------------------------------------------------------
 # the residual system
 # ---------------------------------------------------------------------------------------------
@@ -362,7 +375,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.curv = 1.0 / self.rd                          # deformed-surface curvature [1/m]
         self.w_race = np.where(self.inner, self.speed, 0.0)
         self.veps = 1e-6 * max(abs(self.speed) * self.Rm, 1e-3)
-        self._torque_memo: dict[float, tuple[float, float, float]] = {}
+        self._torque_memo: dict[float, tuple] = {}
+        self._inner_torque_memo: float | None = None
         self.last_jacobian: JacobianBlocks | None = None
         self._last = None            # (X, G, (R, Gc, G0), details builder) of the last state
         check_positive("skidding.ball effective_modulus", self.Ep)
@@ -431,13 +445,20 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         nk = self._arc.shape[1]
         Xb = np.ascontiguousarray(X.reshape(n_states, Z, N_BALL))
         Gb = np.ascontiguousarray(G.reshape(n_states, N_GLOBAL))
-        # drag on each ball (Python model callable), applied at the ball centre
-        wc1 = G[..., 2:3]                                     # (..., 1)
-        r_drag = X[..., 1] if md.drag_radius is None else md.drag_radius
-        u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * r_drag
-        Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball) * (
-            r_drag / X[..., 1])
-        Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, batch + (Z,)).reshape(n_states, Z))
+        # drag on each ball (Python model callable) applied at the ball centre, and the cage
+        # torques: memoised per cage speed
+        per_wc = [self._cage_torques(float(w)) for w in Gb[:, 2]]
+        if md.drag_radius is None:
+            wc1 = G[..., 2:3]                                 # (..., 1)
+            u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * X[..., 1]
+            Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball)
+            Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, batch + (Z,)).reshape(n_states, Z))
+        else:
+            # drag force at the drag radius times r_drag (memoised), over the ball radius
+            fd_num = np.array([t[3] for t in per_wc])
+            Fd_b = fd_num[:, None] / Xb[:, :, 1]
+            u_ball = per_wc[0][4] if not batch else None
+            Fd = Fd_b[0] if not batch else None
         n = n_states * Z * nk
         geo = np.empty((N_GEO, n))
         film = np.empty(n)
@@ -457,12 +478,11 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         film_out = film
         if not done:
             film_out = self._staged(Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc)
-        G0 = np.empty(batch + (N_GLOBAL,))
-        G0[..., 0] = self.Fa / self.F_s
-        G0[..., 1] = self.Fr / self.F_s
-        wcs = G[..., 2]
-        G0[..., 2] = np.reshape([-sum(self._cage_torques(float(w))[:2]) / self.T_s
-                                 for w in np.ravel(wcs)], wcs.shape)
+        G0 = np.empty((n_states, N_GLOBAL))
+        G0[:, 0] = self.Fa / self.F_s
+        G0[:, 1] = self.Fr / self.F_s
+        G0[:, 2] = [-(t[0] + t[1]) / self.T_s for t in per_wc]
+        G0 = G0.reshape(batch + (N_GLOBAL,))
         R = R.reshape(batch + (Z, N_BALL))
         Gc = Gc.reshape(batch + (Z, N_GLOBAL))
         if batch:
@@ -518,7 +538,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         """Heat, shaft torque and the contact fields of one evaluated state (energy audit)."""
         md = self.models
         wi = self.speed
-        t_churn, t_guide, wg = self._cage_torques(float(G[2]))
+        t_churn, t_guide, wg = self._cage_torques(float(G[2]))[:3]
         wc = float(G[2])
         inn = self.inner[None, :]
         approach, Q, na, nr = geo[G_APPROACH], geo[G_Q], geo[G_NA], geo[G_NR]
@@ -534,7 +554,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         drag_heat = Fd * wc * X[:, 1]   # power given to the oil (all dissipated)
         cage_heat = t_churn * wc
         guide_heat = t_guide * (wc - wg)
-        inner_torque = float(md.inner_ring_torque(wi))
+        inner_torque = self._inner_torque()
         if md.guide_on_inner_ring:
             inner_torque += t_guide       # the land's reaction on the inner ring
         # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
@@ -551,8 +571,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         return det
 
     def _cage_torques(self, wc: float):
-        """(churning torque, guide torque, guide speed) at cage speed wc (memoised: the
-        Jacobian's ball columns and the line search revisit the same wc)."""
+        """(churning torque, guide torque, guide speed, ball drag force at the drag radius
+        times the drag radius, ball speed at the drag radius) at cage speed wc (memoised:
+        the Jacobian's ball columns and the line search revisit the same wc; the last two
+        are None without a fixed ``drag_radius``)."""
         hit = self._torque_memo.get(wc)
         if hit is not None:
             return hit
@@ -560,10 +582,43 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         t_churn = float(md.cage_torque(wc))
         wg = self.speed if md.guide_on_inner_ring else 0.0
         t_guide = 0.0 if md.cage_guide_torque is None else float(md.cage_guide_torque(wc, wg))
+        fd_num = u_ball = None
+        if md.drag_radius is not None:
+            u_ball = np.array([wc * (1.0 - md.oil_speed_ratio) * md.drag_radius])
+            fd_num = float(np.asarray(md.ball_drag(np.abs(u_ball)), float)[0]
+                           * np.sign(u_ball[0])) * md.drag_radius
         if len(self._torque_memo) > 64:
             self._torque_memo.clear()
-        self._torque_memo[wc] = (t_churn, t_guide, wg)
-        return t_churn, t_guide, wg
+        self._torque_memo[wc] = (t_churn, t_guide, wg, fd_num, u_ball)
+        return self._torque_memo[wc]
+
+    def _inner_torque(self) -> float:
+        """Churning torque on the inner ring at the ring speed [N m] (memoised)."""
+        if self._inner_torque_memo is None:
+            self._inner_torque_memo = float(self.models.inner_ring_torque(self.speed))
+        return self._inner_torque_memo
+
+    def reloaded(self, radial_load: float, axial_load: float) -> ball_residual_system:
+        """The same system (bearing, models, speed, Z) at other loads: a copy that shares the
+        load-independent constants and the cage-speed memo (warm starts)."""
+        new = copy.copy(self)
+        new._set_loads(radial_load, axial_load)
+        new.n_eval = 0
+        new.last_jacobian = None
+        new._last = None
+        return new
+
+    def _set_loads(self, radial_load: float, axial_load: float) -> None:
+        """Loads and the scales that depend on them (forces F_s, moments, cage torque)."""
+        self.Fr = float(radial_load)
+        self.Fa = float(axial_load)
+        fc = self.m * (0.5 * abs(self.speed)) ** 2 * self.Rm
+        self.F_s = max(abs(self.Fa) / self.Z, self.Fr / self.Z, fc, 10.0)
+        self.M_s = self.F_s * 0.5 * self.D
+        self.T_s = self.F_s * self.Rm
+        c = self._c.copy()
+        c[C_FS], c[C_MS], c[C_TS] = self.F_s, self.M_s, self.T_s
+        self._c = c
 
     # -- full residual vector (for scipy comparisons) -------------------------------------
     def full_residual(self, y: np.ndarray, x_ref: np.ndarray, g_ref: np.ndarray) -> np.ndarray:

@@ -155,7 +155,7 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
         extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
                "race_names": names, "residual": R,
                "traction_law": system.models.traction_law,
-               "jacobian": system.last_jacobian})
+               "jacobian": system.last_jacobian, "system": system})
 
 
 def _kinematic_state(system: ball_residual_system, X, det, names, heat):
