@@ -32,3 +32,63 @@ def test_bad_jobs_and_unknown_case() -> None:
         validation.run_cases(FAST[:1], jobs=0)
     with pytest.raises(UnknownNameError, match="no_such_case"):
         validation.run_cases(["paper004_bpfo", "no_such_case"])
+
+
+def _copy_case(src: str, dst, slow: bool) -> None:
+    import shutil
+
+    shutil.copytree(validation.cases_dir() / src, dst)
+    if slow:
+        toml = dst / "case.toml"
+        toml.write_text("slow = true\n" + toml.read_text(encoding="utf-8"), encoding="utf-8")
+
+
+def test_slow_cases_run_only_on_request(tmp_path) -> None:
+    _copy_case("paper004_bpfo", tmp_path / "fast_case", slow=False)
+    _copy_case("paper002_csr_theoretical", tmp_path / "slow_case", slow=True)
+    lines: list[str] = []
+    records = validation.run_cases(None, tmp_path, progress=lines.append)
+    assert {r.case for r in records} == {"fast_case"}
+    assert any(ln.startswith("[slow_case] skipped: slow case") for ln in lines)
+    both = validation.run_cases(None, tmp_path, include_slow=True)
+    assert {r.case for r in both} == {"fast_case", "slow_case"}
+    named = validation.run_cases(["slow_case"], tmp_path)
+    assert {r.case for r in named} == {"slow_case"} and all(r.passed for r in named)
+    (tmp_path / "fast_case" / "case.toml").write_text(
+        'slow = "yes"\n' + (tmp_path / "fast_case" / "case.toml").read_text())
+    with pytest.raises(InputError, match="slow"):
+        validation.run_cases(None, tmp_path)
+
+
+def test_numerical_drag_runner_books_both_drags(monkeypatch) -> None:
+    """The paper 000 numerical-drag runner (slow case, not run here): with a stand-in solver
+    it returns every quantity of its reference.csv, the errors against Tables 2-3 and the
+    gated difference of the mean absolute errors."""
+    import math
+    from types import SimpleNamespace
+
+    import thermobearing.skidding.roller as roller
+    from thermobearing.validation import runners_paper000_drag as mod
+
+    speeds = {"closed_form": 1.10, "numerical_ehl": 1.04}  # x paper's value
+
+    def fake_solve(bearing, lub, speed, load, axial, temperature, *, viscosity, drag_model,
+                   **options):
+        tag = mod.CONDITIONS[(load, viscosity)]
+        rpm = mod.PAPER_MEAN_CAGE_SPEED_RPM[tag] * speeds[drag_model]
+        return SimpleNamespace(cage_speed=rpm * 2 * math.pi / 60)
+
+    monkeypatch.setattr(roller, "solve_roller", fake_solve)
+    case = validation.cases_dir() / "paper000_numerical_drag"
+    assert validation.is_slow("paper000_numerical_drag")
+    import tomllib
+
+    spec = tomllib.loads((case / "case.toml").read_text())
+    out = mod.paper000_numerical_drag(dict(spec["inputs"]), case)
+    wanted = {c.quantity for c in validation.read_checks(case)}
+    assert wanted <= set(out)
+    assert out["mean_abs_error_closed_form"] == pytest.approx(0.10)
+    assert out["mean_abs_error_numerical_ehl"] == pytest.approx(0.04)
+    assert out["mean_abs_error_numerical_minus_closed_form"] == pytest.approx(-0.06)
+    assert out["cage_speed_change_Fr100_to_Fr200_numerical_ehl"] == pytest.approx(
+        (1195.46 - 1292.78) * 1.04 * 2 * math.pi / 60)

@@ -19,18 +19,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--list", action="store_true", help="list the case ids and exit")
     parser.add_argument("--jobs", "-j", type=int, default=1,
                         help="run the cases in this many processes (default 1)")
+    parser.add_argument("--slow", action="store_true",
+                        help="also run the cases marked slow (skipped by default when no "
+                             "case is named)")
     parser.add_argument("--quiet", action="store_true",
                         help="no progress lines on stderr")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.list:
-        print("\n".join(validation.case_ids()))
+        print("\n".join(cid + ("  (slow: run by name or with --slow)"
+                                if validation.is_slow(cid) else "")
+                                for cid in validation.case_ids()))
         return 0
     def progress(line: str) -> None:
         print(line, file=sys.stderr, flush=True)
 
-    kwargs = {"jobs": args.jobs, "progress": None if args.quiet else progress}
+    kwargs = {"jobs": args.jobs, "progress": None if args.quiet else progress,
+              "include_slow": args.slow}
     if args.json:  # anything a model prints goes to stderr: stdout is the JSON document
         with contextlib.redirect_stdout(sys.stderr):
             records = validation.run_cases(args.cases or None, **kwargs)

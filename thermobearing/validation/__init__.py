@@ -15,6 +15,10 @@ A case is a folder ``validation/cases/<id>/`` holding
 ``SOURCE.md``
     the citation, where each number comes from, the tolerance and why.
 
+A case whose ``case.toml`` says ``slow = true`` (minutes to hours of CPU, e.g. the
+numerical-EHL drag of paper 000) runs when it is named or when ``include_slow`` is set
+(``thermobearing validate --slow``); a run of "all cases" lists it as skipped.
+
 A runner is a registered function ``runner(inputs: dict, case_dir: Path) -> dict`` that
 returns SI floats keyed by quantity; the table converts them to the row's unit.
 Runner modules are the ``runners_*.py`` files of this package (imported on demand).
@@ -107,6 +111,16 @@ def case_ids(folder: Path | None = None) -> list[str]:
     if not folder.is_dir():
         return []
     return sorted(p.name for p in folder.iterdir() if (p / "case.toml").is_file())
+
+
+def is_slow(case_id: str, folder: Path | None = None) -> bool:
+    """True when the case's ``case.toml`` marks it ``slow = true`` (run only on request)."""
+    folder = folder or cases_dir()
+    spec = tomllib.loads((folder / case_id / "case.toml").read_text(encoding="utf-8"))
+    slow = spec.get("slow", False)
+    if not isinstance(slow, bool):
+        raise InputError(f"{case_id}/case.toml slow", slow, "true or false")
+    return slow
 
 
 def _float(text: str, field: str) -> float:
@@ -224,8 +238,12 @@ def _timed_case(case_id: str, folder: Path) -> tuple[list[Record], float]:
 
 
 def run_cases(ids: Iterable[str] | None = None, folder: Path | None = None, *,
-              jobs: int = 1, progress: Callable[[str], None] | None = None) -> list[Record]:
+              jobs: int = 1, progress: Callable[[str], None] | None = None,
+              include_slow: bool = False) -> list[Record]:
     """Run the given cases (all when ``ids`` is None), in the order given.
+
+    With ``ids`` None the cases marked ``slow = true`` are skipped (``progress`` says so)
+    unless ``include_slow``; named cases always run.
 
     ``jobs`` > 1 runs the cases in that many worker processes (the paper 002 protocols
     take minutes each); ``progress`` receives one line per finished case (its verdict and
@@ -238,6 +256,12 @@ def run_cases(ids: Iterable[str] | None = None, folder: Path | None = None, *,
             raise UnknownNameError("validation case", cid, case_ids(folder))
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise InputError("jobs", jobs, "an integer >= 1")
+    if not ids and not include_slow:
+        skipped = [cid for cid in chosen if is_slow(cid, folder)]
+        chosen = [cid for cid in chosen if cid not in skipped]
+        if progress is not None:
+            for cid in skipped:
+                progress(f"[{cid}] skipped: slow case (run it by name or with --slow)")
 
     def report(cid: str, records: list[Record], wall: float) -> None:
         if progress is not None:
