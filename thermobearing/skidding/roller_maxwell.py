@@ -77,8 +77,9 @@ class _NoHertzShear:
 
 def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any,
                            half_width: Any, film_thickness: Any, length: float,
-                           traction_law: Any, temperature: float, shear_modulus: float,
-                           n_cells: int = N_CELLS) -> tuple[np.ndarray, np.ndarray]:
+                           traction_law: Any, temperature: float, shear_modulus: float | None,
+                           n_cells: int = N_CELLS, pressure: Any = None
+                           ) -> tuple[np.ndarray, np.ndarray]:
     """Hertz-zone shear force of Maxwell films (module docstring) and its slope.
 
     Parameters
@@ -93,8 +94,12 @@ def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any
         temperature) -> (stress [Pa], d stress / d speed [Pa s/m])``
         (:mod:`thermobearing.traction`).
     temperature : film temperature [K].
-    shear_modulus : elastic shear modulus of the oil G [Pa] (> 0).
+    shear_modulus : elastic shear modulus of the oil G [Pa] (> 0); None: viscous film (the
+        traction law point by point, no elastic build-up).
     n_cells : cells across the Hertz zone.
+    pressure : (Z, n_cells) film pressure at the cell midpoints x/b = -1 + (k + 1/2) 2/n,
+        upstream first [Pa] (None: the semi-elliptic Hertz pressure;
+        :func:`thermobearing.skidding.roller_pressure.hertz_zone_pressure`).
 
     Returns
     -------
@@ -103,7 +108,8 @@ def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any
 
     Reference: Johnson & Tevaarwerk 1977 (Maxwell element, steady flow through the contact).
     """
-    check_positive("fluid_shear_modulus", shear_modulus)
+    if shear_modulus is not None:
+        check_positive("fluid_shear_modulus", shear_modulus)
     v = np.asarray(slide, dtype=float)
     p_h = np.asarray(max_pressure, dtype=float)
     v, ue, p_h, b, h = np.broadcast_arrays(v, np.asarray(entrainment_speed, dtype=float), p_h,
@@ -114,14 +120,23 @@ def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any
     h_s = np.where(loaded & np.isfinite(h), h, 1.0)
     ue_s = np.maximum(ue, 1e-9)
     # cell midpoints from the inlet: x/b = -1 + (k + 1/2) 2/n
-    xm = -1.0 + (np.arange(n_cells) + 0.5) * 2.0 / n_cells
-    pres = np.where(loaded, p_h, 0.0)[..., None] * np.sqrt(1.0 - xm**2)
+    xm = cell_midpoints(n_cells)
+    if pressure is None:
+        pres = np.where(loaded, p_h, 0.0)[..., None] * np.sqrt(1.0 - xm**2)
+    else:
+        pres = np.where(loaded[..., None], np.asarray(pressure, dtype=float), 0.0)
     shape = pres.shape
     ss, dss = traction_law.shear_stress(speed[..., None] * np.ones(n_cells), pres,
                                         h_s[..., None] * np.ones(shape),
                                         temperature * np.ones(shape))
     ss = np.asarray(ss, dtype=float)
     dss = np.asarray(dss, dtype=float)
+    delta = (2.0 * b / n_cells)[..., None] * np.ones(shape)
+    if shear_modulus is None:
+        total = np.sum(ss * delta, axis=-1)
+        dtotal = np.sum(dss * delta, axis=-1)
+        return (np.where(loaded, length * total, 0.0) * np.sign(v),
+                np.where(loaded, length * dtotal, 0.0))
     sp = speed[..., None]
     tiny = sp <= 1e-12
     # secant viscous coefficient tau_ss / V [Pa s/m] (its V -> 0 limit is the slope)
@@ -130,7 +145,6 @@ def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any
     scale = (h_s * ue_s / shear_modulus)[..., None]
     lam = sec * scale  # relaxation length [m]
     dlam = dsec * scale
-    delta = (2.0 * b / n_cells)[..., None] * np.ones(shape)
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         lam_s = np.where(lam > 0.0, lam, 1.0)
         r = np.where(lam > 0.0, delta / lam_s, np.inf)
@@ -164,13 +178,28 @@ def maxwell_hertz_traction(slide: Any, entrainment_speed: Any, max_pressure: Any
     return force * np.sign(v), dforce
 
 
-def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus: float
-                           ) -> Callable[..., LineContactForces]:
+def cell_midpoints(n_cells: int = N_CELLS) -> np.ndarray:
+    """x/b of the Hertz-zone cell midpoints, upstream first [-]."""
+    return -1.0 + (np.arange(n_cells) + 0.5) * 2.0 / n_cells
+
+
+def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus: float | None,
+                           film_pressure: str = "hertz") -> Callable[..., LineContactForces]:
     """A drag model (signature of ``closed_form_contact_forces``) whose Hertz-zone shear is
-    the Maxwell film of :func:`maxwell_hertz_traction`; everything else (film, inlet/outlet
-    Newtonian shear, Poiseuille and rolling forces) comes from ``base``. G [Pa]."""
-    check_positive("fluid_shear_modulus", shear_modulus)
+    computed here: the Maxwell film of :func:`maxwell_hertz_traction` (G [Pa]; None: viscous)
+    under the Hertz-zone pressure ``film_pressure`` ("hertz" or "regime_min",
+    :func:`thermobearing.skidding.roller_pressure.hertz_zone_pressure`); everything else
+    (film, inlet/outlet Newtonian shear, Poiseuille and rolling forces) comes from ``base``."""
+    from .roller_pressure import FILM_PRESSURE_MODELS, hertz_zone_pressure
+
+    if shear_modulus is not None:
+        check_positive("fluid_shear_modulus", shear_modulus)
+    if film_pressure not in FILM_PRESSURE_MODELS:
+        from ..errors import InputError
+
+        raise InputError("film_pressure", film_pressure, FILM_PRESSURE_MODELS)
     null_law = _NoHertzShear()
+    xb = cell_midpoints()
 
     @functools.wraps(base)
     def forces(load: Any, length: float, radius: float, effective_modulus: float,
@@ -181,9 +210,14 @@ def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus
         ur = np.asarray(u_race, dtype=float)
         uro = np.asarray(u_roller, dtype=float)
         ue = np.maximum(0.5 * np.abs(ur + uro), 1e-6)
+        pres = None
+        if film_pressure != "hertz":
+            pres = hertz_zone_pressure(film_pressure, xb, side.max_pressure, side.half_width,
+                                       np.asarray(load, dtype=float) / length, 2.0 * ue,
+                                       radius, kw["eta0"])
         f_hz, df_hz = maxwell_hertz_traction(
             ur - uro, ue, side.max_pressure, side.half_width, side.film_thickness, length,
-            traction_law, temperature, shear_modulus)
+            traction_law, temperature, shear_modulus, pressure=pres)
         return LineContactForces(
             traction=side.traction + f_hz, dtraction_dslide=side.dtraction_dslide + df_hz,
             poiseuille=side.poiseuille, rolling_force=side.rolling_force,

@@ -81,6 +81,7 @@ class RollerModel:
     unloaded_zone: str = "moment_balance"
     ring_support: str = "contacts"
     fluid_shear_modulus: float | None = None
+    film_pressure: str = "hertz"
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -145,6 +146,7 @@ def build_model(
     unloaded_zone: str = "moment_balance",
     ring_support: str = "contacts",
     fluid_shear_modulus: float | None = None,
+    film_pressure: str = "hertz",
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -196,6 +198,12 @@ def build_model(
         builds up along the contact and the traction at small slip is elastic, linear in the
         roller load instead of growing like exp(alpha p_H)
         (:mod:`thermobearing.skidding.roller_maxwell`).
+    film_pressure : pressure under which the Hertz-zone oil is sheared. ``"hertz"``
+        (default): the semi-elliptic Hertz pressure. ``"regime_min"``: at every point the
+        smaller of the Hertz and the rigid-isoviscous (Martin) pressure, so that a contact in
+        the rigid regime (Moes M < ~1, paper 000's light loads) is not sheared at the
+        viscosity of a Hertz pressure it does not have
+        (:mod:`thermobearing.skidding.roller_pressure`).
     """
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
@@ -237,10 +245,14 @@ def build_model(
     law = traction_law if traction_law is not None else default_traction_law(
         lubricant, eyring_stress, limiting_shear_coefficient)
     forces = ROLLER_DRAG.get(drag_model)()
-    if fluid_shear_modulus is not None:
+    if film_pressure not in ("hertz", "regime_min"):
+        raise InputError("film_pressure", film_pressure, ("hertz", "regime_min"))
+    if fluid_shear_modulus is not None or film_pressure != "hertz":
         from .roller_maxwell import maxwell_contact_forces
 
-        forces = maxwell_contact_forces(forces, float(fluid_shear_modulus))
+        forces = maxwell_contact_forces(
+            forces, None if fluid_shear_modulus is None else float(fluid_shear_modulus),
+            film_pressure)
     return RollerModel(
         pitch_diameter=d_m, roller_diameter=d, length=length, n_rollers=bearing.n_rollers,
         roller_mass=bearing.roller_mass, radius_inner=r_i, radius_outer=r_o,
@@ -255,4 +267,5 @@ def build_model(
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
         unloaded_zone=unloaded_zone, ring_support=ring_support,
         fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
+        film_pressure=film_pressure,
     )

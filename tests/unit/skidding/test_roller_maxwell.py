@@ -178,3 +178,77 @@ def test_light_load_paper000_is_viscous_regime():
     b = solve_roller(nu214, oil, w, 150.0, 0.0, 313.15, viscosity=0.08,
                      fluid_shear_modulus=1e9)
     assert b.cage_speed == pytest.approx(a.cage_speed, rel=1e-2)
+
+
+# --- Hertz-zone pressure by regime (skidding/roller_pressure.py) ---------------------------
+def test_martin_pi_matches_the_closed_form_of_roller_fluid():
+    from thermobearing.skidding.roller_fluid import _pi_function, martin_coefficients
+    from thermobearing.skidding.roller_pressure import martin_pi
+
+    xs = martin_coefficients()[3]
+    hs = 1.0 + xs * xs
+    x = np.array([-30.0, -2.0, -xs, -0.1, 0.0, 0.3, xs - 1e-9, xs + 0.1, 5.0])
+    ref = [max(_pi_function(v, -math.inf, hs), 0.0) if v < xs else 0.0 for v in x]
+    np.testing.assert_allclose(martin_pi(x), ref, rtol=1e-12, atol=1e-15)
+    # peak upstream at X = -X* (dp/dX = 0 where H = H*)
+    grid = np.linspace(-2, 1, 30001)
+    assert grid[np.argmax(martin_pi(grid))] == pytest.approx(-xs, abs=2e-4)
+
+
+def test_rigid_pressure_carries_the_load():
+    from scipy.integrate import quad
+
+    from thermobearing.skidding.roller_pressure import rigid_pressure
+
+    w, u, r, eta = 4300.0, 30.0, 5.6e-3, 0.08  # paper 000 NU214, ~56 N on 13 mm
+    total = (quad(lambda x: float(rigid_pressure(x, w, u, r, eta)), -np.inf, -1e-3)[0]
+             + quad(lambda x: float(rigid_pressure(x, w, u, r, eta)), -1e-3, 1e-3,
+                    limit=200)[0])
+    assert total == pytest.approx(w, rel=1e-6)
+
+
+def test_regime_min_pressure_limits():
+    from thermobearing.skidding.roller_pressure import (
+        hertz_zone_pressure,
+        rigid_peak_pressure,
+        rigid_pressure,
+    )
+
+    xb = np.linspace(-0.95, 0.95, 9)
+    # the peak of the rigid profile
+    grid = np.linspace(-3e-3, 1e-3, 40001)
+    assert rigid_peak_pressure(4300.0, 30.0, 5.6e-3, 0.08) == pytest.approx(
+        rigid_pressure(grid, 4300.0, 30.0, 5.6e-3, 0.08).max(), rel=1e-6)
+    # EHL contact (D1842926 inner race, 4 kN, U = 60 m/s, eta0 0.033): M >> 1, Hertz
+    b, p_h, w, r = 1.47e-4, 1.6e9, 4000 / 0.0108, 5.5e-3
+    p = hertz_zone_pressure("regime_min", xb, [p_h], [b], [w], [60.0], r, 0.033)
+    np.testing.assert_allclose(p[0], p_h * np.sqrt(1 - xb**2), rtol=1e-12)
+    # rigid contact (paper 000 NU214, 56 N on 13 mm, U = 30 m/s, 0.08 Pa s; M ~ 0.1): the
+    # peak is the rigid one, ~10 MPa, an order below p_H = 0.17 GPa
+    w = 56.0 / 0.013
+    b = math.sqrt(8 * w * 5.6e-3 / (math.pi * 2.28e11))
+    p_h = 2 * w / (math.pi * b)
+    p = hertz_zone_pressure("regime_min", xb, [p_h], [b], [w], [30.0], 5.6e-3, 0.08)
+    peak = rigid_peak_pressure(w, 30.0, 5.6e-3, 0.08)
+    assert peak < 0.15 * p_h
+    np.testing.assert_allclose(p[0], peak * np.sqrt(1 - xb**2), rtol=1e-12)
+    with pytest.raises(InputError):
+        hertz_zone_pressure("elastic", xb, [p_h], [b], [w], [30.0], 5.6e-3, 0.08)
+
+
+def test_regime_min_removes_the_hertz_zone_shear_of_rigid_contacts_and_keeps_energy():
+    nu214 = load_bearing("NU214")
+    oil = load_lubricant("PAPER000_OIL")
+    w = 5000 * math.pi / 30
+    a = solve_roller(nu214, oil, w, 150.0, 0.0, 313.15, viscosity=0.08, tol=1e-12)
+    b = solve_roller(nu214, oil, w, 150.0, 0.0, 313.15, viscosity=0.08, tol=1e-12,
+                     film_pressure="regime_min")
+    # the roller under the load (M ~ 0.1): 8.2 N of Hertz-zone shear at eta(p_H) become
+    # 0.64 N at the rigid peak pressure; no contact gains any
+    assert abs(b.inner.hertz_traction[0]) < 0.1 * abs(a.inner.hertz_traction[0])
+    loaded = a.inner_load > 0
+    assert np.all(np.abs(b.inner.hertz_traction[loaded])
+                  < np.abs(a.inner.hertz_traction[loaded]))
+    assert b.shaft_torque * w == pytest.approx(b.power_loss["total"], rel=1e-8)
+    with pytest.raises(InputError):
+        build_model(nu214, oil, 313.15, film_pressure="elastic")
