@@ -93,6 +93,21 @@ class BallSkiddingResult:
         return np.full(self.ball_x.shape, self.cage_speed)
 
 
+@functools.lru_cache(maxsize=16)
+def _race_names_cached(inner: tuple) -> tuple:
+    names = []
+    for k, inn in enumerate(inner):
+        race = "inner" if inn else "outer"
+        nth = sum(1 for j in range(k) if inner[j] == inn)
+        names.append(race if nth == 0 else f"{race}_{nth + 1}")
+    return tuple(names)
+
+
+def _race_names(inner: np.ndarray) -> list:
+    """Contact-set names per arc: inner, inner_2, outer, outer_2 ... (cached per layout)."""
+    return list(_race_names_cached(tuple(bool(v) for v in inner)))
+
+
 def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
 
     R, Gc, G0, det = system.evaluate(X, G, details=True)
@@ -120,24 +135,21 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
         theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
     th = float(theoretical_reference)
     Om = X[:, 2:5]
-    spin = np.linalg.norm(Om, axis=1)
+    spin = np.sqrt((Om * Om).sum(1))
     beta = np.arctan2(Om[:, 1], -Om[:, 0])
     yaw = np.arctan2(Om[:, 2], np.hypot(Om[:, 0], Om[:, 1]))
-    heat = {"raceway": float(np.sum(det["contact_heat"])),
-            "raceway_inner": float(np.sum(np.where(inner[None, :], det["contact_heat"], 0))),
-            "raceway_outer": float(np.sum(np.where(~inner[None, :], det["contact_heat"], 0))),
-            "ball_pocket": float(np.sum(det["pocket_heat"])),
-            "ball_drag": float(np.sum(det["drag_heat"])),
+    per_arc = det["contact_heat"].sum(0)          # (k,) raceway heat per arc
+    heat = {"raceway": float(per_arc.sum()),
+            "raceway_inner": float(per_arc @ system.inner_f),
+            "raceway_outer": float(per_arc @ (1.0 - system.inner_f)),
+            "ball_pocket": float(det["pocket_heat"].sum()),
+            "ball_drag": float(det["drag_heat"].sum()),
             "cage": float(det["cage_heat"]),
             "cage_guide": float(det["guide_heat"]),
             "inner_ring_churning": float(det["inner_churn_heat"])}
     heat["total"] = float(sum(v for k, v in heat.items()
                               if k not in ("raceway_inner", "raceway_outer")))
-    names = []
-    for k in range(system.arcs.n_arcs):
-        race = ("inner" if inner[k] else "outer")
-        nth = int(np.sum((inner == inner[k])[:k]))
-        names.append(race if nth == 0 else f"{race}_{nth + 1}")
+    names = _race_names(inner)
 
     def build_state():
         return _kinematic_state(system, X, det, names, heat)

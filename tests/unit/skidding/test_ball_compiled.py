@@ -1,0 +1,210 @@
+"""The compiled (numba) ball skidding residual and Newton pieces against independent references.
+
+- the Hertz / film fast paths compiled into the residual (hertz._hamrock_brewe_point_nb,
+  hertz._ellipse_nb, film._hd1977_central_nb) against the public numpy functions;
+- the fused residual (one compiled call) against the staged path (compiled geometry, film and
+  viscosity in Python, compiled forces) and against a Python film callable;
+- the compiled block-elimination step against a dense solve of the assembled Jacobian;
+- warm starts with and without the Broyden updates converge to the same state;
+- the numba cache guard flushes when a dependency's source changes.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from tests.unit.skidding.helpers import qj_like, simple_models
+from thermobearing.contact_traction import refresh_stale_caches
+from thermobearing.errors import ValidityWarning
+from thermobearing.film import _hd1977_central_nb, hamrock_dowson_1977_central
+from thermobearing.hertz import _ellipse_nb, _hamrock_brewe_point_nb, point_contact
+from thermobearing.skidding.ball import ball_residual_system, race_control_guess, solve_ball
+from thermobearing.skidding.ball_models import GuardedFilm
+from thermobearing.skidding.ball_newton import _CAP_G, _CAP_X, _block_step
+
+W1800 = 1800 * math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def bearing():
+    return qj_like()
+
+
+@pytest.fixture(scope="module")
+def default_models(bearing):
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.ball_models import default_ball_models
+    from thermobearing.state import OilSupply
+
+    return default_ball_models(bearing, load_lubricant("ISO_VG46"), temperature=330.0,
+                               speed=W1800, supply=OilSupply("jet", 33 / 60000, 313.15))
+
+
+def test_compiled_hertz_equals_public_hamrock_brewe():
+    # hertz.point_contact(method="hamrock_brewe") is the validated public function
+    E = 2.26e11
+    for rx, ry, w in ((0.0125, 0.29, 800.0), (0.02, 0.02, 50.0), (0.3, 0.015, 9000.0)):
+        r, k, big_e, K = _hamrock_brewe_point_nb(rx, ry, E)
+        a, b, p = _ellipse_nb(w, r, k, big_e, E)
+        pc = point_contact(w, rx, ry, E, method="hamrock_brewe")
+        assert a == pytest.approx(float(pc.a), rel=1e-13)
+        assert b == pytest.approx(float(pc.b), rel=1e-13)
+        assert p == pytest.approx(float(pc.max_pressure), rel=1e-13)
+        # Q = K delta^1.5 at the Hertz approach
+        assert K * float(pc.approach) ** 1.5 == pytest.approx(w, rel=1e-9)
+    assert _ellipse_nb(0.0, 0.01, 5.0, 1.1, E)[2] == 0.0
+
+
+def test_compiled_film_equals_public_hamrock_dowson():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        for u, eta, alpha, q, rx, ry in ((3.0, 0.02, 2e-8, 800.0, 0.015, 0.3),
+                                         (0.1, 0.3, 1.5e-8, 40.0, 0.02, 0.25)):
+            ref = float(hamrock_dowson_1977_central(u, eta, alpha, q, rx, ry,
+                                                    effective_modulus=2.26e11))
+            assert _hd1977_central_nb(u, eta, alpha, q, rx, ry, 2.26e11) == pytest.approx(
+                ref, rel=1e-13)
+    assert _hd1977_central_nb(0.0, 0.02, 2e-8, 800.0, 0.015, 0.3, 2.26e11) == 0.0
+    assert math.isinf(_hd1977_central_nb(1.0, 0.02, 2e-8, 0.0, 0.015, 0.3, 2.26e11))
+
+
+def test_guarded_film_rejects_a_zero_floor():
+    from thermobearing.errors import InputError
+
+    with pytest.raises(InputError):
+        GuardedFilm(0.02, 2e-8, 2.26e11, thickness_floor=0.0)
+
+
+def _evaluate_both(system, X, G):
+    """(fused, staged) residuals and details of one state."""
+    assert system._fused
+    R1, Gc1, G01, d1 = system.evaluate(X, G, details=True)
+    system._fused = False
+    system._last = None
+    try:
+        R2, Gc2, G02, d2 = system.evaluate(X, G, details=True)
+    finally:
+        system._fused = True
+        system._last = None
+    return (R1, Gc1, G01, d1), (R2, Gc2, G02, d2)
+
+
+def test_fused_equals_staged_path(bearing, default_models):
+    system = ball_residual_system(bearing, default_models, W1800, 1000.0, 4e3)
+    X, G, _ = race_control_guess(bearing, W1800, 1000.0, 4e3)
+    (R1, Gc1, G01, d1), (R2, Gc2, G02, d2) = _evaluate_both(system, X, G)
+    np.testing.assert_array_equal(R1, R2)
+    np.testing.assert_array_equal(Gc1, Gc2)
+    np.testing.assert_array_equal(G01, G02)
+    np.testing.assert_array_equal(d1["film"], d2["film"])
+    assert d1["shaft_torque"] == d2["shaft_torque"]
+    assert np.any(d1["cf"].load > 0)
+
+
+def test_python_film_callable_equals_compiled_film(bearing):
+    # the test models' film is a Python closure around the public Hamrock-Dowson function,
+    # and their law takes eta(T, p) from the lubricant per node (staged path); the same
+    # physics with the compiled GuardedFilm must give the same residual
+    models = simple_models(bearing)
+    lub = models.traction_law.lubricant
+    T = models.temperature
+    compiled = GuardedFilm(float(lub.dynamic_viscosity(T)),
+                           float(lub.pressure_viscosity_coefficient(T)),
+                           bearing.effective_modulus)
+    from dataclasses import replace
+
+    models_c = replace(models, film_thickness=compiled)
+    X, G, _ = race_control_guess(bearing, W1800, 1000.0, 4e3)
+    s_py = ball_residual_system(bearing, models, W1800, 1000.0, 4e3)
+    s_c = ball_residual_system(bearing, models_c, W1800, 1000.0, 4e3)
+    assert not s_py._fused and not s_c._fused     # per-node viscosity: staged
+    Rp, Gcp, _, dp = s_py.evaluate(X, G, details=True)
+    Rc, Gcc, _, dc = s_c.evaluate(X, G, details=True)
+    np.testing.assert_allclose(dc["film"], dp["film"], rtol=1e-13)
+    np.testing.assert_allclose(Rc, Rp, rtol=1e-11, atol=1e-12)
+    np.testing.assert_allclose(Gcc, Gcp, rtol=1e-11, atol=1e-12)
+
+
+def test_block_step_equals_dense_solve():
+    rng = np.random.default_rng(7)
+    Z, nb, ng = 5, 6, 3
+    A = rng.normal(size=(Z, nb, nb)) + 4 * np.eye(nb)
+    B = rng.normal(size=(Z, nb, ng))
+    C = rng.normal(size=(Z, ng, nb))
+    Dg = rng.normal(size=(ng, ng)) + 6 * np.eye(ng)
+    R = rng.normal(size=(Z, nb))
+    g = rng.normal(size=ng)
+    # dense Jacobian of (ball residuals, global residuals) in (ball unknowns, globals)
+    n = Z * nb + ng
+    J = np.zeros((n, n))
+    for z in range(Z):
+        J[z * nb:(z + 1) * nb, z * nb:(z + 1) * nb] = A[z]
+        J[z * nb:(z + 1) * nb, Z * nb:] = B[z]
+        J[Z * nb:, z * nb:(z + 1) * nb] = C[z]
+    J[Z * nb:, Z * nb:] = Dg
+    ref = np.linalg.solve(J, -np.concatenate([R.ravel(), g]))
+    Ainv = np.linalg.inv(A)
+    Ainv_B = Ainv @ B
+    S = Dg - np.einsum("zgi,zij->gj", C, Ainv_B)
+    dX, dG, big = _block_step(Ainv, Ainv_B, C, np.linalg.inv(S), R, g, _CAP_X, _CAP_G)
+    np.testing.assert_allclose(np.concatenate([dX.ravel(), dG]), ref, rtol=1e-10, atol=1e-12)
+    assert big == pytest.approx(max(np.max(np.abs(dX) / _CAP_X), np.max(np.abs(dG) / _CAP_G)))
+
+
+def test_warm_start_broyden_converges_to_the_same_state(bearing, default_models):
+    from thermobearing.skidding import ball_newton
+
+    r0 = solve_ball(bearing, default_models, W1800, 1000.0, 6e3, theoretical_reference=0.45)
+    out = {}
+    for flag in (True, False):
+        original = ball_newton.newton_block
+
+        def patched(*a, _flag=flag, _orig=original, **k):
+            return _orig(*a, broyden_warm=_flag, **k)
+
+        from thermobearing.skidding import ball as ball_mod
+
+        ball_mod.newton_block = patched
+        try:
+            out[flag] = solve_ball(bearing, default_models, W1800, 1000.0, 6.14e3, guess=r0,
+                                   theoretical_reference=0.45)
+        finally:
+            ball_mod.newton_block = original
+    a, b = out[True], out[False]
+    assert a.converged and b.converged
+    assert a.cage_speed_ratio == pytest.approx(b.cage_speed_ratio, rel=1e-9)
+    assert a.shaft_torque == pytest.approx(b.shaft_torque, rel=1e-7)
+    # energy identity of the Broyden solution: shaft power = total heat
+    assert a.shaft_torque * W1800 == pytest.approx(a.heat["total"], rel=1e-8)
+    assert a.extra["n_eval"] <= b.extra["n_eval"]
+
+
+def test_reloaded_system_equals_a_new_one(bearing, default_models):
+    s1 = ball_residual_system(bearing, default_models, W1800, 1000.0, 4e3)
+    s2 = s1.reloaded(500.0, 12e3)
+    s3 = ball_residual_system(bearing, default_models, W1800, 500.0, 12e3)
+    X, G, _ = race_control_guess(bearing, W1800, 500.0, 12e3)
+    for a, b in zip(s2.evaluate(X, G)[:3], s3.evaluate(X, G)[:3], strict=True):
+        np.testing.assert_array_equal(a, b)
+    assert s1.Fa == 4e3 and s1.F_s != s2.F_s      # the original is untouched
+
+
+def test_cache_guard_flushes_on_a_dependency_change(tmp_path):
+    flushed = []
+    cache = SimpleNamespace(cache_path=str(tmp_path), flush=lambda: flushed.append(1))
+    disp = SimpleNamespace(_cache=cache)
+    dep_file = tmp_path / "dep.py"
+    dep_file.write_text("x = 1\n")
+    dep = SimpleNamespace(__file__=str(dep_file))
+    assert refresh_stale_caches("t", (disp,), (dep,)) is True      # no stamp yet
+    assert refresh_stale_caches("t", (disp,), (dep,)) is False     # unchanged
+    dep_file.write_text("x = 2\n")
+    assert refresh_stale_caches("t", (disp,), (dep,)) is True      # dependency edited
+    assert len(flushed) == 2
+    # caching disabled (no cache object): nothing to do
+    assert refresh_stale_caches("t", (SimpleNamespace(_cache=None),), (dep,)) is False
