@@ -53,6 +53,12 @@ class _Grids:
         vals = np.concatenate((1.0 - t[1:-1], t[1:-1]))
         # Pi^T restricted to the interior fine nodes (the unknowns), sparse (nc x m)
         self.pt = csr_matrix((vals, (cols, rows)), shape=(nc, m))
+        self._ii, self._ti = idx[1:-1], t[1:-1]
+
+    def restrict(self, y: np.ndarray) -> np.ndarray:
+        """``Pi^T y`` for one vector over the interior nodes (two weighted bincounts)."""
+        return (np.bincount(self._ii, (1.0 - self._ti) * y, self.nc)
+                + np.bincount(self._ii + 1, self._ti * y, self.nc))
 
 
 class TwoLevelPreconditioner:
@@ -78,12 +84,9 @@ class TwoLevelPreconditioner:
             kn = prob.kernel.coeffs[:width] - smooth_kernel(np.arange(width), prob.dx, width)
             g.coeffs_near = np.concatenate((kn, np.zeros(2)))
             prob.cache[key] = g
-        band = width - 1
-        ab, kl, ku = prob.banded_jacobian_r(st, band, beta, da, coeffs=g.coeffs_near)
-        lu, piv, info = lapack.dgbtrf(ab, kl, ku)
-        if info != 0:
-            raise ConvergenceError("ehl.newton", float("nan"), "singular banded preconditioner")
-        self._band = (lu, piv, kl, ku)
+        self._prob, self._width = prob, width
+        self._factor_near(st, beta, da, g)
+        lu, piv, kl, ku = self._band
         # U = diag(beta) B Pi (m x nc): row r (fine node r+1) touches nodes r-1..r+2
         U = np.zeros((m, g.nc))
         rows = np.arange(m)
@@ -109,11 +112,28 @@ class TwoLevelPreconditioner:
         self._zc = self.solve_interior(col_h0)
         self._fz = prob.dx * float(np.sum(self._zc))
 
+    def _factor_near(self, st: dict, beta: np.ndarray, da: np.ndarray, g: _Grids) -> None:
+        ab, kl, ku = self._prob.banded_jacobian_r(st, self._width - 1, beta, da,
+                                                  coeffs=g.coeffs_near)
+        lu, piv, info = lapack.dgbtrf(ab, kl, ku)
+        if info != 0:
+            raise ConvergenceError("ehl.newton", float("nan"), "singular banded preconditioner")
+        self._band = (lu, piv, kl, ku)
+
+    def refresh_near(self, st: dict, beta: np.ndarray, da: np.ndarray,
+                     col_h0: np.ndarray) -> None:
+        """Refactor the banded near field at a new Newton iterate and keep the far-field
+        (coarse) correction of the last full setup: the cheap part follows the local changes
+        (exit spike, rupture point), the costly ``nc`` back-substitutions are lagged."""
+        self._factor_near(st, beta, da, self._g)
+        self._zc = self.solve_interior(col_h0)
+        self._fz = self._dx * float(np.sum(self._zc))
+
     def solve_interior(self, r: np.ndarray) -> np.ndarray:
         """``(Mb + U V)^-1 r`` for a vector over the interior nodes."""
         lu, piv, kl, ku = self._band
         y, _ = lapack.dgbtrs(lu, kl, ku, r, piv)
-        c = self._g.kc @ (self._g.pt @ y)
+        c = self._g.kc @ self._g.restrict(y)
         c, _ = lapack.dgetrs(*self._coarse, c)
         return y - self._Z @ c
 
