@@ -110,7 +110,8 @@ class ContactTraction:
 
 @functools.lru_cache(maxsize=64)
 def _rule(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
-    """Nodes (xi, eta_scaled, pressure shape, area weight/(a b), load weight/(p0 a b))."""
+    """Nodes (xi, y/b, pressure shape p/p0, area weight dA/(a b)), each node's index into
+    the distinct pressure shapes, and those distinct shapes."""
     eta, weta = roots_jacobi(n_minor, 0.5, 0.5)
     if kind == "point":
         xi, wxi = roots_jacobi(n_major, 1.0, 1.0)
@@ -127,9 +128,13 @@ def _rule(kind: str, n_major: int, n_minor: int) -> tuple[np.ndarray, ...]:
         area_w = load_w / shape  # dA / (a b)
     else:
         area_w = load_w / np.tile(se, n_major)
-    for arr in (xg, yg, shape, area_w):
+    # the pressure shape is symmetric in +-xi and +-eta: the distinct values and each node's
+    # index into them (the film law's viscosity is evaluated once per distinct pressure)
+    shape_u, pidx = np.unique(shape, return_inverse=True)
+    pidx = pidx.astype(np.int64).ravel()
+    for arr in (xg, yg, shape, area_w, pidx, shape_u):
         arr.flags.writeable = False
-    return xg, yg, shape, area_w
+    return xg, yg, shape, area_w, pidx, shape_u
 
 
 def refresh_stale_caches(tag: str, dispatchers: tuple, dependencies: tuple) -> bool:
@@ -275,20 +280,23 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
                         eta_nodes: np.ndarray, q: np.ndarray, a: np.ndarray, b: np.ndarray,
                         vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
                         wy: np.ndarray, curv: np.ndarray, h: np.ndarray, xg: np.ndarray,
-                        yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray, point: bool,
+                        yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
+                        pidx: np.ndarray, pshape_u: np.ndarray, point: bool,
                         jacobian: bool, out: np.ndarray, jac: np.ndarray,
                         grad: np.ndarray) -> None:
     """The contact integration (compiled; see the module docstring), contact by contact.
 
     Flat float64 inputs of length N (h: film thickness, unused by laws without a film);
-    the rule (xg, yg, p/p0, dA/(a b)) of :func:`_rule`. The viscosity of the film law at a
-    node: ``visc_mode`` 1: table ``ln_tab``/``slope_tab`` on a uniform pressure grid
-    (step 1/inv_dp); 2: ``eta_nodes[c, k]``; 0: not needed. Writes ``out[c]`` = (F_x, F_y,
+    the rule (xg, yg, p/p0, dA/(a b), node -> distinct-pressure index, distinct p/p0) of
+    :func:`_rule`. The viscosity of the film law at a node: ``visc_mode`` 1: table
+    ``ln_tab``/``slope_tab`` on a uniform pressure grid (step 1/inv_dp), once per distinct
+    pressure of the contact; 2: ``eta_nodes[c, k]``; 0: not needed. Writes ``out[c]`` = (F_x, F_y,
     M_x, M_y, M_z, heat) and, when ``jacobian``, ``jac[c]`` = dQ/dq (5 x 5) and ``grad[c]``
     = d heat / dq. Unloaded contacts (Q, a or b = 0) give zeros.
     """
     n = q.size
     nk = xg.size
+    rate_u = np.empty(pshape_u.size)
     for c in range(n):
         for j in range(6):
             out[c, j] = 0.0
@@ -306,6 +314,10 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
         cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
         cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
         inv_h = 1.0 / h[c]
+        if visc_mode == 1:
+            for u in range(pshape_u.size):
+                rate_u[u] = _table_viscosity(p0 * pshape_u[u], ln_tab, slope_tab,
+                                             inv_dp) * inv_h
         sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
         j00 = j01 = j02 = j03 = j04 = j11 = j12 = j13 = j14 = 0.0
         j22 = j23 = j24 = j33 = j34 = j44 = 0.0
@@ -319,7 +331,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
             pres = p0 * pshape[k]
             weight = ab * area_w[k]
             if visc_mode == 1:
-                rate = _table_viscosity(pres, ln_tab, slope_tab, inv_dp) * inv_h
+                rate = rate_u[pidx[k]]
             elif visc_mode == 2:
                 rate = eta_nodes[c, k] * inv_h
             else:
@@ -460,7 +472,7 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
     if h is not None:
         loaded = (q > 0) & (a_ > 0) & (b_ > 0)
         hh = np.where(loaded, hh, 1.0)
-    xg, yg, pshape, area_w = _rule(kind, n_major, n_minor)
+    xg, yg, pshape, area_w, pidx, pshape_u = _rule(kind, n_major, n_minor)
     point = kind == "point"
     law_id, params = law.kernel
     n = q.size
@@ -485,8 +497,8 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
     jac = np.empty((n, 5, 5)) if jacobian else _EMPTY3
     grad = np.empty((n, 5)) if jacobian else _EMPTY2
     _integrate_contacts(law_id, params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes, q,
-                        a_, b_, vy_, vx_, wz_, wx_, wy_, cv, hh, xg, yg, pshape, area_w, point,
-                        jacobian, out, jac, grad)
+                        a_, b_, vy_, vx_, wz_, wx_, wy_, cv, hh, xg, yg, pshape, area_w, pidx,
+                        pshape_u, point, jacobian, out, jac, grad)
     res = out.reshape(shape_s + (6,))
     return ContactTraction(res[..., 0], res[..., 1], res[..., 2], res[..., 3], res[..., 4],
                            res[..., 5], jac.reshape(shape_s + (5, 5)) if jacobian else None,

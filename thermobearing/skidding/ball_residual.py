@@ -216,8 +216,8 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
                  law_params: np.ndarray, visc_mode: int, ln_tab: np.ndarray,
                  slope_tab: np.ndarray, inv_dp: float, eta_nodes: np.ndarray,
                  xg: np.ndarray, yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
-                 Fd: np.ndarray, tr: np.ndarray, pocket: np.ndarray, R: np.ndarray,
-                 Gc: np.ndarray) -> None:
+                 pidx: np.ndarray, pshape_u: np.ndarray, Fd: np.ndarray, tr: np.ndarray,
+                 pocket: np.ndarray, R: np.ndarray, Gc: np.ndarray) -> None:
     """Stage 2: tractions of every contact (:func:`thermobearing.contact_traction.
     _integrate_contacts`, the code path of ``contact_traction.integrate``) into ``tr``
     (B*Z*k, 6), then the ball force/moment balances (scaled) into R (B, Z, 6), the per-ball
@@ -226,7 +226,8 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
     _integrate_contacts(law_id, law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
                         geo[G_Q], geo[G_A], geo[G_B], geo[G_VY], geo[G_VX], geo[G_OMZ],
                         geo[G_OMX], geo[G_OMY], geo[G_CURV], film, xg, yg, pshape, area_w,
-                        True, False, tr, np.empty((0, 5, 5)), np.empty((0, 5)))
+                        pidx, pshape_u, True, False, tr, np.empty((0, 5, 5)),
+                        np.empty((0, 5)))
     nb, nz = X.shape[0], X.shape[1]
     nk = arc.shape[1]
     D, m, J = c[C_D], c[C_M], c[C_J]
@@ -292,8 +293,9 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
                          c: np.ndarray, film_params: np.ndarray, law_id: int,
                          law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
                          inv_dp: float, p_max: float, xg: np.ndarray, yg: np.ndarray,
-                         pshape: np.ndarray, area_w: np.ndarray, Fd: np.ndarray,
-                         geo: np.ndarray, film: np.ndarray, tr: np.ndarray,
+                         pshape: np.ndarray, area_w: np.ndarray, pidx: np.ndarray,
+                         pshape_u: np.ndarray, Fd: np.ndarray, geo: np.ndarray,
+                         film: np.ndarray, tr: np.ndarray,
                          pocket: np.ndarray, R: np.ndarray, Gc: np.ndarray) -> bool:
     """Stage 1, the compiled film (:func:`guarded_film`) and stage 2 in one call, with the
     film law's viscosity from the table (``visc_mode`` 1) when ``ln_tab`` is not empty.
@@ -311,8 +313,8 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
         film[i] = guarded_film(geo[G_UE, i], geo[G_Q, i], geo[G_RX, i],
                                arc[A_RY, i % arc.shape[1]], film_params)
     _ball_forces(X, G, cpsi, arc, c, geo, film, law_id, law_params, visc_mode, ln_tab,
-                 slope_tab, inv_dp, np.empty((0, 0)), xg, yg, pshape, area_w, Fd, tr, pocket,
-                 R, Gc)
+                 slope_tab, inv_dp, np.empty((0, 0)), xg, yg, pshape, area_w, pidx, pshape_u,
+                 Fd, tr, pocket, R, Gc)
     return True
 
 
@@ -466,15 +468,14 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         pocket = np.empty((n_states, Z, N_POCKET))
         R = np.empty((n_states, Z, N_BALL))
         Gc = np.empty((n_states, Z, N_GLOBAL))
-        xg, yg, pshape, area_w = self._rule
         done = False
         if self._fused:
             ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
                                                                              0.0, 0.0)
             done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
                                         self._film_params, self._law_id, self._law_params,
-                                        ln_tab, slope_tab, inv_dp, p_max, xg, yg, pshape,
-                                        area_w, Fd_b, geo, film, tr, pocket, R, Gc)
+                                        ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
+                                        geo, film, tr, pocket, R, Gc)
         film_out = film
         if not done:
             film_out = self._staged(Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc)
@@ -502,7 +503,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         md = self.models
         _ball_geometry(Xb, Gb, self._cpsi, self._arc, self._c, geo)
         n = geo.shape[1]
-        xg, yg, pshape, area_w = self._rule
+        pshape = self._rule[2]
         out_film = None
         if self._film_params is not None:
             ry = np.ascontiguousarray(np.tile(self._arc[A_RY], n // self._arc.shape[1]))
@@ -530,8 +531,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                     md.traction_law.lubricant.dynamic_viscosity(md.temperature, pn),
                     dtype=float), pn.shape))
         _ball_forces(Xb, Gb, self._cpsi, self._arc, self._c, geo, film, self._law_id,
-                     self._law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes, xg, yg,
-                     pshape, area_w, Fd_b, tr, pocket, R, Gc)
+                     self._law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
+                     *self._rule, Fd_b, tr, pocket, R, Gc)
         return out_film
 
     def _details(self, X, G, geo, tr, pocket, Fd, u_ball, film):
