@@ -25,12 +25,50 @@ Schur complement, as for the purely banded preconditioner before.
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 from scipy.linalg import lapack, toeplitz
 from scipy.sparse import csr_matrix
 
 from ..errors import ConvergenceError
 from .kernel import smooth_kernel
+
+
+@numba.njit(cache=True)
+def _band_solve_rows(lu, piv, kl, ku, B):
+    """Solve ``A X = B`` in place for many right-hand sides with the ``dgbtrf`` factors of A.
+
+    The same operations as LAPACK ``dgbtrs`` (row interchanges and unit-lower multipliers,
+    then the banded upper-triangular back-substitution), but with ``B`` stored row-major so
+    the innermost loop runs over the right-hand sides (contiguous, vectorised). ``dgbtrs``
+    on the 1022 x 129 right-hand sides of a 1024-node grid took 5 ms, most of the setup.
+    ``piv`` is 0-based as SciPy returns it.
+    """
+    m, nr = B.shape
+    kd = kl + ku
+    for j in range(m - 1):
+        lm = min(kl, m - 1 - j)
+        p = piv[j]
+        if p != j:
+            for c in range(nr):
+                tmp = B[p, c]
+                B[p, c] = B[j, c]
+                B[j, c] = tmp
+        for i in range(1, lm + 1):
+            f = lu[kd + i, j]
+            if f != 0.0:
+                for c in range(nr):
+                    B[j + i, c] -= f * B[j, c]
+    for j in range(m - 1, -1, -1):
+        d = 1.0 / lu[kd, j]
+        for c in range(nr):
+            B[j, c] *= d
+        for i in range(max(0, j - kd), j):
+            f = lu[kd + i - j, j]
+            if f != 0.0:
+                for c in range(nr):
+                    B[i, c] -= f * B[j, c]
+    return B
 
 
 class _Grids:
@@ -98,9 +136,7 @@ class TwoLevelPreconditioner:
                 c[0] = 0.0
             U[rows, g.idx[node]] += c * (1.0 - g.t[node])
             U[rows, g.idx[node] + 1] += c * g.t[node]
-        Z, info = lapack.dgbtrs(lu, kl, ku, U, piv)
-        if info != 0:
-            raise ConvergenceError("ehl.newton", float("nan"), "banded back-substitution failed")
+        Z = _band_solve_rows(lu, piv, kl, ku, U)
         C = g.kc @ (g.pt @ Z)
         C[np.diag_indices_from(C)] += 1.0
         clu, cpiv, info = lapack.dgetrf(C)

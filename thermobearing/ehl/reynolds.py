@@ -132,3 +132,29 @@ def banded_values(s, b, kd, row_scale, diag_add, kl, ku):
                 v += diag_add[i]
             ab[kl + ku - o, j] = v
     return ab
+
+
+@numba.njit(cache=True)
+def dense_jacobian(s, b, K):
+    """Full ``dR/dP = S + B K`` over the interior nodes (the dense Newton baseline).
+
+    Row ``r`` (node ``i = r + 1``) has film coefficients ``b[k, r]`` on nodes ``i + k - 2``
+    (k = 0..3) and local coefficients ``s[k, r]`` on the interior pressure ``r + k - 2``; the
+    film at node ``q`` depends on the interior pressure ``c`` (node ``c + 1``) through
+    ``K[|q - c - 1|]``.
+    """
+    m = s.shape[1]
+    J = np.zeros((m, m))
+    for r in range(m):
+        for k in range(4):
+            q = r + k - 1  # node of film offset k - 2
+            bk = b[k, r]
+            if q < 0 or bk == 0.0:
+                continue
+            for c in range(m):
+                J[r, c] += bk * K[abs(q - c - 1)]
+        for k in range(4):
+            c = r + k - 2
+            if 0 <= c < m:
+                J[r, c] += s[k, r]
+    return J

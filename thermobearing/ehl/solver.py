@@ -205,24 +205,10 @@ class LineProblem:
         return out
 
     def dense_jacobian_r(self, st: dict) -> np.ndarray:
-        """Full ``dR/dP`` over interior nodes (dense; baseline): ``S + B K`` with the rows of
-        ``B K`` formed as four row-scaled shifts of the (cached) influence matrix."""
-        m = self.n - 2
-        Kd = self.cache.get("dense_kernel")
-        if Kd is None:
-            Kd = self.cache["dense_kernel"] = self.kernel.dense()[:, 1:-1]
-        b_m2, b_m1, b_0, b_p1 = st["b"]
-        J = b_0[:, None] * Kd[1:-1]
-        J += b_m1[:, None] * Kd[:-2]
-        J += b_p1[:, None] * Kd[2:]
-        J[1:] += b_m2[1:, None] * Kd[: m - 1]
-        s_m2, s_m1, s_0, s_p1 = st["s"]
-        rows = np.arange(m)
-        J[rows, rows] += s_0
-        J[rows[1:], rows[1:] - 1] += s_m1[1:]
-        J[rows[2:], rows[2:] - 2] += s_m2[2:]
-        J[rows[:-1], rows[:-1] + 1] += s_p1[:-1]
-        return J
+        """Full ``dR/dP`` over interior nodes (dense; baseline), compiled
+        (:func:`thermobearing.ehl.reynolds.dense_jacobian`)."""
+        return reynolds.dense_jacobian(np.asarray(st["s"]), np.asarray(st["b"]),
+                                       self.kernel.coeffs)
 
     def banded_jacobian_r(
         self, st: dict, band: int, row_scale: np.ndarray, diag_add: np.ndarray,
