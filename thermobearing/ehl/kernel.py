@@ -67,9 +67,19 @@ class LogKernel:
         circ[self.n + 1 :] = self.coeffs[1:][::-1]
         self._m = m
         self._spectrum = np.fft.rfft(circ)
+        self._dense: np.ndarray | None = None
+
+    #: up to this many nodes the product is a cached dense matrix-vector product (BLAS):
+    #: 4 us against 28 us for the two FFTs at 128 nodes, 12 against 32 us at 256 (session 4)
+    DENSE_MAX = 256
 
     def apply(self, p: np.ndarray) -> np.ndarray:
-        """Deformation ``sum_j K_|i-j| p_j`` at every node, by DC-FFT (O(n log n))."""
+        """Deformation ``sum_j K_|i-j| p_j`` at every node, by DC-FFT (O(n log n)), or by the
+        cached dense matrix for ``n <= DENSE_MAX``."""
+        if self.n <= self.DENSE_MAX:
+            if self._dense is None:
+                self._dense = self.dense()
+            return self._dense @ p
         pad = np.zeros(self._m)
         pad[: self.n] = p
         return np.fft.irfft(np.fft.rfft(pad) * self._spectrum, self._m)[: self.n]

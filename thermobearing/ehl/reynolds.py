@@ -158,3 +158,27 @@ def dense_jacobian(s, b, K):
             if 0 <= c < m:
                 J[r, c] += s[k, r]
     return J
+
+
+@numba.njit(cache=True)
+def fischer_burmeister(a, b):
+    """Fischer-Burmeister function ``phi = a + b - sqrt(a^2 + b^2)`` and its partial
+    derivatives (Fischer 1992, Optimization 24:269-284); at ``a = b = 0`` the element
+    ``1 - 1/sqrt(2)`` of the generalized Jacobian is used for both. ``phi = 0`` iff
+    ``a >= 0, b >= 0, a b = 0`` (the complementarity form of the Reynolds cavitation
+    condition, :mod:`thermobearing.ehl.solver`)."""
+    n = a.shape[0]
+    phi = np.empty(n)
+    da = np.empty(n)
+    db = np.empty(n)
+    c = 1.0 - 1.0 / np.sqrt(2.0)
+    for i in range(n):
+        r = np.sqrt(a[i] * a[i] + b[i] * b[i])
+        phi[i] = a[i] + b[i] - r
+        if r < 1e-300:
+            da[i] = c
+            db[i] = c
+        else:
+            da[i] = 1.0 - a[i] / r
+            db[i] = 1.0 - b[i] / r
+    return phi, da, db

@@ -177,16 +177,23 @@ class LineProblem:
         q_old = H if self.q_old is None else self.q_old
         R, eps = reynolds.residual(P, H, eta, rho, self.f_e, self.f_r, self.lam, self.dx,
                                    self.w0, self.w1, self.w2, inv_dt, q_old)
-        out = {"H": H, "R": R, "eps": eps, "eta": eta, "rho": rho}
-        if not jacobian:
-            return out
+        out = {"P": P, "H": H, "R": R, "eps": eps, "eta": eta, "rho": rho, "deta": deta,
+               "drho": drho}
+        if jacobian:
+            self.add_jacobian(out)
+        return out
+
+    def add_jacobian(self, st: dict) -> dict:
+        """Add the Jacobian pieces to a residual evaluation ``st`` of :meth:`evaluate`:
+        ``s``, ``b`` (rows = offsets -2, -1, 0, +1; ``S`` on interior pressures, ``B`` on node
+        films), ``b_sum`` (the ``H0`` column) and ``scale`` (|diagonal|)."""
+        inv_dt = 0.0 if self.dt is None else 1.0 / self.dt
         K = self.kernel.coeffs
         s, b, b_sum, scale = reynolds.jacobian_pieces(
-            P, H, eps, eta, deta, rho, drho, self.f_r, self.dx, self.w0, self.w1, self.w2,
-            inv_dt, K[0], K[1], K[2])
-        # s, b: rows = offsets -2, -1, 0, +1 (S on interior pressures, B on node films)
-        out.update(s=s, b=b, b_sum=b_sum, scale=scale)
-        return out
+            st["P"], st["H"], st["eps"], st["eta"], st["deta"], st["rho"], st["drho"],
+            self.f_r, self.dx, self.w0, self.w1, self.w2, inv_dt, K[0], K[1], K[2])
+        st.update(s=s, b=b, b_sum=b_sum, scale=scale)
+        return st
 
     # --------------------------------------------------------------- products
     def apply_b(self, b: tuple, v_full: np.ndarray) -> np.ndarray:
@@ -290,17 +297,6 @@ def _gmres(matvec, prec, rhs: np.ndarray, rtol: float, max_it: int) -> tuple[np.
     return y @ Z[:kk], kk
 
 
-def _fb(P: np.ndarray, s: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Fischer-Burmeister value and the two partial derivatives."""
-    r = np.sqrt(P * P + s * s)
-    phi = P + s - r
-    tiny = r < 1e-300
-    rs = np.where(tiny, 1.0, r)
-    da = np.where(tiny, 1.0 - 1.0 / math.sqrt(2.0), 1.0 - P / rs)
-    db = np.where(tiny, 1.0 - 1.0 / math.sqrt(2.0), 1.0 - s / rs)
-    return phi, da, db
-
-
 def newton_solve(
     prob: LineProblem,
     P: np.ndarray,
@@ -363,11 +359,9 @@ def newton_solve(
         st = prob.evaluate(Pv, H0v, jacobian=False)
         if st is None:
             return math.inf, None
-        s = -st["R"] / scale
-        phi = _fb(Pv[1:-1], s)[0]
+        phi = reynolds.fischer_burmeister(Pv[1:-1], -st["R"] / scale)[0]
         g = dx * np.sum(Pv[1:-1]) - half_pi
-        F = np.concatenate((phi, [g]))
-        return 0.5 * float(F @ F), F
+        return 0.5 * (float(phi @ phi) + g * g), st
 
     st = prob.evaluate(P, H0)
     if st is None:
@@ -382,9 +376,11 @@ def newton_solve(
     for it in range(1, max_iter + 1):
         scale = st["scale"]
         s = -st["R"] / scale
-        phi, da, db = _fb(P[1:-1], s)
+        phi, da, db = reynolds.fischer_burmeister(P[1:-1], s)
         g = dx * np.sum(P[1:-1]) - half_pi
-        F = np.concatenate((phi, [g]))
+        F = np.empty(m + 1)
+        F[:m] = phi
+        F[m] = g
         res = float(np.max(np.abs(F)))
         if res < tol:
             return P, H0, NewtonReport(it - 1, res, lin_its, True)
@@ -433,7 +429,7 @@ def newton_solve(
             Pt = P.copy()
             Pt[1:-1] += t * step[:m]
             H0t = H0 + t * step[m]
-            ft, _Ft = merit(Pt, H0t, scale)
+            ft, st_t = merit(Pt, H0t, scale)
             if ft <= fref - 1e-4 * t * 2.0 * f0:
                 accepted = True
                 break
@@ -443,7 +439,7 @@ def newton_solve(
                 "ehl.newton", res, "line search failed", {"iteration": it, "n": n, "H0": H0}
             )
         P, H0 = Pt, H0t
-        st = prob.evaluate(P, H0)
+        st = prob.add_jacobian(st_t)
     raise ConvergenceError(
         "ehl.newton", res, f"no convergence in {max_iter} Newton iterations", {"n": n}
     )

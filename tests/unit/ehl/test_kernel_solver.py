@@ -112,7 +112,7 @@ def test_two_level_preconditioner_is_close_to_the_newton_matrix():
     # solution on 256 nodes and at a perturbed state; measured 0.08 on 512 nodes (session 4)
     from thermobearing.ehl.line import solve_dimensionless
     from thermobearing.ehl.precond import TwoLevelPreconditioner
-    from thermobearing.ehl.solver import _fb
+    from thermobearing.ehl.reynolds import fischer_burmeister as _fb
 
     M, L, n = 100.0, 10.0, 256
     sol = solve_dimensionless(M, L, n=n, max_grid_error=math.inf)
