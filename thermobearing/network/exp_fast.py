@@ -40,9 +40,7 @@ import numba
 import numpy as np
 
 from .exponential import (
-    _nb_combine,
     _nb_diagonalise,
-    _nb_flows,
     _nb_phi_row,
     _nb_remainder,
     _nb_scaled_jacobian,
@@ -54,17 +52,56 @@ _COND_MAX = 1e8
 
 # ------------------------------------------------------------ compiled kernels
 @numba.njit(cache=True)
-def _fk_stage2(lam, V, W, y0, f0, c1, td, h):  # pragma: no cover - compiled
-    """U2 = y_n + (y(h/2) - y_n) for the forcing f_n (+ c_1 s/h) [K]."""
-    n = y0.shape[0]
-    cs = np.zeros((4, n))
-    use = np.zeros(4, dtype=np.bool_)
-    use[0] = True
-    use[1] = td
+def _phi_tab(lam, tau, kmax):  # pragma: no cover - compiled
+    """tab[i, k] = phi_k(tau lambda_i), k = 0..kmax, in the dtype of lambda (real for a
+    real spectrum: no complex arithmetic on symmetric networks)."""
+    n = lam.shape[0]
+    zero = 0.0 * lam[0]
+    tab = np.zeros((n, kmax + 1)) + zero
+    row = np.zeros(kmax + 1) + zero
     for i in range(n):
-        cs[0, i] = f0[i]
-        cs[1, i] = c1[i]
-    return y0 + _nb_combine(lam, V, W, cs, use, 0.5 * h, h, 0)
+        _nb_phi_row(tau * lam[i], kmax, row)
+        for k in range(kmax + 1):
+            tab[i, k] = row[k]
+    return tab
+
+
+@numba.njit(cache=True)
+def _project(W, v):  # pragma: no cover - compiled
+    """W v: a forcing [W] in the eigenbasis, scaled by C^-1 [K/s]."""
+    n = W.shape[0]
+    out = np.zeros(n) + 0.0 * W[0, 0]
+    for i in range(n):
+        acc = out[i]
+        for j in range(v.shape[0]):
+            acc += W[i, j] * v[j]
+        out[i] = acc
+    return out
+
+
+@numba.njit(cache=True)
+def _back(V, y0, acc):  # pragma: no cover - compiled
+    """y0 + Re(V acc) [K]."""
+    n = y0.shape[0]
+    out = np.empty(n)
+    for r in range(n):
+        v = 0.0 * acc[0]
+        for e in range(acc.shape[0]):
+            v += V[r, e] * acc[e]
+        out[r] = y0[r] + v.real
+    return out
+
+
+@numba.njit(cache=True)
+def _fk_stage2(lam, V, W, y0, wf, c1, td, h):  # pragma: no cover - compiled
+    """U2 = y(h/2) for the forcing f_n (+ c_1 s/h): y_n + V [tau phi1(tau lam) W f_n
+    (+ tau theta phi2(tau lam) W c_1)], tau = h/2, theta = 1/2 [K]. ``wf`` = W f_n."""
+    tau = 0.5 * h
+    tab = _phi_tab(lam, tau, 2)
+    acc = tau * tab[:, 1] * wf
+    if td:
+        acc = acc + (0.5 * tau) * tab[:, 2] * _project(W, c1)
+    return _back(V, y0, acc)
 
 
 _JACOBI_MAX_N = 12  # above this, LAPACK's eigh (O(n^3) with a smaller constant) is used
@@ -156,91 +193,91 @@ def _fk_start_sym(K, s, jq, rs, y0, q0, c1, td, h):  # pragma: no cover - compil
         for j in range(n):
             V[i, j] = rs[i] * Q[i, j]
             W[j, i] = Q[i, j] * rs[i]
-    U2 = _fk_stage2(lam, V, W, y0, f0, c1, td, h)
-    return lam, V, W, JqM, f0, U2
+    wf = _project(W, f0)
+    U2 = _fk_stage2(lam, V, W, y0, wf, c1, td, h)
+    return lam, V, W, JqM, f0, wf, U2
 
 
 @numba.njit(cache=True)
-def _fk_stage3(lam, V, W, JqM, y0, f0, c1, td, h, U2, q2, q0):  # pragma: no cover
-    """(D2, U3): D2 = g_n(U2) [W]; U3 = y_n + (y(h) - y_n) for f_n + D2 (+ c_1 s/h) [K]."""
-    n = y0.shape[0]
+def _fk_stage3(lam, V, W, JqM, y0, wf, c1, td, h, U2, q2, q0):  # pragma: no cover
+    """(D2 [W], W D2, phi table at h lambda (k = 0..5), U3 [K]): D2 = g_n(U2);
+    U3 = y(h) for the forcing f_n + D2 (+ c_1 s/h) = y_n + V [h phi1 W (f_n + D2)
+    (+ h phi2 W c_1)]."""
     D2 = _nb_remainder(U2, q2, q0, JqM, y0, c1, 0.5 if td else 0.0)
-    cs = np.zeros((4, n))
-    use = np.zeros(4, dtype=np.bool_)
-    use[0] = True
-    use[1] = td
-    for i in range(n):
-        cs[0, i] = f0[i] + D2[i]
-        cs[1, i] = c1[i]
-    return D2, y0 + _nb_combine(lam, V, W, cs, use, h, h, 0)
+    wd2 = _project(W, D2)
+    tab = _phi_tab(lam, h, 5)
+    acc = h * tab[:, 1] * (wf + wd2)
+    if td:
+        acc = acc + h * tab[:, 2] * _project(W, c1)
+    return D2, wd2, tab, _back(V, y0, acc)
 
 
 @numba.njit(cache=True)
-def _fk_finish(lam, V, W, JqM, y0, f0, c1, td, h, U3, q3, q0, D2, atol, rtol, adaptive,
-               K, C, invC, bnd_index, bnd_G, bnd_T, str_last, str_W, str_Tin,
-               s_lam, s_V, s_M, j):  # pragma: no cover - compiled
+def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol, rtol,
+               K, C, flow, flow0, s_lam, s_V, s_M, j):  # pragma: no cover - compiled
     """Step completion: (y_{n+1} [K], scaled error, generated, to_boundaries, to_streams,
     stored [J], rate at the step end from the step's own solution [K/s]).
 
-    y_{n+1} = y_n + h phi1 F_n + 2 h phi3 a2 + 6 h phi4 a3 with a2 = 8 D2 - D3,
-    a3 = 2 D3 - 8 D2 (exponential.py); error estimate 6 h phi4 a3 in the max norm of
-    |e| / (atol + rtol |y_{n+1}|). For an accepted step (err <= 1 or fixed steps) the audit
-    terms of the discrete energy balance and, when ``j >= 0``, the dense-output
-    coefficients of the step are written to row j of the store (s_lam, s_V, s_M).
+    In the eigenbasis (m_k = W c_k): m_0 = W f_n, m_1 = W c_1 (td), m_2 = 8 W D2 - W D3,
+    m_3 = 2 W D3 - 8 W D2 (exponential.py: a2, a3 of the interpolated remainder);
+    y_{n+1} = y_n + V h [phi1 m_0 + phi2 m_1 + 2 phi3 m_2 + 6 phi4 m_3] (phi_k at h lambda,
+    ``tab``); error estimate V h 6 phi4 m_3 in the max norm of |e| / (atol + rtol
+    |y_{n+1}|); I = int_0^h (y - y_n) ds = V h^2 [phi2 m_0 + phi3 m_1 + 2 phi4 m_2 +
+    6 phi5 m_3]. For an accepted step (err <= 1) the energy-audit terms (module docstring
+    of exponential.py; flows linear in y: to_b = flow[0] y_bar - flow0[0], to_s =
+    flow[1] y_bar - flow0[1]) and, when ``j >= 0``, the dense-output row j of the store.
     """
     n = y0.shape[0]
     D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
-    cs = np.zeros((4, n))
-    use = np.ones(4, dtype=np.bool_)
-    use[1] = td
-    for i in range(n):
-        cs[0, i] = f0[i]
-        cs[1, i] = c1[i]
-        cs[2, i] = 8.0 * D2[i] - D3[i]
-        cs[3, i] = 2.0 * D3[i] - 8.0 * D2[i]
-    y1 = y0 + _nb_combine(lam, V, W, cs, use, h, h, 0)
-    est_use = np.zeros(4, dtype=np.bool_)
-    est_use[3] = True
-    est = _nb_combine(lam, V, W, cs, est_use, h, h, 0)
+    wd3 = _project(W, D3)
+    m2 = 8.0 * wd2 - wd3
+    m3 = 2.0 * wd3 - 8.0 * wd2
+    wc1 = _project(W, c1) if td else 0.0 * wf
+    ph1 = tab[:, 1]
+    ph2 = tab[:, 2]
+    ph3 = tab[:, 3]
+    ph4 = tab[:, 4]
+    y1 = _back(V, y0, h * (ph1 * wf + ph2 * wc1 + 2.0 * ph3 * m2 + 6.0 * ph4 * m3))
+    est = _back(V, np.zeros(n), (6.0 * h) * ph4 * m3)
     err = 0.0
     for i in range(n):
         e = abs(est[i]) / (atol + rtol * abs(y1[i]))
         if not e <= err:  # also catches NaN
             err = e
     rate = np.zeros(n)
-    if (err > 1.0 and adaptive) or not math.isfinite(err):
+    if err > 1.0 or not math.isfinite(err):
         return y1, err, 0.0, 0.0, 0.0, 0.0, rate
-    integral = _nb_combine(lam, V, W, cs, use, h, h, 1)
+    integral = _back(V, np.zeros(n), (h * h) * (ph2 * wf + ph3 * wc1 + 2.0 * ph4 * m2
+                                                + 6.0 * tab[:, 5] * m3))
     gen = 0.0
     stored = 0.0
+    fb = -flow0[0]
+    fs = -flow0[1]
     for i in range(n):
-        gen += h * (q0[i] + cs[2, i] / 3.0 + cs[3, i] / 4.0)
+        cs2 = 8.0 * D2[i] - D3[i]
+        cs3 = 2.0 * D3[i] - 8.0 * D2[i]
+        gen += h * (q0[i] + cs2 / 3.0 + cs3 / 4.0)
+        v = f0[i] + cs2 + cs3  # C y'(h) = f_n + (dq/dT - K)(y_{n+1} - y_n) + G(h)
         if td:
             gen += h * c1[i] / 2.0
-        for m in range(n):
-            gen += JqM[i, m] * integral[m]
-        stored += C[i] * (y1[i] - y0[i])
-    ybar = y0 + integral / h
-    fb, fs = _nb_flows(ybar, bnd_index, bnd_G, bnd_T, str_last, str_W, str_Tin)
-    # C y'(h) = f_n + (-K + dq/dT)(y_{n+1} - y_n) + G(h), G(h) = sum_{k>=1, used} c_k
-    for i in range(n):
-        v = f0[i] + cs[2, i] + cs[3, i]
-        if td:
             v += c1[i]
         for m in range(n):
+            gen += JqM[i, m] * integral[m]
             v += (JqM[i, m] - K[i, m]) * (y1[m] - y0[m])
-        rate[i] = v * invC[i]
+        rate[i] = v / C[i]
+        stored += C[i] * (y1[i] - y0[i])
+        ybar = y0[i] + integral[i] / h
+        fb += flow[0, i] * ybar
+        fs += flow[1, i] * ybar
     if j >= 0:
         for e in range(n):
             s_lam[j, e] = lam[e]
             for r in range(n):
                 s_V[j, r, e] = V[r, e]
-            for k in range(4):
-                acc = 0.0 * W[0, 0]  # W's dtype (real or complex)
-                if use[k]:
-                    for m in range(n):
-                        acc += W[e, m] * cs[k, m]
-                s_M[j, e, k] = acc
+            s_M[j, e, 0] = wf[e]
+            s_M[j, e, 1] = wc1[e]
+            s_M[j, e, 2] = m2[e]
+            s_M[j, e, 3] = m3[e]
     return y1, err, gen, h * fb, h * fs, stored, rate
 
 
@@ -377,96 +414,120 @@ def _general_start(core, K, jq, y0, q0, c1, td, h):
         raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
                                        "use method='tr_bdf2' for this network")
     f0 = core.sys.s - K @ y0 + q0
-    U2 = _fk_stage2(lam, V, W, y0, f0, c1, td, h)
+    wf = _project(W, f0)
+    U2 = _fk_stage2(lam, V, W, y0, wf, c1, td, h)
     del n
-    return lam, V, W, JqM, f0, U2
+    return lam, V, W, JqM, f0, wf, U2
+
+
+class _Context:
+    """Per-build constants of the compiled path (a driver's network at one revision)."""
+
+    __slots__ = ("sym", "rs", "flow", "flow0", "zeros", "empty")
+
+    def __init__(self, sys_, C: np.ndarray) -> None:
+        n = len(C)
+        K = sys_.K
+        self.sym = bool(np.array_equal(K, K.T))
+        self.rs = 1.0 / np.sqrt(C)  # C^-1/2 [(J/K)^-1/2]
+        # heat rates to the boundaries and to the streams are linear in the state:
+        # sum G_b (T_i - T_b) = flow[0] T - flow0[0]; sum W (T_last - T_in) = flow[1] T - ...
+        flow = np.zeros((2, n))
+        np.add.at(flow[0], sys_.bnd_index, sys_.bnd_G)
+        np.add.at(flow[1], sys_.str_last, sys_.str_W)
+        self.flow = flow
+        self.flow0 = np.array([float(sys_.bnd_G @ sys_.bnd_T),
+                               float(sys_.str_W @ sys_.str_Tin)])
+        self.zeros = np.zeros(n)
+        self.empty = (np.zeros((0, n)), np.zeros((0, n, n)), np.zeros((0, n, 4)))
+
+
+def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, zeros):
+    """(q [W], dq/dT [W/K], heat evaluations) at a step start; dq/dT (n,) or (n, n)."""
+    core = driver.core
+    if heat is None:
+        return zeros, zeros, 0
+    if heat_with_jacobian is not None:
+        r, jq = heat_with_jacobian(tt, T)
+        calls = 1
+    else:
+        r = heat(tt, T)
+        calls = 1
+        if core.jacobian_mode == "none":
+            jq = zeros
+        elif heat_jacobian is not None:
+            jq = heat_jacobian(tt, T)
+        else:
+            if type(r) is not np.ndarray or r.shape != (n,):
+                r = driver.network.heat_vector(r)
+            core.refresh_jacobian(t, T, r)  # finite differences (counts its own calls)
+            core.stats["jacobians"] -= 1  # counted by the caller
+            jq = core.Jq if core.Jq is not None else zeros
+    if type(r) is not np.ndarray or r.shape != (n,):
+        r = driver.network.heat_vector(r)
+    if type(jq) is not np.ndarray or jq.dtype != np.float64:
+        jq = np.asarray(jq, dtype=float)
+    if not math.isfinite(r.sum()):
+        raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
+    if jq.shape not in ((n,), (n, n)) or not math.isfinite(jq.sum()):
+        from ..errors import InputError
+
+        raise InputError("heat_jacobian", jq.shape,
+                         f"a finite ({n},) diagonal or ({n}, {n}) matrix")
+    return r, jq, calls
+
+
+def _fail(driver, exc, t, h, y):
+    from ..errors import ConvergenceError
+
+    return ConvergenceError(f"network stepper {driver.method_name}", exc.residual,
+                            exc.reason, {"time": t, "step_size": h, "temperatures": y})
 
 
 def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobian,
                 heat_with_jacobian, rec, td: bool) -> np.ndarray:
     """Integrate one smooth segment [t0, t1] with the compiled exprb43 path; returns the
-    state at t1. Records into ``rec`` like the generic driver loop (steppers._Driver)."""
-    from ..errors import ConvergenceError
-
+    state at t1. Same step-size control as the generic driver loop (steppers._Driver:
+    first trial step the whole segment, capped at 4x the last segment's first step;
+    rejection factor max(0.1, 0.9 err^-1/4), at most 1/2 after a rejection in a row;
+    growth min(5, max(0.2, 0.9 err^-1/4)) outside [1, 1.2]); records into ``rec`` alike."""
     core = driver.core
     sys_ = core.sys
-    K, s, C, invC = sys_.K, sys_.s, core.C, core.invC
+    K, s, C = sys_.K, sys_.s, core.C
     n = core.n
     stats = core.stats
-    info = driver.fast_info
-    if info is None:
-        sym = bool(np.array_equal(K, K.T))
-        info = driver.fast_info = (sym, 1.0 / np.sqrt(C))
-    sym, rs = info
-    t_left = float(np.nextafter(t1, -math.inf))
-    net = driver.network
-    zeros = np.zeros(n)
-    jac_mode = core.jacobian_mode
-    if heat is None:
-        jac_mode = "none"
+    ctx = driver.fast_info
+    if ctx is None:
+        ctx = driver.fast_info = _Context(sys_, C)
+    sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
+    t_left = core.t_end_left  # a segment sees its end breakpoint from the left
+    if heat is not None and heat_with_jacobian is None and heat_jacobian is None \
+            and core.jacobian_mode not in ("none", "fd", "fd_diagonal"):
+        from ..errors import InputError
 
-    def q_of(t: float, T: np.ndarray) -> np.ndarray:
-        stats["heat_evaluations"] += 1
-        if heat is None:
-            return zeros
-        r = heat(t if t < t1 else t_left, T)
-        if type(r) is not np.ndarray or r.shape != (n,):
-            r = net.heat_vector(r)
-        return r
-
-    def start(t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(q, dq/dT) at a step start; dq/dT (n,) diagonal or (n, n)."""
-        stats["jacobians"] += 1
-        tt = t if t < t1 else t_left
-        if heat_with_jacobian is not None and heat is not None:
-            stats["heat_evaluations"] += 1
-            r, jq = heat_with_jacobian(tt, T)
-            if type(r) is not np.ndarray or r.shape != (n,):
-                r = net.heat_vector(r)
-            jq = np.asarray(jq, dtype=float)
-        else:
-            r = q_of(t, T)
-            if heat is None or jac_mode == "none":
-                jq = zeros
-            elif heat_jacobian is not None:
-                jq = np.asarray(heat_jacobian(tt, T), dtype=float)
-            else:
-                core.refresh_jacobian(t, T, r)
-                stats["jacobians"] -= 1  # counted above
-                jq = core.Jq if core.Jq is not None else zeros
-        if not math.isfinite(r.sum()):
-            raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
-        if jq.shape not in ((n,), (n, n)) or not math.isfinite(jq.sum()):
-            from ..errors import InputError
-
-            raise InputError("heat_jacobian", jq.shape,
-                             f"a finite ({n},) diagonal or ({n}, {n}) matrix")
-        return r, jq
-
-    def fail(exc, t, h, y):
-        return ConvergenceError(f"network stepper {driver.method_name}", exc.residual,
-                                exc.reason, {"time": t, "step_size": h, "temperatures": y})
-
+        raise InputError("jacobian", core.jacobian_mode, "'fd', 'fd_diagonal' or 'none'")
+    atol, rtol = core.atol, core.rtol
     store = None
     if rec.active:
         store = rec.fast_store
         if store is None or store.y0.shape[1] != n:
             store = rec.fast_store = DenseStore(n, real=sym)
-    s_lam, s_V, s_M = ((store.lam, store.V, store.M) if store is not None else
-                       (np.zeros((0, n)), np.zeros((0, n, n)), np.zeros((0, n, 4))))
+    s_lam, s_V, s_M = ctx.empty
+    n_heat = 0
+    n_jac = 1
     try:
-        q0, jq = start(t0, y0)
+        q0, jq, calls = _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t0,
+                                      t0 if t0 < t1 else t_left, y0, n, zeros)
     except _NewtonFailure as exc:
-        raise fail(exc, t0, 0.0, y0) from None
+        raise _fail(driver, exc, t0, 0.0, y0) from None
+    n_heat += calls
     t, y = t0, y0
-    # first trial step: the whole segment (exact linear part), capped as in the driver
     if driver.first_step is not None:
         h = min(driver.first_step, t1 - t0)
     else:
         h = min(t1 - t0, driver.max_step)
         if driver.h_first is not None:
             h = min(h, 4.0 * driver.h_first)
-    p1 = 4.0  # error order 3 + 1
     first_in_segment = True
     rejected_in_row = False
     pending_rate = not rec.started  # the run's first point needs its rate
@@ -476,106 +537,136 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
             rec.t.append(t0)
             rec.y.append(y0.copy())
     tiny = 1e-12 * max(1.0, abs(t1))
-    lin = None
+    lin = False
     sym_now = sym and jq.ndim == 1
-    bnd = (sys_.bnd_index, sys_.bnd_G, sys_.bnd_T, sys_.str_last, sys_.str_W, sys_.str_Tin)
-    while t < t1 - tiny:
-        if t + h >= t1 - 1e-3 * h:
-            h = t1 - t
-            last = True
-        else:
-            last = False
-        try:
-            if td:  # c1 = h dq/dt, one-sided difference inside the segment
-                dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
-                c1 = (q_of(t + dt_fd, y) - q0) * (h / dt_fd)
+    c1 = zeros
+    facmax, max_step, min_step = driver.facmax, driver.max_step, driver.min_step
+    accepted = rejected = failures = 0
+    net = driver.network
+    try:
+        while t < t1 - tiny:
+            if t + h >= t1 - 1e-3 * h:
+                h = t1 - t
+                last = True
             else:
-                c1 = zeros
-            if lin is None:
-                if sym_now:
-                    lam, V, W, JqM, f0, U2 = _fk_start_sym(K, s, jq, rs, y, q0, c1, td, h)
-                else:
-                    lam, V, W, JqM, f0, U2 = _general_start(core, K, jq, y, q0, c1, td, h)
-                    if lam.dtype.kind == "c":
-                        if store is not None and store.lam.dtype.kind != "c":
-                            store.make_complex()
-                        elif store is None and s_lam.dtype.kind != "c":
-                            s_lam, s_V, s_M = (s_lam.astype(complex), s_V.astype(complex),
-                                               s_M.astype(complex))
-                lin = True
-                if pending_rate and rec.active:
-                    rec.r.append(f0 * invC)
-                pending_rate = False
-            else:
-                U2 = _fk_stage2(lam, V, W, y, f0, c1, td, h)
-            q2 = q_of(t + 0.5 * h, U2)
-            D2, U3 = _fk_stage3(lam, V, W, JqM, y, f0, c1, td, h, U2, q2, q0)
-            q3 = q_of(t + h, U3)
-            if store is not None:
-                j = store.reserve()
-                s_lam, s_V, s_M = store.lam, store.V, store.M
-            else:
-                j = -1
-            y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
-                lam, V, W, JqM, y, f0, c1, td, h, U3, q3, q0, D2, core.atol, core.rtol,
-                True, K, C, invC, *bnd, s_lam, s_V, s_M, j)
-            if not math.isfinite(err):
-                raise _NewtonFailure(math.inf, "non-finite exponential step")
-        except _NewtonFailure as exc:
-            stats["newton_failures"] += 1
-            h_new = h / 4.0
-            if h_new < driver.min_step:
-                raise fail(exc, t, h, y) from None
-            h = h_new
-            continue
-        if err > 1.0:
-            stats["rejected"] += 1
-            fac = max(0.1, 0.9 * err ** (-1.0 / p1))
-            if rejected_in_row:
-                fac = min(fac, 0.5)
-            rejected_in_row = True
-            h = h * fac
-            if h < driver.min_step:
-                raise ConvergenceError(
-                    f"network stepper {driver.method_name}", err,
-                    "step size underflow in error control",
-                    {"time": t, "step_size": h, "temperatures": y})
-            continue
-        # accept
-        rejected_in_row = False
-        if first_in_segment:
-            driver.h_first = h
-            first_in_segment = False
-        stats["steps"] += 1
-        t_start = t
-        t = t1 if last else t + h
-        rec.rows.append((t, gen, stored, to_b, to_s))
-        if store is not None:
-            store.t0[j] = t_start
-            store.h[j] = h
-            store.y0[j] = y
-            store.count = j + 1
-            rec.pieces.append(StorePiece(store, j, t_start, h))
-            rec.t.append(t)
-            rec.y.append(y1)
-            if last:
-                rec.r.append(rate)
-        y = y1
-        if not last:
+                last = False
             try:
-                q0, jq = start(t, y)
+                if td:  # c1 = h dq/dt, one-sided difference inside the segment
+                    dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
+                    tq = t + dt_fd
+                    r = heat(tq if tq < t1 else t_left, y)
+                    n_heat += 1
+                    if type(r) is not np.ndarray or r.shape != (n,):
+                        r = net.heat_vector(r)
+                    c1 = (r - q0) * (h / dt_fd)
+                if not lin:
+                    if sym_now:
+                        lam, V, W, JqM, f0, wf, U2 = _fk_start_sym(K, s, jq, rs, y, q0, c1,
+                                                                   td, h)
+                    else:
+                        lam, V, W, JqM, f0, wf, U2 = _general_start(core, K, jq, y, q0, c1,
+                                                                    td, h)
+                        if lam.dtype.kind == "c":
+                            if store is not None and store.lam.dtype.kind != "c":
+                                store.make_complex()
+                            s_lam, s_V, s_M = (a.astype(complex) for a in ctx.empty)
+                    lin = True
+                    if pending_rate and rec.active:
+                        rec.r.append(f0 / C)
+                    pending_rate = False
+                else:
+                    U2 = _fk_stage2(lam, V, W, y, wf, c1, td, h)
+                if heat is None:
+                    q2 = q3 = zeros
+                else:
+                    tq = t + 0.5 * h
+                    q2 = heat(tq if tq < t1 else t_left, U2)
+                    if type(q2) is not np.ndarray or q2.shape != (n,):
+                        q2 = net.heat_vector(q2)
+                D2, wd2, tab, U3 = _fk_stage3(lam, V, W, JqM, y, wf, c1, td, h, U2, q2, q0)
+                if heat is not None:
+                    tq = t + h
+                    q3 = heat(tq if tq < t1 else t_left, U3)
+                    if type(q3) is not np.ndarray or q3.shape != (n,):
+                        q3 = net.heat_vector(q3)
+                    n_heat += 2
+                if store is not None:
+                    j = store.reserve()
+                    s_lam, s_V, s_M = store.lam, store.V, store.M
+                else:
+                    j = -1
+                y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
+                    lam, V, W, JqM, y, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol,
+                    rtol, K, C, flow, flow0, s_lam, s_V, s_M, j)
+                if not math.isfinite(err):
+                    raise _NewtonFailure(math.inf, "non-finite exponential step")
             except _NewtonFailure as exc:
-                raise fail(exc, t, h, y) from None
-            sym_now = sym and jq.ndim == 1
-            lin = None
-            pending_rate = True
-        driver.h_last = h
-        fac = (driver.facmax if err == 0.0
-               else min(driver.facmax, max(0.2, 0.9 * err ** (-1.0 / p1))))
-        if not 1.0 <= fac <= 1.2:
-            h = h * fac
-        h = min(h, driver.max_step)
+                failures += 1
+                h_new = h / 4.0
+                if h_new < min_step:
+                    raise _fail(driver, exc, t, h, y) from None
+                h = h_new
+                continue
+            if err > 1.0:
+                rejected += 1
+                fac = max(0.1, 0.9 * err ** -0.25)
+                if rejected_in_row:
+                    fac = min(fac, 0.5)
+                rejected_in_row = True
+                h = h * fac
+                if h < min_step:
+                    from ..errors import ConvergenceError
+
+                    raise ConvergenceError(
+                        f"network stepper {driver.method_name}", err,
+                        "step size underflow in error control",
+                        {"time": t, "step_size": h, "temperatures": y})
+                continue
+            # accept
+            rejected_in_row = False
+            if first_in_segment:
+                driver.h_first = h
+                first_in_segment = False
+            accepted += 1
+            t_start = t
+            t = t1 if last else t + h
+            rec.rows.append((t, gen, stored, to_b, to_s))
+            if store is not None:
+                store.t0[j] = t_start
+                store.h[j] = h
+                store.y0[j] = y
+                store.count = j + 1
+                rec.pieces.append(StorePiece(store, j, t_start, h))
+                rec.t.append(t)
+                rec.y.append(y1)
+                if last:
+                    rec.r.append(rate)
+            y = y1
+            if not last:
+                try:
+                    q0, jq, calls = _start_values(driver, heat, heat_jacobian,
+                                                  heat_with_jacobian, t,
+                                                  t if t < t1 else t_left, y, n, zeros)
+                except _NewtonFailure as exc:
+                    raise _fail(driver, exc, t, h, y) from None
+                n_heat += calls
+                n_jac += 1
+                sym_now = sym and jq.ndim == 1
+                lin = False
+                pending_rate = True
+            driver.h_last = h
+            fac = facmax if err == 0.0 else min(facmax, max(0.2, 0.9 * err ** -0.25))
+            if not 1.0 <= fac <= 1.2:
+                h = h * fac
+            if h > max_step:
+                h = max_step
+    finally:
+        stats["steps"] += accepted
+        stats["rejected"] += rejected
+        stats["newton_failures"] += failures
+        stats["heat_evaluations"] += n_heat
+        stats["jacobians"] += n_jac
     if pending_rate and rec.active:  # (a segment ended by the tolerance guard)
         f, _ = core.f(t, y)
-        rec.r.append(f * invC)
+        rec.r.append(f * core.invC)
     return y

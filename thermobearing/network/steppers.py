@@ -495,11 +495,23 @@ class _Driver:
         self.h0_factor = 2.0  # first step 2 / max|dT/dt / (atol + rtol |T|)| [s]
         self.facmax = 5.0
 
+    def _fast_applies(self) -> bool:
+        """Whether the compiled exprb43 path (exp_fast) runs this network (cached per
+        build)."""
+        ok = self._fast_ok
+        if ok is None:
+            from . import exp_fast
+
+            self._exp_fast = exp_fast
+            ok = self._fast_ok = exp_fast.applies(self)
+        return ok
+
     def _build(self) -> None:
         self.asm = assembler_for(self.network)  # validates the network
         self.core = _Core(self.network, self.asm, self.rtol, self.atol, self.jacobian)
         self.core.adaptive = self.dt is None
         self.fast_info = None
+        self._fast_ok: bool | None = None
 
     def _initial_step(self, t0: float, t1: float, y0: np.ndarray, f0: np.ndarray) -> float:
         core = self.core
@@ -536,12 +548,9 @@ class _Driver:
         core.set_heat(heat, heat_jacobian)
         core.t_end = t1
         core.t_end_left = float(np.nextafter(t1, -math.inf))
-        if self.method.name == "exprb43":
-            from . import exp_fast
-
-            if exp_fast.applies(self):
-                return exp_fast.run_segment(self, t0, t1, y0, heat, heat_jacobian,
-                                            heat_with_jacobian, rec, time_dependent)
+        if self.method.name == "exprb43" and self._fast_applies():
+            return self._exp_fast.run_segment(self, t0, t1, y0, heat, heat_jacobian,
+                                              heat_with_jacobian, rec, time_dependent)
         try:
             core.update_system(y0)
             if core.has_alg:
