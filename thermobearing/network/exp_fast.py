@@ -165,13 +165,18 @@ def _jacobi_eigh(S):  # pragma: no cover - compiled
 
 @numba.njit(cache=True)
 def _fk_start_sym(K, s, jq, rs, y0, q0, c1, td, h):  # pragma: no cover - compiled
-    """Step start on a symmetric network: (lambda, V, W, dq/dT matrix, f_n, U2).
+    """Step start on a symmetric network: (ok, lambda, V, W, dq/dT matrix, f_n, W f_n, U2);
+    ok = q_n and dq/dT are finite.
 
     S = -C^-1/2 (K - diag(jq)) C^-1/2 = Q diag(lambda) Q^T (cyclic Jacobi up to 12 nodes,
     LAPACK ``eigh`` above), V = C^-1/2 Q,
     W = V^-1 C^-1 = Q^T C^-1/2; ``rs`` = C^-1/2 [(J/K)^-1/2], ``jq`` = diagonal dq/dT [W/K].
     """
     n = y0.shape[0]
+    chk = 0.0
+    for i in range(n):
+        chk += q0[i] + jq[i]
+    ok = math.isfinite(chk)
     f0 = np.empty(n)
     S = np.empty((n, n))
     JqM = np.zeros((n, n))
@@ -183,6 +188,8 @@ def _fk_start_sym(K, s, jq, rs, y0, q0, c1, td, h):  # pragma: no cover - compil
         f0[i] = v
         S[i, i] += jq[i] * rs[i] * rs[i]
         JqM[i, i] = jq[i]
+    if not ok:  # a non-finite heat or Jacobian: nothing to decompose
+        S[:, :] = 0.0
     if n <= _JACOBI_MAX_N:
         lam, Q = _jacobi_eigh(S)
     else:
@@ -195,7 +202,7 @@ def _fk_start_sym(K, s, jq, rs, y0, q0, c1, td, h):  # pragma: no cover - compil
             W[j, i] = Q[i, j] * rs[i]
     wf = _project(W, f0)
     U2 = _fk_stage2(lam, V, W, y0, wf, c1, td, h)
-    return lam, V, W, JqM, f0, wf, U2
+    return ok, lam, V, W, JqM, f0, wf, U2
 
 
 @numba.njit(cache=True)
@@ -214,7 +221,8 @@ def _fk_stage3(lam, V, W, JqM, y0, wf, c1, td, h, U2, q2, q0):  # pragma: no cov
 
 @numba.njit(cache=True)
 def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol, rtol,
-               K, C, flow, flow0, s_lam, s_V, s_M, j):  # pragma: no cover - compiled
+               K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t
+               ):  # pragma: no cover - compiled
     """Step completion: (y_{n+1} [K], scaled error, generated, to_boundaries, to_streams,
     stored [J], rate at the step end from the step's own solution [K/s]).
 
@@ -225,7 +233,8 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
     |y_{n+1}|); I = int_0^h (y - y_n) ds = V h^2 [phi2 m_0 + phi3 m_1 + 2 phi4 m_2 +
     6 phi5 m_3]. For an accepted step (err <= 1) the energy-audit terms (module docstring
     of exponential.py; flows linear in y: to_b = flow[0] y_bar - flow0[0], to_s =
-    flow[1] y_bar - flow0[1]) and, when ``j >= 0``, the dense-output row j of the store.
+    flow[1] y_bar - flow0[1]) and, when ``j >= 0``, the dense-output row j of the store
+    (step start t [s], h, y_n and the spectral data).
     """
     n = y0.shape[0]
     D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
@@ -270,7 +279,10 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
         fb += flow[0, i] * ybar
         fs += flow[1, i] * ybar
     if j >= 0:
+        s_t0[j] = t
+        s_h[j] = h
         for e in range(n):
+            s_y0[j, e] = y0[e]
             s_lam[j, e] = lam[e]
             for r in range(n):
                 s_V[j, r, e] = V[r, e]
@@ -395,6 +407,8 @@ def _general_start(core, K, jq, y0, q0, c1, td, h):
     """Step start on a non-symmetric network (or a full dq/dT): the general
     eigendecomposition of exponential.py (real, else complex; defective bases refused)."""
     n = core.n
+    if not (math.isfinite(q0.sum()) and math.isfinite(jq.sum())):
+        return (False, *(None,) * 7)
     JqM = np.diag(jq) if jq.ndim == 1 else np.ascontiguousarray(jq)
     A = _nb_scaled_jacobian(K - JqM, core.invC)
     if not math.isfinite(A.sum()):
@@ -417,13 +431,13 @@ def _general_start(core, K, jq, y0, q0, c1, td, h):
     wf = _project(W, f0)
     U2 = _fk_stage2(lam, V, W, y0, wf, c1, td, h)
     del n
-    return lam, V, W, JqM, f0, wf, U2
+    return True, lam, V, W, JqM, f0, wf, U2
 
 
 class _Context:
     """Per-build constants of the compiled path (a driver's network at one revision)."""
 
-    __slots__ = ("sym", "rs", "flow", "flow0", "zeros", "empty")
+    __slots__ = ("sym", "rs", "flow", "flow0", "zeros", "empty", "empty_rows")
 
     def __init__(self, sys_, C: np.ndarray) -> None:
         n = len(C)
@@ -440,10 +454,12 @@ class _Context:
                                float(sys_.str_W @ sys_.str_Tin)])
         self.zeros = np.zeros(n)
         self.empty = (np.zeros((0, n)), np.zeros((0, n, n)), np.zeros((0, n, 4)))
+        self.empty_rows = (np.zeros(0), np.zeros(0), np.zeros((0, n)))
 
 
 def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, zeros):
-    """(q [W], dq/dT [W/K], heat evaluations) at a step start; dq/dT (n,) or (n, n)."""
+    """(q [W], dq/dT [W/K], heat evaluations) at a step start; dq/dT (n,) or (n, n).
+    Finiteness of both is checked by the step-start kernels (``ok`` of _fk_start_sym)."""
     core = driver.core
     if heat is None:
         return zeros, zeros, 0
@@ -467,9 +483,7 @@ def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, 
         r = driver.network.heat_vector(r)
     if type(jq) is not np.ndarray or jq.dtype != np.float64:
         jq = np.asarray(jq, dtype=float)
-    if not math.isfinite(r.sum()):
-        raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
-    if jq.shape not in ((n,), (n, n)) or not math.isfinite(jq.sum()):
+    if jq.shape not in ((n,), (n, n)):  # (finiteness: checked by the step-start kernels)
         from ..errors import InputError
 
         raise InputError("heat_jacobian", jq.shape,
@@ -513,6 +527,7 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
         if store is None or store.y0.shape[1] != n:
             store = rec.fast_store = DenseStore(n, real=sym)
     s_lam, s_V, s_M = ctx.empty
+    s_t0, s_h, s_y0 = ctx.empty_rows
     n_heat = 0
     n_jac = 1
     try:
@@ -542,6 +557,7 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     c1 = zeros
     facmax, max_step, min_step = driver.facmax, driver.max_step, driver.min_step
     accepted = rejected = failures = 0
+    shp = (n,)
     net = driver.network
     try:
         while t < t1 - tiny:
@@ -556,16 +572,21 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
                     tq = t + dt_fd
                     r = heat(tq if tq < t1 else t_left, y)
                     n_heat += 1
-                    if type(r) is not np.ndarray or r.shape != (n,):
+                    if type(r) is not np.ndarray or r.shape != shp:
                         r = net.heat_vector(r)
                     c1 = (r - q0) * (h / dt_fd)
                 if not lin:
                     if sym_now:
-                        lam, V, W, JqM, f0, wf, U2 = _fk_start_sym(K, s, jq, rs, y, q0, c1,
-                                                                   td, h)
+                        ok, lam, V, W, JqM, f0, wf, U2 = _fk_start_sym(K, s, jq, rs, y, q0,
+                                                                       c1, td, h)
                     else:
-                        lam, V, W, JqM, f0, wf, U2 = _general_start(core, K, jq, y, q0, c1,
-                                                                    td, h)
+                        ok, lam, V, W, JqM, f0, wf, U2 = _general_start(core, K, jq, y, q0,
+                                                                        c1, td, h)
+                    if not ok:
+                        raise _fail(driver, _NewtonFailure(
+                            math.inf, f"heat source returned a non-finite value at t={t}"),
+                            t, h, y)
+                    if not sym_now:
                         if lam.dtype.kind == "c":
                             if store is not None and store.lam.dtype.kind != "c":
                                 store.make_complex()
@@ -581,23 +602,24 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
                 else:
                     tq = t + 0.5 * h
                     q2 = heat(tq if tq < t1 else t_left, U2)
-                    if type(q2) is not np.ndarray or q2.shape != (n,):
+                    if type(q2) is not np.ndarray or q2.shape != shp:
                         q2 = net.heat_vector(q2)
                 D2, wd2, tab, U3 = _fk_stage3(lam, V, W, JqM, y, wf, c1, td, h, U2, q2, q0)
                 if heat is not None:
                     tq = t + h
                     q3 = heat(tq if tq < t1 else t_left, U3)
-                    if type(q3) is not np.ndarray or q3.shape != (n,):
+                    if type(q3) is not np.ndarray or q3.shape != shp:
                         q3 = net.heat_vector(q3)
                     n_heat += 2
                 if store is not None:
                     j = store.reserve()
                     s_lam, s_V, s_M = store.lam, store.V, store.M
+                    s_t0, s_h, s_y0 = store.t0, store.h, store.y0
                 else:
                     j = -1
                 y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
                     lam, V, W, JqM, y, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol,
-                    rtol, K, C, flow, flow0, s_lam, s_V, s_M, j)
+                    rtol, K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
                 if not math.isfinite(err):
                     raise _NewtonFailure(math.inf, "non-finite exponential step")
             except _NewtonFailure as exc:
@@ -632,9 +654,6 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
             t = t1 if last else t + h
             rec.rows.append((t, gen, stored, to_b, to_s))
             if store is not None:
-                store.t0[j] = t_start
-                store.h[j] = h
-                store.y0[j] = y
                 store.count = j + 1
                 rec.pieces.append(StorePiece(store, j, t_start, h))
                 rec.t.append(t)

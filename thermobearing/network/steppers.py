@@ -547,7 +547,7 @@ class _Driver:
         core.time_dependent = time_dependent
         core.set_heat(heat, heat_jacobian)
         core.t_end = t1
-        core.t_end_left = float(np.nextafter(t1, -math.inf))
+        core.t_end_left = math.nextafter(t1, -math.inf)
         if self.method.name == "exprb43" and self._fast_applies():
             return self._exp_fast.run_segment(self, t0, t1, y0, heat, heat_jacobian,
                                               heat_with_jacobian, rec, time_dependent)
