@@ -252,3 +252,39 @@ def test_regime_min_removes_the_hertz_zone_shear_of_rigid_contacts_and_keeps_ene
     assert b.shaft_torque * w == pytest.approx(b.power_loss["total"], rel=1e-8)
     with pytest.raises(InputError):
         build_model(nu214, oil, 313.15, film_pressure="elastic")
+
+
+def test_regime_min_hertz_zone_shear_matches_the_numerical_ehl_of_paper000():
+    # Paper 000 eq. 33 shears the oil at the pressure of its eqs. 7-11. For the NU214 roller
+    # under the load (61 N on 13 mm, u_e = 8.1 m/s, 0.08 Pa s, Roelands z = 0.602; Moes
+    # M = 0.115, L = 28: rigid regime) the numerical line-contact EHL (thermobearing.ehl)
+    # gives p_max = 14.2 MPa against p_H = 174 MPa, and the Hertz-zone integral int eta/h dx
+    # = 0.647 Pa s (measured 2026-11-22). regime_min reproduces both within ~11 %, the Hertz
+    # pressure overestimates the integral 15-fold.
+    from thermobearing.ehl.line import solve_line_contact
+    from thermobearing.skidding.roller_pressure import rigid_peak_pressure
+    from thermobearing.validation.runners_roller_skidding import paper000_eq9_lubricant
+
+    nu214 = load_bearing("NU214")
+    t = 313.15
+    lub = paper000_eq9_lubricant(load_lubricant("PAPER000_OIL"), 0.08, t)
+    q, ue, v = 61.0, 8.1, 1e-3
+    m_h = build_model(nu214, lub, t, viscosity=0.08, limiting_shear_coefficient=1.0)
+    r = m_h.radius_inner
+    s = solve_line_contact(q / m_h.length, r, m_h.effective_modulus, ue, 0.08,
+                           roelands_z=0.602, n=1024)
+    inz = np.abs(s.x) < s.hertz_half_width
+    numeric = np.trapezoid((s.viscosity / s.film)[inz], s.x[inz])
+    assert float(rigid_peak_pressure(q / m_h.length, 2 * ue, r, 0.08)) == pytest.approx(
+        s.max_pressure, rel=0.03)
+    out = {}
+    for fp in ("hertz", "regime_min"):
+        m = build_model(nu214, lub, t, viscosity=0.08, limiting_shear_coefficient=1.0,
+                        film_pressure=fp)
+        f = m.contact_forces(np.array([q]), m.length, r, m.effective_modulus,
+                             np.array([ue + v / 2]), np.array([ue - v / 2]), eta0=m.eta0,
+                             alpha=m.alpha, film=m.film_inner, traction_law=m.traction_law,
+                             temperature=t)
+        out[fp] = f.hertz_traction[0] / v / m.length
+    assert out["regime_min"] == pytest.approx(numeric, rel=0.15)
+    assert out["hertz"] > 10 * numeric
