@@ -19,7 +19,11 @@ import X`` keeps working:
 * :mod:`~thermobearing.skidding.roller_solvers`: Newton with the arrow Jacobian and the
   bracketed fallback, :func:`initial_guess`;
 * :mod:`~thermobearing.skidding.roller_result`: :class:`RollerSkiddingResult`;
-* :mod:`~thermobearing.skidding.roller_diagnostics`: :func:`cage_force_balance`.
+* :mod:`~thermobearing.skidding.roller_diagnostics`: :func:`cage_force_balance`;
+* :mod:`~thermobearing.skidding.roller_maxwell` and
+  :mod:`~thermobearing.skidding.roller_pressure`: the Hertz-zone shear options of
+  :func:`build_model` (``fluid_shear_modulus``: Maxwell film, Johnson & Tevaarwerk 1977;
+  ``film_pressure="regime_min"``: the rigid-regime film pressure instead of p_H).
 
 Failure raises :class:`~thermobearing.errors.ConvergenceError` with the residual and the
 state; so does a state without any inner-ring contact (no drive).
@@ -211,7 +215,7 @@ def solve_roller(
     tol : tolerance on the residual norm scaled by the largest inner load [-].
     **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
         limiting_shear_coefficient, traction_law, film_model, drag_model, pocket_clearance,
-        cage_drag_torque).
+        cage_drag_torque, ring_support, unloaded_zone, fluid_shear_modulus, film_pressure).
 
     Returns
     -------
