@@ -9,8 +9,12 @@ sweep). The anchor: :func:`scipy.optimize.root` (method "hybr") and
 :func:`scipy.optimize.least_squares` (method "trf") on the identical scaled residual from the
 identical cold start, on a subset of points; failures of each method are counted.
 Times are process CPU times (the build machine is shared; wall time is not meaningful there).
+The residual runs in numba-compiled kernels (cache=True): the first call in a fresh interpreter
+pays their compilation (empty cache) or loading (cached); that cost is measured separately in
+subprocesses and kept out of the per-point times (the map warms the kernels up first).
 
 Usage: python benchmarks/bm5_skidding.py [--quick] [--nmap N] [--z 8,16,32] [--json] [--out DIR]
+       [--no-first-call]
 """
 
 from __future__ import annotations
@@ -151,6 +155,44 @@ def run_robustness(Z, temperature):
     return out
 
 
+_FIRST_CALL = """
+import math, sys, time
+t0 = time.process_time()
+sys.path.insert(0, {bench!r})
+from bm5_skidding import _setup
+from thermobearing.skidding.ball import solve_ball
+t_import = time.process_time() - t0
+w = 1800 * math.pi / 30
+b, models = _setup(16, 303.15, w)
+def pair():
+    r = solve_ball(b, models, w, 1000.0, 10e3, n_balls=16, theoretical_reference=0.45)
+    solve_ball(b, models, w, 1000.0, 10.22e3, n_balls=16, guess=r, theoretical_reference=0.45)
+t1 = time.process_time(); pair(); first = time.process_time() - t1
+t2 = time.process_time(); pair(); again = time.process_time() - t2
+print(t_import, first - again)
+"""
+
+
+def first_call_cost() -> dict:
+    """CPU seconds of the first cold + warm solve pair beyond the same pair repeated, in fresh
+    interpreters: with an empty numba cache (compilation of the kernels) and then with that
+    cache (loading them); and the import time of the solver."""
+    import os
+    import subprocess
+    import tempfile
+
+    code = _FIRST_CALL.format(bench=str(Path(__file__).resolve().parent))
+    out = {}
+    with tempfile.TemporaryDirectory() as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache, OPENBLAS_NUM_THREADS="1")
+        for label in ("compile (empty numba cache)", "cache load (cached kernels)"):
+            res = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                                 text=True, check=True)
+            t_import, extra = (float(v) for v in res.stdout.split())
+            out[label] = (t_import, extra)
+    return out
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="5 x 5 map, Z = 16 only")
@@ -162,7 +204,15 @@ def main(argv=None) -> int:
                     "16 with --quick)")
     ap.add_argument("--anchor-points", type=int, default=None,
                     help="points of the scipy anchor subset (default all, 4 with --quick)")
+    ap.add_argument("--no-first-call", action="store_true",
+                    help="skip the first-call (numba compile / cache load) measurement")
     args = ap.parse_args(argv)
+    first = {} if args.no_first_call else first_call_cost()
+    for label, (t_import, extra) in first.items():
+        records_first = dict(benchmark="bm5_skidding", case="first_call", method="solve_ball",
+                             setting=label, time_s=extra, error=None, ratio_vs_anchor=None,
+                             import_s=t_import)
+        first[label] = (t_import, extra, records_first)
     nmap = args.nmap or (5 if args.quick else 20)
     zs = (tuple(int(z) for z in args.z.split(",")) if args.z
           else ((16,) if args.quick else (8, 16, 32)))
@@ -170,7 +220,15 @@ def main(argv=None) -> int:
     loads = np.concatenate([[40e3], np.geomspace(40e3, 200.0, nmap - 2)[1:], [200.0, 0.0]])
     loads = np.unique(loads)[::-1][:nmap]
     temps = {"cold_oil": 303.15, "hot_oil": 353.15}
-    records = []
+    records = [rec for _, _, rec in first.values()]
+    # warm-up: load (or compile) the numba kernels before anything is timed
+    from thermobearing.skidding.ball import solve_ball
+
+    _b, _m = _setup(zs[0], temps["cold_oil"], 1800 * RPM)
+    _r = solve_ball(_b, _m, 1800 * RPM, 1000.0, 10e3, n_balls=zs[0],
+                    theoretical_reference=0.45)
+    solve_ball(_b, _m, 1800 * RPM, 1000.0, 10.2e3, n_balls=zs[0], guess=_r,
+               theoretical_reference=0.45)
     summary = []
     for Z in zs:
         for tname, T in temps.items():
@@ -268,6 +326,11 @@ def main(argv=None) -> int:
         if warm16:
             print(f"  Z=16 warm +2 % load step: {1e3 * max(warm16):.1f} ms per point "
                   f"(target <= 1 ms, aim 0.2 ms)")
+        if first:
+            print("\nfirst call, fresh interpreter (CPU beyond the same cold + warm solve pair"
+                  " repeated; Z = 16):")
+            for label, (t_import, extra, _) in first.items():
+                print(f"  {label:30s} {extra:6.2f} s   (import {t_import:.2f} s)")
         print("\nrobustness (hot oil):")
         for Z, case, outcome, msg in robust:
             print(f"  Z={Z:2d} {case:52s} {outcome:17s} {msg}")
