@@ -1,0 +1,219 @@
+"""The compiled exprb43 path (network.exp_fast) against the general exprb43 path.
+
+The general path (exponential.ExpRosenbrock43.step in the generic driver loop) is the
+verified reference (test_network_exponential.py: exact RC/chain, observed order 4, audit);
+here the compiled path must reproduce it, its cyclic Jacobi eigensolver must match LAPACK,
+and its own features (heat_with_jacobian, rates at breakpoints from the step's own
+solution, dense-output store growth, the non-symmetric fallback) are checked.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from test_network_steppers import T_AMB, chain, chain_exact  # same folder (prepend import)
+
+from thermobearing.errors import ConvergenceError
+from thermobearing.network import TransientStepper, assemble, integrate
+from thermobearing.network.exp_fast import _jacobi_eigh
+from thermobearing.network.problems import bearing_network, load_protocol, viscous_heat_for
+from thermobearing.network.steppers import _Driver
+
+
+@pytest.fixture
+def general_path(monkeypatch):
+    """Switch the compiled path off: integrate() then runs ExpRosenbrock43.step."""
+    monkeypatch.setattr(_Driver, "_fast_applies", lambda self: False)
+
+
+def _protocol(n_nodes=4, n_steps=6, duration=120.0):
+    net = bearing_network(n_nodes)
+    edges, P = load_protocol(n_steps, duration)
+    return net, edges, viscous_heat_for(net, edges, P)
+
+
+def _run(net, edges, heat, rtol, **kw):
+    return integrate(net, heat, (0.0, edges[-1]), 308.15, method="exprb43", rtol=rtol,
+                     atol=100 * rtol, breakpoints=edges, heat_jacobian=heat.jacobian,
+                     heat_time_dependent=False, **kw)
+
+
+@pytest.mark.parametrize("n", [1, 2, 4, 7, 12])
+def test_jacobi_matches_lapack_eigh(n):
+    """Random symmetric matrices, half of them graded (scaled by 1e-6..1e2 as the capacity
+    scaling C^-1/2 does): S = Q diag(w) Q^T, Q orthogonal, eigenvalues equal to LAPACK's
+    (numpy.linalg.eigvalsh) to ~1e-14 of the norm."""
+    rng = np.random.default_rng(n)
+    for k in range(40):
+        B = rng.normal(size=(n, n))
+        S = B + B.T
+        if k % 2:
+            d = np.sqrt(10.0 ** rng.uniform(-6, 2, n))
+            S = S * d[:, None] * d[None, :]
+        w, Q = _jacobi_eigh(S)
+        scale = np.max(np.abs(S))
+        assert np.max(np.abs(Q @ np.diag(w) @ Q.T - S)) < 1e-13 * scale
+        assert np.max(np.abs(Q.T @ Q - np.eye(n))) < 1e-13
+        np.testing.assert_allclose(np.sort(w), np.linalg.eigvalsh(S), rtol=0,
+                                   atol=1e-13 * scale)
+
+
+def test_jacobi_small_eigenvalue_of_the_stiff_network_to_high_relative_accuracy():
+    """The slow thermal mode of the 4-node bearing network (eigenvalue ~1e-4 1/s beside a
+    ~2 1/s oil mode): the Demmel-Veselic stopping rule gives it to ~1e-12 relative."""
+    sys_ = assemble(bearing_network(4))
+    rs = 1.0 / np.sqrt(sys_.C)
+    S = -sys_.K * rs[:, None] * rs[None, :]
+    w, _ = _jacobi_eigh(S)
+    ref = np.linalg.eigvalsh(S)
+    np.testing.assert_allclose(np.sort(w), ref, rtol=1e-12)
+    assert abs(ref).min() < 1e-3 * abs(ref).max()  # really stiff
+
+
+def test_compiled_path_matches_general_path_on_the_protocol(monkeypatch):
+    """Nonlinear viscous heat, 6 load steps: both paths within the tolerance of a tight
+    TR-BDF2 reference and of each other; the books close on both."""
+    net, edges, heat = _protocol()
+    ref = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-10,
+                    atol=1e-9, heat_jacobian=heat.jacobian)
+    grid = np.linspace(0.0, edges[-1], 73)
+    fast = _run(net, edges, heat, 1e-5)
+    assert fast.stats["steps"] >= len(edges) - 1
+    monkeypatch.setattr(_Driver, "_fast_applies", lambda self: False)
+    slow = _run(net, edges, heat, 1e-5)
+    for res in (fast, slow):
+        assert res.audit.relative_imbalance() < 1e-10
+        assert np.max(np.abs(res.sample(grid) - ref.sample(grid))) < 1e-3
+    assert np.max(np.abs(fast.sample(grid) - slow.sample(grid))) < 1e-3
+    # same step sequence up to the rejection rule: the same accepted-step count here
+    assert abs(fast.stats["steps"] - slow.stats["steps"]) <= 2
+
+
+def test_linear_chain_exact_and_store_growth():
+    """A linear network is integrated exactly; 100 steps (> the store's initial 64 rows)
+    exercise the dense-store growth; dense output exact between the steps."""
+    res = integrate(chain(), {"a": 100.0}, (0.0, 5000.0), T_AMB, method="exprb43",
+                    max_step=50.0)
+    assert res.stats["steps"] == 100
+    assert np.max(np.abs(res.temperatures - chain_exact(res.times))) < 1e-9
+    grid = np.linspace(0.0, 5000.0, 457)
+    assert np.max(np.abs(res.sample(grid) - chain_exact(grid))) < 1e-9
+    piece = res.dense[37]
+    np.testing.assert_allclose(piece(np.array([piece.t0 + 0.3 * piece.h])),
+                               chain_exact([piece.t0 + 0.3 * piece.h]), rtol=0, atol=1e-9)
+    assert res.audit.relative_imbalance() < 1e-10
+
+
+def test_rates_at_breakpoints_are_the_left_derivative():
+    """At a breakpoint the recorded rate is dT/dt of the step's own solution (no extra heat
+    call); on the linear chain that solution is exact, so it equals C^-1 (s - K T + q_left)
+    with the heat of the segment that ends there."""
+    def heat(t, T):
+        return np.array([100.0 if t < 1000.0 else 20.0, 0.0])
+
+    res = integrate(chain(), heat, (0.0, 2000.0), T_AMB, method="exprb43",
+                    breakpoints=[1000.0], jacobian="none", heat_time_dependent=False)
+    sys_ = assemble(chain())
+    k = int(np.flatnonzero(res.times == 1000.0)[0])
+    T = res.temperatures[k]
+    left = (sys_.s - sys_.K @ T + np.array([100.0, 0.0])) / sys_.C
+    np.testing.assert_allclose(res.rates[k], left, rtol=1e-9, atol=1e-12)
+    k0 = 0  # the run's first point: f(T0)/C exactly
+    np.testing.assert_allclose(res.rates[k0], (sys_.s - sys_.K @ res.temperatures[0]
+                                               + np.array([100.0, 0.0])) / sys_.C)
+
+
+def test_heat_with_jacobian_same_result_fewer_calls():
+    """(q, dq/dT) from one call at the step starts: identical temperatures, one call per
+    step start instead of two (counted on the callables themselves)."""
+    net, edges, heat = _protocol()
+    calls = {"q": 0, "j": 0, "qj": 0}
+
+    def q(t, T):
+        calls["q"] += 1
+        return heat(t, T)
+
+    def j(t, T):
+        calls["j"] += 1
+        return heat.jacobian(t, T)
+
+    def qj(t, T):
+        calls["qj"] += 1
+        return heat.with_jacobian(t, T)
+
+    a = integrate(net, q, (0.0, edges[-1]), 308.15, method="exprb43", rtol=1e-4,
+                  atol=1e-2, breakpoints=edges, heat_jacobian=j, heat_time_dependent=False)
+    n_separate = calls["q"] + calls["j"]
+    calls.update(q=0, j=0, qj=0)
+    b = integrate(net, q, (0.0, edges[-1]), 308.15, method="exprb43", rtol=1e-4,
+                  atol=1e-2, breakpoints=edges, heat_with_jacobian=qj,
+                  heat_time_dependent=False)
+    np.testing.assert_allclose(a.temperatures, b.temperatures, rtol=0, atol=1e-12)
+    assert calls["j"] == 0 and calls["qj"] == b.stats["jacobians"]
+    assert calls["q"] + calls["qj"] == n_separate - b.stats["jacobians"]
+    assert calls["q"] + calls["qj"] == b.stats["heat_evaluations"]
+
+
+def test_heat_with_jacobian_alone_serves_the_other_steppers():
+    """Only heat_with_jacobian given: TR-BDF2 takes its Jacobian part."""
+    net, edges, heat = _protocol(n_steps=3)
+    a = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-6,
+                  heat_with_jacobian=heat.with_jacobian)
+    b = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-6,
+                  heat_jacobian=heat.jacobian)
+    np.testing.assert_allclose(a.temperatures, b.temperatures, rtol=0, atol=1e-12)
+
+
+def test_non_symmetric_network_general_eigenbasis(monkeypatch):
+    """20 nodes with the oil stream through a chain of oil nodes (upwind: K not symmetric):
+    the compiled path uses the general eigendecomposition; it matches the general path."""
+    net, edges, heat = _protocol(n_nodes=20, n_steps=3)
+    K = assemble(net).K
+    assert not np.array_equal(K, K.T)
+    grid = np.linspace(0.0, edges[-1], 37)
+    fast = _run(net, edges, heat, 1e-6, heat_with_jacobian=heat.with_jacobian)
+    monkeypatch.setattr(_Driver, "_fast_applies", lambda self: False)
+    slow = _run(net, edges, heat, 1e-6)
+    assert np.max(np.abs(fast.sample(grid) - slow.sample(grid))) < 1e-4
+    assert fast.audit.relative_imbalance() < 1e-10
+
+
+def test_stepwise_api_with_heat_with_jacobian():
+    net, edges, heat = _protocol(n_steps=4)
+    ref = integrate(net, heat, (0.0, edges[-1]), 308.15, breakpoints=edges, rtol=1e-9,
+                    atol=1e-8, heat_jacobian=heat.jacobian)
+    stepper = TransientStepper(net, method="exprb43", rtol=1e-6, atol=1e-5)
+    T, t = np.full(4, 308.15), 0.0
+    for _ in range(len(edges) - 1):
+        out = stepper.advance(t, T, edges[1] - edges[0], heat,
+                              heat_with_jacobian=heat.with_jacobian,
+                              heat_time_dependent=False)
+        T, t = out.temperatures, out.time
+        assert out.audit.relative_imbalance() < 1e-10
+    np.testing.assert_allclose(T, ref.temperatures[-1], atol=1e-4)
+
+
+def test_non_finite_heat_or_jacobian_is_reported(general_path):
+    """(general path here; the compiled path below) a NaN heat raises ConvergenceError."""
+    with pytest.raises(ConvergenceError):
+        integrate(chain(), lambda t, T: np.array([np.nan, 0.0]), (0.0, 10.0), T_AMB,
+                  method="exprb43", min_step=1e-3)
+
+
+@pytest.mark.parametrize("bad", ["heat", "jacobian"])
+def test_non_finite_values_on_the_compiled_path(bad):
+    def qj(t, T):
+        q = np.array([50.0, 0.0])
+        jq = np.array([-0.1, 0.0])
+        if t > 100.0:
+            (q if bad == "heat" else jq)[0] = math.nan
+        return q, jq
+
+    with pytest.raises(ConvergenceError, match="non-finite") as info:
+        integrate(chain(), lambda t, T: qj(t, T)[0], (0.0, 1000.0), T_AMB, method="exprb43",
+                  heat_with_jacobian=qj, breakpoints=[200.0], heat_time_dependent=False)
+    # the failing step starts where the source turns NaN (t = 100 s), or just before it
+    # when a stage of a shrinking step crosses it
+    assert 99.0 <= info.value.state["time"] <= 200.0
