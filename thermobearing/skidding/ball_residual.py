@@ -121,6 +121,7 @@ N_GEO = 20
 # friction (fpa, fpr), centrifugal force
 P_S, P_WA, P_WR, P_WN, P_FPA, P_FPR, P_FC = range(7)
 N_POCKET = 7
+_EMPTY_TR = np.zeros((0, 6))
 # float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p
 (C_D, C_DM, C_EP, C_M, C_J, C_FS, C_MS, C_TS, C_VEPS, C_MUP) = range(10)
 # arc table rows: centre x, centre r, free distance, inner (1/0), sign (+1 inner / -1 outer),
@@ -216,20 +217,33 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
                  law_params: np.ndarray, visc_mode: int, ln_tab: np.ndarray,
                  slope_tab: np.ndarray, inv_dp: float, eta_nodes: np.ndarray,
                  xg: np.ndarray, yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
-                 pidx: np.ndarray, pshape_u: np.ndarray, Fd: np.ndarray, tr: np.ndarray,
+                 pidx: np.ndarray, pshape_u: np.ndarray, Fd: np.ndarray,
+                 reuse: np.ndarray, tr_ref: np.ndarray, tr: np.ndarray,
                  pocket: np.ndarray, R: np.ndarray, Gc: np.ndarray) -> None:
     """Stage 2: tractions of every contact (:func:`thermobearing.contact_traction.
     _integrate_contacts`, the code path of ``contact_traction.integrate``) into ``tr``
     (B*Z*k, 6), then the ball force/moment balances (scaled) into R (B, Z, 6), the per-ball
     contributions to the globals into Gc (B, Z, 3) and the pocket quantities into ``pocket``
-    (B, Z, N_POCKET). Equations: module docstring."""
-    _integrate_contacts(law_id, law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
-                        geo[G_Q], geo[G_A], geo[G_B], geo[G_VY], geo[G_VX], geo[G_OMZ],
-                        geo[G_OMX], geo[G_OMY], geo[G_CURV], film, xg, yg, pshape, area_w,
-                        pidx, pshape_u, True, False, tr, np.empty((0, 5, 5)),
-                        np.empty((0, 5)))
+    (B, Z, N_POCKET). Equations: module docstring. States with ``reuse[i]`` = 1 have the
+    contact inputs of an already evaluated state whose tractions are ``tr_ref`` (Z*k, 6)
+    (the Jacobian's pocket-force column: Q_p enters no contact); they are copied."""
     nb, nz = X.shape[0], X.shape[1]
     nk = arc.shape[1]
+    per = nz * nk
+    e3 = np.empty((0, 5, 5))
+    e2 = np.empty((0, 5))
+    for i in range(nb):
+        lo, hi = i * per, (i + 1) * per
+        if reuse[i] == 1:
+            tr[lo:hi, :] = tr_ref
+            continue
+        _integrate_contacts(law_id, law_params, visc_mode, ln_tab, slope_tab, inv_dp,
+                            eta_nodes[lo:hi] if eta_nodes.shape[0] > 0 else eta_nodes,
+                            geo[G_Q, lo:hi], geo[G_A, lo:hi], geo[G_B, lo:hi],
+                            geo[G_VY, lo:hi], geo[G_VX, lo:hi], geo[G_OMZ, lo:hi],
+                            geo[G_OMX, lo:hi], geo[G_OMY, lo:hi], geo[G_CURV, lo:hi],
+                            film[lo:hi], xg, yg, pshape, area_w, pidx, pshape_u, True, False,
+                            tr[lo:hi], e3, e2)
     D, m, J = c[C_D], c[C_M], c[C_J]
     F_s, M_s, T_s = c[C_FS], c[C_MS], c[C_TS]
     for i in range(nb):
@@ -294,8 +308,9 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
                          law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
                          inv_dp: float, p_max: float, xg: np.ndarray, yg: np.ndarray,
                          pshape: np.ndarray, area_w: np.ndarray, pidx: np.ndarray,
-                         pshape_u: np.ndarray, Fd: np.ndarray, geo: np.ndarray,
-                         film: np.ndarray, tr: np.ndarray,
+                         pshape_u: np.ndarray, Fd: np.ndarray, reuse: np.ndarray,
+                         tr_ref: np.ndarray, geo: np.ndarray, film: np.ndarray,
+                         tr: np.ndarray,
                          pocket: np.ndarray, R: np.ndarray, Gc: np.ndarray) -> bool:
     """Stage 1, the compiled film (:func:`guarded_film`) and stage 2 in one call, with the
     film law's viscosity from the table (``visc_mode`` 1) when ``ln_tab`` is not empty.
@@ -314,7 +329,7 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
                                arc[A_RY, i % arc.shape[1]], film_params)
     _ball_forces(X, G, cpsi, arc, c, geo, film, law_id, law_params, visc_mode, ln_tab,
                  slope_tab, inv_dp, np.empty((0, 0)), xg, yg, pshape, area_w, pidx, pshape_u,
-                 Fd, tr, pocket, R, Gc)
+                 Fd, reuse, tr_ref, tr, pocket, R, Gc)
     return True
 
 
@@ -381,6 +396,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self._inner_torque_memo: float | None = None
         self.last_jacobian: JacobianBlocks | None = None
         self._last = None            # (X, G, (R, Gc, G0), details builder) of the last state
+        self._last_tr = None         # (X, G, tractions (Z*k, 6)) of the last single state
         check_positive("skidding.ball effective_modulus", self.Ep)
         check_positive("skidding.ball ball_mass", self.m)
         if models.n_major < 2 or models.n_minor < 1:
@@ -468,6 +484,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         pocket = np.empty((n_states, Z, N_POCKET))
         R = np.empty((n_states, Z, N_BALL))
         Gc = np.empty((n_states, Z, N_GLOBAL))
+        reuse, tr_ref = self._reuse_flags(Xb, Gb)
         done = False
         if self._fused:
             ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
@@ -475,10 +492,11 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
                                         self._film_params, self._law_id, self._law_params,
                                         ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
-                                        geo, film, tr, pocket, R, Gc)
+                                        reuse, tr_ref, geo, film, tr, pocket, R, Gc)
         film_out = film
         if not done:
-            film_out = self._staged(Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc)
+            film_out = self._staged(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R,
+                                    Gc)
         G0 = np.empty((n_states, N_GLOBAL))
         G0[:, 0] = self.Fa / self.F_s
         G0[:, 1] = self.Fr / self.F_s
@@ -495,9 +513,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                                  None if film_out is None else film_out.reshape(Z, nk))
 
         self._last = (X.copy(), G.copy(), (R, Gc, G0), make_details)
+        self._last_tr = (self._last[0], self._last[1], tr)
         return R, Gc, G0, (make_details() if details else None)
 
-    def _staged(self, Xb, Gb, Fd_b, geo, film, tr, pocket, R, Gc):
+    def _staged(self, Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc):
         """The residual in stages: compiled geometry, the film model and the film law's
         viscosity in Python (any callables), compiled forces. Returns the film (or None)."""
         md = self.models
@@ -532,8 +551,23 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                     dtype=float), pn.shape))
         _ball_forces(Xb, Gb, self._cpsi, self._arc, self._c, geo, film, self._law_id,
                      self._law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
-                     *self._rule, Fd_b, tr, pocket, R, Gc)
+                     *self._rule, Fd_b, reuse, tr_ref, tr, pocket, R, Gc)
         return out_film
+
+    def _reuse_flags(self, Xb, Gb):
+        """Per state of the batch: 1 if its contact inputs (ball positions and spins, ring
+        displacements, cage speed) equal those of the last single state evaluated, whose
+        tractions are then copied (the Jacobian's Q_p column), else 0."""
+        ref = self._last_tr
+        nb = Xb.shape[0]
+        reuse = np.zeros(nb, dtype=np.int64)
+        if ref is None or nb == 1:
+            return reuse, _EMPTY_TR
+        Xr, Gr, tr_ref = ref
+        same = (Xb[:, :, :N_BALL - 1] == Xr[:, :N_BALL - 1]).all(axis=(1, 2)) & (
+            Gb == Gr).all(axis=1)
+        reuse[same] = 1
+        return reuse, tr_ref
 
     def _details(self, X, G, geo, tr, pocket, Fd, u_ball, film):
         """Heat, shaft torque and the contact fields of one evaluated state (energy audit)."""
@@ -607,6 +641,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         new.n_eval = 0
         new.last_jacobian = None
         new._last = None
+        new._last_tr = None
         return new
 
     def _set_loads(self, radial_load: float, axial_load: float) -> None:

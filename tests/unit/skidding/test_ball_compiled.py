@@ -208,3 +208,19 @@ def test_cache_guard_flushes_on_a_dependency_change(tmp_path):
     assert len(flushed) == 2
     # caching disabled (no cache object): nothing to do
     assert refresh_stale_caches("t", (SimpleNamespace(_cache=None),), (dep,)) is False
+
+
+def test_jacobian_batch_reuses_the_pocket_force_column_exactly(bearing, default_models):
+    # the Q_p-perturbed state of the Jacobian batch has the contacts of the current state:
+    # its tractions are copied from that evaluation; the residuals must be bit-identical
+    X, G, _ = race_control_guess(bearing, W1800, 1000.0, 4e3)
+    Xb = np.repeat(X[None], 3, axis=0)
+    Xb[1, :, 5] += 1e-3                    # pocket-force column
+    Xb[2, :, 2] += 1e-3                    # a spin column (contacts change)
+    Gb = np.repeat(G[None], 3, axis=0)
+    s1 = ball_residual_system(bearing, default_models, W1800, 1000.0, 4e3)
+    s1.evaluate(X, G)
+    assert list(s1._reuse_flags(Xb, Gb)[0]) == [1, 1, 0]
+    s2 = ball_residual_system(bearing, default_models, W1800, 1000.0, 4e3)   # nothing to reuse
+    for a, b in zip(s1.evaluate(Xb, Gb)[:3], s2.evaluate(Xb, Gb)[:3], strict=True):
+        np.testing.assert_array_equal(a, b)
