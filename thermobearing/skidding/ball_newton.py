@@ -120,25 +120,51 @@ class JacobianBlocks:
                               xs, gs, self.Z)
 
 
-def _broyden_step(steps: list, dX: np.ndarray, dG: np.ndarray, Z: int):
+@numba.njit(cache=True)
+def _broyden_step(hist: np.ndarray, m: int, dX: np.ndarray, dG: np.ndarray,
+                  cap_x: np.ndarray, cap_g: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """Good-Broyden step from the chord step z = -J0^-1 F(x_n+1) and the previous steps
-    s_0..s_n (scaled unknowns), Kelley 1995 (Iterative Methods for Linear and Nonlinear
-    Equations, SIAM, algorithm ``brsol`` with full steps):
+    s_0..s_n = hist[:m] (scaled unknowns), Kelley 1995 (Iterative Methods for Linear and
+    Nonlinear Equations, SIAM, algorithm ``brsol`` with full steps):
     z <- z + s_(j+1) (s_j . z) / |s_j|^2 (j < n), then s_(n+1) = z / (1 - s_n . z / |s_n|^2).
-    Returns (dX, dG, max |step| / cap), or (None, None, 0) when the denominator is small."""
-    z = np.concatenate([dX.ravel(), dG])
-    for j in range(len(steps) - 1):
-        sj = steps[j]
-        z += steps[j + 1] * (float(sj @ z) / float(sj @ sj))
-    sn = steps[-1]
-    den = 1.0 - float(sn @ z) / float(sn @ sn)
+    Returns (dX, dG, max |step| / cap); big = -1 when the denominator is below 0.1 (the
+    caller then takes the plain chord step and starts a new history)."""
+    nz, nb = dX.shape
+    ng = dG.size
+    n = nz * nb + ng
+    z = np.empty(n)
+    z[:nz * nb] = dX.ravel()
+    z[nz * nb:] = dG
+    for j in range(m - 1):
+        dot = 0.0
+        nrm = 0.0
+        for i in range(n):
+            dot += hist[j, i] * z[i]
+            nrm += hist[j, i] * hist[j, i]
+        f = dot / nrm
+        for i in range(n):
+            z[i] += hist[j + 1, i] * f
+    dot = 0.0
+    nrm = 0.0
+    for i in range(n):
+        dot += hist[m - 1, i] * z[i]
+        nrm += hist[m - 1, i] * hist[m - 1, i]
+    den = 1.0 - dot / nrm
     if abs(den) < 0.1:
-        return None, None, 0.0
-    z /= den
-    dX = z[: Z * N_BALL].reshape(Z, N_BALL)
-    dG = z[Z * N_BALL:]
-    big = max(float(np.max(np.abs(dX) / _CAP_X)), float(np.max(np.abs(dG) / _CAP_G)))
-    return dX, dG, big
+        return dX, dG, -1.0
+    big = 0.0
+    out_x = np.empty((nz, nb))
+    out_g = np.empty(ng)
+    for a in range(nz):
+        for b in range(nb):
+            v = z[a * nb + b] / den
+            out_x[a, b] = v
+            big = max(big, abs(v) / cap_x[b])
+    for g in range(ng):
+        v = z[nz * nb + g] / den
+        out_g[g] = v
+        big = max(big, abs(v) / cap_g[g])
+    return out_x, out_g, big
 
 
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
@@ -234,7 +260,8 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     # Broyden (good) updates of the warm start's chord Jacobian, in Kelley's stored-step
     # form: only while the Jacobian handed over from the previous solve is in use
     broyden = jac is not None and broyden_warm
-    steps: list[np.ndarray] = []
+    hist = np.empty((max_iter + 1, Z * N_BALL + N_GLOBAL)) if broyden else None
+    m = 0                                     # steps in the Broyden history
     while it < max_iter:
         if nrm <= tol:
             # a chord iteration converges linearly and stops just below tol,
@@ -253,11 +280,12 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
             jac = jacobian_fd(X, G, R, Gc, Gk)
             broyden = False
         dX, dG, big = step(jac, R, Gc, Gk)
-        if broyden and steps:
-            dX, dG, big = _broyden_step(steps, dX, dG, Z)
-            if dX is None:                # degenerate update: plain chord step, new history
-                steps.clear()
-                dX, dG, big = step(jac, R, Gc, Gk)
+        if broyden and m:
+            bX, bG, bbig = _broyden_step(hist, m, dX, dG, _CAP_X, _CAP_G)
+            if bbig < 0.0:                # degenerate update: plain chord step, new history
+                m = 0
+            else:
+                dX, dG, big = bX, bG, bbig
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
             # chord step: full step only (a step the cap would shorten refreshes
@@ -275,8 +303,10 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
                 if nn > (broyden_reuse_ratio if broyden else reuse_ratio) * nrm:
                     jac = None
-                elif broyden:
-                    steps.append(np.concatenate([dX.ravel(), dG]))
+                elif broyden and m < hist.shape[0]:
+                    hist[m, :Z * N_BALL] = dX.ravel()
+                    hist[m, Z * N_BALL:] = dG
+                    m += 1
                 nrm, last_ratio = nn, nn / nrm
             else:
                 jac = None
