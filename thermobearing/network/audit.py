@@ -127,8 +127,9 @@ class TransientResult:
         """
         t = np.atleast_1d(np.asarray(t, dtype=float))
         ts = self.times
-        if np.any(t < ts[0] - 1e-9 * max(1.0, abs(ts[0]))) or np.any(
-                t > ts[-1] + 1e-9 * max(1.0, abs(ts[-1]))):
+        lo, hi = (float(t.min()), float(t.max())) if t.size else (ts[0], ts[0])
+        if not (lo >= ts[0] - 1e-9 * max(1.0, abs(ts[0]))
+                and hi <= ts[-1] + 1e-9 * max(1.0, abs(ts[-1]))):  # (NaN fails too)
             from ..errors import InputError
 
             raise InputError("sample times", (float(t.min()), float(t.max())),

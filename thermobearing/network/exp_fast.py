@@ -437,14 +437,16 @@ class StorePiece:
     @staticmethod
     def sample_batch(pieces: tuple, t: np.ndarray) -> np.ndarray:
         """Temperatures [K] at times t from a run's pieces in one compiled call."""
+        store = pieces[0].store if type(pieces[0]) is StorePiece else None
+        if (store is not None and store.count == len(pieces) and pieces[-1].j == store.count - 1
+                and all(type(p) is StorePiece and p.store is store for p in pieces)):
+            # the pieces are the store's rows 0..count-1 in time order (one run)
+            starts = store.t0[:store.count]
+            k = np.searchsorted(starts, t, side="right") - 1
+            np.clip(k, 0, store.count - 1, out=k)
+            return _fk_dense(store.lam, store.V, store.M, store.y0, store.t0, store.h, k, t)
         starts = np.array([p.t0 for p in pieces])
         k = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, len(starts) - 1)
-        store = pieces[0].store if isinstance(pieces[0], StorePiece) else None
-        if store is not None and all(type(p) is StorePiece and p.store is store
-                                     for p in pieces):
-            rows = np.array([p.j for p in pieces], dtype=np.int64)[k]
-            return _fk_dense(store.lam, store.V, store.M, store.y0, store.t0, store.h,
-                             rows, t)
         out = np.empty((len(t), len(pieces[0].y0)))
         for j in np.unique(k):
             sel = k == j
@@ -493,6 +495,28 @@ class _Context:
 
     __slots__ = ("sym", "rs", "flow", "flow0", "zeros", "empty", "empty_rows", "ws")
 
+    @classmethod
+    def of(cls, asm, sys_, C: np.ndarray) -> _Context:
+        """A context with fresh workspaces; the constant parts are computed once per
+        assembler (i.e. per network revision) and shared (read-only)."""
+        base = getattr(asm, "_exp_fast_context", None)
+        if base is None or base.flow.shape[1] != len(C):
+            base = cls(sys_, C)
+            asm._exp_fast_context = base
+            return base
+        ctx = cls.__new__(cls)
+        for name in ("sym", "rs", "flow", "flow0", "zeros", "empty", "empty_rows"):
+            setattr(ctx, name, getattr(base, name))
+        ctx.ws = cls._workspaces(len(C))
+        return ctx
+
+    @staticmethod
+    def _workspaces(n: int) -> dict:
+        """Stage workspaces (see _ws_start_sym), real and complex."""
+        return {dt: (np.zeros((n, 2 * n + 3), dtype=dt), np.zeros((n, n)),
+                     np.zeros((6, n)), np.zeros((n, 6), dtype=dt))
+                for dt in (float, complex)}
+
     def __init__(self, sys_, C: np.ndarray) -> None:
         n = len(C)
         K = sys_.K
@@ -509,10 +533,7 @@ class _Context:
         self.zeros = np.zeros(n)
         self.empty = (np.zeros((0, n)), np.zeros((0, n, n)), np.zeros((0, n, 4)))
         self.empty_rows = (np.zeros(0), np.zeros(0), np.zeros((0, n)))
-        # stage workspaces (see _ws_start_sym), real and complex
-        self.ws = {dt: (np.zeros((n, 2 * n + 3), dtype=dt), np.zeros((n, n)),
-                        np.zeros((6, n)), np.zeros((n, 6), dtype=dt))
-                   for dt in (float, complex)}
+        self.ws = self._workspaces(n)
 
 
 def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, zeros):
@@ -579,7 +600,7 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     stats = core.stats
     ctx = driver.fast_info
     if ctx is None:
-        ctx = driver.fast_info = _Context(sys_, C)
+        ctx = driver.fast_info = _Context.of(driver.asm, sys_, C)
     sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
     t_left = core.t_end_left  # a segment sees its end breakpoint from the left
     if heat is not None and heat_with_jacobian is None and heat_jacobian is None \

@@ -701,7 +701,9 @@ def _as_heat_fn(network: ThermalNetwork, heat) -> tuple[HeatFn | None, bool]:
 
 def _initial_vector(network: ThermalNetwork, T0) -> np.ndarray:
     names = network.state_nodes
-    if isinstance(T0, Mapping):
+    if type(T0) is np.ndarray and T0.shape == (len(names),):  # the common case
+        y = T0.astype(float)  # (a copy: the caller's array is never aliased)
+    elif isinstance(T0, Mapping):
         missing = [n for n in names if n not in T0]
         if missing:
             raise InputError("T0", sorted(T0), f"a temperature for every state node; missing "
@@ -714,7 +716,8 @@ def _initial_vector(network: ThermalNetwork, T0) -> np.ndarray:
         if y.shape != (len(names),):
             raise InputError("T0", y.shape, f"shape ({len(names)},) in the order "
                                             f"network.state_nodes")
-    if not np.all(np.isfinite(y)) or np.any(y <= 0):
+    lo = float(y.min()) if y.size else 1.0
+    if not (lo > 0.0 and math.isfinite(float(y.sum()))):  # (NaN fails both)
         raise InputError("T0", y, "finite temperatures > 0 K")
     return y
 
