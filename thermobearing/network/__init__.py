@@ -24,8 +24,10 @@ Quick use::
 
 ``heat(t, T)``: T over ``network.state_nodes`` [K]; returns W per state node (array, or
 dict by node name; :meth:`ThermalNetwork.distribute` maps heat-source roles to nodes).
-Pass ``heat_jacobian(t, T)`` (dq/dT, (n,) diagonal or (n, n)) when you have it, and
-``heat_time_dependent=False`` when q changes with t only at the breakpoints.
+Pass ``heat_jacobian(t, T)`` (dq/dT, (n,) diagonal or (n, n)) when you have it (or
+``heat_with_jacobian(t, T) -> (q, dq/dT)`` when one call gives both: ``exprb43`` then
+needs one call per step start instead of two), and ``heat_time_dependent=False`` when q
+changes with t only at the breakpoints.
 
 Step-wise use (a coupled loop that re-solves kinematics between thermal steps)::
 

@@ -1,22 +1,25 @@
 """Compiled step path of ``exprb43`` for small dense networks (the BM-1 case).
 
-Same method, formulas, step-size control and energy audit as
+Same method, formulas and energy audit as
 :class:`thermobearing.network.exponential.ExpRosenbrock43` (Hochbruck, Ostermann &
 Schweitzer 2009, method exprb43; see the module docstring of :mod:`.exponential` for the
 stage equations, the error estimate ``6 h phi4(h A) a3`` and the discrete energy balance),
-with the per-step work reorganised so that a 4-node step costs a few microseconds of
-compiled code around the (Python) heat-source calls:
+and the same step-size control except after a rejection (:func:`run_segment`), with the
+per-step work reorganised so that a 4-node step costs a few microseconds of compiled code
+around the (Python) heat-source calls:
 
 - **one compiled kernel per stage** (linearisation + stage 2; stage 3; completion +
-  error estimate + energy-audit terms + dense-output coefficients), instead of ~60 small
-  numpy operations and several kernels per step in a Python driver;
-- **symmetric linear part by** ``eigh``: when K is symmetric (no oil stream through more
-  than one node) and dq/dT is diagonal, ``A = C^-1 J`` is similar to the symmetric
+  error estimate + energy-audit terms + dense-output coefficients), the stages computed
+  in the eigenbasis (forcing projected once, one phi table per step) and the stage data
+  kept in per-run workspaces, instead of ~60 small numpy operations per step;
+- **symmetric linear part**: when K is symmetric (no oil stream through more than one
+  node) and dq/dT is diagonal, ``A = C^-1 J`` is similar to the symmetric
   ``S = C^-1/2 J C^-1/2`` (Golub & Van Loan 2013, sec. 8.7, the symmetric-definite
   problem ``J x = lambda C x``), so ``A = V diag(lambda) V^-1`` with ``V = C^-1/2 Q`` and
-  ``V^-1 = Q^T C^1/2`` from one symmetric eigendecomposition ``S = Q diag(lambda) Q^T``:
-  real eigenvalues, an orthogonal basis (never defective), no inverse and no condition
-  check. Otherwise the general eigendecomposition of :mod:`.exponential` is used;
+  ``V^-1 = Q^T C^1/2`` from ``S = Q diag(lambda) Q^T`` (cyclic Jacobi up to 12 nodes,
+  LAPACK ``eigh`` above): real arithmetic, an orthogonal basis (never defective), no
+  inverse and no condition check. Otherwise the general eigendecomposition of
+  :mod:`.exponential` (real or complex; near-defective bases refused);
 - **fewer heat calls**: the step-end heat q(y_{n+1}) is the next step's q_n, and with
   ``heat_with_jacobian`` (``(t, T) -> (q, dq/dT)`` in one call) the step start needs one
   call for both. The last step of a segment (ending at a breakpoint, where the source

@@ -48,6 +48,10 @@ refused: the step fails, the driver retries with smaller steps and finally raise
 ConvergenceError whose message names ``tr_bdf2``, the stepper for such a network.
 The per-stage work runs in numba-compiled kernels (``cache=True``: compiled once per
 machine, ~5 s the first time) because numpy's per-call overhead would dominate at n = 4.
+Adaptive runs on dense networks without zero-capacity nodes or temperature-dependent
+conductances take the compiled segment loop of :mod:`.exp_fast` (same method; symmetric
+networks by a cyclic Jacobi eigensolver); :meth:`ExpRosenbrock43.step` below serves the
+rest (fixed steps, zero-capacity nodes, temperature-dependent edges, sparse networks).
 
 Zero-capacity (algebraic) nodes a are eliminated per step by the Schur complement of the
 linearised equations: 0 = r_a(s) + J_ad dy_d + J_aa dy_a gives
