@@ -92,3 +92,18 @@ def test_numerical_drag_runner_books_both_drags(monkeypatch) -> None:
     assert out["mean_abs_error_numerical_minus_closed_form"] == pytest.approx(-0.06)
     assert out["cage_speed_change_Fr100_to_Fr200_numerical_ehl"] == pytest.approx(
         (1195.46 - 1292.78) * 1.04 * 2 * math.pi / 60)
+
+
+def test_numerical_drag_case_runs_the_paper000_case_model() -> None:
+    """"At least as close as before" compares against the model of case
+    paper000_nu214_cage_speed: both cases must pass the solver the same options."""
+    import tomllib
+
+    def inputs(case: str) -> dict:
+        text = (validation.cases_dir() / case / "case.toml").read_text(encoding="utf-8")
+        return tomllib.loads(text)["inputs"]
+
+    a, b = inputs("paper000_nu214_cage_speed"), inputs("paper000_numerical_drag")
+    assert a["model"] == b["model"]
+    for key in ("bearing", "lubricant", "inner_speed", "temperature", "paper_eq9_alpha"):
+        assert a[key] == b[key], key

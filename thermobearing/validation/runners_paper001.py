@@ -6,7 +6,8 @@ speed and rising with radial clearance. Here the roller skidding solver
 (``skidding.solve`` -> paper 000's Z+1 equations with the closed-form EHL drag) is run on
 the D1842926 preset with oil 4109 and the slip 1 - CSR/CSR_th is reported; the trends are
 checked by sign. The figures carry no readable numbers, so the values are printed, not
-compared.
+compared. Figs. 7 and 9 are at 18 kN (``radial_load``), Fig. 11 at the paper's "Case 4",
+24 kN (``clearance_radial_load``); ``[inputs.model]`` options go to the roller solver.
 """
 
 from __future__ import annotations
@@ -21,10 +22,10 @@ from . import RUNNERS
 
 
 def _slip(bearing: Any, lubricant: Any, speed: float, radial_load: float,
-          temperature: float) -> float:
+          temperature: float, options: dict[str, Any]) -> float:
     from ..skidding import solve
 
-    res = solve(bearing, lubricant, speed, radial_load, 0.0, temperature)
+    res = solve(bearing, lubricant, speed, radial_load, 0.0, temperature, **options)
     return 1.0 - res.cage_speed_ratio / res.theoretical_cage_speed_ratio
 
 
@@ -41,16 +42,19 @@ def paper001_cage_sliding_trends(inputs: dict[str, Any], case_dir: Path) -> dict
     t = to_si(inputs["temperature"], "temperature", field="temperature")
     w0 = to_si(inputs["speed"], "angular_speed", field="speed")
     f0 = to_si(inputs["radial_load"], "force", field="radial_load")
+    f_clear = to_si(inputs.get("clearance_radial_load", inputs["radial_load"]), "force",
+                    field="clearance_radial_load")
+    options = dict(inputs.get("model", {}))
     loads = [to_si(x, "force", field="loads") for x in inputs["loads"]]
     speeds = [to_si(x, "angular_speed", field="speeds") for x in inputs["speeds"]]
     clear = [to_si(x, "length", field="diametral_clearances")
              for x in inputs["diametral_clearances"]]
     base = load_bearing(name)
     out: dict[str, float] = {}
-    by_load = [_slip(base, lub, w0, f, t) for f in loads]
-    by_speed = [_slip(base, lub, w, f0, t) for w in speeds]
-    by_clear = [_slip(load_bearing(name, overrides={"diametral_clearance": c}), lub, w0, f0, t)
-                for c in clear]
+    by_load = [_slip(base, lub, w0, f, t, options) for f in loads]
+    by_speed = [_slip(base, lub, w, f0, t, options) for w in speeds]
+    by_clear = [_slip(load_bearing(name, overrides={"diametral_clearance": c}), lub, w0,
+                      f_clear, t, options) for c in clear]
     for f, v in zip(loads, by_load, strict=True):
         out[f"sliding_ratio_{f / 1e3:g}kN"] = v
     for w, v in zip(speeds, by_speed, strict=True):
