@@ -53,6 +53,16 @@ and the spin moment within about 0.5 % of a 256 x 64 rule; the net rolling force
 difference of large opposing tractions, converges less regularly (errors up to ~1 %). The
 power identity above holds exactly at any node count.
 
+Implementation
+--------------
+One compiled kernel (numba, ``cache=True``), :func:`_integrate_contacts`, does the node loop
+with the law's stress from :func:`thermobearing.traction._law_stress`; :func:`integrate`
+validates, flattens the contacts and calls it, and the ball skidding residual calls the same
+kernel inside its own compiled residual. A film law's viscosity comes from the lubricant's
+isothermal table (``viscosity_table``) inside the kernel, once per distinct node pressure,
+or from ``lubricant.dynamic_viscosity(T, p)`` at every node (any lubricant). numba's cache
+does not notice edits of compiled callees in other files: :func:`refresh_stale_caches`.
+
 References: Johnson 1985 (Contact Mechanics, ch. 8, spin and Heathcote slip); Harris &
 Kotzalas 2007 (deformed-surface radius, spinning moment 3 mu Q a E(k) / 8); seed paper 002
 (002_0add79adaca5495c.txt) eq. 11 (shear heat over the ellipse; bounded here by the law).

@@ -19,6 +19,14 @@ churning drag of the ball (paper 002 eq. 10), the pocket force and its friction 
 (= J omega_R omega_m sin(beta) about the tangential axis; primer section 3.3). Globals: inner
 ring force balance (F_a, F_r) and the cage torque balance (pocket forces against the
 cage-guide and cage-churning torque, paper 002 eqs. 5 and 8).
+
+Implementation: the residual of a batch of states is compiled (numba, ``cache=True``):
+:func:`_ball_geometry` (arc contacts, Hamrock-Brewe Hertz, slip kinematics),
+:func:`guarded_film` (Hamrock-Dowson film), :func:`_ball_forces` (the contact integration of
+:mod:`thermobearing.contact_traction` -- the same kernel as ``integrate`` -- and the ball
+balances), fused in :func:`_ball_residual_fused` when the film model and the viscosity are
+compilable, else run in stages with the Python film callable / per-node viscosity between
+them. The cage and drag torques are Python callables of the models, memoised per cage speed.
 """
 
 from __future__ import annotations
