@@ -178,7 +178,10 @@ def refresh_stale_caches(tag: str, dispatchers: tuple, dependencies: tuple) -> b
     except OSError:
         pass
     for disp in dispatchers:
-        disp._cache.flush()
+        try:
+            disp._cache.flush()
+        except OSError:               # read-only cache location: numba will not save either
+            return False
     try:
         os.makedirs(os.path.dirname(stamp), exist_ok=True)
         with open(stamp, "w") as fh:

@@ -224,3 +224,13 @@ def test_jacobian_batch_reuses_the_pocket_force_column_exactly(bearing, default_
     s2 = ball_residual_system(bearing, default_models, W1800, 1000.0, 4e3)   # nothing to reuse
     for a, b in zip(s1.evaluate(Xb, Gb)[:3], s2.evaluate(Xb, Gb)[:3], strict=True):
         np.testing.assert_array_equal(a, b)
+
+
+def test_cache_guard_survives_an_unwritable_cache(tmp_path):
+    def flush():
+        raise PermissionError("read-only")
+
+    disp = SimpleNamespace(_cache=SimpleNamespace(cache_path=str(tmp_path / "ro"), flush=flush))
+    dep_file = tmp_path / "dep.py"
+    dep_file.write_text("x = 1\n")
+    assert refresh_stale_caches("t", (disp,), (SimpleNamespace(__file__=str(dep_file)),)) is False
