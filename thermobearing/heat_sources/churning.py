@@ -81,20 +81,39 @@ def reynolds_taylor(radius: Any, omega: Any, gap: Any, kinematic_viscosity: Any)
     return re, re * np.sqrt(c / r)
 
 
+def _mu_v_regime(re: float, ta: float) -> tuple[float, int]:
+    """(mu_v, regime) of paper 002 eqs. 12-14 at one (N_Re, N_Ta): laminar 16/N_Re for
+    N_Ta <= 41; Taylor vortices 1.3 mu_l (N_Ta/41)^0.539474 for N_Re <= 2500; turbulent
+    3.0 mu_l (N_Re/2500)^0.85596 above. N_Re = 0 (no rotation) gives mu_v = 0."""
+    mu_l = 16.0 / re if re > 0.0 else 0.0
+    if ta <= TAYLOR_CRITICAL:
+        return mu_l, 0
+    if re <= REYNOLDS_CRITICAL:
+        return 1.3 * mu_l * (ta / TAYLOR_CRITICAL) ** 0.539474, 1
+    return 3.0 * mu_l * (re / REYNOLDS_CRITICAL) ** 0.85596, 2
+
+
+_MU_V_REGIME = np.frompyfunc(_mu_v_regime, 2, 2)
+
+
 def viscous_friction_coefficient(radius: Any, omega: Any, gap: Any,
                                  kinematic_viscosity: Any) -> ChurningRegime:
     """Viscous friction coefficient mu_v [-], paper 002 eqs. 12-14 (see module docstring).
 
+    Scalar inputs give scalar fields (the skidding solver's cage and inner-ring torques call
+    this once per cage speed: plain float arithmetic, ~1 us); arrays broadcast.
     Validity: N_Re > 0 (zero speed gives mu_v = 0 with zero power anyway).
     """
-    re, ta = reynolds_taylor(radius, omega, gap, kinematic_viscosity)
-    safe_re = np.where(re > 0, re, 1.0)
-    mu_l = np.where(re > 0, 16.0 / safe_re, 0.0)
-    vortex = 1.3 * mu_l * (np.maximum(ta, TAYLOR_CRITICAL) / TAYLOR_CRITICAL) ** 0.539474
-    turb = 3.0 * mu_l * (np.maximum(re, REYNOLDS_CRITICAL) / REYNOLDS_CRITICAL) ** 0.85596
-    regime = np.where(ta <= TAYLOR_CRITICAL, 0, np.where(re <= REYNOLDS_CRITICAL, 1, 2))
-    mu = np.choose(regime, [mu_l, vortex, turb])
-    return ChurningRegime(mu, regime, re, ta)
+    args = (radius, omega, gap, kinematic_viscosity)
+    if all(isinstance(a, float | int) for a in args):
+        re = radius * abs(omega) * gap / kinematic_viscosity
+        ta = re * math.sqrt(gap / radius)
+        mu, regime = _mu_v_regime(re, ta)
+        return ChurningRegime(np.float64(mu), np.int64(regime), np.float64(re), np.float64(ta))
+    re, ta = reynolds_taylor(*args)
+    mu, regime = _MU_V_REGIME(re, ta)
+    return ChurningRegime(np.asarray(mu, dtype=float), np.asarray(regime, dtype=np.int64),
+                          re, ta)
 
 
 def cage_churning_power(density, mu_v, omega, width, diameter):

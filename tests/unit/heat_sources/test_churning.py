@@ -28,6 +28,17 @@ def test_regimes_by_hand():
     assert int(r.regime) == 2
 
 
+def test_scalar_and_array_inputs_agree_across_the_regimes():
+    # omega 0 (no rotation), laminar, both sides of N_Ta = 41 and of N_Re = 2500
+    omegas = [0.0, 1.0, 409.0, 411.0, 2499.0, 2501.0, 5000.0, -5000.0]
+    arr = ch.viscous_friction_coefficient(0.1, np.array(omegas), 1e-3, 1e-4)
+    for i, w in enumerate(omegas):
+        one = ch.viscous_friction_coefficient(0.1, w, 1e-3, 1e-4)
+        assert float(one.mu_v) == float(arr.mu_v[i]) and int(one.regime) == int(arr.regime[i])
+    assert list(arr.regime) == [0, 0, 0, 1, 1, 2, 2, 2]
+    assert float(arr.mu_v[0]) == 0.0 and arr.mu_v.dtype == float
+
+
 def test_cage_and_ring_power_by_hand():
     # eq. 15: pi*800*0.01*100^3*0.04*0.28^4/64 = 96.55 W
     q = ch.cage_churning_power(800.0, 0.01, 100.0, 0.04, 0.28)
