@@ -186,6 +186,54 @@ def _initial_guess(prob: LineProblem, hc_guess: float) -> tuple[np.ndarray, floa
     return P, hc_guess - float(np.interp(0.0, X, base))
 
 
+def start_grid(M: float) -> int:
+    """Nodes of the start grid (the coldest solve) for Moes load ``M``.
+
+    The start grid must resolve the exit spike well enough for the time march / Newton to
+    converge, and every node there costs a dense Newton iteration. Measured (session 4, N =
+    1024, L in {2, 5, 10, 20}): 64 nodes converge for 5 <= M <= 50 and save 10-40 % against
+    128 (M = 10, L = 20: 72 against 114 ms), fail from M = 100; 128 nodes fail for M = 200
+    and 250 with L <= 5 (before session 4 as well), 256 converge for 120 <= M <= 250; M >= 300
+    starts on 512 nodes as before. A start that fails is retried on twice the nodes (see
+    :func:`solve_dimensionless`).
+    """
+    if M >= 300.0:
+        return 512
+    if M >= 120.0:
+        return 256
+    if 5.0 <= M < 50.0:
+        return 64
+    return 128
+
+
+def _levels(n: int, cn: int) -> list[int]:
+    """Nested grids from the start grid ``cn`` to ``n``: n/2 and n (the Richardson pair),
+    below n/2 every other power of two (each level's Newton re-adjusts the exit spike in a
+    few iterations whatever the jump, so skipping every other coarse level saves its solve;
+    BM-6, N = 1024: 128 -> 512 -> 1024 is ~25 % faster than 128 -> 256 -> 512 -> 1024)."""
+    levels = [n]
+    if n // 2 >= cn:
+        levels.append(n // 2)
+        while levels[-1] // 4 >= cn:
+            levels.append(levels[-1] // 4)
+        if levels[-1] > cn:
+            levels.append(cn)
+    return levels[::-1]
+
+
+def _cold_start(prob: LineProblem, M: float, L: float, linear: str,
+                tol: float) -> tuple[np.ndarray, float, NewtonReport]:
+    """Solve on the start grid from the Hertz pressure and the Moes film: steady Newton first
+    (heavy loads converge directly in 6-12 iterations), the implicit time march if that
+    fails (M around 10 does not converge without it)."""
+    P0, H00 = _initial_guess(prob, moes_dimensionless(M, L) * math.pi / (8 * M))
+    try:
+        return newton_solve(prob, P0, H00, linear=linear, tol=tol,
+                            max_iter=DIRECT_START_ITERATIONS)
+    except ConvergenceError:
+        return time_march(prob, P0, H00, linear=linear, dt0=0.2, dt_final=1e3, tol=tol)
+
+
 def moes_dimensionless(M: float, L: float) -> float:
     """Moes central film H(M, L) evaluated through :func:`thermobearing.film.moes_line_central`."""
     from ..film import moes_line_central
@@ -224,10 +272,10 @@ def solve_dimensionless(
     rheology : :class:`Rheology`; default Barus with ``alpha p_H = L sqrt(M/(2 pi))``,
         incompressible (the setting of Moes' fit).
     domain : (x_in, x_out) in Hertz half-widths; default :func:`default_domain`.
-    coarse_n : grid of the initial time march (default 128; 512 for M >= 300, whose exit
-        spike a coarser march does not resolve). The nested grids are ``coarse_n``, then
-        ``n/2^(2k+1)``... down from ``n``: n/2 and n (the Richardson pair) and every other
-        power of two below n/2 (e.g. 128 -> 512 -> 1024).
+    coarse_n : start grid (default :func:`start_grid`: 64 to 512 nodes by M; a failed
+        default start is retried on twice the nodes while that is at most n/2). The nested
+        grids are the start grid, then every other power of two below n/2, then n/2 and n
+        (the Richardson pair), e.g. 128 -> 512 -> 1024.
     linear : ``"krylov"`` (fast) or ``"dense"`` (baseline) Newton linear solver.
     max_grid_error : raise if the Richardson error estimate of h_c exceeds this [-].
     f_e, f_r : thermal factors at the finest-grid nodes (see :mod:`.solver`), or None.
@@ -254,19 +302,7 @@ def solve_dimensionless(
                             compressible=False)
     lam = 3.0 * math.pi**2 / (8.0 * M**2)
     t0 = time.perf_counter()
-    # nested grids: n, n/2 (the Richardson pair), then factors of 4 down to the march grid
-    # (128, or 512 for heavy loads): each level's Newton re-adjusts the exit spike in a few
-    # iterations whatever the jump, so skipping every other coarse level saves its solve
-    # (BM-6, N = 1024: 128 -> 512 -> 1024 is ~25 % faster than 128 -> 256 -> 512 -> 1024)
-    cn = coarse_n or (512 if M >= 300 else 128)
-    levels = [n]
-    if n // 2 >= cn:
-        levels.append(n // 2)
-        while levels[-1] // 4 >= cn:
-            levels.append(levels[-1] // 4)
-        if levels[-1] > cn:
-            levels.append(cn)
-    levels = levels[::-1]
+    levels = _levels(n, coarse_n or start_grid(M))
     xs_fine = np.linspace(x_in, x_out, n)
 
     def factors(nk: int, arr: np.ndarray | None) -> np.ndarray | None:
@@ -280,7 +316,9 @@ def solve_dimensionless(
     P = H0 = X = None
     state = {"M": M, "L": L}
     try:
-        for k, nk in enumerate(levels):
+        k = 0
+        while k < len(levels):
+            nk = levels[k]
             prob = LineProblem(nk, x_in, x_out, lam, rheology, factors(nk, f_e), factors(nk, f_r))
             lin_k = "dense" if nk <= 384 else linear
             # coarse levels only feed the next grid (and the Richardson estimate, whose
@@ -295,13 +333,13 @@ def solve_dimensionless(
                     except ConvergenceError:
                         P, H0, rep = time_march(prob, Pg, H0i, linear=lin_k, dt0=0.2, tol=tol_k)
                 else:
-                    P0, H00 = _initial_guess(prob, moes_dimensionless(M, L) * math.pi / (8 * M))
-                    try:  # steady Newton from the Hertz/Moes guess first (M >= ~100 converge)
-                        P, H0, rep = newton_solve(prob, P0, H00, linear=lin_k, tol=tol_k,
-                                                  max_iter=DIRECT_START_ITERATIONS)
+                    try:
+                        P, H0, rep = _cold_start(prob, M, L, lin_k, tol_k)
                     except ConvergenceError:
-                        P, H0, rep = time_march(prob, P0, H00, linear=lin_k, dt0=0.2,
-                                                dt_final=1e3, tol=tol_k)
+                        if coarse_n is None and 2 * nk <= n // 2:
+                            levels = _levels(n, 2 * nk)  # start again on a finer grid
+                            continue
+                        raise
             else:
                 Pg = np.interp(prob.x, X, P)
                 try:
@@ -314,6 +352,7 @@ def solve_dimensionless(
             H = prob.film(P, H0)
             hc_levels.append(float(np.interp(0.0, X, H)))
             hm_levels.append(float(H.min()))
+            k += 1
     except ConvergenceError as err:
         raise ConvergenceError(
             "ehl.line", err.residual,
