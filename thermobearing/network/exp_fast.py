@@ -651,6 +651,10 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     accepted = rejected = failures = 0
     shp = (n,)
     ws_real = ctx.ws[float]
+    hwj = heat_with_jacobian if heat is not None else None
+    if store is not None:
+        s_lam, s_V, s_M = store.lam, store.V, store.M
+        s_t0, s_h, s_y0 = store.t0, store.h, store.y0
     Bw, Jw, vw, tw = ws_real
     net = driver.network
     try:
@@ -682,9 +686,12 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
                     if not sym_now:
                         if lam.dtype.kind == "c":
                             Bw, Jw, vw, tw = ctx.ws[complex]
-                            if store is not None and store.lam.dtype.kind != "c":
-                                store.make_complex()
-                            s_lam, s_V, s_M = (a.astype(complex) for a in ctx.empty)
+                            if store is not None:
+                                if store.lam.dtype.kind != "c":
+                                    store.make_complex()
+                                s_lam, s_V, s_M = store.lam, store.V, store.M
+                            else:
+                                s_lam, s_V, s_M = (a.astype(complex) for a in ctx.empty)
                         else:
                             Bw, Jw, vw, tw = ws_real
                         Bw[:, 0] = lam
@@ -715,9 +722,11 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
                         q3 = net.heat_vector(q3)
                     n_heat += 2
                 if store is not None:
-                    j = store.reserve()
-                    s_lam, s_V, s_M = store.lam, store.V, store.M
-                    s_t0, s_h, s_y0 = store.t0, store.h, store.y0
+                    j = store.count
+                    if j == len(s_t0):  # full (or first use): grow, refresh the views
+                        store.reserve()
+                        s_lam, s_V, s_M = store.lam, store.V, store.M
+                        s_t0, s_h, s_y0 = store.t0, store.h, store.y0
                 else:
                     j = -1
                 y1, err, gen, to_b, to_s, stored = _ws_finish(
@@ -772,13 +781,25 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
                     rec.r.append(vw[5].copy())
             y = y1
             if not last:
-                try:
-                    q0, jq, calls = _start_values(driver, heat, heat_jacobian,
-                                                  heat_with_jacobian, t,
-                                                  t if t < t1 else t_left, y, n, zeros)
-                except _NewtonFailure as exc:
-                    raise _fail(driver, exc, t, h, y) from None
-                n_heat += calls
+                if hwj is not None:  # the common case inline (see _start_values)
+                    q0, jq = hwj(t, y)
+                    if type(q0) is not np.ndarray or q0.shape != shp:
+                        q0 = net.heat_vector(q0)
+                    if type(jq) is not np.ndarray or jq.dtype != np.float64:
+                        jq = np.asarray(jq, dtype=float)
+                    if jq.shape != shp and jq.shape != (n, n):
+                        from ..errors import InputError
+
+                        raise InputError("heat_jacobian", jq.shape,
+                                         f"a finite ({n},) diagonal or ({n}, {n}) matrix")
+                    n_heat += 1
+                else:
+                    try:
+                        q0, jq, calls = _start_values(driver, heat, heat_jacobian,
+                                                      heat_with_jacobian, t, t, y, n, zeros)
+                    except _NewtonFailure as exc:
+                        raise _fail(driver, exc, t, h, y) from None
+                    n_heat += calls
                 n_jac += 1
                 sym_now = sym and jq.ndim == 1
                 lin = False

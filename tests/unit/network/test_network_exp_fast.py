@@ -217,3 +217,35 @@ def test_non_finite_values_on_the_compiled_path(bad):
     # the failing step starts where the source turns NaN (t = 100 s), or just before it
     # when a stage of a shrinking step crosses it
     assert 99.0 <= info.value.state["time"] <= 200.0
+
+
+def test_complex_spectrum_on_a_symmetric_network_switches_the_store():
+    """Symmetric K (chain) but a full, skew heat Jacobian dq/dT = [[0, 20], [-20, 0]] W/K
+    (a linear source q = B (T - T_amb) + b): A = C^-1 (-K + B) has complex eigenvalues, so
+    the compiled path leaves the Jacobi branch, and the run's real dense store turns complex.
+    The source is linear, so the method is exact: compare with expm of the linear system."""
+    from scipy.linalg import expm
+
+    B = np.array([[0.0, 20.0], [-20.0, 0.0]])
+    b = np.array([50.0, 0.0])
+
+    def heat(t, T):
+        return B @ (T - T_AMB) + b
+
+    res = integrate(chain(), heat, (0.0, 3000.0), T_AMB, method="exprb43",
+                    heat_jacobian=lambda t, T: B, max_step=400.0)
+    sys_ = assemble(chain())
+    J = -sys_.K + B
+    assert np.iscomplexobj(np.linalg.eigvals(J / sys_.C[:, None]))
+    assert np.iscomplexobj(res.dense[0].store.lam)
+    rhs = sys_.s + b - B @ np.full(2, T_AMB)
+    Tss = np.linalg.solve(-J, rhs)
+    A = J / sys_.C[:, None]
+
+    def exact(t):
+        return np.array([Tss + expm(A * ti) @ (np.full(2, T_AMB) - Tss) for ti in t])
+
+    assert np.max(np.abs(res.temperatures - exact(res.times))) < 1e-9
+    grid = np.linspace(0.0, 3000.0, 61)
+    assert np.max(np.abs(res.sample(grid) - exact(grid))) < 1e-9
+    assert res.audit.relative_imbalance() < 1e-10
