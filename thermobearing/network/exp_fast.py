@@ -582,8 +582,17 @@ def _fail(driver, exc, t, h, y):
 
 def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobian,
                 heat_with_jacobian, rec, td: bool) -> np.ndarray:
-    """Integrate one smooth segment [t0, t1] with the compiled exprb43 path; returns the
-    state at t1; records into ``rec`` like the generic driver loop (steppers._Driver).
+    """One smooth segment [t0, t1]: :func:`run_segments` with two edges."""
+    return run_segments(driver, (t0, t1), y0, heat, heat_jacobian, heat_with_jacobian, rec,
+                        td)
+
+
+def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_jacobian,
+                 rec, td: bool) -> np.ndarray:
+    """Integrate over consecutive smooth segments [edges[k], edges[k+1]] (restarting at
+    each edge: q is re-evaluated there, a step never crosses one) with the compiled exprb43
+    path; returns the state at edges[-1]; records into ``rec`` like the generic driver loop
+    (steppers._Driver.segment), whose per-segment set-up is done here once per run.
 
     Step-size control as in the generic loop (first trial step the whole segment, capped
     at 4x the last segment's first step; growth min(5, max(0.2, 0.9 err^-1/4)) outside
@@ -596,7 +605,11 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     clipped to [1, 4] (fac = min(1/2, max(0.1, 0.9 e^-1/p))). BM-1, 4 nodes: 31 + 4
     rejected steps at rtol 3e-4 instead of 31 + 7 (heat calls 101 instead of 107).
     """
+    if driver.network._revision != driver.asm.revision:
+        driver._build()
     core = driver.core
+    core.time_dependent = td
+    core.set_heat(heat, heat_jacobian)
     sys_ = core.sys
     K, s, C = sys_.K, sys_.s, core.C
     n = core.n
@@ -605,7 +618,6 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     if ctx is None:
         ctx = driver.fast_info = _Context.of(driver.asm, sys_, C)
     sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
-    t_left = core.t_end_left  # a segment sees its end breakpoint from the left
     if heat is not None and heat_with_jacobian is None and heat_jacobian is None \
             and core.jacobian_mode not in ("none", "fd", "fd_diagonal"):
         from ..errors import InputError
@@ -620,203 +632,215 @@ def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobia
     s_lam, s_V, s_M = ctx.empty
     s_t0, s_h, s_y0 = ctx.empty_rows
     n_heat = 0
-    n_jac = 1
-    try:
-        q0, jq, calls = _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t0,
-                                      t0 if t0 < t1 else t_left, y0, n, zeros)
-    except _NewtonFailure as exc:
-        raise _fail(driver, exc, t0, 0.0, y0) from None
-    n_heat += calls
-    t, y = t0, y0
-    if driver.first_step is not None:
-        h = min(driver.first_step, t1 - t0)
-    else:
-        h = min(t1 - t0, driver.max_step)
-        if driver.h_first is not None:
-            h = min(h, 4.0 * driver.h_first)
-    first_in_segment = True
-    rejected_in_row = False
-    err_prev = h_prev = 0.0  # the last rejected trial from the same start
-    pending_rate = not rec.started  # the run's first point needs its rate
-    if not rec.started:
-        rec.started = True
-        if rec.active:
-            rec.t.append(t0)
-            rec.y.append(y0.copy())
-    tiny = 1e-12 * max(1.0, abs(t1))
-    lin = False
-    sym_now = sym and jq.ndim == 1
-    c1 = zeros
+    n_jac = 0
     facmax, max_step, min_step = driver.facmax, driver.max_step, driver.min_step
     accepted = rejected = failures = 0
     shp = (n,)
     ws_real = ctx.ws[float]
+    Bw, Jw, vw, tw = ws_real
     hwj = heat_with_jacobian if heat is not None else None
     if store is not None:
         s_lam, s_V, s_M = store.lam, store.V, store.M
         s_t0, s_h, s_y0 = store.t0, store.h, store.y0
-    Bw, Jw, vw, tw = ws_real
     net = driver.network
+    y = y0
     try:
-        while t < t1 - tiny:
-            if t + h >= t1 - 1e-3 * h:
-                h = t1 - t
-                last = True
-            else:
-                last = False
+        for k_seg in range(len(edges) - 1):
+            t0, t1 = edges[k_seg], edges[k_seg + 1]
+            if k_seg and net._revision != driver.asm.revision:
+                # the network was edited during the run (by the heat function): the generic
+                # driver rebuilds and re-enters, one segment at a time
+                for a, b in zip(edges[k_seg:-1], edges[k_seg + 1:], strict=True):
+                    y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
+                return y
+            core.t_end = t1
+            t_left = core.t_end_left = math.nextafter(t1, -math.inf)  # seen from the left
             try:
-                if td:  # c1 = h dq/dt, one-sided difference inside the segment
-                    dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
-                    tq = t + dt_fd
-                    r = heat(tq if tq < t1 else t_left, y)
-                    n_heat += 1
-                    if type(r) is not np.ndarray or r.shape != shp:
-                        r = net.heat_vector(r)
-                    c1 = (r - q0) * (h / dt_fd)
-                if not lin:
-                    if sym_now:
-                        Bw, Jw, vw, tw = ws_real
-                        ok, U2 = _ws_start_sym(K, s, jq, rs, y, q0, c1, td, h, Bw, Jw, vw)
-                    else:
-                        ok, lam, V, W, JqM, f0, wf = _general_start(core, K, jq, y, q0)
-                    if not ok:
-                        raise _fail(driver, _NewtonFailure(
-                            math.inf, f"heat source returned a non-finite value at t={t}"),
-                            t, h, y)
-                    if not sym_now:
-                        if lam.dtype.kind == "c":
-                            Bw, Jw, vw, tw = ctx.ws[complex]
-                            if store is not None:
-                                if store.lam.dtype.kind != "c":
-                                    store.make_complex()
-                                s_lam, s_V, s_M = store.lam, store.V, store.M
-                            else:
-                                s_lam, s_V, s_M = (a.astype(complex) for a in ctx.empty)
-                        else:
-                            Bw, Jw, vw, tw = ws_real
-                        Bw[:, 0] = lam
-                        Bw[:, 1:n + 1] = V
-                        Bw[:, n + 1:2 * n + 1] = W
-                        Bw[:, 2 * n + 1] = wf
-                        Jw[:, :] = JqM
-                        vw[0] = f0
-                        U2 = _ws_stage2(y, c1, td, h, Bw)
-                    lin = True
-                    if pending_rate and rec.active:
-                        rec.r.append(vw[0] / C)
-                    pending_rate = False
-                else:
-                    U2 = _ws_stage2(y, c1, td, h, Bw)
-                if heat is None:
-                    q2 = q3 = zeros
-                else:
-                    tq = t + 0.5 * h
-                    q2 = heat(tq if tq < t1 else t_left, U2)
-                    if type(q2) is not np.ndarray or q2.shape != shp:
-                        q2 = net.heat_vector(q2)
-                U3 = _ws_stage3(y, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw)
-                if heat is not None:
-                    tq = t + h
-                    q3 = heat(tq if tq < t1 else t_left, U3)
-                    if type(q3) is not np.ndarray or q3.shape != shp:
-                        q3 = net.heat_vector(q3)
-                    n_heat += 2
-                if store is not None:
-                    j = store.count
-                    if j == len(s_t0):  # full (or first use): grow, refresh the views
-                        store.reserve()
-                        s_lam, s_V, s_M = store.lam, store.V, store.M
-                        s_t0, s_h, s_y0 = store.t0, store.h, store.y0
-                else:
-                    j = -1
-                y1, err, gen, to_b, to_s, stored = _ws_finish(
-                    y, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-                    s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
-                if not math.isfinite(err):
-                    raise _NewtonFailure(math.inf, "non-finite exponential step")
+                q0, jq, calls = _start_values(driver, heat, heat_jacobian, heat_with_jacobian,
+                                              t0, t0, y, n, zeros)
             except _NewtonFailure as exc:
-                failures += 1
-                h_new = h / 4.0
-                if h_new < min_step:
-                    raise _fail(driver, exc, t, h, y) from None
-                h = h_new
-                continue
-            if err > 1.0:
-                rejected += 1
-                fac = max(0.1, 0.9 * err ** -0.25)
-                if rejected_in_row:
-                    fac = min(fac, 0.5)
-                    if err_prev > err:  # the order the estimate actually showed
-                        p_eff = min(4.0, max(1.0, math.log(err_prev / err)
-                                             / math.log(h_prev / h)))
-                        fac = min(fac, max(0.1, 0.9 * err ** (-1.0 / p_eff)))
-                else:  # first rejection: assume no better than first order (see above)
-                    fac = min(fac, max(0.1, 0.9 / err))
-                err_prev, h_prev = err, h
-                rejected_in_row = True
-                h = h * fac
-                if h < min_step:
-                    from ..errors import ConvergenceError
-
-                    raise ConvergenceError(
-                        f"network stepper {driver.method_name}", err,
-                        "step size underflow in error control",
-                        {"time": t, "step_size": h, "temperatures": y})
-                continue
-            # accept
+                raise _fail(driver, exc, t0, 0.0, y) from None
+            n_heat += calls
+            n_jac += 1
+            t = t0
+            if driver.first_step is not None:
+                h = min(driver.first_step, t1 - t0)
+            else:
+                h = min(t1 - t0, max_step)
+                if driver.h_first is not None:
+                    h = min(h, 4.0 * driver.h_first)
+            first_in_segment = True
             rejected_in_row = False
-            if first_in_segment:
-                driver.h_first = h
-                first_in_segment = False
-            accepted += 1
-            t_start = t
-            t = t1 if last else t + h
-            rec.rows.append((t, gen, stored, to_b, to_s))
-            if store is not None:
-                store.count = j + 1
-                rec.pieces.append(StorePiece(store, j, t_start, h))
-                rec.t.append(t)
-                rec.y.append(y1)
-                if last:
-                    rec.r.append(vw[5].copy())
-            y = y1
-            if not last:
-                if hwj is not None:  # the common case inline (see _start_values)
-                    q0, jq = hwj(t, y)
-                    if type(q0) is not np.ndarray or q0.shape != shp:
-                        q0 = net.heat_vector(q0)
-                    if type(jq) is not np.ndarray or jq.dtype != np.float64:
-                        jq = np.asarray(jq, dtype=float)
-                    if jq.shape != shp and jq.shape != (n, n):
-                        from ..errors import InputError
-
-                        raise InputError("heat_jacobian", jq.shape,
-                                         f"a finite ({n},) diagonal or ({n}, {n}) matrix")
-                    n_heat += 1
+            err_prev = h_prev = 0.0  # the last rejected trial from the same start
+            pending_rate = not rec.started  # the run's first point needs its rate
+            if not rec.started:
+                rec.started = True
+                if rec.active:
+                    rec.t.append(t0)
+                    rec.y.append(y.copy())
+            tiny = 1e-12 * max(1.0, abs(t1))
+            lin = False
+            sym_now = sym and jq.ndim == 1
+            c1 = zeros
+            while t < t1 - tiny:
+                if t + h >= t1 - 1e-3 * h:
+                    h = t1 - t
+                    last = True
                 else:
-                    try:
-                        q0, jq, calls = _start_values(driver, heat, heat_jacobian,
-                                                      heat_with_jacobian, t, t, y, n, zeros)
-                    except _NewtonFailure as exc:
+                    last = False
+                try:
+                    if td:  # c1 = h dq/dt, one-sided difference inside the segment
+                        dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
+                        tq = t + dt_fd
+                        r = heat(tq if tq < t1 else t_left, y)
+                        n_heat += 1
+                        if type(r) is not np.ndarray or r.shape != shp:
+                            r = net.heat_vector(r)
+                        c1 = (r - q0) * (h / dt_fd)
+                    if not lin:
+                        if sym_now:
+                            Bw, Jw, vw, tw = ws_real
+                            ok, U2 = _ws_start_sym(K, s, jq, rs, y, q0, c1, td, h, Bw, Jw, vw)
+                        else:
+                            ok, lam, V, W, JqM, f0, wf = _general_start(core, K, jq, y, q0)
+                        if not ok:
+                            raise _fail(driver, _NewtonFailure(
+                                math.inf, f"heat source returned a non-finite value at t={t}"),
+                                t, h, y)
+                        if not sym_now:
+                            if lam.dtype.kind == "c":
+                                Bw, Jw, vw, tw = ctx.ws[complex]
+                                if store is not None:
+                                    if store.lam.dtype.kind != "c":
+                                        store.make_complex()
+                                    s_lam, s_V, s_M = store.lam, store.V, store.M
+                                else:
+                                    s_lam, s_V, s_M = (a.astype(complex) for a in ctx.empty)
+                            else:
+                                Bw, Jw, vw, tw = ws_real
+                            Bw[:, 0] = lam
+                            Bw[:, 1:n + 1] = V
+                            Bw[:, n + 1:2 * n + 1] = W
+                            Bw[:, 2 * n + 1] = wf
+                            Jw[:, :] = JqM
+                            vw[0] = f0
+                            U2 = _ws_stage2(y, c1, td, h, Bw)
+                        lin = True
+                        if pending_rate and rec.active:
+                            rec.r.append(vw[0] / C)
+                        pending_rate = False
+                    else:
+                        U2 = _ws_stage2(y, c1, td, h, Bw)
+                    if heat is None:
+                        q2 = q3 = zeros
+                    else:
+                        tq = t + 0.5 * h
+                        q2 = heat(tq if tq < t1 else t_left, U2)
+                        if type(q2) is not np.ndarray or q2.shape != shp:
+                            q2 = net.heat_vector(q2)
+                    U3 = _ws_stage3(y, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw)
+                    if heat is not None:
+                        tq = t + h
+                        q3 = heat(tq if tq < t1 else t_left, U3)
+                        if type(q3) is not np.ndarray or q3.shape != shp:
+                            q3 = net.heat_vector(q3)
+                        n_heat += 2
+                    if store is not None:
+                        j = store.count
+                        if j == len(s_t0):  # full (or first use): grow, refresh the views
+                            store.reserve()
+                            s_lam, s_V, s_M = store.lam, store.V, store.M
+                            s_t0, s_h, s_y0 = store.t0, store.h, store.y0
+                    else:
+                        j = -1
+                    y1, err, gen, to_b, to_s, stored = _ws_finish(
+                        y, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
+                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
+                    if not math.isfinite(err):
+                        raise _NewtonFailure(math.inf, "non-finite exponential step")
+                except _NewtonFailure as exc:
+                    failures += 1
+                    h_new = h / 4.0
+                    if h_new < min_step:
                         raise _fail(driver, exc, t, h, y) from None
-                    n_heat += calls
-                n_jac += 1
-                sym_now = sym and jq.ndim == 1
-                lin = False
-                pending_rate = True
-            driver.h_last = h
-            fac = facmax if err == 0.0 else min(facmax, max(0.2, 0.9 * err ** -0.25))
-            if not 1.0 <= fac <= 1.2:
-                h = h * fac
-            if h > max_step:
-                h = max_step
+                    h = h_new
+                    continue
+                if err > 1.0:
+                    rejected += 1
+                    fac = max(0.1, 0.9 * err ** -0.25)
+                    if rejected_in_row:
+                        fac = min(fac, 0.5)
+                        if err_prev > err:  # the order the estimate actually showed
+                            p_eff = min(4.0, max(1.0, math.log(err_prev / err)
+                                                 / math.log(h_prev / h)))
+                            fac = min(fac, max(0.1, 0.9 * err ** (-1.0 / p_eff)))
+                    else:  # first rejection: assume no better than first order (see above)
+                        fac = min(fac, max(0.1, 0.9 / err))
+                    err_prev, h_prev = err, h
+                    rejected_in_row = True
+                    h = h * fac
+                    if h < min_step:
+                        from ..errors import ConvergenceError
+
+                        raise ConvergenceError(
+                            f"network stepper {driver.method_name}", err,
+                            "step size underflow in error control",
+                            {"time": t, "step_size": h, "temperatures": y})
+                    continue
+                # accept
+                rejected_in_row = False
+                if first_in_segment:
+                    driver.h_first = h
+                    first_in_segment = False
+                accepted += 1
+                t_start = t
+                t = t1 if last else t + h
+                rec.rows.append((t, gen, stored, to_b, to_s))
+                if store is not None:
+                    store.count = j + 1
+                    rec.pieces.append(StorePiece(store, j, t_start, h))
+                    rec.t.append(t)
+                    rec.y.append(y1)
+                    if last:
+                        rec.r.append(vw[5].copy())
+                y = y1
+                if not last:
+                    if hwj is not None:  # the common case inline (see _start_values)
+                        q0, jq = hwj(t, y)
+                        if type(q0) is not np.ndarray or q0.shape != shp:
+                            q0 = net.heat_vector(q0)
+                        if type(jq) is not np.ndarray or jq.dtype != np.float64:
+                            jq = np.asarray(jq, dtype=float)
+                        if jq.shape != shp and jq.shape != (n, n):
+                            from ..errors import InputError
+
+                            raise InputError("heat_jacobian", jq.shape,
+                                             f"a finite ({n},) diagonal or ({n}, {n}) matrix")
+                        n_heat += 1
+                    else:
+                        try:
+                            q0, jq, calls = _start_values(driver, heat, heat_jacobian,
+                                                          heat_with_jacobian, t, t, y, n, zeros)
+                        except _NewtonFailure as exc:
+                            raise _fail(driver, exc, t, h, y) from None
+                        n_heat += calls
+                    n_jac += 1
+                    sym_now = sym and jq.ndim == 1
+                    lin = False
+                    pending_rate = True
+                driver.h_last = h
+                fac = facmax if err == 0.0 else min(facmax, max(0.2, 0.9 * err ** -0.25))
+                if not 1.0 <= fac <= 1.2:
+                    h = h * fac
+                if h > max_step:
+                    h = max_step
+            if pending_rate and rec.active:  # (a segment ended by the tolerance guard)
+                f, _ = core.f(t, y)
+                rec.r.append(f * core.invC)
     finally:
         stats["steps"] += accepted
         stats["rejected"] += rejected
         stats["newton_failures"] += failures
         stats["heat_evaluations"] += n_heat
         stats["jacobians"] += n_jac
-    if pending_rate and rec.active:  # (a segment ended by the tolerance guard)
-        f, _ = core.f(t, y)
-        rec.r.append(f * core.invC)
     return y

@@ -786,8 +786,12 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
     cuts = sorted({float(b) for b in breakpoints if t0 < float(b) < t1})
     edges = [t0, *cuts, t1]
     td = bool(heat_time_dependent) and not constant
-    for a, b in zip(edges[:-1], edges[1:], strict=True):
-        y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
+    if method == "exprb43" and driver._fast_applies():  # compiled path, all segments
+        y = driver._exp_fast.run_segments(driver, edges, y, heat, heat_jacobian,
+                                          heat_with_jacobian, rec, td)
+    else:
+        for a, b in zip(edges[:-1], edges[1:], strict=True):
+            y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
     return TransientResult(
         names=network.state_nodes,
         boundary={n: network.boundary_temperature(n) for n in network.boundary_nodes},
