@@ -249,3 +249,39 @@ def test_complex_spectrum_on_a_symmetric_network_switches_the_store():
     grid = np.linspace(0.0, 3000.0, 61)
     assert np.max(np.abs(res.sample(grid) - exact(grid))) < 1e-9
     assert res.audit.relative_imbalance() < 1e-10
+
+
+def test_network_edited_during_the_run_hands_over_to_the_driver(monkeypatch):
+    """A heat function that changes the oil flow when first called at t >= 300 s (a
+    what-if inside the run; that call is the restart at the 300-s breakpoint, so the edit
+    takes effect from the next breakpoint, 450 s, as in the generic driver, which checks
+    the network at each restart): the compiled multi-segment loop hands the remaining
+    segments to the generic driver; the result equals the general path and two runs."""
+    edges, P = load_protocol(4, 150.0)
+
+    def run(general: bool):
+        net = bearing_network(4)
+        heat = viscous_heat_for(net, edges, P)
+
+        def editing(t, T):
+            if t >= 300.0 and net.streams["oil"].capacity_rate != 400.0:
+                net.set_stream_flow("oil", 400.0)
+            return heat(t, T)
+
+        with monkeypatch.context() as m:
+            if general:
+                m.setattr(_Driver, "_fast_applies", lambda self: False)
+            return integrate(net, editing, (0.0, edges[-1]), 308.15, method="exprb43",
+                             breakpoints=edges, rtol=1e-6, atol=1e-5,
+                             heat_jacobian=heat.jacobian, heat_time_dependent=False)
+
+    a, g = run(False), run(True)
+    net_b = bearing_network(4)
+    heat = viscous_heat_for(net_b, edges, P)
+    kw = dict(method="exprb43", breakpoints=edges, rtol=1e-6, atol=1e-5,
+              heat_jacobian=heat.jacobian, heat_time_dependent=False)
+    b1 = integrate(net_b, heat, (0.0, 450.0), 308.15, **kw)
+    net_b.set_stream_flow("oil", 400.0)
+    b2 = integrate(net_b, heat, (450.0, edges[-1]), b1.temperatures[-1], **kw)
+    np.testing.assert_allclose(a.temperatures[-1], g.temperatures[-1], atol=1e-4)
+    np.testing.assert_allclose(a.temperatures[-1], b2.temperatures[-1], atol=1e-4)
