@@ -14,8 +14,10 @@ Steppers (registry ``stepper``)
   (Hochbruck, Ostermann & Schweitzer 2009): the linearised network is integrated exactly
   (eigendecomposition of the small dense Jacobian), so steps are limited only by the
   nonlinearity of q; exact dense output; O(n^3) per step (dense networks only).
-- ``crank_nicolson``: trapezoidal rule, A- but not L-stable: it rings on stiff modes and on
-  zero-capacity nodes. Fixed step only; kept to show (BM-3) what the L-stable methods avoid.
+- ``crank_nicolson`` (this and ``explicit_euler`` in :mod:`.steppers_comparison`;
+  :func:`solve_steady` in :mod:`.steady`): trapezoidal rule, A- but not L-stable: it
+  rings on stiff modes and on zero-capacity nodes. Fixed step only; kept to show (BM-3)
+  what the L-stable methods avoid.
 - ``explicit_euler``: forward Euler, unstable above h = 2 C/K on the smallest node.
   Fixed step only; same purpose.
 
@@ -70,7 +72,7 @@ from scipy.linalg import lapack
 from ..errors import ConvergenceError, InputError
 from ..registry import Registry
 from .assemble import Assembler, System, assembler_for
-from .audit import EnergyAudit, SteadyResult, TransientResult
+from .audit import EnergyAudit, TransientResult
 from .graph import ThermalNetwork
 
 STEPPERS: Registry[type] = Registry("stepper", "time integration of the thermal network")
@@ -410,58 +412,6 @@ class BackwardEuler(_Method):
             err = float((np.abs(core.solve(core.C * est)) / sc).max())
         gen, to_b, to_s = _audit(core, h, (1.0,), (y1,), (q1,))
         return _Trial(y1, f1, q1, err, gen, to_b, to_s)
-
-
-@STEPPERS.register("crank_nicolson", references=["crank_nicolson1947"],
-                   parameters={"dt": "s"},
-                   validity="A-stable, not L-stable: rings on stiff modes; fixed dt only; "
-                            "for comparison (BM-3)")
-class CrankNicolson(_Method):
-    """Crank-Nicolson (trapezoidal rule), C (y1 - y0) = h/2 (f0 + f1); fixed step only.
-
-    Crank & Nicolson (1947). Second order but not L-stable: the amplification factor tends
-    to -1 on stiff modes, so small-capacity nodes oscillate at large steps.
-    """
-
-    order = 2
-    adaptive = False
-    name = "crank_nicolson"
-
-    def step(self, core, t, h, y0, f0, q0):
-        core.factor(0.5 * h)
-        ydot0 = f0 * core.invC
-        y1, f1, q1, _ = core.newton(t + h, y0, y0 + h * ydot0, 0.5 * h, 0.5 * h * f0)
-        gen, to_b, to_s = _audit(core, h, (0.5, 0.5), (y0, y1), (q0, q1))
-        return _Trial(y1, f1, q1, None, gen, to_b, to_s)
-
-
-@STEPPERS.register("explicit_euler", references=["hairer_wanner1996"],
-                   parameters={"dt": "s"},
-                   validity="stable only for dt < 2 min(C_i / K_ii); no zero-capacity nodes; "
-                            "for comparison (BM-3)")
-class ExplicitEuler(_Method):
-    """Forward (explicit) Euler, y1 = y0 + h f0 / C; fixed step only, for comparison.
-
-    Unstable for h > 2 C_i/K_ii on the smallest node (Hairer & Wanner 1996, sec. IV.2).
-    """
-
-    order = 1
-    adaptive = False
-    name = "explicit_euler"
-
-    def step(self, core, t, h, y0, f0, q0):
-        if core.has_alg:
-            raise InputError("method", "explicit_euler", "a network without zero-capacity nodes")
-        with np.errstate(over="ignore", invalid="ignore"):
-            y1 = y0 + h * f0 / core.C
-            ok = bool(np.all(np.isfinite(y1)))
-            if ok:
-                f1, q1 = core.f(t + h, y1)
-                ok = bool(np.all(np.isfinite(f1)) and np.all(np.isfinite(f1 * core.invC)))
-        if not ok:
-            raise _NewtonFailure(math.inf, "explicit Euler blew up (step above 2 C/K)")
-        gen, to_b, to_s = _audit(core, h, (1.0,), (y0,), (q0,))
-        return _Trial(y1, f1, q1, None, gen, to_b, to_s)
 
 
 # ==================================================================== driver
@@ -852,41 +802,7 @@ class TransientStepper:
                            self._driver.core.stats["steps"] - steps0)
 
 
-def solve_steady(network: ThermalNetwork, heat: HeatFn | None = None, T_guess=None,
-                 t: float = 0.0, xtol: float = 1e-10, max_iter: int = 100,
-                 heat_jacobian: Callable | None = None, jacobian: str = "fd") -> SteadyResult:
-    """Steady state f(T) = -K(T) T + s + q(t, T) = 0 by Newton's method.
-
-    The Jacobian is -K + dq/dT (conductances' own temperature dependence is left out of
-    the Jacobian, so T-dependent edges converge linearly, not quadratically). Converged
-    when max |dT| <= xtol [K]. Zero-capacity nodes are no different here.
-    """
-    y = _initial_vector(network, 300.0 if T_guess is None else T_guess)
-    heat, constant = _as_heat_fn(network, heat)
-    if constant:
-        jacobian = "none"
-    asm = Assembler(network)
-    core = _Core(network, asm, 0.0, 1.0, jacobian)
-    core.set_heat(heat, heat_jacobian)
-    res = math.inf
-    for it in range(1, max_iter + 1):
-        core.update_system(y)
-        f, q = core.f(t, y)
-        res = float(np.max(np.abs(f)))
-        core.refresh_jacobian(t, y, q)
-        KmJ = core.KmJ
-        if sp.issparse(KmJ):
-            dy = spla.spsolve(KmJ.tocsc(), f)
-        else:
-            dy = np.linalg.solve(KmJ, f)
-        if not np.all(np.isfinite(dy)):
-            break
-        y = y + dy
-        if np.max(np.abs(dy)) <= xtol * max(1.0, 1e-3 * float(np.max(np.abs(y)))):
-            core.update_system(y)
-            f, q = core.f(t, y)
-            return SteadyResult(network.state_nodes, y, float(q.sum()),
-                                core.sys.to_boundaries(y), core.sys.to_streams(y), it,
-                                float(np.max(np.abs(f))))
-    raise ConvergenceError("network steady Newton", res, f"no convergence in {max_iter} "
-                           "iterations", {"temperatures": y})
+# the fixed-step comparison steppers (registered on import) and the steady solve live in
+# their own modules; imported here so that ``steppers`` keeps every public name
+from . import steppers_comparison  # noqa: E402, F401
+from .steady import solve_steady  # noqa: E402, F401
