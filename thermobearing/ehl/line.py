@@ -272,8 +272,9 @@ def solve_dimensionless(
     rheology : :class:`Rheology`; default Barus with ``alpha p_H = L sqrt(M/(2 pi))``,
         incompressible (the setting of Moes' fit).
     domain : (x_in, x_out) in Hertz half-widths; default :func:`default_domain`.
-    coarse_n : start grid (default :func:`start_grid`: 64 to 512 nodes by M; a failed
-        default start is retried on twice the nodes while that is at most n/2). The nested
+    coarse_n : start grid (default :func:`start_grid`: 64 to 512 nodes by M; a default start
+        that fails, on the start grid or on a later level, is retried on twice the nodes
+        while that is at most n/2). The nested
         grids are the start grid, then every other power of two below n/2, then n/2 and n
         (the Richardson pair), e.g. 128 -> 512 -> 1024.
     linear : ``"krylov"`` (fast) or ``"dense"`` (baseline) Newton linear solver.
@@ -336,16 +337,30 @@ def solve_dimensionless(
                     try:
                         P, H0, rep = _cold_start(prob, M, L, lin_k, tol_k)
                     except ConvergenceError:
-                        if coarse_n is None and 2 * nk <= n // 2:
+                        if coarse_n is None and initial is None and 2 * nk <= n // 2:
                             levels = _levels(n, 2 * nk)  # start again on a finer grid
                             continue
                         raise
             else:
                 Pg = np.interp(prob.x, X, P)
                 try:
-                    P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=tol_k)
+                    try:
+                        P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=tol_k)
+                    except ConvergenceError:
+                        P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5,
+                                                tol=tol_k)
                 except ConvergenceError:
-                    P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5, tol=tol_k)
+                    # a coarse default start can converge and still hand the next level a
+                    # spike it cannot follow (M = 39, L = 1.3: 64 -> 256 nodes fails, a
+                    # 128-node start converges): start again on twice the start grid
+                    start = levels[0]
+                    if coarse_n is None and initial is None and 2 * start <= n // 2:
+                        levels = _levels(n, 2 * start)
+                        k, its, lin, X = 0, 0, 0, None
+                        hc_levels.clear()
+                        hm_levels.clear()
+                        continue
+                    raise
             its += rep.iterations
             lin += rep.linear_iterations
             X = prob.x

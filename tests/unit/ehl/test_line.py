@@ -134,3 +134,20 @@ def test_numerical_roller_drag_rigid_rescaling_matches_martin():
     martin = 4.8966 * 0.08 * 10.0 * 0.01 / (q / 0.01)
     assert np.allclose(f.film_thickness, martin, rtol=0.01)
     assert np.all(f.poiseuille > 0)
+
+
+def test_default_start_retried_when_a_later_level_fails():
+    """M = 39, L = 1.3 (a loaded roller of paper 000 with the numerical drag): the 64-node
+    default start converges but the 256-node level cannot follow its spike; the solver starts
+    again on 128 nodes and gives the film of an explicit 128-node start."""
+    from thermobearing.ehl.line import nodes_for, start_grid
+
+    M, L = 39.0126, 1.29731
+    n = nodes_for(M, 512, L)
+    assert start_grid(M) == 64
+    with pytest.raises(ConvergenceError):
+        solve_dimensionless(M, L, n=n, coarse_n=64)
+    default = solve_dimensionless(M, L, n=n)
+    explicit = solve_dimensionless(M, L, n=n, coarse_n=128)
+    assert default.central_film == pytest.approx(explicit.central_film, rel=1e-9)
+    assert default.minimum_film == pytest.approx(explicit.minimum_film, rel=1e-9)
