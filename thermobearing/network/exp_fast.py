@@ -53,10 +53,8 @@ from .exp_kernels import (  # noqa: F401  (_jacobi_eigh: re-exported for tests a
     _ws_stage3,
     _ws_start_sym,
 )
-from .exponential import _nb_diagonalise, _nb_scaled_jacobian
+from .exponential import _nb_scaled_jacobian, diagonalise_or_refuse
 from .steppers import _NewtonFailure
-
-_COND_MAX = 1e8
 
 
 # ------------------------------------------------------------ dense output store
@@ -149,20 +147,7 @@ def _general_start(core, K, jq, y0, q0):
     A = _nb_scaled_jacobian(K - JqM, core.invC)
     if not math.isfinite(A.sum()):
         raise _NewtonFailure(math.inf, "non-finite Jacobian")
-    empty = np.zeros((0, 0))
-    try:
-        lam, V, W, cond = _nb_diagonalise(A, empty, core.invC, False)
-    except ValueError:  # complex spectrum (upwind stream coupling)
-        try:
-            lam, V, W, cond = _nb_diagonalise(A.astype(complex), empty.astype(complex),
-                                              core.invC.astype(complex), False)
-        except (ValueError, np.linalg.LinAlgError):
-            cond = math.inf
-    except np.linalg.LinAlgError:
-        cond = math.inf
-    if not cond <= _COND_MAX:
-        raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
-                                       "use method='tr_bdf2' for this network")
+    lam, V, W = diagonalise_or_refuse(A, np.zeros((0, 0)), core.invC, False)
     f0 = core.sys.s - K @ y0 + q0
     wf = _project(W, f0)
     return True, lam, V, W, JqM, f0, wf

@@ -392,6 +392,28 @@ _NB_INV_FACT = np.array([1.0 / math.factorial(k) for k in range(30)])
 _EMPTY2 = np.zeros((0, 0))
 
 
+
+def diagonalise_or_refuse(A: np.ndarray, M: np.ndarray, invC: np.ndarray, has_m: bool
+                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(lam, V, W) of the scaled Jacobian ``A`` (:func:`_nb_diagonalise`): real, else complex
+    (a complex spectrum comes from upwind stream coupling); a basis with cond(V) > 1e8 (a
+    near-defective Jacobian, e.g. equal nodes on an oil stream without conduction) raises
+    ``_NewtonFailure`` so that the caller can fall back to ``tr_bdf2``."""
+    try:
+        lam, V, W, cond = _nb_diagonalise(A, M, invC, has_m)
+    except ValueError:  # complex spectrum
+        try:
+            lam, V, W, cond = _nb_diagonalise(A.astype(complex), M.astype(complex),
+                                              invC.astype(complex), has_m)
+        except (ValueError, np.linalg.LinAlgError):
+            cond = math.inf
+    except np.linalg.LinAlgError:
+        cond = math.inf
+    if not cond <= _COND_MAX:
+        raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
+                                       "use method='tr_bdf2' for this network")
+    return lam, V, W
+
 class _Linearization:
     """Reduced, diagonalised linearisation at one step start (t_n, y_n)."""
 
@@ -437,20 +459,8 @@ class _Linearization:
         if not math.isfinite(A.sum()):
             raise _NewtonFailure(math.inf, "non-finite Jacobian")
         if A.shape[0]:
-            Mx = M if M is not None else _EMPTY2
-            try:
-                lam, V, W, cond = _nb_diagonalise(A, Mx, invC, M is not None)
-            except ValueError:  # complex spectrum (upwind stream coupling)
-                try:
-                    lam, V, W, cond = _nb_diagonalise(A.astype(complex), Mx.astype(complex),
-                                                      invC.astype(complex), M is not None)
-                except (ValueError, np.linalg.LinAlgError):
-                    cond = math.inf
-            except np.linalg.LinAlgError:
-                cond = math.inf
-            if not cond <= _COND_MAX:
-                raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
-                                               "use method='tr_bdf2' for this network")
+            lam, V, W = diagonalise_or_refuse(A, M if M is not None else _EMPTY2, invC,
+                                              M is not None)
         else:
             lam = np.zeros(0)
             V = np.zeros((0, 0))
