@@ -30,6 +30,25 @@ import numpy as np
 
 from ..errors import InputError
 
+#: finest grid the drag model refines to when the Richardson error estimate is too large
+MAX_NODES = 4096
+
+
+def _solve_refined(w: float, radius: float, e_prime: float, u: float, eta0: float,
+                   alpha: float, n: int) -> Any:
+    """:func:`~thermobearing.ehl.line.solve_line_contact` on ``n`` nodes, doubled (up to
+    :data:`MAX_NODES`) while the solver reports its central-film error estimate above 5 %
+    (heavily loaded contacts, M >~ 150, need more than 512 nodes for their pressure spike)."""
+    from .line import GridResolutionError, solve_line_contact
+
+    while True:
+        try:
+            return solve_line_contact(w, radius, e_prime, u, eta0, alpha=alpha, n=n)
+        except GridResolutionError:
+            if 2 * n > MAX_NODES:
+                raise
+            n *= 2
+
 
 class NumericalRollerDrag:
     """Callable with the signature of
@@ -53,12 +72,12 @@ class NumericalRollerDrag:
     def _solution(self, key: tuple, radius, e_prime, eta0, alpha):
         sol = self._memo.get(key)
         if sol is None:
-            from .line import line_contact_case, nodes_for, solve_line_contact
+            from .line import line_contact_case, nodes_for
 
             w, u = math.exp(key[-2] * self.lstep), math.exp(key[-1] * self.lstep)
             case = line_contact_case(w, radius, e_prime, u, eta0, alpha=alpha)
-            sol = solve_line_contact(w, radius, e_prime, u, eta0, alpha=alpha,
-                                     n=nodes_for(case.M, self.n, case.L))
+            sol = _solve_refined(w, radius, e_prime, u, eta0, alpha,
+                                 nodes_for(case.M, self.n, case.L))
             self._memo[key] = sol
             self.solves += 1
         return sol
@@ -104,12 +123,12 @@ class NumericalRollerDrag:
         key = (radius, e_prime, eta0, alpha, "rigid", cu)
         sol = self._memo.get(key)
         if sol is None:
-            from .line import line_contact_case, nodes_for, solve_line_contact
+            from .line import line_contact_case, nodes_for
 
             wm = self._w_min(radius, e_prime, eta0, u_node)
             case = line_contact_case(wm, radius, e_prime, u_node, eta0, alpha=alpha)
-            sol = solve_line_contact(wm, radius, e_prime, u_node, eta0, alpha=alpha,
-                                     n=nodes_for(case.M, self.n, case.L))
+            sol = _solve_refined(wm, radius, e_prime, u_node, eta0, alpha,
+                                 nodes_for(case.M, self.n, case.L))
             self._memo[key] = sol
             self.solves += 1
         wm = self._w_min(radius, e_prime, eta0, u_node)

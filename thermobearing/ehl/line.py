@@ -142,6 +142,11 @@ class Traction:
     total: float
 
 
+class GridResolutionError(ConvergenceError):
+    """The nested-grid solve converged but its Richardson estimate of the central-film error
+    exceeds ``max_grid_error``: more nodes would help (callers may retry on a finer grid)."""
+
+
 def _inlet_scale(M: float, L: float) -> float:
     """``sqrt(2 H)`` in Hertz half-widths, H the Moes film in solver units: the length over
     which the rigid gap doubles, i.e. the inlet/outlet scale of a lightly loaded contact."""
@@ -382,7 +387,7 @@ def solve_dimensionless(
     else:
         hc_ex, err_est = hc_levels[-1], math.nan
     if not (math.isfinite(err_est) and err_est <= max_grid_error):
-        raise ConvergenceError(
+        raise GridResolutionError(
             "ehl.line", err_est,
             f"grid too coarse: estimated central-film error {err_est:.1%} > {max_grid_error:.0%}"
             f" at n={n} for M={M:.4g}, L={L:.4g}; increase n or {_POINTER}", state,

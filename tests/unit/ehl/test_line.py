@@ -151,3 +151,29 @@ def test_default_start_retried_when_a_later_level_fails():
     explicit = solve_dimensionless(M, L, n=n, coarse_n=128)
     assert default.central_film == pytest.approx(explicit.central_film, rel=1e-9)
     assert default.minimum_film == pytest.approx(explicit.minimum_film, rel=1e-9)
+
+
+def test_numerical_drag_refines_the_grid_when_the_error_estimate_is_too_large(monkeypatch):
+    """The drag model doubles the nodes while the line solver reports its central-film error
+    estimate above 5 % (GridResolutionError), up to MAX_NODES, then lets the error through."""
+    import thermobearing.ehl.line as line
+    from thermobearing.ehl import drag
+    from thermobearing.ehl.line import GridResolutionError
+
+    seen = []
+
+    def fake(w, radius, e_prime, u, eta0, *, alpha, n):
+        seen.append(n)
+        if n < 2048:
+            raise GridResolutionError("ehl.line", 0.053, "grid too coarse")
+        return ("solution", n)
+
+    monkeypatch.setattr(line, "solve_line_contact", fake)
+    assert drag._solve_refined(1e5, 0.01, 2.3e11, 10.0, 0.08, 2e-8, 512) == ("solution", 2048)
+    assert seen == [512, 1024, 2048]
+    seen.clear()
+    monkeypatch.setattr(drag, "MAX_NODES", 1024)
+    with pytest.raises(GridResolutionError):
+        drag._solve_refined(1e5, 0.01, 2.3e11, 10.0, 0.08, 2e-8, 512)
+    assert seen == [512, 1024]
+    assert issubclass(GridResolutionError, ConvergenceError)
