@@ -74,6 +74,7 @@ def test_numerical_drag_runner_books_both_drags(monkeypatch) -> None:
 
     def fake_solve(bearing, lub, speed, load, axial, temperature, *, viscosity, drag_model,
                    **options):
+        assert ("film_pressure" in options) == (drag_model == "closed_form")
         tag = mod.CONDITIONS[(load, viscosity)]
         rpm = mod.PAPER_MEAN_CAGE_SPEED_RPM[tag] * speeds[drag_model]
         return SimpleNamespace(cage_speed=rpm * 2 * math.pi / 60)

@@ -247,6 +247,14 @@ def build_model(
     forces = ROLLER_DRAG.get(drag_model)()
     if film_pressure not in ("hertz", "regime_min"):
         raise InputError("film_pressure", film_pressure, ("hertz", "regime_min"))
+    if drag_model != "closed_form" and (fluid_shear_modulus is not None
+                                        or film_pressure != "hertz"):
+        # the options replace the Hertz-zone shear of the drag model by a closed-form
+        # integral; a numerical drag integrates its own pressure and film
+        raise InputError("film_pressure / fluid_shear_modulus",
+                         (film_pressure, fluid_shear_modulus),
+                         f"'hertz' and None with drag_model={drag_model!r} (the Hertz-zone "
+                         "options apply to the closed-form drag only)")
     if fluid_shear_modulus is not None or film_pressure != "hertz":
         from .roller_maxwell import maxwell_contact_forces
 

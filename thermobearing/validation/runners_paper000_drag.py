@@ -34,6 +34,8 @@ PAPER_MEAN_CAGE_SPEED_RPM = {
 }
 
 DRAG_MODELS = ("closed_form", "numerical_ehl")
+#: roller-solver options that modify the closed-form drag only
+CLOSED_FORM_ONLY = ("film_pressure", "fluid_shear_modulus")
 
 
 @RUNNERS.register("paper000_numerical_drag",
@@ -58,9 +60,13 @@ def paper000_numerical_drag(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     for (load, eta0), tag in CONDITIONS.items():
         lub = paper000_eq9_lubricant(lubricant, eta0, temperature) if eq9 else lubricant
         for model in DRAG_MODELS:
+            # the closed form's Hertz-zone options (film_pressure, fluid_shear_modulus)
+            # do not apply to the numerical drag, which integrates its own pressure
+            opts = options if model == "closed_form" else {
+                k: v for k, v in options.items() if k not in CLOSED_FORM_ONLY}
             t0 = time.process_time()
             res = solve_roller(bearing, lub, speed, load, 0.0, temperature, viscosity=eta0,
-                               drag_model=model, **options)
+                               drag_model=model, **opts)
             cost = time.process_time() - t0
             cage = res.cage_speed * rpm
             out[f"mean_cage_speed_{tag}_{model}"] = res.cage_speed

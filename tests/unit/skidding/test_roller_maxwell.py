@@ -288,3 +288,15 @@ def test_regime_min_hertz_zone_shear_matches_the_numerical_ehl_of_paper000():
         out[fp] = f.hertz_traction[0] / v / m.length
     assert out["regime_min"] == pytest.approx(numeric, rel=0.15)
     assert out["hertz"] > 10 * numeric
+
+
+def test_hertz_zone_options_refused_with_a_numerical_drag():
+    """film_pressure / fluid_shear_modulus replace the drag model's Hertz-zone shear by a
+    closed-form integral: with the numerical-EHL drag (its own pressure) they are refused."""
+    import thermobearing.ehl.drag  # noqa: F401  registers numerical_ehl
+
+    bearing, oil = load_bearing("NU214"), load_lubricant("PAPER000_OIL")
+    for opts in ({"film_pressure": "regime_min"}, {"fluid_shear_modulus": 1e9}):
+        with pytest.raises(InputError, match="closed-form drag only"):
+            build_model(bearing, oil, 313.15, drag_model="numerical_ehl", **opts)
+    build_model(bearing, oil, 313.15, drag_model="numerical_ehl")  # plain: accepted
