@@ -61,7 +61,7 @@ def test_slow_cases_run_only_on_request(tmp_path) -> None:
 
 
 def test_numerical_drag_runner_books_both_drags(monkeypatch) -> None:
-    """The paper 000 numerical-drag runner (slow case, not run here): with a stand-in solver
+    """The paper 000 numerical-drag runner (minutes; not run here): with a stand-in solver
     it returns every quantity of its reference.csv, the errors against Tables 2-3 and the
     gated difference of the mean absolute errors."""
     import math
@@ -81,7 +81,6 @@ def test_numerical_drag_runner_books_both_drags(monkeypatch) -> None:
 
     monkeypatch.setattr(roller, "solve_roller", fake_solve)
     case = validation.cases_dir() / "paper000_numerical_drag"
-    assert validation.is_slow("paper000_numerical_drag")
     import tomllib
 
     spec = tomllib.loads((case / "case.toml").read_text())

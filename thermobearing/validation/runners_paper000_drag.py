@@ -11,7 +11,7 @@ absolute errors (the issue asks that the numerical drag be at least as close as 
 
 Static (no whirl): the whirl-mean cage speed of the closed-form model equals its static value
 within 0.1 r/min (1450.5 vs 1450.8 r/min at 150 N, 0.08 Pa s), and a whirl orbit would
-multiply the numerical cost (about 10 min CPU per condition) by its sample count.
+multiply the numerical cost (about 30 s CPU per condition) by its sample count.
 """
 
 from __future__ import annotations
