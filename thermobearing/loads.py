@@ -23,12 +23,14 @@ Units: SI throughout (m, N, rad/s, kg).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
+import numba
 import numpy as np
 
 from .errors import ConvergenceError, InputError, check_finite, check_positive
-from .hertz import _hamrock_brewe_kke, _reduced_unchecked, _stiffness_from
+from .hertz import _hamrock_brewe_point_nb
 
 __all__ = [
     "ArcSet",
@@ -37,10 +39,12 @@ __all__ = [
     "arc_contacts",
     "ball_arcs",
     "ball_load_distribution",
+    "ring_weighted_angle",
 ]
 
 INNER = 0
 OUTER = 1
+_EMPTY2 = np.empty((0, 0))
 
 
 @dataclass(frozen=True)
@@ -148,37 +152,83 @@ class ContactField:
     stiffness: np.ndarray
 
 
-def _stiffness(bearing, arcs: ArcSet, contact_angle: np.ndarray) -> np.ndarray:
-    """Hertz K of every arc at its contact angle (geometry.curvature + hertz, owner B).
+# ---------------------------------------------------------------------------------------------
+# compiled kernels (numba, cache=True): the ONE implementation of the arc contacts, the
+# rigid-pair start and the Newton iteration of the load distribution (no numpy twin). The
+# arcs enter as a table (N_ARC_ROWS, k); see :func:`_arc_table`.
+# ---------------------------------------------------------------------------------------------
+(T_CX, T_CR, T_FREE, T_INNER, T_SIGN, T_RY, T_CONF) = range(7)
+N_ARC_ROWS = 7
+# rows of the contact-field array (7, Z, k)
+(F_APPROACH, F_LOAD, F_NX, F_NR, F_DIST, F_ALPHA, F_K) = range(7)
 
-    The Hamrock-Brewe closed-form ellipticity is used (within about 1 % of the exact
-    elliptic-integral solution, Hamrock 2004 ch. 17) because this runs inside every Newton
-    residual; the exact form costs a root solve per contact.
-    """
-    return _arc_hertz(arcs, float(bearing.pitch_diameter), contact_angle)[5]
+
+def _arc_table(arcs: ArcSet) -> np.ndarray:
+    """(N_ARC_ROWS, k) float table of the arcs for the compiled kernels: centre x, centre r,
+    free distance, inner (1/0), sign (+1 inner / -1 outer, for R_x), R_y = f D/(2 f - 1),
+    conformity f."""
+    inner = arcs.ring == INNER
+    ry = arcs.conformity * arcs.ball_diameter / (2.0 * arcs.conformity - 1.0)
+    return np.ascontiguousarray(np.stack([
+        arcs.centre_x, arcs.centre_r, arcs.free_distance, inner.astype(float),
+        np.where(inner, 1.0, -1.0), ry, arcs.conformity]).astype(float))
 
 
-def _arc_hertz(arcs: ArcSet, pitch_diameter: float, contact_angle: np.ndarray) -> tuple:
-    """Hertz constants of every arc contact at ``contact_angle`` (no input checks).
+@numba.njit(cache=True)
+def _arc_stiffness_nb(alpha: float, sign: float, ry: float, D: float, dm: float,
+                      ep: float) -> float:
+    """Hertz K [N/m^1.5] (Q = K delta^1.5) of an arc contact at contact angle ``alpha``
+    [rad]: R_x = D (d_m -+ D cos(alpha)) / (2 d_m) (:meth:`geometry.BallBearing.curvature`,
+    upper sign inner ring, ``sign`` = +1), R_y = f D / (2 f - 1) and the Hamrock-Brewe 1983
+    closed form (Hamrock 2004 ch. 17; :func:`thermobearing.hertz._hamrock_brewe_point_nb`,
+    within about 1 % of the exact elliptic-integral solution; the exact form costs a root
+    solve per contact). The ball skidding residual uses the same Hertz kernel."""
+    rx = 0.5 * D * (1.0 - sign * (D * math.cos(alpha) / dm))
+    return _hamrock_brewe_point_nb(rx, ry, ep)[3]
 
-    R_x = D (d_m -+ D cos(alpha)) / (2 d_m) (:meth:`geometry.BallBearing.curvature`, upper
-    sign inner ring), R_y = f D / (2 f - 1), and the Hamrock-Brewe closed form through the
-    unchecked cores of :mod:`thermobearing.hertz` (the bearing's radii and E' were validated
-    when it was built). Returns (R_x, R_y, R, k, E, K) with Q = K delta^1.5; the ball
-    skidding residual uses the same function.
-    """
-    D = arcs.ball_diameter
-    sign = np.where(arcs.ring == INNER, 1.0, -1.0)
-    rx = 0.5 * D * (1.0 - sign * (D * np.cos(contact_angle) / pitch_diameter))
-    ry = arcs.conformity * D / (2.0 * arcs.conformity - 1.0)
-    r, ratio = _reduced_unchecked(rx, ry)
-    k, big_k, big_e = _hamrock_brewe_kke(ratio)
-    return rx, ry, r, k, big_e, _stiffness_from(r, k, big_k, big_e, arcs.effective_modulus)
+
+@numba.njit(cache=True)
+def _contacts_nb(bx: np.ndarray, br: np.ndarray, da: float, dr: float, cpsi: np.ndarray,
+                 tab: np.ndarray, D: float, dm: float, ep: float, K_fixed: np.ndarray,
+                 out: np.ndarray) -> None:
+    """Arc contacts of every (ball, arc) pair into ``out`` (7, Z, k): approach
+    ``delta = L - (f - 1/2) D`` [m], load ``Q = K max(delta, 0)^1.5`` [N], unit vector
+    (n_x, n_r) from the arc centre to the ball centre, L [m], contact angle
+    ``atan2(n_x, |n_r|)`` [rad], K [N/m^1.5] (at the contact angle, or ``K_fixed[j, k]``
+    when K_fixed is not empty). Inner-arc centres move with the ring (da, dr cos psi_j)."""
+    nz = bx.size
+    nk = tab.shape[1]
+    fixed = K_fixed.shape[0] > 0
+    for j in range(nz):
+        for k in range(nk):
+            inner = tab[T_INNER, k]
+            cx = tab[T_CX, k] + inner * da
+            cr = tab[T_CR, k] + inner * (dr * cpsi[j])
+            dx, drr = bx[j] - cx, br[j] - cr
+            L = math.hypot(dx, drr)
+            nx, nr = dx / L, drr / L
+            approach = L - tab[T_FREE, k]
+            alpha = math.atan2(nx, abs(nr))
+            if fixed:
+                K = K_fixed[j, k]
+            else:
+                K = _arc_stiffness_nb(alpha, tab[T_SIGN, k], tab[T_RY, k], D, dm, ep)
+            out[F_APPROACH, j, k] = approach
+            out[F_LOAD, j, k] = K * max(approach, 0.0) ** 1.5
+            out[F_NX, j, k] = nx
+            out[F_NR, j, k] = nr
+            out[F_DIST, j, k] = L
+            out[F_ALPHA, j, k] = alpha
+            out[F_K, j, k] = K
 
 
 def arc_contacts(bearing, arcs: ArcSet, ball_x, ball_r, delta_a, delta_r, azimuth,
                  stiffness=None) -> ContactField:
     """Approach, normal load and direction of every (ball, arc) contact.
+
+    The contact law of the module docstring (Jones 1959 in Harris & Kotzalas 2007 vol. 2,
+    ch. 1-3; Hertz K by Hamrock-Brewe), through the compiled kernel of the load
+    distribution.
 
     Parameters
     ----------
@@ -190,20 +240,374 @@ def arc_contacts(bearing, arcs: ArcSet, ball_x, ball_r, delta_a, delta_r, azimut
     stiffness : optional (Z, k) or (k,) fixed Hertz K [N/m^1.5]; computed at the current
         contact angle when None.
     """
-    bx = np.asarray(ball_x, float)[:, None]
-    br = np.asarray(ball_r, float)[:, None]
-    inner = (arcs.ring == INNER)[None, :]
-    cx = arcs.centre_x[None, :] + np.where(inner, delta_a, 0.0)
-    cr = arcs.centre_r[None, :] + np.where(inner, delta_r * np.cos(azimuth)[:, None], 0.0)
-    dx, dr = bx - cx, br - cr
-    L = np.hypot(dx, dr)
-    nx, nr = dx / L, dr / L
-    approach = L - arcs.free_distance[None, :]
-    alpha = np.arctan2(nx, np.abs(nr))
-    K = _stiffness(bearing, arcs, alpha) if stiffness is None else np.broadcast_to(
-        stiffness, alpha.shape)
-    Q = K * np.maximum(approach, 0.0) ** 1.5
-    return ContactField(approach, Q, nx, nr, L, alpha, np.array(K, float))
+    bx = np.ascontiguousarray(ball_x, dtype=float).ravel()
+    br = np.ascontiguousarray(ball_r, dtype=float).ravel()
+    nz, nk = bx.size, arcs.n_arcs
+    K = _EMPTY2 if stiffness is None else np.ascontiguousarray(
+        np.broadcast_to(np.asarray(stiffness, float), (nz, nk)))
+    out = np.empty((7, nz, nk))
+    _contacts_nb(bx, br, float(delta_a), float(delta_r),
+                 np.ascontiguousarray(np.cos(np.asarray(azimuth, float))), _arc_table(arcs),
+                 arcs.ball_diameter, 2.0 * arcs.pitch_radius, arcs.effective_modulus, K, out)
+    return ContactField(*out)
+
+
+@numba.njit(cache=True)
+def _gyro_friction_nb(cf: np.ndarray, tab: np.ndarray, D: float, J: float,
+                      wm: np.ndarray, w_inner: float, gam0: float, alpha0: float,
+                      mu: float, Mg: np.ndarray, fx: np.ndarray, fr: np.ndarray) -> None:
+    """Transverse friction at the loaded contacts that carries the gyroscopic moment.
+
+    Outer-race-control attitude ``tan(beta) = sin(alpha_o)/(cos(alpha_o) + gamma)`` (alpha_o
+    the largest |angle| of the outer arcs) and spin (K2) of the primer
+    ../shared/notes/over-skidding.md (sections 2.1, 2.3) with alpha_i = alpha_o = alpha_0 in
+    the inner term (first order), ``M_g = J omega_R omega_m sin(beta)`` [N m] (section 3.3).
+    The moment about the tangential axis is shared in proportion to normal load; the force on
+    the ball at contact k [N] is along the in-plane tangent ``t = (n_r, -n_x)`` with
+    ``(D/2) sum_k F_k = M_g`` and ``|F_k| <= mu Q_k``: (fx, fr) = F (n_r, -n_x).
+    """
+    nz, nk = cf.shape[1], cf.shape[2]
+    ca0, sa0 = math.cos(alpha0), math.sin(alpha0)
+    for j in range(nz):
+        ao = 0.0
+        for k in range(nk):
+            if tab[T_INNER, k] == 0.0:
+                ao = max(ao, abs(cf[F_ALPHA, j, k]))
+        beta = math.atan2(math.sin(ao), math.cos(ao) + gam0)
+        tb = math.tan(beta)
+        denom = gam0 * math.cos(beta) * (
+            (math.cos(ao) + tb * math.sin(ao)) / (1 + gam0 * math.cos(ao))
+            + (ca0 + tb * sa0) / (1 - gam0 * ca0))
+        wR = abs(w_inner) / max(denom, 1e-12)
+        Mg[j] = J * wR * abs(wm[j]) * math.sin(beta)
+        qtot = 0.0
+        for k in range(nk):
+            qtot += cf[F_LOAD, j, k]
+        den = qtot if qtot > 0 else 1.0
+        for k in range(nk):
+            Q = cf[F_LOAD, j, k]
+            F = min(2.0 * Mg[j] / D * Q / den, mu * Q)
+            fx[j, k] = F * cf[F_NR, j, k]
+            fr[j, k] = -F * cf[F_NX, j, k]
+
+
+@numba.njit(cache=True)
+def _ld_residual(bx: np.ndarray, br: np.ndarray, u: np.ndarray, K_fixed: np.ndarray,
+                 cpsi: np.ndarray, tab: np.ndarray, c: np.ndarray, wm: np.ndarray,
+                 gyro: bool, cf: np.ndarray, Rx: np.ndarray, Rr: np.ndarray,
+                 Rg: np.ndarray, Fc: np.ndarray, Mg: np.ndarray, fx: np.ndarray,
+                 fr: np.ndarray) -> float:
+    """Force residuals of the load distribution at (ball positions, ring displacement u)
+    [N]: per ball -sum_k Q_k n_k + F_c e_r (+ the gyroscopic friction) minus the weak
+    centring spring; ring: applied load plus the reactions of the inner arcs. Fills the
+    contact field ``cf`` (7, Z, k); returns the norm. c = (D, d_m, E', m, J, gamma_0,
+    alpha_0, omega_i, mu, k_reg, F_a, F_r, R_m)."""
+    D, dm, ep, m, J = c[0], c[1], c[2], c[3], c[4]
+    gam0, alpha0, w_inner, mu, k_reg = c[5], c[6], c[7], c[8], c[9]
+    Fa, Fr, Rm = c[10], c[11], c[12]
+    _contacts_nb(bx, br, u[0], u[1], cpsi, tab, D, dm, ep, K_fixed, cf)
+    nz, nk = bx.size, tab.shape[1]
+    if gyro:
+        _gyro_friction_nb(cf, tab, D, J, wm, w_inner, gam0, alpha0, mu, Mg, fx, fr)
+    else:
+        Mg[:] = 0.0
+    ra = Fa
+    rrad = Fr
+    acc = 0.0
+    for j in range(nz):
+        sx = sr = six = sir = rfx = rfr = 0.0
+        for k in range(nk):
+            Q = cf[F_LOAD, j, k]
+            qx, qr = Q * cf[F_NX, j, k], Q * cf[F_NR, j, k]
+            sx += qx
+            sr += qr
+            if tab[T_INNER, k] == 1.0:
+                six += qx
+                sir += qr
+        Fc[j] = m * wm[j] ** 2 * br[j]
+        Rx[j] = -sx - k_reg * bx[j]
+        Rr[j] = -sr + Fc[j] - k_reg * (br[j] - Rm)
+        if gyro:
+            gx = gr = 0.0
+            for k in range(nk):
+                gx += fx[j, k]
+                gr += fr[j, k]
+                if tab[T_INNER, k] == 1.0:
+                    rfx -= fx[j, k]
+                    rfr -= fr[j, k]
+            Rx[j] += gx
+            Rr[j] += gr
+        ra += six + rfx
+        rrad += (sir + rfr) * cpsi[j]
+        acc += Rx[j] ** 2 + Rr[j] ** 2
+    Rg[0], Rg[1] = ra, rrad
+    return math.sqrt(acc + ra * ra + rrad * rrad)
+
+
+@numba.njit(cache=True)
+def _ld_newton_step(cf: np.ndarray, tab: np.ndarray, cpsi: np.ndarray, Rx: np.ndarray,
+                    Rr: np.ndarray, Rg: np.ndarray, k_reg: float, k_ring: float,
+                    dbx: np.ndarray, dbr: np.ndarray, du: np.ndarray) -> None:
+    """Block-eliminated Newton step for (ball x, ball r) x Z and ring (delta_a, delta_r).
+
+    Contact Hessian d(Q n)/d(b) = Q' n n^T + (Q/L)(I - n n^T), Q' = 1.5 K delta^0.5; ball
+    block A = -sum_k H_k - k_reg I (dF_c/dr = m w^2 omitted: quasi-Newton), ring couplings
+    through the inner arcs with P = diag(1, cos psi); Schur complement on the ring unknowns
+    with the Jacobian-only ring spring ``k_ring`` (moves the ring towards contact when no ball
+    touches; the converged solution does not depend on it)."""
+    nz, nk = Rx.size, tab.shape[1]
+    s00 = s01 = s10 = s11 = 0.0          # S = Dm - sum C A^-1 B - k_ring I
+    r0, r1 = -Rg[0], -Rg[1]
+    ai = np.empty((nz, 4))
+    bb = np.empty((nz, 4))
+    for j in range(nz):
+        hxx = hxr = hrr = ixx = ixr = irr = 0.0
+        for k in range(nk):
+            dlt = max(cf[F_APPROACH, j, k], 0.0)
+            qp = 1.5 * cf[F_K, j, k] * math.sqrt(dlt)
+            ql = cf[F_LOAD, j, k] / cf[F_DIST, j, k]
+            nx, nr = cf[F_NX, j, k], cf[F_NR, j, k]
+            a_ = qp * nx * nx + ql * (1 - nx * nx)
+            b_ = (qp - ql) * nx * nr
+            c_ = qp * nr * nr + ql * (1 - nr * nr)
+            hxx += a_
+            hxr += b_
+            hrr += c_
+            if tab[T_INNER, k] == 1.0:
+                ixx += a_
+                ixr += b_
+                irr += c_
+        a00, a01, a11 = -hxx - k_reg, -hxr, -hrr - k_reg
+        det = a00 * a11 - a01 * a01
+        i00, i01, i11 = a11 / det, -a01 / det, a00 / det     # A^-1 (symmetric)
+        cp = cpsi[j]
+        # B = Hi P, C = P Hi (= B^T)
+        b00, b01, b10, b11 = ixx, ixr * cp, ixr, irr * cp
+        # A^-1 B
+        q00 = i00 * b00 + i01 * b10
+        q01 = i00 * b01 + i01 * b11
+        q10 = i01 * b00 + i11 * b10
+        q11 = i01 * b01 + i11 * b11
+        # C A^-1 B with C = B^T
+        s00 -= b00 * q00 + b10 * q10
+        s01 -= b00 * q01 + b10 * q11
+        s10 -= b01 * q00 + b11 * q10
+        s11 -= b01 * q01 + b11 * q11
+        # Dm = -sum P Hi P
+        s00 -= ixx
+        s01 -= ixr * cp
+        s10 -= ixr * cp
+        s11 -= irr * cp * cp
+        # rhs += C A^-1 R_b
+        x0 = i00 * Rx[j] + i01 * Rr[j]
+        x1 = i01 * Rx[j] + i11 * Rr[j]
+        r0 += b00 * x0 + b10 * x1
+        r1 += b01 * x0 + b11 * x1
+        ai[j, 0], ai[j, 1], ai[j, 2] = i00, i01, i11
+        bb[j, 0], bb[j, 1], bb[j, 2], bb[j, 3] = b00, b01, b10, b11
+    s00 -= k_ring
+    s11 -= k_ring
+    det = s00 * s11 - s01 * s10
+    du[0] = (s11 * r0 - s01 * r1) / det
+    du[1] = (s00 * r1 - s10 * r0) / det
+    for j in range(nz):
+        i00, i01, i11 = ai[j, 0], ai[j, 1], ai[j, 2]
+        b00, b01, b10, b11 = bb[j, 0], bb[j, 1], bb[j, 2], bb[j, 3]
+        v0 = -Rx[j] - (b00 * du[0] + b01 * du[1])
+        v1 = -Rr[j] - (b10 * du[0] + b11 * du[1])
+        dbx[j] = i00 * v0 + i01 * v1
+        dbr[j] = i01 * v0 + i11 * v1
+
+
+@numba.njit(cache=True)
+def _ld_solve(bx: np.ndarray, br: np.ndarray, u: np.ndarray, cpsi: np.ndarray,
+              tab: np.ndarray, c: np.ndarray, wm: np.ndarray, gyro: bool, tol_abs: float,
+              step_max: float, k_ring: float, max_iter: int, cf: np.ndarray,
+              Fc: np.ndarray, Mg: np.ndarray) -> tuple[float, int, bool]:
+    """Damped Newton of the load distribution in place on (bx, br, u): fresh Hertz K at the
+    current contact angles for the residual and the step, K frozen in the backtracking line
+    search on the residual norm (Armijo 1e-4, at most 30 halvings), step capped at
+    ``step_max``. Returns (norm [N], iterations, converged); ``cf``, ``Fc``, ``Mg`` hold the
+    last residual pass (at the solution when converged)."""
+    nz, nk = bx.size, tab.shape[1]
+    Rx, Rr, Rg = np.empty(nz), np.empty(nz), np.empty(2)
+    fx, fr = np.empty((nz, nk)), np.empty((nz, nk))
+    dbx, dbr, du = np.empty(nz), np.empty(nz), np.empty(2)
+    bx2, br2, u2 = np.empty(nz), np.empty(nz), np.empty(2)
+    cf2 = np.empty_like(cf)
+    Fc2, Mg2 = np.empty(nz), np.empty(nz)
+    Rx2, Rr2, Rg2 = np.empty(nz), np.empty(nz), np.empty(2)
+    no_k = np.empty((0, 0))
+    K = np.empty((nz, nk))
+    k_reg = c[9]
+    it = 0
+    norm = np.inf
+    for _ in range(max_iter):
+        it += 1
+        norm = _ld_residual(bx, br, u, no_k, cpsi, tab, c, wm, gyro, cf, Rx, Rr, Rg, Fc, Mg,
+                            fx, fr)
+        if norm <= tol_abs:
+            return norm, it, True
+        K[:, :] = cf[F_K]
+        _ld_newton_step(cf, tab, cpsi, Rx, Rr, Rg, k_reg, k_ring, dbx, dbr, du)
+        big = 1e-300
+        for j in range(nz):
+            big = max(big, abs(dbx[j]), abs(dbr[j]))
+        big = max(big, abs(du[0]), abs(du[1]))
+        scale = min(1.0, step_max / big)
+        lam = scale
+        for _ls in range(30):
+            for j in range(nz):
+                bx2[j] = bx[j] + lam * dbx[j]
+                br2[j] = br[j] + lam * dbr[j]
+            u2[0] = u[0] + lam * du[0]
+            u2[1] = u[1] + lam * du[1]
+            n2 = _ld_residual(bx2, br2, u2, K, cpsi, tab, c, wm, gyro, cf2, Rx2, Rr2, Rg2,
+                              Fc2, Mg2, fx, fr)
+            if n2 < (1.0 - 1e-4 * lam) * norm or (n2 <= norm and lam == scale) or lam < 1e-6:
+                break
+            lam *= 0.5
+        for j in range(nz):
+            bx[j] += lam * dbx[j]
+            br[j] += lam * dbr[j]
+        u[0] += lam * du[0]
+        u[1] += lam * du[1]
+    return norm, it, False
+
+
+@numba.njit(cache=True)
+def _pair_state(u: np.ndarray, cpsi: np.ndarray, tab: np.ndarray, pi_: np.ndarray,
+                po_: np.ndarray, keff: np.ndarray, A: np.ndarray, F: np.ndarray,
+                Q: np.ndarray, ex: np.ndarray, er: np.ndarray, Jm: np.ndarray,
+                res: np.ndarray) -> float:
+    """Rigid-ball pairs at ring displacement u: pair loads Q (Z, p) [N], unit vectors
+    (ex, er) from the outer to the inner arc centre, the ring residual ``res`` = F - sum Q e
+    [N] and its Jacobian Jm (2, 2); returns the residual norm [N]."""
+    nz, npair = Q.shape
+    s0 = s1 = j00 = j01 = j11 = 0.0
+    for j in range(nz):
+        cp = cpsi[j]
+        for p in range(npair):
+            i, o = pi_[p], po_[p]
+            dx = tab[T_CX, i] + u[0] - tab[T_CX, o]
+            dr = tab[T_CR, i] + u[1] * cp - tab[T_CR, o]
+            dist = math.hypot(dx, dr)
+            zeta = max(dist - A[p], 0.0)
+            q = keff[p] * zeta ** 1.5
+            e0, e1 = dx / dist, dr / dist
+            Q[j, p], ex[j, p], er[j, p] = q, e0, e1
+            s0 += q * e0
+            s1 += q * e1 * cp
+            dq = 1.5 * keff[p] * math.sqrt(zeta)
+            j00 += dq * e0 * e0
+            j01 += dq * e0 * e1 * cp
+            j11 += dq * e1 * e1 * cp * cp
+    Jm[0, 0], Jm[0, 1], Jm[1, 0], Jm[1, 1] = -j00, -j01, -j01, -j11
+    res[0], res[1] = F[0] - s0, F[1] - s1
+    return math.hypot(res[0], res[1])
+
+
+@numba.njit(cache=True)
+def _rigid_pair_nb(cpsi: np.ndarray, tab: np.ndarray, D: float, dm: float, ep: float,
+                   alpha0: float, F: np.ndarray, fc: np.ndarray, bx: np.ndarray,
+                   br: np.ndarray, u: np.ndarray) -> None:
+    """Compiled core of :func:`rigid_pair_guess` (writes bx, br (Z,) and u (2,))."""
+    nz, nk = cpsi.size, tab.shape[1]
+    n_in = 0
+    for k in range(nk):
+        if tab[T_INNER, k] == 1.0:
+            n_in += 1
+    n_out = nk - n_in
+    ii = np.empty(n_in, np.int64)
+    oo = np.empty(n_out, np.int64)
+    a = b = 0
+    for k in range(nk):
+        if tab[T_INNER, k] == 1.0:
+            ii[a] = k
+            a += 1
+        else:
+            oo[b] = k
+            b += 1
+    npair = n_in * n_out
+    pi_ = np.empty(npair, np.int64)
+    po_ = np.empty(npair, np.int64)
+    for x in range(n_in):
+        for y in range(n_out):
+            pi_[x * n_out + y] = ii[x]
+            po_[x * n_out + y] = oo[y]
+    Ki = np.empty(nk)
+    for k in range(nk):
+        Ki[k] = _arc_stiffness_nb(alpha0, tab[T_SIGN, k], tab[T_RY, k], D, dm, ep)
+    keff = np.empty(npair)
+    A = np.empty(npair)
+    for p in range(npair):
+        keff[p] = (Ki[pi_[p]] ** (-2 / 3) + Ki[po_[p]] ** (-2 / 3)) ** (-1.5)
+        A[p] = (tab[T_CONF, pi_[p]] + tab[T_CONF, po_[p]] - 1.0) * D
+    Q, ex, er = np.empty((nz, npair)), np.empty((nz, npair)), np.empty((nz, npair))
+    Jm = np.empty((2, 2))
+    u[0] = u[1] = 0.0
+    scale = max(max(abs(F[0]), abs(F[1])), 1.0)
+    k_reg = scale / (0.01 * D)
+    u2, res, res2 = np.empty(2), np.empty(2), np.empty(2)
+    for _ in range(200):
+        n0 = _pair_state(u, cpsi, tab, pi_, po_, keff, A, F, Q, ex, er, Jm, res)
+        if n0 <= 1e-10 * scale:
+            break
+        r0, r1 = -res[0], -res[1]
+        m00, m01, m10, m11 = Jm[0, 0] - k_reg, Jm[0, 1], Jm[1, 0], Jm[1, 1] - k_reg
+        det = m00 * m11 - m01 * m10
+        d0 = (m11 * r0 - m01 * r1) / det
+        d1 = (m00 * r1 - m10 * r0) / det
+        lam = min(1.0, 0.01 * D / max(max(abs(d0), abs(d1)), 1e-300))
+        while lam > 1e-8:
+            u2[0], u2[1] = u[0] + lam * d0, u[1] + lam * d1
+            if _pair_state(u2, cpsi, tab, pi_, po_, keff, A, F, Q, ex, er, Jm, res2) <= n0:
+                break
+            lam *= 0.5
+        u[0] += lam * d0
+        u[1] += lam * d1
+        k_reg *= 0.3
+    _pair_state(u, cpsi, tab, pi_, po_, keff, A, F, Q, ex, er, Jm, res)
+    Rm = 0.5 * dm
+    o0 = oo[0]
+    for j in range(nz):
+        best = 0
+        for p in range(1, npair):
+            if Q[j, p] > Q[j, best]:
+                best = p
+        qb = Q[j, best]
+        if qb > 0.0:
+            ko = po_[best]
+            lo = tab[T_FREE, ko] + (qb / Ki[ko]) ** (2 / 3)
+            bx[j] = tab[T_CX, ko] + lo * ex[j, best]
+            br[j] = tab[T_CR, ko] + lo * er[j, best]
+        elif fc[j] > 0.0:
+            # unloaded ball seated radially in the outer groove by the centrifugal force:
+            # both outer arcs (gothic) or the single outer arc share F_c
+            if n_out == 2:
+                half = 0.5 * abs(tab[T_CX, oo[0]] - tab[T_CX, oo[1]])
+                lo = tab[T_FREE, o0] + (0.5 * fc[j] / Ki[o0]) ** (2 / 3)
+                bx[j] = 0.0
+                br[j] = tab[T_CR, o0] + math.sqrt(max(lo * lo - half * half, 0.0))
+            else:
+                lo = tab[T_FREE, o0] + (fc[j] / Ki[o0]) ** (2 / 3)
+                bx[j] = tab[T_CX, o0]
+                br[j] = tab[T_CR, o0] + lo
+        else:
+            bx[j] = 0.0
+            br[j] = Rm
+
+
+def _refresh_caches() -> None:
+    from . import hertz
+    from .contact_traction import refresh_stale_caches
+
+    refresh_stale_caches("loads", (_arc_stiffness_nb, _contacts_nb, _gyro_friction_nb,
+                                   _ld_residual, _ld_newton_step, _ld_solve, _pair_state,
+                                   _rigid_pair_nb), (hertz,))
+
+
+_refresh_caches()
 
 
 @dataclass(frozen=True)
@@ -262,6 +666,10 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
                            tol: float = 1e-9, max_iter: int = 100) -> BallLoadDistribution:
     """Quasi-static load distribution of a ball bearing with centrifugal and gyroscopic effects.
 
+    Newton on the ball positions and the ring displacement (block elimination, backtracking
+    line search), compiled (numba; :func:`_ld_solve`); Jones 1959 / Harris & Kotzalas 2007
+    vol. 2 ch. 1-3 with every raceway arc an independent contact (module docstring).
+
     Parameters
     ----------
     bearing : BallBearing.
@@ -295,8 +703,10 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     if gyroscopic not in ("none", "shared"):
         raise InputError("gyroscopic", gyroscopic, "'none' or 'shared'")
     arcs = ball_arcs(bearing)
+    tab = _arc_table(arcs)
     Z = int(n_balls or bearing.n_balls)
     psi = 2.0 * np.pi * np.arange(Z) / Z
+    cpsi = np.cos(psi)
     D, Rm = arcs.ball_diameter, arcs.pitch_radius
     m = float(bearing.ball_mass)
     J = float(bearing.ball_inertia)
@@ -312,64 +722,21 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     step_max = 0.02 * D
     # Jacobian-only ring regularisation: moves the ring towards contact when no ball touches
     # (the converged solution is not changed by it)
-    k_ring = max(np.max(np.abs([axial_load, radial_load])), F_scale) / (0.01 * D)
-
+    k_ring = max(abs(axial_load), abs(radial_load), F_scale) / (0.01 * D)
     if guess is not None and guess.ball_x.size == Z:
         bx, br = guess.ball_x.copy(), guess.ball_r.copy()
         u = np.array([guess.delta_a, guess.delta_r])
     else:
         bx, br, u = rigid_pair_guess(bearing, arcs, axial_load, radial_load, psi, m * wm**2)
-    x_rest = np.zeros(Z)
-    r_rest = np.full(Z, Rm)
-    F_app = np.array([axial_load, radial_load])
-    cpsi = np.cos(psi)
-    K_fixed = None
-
-    def residual(bx, br, u, K):
-        cf = arc_contacts(bearing, arcs, bx, br, u[0], u[1], psi, stiffness=K)
-        Q, nx, nr = cf.load, cf.normal_x, cf.normal_r
-        Fc = m * wm**2 * br
-        Rx = -np.sum(Q * nx, axis=1) - k_reg * (bx - x_rest)
-        Rr = -np.sum(Q * nr, axis=1) + Fc - k_reg * (br - r_rest)
-        Mg = np.zeros(Z)
-        if gyroscopic == "shared":
-            Mg, fx, fr = _gyro_friction(cf, arcs, D, J, wm, inner_speed, gam0, alpha0,
-                                        friction_coefficient)
-            Rx += fx.sum(axis=1)
-            Rr += fr.sum(axis=1)
-            ring_fx = -np.sum(np.where(inner, fx, 0.0), axis=1)
-            ring_fr = -np.sum(np.where(inner, fr, 0.0), axis=1)
-        else:
-            ring_fx = ring_fr = np.zeros(Z)
-        Qi = np.where(inner[None, :], Q, 0.0)
-        Ra = F_app[0] + np.sum(Qi * nx) + ring_fx.sum()
-        Rrad = F_app[1] + np.sum((np.sum(Qi * nr, axis=1) + ring_fr) * cpsi)
-        return cf, Rx, Rr, np.array([Ra, Rrad]), Fc, Mg
-
-    it = 0
-    norm = np.inf
-    for _ in range(max_iter):
-        it += 1
-        cf, Rx, Rr, Rg, Fc, Mg = residual(bx, br, u, K_fixed)
-        K_fixed = cf.stiffness
-        norm = float(np.sqrt(np.sum(Rx**2 + Rr**2) + np.sum(Rg**2)))
-        if norm <= tol * F_scale * np.sqrt(2 * Z + 2):
-            break
-        dbx, dbr, du = _newton_step(cf, inner, cpsi, Rx, Rr, Rg, m * wm**2, k_reg, k_ring)
-        scale = min(1.0, step_max / max(np.max(np.abs(dbx)), np.max(np.abs(dbr)),
-                                        np.max(np.abs(du)), 1e-300))
-        # backtracking on the residual norm
-        lam = scale
-        for _ in range(30):
-            _, rx2, rr2, rg2, _, _ = residual(bx + lam * dbx, br + lam * dbr, u + lam * du,
-                                              K_fixed)
-            n2 = float(np.sqrt(np.sum(rx2**2 + rr2**2) + np.sum(rg2**2)))
-            if n2 < (1.0 - 1e-4 * lam) * norm or (n2 <= norm and lam == scale) or lam < 1e-6:
-                break
-            lam *= 0.5
-        bx, br, u = bx + lam * dbx, br + lam * dbr, u + lam * du
-        K_fixed = None
-    else:
+    c = np.array([D, 2.0 * Rm, arcs.effective_modulus, m, J, gam0, alpha0,
+                  float(inner_speed), float(friction_coefficient), k_reg, float(axial_load),
+                  float(radial_load), Rm])
+    cf = np.empty((7, Z, arcs.n_arcs))
+    Fc, Mg = np.empty(Z), np.empty(Z)
+    norm, it, ok = _ld_solve(bx, br, u, cpsi, tab, c, np.ascontiguousarray(wm, dtype=float),
+                             gyroscopic == "shared", tol * F_scale * np.sqrt(2 * Z + 2),
+                             step_max, k_ring, int(max_iter), cf, Fc, Mg)
+    if not ok:
         raise ConvergenceError("ball_load_distribution", norm,
                                f"no convergence in {max_iter} Newton iterations",
                                {"delta_a": u[0], "delta_r": u[1], "radial_load": radial_load,
@@ -377,82 +744,17 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     if not np.isfinite(norm):
         raise ConvergenceError("ball_load_distribution", norm, "non-finite residual",
                                {"axial_load": axial_load, "radial_load": radial_load})
+    cf = ContactField(*cf)
     Q = cf.load
     ai = ring_weighted_angle(Q, cf.contact_angle, inner, alpha0)
     ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, alpha0)
-    reg = k_reg * np.hypot(bx - x_rest, br - r_rest)
+    reg = k_reg * np.hypot(bx, br - Rm)
     return BallLoadDistribution(
         azimuth=psi, ball_x=bx, ball_r=br, delta_a=float(u[0]), delta_r=float(u[1]),
         contacts=cf, ring=arcs.ring, inner_load=np.sum(np.where(inner, Q, 0.0), axis=1),
         outer_load=np.sum(np.where(~inner, Q, 0.0), axis=1), inner_contact_angle=ai,
         outer_contact_angle=ao, centrifugal_force=Fc, gyroscopic_moment=Mg, converged=True,
         iterations=it, residual_norm=norm, extra={"max_centring_force": float(np.max(reg))})
-
-
-def contact_hessian(cf: ContactField) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """d(Q n)/d(b) of every contact as the symmetric 2x2 blocks (hxx, hxr, hrr), (Z, k).
-
-    ``Q n`` with ``n = (b - c)/L``: ``H = Q' n n^T + (Q/L)(I - n n^T)``, ``Q' = 1.5 K delta^0.5``.
-    """
-    dlt = np.maximum(cf.approach, 0.0)
-    Qp = 1.5 * cf.stiffness * np.sqrt(dlt)
-    QL = cf.load / cf.distance
-    nx, nr = cf.normal_x, cf.normal_r
-    return (Qp * nx * nx + QL * (1 - nx * nx), (Qp - QL) * nx * nr,
-            Qp * nr * nr + QL * (1 - nr * nr))
-
-
-def _newton_step(cf, inner, cpsi, Rx, Rr, Rg, dFc_dr, k_reg, k_ring):
-    """Block-eliminated Newton step for (ball x, ball r) x Z and ring (delta_a, delta_r)."""
-    hxx, hxr, hrr = contact_hessian(cf)
-    # ball block A = dR_ball/db = -sum_k H_k + diag(0, m w^2) - k_reg I
-    A = np.empty((cpsi.size, 2, 2))
-    A[:, 0, 0] = -hxx.sum(1) - k_reg
-    A[:, 0, 1] = A[:, 1, 0] = -hxr.sum(1)
-    A[:, 1, 1] = -hrr.sum(1) - k_reg  # d(F_c)/dr = m w^2 omitted (quasi-Newton)
-    Hi = np.zeros((cpsi.size, 2, 2))
-    Hi[:, 0, 0] = np.where(inner, hxx, 0).sum(1)
-    Hi[:, 0, 1] = Hi[:, 1, 0] = np.where(inner, hxr, 0).sum(1)
-    Hi[:, 1, 1] = np.where(inner, hrr, 0).sum(1)
-    P = np.zeros((cpsi.size, 2, 2))
-    P[:, 0, 0] = 1.0
-    P[:, 1, 1] = cpsi
-    B = Hi @ P                        # dR_ball/du
-    C = P @ Hi                        # dR_ring/db_j
-    Dm = -np.sum(P @ Hi @ P, axis=0)  # dR_ring/du
-    Rb = np.stack([Rx, Rr], axis=1)[:, :, None]
-    Ainv = np.linalg.inv(A)
-    S = Dm - np.sum(C @ Ainv @ B, axis=0) - k_ring * np.eye(2)
-    rhs = -Rg + np.sum(C @ Ainv @ Rb, axis=0)[:, 0]
-    du = np.linalg.solve(S, rhs)
-    db = Ainv @ (-Rb - B @ du[None, :, None])
-    return db[:, 0, 0], db[:, 1, 0], du
-
-
-def _gyro_friction(cf, arcs, D, J, wm, w_inner, gam0, alpha0, mu):
-    """Transverse friction at the loaded contacts that carries the gyroscopic moment.
-
-    Outer-race-control attitude ``tan(beta) = sin(alpha_o)/(cos(alpha_o) + gamma)`` and spin
-    (K2) of the primer (section 2.1, 2.3), ``M_g = J omega_R omega_m sin(beta)`` (section 3.3).
-    The moment about the tangential axis is shared in proportion to normal load; the force on
-    the ball at contact k is along the in-plane tangent ``t = (-n_r, n_x)`` with
-    ``(D/2) sum_k F_k = M_g`` and ``|F_k| <= mu Q_k``.
-    """
-    Q = cf.load
-    ao = np.abs(cf.contact_angle[:, arcs.ring == OUTER]).max(axis=1)
-    beta = np.arctan2(np.sin(ao), np.cos(ao) + gam0)
-    # spin magnitude from (K2) with alpha_i = alpha_o = alpha_0 (first-order)
-    denom = gam0 * np.cos(beta) * (
-        (np.cos(ao) + np.tan(beta) * np.sin(ao)) / (1 + gam0 * np.cos(ao))
-        + (np.cos(alpha0) + np.tan(beta) * np.sin(alpha0)) / (1 - gam0 * np.cos(alpha0)))
-    wR = np.abs(w_inner) / np.maximum(denom, 1e-12)
-    Mg = J * wR * np.abs(wm) * np.sin(beta)
-    Qtot = Q.sum(axis=1)
-    F = 2.0 * Mg[:, None] / D * Q / np.where(Qtot > 0, Qtot, 1.0)[:, None]
-    F = np.minimum(F, mu * Q)
-    # moment about y of force (fx, fr) at p = (D/2) n: (D/2)(n_r f_x - n_x f_r) > 0 for t=(n_r,-n_x)
-    fx, fr = F * cf.normal_r, -F * cf.normal_x
-    return Mg, fx, fr
 
 
 def rigid_pair_guess(bearing, arcs: ArcSet, axial_load: float, radial_load: float,
@@ -462,80 +764,21 @@ def rigid_pair_guess(bearing, arcs: ArcSet, axial_load: float, radial_load: floa
     Each ball is the link of every inner/outer arc pair; with the centre distance
     ``|c_i - c_o|`` the pair's total approach is ``zeta = |c_i - c_o| - (f_i + f_o - 1) D`` and
     its load ``K_eff zeta^1.5`` with ``K_eff = (K_i^(-2/3) + K_o^(-2/3))^(-3/2)`` (Harris &
-    Kotzalas 2007 vol. 1 eq. 3.32, series contacts). The ring displacement balancing the
-    external load is found by damped Newton on these two unknowns; balls are then placed on
-    the line of centres of their most loaded pair, split by the Hertz approaches, or seated in
-    the outer groove by the centrifugal force when no pair is loaded.
+    Kotzalas 2007 vol. 1 eq. 3.32, series contacts; K at the nominal contact angle). The ring
+    displacement balancing the external load is found by damped Newton on these two
+    unknowns (compiled, :func:`_rigid_pair_nb`); balls are then placed on the line of
+    centres of their most loaded pair, split by the Hertz approaches, or seated in the outer
+    groove by the centrifugal force when no pair is loaded.
+
+    ``centrifugal_per_radius`` : m omega_m^2 [N/m], scalar or (Z,). Returns (ball_x [m],
+    ball_r [m], (delta_a, delta_r) [m]).
     """
-    Z = psi.size
-    D = arcs.ball_diameter
-    ii = np.flatnonzero(arcs.ring == INNER)
-    oo = np.flatnonzero(arcs.ring == OUTER)
-    pi_, po_ = np.meshgrid(ii, oo, indexing="ij")
-    pi_, po_ = pi_.ravel(), po_.ravel()
-    Ki = _stiffness(bearing, arcs, np.full((1, arcs.n_arcs), float(bearing.contact_angle)))[0]
-    Keff = (Ki[pi_] ** (-2 / 3) + Ki[po_] ** (-2 / 3)) ** (-1.5)
-    A = (arcs.conformity[pi_] + arcs.conformity[po_] - 1.0) * D
-    cpsi = np.cos(psi)[:, None]
-    F = np.array([axial_load, radial_load], float)
-
-    def pair_state(u):
-        cix = arcs.centre_x[pi_][None, :] + u[0]
-        cir = arcs.centre_r[pi_][None, :] + u[1] * cpsi
-        dx = cix - arcs.centre_x[po_][None, :]
-        dr = cir - arcs.centre_r[po_][None, :]
-        dist = np.hypot(dx, dr)
-        zeta = dist - A[None, :]
-        Q = Keff[None, :] * np.maximum(zeta, 0.0) ** 1.5
-        ex, er = dx / dist, dr / dist     # unit vector from c_o to c_i
-        R = F - np.array([np.sum(Q * ex), np.sum(Q * er * cpsi)])
-        dQ = 1.5 * Keff[None, :] * np.sqrt(np.maximum(zeta, 0.0))
-        J = -np.array([[np.sum(dQ * ex * ex), np.sum(dQ * ex * er * cpsi)],
-                       [np.sum(dQ * ex * er * cpsi), np.sum(dQ * er * er * cpsi**2)]])
-        return R, J, Q, zeta, ex, er
-
-    u = np.zeros(2)
-    scale = max(np.max(np.abs(F)), 1.0)
-    k_reg = scale / (0.01 * D)
-    for _ in range(200):
-        R, J, Q, zeta, ex, er = pair_state(u)
-        n0 = np.linalg.norm(R)
-        if n0 <= 1e-10 * scale:
-            break
-        du = np.linalg.solve(J - k_reg * np.eye(2), -R)
-        lam = min(1.0, 0.01 * D / max(np.max(np.abs(du)), 1e-300))
-        while lam > 1e-8 and np.linalg.norm(pair_state(u + lam * du)[0]) > n0:
-            lam *= 0.5
-        u = u + lam * du
-        k_reg *= 0.3
-    R, J, Q, zeta, ex, er = pair_state(u)
-    # ball positions
-    best = np.argmax(Q, axis=1)
-    rows = np.arange(Z)
-    Qb = Q[rows, best]
-    ko = po_[best]
-    cox = arcs.centre_x[ko]
-    cor = arcs.centre_r[ko]
-    Lo = arcs.free_distance[ko] + (Qb / Ki[ko]) ** (2 / 3)
-    bx = cox + Lo * ex[rows, best]
-    br = cor + Lo * er[rows, best]
-    # unloaded balls: seated radially in the outer groove by the centrifugal force
-    fc = np.broadcast_to(np.asarray(centrifugal_per_radius, float), (Z,)) * arcs.pitch_radius
-    free = Qb <= 0.0
-    if np.any(free):
-        no = oo.size
-        Ko = Ki[oo[0]]
-        # radial seat: both outer arcs (gothic) or the single outer arc share F_c
-        if no == 2:
-            half = 0.5 * abs(arcs.centre_x[oo[0]] - arcs.centre_x[oo[1]])
-            Lo_f = arcs.free_distance[oo[0]] + (0.5 * fc / Ko) ** (2 / 3)
-            r_seat = arcs.centre_r[oo[0]] + np.sqrt(np.maximum(Lo_f**2 - half**2, 0.0))
-            x_seat = np.zeros(Z)
-        else:
-            Lo_f = arcs.free_distance[oo[0]] + (fc / Ko) ** (2 / 3)
-            x_seat = np.full(Z, arcs.centre_x[oo[0]])
-            r_seat = arcs.centre_r[oo[0]] + Lo_f
-        seat = free & (fc > 0)
-        bx = np.where(seat, x_seat, np.where(free, 0.0, bx))
-        br = np.where(seat, r_seat, np.where(free, arcs.pitch_radius, br))
+    Z = np.asarray(psi).size
+    fc = np.ascontiguousarray(np.broadcast_to(np.asarray(centrifugal_per_radius, float),
+                                              (Z,))) * arcs.pitch_radius
+    bx, br, u = np.empty(Z), np.empty(Z), np.empty(2)
+    _rigid_pair_nb(np.ascontiguousarray(np.cos(psi), dtype=float), _arc_table(arcs),
+                   arcs.ball_diameter, 2.0 * arcs.pitch_radius, arcs.effective_modulus,
+                   float(bearing.contact_angle),
+                   np.array([axial_load, radial_load], float), fc, bx, br, u)
     return bx, br, u

@@ -95,3 +95,64 @@ def test_gyroscopic_friction_option_balances_the_ring():
     # order of magnitude of the primer's table (about 0.3-0.8 N m at 1800 r/min, D = 35 mm)
     assert 0.1 < ld.gyroscopic_moment.mean() < 2.0
     assert ld.converged and ld.residual_norm < 1e-3
+
+
+# Values of the numpy implementation of ball_load_distribution (commit 87c0e55, before it was
+# compiled), captured with that code at full precision: the compiled Newton must reproduce
+# them to round-off (same iterations; positions to ~1e-15 m, loads to ~1e-11 relative were
+# measured over 1051 load/speed/Z/gyroscopic cases of both ball-bearing presets).
+# (bearing, Fr [N], Fa [N], speed [r/min], gyroscopic, Z) ->
+# (delta_a, delta_r, ball_x[1], ball_r[1], inner_load[0], outer_load[-1],
+#  inner_contact_angle[0], gyroscopic_moment[0], iterations)
+_NUMPY_REFERENCE = [
+    (('QJ1044', 1000.0, 10000.0, 1800.0, 'none', None),
+     (7.932145028785169e-05, 2.1038563870066163e-06, 5.540315775071178e-06, 0.1400303328040185,
+      872.475176505212, 1029.968285295297, 0.7464141892435929, 0.0, 16)),
+    (('QJ1044', 1000.0, 0.0, 0.0, 'none', None),
+     (7.274371331743351e-21, 5.887763904377655e-05, 4.282228476854723e-20, 0.140027974514553,
+      614.9180404134273, 341.1607790820516, 0.6575196152578514, 0.0, 16)),
+    (('QJ1044', 0.0, 5000.0, 1800.0, 'shared', None),
+     (7.320481035042943e-05, 1.343872654846244e-19, 2.9962859934098504e-06, 0.14002894622932144,
+      394.32764467686206, 591.1762085188936, 0.7443979086716433, 1.018728355615911, 12)),
+    (('QJ1044', 1000.0, -3000.0, 600.0, 'none', 8),
+     (-7.790666773045908e-05, 5.6538957155586995e-06, -3.262422334966183e-05, 0.1400073471054065,
+      920.6273437395118, 819.7023239952911, 0.7090649390792871, 0.0, 9)),
+    (('QJ1044', 0.0, 0.0, 3000.0, 'none', None),
+     (0.0, 0.0, 0.0, 0.14002944686277263,
+      0.0, 623.9290501552169, 0.6981317007977318, 0.0, 4)),
+    (('SKF6304', 500.0, 100.0, 3000.0, 'none', None),
+     (-5.881485023683916e-06, 1.1730996345788062e-05, -3.7202514463040412e-06, 0.018003891918586964,
+      324.67757144906864, 146.85117561687, 0.1618027793097347, 0.0, 68)),
+    (('SKF6304', 300.0, 0.0, 0.0, 'shared', None),
+     (-8.418728499923612e-05, 1.632969820416361e-05, -5.0512364710633615e-05, 0.018005881006382424,
+      248.20443464598844, 41.536818155135514, 7.30800348108005e-09, 0.0, 62)),
+]
+
+
+@pytest.mark.parametrize("case,expected", _NUMPY_REFERENCE)
+def test_compiled_distribution_reproduces_the_numpy_values(case, expected):
+    from thermobearing.geometry import load_bearing
+
+    name, Fr, Fa, n, gyro, Z = case
+    ld = ball_load_distribution(load_bearing(name), Fr, Fa, n * math.pi / 30,
+                                gyroscopic=gyro, n_balls=Z)
+    got = (ld.delta_a, ld.delta_r, ld.ball_x[1], ld.ball_r[1], ld.inner_load[0],
+           ld.outer_load[-1], ld.inner_contact_angle[0], ld.gyroscopic_moment[0])
+    atol = (1e-14, 1e-14, 1e-14, 1e-14, 1e-8, 1e-8, 1e-11, 1e-11)   # m, m, m, m, N, N, rad, N m
+    for g, e, a in zip(got, expected[:8], atol, strict=True):
+        assert g == pytest.approx(e, rel=1e-9, abs=a)
+    assert ld.iterations == expected[8]
+
+
+def test_arc_contacts_with_fixed_stiffness_scales_the_load():
+    # Q = K delta^1.5: the same geometry with a doubled fixed K doubles every load
+    from thermobearing.loads import arc_contacts
+
+    b = qj_like()
+    ld = ball_load_distribution(b, 1000.0, 5000.0, 0.0)
+    arcs = ball_arcs(b)
+    cf = arc_contacts(b, arcs, ld.ball_x, ld.ball_r, ld.delta_a, ld.delta_r, ld.azimuth)
+    np.testing.assert_allclose(cf.load, ld.contacts.load, rtol=1e-14, atol=0)
+    cf2 = arc_contacts(b, arcs, ld.ball_x, ld.ball_r, ld.delta_a, ld.delta_r, ld.azimuth,
+                       stiffness=2.0 * cf.stiffness)
+    np.testing.assert_allclose(cf2.load, 2.0 * cf.load, rtol=1e-14, atol=0)
