@@ -18,10 +18,23 @@ Model of Luo et al. 2022 (seed paper 004, ``../shared/seeds/004_0105d7aba121b014
   m_i y'' + c y' + sum Q_in sin theta + sum F_in cos theta = 0,
   m_r d_j'' + c d_j' + Q_out - Q_in = 0,   J_r omega_j' = (F_in + F_out) D/2.
 
-Sign note: eq. 20 of the paper prints ``m y'' + c y' + N_y - F_y = 0`` with F_y = sum F_in
-cos theta. The friction force on the ball at the inner contact points along the orbital
-direction (-sin theta, cos theta); its reaction on the ring is F_in (sin theta, -cos theta),
-which gives eq. 19 as printed and eq. 20 with ``+ F_y``; the consistent form is used here.
+Sign note (eqs. 18-20): the friction on the ball at the inner contact points along the
+orbital direction e_theta = (-sin theta, cos theta) when Delta v_i > 0; its reaction drags the
+ring, F_in (sin theta, -cos theta). That is eq. 19 (N_x - F_x with F_x = sum F_in sin theta)
+and eq. 20 with F_y = -sum F_in cos theta; the consistent form is used here. The seed's text
+drops every minus sign (eq. 1 reads "(1 D/d_m cos alpha)"), so whether the paper prints
+F_y = + or - sum F_in cos theta cannot be told from it. ``simulate(..., eq20_as_text=True)``
+takes the + sign (the friction then pushes the ring along the rolling direction: physically
+inconsistent) as a diagnostic only: with it, the kurtosis rises with slip and with mu_m as
+paper 004's Fig. 12 says, and with the consistent sign it does not (measured,
+``validation/cases/paper004_vibration_stats/SOURCE.md``).
+
+Contact switch (eq. 15): the paper writes one coefficient lambda_j = 1 only if BOTH
+deformations are positive. Read literally, a ball that is not already pressed into the outer
+race is never loaded: from the paper's start (everything at zero) no contact ever closes and the
+ring falls through the bearing (measured with an independent script, SOURCE.md). Each contact
+is therefore switched on its own (delta > 0), which is what eq. 15's sentence "contact
+deformation is not allowed to be below zero" asks for.
 
 Optional extensions (off by default, so the paper's model is the default): per-ball diameter
 deviations (off-size balls, paper 004 introduction refs 10-14: they put the cage frequency
@@ -246,7 +259,7 @@ def traction_table(law: Any, max_speed: float, n: int = 96) -> tuple[np.ndarray,
 # compiled kernel
 # ---------------------------------------------------------------------------
 # P layout
-_Z, _D, _DM, _COSA, _PD, _KI, _KO, _MI, _MR, _J, _C, _CB, _WS, _WC, _W, _UNB, _CF = range(17)
+_Z, _D, _DM, _COSA, _PD, _KI, _KO, _MI, _MR, _J, _C, _CB, _WS, _WC, _W, _UNB, _CF, _FYS = range(18)
 
 
 @numba.njit(cache=True)
@@ -317,7 +330,7 @@ def _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, dy):
         fin = qi[j] * _mu_signed(ai - r * w, tv, tmu) if qi[j] > 0.0 else 0.0
         fout = qo[j] * _mu_signed(ao - r * w, tv, tmu) if qo[j] > 0.0 else 0.0
         fx += -qi[j] * c + fin * s
-        fy += -qi[j] * s - fin * c
+        fy += -qi[j] * s - P[_FYS] * fin * c  # P[_FYS] = 1 (consistent) or -1 (eq20_as_text)
         dy[4 + j] = y[4 + z + j]
         dy[4 + z + j] = (qi[j] - qo[j] + cf - P[_CB] * y[4 + z + j]) / P[_MR]
         dy[4 + 2 * z + j] = 0.5 * P[_D] * (fin + fout) / P[_J]
@@ -595,7 +608,7 @@ def simulate(params: VibrationParameters, shaft_speed: float, radial_load: float
              traction: Any, cage_slip: float = 0.0, cage_speed: float | None = None,
              duration: float = 0.25, settle_time: float = 0.05,
              sampling_rate: float = 100_000.0, method: str = "auto",
-             max_step: float | None = None) -> VibrationResult:
+             max_step: float | None = None, eq20_as_text: bool = False) -> VibrationResult:
     """Integrate the paper 004 model and return the ring acceleration.
 
     Parameters
@@ -619,6 +632,13 @@ def simulate(params: VibrationParameters, shaft_speed: float, radial_load: float
         traction slope makes the spin equations stiff; see the module notes and bm8).
     max_step : [s]; None: 1e-5 s (paper 004) or 0.85 times the explicit stability bound of
         :func:`stability_report` for the method, whichever is smaller.
+    eq20_as_text : diagnostic only (default False). True reverses the sign of the y component
+        of the inner-contact friction on the ring, i.e. eq. 20 read as the seed's text shows it
+        (N_y - F_y with F_y = + sum F_in cos theta): the friction then pushes the ring along the
+        direction of rolling instead of dragging it, which is physically inconsistent (module
+        notes). It exists to measure what paper 004's Fig. 12 trends would be under that
+        reading (``validation/cases/paper004_vibration_stats/SOURCE.md``); never use it for
+        predictions.
 
     Raises
     ------
@@ -657,7 +677,8 @@ def simulate(params: VibrationParameters, shaft_speed: float, radial_load: float
                   params.inner_stiffness, params.outer_stiffness, params.inner_ring_mass,
                   params.ball_mass, params.ball_inertia, params.support_damping,
                   params.ball_damping, shaft_speed, wc, radial_load, params.unbalance,
-                  1.0 if params.centrifugal else 0.0], dtype=float)
+                  1.0 if params.centrifugal else 0.0, -1.0 if eq20_as_text else 1.0],
+                 dtype=float)
     dt_out = 1.0 / sampling_rate
     sub = max(1, math.ceil(dt_out / max_step * (1 - 1e-12)))
     h = dt_out / sub
@@ -723,72 +744,5 @@ def simulate_with_skidding(bearing: Any, lubricant: Any, shaft_speed: float,
     return result, sk
 
 
-@numba.njit(cache=True)
-def _sunnersjo_rhs(t, y, k, gap, m, c, load, wc, z, dy):
-    fx = load - c * y[2]
-    fy = -c * y[3]
-    for j in range(z):
-        th = 2.0 * math.pi * j / z + wc * t
-        d = y[0] * math.cos(th) + y[1] * math.sin(th) - gap
-        if d > 0.0:
-            q = k * d * math.sqrt(d)
-            fx -= q * math.cos(th)
-            fy -= q * math.sin(th)
-    dy[0] = y[2]
-    dy[1] = y[3]
-    dy[2] = fx / m
-    dy[3] = fy / m
-
-
-@numba.njit(cache=True)
-def _sunnersjo_run(y, h, sub, n_settle, n_rec, k, gap, m, c, load, wc, z, ax):
-    k1 = np.empty(4)
-    k2 = np.empty(4)
-    k3 = np.empty(4)
-    k4 = np.empty(4)
-    tmp = np.empty(4)
-    t = 0.0
-    for i in range(n_settle + n_rec):
-        if i >= n_settle:
-            _sunnersjo_rhs(t, y, k, gap, m, c, load, wc, z, k1)
-            ax[i - n_settle] = k1[2]
-        for _ in range(sub):
-            _sunnersjo_rhs(t, y, k, gap, m, c, load, wc, z, k1)
-            for q in range(4):
-                tmp[q] = y[q] + 0.5 * h * k1[q]
-            _sunnersjo_rhs(t + 0.5 * h, tmp, k, gap, m, c, load, wc, z, k2)
-            for q in range(4):
-                tmp[q] = y[q] + 0.5 * h * k2[q]
-            _sunnersjo_rhs(t + 0.5 * h, tmp, k, gap, m, c, load, wc, z, k3)
-            for q in range(4):
-                tmp[q] = y[q] + h * k3[q]
-            _sunnersjo_rhs(t + h, tmp, k, gap, m, c, load, wc, z, k4)
-            for q in range(4):
-                y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
-            t += h
-
-
-def simulate_sunnersjo(params: VibrationParameters, shaft_speed: float, radial_load: float,
-                       *, duration: float = 0.5, settle_time: float = 0.05,
-                       sampling_rate: float = 100_000.0, max_step: float = 1e-5) -> np.ndarray:
-    """Inner-ring x acceleration [m/s^2] of Sunnersjo's varying-compliance model.
-
-    Sunnersjo 1978 (ref. [4] of paper 004, the model paper 004 validates against in its
-    Table 2): the ring (mass m_i, damping c) on massless balls at pure-rolling cage speed,
-    Q_j = K (x cos theta_j + y sin theta_j - P_d)^1.5 with the series constant
-    K = (K_i^-2/3 + K_o^-2/3)^-3/2 and the same total radial play P_d as the full model
-    (eqs. 13-14 of paper 004 put P_d/2 at each contact). RK4 at ``max_step`` [s]: without
-    ball masses the stiffest mode is the ring's, far inside RK4's stability bound.
-    """
-    check_positive("shaft_speed", shaft_speed)
-    check_positive("radial_load", radial_load)
-    k = (params.inner_stiffness ** (-2 / 3) + params.outer_stiffness ** (-2 / 3)) ** -1.5
-    dt_out = 1.0 / sampling_rate
-    sub = max(1, math.ceil(dt_out / max_step * (1 - 1e-12)))
-    n_settle = int(round(settle_time * sampling_rate))
-    n_rec = int(round(duration * sampling_rate))
-    ax = np.empty(n_rec)
-    _sunnersjo_run(np.zeros(4), dt_out / sub, sub, n_settle, n_rec, k, params.radial_clearance,
-                   params.inner_ring_mass, params.support_damping, radial_load,
-                   params.theoretical_cage_speed_ratio * shaft_speed, params.n_balls, ax)
-    return ax
+# Sunnersjo's 2-DOF reference model lives in vibration_sunnersjo.py (re-exported here)
+from .vibration_sunnersjo import simulate_sunnersjo  # noqa: E402

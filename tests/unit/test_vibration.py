@@ -294,3 +294,23 @@ def test_rms_fall_with_slip_is_kinematic(params, mild):
     assert r0[0] > r0[1] > r0[2]
     assert r0[2] < 0.8 * r0[0]
     assert np.allclose(r0, r1, rtol=0.05)
+
+
+def test_friction_drags_ring_against_rolling_and_eq20_switch(params):
+    # The balls orbit towards +theta (eq. 12) and the inner-race surface moves faster than
+    # the balls' (Delta v_i > 0 with cage slip, eq. 7), so the friction on the ring at the
+    # loaded contacts near theta = 0 acts along -e_theta = -y: the ring's mean position moves
+    # to -y (friction rotates the load line against the rolling direction). eq20_as_text
+    # (diagnostic) reverses that y force, so the offset reverses; without slip there is no
+    # friction and the switch changes nothing.
+    law = make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.1)
+    kw = dict(traction=law, duration=0.1, settle_time=0.05)
+    consistent = V.simulate(params, WS, LOAD, cage_slip=0.05, **kw)
+    as_text = V.simulate(params, WS, LOAD, cage_slip=0.05, eq20_as_text=True, **kw)
+    y1, y2 = consistent.displacement_y.mean(), as_text.displacement_y.mean()
+    assert y1 < -0.5e-6 and y2 > 0.5e-6
+    # the mean friction y force of about mu sum Q ~ 0.05 * 2.3 kN rotates the line by ~2 deg
+    assert abs(math.degrees(math.atan2(y1, consistent.displacement_x.mean()))) < 5.0
+    a = V.simulate(params, WS, LOAD, cage_slip=0.0, **kw).acceleration_x
+    b = V.simulate(params, WS, LOAD, cage_slip=0.0, eq20_as_text=True, **kw).acceleration_x
+    assert np.max(np.abs(a - b)) <= 1e-9 * np.max(np.abs(a))

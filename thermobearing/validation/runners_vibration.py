@@ -91,6 +91,20 @@ def paper004_vibration_stats(inputs: dict[str, Any], case_dir: Path) -> dict[str
         st = V.simulate(params, wk, load, cage_slip=0.0, **kw).statistics_x
         tag = f"{wk * 60 / (2 * math.pi):.0f}rpm"
         out[f"ptp_{tag}"], out[f"rms_{tag}"], out[f"kurtosis_{tag}"] = st
+    # diagnostic: Fig. 12 with the y friction of eq. 20 taken with the sign the seed's text
+    # shows (physically inconsistent, see vibration.simulate / SOURCE.md), ratios to s_c = 0
+    for mu in inputs.get("eq20_as_text_mu_max", []):
+        law = make_traction_law("linear_saturating", mu_max=float(mu),
+                                slip_speed_max=kw["traction"].slip_speed_max)
+        for slip in inputs.get("fig12_slips", []):
+            if float(slip) == 0.0:
+                continue  # no slip, no friction: identical to `base`
+            st = V.simulate(params, ws, load, cage_slip=float(slip), eq20_as_text=True,
+                            **{**kw, "traction": law}).statistics_x
+            tag = f"mu{float(mu):g}_slip_{100 * float(slip):g}pct_eq20_as_text"
+            out[f"ptp_ratio_{tag}"] = st.ptp / base.ptp
+            out[f"rms_ratio_{tag}"] = st.rms / base.rms
+            out[f"kurtosis_ratio_{tag}"] = st.kurtosis / base.kurtosis
     # Fig. 12 table: statistics at every (mu_m, s_c) pair, printed by `validate`
     for mu in inputs.get("fig12_mu_max", []):
         law = make_traction_law("linear_saturating", mu_max=float(mu),
