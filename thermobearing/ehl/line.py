@@ -35,6 +35,16 @@ L_RANGE = (0.0, 40.0)
 #: march takes over (BM-6, session 4: heavy loads converge directly in 6-12 iterations,
 #: M = 10 does not converge at all without the march).
 DIRECT_START_ITERATIONS = 15
+#: Levels with at most this many nodes use the dense Newton (LU of the full matrix).
+DENSE_LEVEL_MAX = 384
+#: Newton tolerance on max |F| (scaled Fischer-Burmeister residuals, ~ a pressure change in
+#: units of p_H) on the finest grid and on the coarser levels. The discretisation error of
+#: the films is >= 1e-4 (relative) at the BM-6 resolutions, so 1e-7 on the finest grid
+#: changes h_c, h_min and p_max of the BM-6 cases by < 5e-7 (relative) against 1e-8 and saves
+#: its last (quadratic) Newton iteration; the coarse levels only feed the next grid and the
+#: Richardson estimate (a difference of >= 1e-4), 1e-5 (session 5; 1e-8 / 1e-6 before).
+FINE_TOL = 1e-7
+COARSE_TOL = 1e-5
 _POINTER = (
     "use a closed-form film model instead (thermobearing.film: moes_line_central, "
     "dowson_higginson_minimum, pan_hamrock_minimum)"
@@ -326,10 +336,10 @@ def solve_dimensionless(
         while k < len(levels):
             nk = levels[k]
             prob = LineProblem(nk, x_in, x_out, lam, rheology, factors(nk, f_e), factors(nk, f_r))
-            lin_k = "dense" if nk <= 384 else linear
+            lin_k = "dense" if nk <= DENSE_LEVEL_MAX else linear
             # coarse levels only feed the next grid (and the Richardson estimate, whose
             # discretisation difference is >= 1e-4): 1e-6 saves their last Newton iteration
-            tol_k = 1e-8 if nk == n else 1e-6
+            tol_k = FINE_TOL if nk == n else COARSE_TOL
             if k == 0:
                 if initial is not None:
                     Xi, Pi, H0i = initial

@@ -36,6 +36,7 @@ from scipy.linalg import lapack, toeplitz
 from scipy.sparse import csr_matrix
 
 from ..errors import ConvergenceError
+from . import reynolds
 from .kernel import smooth_kernel
 
 
@@ -76,12 +77,90 @@ def _band_solve_rows(lu, piv, kl, ku, B):
     return B
 
 
+@numba.njit(cache=True)
+def _band_solve_vec(lu, piv, kl, ku, b):
+    """Solve ``A x = b`` for one right-hand side with the ``dgbtrf`` factors of A (returns a
+    new array). The operations of LAPACK ``dgbtrs`` (as :func:`_band_solve_rows`), compiled
+    so that the preconditioner application is one call without wrapper overhead."""
+    m = b.shape[0]
+    x = b.copy()
+    kd = kl + ku
+    for j in range(m - 1):
+        lm = min(kl, m - 1 - j)
+        p = piv[j]
+        if p != j:
+            tmp = x[p]
+            x[p] = x[j]
+            x[j] = tmp
+        xj = x[j]
+        if xj != 0.0:
+            for i in range(1, lm + 1):
+                x[j + i] -= lu[kd + i, j] * xj
+    for j in range(m - 1, -1, -1):
+        x[j] /= lu[kd, j]
+        xj = x[j]
+        if xj != 0.0:
+            for i in range(max(0, j - kd), j):
+                x[i] -= lu[kd + i - j, j] * xj
+    return x
+
+
+@numba.njit(cache=True)
+def _two_level_solve(lu, piv, kl, ku, idx, t, W, Z, r):
+    """``(Mb + U V)^-1 r`` by Sherman-Morrison-Woodbury (module docstring): ``y = Mb^-1 r``,
+    ``c = W Pi^T y`` with ``W = (I + V Z)^-1 Kc`` precomputed, ``y - Z c``. ``idx``, ``t``:
+    the coarse cell and weight of every interior fine node (linear interpolation ``Pi``)."""
+    y = _band_solve_vec(lu, piv, kl, ku, r)
+    m = y.shape[0]
+    nc = W.shape[0]
+    rc = np.zeros(nc)
+    for i in range(m):
+        rc[idx[i]] += (1.0 - t[i]) * y[i]
+        rc[idx[i] + 1] += t[i] * y[i]
+    return y - Z @ (W @ rc)
+
+
+@numba.njit(cache=True)
+def _bordered_solve(lu, piv, kl, ku, idx, t, W, Z, zc, fz, dx, r):
+    """The bordered preconditioner (interior rows, then the load-balance row): the ``H0``
+    column ``zc = M^-1 col_h0`` and ``fz = dx sum(zc)`` eliminate the border (Schur
+    complement), see :meth:`TwoLevelPreconditioner.__call__`."""
+    m = r.shape[0] - 1
+    z = _two_level_solve(lu, piv, kl, ku, idx, t, W, Z, r[:m])
+    d = (dx * np.sum(z) - r[m]) / fz
+    out = np.empty(m + 1)
+    for i in range(m):
+        out[i] = z[i] - zc[i] * d
+    out[m] = d
+    return out
+
+
+@numba.njit(cache=True)
+def _assemble_u(b, beta, idx, t, nc):
+    """``U = diag(beta) B Pi`` (m x nc): row r (fine node r + 1) has film coefficients
+    ``b[k, r]`` on nodes ``r + k - 1`` (k = 0..3, offsets -2..+1; the node -1 of the first
+    row does not exist), each spread on two coarse nodes by the interpolation weights."""
+    m = beta.shape[0]
+    U = np.zeros((m, nc))
+    for r in range(m):
+        for k in range(4):
+            node = r + k - 1
+            if node < 0:
+                continue
+            c = beta[r] * b[k, r]
+            U[r, idx[node]] += c * (1.0 - t[node])
+            U[r, idx[node] + 1] += c * t[node]
+    return U
+
+
 class _Grids:
     """Fine/coarse geometry of the split for one grid size (kept on the problem)."""
 
     def __init__(self, n: int, dx: float, width: int) -> None:
         self.width = int(width)
         self.coeffs_near = None  # set by TwoLevelPreconditioner (needs the kernel)
+        self.kd = None  # near-field coefficients by band offset (set on first use)
+        self.kl = self.ku = 0
         nc = int(np.ceil(2.0 * (n - 1) / width)) + 1
         hk = (n - 1) / (nc - 1)  # coarse spacing in fine node spacings
         pos = np.arange(n) / hk
@@ -130,36 +209,35 @@ class TwoLevelPreconditioner:
         self._prob, self._width = prob, width
         self._factor_near(st, beta, da, g)
         lu, piv, kl, ku = self._band
-        # U = diag(beta) B Pi (m x nc): row r (fine node r+1) touches nodes r-1..r+2
-        U = np.zeros((m, g.nc))
-        rows = np.arange(m)
-        for coef, off in zip(st["b"], (-1, 0, 1, 2), strict=True):
-            node = np.maximum(rows + off, 0)
-            c = beta * coef
-            if off == -1:
-                c = c.copy()
-                c[0] = 0.0
-            U[rows, g.idx[node]] += c * (1.0 - g.t[node])
-            U[rows, g.idx[node] + 1] += c * g.t[node]
+        U = _assemble_u(np.asarray(st["b"]), beta, g.idx, g.t, g.nc)
         Z = _band_solve_rows(lu, piv, kl, ku, U)
         C = g.kc @ (g.pt @ Z)
         C[np.diag_indices_from(C)] += 1.0
-        clu, cpiv, info = lapack.dgetrf(C)
+        # W = (I + V Z)^-1 Kc: the coarse solve folded into one nc x nc matrix
+        _lu, _piv, W, info = lapack.dgesv(C, g.kc)
         if info != 0:
             raise ConvergenceError("ehl.newton", float("nan"), "singular coarse correction")
-        self._coarse = (clu, cpiv)
+        self._W = np.ascontiguousarray(W)
         self._Z, self._g, self._m = Z, g, m
         self._dx = prob.dx
         self._zc = self.solve_interior(col_h0)
         self._fz = prob.dx * float(np.sum(self._zc))
 
     def _factor_near(self, st: dict, beta: np.ndarray, da: np.ndarray, g: _Grids) -> None:
-        ab, kl, ku = self._prob.banded_jacobian_r(st, self._width - 1, beta, da,
-                                                  coeffs=g.coeffs_near)
-        lu, piv, info = lapack.dgbtrf(ab, kl, ku)
+        if g.kd is None:  # near-field coefficients in the layout of reynolds.banded_values
+            band = self._width - 1
+            kl, ku = band + 2, band + 1
+            offs = np.arange(-kl, ku + 1)
+            dist = np.abs(np.array([-2, -1, 0, 1])[None, :] - offs[:, None])
+            kn = g.coeffs_near
+            g.kd = np.where(dist <= band, kn[np.minimum(dist, len(kn) - 1)], 0.0)
+            g.kl, g.ku = kl, ku
+        ab = reynolds.banded_values(np.asarray(st["s"]), np.asarray(st["b"]), g.kd, beta, da,
+                                    g.kl, g.ku)
+        lu, piv, info = lapack.dgbtrf(ab, g.kl, g.ku, overwrite_ab=True)
         if info != 0:
             raise ConvergenceError("ehl.newton", float("nan"), "singular banded preconditioner")
-        self._band = (lu, piv, kl, ku)
+        self._band = (lu, piv, g.kl, g.ku)
 
     def refresh_near(self, st: dict, beta: np.ndarray, da: np.ndarray,
                      col_h0: np.ndarray) -> None:
@@ -171,19 +249,16 @@ class TwoLevelPreconditioner:
         self._fz = self._dx * float(np.sum(self._zc))
 
     def solve_interior(self, r: np.ndarray) -> np.ndarray:
-        """``(Mb + U V)^-1 r`` for a vector over the interior nodes."""
+        """``(Mb + U V)^-1 r`` for a vector over the interior nodes (compiled,
+        :func:`_two_level_solve`)."""
         lu, piv, kl, ku = self._band
-        y, _ = lapack.dgbtrs(lu, kl, ku, r, piv)
-        c = self._g.kc @ self._g.restrict(y)
-        c, _ = lapack.dgetrs(*self._coarse, c)
-        return y - self._Z @ c
+        g = self._g
+        return _two_level_solve(lu, piv, kl, ku, g._ii, g._ti, self._W, self._Z,
+                                np.ascontiguousarray(r, dtype=float))
 
     def __call__(self, r: np.ndarray) -> np.ndarray:
         """Apply the bordered preconditioner to ``r`` (interior residuals, then load balance)."""
-        m = self._m
-        z = self.solve_interior(r[:m])
-        d = (self._dx * np.sum(z) - r[m]) / self._fz
-        out = np.empty(m + 1)
-        out[:m] = z - self._zc * d
-        out[m] = d
-        return out
+        lu, piv, kl, ku = self._band
+        g = self._g
+        return _bordered_solve(lu, piv, kl, ku, g._ii, g._ti, self._W, self._Z, self._zc,
+                               self._fz, self._dx, np.ascontiguousarray(r, dtype=float))

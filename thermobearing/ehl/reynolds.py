@@ -117,7 +117,10 @@ def banded_values(s, b, kd, row_scale, diag_add, kl, ku):
     """
     m = s.shape[1]
     nb = kl + ku + 1
-    ab = np.zeros((2 * kl + ku + 1, m))
+    # built as the transpose of a C-ordered array: the returned view is Fortran-ordered, the
+    # layout LAPACK works on (SciPy would copy a C-ordered band matrix before dgbtrf)
+    abt = np.zeros((m, 2 * kl + ku + 1))
+    ab = abt.T
     for i in range(m):
         for r in range(nb):
             o = r - kl
@@ -130,7 +133,7 @@ def banded_values(s, b, kd, row_scale, diag_add, kl, ku):
             v *= row_scale[i]
             if o == 0:
                 v += diag_add[i]
-            ab[kl + ku - o, j] = v
+            abt[j, kl + ku - o] = v
     return ab
 
 
@@ -182,3 +185,35 @@ def fischer_burmeister(a, b):
             da[i] = 1.0 - a[i] / r
             db[i] = 1.0 - b[i] / r
     return phi, da, db
+
+
+@numba.njit(cache=True)
+def newton_matvec(v, Kv, s, b, beta, da, col_h0, dx):
+    """Product of the bordered semismooth-Newton matrix with ``v`` (interior pressures, then
+    the ``H0`` entry), given ``Kv = K v`` at all ``n`` nodes (the deformation of the interior
+    pressures; DC-FFT, :class:`thermobearing.ehl.kernel.LogKernel`).
+
+    Rows ``da_r v_r + beta_r ((S v)_r + (B K v)_r) + col_h0_r v_m`` (``S``, ``B`` the banded
+    pieces of :func:`jacobian_pieces`, offsets -2..+1 on interior pressures and node films),
+    and the load-balance row ``dx sum(v_r)`` (trapezoidal rule of paper 000 eq. 11).
+    """
+    m = v.shape[0] - 1
+    out = np.empty(m + 1)
+    vh = v[m]
+    total = 0.0
+    for r in range(m):
+        acc = s[2, r] * v[r]
+        if r >= 1:
+            acc += s[1, r] * v[r - 1]
+        if r >= 2:
+            acc += s[0, r] * v[r - 2]
+        if r + 1 < m:
+            acc += s[3, r] * v[r + 1]
+        # films at nodes r-1..r+2 (node of row r is r + 1)
+        if r >= 1:
+            acc += b[0, r] * Kv[r - 1]
+        acc += b[1, r] * Kv[r] + b[2, r] * Kv[r + 1] + b[3, r] * Kv[r + 2]
+        out[r] = da[r] * v[r] + beta[r] * acc + col_h0[r] * vh
+        total += v[r]
+    out[m] = dx * total
+    return out

@@ -407,16 +407,13 @@ def newton_solve(
                 factor.refresh_near(st, beta, da, col_h0)
             prec = factor
 
-            b = st["b"]
+            s_b = (np.asarray(st["s"]), np.asarray(st["b"]))
 
-            def matvec(v, b=b, beta=beta, da=da, col_h0=col_h0, st=st):
-                vp = v[:m]
+            def matvec(v, s_b=s_b, beta=beta, da=da, col_h0=col_h0):
                 full = np.zeros(n)
-                full[1:-1] = vp
-                Kv = prob.kernel.apply(full)
-                jr = prob.apply_s(st["s"], vp.copy()) + prob.apply_b(b, Kv)
-                top = da * vp + beta * jr + col_h0 * v[m]
-                return np.concatenate((top, [dx * np.sum(vp)]))
+                full[1:-1] = v[:m]
+                return reynolds.newton_matvec(v, prob.kernel.apply(full), s_b[0], s_b[1],
+                                              beta, da, col_h0, dx)
 
             step, count = _gmres(matvec, prec, -F, gmres_rtol, GMRES_MAX_ITERATIONS)
             lin_its += count
