@@ -71,6 +71,64 @@ def _block_step(Ainv: np.ndarray, Ainv_B: np.ndarray, C: np.ndarray, Sinv: np.nd
 
 
 @numba.njit(cache=True)
+def _factor_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """Factors of the block elimination (compiled): A_z^-1 (Z, 6, 6) by Gauss-Jordan with
+    partial pivoting, A_z^-1 B_z (Z, 6, 3) and the Schur complement S = D - sum_z C_z A_z^-1 B_z
+    (3, 3). Returns (Ainv, Ainv_B, S, ok); ok is False when a ball block is singular (a zero
+    or non-finite pivot)."""
+    nz, nb, ng = A.shape[0], A.shape[1], B.shape[2]
+    Ainv = np.empty((nz, nb, nb))
+    AiB = np.empty((nz, nb, ng))
+    S = Dg.copy()
+    w = np.empty((nb, 2 * nb))
+    for z in range(nz):
+        for i in range(nb):
+            for j in range(nb):
+                w[i, j] = A[z, i, j]
+                w[i, nb + j] = 1.0 if i == j else 0.0
+        for col in range(nb):
+            piv = col
+            best = abs(w[col, col])
+            for r in range(col + 1, nb):
+                if abs(w[r, col]) > best:
+                    best = abs(w[r, col])
+                    piv = r
+            if not (best > 0.0 and math.isfinite(best)):
+                return Ainv, AiB, S, False
+            if piv != col:
+                for j in range(2 * nb):
+                    t = w[col, j]
+                    w[col, j] = w[piv, j]
+                    w[piv, j] = t
+            inv_p = 1.0 / w[col, col]
+            for j in range(2 * nb):
+                w[col, j] *= inv_p
+            for r in range(nb):
+                if r != col:
+                    f = w[r, col]
+                    if f != 0.0:
+                        for j in range(2 * nb):
+                            w[r, j] -= f * w[col, j]
+        for i in range(nb):
+            for j in range(nb):
+                Ainv[z, i, j] = w[i, nb + j]
+        for i in range(nb):
+            for g in range(ng):
+                acc = 0.0
+                for j in range(nb):
+                    acc += Ainv[z, i, j] * B[z, j, g]
+                AiB[z, i, g] = acc
+        for g in range(ng):
+            for h in range(ng):
+                acc = 0.0
+                for i in range(nb):
+                    acc += C[z, g, i] * AiB[z, i, h]
+                S[g, h] -= acc
+    return Ainv, AiB, S, True
+
+
+@numba.njit(cache=True)
 def _residual_norm(R: np.ndarray, Gc: np.ndarray, Gk: np.ndarray) -> float:
     """sqrt(|R|^2 + |sum_z Gc_z + Gk|^2) of one state (compiled)."""
     acc = 0.0
@@ -228,19 +286,18 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         return factor(blocks, R, Gc, Gk, G)
 
     def factor(blocks, R, Gc, Gk, G):
-        try:
-            Ainv = np.linalg.inv(blocks.A)
-        except np.linalg.LinAlgError:
+        C = np.ascontiguousarray(blocks.C)
+        Ainv, Ainv_B, S, ok = _factor_blocks(np.ascontiguousarray(blocks.A),
+                                             np.ascontiguousarray(blocks.B), C,
+                                             np.ascontiguousarray(blocks.Dg))
+        if not ok:
             raise ConvergenceError("skidding.ball", norm_of(R, Gc, Gk), "singular ball block",
-                                   {"cage_speed": G[2]}) from None
-        Ainv_B = np.ascontiguousarray(Ainv @ blocks.B)
-        S = blocks.Dg - np.einsum("zgi,zij->gj", blocks.C, Ainv_B)
+                                   {"cage_speed": G[2]})
         try:
             Sinv = np.linalg.inv(S)
         except np.linalg.LinAlgError:
             Sinv = np.linalg.pinv(S)       # least-squares step of a singular Schur complement
-        return (np.ascontiguousarray(Ainv), Ainv_B, np.ascontiguousarray(blocks.C),
-                np.ascontiguousarray(Sinv))
+        return Ainv, Ainv_B, C, np.ascontiguousarray(Sinv)
 
     def step(jac, R, Gc, Gk):
         return _block_step(*jac, R, Gc.sum(0) + Gk, _CAP_X, _CAP_G)

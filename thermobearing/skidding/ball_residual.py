@@ -130,6 +130,7 @@ N_GEO = 20
 P_S, P_WA, P_WR, P_WN, P_FPA, P_FPR, P_FC = range(7)
 N_POCKET = 7
 _EMPTY_TR = np.zeros((0, 6))
+_NO_REUSE = np.zeros(1, dtype=np.int64)    # read only: a single state copies nothing
 # float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p
 (C_D, C_DM, C_EP, C_M, C_J, C_FS, C_MS, C_TS, C_VEPS, C_MUP) = range(10)
 # arc table rows: centre x, centre r, free distance, inner (1/0), sign (+1 inner / -1 outer),
@@ -162,7 +163,7 @@ def guarded_film_array(u: np.ndarray, q: np.ndarray, rx: np.ndarray, ry: np.ndar
 def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
                    c: np.ndarray, geo: np.ndarray) -> None:
     """Stage 1: raceway-arc contacts (``loads.arc_contacts`` geometry, Hamrock-Brewe Hertz
-    constants ``loads._arc_hertz``, the Hertz ellipse) and the slip kinematics of every
+    constants as ``loads._arc_stiffness_nb``, the Hertz ellipse) and the slip kinematics of every
     (state, ball, arc) contact, written into ``geo`` (N_GEO, B*Z*k); see the module
     docstring of :mod:`thermobearing.contact_traction` for the contact frame."""
     nb, nz = X.shape[0], X.shape[1]
@@ -453,13 +454,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         """
         X = np.asarray(X, dtype=float)
         G = np.asarray(G, dtype=float)
+        if X.ndim == 2:
+            return self._evaluate_one(X, G, details)
         batch = X.shape[:-2]
-        last = self._last
-        if (details and last is not None and np.array_equal(X, last[0])
-                and np.array_equal(G, last[1])):
-            # the converged state was the last one evaluated: its details from that pass
-            return (*last[2], last[3]())
-        if details and batch:
+        if details:
             raise InputError("skidding.ball evaluate(details=True)", X.shape,
                              "a single state (Z, 6)")
         n_states = int(np.prod(batch)) if batch else 1
@@ -483,8 +481,6 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             # drag force at the drag radius times r_drag (memoised), over the ball radius
             fd_num = np.array([t[3] for t in per_wc])
             Fd_b = fd_num[:, None] / Xb[:, :, 1]
-            u_ball = per_wc[0][4] if not batch else None
-            Fd = Fd_b[0] if not batch else None
         n = n_states * Z * nk
         geo = np.empty((N_GEO, n))
         film = np.empty(n)
@@ -501,10 +497,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
                                         self._film_params, self._law_id, self._law_params,
                                         ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
                                         reuse, tr_ref, geo, film, tr, pocket, R, Gc)
-        film_out = film
         if not done:
-            film_out = self._staged(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R,
-                                    Gc)
+            self._staged(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc)
         G0 = np.empty((n_states, N_GLOBAL))
         G0[:, 0] = self.Fa / self.F_s
         G0[:, 1] = self.Fr / self.F_s
@@ -512,8 +506,60 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         G0 = G0.reshape(batch + (N_GLOBAL,))
         R = R.reshape(batch + (Z, N_BALL))
         Gc = Gc.reshape(batch + (Z, N_GLOBAL))
-        if batch:
-            return R, Gc, G0, None
+        return R, Gc, G0, None
+
+    def _evaluate_one(self, X: np.ndarray, G: np.ndarray, details: bool):
+        """:meth:`evaluate` of a single state (Z, 6), (3,): the Newton iterations' call, with
+        the Python around the compiled kernel kept short (the same kernels and inputs as
+        the batch path)."""
+        last = self._last
+        if (details and last is not None and np.array_equal(X, last[0])
+                and np.array_equal(G, last[1])):
+            # the converged state was the last one evaluated: its details from that pass
+            return (*last[2], last[3]())
+        self.n_eval += 1
+        # a sum is finite iff every term is (the unknowns are far below overflow)
+        if not (math.isfinite(X.sum()) and math.isfinite(G.sum())):
+            raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
+        md = self.models
+        Z = self.Z
+        nk = self._arc.shape[1]
+        Xb = np.ascontiguousarray(X).reshape(1, Z, N_BALL)
+        Gb = np.ascontiguousarray(G).reshape(1, N_GLOBAL)
+        wc = float(G[2])
+        torques = self._cage_torques(wc)
+        if md.drag_radius is None:
+            u_ball = (wc * (1.0 - md.oil_speed_ratio)) * X[:, 1]
+            Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball)
+            Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, (Z,)).reshape(1, Z))
+        else:
+            # drag force at the drag radius times r_drag (memoised), over the ball radius
+            Fd_b = torques[3] / Xb[:, :, 1]
+            u_ball = torques[4]
+            Fd = Fd_b[0]
+        n = Z * nk
+        geo = np.empty((N_GEO, n))
+        film = np.empty(n)
+        tr = np.empty((n, 6))
+        pocket = np.empty((1, Z, N_POCKET))
+        R = np.empty((1, Z, N_BALL))
+        Gc = np.empty((1, Z, N_GLOBAL))
+        done = False
+        if self._fused:
+            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
+                                                                             0.0, 0.0)
+            done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
+                                        self._film_params, self._law_id, self._law_params,
+                                        ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
+                                        _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket, R, Gc)
+        film_out = film
+        if not done:
+            film_out = self._staged(Xb, Gb, Fd_b, _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket,
+                                    R, Gc)
+        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s,
+                       -(torques[0] + torques[1]) / self.T_s])
+        R = R.reshape(Z, N_BALL)
+        Gc = Gc.reshape(Z, N_GLOBAL)
 
         def make_details():
             return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),

@@ -25,7 +25,7 @@ from thermobearing.film import _hd1977_central_nb, hamrock_dowson_1977_central
 from thermobearing.hertz import _ellipse_nb, _hamrock_brewe_point_nb, point_contact
 from thermobearing.skidding.ball import ball_residual_system, race_control_guess, solve_ball
 from thermobearing.skidding.ball_models import GuardedFilm
-from thermobearing.skidding.ball_newton import _CAP_G, _CAP_X, _block_step
+from thermobearing.skidding.ball_newton import _CAP_G, _CAP_X, _block_step, _factor_blocks
 
 W1800 = 1800 * math.pi / 30
 
@@ -234,3 +234,24 @@ def test_cache_guard_survives_an_unwritable_cache(tmp_path):
     dep_file = tmp_path / "dep.py"
     dep_file.write_text("x = 1\n")
     assert refresh_stale_caches("t", (disp,), (SimpleNamespace(__file__=str(dep_file)),)) is False
+
+
+def test_compiled_block_factors_equal_numpy_inverse_and_schur():
+    # _factor_blocks (Gauss-Jordan with partial pivoting) against numpy's LAPACK inverse and
+    # the Schur complement S = D - sum_z C_z A_z^-1 B_z written with einsum
+    rng = np.random.default_rng(7)
+    Z = 5
+    A = rng.normal(size=(Z, 6, 6)) + 4.0 * np.eye(6)
+    A[2, [0, 3]] = A[2, [3, 0]]             # a block that needs row pivoting
+    A[2, 0, 0] = 0.0
+    B = rng.normal(size=(Z, 6, 3))
+    C = rng.normal(size=(Z, 3, 6))
+    Dg = rng.normal(size=(3, 3))
+    Ainv, AiB, S, ok = _factor_blocks(A, B, C, Dg)
+    assert ok
+    np.testing.assert_allclose(Ainv, np.linalg.inv(A), rtol=1e-12, atol=1e-13)
+    np.testing.assert_allclose(AiB, np.linalg.inv(A) @ B, rtol=1e-12, atol=1e-13)
+    S_ref = Dg - np.einsum("zgi,zij->gj", C, np.linalg.inv(A) @ B)
+    np.testing.assert_allclose(S, S_ref, rtol=1e-12, atol=1e-13)
+    A[3, :, 4] = 0.0                        # singular ball block: reported, not inverted
+    assert not _factor_blocks(A, B, C, Dg)[3]
