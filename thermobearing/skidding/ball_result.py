@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from ..loads import ball_load_distribution
+from ..loads import ball_arcs, ball_load_distribution
 from .ball_residual import ball_residual_system
 
 __all__ = ["BallSkiddingResult", "theoretical_csr"]
@@ -203,11 +203,40 @@ def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:
 
     alpha is the load-weighted inner contact angle of the zero-speed load distribution under
     the same radial and axial load (paper 002 section 4.1: CSR_th follows the contact-angle
-    distribution at 1 kN radial load and the applied axial load).
+    distribution at 1 kN radial load and the applied axial load). Memoised on the exact
+    inputs of that distribution (raceway arcs, D, d_m, E', nominal angle, loads, Z: see
+    :func:`_theoretical_key`), so a protocol or sweep that revisits a load step does not
+    solve it again; the value is the same to the last bit.
     """
+    key = _theoretical_key(bearing, radial_load, axial_load, n_balls)
+    hit = _CSR_TH_MEMO.get(key)
+    if hit is not None:
+        return hit
     ld = ball_load_distribution(bearing, radial_load, axial_load, 0.0, n_balls=n_balls)
     w = ld.inner_load
     alpha = (float(np.sum(w * ld.inner_contact_angle) / np.sum(w)) if np.sum(w) > 0
              else float(bearing.contact_angle))
     g = bearing.ball_diameter * np.cos(alpha) / bearing.pitch_diameter
-    return float(0.5 * (1.0 - g))
+    value = float(0.5 * (1.0 - g))
+    if len(_CSR_TH_MEMO) >= _CSR_TH_MEMO_SIZE:
+        _CSR_TH_MEMO.pop(next(iter(_CSR_TH_MEMO)))      # oldest first
+    _CSR_TH_MEMO[key] = value
+    return value
+
+
+# memo of theoretical_csr: a pure function of its key (bounded, oldest entry dropped)
+_CSR_TH_MEMO: dict[tuple, float] = {}
+_CSR_TH_MEMO_SIZE = 512
+
+
+def _theoretical_key(bearing, radial_load, axial_load, n_balls) -> tuple:
+    """Everything the zero-speed load distribution of :func:`theoretical_csr` depends on:
+    the raceway arcs (ring, centres, free distances, conformities; D, d_m/2, E'), the
+    nominal contact angle (start and unloaded default), d_m, the loads and Z (at zero speed
+    the ball mass and inertia do not enter)."""
+    arcs = ball_arcs(bearing)
+    return (arcs.ring.tobytes(), arcs.centre_x.tobytes(), arcs.centre_r.tobytes(),
+            arcs.free_distance.tobytes(), arcs.conformity.tobytes(), arcs.ball_diameter,
+            arcs.pitch_radius, arcs.effective_modulus, float(bearing.contact_angle),
+            float(bearing.ball_diameter), float(bearing.pitch_diameter), float(radial_load),
+            float(axial_load), int(n_balls or bearing.n_balls))
