@@ -104,6 +104,7 @@ class _Core:
         self.network = network
         self.asm = asm
         self.sys: System = asm.system()
+        self.sys_T: np.ndarray | None = None  # the state the conductances of sys are at
         self.C = self.sys.C
         self.n = len(self.C)
         self.alg = self.C == 0.0
@@ -164,7 +165,11 @@ class _Core:
         heat evaluations), else the Jacobian must be refreshed before the next factor.
         """
         if self.asm.temperature_dependent:
-            self.sys = self.asm.system(T)
+            if self.sys_T is None or not np.array_equal(T, self.sys_T):
+                # K(T) is a function of T only: the same state needs no re-assembly (the
+                # first step of a segment starts where the segment's set-up assembled it)
+                self.sys = self.asm.system(T)
+                self.sys_T = np.array(T, dtype=float)
             self.lu_coef = -1.0
             if not keep_heat_jacobian:
                 self.KmJ = None
