@@ -142,7 +142,9 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     if guess is not None and guess.ball_x.size == system.Z:
         X0 = guess.unknowns[0].copy()
         G0 = guess.unknowns[1].copy()
-        G0[2] = guess.cage_speed_ratio * speed
+        # the same speed: the previous state exactly (the system may know its residual)
+        G0[2] = (guess.cage_speed if float(speed) == guess.inner_speed
+                 else guess.cage_speed_ratio * speed)
         X0[:, 2:5] *= speed / guess.inner_speed
         try:
             # a warm start that needs many iterations is further from the solution than

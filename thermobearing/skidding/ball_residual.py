@@ -343,11 +343,37 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
 
 
 
+@numba.njit(cache=True)
+def _energy_audit(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
+                  pocket: np.ndarray, Fd: np.ndarray, inner_f: np.ndarray
+                  ) -> tuple[np.ndarray, np.ndarray, float]:
+    """Per-ball pocket heat -f_p . v_rel (v_rel = -s w: ball surface relative to the cage,
+    paper 002 eq. 19) [W] and drag power F_d omega_c b_r [W] (Z,), and the torque of the
+    balls on the inner ring [N m]: sum over inner contacts of R_P F_t + M_x n_r - M_z n_a
+    (R_P = b_r + p_r, the contact point's radius; the reaction of -(R_P x F)_a - M_a).
+    geo (N_GEO, Z, k), tr (Z, k, 6), pocket (Z, N_POCKET)."""
+    nz, nk = X.shape[0], inner_f.size
+    pocket_heat = np.empty(nz)
+    drag_heat = np.empty(nz)
+    shaft = 0.0
+    for j in range(nz):
+        s = pocket[j, P_S]
+        pocket_heat[j] = -(pocket[j, P_FPA] * (-s * pocket[j, P_WA])
+                           + pocket[j, P_FPR] * (-s * pocket[j, P_WR]))
+        drag_heat[j] = Fd[j] * wc * X[j, 1]
+        for k in range(nk):
+            if inner_f[k] == 1.0:
+                rp = X[j, 1] + geo[G_PR, j, k]
+                shaft += rp * tr[j, k, 1] + (tr[j, k, 2] * geo[G_NR, j, k]
+                                             - tr[j, k, 4] * geo[G_NA, j, k])
+    return pocket_heat, drag_heat, shaft
+
+
 def _refresh_caches() -> None:
     from .. import contact_traction, film, hertz, traction
 
     refresh_stale_caches("ball_residual", (guarded_film, guarded_film_array, _ball_geometry,
-                                           _ball_forces, _ball_residual_fused),
+                                           _ball_forces, _ball_residual_fused, _energy_audit),
                          (contact_traction, traction, hertz, film))
 
 
@@ -513,10 +539,11 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         the Python around the compiled kernel kept short (the same kernels and inputs as
         the batch path)."""
         last = self._last
-        if (details and last is not None and np.array_equal(X, last[0])
-                and np.array_equal(G, last[1])):
-            # the converged state was the last one evaluated: its details from that pass
-            return (*last[2], last[3]())
+        if (last is not None and G[2] == last[1][2] and np.array_equal(G, last[1])
+                and np.array_equal(X, last[0])):
+            # the last state evaluated (the converged one for the details; a warm start's
+            # start, see :meth:`reloaded`): its residual and details from that pass
+            return (*last[2], last[3]() if details else None)
         self.n_eval += 1
         # a sum is finite iff every term is (the unknowns are far below overflow)
         if not (math.isfinite(X.sum()) and math.isfinite(G.sum())):
@@ -629,27 +656,22 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         wi = self.speed
         t_churn, t_guide, wg = self._cage_torques(float(G[2]))[:3]
         wc = float(G[2])
-        inn = self.inner[None, :]
         approach, Q, na, nr = geo[G_APPROACH], geo[G_Q], geo[G_NA], geo[G_NR]
         cf = ContactField(approach, Q, na, nr, geo[G_L], geo[G_ALPHA], geo[G_K])
         ry = np.broadcast_to(self.ry, Q.shape)
         ctr = ContactTraction(tr[..., 0], tr[..., 1], tr[..., 2], tr[..., 3], tr[..., 4],
                               tr[..., 5])
-        s = pocket[:, P_S]
-        wa_, wr_ = pocket[:, P_WA], pocket[:, P_WR]
-        fpa, fpr = pocket[:, P_FPA], pocket[:, P_FPR]
-        # heat and shaft torque (energy audit)
-        pocket_heat = -(fpa * (-s * wa_) + fpr * (-s * wr_))  # -f . v_rel, v_rel = -s w
-        drag_heat = Fd * wc * X[:, 1]   # power given to the oil (all dissipated)
+        # heat and shaft torque (energy audit): pocket heat, drag power (given to the oil,
+        # all dissipated) and the torque of the balls on the inner ring, compiled
+        pocket_heat, drag_heat, shaft = _energy_audit(X, wc, geo, tr, pocket,
+                                                      np.asarray(Fd, dtype=float),
+                                                      self.inner_f)
         cage_heat = t_churn * wc
         guide_heat = t_guide * (wc - wg)
         inner_torque = self._inner_torque()
         if md.guide_on_inner_ring:
             inner_torque += t_guide       # the land's reaction on the inner ring
-        # torque on the inner ring from the balls = -sum (R_P x F_ball)_a - M_ball,a
-        Ft_k, Mx, Mz = ctr.rolling_force, ctr.moment_transverse, ctr.moment_normal
-        Rp_r = X[:, 1:2] + geo[G_PR]
-        shaft = np.sum(np.where(inn, Rp_r * Ft_k + (Mx * nr - Mz * na), 0.0)) + inner_torque
+        shaft += inner_torque
         det = dict(cf=cf, wc=wc, a=geo[G_A], b=geo[G_B], p0=geo[G_P0], rx=geo[G_RX], ry=ry,
                    film=film, Vx=geo[G_VX], Vy=geo[G_VY], Om_x=geo[G_OMX], Om_y=geo[G_OMY],
                    Om_z=geo[G_OMZ], ue=geo[G_UE], tr=ctr, Fd=Fd, u_ball=u_ball,
@@ -696,6 +718,18 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         new.last_jacobian = None
         new._last = None
         new._last_tr = None
+        if self._last is not None:
+            # the last evaluated state (a warm start's solution) at the new loads without the
+            # kernel: the loads enter only the constant global part G0 and the scales (every
+            # row is a force, moment or torque over F_s, F_s D/2 or F_s d_m/2, all
+            # proportional to F_s); the contact fields, tractions and details do not depend
+            # on them. Equal to a fresh evaluation to round-off (a few ulp).
+            X, G, (R, Gc, _), details = self._last
+            f = self.F_s / new.F_s
+            t = new._cage_torques(float(G[2]))
+            G0 = np.array([new.Fa / new.F_s, new.Fr / new.F_s, -(t[0] + t[1]) / new.T_s])
+            new._last = (X, G, (R * f, Gc * f, G0), details)
+            new._last_tr = self._last_tr
         return new
 
     def _set_loads(self, radial_load: float, axial_load: float) -> None:

@@ -10,10 +10,12 @@ CSR_th of paper 002 (:func:`theoretical_csr`).
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+import numba
 import numpy as np
 
 from ..loads import ball_arcs, ball_load_distribution
@@ -108,6 +110,48 @@ def _race_names(inner: np.ndarray) -> list:
     return list(_race_names_cached(tuple(bool(v) for v in inner)))
 
 
+@numba.njit(cache=True)
+def _summary(Q: np.ndarray, alpha: np.ndarray, inner_f: np.ndarray, a0: float,
+             X: np.ndarray, contact_heat: np.ndarray) -> tuple:
+    """Compiled summary of a converged state: per ball the load-weighted |contact angle| of
+    the inner and of the outer arcs [rad] (a0 where a ring is unloaded, as
+    :func:`thermobearing.loads.ring_weighted_angle`), their means weighted by the inner-ring
+    load over the balls that touch the inner ring (a0 if none), per ball the spin magnitude
+    |Omega| [rad/s], attitude beta = atan2(Omega_r, -Omega_a) and yaw atan2(Omega_t,
+    |(Omega_a, Omega_r)|) [rad], and the raceway heat per arc summed over the balls [W]."""
+    nz, nk = Q.shape
+    ai, ao = np.empty(nz), np.empty(nz)
+    spin, beta, yaw = np.empty(nz), np.empty(nz), np.empty(nz)
+    per_arc = np.zeros(nk)
+    wsum = wai = wao = 0.0
+    for j in range(nz):
+        ti = to = si = so = 0.0
+        for k in range(nk):
+            q = Q[j, k]
+            if inner_f[k] == 1.0:
+                ti += q
+                si += q * abs(alpha[j, k])
+            else:
+                to += q
+                so += q * abs(alpha[j, k])
+            per_arc[k] += contact_heat[j, k]
+        ai[j] = si / ti if ti > 0 else a0
+        ao[j] = so / to if to > 0 else a0
+        if ti > 0:
+            wsum += ti
+            wai += ti * ai[j]
+            wao += ti * ao[j]
+        oa, orr, ot = X[j, 2], X[j, 3], X[j, 4]
+        spin[j] = math.sqrt(oa * oa + orr * orr + ot * ot)
+        beta[j] = math.atan2(orr, -oa)
+        yaw[j] = math.atan2(ot, math.hypot(oa, orr))
+    if wsum > 0:
+        ai_m, ao_m = wai / wsum, wao / wsum
+    else:
+        ai_m = ao_m = a0
+    return ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc
+
+
 def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
 
     R, Gc, G0, det = system.evaluate(X, G, details=True)
@@ -117,28 +161,15 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
     wi, wc = system.speed, G[2]
     csr = wc / wi
     inner = system.inner
-    from ..loads import ring_weighted_angle
-
     a0 = float(b.contact_angle)
-    ai = ring_weighted_angle(Q, cf.contact_angle, inner, a0)
-    ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, a0)
-    loaded = (np.where(inner[None, :], Q, 0).sum(1) > 0)
-    w = np.where(inner[None, :], Q, 0).sum(1)
-    if np.any(loaded):
-        ai_m = float(np.sum(w * ai) / np.sum(w))
-        ao_m = float(np.sum(w * ao) / np.sum(w))
-    else:
-        ai_m = ao_m = a0
+    ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc = _summary(
+        Q, cf.contact_angle, system.inner_f, a0, X, det["contact_heat"])
     g = b.ball_diameter / b.pitch_diameter
     kin = float((1 - g * np.cos(ai_m)) / (1 + np.cos(ai_m - ao_m)))
     if theoretical_reference is None:
         theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
     th = float(theoretical_reference)
     Om = X[:, 2:5]
-    spin = np.sqrt((Om * Om).sum(1))
-    beta = np.arctan2(Om[:, 1], -Om[:, 0])
-    yaw = np.arctan2(Om[:, 2], np.hypot(Om[:, 0], Om[:, 1]))
-    per_arc = det["contact_heat"].sum(0)          # (k,) raceway heat per arc
     heat = {"raceway": float(per_arc.sum()),
             "raceway_inner": float(per_arc @ system.inner_f),
             "raceway_outer": float(per_arc @ (1.0 - system.inner_f)),

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from tests.unit.skidding.helpers import qj_like
 from thermobearing.loads import ball_load_distribution
@@ -58,3 +59,48 @@ def test_memo_is_bounded():
     assert ("fake", 0) not in ball_result._CSR_TH_MEMO       # the oldest entry went
     assert ("fake", 1) in ball_result._CSR_TH_MEMO
     ball_result._CSR_TH_MEMO.clear()
+
+
+def test_reloaded_system_knows_the_residual_of_the_previous_solution():
+    # reloaded(): the loads enter the residual only through the constant global part and the
+    # force / moment / torque scales, so the previous solution's residual at the new loads is
+    # the old one rescaled; it must equal a fresh kernel evaluation to round-off
+    from tests.unit.skidding.helpers import simple_models
+    from thermobearing.skidding.ball import solve_ball
+    from thermobearing.skidding.ball_residual import ball_residual_system
+
+    b = qj_like()
+    models = simple_models(b)
+    w = 1800 * math.pi / 30
+    r = solve_ball(b, models, w, 1000.0, 6000.0)
+    X, G = r.unknowns
+    new = r.extra["system"].reloaded(1000.0, 6200.0)
+    n0 = new.n_eval
+    R, Gc, G0, _ = new.evaluate(X, G)
+    assert new.n_eval == n0                        # no kernel call
+    fresh = ball_residual_system(b, models, w, 1000.0, 6200.0)
+    Rf, Gcf, G0f, _ = fresh.evaluate(X, G)
+    np.testing.assert_allclose(R, Rf, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(Gc, Gcf, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(G0, G0f, rtol=1e-14, atol=0)
+    # the global residual is the load step: 200 N over the new force scale
+    assert abs((Gc.sum(0) + G0)[0] - 200.0 / new.F_s) < 1e-6
+    # and the warm start from it converges to the fresh cold solution
+    r2 = solve_ball(b, models, w, 1000.0, 6200.0, guess=r)
+    rc = solve_ball(b, models, w, 1000.0, 6200.0)
+    assert r2.cage_speed_ratio == pytest.approx(rc.cage_speed_ratio, rel=1e-8)
+
+
+def test_summary_angles_equal_the_load_distribution_helper():
+    # the compiled summary of ball_result against loads.ring_weighted_angle (numpy)
+    from tests.unit.skidding.helpers import simple_models
+    from thermobearing.loads import ring_weighted_angle
+    from thermobearing.skidding.ball import solve_ball
+
+    b = qj_like()
+    r = solve_ball(b, simple_models(b), 1500 * math.pi / 30, 1000.0, 3000.0)
+    inner = r.ring == 0
+    for sel, key in ((inner, "inner_contact_angle"), (~inner, "outer_contact_angle")):
+        ref = ring_weighted_angle(r.normal_load, r.contact_angle, sel, float(b.contact_angle))
+        np.testing.assert_allclose(r.extra[key], ref, rtol=1e-14, atol=0)
+    np.testing.assert_allclose(r.spin_speed, np.linalg.norm(r.spin, axis=1), rtol=1e-14)
