@@ -36,6 +36,23 @@ temperature), which is continuous at the boundary; the rolling force there stays
 form's. The Couette stress in the Hertz zone is the skidding solver's traction law (limiting
 shear stress), not the stress of the thermal solution (Newtonian: unbounded at GPa pressures).
 
+Hertz-zone pressure (session 5): the traction law is evaluated under the film pressure of
+:func:`thermobearing.skidding.roller_pressure.hertz_zone_pressure` with the model
+``"regime_min"`` (default of :func:`tehl_contact_forces`' ``film_pressure``): the
+semi-elliptic shape with the peak ``min(p_H, p_rig)``, ``p_rig`` the rigid-isoviscous
+(Martin) peak, as the isothermal closed-form drag does with ``build_model(...,
+film_pressure="regime_min")``. Before, this drag sheared the Hertz zone at ``p_H`` at every
+load. Why: the lightly loaded rollers of paper 001's bearing (outside the load zone, a few
+to a few hundred newtons; Moes M < 1 at 53 m/s) are in the rigid regime. The numerical
+line-contact solution of this package at L = 31.8 (paper 001's inner contact) puts the
+pressure peak at 0.035 / 0.10 / 0.34 p_H for M = 0.05 / 0.14 / 0.4, against Martin's
+0.035 / 0.095 / 0.29 p_H (piezoviscous rise within 20 %), and carries only 3-14 % of the load
+inside |x| < b; shearing that zone at eta(p_H) overstated its traction by the factor
+exp(alpha (p_H - p)) (x8 at 113 MPa with paper 001's oil). Paper 001 (its eq. 1) balances
+the roller with the traction T_jk of the film itself, i.e. at the film pressure, which is
+what this does. For M >~ 1.4 ``p_rig > p_H`` and the peak stays ``p_H`` (the numerical
+pressure there spreads over the Hertz zone; its mean over |x| < b is 0.5-0.6 p_H at M = 1.4).
+
 Failures: where a table node's thermal solve fails (fixed point not converged, out of the
 solver's range) the node is remembered as failed, the contact gets the closed-form film and
 a ValidityWarning names the state (the Simulation collects it among the scene's warnings).
@@ -279,14 +296,24 @@ class TehlFilmModel:
 def tehl_contact_forces(load: Any, length: float, radius: float, effective_modulus: float,
                         u_race: Any, u_roller: Any, *, eta0: float, alpha: float,
                         film: Any, traction_law: Any, temperature: float,
-                        rolling_force: str = "regime_min", oil_layer: float | None = None):
+                        rolling_force: str = "regime_min", oil_layer: float | None = None,
+                        film_pressure: str = "regime_min"):
     """Roller-race fluid forces with the tabulated thermal-EHL film (module docstring).
 
     Signature of :func:`thermobearing.skidding.roller_fluid.closed_form_contact_forces`;
     ``film`` must be the roller solver's wrapper of a :class:`TehlFilmModel`
     (``solve_roller(..., film_model=TehlFilmModel(...), drag_model="numerical_tehl")``).
+    ``film_pressure``: pressure under which the Hertz-zone oil is sheared, ``"regime_min"``
+    (default: the smaller of the Hertz and the rigid-isoviscous peak, module docstring) or
+    ``"hertz"`` (p_H at every load, the model before session 5); the Hertz-zone integral is
+    then :func:`thermobearing.skidding.roller_maxwell.maxwell_contact_forces` with a viscous
+    film (the traction law point by point), the code path of the isothermal option.
     """
     from ..skidding.roller_fluid import LineContactForces, closed_form_contact_forces
+    from ..skidding.roller_pressure import FILM_PRESSURE_MODELS
+
+    if film_pressure not in FILM_PRESSURE_MODELS:
+        raise InputError("film_pressure", film_pressure, FILM_PRESSURE_MODELS)
 
     q, ur, uro = np.broadcast_arrays(*(np.atleast_1d(np.asarray(v, dtype=float))
                                        for v in (load, u_race, u_roller)))
@@ -311,7 +338,12 @@ def tehl_contact_forces(load: Any, length: float, radius: float, effective_modul
         raise InputError("film_model", film,
                          "a thermobearing.ehl.coupling.TehlFilmModel with "
                          "drag_model='numerical_tehl'")
-    sub = closed_form_contact_forces(
+    base = closed_form_contact_forces
+    if film_pressure != "hertz":
+        from ..skidding.roller_maxwell import maxwell_contact_forces
+
+        base = maxwell_contact_forces(closed_form_contact_forces, None, film_pressure)
+    sub = base(
         q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0, alpha=alpha,
         film=lambda _ue, _w: h, traction_law=traction_law, temperature=temperature,
         rolling_force=rolling_force, oil_layer=oil_layer)

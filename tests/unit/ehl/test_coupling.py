@@ -178,3 +178,84 @@ def test_contact_forces_thermal_film_and_gross_sliding_fallback():
 def test_film_model_rejects_ball_bearings():
     with pytest.raises(InputError, match="cylindrical"):
         roller_film_model(load_bearing("QJ1044"), load_lubricant("ISO_VG46"))
+
+
+def test_rigid_regime_pressure_peak_is_martins_not_hertzs():
+    # the reason the TEHL drag shears the Hertz zone at min(p_H, Martin peak): paper 001's
+    # inner contact has L = 31.8 (OIL_4109 at 30 degC, 53 m/s); a lightly loaded roller at
+    # M = 0.14 (~100 N) is in the rigid regime. The numerical line-contact solution (this
+    # package) puts its pressure peak within 15 % of the rigid-isoviscous (Martin) peak
+    # (measured 0.101 against 0.095 p_H), far below p_H, and only ~6 % of the load inside
+    # |x| < b.
+    from thermobearing.ehl.line import nodes_for, solve_dimensionless
+    from thermobearing.skidding.roller_pressure import rigid_peak_pressure
+
+    M, L = 0.14, 31.8
+    sol = solve_dimensionless(M, L, n=nodes_for(M, 512, L), max_grid_error=math.inf)
+    # Martin's peak over p_H for the same M (any dimensional case: E' R = 1, U = 1e-10)
+    e_p, r, two_u = 1.0, 1.0, 2e-10
+    w = M * math.sqrt(two_u) * e_p * r
+    p_h = e_p * math.sqrt(w / (e_p * r) / (2 * math.pi))
+    eta0, u_sum = 1.0, two_u * e_p * r  # U = eta0 u_m/(E' R), u_sum = 2 u_m
+    martin = float(rigid_peak_pressure(w, u_sum, r, eta0)) / p_h
+    assert 0.05 < martin < 0.15
+    assert sol.max_pressure == pytest.approx(martin, rel=0.15)
+    inside = np.abs(sol.X) <= 1.0
+    share = np.trapezoid(np.where(inside, sol.P, 0.0), sol.X) / np.trapezoid(sol.P, sol.X)
+    assert share < 0.1
+
+
+def test_tehl_drag_shears_light_rollers_at_the_film_pressure():
+    # regime_min (default) against the former Hertz-pressure shear, on grossly sliding
+    # contacts (closed-form film, no thermal solve): at 100 N (Moes M ~ 0.14) the Hertz zone
+    # is sheared at Martin's peak pressure, an independent Gauss-Legendre integral of the
+    # traction law over the semi-ellipse with that peak; at 4500 N (M ~ 6, Martin's peak
+    # above p_H) both models shear at p_H (equal to the quadrature difference, < 1 %).
+    from scipy.special import roots_legendre
+
+    from thermobearing.hertz import line_contact
+    from thermobearing.skidding.roller import default_traction_law
+    from thermobearing.skidding.roller_pressure import rigid_peak_pressure
+
+    bearing = load_bearing("D1842926")
+    lub = load_lubricant("OIL_4109")
+    model = roller_film_model(bearing, lub, **FAST)
+    rx, _ = bearing.curvature("inner")
+    length = bearing.roller_effective_length
+    e_p = bearing.effective_modulus
+    T = 303.15
+    eta0 = float(lub.dynamic_viscosity(T))
+    alpha = float(lub.pressure_viscosity_coefficient(T))
+    law = default_traction_law(lub)
+    q = np.array([100.0, 4500.0])
+    u_race = np.array([53.3, 53.3])
+    u_roll = np.array([40.0, 40.0])  # SRR 0.28: gross sliding
+
+    def film(ue, w):
+        return model(ue, w, rx, eta0, alpha, e_p)
+
+    kw = {"eta0": eta0, "alpha": alpha, "film": film, "traction_law": law, "temperature": T}
+    new = tehl_contact_forces(q, length, rx, e_p, u_race, u_roll, **kw)
+    old = tehl_contact_forces(q, length, rx, e_p, u_race, u_roll, film_pressure="hertz", **kw)
+    assert model.solves == 0
+    # the film and the rolling force do not depend on the Hertz-zone pressure
+    assert np.allclose(new.film_thickness, old.film_thickness, rtol=1e-12)
+    assert np.allclose(new.rolling_force, old.rolling_force, rtol=1e-12)
+    # light roller: Hertz-zone traction at Martin's peak
+    hz = line_contact(q[0], length, rx, e_p)
+    u_sum = u_race[0] + u_roll[0]
+    peak = float(rigid_peak_pressure(q[0] / length, u_sum, rx, eta0))
+    assert peak < 0.2 * float(hz.max_pressure)
+    xg, wg = roots_legendre(48)
+    tau, _ = law.shear_stress(np.full(48, u_race[0] - u_roll[0]), peak * np.sqrt(1 - xg**2),
+                              np.full(48, new.film_thickness[0]), np.full(48, T))
+    expected = length * float(hz.half_width) * float(np.sum(np.asarray(tau) * wg))
+    assert new.hertz_traction[0] == pytest.approx(expected, rel=0.01)
+    assert new.hertz_traction[0] < 0.5 * old.hertz_traction[0]
+    # the traction changes by the Hertz-zone difference only (inlet/outlet shear unchanged)
+    assert new.traction[0] - old.traction[0] == pytest.approx(
+        new.hertz_traction[0] - old.hertz_traction[0], rel=1e-9)
+    # heavy roller: both shear at p_H
+    assert new.hertz_traction[1] == pytest.approx(old.hertz_traction[1], rel=0.01)
+    with pytest.raises(InputError, match="film_pressure"):
+        tehl_contact_forces(q, length, rx, e_p, u_race, u_roll, film_pressure="x", **kw)
