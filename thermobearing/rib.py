@@ -51,12 +51,23 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   axis; the roller spins at ``omega_r`` about its skewed axis and skews at ``alpha_dot``.
   At the contact point of eq. 11 (``rho = R_s sin(theta_f)`` below the roller axis) and
   offset ``z_K`` this gives a circumferential part
-  ``(omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho - alpha_dot x_K`` (the only part
+  ``(omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho + alpha_dot x_K`` (the only part
   for ``alpha = 0``) and a radial part
   ``-(omega_i - omega_c) z_K - omega_r R_s cos(theta_f) sin(alpha)``. The
   friction of eq. 12 acts along this sliding direction, so its radial part brakes the
   roller spin with the arm ``z_K`` (M_e_theta_x of eq. 16 generalised) -- the "drag of the
   rib on the roller end face" that the paper's discussion of Figs. 9, 11, 12 invokes.
+* ``slide="radial_plane"`` (option): the paper's own equations place the friction and the
+  sliding speed in the roller's radial plane -- eq. 16's arms are those of a
+  circumferential force at (x = +-(L_p/2 + C_a/2), y = -(H_rollercm - H_contact), z = 0)
+  (M_e_theta_x arm H_rollercm - H_contact, M_e_theta arm L_p/2 + C_a/2) and eq. 13's sign
+  C of the scalar v_i - v_r only makes sense for collinear, circumferential speeds -- while
+  the normal force keeps the offset z_K (eq. 16's M_er = Q cos(theta_f)(R_p - L_p/2)
+  sin(alpha_r) is its moment with that arm). With this option the radial slide of the
+  offset point is dropped: v_i - v_r = (omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho
+  + alpha_dot x_K, circumferential. Both PV minima of paper 003 (0.55 deg at R_s = 300 mm,
+  550 mm at 0.3 deg) lie at the same R_s sin(theta_f) = 2.88 mm, i.e. at the same contact
+  height, which is what this circumferential-only speed depends on.
 * eq. 12-13: the drag F_G of eq. 14 acts on each face (with or without contact) along the
   circumferential sliding at the rib mid-height, arm D_w/2 - h_f/2 (eq. 17); the
   Coulomb part mu Q_ez along the sliding direction at the contact point.
@@ -76,6 +87,8 @@ from .hertz import point_contact, point_contact_stiffness
 
 #: end-face shapes: the paper's sphere (eqs. 1, 11) or the sphere cap with a chamfer blend
 END_FACES = ("sphere", "cap")
+#: where the end-face sliding of eq. 24 is evaluated (module notes)
+SLIDES = ("offset", "radial_plane")
 
 #: default roller chamfer [m] (paper 003 sec. 11: 0.5 +- 0.1 mm before, 0.5 +- 0.05 after)
 DEFAULT_CHAMFER = 0.5e-3
@@ -100,6 +113,11 @@ class RibGeometry:
     pitch_diameter : d_m [m].  chamfer : roller chamfer [m] (blend radius of ``"cap"``).
     end_face : "sphere" (paper eqs. 1, 11: the crowned face as a whole sphere) or "cap"
         (sphere cap bounded by a toroidal chamfer blend; see module notes).
+    slide : "offset" (the sliding speed of eq. 24 and the friction at the skew-offset
+        contact point, along the full tangential slide) or "radial_plane" (the paper's
+        eqs. 11-13, 16: at the point's projection on the roller's radial plane,
+        circumferential only); the normal force acts at the contact point in both
+        (module notes).
     """
 
     roller_diameter: float
@@ -113,6 +131,7 @@ class RibGeometry:
     pitch_diameter: float
     chamfer: float = DEFAULT_CHAMFER
     end_face: str = "sphere"
+    slide: str = "offset"
 
     def __post_init__(self) -> None:
         for name in ("roller_diameter", "roller_length", "crown_radius", "rib_height",
@@ -123,6 +142,8 @@ class RibGeometry:
         check_range("rib.chamfer", self.chamfer, 0.0, 0.5 * self.roller_diameter, unit="m")
         if self.end_face not in END_FACES:
             raise InputError("rib.end_face", self.end_face, END_FACES)
+        if self.slide not in SLIDES:
+            raise InputError("rib.slide", self.slide, SLIDES)
         if self.crown_radius <= 0.5 * self.roller_length:
             raise InputError("rib.crown_radius", self.crown_radius,
                              f"a value > L_r/2 = {0.5 * self.roller_length:.4g} m")
@@ -224,6 +245,7 @@ class RibGeometry:
             gp[_G_RT] = rt
             gp[_G_XT] = math.sqrt((self.crown_radius - rc) ** 2 - rt**2)
         gp[_G_S0] = _support(gp, 1, 0.0)[0]
+        gp[_G_PLANE] = 1.0 if self.slide == "radial_plane" else 0.0
         return gp
 
     @property
@@ -259,7 +281,8 @@ def rib_geometry(bearing: Any, **overrides: Any) -> RibGeometry:
         if fields[key] is None:
             name = "end_face_crown_radius" if key == "crown_radius" else key
             raise InputError(f"bearing.{name}", None, "a value (needed by the rib contact)")
-    return RibGeometry(**{k: (v if k == "end_face" else float(v)) for k, v in fields.items()})
+    return RibGeometry(**{k: (v if k in ("end_face", "slide") else float(v))
+                          for k, v in fields.items()})
 
 
 def with_changes(geom: RibGeometry, **changes: Any) -> RibGeometry:
@@ -310,7 +333,7 @@ def rib_sliding_speed(geom: RibGeometry, inner_speed: Any, cage_speed: Any, roll
 
 # indices of the geometry vector RibGeometry.params() (jitted contact)
 (_G_RS, _G_HL, _G_R, _G_CT, _G_ST, _G_CA2, _G_RC0, _G_DI2, _G_E, _G_RG, _G_CAP, _G_RCH,
- _G_RT, _G_XT, _G_S0, _G_N) = range(16)
+ _G_RT, _G_XT, _G_S0, _G_PLANE, _G_N) = range(17)
 #: columns of :func:`face_contact`'s result
 (F_Q, F_FX, F_FY, F_FZ, F_MSKEW, F_MSPIN, F_VT, F_VZ, F_RX, F_RY, F_H, F_Z, F_HEAT,
  F_FRZ, F_N) = range(15)
@@ -391,31 +414,43 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
     r_x = px * c + pz * s
     r_y = py
     r_z = -px * s + pz * c
+    # where the sliding is evaluated and the friction acts: the contact point, or (slide =
+    # "radial_plane", paper 003 eqs. 11-13, 16, 24) its projection on the roller's radial
+    # plane, the friction then circumferential only
+    plane = gp[_G_PLANE] > 0.5
+    v_z = 0.0 if plane else r_z
     # roller angular velocity: spin about the skewed axis (rolling sense = -axis) + skew rate
     wx = -wr * c
     wy = ad
     wz = wr * s
-    vrx = wy * r_z - wz * r_y + xd
-    vry = wz * r_x - wx * r_z
+    vrx = wy * v_z - wz * r_y + xd
+    vry = wz * r_x - wx * v_z
     vrz = wx * r_y - wy * r_x
     # rib: turns at om about the bearing axis, which lies rc0 below the roller axis
     sx = -vrx
-    sy = -om * r_z - vry
+    sy = -om * v_z - vry
     sz = om * (r_y + gp[_G_RC0]) - vrz
-    sn = sx * side * ct - sy * st
-    tx = sx - sn * side * ct
-    ty = sy + sn * st
+    if plane:
+        tx = 0.0
+        ty = 0.0
+    else:
+        sn = sx * side * ct - sy * st
+        tx = sx - sn * side * ct
+        ty = sy + sn * st
     tz = sz
     vt = math.sqrt(tx * tx + ty * ty + tz * tz)
     if sreg > 0.0:
         ff = mu * q / math.sqrt(vt * vt + sreg * sreg)
     else:
         ff = mu * q / vt if vt > 0.0 else 0.0
-    fx = -q * side * ct + ff * tx
-    fy = q * st + ff * ty
+    # normal force at the contact point, friction at (r_x, r_y, v_z)
+    qx = -q * side * ct
+    qy = q * st
+    fx = qx + ff * tx
+    fy = qy + ff * ty
     fz = ff * tz
-    mxm = r_y * fz - r_z * fy
-    mym = r_z * fx - r_x * fz
+    mxm = r_y * fz - v_z * ff * ty - r_z * qy
+    mym = v_z * ff * tx + r_z * qx - r_x * fz
     mzm = r_x * fy - r_y * fx
     # lubricant drag (eqs. 14, 17): circumferential, at the rib mid-height of the face
     gx = side * gp[_G_HL] * c

@@ -245,3 +245,32 @@ def test_contact_skew_and_sliding_grow_with_axial_clearance(geom):
         slides.append(float(f.slide_speed_right))
     assert skews[0] < skews[1] < skews[2]
     assert slides[0] < slides[1] < slides[2]
+
+
+def test_radial_plane_slide_option(geom):
+    # slide="radial_plane" (paper 003 eqs. 11-13, 16, 24 read literally): the sliding speed
+    # is the circumferential one at the eq. 11 height in the radial plane,
+    # (w_i - w_c)(d_i/2 + H) - w_r rho cos(alpha) + alpha' x_K (hand formula; a skew rate moves
+    # the end at x by -alpha' x along z, module notes), the friction
+    # is circumferential only; the normal force (and its skew moment) is unchanged
+    from dataclasses import replace
+
+    gp = replace(geom, slide="radial_plane")
+    wi, wc, wr, a, ad = 3141.6, 1400.0, 16000.0, 0.0101, 30.0
+    kw = dict(inner_speed=wi, cage_speed=wc, roller_spin=wr, skew_rate=ad)
+    f = rib_forces(gp, a, 1e-5, **kw)
+    g = rib_forces(geom, a, 1e-5, **kw)
+    h = geom.contact_height()
+    rho = 0.5 * geom.roller_diameter - h
+    x_k = 0.5 * geom.roller_length - 0.297 * (1 - math.cos(geom.rib_angle))  # R_s cos - ...
+    vz = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - wr * rho * math.cos(a)
+    assert f.slide_speed_right == pytest.approx(abs(vz + ad * x_k), rel=1e-4)
+    assert f.slide_speed_right == pytest.approx(abs(f.sliding_right), rel=1e-12)
+    assert f.normal_right == g.normal_right > 0
+    # friction along z only: the radial force is the normal force's alone
+    q = f.normal_right
+    assert f.radial_force == pytest.approx(q * math.sin(geom.rib_angle), rel=1e-9)
+    # rib faster than the end face point -> the friction drives the spin (eq. 13, C = +1)
+    assert vz > 0 and f.spin_moment > 0
+    with pytest.raises(InputError, match="slide"):
+        replace(geom, slide="bogus")

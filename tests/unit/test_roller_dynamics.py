@@ -26,7 +26,7 @@ def test_scalar_rhs_matches_rib_forces(base):
     _, _, m = base
     c = rd._consts(m)
     y = np.array([3e-6, 0.01, 0.0125, 20.0])
-    xd, xdd, ad, add, m_spin = rd._roller_rhs(m, c, y, 0.0, 0.0, 15000.0, 0.0)
+    xd, xdd, ad, add, zd, zdd, m_spin = rd._roller_rhs(m, c, y, 0.0, 0.0, 15000.0, 0.0)
     rf = rib_forces(m.geom, y[2], y[0], inner_speed=m.inner_speed, cage_speed=m.cage_speed,
                     roller_spin=15000.0, skew_rate=y[3], axial_speed=y[1],
                     friction_coefficient=m.rib_friction,
@@ -81,14 +81,26 @@ def test_no_unbalance_no_rib_contact(base):
     u_i = (m.inner_speed - m.cage_speed) * 0.5 * m.geom.inner_raceway_diameter
     v = np.abs(u_i - m.spin * 0.5 * m.geom.roller_diameter)
     assert r.slip_speed == pytest.approx(float(np.mean(v)), rel=1e-3)
+    # pocket DOF without unbalance: each roller rests on one bar with its quasi-static
+    # pocket force F_d (mean bar force = orbit mean of |F_d|), no extra friction (1 %:
+    # the 2-period run starts touching the bar unloaded and settles within it)
+    fd = np.mean(np.abs(m.pocket_force))
+    assert r.bar_force_mean == pytest.approx(fd, rel=1e-2)
+    assert abs(r.pocket_friction_extra) < 1e-3 and r.bar_contact_fraction == 1.0
 
 
 def test_pv_grows_with_unbalance(base):
+    # the PV while in contact grows with the unbalance (1.11-1.21x from 0.06 to 0.11 g over
+    # the squeeze-floor / bar-stiffness variants of SOURCE.md); the *time-mean* PV does not
+    # reliably since the pocket DOF (the bars then hold the roller off the ribs more often)
     _, _, m = base
     small = dataclasses.replace(m, unbalance=dataclasses.replace(m.unbalance, mass=0.06e-3))
+    big = dataclasses.replace(m, unbalance=dataclasses.replace(m.unbalance, mass=0.11e-3))
     r_small = rd.simulate_reduced(small)
-    r_big = rd.simulate_reduced(m)
-    assert r_big.pv_left + r_big.pv_right > r_small.pv_left + r_small.pv_right > 0
+    r_big = rd.simulate_reduced(big)
+    assert (r_big.pv_contact_left + r_big.pv_contact_right
+            > r_small.pv_contact_left + r_small.pv_contact_right > 0)
+    assert r_small.pv_left + r_small.pv_right > 0
     assert r_big.max_skew > 0.5 * math.sqrt(2 * 15e-6 / 0.297)  # reaches the rib
 
 
@@ -158,8 +170,13 @@ def test_coupled_spins_balance_rib_moments(base):
     e = rd._race_eval(rm, m, m.spin, m.cage_speed)
     half = 0.5 * b.roller_diameter
     scale = float(np.max(m.inner_load))
-    assert np.max(np.abs(e.roller_eq + m.spin_bias / half)) < 1e-6 * scale
-    assert abs(e.cage_eq + float(np.sum(info["rib_tangential_force"]))) < 1e-6 * scale
+    # with the pocket DOF the extra cage-bar friction of the rattling roller joins both
+    # balances: -Delta f on the roller moment (/ (D/2)), -(D/d_m) sum Delta f on the cage
+    extra = info["pocket_extra_friction"]
+    assert np.max(np.abs(e.roller_eq + m.spin_bias / half - extra)) < 1e-6 * scale
+    d_dm = b.roller_diameter / b.pitch_diameter
+    assert abs(e.cage_eq + float(np.sum(info["rib_tangential_force"]))
+               - d_dm * float(np.sum(extra))) < 1e-6 * scale
     # the rib pushes the rollers forward on balance -> the cage turns faster than without
     qs = m.extras["quasi_static"]
     assert np.sum(info["rib_tangential_force"]) > 0 and m.cage_speed > qs.cage_speed

@@ -62,6 +62,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         dest="end_face",
                         help="roller end face: the paper's whole sphere (default) or the sphere "
                              "cap with a chamfer blend (thermobearing.rib notes)")
+    parser.add_argument("--slide", default="offset", choices=("offset", "radial_plane"),
+                        help="end-face sliding speed at the skew-offset contact point "
+                             "(default) or in the roller's radial plane, circumferential "
+                             "only (paper 003 eqs. 11-13, 16; thermobearing.rib notes)")
+    parser.add_argument("--no-pocket-dof", action="store_true", dest="no_pocket_dof",
+                        help="hold the roller centred in its pocket (no rattling between "
+                             "the cage bars under the unbalance force)")
     parser.add_argument("--cost", action="store_true",
                         help="print the cost of one base-case point (full and reduced)")
     parser.add_argument("--out", default="rib_map", help="output folder")
@@ -132,7 +139,8 @@ def run(args: argparse.Namespace) -> int:
         m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], max(masses),
                            temperature=temperature, spin=args.spin,
-                           rib={"end_face": args.end_face}, coupling=args.coupling)
+                           rib={"end_face": args.end_face, "slide": args.slide},
+                           coupling=args.coupling, pocket_dof=not args.no_pocket_dof)
         full, red = rd.simulate_full(m), rd.simulate_reduced(m)
         print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
               f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
@@ -146,7 +154,8 @@ def run(args: argparse.Namespace) -> int:
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
                               temperature=temperature, cache=cache, spin=args.spin,
-                              end_face=args.end_face, coupling=args.coupling)
+                              end_face=args.end_face, coupling=args.coupling,
+                              slide=args.slide, pocket_dof=not args.no_pocket_dof)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
@@ -155,7 +164,9 @@ def run(args: argparse.Namespace) -> int:
                         "pv_peak_right [MPa m/s]", "pv_contact_left [MPa m/s]",
                         "pv_contact_right [MPa m/s]", "contact_slide_speed [m/s]",
                         "slip_speed [m/s]", "surface_slip_speed [m/s]", "max_skew [deg]",
-                        "rib_contact_fraction [-]", "rib_heat_per_roller [W]", "cost [s]"])
+                        "rib_contact_fraction [-]", "rib_heat_per_roller [W]",
+                        "bar_contact_fraction [-]", "pocket_friction_extra [N]",
+                        "cage_speed [rad/s]", "cost [s]"])
             for r in rows:
                 w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
                             f"{r['pv_left'] / 1e6:.6g}", f"{r['pv_right'] / 1e6:.6g}",
@@ -166,6 +177,8 @@ def run(args: argparse.Namespace) -> int:
                             f"{r['surface_slip_speed']:.6g}",
                             f"{math.degrees(r['max_skew']):.5g}",
                             f"{r['rib_contact_fraction']:.4g}", f"{r['rib_heat']:.5g}",
+                            f"{r['bar_contact_fraction']:.4g}",
+                            f"{r['pocket_friction_extra']:.5g}", f"{r['cage_speed']:.6g}",
                             f"{r['cost_s']:.3g}"])
         print(f"{p}: {path}")
         for r in rows:

@@ -10,13 +10,15 @@ The paper integrates roller (6 DOF), cage (eq. 19) and inner ring (eq. 20) toget
 GSTIFF [gear1971_dae]. Here the inner-ring motion and the raceway loads per azimuth are
 *prescribed* by the quasi-static skidding solution of
 :func:`thermobearing.skidding.roller.solve_roller` (paper 000's Z + 1 equations), and one
-roller is followed with the degrees of freedom in which the unbalance acts (axial
-position X, skew alpha, spin phase psi). The rib acts back on the roller spins and the
-cage speed quasi-statically (:func:`couple_spins`, default): the time-mean rib moment about
-each roller's axis and the mean circumferential rib force are added to the Z + 1 moment
-and cage balances, which are re-solved (cage speed +1.1 %, base-case slip -3 %). What is
-not modelled: the inner-ring and cage whirl, the roller tilt and radial motion, the
-cage-bar friction on the skewing roller.
+roller is followed with the degrees of freedom in which the unbalance acts (axial position
+X, skew alpha, circumferential position z in its pocket, spin phase psi). The rib acts back
+on the roller spins and the cage speed quasi-statically (:func:`couple_spins`, default):
+the time-mean rib moment about each roller's axis, the mean circumferential rib force and
+the extra cage-bar friction of the rattling roller are added to the Z + 1 moment and cage
+balances, which are re-solved. What is not modelled: the inner-ring and cage whirl, the
+roller tilt and radial motion (the radial part of the unbalance force only modulates the
+raceway loads), the orbital centrifugal force of the unbalance mass (the roller mass of the
+preset is taken to include it; its axial offset would only tilt the roller).
 
 * ``full`` model (:func:`simulate_full`): X, alpha and psi of one roller travelling a whole
   orbit (azimuth phi = omega_c t) through the load zone; raceway loads and the (coupled)
@@ -62,9 +64,17 @@ Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
   [johnson_tevaarwerk1977_traction]; mu_t, s_0 estimated); the skew rate's sliding -alpha' x
   along the line gives M_race = -sum N mu_t tanh(alpha' l/s_0) l, l = L_e/(2 sqrt 3) (the
   rms arm of a uniform line load).
-* cage bars: the roller corners touch the bars when |alpha| L_r/2 > c_p/2 (c_p the pocket
-  circumferential clearance, roller centred): M_pocket = -2 k_c (|alpha| L_r/2 - c_p/2) L_r/2
-  sign(alpha), k_c estimated.
+* pocket (paper 003 eq. 18 lines 2-3: N^c, F^c and the unbalance forces move the roller
+  centre): a point mass at the chamfer is not only a couple -- its rotating force F_cv acts
+  on the roller centre too. Circumferentially
+  m z'' = F_d + F_cv sin(psi) + F_rib,z - c_z z' + F_bar(z, z', alpha),
+  F_d the quasi-static pocket force (the raceways' net forward force), c_z = k_omega/(D/2)^2
+  the raceway damping of the same traction model, F_bar the two cage bars as Winkler line
+  springs with a squeeze film (:mod:`~thermobearing.skidding.roller_dynamics_pocket`), which
+  also limit the skew. At the base case the free rattle amplitude F_cv/(m omega_r^2) is
+  0.08 mm (0.06 g) to 0.14 mm (0.11 g) against a half clearance of 0.1 mm: the roller
+  hits the bars every spin period. ``pocket_dof=False`` holds z = 0 (the bars then act on
+  the skew only, as before 2026-11-22).
 
 Outputs (paper 003 eqs. 21-25): PV per end face = time mean of P |v_i - v_r| over the
 periodic state [Pa m/s] (also its peak and its mean over the time in contact); slip speed =
@@ -94,6 +104,7 @@ from ..rib import (
     _G_N,
     DEFAULT_RIB_FRICTION,
     F_FX,
+    F_FZ,
     F_MSKEW,
     F_MSPIN,
     SIGN_REGULARISATION,
@@ -103,6 +114,12 @@ from ..rib import (
     rib_forces,
     rib_geometry,
     unbalance_check,
+)
+from .roller_dynamics_pocket import (
+    DEFAULT_SQUEEZE_FLOOR,
+    bar_forces,
+    extra_pocket_friction,
+    pocket_force_z,
 )
 
 #: raceway traction limit mu_t [-] (estimated: typical EHL traction plateau 0.03-0.08)
@@ -171,6 +188,32 @@ class DynamicsModel:
     extras: dict[str, Any] = field(default_factory=dict)
     spin_k: np.ndarray | None = None
     spin_bias: np.ndarray | None = None
+    pocket_force: np.ndarray | None = None
+    pocket_viscosity: float = 0.0
+    pocket_length: float = 0.0
+    squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR
+    pocket_dof: bool = True
+    pocket_friction: np.ndarray | None = None
+
+    def pocket_force_at(self, phi: float) -> float:
+        """Quasi-static pocket force F_d [N] (positive: the roller pushes the cage
+        forward) at azimuth ``phi``, interpolated like :meth:`at` (0 without data)."""
+        return self._interp(self.pocket_force, phi)
+
+    def _interp(self, arr: np.ndarray | None, phi: float) -> float:
+        if arr is None:
+            return 0.0
+        p = phi % (2.0 * math.pi)
+        az = np.append(self.azimuth, self.azimuth[0] + 2.0 * math.pi)
+        v = np.append(arr, arr[0])
+        return float(np.interp(p if p >= az[0] else p + 2.0 * math.pi, az, v))
+
+    def circumferential_damping(self, k: float) -> float:
+        """c_z = k_omega / (D/2)^2 [N s/m]: the raceway tractions' resistance to a
+        circumferential slide of the roller centre, from the spin stiffness k_omega
+        [N m s] of the same traction model (both contacts' dT/dV, module notes)."""
+        r = 0.5 * self.geom.roller_diameter
+        return k / (r * r)
 
     def at(self, phi: float) -> tuple[float, float, float]:
         """(N_i, N_o, omega_qs) at azimuth ``phi`` [rad] (periodic linear interpolation)."""
@@ -223,7 +266,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 traction_speed: float = DEFAULT_TRACTION_SPEED,
                 pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS,
                 quasi_static: Any = None, spin: str = "skidding",
-                coupling: str = "rib") -> DynamicsModel:
+                coupling: str = "rib", pocket_dof: bool = True,
+                squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR) -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -239,6 +283,11 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     "none" (spins and cage speed as the quasi-static solver gives them). The spin
     stiffness of the dynamics is always that of the quasi-static traction model
     (:func:`race_spin_stiffness`).
+    ``pocket_dof``: True (default) moves the roller circumferentially in its pocket under
+    the unbalance's rotating force, the quasi-static pocket force, the raceway damping and
+    the cage bars (:mod:`~thermobearing.skidding.roller_dynamics_pocket`); False holds it
+    centred (the bars then act on the skew only, the model before 2026-11-22 noon).
+    ``squeeze_floor``: smallest bar gap of the squeeze film [m] (estimated).
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
     """
@@ -254,6 +303,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     check_positive("traction_limit", traction_limit)
     check_positive("traction_speed", traction_speed)
     check_positive("pocket_stiffness", pocket_stiffness)
+    check_positive("squeeze_floor", squeeze_floor)
     unb = chamfer_unbalance(bearing, unbalance_mass, side, geom.chamfer)
     qs = quasi_static if quasi_static is not None else solve_roller(
         bearing, lubricant, speed, radial_load, 0.0, temperature)
@@ -281,6 +331,11 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         unbalance=unb, rib_friction=rib_friction, mixture_viscosity=float(eta),
         traction_limit=traction_limit, traction_speed=traction_speed,
         pocket_stiffness=pocket_stiffness,
+        pocket_force=np.asarray(qs.pocket_normal_force, float)[order],
+        pocket_friction=np.asarray(qs.pocket_friction, float)[order],
+        pocket_viscosity=float(lubricant.dynamic_viscosity(temperature)),
+        pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
+        pocket_dof=bool(pocket_dof),
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin == "skidding" and unbalance_mass > 0.0:
@@ -294,7 +349,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
 # parameter vector of the jitted right-hand side: the rib geometry vector
 # (RibGeometry.params, _G_N entries) followed by these dynamics scalars (indices)
 (_FG, _SREG, _MU, _UI, _UO, _LARM, _OM, _WC, _HL, _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS,
- _JT, _NP) = range(_G_N, _G_N + 18)
+ _JT, _ETA, _RAD, _FLOOR, _PDOF, _NP) = range(_G_N, _G_N + 22)
 
 
 def _params(m: DynamicsModel) -> np.ndarray:
@@ -324,15 +379,23 @@ def _params(m: DynamicsModel) -> np.ndarray:
     p[_XU] = m.unbalance.axial_position
     p[_MASS] = m.roller_mass
     p[_JT] = m.transverse_inertia
+    p[_ETA] = m.pocket_viscosity
+    p[_RAD] = 0.5 * g.roller_diameter
+    p[_FLOOR] = m.squeeze_floor
+    p[_PDOF] = 1.0 if m.pocket_dof else 0.0
     return p
 
 
 @njit(cache=True)
-def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, n_i: float, n_o: float,
-         spin: float, psi: float) -> tuple[float, float, float, float, float]:
-    """(X', X'', alpha', alpha'', rib spin moment): both faces of
+def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: float,
+         n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float
+         ) -> tuple[float, float, float, float, float, float, float]:
+    """(X', X'', alpha', alpha'', z', z'', rib spin moment): both faces of
     :func:`thermobearing.rib.face_contact` (the kernel of :func:`~thermobearing.rib.rib_forces`)
-    plus raceway, cage and unbalance terms (module notes)."""
+    plus raceway, cage-bar (:func:`~thermobearing.skidding.roller_dynamics_pocket.pocket_force_z`)
+    and unbalance terms (module notes). z: circumferential position in the pocket [m];
+    f_d: quasi-static pocket force [N] (the raceways' net forward force on the roller);
+    c_z: raceway damping of z [N s/m]. With the pocket DOF off, z stays 0."""
     gp = p[:_G_N]
     fl = face_contact(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     fr = face_contact(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
@@ -344,25 +407,28 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, n_i: float, n_
     f_race = (n_i * mu_t * math.tanh((-p[_UI] * sa - xd) / s0)
               + n_o * mu_t * math.tanh((p[_UO] * sa - xd) / s0))
     m_race = -(n_i + n_o) * mu_t * math.tanh(ad * p[_LARM] / s0) * p[_LARM]
-    over = abs(a) * p[_HL] - 0.5 * p[_CP]
-    m_pocket = 0.0
-    if over > 0:
-        m_pocket = -math.copysign(1.0, a) * 2.0 * p[_KC] * over * p[_HL]
+    fz_bar, m_pocket, _, _ = pocket_force_z(z, zd, a, p[_HL], p[_CP], p[_KC], p[_ETA],
+                                            p[_RAD], p[_FLOOR])
     f_cv = p[_MUE] * (spin - p[_WC]) ** 2
-    m_unb = -p[_XU] * f_cv * math.sin(psi)
+    sp = math.sin(psi)
+    m_unb = -p[_XU] * f_cv * sp
     xdd = (fl[F_FX] + fr[F_FX] + f_race) / p[_MASS]
     add = (m_rib + m_race + m_pocket + m_unb) / p[_JT]
-    return xd, xdd, ad, add, m_spin
+    zdd = 0.0
+    if p[_PDOF] > 0.5:
+        zdd = (f_d + f_cv * sp + fl[F_FZ] + fr[F_FZ] - c_z * zd + fz_bar) / p[_MASS]
+    return xd, xdd, ad, add, zd, zdd, m_spin
 
 
 @njit(cache=True)
-def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, h: float,
-                n_warm: int, n_keep: int, every: int) -> np.ndarray:
-    """Classical RK4 at a frozen load state; returns (n_keep // every, 5) rows
-    (t, X, X', alpha, alpha') after ``n_warm`` discarded steps."""
-    y = np.zeros(4)
-    k = np.zeros((4, 4))
-    out = np.zeros((n_keep // every, 5))
+def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, c_z: float,
+                z0: float, h: float, n_warm: int, n_keep: int, every: int) -> np.ndarray:
+    """Classical RK4 at a frozen load state; returns (n_keep // every, 7) rows
+    (t, X, X', alpha, alpha', z, z') after ``n_warm`` discarded steps (start at z0)."""
+    y = np.zeros(6)
+    y[4] = z0
+    k = np.zeros((4, 6))
+    out = np.zeros((n_keep // every, 7))
     t = 0.0
     j = 0
     for step in range(n_warm + n_keep):
@@ -370,11 +436,10 @@ def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, h: float,
             c = 0.0 if stage == 0 else (0.5 if stage < 3 else 1.0)
             yy = y + c * h * k[stage - 1] if stage > 0 else y.copy()
             tt = t + c * h
-            r = _rhs(p, yy[0], yy[1], yy[2], yy[3], n_i, n_o, spin, spin * tt)
-            k[stage, 0] = r[0]
-            k[stage, 1] = r[1]
-            k[stage, 2] = r[2]
-            k[stage, 3] = r[3]
+            r = _rhs(p, yy[0], yy[1], yy[2], yy[3], yy[4], yy[5], n_i, n_o, spin, spin * tt,
+                     f_d, c_z)
+            for q in range(6):
+                k[stage, q] = r[q]
         y = y + h / 6.0 * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])
         t += h
         if step >= n_warm and (step - n_warm) % every == 0 and j < out.shape[0]:
@@ -385,10 +450,13 @@ def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, h: float,
 
 
 def _roller_rhs(m: DynamicsModel, c: np.ndarray, y: Any, n_i: float, n_o: float,
-                spin: float, psi: float) -> tuple[float, float, float, float, float]:
-    """Python entry to the jitted right-hand side (``c`` = :func:`_params` of ``m``)."""
-    return _rhs(c, float(y[0]), float(y[1]), float(y[2]), float(y[3]), float(n_i),
-                float(n_o), float(spin), float(psi))
+                spin: float, psi: float, f_d: float = 0.0, c_z: float = 0.0
+                ) -> tuple[float, float, float, float, float, float, float]:
+    """Python entry to the jitted right-hand side (``c`` = :func:`_params` of ``m``);
+    ``y`` = (X, X', alpha, alpha'[, z, z'])."""
+    z, zd = (float(y[4]), float(y[5])) if len(y) > 4 else (0.0, 0.0)
+    return _rhs(c, float(y[0]), float(y[1]), float(y[2]), float(y[3]), z, zd, float(n_i),
+                float(n_o), float(spin), float(psi), float(f_d), float(c_z))
 
 
 _consts = _params
@@ -406,10 +474,15 @@ class RollerResponse:
     rib_heat_left, rib_heat_right : time-mean friction heat |Q_e_theta v| per face [W].
     max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
     mean_spin_moment : time-mean rib moment about the roller axis [N m].
-    model : "full" | "reduced".  cost_s : wall time [s].  n_rhs : right-hand-side calls.
+    model : "full" | "reduced".  cost_s : CPU time of this process [s] (shared machine).
+    n_rhs : right-hand-side calls.
     pv_contact_left, pv_contact_right : mean P |v| over the time the face is in contact
         [Pa m/s] (= pv_* / that face's contact fraction).
     contact_slide_speed : mean |v_i - v_r| (eq. 24) of the faces while in contact [m/s].
+    pocket_friction_extra : time-mean cage-bar film friction of the rattling roller beyond
+        what the quasi-static model counts at its steady pocket force [N] (orbit mean).
+    bar_contact_fraction : share of time a cage bar touches the roller (elastic contact).
+    bar_force_mean : time mean of the front + rear bar forces [N].
     """
 
     pv_left: float
@@ -431,6 +504,9 @@ class RollerResponse:
     pv_contact_left: float = 0.0
     pv_contact_right: float = 0.0
     contact_slide_speed: float = 0.0
+    pocket_friction_extra: float = 0.0
+    bar_contact_fraction: float = 0.0
+    bar_force_mean: float = 0.0
 
     @property
     def pv(self) -> float:
@@ -444,9 +520,27 @@ class RollerResponse:
 
 
 def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.ndarray,
-          ad: np.ndarray, spin: np.ndarray) -> dict[str, np.ndarray]:
-    """PV, heat and slip along a sampled trajectory (exact sign of eq. 13)."""
+          ad: np.ndarray, spin: np.ndarray, z: np.ndarray | None = None,
+          zd: np.ndarray | None = None, steady_pocket: Any = 0.0) -> dict[str, np.ndarray]:
+    """PV, heat, slip and cage-bar forces along a sampled trajectory (exact sign of eq. 13).
+    ``steady_pocket``: the quasi-static pocket force F_d [N] of the trajectory (scalar or
+    per sample) for the extra pocket friction."""
     g = m.geom
+    z = np.zeros_like(t) if z is None else z
+    zd = np.zeros_like(t) if zd is None else zd
+    _, _, front, rear = bar_forces(z, zd, a, 0.5 * g.roller_length, m.pocket_clearance,
+                                   m.pocket_stiffness, m.pocket_viscosity,
+                                   0.5 * g.roller_diameter, m.squeeze_floor)
+    elastic = bar_forces(z, 0.0, a, 0.5 * g.roller_length, m.pocket_clearance,
+                         m.pocket_stiffness, 0.0, 0.5 * g.roller_diameter, m.squeeze_floor)
+    f_extra = 0.0
+    # without the pocket DOF the roller is held centred: its bar force is not the cage's
+    # reaction to F_d, so no extra friction is derived from it
+    if m.pocket_dof and m.pocket_viscosity > 0.0 and m.pocket_length > 0.0:
+        fd_ss = np.broadcast_to(np.asarray(steady_pocket, float), t.shape)
+        f_extra = extra_pocket_friction(front - rear, t, spin, fd_ss, g.roller_diameter,
+                                        m.pocket_length, m.pocket_viscosity,
+                                        m.pocket_clearance)
     rf = rib_forces(g, a, x, inner_speed=m.inner_speed, cage_speed=m.cage_speed,
                     roller_spin=spin, skew_rate=ad, axial_speed=xd,
                     friction_coefficient=m.rib_friction,
@@ -463,7 +557,10 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
             "contact_right": (rf.normal_right > 0).astype(float),
             "slide_in_contact": (np.where(rf.normal_left > 0, rf.slide_speed_left, 0.0)
                                  + np.where(rf.normal_right > 0, rf.slide_speed_right, 0.0)),
-            "spin_moment": rf.spin_moment, "tangential_force": rf.tangential_force, "t": t}
+            "spin_moment": rf.spin_moment, "tangential_force": rf.tangential_force, "t": t,
+            "bar_force": front + rear,
+            "bar_contact": ((elastic[2] + elastic[3]) > 0).astype(float),
+            "pocket_extra": np.full(t.shape, f_extra)}
 
 
 def _mean(v: np.ndarray, t: np.ndarray) -> float:
@@ -474,8 +571,9 @@ def _mean(v: np.ndarray, t: np.ndarray) -> float:
 def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: float = 3.0,
                   rtol: float = 1e-6, samples_per_period: int = 64,
                   start_azimuth: float = 0.0, spin_dof: bool = False) -> RollerResponse:
-    """Integrate X, alpha and psi of one roller over ``n_orbits`` orbits (Radau), the load
-    state following the azimuth.
+    """Integrate X, alpha, z (pocket) and psi of one roller over ``n_orbits`` orbits
+    (Radau), the load state (raceway loads, spin, quasi-static pocket force) following the
+    azimuth.
 
     ``spin_dof=False`` (default): the spin follows the orbit's spins of the model (for a
     coupled model, :func:`couple_spins`, the quasi-static balance of the raceway, pocket
@@ -487,32 +585,36 @@ def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: fl
     are taken over the following ``n_orbits`` orbits. ConvergenceError if the integrator
     fails.
     """
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     n_calls = [0]
     g = m.geom
     c = _params(m)
 
-    # state: X, X', alpha, alpha', psi (, omega_r with spin_dof)
+    # state: X, X', alpha, alpha', z, z', psi (, omega_r with spin_dof)
     def rhs(t: float, y: np.ndarray) -> np.ndarray:
         n_calls[0] += 1
         phi = start_azimuth + m.cage_speed * t
         n_i, n_o, w_qs = m.at(phi)
-        w = y[5] if spin_dof else w_qs
-        d0, d1, d2, d3, m_spin = _roller_rhs(m, c, y, n_i, n_o, w, y[4])
-        if not spin_dof:
-            return np.array([d0, d1, d2, d3, w])
+        w = y[7] if spin_dof else w_qs
         k = m.stiffness_at(phi)
-        wdot = (-k * (y[5] - w_qs) - m.bias_at(phi) + m_spin) / m.polar_inertia
-        return np.array([d0, d1, d2, d3, w, wdot])
+        d = _roller_rhs(m, c, y, n_i, n_o, w, y[6], m.pocket_force_at(phi),
+                        m.circumferential_damping(k))
+        if not spin_dof:
+            return np.array([d[0], d[1], d[2], d[3], d[4], d[5], w])
+        wdot = (-k * (y[7] - w_qs) - m.bias_at(phi) + d[6]) / m.polar_inertia
+        return np.array([d[0], d[1], d[2], d[3], d[4], d[5], w, wdot])
 
     _, _, w0 = m.at(start_azimuth)
+    f0 = m.pocket_force_at(start_azimuth)
+    z0 = math.copysign(0.5 * m.pocket_clearance, f0) if m.pocket_dof else 0.0
     period = 2.0 * math.pi / max(abs(w0), 1.0)
     t_warm = warmup_periods * period
     t_end = t_warm + n_orbits * 2.0 * math.pi / m.cage_speed
     n_out = int(samples_per_period * (t_end - t_warm) / period) + 2
     t_eval = np.linspace(t_warm, t_end, n_out)
-    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-6, 1e-2])[:6 if spin_dof else 5]
-    y0 = np.array([0.0, 0.0, 0.0, 0.0, 0.0, w0])[:6 if spin_dof else 5]
+    n_y = 8 if spin_dof else 7
+    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-9, 1e-6, 1e-6, 1e-2])[:n_y]
+    y0 = np.array([0.0, 0.0, 0.0, 0.0, z0, 0.0, 0.0, w0])[:n_y]
     sol = solve_ivp(rhs, (0.0, t_end), y0,
                     method="Radau", rtol=rtol, atol=atol, t_eval=t_eval,
                     max_step=period / 8.0)
@@ -520,10 +622,11 @@ def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: fl
         raise ConvergenceError("roller_dynamics.full", float("nan"), sol.message,
                                {"t": sol.t[-1] if sol.t.size else 0.0})
     y = sol.y
-    spin = (y[5] if spin_dof else
-            np.array([m.at(start_azimuth + m.cage_speed * t)[2] for t in sol.t]))
-    post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin)
-    return _response(post, "full", time.perf_counter() - t0, n_calls[0], g)
+    phis = start_azimuth + m.cage_speed * sol.t
+    spin = (y[7] if spin_dof else np.array([m.at(p)[2] for p in phis]))
+    post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin, y[4], y[5],
+                 np.array([m.pocket_force_at(p) for p in phis]))
+    return _response(post, "full", time.process_time() - t0, n_calls[0], g)
 
 
 def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
@@ -532,7 +635,8 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
     if weights is None:
         weights = [(1.0, post)]
     keys = ("pv_left", "pv_right", "heat_left", "heat_right", "slip", "v_roll",
-            "spin_moment", "contact_left", "contact_right", "slide_in_contact")
+            "spin_moment", "contact_left", "contact_right", "slide_in_contact",
+            "pocket_extra", "bar_contact", "bar_force")
     mean = {k: sum(w * _mean(p[k], p["t"]) for w, p in weights) for k in keys}
     contact = sum(w * _mean(p["contact"].astype(float), p["t"]) for w, p in weights)
     f_l, f_r = mean["contact_left"], mean["contact_right"]
@@ -542,6 +646,8 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
         contact_slide_speed=(mean["slide_in_contact"] / (f_l + f_r)
                              if f_l + f_r > 0 else 0.0),
         pv_left=mean["pv_left"], pv_right=mean["pv_right"],
+        pocket_friction_extra=mean["pocket_extra"], bar_contact_fraction=mean["bar_contact"],
+        bar_force_mean=mean["bar_force"],
         pv_peak_left=max(float(np.max(p["pv_left"])) for _, p in weights),
         pv_peak_right=max(float(np.max(p["pv_right"])) for _, p in weights),
         slip_speed=mean["v_roll"], rolling_slip_speed=mean["v_roll"],
@@ -554,9 +660,10 @@ def _response(post: dict[str, np.ndarray], model: str, cost: float, n_rhs: int,
 
 
 def load_states(m: DynamicsModel, decimals: int = 6
-                ) -> list[tuple[float, float, float, float, float]]:
-    """Distinct (N_i, N_o, omega, weight, k_omega) states of the orbit (weights sum to 1;
-    k_omega the spin stiffness [N m s] of the state's first roller)."""
+                ) -> list[tuple[float, float, float, float, float, float]]:
+    """Distinct (N_i, N_o, omega, weight, k_omega, F_d) states of the orbit (weights sum
+    to 1; k_omega the spin stiffness [N m s] and F_d the quasi-static pocket force [N] of the
+    state's first roller)."""
     states: dict[tuple[float, float, float], list[int]] = {}
     for j, (n_i, n_o, w) in enumerate(zip(m.inner_load, m.outer_load, m.spin, strict=True)):
         key = (round(float(n_i), 3), round(float(n_o), 3), round(float(w), 3))
@@ -567,8 +674,9 @@ def load_states(m: DynamicsModel, decimals: int = 6
         j = idx[0]
         k = (float(m.spin_k[j]) if m.spin_k is not None
              else m.spin_stiffness(float(m.inner_load[j]), float(m.outer_load[j])))
+        f_d = float(m.pocket_force[j]) if m.pocket_force is not None else 0.0
         out.append((float(m.inner_load[j]), float(m.outer_load[j]), float(m.spin[j]),
-                    len(idx) / n, k))
+                    len(idx) / n, k, f_d))
     return out
 
 
@@ -584,16 +692,16 @@ def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods:
     averaged with the states' orbit shares. The mean rib spin moment changes the spin
     quasi-statically by M / k_omega before the slip is evaluated.
     """
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     n_calls = 0
     weights = []
     c = _params(m)
-    for n_i, n_o, w_qs, share, _k in load_states(m):
+    for n_i, n_o, w_qs, share, k, f_d in load_states(m):
         post, calls = _state_post(m, c, n_i, n_o, w_qs, periods, warmup_periods,
-                                  steps_per_period, samples_per_period)
+                                  steps_per_period, samples_per_period, k, f_d)
         n_calls += calls
         weights.append((share, post))
-    return _response(weights[0][1], "reduced", time.perf_counter() - t0, n_calls, m.geom,
+    return _response(weights[0][1], "reduced", time.process_time() - t0, n_calls, m.geom,
                      weights)
 
 
@@ -606,40 +714,14 @@ def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> Roller
     raise InputError("model", model, ("full", "reduced"))
 
 
-# ---------------------------------------------------------------------------
-# coupling of the rib moments with the roller spins and the cage speed
-# ---------------------------------------------------------------------------
-def _race_eval(rm: Any, m: DynamicsModel, spins: np.ndarray, wc: float) -> Any:
-    """Paper 000 Z + 1 residuals (:func:`thermobearing.skidding.roller.evaluate`) of the
-    quasi-static model ``rm`` at roller spins ``spins`` (azimuth order of ``m``) and cage
-    speed ``wc`` [rad/s]; no whirl."""
-    from .roller import evaluate
-
-    z = len(m.azimuth)
-    return evaluate(rm, m.inner_speed, np.asarray(spins, float), float(wc), m.inner_load,
-                    np.zeros(z), m.azimuth, (0.0, 0.0))
-
-
-def race_spin_stiffness(rm: Any, m: DynamicsModel, spins: np.ndarray | None = None,
-                        cage_speed: float | None = None) -> np.ndarray:
-    """k_j = -dT_j/d omega_r [N m s] of the raceway + pocket moment T_j on every roller (the
-    moment balance of paper 000 eqs. 22-31 times D/2), by a forward difference of the
-    quasi-static model ``rm`` (:func:`thermobearing.skidding.roller.build_model`): the
-    spin stiffness of the *same* traction model that set the spins. Floor 1e-12 N m s."""
-    w = m.spin if spins is None else np.asarray(spins, float)
-    wc = m.cage_speed if cage_speed is None else cage_speed
-    h = 1e-4 * np.maximum(np.abs(w), 1.0)
-    half = 0.5 * m.geom.roller_diameter
-    e0 = _race_eval(rm, m, w, wc)
-    e1 = _race_eval(rm, m, w + h, wc)
-    return np.maximum(-(e1.roller_eq - e0.roller_eq) / h * half, 1e-12)
-
-
 def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: float,
                 periods: float, warmup_periods: float, steps_per_period: int,
-                samples_per_period: int) -> tuple[dict[str, np.ndarray], int]:
-    """RK4 run of the skew/axial motion at one frozen load state and spin ``w`` [rad/s]:
-    (post-processed samples, right-hand-side calls). ConvergenceError if it diverges."""
+                samples_per_period: int, k: float = 0.0, f_d: float = 0.0
+                ) -> tuple[dict[str, np.ndarray], int]:
+    """RK4 run of the skew/axial/pocket motion at one frozen load state and spin ``w``
+    [rad/s] with spin stiffness ``k`` [N m s] (raceway damping of the pocket motion) and
+    quasi-static pocket force ``f_d`` [N]: (post-processed samples, right-hand-side calls).
+    ConvergenceError if it diverges."""
     omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
     h_max = 1.0 / omega_c
     period = 2.0 * math.pi / max(abs(w), 1.0)
@@ -648,183 +730,41 @@ def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: floa
     n_warm = int(round(warmup_periods * n_per))
     n_keep = int(round(periods * n_per))
     every = max(1, n_per // samples_per_period)
-    rows = _rk4_frozen(c, float(n_i), float(n_o), float(w), h, n_warm, n_keep, every)
+    z0 = math.copysign(0.5 * m.pocket_clearance, f_d) if m.pocket_dof else 0.0
+    rows = _rk4_frozen(c, float(n_i), float(n_o), float(w), float(f_d),
+                       m.circumferential_damping(k), z0, h, n_warm, n_keep, every)
     if not np.all(np.isfinite(rows)):
         raise ConvergenceError("roller_dynamics.reduced", float("inf"),
                                "RK4 diverged (reduce the step: steps_per_period)",
                                {"state": (n_i, n_o, w)})
     spin = np.full(rows.shape[0], w)
-    post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin)
+    post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin,
+                 rows[:, 5], rows[:, 6], f_d)
     return post, 4 * (n_warm + n_keep)
 
 
-def couple_spins(m: DynamicsModel, bearing: Any, lubricant: Any, *, passes: int = 1,
-                 periods: float = 10.0, tol: float = 1e-8, max_iter: int = 30
-                 ) -> DynamicsModel:
-    """Roller spins and cage speed with the rib contact fed back (paper 003 eqs. 18-19).
+# re-exports (split modules; names kept importable from here)
+from .roller_dynamics_coupling import (  # noqa: E402
+    _race_eval,
+    couple_spins,
+    race_spin_stiffness,
+)
+from .roller_dynamics_map import MAP_PARAMETERS, PAPER003_BASE, pv_slip_map  # noqa: E402
 
-    The paper couples the rib moments of eq. 16 to the roller spin (eq. 18, line 4) and,
-    through the rollers' orbital forces, to the cage (eq. 19). Here, per load state of the
-    orbit, the time-mean rib moment about the roller axis M_j and circumferential force
-    F_j over the periodic skew motion (reduced model) are added to the quasi-static
-    Z + 1 equations of paper 000 (:mod:`thermobearing.skidding.roller`):
-
-        T_j(omega_j, omega_c) + M_j(omega_j) = 0,   cage_eq(omega, omega_c) + sum F_j = 0,
-
-    with M_j linearised in the spin (secant between the state's spin and the pure-rolling
-    spin, or -10 % for rollers near rolling; slope clipped to <= 0), solved by Newton with
-    the arrow-shaped Jacobian of that module; ``passes`` re-linearisations.
-    Returns a copy of ``m`` with the new spins, cage speed, outer loads and the spin
-    stiffness of the traction model (``spin_k``); ``extras["coupling"]`` holds the
-    iterations and residuals. ConvergenceError if Newton stalls. Costs ~10 reduced runs.
-    """
-    from dataclasses import replace as dc_replace
-
-    from .roller import build_model as race_model
-
-    rm = race_model(bearing, lubricant, m.extras.get("temperature", 353.15))
-    half = 0.5 * m.geom.roller_diameter
-    z = len(m.azimuth)
-    force_scale = max(float(np.max(m.inner_load, initial=0.0)), 1.0)
-    cur = m
-    history = []
-    for _pass in range(passes):
-        c = _params(cur)
-        states = load_states(cur)
-        w_roll = ((cur.inner_speed - cur.cage_speed) * cur.geom.inner_raceway_diameter
-                  / cur.geom.roller_diameter)
-        m0 = np.zeros(z)
-        slope = np.zeros(z)
-        f_t = np.zeros(z)
-        for n_i, n_o, w, _share, _k in states:
-            sel = ((np.round(cur.inner_load, 3) == round(n_i, 3))
-                   & (np.round(cur.outer_load, 3) == round(n_o, 3))
-                   & (np.round(cur.spin, 3) == round(w, 3)))
-            # secant over a wide spin step: the mean of the impacting motion scatters by
-            # ~10 %, so a small step would give a slope of noise; the moment falls with the
-            # spin (friction opposes the slide), a positive slope is noise -> clipped to 0
-            w2 = w_roll if abs(w_roll - w) > 0.1 * w else 0.9 * w
-            p0, _ = _state_post(cur, c, n_i, n_o, w, periods, 2.0, 400, 100)
-            p1, _ = _state_post(cur, c, n_i, n_o, w2, periods, 2.0, 400, 100)
-            a0 = _mean(p0["spin_moment"], p0["t"])
-            a1 = _mean(p1["spin_moment"], p1["t"])
-            m0[sel] = a0
-            slope[sel] = min((a1 - a0) / (w2 - w), 0.0)
-            f_t[sel] = _mean(p0["tangential_force"], p0["t"])
-        w_ref = cur.spin.copy()
-
-        def resid(x: np.ndarray, cur: DynamicsModel = cur, m0: np.ndarray = m0,
-                  slope: np.ndarray = slope, w_ref: np.ndarray = w_ref,
-                  f_sum: float = float(np.sum(f_t))) -> tuple[np.ndarray, Any]:
-            e = _race_eval(rm, cur, x[:z], x[z])
-            r = np.append(e.roller_eq + (m0 + slope * (x[:z] - w_ref)) / half,
-                          e.cage_eq + f_sum)
-            return r, e
-
-        x = np.append(cur.spin, cur.cage_speed)
-        r, e = resid(x)
-        norm = float(np.linalg.norm(r)) / force_scale
-        it = 0
-        while norm > tol and it < max_iter:
-            it += 1
-            h = 1e-6 * np.maximum(np.abs(x[:z]), 1.0)
-            xp = x.copy()
-            xp[:z] += h
-            rp, ep = resid(xp)
-            diag = (rp[:z] - r[:z]) / h
-            c_row = (ep.cage_terms - e.cage_terms) / h
-            hc = 1e-6 * max(abs(x[z]), 1.0)
-            xq = x.copy()
-            xq[z] += hc
-            rq, _ = resid(xq)
-            b_col = (rq[:z] - r[:z]) / hc
-            d_cc = (rq[z] - r[z]) / hc
-            diag = np.where(np.abs(diag) > 1e-300, diag, 1e-300)
-            denom = d_cc - np.sum(c_row * b_col / diag)
-            if not np.isfinite(denom) or denom == 0.0:
-                break
-            dwc = (-r[z] + np.sum(c_row * r[:z] / diag)) / denom
-            step = np.append((-r[:z] - b_col * dwc) / diag, dwc)
-            lam = min(1.0, 0.5 * m.inner_speed / max(float(np.max(np.abs(step))), 1e-300))
-            for _ in range(30):
-                xn = x + lam * step
-                if 0.0 < xn[z] < m.inner_speed and np.all(xn[:z] > 0.0):
-                    rn, en = resid(xn)
-                    nn = float(np.linalg.norm(rn)) / force_scale
-                    if np.isfinite(nn) and nn < (1.0 - 1e-4 * lam) * norm:
-                        break
-                lam *= 0.5
-            else:
-                break
-            x, r, e, norm = xn, rn, en, nn
-        if norm > max(tol, 1e-6):
-            raise ConvergenceError("roller_dynamics.couple_spins", norm,
-                                   "Newton on the Z + 1 equations with the rib moments stalled",
-                                   {"pass": _pass, "iterations": it})
-        bias = m0 + slope * (x[:z] - w_ref)
-        history.append({"iterations": it, "residual": norm, "cage_speed": float(x[z]),
-                        "mean_rib_moment": bias.copy(), "rib_tangential_force": f_t.copy()})
-        cur = dc_replace(cur, spin=x[:z].copy(), cage_speed=float(x[z]),
-                         outer_load=np.asarray(e.q_o, float).copy())
-    k = race_spin_stiffness(rm, cur)
-    extras = dict(cur.extras)
-    extras["coupling"] = {"passes": history, "cage_speed_quasi_static": m.cage_speed,
-                          "spin_quasi_static": m.spin.copy()}
-    return dc_replace(cur, spin_k=k, spin_bias=bias, extras=extras)
-
-
-#: map parameters of paper 003 Figs. 7-12 and their SI units
-MAP_PARAMETERS = {"radial_load": "N", "speed": "rad/s", "axial_clearance": "m",
-                  "pocket_clearance": "m", "rib_angle": "rad", "crown_radius": "m"}
-
-#: paper 003 base case (sec. 9-10): 30000 r/min, 3000 N, C_a 0.03 mm, pocket 0.2 mm,
-#: rib angle 0.3 deg, end-face crown radius 300 mm
-PAPER003_BASE = {"speed": 30000.0 * math.pi / 30.0, "radial_load": 3000.0,
-                 "axial_clearance": 0.03e-3, "pocket_clearance": 0.2e-3,
-                 "rib_angle": math.radians(0.3), "crown_radius": 0.3}
-
-
-def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
-                unbalance_masses: Any, *, base: dict[str, float] | None = None,
-                model: str = "reduced", temperature: float = 353.15,
-                cache: dict | None = None, end_face: str = "sphere",
-                **model_options: Any) -> list[dict[str, float]]:
-    """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
-
-    One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
-    pv_right [Pa m/s], slip_speed [m/s], ...). ``base`` overrides :data:`PAPER003_BASE`.
-    ``cache`` (a dict) keeps the quasi-static skidding solutions by (speed, load).
-    ``end_face``: "sphere" (paper 003 eqs. 1, 11) or "cap" (:mod:`thermobearing.rib`).
-    """
-    if parameter not in MAP_PARAMETERS:
-        raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
-    cfg = dict(PAPER003_BASE)
-    cfg.update(base or {})
-    cache = {} if cache is None else cache
-    rows = []
-    for value in np.atleast_1d(np.asarray(values, float)):
-        point = dict(cfg)
-        point[parameter] = float(value)
-        key = (round(point["speed"], 6), round(point["radial_load"], 6))
-        for mass in np.atleast_1d(np.asarray(unbalance_masses, float)):
-            m = build_model(
-                bearing, lubricant, point["speed"], point["radial_load"], float(mass),
-                temperature=temperature, pocket_clearance=point["pocket_clearance"],
-                rib={"axial_clearance": point["axial_clearance"],
-                     "rib_angle": point["rib_angle"], "crown_radius": point["crown_radius"],
-                     "end_face": end_face},
-                quasi_static=cache.get(key), **model_options)
-            cache[key] = m.extras["quasi_static"]
-            r = simulate(m, model)
-            rows.append({"parameter": parameter, "value": float(value),
-                         "unbalance_mass": float(mass), "pv_left": r.pv_left,
-                         "pv_right": r.pv_right, "pv_peak_left": r.pv_peak_left,
-                         "pv_peak_right": r.pv_peak_right, "pv_contact_left": r.pv_contact_left,
-                         "pv_contact_right": r.pv_contact_right,
-                         "contact_slide_speed": r.contact_slide_speed,
-                         "slip_speed": r.slip_speed,
-                         "rolling_slip_speed": r.rolling_slip_speed,
-                         "surface_slip_speed": r.surface_slip_speed,
-                         "max_skew": r.max_skew, "rib_contact_fraction": r.rib_contact_fraction,
-                         "rib_heat": r.rib_heat, "cost_s": r.cost_s})
-    return rows
+__all__ = [
+    "MAP_PARAMETERS",
+    "PAPER003_BASE",
+    "DynamicsModel",
+    "RollerResponse",
+    "Unbalance",
+    "build_model",
+    "chamfer_unbalance",
+    "couple_spins",
+    "load_states",
+    "pv_slip_map",
+    "race_spin_stiffness",
+    "simulate",
+    "simulate_full",
+    "simulate_reduced",
+    "_race_eval",
+]

@@ -46,6 +46,11 @@ def _pv(row: dict[str, float]) -> float:
     return row["pv_left"] + row["pv_right"]
 
 
+def _pvc(row: dict[str, float]) -> float:
+    """PV averaged over the time each face is in contact, both faces summed [Pa m/s]."""
+    return row["pv_contact_left"] + row["pv_contact_right"]
+
+
 @RUNNERS.register("paper003_pv_slip_trends",
                   references=["zhang2021_abnormal_wear", "archard1953", "gear1971_dae"])
 def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str, float]:
@@ -59,13 +64,16 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     temperature = to_si(inputs.get("temperature", "80 degC"), "temperature",
                         field="inputs.temperature")
     m_lo, m_hi = _list(inputs, "unbalance", "mass")
+    slide = inputs.get("slide", "offset")
+    pocket_dof = bool(inputs.get("pocket_dof", True))
     cache: dict = {}
     out: dict[str, float] = {}
 
     def sweep(parameter: str, values: list[float], masses: list[float],
               spin: str = "skidding") -> list[dict]:
         return rd.pv_slip_map(bearing, lub, parameter, values, masses,
-                              temperature=temperature, cache=cache, spin=spin)
+                              temperature=temperature, cache=cache, spin=spin, slide=slide,
+                              pocket_dof=pocket_dof)
 
     # unbalance at the base case (Fig. 7 at 3000 N): PV and slip grow, unbalance side larger
     base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
@@ -74,6 +82,9 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     out["slip_ratio_unbalance_high_vs_none"] = base[2]["slip_speed"] / base[0]["slip_speed"]
     out["pv_right_over_left_high_unbalance"] = base[2]["pv_right"] / base[2]["pv_left"]
     out["pv_right_over_left_low_unbalance"] = base[1]["pv_right"] / base[1]["pv_left"]
+    out["pv_contact_ratio_unbalance_high_vs_low"] = _pvc(base[2]) / _pvc(base[1])
+    out["pv_contact_right_over_left_high_unbalance"] = (base[2]["pv_contact_right"]
+                                                        / base[2]["pv_contact_left"])
     out["base_pv_high_unbalance"] = _pv(base[2]) / 2.0
     out["base_slip_speed_high_unbalance"] = base[2]["slip_speed"]
 
@@ -100,6 +111,10 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     out["pv_ratio_axial_clearance_0.05_vs_min"] = pv[j5] / pv[0]
     out["slip_ratio_axial_clearance_min_vs_0.05"] = s[0] / s[j5]
     out["pv_flattening_above_0.05mm"] = abs(pv[-1] - pv[j5]) / max(abs(pv[j5] - pv[0]), 1e-12)
+    pvc = [_pvc(r) for r in rows]
+    out["pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
+    out["pv_contact_flattening_above_0.05mm"] = (abs(pvc[-1] - pvc[j5])
+                                                 / max(abs(pvc[j5] - pvc[0]), 1e-12))
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm
     cp = _list(inputs, "pocket_clearances", "length")
@@ -118,6 +133,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         rows = sweep(par, vals, [m_hi])
         pv = [_pv(r) for r in rows]
         out[f"pv_minimum_{par}"] = parabolic_minimum(vals, pv)
+        out[f"pv_contact_minimum_{par}"] = parabolic_minimum(vals, [_pvc(r) for r in rows])
         out[f"slip_ratio_{par}_last_vs_first"] = rows[-1]["slip_speed"] / rows[0]["slip_speed"]
         # sensitivity: every roller at its pure-rolling spin (SOURCE.md, point 3)
         rows = sweep(par, vals, [m_hi], spin="rolling")
@@ -127,7 +143,8 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
                        m_hi, temperature=temperature, quasi_static=cache.get(
                            (round(rd.PAPER003_BASE["speed"], 6),
-                            round(rd.PAPER003_BASE["radial_load"], 6))))
+                            round(rd.PAPER003_BASE["radial_load"], 6))),
+                       rib={"slide": slide}, pocket_dof=pocket_dof)
     full = rd.simulate_full(m)
     red = rd.simulate_reduced(m)
     out["cost_full_s"] = full.cost_s

@@ -1,0 +1,75 @@
+"""PV and slip maps of paper 003 Figs. 7-12 with the roller dynamics.
+
+Zhang et al. 2021, seed ``003_743e023ae6e45686.txt`` [zhang2021_abnormal_wear], secs. 9-10;
+model in :mod:`thermobearing.skidding.roller_dynamics`. Units: SI.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import InputError
+from .roller_dynamics import build_model, simulate
+
+#: map parameters of paper 003 Figs. 7-12 and their SI units
+MAP_PARAMETERS = {"radial_load": "N", "speed": "rad/s", "axial_clearance": "m",
+                  "pocket_clearance": "m", "rib_angle": "rad", "crown_radius": "m"}
+
+#: paper 003 base case (sec. 9-10): 30000 r/min, 3000 N, C_a 0.03 mm, pocket 0.2 mm,
+#: rib angle 0.3 deg, end-face crown radius 300 mm
+PAPER003_BASE = {"speed": 30000.0 * math.pi / 30.0, "radial_load": 3000.0,
+                 "axial_clearance": 0.03e-3, "pocket_clearance": 0.2e-3,
+                 "rib_angle": math.radians(0.3), "crown_radius": 0.3}
+
+
+def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
+                unbalance_masses: Any, *, base: dict[str, float] | None = None,
+                model: str = "reduced", temperature: float = 353.15,
+                cache: dict | None = None, end_face: str = "sphere",
+                slide: str = "offset", **model_options: Any) -> list[dict[str, float]]:
+    """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
+
+    One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
+    pv_right [Pa m/s], slip_speed [m/s], ...). ``base`` overrides :data:`PAPER003_BASE`.
+    ``cache`` (a dict) keeps the quasi-static skidding solutions by (speed, load).
+    ``end_face``: "sphere" (paper 003 eqs. 1, 11) or "cap" (:mod:`thermobearing.rib`).
+    ``slide``: "offset" or "radial_plane" (:class:`thermobearing.rib.RibGeometry`).
+    """
+    if parameter not in MAP_PARAMETERS:
+        raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
+    cfg = dict(PAPER003_BASE)
+    cfg.update(base or {})
+    cache = {} if cache is None else cache
+    rows = []
+    for value in np.atleast_1d(np.asarray(values, float)):
+        point = dict(cfg)
+        point[parameter] = float(value)
+        key = (round(point["speed"], 6), round(point["radial_load"], 6))
+        for mass in np.atleast_1d(np.asarray(unbalance_masses, float)):
+            m = build_model(
+                bearing, lubricant, point["speed"], point["radial_load"], float(mass),
+                temperature=temperature, pocket_clearance=point["pocket_clearance"],
+                rib={"axial_clearance": point["axial_clearance"],
+                     "rib_angle": point["rib_angle"], "crown_radius": point["crown_radius"],
+                     "end_face": end_face, "slide": slide},
+                quasi_static=cache.get(key), **model_options)
+            cache[key] = m.extras["quasi_static"]
+            r = simulate(m, model)
+            rows.append({"parameter": parameter, "value": float(value),
+                         "unbalance_mass": float(mass), "pv_left": r.pv_left,
+                         "pv_right": r.pv_right, "pv_peak_left": r.pv_peak_left,
+                         "pv_peak_right": r.pv_peak_right, "pv_contact_left": r.pv_contact_left,
+                         "pv_contact_right": r.pv_contact_right,
+                         "contact_slide_speed": r.contact_slide_speed,
+                         "slip_speed": r.slip_speed,
+                         "rolling_slip_speed": r.rolling_slip_speed,
+                         "surface_slip_speed": r.surface_slip_speed,
+                         "max_skew": r.max_skew, "rib_contact_fraction": r.rib_contact_fraction,
+                         "rib_heat": r.rib_heat, "cost_s": r.cost_s,
+                         "pocket_friction_extra": r.pocket_friction_extra,
+                         "bar_contact_fraction": r.bar_contact_fraction,
+                         "cage_speed": m.cage_speed})
+    return rows
