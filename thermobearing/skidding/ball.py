@@ -38,6 +38,7 @@ re-exported here so that ``from thermobearing.skidding.ball import X`` keeps wor
 
 from __future__ import annotations
 
+import math
 import time
 
 import numpy as np
@@ -127,9 +128,12 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     -------
     BallSkiddingResult
     """
-    check_positive("speed", speed)
-    check_positive("radial_load", radial_load, allow_zero=True)
-    check_finite("axial_load", axial_load)
+    if not (math.isfinite(speed) and speed > 0.0 and math.isfinite(radial_load)
+            and radial_load >= 0.0 and math.isfinite(axial_load)):
+        # the checks that name the bad input (skipped when the plain tests above pass)
+        check_positive("speed", speed)
+        check_positive("radial_load", radial_load, allow_zero=True)
+        check_finite("axial_load", axial_load)
     t0 = time.perf_counter()
     prev = guess.extra.get("system") if guess is not None else None
     if (prev is not None and prev.bearing is bearing and prev.models is models

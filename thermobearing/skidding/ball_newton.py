@@ -26,6 +26,7 @@ __all__ = ["JacobianBlocks", "newton_block"]
 # pocket force / F_s; ring displacement in microns, cage speed / omega_i)
 _CAP_X = np.array([20.0, 20.0, 0.2, 0.2, 0.2, 5.0])
 _CAP_G = np.array([20.0, 20.0, 0.1])
+_NO_HIST = np.empty((0, 0))
 
 
 @numba.njit(cache=True)
@@ -225,6 +226,43 @@ def _broyden_step(hist: np.ndarray, m: int, dX: np.ndarray, dG: np.ndarray,
     return out_x, out_g, big
 
 
+@numba.njit(cache=True)
+def _propose(Ainv: np.ndarray, Ainv_B: np.ndarray, C: np.ndarray, Sinv: np.ndarray,
+             R: np.ndarray, Gc: np.ndarray, Gk: np.ndarray, cap_x: np.ndarray,
+             cap_g: np.ndarray, hist: np.ndarray, m: int, xs: np.ndarray, gs: np.ndarray,
+             X: np.ndarray, G: np.ndarray) -> tuple:
+    """One Newton-type step in one compiled call: the global residual sum_z Gc_z + Gk, the
+    block-elimination step (:func:`_block_step`), with m > 0 its good-Broyden correction
+    from the history (:func:`_broyden_step`), and the full-step state X + dX xs, G + dG gs.
+    Returns (dX, dG, max |step| / cap, X_new, G_new, degenerate) with degenerate True when
+    the Broyden denominator was too small (the plain step is returned; the caller starts a
+    new history)."""
+    nz, nb = R.shape
+    ng = Gk.size
+    gres = np.empty(ng)
+    for g in range(ng):
+        t = Gk[g]
+        for z in range(nz):
+            t += Gc[z, g]
+        gres[g] = t
+    dX, dG, big = _block_step(Ainv, Ainv_B, C, Sinv, R, gres, cap_x, cap_g)
+    degenerate = False
+    if m > 0:
+        bX, bG, bbig = _broyden_step(hist, m, dX, dG, cap_x, cap_g)
+        if bbig < 0.0:
+            degenerate = True
+        else:
+            dX, dG, big = bX, bG, bbig
+    Xn = np.empty((nz, nb))
+    for z in range(nz):
+        for i in range(nb):
+            Xn[z, i] = X[z, i] + dX[z, i] * xs[i]
+    Gn = np.empty(ng)
+    for g in range(ng):
+        Gn[g] = G[g] + dG[g] * gs[g]
+    return dX, dG, big, Xn, Gn, degenerate
+
+
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-6,
                  max_step: float = 1.0, reuse_ratio: float = 0.25,
@@ -262,15 +300,13 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     Z = system.Z
     X, G = X0.copy(), G0.copy()
     nb = N_BALL + N_GLOBAL
-    eye_x = np.zeros((N_BALL, 1, N_BALL))
-    eye_x[np.arange(N_BALL), 0, np.arange(N_BALL)] = fd_step * xs
-    eye_g = np.zeros((nb, N_GLOBAL))
-    eye_g[N_BALL + np.arange(N_GLOBAL), np.arange(N_GLOBAL)] = fd_step * gs
-
-    def norm_of(R, Gc, Gk):
-        return _residual_norm(R, Gc, Gk)
+    norm_of = _residual_norm
 
     def jacobian_fd(X, G, R, Gc, Gk):
+        eye_x = np.zeros((N_BALL, 1, N_BALL))
+        eye_x[np.arange(N_BALL), 0, np.arange(N_BALL)] = fd_step * xs
+        eye_g = np.zeros((nb, N_GLOBAL))
+        eye_g[N_BALL + np.arange(N_GLOBAL), np.arange(N_GLOBAL)] = fd_step * gs
         Xb = np.empty((nb, Z, N_BALL))
         Xb[:] = X
         Xb[:N_BALL] += eye_x
@@ -298,9 +334,6 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         except np.linalg.LinAlgError:
             Sinv = np.linalg.pinv(S)       # least-squares step of a singular Schur complement
         return Ainv, Ainv_B, C, np.ascontiguousarray(Sinv)
-
-    def step(jac, R, Gc, Gk):
-        return _block_step(*jac, R, Gc.sum(0) + Gk, _CAP_X, _CAP_G)
 
     R, Gc, Gk, _ = system.evaluate(X, G)
     nrm = norm_of(R, Gc, Gk)
@@ -336,28 +369,26 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         if jac is None:
             jac = jacobian_fd(X, G, R, Gc, Gk)
             broyden = False
-        dX, dG, big = step(jac, R, Gc, Gk)
-        if broyden and m:
-            bX, bG, bbig = _broyden_step(hist, m, dX, dG, _CAP_X, _CAP_G)
-            if bbig < 0.0:                # degenerate update: plain chord step, new history
-                m = 0
-            else:
-                dX, dG, big = bX, bG, bbig
+        dX, dG, big, Xf, Gf, degenerate = _propose(
+            *jac, R, Gc, Gk, _CAP_X, _CAP_G, hist if broyden else _NO_HIST,
+            m if broyden else 0, xs, gs, X, G)
+        if degenerate:                    # degenerate update: plain chord step, new history
+            m = 0
         lam = min(1.0, max_step / big) if big > 0 else 1.0
         if stale:
             # chord step: full step only (a step the cap would shorten refreshes
             # the Jacobian: measured, capped chord steps can stall a cold start), accepted
             # if it reduces the norm, else discarded and the Jacobian refreshed
-            ok, nn = False, np.inf
+            ok, nn = False, math.inf
             if lam == 1.0:
                 try:
-                    Rn, Gcn, Gkn, _ = system.evaluate(X + dX * xs, G + dG * gs)
-                    nn = norm_of(Rn, Gcn, Gkn)
-                    ok = bool(np.isfinite(nn) and nn < nrm)
+                    Rn, Gcn, Gkn, _ = system.evaluate(Xf, Gf)
+                    nn = _residual_norm(Rn, Gcn, Gkn)
+                    ok = math.isfinite(nn) and nn < nrm
                 except (InputError, FloatingPointError, ValueError):
                     ok = False
             if ok:
-                X, G, R, Gc, Gk = X + dX * xs, G + dG * gs, Rn, Gcn, Gkn
+                X, G, R, Gc, Gk = Xf, Gf, Rn, Gcn, Gkn
                 if nn > (broyden_reuse_ratio if broyden else reuse_ratio) * nrm:
                     jac = None
                 elif broyden and m < hist.shape[0]:
@@ -376,7 +407,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
             try:
                 Rn, Gcn, Gkn, _ = system.evaluate(Xn, Gn)
                 nn = norm_of(Rn, Gcn, Gkn)
-                ok = np.isfinite(nn)
+                ok = math.isfinite(nn)
             except (InputError, FloatingPointError, ValueError):
                 ok, nn = False, np.inf
             if ok and (nn < (1 - 1e-4 * lam) * nrm or lam < 1e-3):

@@ -425,6 +425,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.ry = arcs.conformity * self.D / (2.0 * arcs.conformity - 1.0)
         check_positive("skidding.ball R_y", self.ry)
         self.curv = 1.0 / self.rd                          # deformed-surface curvature [1/m]
+        self._ry_zk = np.broadcast_to(self.ry, (self.Z, self.ry.size))   # read-only view
         self.w_race = np.where(self.inner, self.speed, 0.0)
         self.veps = 1e-6 * max(abs(self.speed) * self.Rm, 1e-3)
         self._torque_memo: dict[float, tuple] = {}
@@ -658,7 +659,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         wc = float(G[2])
         approach, Q, na, nr = geo[G_APPROACH], geo[G_Q], geo[G_NA], geo[G_NR]
         cf = ContactField(approach, Q, na, nr, geo[G_L], geo[G_ALPHA], geo[G_K])
-        ry = np.broadcast_to(self.ry, Q.shape)
+        ry = self._ry_zk
         ctr = ContactTraction(tr[..., 0], tr[..., 1], tr[..., 2], tr[..., 3], tr[..., 4],
                               tr[..., 5])
         # heat and shaft torque (energy audit): pocket heat, drag power (given to the oil,

@@ -255,3 +255,31 @@ def test_compiled_block_factors_equal_numpy_inverse_and_schur():
     np.testing.assert_allclose(S, S_ref, rtol=1e-12, atol=1e-13)
     A[3, :, 4] = 0.0                        # singular ball block: reported, not inverted
     assert not _factor_blocks(A, B, C, Dg)[3]
+
+
+def test_compiled_propose_equals_block_step_and_broyden_step():
+    # _propose (one compiled call per Newton iteration) against its pieces: the global sum,
+    # _block_step, _broyden_step and the full-step state
+    from thermobearing.skidding.ball_newton import _broyden_step, _propose
+
+    rng = np.random.default_rng(3)
+    Z = 4
+    Ainv = rng.normal(size=(Z, 6, 6))
+    AiB = rng.normal(size=(Z, 6, 3))
+    C = rng.normal(size=(Z, 3, 6))
+    Sinv = rng.normal(size=(3, 3))
+    R, Gc, Gk = rng.normal(size=(Z, 6)), rng.normal(size=(Z, 3)), rng.normal(size=3)
+    X, G = rng.normal(size=(Z, 6)), rng.normal(size=3)
+    xs, gs = np.abs(rng.normal(size=6)), np.abs(rng.normal(size=3))
+    hist = rng.normal(size=(3, Z * 6 + 3))
+    dX0, dG0, big0 = _block_step(Ainv, AiB, C, Sinv, R, Gc.sum(0) + Gk, _CAP_X, _CAP_G)
+    for m in (0, 2):
+        dX, dG, big, Xn, Gn, degenerate = _propose(Ainv, AiB, C, Sinv, R, Gc, Gk, _CAP_X,
+                                                   _CAP_G, hist, m, xs, gs, X, G)
+        ref = (dX0, dG0, big0) if m == 0 else _broyden_step(hist, m, dX0, dG0, _CAP_X, _CAP_G)
+        assert not degenerate and ref[2] >= 0
+        np.testing.assert_allclose(dX, ref[0], rtol=1e-13, atol=1e-14)
+        np.testing.assert_allclose(dG, ref[1], rtol=1e-13, atol=1e-14)
+        assert big == pytest.approx(ref[2], rel=1e-13)
+        np.testing.assert_allclose(Xn, X + ref[0] * xs, rtol=1e-14, atol=1e-15)
+        np.testing.assert_allclose(Gn, G + ref[1] * gs, rtol=1e-14, atol=1e-15)
