@@ -139,9 +139,20 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
         residual_norm=float(res.residual_norm),
         iterations=int(getattr(res, "iterations", 0)),
         heat_options=heat_options,
-        traction=default_traction(bearing, lubricant, contact_temperature, params),
+        traction=_solver_traction(res, bearing, lubricant, contact_temperature, params),
         raw=res,
     )
+
+
+def _solver_traction(res: Any, bearing: Any, lubricant: Any, temperature: float,
+                     params: Any) -> Any:
+    """The traction law the solver balanced its forces with (the raceway heat source must
+    integrate the same law for the shaft power to equal the heat); built anew only when
+    the result does not carry it (roller results)."""
+    extra = getattr(res, "extra", None)
+    law = extra.get("traction_law") if isinstance(extra, dict) else None
+    return law if law is not None else default_traction(bearing, lubricant, temperature,
+                                                        params)
 
 
 @KINEMATICS.register(

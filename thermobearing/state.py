@@ -130,6 +130,11 @@ _CONTACT_ARRAYS = (
     "roll_speed", "tilt_speed", "deformed_radius",
 )
 _OPTIONAL_ARRAYS = ("film_thickness", "temperature", "reduced_radius_x", "reduced_radius_y")
+_RADII = frozenset({"deformed_radius", "reduced_radius_y"})  # inf allowed (flat / straight)
+#: fields that must be >= 0, and > 0 (a temperature above absolute zero [K])
+_NON_NEGATIVE = frozenset({"normal_load", "semi_major", "semi_minor", "max_pressure",
+                           "film_thickness"})
+_POSITIVE = frozenset({"temperature"})
 
 
 @dataclass(frozen=True)
@@ -197,31 +202,44 @@ class ContactSet:
         if len(n) != 1:
             raise InputError(f"contacts[{self.race}].normal_load", self.normal_load,
                              "a 1-D array (one entry per element)")
-        for name in _CONTACT_ARRAYS + _OPTIONAL_ARRAYS:
+        names = [name for name in _CONTACT_ARRAYS + _OPTIONAL_ARRAYS
+                 if getattr(self, name) is not None]
+        # one block of all fields, checked in a few vectorised operations; the per-field
+        # checks below run only when the block fails, to name the offending field
+        block = np.empty((len(names), n[0]))
+        for k, name in enumerate(names):
             value = getattr(self, name)
-            if value is None:
-                continue
-            arr = np.asarray(value, dtype=float)
             try:
-                arr = np.array(np.broadcast_to(arr, n), dtype=float)
+                block[k] = np.broadcast_to(np.asarray(value, dtype=float), n)
             except ValueError:
                 raise InputError(f"contacts[{self.race}].{name}", value,
                                  f"an array broadcastable to shape {n}") from None
-            if name in ("deformed_radius", "reduced_radius_y"):  # inf = flat / straight
+        radii = np.array([name in _RADII for name in names])
+        non_negative = np.array([name in _NON_NEGATIVE for name in names])
+        positive = np.array([name in _POSITIVE for name in names])
+        if not (np.all(np.isfinite(block[~radii]))
+                and np.all(block[radii] > 0)  # NaN compares False: refused too
+                and np.all(block[non_negative] >= 0) and np.all(block[positive] > 0)):
+            self._name_the_bad_field(names, block)
+        block.flags.writeable = False
+        for k, name in enumerate(names):
+            object.__setattr__(self, name, block[k])
+
+    def _name_the_bad_field(self, names: list[str], block: np.ndarray) -> None:
+        """Raise the :class:`InputError` of the first field that fails its check."""
+        for k, name in enumerate(names):
+            field, value = f"contacts[{self.race}].{name}", getattr(self, name)
+            arr = block[k]
+            if name in _RADII:  # inf = flat / straight
                 if np.any(np.isnan(arr)) or np.any(arr <= 0):
-                    raise InputError(f"contacts[{self.race}].{name}", value,
-                                     "radii > 0 [m] (inf for a flat surface)")
+                    raise InputError(field, value, "radii > 0 [m] (inf for a flat surface)")
+            elif name == "temperature":
+                check_temperature(field, arr)
+            elif name in _NON_NEGATIVE:
+                check_positive(field, arr, allow_zero=True)
             else:
-                check_finite(f"contacts[{self.race}].{name}", arr)
-            arr.flags.writeable = False
-            object.__setattr__(self, name, arr)
-        for name in ("normal_load", "semi_major", "semi_minor", "max_pressure"):
-            check_positive(f"contacts[{self.race}].{name}", getattr(self, name), allow_zero=True)
-        if self.film_thickness is not None:
-            check_positive(f"contacts[{self.race}].film_thickness", self.film_thickness,
-                           allow_zero=True)
-        if self.temperature is not None:
-            check_temperature(f"contacts[{self.race}].temperature", self.temperature)
+                check_finite(field, arr)
+        raise AssertionError("a contact-set field failed the block check but none alone")
 
     @property
     def n_elements(self) -> int:

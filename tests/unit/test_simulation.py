@@ -88,3 +88,21 @@ def test_global_friction_rung_runs_without_kinematics():
     assert (losses["power [W]"] > 0).all()
     kin = res.tables["kinematics"]
     assert (kin["over-skidding [%]"] == 0).all()
+
+
+def test_skidding_heat_sources_book_the_solver_shaft_power():
+    """At the temperatures the skidding solver ran at, the scene's heat sources (raceway
+    shear with the solver's own traction law, churning, cage guide, pocket) add up to the
+    solver's shaft power omega_i M_shaft to 1e-8 relative (issue 5's energy identity, through
+    the scene's kinematics and heat-source chain)."""
+    text = BASE.replace('kinematics = "race_control"', 'kinematics = "skidding"')
+    sim = Simulation(loads_scene(text + '[outputs]\nmode = "steady"\nwant = ["losses"]\n'),
+                     progress=False)
+    b = sim.bearings[0]
+    step = sim.scene.schedule.steps[0]
+    temps = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 320.0)
+    kin = sim.solve_kinematics(b, 0, step, temps)
+    assert kin.traction is kin.raw.extra["traction_law"]
+    ev = sim.evaluate_heat(b, step, kin, temps)
+    shaft_power = kin.raw.shaft_torque * step.speed
+    assert sum(ev.by_role.values()) == pytest.approx(shaft_power, rel=1e-8)

@@ -106,3 +106,36 @@ def test_deformed_radius_formula():
 
     # 2 f D / (2 f + 1): f = 0.53, D = 35 mm -> 18.01 mm ... = 0.515 D
     assert deformed_surface_radius(0.53, 0.035) == pytest.approx(2 * 0.53 * 0.035 / 2.06)
+
+
+@pytest.mark.parametrize(("field", "value", "allowed"), [
+    ("normal_load", np.array([100.0, -1.0, 5.0, 0.0]), ">= 0"),
+    ("semi_minor", np.nan, "finite"),
+    ("max_pressure", -1e9, ">= 0"),
+    ("spin_speed", np.array([0.0, np.inf, 0.0, 0.0]), "finite"),
+    ("contact_angle", np.nan, "finite"),
+    ("film_thickness", -1e-7, ">= 0"),
+    ("temperature", 0.0, "absolute zero"),
+    ("temperature", np.nan, "finite"),
+    ("deformed_radius", 0.0, "radii > 0"),
+    ("reduced_radius_y", np.nan, "radii > 0"),
+    ("reduced_radius_x", np.inf, "finite"),
+])
+def test_contact_set_names_the_bad_field(field, value, allowed):
+    """The vectorised block check of ContactSet refuses every bad field and names it."""
+    base = {"normal_load": np.full(4, 100.0), "semi_major": 1e-3, "semi_minor": 1e-4,
+            "max_pressure": 1e9}
+    base[field] = value
+    with pytest.raises(InputError, match=allowed) as info:
+        ContactSet(race="outer", **base)
+    assert f"contacts[outer].{field}" in str(info.value)
+
+
+def test_contact_set_fields_read_only_and_infinite_radii_allowed():
+    cs = _cs(deformed_radius=np.inf, reduced_radius_y=np.inf, temperature=330.0,
+             film_thickness=np.array([0.0, 1e-7, 2e-7, 3e-7]))
+    assert np.all(np.isinf(cs.deformed_radius)) and cs.temperature.shape == (4,)
+    with pytest.raises(ValueError):
+        cs.sliding_speed[0] = 1.0
+    moved = cs.with_(sliding_speed=np.array([0.1, 0.2, 0.3, 0.4]))
+    assert moved.sliding_speed[3] == 0.4 and cs.sliding_speed[3] == 0.0
