@@ -37,14 +37,18 @@ L_RANGE = (0.0, 40.0)
 DIRECT_START_ITERATIONS = 15
 #: Levels with at most this many nodes use the dense Newton (LU of the full matrix).
 DENSE_LEVEL_MAX = 384
-#: Newton tolerance on max |F| (scaled Fischer-Burmeister residuals, ~ a pressure change in
-#: units of p_H) on the finest grid and on the coarser levels. The discretisation error of
-#: the films is >= 1e-4 (relative) at the BM-6 resolutions, so 1e-7 on the finest grid
-#: changes h_c, h_min and p_max of the BM-6 cases by < 5e-7 (relative) against 1e-8 and saves
-#: its last (quadratic) Newton iteration; the coarse levels only feed the next grid and the
-#: Richardson estimate (a difference of >= 1e-4), 1e-5 (session 5; 1e-8 / 1e-6 before).
+#: Newton tolerances on max |F| (scaled Fischer-Burmeister residuals, ~ a pressure change in
+#: units of p_H): ``FINE_TOL`` on the finest grid, ``COARSE_TOL`` on the n/2 grid (it enters
+#: the Richardson estimate, a difference of >= 1e-4 relative), ``FEED_TOL`` on the grids
+#: below, which only give the next grid its start (whose Newton re-adjusts the exit spike
+#: anyway). The discretisation error of the films is >= 1e-4 (relative) at the BM-6
+#: resolutions; against 1e-8 / 1e-6 / 1e-6 (session 4) these values change h_c, h_min and
+#: p_max of the BM-6 cases by < 1e-6 (relative) and the error estimate in its 4th digit, and
+#: save the last (quadratic) Newton iteration of each level (BM-6, N = 1024: 205 -> 183
+#: Newton iterations over the 9 cases; session 5).
 FINE_TOL = 1e-7
 COARSE_TOL = 1e-5
+FEED_TOL = 1e-3
 _POINTER = (
     "use a closed-form film model instead (thermobearing.film: moes_line_central, "
     "dowson_higginson_minimum, pan_hamrock_minimum)"
@@ -338,8 +342,8 @@ def solve_dimensionless(
             prob = LineProblem(nk, x_in, x_out, lam, rheology, factors(nk, f_e), factors(nk, f_r))
             lin_k = "dense" if nk <= DENSE_LEVEL_MAX else linear
             # coarse levels only feed the next grid (and the Richardson estimate, whose
-            # discretisation difference is >= 1e-4): 1e-6 saves their last Newton iteration
-            tol_k = FINE_TOL if nk == n else COARSE_TOL
+            # discretisation difference is >= 1e-4): see FINE_TOL / COARSE_TOL / FEED_TOL
+            tol_k = FINE_TOL if nk == n else (COARSE_TOL if 2 * nk >= n else FEED_TOL)
             if k == 0:
                 if initial is not None:
                     Xi, Pi, H0i = initial
