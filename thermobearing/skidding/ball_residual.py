@@ -487,9 +487,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         if details:
             raise InputError("skidding.ball evaluate(details=True)", X.shape,
                              "a single state (Z, 6)")
-        n_states = int(np.prod(batch)) if batch else 1
+        n_states = batch[0] if len(batch) == 1 else int(np.prod(batch))
         self.n_eval += n_states
-        if not (np.isfinite(X).all() and np.isfinite(G).all()):
+        # a sum is finite iff every term is (the unknowns are far below overflow)
+        if not (math.isfinite(X.sum()) and math.isfinite(G.sum())):
             raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
         md = self.models
         Z = self.Z
@@ -498,7 +499,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         Gb = np.ascontiguousarray(G.reshape(n_states, N_GLOBAL))
         # drag on each ball (Python model callable) applied at the ball centre, and the cage
         # torques: memoised per cage speed
-        per_wc = [self._cage_torques(float(w)) for w in Gb[:, 2]]
+        per_wc = [self._cage_torques(w) for w in Gb[:, 2].tolist()]
         if md.drag_radius is None:
             wc1 = G[..., 2:3]                                 # (..., 1)
             u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * X[..., 1]
