@@ -86,8 +86,15 @@ def _short(v: Any) -> str:
 # ---------------------------------------------------------------------------
 # small argument checks used by the physics functions and data objects
 # ---------------------------------------------------------------------------
+_SCALARS = (float, int, np.float64)
+
+
 def check_finite(field: str, value: Any) -> None:
     """Raise :class:`InputError` if ``value`` (scalar or array) holds NaN or inf."""
+    if type(value) in _SCALARS:  # the common scalar case without numpy reductions
+        if not math.isfinite(value):
+            raise InputError(field, value, "a finite number")
+        return
     arr = np.asarray(value, dtype=float)
     if not np.all(np.isfinite(arr)):
         raise InputError(field, value, "a finite number")
@@ -96,6 +103,10 @@ def check_finite(field: str, value: Any) -> None:
 def check_positive(field: str, value: Any, *, allow_zero: bool = False) -> None:
     """Raise :class:`InputError` unless ``value`` is finite and > 0 (or >= 0)."""
     check_finite(field, value)
+    if type(value) in _SCALARS:
+        if value < 0 or (value == 0 and not allow_zero):
+            raise InputError(field, value, "a value >= 0" if allow_zero else "a value > 0")
+        return
     arr = np.asarray(value, dtype=float)
     if allow_zero:
         if np.any(arr < 0):
@@ -116,9 +127,13 @@ def check_range(
 ) -> None:
     """Raise :class:`InputError` unless ``low <= value <= high`` (bounds as flagged)."""
     check_finite(field, value)
-    arr = np.asarray(value, dtype=float)
-    bad_low = np.any(arr < low) if low_inclusive else np.any(arr <= low)
-    bad_high = np.any(arr > high) if high_inclusive else np.any(arr >= high)
+    if type(value) in _SCALARS:
+        bad_low = value < low if low_inclusive else value <= low
+        bad_high = value > high if high_inclusive else value >= high
+    else:
+        arr = np.asarray(value, dtype=float)
+        bad_low = np.any(arr < low) if low_inclusive else np.any(arr <= low)
+        bad_high = np.any(arr > high) if high_inclusive else np.any(arr >= high)
     if bad_low or bad_high:
         lb = "[" if low_inclusive else "("
         hb = "]" if high_inclusive else ")"
@@ -129,5 +144,6 @@ def check_range(
 def check_temperature(field: str, value: Any) -> None:
     """Raise :class:`InputError` for a temperature [K] at or below absolute zero."""
     check_finite(field, value)
-    if np.any(np.asarray(value, dtype=float) <= 0.0):
+    bad = value <= 0.0 if type(value) in _SCALARS else np.any(np.asarray(value, float) <= 0.0)
+    if bad:
         raise InputError(field, value, "a temperature above absolute zero (in K)")
