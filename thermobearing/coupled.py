@@ -111,7 +111,11 @@ class Coupler:
                                  "(inner_ring, outer_ring, elements, cage, oil)")
 
     def role_temperatures(self, b: _Bearing, T: np.ndarray) -> dict[str, float]:
-        return {r: float(np.mean(T[idx])) for r, idx in self.role_nodes[b.name].items()}
+        """Mean temperature [K] of each role's nodes."""
+        out = {}
+        for r, idx in self.role_nodes[b.name].items():
+            out[r] = float(T[idx[0]]) if len(idx) == 1 else float(np.mean(T[idx]))
+        return out
 
     def kinematics(self, step_index: int, step: Step, T: np.ndarray) -> None:
         for b in self.sim.bearings:

@@ -344,7 +344,7 @@ class Simulation:
         found: dict[str, tuple[Any, frozenset[str]]] = {}
         for name in b.sources:
             for entry_kin, entry_step, reads, values, result in memo.get((b.key, name), ()):
-                if (entry_kin is kin and entry_step == step
+                if (entry_kin is kin and (entry_step is step or entry_step == step)
                         and all(temps.get(r) == values[r] for r in reads)):
                     found[name] = (result, reads)
                     break

@@ -102,7 +102,6 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         return float(value)
     if not isinstance(value, str):
         raise InputError(field, value, f"a number or a quantity string convertible to {target}")
-    ureg = unit_registry()
     match = _NUMBER_UNIT.match(value)
     if match is None:
         raise InputError(field, value, f"'<number> <unit>' convertible to {target}")
@@ -112,8 +111,7 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if target == "delta_degC" and unit_text in ("K", "kelvin"):
         return float(number)
     try:
-        q = ureg.Quantity(float(number), unit_text or "dimensionless")
-        out = q.to(target).magnitude
+        out = _convert(float(number), unit_text or "dimensionless", target)
     except pint.errors.DimensionalityError:
         raise InputError(
             field, value, f"a quantity with units convertible to {target}"
@@ -122,6 +120,14 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
             TypeError, ValueError, AssertionError):
         raise InputError(field, value, f"a known unit convertible to {target}") from None
     return float(out)
+
+
+@functools.lru_cache(maxsize=4096)
+def _convert(number: float, unit_text: str, target: str) -> float:
+    """``number unit_text`` in ``target`` (pint; memoised: configs repeat the same few
+    quantities -- two bearings of one preset, a sweep's scenes -- and a conversion is a pure
+    function of its three arguments; failures raise and are not cached)."""
+    return float(unit_registry().Quantity(number, unit_text).to(target).magnitude)
 
 
 @functools.lru_cache(maxsize=256)
