@@ -20,6 +20,10 @@ roller tilt and radial motion (the radial part of the unbalance force only modul
 raceway loads), the orbital centrifugal force of the unbalance mass (the roller mass of the
 preset is taken to include it; its axial offset would only tilt the roller).
 
+* ``coupled`` model (:func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`):
+  all Z rollers (these DOFs plus the spin) and the cage rotation integrated together; the
+  spins then lag the load zone (J_p/k ~ 13 ms for an unloaded roller): base-case slip
+  ~5.5 m/s against ~18 m/s with the quasi-static spins of the two models below.
 * ``full`` model (:func:`simulate_full`): X, alpha and psi of one roller travelling a whole
   orbit (azimuth phi = omega_c t) through the load zone; raceway loads and the (coupled)
   spin follow phi; option ``spin_dof`` adds omega_r. Stiff (the rib contact is a stiff

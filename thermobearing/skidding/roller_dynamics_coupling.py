@@ -39,6 +39,19 @@ def _race_eval(rm: Any, m: DynamicsModel, spins: np.ndarray, wc: float) -> Any:
                     body, m.azimuth, (0.0, 0.0))
 
 
+def _race_eval_at(rm: Any, m: DynamicsModel, spins: np.ndarray, wc: float,
+                  inner_load: np.ndarray, azimuth: np.ndarray) -> Any:
+    """:func:`_race_eval` with the rollers at ``azimuth`` [rad] carrying ``inner_load`` [N]
+    (the coupled all-roller integration, rollers moving with the cage)."""
+    from .roller import evaluate
+
+    z = len(azimuth)
+    body = np.full(z, unbalance_orbital_force(m, float(wc)))
+    return evaluate(rm, m.inner_speed, np.asarray(spins, float), float(wc),
+                    np.asarray(inner_load, float), body, np.asarray(azimuth, float),
+                    (0.0, 0.0))
+
+
 def race_spin_stiffness(rm: Any, m: DynamicsModel, spins: np.ndarray | None = None,
                         cage_speed: float | None = None) -> np.ndarray:
     """k_j = -dT_j/d omega_r [N m s] of the raceway + pocket moment T_j on every roller (the

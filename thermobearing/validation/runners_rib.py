@@ -4,10 +4,14 @@ Case ``paper003_pv_slip_trends``: Zhang et al. 2021 (seed ``003_743e023ae6e45686
 sections 9-10 and conclusions (1)-(5). The paper gives no tabulated PV or slip numbers
 (only figures whose data are not in the text), so the case checks the *trends* it states
 as ratios and slopes, and the locations of the PV minima against rib angle (0.55 deg) and
-end-face crown radius (550 mm). All points use the reduced model
-(:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`); the cost of one
-base-case point with the full and the reduced model and their PV/slip ratio are returned
-as well.
+end-face crown radius (550 mm). The unbalance and axial-clearance trends use the coupled
+integration of all rollers and the cage (spins and cage speed as degrees of freedom,
+:func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's
+eqs. 18-19; ``coupled_orbits`` warm-up and statistics orbits, default 1.5), with the
+reduced model's values beside them (``reduced_*``); the other sweeps use the reduced model
+(:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). The
+reduced model is compared with the coupled one (``reduced_vs_full_*``) and with the
+one-roller full model (``reduced_vs_one_roller_*``), with the costs.
 """
 
 from __future__ import annotations
@@ -75,18 +79,45 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                               temperature=temperature, cache=cache, spin=spin, slide=slide,
                               pocket_dof=pocket_dof)
 
-    # unbalance at the base case (Fig. 7 at 3000 N): PV and slip grow, unbalance side larger
-    base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
-    out["pv_ratio_unbalance_high_vs_low"] = _pv(base[2]) / _pv(base[1])
-    out["slip_ratio_unbalance_high_vs_low"] = base[2]["slip_speed"] / base[1]["slip_speed"]
-    out["slip_ratio_unbalance_high_vs_none"] = base[2]["slip_speed"] / base[0]["slip_speed"]
-    out["pv_right_over_left_high_unbalance"] = base[2]["pv_right"] / base[2]["pv_left"]
-    out["pv_right_over_left_low_unbalance"] = base[1]["pv_right"] / base[1]["pv_left"]
-    out["pv_contact_ratio_unbalance_high_vs_low"] = _pvc(base[2]) / _pvc(base[1])
-    out["pv_contact_right_over_left_high_unbalance"] = (base[2]["pv_contact_right"]
-                                                        / base[2]["pv_contact_left"])
-    out["base_pv_high_unbalance"] = _pv(base[2]) / 2.0
-    out["base_slip_speed_high_unbalance"] = base[2]["slip_speed"]
+    from ..skidding.roller_dynamics_coupled import simulate_coupled
+
+    orbits = float(inputs.get("coupled_orbits", 1.5))
+    base_key = (round(rd.PAPER003_BASE["speed"], 6), round(rd.PAPER003_BASE["radial_load"], 6))
+
+    def coupled(mass: float, **rib: float) -> dict[str, float]:
+        """All rollers + cage integrated (paper eqs. 18-19) at the base case."""
+        m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
+                           rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
+                           quasi_static=cache.get(base_key), rib={"slide": slide, **rib},
+                           pocket_dof=pocket_dof)
+        r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=orbits)
+        return {"pv_left": r.pv_left, "pv_right": r.pv_right,
+                "pv_contact_left": r.pv_contact_left, "pv_contact_right": r.pv_contact_right,
+                "slip_speed": r.slip_speed, "cost_s": r.cost_s}
+
+    def unbalance_rows(base: list[dict], prefix: str) -> None:
+        out[prefix + "pv_ratio_unbalance_high_vs_low"] = _pv(base[2]) / _pv(base[1])
+        out[prefix + "slip_ratio_unbalance_high_vs_low"] = (base[2]["slip_speed"]
+                                                            / base[1]["slip_speed"])
+        out[prefix + "slip_ratio_unbalance_high_vs_none"] = (base[2]["slip_speed"]
+                                                             / base[0]["slip_speed"])
+        out[prefix + "pv_right_over_left_high_unbalance"] = (base[2]["pv_right"]
+                                                             / base[2]["pv_left"])
+        out[prefix + "pv_right_over_left_low_unbalance"] = (base[1]["pv_right"]
+                                                            / base[1]["pv_left"])
+        out[prefix + "pv_contact_ratio_unbalance_high_vs_low"] = (_pvc(base[2])
+                                                                  / _pvc(base[1]))
+        out[prefix + "pv_contact_right_over_left_high_unbalance"] = (
+            base[2]["pv_contact_right"] / base[2]["pv_contact_left"])
+        out[prefix + "base_pv_high_unbalance"] = _pv(base[2]) / 2.0
+        out[prefix + "base_slip_speed_high_unbalance"] = base[2]["slip_speed"]
+
+    # unbalance at the base case (Fig. 7 at 3000 N): PV and slip grow, unbalance side larger;
+    # gated rows from the coupled all-roller + cage integration, the reduced model's beside
+    reduced_base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
+    unbalance_rows(reduced_base, "reduced_")
+    coupled_base = [coupled(mass) for mass in (0.0, m_lo, m_hi)]
+    unbalance_rows(coupled_base, "")
 
     # radial load (Fig. 7, no unbalance): slip falls and flattens above 5000 N
     loads = _list(inputs, "radial_loads", "force")
@@ -102,19 +133,22 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     out["pv_ratio_speed_high_vs_low"] = _pv(rows[-1]) / max(_pv(rows[0]), 1e-30)
     out["slip_ratio_speed_high_vs_low"] = rows[-1]["slip_speed"] / rows[0]["slip_speed"]
 
-    # axial clearance (Fig. 9): PV rises, slip falls, both flatten above 0.05 mm
+    # axial clearance (Fig. 9): PV rises, slip falls, both flatten above 0.05 mm (gated rows
+    # from the coupled integration, the reduced model's beside)
     ca = _list(inputs, "axial_clearances", "length")
-    rows = sweep("axial_clearance", ca, [m_hi])
-    pv = [_pv(r) for r in rows]
-    s = [r["slip_speed"] for r in rows]
     j5 = int(np.argmin(np.abs(np.asarray(ca) - 0.05e-3)))
-    out["pv_ratio_axial_clearance_0.05_vs_min"] = pv[j5] / pv[0]
-    out["slip_ratio_axial_clearance_min_vs_0.05"] = s[0] / s[j5]
-    out["pv_flattening_above_0.05mm"] = abs(pv[-1] - pv[j5]) / max(abs(pv[j5] - pv[0]), 1e-12)
-    pvc = [_pvc(r) for r in rows]
-    out["pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
-    out["pv_contact_flattening_above_0.05mm"] = (abs(pvc[-1] - pvc[j5])
-                                                 / max(abs(pvc[j5] - pvc[0]), 1e-12))
+    for prefix, rows in (("reduced_", sweep("axial_clearance", ca, [m_hi])),
+                         ("", [coupled(m_hi, axial_clearance=v) for v in ca])):
+        pv = [_pv(r) for r in rows]
+        s = [r["slip_speed"] for r in rows]
+        out[prefix + "pv_ratio_axial_clearance_0.05_vs_min"] = pv[j5] / pv[0]
+        out[prefix + "slip_ratio_axial_clearance_min_vs_0.05"] = s[0] / s[j5]
+        out[prefix + "pv_flattening_above_0.05mm"] = (abs(pv[-1] - pv[j5])
+                                                      / max(abs(pv[j5] - pv[0]), 1e-12))
+        pvc = [_pvc(r) for r in rows]
+        out[prefix + "pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
+        out[prefix + "pv_contact_flattening_above_0.05mm"] = (
+            abs(pvc[-1] - pvc[j5]) / max(abs(pvc[j5] - pvc[0]), 1e-12))
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm
     cp = _list(inputs, "pocket_clearances", "length")
@@ -139,16 +173,20 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         rows = sweep(par, vals, [m_hi], spin="rolling")
         out[f"pv_minimum_{par}_rolling_spin"] = parabolic_minimum(vals, [_pv(r) for r in rows])
 
-    # cost of one base-case point, full vs reduced
+    # cost of one base-case point: coupled (all rollers + cage, the "full" model of the
+    # 10 % requirement), one-roller full (prescribed spins) and reduced
     m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
-                       m_hi, temperature=temperature, quasi_static=cache.get(
-                           (round(rd.PAPER003_BASE["speed"], 6),
-                            round(rd.PAPER003_BASE["radial_load"], 6))),
+                       m_hi, temperature=temperature, quasi_static=cache.get(base_key),
                        rib={"slide": slide}, pocket_dof=pocket_dof)
     full = rd.simulate_full(m)
     red = rd.simulate_reduced(m)
+    cpl = coupled_base[2]
+    out["cost_coupled_s"] = cpl["cost_s"]
     out["cost_full_s"] = full.cost_s
     out["cost_reduced_s"] = red.cost_s
-    out["reduced_vs_full_pv"] = (red.pv_left + red.pv_right) / (full.pv_left + full.pv_right)
-    out["reduced_vs_full_slip"] = red.slip_speed / full.slip_speed
+    out["reduced_vs_full_pv"] = (red.pv_left + red.pv_right) / _pv(cpl)
+    out["reduced_vs_full_slip"] = red.slip_speed / cpl["slip_speed"]
+    out["reduced_vs_one_roller_pv"] = ((red.pv_left + red.pv_right)
+                                       / (full.pv_left + full.pv_right))
+    out["reduced_vs_one_roller_slip"] = red.slip_speed / full.slip_speed
     return out
