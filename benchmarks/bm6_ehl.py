@@ -5,7 +5,8 @@ Moes fit). For every case a reference is Richardson-extrapolated from the two fi
 solutions (central and minimum film; maximum pressure from the finest). Methods, all in the same
 run and the same nested-grid code path:
 
-* ``krylov``: Fischer-Burmeister Newton, GMRES with DC-FFT products and a banded preconditioner;
+* ``krylov``: Fischer-Burmeister Newton, GMRES with DC-FFT products and the two-level (banded
+  near field + coarse far field) preconditioner of ``thermobearing.ehl.precond``;
 * ``dense``: the same Newton with the dense influence matrix and LU (baseline, the anchor:
   ``ratio_vs_anchor`` = dense time / krylov time at the same N);
 * ``moes`` / ``dowson_higginson``: the closed-form formulas of ``thermobearing.film`` (central
