@@ -51,7 +51,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "a single --param)")
     parser.add_argument("--unbalance", default="0.06,0.08,0.11 g",
                         help="roller unbalance masses, e.g. '0.06,0.11 g'")
-    parser.add_argument("--model", default="reduced", choices=("reduced", "full"))
+    parser.add_argument("--model", default="reduced", choices=("reduced", "full", "coupled"),
+                        help="reduced (frozen load states, quasi-static spins), full (one "
+                             "roller over an orbit) or coupled (all rollers + cage, spins "
+                             "and cage speed integrated; ~7 s CPU per point)")
     parser.add_argument("--spin", default="skidding", choices=("skidding", "rolling"),
                         help="roller spins from the quasi-static skidding solver (default) or "
                              "pure rolling for every roller (sensitivity)")

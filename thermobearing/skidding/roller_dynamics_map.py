@@ -29,7 +29,8 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                 unbalance_masses: Any, *, base: dict[str, float] | None = None,
                 model: str = "reduced", temperature: float = 353.15,
                 cache: dict | None = None, end_face: str = "sphere",
-                slide: str = "offset", **model_options: Any) -> list[dict[str, float]]:
+                slide: str = "offset", coupled_options: dict[str, Any] | None = None,
+                **model_options: Any) -> list[dict[str, float]]:
     """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
 
     One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
@@ -37,6 +38,9 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
     ``cache`` (a dict) keeps the quasi-static skidding solutions by (speed, load).
     ``end_face``: "sphere" (paper 003 eqs. 1, 11) or "cap" (:mod:`thermobearing.rib`).
     ``slide``: "offset" or "radial_plane" (:class:`thermobearing.rib.RibGeometry`).
+    ``model``: "reduced", "full" (one roller) or "coupled" (all rollers + cage,
+    :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, ~7 s CPU/point;
+    ``coupled_options`` its keyword options, e.g. ``n_orbits``, ``warmup_orbits``).
     """
     if parameter not in MAP_PARAMETERS:
         raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
@@ -57,7 +61,12 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                      "end_face": end_face, "slide": slide},
                 quasi_static=cache.get(key), **model_options)
             cache[key] = m.extras["quasi_static"]
-            r = simulate(m, model)
+            if model == "coupled":
+                from .roller_dynamics_coupled import simulate_coupled
+
+                r = simulate_coupled(m, bearing, lubricant, **(coupled_options or {}))
+            else:
+                r = simulate(m, model)
             rows.append({"parameter": parameter, "value": float(value),
                          "unbalance_mass": float(mass), "pv_left": r.pv_left,
                          "pv_right": r.pv_right, "pv_peak_left": r.pv_peak_left,
@@ -71,5 +80,6 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                          "rib_heat": r.rib_heat, "cost_s": r.cost_s,
                          "pocket_friction_extra": r.pocket_friction_extra,
                          "bar_contact_fraction": r.bar_contact_fraction,
-                         "cage_speed": m.cage_speed})
+                         "cage_speed": (float(np.mean(r.series["cage_speed"]))
+                                        if model == "coupled" else m.cage_speed)})
     return rows

@@ -2,16 +2,17 @@
 
 Case ``paper003_pv_slip_trends``: Zhang et al. 2021 (seed ``003_743e023ae6e45686.txt``),
 sections 9-10 and conclusions (1)-(5). The paper gives no tabulated PV or slip numbers
-(only figures whose data are not in the text), so the case checks the *trends* it states
-as ratios and slopes, and the locations of the PV minima against rib angle (0.55 deg) and
-end-face crown radius (550 mm). The unbalance and axial-clearance trends use the coupled
-integration of all rollers and the cage (spins and cage speed as degrees of freedom,
-:func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's
-eqs. 18-19; ``coupled_orbits`` warm-up and statistics orbits, default 1.5), with the
-reduced model's values beside them (``reduced_*``); the other sweeps use the reduced model
+(only figures whose data are not in the text), so the case checks the *trends* it states as
+ratios and slopes, and the locations of the PV minima against rib angle (0.55 deg) and end-
+face crown radius (550 mm). The unbalance, axial-clearance, pocket-clearance, rib-angle and
+crown-radius trends use the coupled integration of all rollers and the cage (spins and cage
+speed as degrees of freedom,
+:func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's eqs.
+18-19; ``coupled_orbits`` warm-up and statistics orbits, default 1.5), with the reduced
+model's values beside them (``reduced_*``); the load and speed sweeps use the reduced model
 (:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). The
-reduced model is compared with the coupled one (``reduced_vs_full_*``) and with the
-one-roller full model (``reduced_vs_one_roller_*``), with the costs.
+reduced model is compared with the coupled one (``reduced_vs_full_*``) and with the one-
+roller full model (``reduced_vs_one_roller_*``), with the costs.
 """
 
 from __future__ import annotations
@@ -150,25 +151,38 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         out[prefix + "pv_contact_flattening_above_0.05mm"] = (
             abs(pvc[-1] - pvc[j5]) / max(abs(pvc[j5] - pvc[0]), 1e-12))
 
-    # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm
-    cp = _list(inputs, "pocket_clearances", "length")
-    rows = sweep("pocket_clearance", cp, [m_hi])
-    pv = [_pv(r) for r in rows]
-    s = [r["slip_speed"] for r in rows]
-    k35 = int(np.argmin(np.abs(np.asarray(cp) - 0.35e-3)))
-    out["pv_ratio_pocket_0.35_vs_min"] = pv[k35] / pv[0]
-    out["slip_ratio_pocket_0.35_vs_min"] = s[k35] / s[0]
-    out["pv_flattening_above_0.35mm"] = abs(pv[-1] - pv[k35]) / max(abs(pv[k35] - pv[0]), 1e-12)
+    def coupled_sweep(parameter: str, values: list[float]) -> list[dict]:
+        return rd.pv_slip_map(bearing, lub, parameter, values, [m_hi],
+                              temperature=temperature, cache=cache, slide=slide,
+                              pocket_dof=pocket_dof, model="coupled",
+                              coupled_options={"n_orbits": orbits, "warmup_orbits": orbits})
 
-    # rib angle (Fig. 11) and crown radius (Fig. 12): PV minima, slip rising
+    # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm (coupled gated, reduced
+    # beside)
+    cp = _list(inputs, "pocket_clearances", "length")
+    k35 = int(np.argmin(np.abs(np.asarray(cp) - 0.35e-3)))
+    for prefix, rows in (("reduced_", sweep("pocket_clearance", cp, [m_hi])),
+                         ("", coupled_sweep("pocket_clearance", cp))):
+        pv = [_pv(r) for r in rows]
+        s = [r["slip_speed"] for r in rows]
+        out[prefix + "pv_ratio_pocket_0.35_vs_min"] = pv[k35] / pv[0]
+        out[prefix + "slip_ratio_pocket_0.35_vs_min"] = s[k35] / s[0]
+        out[prefix + "pv_flattening_above_0.35mm"] = (abs(pv[-1] - pv[k35])
+                                                      / max(abs(pv[k35] - pv[0]), 1e-12))
+
+    # rib angle (Fig. 11) and crown radius (Fig. 12): PV minima, slip rising (coupled gated,
+    # reduced beside)
     for key, par, kind in (("rib_angles", "rib_angle", "angle"),
                            ("crown_radii", "crown_radius", "length")):
         vals = _list(inputs, key, kind)
-        rows = sweep(par, vals, [m_hi])
-        pv = [_pv(r) for r in rows]
-        out[f"pv_minimum_{par}"] = parabolic_minimum(vals, pv)
-        out[f"pv_contact_minimum_{par}"] = parabolic_minimum(vals, [_pvc(r) for r in rows])
-        out[f"slip_ratio_{par}_last_vs_first"] = rows[-1]["slip_speed"] / rows[0]["slip_speed"]
+        for prefix, rows in (("reduced_", sweep(par, vals, [m_hi])),
+                             ("", coupled_sweep(par, vals))):
+            pv = [_pv(r) for r in rows]
+            out[f"{prefix}pv_minimum_{par}"] = parabolic_minimum(vals, pv)
+            out[f"{prefix}pv_contact_minimum_{par}"] = parabolic_minimum(
+                vals, [_pvc(r) for r in rows])
+            out[f"{prefix}slip_ratio_{par}_last_vs_first"] = (rows[-1]["slip_speed"]
+                                                              / rows[0]["slip_speed"])
         # sensitivity: every roller at its pure-rolling spin (SOURCE.md, point 3)
         rows = sweep(par, vals, [m_hi], spin="rolling")
         out[f"pv_minimum_{par}_rolling_spin"] = parabolic_minimum(vals, [_pv(r) for r in rows])
