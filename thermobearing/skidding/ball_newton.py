@@ -130,6 +130,41 @@ def _factor_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
 
 
 @numba.njit(cache=True)
+def _fd_blocks(Rb: np.ndarray, Gcb: np.ndarray, Gkb: np.ndarray, R: np.ndarray,
+               Gc: np.ndarray, Gk: np.ndarray, h: float
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Forward-difference blocks of the structured Jacobian (compiled) from the batch of
+    N_BALL + N_GLOBAL perturbed states (state c = unknown c perturbed by h in scaled units,
+    for every ball at once): A (Z, 6, 6) = dR_z/dx_z, B (Z, 6, 3) = dR_z/dG, C (Z, 3, 6) =
+    dGc_z/dx_z, Dg (3, 3) = d(sum_z Gc_z + Gk)/dG."""
+    nbx, nz, nb = Rb.shape[0] - Gkb.shape[1], R.shape[0], R.shape[1]
+    ng = Gk.size
+    A = np.empty((nz, nb, nb))
+    B = np.empty((nz, nb, ng))
+    C = np.empty((nz, ng, nb))
+    Dg = np.empty((ng, ng))
+    for z in range(nz):
+        for i in range(nb):
+            for c in range(nbx):
+                A[z, i, c] = (Rb[c, z, i] - R[z, i]) / h
+            for g in range(ng):
+                B[z, i, g] = (Rb[nbx + g, z, i] - R[z, i]) / h
+        for g in range(ng):
+            for c in range(nbx):
+                C[z, g, c] = (Gcb[c, z, g] - Gc[z, g]) / h
+    for g in range(ng):
+        base = Gk[g]
+        for z in range(nz):
+            base += Gc[z, g]
+        for gg in range(ng):
+            t = Gkb[nbx + gg, g]
+            for z in range(nz):
+                t += Gcb[nbx + gg, z, g]
+            Dg[g, gg] = (t - base) / h
+    return A, B, C, Dg
+
+
+@numba.njit(cache=True)
 def _residual_norm(R: np.ndarray, Gc: np.ndarray, Gk: np.ndarray) -> float:
     """sqrt(|R|^2 + |sum_z Gc_z + Gk|^2) of one state (compiled)."""
     acc = 0.0
@@ -312,11 +347,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         Xb[:N_BALL] += eye_x
         Gb = G + eye_g
         Rb, Gcb, Gkb, _ = system.evaluate(Xb, Gb)
-        dR = (Rb - R) / fd_step                      # (9, Z, 6): column c in axis 0
-        A = np.moveaxis(dR[:N_BALL], 0, -1)          # (Z, 6, 6)
-        B = np.moveaxis(dR[N_BALL:], 0, -1)          # (Z, 6, 3)
-        C = np.moveaxis((Gcb[:N_BALL] - Gc) / fd_step, 0, -1)   # (Z, 3, 6)
-        Dg = (((Gcb[N_BALL:].sum(1) + Gkb[N_BALL:]) - (Gc.sum(0) + Gk)) / fd_step).T
+        A, B, C, Dg = _fd_blocks(Rb, Gcb, Gkb, R, Gc, Gk, fd_step)
         blocks = JacobianBlocks(A, B, C, Dg, system.F_s, xs, gs, Z)
         system.last_jacobian = blocks
         return factor(blocks, R, Gc, Gk, G)

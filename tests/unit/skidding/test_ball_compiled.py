@@ -283,3 +283,23 @@ def test_compiled_propose_equals_block_step_and_broyden_step():
         assert big == pytest.approx(ref[2], rel=1e-13)
         np.testing.assert_allclose(Xn, X + ref[0] * xs, rtol=1e-14, atol=1e-15)
         np.testing.assert_allclose(Gn, G + ref[1] * gs, rtol=1e-14, atol=1e-15)
+
+
+def test_compiled_fd_blocks_equal_the_numpy_formulas():
+    # _fd_blocks against the numpy expressions it replaced (moveaxis of the differences)
+    from thermobearing.skidding.ball_newton import _fd_blocks
+
+    rng = np.random.default_rng(5)
+    Z, h = 4, 1e-6
+    R, Gc, Gk = rng.normal(size=(Z, 6)), rng.normal(size=(Z, 3)), rng.normal(size=3)
+    Rb = R + h * rng.normal(size=(9, Z, 6))
+    Gcb = Gc + h * rng.normal(size=(9, Z, 3))
+    Gkb = Gk + h * rng.normal(size=(9, 3))
+    A, B, C, Dg = _fd_blocks(Rb, Gcb, Gkb, R, Gc, Gk, h)
+    dR = (Rb - R) / h
+    np.testing.assert_allclose(A, np.moveaxis(dR[:6], 0, -1), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(B, np.moveaxis(dR[6:], 0, -1), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(C, np.moveaxis((Gcb[:6] - Gc) / h, 0, -1), rtol=1e-12,
+                               atol=1e-9)
+    Dg_ref = (((Gcb[6:].sum(1) + Gkb[6:]) - (Gc.sum(0) + Gk)) / h).T
+    np.testing.assert_allclose(Dg, Dg_ref, rtol=1e-8, atol=1e-8)
