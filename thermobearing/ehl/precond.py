@@ -25,7 +25,9 @@ far-field part (``Z`` and the coarse LU) is built once per grid and kept while G
 fast; the banded near field is refactored at every iteration (:meth:`refresh_near`).
 Measured on BM-6 (session 4): spectral radius of ``I - M^-1 A`` 0.08 at M = 100, L = 20 on
 512 nodes, 2-3 GMRES iterations per Newton step (1279 -> 278 GMRES iterations over the 9
-cases at N = 1024 against the banded preconditioner of half-band n/8).
+cases at N = 1024 against the banded preconditioner of half-band n/8). Session 5: one
+compiled call per application (:func:`_bordered_solve`; the coarse LU solve folded into
+``W = (I + V Z)^-1 Kc`` at setup) instead of ~15 numpy / LAPACK-wrapper calls.
 """
 
 from __future__ import annotations
@@ -176,11 +178,6 @@ class _Grids:
         # Pi^T restricted to the interior fine nodes (the unknowns), sparse (nc x m)
         self.pt = csr_matrix((vals, (cols, rows)), shape=(nc, m))
         self._ii, self._ti = idx[1:-1], t[1:-1]
-
-    def restrict(self, y: np.ndarray) -> np.ndarray:
-        """``Pi^T y`` for one vector over the interior nodes (two weighted bincounts)."""
-        return (np.bincount(self._ii, (1.0 - self._ti) * y, self.nc)
-                + np.bincount(self._ii + 1, self._ti * y, self.nc))
 
 
 class TwoLevelPreconditioner:

@@ -197,13 +197,15 @@ class LineProblem:
 
     # --------------------------------------------------------------- products
     def apply_b(self, b: tuple, v_full: np.ndarray) -> np.ndarray:
-        """``B @ v`` for the banded coefficient matrix on node values ``v_full`` (length n)."""
+        """``B @ v`` for the banded coefficient matrix on node values ``v_full`` (length n);
+        the numpy reference of the compiled Newton product :func:`.reynolds.newton_matvec`."""
         b_m2, b_m1, b_0, b_p1 = b
         vm2 = np.concatenate(([0.0], v_full[:-3]))
         return b_m2 * vm2 + b_m1 * v_full[:-2] + b_0 * v_full[1:-1] + b_p1 * v_full[2:]
 
     def apply_s(self, s: tuple, v: np.ndarray) -> np.ndarray:
-        """``S @ v`` for the sparse part on interior values ``v`` (length n-2)."""
+        """``S @ v`` for the sparse part on interior values ``v`` (length n-2); the numpy
+        reference of the compiled Newton product :func:`.reynolds.newton_matvec`."""
         s_m2, s_m1, s_0, s_p1 = s
         out = s_0 * v
         out[1:] += s_m1[1:] * v[:-1]

@@ -158,3 +158,30 @@ def test_band_solve_rows_matches_dense_solve():
     B = rng.random((m, 9))
     X = _band_solve_rows(lu, piv, kl, ku, B.copy())
     assert np.allclose(X, np.linalg.solve(A, B), rtol=1e-9, atol=1e-9)
+
+
+def test_compiled_newton_matvec_matches_the_banded_pieces():
+    # reynolds.newton_matvec (the GMRES product of the Krylov Newton) against the numpy
+    # composition of the same Jacobian pieces: da v + beta (S v + B K v) + col_h0 v_H0, and
+    # the load-balance row dx sum(v) (paper 000 eqs. 7-11, discretised)
+    from thermobearing.ehl.reynolds import newton_matvec
+
+    rh = Rheology(law="barus", alpha_bar=5.0, compressible=True, hertz_pressure=1e9)
+    n = 300
+    prob = LineProblem(n, -3.0, 1.5, 1e-2, rh)
+    x = prob.x
+    p = np.sqrt(np.maximum(1 - x**2, 0.0))
+    p[0] = p[-1] = 0.0
+    st = prob.evaluate(p, 0.3)
+    rng = np.random.default_rng(7)
+    m = n - 2
+    beta, da, col = rng.random(m), rng.random(m), rng.random(m)
+    v = rng.standard_normal(m + 1)
+    full = np.zeros(n)
+    full[1:-1] = v[:m]
+    kv = prob.kernel.apply(full)
+    jr = prob.apply_s(st["s"], v[:m].copy()) + prob.apply_b(st["b"], kv)
+    ref = np.concatenate((da * v[:m] + beta * jr + col * v[m], [prob.dx * np.sum(v[:m])]))
+    out = newton_matvec(v, kv, np.asarray(st["s"]), np.asarray(st["b"]), beta, da, col,
+                        prob.dx)
+    assert np.allclose(out, ref, rtol=1e-13, atol=1e-13 * np.max(np.abs(ref)))
