@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from .ball_residual import N_BALL, N_GLOBAL, ball_residual_system
 
-__all__ = ["JacobianBlocks", "newton_block"]
+__all__ = ["JacobianBlocks", "chord_polish", "newton_block"]
 
 # largest Newton step per scaled unknown (positions in microns, spins / (omega_i d_m / D),
 # pocket force / F_s; ring displacement in microns, cage speed / omega_i)
@@ -456,3 +456,37 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         raise ConvergenceError("skidding.ball", nrm, f"no convergence in {max_iter} iterations",
                                {"cage_speed": G[2], "delta_a": G[0], "delta_r": G[1]})
     return X, G, nrm, it
+
+
+def chord_polish(system: ball_residual_system, X: np.ndarray, G: np.ndarray,
+                 blocks: JacobianBlocks) -> tuple[np.ndarray, np.ndarray, float, bool]:
+    """One more chord step from a converged state (X, G) with the Jacobian ``blocks`` (at
+    the scaling of ``system``): returns (X, G, residual norm, taken); the step is taken only
+    when it lowers the scaled residual norm. Used by :func:`~thermobearing.skidding.ball.
+    solve_ball` when the energy identity of a converged state is not yet tight enough."""
+    R, Gc, Gk, _ = system.evaluate(X, G)
+    nrm = _residual_norm(R, Gc, Gk)
+    if blocks is None or blocks.Z != system.Z:
+        return X, G, nrm, False
+    C = np.ascontiguousarray(blocks.C)
+    Ainv, Ainv_B, S, ok = _factor_blocks(np.ascontiguousarray(blocks.A),
+                                         np.ascontiguousarray(blocks.B), C,
+                                         np.ascontiguousarray(blocks.Dg))
+    if not ok:
+        return X, G, nrm, False
+    try:
+        Sinv = np.linalg.inv(S)
+    except np.linalg.LinAlgError:
+        return X, G, nrm, False
+    xs, gs = system.scales()
+    _, _, _, Xn, Gn, _ = _propose(Ainv, Ainv_B, C, np.ascontiguousarray(Sinv), R, Gc, Gk,
+                                  _CAP_X, _CAP_G, _NO_HIST, 0, xs, gs, X, G)
+    try:
+        Rn, Gcn, Gkn, _ = system.evaluate(Xn, Gn)
+    except (InputError, FloatingPointError, ValueError):
+        return X, G, nrm, False
+    nn = _residual_norm(Rn, Gcn, Gkn)
+    if math.isfinite(nn) and nn < nrm:
+        return Xn, Gn, nn, True
+    system.evaluate(X, G)          # the returned state is again the last one evaluated
+    return X, G, nrm, False
