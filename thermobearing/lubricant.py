@@ -114,6 +114,8 @@ def d341_inverse_z(z: ArrayLike) -> ArrayLike:
     the starting point and refined by Newton so that a D341 fit reproduces its data points
     exactly.
     """
+    if type(z) is float:
+        return _d341_inverse_z_scalar(z)
     zz = np.asarray(z, dtype=float)
     y = zz - 0.7
     nu = y - np.exp(-0.7487 - 3.295 * y + 0.6119 * y**2 - 0.3193 * y**3)
@@ -127,6 +129,21 @@ def d341_inverse_z(z: ArrayLike) -> ArrayLike:
         if np.all(np.abs(step) <= 1e-15 * np.maximum(1.0, np.abs(nu))):
             break
     return _out(nu)
+
+
+def _d341_inverse_z_scalar(z: float) -> float:
+    """:func:`d341_inverse_z` for one float: the same start and Newton iteration in plain
+    float arithmetic (the transient evaluates the oil viscosity at node temperatures one at
+    a time)."""
+    y = z - 0.7
+    nu = max(y - math.exp(-0.7487 - 3.295 * y + 0.6119 * y**2 - 0.3193 * y**3), 0.0)
+    for _ in range(30):
+        e = math.exp(-1.47 - 1.84 * nu - 0.51 * nu**2)
+        step = (nu + 0.7 + e - z) / (1.0 - (1.84 + 1.02 * nu) * e)
+        nu = nu - step
+        if abs(step) <= 1e-15 * max(1.0, abs(nu)):
+            break
+    return nu
 
 
 @VISCOSITY_TEMPERATURE.register(
@@ -155,6 +172,13 @@ def walther_kinematic_viscosity(T: ArrayLike, A: float, B: float) -> ArrayLike:
     Kinematic viscosity [m^2/s]. Never NaN: T <= 0 raises :class:`InputError`.
     """
     check_temperature("temperature", T)
+    if type(T) in (float, int, np.float64):
+        z = 10.0 ** (10.0 ** (A - B * math.log10(T)))
+        nu = d341_inverse_z(float(z))
+        if nu < 0.21:
+            warnings.warn(f"ASTM D341 used below 0.21 cSt ({nu:.3g} cSt): outside its range",
+                          ValidityWarning, stacklevel=2)
+        return nu * 1e-6
     t = np.asarray(T, dtype=float)
     log_log_z = A - B * np.log10(t)
     z = 10.0 ** (10.0**log_log_z)

@@ -385,3 +385,33 @@ def test_astm_d1250_law_requires_15C_reference():
     d["density"] = {"value": "870 kg/m**3", "temperature_law": "tait"}
     with pytest.raises(UnknownNameError, match="tait"):
         lubricant_from_dict(d)
+
+
+def test_d341_scalar_path_equals_the_array_path():
+    """The float fast path of the Walther law and its inverse gives the array path's values
+    (same start and Newton iteration) and the same range warning."""
+    import warnings as _w
+
+    from thermobearing.lubricant import (
+        d341_inverse_z,
+        d341_z,
+        walther_constants,
+        walther_kinematic_viscosity,
+    )
+
+    nus = np.array([0.25, 0.8, 2.0, 10.0, 46.0, 1e3, 1e5])
+    z = np.asarray(d341_z(nus))
+    back = np.array([d341_inverse_z(float(v)) for v in z])
+    assert np.allclose(back, d341_inverse_z(z), rtol=1e-13, atol=0)
+    assert np.allclose(back, nus, rtol=1e-12)
+    A, B = walther_constants(46e-6, 313.15, 6.8e-6, 373.15)
+    T = np.linspace(240.0, 480.0, 97)
+    scalar = np.array([walther_kinematic_viscosity(float(t), A, B) for t in T])
+    assert np.allclose(scalar, walther_kinematic_viscosity(T, A, B), rtol=1e-13, atol=0)
+    assert walther_kinematic_viscosity(313.15, A, B) == pytest.approx(46e-6, rel=1e-12)
+    with _w.catch_warnings(record=True) as caught:
+        _w.simplefilter("always")
+        walther_kinematic_viscosity(1500.0, A, B)  # 0.13 cSt
+    assert any("0.21 cSt" in str(w.message) for w in caught)
+    with pytest.raises(InputError, match="absolute zero"):
+        walther_kinematic_viscosity(-1.0, A, B)
