@@ -10,7 +10,11 @@ cases, added:
 * **skew with dynamic unbalance** (option ``unbalance_mass`` [kg] > 0): the mean rib heat of
   a roller from :func:`thermobearing.skidding.roller_dynamics.simulate_reduced` at the
   operating point (radial load, speed; paper 003's mechanism), times Z. This costs a few
-  seconds (quasi-static skidding solve + integration), so it is off by default.
+  seconds (quasi-static skidding solve + integration), so it is off by default. Caveat
+  (validation case ``paper003_pv_slip_trends``, reason 10): the reduced model runs on the
+  quasi-static spins, which skid ~3x more than the spins of the coupled all-roller + cage
+  integration (:mod:`thermobearing.skidding.roller_dynamics_coupled`); its time-mean rib PV
+  is ~30 % below the coupled model's at the paper's base case.
 
 The lubricant drag F_G of eq. 14 acts on every face even without contact; it is included
 (oil/air mixture viscosity: option ``oil_fraction``, default 0.05) with the face's sliding
