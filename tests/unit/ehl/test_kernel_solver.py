@@ -185,3 +185,24 @@ def test_compiled_newton_matvec_matches_the_banded_pieces():
     out = newton_matvec(v, kv, np.asarray(st["s"]), np.asarray(st["b"]), beta, da, col,
                         prob.dx)
     assert np.allclose(out, ref, rtol=1e-13, atol=1e-13 * np.max(np.abs(ref)))
+
+
+def test_band_solve_vec_matches_lapack_with_pivoting():
+    # the compiled single-right-hand-side banded solve of the preconditioner application
+    # against LAPACK dgbtrs with the same dgbtrf factors (random band, rows pivoted)
+    from scipy.linalg import lapack
+
+    from thermobearing.ehl.precond import _band_solve_vec
+
+    rng = np.random.default_rng(4)
+    m, kl, ku = 257, 9, 6
+    ab = np.zeros((2 * kl + ku + 1, m))
+    for i in range(m):
+        for j in range(max(0, i - kl), min(m, i + ku + 1)):
+            ab[kl + ku + i - j, j] = rng.standard_normal()
+    lu, piv, info = lapack.dgbtrf(ab, kl, ku)
+    assert info == 0 and np.any(piv != np.arange(m))
+    b = rng.standard_normal(m)
+    ref, info = lapack.dgbtrs(lu, kl, ku, b, piv)
+    assert info == 0
+    assert np.allclose(_band_solve_vec(lu, piv, kl, ku, b), ref, rtol=1e-12, atol=1e-12)
