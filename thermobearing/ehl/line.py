@@ -26,7 +26,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ConvergenceError, InputError, check_positive, check_range
-from .solver import LineProblem, NewtonReport, Rheology, newton_solve, time_march
+from .solver import (
+    LineProblem,
+    NewtonReport,
+    Rheology,
+    newton_solve,
+    smooth_spike,
+    time_march,
+)
 
 #: Range of the Moes parameters over which the solver is tested (BM-6 and unit tests).
 M_RANGE = (0.002, 3000.0)
@@ -49,6 +56,9 @@ DENSE_LEVEL_MAX = 384
 FINE_TOL = 1e-7
 COARSE_TOL = 1e-5
 FEED_TOL = 1e-3
+#: Start every level above the first from the interpolated solution smoothed locally at its
+#: largest residual (:func:`thermobearing.ehl.solver.smooth_spike`).
+SMOOTH_SPIKE = True
 _POINTER = (
     "use a closed-form film model instead (thermobearing.film: moes_line_central, "
     "dowson_higginson_minimum, pan_hamrock_minimum)"
@@ -332,7 +342,7 @@ def solve_dimensionless(
 
     hc_levels: list[float] = []
     hm_levels: list[float] = []
-    its = lin = 0
+    its = lin = local = 0
     P = H0 = X = None
     state = {"M": M, "L": L}
     try:
@@ -362,9 +372,19 @@ def solve_dimensionless(
                         raise
             else:
                 Pg = np.interp(prob.x, X, P)
+                Ps = Pg
+                if SMOOTH_SPIKE:
+                    Ps, n_loc = smooth_spike(prob, Pg, H0)
+                    local += n_loc
                 try:
                     try:
-                        P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=tol_k)
+                        try:
+                            P, H0, rep = newton_solve(prob, Ps, H0, linear=lin_k, tol=tol_k)
+                        except ConvergenceError:
+                            if Ps is Pg:
+                                raise
+                            # the smoothing is a shortcut: retry from the interpolated start
+                            P, H0, rep = newton_solve(prob, Pg, H0, linear=lin_k, tol=tol_k)
                     except ConvergenceError:
                         P, H0, rep = time_march(prob, Pg, H0, linear=lin_k, dt0=0.5,
                                                 tol=tol_k)
@@ -375,7 +395,7 @@ def solve_dimensionless(
                     start = levels[0]
                     if coarse_n is None and initial is None and 2 * start <= n // 2:
                         levels = _levels(n, 2 * start)
-                        k, its, lin, X = 0, 0, 0, None
+                        k, its, lin, local, X = 0, 0, 0, 0, None
                         hc_levels.clear()
                         hm_levels.clear()
                         continue
@@ -416,7 +436,7 @@ def solve_dimensionless(
         max_pressure=float(P.max()) * pH, hertz_half_width=b, hertz_pressure=pH,
         M=M, L=L, n=n, dx=prob.dx * b, error_estimate=err_est,
         central_film_extrapolated=hc_ex * scale_h, entrainment_speed=state.get("u", 0.0),
-        reduced_radius=R, report=NewtonReport(its, rep.residual, lin, True), seconds=seconds,
+        reduced_radius=R, report=NewtonReport(its, rep.residual, lin, True, local), seconds=seconds,
         X=X, P=P, H=H,
     )
 

@@ -217,3 +217,25 @@ def newton_matvec(v, Kv, s, b, beta, da, col_h0, dx):
         total += v[r]
     out[m] = dx * total
     return out
+
+
+@numba.njit(cache=True)
+def window_jacobian(s, b, K, r0, r1):
+    """Block ``dR/dP`` of the interior rows and columns ``r0 <= r, c < r1`` (the same entries
+    as :func:`dense_jacobian`, only the window; for the local smoothing of the exit spike,
+    :func:`thermobearing.ehl.solver.smooth_spike`)."""
+    w = r1 - r0
+    J = np.zeros((w, w))
+    for r in range(r0, r1):
+        for k in range(4):
+            q = r + k - 1  # node of film offset k - 2
+            bk = b[k, r]
+            if q < 0 or bk == 0.0:
+                continue
+            for c in range(r0, r1):
+                J[r - r0, c - r0] += bk * K[abs(q - c - 1)]
+        for k in range(4):
+            c = r + k - 2
+            if r0 <= c < r1:
+                J[r - r0, c - r0] += s[k, r]
+    return J
