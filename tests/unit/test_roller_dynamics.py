@@ -204,3 +204,23 @@ def test_cap_end_face_in_dynamics(base):
     assert out["cap"].rib_contact_fraction > 0 and out["sphere"].rib_contact_fraction > 0
     assert (out["cap"].pv_contact_left + out["cap"].pv_contact_right
             > 3.0 * (out["sphere"].pv_contact_left + out["sphere"].pv_contact_right))
+
+
+def test_lagged_spins_limits(base):
+    # J_p w' = -k (w - w_qs(phi)) along the orbit: a stiff spin follows w_qs; a uniformly
+    # soft one settles near the orbit mean of w_qs (the periodic solution of the linear ODE
+    # with k << J_p omega_c / (2 pi) tends to the k-weighted mean)
+    _, _, m = base
+    stiff = dataclasses.replace(m, spin_k=np.full(m.spin.shape, 1e3))
+    assert np.allclose(rd.lagged_spins(stiff), m.spin, rtol=1e-9)
+    # J_p/k = 20 orbits: converged after 2000 orbits, ripple ~ spread / 40 ~ 2 %
+    k_soft = m.polar_inertia / (20 * 2 * math.pi / m.cage_speed)
+    soft = dataclasses.replace(m, spin_k=np.full(m.spin.shape, k_soft))
+    w = rd.lagged_spins(soft, orbits=2000, n_grid=240)
+    assert np.allclose(w, np.mean(m.spin), rtol=0.03)
+    # base case: the unloaded rollers keep much of their load-zone spin (J_p/k ~ 13 ms vs
+    # 3.2 ms in the unloaded zone), never above the largest quasi-static spin
+    lag = rd.lagged_spins(m)
+    unloaded = m.inner_load == 0
+    assert np.all(lag[unloaded] > m.spin[unloaded] + 3000.0)
+    assert np.max(lag) <= np.max(m.spin) + 1e-6

@@ -38,7 +38,8 @@ preset is taken to include it; its axial offset would only tilt the roller).
 * roller spins: ``spin="skidding"`` (default) starts from the quasi-static solver, whose
   unloaded rollers skid (about half the rolling speed at the base case), then couples;
   ``spin="rolling"`` puts every roller at its pure-rolling spin, uncoupled (a sensitivity
-  switch, see the case's SOURCE.md).
+  switch, see the case's SOURCE.md); ``spin="lagged"`` takes the skidding (coupled) spins
+  through the spin inertia along the orbit (:func:`lagged_spins`).
 * spin stiffness k_omega (the full model's ``spin_dof``): -dT/d omega_r of the raceway and
   pocket moment T of the same quasi-static traction model (:func:`race_spin_stiffness`):
   ~6e-5 N m s for the loaded and ~5e-7 N m s for the unloaded rollers at the base case.
@@ -279,7 +280,9 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     ``spin``: "skidding" (the quasi-static solver's roller spins: unloaded rollers skid) or
     "rolling" (every roller at the pure-rolling spin (omega_i - omega_c) d_i / D_w on the
     solver's cage speed) -- a sensitivity switch: the rib sliding speed of eq. 24 depends
-    on it strongly (see the validation case's SOURCE.md).
+    on it strongly (see the validation case's SOURCE.md) -- or "lagged" (the skidding
+    spins, coupled, then carried through the spin inertia along the orbit,
+    :func:`lagged_spins`).
     ``quasi_static``: a previous :class:`~thermobearing.skidding.roller.RollerSkiddingResult`
     of the same speed/load/temperature (skips the solve; maps reuse it).
     ``coupling``: "rib" (default with ``spin="skidding"``: the mean rib moments and forces
@@ -316,8 +319,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     if spin == "rolling":
         spins = np.full(spins.shape, (speed - float(qs.cage_speed))
                         * geom.inner_raceway_diameter / geom.roller_diameter)
-    elif spin != "skidding":
-        raise InputError("spin", spin, ("skidding", "rolling"))
+    elif spin not in ("skidding", "lagged"):
+        raise InputError("spin", spin, ("skidding", "rolling", "lagged"))
     if coupling not in ("rib", "none"):
         raise InputError("coupling", coupling, ("rib", "none"))
     eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
@@ -342,12 +345,16 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_dof=bool(pocket_dof),
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
-    if coupling == "rib" and spin == "skidding" and unbalance_mass > 0.0:
-        return couple_spins(model, bearing, lubricant)
-    from .roller import build_model as race_model
+    if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:
+        model = couple_spins(model, bearing, lubricant)
+    else:
+        from .roller import build_model as race_model
 
-    k = race_spin_stiffness(race_model(bearing, lubricant, temperature), model)
-    return dataclasses.replace(model, spin_k=k)
+        k = race_spin_stiffness(race_model(bearing, lubricant, temperature), model)
+        model = dataclasses.replace(model, spin_k=k)
+    if spin == "lagged":
+        model = dataclasses.replace(model, spin=lagged_spins(model))
+    return model
 
 
 # parameter vector of the jitted right-hand side: the rib geometry vector
@@ -751,6 +758,7 @@ def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: floa
 from .roller_dynamics_coupling import (  # noqa: E402
     _race_eval,
     couple_spins,
+    lagged_spins,
     race_spin_stiffness,
 )
 from .roller_dynamics_map import MAP_PARAMETERS, PAPER003_BASE, pv_slip_map  # noqa: E402
@@ -764,6 +772,7 @@ __all__ = [
     "build_model",
     "chamfer_unbalance",
     "couple_spins",
+    "lagged_spins",
     "load_states",
     "pv_slip_map",
     "race_spin_stiffness",

@@ -52,6 +52,43 @@ def _race_eval_at(rm: Any, m: DynamicsModel, spins: np.ndarray, wc: float,
                     (0.0, 0.0))
 
 
+def lagged_spins(m: DynamicsModel, n_grid: int = 2400, orbits: int = 6) -> np.ndarray:
+    """Roller spins [rad/s] at the tabulated azimuths of ``m`` with the spin inertia along
+    the orbit (paper 003 eq. 18 line 4 linearised about the quasi-static balance):
+
+        J_p d omega / dt = -k(phi) (omega - omega_qs(phi)),   d phi / dt = omega_c,
+
+    k(phi) the spin stiffness of the quasi-static traction model (``m.spin_k``) and
+    omega_qs(phi) the (coupled) quasi-static spin of the roller sector nearest to phi
+    (piecewise constant), integrated exactly (exponential per step of 2 pi / ``n_grid``)
+    over ``orbits`` orbits to the periodic solution. An unloaded roller relaxes with
+    J_p/k ~ 13 ms, longer than its 3.2 ms in the unloaded zone at the paper's base case, so
+    it keeps most of the spin it had in the load zone. Cheap stand-in for the coupled
+    integration's spins (:mod:`~thermobearing.skidding.roller_dynamics_coupled`); it keeps
+    the quasi-static cage speed and ignores the rib/bar moments' time structure.
+    """
+    if m.spin_k is None:
+        raise ConvergenceError("roller_dynamics.lagged_spins", float("nan"),
+                               "the model carries no spin stiffness (build_model sets it)",
+                               {})
+    az = m.azimuth
+    phi = np.linspace(0.0, 2.0 * np.pi, n_grid, endpoint=False)
+    dist = np.abs((phi[:, None] - az[None, :] + np.pi) % (2.0 * np.pi) - np.pi)
+    sector = np.argmin(dist, axis=1)
+    decay = np.exp(-m.spin_k[sector] * (2.0 * np.pi / n_grid / m.cage_speed)
+                   / m.polar_inertia)
+    target = m.spin[sector]
+    w = float(target[0])
+    series = np.empty(n_grid)
+    for _ in range(orbits):
+        for i in range(n_grid):
+            w = target[i] + (w - target[i]) * decay[i]
+            series[i] = w
+    idx = np.argmin(np.abs((az[:, None] - phi[None, :] + np.pi) % (2.0 * np.pi) - np.pi),
+                    axis=1)
+    return series[idx]
+
+
 def race_spin_stiffness(rm: Any, m: DynamicsModel, spins: np.ndarray | None = None,
                         cage_speed: float | None = None) -> np.ndarray:
     """k_j = -dT_j/d omega_r [N m s] of the raceway + pocket moment T_j on every roller (the

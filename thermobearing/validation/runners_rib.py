@@ -219,4 +219,16 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     out["reduced_vs_one_roller_pv"] = ((red.pv_left + red.pv_right)
                                        / (full.pv_left + full.pv_right))
     out["reduced_vs_one_roller_slip"] = red.slip_speed / full.slip_speed
+    # reduced model on lagged spins (spin inertia along the orbit, rd.lagged_spins) against
+    # the coupled model
+    lag = []
+    for mass in (m_lo, m_hi):
+        mm = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
+                            rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
+                            quasi_static=cache.get(base_key), rib={"slide": slide},
+                            pocket_dof=pocket_dof, spin="lagged")
+        lag.append(rd.simulate_reduced(mm))
+    out["lagged_vs_full_pv"] = (lag[1].pv_left + lag[1].pv_right) / _pv(cpl)
+    out["lagged_vs_full_slip"] = lag[1].slip_speed / cpl["slip_speed"]
+    out["lagged_slip_ratio_unbalance_high_vs_low"] = lag[1].slip_speed / lag[0].slip_speed
     return out
