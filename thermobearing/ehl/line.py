@@ -3,8 +3,10 @@
 The discrete problem and the Newton solvers are in :mod:`thermobearing.ehl.solver`; this module
 picks the domain and grids, runs nested iteration (a robust implicit time march to the steady
 state on a coarse grid, then Newton on finer grids -- n/2 and n, below n/2 every other power
-of two -- from the interpolated solution), estimates the discretisation error from the last two
-grids, and returns dimensional profiles, films, pressures and the traction split of paper 000 eq. 5.
+of two -- from the interpolated solution, smoothed locally at the exit spike first,
+:func:`thermobearing.ehl.solver.smooth_spike`), estimates the discretisation error from the
+last two grids, and returns dimensional profiles, films, pressures and the traction split of
+paper 000 eq. 5.
 
 Conventions (contract): E' = 2/((1-v1^2)/E1 + (1-v2^2)/E2); entrainment speed
 ``u_m = (u1 + u2)/2``; slide-to-roll ratio ``(u1 - u2)/u_m``. Dimensionless groups (Hamrock):
