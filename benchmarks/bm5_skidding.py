@@ -14,7 +14,10 @@ pays their compilation (empty cache) or loading (cached); that cost is measured 
 subprocesses and kept out of the per-point times (the map warms the kernels up first).
 
 Usage: python benchmarks/bm5_skidding.py [--quick] [--nmap N] [--z 8,16,32] [--json] [--out DIR]
-       [--no-first-call]
+       [--no-first-call] [--anchor-points N] [--anchor-repeat N]
+
+The anchor times newton_block and root(hybr) ``--anchor-repeat`` times per point (least CPU
+time kept; default 3) and least_squares once.
 """
 
 from __future__ import annotations
@@ -80,8 +83,13 @@ def run_map(Z, speeds, loads, temperature, warm):
     return rows
 
 
-def run_scipy(Z, points, temperature):
-    """root(hybr) and least_squares(trf) on the identical residual from the same cold start."""
+def run_scipy(Z, points, temperature, repeat=3):
+    """root(hybr) and least_squares(trf) on the identical residual from the same cold start.
+
+    newton_block and root(hybr) are timed ``repeat`` times each (a fresh residual system every
+    time, so no memo is shared) and the least CPU time is kept: single shots of these 4 points
+    spread the printed hybr ratio over 1.8-3.5x on the shared machine (session 5);
+    least_squares (seconds per point) runs once."""
     from scipy.optimize import least_squares, root
 
     from thermobearing.errors import ConvergenceError
@@ -96,27 +104,36 @@ def run_scipy(Z, points, temperature):
         w = n * RPM
         b, models = _setup(Z, temperature, w)
         X0, G0, _ = race_control_guess(b, w, 1000.0, fa, Z)
-        sysm = ball_residual_system(b, models, w, 1000.0, fa, Z)
         y0 = np.zeros(Z * 6 + 3)
 
-        def f(y, sysm=sysm, X0=X0, G0=G0):
-            return sysm.full_residual(y, X0, G0)
+        def residual(sysm, X0=X0, G0=G0):
+            return lambda y: sysm.full_residual(y, X0, G0)
 
         rec = {}
-        t0 = time.process_time()
-        try:
-            _, _, nrm, it = newton_block(sysm, X0, G0)
-            rec["newton"] = (True, time.process_time() - t0, nrm)
-        except ConvergenceError as err:
-            rec["newton"] = (False, time.process_time() - t0, err.residual)
-        t0 = time.process_time()
-        try:
-            s = root(f, y0, method="hybr", options={"xtol": 1e-12, "maxfev": 200 * (Z * 6 + 3)})
-            nrm = float(np.linalg.norm(f(s.x)))
-            rec["root_hybr"] = (bool(nrm < 1e-7), time.process_time() - t0, nrm)
-        except Exception as err:  # noqa: BLE001 - count any failure of the anchor
-            rec["root_hybr"] = (False, time.process_time() - t0, float("nan"))
-            del err
+        for _ in range(max(1, repeat)):
+            sysm = ball_residual_system(b, models, w, 1000.0, fa, Z)
+            t0 = time.process_time()
+            try:
+                _, _, nrm, it = newton_block(sysm, X0, G0)
+                got = (True, time.process_time() - t0, nrm)
+            except ConvergenceError as err:
+                got = (False, time.process_time() - t0, err.residual)
+            if "newton" not in rec or got[1] < rec["newton"][1]:
+                rec["newton"] = got
+        for _ in range(max(1, repeat)):
+            f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
+            t0 = time.process_time()
+            try:
+                s = root(f, y0, method="hybr",
+                         options={"xtol": 1e-12, "maxfev": 200 * (Z * 6 + 3)})
+                nrm = float(np.linalg.norm(f(s.x)))
+                got = (bool(nrm < 1e-7), time.process_time() - t0, nrm)
+            except Exception as err:  # noqa: BLE001 - count any failure of the anchor
+                got = (False, time.process_time() - t0, float("nan"))
+                del err
+            if "root_hybr" not in rec or got[1] < rec["root_hybr"][1]:
+                rec["root_hybr"] = got
+        f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
         t0 = time.process_time()
         try:
             s = least_squares(f, y0, method="trf", xtol=1e-12, ftol=1e-14, gtol=1e-14,
@@ -202,6 +219,8 @@ def main(argv=None) -> int:
                     help="map size n x n (default 20, 5 with --quick)")
     ap.add_argument("--z", default=None, help="ball counts, e.g. 8,16,32 (default 8,16,32; "
                     "16 with --quick)")
+    ap.add_argument("--anchor-repeat", type=int, default=3,
+                    help="timings of newton_block and root(hybr) per anchor point, least kept")
     ap.add_argument("--anchor-points", type=int, default=None,
                     help="points of the scipy anchor subset (default all, 4 with --quick)")
     ap.add_argument("--no-first-call", action="store_true",
@@ -274,7 +293,7 @@ def main(argv=None) -> int:
         pts = pts[:4]
     anchor_rows = []
     for Z in [z for z in zs if z <= 16]:
-        res = run_scipy(Z, pts, temps["hot_oil"])
+        res = run_scipy(Z, pts, temps["hot_oil"], repeat=args.anchor_repeat)
         for meth in ("newton", "root_hybr", "least_squares_trf"):
             t = [rec[meth][1] for _, rec in res]
             f = sum(not rec[meth][0] for _, rec in res)
@@ -314,7 +333,8 @@ def main(argv=None) -> int:
             print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.1f} {its:6.1f} {nev:6.1f}")
         print("\n(evals: residual evaluations per point; a structured Jacobian is 9 of them,"
               " evaluated as one batch)")
-        print("\nanchor subset (cold start, identical scaled residual):")
+        print(f"\nanchor subset (cold start, identical scaled residual; newton and hybr: least of "
+              f"{args.anchor_repeat} timings):")
         for z, m, t, f, n in anchor_rows:
             print(f"  Z={z:2d} {m:20s} {1e3 * t:9.1f} ms/pt  failures {f}/{n}"
                   f"  time ratio vs newton_block {t / base[z]:6.1f}x")
