@@ -517,16 +517,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         R = np.empty((n_states, Z, N_BALL))
         Gc = np.empty((n_states, Z, N_GLOBAL))
         reuse, tr_ref = self._reuse_flags(Xb, Gb)
-        done = False
-        if self._fused:
-            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
-                                                                             0.0, 0.0)
-            done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
-                                        self._film_params, self._law_id, self._law_params,
-                                        ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
-                                        reuse, tr_ref, geo, film, tr, pocket, R, Gc)
-        if not done:
-            self._staged(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc)
+        self._kernels(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc)
         G0 = np.empty((n_states, N_GLOBAL))
         G0[:, 0] = self.Fa / self.F_s
         G0[:, 1] = self.Fr / self.F_s
@@ -535,6 +526,19 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         R = R.reshape(batch + (Z, N_BALL))
         Gc = Gc.reshape(batch + (Z, N_GLOBAL))
         return R, Gc, G0, None
+
+    def _kernels(self, Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc):
+        """Fill the output arrays: the fused compiled kernel when the traction law and film
+        have one, else the staged path. Returns the film array the residual used."""
+        if self._fused:
+            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
+                                                                             0.0, 0.0)
+            if _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
+                                    self._film_params, self._law_id, self._law_params,
+                                    ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
+                                    reuse, tr_ref, geo, film, tr, pocket, R, Gc):
+                return film
+        return self._staged(Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc)
 
     def _evaluate_one(self, X: np.ndarray, G: np.ndarray, details: bool):
         """:meth:`evaluate` of a single state (Z, 6), (3,): the Newton iterations' call, with
@@ -573,18 +577,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         pocket = np.empty((1, Z, N_POCKET))
         R = np.empty((1, Z, N_BALL))
         Gc = np.empty((1, Z, N_GLOBAL))
-        done = False
-        if self._fused:
-            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else (_EMPTY, _EMPTY,
-                                                                             0.0, 0.0)
-            done = _ball_residual_fused(Xb, Gb, self._cpsi, self._arc, self._c,
-                                        self._film_params, self._law_id, self._law_params,
-                                        ln_tab, slope_tab, inv_dp, p_max, *self._rule, Fd_b,
-                                        _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket, R, Gc)
-        film_out = film
-        if not done:
-            film_out = self._staged(Xb, Gb, Fd_b, _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket,
-                                    R, Gc)
+        film_out = self._kernels(Xb, Gb, Fd_b, _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket,
+                                 R, Gc)
         G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s,
                        -(torques[0] + torques[1]) / self.T_s])
         R = R.reshape(Z, N_BALL)
