@@ -124,16 +124,20 @@ def test_kinematics_scene_runs_end_to_end_with_tehl_film():
         assert 0.2e-6 < h[j] < 1.0e-6  # closed form: 2.3-2.5 um at this contact
 
 
-def test_contact_forces_thermal_film_and_gross_sliding_fallback():
+def _d1842926_inner_contact():
+    """Paper 001's bearing and oil at 30 degC: (bearing, lubricant, TEHL film model, inner
+    R_x [m], effective length [m], E' [Pa], T [K], eta0 [Pa s], alpha [1/Pa])."""
     bearing = load_bearing("D1842926")
     lub = load_lubricant("OIL_4109")
-    model = roller_film_model(bearing, lub, **FAST)
-    rx, _ = bearing.curvature("inner")
-    length = bearing.roller_effective_length
-    e_p = bearing.effective_modulus
     T = 303.15
-    eta0 = float(lub.dynamic_viscosity(T))
-    alpha = float(lub.pressure_viscosity_coefficient(T))
+    return (bearing, lub, roller_film_model(bearing, lub, **FAST),
+            bearing.curvature("inner")[0], bearing.roller_effective_length,
+            bearing.effective_modulus, T, float(lub.dynamic_viscosity(T)),
+            float(lub.pressure_viscosity_coefficient(T)))
+
+
+def test_contact_forces_thermal_film_and_gross_sliding_fallback():
+    bearing, lub, model, rx, length, e_p, T, eta0, alpha = _d1842926_inner_contact()
     from thermobearing.skidding.roller import default_traction_law
     from thermobearing.skidding.roller_fluid import closed_form_contact_forces
 
@@ -217,15 +221,7 @@ def test_tehl_drag_shears_light_rollers_at_the_film_pressure():
     from thermobearing.skidding.roller import default_traction_law
     from thermobearing.skidding.roller_pressure import rigid_peak_pressure
 
-    bearing = load_bearing("D1842926")
-    lub = load_lubricant("OIL_4109")
-    model = roller_film_model(bearing, lub, **FAST)
-    rx, _ = bearing.curvature("inner")
-    length = bearing.roller_effective_length
-    e_p = bearing.effective_modulus
-    T = 303.15
-    eta0 = float(lub.dynamic_viscosity(T))
-    alpha = float(lub.pressure_viscosity_coefficient(T))
+    bearing, lub, model, rx, length, e_p, T, eta0, alpha = _d1842926_inner_contact()
     law = default_traction_law(lub)
     q = np.array([100.0, 4500.0])
     u_race = np.array([53.3, 53.3])
