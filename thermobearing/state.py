@@ -37,6 +37,7 @@ over the race there at ``V + Omega x r``.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields, replace
@@ -137,6 +138,14 @@ _NON_NEGATIVE = frozenset({"normal_load", "semi_major", "semi_minor", "max_press
 _POSITIVE = frozenset({"temperature"})
 
 
+@functools.lru_cache(maxsize=64)
+def _field_masks(names: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Row masks (radii, >= 0, > 0) of a contact-set block with these fields, in order."""
+    return (np.array([name in _RADII for name in names], dtype=bool),
+            np.array([name in _NON_NEGATIVE for name in names], dtype=bool),
+            np.array([name in _POSITIVE for name in names], dtype=bool))
+
+
 @dataclass(frozen=True)
 class ContactSet:
     """The contacts of all elements with one raceway (arrays of shape ``(Z,)``).
@@ -202,25 +211,25 @@ class ContactSet:
         if len(n) != 1:
             raise InputError(f"contacts[{self.race}].normal_load", self.normal_load,
                              "a 1-D array (one entry per element)")
-        names = [name for name in _CONTACT_ARRAYS + _OPTIONAL_ARRAYS
-                 if getattr(self, name) is not None]
+        names = tuple(name for name in _CONTACT_ARRAYS + _OPTIONAL_ARRAYS
+                      if getattr(self, name) is not None)
         # one block of all fields, checked in a few vectorised operations; the per-field
         # checks below run only when the block fails, to name the offending field
         block = np.empty((len(names), n[0]))
         for k, name in enumerate(names):
             value = getattr(self, name)
             try:
-                block[k] = np.broadcast_to(np.asarray(value, dtype=float), n)
-            except ValueError:
+                if (value.ndim if isinstance(value, np.ndarray) else np.ndim(value)) > 1:
+                    raise ValueError
+                block[k] = value  # broadcasts a scalar or a (1,) array; refuses other shapes
+            except (ValueError, TypeError):
                 raise InputError(f"contacts[{self.race}].{name}", value,
                                  f"an array broadcastable to shape {n}") from None
-        radii = np.array([name in _RADII for name in names])
-        non_negative = np.array([name in _NON_NEGATIVE for name in names])
-        positive = np.array([name in _POSITIVE for name in names])
-        if not (np.all(np.isfinite(block[~radii]))
-                and np.all(block[radii] > 0)  # NaN compares False: refused too
-                and np.all(block[non_negative] >= 0) and np.all(block[positive] > 0)):
-            self._name_the_bad_field(names, block)
+        radii, non_negative, positive = _field_masks(names)
+        if not (np.isfinite(block[~radii]).all()
+                and (block[radii] > 0).all()  # NaN compares False: refused too
+                and (block[non_negative] >= 0).all() and (block[positive] > 0).all()):
+            self._name_the_bad_field(list(names), block)
         block.flags.writeable = False
         for k, name in enumerate(names):
             object.__setattr__(self, name, block[k])

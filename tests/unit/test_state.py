@@ -139,3 +139,18 @@ def test_contact_set_fields_read_only_and_infinite_radii_allowed():
         cs.sliding_speed[0] = 1.0
     moved = cs.with_(sliding_speed=np.array([0.1, 0.2, 0.3, 0.4]))
     assert moved.sliding_speed[3] == 0.4 and cs.sliding_speed[3] == 0.0
+
+
+@pytest.mark.parametrize("bad", [np.ones(3), np.ones((1, 4)), np.ones((4, 4)), "fast", [1.0, 2.0]])
+def test_contact_set_refuses_a_field_of_the_wrong_shape(bad):
+    """A field that does not broadcast to (Z,) is named, with the shape allowed."""
+    with pytest.raises(InputError, match=r"(?s)contacts\[inner\]\.sliding_speed.*shape \(4,\)"):
+        _cs(sliding_speed=bad)
+
+
+def test_contact_set_accepts_scalars_lists_and_length_one_arrays():
+    cs = _cs(sliding_speed=np.array([0.5]), spin_speed=[1.0, 2.0, 3.0, 4.0], roll_speed=3)
+    np.testing.assert_array_equal(cs.sliding_speed, np.full(4, 0.5))
+    np.testing.assert_array_equal(cs.spin_speed, [1.0, 2.0, 3.0, 4.0])
+    np.testing.assert_array_equal(cs.roll_speed, np.full(4, 3.0))
+    assert not cs.spin_speed.flags.writeable
