@@ -215,7 +215,8 @@ def solve_roller(
     tol : tolerance on the residual norm scaled by the largest inner load [-].
     **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
         limiting_shear_coefficient, traction_law, film_model, drag_model, pocket_clearance,
-        cage_drag_torque, ring_support, unloaded_zone, fluid_shear_modulus, film_pressure).
+        cage_drag_torque, ring_support, unloaded_zone, fluid_shear_modulus, film_pressure,
+        traction_curve).
 
     Returns
     -------

@@ -553,3 +553,49 @@ def pocket_forces(
 def closed_form_drag_model() -> Callable[..., LineContactForces]:
     """Closed-form line-contact fluid forces (paper 000 eqs. 5, 33-35 with a closed-form film)."""
     return closed_form_contact_forces
+
+
+def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
+                         ) -> Callable[..., LineContactForces]:
+    """A drag model whose Hertz-zone traction is a traction-coefficient curve times the load.
+
+    ``F_hz = mu(s) Q`` with s = V/u_e the slide-to-roll ratio (V = u_race - u_roller,
+    u_e = |u_race + u_roller|/2) and ``mu`` from ``curve.traction(s, Q, u_e, R_x, E', T)``
+    (:mod:`thermobearing.traction_curve`: a disk-machine fit of the oil, the law of
+    quasi-dynamic codes such as paper 001's school, Yan et al. 2025 eq. 15). Everything else
+    (film, inlet/outlet Newtonian Couette shear, Poiseuille and rolling forces, Hertz b and
+    p_H) comes from ``base`` (signature of :func:`closed_form_contact_forces`) with a zero
+    Hertz-zone shear. ``dtraction_dslide`` adds ``Q dmu/ds / u_e`` (at fixed u_e).
+    ``temperature`` is passed to the curve as the oil (inlet) temperature [K].
+    """
+    from .roller_maxwell import _NoHertzShear
+
+    null_law = _NoHertzShear()
+
+    @functools.wraps(base)
+    def forces(load: Any, length: float, radius: float, effective_modulus: float,
+               u_race: Any, u_roller: Any, *, traction_law: Any, temperature: float,
+               **kw: Any) -> LineContactForces:
+        side = base(load, length, radius, effective_modulus, u_race, u_roller,
+                    traction_law=null_law, temperature=temperature, **kw)
+        q = np.asarray(load, dtype=float)
+        ur = np.asarray(u_race, dtype=float)
+        uro = np.asarray(u_roller, dtype=float)
+        q, ur, uro = np.broadcast_arrays(q, ur, uro)
+        ue = np.maximum(0.5 * np.abs(ur + uro), 1e-6)
+        loaded = q > 0.0
+        f_hz = np.zeros(q.shape)
+        df_hz = np.zeros(q.shape)
+        if np.any(loaded):
+            s = (ur[loaded] - uro[loaded]) / ue[loaded]
+            mu, dmu = curve.traction(s, q[loaded], ue[loaded], radius, effective_modulus,
+                                     temperature)
+            f_hz[loaded] = mu * q[loaded]
+            df_hz[loaded] = dmu * q[loaded] / ue[loaded]
+        return LineContactForces(
+            traction=side.traction + f_hz, dtraction_dslide=side.dtraction_dslide + df_hz,
+            poiseuille=side.poiseuille, rolling_force=side.rolling_force,
+            entrainment_sign=side.entrainment_sign, film_thickness=side.film_thickness,
+            half_width=side.half_width, max_pressure=side.max_pressure, hertz_traction=f_hz)
+
+    return forces

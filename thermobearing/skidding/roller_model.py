@@ -82,6 +82,7 @@ class RollerModel:
     ring_support: str = "contacts"
     fluid_shear_modulus: float | None = None
     film_pressure: str = "hertz"
+    traction_curve: Any = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -147,6 +148,7 @@ def build_model(
     ring_support: str = "contacts",
     fluid_shear_modulus: float | None = None,
     film_pressure: str = "hertz",
+    traction_curve: Any = None,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -204,6 +206,16 @@ def build_model(
         the rigid regime (Moes M < ~1, paper 000's light loads) is not sheared at the
         viscosity of a Hertz pressure it does not have
         (:mod:`thermobearing.skidding.roller_pressure`).
+    traction_curve : None (default): the Hertz-zone shear follows the traction law (a film
+        rheology at the local pressure). Given (a name in
+        :data:`thermobearing.traction_curve.TRACTION_CURVES`, optionally written
+        ``"curve:<name>"``, or a curve object with ``traction(s, Q, u_e, R, E', T)``): the
+        Hertz-zone traction of every raceway contact is mu(s) Q, a traction-coefficient curve
+        of the slide-to-roll ratio times the contact load (the law of quasi-dynamic codes of
+        paper 001's school; :func:`~thermobearing.skidding.roller_fluid.curve_contact_forces`);
+        the inlet/outlet Couette, Poiseuille and rolling forces stay those of the drag model.
+        The traction law then serves only the inlet/outlet (Newtonian) shear. Closed-form drag
+        only, not with ``fluid_shear_modulus`` or ``film_pressure``.
     """
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
@@ -255,6 +267,18 @@ def build_model(
                          (film_pressure, fluid_shear_modulus),
                          f"'hertz' and None with drag_model={drag_model!r} (the Hertz-zone "
                          "options apply to the closed-form drag only)")
+    if traction_curve is not None:
+        from ..traction_curve import get_traction_curve
+        from .roller_fluid import curve_contact_forces
+
+        if drag_model != "closed_form" or fluid_shear_modulus is not None \
+                or film_pressure != "hertz":
+            raise InputError("traction_curve", traction_curve,
+                             "None with drag_model other than 'closed_form', "
+                             "fluid_shear_modulus or film_pressure != 'hertz' (the curve "
+                             "replaces the Hertz-zone shear those options model)")
+        traction_curve = get_traction_curve(traction_curve)
+        forces = curve_contact_forces(forces, traction_curve)
     if fluid_shear_modulus is not None or film_pressure != "hertz":
         from .roller_maxwell import maxwell_contact_forces
 
@@ -275,5 +299,5 @@ def build_model(
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
         unloaded_zone=unloaded_zone, ring_support=ring_support,
         fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
-        film_pressure=film_pressure,
+        film_pressure=film_pressure, traction_curve=traction_curve,
     )
