@@ -23,11 +23,18 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_positive, check_range
+from ..errors import (
+    ConvergenceError,
+    InputError,
+    ValidityWarning,
+    check_positive,
+    check_range,
+)
 from .solver import (
     LineProblem,
     NewtonReport,
@@ -40,6 +47,9 @@ from .solver import (
 #: Range of the Moes parameters over which the solver is tested (BM-6 and unit tests).
 M_RANGE = (0.002, 3000.0)
 L_RANGE = (0.0, 40.0)
+#: relative change of the maximum pressure between the last two grids above which
+#: ``solve_dimensionless`` warns that the pressure peak is not grid-converged [-]
+MAX_PRESSURE_CHANGE = 0.1
 #: Newton iterations allowed from the Hertz/Moes initial guess before the coarse-grid time
 #: march takes over (BM-6, session 4: heavy loads converge directly in 6-12 iterations,
 #: M = 10 does not converge at all without the march).
@@ -84,6 +94,11 @@ class LineEHLSolution:
     n : number of nodes; dx : node spacing [m].
     error_estimate : Richardson estimate of the relative error of ``central_film`` from the
         last two grids (second order) [-].
+    max_pressure_change : relative change of the maximum pressure between the last two
+        grids [-] (NaN with one grid). The film converges at second order everywhere, but a
+        pressure spike (Barus piezoviscous-rigid regime: small M, large L; the outlet spike
+        of heavy loads) need not: above ``MAX_PRESSURE_CHANGE`` a ``ValidityWarning`` says
+        that ``max_pressure`` is not grid-converged (the films are).
     central_film_extrapolated : ``h_c`` Richardson-extrapolated from the last two grids [m].
     entrainment_speed : u_m [m/s].
     report : Newton statistics; seconds : wall time [s].
@@ -112,6 +127,7 @@ class LineEHLSolution:
     X: np.ndarray = field(repr=False)
     P: np.ndarray = field(repr=False)
     H: np.ndarray = field(repr=False)
+    max_pressure_change: float = math.nan
 
     @property
     def central_film_moes(self) -> float:
@@ -344,6 +360,7 @@ def solve_dimensionless(
 
     hc_levels: list[float] = []
     hm_levels: list[float] = []
+    pm_levels: list[float] = []
     its = lin = local = 0
     P = H0 = X = None
     state = {"M": M, "L": L}
@@ -400,6 +417,7 @@ def solve_dimensionless(
                         k, its, lin, local, X = 0, 0, 0, 0, None
                         hc_levels.clear()
                         hm_levels.clear()
+                        pm_levels.clear()
                         continue
                     raise
             its += rep.iterations
@@ -408,6 +426,7 @@ def solve_dimensionless(
             H = prob.film(P, H0)
             hc_levels.append(float(np.interp(0.0, X, H)))
             hm_levels.append(float(H.min()))
+            pm_levels.append(float(P.max()))
             k += 1
     except ConvergenceError as err:
         raise ConvergenceError(
@@ -428,6 +447,14 @@ def solve_dimensionless(
             f"grid too coarse: estimated central-film error {err_est:.1%} > {max_grid_error:.0%}"
             f" at n={n} for M={M:.4g}, L={L:.4g}; increase n or {_POINTER}", state,
         )
+    p_change = (abs(pm_levels[-1] - pm_levels[-2]) / pm_levels[-1]
+                if len(pm_levels) >= 2 and pm_levels[-1] > 0 else math.nan)
+    if p_change > MAX_PRESSURE_CHANGE:
+        warnings.warn(ValidityWarning(
+            f"ehl.line: the maximum pressure is not grid-converged at n={n} for M={M:.4g}, "
+            f"L={L:.4g}: it changed by {p_change:.0%} between the last two grids "
+            f"({pm_levels[-2]:.3g} -> {pm_levels[-1]:.3g} p_H); the films are converged "
+            f"(central-film error {err_est:.1e}); refine n for the pressure peak"), stacklevel=2)
     R, b, pH, eta0 = reference
     eta, _ = rheology.viscosity(P)
     H = prob.film(P, H0)
@@ -439,7 +466,7 @@ def solve_dimensionless(
         M=M, L=L, n=n, dx=prob.dx * b, error_estimate=err_est,
         central_film_extrapolated=hc_ex * scale_h, entrainment_speed=state.get("u", 0.0),
         reduced_radius=R, report=NewtonReport(its, rep.residual, lin, True, local), seconds=seconds,
-        X=X, P=P, H=H,
+        X=X, P=P, H=H, max_pressure_change=p_change,
     )
 
 
