@@ -155,6 +155,8 @@ class Oil4109Wang:
     beta: float = 0.0215
     conductivity: float = 0.0966
     name: str = "oil4109_wang"
+    #: largest |s| exercised by the source (warnings beyond it) [-]
+    s_max: float = 0.2
 
     def __post_init__(self) -> None:
         check_positive("eta0", self.eta0)
@@ -261,11 +263,11 @@ def traction_coefficient(curve: Any, slide_roll_ratio: Any, load: Any, entrainme
                          ) -> np.ndarray:
     """Traction coefficient mu [-] of a named curve (or curve object) at s [-] for a contact
     with normal load [N], entrainment speed [m/s], reduced radius [m], E' [Pa] and oil
-    inlet temperature [K]; warns (ValidityWarning) where |s| > 0.2 for ``oil4109_wang``
-    (the largest slip its source exercises) or beyond ``s_max`` of a fixed curve."""
+    inlet temperature [K]; warns (ValidityWarning) where |s| exceeds the curve's ``s_max``
+    (0.2 for ``oil4109_wang``, the largest slip its source exercises)."""
     c = get_traction_curve(curve)
     s = np.asarray(slide_roll_ratio, dtype=float)
-    s_max = 0.2 if isinstance(c, Oil4109Wang) else getattr(c, "s_max", np.inf)
+    s_max = getattr(c, "s_max", np.inf)
     if np.any(np.abs(s) > s_max):
         warnings.warn(f"{getattr(c, 'name', 'curve')}: |s| up to {np.max(np.abs(s)):.3g} "
                       f"beyond {s_max:g} exercised by its source", ValidityWarning,

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from thermobearing import load_bearing, load_lubricant
-from thermobearing.errors import InputError
+from thermobearing.errors import InputError, ValidityWarning
 from thermobearing.skidding.roller import build_model, solve_roller
 from thermobearing.skidding.roller_fluid import closed_form_contact_forces
 from thermobearing.skidding.roller_maxwell import _NoHertzShear
@@ -95,7 +95,10 @@ def test_solve_d1842926_with_the_4109_curve(setup) -> None:
     w = 13218.0 * math.pi / 30.0
     slips = []
     for f in (12e3, 24e3):
-        r = solve_roller(bearing, lub, w, f, 0.0, T_OIL, traction_curve="oil4109_wang")
+        # the unloaded rollers slide at s ~ 0.7 on the outer race: beyond the curve's
+        # exercised |s| <= 0.2, which the solver reports
+        with pytest.warns(ValidityWarning, match="beyond 0.2"):
+            r = solve_roller(bearing, lub, w, f, 0.0, T_OIL, traction_curve="oil4109_wang")
         assert r.converged
         slips.append(1.0 - r.cage_speed_ratio / r.theoretical_cage_speed_ratio)
     assert 0.0 < slips[1] < slips[0] < 1.0

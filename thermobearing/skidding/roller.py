@@ -235,5 +235,31 @@ def solve_roller(
         from .whirl import solve_whirl
 
         return solve_whirl(model, speed, radial_load, whirl, x0=x0, tol=tol, max_iter=max_iter)
-    return solve_model(model, speed, radial_load, azimuth=azimuth, x0=x0, tol=tol,
-                       max_iter=max_iter)
+    result = solve_model(model, speed, radial_load, azimuth=azimuth, x0=x0, tol=tol,
+                         max_iter=max_iter)
+    if model.traction_curve is not None:
+        _warn_curve_range(model.traction_curve, result)
+    return result
+
+
+def _warn_curve_range(curve: Any, result: Any) -> None:
+    """ValidityWarning when a loaded raceway contact of the solution slides beyond the
+    slide-to-roll ratio ``curve.s_max`` its traction curve's source exercises."""
+    s_max = float(getattr(curve, "s_max", np.inf))
+    worst = 0.0
+    for q, v, ue in ((result.inner_load, result.inner_sliding_speed,
+                      result.inner_entrainment_speed),
+                     (result.outer_load, result.outer_sliding_speed,
+                      result.outer_entrainment_speed)):
+        loaded = np.asarray(q) > 0.0
+        if np.any(loaded):
+            s = np.abs(np.asarray(v)[loaded]) / np.maximum(np.asarray(ue)[loaded], 1e-6)
+            worst = max(worst, float(np.max(s)))
+    if worst > s_max:
+        import warnings
+
+        from ..errors import ValidityWarning
+
+        warnings.warn(f"traction curve {getattr(curve, 'name', curve)!r}: contacts slide at "
+                      f"|s| up to {worst:.3g}, beyond {s_max:g} exercised by its source "
+                      "(the curve is extrapolated)", ValidityWarning, stacklevel=3)
