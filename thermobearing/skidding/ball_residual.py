@@ -159,6 +159,38 @@ def guarded_film_array(u: np.ndarray, q: np.ndarray, rx: np.ndarray, ry: np.ndar
     return out
 
 
+_NO_TAB = (np.zeros(0), np.zeros(0), 0.0, 0.0)
+
+
+@numba.njit(cache=True)
+def _same_state(X: np.ndarray, Xr: np.ndarray, G: np.ndarray, Gr: np.ndarray) -> bool:
+    """X == Xr and G == Gr element by element (shapes (Z, 6), (3,); compiled)."""
+    if X.shape != Xr.shape or G.size != Gr.size:
+        return False
+    for j in range(X.shape[0]):
+        for i in range(X.shape[1]):
+            if X[j, i] != Xr[j, i]:
+                return False
+    for g in range(G.size):
+        if G[g] != Gr[g]:
+            return False
+    return True
+
+
+@numba.njit(cache=True)
+def _residual_norm_nb(R: np.ndarray, Gc: np.ndarray, G0: np.ndarray) -> float:
+    """sqrt(|R|^2 + |sum_z Gc_z + G0|^2) of one state (compiled)."""
+    acc = 0.0
+    for j in range(R.shape[0]):
+        for i in range(R.shape[1]):
+            acc += R[j, i] * R[j, i]
+    for g in range(G0.size):
+        t = G0[g]
+        for j in range(Gc.shape[0]):
+            t += Gc[j, g]
+        acc += t * t
+    return math.sqrt(acc)
+
 @numba.njit(cache=True)
 def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
                    c: np.ndarray, geo: np.ndarray) -> None:
@@ -344,6 +376,66 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
 
 
 @numba.njit(cache=True)
+def _residual_one(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                  c: np.ndarray, film_params: np.ndarray, law_id: int,
+                  law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                  inv_dp: float, p_max: float, xg: np.ndarray, yg: np.ndarray,
+                  pshape: np.ndarray, area_w: np.ndarray, pidx: np.ndarray,
+                  pshape_u: np.ndarray, fd_num: float, Fd_in: np.ndarray,
+                  G0: np.ndarray) -> tuple:
+    """One state through :func:`_ball_residual_fused` with the Python around it compiled
+    (the Newton iterations' call): checks that X (Z, 6) and G (3,) are finite, the drag
+    force on each ball F_d = ``fd_num`` / b_r (drag at the drag radius times that radius,
+    ``Fd_in`` empty) or ``Fd_in`` (Z,), allocates the outputs and returns
+    (status, R (Z, 6), Gc (Z, 3), norm, geo, film, tr, pocket (Z, N_POCKET), Fd (Z,)) with
+    norm = sqrt(|R|^2 + |sum_z Gc_z + G0|^2); status 0 ok, 1 non-finite unknowns (nothing
+    evaluated), 2 a node pressure beyond the viscosity table (the caller takes the staged
+    path). Same kernels and inputs as the batch path, so the same numbers."""
+    nz, nk = X.shape[0], arc.shape[1]
+    n = nz * nk
+    tot = 0.0
+    for j in range(nz):
+        for i in range(X.shape[1]):
+            tot += X[j, i]
+    for g in range(G.size):
+        tot += G[g]
+    Xb = np.empty((1, nz, X.shape[1]))
+    Xb[0] = X
+    Gb = np.empty((1, G.size))
+    Gb[0] = G
+    Fd = np.empty((1, nz))
+    if Fd_in.size == 0:
+        for j in range(nz):
+            Fd[0, j] = fd_num / X[j, 1]
+    else:
+        Fd[0] = Fd_in
+    geo = np.empty((N_GEO, n))
+    film = np.empty(n)
+    tr = np.empty((n, 6))
+    pocket = np.empty((1, nz, N_POCKET))
+    R = np.empty((1, nz, X.shape[1]))
+    Gc = np.empty((1, nz, G.size))
+    if not math.isfinite(tot):
+        return 1, R[0], Gc[0], math.inf, geo, film, tr, pocket[0], Fd[0]
+    if not _ball_residual_fused(Xb, Gb, cpsi, arc, c, film_params, law_id, law_params, ln_tab,
+                                slope_tab, inv_dp, p_max, xg, yg, pshape, area_w, pidx,
+                                pshape_u, Fd, _NO_REUSE, _EMPTY_TR, geo, film, tr,
+                                pocket, R, Gc):
+        return 2, R[0], Gc[0], math.inf, geo, film, tr, pocket[0], Fd[0]
+    acc = 0.0
+    for j in range(nz):
+        for i in range(X.shape[1]):
+            acc += R[0, j, i] * R[0, j, i]
+    for g in range(G.size):
+        t = G0[g]
+        for j in range(nz):
+            t += Gc[0, j, g]
+        acc += t * t
+    return 0, R[0], Gc[0], math.sqrt(acc), geo, film, tr, pocket[0], Fd[0]
+
+
+
+@numba.njit(cache=True)
 def _energy_audit(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
                   pocket: np.ndarray, Fd: np.ndarray, inner_f: np.ndarray
                   ) -> tuple[np.ndarray, np.ndarray, float]:
@@ -373,7 +465,9 @@ def _refresh_caches() -> None:
     from .. import contact_traction, film, hertz, traction
 
     refresh_stale_caches("ball_residual", (guarded_film, guarded_film_array, _ball_geometry,
-                                           _ball_forces, _ball_residual_fused, _energy_audit),
+                                           _ball_forces, _ball_residual_fused, _residual_one,
+                                           _same_state, _residual_norm_nb,
+                                           _energy_audit),
                          (contact_traction, traction, hertz, film))
 
 
@@ -413,6 +507,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.M_s = self.F_s * 0.5 * self.D
         self.T_s = self.F_s * self.Rm
         self.w_s = max(w, 1e-3)
+        self._g0a, self._g0r = self.Fa / self.F_s, self.Fr / self.F_s
+        self.last_norm = math.inf
         self.n_eval = 0
         # constants of the residual, computed once (validated here, used unchecked inside)
         arcs = self.arcs
@@ -542,55 +638,74 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
 
     def _evaluate_one(self, X: np.ndarray, G: np.ndarray, details: bool):
         """:meth:`evaluate` of a single state (Z, 6), (3,): the Newton iterations' call, with
-        the Python around the compiled kernel kept short (the same kernels and inputs as
-        the batch path)."""
+        the Python around the compiled kernel kept short (:func:`_residual_one`; the same
+        kernels and inputs as the batch path). Also sets ``last_norm``, the scaled residual
+        norm of this state."""
         last = self._last
-        if (last is not None and G[2] == last[1][2] and np.array_equal(G, last[1])
-                and np.array_equal(X, last[0])):
+        if (last is not None and G[2] == last[1][2] and _same_state(X, last[0], G, last[1])):
             # the last state evaluated (the converged one for the details; a warm start's
             # start, see :meth:`reloaded`): its residual and details from that pass
+            self.last_norm = last[4]
             return (*last[2], last[3]() if details else None)
         self.n_eval += 1
-        # a sum is finite iff every term is (the unknowns are far below overflow)
-        if not (math.isfinite(X.sum()) and math.isfinite(G.sum())):
-            raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
         md = self.models
         Z = self.Z
         nk = self._arc.shape[1]
-        Xb = np.ascontiguousarray(X).reshape(1, Z, N_BALL)
-        Gb = np.ascontiguousarray(G).reshape(1, N_GLOBAL)
         wc = float(G[2])
-        torques = self._cage_torques(wc)
+        torques = self._torque_memo.get(wc)
+        if torques is None:
+            torques = self._cage_torques(wc)
+        G0 = np.array([self._g0a, self._g0r, -(torques[0] + torques[1]) / self.T_s])
         if md.drag_radius is None:
             u_ball = (wc * (1.0 - md.oil_speed_ratio)) * X[:, 1]
-            Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball)
-            Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, (Z,)).reshape(1, Z))
+            Fd_in = np.ascontiguousarray(
+                np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball))
+            fd_num = 0.0
         else:
             # drag force at the drag radius times r_drag (memoised), over the ball radius
-            Fd_b = torques[3] / Xb[:, :, 1]
-            u_ball = torques[4]
-            Fd = Fd_b[0]
-        n = Z * nk
-        geo = np.empty((N_GEO, n))
-        film = np.empty(n)
-        tr = np.empty((n, 6))
-        pocket = np.empty((1, Z, N_POCKET))
-        R = np.empty((1, Z, N_BALL))
-        Gc = np.empty((1, Z, N_GLOBAL))
-        film_out = self._kernels(Xb, Gb, Fd_b, _NO_REUSE, _EMPTY_TR, geo, film, tr, pocket,
-                                 R, Gc)
-        G0 = np.array([self.Fa / self.F_s, self.Fr / self.F_s,
-                       -(torques[0] + torques[1]) / self.T_s])
-        R = R.reshape(Z, N_BALL)
-        Gc = Gc.reshape(Z, N_GLOBAL)
+            Fd_in, fd_num, u_ball = _EMPTY, torques[3], torques[4]
+        status = 2
+        if self._fused:
+            ln_tab, slope_tab, inv_dp, p_max = self._tab if self._tab else _NO_TAB
+            status, R, Gc, nrm, geo, film, tr, pocket, Fd = _residual_one(
+                np.ascontiguousarray(X, dtype=float), np.ascontiguousarray(G, dtype=float),
+                self._cpsi, self._arc, self._c, self._film_params, self._law_id,
+                self._law_params, ln_tab, slope_tab, inv_dp, p_max, *self._rule, fd_num,
+                Fd_in, G0)
+            if status == 1:
+                raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
+            film_out = film
+        if status == 2:
+            # staged path (Python film / per-node viscosity, or a pressure beyond the table)
+            if not (math.isfinite(X.sum()) and math.isfinite(G.sum())):
+                raise InputError("skidding.ball unknowns", "non-finite values", "finite values")
+            Xb = np.ascontiguousarray(X, dtype=float).reshape(1, Z, N_BALL)
+            Gb = np.ascontiguousarray(G, dtype=float).reshape(1, N_GLOBAL)
+            Fd_b = (Fd_in.reshape(1, Z) if md.drag_radius is None
+                    else fd_num / Xb[:, :, 1])
+            n = Z * nk
+            geo = np.empty((N_GEO, n))
+            film = np.empty(n)
+            tr = np.empty((n, 6))
+            pocket3 = np.empty((1, Z, N_POCKET))
+            R3 = np.empty((1, Z, N_BALL))
+            Gc3 = np.empty((1, Z, N_GLOBAL))
+            film_out = self._staged(Xb, Gb, Fd_b, _NO_REUSE, _EMPTY_TR, geo, film, tr,
+                                    pocket3, R3, Gc3)
+            R, Gc, pocket, Fd = R3[0], Gc3[0], pocket3[0], Fd_b[0]
+            nrm = _residual_norm_nb(R, Gc, G0)
+        if md.drag_radius is None:
+            Fd = Fd_in
 
         def make_details():
             return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),
-                                 pocket[0], Fd, u_ball,
+                                 pocket, Fd, u_ball,
                                  None if film_out is None else film_out.reshape(Z, nk))
 
-        self._last = (X.copy(), G.copy(), (R, Gc, G0), make_details)
-        self._last_tr = (self._last[0], self._last[1], tr)
+        Xc, Gcp = X.copy(), G.copy()
+        self._last = (Xc, Gcp, (R, Gc, G0), make_details, nrm)
+        self._last_tr = (Xc, Gcp, tr)
+        self.last_norm = nrm
         return R, Gc, G0, (make_details() if details else None)
 
     def _staged(self, Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc):
@@ -720,11 +835,12 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             # row is a force, moment or torque over F_s, F_s D/2 or F_s d_m/2, all
             # proportional to F_s); the contact fields, tractions and details do not depend
             # on them. Equal to a fresh evaluation to round-off (a few ulp).
-            X, G, (R, Gc, _), details = self._last
+            X, G, (R, Gc, _), details, _ = self._last
             f = self.F_s / new.F_s
             t = new._cage_torques(float(G[2]))
-            G0 = np.array([new.Fa / new.F_s, new.Fr / new.F_s, -(t[0] + t[1]) / new.T_s])
-            new._last = (X, G, (R * f, Gc * f, G0), details)
+            G0 = np.array([new._g0a, new._g0r, -(t[0] + t[1]) / new.T_s])
+            R, Gc = R * f, Gc * f
+            new._last = (X, G, (R, Gc, G0), details, _residual_norm_nb(R, Gc, G0))
             new._last_tr = self._last_tr
         return new
 
@@ -736,6 +852,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.F_s = max(abs(self.Fa) / self.Z, self.Fr / self.Z, fc, 10.0)
         self.M_s = self.F_s * 0.5 * self.D
         self.T_s = self.F_s * self.Rm
+        self._g0a, self._g0r = self.Fa / self.F_s, self.Fr / self.F_s
         c = self._c.copy()
         c[C_FS], c[C_MS], c[C_TS] = self.F_s, self.M_s, self.T_s
         self._c = c
