@@ -376,6 +376,19 @@ def _stiffness_bh(rx: float, ry: float, ep: float) -> float:
 @njit(cache=True)
 def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
                  om: float, xd: float, mu: float, f_g: float, sreg: float) -> np.ndarray:
+    """:func:`face_values` as a vector indexed by the ``F_*`` constants (jitted)."""
+    out = np.empty(F_N)
+    v = face_values(gp, side, a, x, ad, wr, om, xd, mu, f_g, sreg)
+    for i in range(F_N):
+        out[i] = v[i]
+    return out
+
+
+@njit(cache=True)
+def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
+                om: float, xd: float, mu: float, f_g: float, sreg: float
+                ) -> tuple[float, float, float, float, float, float, float, float, float,
+                           float, float, float, float, float]:
     """One end face / rib contact (paper 003 eqs. 1-17, 24), jitted scalar kernel.
 
     gp : :meth:`RibGeometry.params`.  side : -1 left, +1 right.  a : skew alpha [rad].
@@ -384,14 +397,14 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
     mu : Coulomb coefficient [-].  f_g : lubricant drag force of eq. 14 [N] (>= 0).
     sreg : regularising speed [m/s] of the friction direction (0: exact).
 
-    Returns a vector indexed by the ``F_*`` constants: Q_ez [N]; force on the roller
+    Returns a tuple in the order of the ``F_*`` constants (no allocation: the dynamics call
+    it four times per roller and RK4 step): Q_ez [N]; force on the roller
     (x axial, y radial, z circumferential) [N]; skew moment (about y) and spin moment
     (about the roller axis, rolling sense positive) [N m]; tangential sliding speed
     |v_i - v_r| (eq. 24) [m/s]; its circumferential part [m/s]; contact radii R_x, R_y [m];
     H_contact [m]; circumferential offset z_K [m]; friction heat mu Q |v| + F_G |v_g| [W];
     circumferential friction (Coulomb + drag) on the roller [N].
     """
-    out = np.zeros(F_N)
     h, px, py, pz, blend = _support(gp, side, a)
     ct = gp[_G_CT]
     st = gp[_G_ST]
@@ -465,21 +478,8 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
     mxm += gy * fd
     mym -= gx * fd
     fz += fd
-    out[F_Q] = q
-    out[F_FX] = fx
-    out[F_FY] = fy
-    out[F_FZ] = fz
-    out[F_MSKEW] = mym
-    out[F_MSPIN] = -mxm * c + mzm * s
-    out[F_VT] = vt
-    out[F_VZ] = tz
-    out[F_RX] = rx
-    out[F_RY] = ry
-    out[F_H] = gp[_G_R] + r_y
-    out[F_Z] = r_z
-    out[F_HEAT] = ff * vt * vt + abs(fd * vg)
-    out[F_FRZ] = ff * tz + fd
-    return out
+    return (q, fx, fy, fz, mym, -mxm * c + mzm * s, vt, tz, rx, ry, gp[_G_R] + r_y, r_z,
+            ff * vt * vt + abs(fd * vg), ff * tz + fd)
 
 
 @njit(cache=True)

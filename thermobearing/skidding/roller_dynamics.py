@@ -114,7 +114,7 @@ from ..rib import (
     F_MSPIN,
     SIGN_REGULARISATION,
     RibGeometry,
-    face_contact,
+    face_values,
     lubricant_drag,
     rib_forces,
     rib_geometry,
@@ -402,14 +402,14 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: 
          n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float
          ) -> tuple[float, float, float, float, float, float, float]:
     """(X', X'', alpha', alpha'', z', z'', rib spin moment): both faces of
-    :func:`thermobearing.rib.face_contact` (the kernel of :func:`~thermobearing.rib.rib_forces`)
+    :func:`thermobearing.rib.face_values` (the kernel of :func:`~thermobearing.rib.rib_forces`)
     plus raceway, cage-bar (:func:`~thermobearing.skidding.roller_dynamics_pocket.pocket_force_z`)
     and unbalance terms (module notes). z: circumferential position in the pocket [m];
     f_d: quasi-static pocket force [N] (the raceways' net forward force on the roller);
     c_z: raceway damping of z [N s/m]. With the pocket DOF off, z stays 0."""
     gp = p[:_G_N]
-    fl = face_contact(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
-    fr = face_contact(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     m_rib = fl[F_MSKEW] + fr[F_MSKEW]
     m_spin = fl[F_MSPIN] + fr[F_MSPIN]
     mu_t = p[_MUT]

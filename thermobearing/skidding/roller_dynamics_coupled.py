@@ -23,12 +23,20 @@ Here the spins and the cage speed are degrees of freedom:
 
 Integrator (ours): paper 000's traction evaluation costs ~4 ms per call (Python/numpy over Z
 rollers), the rib contact needs steps <= 1/omega_rib (~1.6 us): the raceway shear and orbital
-force are linearised in (omega_j, omega_c) -- value and finite-difference slopes from three
-evaluations -- and refreshed every ``refresh`` seconds (default 20 us, 1/5 of the loaded
-rollers' spin time constant J_p/k), the contact-resolved motion integrated by classical RK4
-at the reduced model's step in between (a multirate, locally linearised scheme; the
-linearisation makes the traction term implicit-free but exact at every refresh). Refresh
-convergence is checked in the tests. Units: SI.
+force are linearised in (omega_j, omega_c) -- value and forward-difference slopes -- and
+refreshed every ``refresh`` seconds (default 20 us, 1/5 of the loaded rollers' spin time
+constant J_p/k), the contact-resolved motion integrated by classical RK4 at the reduced
+model's step in between (a multirate, locally linearised scheme). The whole time loop is one
+jitted kernel (:func:`_integrate`). The linearisation comes from paper 000's model
+tabulated once per run over (omega_r, N_i, omega_c) and interpolated inside the kernel
+(``traction="table"``, default, :mod:`~thermobearing.skidding.roller_dynamics_table`) or,
+as a reference, from three ``evaluate`` calls per refresh made from Python between kernel
+calls (``traction="evaluate"``). Measured at the paper 003 base case (0.06 / 0.11 g,
+1.5 + 1.5 orbits, 2026-11-22): table 1.1 s CPU per point, evaluate 3.9-5.4 s, the previous
+Python-driven RK4 loop 7.6-11.8 s; slip 5.23 / 5.51 (table) vs 5.23 / 5.51 (evaluate) vs
+5.27 / 5.64 m/s (previous loop), PV 1231 / 1281 vs 1210 / 1246 vs 1206 / 1272 MPa m/s: the
+differences are those of the chaotic impacting motion under floating-point-level changes
+(validation case SOURCE.md). Refresh convergence is checked in the tests. Units: SI.
 """
 
 from __future__ import annotations
@@ -41,7 +49,7 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-from ..errors import ConvergenceError, check_positive
+from ..errors import ConvergenceError, InputError, check_positive
 from .roller_dynamics import (
     DynamicsModel,
     RollerResponse,
@@ -51,6 +59,7 @@ from .roller_dynamics import (
     _rhs,
 )
 from .roller_dynamics_pocket import pocket_force_z
+from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
 
 #: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
 N_ROLLER_STATES = 8
@@ -90,15 +99,34 @@ def _pocket_film_friction(force: float, spin: float, radius: float, length: floa
 
 
 @njit(cache=True)
-def _deriv(p: np.ndarray, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
-           load: np.ndarray, lin: np.ndarray, w0: np.ndarray, wc0: float,
-           q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float, half: float,
-           dm_half: float, t_c: float, film: np.ndarray) -> np.ndarray:
-    """Time derivative of the coupled state (module notes). ``lin`` (Z, 6): S0, dS/dw,
-    dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh; ``film``: pocket length, eta,
-    clearance, k_w, k_c + k_q/2, smoothing."""
+def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
+    """np.interp(x, xp, fp) for ascending ``xp`` (binary search; numba's np.interp costs
+    ~0.5 us a call, this a few ns); clamped to the end values outside [xp[0], xp[-1]]."""
+    n = xp.shape[0]
+    if x <= xp[0]:
+        return fp[0]
+    if x >= xp[n - 1]:
+        return fp[n - 1]
+    lo = 0
+    hi = n - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if xp[mid] <= x:
+            lo = mid
+        else:
+            hi = mid
+    return fp[lo] + (fp[hi] - fp[lo]) * (x - xp[lo]) / (xp[hi] - xp[lo])
+
+
+@njit(cache=True)
+def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np.ndarray,
+                az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
+                wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
+                half: float, dm_half: float, t_c: float, film: np.ndarray) -> None:
+    """dy[:] = time derivative of the coupled state (module notes). ``lin`` (Z, 6): S0,
+    dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh; ``film``: pocket length,
+    eta, clearance, k_w, k_c + k_q/2, smoothing."""
     n = N_ROLLER_STATES
-    dy = np.zeros_like(y)
     th = y[z_n * n]
     wc = y[z_n * n + 1]
     torque = -t_c
@@ -107,7 +135,7 @@ def _deriv(p: np.ndarray, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndar
         b = j * n
         w = y[b + 7]
         phi = (phi0[j] + th) % two_pi
-        n_i = np.interp(phi, az, load)
+        n_i = _interp_sorted(phi, az, load)
         dw = w - w0[j]
         dc = wc - wc0
         s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc
@@ -129,7 +157,108 @@ def _deriv(p: np.ndarray, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndar
         torque += -fz_bar * dm_half - f_bar * half
     dy[z_n * n] = wc
     dy[z_n * n + 1] = torque / cage_j
-    return dy
+
+
+@njit(cache=True)
+def _refresh_from_table(y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
+                        load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
+                        cage: np.ndarray, values: np.ndarray, lin: np.ndarray,
+                        w0: np.ndarray, q_o: np.ndarray, c_z: np.ndarray
+                        ) -> tuple[float, int]:
+    """The traction linearisation of every roller from the table (the same value and
+    forward-difference slopes as the ``evaluate`` refresh of :func:`simulate_coupled`);
+    returns (omega_c of the linearisation, table status: 0 ok, 1-3 outside the grid)."""
+    n = N_ROLLER_STATES
+    th = y[z_n * n]
+    wc0 = y[z_n * n + 1]
+    dc = 1e-4 * max(abs(wc0), 1.0)
+    two_pi = 2.0 * math.pi
+    for j in range(z_n):
+        w = y[j * n + 7]
+        phi = (phi0[j] + th) % two_pi
+        n_i = _interp_sorted(phi, az, load)
+        dw = 1e-4 * max(abs(w), 1.0)
+        s0, f0, q0, st0 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0)
+        s1, f1, _, st1 = table_eval(spin0, spin_step, loads, cage, values, w + dw, n_i, wc0)
+        s2, f2, _, st2 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0 + dc)
+        st = max(st0, max(st1, st2))
+        if st != 0:
+            return wc0, st
+        w0[j] = w
+        lin[j, 0] = s0
+        lin[j, 1] = (s1 - s0) / dw
+        lin[j, 2] = (s2 - s0) / dc
+        lin[j, 3] = f0
+        lin[j, 4] = (f1 - f0) / dw
+        lin[j, 5] = (f2 - f0) / dc
+        q_o[j] = q0
+        c_z[j] = max(-lin[j, 1], 0.0)
+    return wc0, 0
+
+
+@njit(cache=True)
+def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int, h: float,
+               sub: int, z_n: int, phi0: np.ndarray, az: np.ndarray, load: np.ndarray,
+               lin: np.ndarray, w0: np.ndarray, wc0: float, q_o: np.ndarray,
+               c_z: np.ndarray, consts: np.ndarray, film: np.ndarray, use_table: bool,
+               spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
+               values: np.ndarray, n_warm: int, every: int, samples: np.ndarray,
+               sample_t: np.ndarray, sample_wc: np.ndarray, n_sampled: int
+               ) -> tuple[int, int, float, int, float]:
+    """Classical RK4 steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y``
+    (in place) at step ``h`` [s], the traction linearisation refreshed from the table every
+    ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used throughout); samples
+    (state, t, omega_c) every ``every`` steps from step ``n_warm`` on. ``consts``: J_p, J_c,
+    D/2, d_m/2, T_c. Returns (status, steps done, t, samples written, omega_c of the
+    linearisation); status 0 done, 1-3 the table's grid left (the step was not taken; the
+    caller rebuilds the table), 4 the state became non-finite or a spin reversed."""
+    n = N_ROLLER_STATES
+    m_y = y.shape[0]
+    k1 = np.zeros(m_y)
+    k2 = np.zeros(m_y)
+    k3 = np.zeros(m_y)
+    k4 = np.zeros(m_y)
+    yt = np.zeros(m_y)
+    polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
+    for s in range(n_steps):
+        step = step0 + s
+        if use_table and step % sub == 0:
+            wc0, st = _refresh_from_table(y, z_n, phi0, az, load, spin0, spin_step, loads,
+                                          cage, values, lin, w0, q_o, c_z)
+            if st != 0:
+                return st, s, t, n_sampled, wc0
+        _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
+                    half, dm_half, t_c, film)
+        for q in range(m_y):
+            yt[q] = y[q] + 0.5 * h * k1[q]
+        _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
+                    half, dm_half, t_c, film)
+        for q in range(m_y):
+            yt[q] = y[q] + 0.5 * h * k2[q]
+        _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
+                    half, dm_half, t_c, film)
+        for q in range(m_y):
+            yt[q] = y[q] + h * k3[q]
+        _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
+                    half, dm_half, t_c, film)
+        for q in range(m_y):
+            y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
+        t += h
+        if (step >= n_warm and (step - n_warm) % every == 0
+                and n_sampled < samples.shape[0]):
+            for q in range(z_n * n):
+                samples[n_sampled, q] = y[q]
+            sample_t[n_sampled] = t
+            sample_wc[n_sampled] = y[z_n * n + 1]
+            n_sampled += 1
+        if step % 200 == 0:
+            for q in range(m_y):
+                if not math.isfinite(y[q]):
+                    return 4, s + 1, t, n_sampled, wc0
+            for j in range(z_n):
+                if y[j * n + 7] <= 0.0:
+                    return 4, s + 1, t, n_sampled, wc0
+    return 0, n_steps, t, n_sampled, wc0
 
 
 def _indices() -> tuple[int, int, int, int, int]:
@@ -144,7 +273,8 @@ _HLI, _CPI, _KCI, _ETAI, _FLI = _indices()
 def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      n_orbits: float = 2.0, warmup_orbits: float = 2.0,
                      refresh: float = 20e-6, steps_per_period: int = 400,
-                     samples_per_period: int = 100, phase_spread: bool = True
+                     samples_per_period: int = 100, phase_spread: bool = True,
+                     traction: str = "table", table_options: dict[str, Any] | None = None
                      ) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
@@ -152,16 +282,24 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
 
     ``refresh`` [s]: interval of the raceway-traction linearisation. ``phase_spread``: the
     rollers' unbalance phases spread by the golden angle (True) or all equal (False).
+    ``traction``: where the linearisation comes from -- "table" (default: paper 000's
+    traction model tabulated once per run and interpolated inside the jitted time loop,
+    :mod:`~thermobearing.skidding.roller_dynamics_table`; ``table_options`` its grid
+    keywords) or "evaluate" (three calls of
+    :func:`thermobearing.skidding.roller_residual.evaluate` per refresh from Python, the
+    reference the table is checked against; ~6x slower). Both run the same jitted RK4 loop.
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and ``spin`` (time x Z) [rad/s]. ``cost_s``: CPU seconds.
     ConvergenceError if the state becomes non-finite or a spin reverses.
     """
     from .roller import build_model as race_model
-    from .roller_dynamics_coupling import _race_eval_at
+    from .roller_dynamics_coupling import _race_eval_at, unbalance_orbital_force
     from .roller_fluid import martin_coefficients
 
     check_positive("refresh", refresh)
+    if traction not in ("table", "evaluate"):
+        raise InputError("traction", traction, ("table", "evaluate"))
     t0 = time.process_time()
     rm = race_model(bearing, lubricant, m.extras.get("temperature", 353.15))
     z_n = len(m.azimuth)
@@ -172,6 +310,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     k_w, k_q, k_c, _ = martin_coefficients()
     film = np.array([m.pocket_length, m.pocket_viscosity, m.pocket_clearance, k_w,
                      k_c + 0.5 * k_q, 1e-4])
+    consts = np.array([m.polar_inertia, j_c, half, 0.5 * m.geom.pitch_diameter,
+                       float(rm.cage_drag_torque)])
     az = np.append(m.azimuth, m.azimuth[0] + 2.0 * math.pi)
     load = np.append(m.inner_load, m.inner_load[0])
     phi0 = m.azimuth.copy()
@@ -191,17 +331,41 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     orbit = 2.0 * math.pi / m.cage_speed
     n_warm = int(math.ceil(warmup_orbits * orbit / h))
     n_keep = int(math.ceil(n_orbits * orbit / h))
+    n_total = n_warm + n_keep
     every = max(1, int(period / samples_per_period / h))
-    rows, times, wcs = [], [], []
-    n_eval = 0
-    t = 0.0
+    n_samples = (n_keep + every - 1) // every
+    samples = np.zeros((n_samples, z_n * n))
+    sample_t = np.zeros(n_samples)
+    sample_wc = np.zeros(n_samples)
     lin = np.zeros((z_n, 6))
     w0 = np.zeros(z_n)
     q_o = np.zeros(z_n)
     c_z = np.zeros(z_n)
     wc0 = 0.0
-    for step in range(n_warm + n_keep):
-        if step % sub == 0:
+    n_eval = 0
+    tables = []
+    reasons: list[int] = []
+    opts = dict(table_options or {})
+
+    def new_table(spins: np.ndarray, wc: float) -> Any:
+        w_roll = ((m.inner_speed - wc * (1.0 - opts.get("cage_step", DEFAULT_CAGE_STEP)))
+                  * m.geom.inner_raceway_diameter / m.geom.roller_diameter)
+        lo = 0.8 * min(float(np.min(spins)), float(np.min(m.spin)))
+        hi = max(1.05 * w_roll, 1.05 * float(np.max(spins)))
+        tab = build_traction_table(rm, m.inner_speed,
+                                   lambda wc_: unbalance_orbital_force(m, wc_), (lo, hi),
+                                   float(np.max(m.inner_load)), wc, **opts)
+        tables.append(tab)
+        return tab
+
+    empty = np.zeros(1)
+    tab = new_table(m.spin, m.cage_speed) if traction == "table" else None
+    t = 0.0
+    step = 0
+    n_sampled = 0
+    while step < n_total:
+        if tab is None:
+            # reference path: the linearisation from three evaluate calls per refresh
             w0 = y[7::n][:z_n].copy()
             wc0 = float(y[z_n * n + 1])
             phi = np.mod(phi0 + y[z_n * n], 2.0 * math.pi)
@@ -219,27 +383,32 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             lin[:, 3] = e0.pocket
             lin[:, 4] = (e1.pocket - e0.pocket) / dw
             lin[:, 5] = (e2.pocket - e0.pocket) / dc
-            q_o = np.asarray(e0.q_o, float)
+            q_o = np.asarray(e0.q_o, float).copy()
             c_z = np.maximum(-lin[:, 1], 0.0)
-        args = (c, y, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, m.polar_inertia, j_c,
-                half, 0.5 * m.geom.pitch_diameter, float(rm.cage_drag_torque), film)
-        k1 = _deriv(*args)
-        k2 = _deriv(c, y + 0.5 * h * k1, *args[2:])
-        k3 = _deriv(c, y + 0.5 * h * k2, *args[2:])
-        k4 = _deriv(c, y + h * k3, *args[2:])
-        y = y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-        t += h
-        if step >= n_warm and (step - n_warm) % every == 0:
-            rows.append(y[: z_n * n].reshape(z_n, n).copy())
-            times.append(t)
-            wcs.append(y[z_n * n + 1])
-        if step % 200 == 0 and (not np.all(np.isfinite(y)) or np.any(y[7::n][:z_n] <= 0.0)):
+            block = min(sub, n_total - step)
+            grid = (0.0, 1.0, empty, empty, np.zeros((1, 1, 1, 3)))
+        else:
+            block = n_total - step
+            grid = (tab.spin0, tab.spin_step, tab.loads, tab.cage, tab.values)
+        status, done, t, n_sampled, wc0 = _integrate(
+            c, y, t, step, block, h, sub, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z,
+            consts, film, tab is not None, *grid, n_warm, every, samples, sample_t,
+            sample_wc, n_sampled)
+        step += done
+        if status == 4:
             raise ConvergenceError("roller_dynamics.coupled", float("inf"),
                                    "state not finite or a roller spin reversed",
                                    {"t": t, "step": step})
-    traj = np.array(rows)                       # (time, Z, 8)
-    tt = np.array(times)
-    wc_t = np.array(wcs)
+        if status != 0:
+            if len(tables) > 20:
+                raise ConvergenceError("roller_dynamics.coupled", float(status),
+                                       "the state keeps leaving the traction table",
+                                       {"t": t, "step": step})
+            reasons.append(int(status))
+            tab = new_table(y[7::n][:z_n], float(y[z_n * n + 1]))
+    traj = samples[:n_sampled].reshape(n_sampled, z_n, n)       # (time, Z, 8)
+    tt = sample_t[:n_sampled]
+    wc_t = sample_wc[:n_sampled]
     mm = replace(m, cage_speed=float(np.mean(wc_t)))
     weights = []
     for j in range(z_n):
@@ -248,9 +417,13 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         weights.append((1.0 / z_n, _post(mm, tt, r[:, 0], r[:, 1], r[:, 2], r[:, 3],
                                          r[:, 7], r[:, 4], r[:, 5], f_d)))
     cost = time.process_time() - t0
-    resp = _response(weights[0][1], "coupled", cost, 4 * (n_warm + n_keep), m.geom, weights)
+    resp = _response(weights[0][1], "coupled", cost, 4 * n_total, m.geom, weights)
+    n_table = sum(tb.evaluations for tb in tables)
     return replace(resp, series={"t": tt, "cage_speed": wc_t, "spin": traj[:, :, 7],
                                  "traction_evaluations": np.array([n_eval]),
+                                 "table_points": np.array([n_table]),
+                                 "table_builds": np.array([len(tables)]),
+                                 "table_rebuild_status": np.array(reasons, dtype=int),
                                  "step": np.array([h]), "refresh_steps": np.array([sub])})
 
 

@@ -1,0 +1,210 @@
+"""Tabulated raceway traction of paper 000's roller model for the coupled roller dynamics.
+
+The coupled all-roller + cage integration of paper 003 (Zhang et al. 2021, seed
+``003_743e023ae6e45686.txt`` [zhang2021_abnormal_wear], eqs. 18-19;
+:mod:`~thermobearing.skidding.roller_dynamics_coupled`) needs, for every roller and every
+refresh of its traction linearisation, the raceway shear S (roller moment balance / (D/2)
+plus the pocket-film friction), the net orbital force F_d and the outer contact load Q_o of
+paper 000's closed-form traction model (Li et al. 2018, seed ``000_3b5ca6eed61dd596.txt``
+[li2018_nu214_skidding], eqs. 12-15, 20-38, evaluated by
+:func:`thermobearing.skidding.roller_residual.evaluate`). Those are per-roller functions of
+three variables only -- the roller spin omega_r, its inner contact load N_i and the cage
+speed omega_c (which sets both race speeds, the centrifugal outer load and the unbalance's
+orbital force) -- because ``evaluate`` treats the rollers independently (the cage equation
+is their sum; no whirl, no clearance film in the model the dynamics builds). So instead of
+calling ``evaluate`` (~4 ms of Python per call for 24 rollers, three calls per refresh)
+the functions are evaluated once, on a grid, by the *same* ``evaluate`` (stacked into one
+call per cage-speed layer, ~12 us per grid point), and interpolated inside the jitted time
+loop:
+
+* omega_r: uniform grid (default spacing 50 rad/s), Catmull-Rom cubic (local, C1);
+* N_i: nodes N_max (k/n)^2, k = 0 (no inner contact: the unloaded-roller model) ... n + 1
+  (one node beyond N_max), Catmull-Rom cubic in u = n sqrt(N_i/N_max) (uniform in u; at
+  the first interval the missing node u = -1 is the mirror of u = 1, a function smooth in
+  N_i being even in u);
+* omega_c: layers at omega_ref (1 + k delta), k = -1 ... 3 (default delta = 2.5 %: the
+  integrated cage runs up to ~5 % faster than the quasi-static one it starts from),
+  quadratic (Lagrange through the nearest layer and its neighbours; exact for the
+  centrifugal part of Q_o).
+
+Outside the grid the interpolation returns a status instead of extrapolating; the caller
+rebuilds the table around the new state. The interpolation error against direct
+``evaluate`` calls is measured in ``tests/unit/test_roller_dynamics_table.py`` and in the
+paper 003 validation case's SOURCE.md. Units: SI.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numba import njit
+
+from ..errors import check_positive
+
+#: output columns of the table: raceway shear S [N], orbital force F_d [N], outer load Q_o [N]
+T_SHEAR, T_POCKET, T_OUTER = 0, 1, 2
+
+#: default grid: spin spacing [rad/s], number of loaded N_i nodes, cage-speed layer step [-]
+DEFAULT_SPIN_STEP = 50.0
+DEFAULT_LOAD_NODES = 16
+DEFAULT_CAGE_STEP = 0.025
+
+
+@dataclass(frozen=True)
+class TractionTable:
+    """Per-roller raceway functions of paper 000's traction model on a grid (SI).
+
+    spin0, spin_step : first node and spacing of the uniform omega_r grid [rad/s].
+    loads : (n + 2,) N_i nodes N_max (k/n)^2 [N] (first 0; the last one beyond N_max, the
+    cubic's end node).  cage : (5,) omega_c layers [rad/s], equally spaced.
+    values : (n_c, n_N, n_w, 3) S, F_d, Q_o [N] (columns ``T_*``).
+    evaluations : grid points evaluated.
+    """
+
+    spin0: float
+    spin_step: float
+    loads: np.ndarray
+    cage: np.ndarray
+    values: np.ndarray
+    evaluations: int
+
+    @property
+    def spin_range(self) -> tuple[float, float]:
+        """(lowest, highest) omega_r [rad/s] at which the cubic is defined."""
+        n_w = self.values.shape[2]
+        return self.spin0 + self.spin_step, self.spin0 + (n_w - 2) * self.spin_step
+
+    def __call__(self, spin: Any, load: Any, cage_speed: float) -> np.ndarray:
+        """Interpolated (S, F_d, Q_o) [N] at arrays ``spin`` [rad/s], ``load`` [N] and one
+        ``cage_speed`` [rad/s]: shape (..., 3). ValueError outside the grid."""
+        w = np.atleast_1d(np.asarray(spin, float))
+        n = np.broadcast_to(np.asarray(load, float), w.shape)
+        out = np.empty(w.shape + (3,))
+        for idx in np.ndindex(w.shape):
+            s, f, q, status = table_eval(self.spin0, self.spin_step, self.loads, self.cage,
+                                         self.values, float(w[idx]), float(n[idx]),
+                                         float(cage_speed))
+            if status:
+                raise ValueError(f"outside the traction table (status {status}): spin "
+                                 f"{w[idx]}, load {n[idx]}, cage speed {cage_speed}")
+            out[idx] = (s, f, q)
+        return out
+
+
+def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
+                         spin_range: tuple[float, float], max_load: float,
+                         cage_speed: float, *, spin_step: float = DEFAULT_SPIN_STEP,
+                         load_nodes: int = DEFAULT_LOAD_NODES,
+                         cage_step: float = DEFAULT_CAGE_STEP) -> TractionTable:
+    """Tabulate S, F_d and Q_o of ``race_model`` (:func:`thermobearing.skidding.roller.
+    build_model`) with :func:`thermobearing.skidding.roller_residual.evaluate`.
+
+    inner_speed : omega_i [rad/s].  body_force(omega_c) -> outward body force per roller
+    without the centrifugal term [N] (the unbalance's orbital force).
+    spin_range : (low, high) omega_r [rad/s] to cover.  max_load : largest N_i [N].
+    cage_speed : omega_c of the second of the five layers [rad/s].
+    spin_step [rad/s], load_nodes, cage_step [-]: the grid (module notes).
+    """
+    from .roller_residual import evaluate
+
+    check_positive("spin_step", spin_step)
+    check_positive("cage_step", cage_step)
+    check_positive("cage_speed", cage_speed)
+    lo, hi = float(spin_range[0]), float(spin_range[1])
+    if not hi > lo:
+        raise ValueError(f"empty spin range {spin_range}")
+    spin0 = lo - 2.0 * spin_step
+    n_w = int(math.ceil((hi - spin0) / spin_step)) + 3
+    spins = spin0 + spin_step * np.arange(n_w)
+    n_l = max(int(load_nodes), 2)
+    loads = max(float(max_load), 1.0) * (np.arange(n_l + 2) / n_l) ** 2
+    cage = cage_speed * (1.0 + cage_step * np.array([-1.0, 0.0, 1.0, 2.0, 3.0]))
+    w_all = np.tile(spins, loads.size)
+    n_all = np.repeat(loads, n_w)
+    zeros = np.zeros(w_all.size)
+    values = np.empty((cage.size, loads.size, n_w, 3))
+    for ic, wc in enumerate(cage):
+        body = np.full(w_all.size, float(body_force(float(wc))))
+        e = evaluate(race_model, float(inner_speed), w_all, float(wc), n_all, body, zeros,
+                     (0.0, 0.0))
+        for col, arr in ((T_SHEAR, e.roller_eq + e.friction), (T_POCKET, e.pocket),
+                         (T_OUTER, e.q_o)):
+            values[ic, :, :, col] = np.asarray(arr, float).reshape(loads.size, n_w)
+    if not np.all(np.isfinite(values)):
+        raise ValueError("traction model returned non-finite values on the table grid")
+    return TractionTable(float(spin0), float(spin_step), loads, cage, values,
+                         int(w_all.size * cage.size))
+
+
+@njit(cache=True)
+def _cubic(v: np.ndarray, i: int, t: float, col: int) -> float:
+    """Catmull-Rom cubic through v[i-1..i+2, col] at fraction t of [i, i+1]."""
+    p0 = v[i - 1, col]
+    p1 = v[i, col]
+    p2 = v[i + 1, col]
+    p3 = v[i + 2, col]
+    return p1 + 0.5 * t * (p2 - p0 + t * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3
+                                          + t * (3.0 * (p1 - p2) + p3 - p0)))
+
+
+@njit(cache=True)
+def _spin_cubic(v: np.ndarray, i: int, t: float, out: np.ndarray) -> None:
+    """out[:] = Catmull-Rom in the spin of the three columns of v (n_w, 3)."""
+    for col in range(3):
+        out[col] = _cubic(v, i, t, col)
+
+
+@njit(cache=True)
+def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
+               values: np.ndarray, w: float, n: float, wc: float
+               ) -> tuple[float, float, float, int]:
+    """(S, F_d, Q_o [N], status) interpolated at spin ``w`` [rad/s], inner load ``n`` [N],
+    cage speed ``wc`` [rad/s] (module notes). status 0 ok, 1 spin, 2 load, 3 cage speed
+    outside the grid (values then 0)."""
+    n_w = values.shape[2]
+    x = (w - spin0) / spin_step
+    i = int(math.floor(x))
+    if i < 1 or i > n_w - 3:
+        return 0.0, 0.0, 0.0, 1
+    t = x - i
+    n_l = loads.shape[0] - 2          # loads[k] = N_max (k / n_l)^2, k = 0 .. n_l + 1
+    n_max = loads[n_l]
+    if n < 0.0 or n > n_max:
+        return 0.0, 0.0, 0.0, 2
+    u = n_l * math.sqrt(n / n_max)
+    il = min(int(math.floor(u)), n_l - 1)
+    tl = u - il
+    n_c = cage.shape[0]
+    dc = cage[1] - cage[0]
+    if wc < cage[0] - 1e-12 * dc or wc > cage[n_c - 1] + 1e-12 * dc:
+        return 0.0, 0.0, 0.0, 3
+    # quadratic through the nearest layer and its two neighbours
+    mid = min(max(int(round((wc - cage[0]) / dc)), 1), n_c - 2)
+    r = (wc - cage[mid]) / dc                   # -1.5 .. 1.5
+    lag = (0.5 * r * (r - 1.0), 1.0 - r * r, 0.5 * r * (r + 1.0))
+    res = np.zeros(3)
+    nodes = np.zeros((4, 3))
+    for ic in range(3):
+        for k in range(4):
+            kk = il - 1 + k
+            if kk >= 0:
+                _spin_cubic(values[mid - 1 + ic, kk], i, t, nodes[k])
+        if il == 0:
+            for col in range(3):
+                nodes[0, col] = nodes[2, col]
+        for col in range(3):
+            p0 = nodes[0, col]
+            p1 = nodes[1, col]
+            p2 = nodes[2, col]
+            p3 = nodes[3, col]
+            val = p1 + 0.5 * tl * (p2 - p0 + tl * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3
+                                                   + tl * (3.0 * (p1 - p2) + p3 - p0)))
+            res[col] += lag[ic] * val
+    return res[0], res[1], res[2], 0
+
+
+__all__ = ["DEFAULT_CAGE_STEP", "DEFAULT_LOAD_NODES", "DEFAULT_SPIN_STEP", "T_OUTER",
+           "T_POCKET", "T_SHEAR", "TractionTable", "build_traction_table", "table_eval"]
