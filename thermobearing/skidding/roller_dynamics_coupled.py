@@ -290,7 +290,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     reference the table is checked against; ~6x slower). Both run the same jitted RK4 loop.
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
-    ``cage_speed`` [rad/s] and ``spin`` (time x Z) [rad/s]. ``cost_s``: CPU seconds.
+    ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
+    ``skew`` alpha [rad] and ``pocket`` z [m]. ``cost_s``: CPU seconds.
     ConvergenceError if the state becomes non-finite or a spin reverses.
     """
     from .roller import build_model as race_model
@@ -347,14 +348,26 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     reasons: list[int] = []
     opts = dict(table_options or {})
 
+    step_c = opts.pop("cage_step", DEFAULT_CAGE_STEP)
+    span = {"w_lo": 0.8 * float(np.min(m.spin)), "w_hi": 0.0, "k_lo": -1, "k_hi": 3}
+
     def new_table(spins: np.ndarray, wc: float) -> Any:
-        w_roll = ((m.inner_speed - wc * (1.0 - opts.get("cage_step", DEFAULT_CAGE_STEP)))
-                  * m.geom.inner_raceway_diameter / m.geom.roller_diameter)
-        lo = 0.8 * min(float(np.min(spins)), float(np.min(m.spin)))
-        hi = max(1.05 * w_roll, 1.05 * float(np.max(spins)))
+        """(Re)build the table over the spins and cage speeds seen so far (a grid left is
+        extended, never shifted, so an oscillating state does not rebuild it again)."""
+        k = (wc / m.cage_speed - 1.0) / step_c
+        span["k_lo"] = min(span["k_lo"], int(math.floor(k)) - 2)
+        span["k_hi"] = max(span["k_hi"], int(math.ceil(k)) + 2)
+        wc_lo = m.cage_speed * (1.0 + step_c * span["k_lo"])
+        w_roll = ((m.inner_speed - max(wc_lo, 0.0)) * m.geom.inner_raceway_diameter
+                  / m.geom.roller_diameter)
+        span["w_lo"] = min(span["w_lo"], 0.8 * float(np.min(spins)))
+        span["w_hi"] = max(span["w_hi"], 1.05 * w_roll, 1.05 * float(np.max(spins)))
         tab = build_traction_table(rm, m.inner_speed,
-                                   lambda wc_: unbalance_orbital_force(m, wc_), (lo, hi),
-                                   float(np.max(m.inner_load)), wc, **opts)
+                                   lambda wc_: unbalance_orbital_force(m, wc_),
+                                   (span["w_lo"], span["w_hi"]), float(np.max(m.inner_load)),
+                                   m.cage_speed, cage_step=step_c,
+                                   cage_layers=(span["k_lo"], span["k_hi"]),
+                                   previous=tables[-1] if tables else None, **opts)
         tables.append(tab)
         return tab
 
@@ -420,6 +433,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     resp = _response(weights[0][1], "coupled", cost, 4 * n_total, m.geom, weights)
     n_table = sum(tb.evaluations for tb in tables)
     return replace(resp, series={"t": tt, "cage_speed": wc_t, "spin": traj[:, :, 7],
+                                 "axial": traj[:, :, 0], "skew": traj[:, :, 2],
+                                 "pocket": traj[:, :, 4],
                                  "traction_evaluations": np.array([n_eval]),
                                  "table_points": np.array([n_table]),
                                  "table_builds": np.array([len(tables)]),

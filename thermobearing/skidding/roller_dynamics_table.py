@@ -22,8 +22,9 @@ loop:
   (one node beyond N_max), Catmull-Rom cubic in u = n sqrt(N_i/N_max) (uniform in u; at
   the first interval the missing node u = -1 is the mirror of u = 1, a function smooth in
   N_i being even in u);
-* omega_c: layers at omega_ref (1 + k delta), k = -1 ... 3 (default delta = 2.5 %: the
-  integrated cage runs up to ~5 % faster than the quasi-static one it starts from),
+* omega_c: layers at omega_ref (1 + k delta), by default k = -1 ... 3 (delta = 2.5 %: the
+  integrated cage runs up to ~5 % faster than the quasi-static one it starts from; the
+  caller extends the range if the cage leaves it),
   quadratic (Lagrange through the nearest layer and its neighbours; exact for the
   centrifugal part of Q_o).
 
@@ -59,9 +60,9 @@ class TractionTable:
 
     spin0, spin_step : first node and spacing of the uniform omega_r grid [rad/s].
     loads : (n + 2,) N_i nodes N_max (k/n)^2 [N] (first 0; the last one beyond N_max, the
-    cubic's end node).  cage : (5,) omega_c layers [rad/s], equally spaced.
+    cubic's end node).  cage : (n_c,) omega_c layers [rad/s], equally spaced (n_c >= 3).
     values : (n_c, n_N, n_w, 3) S, F_d, Q_o [N] (columns ``T_*``).
-    evaluations : grid points evaluated.
+    evaluations : grid points evaluated for this table (reused layers not counted).
     """
 
     spin0: float
@@ -98,15 +99,20 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
                          spin_range: tuple[float, float], max_load: float,
                          cage_speed: float, *, spin_step: float = DEFAULT_SPIN_STEP,
                          load_nodes: int = DEFAULT_LOAD_NODES,
-                         cage_step: float = DEFAULT_CAGE_STEP) -> TractionTable:
+                         cage_step: float = DEFAULT_CAGE_STEP,
+                         cage_layers: tuple[int, int] = (-1, 3),
+                         previous: TractionTable | None = None) -> TractionTable:
     """Tabulate S, F_d and Q_o of ``race_model`` (:func:`thermobearing.skidding.roller.
     build_model`) with :func:`thermobearing.skidding.roller_residual.evaluate`.
 
     inner_speed : omega_i [rad/s].  body_force(omega_c) -> outward body force per roller
     without the centrifugal term [N] (the unbalance's orbital force).
     spin_range : (low, high) omega_r [rad/s] to cover.  max_load : largest N_i [N].
-    cage_speed : omega_c of the second of the five layers [rad/s].
+    cage_speed : reference omega_c [rad/s]; layers at cage_speed (1 + cage_step k) for k in
+    ``cage_layers`` = (first, last) (default -1 ... 3, at least three layers).
     spin_step [rad/s], load_nodes, cage_step [-]: the grid (module notes).
+    previous : a table of the same model on the same spin and load grid whose cage layers
+    are reused where they coincide (only the new layers are evaluated).
     """
     from .roller_residual import evaluate
 
@@ -121,12 +127,25 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     spins = spin0 + spin_step * np.arange(n_w)
     n_l = max(int(load_nodes), 2)
     loads = max(float(max_load), 1.0) * (np.arange(n_l + 2) / n_l) ** 2
-    cage = cage_speed * (1.0 + cage_step * np.array([-1.0, 0.0, 1.0, 2.0, 3.0]))
+    k_lo, k_hi = int(cage_layers[0]), int(cage_layers[1])
+    if k_hi - k_lo < 2 or 1.0 + cage_step * k_lo <= 0.0:
+        raise ValueError(f"cage_layers {cage_layers}: at least three layers, all > 0")
+    cage = cage_speed * (1.0 + cage_step * np.arange(k_lo, k_hi + 1, dtype=float))
     w_all = np.tile(spins, loads.size)
     n_all = np.repeat(loads, n_w)
     zeros = np.zeros(w_all.size)
     values = np.empty((cage.size, loads.size, n_w, 3))
+    reuse = (previous is not None and previous.values.shape[1:] == values.shape[1:]
+             and previous.spin0 == spin0 and previous.spin_step == spin_step
+             and np.array_equal(previous.loads, loads))
+    n_new = 0
     for ic, wc in enumerate(cage):
+        if reuse:
+            hit = np.nonzero(np.abs(previous.cage - wc) <= 1e-12 * wc)[0]
+            if hit.size:
+                values[ic] = previous.values[hit[0]]
+                continue
+        n_new += 1
         body = np.full(w_all.size, float(body_force(float(wc))))
         e = evaluate(race_model, float(inner_speed), w_all, float(wc), n_all, body, zeros,
                      (0.0, 0.0))
@@ -136,7 +155,7 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     if not np.all(np.isfinite(values)):
         raise ValueError("traction model returned non-finite values on the table grid")
     return TractionTable(float(spin0), float(spin_step), loads, cage, values,
-                         int(w_all.size * cage.size))
+                         int(w_all.size * n_new))
 
 
 @njit(cache=True)

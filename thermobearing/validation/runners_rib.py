@@ -92,6 +92,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     from ..skidding.roller_dynamics_coupled import simulate_coupled
 
     orbits = float(inputs.get("coupled_orbits", 1.5))
+    warm = float(inputs.get("coupled_warmup_orbits", orbits))
     base_key = (round(rd.PAPER003_BASE["speed"], 6), round(rd.PAPER003_BASE["radial_load"], 6))
 
     def coupled(mass: float, **rib: float) -> dict[str, float]:
@@ -100,10 +101,18 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                            rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
                            quasi_static=cache.get(base_key), rib={"slide": slide, **rib},
                            pocket_dof=pocket_dof, coupling="none")
-        r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=orbits)
+        r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm)
         return {"pv_left": r.pv_left, "pv_right": r.pv_right,
                 "pv_contact_left": r.pv_contact_left, "pv_contact_right": r.pv_contact_right,
                 "slip_speed": r.slip_speed, "cost_s": r.cost_s}
+
+    def coupled_sweep(parameter: str, values: list[float],
+                      masses: list[float] | None = None) -> list[dict]:
+        return rd.pv_slip_map(bearing, lub, parameter, values,
+                              [m_hi] if masses is None else masses,
+                              temperature=temperature, cache=cache, slide=slide,
+                              pocket_dof=pocket_dof, model="coupled", coupling="none",
+                              coupled_options={"n_orbits": orbits, "warmup_orbits": warm})
 
     def unbalance_rows(base: list[dict], prefix: str) -> None:
         out[prefix + "pv_ratio_unbalance_high_vs_low"] = _pv(base[2]) / _pv(base[1])
@@ -129,20 +138,24 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     coupled_base = [coupled(mass) for mass in (0.0, m_lo, m_hi)]
     unbalance_rows(coupled_base, "")
 
-    # radial load (Fig. 7, no unbalance): slip falls and flattens above 5000 N
+    # radial load (Fig. 7, no unbalance): slip falls and flattens above 5000 N; speed
+    # (Fig. 8, 0.11 g): PV and slip rise (coupled gated, reduced beside)
     loads = _list(inputs, "radial_loads", "force")
-    rows = sweep("radial_load", loads, [0.0])
-    s = [r["slip_speed"] for r in rows]
     i5 = int(np.argmin(np.abs(np.asarray(loads) - 5000.0)))
-    out["slip_ratio_load_low_vs_5000N"] = s[0] / s[i5]
-    out["slip_flattening_above_5000N"] = abs(s[-1] - s[i5]) / max(abs(s[0] - s[i5]), 1e-12)
-
-    # speed (Fig. 8): PV and slip rise
     speeds = _list(inputs, "speeds", "angular_speed")
-    rows = reduced_or_none("speed", speeds)
-    if rows is not None:
-        out["pv_ratio_speed_high_vs_low"] = _pv(rows[-1]) / max(_pv(rows[0]), 1e-30)
-        out["slip_ratio_speed_high_vs_low"] = rows[-1]["slip_speed"] / rows[0]["slip_speed"]
+    for prefix, rows_l, rows_s in (
+            ("reduced_", sweep("radial_load", loads, [0.0]), reduced_or_none("speed", speeds)),
+            ("", coupled_sweep("radial_load", loads, [0.0]),
+             coupled_sweep("speed", speeds))):
+        s = [r["slip_speed"] for r in rows_l]
+        out[prefix + "slip_ratio_load_low_vs_5000N"] = s[0] / s[i5]
+        out[prefix + "slip_flattening_above_5000N"] = (abs(s[-1] - s[i5])
+                                                       / max(abs(s[0] - s[i5]), 1e-12))
+        if rows_s is not None:
+            out[prefix + "pv_ratio_speed_high_vs_low"] = (_pv(rows_s[-1])
+                                                          / max(_pv(rows_s[0]), 1e-30))
+            out[prefix + "slip_ratio_speed_high_vs_low"] = (rows_s[-1]["slip_speed"]
+                                                            / rows_s[0]["slip_speed"])
 
     # axial clearance (Fig. 9): PV rises, slip falls, both flatten above 0.05 mm (gated rows
     # from the coupled integration, the reduced model's beside)
@@ -162,12 +175,6 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         out[prefix + "pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
         out[prefix + "pv_contact_flattening_above_0.05mm"] = (
             abs(pvc[-1] - pvc[j5]) / max(abs(pvc[j5] - pvc[0]), 1e-12))
-
-    def coupled_sweep(parameter: str, values: list[float]) -> list[dict]:
-        return rd.pv_slip_map(bearing, lub, parameter, values, [m_hi],
-                              temperature=temperature, cache=cache, slide=slide,
-                              pocket_dof=pocket_dof, model="coupled", coupling="none",
-                              coupled_options={"n_orbits": orbits, "warmup_orbits": orbits})
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm (coupled gated, reduced
     # beside)
