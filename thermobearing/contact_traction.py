@@ -81,7 +81,7 @@ from scipy.special import roots_jacobi, roots_legendre
 
 from .errors import InputError
 from .state import ContactSet
-from .traction import EYRING, TractionLaw, _law_stress
+from .traction import EYRING, TractionLaw, _eyring_smooth_node, _law_stress
 
 GENERALIZED = ("transverse_force", "rolling_force", "moment_transverse", "moment_rolling",
                "moment_normal")
@@ -310,6 +310,13 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
     n = q.size
     nk = xg.size
     rate_u = np.empty(pshape_u.size)
+    # fast path (the ball solver's default law): Eyring with the smooth cap, tau0 > 0,
+    # tabulated viscosity, no Jacobian -- the node loop without the generic law's branches
+    # (:func:`thermobearing.traction._eyring_smooth_node`, same formula; ~15-20 % less time
+    # per contact, measured in-process against the generic loop)
+    fast = (law_id == EYRING and visc_mode == 1 and not jacobian and law_params[2] != 0.0
+            and law_params[1] > 0.0)
+    lam_f, tau0_f, inv_tau0_f = law_params[0], law_params[1], law_params[3]
     for c in range(n):
         for j in range(6):
             out[c, j] = 0.0
@@ -332,6 +339,32 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
                 rate_u[u] = _table_viscosity(p0 * pshape_u[u], ln_tab, slope_tab,
                                              inv_dp) * inv_h
         sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
+        if fast:
+            vxc, vyc = vx[c], vy[c]
+            for k in range(nk):
+                xk, yk = xg[k], yg[k]
+                xk2 = xk * xk
+                dvx = vxc + cx2 * xk2 - cy * yk
+                dvy = vyc + cx * xk - cy2 * xk2
+                speed = math.sqrt(dvx * dvx + dvy * dvy)
+                tw = _eyring_smooth_node(lam_f, tau0_f, inv_tau0_f, speed, p0 * pshape[k],
+                                         rate_u[pidx[k]], ab * area_w[k])
+                per_speed = tw / speed if speed > 0.0 else 0.0
+                px, py = per_speed * dvx, per_speed * dvy   # -t_x, -t_y
+                sx0 += px
+                sx1 += px * xk2
+                sx2 += px * yk
+                sy0 += py
+                sy1 += py * xk2
+                sy2 += py * xk
+                heat += tw * speed
+            out[c, 0] = -sx0
+            out[c, 1] = -sy0
+            out[c, 2] = a2c * sy1
+            out[c, 3] = -a2c * sx1
+            out[c, 4] = bc * sx2 - ac * sy2
+            out[c, 5] = heat
+            continue
         j00 = j01 = j02 = j03 = j04 = j11 = j12 = j13 = j14 = 0.0
         j22 = j23 = j24 = j33 = j34 = j44 = 0.0
         g0 = g1 = g2 = g3 = g4 = 0.0

@@ -131,6 +131,23 @@ def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, rate: float
     return ((a + b * s) * e + d) * p, ((b - c * (a + b * s)) * e) * p
 
 
+@numba.njit(cache=True, inline="always")
+def _eyring_smooth_node(lam: float, tau0: float, inv_tau0: float, s: float, p: float,
+                        rate: float, weight: float) -> float:
+    """Fast path of the ``eyring`` law with the smooth cap and tau0 > 0 (the ball solver's
+    default) for the contact integration: tau(s, p) * weight [N] for slide speed s >= 0
+    [m/s], pressure p >= 0 [Pa], rate = eta / h [Pa s/m] and the node's area ``weight``
+    [m^2]. The same formula as :func:`_law_stress` (tau_E = tau0 asinh(eta s / (h tau0)),
+    tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2), tau_L = Lambda p; tau_E 1e-150 when
+    tau_L = 0), without its branches on the law, the cap and the derivative; equal to it
+    to round-off (a few ulp; test). Reference: :class:`EyringTraction`."""
+    tau_e = tau0 * math.asinh(rate * s * inv_tau0)
+    tau_l = lam * p
+    if tau_l > 0.0:
+        return tau_e * tau_l * weight / math.sqrt(tau_l * tau_l + tau_e * tau_e)
+    return tau_e * 1e-150 * weight
+
+
 @numba.njit(cache=True)
 def _stress_array(law_id: int, params: np.ndarray, s: np.ndarray, p: np.ndarray,
                   eta: np.ndarray, h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -187,3 +187,44 @@ def test_default_quadrature_accuracy(law):
     r = integrate(law, **kw)
     assert float(r.heat) == pytest.approx(float(ref.heat), rel=1e-2)
     assert float(r.moment_normal) == pytest.approx(float(ref.moment_normal), rel=1e-2)
+
+
+def test_eyring_fast_path_equals_generic_loop():
+    # the node loop's fast path (Eyring, smooth cap, tau0 > 0, tabulated viscosity, no
+    # Jacobian; traction._eyring_smooth_node) against the generic loop of the same kernel
+    # (taken with jacobian=True): forces, moments and heat agree to round-off. Contacts:
+    # random loads / ellipses / slip and spin (seeded), one unloaded; Barus viscosity
+    # tabulated on a uniform pressure grid (ln eta linear in p, exact for Barus).
+    from thermobearing.contact_traction import _integrate_contacts, _rule
+    from thermobearing.traction import EYRING
+
+    rng = np.random.default_rng(11)
+    n = 40
+    q = rng.uniform(50.0, 3000.0, n)
+    q[3] = 0.0
+    a = rng.uniform(1e-3, 3e-3, n)
+    b = rng.uniform(0.2e-3, 0.5e-3, n)
+    vy, vx = rng.normal(0.0, 0.5, n), rng.normal(0.0, 0.05, n)
+    wz, wx, wy = rng.normal(0.0, 200.0, n), rng.normal(0.0, 500.0, n), rng.normal(0.0, 50.0, n)
+    curv = np.full(n, 1.0 / 0.02)
+    h = rng.uniform(0.1e-6, 1e-6, n)
+    p_max, m = 4e9, 401
+    inv_dp = (m - 1) / p_max
+    ln_tab = np.log(0.05) + 2e-8 * np.linspace(0.0, p_max, m)
+    slope_tab = np.full(m, 2e-8 / inv_dp)
+    tau0 = 5e6
+    params = np.array([0.08, tau0, 1.0, 1.0 / tau0])
+    rule = _rule("point", 8, 4)
+    outs = []
+    for jac in (False, True):
+        out = np.empty((n, 6))
+        _integrate_contacts(EYRING, params, 1, ln_tab, slope_tab, inv_dp, np.zeros((0, 0)), q,
+                            a, b, vy, vx, wz, wx, wy, curv, h, *rule, True, jac, out,
+                            np.empty((n, 5, 5)), np.empty((n, 5)))
+        outs.append(out)
+    fast, generic = outs
+    assert np.all(fast[3] == 0.0)
+    scale = np.abs(generic).max(axis=0)
+    np.testing.assert_allclose(fast, generic, rtol=1e-13, atol=1e-13 * scale.max())
+    np.testing.assert_allclose(fast[:, 5], generic[:, 5], rtol=1e-13)
+    assert np.all(fast[:, 5] >= 0.0) and np.abs(fast[:, :2]).max() > 0.0
