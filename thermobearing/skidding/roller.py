@@ -216,7 +216,7 @@ def solve_roller(
     **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
         limiting_shear_coefficient, traction_law, film_model, drag_model, pocket_clearance,
         cage_drag_torque, ring_support, unloaded_zone, fluid_shear_modulus, film_pressure,
-        traction_curve).
+        traction_curve, pocket_film).
 
     Returns
     -------

@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError, check_positive, check_temperature
-from .roller_fluid import ROLLER_DRAG, LineContactForces
+from .roller_fluid import POCKET_FILM_MODELS, ROLLER_DRAG, LineContactForces
 
 #: default pocket clearance when the cage geometry gives none [m] (estimated: 1-2 % of D)
 DEFAULT_POCKET_CLEARANCE_FRACTION = 0.015
@@ -83,6 +83,7 @@ class RollerModel:
     fluid_shear_modulus: float | None = None
     film_pressure: str = "hertz"
     traction_curve: Any = None
+    pocket_film: str = "one_face"
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -149,6 +150,7 @@ def build_model(
     fluid_shear_modulus: float | None = None,
     film_pressure: str = "hertz",
     traction_curve: Any = None,
+    pocket_film: str = "one_face",
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -216,7 +218,18 @@ def build_model(
         the inlet/outlet Couette, Poiseuille and rolling forces stay those of the drag model.
         The traction law then serves only the inlet/outlet (Newtonian) shear. Closed-form drag
         only, not with ``fluid_shear_modulus`` or ``film_pressure``.
+    pocket_film : roller-pocket film of paper 000 eqs. 37-38 (one of
+        :data:`~thermobearing.skidding.roller_fluid.POCKET_FILM_MODELS`). ``"one_face"``
+        (default): the roller's film on the face it is pressed on, capped by the pocket
+        clearance (:func:`~thermobearing.skidding.roller_fluid.pocket_forces`; a kink at
+        F_d = 0 where the roller changes faces). ``"two_faces"``: both faces of a flooded
+        pocket carry a Martin film, the roller's offset in the pocket balances the net
+        normal force (:func:`~thermobearing.skidding.roller_fluid.pocket_forces_two_faces`;
+        smooth and even in F_d). The difference matters where the pocket forces are as small
+        as their changes (film-supported ring under whirl, paper 000).
     """
+    if pocket_film not in POCKET_FILM_MODELS:
+        raise InputError("pocket_film", pocket_film, POCKET_FILM_MODELS)
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
     if ring_support not in RING_SUPPORT_MODELS:
@@ -299,5 +312,5 @@ def build_model(
         clearance_film=bool(clearance_film), clearance_film_floor=float(clearance_film_floor),
         unloaded_zone=unloaded_zone, ring_support=ring_support,
         fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
-        film_pressure=film_pressure, traction_curve=traction_curve,
+        film_pressure=film_pressure, traction_curve=traction_curve, pocket_film=pocket_film,
     )

@@ -11,7 +11,7 @@ speed ``omega_c``. Equations (paper eqs. 12-15, 20-32):
   roller surface speed u_roller = D/2 omega_r (both contacts), sliding V = u_race - u_roller;
 * roller moment about its axis (eqs. 22/25, 28/31):  S_i + S_o - f_d = 0, where S is the
   shear force (Couette + Poiseuille, eq. 5/33-34) of a contact on the roller surface and
-  f_d the pocket-film friction (eq. 38);
+  f_d the pocket-film friction (eq. 38; one or both pocket faces, ``pocket_film``);
 * roller force along the orbit (eqs. 21/24): the pocket normal force
   F_d = (S_i + (1 - D/d_m) Q_xi) - (S_o + (1 + D/d_m) Q_xo) - m_r a_t,j  (Q_x the rolling
   resultant of the film pressure, eq. 35, of which the roller takes the share R_x/(D/2);
@@ -35,7 +35,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .roller_fluid import LineContactForces, clearance_film_forces, pocket_forces
+from .roller_fluid import (
+    LineContactForces,
+    clearance_film_forces,
+    pocket_forces,
+    pocket_forces_two_faces,
+)
 from .roller_model import RollerModel
 
 
@@ -66,6 +71,7 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     """
     d_m, d = model.pitch_diameter, model.roller_diameter
     half_d = 0.5 * d
+    pocket_law = pocket_forces_two_faces if model.pocket_film == "two_faces" else pocket_forces
     q_o = inner_load + body_force_const + model.roller_mass * 0.5 * d_m * omega_c**2
     q_o = np.maximum(q_o, 0.0)
     u_ri = 0.5 * (d_m - d) * (omega - omega_c) * np.ones_like(omega_r)
@@ -103,12 +109,12 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
                 - model.roller_mass * a_t)
         s_o = np.zeros_like(base)
         for _ in range(8):
-            s_o = pocket_forces(base - s_o, omega_r, d, model.length, model.eta0,
+            s_o = pocket_law(base - s_o, omega_r, d, model.length, model.eta0,
                                 model.pocket_clearance).friction
         fo = dataclasses.replace(fo, traction=np.where(
             free, s_o + fo.poiseuille * fo.entrainment_sign, fo.traction))
     pocket = fi.orbital_force(share_i) - fo.orbital_force(share_o) - model.roller_mass * a_t
-    fric = pocket_forces(pocket, omega_r, d, model.length, model.eta0,
+    fric = pocket_law(pocket, omega_r, d, model.length, model.eta0,
                          model.pocket_clearance).friction
     roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
     if free is not None:
