@@ -16,8 +16,10 @@ subprocesses and kept out of the per-point times (the map warms the kernels up f
 Usage: python benchmarks/bm5_skidding.py [--quick] [--nmap N] [--z 8,16,32] [--json] [--out DIR]
        [--no-first-call] [--anchor-points N] [--anchor-repeat N]
 
-The anchor times newton_block and root(hybr) ``--anchor-repeat`` times per point (least CPU
-time kept; default 3) and least_squares once.
+The anchor times newton_block and root(hybr) ``--anchor-repeat`` times per point, interleaved
+(default 5; medians and the spread over the repeats are printed) and least_squares once; the
+hybr ratio is printed over all anchor points (hybr failures counted at their time) and over
+the points where both methods converged.
 """
 
 from __future__ import annotations
@@ -83,13 +85,15 @@ def run_map(Z, speeds, loads, temperature, warm):
     return rows
 
 
-def run_scipy(Z, points, temperature, repeat=3):
+def run_scipy(Z, points, temperature, repeat=5):
     """root(hybr) and least_squares(trf) on the identical residual from the same cold start.
 
-    newton_block and root(hybr) are timed ``repeat`` times each (a fresh residual system every
-    time, so no memo is shared) and the least CPU time is kept: single shots of these 4 points
-    spread the printed hybr ratio over 1.8-3.5x on the shared machine (session 5);
-    least_squares (seconds per point) runs once."""
+    newton_block and root(hybr) are timed ``repeat`` times each, interleaved (newton, hybr,
+    newton, hybr, ...; a fresh residual system every time, so no memo is shared), and every
+    timing is kept: the caller reports medians and the spread over the repeats (session 6:
+    the earlier least-of-3 per method timed the two methods minutes apart on the shared
+    machine, and the printed ratio followed the machine's load). least_squares (seconds per
+    point) runs once. Returns [((speed, Fa), {method: (converged, [times], residual)})]."""
     from scipy.optimize import least_squares, root
 
     from thermobearing.errors import ConvergenceError
@@ -109,42 +113,67 @@ def run_scipy(Z, points, temperature, repeat=3):
         def residual(sysm, X0=X0, G0=G0):
             return lambda y: sysm.full_residual(y, X0, G0)
 
-        rec = {}
+        rec = {"newton": [True, [], 0.0], "root_hybr": [True, [], 0.0]}
         for _ in range(max(1, repeat)):
             sysm = ball_residual_system(b, models, w, 1000.0, fa, Z)
             t0 = time.process_time()
             try:
                 _, _, nrm, it = newton_block(sysm, X0, G0)
-                got = (True, time.process_time() - t0, nrm)
+                ok = True
             except ConvergenceError as err:
-                got = (False, time.process_time() - t0, err.residual)
-            if "newton" not in rec or got[1] < rec["newton"][1]:
-                rec["newton"] = got
-        for _ in range(max(1, repeat)):
+                ok, nrm = False, err.residual
+            rec["newton"][1].append(time.process_time() - t0)
+            rec["newton"][0] &= ok
+            rec["newton"][2] = nrm
             f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
             t0 = time.process_time()
             try:
-                s = root(f, y0, method="hybr",
-                         options={"xtol": 1e-12, "maxfev": 200 * (Z * 6 + 3)})
-                nrm = float(np.linalg.norm(f(s.x)))
-                got = (bool(nrm < 1e-7), time.process_time() - t0, nrm)
+                sol = root(f, y0, method="hybr",
+                           options={"xtol": 1e-12, "maxfev": 200 * (Z * 6 + 3)})
+                t_h = time.process_time() - t0
+                nrm = float(np.linalg.norm(f(sol.x)))
+                ok = bool(nrm < 1e-7)
             except Exception as err:  # noqa: BLE001 - count any failure of the anchor
-                got = (False, time.process_time() - t0, float("nan"))
+                t_h, ok, nrm = time.process_time() - t0, False, float("nan")
                 del err
-            if "root_hybr" not in rec or got[1] < rec["root_hybr"][1]:
-                rec["root_hybr"] = got
+            rec["root_hybr"][1].append(t_h)
+            rec["root_hybr"][0] &= ok
+            rec["root_hybr"][2] = nrm
+        rec = {k: (v[0], v[1], v[2]) for k, v in rec.items()}
         f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
         t0 = time.process_time()
         try:
-            s = least_squares(f, y0, method="trf", xtol=1e-12, ftol=1e-14, gtol=1e-14,
-                              max_nfev=50 * (Z * 6 + 3))
-            nrm = float(np.linalg.norm(f(s.x)))
-            rec["least_squares_trf"] = (bool(nrm < 1e-7), time.process_time() - t0, nrm)
+            sol = least_squares(f, y0, method="trf", xtol=1e-12, ftol=1e-14, gtol=1e-14,
+                                max_nfev=50 * (Z * 6 + 3))
+            t_l = time.process_time() - t0
+            nrm = float(np.linalg.norm(f(sol.x)))
+            rec["least_squares_trf"] = (bool(nrm < 1e-7), [t_l], nrm)
         except Exception as err:  # noqa: BLE001
-            rec["least_squares_trf"] = (False, time.process_time() - t0, float("nan"))
+            rec["least_squares_trf"] = (False, [time.process_time() - t0], float("nan"))
             del err
         out.append(((n, fa), rec))
     return out
+
+
+def anchor_ratios(res, meth):
+    """Time ratio meth / newton_block over the anchor points from interleaved timings:
+    (ratio of the summed per-point medians over all points -- failures of either method
+    counted at their time --, the same over the points where both converged, min and max
+    over the repeats of the ratio of the per-repeat sums (all points), number of points
+    where both converged). least_squares has one timing per point: its ratio uses it
+    against newton's median."""
+    med = {m: np.array([np.median(rec[m][1]) for _, rec in res]) for m in ("newton", meth)}
+    both = np.array([rec["newton"][0] and rec[meth][0] for _, rec in res])
+    r_all = float(med[meth].sum() / med["newton"].sum())
+    r_both = float(med[meth][both].sum() / med["newton"][both].sum()) if both.any() else np.nan
+    nrep = min(min(len(rec["newton"][1]), len(rec[meth][1])) for _, rec in res)
+    if meth == "least_squares_trf" or nrep < 2:
+        lo = hi = r_all
+    else:
+        per = [sum(rec[meth][1][k] for _, rec in res) / sum(rec["newton"][1][k] for _, rec in res)
+               for k in range(nrep)]
+        lo, hi = float(min(per)), float(max(per))
+    return r_all, r_both, lo, hi, int(both.sum())
 
 
 def run_robustness(Z, temperature):
@@ -219,10 +248,12 @@ def main(argv=None) -> int:
                     help="map size n x n (default 20, 5 with --quick)")
     ap.add_argument("--z", default=None, help="ball counts, e.g. 8,16,32 (default 8,16,32; "
                     "16 with --quick)")
-    ap.add_argument("--anchor-repeat", type=int, default=3,
-                    help="timings of newton_block and root(hybr) per anchor point, least kept")
+    ap.add_argument("--anchor-repeat", type=int, default=5,
+                    help="interleaved timings of newton_block and root(hybr) per anchor point "
+                         "(medians and their spread are reported)")
     ap.add_argument("--anchor-points", type=int, default=None,
-                    help="points of the scipy anchor subset (default all, 4 with --quick)")
+                    help="points of the scipy anchor subset (default: a 3 x 3 grid of the map, "
+                         "the 300/1650/3000 r/min x 40 kN/200 N grid with --quick)")
     ap.add_argument("--no-first-call", action="store_true",
                     help="skip the first-call (numba compile / cache load) measurement")
     args = ap.parse_args(argv)
@@ -249,6 +280,7 @@ def main(argv=None) -> int:
     solve_ball(_b, _m, 1800 * RPM, 1000.0, 10.2e3, n_balls=zs[0], guess=_r,
                theoretical_reference=0.45)
     summary = []
+    small_med = {}
     for Z in zs:
         for tname, T in temps.items():
             for warm in (False, True):
@@ -271,6 +303,8 @@ def main(argv=None) -> int:
                                     points=len(rows), evaluations=nev))
                 if small:
                     ok_s = [x for x in small if x[0]]
+                    small_med[(Z, tname)] = (float(np.median([x[1] for x in ok_s]))
+                                             if ok_s else np.nan)
                     summary.append((f"Z={Z},{tname},warm +2% load step", len(small),
                                     len(small) - len(ok_s),
                                     float(np.mean([x[1] for x in ok_s])) if ok_s else np.nan,
@@ -286,27 +320,33 @@ def main(argv=None) -> int:
     # anchor comparison on a subset (same residual, same cold start)
     sub_speeds = speeds[:: max(1, nmap // 3)]
     sub_loads = loads[:: max(1, nmap // 3)]
+    if args.quick:
+        # spread over the map (the session-5 quick subset was the first four points, all at
+        # 300 r/min, two of them light-load points where hybr fails early)
+        sub_speeds, sub_loads = speeds[::2], loads[::2]
     pts = [(float(n), float(fa)) for n in sub_speeds for fa in sub_loads]
     if args.anchor_points:
         pts = pts[:: max(1, len(pts) // args.anchor_points)][:args.anchor_points]
-    elif args.quick:
-        pts = pts[:4]
     anchor_rows = []
+    anchor_res = {}
     for Z in [z for z in zs if z <= 16]:
         res = run_scipy(Z, pts, temps["hot_oil"], repeat=args.anchor_repeat)
+        anchor_res[Z] = res
         for meth in ("newton", "root_hybr", "least_squares_trf"):
-            t = [rec[meth][1] for _, rec in res]
+            t = [np.median(rec[meth][1]) for _, rec in res]
             f = sum(not rec[meth][0] for _, rec in res)
             anchor_rows.append((Z, meth, float(np.mean(t)), f, len(res)))
-        tn = np.mean([rec["newton"][1] for _, rec in res])
+        tn = np.mean([np.median(rec["newton"][1]) for _, rec in res])
         for meth in ("root_hybr", "least_squares_trf"):
-            tm = np.mean([rec[meth][1] for _, rec in res])
+            tm = np.mean([np.median(rec[meth][1]) for _, rec in res])
+            r_all, r_both, lo, hi, nboth = anchor_ratios(res, meth)
             records.append(dict(benchmark="bm5_skidding", case=f"anchor_subset_Z{Z}",
                                 method=meth, setting="cold start, hot oil", time_s=float(tm),
                                 error=float(np.nanmax([rec[meth][2] for _, rec in res])),
-                                ratio_vs_anchor=float(tm / tn),
+                                ratio_vs_anchor=float(tm / tn), ratio_both_converged=r_both,
+                                ratio_min=lo, ratio_max=hi, points_both_converged=nboth,
                                 failures=sum(not rec[meth][0] for _, rec in res),
-                                points=len(res)))
+                                points=len(res), repeats=args.anchor_repeat))
         records.append(dict(benchmark="bm5_skidding", case=f"anchor_subset_Z{Z}",
                             method="newton_block", setting="cold start, hot oil",
                             time_s=float(tn),
@@ -322,7 +362,6 @@ def main(argv=None) -> int:
                                 setting=f"Z={Z}, {case}", time_s=None, error=None,
                                 ratio_vs_anchor=None, outcome=outcome, message=msg))
     base = {z: t for z, m, t, f, n in anchor_rows if m == "newton"}
-    ratios = {(z, m): t / base[z] for z, m, t, f, n in anchor_rows}
     warm16 = [tpp for s, _, _, tpp, *_ in summary if s.startswith("Z=16") and "+2%" in s]
     if args.json:
         print(json.dumps(records, indent=1, default=float))
@@ -333,19 +372,29 @@ def main(argv=None) -> int:
             print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.1f} {its:6.1f} {nev:6.1f}")
         print("\n(evals: residual evaluations per point; a structured Jacobian is 9 of them,"
               " evaluated as one batch)")
-        print(f"\nanchor subset (cold start, identical scaled residual; newton and hybr: least of "
-              f"{args.anchor_repeat} timings):")
+        print(f"\nanchor subset (cold start, hot oil, identical scaled residual; newton and hybr "
+              f"timed {args.anchor_repeat} times interleaved, medians; least_squares once):")
         for z, m, t, f, n in anchor_rows:
             print(f"  Z={z:2d} {m:20s} {1e3 * t:9.1f} ms/pt  failures {f}/{n}"
                   f"  time ratio vs newton_block {t / base[z]:6.1f}x")
+        for z, res in anchor_res.items():
+            print(f"  Z={z:2d} per point (r/min, Fa N: newton ms / hybr ms [ok], median):")
+            for (n, fa), rec in res:
+                tn_, th_ = np.median(rec["newton"][1]), np.median(rec["root_hybr"][1])
+                print(f"    {n:6.0f} {fa:8.0f}: {1e3 * tn_:8.1f} / {1e3 * th_:8.1f} "
+                      f"[{'ok' if rec['root_hybr'][0] else 'FAIL'}]  {th_ / tn_:5.1f}x")
         print("\nissue 5 targets:")
         for z in sorted(base):
-            print(f"  Z={z:2d} root(hybr) / newton_block = {ratios[(z, 'root_hybr')]:.1f}x "
-                  f"(target >= 3x); least_squares(trf) / newton_block = "
-                  f"{ratios[(z, 'least_squares_trf')]:.1f}x (target >= 20x)")
+            for m, target in (("root_hybr", 3), ("least_squares_trf", 20)):
+                r_all, r_both, lo, hi, nboth = anchor_ratios(anchor_res[z], m)
+                spread = (f", per-repeat {lo:.1f}-{hi:.1f}x" if m == "root_hybr" else "")
+                print(f"  Z={z:2d} {m} / newton_block = {r_all:.1f}x over all points{spread}; "
+                      f"{r_both:.1f}x over the {nboth} points where both converged "
+                      f"(target >= {target}x)")
         if warm16:
-            print(f"  Z=16 warm +2 % load step: {1e3 * max(warm16):.1f} ms per point "
-                  f"(target <= 1 ms, aim 0.2 ms)")
+            meds = [v for (z, _), v in small_med.items() if z == 16]
+            print(f"  Z=16 warm +2 % load step: {1e3 * max(warm16):.2f} ms per point (mean, "
+                  f"worse oil), median {1e3 * max(meds):.2f} ms (target <= 1 ms, aim 0.2 ms)")
         if first:
             print("\nfirst call, fresh interpreter (CPU beyond the same cold + warm solve pair"
                   " repeated; Z = 16):")
