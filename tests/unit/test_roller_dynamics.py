@@ -224,3 +224,45 @@ def test_lagged_spins_limits(base):
     unloaded = m.inner_load == 0
     assert np.all(lag[unloaded] > m.spin[unloaded] + 3000.0)
     assert np.max(lag) <= np.max(m.spin) + 1e-6
+
+
+def test_raceway_axial_traction_and_ring_reaction(base):
+    # a skewed roller without rib contact (centred, alpha = 0.2 deg < 0.57 deg at which it
+    # reaches the rib): X'' = mu_t [N_i tanh(s_i/s0) + N_o tanh(s_o/s0)] / m with
+    # s_i = -u_i sin(alpha) - X', s_o = u_o sin(alpha) - X' - X'_ring (outer ring fixed,
+    # X' relative to the inner ring); the inner ring takes -N_i mu_t tanh(s_i/s0) (eq. 20)
+    _, _, m = base
+    p = rd._params(m)
+    a, xd, xd_ring, n_i, n_o, w = math.radians(0.2), 0.01, 0.003, 500.0, 580.0, 15500.0
+    u_i = (m.inner_speed - m.cage_speed) * 0.5 * m.geom.inner_raceway_diameter
+    u_o = m.cage_speed * 0.5 * m.outer_raceway_diameter
+    s_i = -u_i * math.sin(a) - xd
+    s_o = u_o * math.sin(a) - xd - xd_ring
+    mu, s0 = m.traction_limit, m.traction_speed
+    r = rd._rhs_ring(p, 0.0, xd, a, 0.0, 0.0, 0.0, n_i, n_o, w, 0.0, 0.0, 0.0, xd_ring)
+    assert r[1] * m.roller_mass == pytest.approx(
+        mu * (n_i * math.tanh(s_i / s0) + n_o * math.tanh(s_o / s0)), rel=1e-9)
+    assert r[7] == pytest.approx(-mu * n_i * math.tanh(s_i / s0), rel=1e-9)
+    # held ring: _rhs is _rhs_ring at zero ring speed
+    assert rd._rhs(p, 0.0, xd, a, 0.0, 0.0, 0.0, n_i, n_o, w, 0.0, 0.0, 0.0) == pytest.approx(
+        rd._rhs_ring(p, 0.0, xd, a, 0.0, 0.0, 0.0, n_i, n_o, w, 0.0, 0.0, 0.0, 0.0)[:7])
+    # isotropic film: the tanh law on the resultant of the axial and rolling slides V,
+    # its axial share s/|(V, s)|
+    pi = rd._params(dataclasses.replace(m, raceway_traction="isotropic"))
+    v_i = u_i - w * 0.5 * m.geom.roller_diameter
+    v_o = u_o - w * 0.5 * m.geom.roller_diameter
+
+    def share(s, v):
+        q = math.hypot(s, v)
+        return math.tanh(q / s0) * s / q
+
+    r = rd._rhs_ring(pi, 0.0, xd, a, 0.0, 0.0, 0.0, n_i, n_o, w, 0.0, 0.0, 0.0, xd_ring)
+    assert r[1] * m.roller_mass == pytest.approx(
+        mu * (n_i * share(s_i, v_i) + n_o * share(s_o, v_o)), rel=1e-9)
+    # no rolling slide: the same as the componentwise law
+    assert rd._axial_share(0.2, 0.0, s0) == pytest.approx(math.tanh(0.2 / s0), rel=1e-12)
+    assert rd._axial_share(0.0, 3.0, s0) == 0.0
+    with pytest.raises(InputError, match="raceway_traction"):
+        rd.build_model(load_bearing("CRB_50x75x16"), load_lubricant("MIL_PRF_23699"), SPEED,
+                       3000.0, 1e-4, quasi_static=m.extras["quasi_static"],
+                       raceway_traction="coulomb")

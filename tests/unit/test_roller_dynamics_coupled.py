@@ -100,3 +100,22 @@ def test_bad_traction_option():
     m = rd.build_model(b, lub, SPEED, 3000.0, 0.0)
     with pytest.raises(InputError):
         rc.simulate_coupled(m, b, lub, traction="spline")
+
+
+def test_axially_free_inner_ring():
+    # paper 003 eq. 20 line 1: the inner ring (68 g, estimated) free axially under the rib
+    # and inner-raceway axial forces of all rollers. Short run: it moves (less than the
+    # axial clearance), and PV and slip stay close to the held ring (measured over 2 + 3
+    # orbits at 0.01-0.09 mm axial clearance: within 1-3 %, SOURCE.md)
+    b = load_bearing("CRB_50x75x16")
+    lub = load_lubricant("MIL_PRF_23699")
+    mass, note = rc.inner_ring_mass(b)
+    assert 0.05 < mass < 0.09 and "inner_ring_mass" in note
+    m = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3, coupling="none")
+    held = rc.simulate_coupled(m, b, lub, n_orbits=0.1, warmup_orbits=0.05)
+    free = rc.simulate_coupled(m, b, lub, n_orbits=0.1, warmup_orbits=0.05, ring_axial=True)
+    ring = free.series["ring_axial"]
+    assert np.all(np.isfinite(ring)) and np.max(np.abs(ring)) > 0.0
+    assert np.max(np.abs(ring - ring[0])) < 0.5 * m.geom.axial_clearance
+    assert np.all(held.series["ring_axial"] == 0.0)
+    assert free.slip_speed == pytest.approx(held.slip_speed, rel=0.02)

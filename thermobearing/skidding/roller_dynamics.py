@@ -199,6 +199,7 @@ class DynamicsModel:
     squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR
     pocket_dof: bool = True
     pocket_friction: np.ndarray | None = None
+    raceway_traction: str = "componentwise"
 
     def pocket_force_at(self, phi: float) -> float:
         """Quasi-static pocket force F_d [N] (positive: the roller pushes the cage
@@ -272,7 +273,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 pocket_stiffness: float = DEFAULT_POCKET_STIFFNESS,
                 quasi_static: Any = None, spin: str = "skidding",
                 coupling: str = "rib", pocket_dof: bool = True,
-                squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR) -> DynamicsModel:
+                squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR,
+                raceway_traction: str = "componentwise") -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -295,6 +297,11 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     the cage bars (:mod:`~thermobearing.skidding.roller_dynamics_pocket`); False holds it
     centred (the bars then act on the skew only, the model before 2026-11-22 noon).
     ``squeeze_floor``: smallest bar gap of the squeeze film [m] (estimated).
+    ``raceway_traction``: the skew's axial raceway traction and skew damping with the tanh
+    law on the axial slide alone ("componentwise", default) or on the resultant of the
+    axial and rolling slides, directed along it ("isotropic": a film's shear stress is
+    collinear with its sliding velocity [johnson_tevaarwerk1977_traction], so a skidding
+    roller's axial traction is ~mu_t s/|V|; a sensitivity, see the validation case).
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
     """
@@ -323,6 +330,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         raise InputError("spin", spin, ("skidding", "rolling", "lagged"))
     if coupling not in ("rib", "none"):
         raise InputError("coupling", coupling, ("rib", "none"))
+    if raceway_traction not in ("componentwise", "isotropic"):
+        raise InputError("raceway_traction", raceway_traction, ("componentwise", "isotropic"))
     eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
            + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
     model = DynamicsModel(
@@ -342,7 +351,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_friction=np.asarray(qs.pocket_friction, float)[order],
         pocket_viscosity=float(lubricant.dynamic_viscosity(temperature)),
         pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
-        pocket_dof=bool(pocket_dof),
+        pocket_dof=bool(pocket_dof), raceway_traction=raceway_traction,
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:
@@ -360,7 +369,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
 # parameter vector of the jitted right-hand side: the rib geometry vector
 # (RibGeometry.params, _G_N entries) followed by these dynamics scalars (indices)
 (_FG, _SREG, _MU, _UI, _UO, _LARM, _OM, _WC, _HL, _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS,
- _JT, _ETA, _RAD, _FLOOR, _PDOF, _NP) = range(_G_N, _G_N + 22)
+ _JT, _ETA, _RAD, _FLOOR, _PDOF, _VEC, _NP) = range(_G_N, _G_N + 23)
 
 
 def _params(m: DynamicsModel) -> np.ndarray:
@@ -394,19 +403,47 @@ def _params(m: DynamicsModel) -> np.ndarray:
     p[_RAD] = 0.5 * g.roller_diameter
     p[_FLOOR] = m.squeeze_floor
     p[_PDOF] = 1.0 if m.pocket_dof else 0.0
+    p[_VEC] = 1.0 if m.raceway_traction == "isotropic" else 0.0
     return p
+
+
+@njit(cache=True)
+def _axial_share(s: float, v: float, s0: float) -> float:
+    """tanh(|u|/s0) s/|u| for the slide vector u = (v, s) [m/s]: the axial component of a
+    traction law mu_t tanh(|u|/s0) directed along u (module notes); s/s0 at |u| -> 0."""
+    r = math.sqrt(s * s + v * v)
+    if r < 1e-9 * s0:
+        return s / s0
+    return math.tanh(r / s0) * s / r
 
 
 @njit(cache=True)
 def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: float,
          n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float
          ) -> tuple[float, float, float, float, float, float, float]:
-    """(X', X'', alpha', alpha'', z', z'', rib spin moment): both faces of
+    """(X', X'', alpha', alpha'', z', z'', rib spin moment) with the inner ring fixed:
+    :func:`_rhs_ring` at zero ring speed."""
+    r = _rhs_ring(p, x, xd, a, ad, z, zd, n_i, n_o, spin, psi, f_d, c_z, 0.0)
+    return r[0], r[1], r[2], r[3], r[4], r[5], r[6]
+
+
+@njit(cache=True)
+def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: float,
+              n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float,
+              xd_ring: float) -> tuple[float, float, float, float, float, float, float, float]:
+    """(X', X'', alpha', alpha'', z', z'', rib spin moment, axial force on the inner ring):
+    both faces of
     :func:`thermobearing.rib.face_values` (the kernel of :func:`~thermobearing.rib.rib_forces`)
     plus raceway, cage-bar (:func:`~thermobearing.skidding.roller_dynamics_pocket.pocket_force_z`)
     and unbalance terms (module notes). z: circumferential position in the pocket [m];
     f_d: quasi-static pocket force [N] (the raceways' net forward force on the roller);
-    c_z: raceway damping of z [N s/m]. With the pocket DOF off, z stays 0."""
+    c_z: raceway damping of z [N s/m]. With the pocket DOF off, z stays 0.
+    x, xd: axial position and speed of the roller *relative to the inner ring* [m, m/s]
+    (rib contact, inner raceway slide); xd_ring: the inner ring's axial speed [m/s] (outer
+    raceway slide: the outer ring is fixed); X'' is the roller's absolute axial
+    acceleration (paper 003 eq. 18 line 1); the last entry is minus the rib and inner-
+    raceway axial forces on the roller, i.e. their reaction on the inner ring (eq. 20
+    line 1) [N]."""
     gp = p[:_G_N]
     fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
@@ -415,9 +452,21 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: 
     mu_t = p[_MUT]
     s0 = p[_S0]
     sa = math.sin(a)
-    f_race = (n_i * mu_t * math.tanh((-p[_UI] * sa - xd) / s0)
-              + n_o * mu_t * math.tanh((p[_UO] * sa - xd) / s0))
-    m_race = -(n_i + n_o) * mu_t * math.tanh(ad * p[_LARM] / s0) * p[_LARM]
+    s_i = -p[_UI] * sa - xd
+    s_o = p[_UO] * sa - xd - xd_ring
+    arm = p[_LARM]
+    if p[_VEC] > 0.5:
+        # isotropic film: the tanh law on the resultant slide, its axial share s/|s|
+        v_i = p[_UI] - spin * p[_RAD]
+        v_o = p[_UO] - spin * p[_RAD]
+        f_inner = mu_t * n_i * _axial_share(s_i, v_i, s0)
+        f_race = f_inner + mu_t * n_o * _axial_share(s_o, v_o, s0)
+        m_race = -mu_t * (n_i * _axial_share(ad * arm, v_i, s0)
+                          + n_o * _axial_share(ad * arm, v_o, s0)) * arm
+    else:
+        f_inner = mu_t * n_i * math.tanh(s_i / s0)
+        f_race = f_inner + mu_t * n_o * math.tanh(s_o / s0)
+        m_race = -(n_i + n_o) * mu_t * math.tanh(ad * arm / s0) * arm
     fz_bar, m_pocket, _, _ = pocket_force_z(z, zd, a, p[_HL], p[_CP], p[_KC], p[_ETA],
                                             p[_RAD], p[_FLOOR])
     f_cv = p[_MUE] * (spin - p[_WC]) ** 2
@@ -428,7 +477,7 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: 
     zdd = 0.0
     if p[_PDOF] > 0.5:
         zdd = (f_d + f_cv * sp + fl[F_FZ] + fr[F_FZ] - c_z * zd + fz_bar) / p[_MASS]
-    return xd, xdd, ad, add, zd, zdd, m_spin
+    return xd, xdd, ad, add, zd, zdd, m_spin, -(fl[F_FX] + fr[F_FX] + f_inner)
 
 
 @njit(cache=True)

@@ -56,7 +56,7 @@ from .roller_dynamics import (
     _params,
     _post,
     _response,
-    _rhs,
+    _rhs_ring,
 )
 from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
@@ -84,6 +84,16 @@ def cage_inertia(bearing: Any) -> tuple[float, float, dict[str, str]]:
         note["cage_mass"] = ("ring of the cage diameters and width minus Z pockets D x L_r "
                              "through the wall, cage material density (estimated)")
     return float(mass), float(0.5 * mass * (r_o**2 + r_i**2)), note
+
+
+def inner_ring_mass(bearing: Any) -> tuple[float, dict[str, str]]:
+    """(mass [kg], estimated-fields note) of the inner ring for its axial DOF (paper 003
+    eq. 20 line 1): a ring of the bore and the inner raceway diameter over the bearing
+    width, ring material density (estimated: ribs and chamfers ignored, ~10 %)."""
+    r_o, r_i = 0.5 * bearing.inner_raceway_diameter, 0.5 * bearing.bore
+    mass = bearing.ring_material.density * math.pi * (r_o**2 - r_i**2) * bearing.width
+    return float(mass), {"inner_ring_mass": "bore x inner raceway diameter x width annulus, "
+                                             "ring material density (estimated)"}
 
 
 @njit(cache=True)
@@ -122,14 +132,19 @@ def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
 def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np.ndarray,
                 az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
                 wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
-                half: float, dm_half: float, t_c: float, film: np.ndarray) -> None:
+                half: float, dm_half: float, t_c: float, film: np.ndarray,
+                ring_mass: float) -> None:
     """dy[:] = time derivative of the coupled state (module notes). ``lin`` (Z, 6): S0,
     dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh; ``film``: pocket length,
-    eta, clearance, k_w, k_c + k_q/2, smoothing."""
+    eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg] of the axially free
+    inner ring (0: held)."""
     n = N_ROLLER_STATES
     th = y[z_n * n]
     wc = y[z_n * n + 1]
+    x_ring = y[z_n * n + 2]
+    xd_ring = y[z_n * n + 3]
     torque = -t_c
+    f_ring = 0.0
     two_pi = 2.0 * math.pi
     for j in range(z_n):
         b = j * n
@@ -140,13 +155,13 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         dc = wc - wc0
         s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc
         f_d = lin[j, 3] + lin[j, 4] * dw + lin[j, 5] * dc
-        r = _rhs(p, y[b], y[b + 1], y[b + 2], y[b + 3], y[b + 4], y[b + 5], n_i, q_o[j], w,
-                 y[b + 6], f_d, c_z[j])
+        r = _rhs_ring(p, y[b] - x_ring, y[b + 1] - xd_ring, y[b + 2], y[b + 3], y[b + 4],
+                      y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
         fz_bar, _, ff, fb = pocket_force_z(y[b + 4], y[b + 5], y[b + 2], p[_HLI], p[_CPI],
                                            p[_KCI], p[_ETAI], half, p[_FLI])
         f_bar = _pocket_film_friction(ff - fb, w, half, film[0], film[1], film[2], film[3],
                                       film[4], film[5])
-        dy[b] = r[0]
+        dy[b] = y[b + 1]
         dy[b + 1] = r[1]
         dy[b + 2] = r[2]
         dy[b + 3] = r[3]
@@ -155,8 +170,11 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         dy[b + 6] = w
         dy[b + 7] = (half * (s - f_bar) + r[6]) / polar
         torque += -fz_bar * dm_half - f_bar * half
+        f_ring += r[7]
     dy[z_n * n] = wc
     dy[z_n * n + 1] = torque / cage_j
+    dy[z_n * n + 2] = xd_ring
+    dy[z_n * n + 3] = f_ring / ring_mass if ring_mass > 0.0 else 0.0
 
 
 @njit(cache=True)
@@ -203,15 +221,16 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                c_z: np.ndarray, consts: np.ndarray, film: np.ndarray, use_table: bool,
                spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
                values: np.ndarray, n_warm: int, every: int, samples: np.ndarray,
-               sample_t: np.ndarray, sample_wc: np.ndarray, n_sampled: int
-               ) -> tuple[int, int, float, int, float]:
+               sample_t: np.ndarray, sample_wc: np.ndarray, sample_ring: np.ndarray,
+               n_sampled: int) -> tuple[int, int, float, int, float]:
     """Classical RK4 steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y``
     (in place) at step ``h`` [s], the traction linearisation refreshed from the table every
     ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used throughout); samples
-    (state, t, omega_c) every ``every`` steps from step ``n_warm`` on. ``consts``: J_p, J_c,
-    D/2, d_m/2, T_c. Returns (status, steps done, t, samples written, omega_c of the
-    linearisation); status 0 done, 1-3 the table's grid left (the step was not taken; the
-    caller rebuilds the table), 4 the state became non-finite or a spin reversed."""
+    (state with X, X' relative to the inner ring, t, omega_c) every ``every`` steps from step
+    ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c, inner-ring mass (0: held).
+    Returns (status, steps done, t, samples written, omega_c of the linearisation); status
+    0 done, 1-3 the table's grid left (the step was not taken; the caller rebuilds the
+    table), 4 the state became non-finite or a spin reversed."""
     n = N_ROLLER_STATES
     m_y = y.shape[0]
     k1 = np.zeros(m_y)
@@ -220,6 +239,8 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     k4 = np.zeros(m_y)
     yt = np.zeros(m_y)
     polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
+    ring_mass = consts[5]
+    ring = z_n * n + 2
     for s in range(n_steps):
         step = step0 + s
         if use_table and step % sub == 0:
@@ -228,19 +249,19 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
             if st != 0:
                 return st, s, t, n_sampled, wc0
         _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film)
+                    half, dm_half, t_c, film, ring_mass)
         for q in range(m_y):
             yt[q] = y[q] + 0.5 * h * k1[q]
         _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film)
+                    half, dm_half, t_c, film, ring_mass)
         for q in range(m_y):
             yt[q] = y[q] + 0.5 * h * k2[q]
         _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film)
+                    half, dm_half, t_c, film, ring_mass)
         for q in range(m_y):
             yt[q] = y[q] + h * k3[q]
         _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film)
+                    half, dm_half, t_c, film, ring_mass)
         for q in range(m_y):
             y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
         t += h
@@ -248,8 +269,12 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                 and n_sampled < samples.shape[0]):
             for q in range(z_n * n):
                 samples[n_sampled, q] = y[q]
+            for j in range(z_n):         # X, X' relative to the inner ring
+                samples[n_sampled, j * n] -= y[ring]
+                samples[n_sampled, j * n + 1] -= y[ring + 1]
             sample_t[n_sampled] = t
             sample_wc[n_sampled] = y[z_n * n + 1]
+            sample_ring[n_sampled] = y[ring]
             n_sampled += 1
         if step % 200 == 0:
             for q in range(m_y):
@@ -274,8 +299,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      n_orbits: float = 2.0, warmup_orbits: float = 2.0,
                      refresh: float = 20e-6, steps_per_period: int = 400,
                      samples_per_period: int = 100, phase_spread: bool = True,
-                     traction: str = "table", table_options: dict[str, Any] | None = None
-                     ) -> RollerResponse:
+                     traction: str = "table", table_options: dict[str, Any] | None = None,
+                     ring_axial: bool = False) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -288,10 +313,14 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     keywords) or "evaluate" (three calls of
     :func:`thermobearing.skidding.roller_residual.evaluate` per refresh from Python, the
     reference the table is checked against; ~6x slower). Both run the same jitted RK4 loop.
+    ``ring_axial``: the inner ring free to move axially under the rib and inner-raceway
+    axial forces of all rollers (paper 003 eq. 20 line 1, no external axial load; mass
+    :func:`inner_ring_mass`) instead of held by the shaft (default).
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
-    ``skew`` alpha [rad] and ``pocket`` z [m]. ``cost_s``: CPU seconds.
+    ``skew`` alpha [rad] and ``pocket`` z [m] (X relative to the inner ring), and
+    ``ring_axial``, the inner ring's axial position [m]. ``cost_s``: CPU seconds.
     ConvergenceError if the state becomes non-finite or a spin reverses.
     """
     from .roller import build_model as race_model
@@ -312,11 +341,12 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     film = np.array([m.pocket_length, m.pocket_viscosity, m.pocket_clearance, k_w,
                      k_c + 0.5 * k_q, 1e-4])
     consts = np.array([m.polar_inertia, j_c, half, 0.5 * m.geom.pitch_diameter,
-                       float(rm.cage_drag_torque)])
+                       float(rm.cage_drag_torque),
+                       inner_ring_mass(bearing)[0] if ring_axial else 0.0])
     az = np.append(m.azimuth, m.azimuth[0] + 2.0 * math.pi)
     load = np.append(m.inner_load, m.inner_load[0])
     phi0 = m.azimuth.copy()
-    y = np.zeros(z_n * n + 2)
+    y = np.zeros(z_n * n + 4)          # rollers, cage angle and speed, ring X and X'
     golden = math.pi * (3.0 - math.sqrt(5.0))
     for j in range(z_n):
         b = j * n
@@ -338,6 +368,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     samples = np.zeros((n_samples, z_n * n))
     sample_t = np.zeros(n_samples)
     sample_wc = np.zeros(n_samples)
+    sample_ring = np.zeros(n_samples)
     lin = np.zeros((z_n, 6))
     w0 = np.zeros(z_n)
     q_o = np.zeros(z_n)
@@ -406,7 +437,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         status, done, t, n_sampled, wc0 = _integrate(
             c, y, t, step, block, h, sub, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z,
             consts, film, tab is not None, *grid, n_warm, every, samples, sample_t,
-            sample_wc, n_sampled)
+            sample_wc, sample_ring, n_sampled)
         step += done
         if status == 4:
             raise ConvergenceError("roller_dynamics.coupled", float("inf"),
@@ -435,6 +466,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     return replace(resp, series={"t": tt, "cage_speed": wc_t, "spin": traj[:, :, 7],
                                  "axial": traj[:, :, 0], "skew": traj[:, :, 2],
                                  "pocket": traj[:, :, 4],
+                                 "ring_axial": sample_ring[:n_sampled].copy(),
                                  "traction_evaluations": np.array([n_eval]),
                                  "table_points": np.array([n_table]),
                                  "table_builds": np.array([len(tables)]),
@@ -442,4 +474,4 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "step": np.array([h]), "refresh_steps": np.array([sub])})
 
 
-__all__ = ["N_ROLLER_STATES", "cage_inertia", "simulate_coupled"]
+__all__ = ["N_ROLLER_STATES", "cage_inertia", "inner_ring_mass", "simulate_coupled"]
