@@ -21,3 +21,13 @@ def test_rib_map_writes_csv_and_png(tmp_path, capsys):
         assert float(r[col["pv_contact_left [MPa m/s]"]]) >= float(r[col["pv_left [MPa m/s]"]])
     assert (tmp_path / "rib_map_rib_angle.png").stat().st_size > 1000
     assert "PV L" in capsys.readouterr().out
+
+
+def test_rib_map_reduced_model_and_bad_orbits(tmp_path, capsys):
+    rc = main(["rib-map", "--param", "axial_clearance", "--values", "0.03 mm", "--model",
+               "reduced", "--unbalance", "0.11 g", "--out", str(tmp_path), "--no-plot"])
+    assert rc == 0
+    rows = list(csv.reader((tmp_path / "rib_map_axial_clearance.csv").open()))
+    assert len(rows) == 2 and float(rows[1][0]) == 0.03
+    assert main(["rib-map", "--orbits", "2", "--out", str(tmp_path), "--no-plot"]) != 0
+    assert "--orbits" in capsys.readouterr().err

@@ -6,8 +6,9 @@ C_a 0.03 mm, pocket 0.2 mm, rib angle 0.3 deg, crown radius 300 mm) for several 
 unbalance masses, with :func:`thermobearing.skidding.roller_dynamics.pv_slip_map`. Writes
 ``<out>/rib_map_<parameter>.csv`` (SI columns plus PV in MPa m/s) and a two-panel PNG per
 parameter in the style of paper 003 Figs. 7-12 (a: PV of the left and right end faces,
-b: slip speed). ``--cost`` prints the wall time of one base-case point with the full and
-the reduced model.
+b: slip speed). Default model: the coupled all-roller + cage integration
+(:mod:`thermobearing.skidding.roller_dynamics_coupled`). ``--cost`` prints the CPU time of
+one base-case point with the coupled, the one-roller full and the reduced model.
 
 Example: ``thermobearing rib-map --param rib_angle --values "0.3,0.45,0.55,0.7 deg"
 --unbalance "0.06,0.11 g" --out ribmap``.
@@ -51,16 +52,28 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "a single --param)")
     parser.add_argument("--unbalance", default="0.06,0.08,0.11 g",
                         help="roller unbalance masses, e.g. '0.06,0.11 g'")
-    parser.add_argument("--model", default="reduced", choices=("reduced", "full", "coupled"),
-                        help="reduced (frozen load states, quasi-static spins), full (one "
-                             "roller over an orbit) or coupled (all rollers + cage, spins "
-                             "and cage speed integrated; ~7 s CPU per point)")
+    parser.add_argument("--model", default="coupled", choices=("reduced", "full", "coupled"),
+                        help="coupled (default: all rollers + cage, spins and cage speed "
+                             "integrated, paper 003 eqs. 18-19; ~1.5 s CPU per point), "
+                             "reduced (frozen load states, quasi-static spins) or full (one "
+                             "roller over an orbit, quasi-static spins)")
+    parser.add_argument("--orbits", default="2,3",
+                        help="coupled model: warm-up and statistics cage orbits (default 2,3)")
+    parser.add_argument("--ring-axial", action="store_true", dest="ring_axial",
+                        help="coupled model: inner ring free axially (paper 003 eq. 20 line 1)")
+    parser.add_argument("--raceway-traction", default="componentwise",
+                        choices=("componentwise", "isotropic"), dest="raceway_traction",
+                        help="skew's axial raceway traction: tanh law on the axial slide "
+                             "(default) or along the resultant of the axial and rolling "
+                             "slides (sensitivity)")
     parser.add_argument("--spin", default="skidding", choices=("skidding", "rolling"),
                         help="roller spins from the quasi-static skidding solver (default) or "
                              "pure rolling for every roller (sensitivity)")
-    parser.add_argument("--coupling", default="rib", choices=("rib", "none"),
-                        help="feed the mean rib moments back into the roller spins and the "
-                             "cage speed (default) or keep the quasi-static solver's")
+    parser.add_argument("--coupling", default=None, choices=("rib", "none"),
+                        help="feed the mean rib moments back into the quasi-static roller "
+                             "spins and cage speed (default for the reduced and full models) "
+                             "or keep the quasi-static solver's (default for the coupled "
+                             "model, which integrates them)")
     parser.add_argument("--end-face", default="sphere", choices=("sphere", "cap"),
                         dest="end_face",
                         help="roller end face: the paper's whole sphere (default) or the sphere "
@@ -73,7 +86,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="hold the roller centred in its pocket (no rattling between "
                              "the cage bars under the unbalance force)")
     parser.add_argument("--cost", action="store_true",
-                        help="print the cost of one base-case point (full and reduced)")
+                        help="print the cost of one base-case point (coupled, one-roller "
+                             "full and reduced model)")
     parser.add_argument("--out", default="rib_map", help="output folder")
     parser.add_argument("--no-plot", action="store_true", help="CSV only")
 
@@ -138,16 +152,30 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     cache: dict = {}
+    try:
+        warm, stats = (float(v) for v in args.orbits.split(","))
+    except ValueError as exc:
+        raise InputError("--orbits", args.orbits, "two numbers 'warm-up,statistics'") from exc
+    coupled_options = {"warmup_orbits": warm, "n_orbits": stats,
+                       "ring_axial": bool(args.ring_axial)}
+    coupling = args.coupling or ("none" if args.model == "coupled" else "rib")
+    options = {"spin": args.spin, "pocket_dof": not args.no_pocket_dof,
+               "raceway_traction": args.raceway_traction}
     if args.cost:
-        m = rd.build_model(bearing, lubricant, rd.PAPER003_BASE["speed"],
-                           rd.PAPER003_BASE["radial_load"], max(masses),
-                           temperature=temperature, spin=args.spin,
-                           rib={"end_face": args.end_face, "slide": args.slide},
-                           coupling=args.coupling, pocket_dof=not args.no_pocket_dof)
+        from ..skidding.roller_dynamics_coupled import simulate_coupled
+
+        rib = {"end_face": args.end_face, "slide": args.slide}
+        base = (bearing, lubricant, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
+                max(masses))
+        m = rd.build_model(*base, temperature=temperature, rib=rib, coupling="rib", **options)
         full, red = rd.simulate_full(m), rd.simulate_reduced(m)
-        print(f"cost of one base-case point: full {full.cost_s:.2f} s ({full.n_rhs} rhs), "
-              f"reduced {red.cost_s:.2f} s ({red.n_rhs} rhs)")
-        for r in (full, red):
+        mc = rd.build_model(*base, temperature=temperature, rib=rib, coupling="none",
+                            quasi_static=m.extras["quasi_static"], **options)
+        cpl = simulate_coupled(mc, bearing, lubricant, **coupled_options)
+        print(f"cost of one base-case point (CPU): coupled {cpl.cost_s:.2f} s, one-roller full "
+              f"{full.cost_s:.2f} s ({full.n_rhs} rhs), reduced {red.cost_s:.2f} s "
+              f"({red.n_rhs} rhs; its quasi-static rib coupling not counted)")
+        for r in (cpl, full, red):
             print(f"  {r.model:8s} PV L/R {r.pv_left / 1e6:.4g}/{r.pv_right / 1e6:.4g} MPa m/s,"
                   f" slip {r.slip_speed:.4g} m/s")
     for p in params:
@@ -156,9 +184,9 @@ def run(args: argparse.Namespace) -> int:
                   else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
-                              temperature=temperature, cache=cache, spin=args.spin,
-                              end_face=args.end_face, coupling=args.coupling,
-                              slide=args.slide, pocket_dof=not args.no_pocket_dof)
+                              temperature=temperature, cache=cache, end_face=args.end_face,
+                              coupling=coupling, slide=args.slide,
+                              coupled_options=coupled_options, **options)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)

@@ -39,7 +39,7 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
     ``end_face``: "sphere" (paper 003 eqs. 1, 11) or "cap" (:mod:`thermobearing.rib`).
     ``slide``: "offset" or "radial_plane" (:class:`thermobearing.rib.RibGeometry`).
     ``model``: "reduced", "full" (one roller) or "coupled" (all rollers + cage,
-    :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, ~7 s CPU/point;
+    :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, ~1.5 s CPU/point;
     ``coupled_options`` its keyword options, e.g. ``n_orbits``, ``warmup_orbits``).
     """
     if parameter not in MAP_PARAMETERS:
