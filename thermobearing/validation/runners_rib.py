@@ -8,11 +8,13 @@ face crown radius (550 mm). The unbalance, axial-clearance, pocket-clearance, ri
 crown-radius trends use the coupled integration of all rollers and the cage (spins and cage
 speed as degrees of freedom,
 :func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's eqs.
-18-19; ``coupled_orbits`` warm-up and statistics orbits, default 1.5), with the reduced
-model's values beside them (``reduced_*``); the load and speed sweeps use the reduced model
-(:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). The
-reduced model is compared with the coupled one (``reduced_vs_full_*``) and with the one-
-roller full model (``reduced_vs_one_roller_*``), with the costs.
+18-19; ``coupled_warmup_orbits`` and ``coupled_orbits`` warm-up and statistics orbits), as
+do the load and speed trends, with the reduced model's values beside them (``reduced_*``,
+:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). PV
+statistics: time mean (gated), mean over the time in contact (``pv_contact_*``) and peak
+(``pv_peak_*``). The reduced model is compared with the coupled one (``reduced_vs_full_*``)
+and with the one-roller full model (``reduced_vs_one_roller_*``), with the costs; the
+axially free inner ring (eq. 20 line 1) is a report sensitivity (``ring_axial_*``).
 """
 
 from __future__ import annotations
@@ -49,6 +51,11 @@ def parabolic_minimum(x: Any, y: Any) -> float:
 
 def _pv(row: dict[str, float]) -> float:
     return row["pv_left"] + row["pv_right"]
+
+
+def _pvp(row: dict[str, float]) -> float:
+    """Peak PV over the run, both faces summed [Pa m/s]."""
+    return row["pv_peak_left"] + row["pv_peak_right"]
 
 
 def _pvc(row: dict[str, float]) -> float:
@@ -104,6 +111,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm)
         return {"pv_left": r.pv_left, "pv_right": r.pv_right,
                 "pv_contact_left": r.pv_contact_left, "pv_contact_right": r.pv_contact_right,
+                "pv_peak_left": r.pv_peak_left, "pv_peak_right": r.pv_peak_right,
                 "slip_speed": r.slip_speed, "cost_s": r.cost_s}
 
     def coupled_sweep(parameter: str, values: list[float],
@@ -175,6 +183,27 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         out[prefix + "pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
         out[prefix + "pv_contact_flattening_above_0.05mm"] = (
             abs(pvc[-1] - pvc[j5]) / max(abs(pvc[j5] - pvc[0]), 1e-12))
+        pvp = [_pvp(r) for r in rows]
+        out[prefix + "pv_peak_ratio_axial_clearance_0.05_vs_min"] = pvp[j5] / pvp[0]
+        out[prefix + "pv_peak_flattening_above_0.05mm"] = (
+            abs(pvp[-1] - pvp[j5]) / max(abs(pvp[j5] - pvp[0]), 1e-12))
+
+    # sensitivity (report): the inner ring free axially (paper 003 eq. 20 line 1) over the
+    # first, 0.05 mm and last axial clearances
+    ring_rows = []
+    for v in (ca[0], ca[j5], ca[-1]):
+        mr = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
+                            rd.PAPER003_BASE["radial_load"], m_hi, temperature=temperature,
+                            quasi_static=cache.get(base_key),
+                            rib={"slide": slide, "axial_clearance": v},
+                            pocket_dof=pocket_dof, coupling="none")
+        ring_rows.append(simulate_coupled(mr, bearing, lub, n_orbits=orbits,
+                                          warmup_orbits=warm, ring_axial=True))
+    out["ring_axial_pv_ratio_axial_clearance_0.05_vs_min"] = (
+        (ring_rows[1].pv_left + ring_rows[1].pv_right)
+        / (ring_rows[0].pv_left + ring_rows[0].pv_right))
+    out["ring_axial_slip_ratio_axial_clearance_min_vs_0.05"] = (ring_rows[0].slip_speed
+                                                                / ring_rows[1].slip_speed)
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm (coupled gated, reduced
     # beside)
@@ -204,6 +233,8 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
             out[f"{prefix}pv_minimum_{par}"] = parabolic_minimum(vals, pv)
             out[f"{prefix}pv_contact_minimum_{par}"] = parabolic_minimum(
                 vals, [_pvc(r) for r in rows])
+            out[f"{prefix}pv_peak_minimum_{par}"] = parabolic_minimum(
+                vals, [_pvp(r) for r in rows])
             out[f"{prefix}slip_ratio_{par}_last_vs_first"] = (rows[-1]["slip_speed"]
                                                               / rows[0]["slip_speed"])
         # sensitivity: every roller at its pure-rolling spin (SOURCE.md, point 3)
