@@ -325,7 +325,7 @@ def roller_film_load_distribution(
     rtol: float = 1e-10,
     max_iter: int = 60,
 ) -> RollerLoadDistribution:
-    """Load distribution with the lubricant films in the clearance (fully flooded).
+    """Load distribution with the lubricant films in the clearance (flooded or starved).
 
     Where the films are as thick as the radial clearance (light load, high speed, viscous
     oil: paper 000's NU214 has P_d/2 = 12.5 um and films of 4-30 um), the dry distribution of
@@ -337,10 +337,13 @@ def roller_film_load_distribution(
         h_i(Q_ij) + h_o(Q_oj) - delta_i(Q_ij) - delta_o(Q_oj) = P_d/2 - delta_r . e_j     (3)
 
     The left side falls monotonically with Q_ij (films thin, approaches grow) from +inf
-    (a flooded film carries a vanishing load at a large thickness) to -inf, so every roller
-    carries a film load (no unloaded zone); (3) is solved by bisection in ln Q_ij for all
-    rollers at once and the ring equilibrium (2) by Newton on (delta_x, delta_y) with a
-    finite-difference Jacobian and backtracking.
+    (a flooded film carries a vanishing load at a large thickness) to -inf, so with flooded
+    films every roller carries a film load (no unloaded zone); (3) is solved by bisection in
+    ln Q_ij for all rollers at once and the ring equilibrium (2) by Newton on
+    (delta_x, delta_y) with a finite-difference Jacobian and backtracking. A film of limited
+    thickness (starved inlet: at most the available oil layer) may not fill a wide gap even
+    unloaded; such a roller gets Q_ij = 0 (``loaded`` False): it rides on its outer film, the
+    load zone of the paper's dry model reappears where the gap is wider than the films.
 
     Parameters
     ----------
@@ -356,7 +359,7 @@ def roller_film_load_distribution(
     Returns
     -------
     RollerLoadDistribution (``interference`` = delta_r . e_j - P_d/2, the negative rigid gap;
-    ``loaded`` all True; deflections = the Hertz approaches).
+    ``loaded`` = Q_ij > 0, all True with flooded films; deflections = the Hertz approaches).
 
     Reference: Harris & Kotzalas (2007) vol. 1 load distribution with clearance, extended by
     the central film thicknesses of both contacts (the lubricated-contact approach of
@@ -385,17 +388,28 @@ def roller_film_load_distribution(
         gap = half - (dx * cos + dy * sin)
         qmin = np.maximum(-fb, 0.0) * (1.0 + 1e-12) + 1e-9  # keeps Q_o = Q_i + F_j > 0
 
-        def excess(t: np.ndarray) -> np.ndarray:  # (3) minus the gap, falls with t = ln Q_i
+        def excess0(t: np.ndarray) -> np.ndarray:  # (3) minus the gap, falls with t = ln Q_i
             q = np.exp(t)
             qo = q + fb
             return (np.asarray(inner_film(q)) + np.asarray(outer_film(qo))
                     - (q / k_inner) ** inv_n - (qo / k_outer) ** inv_n - gap)
 
+        # a film of limited thickness (starved inlet) may not fill the gap even unloaded:
+        # that roller has no inner film load (it rides on its outer film); its equation is
+        # replaced by a root just above ln(qmin) and its load set to 0 below
+        t_min = np.log(qmin)
+        open_gap = excess0(t_min) <= 0.0
+
+        def excess(t: np.ndarray) -> np.ndarray:
+            if not np.any(open_gap):
+                return excess0(t)
+            return np.where(open_gap, t_min + 1e-6 - t, excess0(np.where(open_gap, t_min, t)))
+
         bracketed = False
         if guess[0] is not None and guess[0].shape == (z,):
             # warm start: a bracket of a factor 1.5 around the previous root
             lo = np.maximum(guess[0] - 0.4, np.log(qmin))
-            hi = guess[0] + 0.4
+            hi = np.maximum(guess[0] + 0.4, lo + 0.4)  # (a previous Q = 0: open gap)
             f_lo, f_hi = excess(lo), excess(hi)
             bracketed = bool(np.all(f_lo > 0.0) and np.all(f_hi < 0.0))
         if not bracketed:
@@ -425,7 +439,7 @@ def roller_film_load_distribution(
                 break  # gap closed to 1e-16 m
         t = np.where(np.abs(f_lo) < np.abs(f_hi), lo, hi)
         guess[0] = t
-        return np.exp(t)
+        return np.where(open_gap, 0.0, np.exp(t))
 
     def residual(dx: float, dy: float) -> tuple[np.ndarray, np.ndarray]:
         q = inner_loads(dx, dy)
@@ -445,12 +459,18 @@ def roller_film_load_distribution(
         _, rx = residual(dx + h, dy)
         _, ry = residual(dx, dy + h)
         jac = np.column_stack([(rx - res) / h, (ry - res) / h])
-        step = -np.linalg.solve(jac, res)
+        # singular Jacobian where the films leave gaps open (starved films: the ring rests
+        # on one roller, or on none yet): add a soft spring F / (P_d/2) so that the step
+        # moves the ring towards the load, and accept a step over a flat residual
+        k_ref = max(radial_load, 1e-3 * float(np.sum(q)), 1e-9) / max(half, 1e-9)
+        flat = abs(float(np.linalg.det(jac))) <= 1e-10 * max(float(np.max(np.abs(jac))),
+                                                              k_ref) ** 2
+        step = -np.linalg.solve(jac + k_ref * np.eye(2) if flat else jac, res)
         lam = 1.0
         for _ in range(40):
             qn, rn = residual(dx + lam * step[0], dy + lam * step[1])
             nn = float(np.hypot(*rn))
-            if nn < norm or lam < 1e-6:
+            if nn < norm or (flat and nn <= norm) or lam < 1e-6:
                 break
             lam *= 0.5
         dx, dy, q, res, norm = dx + lam * step[0], dy + lam * step[1], qn, rn, nn
@@ -458,7 +478,7 @@ def roller_film_load_distribution(
     return RollerLoadDistribution(
         azimuth=psi, inner_load=q, outer_load=qo, inner_deflection=(q / k_inner) ** inv_n,
         outer_deflection=(qo / k_outer) ** inv_n, interference=dx * cos + dy * sin - half,
-        body_force=fb, ring_displacement=np.array([dx, dy]), loaded=np.ones(z, dtype=bool),
+        body_force=fb, ring_displacement=np.array([dx, dy]), loaded=q > 0.0,
         residual=norm, iterations=it,
     )
 

@@ -542,6 +542,36 @@ def pocket_forces(
     return PocketForces(friction=fric, film_thickness=h0)
 
 
+def starved_film(film: Callable[[np.ndarray, np.ndarray], np.ndarray], radius: float,
+                 eta0: float, oil_layer: float | None
+                 ) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
+    """The central film ``h(u_e, w)`` [m] of :func:`closed_form_contact_forces` with a finite
+    inlet oil layer, as a function (for the film-supported load distribution).
+
+    ``h = film(u_e, w) min(1, h_r(h_oil) / h_r(flooded))``: the flooded closed-form film
+    scaled by the ratio of the rigid-isoviscous starved and flooded films
+    (:func:`rigid_starved_film`; the inlet meniscus where the gap holds the oil layer), the
+    same expression the contact forces use, so the load distribution and the drag see one
+    film. ``oil_layer=None`` returns ``film`` unchanged. u_e [m/s], w [N/m] (> 0), radius
+    R_x [m], eta0 [Pa s], oil_layer (both surfaces together) [m].
+
+    Reference: paper 000 eq. 7 on a finite inlet domain [li2018_nu214_skidding]; Hamrock
+    et al. 2004 (starved rigid-isoviscous line contact) [hamrock2004].
+    """
+    if oil_layer is None:
+        return film
+    k_w0 = martin_coefficients()[0]
+
+    def h(ue: np.ndarray, w: np.ndarray) -> np.ndarray:
+        ue = np.asarray(ue, dtype=float)
+        w = np.maximum(np.asarray(w, dtype=float), 1e-12)  # (w -> 0: the finite limit)
+        h_r, _, _ = rigid_starved_film(w, 2.0 * ue, radius, eta0, oil_layer)
+        h_r_flood = k_w0 * eta0 * 2.0 * ue * radius / w
+        return np.asarray(film(ue, w)) * np.minimum(1.0, h_r / h_r_flood)
+
+    return h
+
+
 #: pocket film models of the roller skidding solver (``build_model(pocket_film=...)``)
 POCKET_FILM_MODELS = ("one_face", "two_faces")
 

@@ -22,6 +22,7 @@ from ..loads_roller import (
     roller_film_load_distribution,
     roller_load_distribution,
 )
+from .roller_fluid import starved_film
 from .roller_model import RollerModel
 
 
@@ -48,10 +49,13 @@ def _load_distribution(model: RollerModel, omega: float, radial_load: float, wc:
         ue_i = np.maximum(0.5 * np.abs(0.5 * (d_m - d) * (omega - wc) + u_roll), 1e-6)
         ue_o = np.maximum(0.5 * np.abs(0.5 * (d_m + d) * wc + u_roll), 1e-6)
         length = model.length
+        # the film the contact forces use (flooded, or starved by the inlet oil layer)
+        film_i = starved_film(model.film_inner, model.radius_inner, model.eta0, model.oil_layer)
+        film_o = starved_film(model.film_outer, model.radius_outer, model.eta0, model.oil_layer)
         ld = roller_film_load_distribution(
             z, model.diametral_clearance, radial_load,
-            lambda q: model.film_inner(ue_i, q / length),
-            lambda q: model.film_outer(ue_o, q / length), model.k_inner, model.k_outer,
+            lambda q: film_i(ue_i, q / length),
+            lambda q: film_o(ue_o, q / length), model.k_inner, model.k_outer,
             body_force=fb_total, azimuth=psi, exponent=LINE_CONTACT_EXPONENT, x0=ring, q0=q0)
     else:
         ld = roller_load_distribution(z, model.diametral_clearance, radial_load, model.k_inner,

@@ -173,7 +173,10 @@ def build_model(
     rolling_force : rolling (pressure) force model of the raceway contacts, see
         :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
     oil_layer : available inlet oil layer [m] (None: fully flooded contacts), see
-        :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`.
+        :func:`~thermobearing.skidding.roller_fluid.closed_form_contact_forces`. With
+        ``ring_support="films"`` the load distribution uses the same starved film
+        (:func:`~thermobearing.skidding.roller_fluid.starved_film`): a roller whose films
+        cannot fill its gap has no inner film load.
     clearance_film : add the flooded hydrodynamic film across the radial gap of every roller
         without a Hertz inner contact (drive from the inner ring, rolling force, film load
         onto the outer race; :func:`~thermobearing.skidding.roller_fluid.clearance_film_forces`).
@@ -234,10 +237,10 @@ def build_model(
         raise InputError("unloaded_zone", unloaded_zone, UNLOADED_ZONE_MODELS)
     if ring_support not in RING_SUPPORT_MODELS:
         raise InputError("ring_support", ring_support, RING_SUPPORT_MODELS)
-    if ring_support == "films" and (clearance_film or oil_layer is not None):
+    if ring_support == "films" and clearance_film:
         raise InputError("ring_support", ring_support,
-                         "'contacts' with clearance_film or oil_layer (the film-supported "
-                         "distribution assumes flooded Hertz-zone films at every roller)")
+                         "'contacts' with clearance_film (the film-supported distribution "
+                         "already fills every roller's gap with its films)")
     if oil_layer is not None:
         check_positive("oil_layer", oil_layer)
     check_positive("clearance_film_floor", clearance_film_floor)
