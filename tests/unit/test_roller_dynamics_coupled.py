@@ -119,3 +119,16 @@ def test_axially_free_inner_ring():
     assert np.max(np.abs(ring - ring[0])) < 0.5 * m.geom.axial_clearance
     assert np.all(held.series["ring_axial"] == 0.0)
     assert free.slip_speed == pytest.approx(held.slip_speed, rel=0.02)
+
+
+def test_cage_land_coefficient_is_petroff():
+    # pi eta D_g^3 B_c / (4 c): inner-ring-guided cage of the preset, D_g 59.485 mm, two
+    # 2 mm lands, c = 0.1 mm, the rib-gap oil/air mixture viscosity (paper 002 eq. 5)
+    b = load_bearing("CRB_50x75x16")
+    lub = load_lubricant("MIL_PRF_23699")
+    m = rd.build_model(b, lub, SPEED, 3000.0, 0.0)
+    k, w_g = rc.cage_land_coefficient(b, m)
+    cage = b.cage
+    ref = (math.pi * m.mixture_viscosity * cage.guide_land_diameter**3 * cage.land_width
+           / (4.0 * 0.5 * cage.guide_clearance))
+    assert k == pytest.approx(ref, rel=1e-12) and w_g == SPEED

@@ -96,6 +96,27 @@ def inner_ring_mass(bearing: Any) -> tuple[float, dict[str, str]]:
                                              "ring material density (estimated)"}
 
 
+def cage_land_coefficient(bearing: Any, m: DynamicsModel) -> tuple[float, float]:
+    """(k [N m s], omega_g [rad/s]) of the cage-land drag torque k (omega_g - omega_c).
+
+    Paper 003 eq. 19 line 3 has the friction moment M'_cx of the guide-land film of its
+    inner-ring-guided cage (expression in its ref. [26], not given); here the concentric
+    Petroff torque of :func:`thermobearing.heat_sources.cage_guide.land_drag_torque` (paper
+    002 eq. 5), pi eta D_g^3 B_c / (4 c), with c = guide_clearance / 2 and eta the oil/air
+    mixture viscosity of the rib gap (``m.mixture_viscosity``, the same estimated oil
+    fraction as eq. 14's drag). omega_g = omega_i for an inner-ring-guided cage, 0 for an
+    outer-ring-guided one; (0, 0) for a roller-guided cage.
+    """
+    from ..heat_sources.cage_guide import land_drag_torque
+
+    cage = bearing.cage
+    if cage.guidance not in ("inner_ring", "outer_ring") or not cage.guide_land_diameter:
+        return 0.0, 0.0
+    k = land_drag_torque(m.mixture_viscosity, cage.guide_land_diameter, 1.0, 0.0,
+                         cage.land_width, 0.5 * cage.guide_clearance, 0.0)
+    return float(k), float(m.inner_speed if cage.guidance == "inner_ring" else 0.0)
+
+
 @njit(cache=True)
 def _pocket_film_friction(force: float, spin: float, radius: float, length: float,
                           eta: float, clearance: float, k_w: float, k_cq: float,
@@ -133,11 +154,12 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
                 az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
                 wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
                 half: float, dm_half: float, t_c: float, film: np.ndarray,
-                ring_mass: float) -> None:
+                ring_mass: float, land: np.ndarray) -> None:
     """dy[:] = time derivative of the coupled state (module notes). ``lin`` (Z, 6): S0,
     dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh; ``film``: pocket length,
     eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg] of the axially free
-    inner ring (0: held)."""
+    inner ring (0: held); ``land``: (viscous coefficient [N m s], guide ring speed [rad/s])
+    of the cage-land drag torque k (omega_g - omega_c) (zeros: none)."""
     n = N_ROLLER_STATES
     th = y[z_n * n]
     wc = y[z_n * n + 1]
@@ -172,7 +194,7 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         torque += -fz_bar * dm_half - f_bar * half
         f_ring += r[7]
     dy[z_n * n] = wc
-    dy[z_n * n + 1] = torque / cage_j
+    dy[z_n * n + 1] = (torque + land[0] * (land[1] - wc)) / cage_j
     dy[z_n * n + 2] = xd_ring
     dy[z_n * n + 3] = f_ring / ring_mass if ring_mass > 0.0 else 0.0
 
@@ -227,7 +249,8 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     (in place) at step ``h`` [s], the traction linearisation refreshed from the table every
     ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used throughout); samples
     (state with X, X' relative to the inner ring, t, omega_c) every ``every`` steps from step
-    ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c, inner-ring mass (0: held).
+    ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c, inner-ring mass (0: held),
+    cage-land drag coefficient [N m s] and guide ring speed [rad/s].
     Returns (status, steps done, t, samples written, omega_c of the linearisation); status
     0 done, 1-3 the table's grid left (the step was not taken; the caller rebuilds the
     table), 4 the state became non-finite or a spin reversed."""
@@ -240,6 +263,7 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     yt = np.zeros(m_y)
     polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
     ring_mass = consts[5]
+    land = consts[6:8]
     ring = z_n * n + 2
     for s in range(n_steps):
         step = step0 + s
@@ -249,19 +273,19 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
             if st != 0:
                 return st, s, t, n_sampled, wc0
         _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass)
+                    half, dm_half, t_c, film, ring_mass, land)
         for q in range(m_y):
             yt[q] = y[q] + 0.5 * h * k1[q]
         _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass)
+                    half, dm_half, t_c, film, ring_mass, land)
         for q in range(m_y):
             yt[q] = y[q] + 0.5 * h * k2[q]
         _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass)
+                    half, dm_half, t_c, film, ring_mass, land)
         for q in range(m_y):
             yt[q] = y[q] + h * k3[q]
         _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass)
+                    half, dm_half, t_c, film, ring_mass, land)
         for q in range(m_y):
             y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
         t += h
@@ -300,7 +324,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      refresh: float = 20e-6, steps_per_period: int = 400,
                      samples_per_period: int = 100, phase_spread: bool = True,
                      traction: str = "table", table_options: dict[str, Any] | None = None,
-                     ring_axial: bool = False) -> RollerResponse:
+                     ring_axial: bool = False, cage_land: bool = False) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -316,6 +340,9 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     ``ring_axial``: the inner ring free to move axially under the rib and inner-raceway
     axial forces of all rollers (paper 003 eq. 20 line 1, no external axial load; mass
     :func:`inner_ring_mass`) instead of held by the shaft (default).
+    ``cage_land``: add the viscous drag torque of the cage's guide land (paper 003 eq. 19
+    line 3, M'_cx; :func:`cage_land_coefficient`) to the cage equation (default off: the
+    quasi-static start state, paper 000's model, has none).
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
@@ -342,7 +369,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      k_c + 0.5 * k_q, 1e-4])
     consts = np.array([m.polar_inertia, j_c, half, 0.5 * m.geom.pitch_diameter,
                        float(rm.cage_drag_torque),
-                       inner_ring_mass(bearing)[0] if ring_axial else 0.0])
+                       inner_ring_mass(bearing)[0] if ring_axial else 0.0,
+                       *(cage_land_coefficient(bearing, m) if cage_land else (0.0, 0.0))])
     az = np.append(m.azimuth, m.azimuth[0] + 2.0 * math.pi)
     load = np.append(m.inner_load, m.inner_load[0])
     phi0 = m.azimuth.copy()
@@ -474,4 +502,5 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "step": np.array([h]), "refresh_steps": np.array([sub])})
 
 
-__all__ = ["N_ROLLER_STATES", "cage_inertia", "inner_ring_mass", "simulate_coupled"]
+__all__ = ["N_ROLLER_STATES", "cage_inertia", "cage_land_coefficient", "inner_ring_mass",
+           "simulate_coupled"]
