@@ -23,7 +23,9 @@ preset is taken to include it; its axial offset would only tilt the roller).
 * ``coupled`` model (:func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`):
   all Z rollers (these DOFs plus the spin) and the cage rotation integrated together; the
   spins then lag the load zone (J_p/k ~ 13 ms for an unloaded roller): base-case slip
-  ~5.5 m/s against ~18 m/s with the quasi-static spins of the two models below.
+  ~5.5 m/s against ~18 m/s with the quasi-static spins of the two models below. One jitted
+  RK4 loop with paper 000's traction tabulated: ~1.4 s CPU per base-case point (2 + 3
+  orbits); options: inner ring free axially (eq. 20 line 1), cage guide-land drag.
 * ``full`` model (:func:`simulate_full`): X, alpha and psi of one roller travelling a whole
   orbit (azimuth phi = omega_c t) through the load zone; raceway loads and the (coupled)
   spin follow phi; option ``spin_dof`` adds omega_r. Stiff (the rib contact is a stiff
