@@ -411,8 +411,11 @@ def _params(m: DynamicsModel) -> np.ndarray:
 
 @njit(cache=True)
 def _axial_share(s: float, v: float, s0: float) -> float:
-    """tanh(|u|/s0) s/|u| for the slide vector u = (v, s) [m/s]: the axial component of a
-    traction law mu_t tanh(|u|/s0) directed along u (module notes); s/s0 at |u| -> 0."""
+    """tanh(|u|/s0) s/|u| [-] for the slide vector u = (v, s) [m/s] (v rolling, s axial;
+    s0 [m/s]): the axial share of a traction law mu_t tanh(|u|/s0) directed along u, the
+    shear stress of a film being collinear with its sliding velocity
+    [johnson_tevaarwerk1977_traction] (``raceway_traction="isotropic"`` of
+    :func:`build_model`); s/s0 at |u| -> 0."""
     r = math.sqrt(s * s + v * v)
     if r < 1e-9 * s0:
         return s / s0
