@@ -72,3 +72,14 @@ def test_table_reports_out_of_grid(setup):
     assert table_eval(*args, 12000.0, 100.0, 2.0 * CAGE)[3] == 3  # cage speed
     with pytest.raises(ValueError):
         tab(np.array([100.0]), 0.0, CAGE)
+
+
+def test_table_refuses_clearance_film_model(setup):
+    import dataclasses
+
+    from thermobearing.errors import InputError
+
+    rm, _ = setup
+    with pytest.raises(InputError, match="clearance_film"):
+        build_traction_table(dataclasses.replace(rm, clearance_film=True), SPEED,
+                             lambda wc: BODY, (6500.0, 17600.0), 777.3, CAGE)

@@ -43,7 +43,7 @@ from typing import Any
 import numpy as np
 from numba import njit
 
-from ..errors import check_positive
+from ..errors import InputError, check_positive
 
 #: output columns of the table: raceway shear S [N], orbital force F_d [N], outer load Q_o [N]
 T_SHEAR, T_POCKET, T_OUTER = 0, 1, 2
@@ -116,6 +116,11 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     """
     from .roller_residual import evaluate
 
+    if getattr(race_model, "clearance_film", False):
+        # the clearance film ties each roller to its own radial gap (per roller index): the
+        # per-roller functions would then depend on more than (omega_r, N_i, omega_c)
+        raise InputError("race_model.clearance_film", True,
+                         "False (the table assumes rollers independent given N_i)")
     check_positive("spin_step", spin_step)
     check_positive("cage_step", cage_step)
     check_positive("cage_speed", cage_speed)
