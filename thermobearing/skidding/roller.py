@@ -84,11 +84,15 @@ def solve_model(
     max_iter: int = 60,
     load_x0: tuple[float, float] | None = None,
     fallback: bool = True,
+    radial_acceleration: np.ndarray | None = None,
 ) -> RollerSkiddingResult:
     """Solve the Z + 1 equations for a prepared :class:`RollerModel` (see :func:`solve_roller`).
 
     ``fallback=False`` skips the (slow, robust) bracketed solve when Newton fails and raises
-    the ConvergenceError at once.
+    the ConvergenceError at once. ``radial_acceleration`` (Z,) [m/s^2]: the whirl
+    acceleration in each roller's radial balance (eqs. 20/23) when it is not the projection
+    of ``whirl_acceleration`` (see :class:`~thermobearing.skidding.whirl.Whirl`); the
+    tangential balance (eqs. 21/24) always uses the projection.
     """
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
@@ -97,7 +101,7 @@ def solve_model(
 
     def loads(wc: float, ring: Any, wr: np.ndarray | None = None) -> tuple[Any, np.ndarray]:
         ld, fbw = _load_distribution(model, omega, radial_load, wc, wr, psi,
-                                     whirl_acceleration, ring, last_q[0])
+                                     whirl_acceleration, ring, last_q[0], radial_acceleration)
         last_q[0] = ld.inner_load
         return ld, fbw
 

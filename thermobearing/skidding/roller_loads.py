@@ -35,12 +35,22 @@ def _gapped(model: RollerModel, ld: Any) -> RollerModel:
 
 def _load_distribution(model: RollerModel, omega: float, radial_load: float, wc: float,
                        wr: np.ndarray | None, psi: np.ndarray, acc: tuple[float, float],
-                       ring: Any = None, q0: np.ndarray | None = None
+                       ring: Any = None, q0: np.ndarray | None = None,
+                       radial_acceleration: np.ndarray | None = None
                        ) -> tuple[Any, np.ndarray]:
     """Load distribution at cage speed ``wc`` (and roller spins ``wr`` for film support) and
-    the body force without the centrifugal term (see :func:`evaluate`)."""
+    the body force without the centrifugal term (see :func:`evaluate`).
+
+    ``radial_acceleration`` (Z,) [m/s^2], when given, replaces the projection of the
+    bearing-centre acceleration ``acc`` on each roller's radial direction in the body force
+    (the whirl reading of :class:`thermobearing.skidding.whirl.Whirl`).
+    """
     z = model.n_rollers
-    fb_total = roller_body_force(model.roller_mass, model.pitch_diameter, wc, psi, acc)
+    if radial_acceleration is None:
+        fb_total = roller_body_force(model.roller_mass, model.pitch_diameter, wc, psi, acc)
+    else:
+        fb_total = model.roller_mass * (0.5 * model.pitch_diameter * wc**2
+                                        - np.asarray(radial_acceleration, dtype=float))
     if model.ring_support == "films":
         d_m, d = model.pitch_diameter, model.roller_diameter
         spin = np.full(z, (d_m + d) / d * wc) if wr is None else np.asarray(wr, dtype=float)

@@ -10,11 +10,13 @@ In the frame that translates with the outer ring every roller feels the d'Alembe
 ``-m_r e''``: its radial part changes the contact loads (eqs. 20/23), its tangential part
 enters the orbital balance and the pocket force (eqs. 21/24); summed over the equally
 spaced rollers the tangential parts cancel in the cage equation (eq. 32), so the whirl acts
-on the cage speed through the contact loads. By default the roller azimuths are frozen
-(paper 000); optionally they advance with the cage (:attr:`Whirl.cage_rotation`). At each
-sample the Z + 1 equations are
-solved quasi-statically (paper 000: Newton-Raphson), warm-started from the previous sample;
-the result is a time series of cage speed and slip with the min / max / mean / fluctuation
+on the cage speed through the contact loads. Eqs. 20/23 as printed put the same e_y''
+(eq. 4) in every roller's radial balance; :attr:`Whirl.radial_inertia` ``"in_phase"``
+follows that reading (not the kinematics of a translating whirl; see the attribute). By
+default the roller azimuths are frozen (paper 000); optionally they advance with the cage
+(:attr:`Whirl.cage_rotation`). At each sample the Z + 1 equations are solved
+quasi-statically (paper 000: Newton-Raphson), warm-started from the previous sample; the
+result is a time series of cage speed and slip with the min / max / mean / fluctuation
 (max - min) of paper 000 Tables 2-3.
 
 References: paper 000 [li2018_nu214_skidding] sec. 2.1 and 3.1; its whirl-skidding
@@ -31,6 +33,9 @@ import numpy as np
 from ..errors import InputError, check_positive
 from .roller import RollerModel, RollerSkiddingResult, solve_model
 
+#: readings of the whirl inertia in the rollers' radial balance (see :class:`Whirl`)
+RADIAL_INERTIA_MODELS = ("projected", "in_phase")
+
 
 @dataclass(frozen=True)
 class Whirl:
@@ -44,6 +49,18 @@ class Whirl:
     n_samples : samples per whirl period [-].
     periods : number of whirl periods simulated [-] (statistics over all of them).
     cage_phase : initial azimuth of roller 0 [rad] (0: a roller under the load).
+    radial_inertia : how the whirl acceleration enters each roller's radial balance (eqs.
+        20/23). ``"projected"`` (default, the kinematics of a translating bearing centre):
+        roller j feels -m_r a_w . e_j, its own projection, so the rollers opposite each
+        other are pushed out and in by turns and the first-order effect on the cage cancels
+        except through the load asymmetry. ``"in_phase"``: eqs. 20/23 (and 26/29) as
+        printed, m_r e_y'' with the e_y'' of eq. 4 in every roller's radial balance, the
+        same for all rollers (the paper "considered the example of a roller" on the orbit,
+        sec. 2.1): a breathing of the centrifugal load of all rollers together; this is not
+        the kinematics of a translating whirl. The tangential balance (eqs. 21/24) always
+        uses the projection, whose parts cancel in eq. 32 (read in phase too, the cage
+        would feel Z m_r e omega_w^2 = 4 N at e = 6e-5 m and fluctuate by ~250 r/min, 45
+        times paper 000 Table 2).
     cage_rotation : False (default, as paper 000): the roller azimuths stay at
         ``cage_phase + 2 pi j / Z`` and only the whirl inertia varies in time. True: the
         rollers advance with the cage, so the load zone also changes as rollers pass under
@@ -58,9 +75,13 @@ class Whirl:
     periods: float = 1.0
     cage_phase: float = 0.0
     cage_rotation: bool = False
+    radial_inertia: str = "projected"
 
     def __post_init__(self) -> None:
         check_positive("whirl.radius", self.radius, allow_zero=True)
+        if self.radial_inertia not in RADIAL_INERTIA_MODELS:
+            raise InputError("whirl.radial_inertia", self.radial_inertia,
+                             RADIAL_INERTIA_MODELS)
         if self.frequency is not None:
             check_positive("whirl.frequency", self.frequency)
         if int(self.n_samples) != self.n_samples or self.n_samples < 2:
@@ -179,9 +200,11 @@ def solve_whirl(model: RollerModel, omega: float, radial_load: float, whirl: Whi
     for k in range(n):
         t = k * dt
         acc = whirl.acceleration(t, omega_w)
+        # in_phase: e_y'' of eq. 4 in every roller's radial balance (eqs. 20/23 as printed)
+        radial = np.full(z, acc[1]) if whirl.radial_inertia == "in_phase" else None
         res = solve_model(model, omega, radial_load, azimuth=base + phase,
                           whirl_acceleration=acc, x0=x, tol=tol, max_iter=max_iter,
-                          load_x0=ring)
+                          load_x0=ring, radial_acceleration=radial)
         states.append(res)
         times.append(t)
         x = np.append(res.roller_speed, res.cage_speed)
