@@ -51,6 +51,7 @@ from .ball_newton import (  # noqa: F401
     JacobianBlocks,
     chord_polish,
     newton_block,
+    trust_region,
 )
 from .ball_residual import N_BALL, N_GLOBAL, BallModels, ball_residual_system
 from .ball_result import (  # noqa: F401  (private helpers re-exported)
@@ -153,6 +154,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     else:
         system = ball_residual_system(bearing, models, speed, radial_load, axial_load, n_balls)
     iters = 0
+    fallback = None
     if guess is not None and guess.ball_x.size == system.Z:
         X0 = guess.unknowns[0].copy()
         G0 = guess.unknowns[1].copy()
@@ -187,10 +189,22 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         try:
             X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
         except ConvergenceError as err:
-            if not continuation:
-                raise
-            X, G, nrm, iters, system.last_jacobian = _continuation(
-                bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter, err)
+            # a Newton that stalled close to a root (residual below 1e-2): Powell's
+            # trust-region method from its last iterate (session 6: one point of the BM-5
+            # 20 x 20 map stalled at 1.9e-3 and converged this way); else, or if that fails,
+            # the continuation in axial load
+            last = getattr(err, "iterate", None)
+            try:
+                if last is None or not last[2] < 1e-2:
+                    raise err
+                X, G, nrm, _ = trust_region(system, last[0], last[1], tol=tol)
+                iters, fallback = max_iter, "trust_region"
+            except ConvergenceError:
+                if not continuation:
+                    raise err from None
+                X, G, nrm, iters, system.last_jacobian = _continuation(
+                    bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
+                    err)
     own_reference = theoretical_reference is None
     if own_reference and guess is not None:
         # CSR_th depends on the loads and the geometry only (a zero-speed load
@@ -214,6 +228,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         iters += 1
         res = _result(system, X, G, nrm, iters, time.perf_counter() - t0,
                       res.theoretical_cage_speed_ratio)
+    if fallback is not None:
+        res.extra["fallback"] = fallback
     if own_reference:
         res.extra["theoretical_key"] = (bearing, float(radial_load), float(axial_load),
                                         system.Z)
