@@ -157,7 +157,8 @@ def test_more_viscous_contact_at_fixed_geometry_changes_cage_speed(nu214, oil):
 @pytest.mark.xfail(strict=True, reason="known discrepancy with paper 000 Table 2: with the "
                    "closed-form film and traction the cage speed rises with the radial load "
                    "(more traction), the paper reports the reverse (see validation case "
-                   "paper000_nu214_cage_speed SOURCE.md)")
+                   "paper000_nu214_cage_speed SOURCE.md; a starved film-supported ring does "
+                   "slow with load: tests/unit/skidding/test_roller_starved_films.py)")
 def test_paper000_direction_with_load(nu214, oil):
     n100 = solve_roller(nu214, oil, OMEGA, 100.0, 0.0, T).cage_speed
     n200 = solve_roller(nu214, oil, OMEGA, 200.0, 0.0, T).cage_speed
