@@ -1,43 +1,63 @@
 """Roller end-face / inner-ring rib friction heat (paper 003 eqs. 12-17, 24).
 
-Heat of one end-face contact = |Q_e_theta| |v_i - v_r| (friction force of eq. 12 times the
-relative speed of eq. 24 at the contact point), from :mod:`thermobearing.rib`. Two load
-cases, added:
+Heat of one end-face contact = friction force (eq. 12) times the relative speed of eq. 24 at
+the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
+:data:`DEFAULT_MODEL`):
 
-* **thrust**: an axial load F_a of the operating point is carried by the rib contacts; each
-  roller's end face takes Q = F_a / (Z cos theta_f) (uniform share, the rollers' spin from
-  the kinematic state);
-* **skew with dynamic unbalance** (option ``unbalance_mass`` [kg] > 0): the mean rib heat of
-  a roller from :func:`thermobearing.skidding.roller_dynamics.simulate_reduced` at the
-  operating point (radial load, speed; paper 003's mechanism), times Z. This costs a few
-  seconds (quasi-static skidding solve + integration), so it is off by default. Caveat
-  (validation case ``paper003_pv_slip_trends``, reason 10): the reduced model runs on the
-  quasi-static spins, which skid ~3x more than the spins of the coupled all-roller + cage
-  integration (:mod:`thermobearing.skidding.roller_dynamics_coupled`); its time-mean rib PV
-  is ~30 % below the coupled model's at the paper's base case.
+* ``"coupled"`` (default): every end face's time-mean friction power from the coupled
+  all-roller + cage integration of paper 003 eqs. 18-19
+  (:mod:`thermobearing.skidding.roller_dynamics_coupled`) at the operating state (relative
+  ring speed, radial load, the "elements" temperature, option ``unbalance_mass`` [kg] at
+  the right chamfer, default 0): skew contacts *and* the lubricant drag F_G of eq. 14 on
+  both faces, at the integrated spins; Z x the roller mean. The run is cached per
+  operating state on a temperature grid (option ``temperature_step`` [K], default 5 K,
+  linear interpolation between the two nodes, measured error < 1 %:
+  :mod:`thermobearing.skidding.roller_dynamics_heat`), so a transient re-runs it only when
+  the temperature enters a new 5 K cell (~1.1-1.7 s CPU per node at paper 003's base case).
+* ``"reduced"``: the drag F_G of both faces at the kinematic state's (quasi-static) spins;
+  with ``unbalance_mass`` > 0 the one-roller reduced dynamics
+  (:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, on the quasi-static
+  coupled spins) instead, whose heat holds the drag. Its time-mean PV is ~29 % and its rib
+  heat ~50 % below the coupled model's at paper 003's base case (0.11 g): issue 9 allows a
+  reduced model only within 10 % of the full one (validation case
+  ``paper003_pv_slip_trends``, reason 10).
 
-The lubricant drag F_G of eq. 14 acts on every face even without contact; it is included
-(oil/air mixture viscosity: option ``oil_fraction``, default 0.05) with the face's sliding
-speed.
+**Thrust** (both models): an axial load F_a of the operating point is carried by the rib
+contacts, each roller's end face taking Q = F_a / (Z cos theta_f) (uniform share), at the
+rib slide speed of the model's spins (coupled: the time- and roller-mean |v_i - v_r| of
+the integration; reduced: the kinematic state's spins). The thrust share is superposed on
+the dynamics (it does not act back on the skew). A bearing with ribs on one ring only
+(paper 003's: inner ring, ``ribbed_ring = "inner"``) has no path for an axial load: a
+ValidityWarning says so and the share is booked as if an opposite rib carried it. The
+outer rib's own contact of a ``"both"``-ribbed bearing is not modelled (paper 003's
+geometry has the inner rib only).
 
-Heat split between the roller ("elements") and the inner ring ("inner_ring"): Blok's
-high-Peclet partition [blok1963_flash_temperature] via
-:func:`thermobearing.heat_sources.raceway.blok_partition` with the speeds of the two
-surfaces through the contact (rib: (omega_i - omega_c)(d_i/2 + H_contact), end face:
-omega_r rho) and the contact half-width sqrt(a b); option ``element_share`` overrides it.
+Energy: the dynamics' heat is the work rate of the rib forces the integrator applies
+(force x sliding speed, :mod:`~thermobearing.skidding.roller_dynamics_heat`); the thrust
+share is mu Q |v|. The sum is split between the roller ("elements") and the inner ring
+("inner_ring") by Blok's high-Peclet partition [blok1963_flash_temperature]
+(:func:`thermobearing.heat_sources.raceway.blok_partition`) with the speeds of the two
+surfaces through the contact (rib: (omega_i - omega_c)(d_i/2 + H_contact), end face: rib
+speed minus the model's mean slide) and the contact half-width sqrt(a b); option
+``element_share`` overrides it. Units: SI.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
-from ..errors import InputError, check_positive, check_range
+from ..errors import InputError, ValidityWarning, check_positive, check_range
 from ..hertz import point_contact
 from ..rib import DEFAULT_RIB_FRICTION, lubricant_drag, rib_geometry, rib_sliding_speed
+from ..skidding.roller_dynamics_heat import DEFAULT_TEMPERATURE_STEP, MODELS, rib_dynamics_heat
 from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
 from .raceway import blok_partition
+
+#: default model of the rib dynamics (module notes: fidelity vs cost, measured)
+DEFAULT_MODEL = "coupled"
 
 
 @HEAT_SOURCES.register(
@@ -45,7 +65,7 @@ from .raceway import blok_partition
     references=["zhang2021_abnormal_wear", "blok1963_flash_temperature",
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
-                "element_share": "-"},
+                "element_share": "-", "temperature_step": "K"},
     validity="cylindrical roller bearings with ribs (end_face_crown_radius, rib_height set)",
 )
 def rib_friction(ctx: HeatContext) -> HeatResult:
@@ -62,6 +82,11 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     check_range(f"options[{name}].oil_fraction", oil_fraction, 0.0, 1.0)
     unbalance = float(ctx.option(name, "unbalance_mass", 0.0))
     check_positive(f"options[{name}].unbalance_mass", unbalance, allow_zero=True)
+    model = ctx.option(name, "model", DEFAULT_MODEL)
+    if model not in MODELS:
+        raise InputError(f"options[{name}].model", model, MODELS)
+    t_step = float(ctx.option(name, "temperature_step", DEFAULT_TEMPERATURE_STEP))
+    check_positive(f"options[{name}].temperature_step", t_step)
     kin = ctx.kinematics
     op = ctx.operating
     temperature = ctx.temperature("elements")
@@ -70,29 +95,56 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     z = b.n_rollers
     h = float(geom.contact_height())
     rho = 0.5 * geom.roller_diameter - h
-    v = rib_sliding_speed(geom, wi, wc, spin)        # (Z,) rib minus end face [m/s]
 
     # thrust share (one rib per roller carries the axial load)
     fa = abs(float(op.axial_load))
     q = fa / (z * math.cos(geom.rib_angle)) if fa > 0 else 0.0
-    from ..lubricant_properties import air_properties
-    eta = (oil_fraction * float(ctx.lubricant.dynamic_viscosity(temperature))
-           + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
-    f_g = abs(float(lubricant_drag(geom, wi, wc, eta)[0])) if geom.axial_clearance > 0 else 0.0
-    friction = mu * q + 2.0 * f_g                     # per roller: thrust face + drag on both
-    heat_thrust = np.abs(friction * v)
-    dynamic = 0.0
-    details = {"thrust_normal_force": q, "drag_force": f_g, "friction_coefficient": mu}
-    if unbalance > 0.0:
-        from ..skidding.roller_dynamics import build_model, simulate_reduced
+    if fa > 0 and getattr(b, "ribbed_ring", "both") != "both":
+        warnings.warn(ValidityWarning(
+            f"rib_friction: {getattr(b, 'name', 'the bearing')} has ribs on the "
+            f"{b.ribbed_ring} ring only, so an axial load has no path through it (paper 003 "
+            "sec. 3.2); its thrust share is booked as if an opposite rib carried it"),
+            stacklevel=2)
+    dyn = None
+    if model == "coupled" or unbalance > 0.0:
+        dyn = rib_dynamics_heat(b, ctx.lubricant, wi - float(kin.outer_speed),
+                                float(op.radial_load), temperature, unbalance, model=model,
+                                friction_coefficient=mu, oil_fraction=oil_fraction,
+                                temperature_step=t_step)
+    details: dict = {"thrust_normal_force": q, "friction_coefficient": mu, "model": model}
+    if model == "coupled":
+        # every face from the coupled integration (contacts and drag); the thrust share
+        # slides at the coupled model's mean rib slide speed
+        slide = np.full(z, dyn.rib_slide_speed)
+        friction = np.full(z, mu * q)
+        heat_thrust = friction * slide
+        dynamic = z * dyn.heat
+        v_end_mean = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - dyn.rib_slide_speed
+        pairs = (ForcePair("rib on roller end face (thrust share, coupled spins)",
+                           friction, -slide),)
+    else:
+        from ..lubricant_properties import air_properties
 
-        model = build_model(b, ctx.lubricant, wi - float(kin.outer_speed), float(op.radial_load),
-                            unbalance, temperature=temperature, rib_friction=mu,
-                            oil_fraction=oil_fraction)
-        resp = simulate_reduced(model)
-        dynamic = z * resp.rib_heat
-        details.update(pv_left=resp.pv_left, pv_right=resp.pv_right,
-                       slip_speed=resp.slip_speed, dynamic_heat=dynamic)
+        v = rib_sliding_speed(geom, wi, wc, spin)        # (Z,) rib minus end face [m/s]
+        eta = (oil_fraction * float(ctx.lubricant.dynamic_viscosity(temperature))
+               + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
+        f_g = (abs(float(lubricant_drag(geom, wi, wc, eta)[0]))
+               if geom.axial_clearance > 0 else 0.0)
+        details["drag_force"] = f_g
+        # the reduced dynamics' heat holds the drag of both faces: not counted twice
+        friction = mu * q + (2.0 * f_g if dyn is None else 0.0)
+        friction = friction * np.ones(z)
+        heat_thrust = np.abs(friction * v)
+        dynamic = z * dyn.heat if dyn is not None else 0.0
+        v_end_mean = float(np.mean(spin)) * rho
+        pairs = (ForcePair("rib on roller end face (thrust + drag)", friction * np.sign(v),
+                           -v),)
+    if dyn is not None:
+        details.update(pv_left=dyn.pv_left, pv_right=dyn.pv_right, slip_speed=dyn.slip_speed,
+                       dynamic_heat=dynamic, heat_left=z * dyn.heat_left,
+                       heat_right=z * dyn.heat_right, rib_slide_speed=dyn.rib_slide_speed,
+                       dynamics_cost_s=dyn.cost_s, dynamics_runs=dyn.runs)
+    details["thrust_heat"] = float(np.sum(heat_thrust)) if model == "coupled" else 0.0
     total = float(np.sum(heat_thrust)) + dynamic
     share = ctx.option(name, "element_share", None)
     if share is None:
@@ -100,17 +152,15 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         rx, ry = geom.curvature()
         pc = point_contact(qq, rx, ry, geom.effective_modulus)
         v_rib = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h)
-        v_end = float(np.mean(spin)) * rho
-        share = float(blok_partition(0.5 * (v_rib + v_end), v_end - v_rib,
+        share = float(blok_partition(0.5 * (v_rib + v_end_mean), v_end_mean - v_rib,
                                      math.sqrt(float(pc.a) * float(pc.b)),
                                      b.roller_material, b.ring_material))
     check_range(f"options[{name}].element_share", share, 0.0, 1.0)
     comp = "roller end face / rib"
-    pairs = (ForcePair("rib on roller end face (thrust + drag)", friction * np.sign(v), -v),)
     if dynamic > 0:
-        # time-mean power of |Q_e_theta v| of the skew contacts, as F [W/(1 m/s)] x 1 m/s
-        pairs += (ForcePair("rib skew contacts (time mean)", np.array(dynamic),
-                            np.array(-1.0)),)
+        # time-mean power of the dynamics' rib forces, as F [W/(1 m/s)] x 1 m/s
+        pairs += (ForcePair(f"rib contacts and drag ({model} dynamics, time mean)",
+                            np.array(dynamic), np.array(-1.0)),)
     return HeatResult(
         source=name,
         power_by_role={"elements": share * total, "inner_ring": (1.0 - share) * total},

@@ -536,7 +536,10 @@ class RollerResponse:
     rolling_slip_speed : the same (kept for existing callers) [m/s].
     surface_slip_speed : time mean of the full sliding-speed magnitude of the inner contact,
         sqrt(V_roll^2 + s_i^2 + (alpha' L_e)^2/12), skew-induced parts included [m/s].
-    rib_heat_left, rib_heat_right : time-mean friction heat |Q_e_theta v| per face [W].
+    rib_heat_left, rib_heat_right : time-mean friction power per face [W]: the work rate
+        of the rib forces the dynamics apply (Coulomb part mu Q v^2 / sqrt(v^2 + v_s^2)
+        with the regularising speed v_s = ``SIGN_REGULARISATION`` of the integrator, i.e.
+        mu Q |v| within 0.1 % for |v| > 1 m/s, plus the drag F_G tanh(v_g/v_s) v_g).
     max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
     mean_spin_moment : time-mean rib moment about the roller axis [N m].
     model : "full" | "reduced".  cost_s : CPU time of this process [s] (shared machine).
@@ -609,7 +612,7 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
     rf = rib_forces(g, a, x, inner_speed=m.inner_speed, cage_speed=m.cage_speed,
                     roller_spin=spin, skew_rate=ad, axial_speed=xd,
                     friction_coefficient=m.rib_friction,
-                    mixture_viscosity=m.mixture_viscosity)
+                    mixture_viscosity=m.mixture_viscosity, smooth_sign=SIGN_REGULARISATION)
     wc = m.cage_speed
     u_i = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
     v_roll = u_i - spin * 0.5 * g.roller_diameter

@@ -1,0 +1,54 @@
+"""The cylindrical roller bearing scene with the rib friction source (issue 9, paper 003)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from thermobearing.scene import loads_scene
+from thermobearing.simulation import Simulation
+
+SCENE = Path(__file__).resolve().parents[2] / "configs" / "scenes" / "crb_rib_example.toml"
+
+
+def _check(res, n_steps):
+    losses = res.tables["losses"]
+    rib = losses[losses["source"] == "rib_friction"]
+    # its own loss component, one row per step, positive
+    assert list(rib["component"]) == ["roller end face / rib"] * n_steps
+    assert (rib["power [W]"] > 0).all()
+    # the other sources are there beside it (the rib heat is not folded into them)
+    assert set(losses["source"]) >= {"raceway_traction", "rib_friction", "cage_guide"}
+    # energy audit of the network closes (generated = stored + to ambient + to oil)
+    e = res.tables["energy"].iloc[-1]
+    assert abs(e["imbalance [J]"]) <= 1e-6 * e["generated [J]"]
+    assert res.stats["relative_energy_imbalance"] < 1e-9
+    temps = res.tables["temperatures"].filter(like="[degC]").to_numpy()
+    assert np.all(np.isfinite(temps)) and np.all(temps[-1] > temps[0])
+    return rib["power [W]"].to_numpy()
+
+
+def test_scene_checks_and_books_rib_heat_short_protocol():
+    """The scene file with its steps shortened to 10 s and without the 20000 r/min step
+    (the two 30000 r/min steps share one dynamics state; few temperature cells visited:
+    ~3 coupled runs instead of ~13, keeps the default test run short)."""
+    text = SCENE.read_text(encoding="utf-8")
+    short = text.replace('step_duration = "1 min"', 'step_duration = "10 s"').replace(
+        'chunk = "30 s"', 'chunk = "10 s"').replace(
+        '[{ speed = "20000 rpm", axial_load = "0.2 kN" },\n         ', '[')
+    assert short.count("speed = ") == 2 and 'chunk = "10 s"' in short
+    sim = Simulation(loads_scene(short, base_dir=SCENE.parent), progress=False)
+    chain = sim.describe_chain()
+    assert "heat_source: rib_friction" in chain
+    rib = _check(sim.run(), 2)
+    # 0.2 -> 0.4 kN at 30000 r/min: the thrust share doubles, the rib heat rises
+    assert rib[1] > 1.5 * rib[0]
+
+
+@pytest.mark.slow
+def test_scene_file_runs_end_to_end():
+    sim = Simulation(loads_scene(SCENE.read_text(encoding="utf-8"), base_dir=SCENE.parent),
+                     progress=False)
+    _check(sim.run(), 3)

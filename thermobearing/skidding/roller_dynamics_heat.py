@@ -1,0 +1,230 @@
+"""Time-mean rib friction power of the roller dynamics, cached per operating state.
+
+What the rib heat source (:mod:`thermobearing.heat_sources.rib`) needs from the roller
+dynamics of paper 003 (Zhang et al. 2021, seed ``003_743e023ae6e45686.txt``
+[zhang2021_abnormal_wear], eqs. 1-17 rib contact, 18-19 roller and cage, 21-24 PV): the
+time-mean friction power of each end face of a roller, averaged over all rollers, at one
+operating state (speed, radial load, temperature, unbalance). Two models:
+
+* ``"coupled"``: all Z rollers and the cage integrated together
+  (:func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, started from the
+  uncoupled quasi-static state, as the validation case ``paper003_pv_slip_trends`` runs it);
+  ~1.1-1.7 s CPU per state at paper 003's base case.
+* ``"reduced"``: one roller at the orbit's frozen load states with the quasi-static coupled
+  spins (:func:`~thermobearing.skidding.roller_dynamics.simulate_reduced`), ~0.1 s plus
+  ~0.1-0.2 s of the quasi-static rib coupling; its time-mean PV is 29 % below the coupled
+  model's at the base case and its rib heat about half (SOURCE.md of the case).
+
+Heat = the work rate of the rib forces the integrator applies (``RollerResponse.rib_heat_*``:
+Coulomb friction mu Q along the tangential slide v of eq. 24 -- power mu Q v^2 /
+sqrt(v^2 + v_s^2), v_s the integrator's 0.05 m/s direction regularisation -- plus the
+lubricant drag of eq. 14 times its sliding speed), so it is energy consistent with the
+model's forces; per roller, both faces separately, averaged over rollers and time [W].
+
+Cache: an operating state is keyed by the bearing and lubricant (their ``repr``), speed,
+radial load, unbalance, the model and its settings, and the temperature *node* of a grid
+of step ``temperature_step`` [K] (default :data:`DEFAULT_TEMPERATURE_STEP`). A temperature
+between two nodes gets the linear interpolation of the two nodes' results (each computed
+once), so the heat is continuous in temperature (the coupled transient differentiates it
+by finite differences) and a transient re-runs the dynamics only when the temperature
+enters a new grid cell. Measured at the base case (0.11 g; 2026-11-22): the coupled rib
+heat moves by +1.8 % / -1.3 % from 353 to 358 / 363 K, inside the +-1.5 % scatter of the
+chaotic impacting motion (the slip scatter over step sizes, SOURCE.md); the drag-only heat
+(no unbalance) falls by 10 % per 5 K (the oil viscosity), whose linear interpolation over a
+5 K cell errs by <= (ln 1.1)^2 / 8 = 0.11 %: a 5 K grid keeps the interpolation error
+below 1 % (a 10 K grid: 0.5 % for the drag, but two scatter samples 10 K apart).
+The cache is bounded (:data:`CACHE_SIZE` states, least recently used dropped) and holds
+only results of deterministic runs; :func:`clear_cache` empties it, :func:`cache_info`
+counts hits and runs. Units: SI.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections import OrderedDict
+from dataclasses import dataclass
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from ..errors import InputError, check_positive, check_range
+from ..rib import DEFAULT_RIB_FRICTION, rib_geometry, rib_sliding_speed
+
+#: models of the rib heat (see the module notes)
+MODELS = ("coupled", "reduced")
+#: temperature grid step of the cache [K] (module notes: measured < 1 % interpolation error)
+DEFAULT_TEMPERATURE_STEP = 5.0
+#: warm-up and statistics orbits of the coupled model (those of the validation case)
+DEFAULT_WARMUP_ORBITS = 2.0
+DEFAULT_ORBITS = 3.0
+#: operating states kept in the cache
+CACHE_SIZE = 64
+
+
+class RibDynamicsHeat(NamedTuple):
+    """Time-mean rib quantities of one roller (mean over rollers and time), SI.
+
+    heat_left, heat_right : friction power of the left / right end-face contact, drag
+        included [W] (module notes).
+    pv_left, pv_right : time-mean P |v| (paper 003 eqs. 21-24) [Pa m/s].
+    slip_speed : time-mean rolling slip at the inner raceway |V_roll| (eq. 25) [m/s].
+    rib_slide_speed : time- and roller-mean |v_i - v_r| at the eq. 11 contact point of an
+        unskewed roller with the model's spins and cage speed (the slide a thrust share
+        would have) [m/s].
+    temperature : where it was evaluated (interpolated) [K].  cost_s : CPU time of the
+        runs it needed [s] (0 if all were cached).  runs : dynamics runs it needed.
+    model : "coupled" | "reduced".
+    """
+
+    heat_left: float
+    heat_right: float
+    pv_left: float
+    pv_right: float
+    slip_speed: float
+    rib_slide_speed: float
+    temperature: float
+    cost_s: float
+    runs: int
+    model: str
+
+    @property
+    def heat(self) -> float:
+        """Both end faces of one roller [W]."""
+        return self.heat_left + self.heat_right
+
+
+@dataclass
+class _Cache:
+    """Bounded least-recently-used memo of dynamics runs (module notes)."""
+
+    size: int = CACHE_SIZE
+    hits: int = 0
+    runs: int = 0
+
+    def __post_init__(self) -> None:
+        self.store: OrderedDict[tuple, RibDynamicsHeat] = OrderedDict()
+
+    def get(self, key: tuple) -> RibDynamicsHeat | None:
+        found = self.store.get(key)
+        if found is not None:
+            self.store.move_to_end(key)
+            self.hits += 1
+        return found
+
+    def put(self, key: tuple, value: RibDynamicsHeat) -> None:
+        self.runs += 1
+        self.store[key] = value
+        self.store.move_to_end(key)
+        while len(self.store) > self.size:
+            self.store.popitem(last=False)
+
+
+_CACHE = _Cache()
+
+
+def cache_info() -> dict[str, int]:
+    """{"hits", "runs", "size"}: cache hits and dynamics runs since the last clear."""
+    return {"hits": _CACHE.hits, "runs": _CACHE.runs, "size": len(_CACHE.store)}
+
+
+def clear_cache() -> None:
+    """Empty the cache and reset its counters."""
+    _CACHE.store.clear()
+    _CACHE.hits = 0
+    _CACHE.runs = 0
+
+
+def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
+                 temperature: float, unbalance_mass: float = 0.0, *, model: str = "coupled",
+                 friction_coefficient: float = DEFAULT_RIB_FRICTION,
+                 oil_fraction: float = 0.05, warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
+                 orbits: float = DEFAULT_ORBITS) -> tuple[RibDynamicsHeat, Any]:
+    """One (uncached) run of the roller dynamics at an operating state.
+
+    speed : inner-ring speed relative to the outer ring [rad/s].  radial_load [N].
+    temperature [K] (oil viscosities).  unbalance_mass [kg] at the right chamfer (paper 003
+    sec. 8).  model : "coupled" | "reduced".  friction_coefficient : mu of eq. 12 [-].
+    oil_fraction : oil volume fraction of the rib-gap mixture (eq. 14) [-].
+    warmup_orbits, orbits : coupled model's discarded and averaged cage orbits.
+    Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``).
+    """
+    from .roller_dynamics import build_model, simulate_reduced
+
+    if model not in MODELS:
+        raise InputError("model", model, MODELS)
+    check_positive("speed", speed)
+    check_positive("temperature", temperature)
+    t0 = time.process_time()
+    geom = rib_geometry(bearing)
+    if model == "coupled":
+        from .roller_dynamics_coupled import simulate_coupled
+
+        m = build_model(bearing, lubricant, speed, radial_load, unbalance_mass,
+                        temperature=temperature, rib_friction=friction_coefficient,
+                        oil_fraction=oil_fraction, coupling="none")
+        resp = simulate_coupled(m, bearing, lubricant, n_orbits=orbits,
+                                warmup_orbits=warmup_orbits)
+        s = resp.series
+        v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
+        slide = float(np.mean(np.abs(v)))
+    else:
+        m = build_model(bearing, lubricant, speed, radial_load, unbalance_mass,
+                        temperature=temperature, rib_friction=friction_coefficient,
+                        oil_fraction=oil_fraction)
+        resp = simulate_reduced(m)
+        slide = float(np.mean(np.abs(rib_sliding_speed(geom, speed, m.cage_speed, m.spin))))
+    out = RibDynamicsHeat(float(resp.rib_heat_left), float(resp.rib_heat_right),
+                          float(resp.pv_left), float(resp.pv_right), float(resp.slip_speed),
+                          slide, float(temperature), time.process_time() - t0, 1, model)
+    return out, resp
+
+
+def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: float,
+                      temperature: float, unbalance_mass: float = 0.0, *,
+                      model: str = "coupled",
+                      friction_coefficient: float = DEFAULT_RIB_FRICTION,
+                      oil_fraction: float = 0.05,
+                      temperature_step: float = DEFAULT_TEMPERATURE_STEP,
+                      warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
+                      orbits: float = DEFAULT_ORBITS) -> RibDynamicsHeat:
+    """:func:`run_dynamics` through the cache, linearly interpolated between the two
+    temperature nodes k dT <= T < (k + 1) dT (dT = ``temperature_step`` [K]; one node if T
+    lies on it). Arguments as :func:`run_dynamics`. ``cost_s`` / ``runs`` of the result
+    count only the runs this call made."""
+    if model not in MODELS:
+        raise InputError("model", model, MODELS)
+    check_positive("temperature_step", temperature_step)
+    check_range("temperature", temperature, 150.0, 700.0, unit="K")
+    base = (repr(bearing), repr(lubricant), round(float(speed), 9),
+            round(float(radial_load), 9), float(unbalance_mass), model,
+            float(friction_coefficient), float(oil_fraction), float(warmup_orbits),
+            float(orbits))
+    k = math.floor(temperature / temperature_step + 1e-12)
+    w = temperature / temperature_step - k
+    nodes = [(k, 1.0 - w)] + ([(k + 1, w)] if w > 1e-9 else [])
+    values = []
+    cost = 0.0
+    runs = 0
+    for node, weight in nodes:
+        key = (*base, node, float(temperature_step))
+        found = _CACHE.get(key)
+        if found is None:
+            found, _ = run_dynamics(bearing, lubricant, speed, radial_load,
+                                    node * temperature_step, unbalance_mass, model=model,
+                                    friction_coefficient=friction_coefficient,
+                                    oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
+                                    orbits=orbits)
+            _CACHE.put(key, found)
+            cost += found.cost_s
+            runs += 1
+        values.append((weight, found))
+
+    def mix(i: int) -> float:
+        return float(sum(wt * v[i] for wt, v in values))
+
+    return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model)
+
+
+__all__ = ["CACHE_SIZE", "DEFAULT_TEMPERATURE_STEP", "MODELS", "RibDynamicsHeat",
+           "cache_info", "clear_cache", "rib_dynamics_heat", "run_dynamics"]
