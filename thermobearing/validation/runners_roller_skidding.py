@@ -76,22 +76,39 @@ def paper000_nu214_cage_speed(inputs: dict[str, Any], case_dir: Path) -> dict[st
         "theoretical_cage_speed": speed * bearing.theoretical_cage_speed_ratio(),
     }
     eq9 = bool(inputs.get("paper_eq9_alpha", False))
-    for (load, eta0), tag in CONDITIONS.items():
-        lub = paper000_eq9_lubricant(lubricant, eta0, temperature) if eq9 \
-            else lubricant
-        res = solve_roller(bearing, lub, speed, load, 0.0, temperature, viscosity=eta0,
-                           whirl=Whirl(radius, n_samples=n_samples), **options)
-        st, sl = res.cage_speed_stats, res.slip_stats
-        out[f"mean_cage_speed_{tag}"] = st.mean
-        out[f"min_cage_speed_{tag}"] = st.minimum
-        out[f"max_cage_speed_{tag}"] = st.maximum
-        out[f"cage_speed_fluctuation_{tag}"] = st.fluctuation
-        out[f"mean_slip_{tag}"] = sl.mean
-    # directions of change (paper: cage speed falls with load, rises with viscosity)
-    out["cage_speed_change_Fr100_to_Fr200"] = (out["mean_cage_speed_Fr200_eta0.08"]
-                                               - out["mean_cage_speed_Fr100_eta0.08"])
-    out["cage_speed_change_eta0.06_to_eta0.10"] = (out["mean_cage_speed_Fr150_eta0.10"]
-                                                   - out["mean_cage_speed_Fr150_eta0.06"])
+
+    def tables(model: dict[str, Any], whirl: dict[str, Any], suffix: str) -> None:
+        """Tables 2-3 quantities of one model variant (rows ``<quantity>_<tag><suffix>``)."""
+        for (load, eta0), tag in CONDITIONS.items():
+            lub = paper000_eq9_lubricant(lubricant, eta0, temperature) if eq9 \
+                else lubricant
+            res = solve_roller(bearing, lub, speed, load, 0.0, temperature, viscosity=eta0,
+                               whirl=Whirl(radius, n_samples=n_samples, **whirl), **model)
+            st, sl = res.cage_speed_stats, res.slip_stats
+            out[f"mean_cage_speed_{tag}{suffix}"] = st.mean
+            out[f"min_cage_speed_{tag}{suffix}"] = st.minimum
+            out[f"max_cage_speed_{tag}{suffix}"] = st.maximum
+            out[f"cage_speed_fluctuation_{tag}{suffix}"] = st.fluctuation
+            out[f"mean_slip_{tag}{suffix}"] = sl.mean
+        # directions of change (paper: cage speed falls with load, rises with viscosity)
+        out[f"cage_speed_change_Fr100_to_Fr200{suffix}"] = (
+            out[f"mean_cage_speed_Fr200_eta0.08{suffix}"]
+            - out[f"mean_cage_speed_Fr100_eta0.08{suffix}"])
+        out[f"cage_speed_change_eta0.06_to_eta0.10{suffix}"] = (
+            out[f"mean_cage_speed_Fr150_eta0.10{suffix}"]
+            - out[f"mean_cage_speed_Fr150_eta0.06{suffix}"])
+
+    tables(options, {}, "")
+    # named variants of the case's model (sensitivities printed beside the case model):
+    # [inputs.variants.NAME] model = {...} (extra solver options), whirl = {...} (Whirl fields)
+    for name, variant in dict(inputs.get("variants", {})).items():
+        extra = dict(variant)
+        unknown = set(extra) - {"model", "whirl"}
+        if unknown:
+            raise InputError(f"inputs.variants.{name}", sorted(unknown),
+                             "the keys 'model' (solver options) and 'whirl' (Whirl fields)")
+        tables({**options, **dict(extra.get("model", {}))}, dict(extra.get("whirl", {})),
+               f"_{name}")
     # Fig. 4: fluctuation against whirl radius at F_r = 200 N
     fig4_load = _get(inputs, "fig4_radial_load", "force")
     radii = [to_si(r, "length", field="inputs.fig4_whirl_radii")
