@@ -107,3 +107,35 @@ def test_numerical_drag_case_runs_the_paper000_case_model() -> None:
     assert a["model"] == b["model"]
     for key in ("bearing", "lubricant", "inner_speed", "temperature", "paper_eq9_alpha"):
         assert a[key] == b[key], key
+
+
+def test_paper000_variants_case_is_the_case_model_plus_variants() -> None:
+    """The variants case runs the paper000 case model (same inputs) and only adds variants;
+    every one of its reference rows is a report row of a named variant."""
+    import csv
+    import tomllib
+
+    def inputs(case: str) -> dict:
+        text = (validation.cases_dir() / case / "case.toml").read_text(encoding="utf-8")
+        return tomllib.loads(text)
+
+    a, b = inputs("paper000_nu214_cage_speed"), inputs("paper000_whirl_variants")
+    assert b["slow"] is True and a["runner"] == b["runner"]
+    variants = b["inputs"].pop("variants")
+    assert a["inputs"] == b["inputs"] and set(variants) == {"in_phase", "oil_layer_10um"}
+    with open(validation.cases_dir() / "paper000_whirl_variants" / "reference.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert rows and all(r["gate"] == "report" for r in rows)
+    assert all(r["quantity"].endswith(tuple(f"_{v}" for v in variants)) for r in rows)
+
+
+@pytest.mark.parametrize("variant, field", [({"model": {}, "speed": 1}, "variants.bad"),
+                                            ({"whirl": {"not_a_field": 1}}, "variants.bad.whirl")])
+def test_paper000_runner_refuses_a_bad_variant_before_solving(variant, field) -> None:
+    from thermobearing.errors import InputError
+    from thermobearing.validation.runners_roller_skidding import paper000_nu214_cage_speed
+
+    inputs = {"inner_speed": "5000 rpm", "temperature": "40 degC", "whirl_radius": "6e-5 m",
+              "variants": {"bad": variant}}
+    with pytest.raises(InputError, match=field.replace(".", r"\.")):
+        paper000_nu214_cage_speed(inputs, validation.cases_dir())

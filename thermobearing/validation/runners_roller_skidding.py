@@ -98,17 +98,25 @@ def paper000_nu214_cage_speed(inputs: dict[str, Any], case_dir: Path) -> dict[st
             out[f"mean_cage_speed_Fr150_eta0.10{suffix}"]
             - out[f"mean_cage_speed_Fr150_eta0.06{suffix}"])
 
-    tables(options, {}, "")
     # named variants of the case's model (sensitivities printed beside the case model):
     # [inputs.variants.NAME] model = {...} (extra solver options), whirl = {...} (Whirl fields)
+    variants = {}
     for name, variant in dict(inputs.get("variants", {})).items():
         extra = dict(variant)
         unknown = set(extra) - {"model", "whirl"}
         if unknown:
             raise InputError(f"inputs.variants.{name}", sorted(unknown),
                              "the keys 'model' (solver options) and 'whirl' (Whirl fields)")
-        tables({**options, **dict(extra.get("model", {}))}, dict(extra.get("whirl", {})),
-               f"_{name}")
+        whirl = dict(extra.get("whirl", {}))
+        try:  # bad Whirl fields fail here, before any solve
+            Whirl(radius, n_samples=n_samples, **whirl)
+        except TypeError:
+            raise InputError(f"inputs.variants.{name}.whirl", sorted(whirl),
+                             "fields of skidding.whirl.Whirl (e.g. radial_inertia)") from None
+        variants[name] = ({**options, **dict(extra.get("model", {}))}, whirl)
+    tables(options, {}, "")
+    for name, (model, whirl) in variants.items():
+        tables(model, whirl, f"_{name}")
     # Fig. 4: fluctuation against whirl radius at F_r = 200 N
     fig4_load = _get(inputs, "fig4_radial_load", "force")
     radii = [to_si(r, "length", field="inputs.fig4_whirl_radii")
