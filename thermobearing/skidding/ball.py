@@ -130,7 +130,10 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         the first chord Jacobian).
     warm_iterations : iterations allowed from the warm start before the cold start.
     tol : tolerance on the scaled residual norm (forces / F_s, moments / (F_s D/2)).
-    continuation : on a cold-start failure, continue from a higher axial load.
+    continuation : on a cold-start failure, continue from a higher axial load. (A cold start
+        whose damped Newton stalls below a residual of 1e-2 first gets the trust-region
+        fallback :func:`~thermobearing.skidding.ball_newton.trust_region`; the result's
+        ``extra["fallback"]`` says so.)
     energy_tol, energy_polish : a converged state whose energy identity |T_shaft omega_i -
         sum heat| / sum heat is above ``energy_tol`` gets up to ``energy_polish`` more chord
         steps (each kept only if it lowers the residual; the identity is required to 1e-8).
@@ -187,7 +190,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                 "outer groove): nothing drives the cage, CSR undefined in this model",
                 {"radial_load": radial_load, "axial_load": axial_load, "speed": speed})
         try:
-            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter)
+            X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter,
+                                            stall_after=8)
         except ConvergenceError as err:
             # a Newton that stalled close to a root (residual below 1e-2): Powell's
             # trust-region method from its last iterate (session 6: one point of the BM-5
@@ -198,7 +202,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                 if last is None or not last[2] < 1e-2:
                     raise err
                 X, G, nrm, _ = trust_region(system, last[0], last[1], tol=tol)
-                iters, fallback = max_iter, "trust_region"
+                iters, fallback = int(err.state.get("iteration", max_iter)), "trust_region"
             except ConvergenceError:
                 if not continuation:
                     raise err from None
