@@ -347,7 +347,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
     ``skew`` alpha [rad], ``pocket`` z [m], ``axial_speed`` X' [m/s] and ``skew_rate``
-    alpha' [rad/s] (X, X' relative to the inner ring), and
+    alpha' [rad/s], ``pocket_speed`` z' [m/s] (X, X' relative to the inner ring), and
     ``ring_axial``, the inner ring's axial position [m]. ``cost_s``: CPU seconds.
     ConvergenceError if the state becomes non-finite or a spin reverses.
     """
@@ -496,6 +496,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "axial": traj[:, :, 0], "skew": traj[:, :, 2],
                                  "pocket": traj[:, :, 4],
                                  "axial_speed": traj[:, :, 1], "skew_rate": traj[:, :, 3],
+                                 "pocket_speed": traj[:, :, 5],
                                  "ring_axial": sample_ring[:n_sampled].copy(),
                                  "traction_evaluations": np.array([n_eval]),
                                  "table_points": np.array([n_table]),
