@@ -83,3 +83,27 @@ def test_table_refuses_clearance_film_model(setup):
     with pytest.raises(InputError, match="clearance_film"):
         build_traction_table(dataclasses.replace(rm, clearance_film=True), SPEED,
                              lambda wc: BODY, (6500.0, 17600.0), 777.3, CAGE)
+
+
+def test_table_is_c1_in_the_cage_speed(setup):
+    # the coupled model's refresh takes forward-difference slopes in omega_c (step 1e-4
+    # omega_c ~ 0.14 rad/s): the interpolant must be continuous with a continuous slope
+    # across layers and layer midpoints (the former nearest-layer quadratic jumped by up to
+    # 0.11 N at midpoints, a 10x spurious slope; module notes)
+    _, tab = setup
+    rng = np.random.default_rng(5)
+    w = rng.uniform(7000.0, 17000.0, 100)
+    n = rng.uniform(0.0, 777.3, 100)
+    dc = float(tab.cage[1] - tab.cage[0])
+    eps = 1e-3
+    for x in (1.5, 2.0, 2.5):
+        wc = float(tab.cage[0]) + x * dc
+        lo, mid, hi = (tab(w, n, wc + d) for d in (-eps, 0.0, eps))
+        assert np.max(np.abs(hi - lo)[:, :2]) < 1e-3             # no jump (slope ~0.08 N s/rad)
+        left, right = (mid - lo) / eps, (hi - mid) / eps
+        assert np.max(np.abs(right - left)[:, :2]) < 1e-3         # slope continuous
+    # Q_o's centrifugal part ~ omega_c^2 is reproduced exactly (Catmull-Rom holds quadratics)
+    wc = float(tab.cage[0]) + 1.37 * dc
+    rm = setup[0]
+    ref = _direct(rm, w[:5], n[:5], wc)
+    assert np.allclose(tab(w[:5], n[:5], wc)[:, 2], ref[:, 2], rtol=1e-9)

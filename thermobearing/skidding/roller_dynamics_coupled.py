@@ -409,7 +409,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     opts = dict(table_options or {})
 
     step_c = opts.pop("cage_step", DEFAULT_CAGE_STEP)
-    span = {"w_lo": 0.8 * float(np.min(m.spin)), "w_hi": 0.0, "k_lo": -1, "k_hi": 3}
+    # cage layers -2 .. 4: the Catmull-Rom in the cage speed is defined on -1 .. 3
+    span = {"w_lo": 0.8 * float(np.min(m.spin)), "w_hi": 0.0, "k_lo": -2, "k_hi": 4}
 
     def new_table(spins: np.ndarray, wc: float) -> Any:
         """(Re)build the table over the spins and cage speeds seen so far (a grid left is

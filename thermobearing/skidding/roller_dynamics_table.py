@@ -24,9 +24,14 @@ loop:
   N_i being even in u);
 * omega_c: layers at omega_ref (1 + k delta), by default k = -1 ... 3 (delta = 2.5 %: the
   integrated cage runs up to ~5 % faster than the quasi-static one it starts from; the
-  caller extends the range if the cage leaves it),
-  quadratic (Lagrange through the nearest layer and its neighbours; exact for the
-  centrifugal part of Q_o).
+  caller extends the range if the cage leaves it), Catmull-Rom cubic through four layers
+  (defined between the second and the second-to-last layer; reproduces quadratics, so
+  exact for the centrifugal part of Q_o). Until 2026-11-22 14:00 UTC this was a quadratic
+  through the *nearest* layer and its neighbours, which jumps by up to 0.1 N where the
+  nearest layer changes (measured at the base case: 0.098 / 0.111 N in S); a refresh whose
+  forward difference (0.14 rad/s) straddled such a point got a cage slope ~10x the real one
+  (0.7-0.8 against 0.07-0.08 N s/rad) for a whole refresh interval -- the likely trigger
+  of the cage-overspeed excursions of the table path (validation case SOURCE.md).
 
 Outside the grid the interpolation returns a status instead of extrapolating; the caller
 rebuilds the table around the new state. The interpolation error against direct
@@ -109,7 +114,8 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     without the centrifugal term [N] (the unbalance's orbital force).
     spin_range : (low, high) omega_r [rad/s] to cover.  max_load : largest N_i [N].
     cage_speed : reference omega_c [rad/s]; layers at cage_speed (1 + cage_step k) for k in
-    ``cage_layers`` = (first, last) (default -1 ... 3, at least three layers).
+    ``cage_layers`` = (first, last) (default -1 ... 3, at least four layers; the cubic is
+    defined from the second to the second-to-last layer).
     spin_step [rad/s], load_nodes, cage_step [-]: the grid (module notes).
     previous : a table of the same model on the same spin and load grid whose cage layers
     are reused where they coincide (only the new layers are evaluated).
@@ -133,8 +139,8 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     n_l = max(int(load_nodes), 2)
     loads = max(float(max_load), 1.0) * (np.arange(n_l + 2) / n_l) ** 2
     k_lo, k_hi = int(cage_layers[0]), int(cage_layers[1])
-    if k_hi - k_lo < 2 or 1.0 + cage_step * k_lo <= 0.0:
-        raise ValueError(f"cage_layers {cage_layers}: at least three layers, all > 0")
+    if k_hi - k_lo < 3 or 1.0 + cage_step * k_lo <= 0.0:
+        raise ValueError(f"cage_layers {cage_layers}: at least four layers, all > 0")
     cage = cage_speed * (1.0 + cage_step * np.arange(k_lo, k_hi + 1, dtype=float))
     w_all = np.tile(spins, loads.size)
     n_all = np.repeat(loads, n_w)
@@ -203,19 +209,20 @@ def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarr
     tl = u - il
     n_c = cage.shape[0]
     dc = cage[1] - cage[0]
-    if wc < cage[0] - 1e-12 * dc or wc > cage[n_c - 1] + 1e-12 * dc:
+    xc = (wc - cage[0]) / dc
+    jc = int(math.floor(xc))
+    if jc < 1 or jc > n_c - 3:
         return 0.0, 0.0, 0.0, 3
-    # quadratic through the nearest layer and its two neighbours
-    mid = min(max(int(round((wc - cage[0]) / dc)), 1), n_c - 2)
-    r = (wc - cage[mid]) / dc                   # -1.5 .. 1.5
-    lag = (0.5 * r * (r - 1.0), 1.0 - r * r, 0.5 * r * (r + 1.0))
-    res = np.zeros(3)
+    tc = xc - jc
+    # Catmull-Rom in the cage speed through layers jc-1 .. jc+2 (C1: value and slope
+    # continuous across layers -- the refresh's forward-difference slopes need it)
+    layer = np.zeros((4, 3))
     nodes = np.zeros((4, 3))
-    for ic in range(3):
+    for ic in range(4):
         for k in range(4):
             kk = il - 1 + k
             if kk >= 0:
-                _spin_cubic(values[mid - 1 + ic, kk], i, t, nodes[k])
+                _spin_cubic(values[jc - 1 + ic, kk], i, t, nodes[k])
         if il == 0:
             for col in range(3):
                 nodes[0, col] = nodes[2, col]
@@ -224,9 +231,11 @@ def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarr
             p1 = nodes[1, col]
             p2 = nodes[2, col]
             p3 = nodes[3, col]
-            val = p1 + 0.5 * tl * (p2 - p0 + tl * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3
-                                                   + tl * (3.0 * (p1 - p2) + p3 - p0)))
-            res[col] += lag[ic] * val
+            layer[ic, col] = p1 + 0.5 * tl * (p2 - p0 + tl * (
+                2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + tl * (3.0 * (p1 - p2) + p3 - p0)))
+    res = np.zeros(3)
+    for col in range(3):
+        res[col] = _cubic(layer, 1, tc, col)
     return res[0], res[1], res[2], 0
 
 
