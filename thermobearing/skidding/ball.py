@@ -191,7 +191,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                 {"radial_load": radial_load, "axial_load": axial_load, "speed": speed})
         try:
             X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter,
-                                            stall_after=8)
+                                            stall_after=25)
         except ConvergenceError as err:
             # a Newton that stalled close to a root (residual below 1e-2): Powell's
             # trust-region method from its last iterate (session 6: one point of the BM-5

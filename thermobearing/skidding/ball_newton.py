@@ -388,9 +388,11 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
 
     ``stall_after``: raise ConvergenceError after that many consecutive damped steps shorter
     than 1e-2 of the Newton step that each lower a norm already below 1e-2 by less than 1 %
-    (0: never; :func:`~thermobearing.skidding.ball.solve_ball` uses 8 for cold starts and
-    then calls :func:`trust_region`). Every ConvergenceError for too many iterations, a
-    failed line search or a stall carries the last iterate as ``err.iterate = (X, G, norm)``.
+    (0: never; :func:`~thermobearing.skidding.ball.solve_ball` uses 25 for cold starts and
+    then calls :func:`trust_region`; 8 cut two slow cold starts of the BM-5 maps that converge
+    in 33 iterations, and 16 was the least that kept them). Every ConvergenceError for too
+    many iterations, a failed line search or a stall carries the last iterate as
+    ``err.iterate = (X, G, norm)``.
 
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """

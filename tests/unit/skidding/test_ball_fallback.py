@@ -51,8 +51,8 @@ def test_solve_ball_converges_through_the_fallback(setting):
     r = solve_ball(b, m, W3000, 1000.0, FA, n_balls=16, theoretical_reference=0.45)
     assert r.converged and r.residual_norm <= 1e-9
     assert r.extra.get("fallback") == "trust_region"
-    # the stall was detected early (stall_after=8: 19 Newton iterations measured, not 150)
-    assert r.iterations < 40
+    # the stall was detected early (stall_after=25: 36 Newton iterations measured, not 150)
+    assert r.iterations < 60
     # the residual of the returned state, evaluated afresh in a new system
     system = ball_residual_system(b, m, W3000, 1000.0, FA, 16)
     R, Gc, G0, _ = system.evaluate(*r.unknowns)
