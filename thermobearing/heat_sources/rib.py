@@ -14,11 +14,9 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   linear interpolation between the two nodes, measured error < 1 %:
   :mod:`thermobearing.skidding.roller_dynamics_heat`), so a transient re-runs it only when
   the temperature enters a new 5 K cell (~1.1-1.7 s CPU per node at paper 003's base case).
-  Caveat (measured, validation case ``paper003_pv_slip_trends``): with an unbalance some
-  runs of the tabulated-traction path enter a cage-overspeed excursion (cage +15-20 %,
-  rib heat x2, 12-22 s CPU) that the direct-evaluation path did not show in 5 runs; a
-  node can then carry twice the typical heat. Without unbalance (drag and thrust only)
-  none was seen.
+  Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
+  motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
+  coupled model").
 * ``"reduced"``: the drag F_G of both faces at the kinematic state's (quasi-static) spins;
   with ``unbalance_mass`` > 0 the one-roller reduced dynamics
   (:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, on the quasi-static

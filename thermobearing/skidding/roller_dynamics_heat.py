@@ -33,9 +33,10 @@ chaotic impacting motion (the slip scatter over step sizes, SOURCE.md); the drag
 (no unbalance) falls by 10 % per 5 K (the oil viscosity), whose linear interpolation over a
 5 K cell errs by <= (ln 1.1)^2 / 8 = 0.11 %: a 5 K grid keeps the interpolation error
 below 1 % (a 10 K grid: 0.5 % for the drag, but two scatter samples 10 K apart).
-Caveat: at 0.11 g some coupled runs (table path) enter a cage-overspeed excursion that
-doubles the heat (350 / 390 K; validation case SOURCE.md, "Cage excursions"); not
-filtered here. The cache is bounded (:data:`CACHE_SIZE` states, least recently used
+At 0.11 g the node values scatter by about +-4 % (69-75 W per roller over 350-390 K and
+step sizes; the chaotic motion), after the traction table was made C1 in the cage speed
+(before, some runs entered a cage-overspeed excursion with twice the heat; SOURCE.md of
+the case, "Cage excursions"). The cache is bounded (:data:`CACHE_SIZE` states, least recently used
 dropped) and holds only results of deterministic runs; :func:`clear_cache` empties it,
 :func:`cache_info` counts hits and runs. Units: SI.
 """
