@@ -231,6 +231,13 @@ def test_rib_heat_source_unbalance_option():
         HEAT_SOURCES.get("rib_friction")(_ctx(0.0, {"rib_friction": {"unbalance_mass": -1.0}}))
     with pytest.raises(InputError, match="model"):
         HEAT_SOURCES.get("rib_friction")(_ctx(0.0, {"rib_friction": {"model": "full"}}))
+    # an outer-ribbed (NU-type) bearing: the inner-rib model does not apply
+    import dataclasses
+
+    ctx = _ctx(0.0)
+    nu = dataclasses.replace(ctx, bearing=dataclasses.replace(ctx.bearing, ribbed_ring="outer"))
+    with pytest.raises(InputError, match="ribbed_ring"):
+        HEAT_SOURCES.get("rib_friction")(nu)
 
 
 def test_contact_skew_and_sliding_grow_with_axial_clearance(geom):

@@ -78,6 +78,10 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     if getattr(b, "kind", None) != "cylindrical":
         raise InputError("bearing", getattr(b, "name", b),
                          "a cylindrical roller bearing (the rib_friction source)")
+    if getattr(b, "ribbed_ring", "inner") == "outer":
+        raise InputError("bearing.ribbed_ring", b.ribbed_ring,
+                         "'inner' or 'both' (the rib_friction source models paper 003's "
+                         "inner-ring rib; an outer-ring rib is not modelled)")
     geom = rib_geometry(b)
     mu = float(ctx.option(name, "friction_coefficient", DEFAULT_RIB_FRICTION))
     check_range(f"options[{name}].friction_coefficient", mu, 0.0, 1.0)
