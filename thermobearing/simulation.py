@@ -90,14 +90,70 @@ def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
     return tuple(names)
 
 
+def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str, dict]:
+    """``[models] heat_source_options`` checked and converted to SI.
+
+    A table per heat source, e.g. ``{ rib_friction = { model = "reduced", unbalance_mass =
+    "0.11 g" } }``. Each source must be one of ``sources`` (the scene's heat sources) and
+    each parameter one its registry entry documents; unit strings are converted to the
+    documented SI unit, numbers are taken as SI, and strings of dimensionless (``"-"``)
+    parameters are passed as names (the source checks them).
+    """
+    from .heat_sources import HEAT_SOURCES
+    from .units import to_si
+
+    raw = scene.models.get("heat_source_options", {})
+    if not isinstance(raw, Mapping):
+        raise InputError("models.heat_source_options", raw,
+                         "a table of heat-source name -> table of parameters")
+    out: dict[str, dict] = {}
+    for src, params in raw.items():
+        field_name = f"models.heat_source_options.{src}"
+        if src not in sources:
+            raise InputError(field_name, src, "one of the scene's heat sources: "
+                             + ", ".join(sources))
+        if not isinstance(params, Mapping):
+            raise InputError(field_name, params, "a table of parameter = value")
+        documented = HEAT_SOURCES.entry(src).parameters
+        conv: dict[str, Any] = {}
+        for key, value in params.items():
+            if key not in documented:
+                raise InputError(f"{field_name}.{key}", value,
+                                 "a documented parameter of " + src + ": "
+                                 + ", ".join(sorted(documented)))
+            unit = documented[key]
+            if isinstance(value, str) and unit == "-":
+                conv[key] = value
+            else:
+                conv[key] = to_si(value, "" if unit == "-" else unit,
+                                  field=f"{field_name}.{key}")
+        out[src] = conv
+    return out
+
+
+def _rib_friction_unavailable(bearing: Any) -> str | None:
+    """Why the ``rib_friction`` source cannot run on this bearing, or None."""
+    from .rib import rib_geometry
+
+    if getattr(bearing, "kind", None) != "cylindrical":
+        return "not a cylindrical roller bearing"
+    if getattr(bearing, "ribbed_ring", "inner") == "outer":
+        return "ribs on the outer ring only (paper 003's inner-ring rib model)"
+    try:
+        rib_geometry(bearing)
+    except InputError as exc:
+        return str(exc)
+    return None
+
+
 def plan_chain(scene: Scene, lubricant: Any | None = None,
                is_ball: bool = True) -> list[ChainLink]:
     """The minimal model chain for the scene's outputs (see the module docstring)."""
     from .film import FILM
     from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
 
-    allowed = {"kinematics", "film", "heat_sources", "control", "churning_heat_to",
-               "calibration"}
+    allowed = {"kinematics", "film", "heat_sources", "heat_source_options", "control",
+               "churning_heat_to", "calibration"}
     for key in scene.models:
         if key not in allowed:
             raise InputError(f"models.{key}", scene.models[key],
@@ -239,6 +295,7 @@ class Simulation:
             kin_options["control"] = scene.models["control"]
         self.bearings: list[_Bearing] = []
         self.calibration_notes: list[str] = []
+        dropped: list[str] = []
         for spec in scene.bearings:
             src = spec.preset or str(scene.resolve_path(spec.path))
             b = load_bearing(src, overrides=spec.overrides or None)
@@ -252,12 +309,26 @@ class Simulation:
                 if note and note not in self.calibration_notes:
                     self.calibration_notes.append(note)
             key = repr((spec.preset, spec.path, sorted(spec.overrides.items())))
-            self.bearings.append(_Bearing(spec.name, key, b, is_ball,
-                                          heat_source_names(scene, is_ball), kin_name, opts))
-        self.chain = plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
+            sources = heat_source_names(scene, is_ball)
+            why = ("rib_friction" in sources and "heat_sources" not in scene.models
+                   and _rib_friction_unavailable(b))
+            if why:  # a default source the bearing's geometry cannot host: left out, said
+                sources = tuple(n for n in sources if n != "rib_friction")
+                dropped.append(f"{spec.name}: default heat source rib_friction left out "
+                               f"({why}); name it in [models] heat_sources once the bearing "
+                               "has end_face_crown_radius and rib_height")
+            self.bearings.append(_Bearing(spec.name, key, b, is_ball, sources, kin_name, opts))
+        from .heat_sources import HEAT_SOURCES
+
+        HEAT_SOURCE_FAMILY = HEAT_SOURCES.family
+        running = {n for b in self.bearings for n in b.sources}
+        self.chain = [link for link in plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
+                      if link.family != HEAT_SOURCE_FAMILY or link.name in running]
         self.needs = _needs(scene)
         self.network = None
-        self.warnings: list[str] = list(self.calibration_notes)
+        self.warnings: list[str] = list(self.calibration_notes) + dropped
+        self.source_options = scene_heat_source_options(
+            scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         # identical bearings (same preset and overrides) at the same state share results
         self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
         self._heat_memo: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
@@ -388,6 +459,16 @@ class Simulation:
         ring churning on the shaft, cage churning on the oil+cage node).
         """
         opts = {k: dict(v) for k, v in kin.heat_options.items()}
+        for src, params in self.source_options.items():
+            mine = opts.setdefault(src, {})
+            clash = sorted(set(params) & set(mine))
+            if clash:
+                raise InputError(
+                    f"models.heat_source_options.{src}.{clash[0]}", params[clash[0]],
+                    "a parameter the kinematics model does not set: it sets "
+                    f"{', '.join(sorted(mine))} to match its own force models (change those "
+                    "through the bearing's calibration instead)")
+            mine.update(params)
         target = self.scene.models.get("churning_heat_to", "oil")
         if target not in ("oil", "paper002"):
             raise InputError("models.churning_heat_to", target, "'oil' or 'paper002'")

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
+from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
@@ -127,12 +130,15 @@ axial_load = "0.2 kN"
 duration = "2 min"
 [models]
 kinematics = "race_control"
+heat_source_options = { rib_friction = { model = "reduced", friction_coefficient = 0.08 } }
 [network]
 template = "four_node_paper002"
 parameters = { housing_outer_diameter = "110 mm", housing_length = "30 mm" }
 [outputs]
 want = ["temperatures", "losses", "energy"]
 """
+    # the scene's heat_source_options pick the cheap reduced rib model here (the coupled
+    # default is exercised by tests/unit/test_rib_scene.py)
     res = Simulation(loads_scene(text), progress=False).run()
     losses = res.tables["losses"]
     rib = losses[losses["source"] == "rib_friction"]["power [W]"]
@@ -252,3 +258,83 @@ duration = "3 min"
     temps = res.tables["temperatures"]
     assert np.all(np.isfinite(temps.filter(like="[degC]").to_numpy()))
     assert any("exprb43 failed" in w and "tr_bdf2" in w for w in sim.warnings)
+
+
+_CRB_SCENE = """
+title = "CRB"
+[[bearings]]
+name = "crb"
+preset = "{preset}"
+[lubricant]
+preset = "MIL_PRF_23699"
+[supply]
+flow = "4 L/min"
+inlet_temperature = "80 degC"
+[environment]
+ambient_temperature = "35 degC"
+[schedule]
+speed = "10000 rpm"
+radial_load = "3 kN"
+axial_load = "0 kN"
+duration = "1 min"
+[models]
+kinematics = "race_control"
+{models}
+[outputs]
+want = ["losses"]
+"""
+
+
+def test_heat_source_options_reach_the_source_in_si():
+    """[models] heat_source_options: unit strings converted with the registry's unit."""
+    from thermobearing.simulation import scene_heat_source_options
+
+    scene = loads_scene(_CRB_SCENE.format(
+        preset="CRB_50x75x16",
+        models='heat_source_options = { rib_friction = { unbalance_mass = "0.11 g", '
+               'model = "reduced", temperature_step = 2 } }'))
+    opts = scene_heat_source_options(scene, ("raceway_traction", "rib_friction"))
+    assert opts == {"rib_friction": {"unbalance_mass": pytest.approx(1.1e-4),
+                                     "model": "reduced", "temperature_step": 2.0}}
+    assert "heat_source_options" in scene.to_toml()
+
+
+@pytest.mark.parametrize("models, field", [
+    ('heat_source_options = { not_a_source = { x = 1 } }', "heat_source_options.not_a_source"),
+    ('heat_source_options = { rib_friction = { colour = 1 } }', "rib_friction.colour"),
+    ('heat_source_options = { rib_friction = { unbalance_mass = "3 m" } }',
+     "rib_friction.unbalance_mass"),
+    ('heat_source_options = { rib_friction = 3 }', "heat_source_options.rib_friction"),
+])
+def test_bad_heat_source_options_name_the_field(models, field):
+    scene = loads_scene(_CRB_SCENE.format(preset="CRB_50x75x16", models=models))
+    with pytest.raises(InputError, match=field.replace(".", r"\.")):
+        Simulation(scene, progress=False)
+
+
+def test_heat_source_option_set_by_the_kinematics_is_refused():
+    """The solver's own force-model options (here the pocket friction of the QJ1044's
+    skidding solver) cannot be overridden: the heat would no longer be the power of the
+    forces the solver balanced."""
+    from thermobearing.scene import load_scene
+
+    scene = load_scene()
+    models = dict(scene.models)
+    models["heat_source_options"] = {"pocket_friction": {"friction_coefficient": 0.1}}
+    sim = Simulation(dataclasses.replace(scene, models=models), progress=False)
+    with pytest.raises(InputError, match="pocket_friction.friction_coefficient"):
+        sim.run()
+
+
+def test_default_rib_friction_left_out_where_the_geometry_cannot_host_it():
+    """NU214 (ribs on the outer ring, no end-face crown radius): the default roller sources
+    run without rib_friction, and the run says so; naming it explicitly keeps the clear
+    error."""
+    sim = Simulation(loads_scene(_CRB_SCENE.format(preset="NU214", models="")), progress=False)
+    assert "rib_friction" not in sim.bearings[0].sources
+    assert all(link.name != "rib_friction" for link in sim.chain)
+    assert any("rib_friction left out" in w for w in sim.warnings)
+    named = _CRB_SCENE.format(preset="NU214", models='heat_sources = ["rib_friction"]')
+    sim = Simulation(loads_scene(named), progress=False)
+    with pytest.raises(InputError, match="ribbed_ring"):
+        sim.run()

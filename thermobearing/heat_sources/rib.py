@@ -68,7 +68,7 @@ DEFAULT_MODEL = "coupled"
     references=["zhang2021_abnormal_wear", "blok1963_flash_temperature",
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
-                "element_share": "-", "temperature_step": "K"},
+                "element_share": "-", "temperature_step": "K", "model": "-"},
     validity="cylindrical roller bearings with ribs (end_face_crown_radius, rib_height set)",
 )
 def rib_friction(ctx: HeatContext) -> HeatResult:
