@@ -678,6 +678,8 @@ class Lubricant:
     @_memo_scalar
     def dynamic_viscosity(self, T: ArrayLike, p: ArrayLike = 0.0) -> ArrayLike:
         """Dynamic viscosity [Pa s] at T [K] and gauge pressure p [Pa] (vectorised, broadcast)."""
+        if type(p) is float and p == 0.0 and type(T) is float:  # the common scalar call
+            return float(self._eta_atm(T))
         check_finite("pressure", p)
         eta0 = self._eta_atm(T)
         if np.all(np.asarray(p) == 0.0):
@@ -699,6 +701,8 @@ class Lubricant:
             rho = linear_expansion_density(T, self.density_reference,
                                            self.density_reference_temperature,
                                            self.thermal_expansion)
+        if type(p) is float and p == 0.0 and np.ndim(rho) == 0:
+            return float(rho)  # at gauge pressure 0 every pressure law gives rho(T)
         if self.density_pressure_law == "incompressible":
             check_finite("pressure", p)
             return _out(np.broadcast_to(np.asarray(rho), np.broadcast(rho, p).shape).copy())

@@ -415,3 +415,16 @@ def test_d341_scalar_path_equals_the_array_path():
     assert any("0.21 cSt" in str(w.message) for w in caught)
     with pytest.raises(InputError, match="absolute zero"):
         walther_kinematic_viscosity(-1.0, A, B)
+
+
+@pytest.mark.parametrize("name", ["ISO_VG46", "OIL_4109", "PAPER000_OIL", "MIL_PRF_23699"])
+def test_scalar_zero_pressure_fast_paths_equal_the_array_path(name):
+    """dynamic_viscosity(T) and density(T) at gauge pressure 0 take a scalar shortcut; they
+    must equal the vectorised path element by element."""
+    lub = load_lubricant(name)
+    T = np.linspace(290.0, 400.0, 12)
+    eta, rho = lub.dynamic_viscosity(T), lub.density(T)
+    for k, t in enumerate(T):
+        e, r = lub.dynamic_viscosity(float(t)), lub.density(float(t))
+        assert type(e) is float and type(r) is float
+        assert e == pytest.approx(eta[k], rel=1e-14) and r == pytest.approx(rho[k], rel=1e-14)

@@ -192,8 +192,11 @@ class Assembler:
             self._stamp(a, b, g, rows, cols, vals, s, bnd_i, bnd_g, bnd_t)
         K = self.K0
         if rows:
-            extra = sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n))
-            K = K + (extra.toarray() if self.dense else extra.tocsc())
+            if self.dense:  # small networks: stamp into a copy (no sparse detour)
+                K = K.copy()
+                np.add.at(K, (np.asarray(rows), np.asarray(cols)), vals)
+            else:
+                K = K + sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n)).tocsc()
         system = System(
             names=self.names, C=self.C, K=K, s=s, dense=self.dense,
             bnd_index=np.array(bnd_i, dtype=int), bnd_G=np.array(bnd_g),
