@@ -133,3 +133,75 @@ def test_cage_land_coefficient_is_petroff():
     ref = (math.pi * m.mixture_viscosity * cage.guide_land_diameter**3 * cage.land_width
            / (4.0 * 0.5 * cage.guide_clearance))
     assert k == pytest.approx(ref, rel=1e-12) and w_g == SPEED
+
+
+# --- cage band and the table path's fallback (session 6, D3) -------------------------------
+# The state that stopped configs/scenes/crb_rib_example.toml with 0.06 g: paper 003's bearing
+# as the scene's NUP variant, 20000 r/min, 3 kN, MIL-PRF-23699 at 420 K (the "elements" node
+# the scene's transient probed). On the table path the cage ran away (886 -> 1840 rad/s, one
+# roller rattling between its ribs 3x deeper than the others, pinned on its front bar) and the
+# table was rebuilt > 20 times; on the evaluate path it stays at 941-987 rad/s.
+FAIL_SPEED = 20000 * math.pi / 30
+
+
+def _failing_state():
+    b = load_bearing("CRB_50x75x16", {"ribbed_ring": "both"})
+    lub = load_lubricant("MIL_PRF_23699")
+    m = rd.build_model(b, lub, FAIL_SPEED, 3000.0, 0.06e-3, temperature=420.0,
+                       coupling="none")
+    return b, lub, m
+
+
+def test_cage_outside_band_on_both_paths_is_a_clear_error():
+    # a band far tighter than the motion's own cage fluctuation (the cage speeds up by ~1 %
+    # in the first 0.05 orbit from the quasi-static start): the table path stops, the
+    # evaluate path leaves the band too, and the error names the unstable motion and its
+    # state instead of the table
+    b, lub, m = _failing_state()
+    with pytest.raises(rc.ConvergenceError) as info:
+        rc.simulate_coupled(m, b, lub, n_orbits=0.05, warmup_orbits=0.0, cage_band=1e-4)
+    msg = str(info.value)
+    assert "unstable coupled motion" in msg and "evaluate" in msg
+    state = info.value.state
+    assert state["traction"] == "evaluate" and abs(state["cage_ratio"] - 1.0) > 1e-4
+    assert 0 <= state["roller"] < m.azimuth.size and state["cage_speed"] > 0
+    with pytest.raises(rc.ConvergenceError, match="fallback=False"):
+        rc.simulate_coupled(m, b, lub, n_orbits=0.05, warmup_orbits=0.0, cage_band=1e-4,
+                            fallback=False)
+
+
+def test_table_path_stop_reruns_the_evaluate_path(monkeypatch):
+    # the fallback re-runs the whole integration on the evaluate path: the same result as
+    # asking for it (bit for bit: deterministic), flagged in the series with where the
+    # table path stopped
+    b, lub, m = _failing_state()
+    ref = rc.simulate_coupled(m, b, lub, n_orbits=0.03, warmup_orbits=0.0,
+                              traction="evaluate")
+    assert ref.series["traction_fallback"][0] == 0
+    real = rc._simulate_coupled_path
+
+    def stop_on_table(*args, traction, **kwargs):
+        if traction == "table":
+            raise rc._TableCannotFollow("test", {"t": 1e-3, "cage_speed": 1234.0})
+        return real(*args, traction=traction, **kwargs)
+
+    monkeypatch.setattr(rc, "_simulate_coupled_path", stop_on_table)
+    got = rc.simulate_coupled(m, b, lub, n_orbits=0.03, warmup_orbits=0.0)
+    assert got.series["traction_fallback"][0] == 1
+    assert got.series["fallback_cage_speed"][0] == 1234.0
+    assert got.series["fallback_time"][0] == 1e-3
+    assert got.series["table_builds"][0] == 0
+    np.testing.assert_array_equal(got.series["cage_speed"], ref.series["cage_speed"])
+    assert got.pv_left == ref.pv_left and got.slip_speed == ref.slip_speed
+
+
+@pytest.mark.slow
+def test_failing_scene_state_runs():
+    # the full run the scene needs (2 + 3 orbits, ~20 s CPU with the fallback): it now
+    # completes, on the evaluate path, with the cage inside the band
+    b, lub, m = _failing_state()
+    r = rc.simulate_coupled(m, b, lub, n_orbits=3.0, warmup_orbits=2.0)
+    wc = r.series["cage_speed"]
+    assert r.series["traction_fallback"][0] == 1
+    assert np.max(np.abs(wc / m.cage_speed - 1.0)) < rc.DEFAULT_CAGE_BAND
+    assert r.rib_heat_left + r.rib_heat_right > 0

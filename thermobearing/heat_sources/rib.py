@@ -150,7 +150,8 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         details.update(pv_left=dyn.pv_left, pv_right=dyn.pv_right, slip_speed=dyn.slip_speed,
                        dynamic_heat=dynamic, heat_left=z * dyn.heat_left,
                        heat_right=z * dyn.heat_right, rib_slide_speed=dyn.rib_slide_speed,
-                       dynamics_cost_s=dyn.cost_s, dynamics_runs=dyn.runs)
+                       dynamics_cost_s=dyn.cost_s, dynamics_runs=dyn.runs,
+                       dynamics_traction_fallbacks=dyn.fallbacks)
     details["thrust_heat"] = float(np.sum(heat_thrust)) if model == "coupled" else 0.0
     total = float(np.sum(heat_thrust)) + dynamic
     share = ctx.option(name, "element_share", None)

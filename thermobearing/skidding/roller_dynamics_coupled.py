@@ -61,6 +61,13 @@ from .roller_dynamics import (
 from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
 
+#: band of the cage speed around the quasi-static one, as a fraction (simulate_coupled):
+#: evaluate-path runs stay within +11 % (20000 r/min, 420 K, 0.06 g: 886 -> <= 987 rad/s),
+#: +3 % at paper 003's base case; the table path's runaways reach +30 % and beyond
+DEFAULT_CAGE_BAND = 0.2
+#: table (re)builds after which the table path is given up (simulate_coupled)
+MAX_TABLE_BUILDS = 20
+
 #: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
 N_ROLLER_STATES = 8
 
@@ -319,12 +326,24 @@ def _indices() -> tuple[int, int, int, int, int]:
 _HLI, _CPI, _KCI, _ETAI, _FLI = _indices()
 
 
+class _TableCannotFollow(Exception):
+    """The table path's state left the cage band (or the table kept being left):
+    :func:`simulate_coupled` re-runs the reference path."""
+
+    def __init__(self, reason: str, state: dict[str, Any]) -> None:
+        super().__init__(reason)
+        self.reason = reason
+        self.state = state
+
+
 def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      n_orbits: float = 2.0, warmup_orbits: float = 2.0,
                      refresh: float = 20e-6, steps_per_period: int = 400,
                      samples_per_period: int = 100, phase_spread: bool = True,
                      traction: str = "table", table_options: dict[str, Any] | None = None,
-                     ring_axial: bool = False, cage_land: bool = False) -> RollerResponse:
+                     ring_axial: bool = False, cage_land: bool = False,
+                     cage_band: float | None = DEFAULT_CAGE_BAND,
+                     fallback: bool = True) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -350,7 +369,50 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     alpha' [rad/s], ``pocket_speed`` z' [m/s] (X, X' relative to the inner ring), and
     ``ring_axial``, the inner ring's axial position [m]. ``cost_s``: CPU seconds.
     ConvergenceError if the state becomes non-finite or a spin reverses.
+
+    ``cage_band`` [-]: the cage speed must stay within (1 +- cage_band) times the
+    quasi-static cage speed ``m.cage_speed`` (default :data:`DEFAULT_CAGE_BAND`; None: no
+    check). On the table path a cage outside the band, or a table left more than
+    :data:`MAX_TABLE_BUILDS` times, stops the run; with ``fallback`` (default) the whole run
+    is then repeated on the ``"evaluate"`` path (the reference) and the result says so:
+    ``series["traction_fallback"]`` = [1] (else [0]), ``series["fallback_cage_speed"]`` the
+    table path's cage speed [rad/s] and ``series["fallback_time"]`` its time [s] when it
+    stopped. Why (module notes, "Cage runaway"): the table's values and slopes agree with
+    ``evaluate`` to < 0.01 N and < 0.5 %, but runs on it enter a cage-overspeed runaway
+    that the evaluate path did not enter at the same states. On the evaluate path (or
+    without ``fallback``) a cage outside the band raises ConvergenceError "unstable
+    coupled motion" with the state (time, cage speed, the roller deepest in its ribs).
     """
+    kwargs = dict(n_orbits=n_orbits, warmup_orbits=warmup_orbits, refresh=refresh,
+                  steps_per_period=steps_per_period, samples_per_period=samples_per_period,
+                  phase_spread=phase_spread, table_options=table_options,
+                  ring_axial=ring_axial, cage_land=cage_land, cage_band=cage_band)
+    t0 = time.process_time()
+    try:
+        return _simulate_coupled_path(m, bearing, lubricant, traction=traction, **kwargs)
+    except _TableCannotFollow as stop:
+        if not fallback:
+            raise ConvergenceError(
+                "roller_dynamics.coupled", float(stop.state.get("cage_ratio", float("inf"))),
+                f"the table path stopped ({stop.reason}) and fallback=False",
+                stop.state) from None
+        resp = _simulate_coupled_path(m, bearing, lubricant, traction="evaluate", **kwargs)
+        series = dict(resp.series)
+        series["traction_fallback"] = np.array([1])
+        series["fallback_cage_speed"] = np.array([stop.state["cage_speed"]])
+        series["fallback_time"] = np.array([stop.state["t"]])
+        return replace(resp, series=series, cost_s=time.process_time() - t0)
+
+
+def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
+                           n_orbits: float, warmup_orbits: float, refresh: float,
+                           steps_per_period: int, samples_per_period: int,
+                           phase_spread: bool, traction: str,
+                           table_options: dict[str, Any] | None, ring_axial: bool,
+                           cage_land: bool, cage_band: float | None) -> RollerResponse:
+    """One run of :func:`simulate_coupled` on one traction path (arguments as there);
+    raises :class:`_TableCannotFollow` on the table path, ConvergenceError on the
+    evaluate path when the cage leaves ``cage_band``."""
     from .roller import build_model as race_model
     from .roller_dynamics_coupling import _race_eval_at, unbalance_orbital_force
     from .roller_fluid import martin_coefficients
@@ -473,13 +535,27 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             raise ConvergenceError("roller_dynamics.coupled", float("inf"),
                                    "state not finite or a roller spin reversed",
                                    {"t": t, "step": step})
+        wc_now = float(y[z_n * n + 1])
+        ratio = wc_now / m.cage_speed
+        if cage_band is not None and abs(ratio - 1.0) > cage_band:
+            state = _unstable_state(m, y, z_n, t, step, wc_now, traction)
+            if tab is not None:
+                raise _TableCannotFollow(f"cage speed {wc_now:.1f} rad/s outside "
+                                         f"1 +- {cage_band} x quasi-static", state)
+            raise ConvergenceError(
+                "roller_dynamics.coupled", abs(ratio - 1.0),
+                f"unstable coupled motion: the cage speed ran to {wc_now:.1f} rad/s, "
+                f"{ratio:.3f} x the quasi-static {m.cage_speed:.1f} rad/s (band 1 +- "
+                f"{cage_band}) on the evaluate (reference) traction path; roller "
+                f"{state['roller']} deepest in its ribs (|X| = {state['roller_axial']:.2e} m, "
+                f"pocket z = {state['roller_pocket']:.2e} m)", state)
         if status != 0:
-            if len(tables) > 20:
-                raise ConvergenceError("roller_dynamics.coupled", float(status),
-                                       "the state keeps leaving the traction table",
-                                       {"t": t, "step": step})
+            if len(tables) > MAX_TABLE_BUILDS:
+                raise _TableCannotFollow(
+                    f"the state left the traction table {len(tables)} times",
+                    _unstable_state(m, y, z_n, t, step, wc_now, traction))
             reasons.append(int(status))
-            tab = new_table(y[7::n][:z_n], float(y[z_n * n + 1]))
+            tab = new_table(y[7::n][:z_n], wc_now)
     traj = samples[:n_sampled].reshape(n_sampled, z_n, n)       # (time, Z, 8)
     tt = sample_t[:n_sampled]
     wc_t = sample_wc[:n_sampled]
@@ -503,8 +579,23 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "table_points": np.array([n_table]),
                                  "table_builds": np.array([len(tables)]),
                                  "table_rebuild_status": np.array(reasons, dtype=int),
-                                 "step": np.array([h]), "refresh_steps": np.array([sub])})
+                                 "step": np.array([h]), "refresh_steps": np.array([sub]),
+                                 "traction_fallback": np.array([0])})
 
 
-__all__ = ["N_ROLLER_STATES", "cage_inertia", "cage_land_coefficient", "inner_ring_mass",
-           "simulate_coupled"]
+def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: int,
+                    wc: float, traction: str) -> dict[str, Any]:
+    """State for the messages of :func:`simulate_coupled`: time [s], step, cage speed
+    [rad/s] and its ratio to the quasi-static one, the roller deepest in its ribs (largest
+    |X - X_ring|) with its X [m], pocket position z [m] and spin [rad/s], the mean spin."""
+    n = N_ROLLER_STATES
+    x = y[0:z_n * n:n] - y[z_n * n + 2]
+    j = int(np.argmax(np.abs(x)))
+    return {"t": float(t), "step": int(step), "traction": traction, "cage_speed": wc,
+            "cage_ratio": wc / m.cage_speed, "roller": j, "roller_axial": float(x[j]),
+            "roller_pocket": float(y[j * n + 4]), "roller_spin": float(y[j * n + 7]),
+            "mean_spin": float(np.mean(y[7:z_n * n:n]))}
+
+
+__all__ = ["DEFAULT_CAGE_BAND", "MAX_TABLE_BUILDS", "N_ROLLER_STATES", "cage_inertia",
+           "cage_land_coefficient", "inner_ring_mass", "simulate_coupled"]

@@ -78,6 +78,9 @@ class RibDynamicsHeat(NamedTuple):
     temperature : where it was evaluated (interpolated) [K].  cost_s : CPU time of the
         runs it needed [s] (0 if all were cached).  runs : dynamics runs it needed.
     model : "coupled" | "reduced".
+    fallbacks : coupled runs (of those this value rests on, cached ones included) whose
+        table path left the cage band and were re-run on the ``"evaluate"`` traction path
+        (:func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`).
     """
 
     heat_left: float
@@ -90,6 +93,7 @@ class RibDynamicsHeat(NamedTuple):
     cost_s: float
     runs: int
     model: str
+    fallbacks: int = 0
 
     @property
     def heat(self) -> float:
@@ -171,7 +175,9 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         s = resp.series
         v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
         slide = float(np.mean(np.abs(v)))
+        fallbacks = int(s.get("traction_fallback", np.zeros(1))[0])
     else:
+        fallbacks = 0
         m = build_model(bearing, lubricant, speed, radial_load, unbalance_mass,
                         temperature=temperature, rib_friction=friction_coefficient,
                         oil_fraction=oil_fraction)
@@ -179,7 +185,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         slide = float(np.mean(np.abs(rib_sliding_speed(geom, speed, m.cage_speed, m.spin))))
     out = RibDynamicsHeat(float(resp.rib_heat_left), float(resp.rib_heat_right),
                           float(resp.pv_left), float(resp.pv_right), float(resp.slip_speed),
-                          slide, float(temperature), time.process_time() - t0, 1, model)
+                          slide, float(temperature), time.process_time() - t0, 1, model,
+                          fallbacks)
     return out, resp
 
 
@@ -226,7 +233,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
     def mix(i: int) -> float:
         return float(sum(wt * v[i] for wt, v in values))
 
-    return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model)
+    return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model,
+                           sum(v.fallbacks for _, v in values))
 
 
 __all__ = ["CACHE_SIZE", "DEFAULT_TEMPERATURE_STEP", "MODELS", "RibDynamicsHeat",
