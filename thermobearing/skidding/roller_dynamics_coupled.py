@@ -37,6 +37,35 @@ Python-driven RK4 loop 7.6-11.8 s; slip 5.23 / 5.51 (table) vs 5.23 / 5.51 (eval
 5.27 / 5.64 m/s (previous loop), PV 1231 / 1281 vs 1210 / 1246 vs 1206 / 1272 MPa m/s: the
 differences are those of the chaotic impacting motion under floating-point-level changes
 (validation case SOURCE.md). Refresh convergence is checked in the tests. Units: SI.
+
+Cage runaway and the fallback (2026-11-22, sixth session, D3). The example scene
+``configs/scenes/crb_rib_example.toml`` with 0.06 g (paper 003's bearing as an NUP variant,
+20000 r/min, 3 kN, MIL-PRF-23699) stopped with "the state keeps leaving the traction table":
+at 420 K (the "elements" temperature its transient probed) the table path's cage ran from
+886 to > 1840 rad/s (21 table rebuilds, each adding two 2.5 % cage layers) while the spins
+stayed near 9500 rad/s; one roller (of 24) rattled axially between its ribs to |X| = 47 um
+(the others 18 um; axial clearance 30 um) and sat on its front bar 10-17 um deep, ~300 N of
+bar force pushing the cage. Not the table's accuracy: along an evaluate-path trajectory
+(1 + 1 orbits, 420 K, 2184 refreshes) the table differs from ``evaluate`` by <= 0.011 N in S
+and 0.013 N in F_d; values at cage speeds up to 1500 rad/s and the refresh slopes agree to
+< 1e-3 N and < 0.5 %; the raceways' net orbital force there is strongly restoring
+(sum F_d = -49 N at 1200 rad/s). Not the refresh interval (5 us: the same runaway), not the
+grid (spin 25 rad/s, 32 load nodes, 1.25 % cage layers: no runaway at 420 and 370 K,
+but an excursion to 1196 rad/s at 350 K). Not the step alone (800 steps per spin period: the cage
+reaches 1050 rad/s at the end of 5 orbits; 380: the same stop). The evaluate path at the
+same states stays in the band: 420 K cage 941-987 rad/s, 350 K 935-955, 410 K 948-983
+(rib heat 18.7-19.7 W per roller); the table path at 350 / 370 / 410 / 420 K ran to 1200 /
+1228 / (band) / 1840 rad/s (heat 75.7 / 33.2 W per roller where it finished). So the table
+path enters a cage-overspeed runaway of one rattling roller far more often than the
+evaluate path (here 4 of 13 table runs at 345-440 K; evaluate 0 of 3, D2's 0 of 5), although
+the two differ by < 0.01 N -- the motion is chaotic and the rattling is a basin the table's
+small differences reach; why the two paths' frequencies differ is not resolved. Handling:
+the cage speed must stay within 1 +- :data:`DEFAULT_CAGE_BAND` of the quasi-static one
+(checked at every table exit; the evaluate path's cage stayed within +11 %, paper 003's
+base case within +3 %); a table-path run leaving it is re-run whole on the evaluate path
+(~12-19 s CPU instead of ~2 s at 20000 r/min) and flagged (``series["traction_fallback"]``);
+an evaluate-path run leaving it raises ConvergenceError "unstable coupled motion" with the
+state (no silent result). Test: ``tests/unit/test_roller_dynamics_coupled.py``.
 """
 
 from __future__ import annotations
