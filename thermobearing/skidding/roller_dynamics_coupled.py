@@ -55,15 +55,24 @@ but an excursion to 1196 rad/s at 350 K). Not the step alone (800 steps per spin
 reaches 1050 rad/s at the end of 5 orbits; 380: the same stop). The evaluate path at the
 same states stays in the band: 420 K cage 941-987 rad/s, 350 K 935-955, 410 K 948-983
 (rib heat 18.7-19.7 W per roller); the table path at 350 / 370 / 410 / 420 K ran to 1200 /
-1228 / (band) / 1840 rad/s (heat 75.7 / 33.2 W per roller where it finished). So the table
-path enters a cage-overspeed runaway of one rattling roller far more often than the
-evaluate path (here 4 of 13 table runs at 345-440 K; evaluate 0 of 3, D2's 0 of 5), although
-the two differ by < 0.01 N -- the motion is chaotic and the rattling is a basin the table's
-small differences reach; why the two paths' frequencies differ is not resolved. Handling:
+1228 / (band) / 1840 rad/s (heat 75.7 / 33.2 W per roller where it finished): 4 of 13
+table runs at 345-440 K, 0 of 3 evaluate runs here (D2: 0 of 5) -- not a resolved
+difference (if both had the table's rate, 0 of 8 would happen with probability ~0.06).
+And the two paths are the same dynamics: with the table's values fed through the Python
+refresh of the evaluate path, the trajectory equals the in-kernel table path's exactly
+for 0.12 ms, to the last bits for 0.3 ms, and then decorrelates from the last-bit
+differences of the two refresh codes
+(420 K: spin difference 1e-10 rad/s at 1.2 ms, 2e-3 at 2.4 ms, 130 at 4.3 ms: an e-folding
+time of ~0.07 ms); that run did not enter the runaway within 21 ms, the kernel run did at
+15 ms. So the runaway is a regime of the model's chaotic impacting motion (not of the
+table), entered on some trajectories; whether it is physical (a roller can rattle between
+ribs with 3x the others' penetration and hold ~300 N on its bar) is not settled. Handling:
 the cage speed must stay within 1 +- :data:`DEFAULT_CAGE_BAND` of the quasi-static one
 (checked at every table exit; the evaluate path's cage stayed within +11 %, paper 003's
 base case within +3 %); a table-path run leaving it is re-run whole on the evaluate path
-(~12-19 s CPU instead of ~2 s at 20000 r/min) and flagged (``series["traction_fallback"]``);
+(~12-19 s CPU instead of ~2 s at 20000 r/min) and flagged (``series["traction_fallback"]``):
+the re-run follows another trajectory, so its statistics are those of a run that did not
+enter the runaway, and the flag says one was met;
 an evaluate-path run leaving it raises ConvergenceError "unstable coupled motion" with the
 state (no silent result). Test: ``tests/unit/test_roller_dynamics_coupled.py``.
 """
@@ -406,11 +415,13 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     is then repeated on the ``"evaluate"`` path (the reference) and the result says so:
     ``series["traction_fallback"]`` = [1] (else [0]), ``series["fallback_cage_speed"]`` the
     table path's cage speed [rad/s] and ``series["fallback_time"]`` its time [s] when it
-    stopped. Why (module notes, "Cage runaway"): the table's values and slopes agree with
-    ``evaluate`` to < 0.01 N and < 0.5 %, but runs on it enter a cage-overspeed runaway
-    that the evaluate path did not enter at the same states. On the evaluate path (or
-    without ``fallback``) a cage outside the band raises ConvergenceError "unstable
-    coupled motion" with the state (time, cage speed, the roller deepest in its ribs).
+    stopped. What this is (module notes, "Cage runaway"): a cage-overspeed runaway of the
+    motion itself (one roller rattling between its ribs), entered on some trajectories of
+    the chaotic motion; the re-run follows another trajectory (the paths decorrelate within
+    ~1 ms), so a fallback result is the statistics of a run that did not enter it, and the
+    flag says that a runaway was met. On the evaluate path (or without ``fallback``) a cage
+    outside the band raises ConvergenceError "unstable coupled motion" with the state
+    (time, cage speed, the roller deepest in its ribs).
     """
     kwargs = dict(n_orbits=n_orbits, warmup_orbits=warmup_orbits, refresh=refresh,
                   steps_per_period=steps_per_period, samples_per_period=samples_per_period,
@@ -423,7 +434,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         if not fallback:
             raise ConvergenceError(
                 "roller_dynamics.coupled", float(stop.state.get("cage_ratio", float("inf"))),
-                f"the table path stopped ({stop.reason}) and fallback=False",
+                f"unstable coupled motion on the table path ({stop.reason}; a cage runaway "
+                f"of the motion, module notes) and fallback=False",
                 stop.state) from None
         resp = _simulate_coupled_path(m, bearing, lubricant, traction="evaluate", **kwargs)
         series = dict(resp.series)
