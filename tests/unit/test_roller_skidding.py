@@ -10,7 +10,6 @@ import pytest
 
 from thermobearing.errors import ConvergenceError, InputError, UnknownNameError
 from thermobearing.geometry import load_bearing
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, evaluate, solve_model, solve_roller
 from thermobearing.skidding.roller_fluid import (
     ROLLER_DRAG,
@@ -25,16 +24,6 @@ from thermobearing.skidding.whirl import Whirl
 
 OMEGA = 5000.0 * math.pi / 30.0  # paper 000: n_i = 5000 r/min
 T = 313.15
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 @pytest.fixture(scope="module")

@@ -9,8 +9,6 @@ import numpy as np
 import pytest
 
 from thermobearing.errors import InputError
-from thermobearing.geometry import load_bearing
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, solve_model, solve_roller
 from thermobearing.skidding.roller_fluid import (
     martin_coefficients,
@@ -79,16 +77,6 @@ def test_friction_is_even_and_smooth_in_the_normal_force():
     one = pocket_forces(z, np.full(3, W), D, L, ETA, C, smoothing=1e-9).friction
     assert abs(two[2] - two[1]) < 1e-3 * abs(one[2] - one[1])
     assert (one[2] - one[1]) > 0.0 and (one[0] - one[1]) > 0.0
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 def test_unknown_pocket_film_is_an_error(nu214, oil):

@@ -9,10 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from thermobearing.geometry import load_bearing
 from thermobearing.hertz import line_contact_stiffness
 from thermobearing.loads_roller import roller_film_load_distribution
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, solve_model
 from thermobearing.skidding.roller_fluid import (
     closed_form_contact_forces,
@@ -23,16 +21,6 @@ from thermobearing.skidding.roller_fluid import (
 OMEGA = 5000.0 * math.pi / 30.0  # paper 000: n_i = 5000 r/min
 T = 313.15
 L = 0.013  # NU214 roller length (paper 000 Table 1) [m]
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 def test_starved_film_is_the_film_of_the_contact_forces(nu214, oil):

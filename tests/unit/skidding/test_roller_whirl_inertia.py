@@ -9,8 +9,6 @@ import numpy as np
 import pytest
 
 from thermobearing.errors import InputError
-from thermobearing.geometry import load_bearing
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, solve_model, solve_roller
 from thermobearing.skidding.whirl import Whirl
 
@@ -18,16 +16,6 @@ OMEGA = 5000.0 * math.pi / 30.0  # paper 000: n_i = 5000 r/min
 T = 313.15
 OPTS = dict(viscosity=0.08, limiting_shear_coefficient=1.0, ring_support="films",
             film_pressure="regime_min", pocket_film="two_faces")
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 def test_unknown_radial_inertia_is_an_error():
