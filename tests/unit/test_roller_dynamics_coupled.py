@@ -61,13 +61,17 @@ def test_coupled_run_without_unbalance():
 @pytest.mark.slow
 def test_coupled_refresh_convergence():
     # the traction linearisation refreshed every 20 us vs 10 us: slip and PV agree
-    # (measured with the evaluate path, session 2: 5.530 vs 5.533 m/s, PV 1264 vs
-    # 1243 MPa m/s at the base case, 0.11 g; runs the default table path since session 3)
+    # (evaluate path, base case, 0.11 g; measured session 6: slip 5.619 vs 5.604 m/s, PV
+    # 1263 vs 1255 MPa m/s). On the table path a different refresh is a different trajectory
+    # of the chaotic impacting motion, whose one-orbit slip scatters by about +-1.5 % (paper003
+    # SOURCE.md; measured 5.60 vs 5.44 m/s there), so the refresh itself is checked on the
+    # evaluate path; the table path against the evaluate path: test_table_path_reproduces_...
     b = load_bearing("CRB_50x75x16")
     lub = load_lubricant("MIL_PRF_23699")
     m = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3)
-    r1 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5)
-    r2 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5, refresh=10e-6)
+    r1 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5, traction="evaluate")
+    r2 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5, refresh=10e-6,
+                             traction="evaluate")
     assert r2.slip_speed == pytest.approx(r1.slip_speed, rel=0.02)
     assert r2.pv_left + r2.pv_right == pytest.approx(r1.pv_left + r1.pv_right, rel=0.1)
 
