@@ -78,69 +78,11 @@ def _block_step(Ainv: np.ndarray, Ainv_B: np.ndarray, C: np.ndarray, Sinv: np.nd
 
 
 @numba.njit(cache=True)
-def _factor_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
-                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
-    """Factors of the block elimination (compiled): A_z^-1 (Z, 6, 6) by Gauss-Jordan with
-    partial pivoting, A_z^-1 B_z (Z, 6, 3) and the Schur complement S = D - sum_z C_z A_z^-1 B_z
-    (3, 3). Returns (Ainv, Ainv_B, S, ok); ok is False when a ball block is singular (a zero
-    or non-finite pivot)."""
-    nz, nb, ng = A.shape[0], A.shape[1], B.shape[2]
-    Ainv = np.empty((nz, nb, nb))
-    AiB = np.empty((nz, nb, ng))
-    S = Dg.copy()
-    w = np.empty((nb, 2 * nb))
-    for z in range(nz):
-        for i in range(nb):
-            for j in range(nb):
-                w[i, j] = A[z, i, j]
-                w[i, nb + j] = 1.0 if i == j else 0.0
-        for col in range(nb):
-            piv = col
-            best = abs(w[col, col])
-            for r in range(col + 1, nb):
-                if abs(w[r, col]) > best:
-                    best = abs(w[r, col])
-                    piv = r
-            if not (best > 0.0 and math.isfinite(best)):
-                return Ainv, AiB, S, False
-            if piv != col:
-                for j in range(2 * nb):
-                    t = w[col, j]
-                    w[col, j] = w[piv, j]
-                    w[piv, j] = t
-            inv_p = 1.0 / w[col, col]
-            for j in range(2 * nb):
-                w[col, j] *= inv_p
-            for r in range(nb):
-                if r != col:
-                    f = w[r, col]
-                    if f != 0.0:
-                        for j in range(2 * nb):
-                            w[r, j] -= f * w[col, j]
-        for i in range(nb):
-            for j in range(nb):
-                Ainv[z, i, j] = w[i, nb + j]
-        for i in range(nb):
-            for g in range(ng):
-                acc = 0.0
-                for j in range(nb):
-                    acc += Ainv[z, i, j] * B[z, j, g]
-                AiB[z, i, g] = acc
-        for g in range(ng):
-            for h in range(ng):
-                acc = 0.0
-                for i in range(nb):
-                    acc += C[z, g, i] * AiB[z, i, h]
-                S[g, h] -= acc
-    return Ainv, AiB, S, True
-
-
-@numba.njit(cache=True)
 def _inverse_small(M: np.ndarray) -> tuple[np.ndarray, bool]:
-    """Inverse of a small square matrix (the 3x3 Schur complement) by Gauss-Jordan with
-    partial pivoting, compiled (numpy's inv costs ~15 us of Python per call). Returns
-    (M^-1, ok); ok is False for a zero or non-finite pivot (the caller then falls back to
-    numpy's inv / pinv)."""
+    """Inverse of a small square matrix (a 6x6 ball block, the 3x3 Schur complement) by
+    Gauss-Jordan with partial pivoting, compiled (numpy's inv costs ~15 us of Python per
+    call). Returns (M^-1, ok); ok is False for a zero or non-finite pivot (the caller then
+    falls back to numpy's inv / pinv, or reports the singular ball block)."""
     n = M.shape[0]
     w = np.empty((n, 2 * n))
     for i in range(n):
@@ -175,6 +117,37 @@ def _inverse_small(M: np.ndarray) -> tuple[np.ndarray, bool]:
         for j in range(n):
             out[i, j] = w[i, n + j]
     return out, True
+
+
+@numba.njit(cache=True)
+def _factor_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """Factors of the block elimination (compiled): A_z^-1 (Z, 6, 6) by Gauss-Jordan with
+    partial pivoting (:func:`_inverse_small`), A_z^-1 B_z (Z, 6, 3) and the Schur complement
+    S = D - sum_z C_z A_z^-1 B_z (3, 3). Returns (Ainv, Ainv_B, S, ok); ok is False when a
+    ball block is singular (a zero or non-finite pivot)."""
+    nz, nb, ng = A.shape[0], A.shape[1], B.shape[2]
+    Ainv = np.empty((nz, nb, nb))
+    AiB = np.empty((nz, nb, ng))
+    S = Dg.copy()
+    for z in range(nz):
+        inv, ok = _inverse_small(A[z])
+        if not ok:
+            return Ainv, AiB, S, False
+        Ainv[z] = inv
+        for i in range(nb):
+            for g in range(ng):
+                acc = 0.0
+                for j in range(nb):
+                    acc += Ainv[z, i, j] * B[z, j, g]
+                AiB[z, i, g] = acc
+        for g in range(ng):
+            for h in range(ng):
+                acc = 0.0
+                for i in range(nb):
+                    acc += C[z, g, i] * AiB[z, i, h]
+                S[g, h] -= acc
+    return Ainv, AiB, S, True
 
 
 @numba.njit(cache=True)
