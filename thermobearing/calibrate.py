@@ -56,7 +56,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import ConvergenceError, InputError
-from .scene import Scene, dumps_toml
+from .scene import Scene, check_measured_file, dumps_toml
 from .sweep import DISPLAY_UNITS, assign_path, check_path, get_path
 from .units import from_si, to_si, unit_registry
 
@@ -422,6 +422,7 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
         if node not in nodes:
             raise InputError(f"measured.columns[{col!r}]", node,
                              "a node of the scene's network: " + ", ".join(nodes))
+    check_measured_file(scene)  # text cells, times going backwards: named InputErrors
     df = read_measured(scene)
     for col in ["time [s]", *scene.measured.columns]:
         vals = df[col].to_numpy(dtype=float)

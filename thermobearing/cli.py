@@ -56,6 +56,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ThermobearingError as exc:
         print(f"thermobearing {args.command}: error: {exc}", file=sys.stderr)
         return 1
+    except OSError as exc:  # a path the user gave: missing, not a folder, not writable ...
+        where = f": {exc.filename}" if exc.filename else ""
+        print(f"thermobearing {args.command}: error: {exc.strerror or exc}{where}",
+              file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print(f"thermobearing {args.command}: interrupted", file=sys.stderr)
         return 130

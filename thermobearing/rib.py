@@ -76,13 +76,13 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from typing import Any, NamedTuple
 
 import numpy as np
 from numba import njit
 
-from .errors import InputError, check_positive, check_range
+from .errors import InputError, UnknownNameError, check_positive, check_range
 from .hertz import point_contact, point_contact_stiffness
 
 #: end-face shapes: the paper's sphere (eqs. 1, 11) or the sphere cap with a chamfer blend
@@ -265,7 +265,8 @@ def rib_geometry(bearing: Any, **overrides: Any) -> RibGeometry:
     if getattr(bearing, "kind", None) != "cylindrical":
         raise InputError("bearing", getattr(bearing, "name", bearing),
                          "a cylindrical RollerBearing")
-    fields = {
+    _check_override_names("rib", overrides)
+    values = {
         "roller_diameter": bearing.roller_diameter,
         "roller_length": bearing.roller_length,
         "crown_radius": bearing.end_face_crown_radius,
@@ -276,17 +277,26 @@ def rib_geometry(bearing: Any, **overrides: Any) -> RibGeometry:
         "effective_modulus": bearing.effective_modulus,
         "pitch_diameter": bearing.pitch_diameter,
     }
-    fields.update(overrides)
+    values.update(overrides)
     for key in ("crown_radius", "rib_height"):
-        if fields[key] is None:
+        if values[key] is None:
             name = "end_face_crown_radius" if key == "crown_radius" else key
             raise InputError(f"bearing.{name}", None, "a value (needed by the rib contact)")
     return RibGeometry(**{k: (v if k in ("end_face", "slide") else float(v))
-                          for k, v in fields.items()})
+                          for k, v in values.items()})
+
+
+def _check_override_names(field: str, overrides: dict[str, Any]) -> None:
+    """UnknownNameError (listing the RibGeometry fields) for an override that is not one."""
+    known = [f.name for f in fields(RibGeometry)]
+    for key in overrides:
+        if key not in known:
+            raise UnknownNameError(f"{field}.{key}", key, known)
 
 
 def with_changes(geom: RibGeometry, **changes: Any) -> RibGeometry:
     """A copy of ``geom`` with fields changed (re-validated)."""
+    _check_override_names("rib", changes)
     return replace(geom, **changes)
 
 

@@ -93,6 +93,21 @@ def _check_keys(section: str, data: Mapping[str, Any], allowed: Sequence[str]) -
             raise InputError(f"{section}.{key}", data[key], "a known key: " + ", ".join(allowed))
 
 
+def _table(field_name: str, value: Any) -> Mapping[str, Any]:
+    """``value`` if it is a TOML table, else InputError naming the field."""
+    if not isinstance(value, Mapping):
+        raise InputError(field_name, value, "a table (key = value pairs)")
+    return value
+
+
+def _quantity(raw: Any, kind: str, field: str) -> float:
+    """``to_si`` that also refuses NaN / inf (a bare ``nan`` is a float TOML allows)."""
+    value = to_si(raw, kind, field=field)
+    if not math.isfinite(value):
+        raise InputError(field, raw, "a finite number with a unit")
+    return value
+
+
 def _require(section: str, data: Mapping[str, Any], key: str) -> Any:
     if key not in data:
         raise InputError(f"{section}.{key}", None, "a value (this key is required)")
@@ -156,19 +171,19 @@ class Supply:
         method = data.get("method", "jet")
         if method not in SUPPLY_METHODS:
             raise UnknownNameError("supply.method", method, SUPPLY_METHODS)
-        flow = to_si(data.get("flow", 0.0), "volume_flow", field="supply.flow")
+        flow = _quantity(data.get("flow", 0.0), "volume_flow", "supply.flow")
         if flow < 0 or (flow == 0 and method not in ("oil_bath", "grease")):
             raise InputError(
                 "supply.flow", data.get("flow"),
                 "a flow > 0 (zero only for an oil bath or grease)",
             )
-        t_in = to_si(data.get("inlet_temperature", ambient), "temperature",
+        t_in = _quantity(data.get("inlet_temperature", ambient), "temperature",
                      field="supply.inlet_temperature")
         if t_in <= 0:
             raise InputError("supply.inlet_temperature", data.get("inlet_temperature"),
                              "a temperature above absolute zero")
         level = data.get("level")
-        level_si = None if level is None else to_si(level, "length", field="supply.level")
+        level_si = None if level is None else _quantity(level, "length", "supply.level")
         if method == "oil_bath" and level_si is None:
             raise InputError("supply.level", None, "an oil level for an oil bath")
         return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si)
@@ -194,13 +209,14 @@ class Environment:
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Environment:
         _check_keys("environment", data, ("ambient_temperature", "initial_temperature"))
-        amb = to_si(data.get("ambient_temperature", "35 degC"), "temperature",
+        amb = _quantity(data.get("ambient_temperature", "35 degC"), "temperature",
                     field="environment.ambient_temperature")
-        ini = to_si(data.get("initial_temperature", amb), "temperature",
+        ini = _quantity(data.get("initial_temperature", amb), "temperature",
                     field="environment.initial_temperature")
         for name, v in (("ambient_temperature", amb), ("initial_temperature", ini)):
             if v <= 0:
-                raise InputError(f"environment.{name}", v, "a temperature above absolute zero")
+                raise InputError(f"environment.{name}", data.get(name, v),
+                                 "a temperature above absolute zero (0 K = -273.15 degC)")
         return cls(ambient_temperature=amb, initial_temperature=ini)
 
     def to_dict(self) -> dict[str, Any]:
@@ -230,7 +246,7 @@ def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: 
     _check_keys(where, values, _STEP_KEYS)
     out = dict(defaults)
     for key, raw in values.items():
-        out[key] = to_si(raw, _STEP_KINDS[key], field=f"{where}.{key}")
+        out[key] = _quantity(raw, _STEP_KINDS[key], f"{where}.{key}")
     for key in _STEP_KEYS:
         if key not in out:
             raise InputError(f"{where}.{key}", None, "a value (no default given in [schedule])")
@@ -282,10 +298,10 @@ class Schedule:
         for key, kind_key in (("speed", "speed"), ("radial_load", "radial_load"),
                               ("axial_load", "axial_load")):
             if key in data:
-                defaults[key] = to_si(data[key], _STEP_KINDS[kind_key], field=f"schedule.{key}")
+                defaults[key] = _quantity(data[key], _STEP_KINDS[kind_key], f"schedule.{key}")
         dur_key = "step_duration" if "step_duration" in data else "duration"
         if dur_key in data:
-            defaults["duration"] = to_si(data[dur_key], "time", field=f"schedule.{dur_key}")
+            defaults["duration"] = _quantity(data[dur_key], "time", f"schedule.{dur_key}")
         forms = [k for k in ("axial_load_steps", "steps", "file") if k in data]
         if len(forms) > 1:
             raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
@@ -295,13 +311,13 @@ class Schedule:
                 defaults["duration"] = 3600.0
             steps.append(_make_step({}, defaults, "schedule"))
         elif forms[0] == "axial_load_steps":
-            sweep = data["axial_load_steps"]
+            sweep = _table("schedule.axial_load_steps", data["axial_load_steps"])
             _check_keys("schedule.axial_load_steps", sweep, ("start", "stop", "step"))
-            a0 = to_si(_require("schedule.axial_load_steps", sweep, "start"), "force",
+            a0 = _quantity(_require("schedule.axial_load_steps", sweep, "start"), "force",
                        field="schedule.axial_load_steps.start")
-            a1 = to_si(_require("schedule.axial_load_steps", sweep, "stop"), "force",
+            a1 = _quantity(_require("schedule.axial_load_steps", sweep, "stop"), "force",
                        field="schedule.axial_load_steps.stop")
-            da = to_si(_require("schedule.axial_load_steps", sweep, "step"), "force",
+            da = _quantity(_require("schedule.axial_load_steps", sweep, "step"), "force",
                        field="schedule.axial_load_steps.step")
             if da <= 0 or a1 < a0:
                 raise InputError("schedule.axial_load_steps", dict(sweep),
@@ -311,8 +327,13 @@ class Schedule:
                 steps.append(_make_step({}, {**defaults, "axial_load": a0 + i * da},
                                         f"schedule.axial_load_steps[{i}]"))
         elif forms[0] == "steps":
-            for i, item in enumerate(data["steps"]):
-                steps.append(_make_step(item, defaults, f"schedule.steps[{i}]"))
+            items = data["steps"]
+            if not isinstance(items, list):
+                raise InputError("schedule.steps", items,
+                                 "an array of tables, e.g. [{ duration = \"3 min\" }, ...]")
+            for i, item in enumerate(items):
+                where = f"schedule.steps[{i}]"
+                steps.append(_make_step(_table(where, item), defaults, where))
         else:
             steps.extend(_read_schedule_file(data["file"], defaults, base_dir))
         if not steps:
@@ -397,16 +418,24 @@ class Solver:
         _check_keys("solver", data, names)
         kw: dict[str, Any] = {}
         if "stepper" in data:
-            kw["stepper"] = str(data["stepper"])
-        for key in ("rtol", "atol", "kinematics_tolerance"):
+            if not isinstance(data["stepper"], str):
+                raise InputError("solver.stepper", data["stepper"], "a stepper name (a string)")
+            kw["stepper"] = data["stepper"]
+        limits = {"rtol": ("a relative tolerance in (0, 1)", 1.0),
+                  "atol": ("an absolute tolerance > 0 (K)", math.inf),
+                  "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0)}
+        for key, (allowed, high) in limits.items():
             if key in data:
-                v = float(data[key])
-                if not v > 0:
-                    raise InputError(f"solver.{key}", data[key], "a value > 0")
+                raw = data[key]
+                if isinstance(raw, bool) or not isinstance(raw, int | float):
+                    raise InputError(f"solver.{key}", raw, "a number: " + allowed)
+                v = float(raw)
+                if not (math.isfinite(v) and 0.0 < v < high):
+                    raise InputError(f"solver.{key}", raw, allowed)
                 kw[key] = v
         for key in ("max_step", "chunk"):
             if key in data:
-                kw[key] = to_si(data[key], "time", field=f"solver.{key}")
+                kw[key] = _quantity(data[key], "time", f"solver.{key}")
                 if kw[key] <= 0:
                     raise InputError(f"solver.{key}", data[key], "a time > 0")
         return cls(**kw)
@@ -430,7 +459,11 @@ class Outputs:
         mode = data.get("mode", "transient")
         if mode not in OUTPUT_MODES:
             raise UnknownNameError("outputs.mode", mode, OUTPUT_MODES)
-        want = tuple(data.get("want", cls.want))
+        raw_want = data.get("want", cls.want)
+        if isinstance(raw_want, str) or not isinstance(raw_want, list | tuple):
+            raise InputError("outputs.want", raw_want,
+                             "an array of output names, e.g. [\"temperatures\", \"losses\"]")
+        want = tuple(raw_want)
         for w in want:
             if w not in OUTPUT_KINDS:
                 raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
@@ -469,16 +502,25 @@ class Scene:
         raw_bearings = _require("scene", data, "bearings")
         if isinstance(raw_bearings, Mapping):
             raw_bearings = [raw_bearings]
-        bearings = tuple(BearingSpec.from_dict(b, i) for i, b in enumerate(raw_bearings))
+        if not isinstance(raw_bearings, list) or not raw_bearings:
+            raise InputError("bearings", raw_bearings,
+                             "one or more [[bearings]] tables (name, preset or path)")
+        bearings = tuple(BearingSpec.from_dict(_table(f"bearings[{i}]", b), i)
+                         for i, b in enumerate(raw_bearings))
         names = [b.name for b in bearings]
         if len(set(names)) != len(names):
             raise InputError("bearings[].name", names, "unique names")
-        lub = dict(_require("scene", data, "lubricant"))
+        lub = dict(_table("lubricant", _require("scene", data, "lubricant")))
         _check_keys("lubricant", lub, ("preset", "path"))
         if ("preset" in lub) == ("path" in lub):
             raise InputError("lubricant", lub, "exactly one of 'preset' or 'path'")
+        for name in ("supply", "environment", "schedule", "models", "network", "solver",
+                     "outputs", "measured"):
+            if name in data:
+                _table(name, data[name])
         env = Environment.from_dict(data.get("environment", {}))
-        return cls(
+        network = dict(data.get("network", {}))
+        scene = cls(
             title=title,
             source=str(data.get("source", "")),
             bearings=bearings,
@@ -487,12 +529,17 @@ class Scene:
             environment=env,
             schedule=Schedule.from_dict(_require("scene", data, "schedule"), base_dir),
             models=dict(data.get("models", {})),
-            network=dict(data.get("network", {})),
+            network=network,
             solver=Solver.from_dict(data.get("solver", {})),
             outputs=Outputs.from_dict(data.get("outputs", {})),
             measured=Measured.from_dict(data["measured"]) if "measured" in data else None,
             base_dir=str(base_dir) if base_dir is not None else None,
         )
+        # names, keys and units of [network] now; the template's required parameters only
+        # when the scene is run (check_network(..., require=True) in `run` / `check`), so
+        # a scene that never builds its network still loads
+        check_network(network, require=False)
+        return scene
 
     def to_dict(self) -> dict[str, Any]:
         """The resolved scene as a TOML-ready dict (SI floats back to unit strings); a deep
@@ -532,6 +579,97 @@ class Scene:
         if not p.is_absolute() and self.base_dir:
             p = Path(self.base_dir) / p
         return p
+
+
+def check_measured_file(scene: Scene) -> None:
+    """Validate the data of the scene's ``[measured]`` CSV before a run or a fit reads it.
+
+    The file must exist; the time column and every mapped column must be in it; every
+    non-empty cell of those columns must be a number (empty cells are gaps, allowed here:
+    calibration refuses them itself); times must be finite and strictly increasing. The
+    error names the column, the row (1 = first data row) and the value.
+    """
+    import pandas as pd
+
+    m = scene.measured
+    if m is None:
+        return
+    path = scene.resolve_path(m.file)
+    if not path.is_file():
+        raise InputError("measured.file", m.file, f"an existing CSV file (looked at {path})")
+    try:
+        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
+        raise InputError("measured.file", m.file, f"a readable CSV file ({exc})") from None
+    if m.time_column not in df:
+        raise InputError("measured.time_column", m.time_column,
+                         "a column of the file: " + ", ".join(map(str, df.columns)))
+    for col in m.columns:
+        if col not in df:
+            raise InputError(f"measured.columns[{col!r}]", col,
+                             "a column of the file: " + ", ".join(map(str, df.columns)))
+    for col in [m.time_column, *m.columns]:
+        text = df[col].str.strip()
+        values = pd.to_numeric(text, errors="coerce")
+        bad = (values.isna() & (text != "")) | (text.str.lower().isin(("nan", "inf", "-inf")))
+        if col == m.time_column:
+            bad = bad | (text == "")
+        if bad.any():
+            row = int(bad.to_numpy().nonzero()[0][0])
+            raise InputError(f"measured column {col!r}", f"row {row + 1}: {df[col].iloc[row]!r}",
+                             "a number in every row" if col == m.time_column
+                             else "numbers (an empty cell is a gap)")
+    t = pd.to_numeric(df[m.time_column].str.strip()).to_numpy(dtype=float)
+    steps = t[1:] - t[:-1]
+    if steps.size and not (steps > 0).all():
+        row = int((steps <= 0).nonzero()[0][0]) + 1
+        raise InputError(f"measured column {m.time_column!r}",
+                         f"row {row + 1}: {t[row]:g} after {t[row - 1]:g}",
+                         "strictly increasing times")
+
+
+def check_network(network: Mapping[str, Any], require: bool = True) -> None:
+    """Validate a scene's ``[network]`` table before anything runs.
+
+    Keys ``template`` and ``parameters`` only; the template must be registered; every
+    parameter must be one the template documents, in a unit of the documented dimension;
+    with ``require``, the parameters the template requires (keyword-only without a default)
+    must be given (call it so before a run that builds the network).
+    Ambient, oil inlet temperature and oil flow come from ``[environment]`` / ``[supply]``.
+    """
+    import inspect
+
+    from .network.templates import TEMPLATES
+
+    _check_keys("network", network, ("template", "parameters"))
+    name = network.get("template", "four_node_paper002")
+    if not isinstance(name, str):
+        raise InputError("network.template", name, "a template name (a string)")
+    if name not in TEMPLATES:
+        raise UnknownNameError("network.template", name, TEMPLATES.names())
+    entry = TEMPLATES.entry(name)
+    params = _table("network.parameters", network.get("parameters", {}))
+    from_scene = ("ambient_temperature", "oil_inlet_temperature", "oil_flow")
+    for key, value in params.items():
+        if key in from_scene:
+            raise InputError(f"network.parameters.{key}", value,
+                             "set in [environment] / [supply], not in the network")
+        unit = entry.parameters.get(key)
+        if unit is None:
+            raise InputError(f"network.parameters.{key}", value,
+                             f"a parameter of template {name!r}: "
+                             + ", ".join(k for k in sorted(entry.parameters)
+                                         if k not in from_scene))
+        if unit == "-" and isinstance(value, str):
+            continue  # a dimensionless option given by name (a material, a model ...)
+        _quantity(value, unit if unit != "-" else "dimensionless", f"network.parameters.{key}")
+    required = [p.name for p in inspect.signature(entry.obj).parameters.values()
+                if p.kind is inspect.Parameter.KEYWORD_ONLY and p.default is inspect.Parameter.empty
+                and p.name not in from_scene and p.name not in params]
+    if required and require:
+        raise InputError("network.parameters", dict(params),
+                         f"values for the parameters template {name!r} requires: "
+                         + ", ".join(required))
 
 
 # ---------------------------------------------------------------------------

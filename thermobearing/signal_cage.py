@@ -197,6 +197,9 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         raise InputError("signal.duration", duration,
                          f"at least {3 / f_lo:.3g} s (3 cage revolutions at the lowest "
                          "cage frequency searched, so that its line clears the DC bins)")
+    if band is not None and not (len(band) == 2 and all(math.isfinite(float(v)) for v in band)
+                                 and band[0] < band[1]):
+        raise InputError("band", band, "(low, high) in Hz with low < high")
     if band is not None and (band[1] > nyq or band[0] < 0):
         raise InputError("band", band, f"a band within [0, {nyq:g}] Hz (Nyquist)")
     if band is not None and band[1] - band[0] < f_top:

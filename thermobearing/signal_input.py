@@ -87,6 +87,7 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
         raise InputError("file", str(p), "an existing .npy, .npz or .csv file")
     suffix = p.suffix.lower()
     file_rate: float | None = None
+    no_rate = "the file carries no time column"
     if suffix == ".npy":
         data = np.load(p, allow_pickle=False)
     elif suffix == ".npz":
@@ -98,7 +99,8 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
             rk = next((k for k in ("sampling_rate", "fs") if k in z), None)
             file_rate = float(z[rk]) if rk else None
     elif suffix in (".csv", ".txt"):
-        data, file_rate = _read_csv(p, column)
+        data, file_rate, why = _read_csv(p, column)
+        no_rate = why or no_rate
     else:
         raise InputError("file", str(p), "a .npy, .npz or .csv file")
     if file_rate is not None and sampling_rate is not None:
@@ -107,14 +109,15 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
                              f"the rate of the file ({file_rate:g} Hz) or none")
     rate = sampling_rate if sampling_rate is not None else file_rate
     if rate is None:
-        raise InputError("sampling_rate", None,
-                         "a sampling rate in Hz (the file carries no time column)")
+        raise InputError("sampling_rate", None, f"a sampling rate in Hz ({no_rate})")
     arr = check_signal(np.ravel(data) if np.ndim(data) == 2 and 1 in np.shape(data) else data,
                        float(rate), field=p.name)
     return AccelerationRecord(arr, float(rate), str(p))
 
 
-def _read_csv(p: Path, column: int | str | None) -> tuple[np.ndarray, float | None]:
+def _read_csv(p: Path, column: int | str | None
+              ) -> tuple[np.ndarray, float | None, str | None]:
+    """Samples, the rate from a time column (or None) and why there is no rate (or None)."""
     with p.open(newline="", encoding="utf-8") as fh:
         rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
     if not rows:
@@ -145,9 +148,14 @@ def _read_csv(p: Path, column: int | str | None) -> tuple[np.ndarray, float | No
     else:
         samples = table[:, 0] if ncol == 1 else table[:, 1]
     rate = None
+    why = None
     if ncol >= 2 and (column is None or column != 0):
         t = table[:, 0]
         dt = np.diff(t)
+        if dt.size and not np.all(dt > 0):
+            k = int(np.argmax(~(dt > 0)))
+            why = (f"the first column is no time column: it does not increase at data row "
+                   f"{k + 2} ({t[k + 1]:g} after {t[k]:g})")
         if dt.size and np.all(dt > 0):
             # rate from the span (robust to the print precision of the time column); steps
             # that deviate by more than half a step mean missing or irregular samples
@@ -156,4 +164,4 @@ def _read_csv(p: Path, column: int | str | None) -> tuple[np.ndarray, float | No
                 raise InputError("file time column", "non-uniform time steps",
                                  "uniform sampling (no gaps)")
             rate = 1.0 / mean_dt
-    return samples, rate
+    return samples, rate, why

@@ -59,8 +59,10 @@ class SchedulerUnreachable(ThermobearingError):
 
 # ---------------------------------------------------------------------------
 def _split_unit(text: str) -> tuple[str, str]:
-    m = re.match(r"^\s*([-+0-9.eE:, ]+?)\s*([A-Za-z/*^0-9 _]*[A-Za-z][A-Za-z/*^0-9 _]*)?\s*$",
-                 text)
+    """``"15,33 L/min"`` -> ``("15,33", "L/min")``: the numbers (ending in a digit or a dot),
+    then the unit (whatever follows, starting with a letter). Text that does not start with
+    numbers comes back whole with no unit."""
+    m = re.match(r"^\s*([-+0-9.eE:,\s]*[0-9.])\s*([A-Za-z].*?)?\s*$", text)
     if not m:
         return text, ""
     return m.group(1), (m.group(2) or "").strip()
@@ -261,7 +263,9 @@ def _dask_client(scheduler: str):
         return Client(scheduler, timeout="5s", set_as_default=False)
     except (OSError, TimeoutError) as exc:
         raise SchedulerUnreachable(
-            f"cannot reach the dask scheduler at {scheduler!r}: {exc}"
+            f"cannot reach the dask scheduler at {scheduler!r}: {exc}; start it (dask "
+            "scheduler) or give its right address, or ask for a local run instead "
+            "(--fallback-local, fallback_local=True)"
         ) from None
 
 
@@ -292,6 +296,10 @@ def run_sweep(
     """
     from tqdm.auto import tqdm
 
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
+                                or workers < 1):
+        raise InputError("workers", workers, "a whole number of local processes >= 1 "
+                         "(1 = serial in this process; default: one per CPU)")
     if runner is None:
         from .simulation import summarize_scene as runner
     out = Path(out_dir)
@@ -334,10 +342,15 @@ def run_sweep(
             else:
                 with ProcessPoolExecutor(max_workers=workers) as pool:
                     futs = {pool.submit(runner, c.scene_toml): c for c in todo}
-                    for fut in as_completed(futs):
-                        _append(out, _record(futs[fut], fut.result()))
-                        _write_summary(out, cases)
-                        bar.update(1)
+                    try:
+                        for fut in as_completed(futs):
+                            _append(out, _record(futs[fut], fut.result()))
+                            _write_summary(out, cases)
+                            bar.update(1)
+                    except KeyboardInterrupt:
+                        # leaving the with-block would wait for every queued case: drop them
+                        pool.shutdown(wait=False, cancel_futures=True)
+                        raise
     finally:
         bar.close()
     return _write_summary(out, cases)

@@ -16,9 +16,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
+    from ._preflight import preflight
 
     scene = load_scene(args.scene)
     sim = Simulation(scene, progress=False)
+    preflight(sim)
     print(f"scene: {scene.title}")
     print(f"schedule: {len(scene.schedule.steps)} steps, {scene.schedule.duration / 60:g} min")
     print(sim.describe_chain(with_citations=True))

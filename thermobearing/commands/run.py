@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 
 from ..scene import load_scene
+from ._preflight import preflight
 
 NAME = "run"
 HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and write results"
@@ -33,6 +34,7 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.out) if args.out else Path("results") / name
     progress = None if not args.quiet else False
     sim = Simulation(scene, progress=progress)
+    preflight(sim, build=False)  # run_coupled checks the node map when it builds the network
     if not args.quiet:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())

@@ -9,10 +9,11 @@ to ``DIR/cases.jsonl`` at once; rerunning the same command skips finished cases.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from ..scene import load_scene
-from ..sweep import parse_set, run_sweep
+from ..sweep import finished_cases, parse_set, run_sweep
 
 NAME = "sweep"
 HELP = "sweep scene parameters (cartesian product), locally or on dask, resumable"
@@ -36,9 +37,16 @@ def run(args: argparse.Namespace) -> int:
     d = scene.to_dict()
     params = [parse_set(s, d) for s in args.sets]
     out = Path(args.out)
-    df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
-                   fallback_local=args.fallback_local,
-                   progress=False if args.quiet else None)
+    try:
+        df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
+                       fallback_local=args.fallback_local,
+                       progress=False if args.quiet else None)
+    except KeyboardInterrupt:
+        done = len(finished_cases(out))
+        print(f"\ninterrupted: {done} finished case(s) are kept in {out / 'cases.jsonl'} "
+              f"(table: {out / 'summary.csv'}); rerun the same command to resume with the "
+              "cases not yet run", file=sys.stderr)
+        return 130
     print(df.to_string(index=False, float_format=lambda v: f"{v:.4g}"))
     print(f"summary written to {out / 'summary.csv'}")
     return 0

@@ -1,0 +1,277 @@
+"""Bad-input audit through the command line (issue 6 and the brief's rule): a bad scene, a bad
+``[measured]`` CSV, a bad sweep, an unreachable dask scheduler and Ctrl-C each end with a
+non-zero exit code and one paragraph on stderr naming the field and value -- never a Python
+traceback -- and an interrupted run or sweep keeps what it wrote and says where.
+
+Everything goes through :func:`thermobearing.cli.main`, the console script's entry point.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from tests.unit.test_bad_input_scene import BASE, edited
+from thermobearing import cli
+from thermobearing.scene import dumps_toml
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _warm_imports():
+    """Import CoolProp (air properties of the network, ~5 s once) and every sub-command
+    module (~3 s) outside the timed tests."""
+    from thermobearing.lubricant_properties import air_properties
+
+    air_properties(300.0)
+    cli.build_parser()
+
+
+def write_scene(tmp_path, data, name="scene.toml"):
+    path = tmp_path / name
+    path.write_text(dumps_toml(data), encoding="utf-8")
+    return path
+
+
+def run_cli(capsys, *argv):
+    """(exit code, stderr) of ``thermobearing ARGV``; fails on any escaping exception."""
+    code = cli.main([str(a) for a in argv])
+    captured = capsys.readouterr()
+    return code, captured.err
+
+
+def assert_one_paragraph(err: str, *words: str) -> None:
+    assert "Traceback" not in err
+    assert err.strip() and "\n\n" not in err.strip()
+    for w in words:
+        assert w in err, (w, err)
+
+
+# --- bad scenes: exit 1, field + value in one line ---------------------------------------
+@pytest.mark.parametrize(("path", "value", "words"), [
+    ("schedule.steps", [{"duration": "5 min"}, {"duration": "-2 min"}],
+     ["schedule.steps[1].duration", "'-2 min'", "> 0"]),
+    ("supply.flow", "33 kg", ["supply.flow", "'33 kg'", "m**3/s"]),
+    ("models.kinematics", "skiding", ["skiding", "race_control", "skidding"]),
+    ("solver.rtol", 0.0, ["solver.rtol", "0.0", "(0, 1)"]),
+    ("solver.chunk", "0 s", ["solver.chunk", "'0 s'", "> 0"]),
+    ("network.parameters", {}, ["network.parameters", "housing_outer_diameter"]),
+])
+def test_check_bad_scene_exits_1_with_the_field(tmp_path, capsys, path, value, words):
+    scene = write_scene(tmp_path, edited(path, value))
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, "thermobearing check: error:", *words)
+
+
+def test_run_missing_network_parameters_is_named_not_a_type_error(tmp_path, capsys):
+    # before: TypeError "four_node_paper002() missing 2 required keyword-only arguments"
+    # with a traceback, after the kinematics set-up
+    scene = write_scene(tmp_path, edited("network.parameters", {}))
+    code, err = run_cli(capsys, "run", scene, "--out", tmp_path / "out", "--quiet")
+    assert code == 1
+    assert_one_paragraph(err, "network.parameters", "housing_outer_diameter", "housing_length")
+
+
+def test_unknown_scene_name_lists_presets(capsys):
+    code, err = run_cli(capsys, "check", "qj1044_rgi")
+    assert code == 1
+    assert_one_paragraph(err, "'qj1044_rgi'", "qj1044_rig", "qj1044_synthetic_measured")
+
+
+def test_unwritable_results_folder(tmp_path, capsys):
+    # before: NotADirectoryError traceback
+    blocker = tmp_path / "a_file"
+    blocker.write_text("x")
+    scene = write_scene(tmp_path, BASE)
+    code, err = run_cli(capsys, "run", scene, "--out", blocker / "out", "--quiet")
+    assert code == 1
+    assert_one_paragraph(err, "thermobearing run: error:", str(blocker / "out"))
+
+
+# --- issue 6: "a measured CSV whose columns do not map to nodes" (+ file neighbours) ------
+def measured_scene(tmp_path, csv_text, **measured):
+    (tmp_path / "rig.csv").write_text(csv_text, encoding="utf-8")
+    data = edited("measured", {"file": "rig.csv", "time_column": "time [min]",
+                               "columns": {"TC1": "de.housing"}, **measured})
+    return write_scene(tmp_path, data)
+
+
+GOOD_CSV = "time [min],TC1\n0,35.0\n5,36.1\n10,37.0\n"
+
+
+def test_measured_column_mapped_to_unknown_node(tmp_path, capsys):
+    # before: `check` accepted it; only `run` found it (after loading every model)
+    scene = measured_scene(tmp_path, GOOD_CSV, columns={"TC1": "de.hosuing"})
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, "measured.columns['TC1']", "'de.hosuing'", "de.housing",
+                         "de.oil")
+
+
+def test_measured_column_missing_from_file(tmp_path, capsys):
+    scene = measured_scene(tmp_path, GOOD_CSV, columns={"TC9": "de.housing"})
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, "measured.columns['TC9']", "time [min], TC1")
+
+
+def test_measured_time_going_backwards(tmp_path, capsys):
+    # before: accepted; the overlay and RMSE were computed on a scrambled time axis
+    scene = measured_scene(tmp_path, "time [min],TC1\n0,35\n10,36\n5,37\n")
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, "measured column 'time [min]'", "row 3: 5 after 10",
+                         "strictly increasing")
+
+
+def test_measured_text_cell(tmp_path, capsys):
+    # before: ValueError "could not convert string to float: 'abc'" from pandas, raised
+    # at the END of `run` (when the report overlay read the file), after the whole run
+    scene = measured_scene(tmp_path, "time [min],TC1\n0,35\n5,abc\n10,37\n")
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, "measured column 'TC1'", "row 2: 'abc'", "numbers")
+
+
+def test_measured_file_missing(tmp_path, capsys):
+    data = edited("measured", {"file": "nope.csv", "columns": {"TC1": "de.housing"}})
+    code, err = run_cli(capsys, "check", write_scene(tmp_path, data))
+    assert code == 1
+    assert_one_paragraph(err, "measured.file", "'nope.csv'", "an existing CSV file")
+
+
+def test_measured_good_file_passes_check(tmp_path, capsys):
+    code, err = run_cli(capsys, "check", measured_scene(tmp_path, GOOD_CSV))
+    assert code == 0 and "error" not in err
+
+
+# --- issue 6: "Ctrl-C during a run keeps everything written so far and says where" --------
+def test_ctrl_c_during_run_keeps_rows_and_says_where(tmp_path, capsys, monkeypatch):
+    import thermobearing.network as network
+
+    advance = network.TransientStepper.advance
+    calls = []
+
+    def interrupted_advance(self, *args, **kwargs):
+        calls.append(1)
+        if len(calls) == 2:  # the user presses Ctrl-C during the second 300-s chunk
+            raise KeyboardInterrupt
+        return advance(self, *args, **kwargs)
+
+    monkeypatch.setattr(network.TransientStepper, "advance", interrupted_advance)
+    out = tmp_path / "results"
+    code, err = run_cli(capsys, "run", write_scene(tmp_path, BASE), "--out", out, "--quiet")
+    assert code == 130
+    assert_one_paragraph(err, "interrupted", str(out))
+    rows = (out / "temperatures.csv").read_text().strip().splitlines()
+    assert rows[0].startswith("time [s]")
+    assert [r.split(",")[0] for r in rows[1:]] == ["0.0", "300.0"]  # t = 0 and chunk 1 kept
+    assert (out / "scene.toml").is_file() and (out / "kinematics.csv").is_file()
+
+
+# --- sweeps: "a sweep parameter that does not exist", values, Ctrl-C, dask ----------------
+def test_sweep_parameter_that_does_not_exist(tmp_path, capsys):
+    scene = write_scene(tmp_path, BASE)
+    code, err = run_cli(capsys, "sweep", scene, "--set", "supply.flwo=5,10",
+                        "--out", tmp_path / "sw")
+    assert code == 1
+    assert_one_paragraph(err, "'supply.flwo'", "an existing scene field", "supply.flow")
+
+
+def test_sweep_value_that_is_refused_names_the_field(tmp_path, capsys):
+    scene = write_scene(tmp_path, BASE)
+    code, err = run_cli(capsys, "sweep", scene, "--set", "supply.flow=-5,10",
+                        "--out", tmp_path / "sw")
+    assert code == 1
+    assert_one_paragraph(err, "supply.flow", "'-5 L/min'", "a flow > 0")
+
+
+def test_sweep_values_with_a_unit_after_the_list():
+    # the documented form "supply.flow=15,33 L/min" gave ONE value '15 33 L/min' before
+    from thermobearing.scene import loads_scene
+    from thermobearing.sweep import parse_set
+
+    d = loads_scene(dumps_toml(BASE)).to_dict()
+    assert parse_set("supply.flow=15,33 L/min", d).values == ("15 L/min", "33 L/min")
+    assert parse_set("supply.flow=1e1,2e1 L/min", d).values == ("10 L/min", "20 L/min")
+    assert parse_set("lubricant.preset=ISO_VG32,ISO_VG68", d).values == ("ISO_VG32",
+                                                                         "ISO_VG68")
+
+
+def test_sweep_wrong_unit_after_the_list(tmp_path, capsys):
+    scene = write_scene(tmp_path, BASE)
+    code, err = run_cli(capsys, "sweep", scene, "--set", "supply.flow=5,10 kg",
+                        "--out", tmp_path / "sw")
+    assert code == 1
+    assert_one_paragraph(err, "supply.flow", "'5 kg'", "m**3/s")
+
+
+def test_sweep_zero_workers(tmp_path, capsys):
+    # before: ValueError "max_workers must be greater than 0" from concurrent.futures
+    scene = write_scene(tmp_path, BASE)
+    code, err = run_cli(capsys, "sweep", scene, "--set", "supply.flow=5,10",
+                        "--out", tmp_path / "sw", "--workers", "0")
+    assert code == 1
+    assert_one_paragraph(err, "workers", "0", ">= 1")
+
+
+def test_ctrl_c_during_sweep_keeps_cases_and_says_how_to_resume(tmp_path, capsys,
+                                                                 monkeypatch):
+    import thermobearing.simulation as simulation
+
+    calls = []
+
+    def runner(scene_toml):
+        calls.append(scene_toml)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return {"max temperature [degC]": 40.0 + len(calls)}
+
+    monkeypatch.setattr(simulation, "summarize_scene", runner)
+    out = tmp_path / "sw"
+    scene = write_scene(tmp_path, BASE)
+    argv = ("sweep", scene, "--set", "supply.flow=5,10,15", "--out", out, "--workers", "1",
+            "--quiet")
+    code, err = run_cli(capsys, *argv)
+    # before: "thermobearing sweep: interrupted" and nothing on where or how to go on
+    assert code == 130
+    assert_one_paragraph(err, "interrupted", "1 finished case", str(out / "cases.jsonl"),
+                         "rerun the same command")
+    kept = [json.loads(line) for line in (out / "cases.jsonl").read_text().splitlines()]
+    assert [r["params"]["supply.flow"] for r in kept] == ["5 L/min"]
+    # resuming runs only the two cases not yet in the store
+    calls.clear()
+    calls.append("already counted")  # so the runner's interrupt (at call 2) is not hit
+    monkeypatch.setattr(simulation, "summarize_scene",
+                        lambda text: {"max temperature [degC]": 50.0})
+    code, err = run_cli(capsys, *argv)
+    assert code == 0
+    flows = [json.loads(line)["params"]["supply.flow"]
+             for line in (out / "cases.jsonl").read_text().splitlines()]
+    assert flows == ["5 L/min", "10 L/min", "15 L/min"]
+
+
+def test_unreachable_dask_scheduler_says_so_and_falls_back_only_if_asked(tmp_path, capsys,
+                                                                         monkeypatch):
+    import distributed
+
+    def refuse(address, **kwargs):  # what Client raises when nobody listens (after 5 s)
+        raise OSError(f"Timed out trying to connect to {address} after 5 s")
+
+    monkeypatch.setattr(distributed, "Client", refuse)
+    import thermobearing.simulation as simulation
+
+    monkeypatch.setattr(simulation, "summarize_scene", lambda text: {"x": 1.0})
+    scene = write_scene(tmp_path, BASE)
+    base = ("sweep", scene, "--set", "supply.flow=5,10", "--scheduler", "tcp://10.9.9.9:8786")
+    code, err = run_cli(capsys, *base, "--out", tmp_path / "a")
+    assert code == 1
+    assert_one_paragraph(err, "cannot reach the dask scheduler", "'tcp://10.9.9.9:8786'",
+                         "--fallback-local")
+    assert not (tmp_path / "a" / "cases.jsonl").exists()  # nothing ran locally unasked
+    code, err = run_cli(capsys, *base, "--out", tmp_path / "b", "--fallback-local",
+                        "--workers", "1")
+    assert code == 0
+    assert "unreachable, running locally" in err
+    assert len((tmp_path / "b" / "cases.jsonl").read_text().splitlines()) == 2

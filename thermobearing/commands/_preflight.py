@@ -1,0 +1,35 @@
+"""Checks run by ``thermobearing check`` and ``run`` before any model is solved.
+
+Everything that can be known wrong without solving a model fails here, in seconds, with the
+field named, instead of after the first operating points of a long run: the network
+template's required parameters, the ``[measured]`` CSV (columns, numbers, increasing
+times) and, when the scene builds a network, the column -> node map of ``[measured]``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..errors import InputError
+from ..scene import check_measured_file, check_network
+
+
+def preflight(sim: Any, build: bool = True) -> None:
+    """Validate ``sim.scene`` beyond what loading it checks (see the module docstring).
+
+    ``build``: also build the thermal network (cheap) to check the measured-column map
+    against its node names.
+    """
+    scene = sim.scene
+    thermal = bool(sim.needs.get("network"))
+    check_network(scene.network, require=thermal)
+    check_measured_file(scene)
+    if not (build and thermal and scene.measured is not None):
+        return
+    from ..coupled import build_network
+
+    nodes = build_network(sim).state_nodes
+    for column, node in scene.measured.columns.items():
+        if node not in nodes:
+            raise InputError(f"measured.columns[{column!r}]", node,
+                             "a node of the network: " + ", ".join(nodes))
