@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_positive
+from ..errors import ConvergenceError, InputError, check_finite, check_positive
 from ..registry import Registry
 
 EHL_SOLVERS: Registry[Callable[..., object]] = Registry(
@@ -69,6 +69,7 @@ def numerical_ehl(load_per_length: float, reduced_radius_x: float, effective_mod
     """
     from .line import solve_line_contact
 
+    check_finite("slide_to_roll", slide_to_roll)  # a NaN gave traction = NaN silently
     T = float(inlet_temperature)
     eta = float(lubricant.dynamic_viscosity(T))
     if getattr(lubricant, "pressure_law", "roelands") == "barus":

@@ -49,7 +49,13 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..errors import ConvergenceError, InputError, check_positive, check_temperature
+from ..errors import (
+    ConvergenceError,
+    InputError,
+    check_positive,
+    check_range,
+    check_temperature,
+)
 from .line import (
     LineEHLSolution,
     line_contact_case,
@@ -304,6 +310,13 @@ def solve_thermal_line_contact(
     check_positive("entrainment_speed", entrainment_speed)
     if not abs(slide_to_roll) < 2.0:
         raise InputError("slide_to_roll", slide_to_roll, "|SRR| < 2 (both surfaces moving)")
+    # fixed-point settings: relax 0 would return the isothermal film as if converged,
+    # tol_temperature 0 drove the iteration into the lubricant's viscosity range error
+    check_range("relax", relax, 0.0, 1.0, low_inclusive=False)
+    check_positive("tol_temperature", tol_temperature)
+    if isinstance(max_outer, bool) or not isinstance(max_outer, int | np.integer) \
+            or max_outer < 1:
+        raise InputError("max_outer", max_outer, "a whole number of fixed-point sweeps >= 1")
     solid2 = solid2 or solid1
     T_in = float(inlet_temperature)
     eta0 = float(lubricant.dynamic_viscosity(T_in))

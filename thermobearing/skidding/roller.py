@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_finite, check_positive
+from ..errors import ConvergenceError, InputError, check_finite, check_positive, check_range
 from .roller_diagnostics import CageForceBalance, cage_force_balance
 from .roller_loads import _gapped, _load_distribution
 from .roller_model import (
@@ -229,6 +229,9 @@ def solve_roller(
     check_positive("speed", speed)
     check_positive("radial_load", radial_load, allow_zero=True)
     check_finite("axial_load", axial_load)
+    check_range("tol", tol, 0.0, 1.0, low_inclusive=False, high_inclusive=False)
+    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
+        raise InputError("max_iter", max_iter, "a whole number of Newton iterations >= 1")
     if axial_load != 0.0:
         raise InputError("axial_load", axial_load,
                          "0 for a cylindrical roller bearing (roller-rib thrust is not modelled "

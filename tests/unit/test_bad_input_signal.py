@@ -1,0 +1,140 @@
+"""Bad-input audit, issue 8 (cage speed from vibration): a sampling rate too low, a file with
+NaN or a constant signal, a band outside Nyquist, no detectable cage line -- each a clear
+error or a result flagged as not detected, never a made-up frequency. Through
+:func:`thermobearing.signal.estimate_cage_speed` and ``thermobearing cage-speed``.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from thermobearing import cli
+from thermobearing import signal as S
+from thermobearing.errors import InputError
+
+FS = 25600.0
+SHAFT = 30.0  # 1800 r/min
+Z = 17  # any comb size; the tests do not need a real bearing
+CSR_TH = 0.45
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _warm_imports():
+    """Import every sub-command module (~3 s once) outside the timed tests."""
+    cli.build_parser()
+
+
+def noise(seconds=1.0, fs=FS, seed=0):
+    return np.random.default_rng(seed).normal(size=int(seconds * fs))
+
+
+def estimate(x, fs=FS, **kw):
+    return S.estimate_cage_speed(x, fs, SHAFT, Z, CSR_TH, **kw)
+
+
+def test_sampling_rate_too_low_for_the_lines():
+    with pytest.raises(InputError) as info:
+        estimate(noise(5.0, fs=200.0), fs=200.0)
+    assert info.value.field == "sampling_rate" and info.value.value == 200.0
+    assert "a rate above" in info.value.allowed and "Hz" in info.value.allowed
+
+
+def test_nan_samples_named_with_index():
+    x = noise()
+    x[100] = np.nan
+    with pytest.raises(InputError) as info:
+        estimate(x)
+    assert "first at index 100" in str(info.value.value)
+    assert "finite samples" in info.value.allowed
+
+
+def test_constant_signal():
+    with pytest.raises(InputError) as info:
+        estimate(np.full(int(FS), 0.3))
+    assert info.value.value == "a constant signal"
+    assert "varies in time" in info.value.allowed
+
+
+@pytest.mark.parametrize(("band", "allowed"), [
+    ((10000.0, 20000.0), "Nyquist"), ((-100.0, 3000.0), "Nyquist"),
+    ((3000.0, 1000.0), "low < high"),
+])
+def test_band_outside_nyquist_or_reversed(band, allowed):
+    # a reversed band was reported as "a band at least ... Hz wide" before
+    with pytest.raises(InputError) as info:
+        estimate(noise(), band=band)
+    assert info.value.field == "band" and info.value.value == band
+    assert allowed in info.value.allowed
+
+
+def test_no_cage_line_is_flagged_not_detected_without_a_frequency():
+    est = estimate(noise(2.0))
+    assert not est.detected
+    assert est.cage_frequency is None and est.csr is None and est.slip is None
+    assert est.reason
+
+
+def test_bad_bearing_numbers():
+    with pytest.raises(InputError) as info:
+        S.estimate_cage_speed(noise(), FS, -30.0, Z, CSR_TH)
+    assert info.value.field == "shaft_frequency"
+    with pytest.raises(InputError) as info:
+        S.estimate_cage_speed(noise(), FS, SHAFT, 2.5, CSR_TH)
+    assert info.value.field == "n_balls"
+
+
+# --- through the command line ---------------------------------------------------------
+def write_csv(path, t, x):
+    np.savetxt(path, np.c_[t, x], delimiter=",", header="time [s],accel [m/s2]", comments="")
+    return path
+
+
+def cage_speed(capsys, *argv):
+    code = cli.main(["cage-speed", *map(str, argv), "--rpm", "1800", "--bearing", "QJ1044",
+                     "--no-plot"])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_cli_no_cage_line_exits_3_and_prints_no_frequency(tmp_path, capsys):
+    t = np.arange(int(FS)) / FS
+    path = write_csv(tmp_path / "noise.csv", t, noise())
+    code, out, err = cage_speed(capsys, path, "--json")
+    assert code == 3 and "Traceback" not in err
+    record = json.loads(out)
+    assert record["detected"] is False and record["csr"] is None
+    assert record["cage_frequency_hz"] is None and record["slip"] is None and record["reason"]
+
+
+def test_cli_nan_file_exits_1_one_line(tmp_path, capsys):
+    t = np.arange(int(FS)) / FS
+    x = noise()
+    x[7] = np.nan
+    code, _, err = cage_speed(capsys, write_csv(tmp_path / "nan.csv", t, x))
+    assert code == 1 and "Traceback" not in err
+    assert "nan.csv" in err and "first at index 7" in err and "finite samples" in err
+
+
+def test_cli_time_column_going_backwards_is_explained(tmp_path, capsys):
+    # before: "sampling_rate = None ... (the file carries no time column)" although it has one
+    t = np.arange(int(FS)) / FS
+    t[500:] -= 0.01
+    code, _, err = cage_speed(capsys, write_csv(tmp_path / "back.csv", t, noise()))
+    assert code == 1 and "Traceback" not in err
+    assert "does not increase at data row 501" in err
+
+
+def test_cli_sampling_rate_not_a_rate(tmp_path, capsys):
+    np.save(tmp_path / "x.npy", noise())
+    code, _, err = cage_speed(capsys, tmp_path / "x.npy", "--fs", "fast")
+    assert code == 1 and "--fs" in err and "'fast'" in err and "Hz" in err
+    code, _, err = cage_speed(capsys, tmp_path / "x.npy")
+    assert code == 1 and "sampling_rate" in err and "no time column" in err
+
+
+def test_cli_missing_file(tmp_path, capsys):
+    code, _, err = cage_speed(capsys, tmp_path / "nope.csv")
+    assert code == 1 and "nope.csv" in err and "an existing .npy, .npz or .csv file" in err

@@ -1,0 +1,122 @@
+"""Bad-input audit, issue 5 (skidding solvers, public :func:`thermobearing.skidding.solve`):
+bad operating points are refused with the field named; states the model cannot solve
+(nothing drives the cage) fail with a ConvergenceError carrying the residual and the state,
+never NaN; solver settings out of range are named before any work is done.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import pytest
+
+from thermobearing import skidding
+from thermobearing.errors import ConvergenceError, InputError, UnknownNameError, ValidityWarning
+from thermobearing.state import OilSupply
+
+SUPPLY = OilSupply("jet", 5e-4, 308.15)
+
+
+@pytest.fixture(scope="module")
+def qj1044():
+    from thermobearing.geometry import load_bearing
+
+    return load_bearing("QJ1044")
+
+
+@pytest.fixture(scope="module")
+def vg46():
+    from thermobearing.lubricant import load_lubricant
+
+    return load_lubricant("ISO_VG46")
+
+
+@pytest.mark.parametrize(("speed", "radial", "temperature", "field", "allowed"), [
+    (-100.0, 1000.0, 330.0, "speed", "> 0"),
+    (188.0, math.nan, 330.0, "radial_load", "finite"),
+    (188.0, 1000.0, -3.0, "temperature", "absolute zero"),
+])
+def test_ball_solver_bad_operating_point(qj1044, vg46, speed, radial, temperature, field,
+                                         allowed):
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, speed, radial, 10000.0, temperature, supply=SUPPLY)
+    assert info.value.field == field and allowed in info.value.allowed
+
+
+def test_ball_solver_without_supply_says_what_is_missing(qj1044, vg46):
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, 188.0, 1000.0, 10000.0, 330.0)
+    assert info.value.field == "supply" and "OilSupply" in info.value.allowed
+
+
+def test_ball_no_load_fails_with_residual_and_state_not_nan(qj1044, vg46):
+    # Fa = 0 and Fr = 0: centrifugal force holds every ball in the outer groove
+    with pytest.raises(ConvergenceError) as info:
+        skidding.solve(qj1044, vg46, 188.0, 0.0, 0.0, 330.0, supply=SUPPLY)
+    err = info.value
+    assert err.residual == math.inf and "no ball touches the inner ring" in str(err)
+    assert err.state == {"radial_load": 0.0, "axial_load": 0.0, "speed": 188.0}
+
+
+@pytest.mark.xfail(strict=True, reason="skidding/ball.py (N2's file) does not check tol: "
+                   "tol = 0 runs the whole continuation (~20 s with the default max_iter) and "
+                   "ends in a ConvergenceError at residual 2e-11 instead of an InputError "
+                   "naming tol. Remove this marker when tol <= 0 is refused up front.")
+def test_ball_solver_tolerance_out_of_range(qj1044, vg46):
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, 188.0, 1000.0, 10000.0, 330.0, supply=SUPPLY, tol=0.0,
+                       max_iter=1)
+    assert info.value.field == "tol"
+
+
+def test_ball_solver_iteration_limit_reports_residual(qj1044, vg46):
+    with pytest.raises(ConvergenceError) as info:
+        skidding.solve(qj1044, vg46, 188.0, 1000.0, 10000.0, 330.0, supply=SUPPLY, max_iter=1)
+    err = info.value
+    assert math.isfinite(err.residual) and err.residual > 1e-3
+    assert "no convergence in 1 iterations" in str(err) and "cage_speed" in err.state
+
+
+def test_roller_solver_refuses_axial_load(nu214, oil):
+    with pytest.raises(InputError) as info:
+        skidding.solve(nu214, oil, 500.0, 1000.0, 100.0, 330.0)
+    assert info.value.field == "axial_load" and info.value.value == 100.0
+    assert "cylindrical roller bearing" in info.value.allowed
+
+
+@pytest.mark.parametrize(("speed", "radial", "temperature", "field"), [
+    (-100.0, 1000.0, 330.0, "speed"),
+    (500.0, -1000.0, 330.0, "radial_load"),
+    (500.0, 1000.0, math.nan, "temperature"),
+])
+def test_roller_solver_bad_operating_point(nu214, oil, speed, radial, temperature, field):
+    with pytest.raises(InputError) as info:
+        skidding.solve(nu214, oil, speed, radial, 0.0, temperature)
+    assert info.value.field == field
+
+
+def test_roller_no_load_fails_with_residual_not_nan(nu214, oil):
+    with pytest.raises(ConvergenceError) as info:
+        skidding.solve(nu214, oil, 500.0, 0.0, 0.0, 330.0)
+    assert info.value.residual == math.inf and "no roller touches" in str(info.value)
+    assert info.value.state == {"radial_load": 0.0, "inner_speed": 500.0}
+
+
+@pytest.mark.parametrize(("options", "field"), [
+    ({"tol": 0.0}, "tol"), ({"tol": math.nan}, "tol"), ({"tol": 2.0}, "tol"),
+    ({"max_iter": 0}, "max_iter"), ({"max_iter": 2.5}, "max_iter"),
+])
+def test_roller_solver_settings_out_of_range(nu214, oil, options, field):
+    # before: tol = 0 ran 3.6 s and returned a result marked converged
+    with pytest.raises(InputError) as info:
+        skidding.solve(nu214, oil, 500.0, 1000.0, 0.0, 330.0, **options)
+    assert info.value.field == field and info.value.value is next(iter(options.values()))
+
+
+def test_roller_unknown_drag_model_lists_known_ones(nu214, oil):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        with pytest.raises(UnknownNameError) as info:
+            skidding.solve(nu214, oil, 500.0, 1000.0, 0.0, 330.0, drag_model="numeric")
+    assert info.value.value == "numeric" and "closed_form" in info.value.known
