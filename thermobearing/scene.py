@@ -142,7 +142,7 @@ class BearingSpec:
             name=str(data.get("name", f"bearing{index + 1}")),
             preset=preset,
             path=path,
-            overrides=dict(data.get("overrides", {})),
+            overrides=dict(_table(f"{sec}.overrides", data.get("overrides", {}))),
         )
 
     def to_dict(self) -> dict[str, Any]:
@@ -184,6 +184,8 @@ class Supply:
                              "a temperature above absolute zero")
         level = data.get("level")
         level_si = None if level is None else _quantity(level, "length", "supply.level")
+        if level_si is not None and level_si < 0:
+            raise InputError("supply.level", level, "an oil level >= 0")
         if method == "oil_bath" and level_si is None:
             raise InputError("supply.level", None, "an oil level for an oil bath")
         return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si)
@@ -518,7 +520,15 @@ class Scene:
                      "outputs", "measured"):
             if name in data:
                 _table(name, data[name])
+        if "path" in lub:
+            lub_path = Path(str(lub["path"]))
+            if not lub_path.is_absolute() and base_dir is not None:
+                lub_path = Path(base_dir) / lub_path
+            if not lub_path.is_file():
+                raise InputError("lubricant.path", lub["path"],
+                                 f"an existing lubricant TOML file (looked at {lub_path})")
         env = Environment.from_dict(data.get("environment", {}))
+        _check_model_types(_table("models", data.get("models", {})))
         network = dict(data.get("network", {}))
         scene = cls(
             title=title,
@@ -579,6 +589,23 @@ class Scene:
         if not p.is_absolute() and self.base_dir:
             p = Path(self.base_dir) / p
         return p
+
+
+def _check_model_types(models: Mapping[str, Any]) -> None:
+    """The value types of ``[models]`` (the names themselves are checked against the
+    registries when the model chain is planned): one name per family, a list of names
+    for ``heat_sources``, a table for ``heat_source_options``."""
+    for key, value in models.items():
+        if key == "heat_sources":
+            if isinstance(value, str):
+                continue
+            if not (isinstance(value, list) and all(isinstance(v, str) for v in value)):
+                raise InputError("models.heat_sources", value,
+                                 "a heat-source name or an array of names")
+        elif key == "heat_source_options":
+            _table("models.heat_source_options", value)
+        elif not isinstance(value, str):
+            raise InputError(f"models.{key}", value, "a model name (a string)")
 
 
 def check_measured_file(scene: Scene) -> None:

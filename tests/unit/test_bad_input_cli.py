@@ -275,3 +275,34 @@ def test_unreachable_dask_scheduler_says_so_and_falls_back_only_if_asked(tmp_pat
     assert code == 0
     assert "unreachable, running locally" in err
     assert len((tmp_path / "b" / "cases.jsonl").read_text().splitlines()) == 2
+
+
+# --- calibrate: a long run of many scene runs; Ctrl-C keeps each finished run -------------
+def test_ctrl_c_during_calibrate_keeps_runs_and_says_where(tmp_path, capsys, monkeypatch):
+    import thermobearing.calibrate as calibrate
+
+    def fake_calibrate(scene, fit, *, callback=None, **kwargs):
+        # two model runs finish, then the user presses Ctrl-C during the third
+        callback(1, {"network.parameters.h_oil": 270.0}, 0.80)
+        callback(2, {"network.parameters.h_oil": 350.0}, 0.35)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(calibrate, "calibrate", fake_calibrate)
+    scene = measured_scene(tmp_path, GOOD_CSV)
+    out = tmp_path / "cal"
+    code, err = run_cli(capsys, "calibrate", scene, "--fit", "network.parameters.h_oil",
+                        "--out", out, "--quiet")
+    # before: "thermobearing calibrate: interrupted" and every finished run was lost
+    assert code == 130
+    assert_one_paragraph(err, "interrupted", str(out / "calibration_runs.csv"),
+                         "best so far: run 2", "network.parameters.h_oil=350", "RMSE 0.35 K")
+    rows = (out / "calibration_runs.csv").read_text().strip().splitlines()
+    assert rows == ["run,network.parameters.h_oil,rmse [K]", "1,270.0,0.8", "2,350.0,0.35"]
+
+
+def test_calibrate_max_runs_below_one(tmp_path, capsys):
+    scene = measured_scene(tmp_path, GOOD_CSV)
+    code, err = run_cli(capsys, "calibrate", scene, "--fit", "network.parameters.h_oil",
+                        "--out", tmp_path / "cal", "--max-runs", "0")
+    assert code == 1
+    assert_one_paragraph(err, "--max-runs", "0", ">= 1")

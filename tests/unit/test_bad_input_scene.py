@@ -277,3 +277,35 @@ def test_invalid_toml_is_an_input_error():
     with pytest.raises(InputError) as info:
         loads_scene("title = \n")
     assert info.value.field == "scene" and "valid TOML" in info.value.allowed
+
+
+# --- neighbours: value types of tables a user writes by hand --------------------------------
+def test_bearing_overrides_not_a_table():
+    # before: ValueError "dictionary update sequence element #0 has length 1"
+    err = load_error("bearings", [{"name": "de", "preset": "QJ1044", "overrides": "x"}])
+    assert err.field == "bearings[0].overrides" and err.value == "x"
+
+
+@pytest.mark.parametrize(("key", "value", "allowed"), [
+    ("heat_sources", 5, "array of names"),        # before: TypeError 'int' not iterable
+    ("heat_sources", ["raceway_traction", 3], "array of names"),
+    ("film", ["hamrock_dowson_1977_central"], "a model name"),  # before: unhashable 'list'
+    ("heat_source_options", "cage_guide", "a table"),
+])
+def test_models_value_types(key, value, allowed):
+    err = load_error(f"models.{key}", value)
+    assert err.field == f"models.{key}" and err.value == value and allowed in err.allowed
+
+
+def test_lubricant_path_that_does_not_exist(tmp_path):
+    # before: "lubricant preset = '<path>' ... known names are: ISO_VG100, ..." at run time
+    d = edited("lubricant", {"path": "my_oil.toml"})
+    with pytest.raises(InputError) as info:
+        loads_scene(dumps_toml(d), base_dir=tmp_path)
+    assert info.value.field == "lubricant.path" and info.value.value == "my_oil.toml"
+    assert str(tmp_path / "my_oil.toml") in info.value.allowed
+
+
+def test_negative_oil_bath_level_shows_the_value_given():
+    err = load_error("supply", {"method": "oil_bath", "flow": "0 L/min", "level": "-5 mm"})
+    assert err.field == "supply.level" and err.value == "-5 mm" and ">= 0" in err.allowed

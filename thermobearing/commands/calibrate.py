@@ -9,12 +9,16 @@ Example (synthetic data shipped with the repository, see ``examples/README.md``)
 Prints the fitted values with approximate (linearised) 95 % confidence intervals, the
 residual RMSE per sensor and the number of model runs, and writes ``DIR/<scene>_calibrated.toml``
 (the calibrated scene), ``DIR/calibration.csv``, ``DIR/calibration_sensors.csv`` and
-``DIR/calibration.json``. Every function evaluation runs the whole scene once.
+``DIR/calibration.json``. Every function evaluation runs the whole scene once; each one's
+parameter values and RMSE are appended to ``DIR/calibration_runs.csv`` as it finishes, so
+Ctrl-C keeps them (and says where, with the best run so far).
 """
 
 from __future__ import annotations
 
 import argparse
+import csv
+import math
 import sys
 from pathlib import Path
 
@@ -68,7 +72,24 @@ def run(args: argparse.Namespace) -> int:
     name = Path(args.scene).stem
     out = Path(args.out) if args.out else Path("calibration") / name
 
+    if args.max_runs < 1:
+        raise InputError("--max-runs", args.max_runs, "a number of model runs >= 1")
+    out.mkdir(parents=True, exist_ok=True)
+    runs_csv = out / "calibration_runs.csv"
+    runs_csv.unlink(missing_ok=True)
+    best: dict[str, object] = {"rmse": math.inf}
+
     def progress(run_no: int, values: dict[str, float], rmse: float) -> None:
+        new = not runs_csv.exists()
+        with runs_csv.open("a", newline="", encoding="utf-8") as fh:
+            writer = csv.writer(fh)
+            if new:
+                writer.writerow(["run", *values, "rmse [K]"])
+            writer.writerow([run_no, *values.values(), rmse])
+        if rmse < float(best["rmse"]):
+            best.update(rmse=rmse, run=run_no, values=dict(values))
+        if args.quiet:
+            return
         shown = ", ".join(f"{k.rsplit('.', 1)[-1]}={v:.5g}" for k, v in values.items())
         print(f"  run {run_no:3d}: {shown}  RMSE {rmse:.4g} K", file=sys.stderr, flush=True)
 
@@ -76,8 +97,18 @@ def run(args: argparse.Namespace) -> int:
         print(f"scene: {scene.title}")
         print(f"fitting {', '.join(fit)} to {scene.measured.file if scene.measured else '?'} "
               "(one scene run per evaluation)", flush=True)
-    result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
-                       callback=None if args.quiet else progress)
+    try:
+        result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
+                           callback=progress)
+    except KeyboardInterrupt:
+        if "run" in best:
+            shown = ", ".join(f"{k}={v:.6g}" for k, v in best["values"].items())
+            found = f"; best so far: run {best['run']}, {shown}, RMSE {best['rmse']:.4g} K"
+        else:
+            found = "; no model run had finished"
+        print(f"\ninterrupted: every finished model run is in {runs_csv}{found} "
+              "(no calibrated scene was written)", file=sys.stderr)
+        return 130
     print(result.summary_text())
     paths = result.write(out, scene_name=f"{name}_calibrated.toml")
     print(f"calibrated scene written to {paths['scene']} (tables in {out}/)")
