@@ -70,13 +70,13 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Any, NamedTuple
 
 import numba
 import numpy as np
 
-from .errors import InputError, check_positive, check_range
+from .errors import InputError, UnknownNameError, check_positive, check_range
 
 __all__ = [
     "StabilityReport",
@@ -189,6 +189,15 @@ class VibrationParameters:
         """
         from .hertz import point_contact_stiffness
 
+        from_geometry = ("n_balls", "ball_diameter", "pitch_diameter", "inner_stiffness",
+                         "outer_stiffness", "ball_mass", "source")
+        known = [f.name for f in fields(cls) if f.name not in from_geometry]
+        for key, value in extra.items():
+            if key in from_geometry:
+                raise InputError(f"vibration.{key}", value, "nothing: it follows from the "
+                                 "bearing geometry (change the bearing or its overrides)")
+            if key not in known:
+                raise UnknownNameError(f"vibration.{key}", key, known)
         ki = float(point_contact_stiffness(*bearing.curvature("inner", contact_angle),
                                            bearing.effective_modulus))
         ko = float(point_contact_stiffness(*bearing.curvature("outer", contact_angle),

@@ -138,3 +138,65 @@ def test_cli_sampling_rate_not_a_rate(tmp_path, capsys):
 def test_cli_missing_file(tmp_path, capsys):
     code, _, err = cage_speed(capsys, tmp_path / "nope.csv")
     assert code == 1 and "nope.csv" in err and "an existing .npy, .npz or .csv file" in err
+
+
+# --- the vibration model of issue 8 (paper 004) --------------------------------------------
+@pytest.fixture(scope="module")
+def p004():
+    from thermobearing.traction import make_traction_law
+    from thermobearing.vibration import paper004_parameters
+
+    return paper004_parameters(), make_traction_law("linear_saturating", mu_max=0.01,
+                                                    slip_speed_max=0.1)
+
+
+W_2000 = 2000 * np.pi / 30  # 2000 r/min
+
+
+@pytest.mark.parametrize(("kwargs", "field"), [
+    ({"cage_slip": 1.5}, "cage_slip"), ({"cage_slip": np.nan}, "cage_slip"),
+    ({"duration": 0.0}, "duration"), ({"settle_time": -1.0}, "settle_time"),
+    ({"sampling_rate": 0.0}, "sampling_rate"), ({"max_step": 0.0}, "max_step"),
+    ({"cage_speed": -5.0}, "cage_speed"), ({"method": "euler"}, "method"),
+])
+def test_vibration_model_bad_settings(p004, kwargs, field):
+    from thermobearing.vibration import simulate
+
+    params, law = p004
+    with pytest.raises(InputError) as info:
+        simulate(params, W_2000, 2000.0, traction=law, **{"duration": 0.01, **kwargs})
+    assert info.value.field == field
+
+
+def test_vibration_sampling_rate_too_low_for_the_record(p004):
+    from thermobearing.vibration import simulate
+
+    params, law = p004
+    with pytest.raises(InputError) as info:
+        simulate(params, W_2000, 2000.0, traction=law, duration=0.01, settle_time=0.0,
+                 sampling_rate=100.0)
+    assert info.value.field == "duration" and "at least 4 samples at 100 Hz" in info.value.allowed
+
+
+def test_vibration_step_above_stability_diverges_with_an_error_not_nan(p004):
+    from thermobearing.errors import ConvergenceError
+    from thermobearing.vibration import simulate
+
+    params, law = p004
+    with pytest.raises(ConvergenceError) as info:
+        simulate(params, W_2000, 2000.0, traction=law, duration=0.01, settle_time=0.0,
+                 method="rk4", max_step=1e-3)
+    assert "diverged" in str(info.value) and "stability" in info.value.state
+
+
+def test_vibration_parameter_overrides_unknown_or_fixed_by_geometry():
+    # before: TypeError "got an unexpected keyword argument" / "multiple values for n_balls"
+    from thermobearing.errors import UnknownNameError
+    from thermobearing.vibration import paper004_parameters
+
+    with pytest.raises(UnknownNameError) as info:
+        paper004_parameters(colour=2)
+    assert info.value.field == "vibration.colour" and "support_damping" in info.value.known
+    with pytest.raises(InputError) as info:
+        paper004_parameters(n_balls=2)
+    assert info.value.field == "vibration.n_balls" and "bearing geometry" in info.value.allowed
