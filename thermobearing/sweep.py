@@ -25,8 +25,9 @@ import json
 import math
 import re
 import sys
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -269,6 +270,20 @@ def _dask_client(scheduler: str):
         ) from None
 
 
+@contextmanager
+def _naming_case(case: Case, out: Path) -> Iterator[None]:
+    """A package error raised by one case names the case's values and where the finished
+    cases are (the type and fields of the error are kept)."""
+    try:
+        yield
+    except ThermobearingError as exc:
+        values = ", ".join(f"{k}={v}" for k, v in case.assignments)
+        exc.args = (f"sweep case {case.case_id} ({values}): {exc}; the finished cases are "
+                    f"kept in {_store_path(out)} (rerun the same command to resume)",
+                    *exc.args[1:])
+        raise
+
+
 def run_sweep(
     scene: Scene,
     params: Sequence[SweepParameter],
@@ -329,14 +344,18 @@ def run_sweep(
                         futures = {client.submit(runner, c.scene_toml, pure=False): c
                                    for c in todo}
                         for fut in dask_completed(list(futures)):
-                            _append(out, _record(futures[fut], fut.result()))
+                            with _naming_case(futures[fut], out):
+                                result = fut.result()
+                            _append(out, _record(futures[fut], result))
                             _write_summary(out, cases)
                             bar.update(1)
                 finally:
                     client.close()
             elif workers == 1 or len(todo) == 1:
                 for c in todo:
-                    _append(out, _record(c, runner(c.scene_toml)))
+                    with _naming_case(c, out):
+                        result = runner(c.scene_toml)
+                    _append(out, _record(c, result))
                     _write_summary(out, cases)
                     bar.update(1)
             else:
@@ -344,7 +363,9 @@ def run_sweep(
                     futs = {pool.submit(runner, c.scene_toml): c for c in todo}
                     try:
                         for fut in as_completed(futs):
-                            _append(out, _record(futs[fut], fut.result()))
+                            with _naming_case(futs[fut], out):
+                                result = fut.result()
+                            _append(out, _record(futs[fut], result))
                             _write_summary(out, cases)
                             bar.update(1)
                     except KeyboardInterrupt:

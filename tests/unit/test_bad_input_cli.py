@@ -306,3 +306,24 @@ def test_calibrate_max_runs_below_one(tmp_path, capsys):
                         "--out", tmp_path / "cal", "--max-runs", "0")
     assert code == 1
     assert_one_paragraph(err, "--max-runs", "0", ">= 1")
+
+
+def test_sweep_case_failing_at_run_time_names_the_case(tmp_path, capsys, monkeypatch):
+    # a value that only the models refuse (here: a ConvergenceError of one case)
+    import thermobearing.simulation as simulation
+    from thermobearing.errors import ConvergenceError
+
+    def runner(scene_toml):
+        if "10 L/min" in scene_toml:
+            raise ConvergenceError("coupled transient", 3.2, "thermal runaway", {"time": 60.0})
+        return {"x": 1.0}
+
+    monkeypatch.setattr(simulation, "summarize_scene", runner)
+    out = tmp_path / "sw"
+    code, err = run_cli(capsys, "sweep", write_scene(tmp_path, BASE), "--set",
+                        "supply.flow=5,10,15", "--out", out, "--workers", "1")
+    # before: only the model's message, without which case or what was kept
+    assert code == 1
+    assert_one_paragraph(err, "sweep case", "supply.flow=10 L/min", "residual 3.200e+00",
+                         "thermal runaway", str(out / "cases.jsonl"), "resume")
+    assert len((out / "cases.jsonl").read_text().splitlines()) == 1  # the 5 L/min case
