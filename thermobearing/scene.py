@@ -713,12 +713,12 @@ def scene_presets() -> list[str]:
     return sorted(p.stem for p in folder.glob("*.toml"))
 
 
-def loads_scene(text: str, base_dir: Path | None = None) -> Scene:
-    """Parse TOML text into a :class:`Scene`."""
+def loads_scene(text: str, base_dir: Path | None = None, source: str | None = None) -> Scene:
+    """Parse TOML text into a :class:`Scene` (``source``: the file name for messages)."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError("scene", "<toml>", f"valid TOML ({exc})") from None
+        raise InputError("scene", source or "<toml>", f"valid TOML ({exc})") from None
     return Scene.from_dict(data, base_dir)
 
 
@@ -733,7 +733,8 @@ def load_scene(name_or_path: str | Path | None = None) -> Scene:
         if not preset.is_file():
             raise UnknownNameError("scene", str(name_or_path), scene_presets())
         path = preset
-    return loads_scene(path.read_text(encoding="utf-8"), base_dir=path.parent)
+    return loads_scene(path.read_text(encoding="utf-8"), base_dir=path.parent,
+                       source=str(path))
 
 
 # ---------------------------------------------------------------------------

@@ -327,3 +327,52 @@ def test_sweep_case_failing_at_run_time_names_the_case(tmp_path, capsys, monkeyp
     assert_one_paragraph(err, "sweep case", "supply.flow=10 L/min", "residual 3.200e+00",
                          "thermal runaway", str(out / "cases.jsonl"), "resume")
     assert len((out / "cases.jsonl").read_text().splitlines()) == 1  # the 5 L/min case
+
+
+# --- the other commands a user types by hand ------------------------------------------------
+def test_scene_file_with_broken_toml_is_named(tmp_path, capsys):
+    path = tmp_path / "my_rig.toml"
+    path.write_text("title = \n", encoding="utf-8")
+    code, err = run_cli(capsys, "check", path)
+    # before: "scene = '<toml>' is not allowed: valid TOML (...)" without the file
+    assert code == 1
+    assert_one_paragraph(err, str(path), "valid TOML", "line 1")
+
+
+@pytest.mark.parametrize(("temperatures", "words"), [
+    ("40 kg", ["--temperatures", "'40 kg'", "K"]),          # before: ValueError traceback
+    ("-300 degC", ["--temperatures", "'-300 degC'", "absolute zero"]),
+    ("40,-280", ["--temperatures", "'-280'", "absolute zero"]),
+])
+def test_lubricant_table_bad_temperatures(capsys, temperatures, words):
+    code, err = run_cli(capsys, "lubricant", "ISO_VG46", "--temperatures", temperatures)
+    assert code == 1
+    assert_one_paragraph(err, *words)
+
+
+def test_lubricant_table_temperatures_in_kelvin_accepted(capsys):
+    code = cli.main(["lubricant", "ISO_VG46", "--temperatures", "40,373.15 K"])
+    out = capsys.readouterr().out
+    assert code == 0 and "\n     40.0 " in out and "\n    100.0 " in out
+
+
+def test_report_of_a_folder_with_a_broken_table(tmp_path, capsys):
+    # before: KeyError 'time [s]' traceback from pandas
+    folder = tmp_path / "results"
+    folder.mkdir()
+    (folder / "scene.toml").write_text(dumps_toml(BASE), encoding="utf-8")
+    (folder / "temperatures.csv").write_text("garbage\n1\n", encoding="utf-8")
+    code, err = run_cli(capsys, "report", folder)
+    assert code == 1
+    assert_one_paragraph(err, "temperatures.csv", "'time [s]'")
+
+
+def test_report_of_a_sweep_folder_with_an_empty_store(tmp_path, capsys):
+    # before: IndexError (list index out of range) traceback
+    folder = tmp_path / "sw"
+    folder.mkdir()
+    (folder / "summary.csv").write_text("case\n", encoding="utf-8")
+    (folder / "cases.jsonl").write_text("", encoding="utf-8")
+    code, err = run_cli(capsys, "report", folder)
+    assert code == 1
+    assert_one_paragraph(err, "cases.jsonl", "one JSON record")

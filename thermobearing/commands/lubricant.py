@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import math
 
 import numpy as np
 
+from ..errors import InputError
 from ..lubricant import load_lubricant, preset_names
 from ..units import to_si
 
@@ -24,13 +26,32 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="gauge pressure for the viscosity/density columns, e.g. '1 GPa'")
 
 
+def _temperatures(text: str) -> np.ndarray:
+    """``--temperatures``: numbers in degC or unit strings ('300 K'), comma-separated [K]."""
+    out = []
+    allowed = "temperatures above absolute zero: numbers in degC or unit strings ('350 K')"
+    for item in (t.strip() for t in text.split(",")):
+        if not item:
+            continue
+        try:
+            kelvin = float(item) + 273.15
+        except ValueError:
+            kelvin = to_si(item, "temperature", field="--temperatures")
+        if not (math.isfinite(kelvin) and kelvin > 0):
+            raise InputError("--temperatures", item, allowed)
+        out.append(kelvin)
+    if not out:
+        raise InputError("--temperatures", text, allowed)
+    return np.array(out)
+
+
 def run(args: argparse.Namespace) -> int:
     if not args.name:
         print("lubricant presets: " + ", ".join(preset_names()))
         return 0
     lub = load_lubricant(args.name)
-    temps_c = [float(t) for t in str(args.temperatures).split(",") if t.strip()]
-    T = np.array(temps_c) + 273.15
+    T = _temperatures(str(args.temperatures))
+    temps_c = [float(t) - 273.15 for t in T]
     p = to_si(args.pressure, "Pa", field="--pressure")
     print(f"{lub.name} ({lub.kind})")
     print(f"  source: {lub.source}")

@@ -25,6 +25,26 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("folder", help="results folder of `run` or `sweep`")
 
 
+#: columns the report's figures read from each table of a run folder
+_NEEDED = {"temperatures": ("time [s]",), "losses": ("bearing",),
+           "kinematics": ("axial load [kN]",)}
+
+
+def _read_table(path: Path, needed: tuple[str, ...] = ()) -> pd.DataFrame:
+    """A results CSV; a file that is not one (unreadable, or missing the columns the report
+    needs) is an InputError naming the file."""
+    try:
+        df = pd.read_csv(path)
+    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
+        raise InputError(path.name, str(path), f"a CSV table written by thermobearing ({exc})"
+                         ) from None
+    missing = [c for c in needed if c not in df.columns]
+    if missing:
+        raise InputError(path.name, str(path), "a table written by `thermobearing run` with "
+                         "the columns " + ", ".join(repr(c) for c in missing))
+    return df
+
+
 def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
     """Swept values like '15 L/min' -> numbers in a column named 'supply.flow [L/min]'."""
     out = df.copy()
@@ -42,9 +62,14 @@ def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
 def sweep_report(folder: Path) -> Path:
     from ..report import fig_loss_maps, fig_whatif, figure_html
 
-    df = pd.read_csv(folder / "summary.csv")
-    first = json.loads((folder / "cases.jsonl").read_text().splitlines()[0])
-    params = list(first["params"])
+    df = _read_table(folder / "summary.csv", ("case",))
+    store = folder / "cases.jsonl"
+    try:
+        first = json.loads(store.read_text(encoding="utf-8").splitlines()[0])
+        params = list(first["params"])
+    except (IndexError, json.JSONDecodeError, KeyError, TypeError):
+        raise InputError("cases.jsonl", str(store), "the case store of `thermobearing "
+                         "sweep` (one JSON record with 'params' per line)") from None
     df = _numeric_params(df, params)
     pcols = [c for c in df.columns if any(c == p or c.startswith(p + " [") for p in params)]
     results = [c for c in df.columns if c not in pcols and c != "case"]
@@ -81,10 +106,14 @@ def run_report(folder: Path) -> Path:
     from ..scene import loads_scene
 
     scene_toml = (folder / "scene.toml").read_text(encoding="utf-8")
-    scene = loads_scene(scene_toml, base_dir=folder)
-    meta = json.loads((folder / "metadata.json").read_text()) \
-        if (folder / "metadata.json").is_file() else {}
-    tables = {t: pd.read_csv(folder / f"{t}.csv") for t in TABLES
+    scene = loads_scene(scene_toml, base_dir=folder, source=str(folder / "scene.toml"))
+    try:
+        meta = json.loads((folder / "metadata.json").read_text()) \
+            if (folder / "metadata.json").is_file() else {}
+    except json.JSONDecodeError as exc:
+        raise InputError("metadata.json", str(folder / "metadata.json"),
+                         f"the JSON written by `thermobearing run` ({exc})") from None
+    tables = {t: _read_table(folder / f"{t}.csv", _NEEDED.get(t, ())) for t in TABLES
               if (folder / f"{t}.csv").is_file()}
     results = Results(tables=tables, scene_toml=scene_toml,
                       chain=[tuple(x) for x in meta.get("chain", [])],
