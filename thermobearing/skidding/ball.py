@@ -116,7 +116,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                guess: BallSkiddingResult | None = None, tol: float = 1e-9,
                max_iter: int = 150, continuation: bool = True,
                theoretical_reference=None, warm_iterations: int = 25,
-               energy_tol: float = 2e-9, energy_polish: int = 2) -> BallSkiddingResult:
+               energy_tol: float = 2e-9, energy_polish: int = 2,
+               warm_refresh: float = 4.0) -> BallSkiddingResult:
     """Solve the ball/cage/ring equilibrium at one operating point.
 
     Parameters
@@ -137,6 +138,9 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     energy_tol, energy_polish : a converged state whose energy identity |T_shaft omega_i -
         sum heat| / sum heat is above ``energy_tol`` gets up to ``energy_polish`` more chord
         steps (each kept only if it lowers the residual; the identity is required to 1e-8).
+    warm_refresh : warm starts: refresh the Jacobian analytically when the chord steps would
+        need more than this many further evaluations (see
+        :func:`~thermobearing.skidding.ball_newton.newton_block`; 0: never).
 
     Returns
     -------
@@ -175,7 +179,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
             X, G, nrm, iters = newton_block(system, X0, G0, tol=tol,
                                             max_iter=min(max_iter, warm_iterations),
                                             jacobian=guess.extra.get("jacobian"),
-                                            give_up=(6, 0.5))
+                                            give_up=(6, 0.5), warm_refresh=warm_refresh)
         except ConvergenceError:
             guess = None
     if guess is None:

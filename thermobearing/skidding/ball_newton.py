@@ -18,6 +18,7 @@ import numba
 import numpy as np
 
 from ..errors import ConvergenceError, InputError
+from .ball_jacobian import analytic_blocks, supports_analytic
 from .ball_residual import N_BALL, N_GLOBAL, ball_residual_system
 
 __all__ = ["JacobianBlocks", "chord_polish", "newton_block", "trust_region"]
@@ -325,7 +326,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                  polish_ratio: float = 1e-2, give_up: tuple[int, float] | None = None,
                  jacobian: JacobianBlocks | None = None, broyden_warm: bool = True,
                  polish_below: float = 0.2e-9, broyden_reuse_ratio: float = 0.5,
-                 stall_after: int = 0):
+                 stall_after: int = 0, analytic: bool = True, warm_refresh: float = 0.0):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
     The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) needs
@@ -367,6 +368,20 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     many iterations, a failed line search or a stall carries the last iterate as
     ``err.iterate = (X, G, norm)``.
 
+    ``analytic`` (session 7): a fresh Jacobian is the analytic one of
+    :func:`~thermobearing.skidding.ball_jacobian.analytic_blocks` (forward-mode derivatives
+    through the compiled residual; about 2-3 residual evaluations of CPU instead of the
+    batch of nine perturbed states) when the system's models have it, else the finite
+    differences. Counted in ``system.n_jac``, not in ``n_eval``.
+
+    ``warm_refresh`` (session 7, warm starts with the analytic Jacobian): after an accepted
+    chord / Broyden step with contraction rho = |F_new| / |F_old|, the steps still needed at
+    that rate are log(polish_below / |F_new|) / log(rho); when that exceeds ``warm_refresh``
+    the handed-over Jacobian is dropped and an analytic one taken at the current iterate
+    (Newton then converges in 1-2 evaluations). 0 disables it. Measured on the BM-5 5 x 5
+    map (Z = 16, +2 % steps, cost in residual evaluations with a Jacobian counted as 2.3):
+    off 6.95 / 6.35 (cold / hot oil), 2.5: 6.05 / 5.8, 3.5-4.5: 6.1-6.2 / 5.5-5.6, 6: 6.4 / 5.65.
+
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """
     xs, gs = system.scales()
@@ -376,6 +391,11 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     norm_of = _residual_norm
 
     def jacobian_fd(X, G, R, Gc, Gk):
+        blocks = analytic_blocks(system, X, G) if analytic else None
+        if blocks is not None:
+            system.n_jac += 1
+            system.last_jacobian = blocks
+            return factor(blocks, R, Gc, Gk, G)
         eye_x = np.zeros((N_BALL, 1, N_BALL))
         eye_x[np.arange(N_BALL), 0, np.arange(N_BALL)] = fd_step * xs
         eye_g = np.zeros((nb, N_GLOBAL))
@@ -406,6 +426,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 Sinv = np.linalg.pinv(S)   # least-squares step of a singular Schur complement
         return Ainv, Ainv_B, C, np.ascontiguousarray(Sinv)
 
+    can_analytic = analytic and supports_analytic(system)
     R, Gc, Gk, _ = system.evaluate(X, G)
     nrm = norm_of(R, Gc, Gk)
     it = 0
@@ -467,6 +488,12 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                     hist[m, :Z * N_BALL] = dX.ravel()
                     hist[m, Z * N_BALL:] = dG
                     m += 1
+                if (broyden and warm_refresh and can_analytic and jac is not None
+                        and nn > polish_below and 0.0 < nn < nrm
+                        and math.log(polish_below / nn) < warm_refresh * math.log(nn / nrm)):
+                    # the chord / Broyden steps at this contraction rate would need more than
+                    # ``warm_refresh`` further evaluations: a fresh analytic Jacobian here
+                    jac = None
                 nrm, last_ratio = nn, nn / nrm
             else:
                 jac = None

@@ -510,6 +510,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self._g0a, self._g0r = self.Fa / self.F_s, self.Fr / self.F_s
         self.last_norm = math.inf
         self.n_eval = 0
+        self.n_jac = 0               # analytic Jacobians (skidding.ball_jacobian) taken
         # constants of the residual, computed once (validated here, used unchecked inside)
         arcs = self.arcs
         self.cx0 = arcs.centre_x.astype(float)
@@ -826,6 +827,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         new = copy.copy(self)
         new._set_loads(radial_load, axial_load)
         new.n_eval = 0
+        new.n_jac = 0
         new.last_jacobian = None
         new._last = None
         new._last_tr = None

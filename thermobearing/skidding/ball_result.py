@@ -195,7 +195,8 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
         ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
         spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
         shaft_torque=float(det["shaft_torque"]), state_builder=build_state, unknowns=(X, G),
-        extra={"n_eval": system.n_eval, "inner_contact_angle": ai, "outer_contact_angle": ao,
+        extra={"n_eval": system.n_eval, "n_jacobian": system.n_jac,
+               "inner_contact_angle": ai, "outer_contact_angle": ao,
                "race_names": names, "residual": R,
                "traction_law": system.models.traction_law,
                "jacobian": system.last_jacobian, "system": system})

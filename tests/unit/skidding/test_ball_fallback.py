@@ -36,18 +36,39 @@ def setting():
 
 
 def test_newton_alone_stalls_there(setting):
-    # the reason for the fallback: the damped Newton does not converge at this point
+    # the reason for the fallback: the damped Newton with the finite-difference Jacobian does
+    # not converge at this point
     b, m = setting
     system = ball_residual_system(b, m, W3000, 1000.0, FA, 16)
     X0, G0, _ = race_control_guess(b, W3000, 1000.0, FA, 16)
     with pytest.raises(ConvergenceError) as info:
-        newton_block(system, X0, G0, max_iter=60)
+        newton_block(system, X0, G0, max_iter=60, analytic=False)
     X, G, nrm = info.value.iterate
     assert 1e-9 < nrm < 1e-2 and X.shape == (16, 6) and G.shape == (3,)
 
 
-def test_solve_ball_converges_through_the_fallback(setting):
+def test_newton_with_the_analytic_jacobian_converges_there(setting):
+    # session 7: with the analytic Jacobian (skidding/ball_jacobian.py; exact where the
+    # finite-difference spin columns straddle the Eyring knee) the same Newton converges
     b, m = setting
+    system = ball_residual_system(b, m, W3000, 1000.0, FA, 16)
+    X0, G0, _ = race_control_guess(b, W3000, 1000.0, FA, 16)
+    X, G, nrm, it = newton_block(system, X0, G0, max_iter=60)
+    assert nrm <= 1e-9 and it < 60
+    r = solve_ball(b, m, W3000, 1000.0, FA, n_balls=16, theoretical_reference=0.45)
+    assert "fallback" not in r.extra
+    assert r.cage_speed_ratio == pytest.approx(G[2] / W3000, rel=1e-9)
+
+
+def test_solve_ball_converges_through_the_fallback(setting, monkeypatch):
+    # the fallback path, exercised with the finite-difference Jacobian (still the path of
+    # models without the analytic one)
+    from thermobearing.skidding import ball as ball_mod
+
+    b, m = setting
+    original = ball_mod.newton_block
+    monkeypatch.setattr(ball_mod, "newton_block",
+                        lambda *a, **k: original(*a, **{**k, "analytic": False}))
     r = solve_ball(b, m, W3000, 1000.0, FA, n_balls=16, theoretical_reference=0.45)
     assert r.converged and r.residual_norm <= 1e-9
     assert r.extra.get("fallback") == "trust_region"

@@ -1,0 +1,210 @@
+"""The analytic Jacobian of the ball skidding residual (skidding/ball_jacobian.py).
+
+References: central finite differences of the compiled residual itself (the same scaled
+residual and unknowns; with h = 1e-6 scaled the analytic blocks agree to 2e-7 - 4e-6 of the
+largest entry; smaller steps disagree more, 1e-4 at h = 1e-8, where round-off of the radial
+force balance -- contact loads of kN against their small sum -- takes over), the traction
+law's own fast path
+(traction._eyring_smooth_node) and the contact integration's (contact_traction.
+_integrate_contacts). Solver-level: Newton with the analytic Jacobian converges to the state
+of Newton with the finite-difference one (the same equations), warm starts to cold starts.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from tests.unit.skidding.helpers import qj_like, simple_models
+from thermobearing.contact_traction import _integrate_contacts, _rule
+from thermobearing.skidding import ball as ball_mod
+from thermobearing.skidding import ball_newton
+from thermobearing.skidding.ball import solve_ball
+from thermobearing.skidding.ball_jacobian import (
+    _contact_traction_jac,
+    _eyring_smooth_grad,
+    analytic_blocks,
+    supports_analytic,
+)
+from thermobearing.skidding.ball_residual import (
+    A_RY,
+    G_A,
+    G_B,
+    G_CURV,
+    G_OMX,
+    G_OMY,
+    G_OMZ,
+    G_Q,
+    G_RX,
+    G_UE,
+    G_VX,
+    G_VY,
+    N_BALL,
+    N_GEO,
+    N_GLOBAL,
+    _ball_geometry,
+    guarded_film_array,
+)
+from thermobearing.traction import EYRING, _eyring_smooth_node
+
+W1800 = 1800 * math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def bearing():
+    return qj_like()
+
+
+def _models(bearing, temperature, speed):
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding.ball_models import default_ball_models
+    from thermobearing.state import OilSupply
+
+    return default_ball_models(bearing, load_lubricant("ISO_VG46"), temperature=temperature,
+                               speed=speed, supply=OilSupply("jet", 33 / 60000, 313.15))
+
+
+def _central_blocks(system, X, G, h=1e-6):
+    """Central differences of the scaled residual in the scaled unknowns, block layout of
+    ball_newton._fd_blocks (every ball's column c perturbed at once: the balls are coupled
+    only through the globals)."""
+    xs, gs = system.scales()
+    Z = system.Z
+    nb = N_BALL + N_GLOBAL
+    out = {}
+    for sign in (1.0, -1.0):
+        Xb = np.empty((nb, Z, N_BALL))
+        Xb[:] = X
+        Gb = np.empty((nb, N_GLOBAL))
+        Gb[:] = G
+        for c in range(N_BALL):
+            Xb[c, :, c] += sign * h * xs[c]
+        for g in range(N_GLOBAL):
+            Gb[N_BALL + g, g] += sign * h * gs[g]
+        out[sign] = system.evaluate(Xb, Gb)[:3]
+    (Rp, Gcp, Gkp), (Rm, Gcm, Gkm) = out[1.0], out[-1.0]
+    A = np.transpose((Rp[:N_BALL] - Rm[:N_BALL]) / (2 * h), (1, 2, 0))
+    B = np.transpose((Rp[N_BALL:] - Rm[N_BALL:]) / (2 * h), (1, 2, 0))
+    C = np.transpose((Gcp[:N_BALL] - Gcm[:N_BALL]) / (2 * h), (1, 2, 0))
+    tot_p = Gcp[N_BALL:].sum(axis=1) + Gkp[N_BALL:]
+    tot_m = Gcm[N_BALL:].sum(axis=1) + Gkm[N_BALL:]
+    Dg = ((tot_p - tot_m) / (2 * h)).T
+    return A, B, C, Dg
+
+
+@pytest.mark.parametrize("temperature, rpm, fa", [(303.15, 1800.0, 10e3), (353.15, 600.0, 2e3),
+                                                  (330.0, 3000.0, 0.0)])
+def test_analytic_blocks_equal_central_differences(bearing, temperature, rpm, fa):
+    w = rpm * math.pi / 30
+    models = _models(bearing, temperature, w)
+    r = solve_ball(bearing, models, w, 1000.0, fa, theoretical_reference=0.45)
+    system = r.extra["system"]
+    X, G = r.unknowns
+    assert supports_analytic(system)
+    J = analytic_blocks(system, X, G)
+    ref = _central_blocks(system, X, G)
+    for name, fd in zip(("A", "B", "C", "Dg"), ref, strict=True):
+        an = getattr(J, name)
+        scale = np.abs(fd).max()
+        # 2e-5 of the block's largest entry: the finite-difference truncation and round-off
+        # (the cage torque models and the R_x dependence of the Hertz constants enter by
+        # forward differences in the analytic path too)
+        assert np.abs(an - fd).max() <= 2e-5 * scale, name
+
+
+def test_eyring_gradient_equals_the_law_and_its_differences():
+    lam, tau0 = 0.07, 5e6
+    for s, p, rate in ((0.3, 1.2e9, 3e9), (1e-5, 8e8, 1e12), (2.0, 2e9, 1e6), (0.0, 1e9, 1e9)):
+        tau, ts, tp, tr = _eyring_smooth_grad(lam, tau0, 1.0 / tau0, s, p, rate)
+        assert tau == pytest.approx(_eyring_smooth_node(lam, tau0, 1.0 / tau0, s, p, rate, 1.0),
+                                    rel=1e-13, abs=1e-300)
+        base = (s, p, rate)
+        for i in range(3):
+            x = base[i]
+            hh = 1e-6 * max(abs(x), 1e-3)
+            lo = max(x - hh, 0.0)
+            args_up = tuple(x + hh if j == i else base[j] for j in range(3))
+            args_dn = tuple(lo if j == i else base[j] for j in range(3))
+            up = _eyring_smooth_grad(lam, tau0, 1.0 / tau0, *args_up)[0]
+            dn = _eyring_smooth_grad(lam, tau0, 1.0 / tau0, *args_dn)[0]
+            fd = (up - dn) / (x + hh - lo)
+            assert (ts, tp, tr)[i] == pytest.approx(fd, rel=1e-5, abs=1e-12 * abs(tau) + 1e-30)
+
+
+def test_contact_tractions_of_the_jacobian_pass_equal_the_integration(bearing):
+    models = _models(bearing, 330.0, W1800)
+    r = solve_ball(bearing, models, W1800, 1000.0, 8e3, theoretical_reference=0.45)
+    s = r.extra["system"]
+    X, G = r.unknowns
+    nk = s._arc.shape[1]
+    n = s.Z * nk
+    geo = np.empty((N_GEO, n))
+    _ball_geometry(X.reshape(1, s.Z, N_BALL).copy(), G.reshape(1, 3).copy(), s._cpsi, s._arc,
+                   s._c, geo)
+    ry = np.tile(s._arc[A_RY], s.Z)
+    film = guarded_film_array(geo[G_UE].copy(), geo[G_Q].copy(), geo[G_RX].copy(), ry,
+                              s._film_params)
+    ln_tab, slope_tab, inv_dp, _ = s._tab
+    rule = _rule("point", 8, 4)
+    args = (geo[G_Q], geo[G_A], geo[G_B], geo[G_VY], geo[G_VX], geo[G_OMZ], geo[G_OMX],
+            geo[G_OMY], geo[G_CURV], film)
+    ref = np.empty((n, 6))
+    _integrate_contacts(EYRING, s._law_params, 1, ln_tab, slope_tab, inv_dp, np.empty((0, 0)),
+                        *args, *rule, True, False, ref, np.empty((0, 5, 5)), np.empty((0, 5)))
+    tr = np.empty((n, 5))
+    jac = np.empty((n, 5, 9))
+    _contact_traction_jac(s._law_params, ln_tab, slope_tab, inv_dp, *args, *rule, tr, jac)
+    np.testing.assert_allclose(tr, ref[:, :5], rtol=1e-11, atol=1e-12 * np.abs(ref).max())
+    assert np.all(jac[geo[G_Q] == 0.0] == 0.0)          # unloaded contacts: no traction
+
+
+def test_models_without_the_compiled_path_fall_back_to_differences(bearing):
+    models = simple_models(bearing)            # a Python film callable: no analytic path
+    r = solve_ball(bearing, models, W1800, 1000.0, 6e3, theoretical_reference=0.45)
+    assert not supports_analytic(r.extra["system"])
+    assert analytic_blocks(r.extra["system"], *r.unknowns) is None
+    assert r.extra["n_jacobian"] == 0 and r.converged
+
+
+def test_newton_with_the_analytic_jacobian_reaches_the_same_state(bearing):
+    models = _models(bearing, 303.15, W1800)
+    out = {}
+    for flag in (True, False):
+        original = ball_newton.newton_block
+
+        def patched(*a, _flag=flag, _orig=original, **k):
+            return _orig(*a, **{**k, "analytic": _flag})
+
+        ball_mod.newton_block = patched
+        try:
+            out[flag] = solve_ball(bearing, models, W1800, 1000.0, 3e3,
+                                   theoretical_reference=0.45)
+        finally:
+            ball_mod.newton_block = original
+    a, b = out[True], out[False]
+    assert a.cage_speed_ratio == pytest.approx(b.cage_speed_ratio, rel=1e-9)
+    assert a.shaft_torque == pytest.approx(b.shaft_torque, rel=1e-7)
+    assert a.shaft_torque * W1800 == pytest.approx(a.heat["total"], rel=1e-8)
+    assert a.extra["n_jacobian"] > 0 and b.extra["n_jacobian"] == 0
+    # each analytic Jacobian replaces a batch of nine perturbed residuals
+    assert a.extra["n_eval"] < b.extra["n_eval"]
+
+
+@pytest.mark.parametrize("temperature", [303.15, 353.15])
+def test_warm_step_with_refresh_converges_to_the_cold_start(bearing, temperature):
+    models = _models(bearing, temperature, W1800)
+    r0 = solve_ball(bearing, models, W1800, 1000.0, 10e3, theoretical_reference=0.45)
+    fa = 1.02 * 10e3 + 20.0                     # the BM-5 transient-like step
+    warm = solve_ball(bearing, models, W1800, 1000.0, fa, guess=r0,
+                      theoretical_reference=0.45)
+    cold = solve_ball(bearing, models, W1800, 1000.0, fa, theoretical_reference=0.45)
+    no_refresh = solve_ball(bearing, models, W1800, 1000.0, fa, guess=r0,
+                            theoretical_reference=0.45, warm_refresh=0.0)
+    for other in (cold, no_refresh):
+        assert warm.cage_speed_ratio == pytest.approx(other.cage_speed_ratio, rel=1e-9)
+        assert warm.shaft_torque == pytest.approx(other.shaft_torque, rel=1e-7)
+        assert warm.heat["total"] == pytest.approx(other.heat["total"], rel=1e-7)
+    assert warm.shaft_torque * W1800 == pytest.approx(warm.heat["total"], rel=1e-8)
+    assert warm.residual_norm <= 1e-9

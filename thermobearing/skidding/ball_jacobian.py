@@ -1,0 +1,599 @@
+"""Analytic Jacobian of the ball skidding residual (forward-mode derivatives, compiled).
+
+One job: the structured Jacobian blocks (A, B, C, Dg of
+:class:`~thermobearing.skidding.ball_newton.JacobianBlocks`) of
+:class:`~thermobearing.skidding.ball_residual.ball_residual_system` at one state, by the
+chain rule through the same equations instead of nine perturbed residual evaluations
+(:func:`analytic_blocks`). Issue 5 item 4 asks for "Newton with an analytic or structured
+finite-difference Jacobian"; the finite-difference one costs 8-9 residual evaluations, this
+one about two (measured in the tests / BM-5), so a warm start can afford a fresh Jacobian.
+
+Chain (per ball j, raceway arc k; directions d = b_a, b_r, Omega_a, Omega_r, Omega_t of the
+ball and delta_a, delta_r, omega_c of the ring and cage; the pocket force Q_p enters only the
+pocket terms):
+
+1. contact geometry (:func:`~thermobearing.skidding.ball_residual._ball_geometry`): arc
+   centre -> ball centre distance L, normal (n_a, n_r), approach, contact angle, R_x, the
+   Hamrock-Brewe stiffness K (Hamrock & Brewe 1983; ``hertz._hamrock_brewe_point_nb``),
+   Q = K delta^1.5 and the Hertz ellipse a, b ~ Q^(1/3) (Harris & Kotzalas 2007, ch. 6)
+   -- differentiated by hand, the R_x dependence of K, a, b by a forward difference in R_x;
+   the slip kinematics (V_x, V_y, spin components, entrainment speed) are bilinear in the
+   unknowns and the normal and differentiated exactly;
+2. film: Hamrock & Dowson 1977 h ~ u^0.67 W^-0.067 (``film._hd1977_central_nb``), so
+   dh/du = 0.67 h/u, dh/dQ = -0.067 h/Q (0 under the speed / load floors and at the thickness
+   floor), R_x by the same forward difference;
+3. contact integration (:func:`thermobearing.contact_traction._integrate_contacts`, fast path
+   of the Eyring law with the smooth cap, seed paper 002 eqs. 11-14 / Johnson 1985 ch. 7): per
+   quadrature node t = -tau(s, p, eta(p)/h) dA dv/|dv| with the derivatives of tau (the law's
+   own formula, :func:`_eyring_smooth_grad`) with respect to the slide speed, the pressure
+   and eta/h; d ln eta/dp from the same viscosity table (piecewise-linear ln eta); the node
+   velocities and weights scale with a and b. Gives d(F_x, F_y, M_x, M_y, M_z)/d(Q, a, b,
+   V_y, V_x, omega_z, omega_x, omega_y, h) per contact (:func:`_contact_traction_jac`);
+4. ball balances (:func:`~thermobearing.skidding.ball_residual._ball_forces`): products of
+   the above with the contact normal and lever arms, the pocket friction, centrifugal force,
+   ball drag and gyroscopic moment, all differentiated exactly; the cage and drag torques
+   (Python model callables of the cage speed) by a forward difference in omega_c.
+
+Only the solver's default models have this path (compiled film, tabulated viscosity, Eyring
+with the smooth cap and tau0 > 0, drag at a fixed radius); :func:`analytic_blocks` returns
+None otherwise and the caller uses finite differences. Units: the blocks are derivatives of
+the scaled residual with respect to the scaled unknowns (dimensionless), exactly as the
+finite-difference blocks; tests compare both (agreement ~1e-6 relative, the
+finite-difference truncation).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from ..contact_traction import _peak_pressure, _table_viscosity, refresh_stale_caches
+from ..hertz import _ellipse_nb, _hamrock_brewe_point_nb
+from ..traction import EYRING
+from .ball_residual import (
+    A_INNER,
+    A_RY,
+    A_SIGN,
+    A_WRACE,
+    C_D,
+    C_DM,
+    C_EP,
+    C_FS,
+    C_J,
+    C_M,
+    C_MS,
+    C_MUP,
+    C_TS,
+    C_VEPS,
+    G_A,
+    G_ALPHA,
+    G_APPROACH,
+    G_B,
+    G_CURV,
+    G_K,
+    G_L,
+    G_NA,
+    G_NR,
+    G_OMX,
+    G_OMY,
+    G_OMZ,
+    G_PA,
+    G_PR,
+    G_Q,
+    G_RX,
+    G_UE,
+    G_VX,
+    G_VY,
+    N_BALL,
+    N_GEO,
+    N_GLOBAL,
+    _ball_geometry,
+    guarded_film,
+)
+
+__all__ = ["analytic_blocks", "supports_analytic"]
+
+# contact inputs of the traction derivative: Q, a, b, V_y, V_x, omega_z, omega_x, omega_y, h
+I_Q, I_A, I_B, I_VY, I_VX, I_WZ, I_WX, I_WY, I_H = range(9)
+N_IN = 9
+# directions of the geometry / kinematics derivative
+D_BX, D_BR, D_OA, D_OR, D_OT, D_DA, D_DR, D_WC = range(8)
+N_DIR = 8
+_RX_STEP = 1e-7            # relative forward-difference step in R_x (Hertz constants, film)
+
+
+@numba.njit(cache=True, inline="always")
+def _eyring_smooth_grad(lam: float, tau0: float, inv_tau0: float, s: float, p: float,
+                        rate: float) -> tuple[float, float, float, float]:
+    """The Eyring law with the smooth cap (:func:`thermobearing.traction._eyring_smooth_node`
+    without the weight) and its partial derivatives: (tau [Pa], dtau/ds [Pa s/m], dtau/dp
+    [-], dtau/d(rate) [m/s]) at slide speed s >= 0 [m/s], pressure p >= 0 [Pa], rate =
+    eta/h [Pa s/m]. tau_E = tau0 asinh(rate s / tau0), tau_L = Lambda p,
+    tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2): dtau/dtau_E = tau_L^3 / (..)^(3/2),
+    dtau/dtau_L = tau_E^3 / (..)^(3/2), dtau_E/ds = rate / sqrt(1 + x^2),
+    dtau_E/drate = s / sqrt(1 + x^2), x = rate s / tau0 (seed paper 002 eqs. 11-14)."""
+    x = rate * s * inv_tau0
+    x2 = x * x
+    sq = math.sqrt(1.0 + x2)
+    # asinh(x) = log1p(x + x^2 / (1 + sqrt(1 + x^2))) (x >= 0), reusing the square root
+    tau_e = tau0 * math.log1p(x + x2 / (1.0 + sq))
+    tau_l = lam * p
+    if tau_l > 0.0:
+        inv = 1.0 / math.sqrt(tau_l * tau_l + tau_e * tau_e)
+        tau = tau_e * tau_l * inv
+        inv3 = inv * inv * inv
+        d_e = tau_l * tau_l * tau_l * inv3
+        d_l = tau_e * tau_e * tau_e * inv3
+    else:
+        tau = tau_e * 1e-150
+        d_e = 1e-150
+        d_l = 0.0
+    inv_sq = 1.0 / sq
+    return tau, d_e * rate * inv_sq, d_l * lam, d_e * s * inv_sq
+
+
+@numba.njit(cache=True)
+def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                          inv_dp: float, q: np.ndarray, a: np.ndarray, b: np.ndarray,
+                          vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
+                          wy: np.ndarray, curv: np.ndarray, h: np.ndarray, xg: np.ndarray,
+                          yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
+                          pidx: np.ndarray, pshape_u: np.ndarray, tr: np.ndarray,
+                          out: np.ndarray) -> None:
+    """Tractions and their derivatives for the Eyring smooth-cap law with tabulated viscosity
+    (the fast path of :func:`thermobearing.contact_traction._integrate_contacts`, point
+    contacts). Inputs as there (flat, one entry per contact). Writes ``tr[c]`` = (F_x, F_y,
+    M_x, M_y, M_z) [N, N m] and ``out[c, i, j]`` = d tr_i / d in_j with in = (Q [N], a [m],
+    b [m], V_y, V_x [m/s], omega_z, omega_x, omega_y [rad/s], h [m]).
+
+    Per node (see the module docstring): d p_node = kxx d dv_x + kxy d dv_y + e_x sigma (and
+    y), with k the slide-speed Jacobian of the node force and sigma its change through the
+    pressure, the viscosity over film (rate) and the node area."""
+    lam, tau0, inv_tau0 = law_params[0], law_params[1], law_params[3]
+    nu = pshape_u.size
+    nk = xg.size
+    rate_u = np.empty(nu)
+    lam_u = np.empty(nu)
+    S = np.empty((6, N_IN))
+    dpx = np.empty(N_IN)
+    dpy = np.empty(N_IN)
+    last = ln_tab.size - 1
+    for c in range(q.size):
+        for i in range(5):
+            tr[c, i] = 0.0
+            for j in range(N_IN):
+                out[c, i, j] = 0.0
+        p0 = _peak_pressure(q[c], a[c], b[c], True)
+        if p0 == 0.0:
+            continue
+        ac, bc, qc = a[c], b[c], q[c]
+        ab = ac * bc
+        a2c = 0.5 * curv[c] * ac * ac
+        wyc, wzc, wxc = wy[c], wz[c], wx[c]
+        cx2, cy = wyc * a2c, wzc * bc
+        cx, cy2 = wzc * ac, wxc * a2c
+        inv_h = 1.0 / h[c]
+        inv_a, inv_b, inv_q = 1.0 / ac, 1.0 / bc, 1.0 / qc
+        for u in range(nu):
+            pu = p0 * pshape_u[u]
+            rate_u[u] = _table_viscosity(pu, ln_tab, slope_tab, inv_dp) * inv_h
+            iu = int(pu * inv_dp)
+            if iu > last:
+                iu = last
+            lam_u[u] = slope_tab[iu] * inv_dp          # d ln eta / dp [1/Pa]
+        for i in range(6):
+            for d in range(N_IN):
+                S[i, d] = 0.0
+        sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = 0.0
+        vxc, vyc = vx[c], vy[c]
+        curv_a = curv[c] * ac
+        for k in range(nk):
+            xk, yk = xg[k], yg[k]
+            xk2 = xk * xk
+            dvx = vxc + cx2 * xk2 - cy * yk
+            dvy = vyc + cx * xk - cy2 * xk2
+            s = math.sqrt(dvx * dvx + dvy * dvy)
+            pres = p0 * pshape[k]
+            rate = rate_u[pidx[k]]
+            w = ab * area_w[k]
+            tau, ts, tp, trr = _eyring_smooth_grad(lam, tau0, inv_tau0, s, pres, rate)
+            if s > 0.0:
+                inv_s = 1.0 / s
+                ex, ey = dvx * inv_s, dvy * inv_s
+                ratio = tau * inv_s
+                ps = w * ratio
+            else:
+                ex = ey = 0.0
+                ratio = ts
+                ps = 0.0
+            px, py = ps * dvx, ps * dvy
+            sx0 += px
+            sx1 += px * xk2
+            sx2 += px * yk
+            sy0 += py
+            sy1 += py * xk2
+            sy2 += py * xk
+            kxx = w * (ts * ex * ex + ratio * (1.0 - ex * ex))
+            kyy = w * (ts * ey * ey + ratio * (1.0 - ey * ey))
+            kxy = w * (ts - ratio) * ex * ey
+            # sigma: d(tau w) at fixed slide velocity per d ln p0 (pressure and viscosity),
+            # per d h, and per d ln(a) or d ln(b) (p0 ~ 1/(a b), dA ~ a b)
+            gp = w * pres * (tp + trr * rate * lam_u[pidx[k]])
+            sig_q = gp * inv_q
+            sig_h = -w * trr * rate * inv_h
+            sig_ab = tau * w - gp
+            # the nine directions, unrolled (no branches in the node loop): node velocity
+            # change (ddx, ddy) and sigma per unit change of Q, a, b, V_y, V_x, omega_z,
+            # omega_x, omega_y, h
+            ddx_a = wyc * curv_a * xk2
+            ddy_a = wzc * xk - wxc * curv_a * xk2
+            sa, sb = sig_ab * inv_a, sig_ab * inv_b
+            dpx[I_Q], dpy[I_Q] = ex * sig_q, ey * sig_q
+            dpx[I_A] = kxx * ddx_a + kxy * ddy_a + ex * sa
+            dpy[I_A] = kxy * ddx_a + kyy * ddy_a + ey * sa
+            dpx[I_B] = -kxx * wzc * yk + ex * sb
+            dpy[I_B] = -kxy * wzc * yk + ey * sb
+            dpx[I_VY], dpy[I_VY] = kxy, kyy
+            dpx[I_VX], dpy[I_VX] = kxx, kxy
+            dpx[I_WZ] = -kxx * bc * yk + kxy * ac * xk
+            dpy[I_WZ] = -kxy * bc * yk + kyy * ac * xk
+            dpx[I_WX], dpy[I_WX] = -kxy * a2c * xk2, -kyy * a2c * xk2
+            dpx[I_WY], dpy[I_WY] = kxx * a2c * xk2, kxy * a2c * xk2
+            dpx[I_H], dpy[I_H] = ex * sig_h, ey * sig_h
+            for d in range(N_IN):
+                S[0, d] += dpx[d]
+            for d in range(N_IN):
+                S[1, d] += dpx[d] * xk2
+            for d in range(N_IN):
+                S[2, d] += dpx[d] * yk
+            for d in range(N_IN):
+                S[3, d] += dpy[d]
+            for d in range(N_IN):
+                S[4, d] += dpy[d] * xk2
+            for d in range(N_IN):
+                S[5, d] += dpy[d] * xk
+        # F_x = -sum px, F_y = -sum py, M_x = a2c sum py x^2, M_y = -a2c sum px x^2,
+        # M_z = b sum px y - a sum py x (contact_traction._integrate_contacts)
+        tr[c, 0] = -sx0
+        tr[c, 1] = -sy0
+        tr[c, 2] = a2c * sy1
+        tr[c, 3] = -a2c * sx1
+        tr[c, 4] = bc * sx2 - ac * sy2
+        for d in range(N_IN):
+            out[c, 0, d] = -S[0, d]
+            out[c, 1, d] = -S[3, d]
+            out[c, 2, d] = a2c * S[4, d]
+            out[c, 3, d] = -a2c * S[1, d]
+            out[c, 4, d] = bc * S[2, d] - ac * S[5, d]
+        # the prefactors a2c = curv a^2 / 2, a and b of the moments
+        out[c, 2, I_A] += curv_a * sy1
+        out[c, 3, I_A] -= curv_a * sx1
+        out[c, 4, I_A] -= sy2
+        out[c, 4, I_B] += sx2
+
+
+@numba.njit(cache=True)
+def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                  c: np.ndarray, film_params: np.ndarray, geo: np.ndarray,
+                  film: np.ndarray, dgeo: np.ndarray, dnorm: np.ndarray) -> None:
+    """Forward-mode derivatives of the contact inputs of one state X (Z, 6), G (3,):
+    ``dgeo[n, i, d]`` = d in_i / d dir_d (in = Q, a, b, V_y, V_x, omega_z, omega_x,
+    omega_y, h; dir = b_a, b_r, Omega_a, Omega_r, Omega_t, delta_a, delta_r, omega_c, SI) and
+    ``dnorm[n, i, d]`` for (n_a, n_r, p_a, p_r) (normal and lever arm of the contact), n =
+    ball * k + arc. ``geo`` / ``film`` are this state's fields from :func:`_ball_geometry` and
+    :func:`guarded_film` (computed here)."""
+    nz = X.shape[0]
+    nk = arc.shape[1]
+    Xb = np.empty((1, nz, X.shape[1]))
+    Xb[0] = X
+    Gb = np.empty((1, G.size))
+    Gb[0] = G
+    _ball_geometry(Xb, Gb, cpsi, arc, c, geo)
+    D, dm, ep = c[C_D], c[C_DM], c[C_EP]
+    wc = G[2]
+    umin, qmin, hmin = film_params[3], film_params[4], film_params[5]
+    dx_ = np.empty(N_DIR)
+    dr_ = np.empty(N_DIR)
+    for j in range(nz):
+        br = X[j, 1]
+        Oa, Or, Ot = X[j, 2], X[j, 3], X[j, 4]
+        for k in range(nk):
+            n = j * nk + k
+            ry = arc[A_RY, k]
+            film[n] = guarded_film(geo[G_UE, n], geo[G_Q, n], geo[G_RX, n], ry, film_params)
+            for d in range(N_DIR):
+                for i in range(N_IN):
+                    dgeo[n, i, d] = 0.0
+                for i in range(4):
+                    dnorm[n, i, d] = 0.0
+                dx_[d] = 0.0
+                dr_[d] = 0.0
+            inner = arc[A_INNER, k]
+            dx_[D_BX] = 1.0
+            dx_[D_DA] = -inner
+            dr_[D_BR] = 1.0
+            dr_[D_DR] = -inner * cpsi[j]
+            L, na, nr = geo[G_L, n], geo[G_NA, n], geo[G_NR, n]
+            approach, alpha, rx = geo[G_APPROACH, n], geo[G_ALPHA, n], geo[G_RX, n]
+            Q, K = geo[G_Q, n], geo[G_K, n]
+            a_e, b_e = geo[G_A, n], geo[G_B, n]
+            pen = approach if approach > 0.0 else 0.0
+            half = 0.5 * D - 0.5 * pen
+            pa, pr = geo[G_PA, n], geo[G_PR, n]
+            w_race = arc[A_WRACE, k]
+            Rr = br + pr
+            wa_rel = wc + Oa - w_race
+            # R_x dependence of the Hertz constants and the film (forward difference)
+            drx_step = rx * _RX_STEP
+            rx2 = rx + drx_step
+            r2, k2, e2, K2 = _hamrock_brewe_point_nb(rx2, ry, ep)
+            dK_rx = (K2 - K) / drx_step
+            if Q > 0.0:
+                a2, b2, _ = _ellipse_nb(Q, r2, k2, e2, ep)
+                da_rx = (a2 - a_e) / drx_step
+                db_rx = (b2 - b_e) / drx_step
+            else:
+                da_rx = db_rx = 0.0
+            h0 = film[n]
+            ue = geo[G_UE, n]
+            # film: h = max(HD(max(|u|, u_min), max(Q, Q_min), R_x), h_min)
+            h_u = h_q = h_rx = 0.0
+            if h0 > hmin:
+                if abs(ue) > umin:
+                    h_u = 0.67 * h0 / ue
+                if Q > qmin:
+                    h_q = -0.067 * h0 / Q
+                h_rx = (guarded_film(ue, Q, rx2, ry, film_params) - h0) / drx_step
+            for d in range(N_DIR):
+                ddx, ddr = dx_[d], dr_[d]
+                dbr = 1.0 if d == D_BR else 0.0
+                dOa = 1.0 if d == D_OA else 0.0
+                dOr = 1.0 if d == D_OR else 0.0
+                dOt = 1.0 if d == D_OT else 0.0
+                dwc = 1.0 if d == D_WC else 0.0
+                if ddx != 0.0 or ddr != 0.0:
+                    dL = na * ddx + nr * ddr
+                    dna = (ddx - na * dL) / L
+                    dnr = (ddr - nr * dL) / L
+                    dpen = dL if approach > 0.0 else 0.0
+                    sg = 1.0 if nr >= 0.0 else -1.0
+                    dalpha = (abs(nr) * dna - na * sg * dnr) / (na * na + nr * nr)
+                    drx = 0.5 * D * arc[A_SIGN, k] * (D / dm) * math.sin(alpha) * dalpha
+                    dK = dK_rx * drx
+                    dQ = pen ** 1.5 * dK + 1.5 * K * math.sqrt(pen) * dpen
+                    if Q > 0.0:
+                        da = a_e / (3.0 * Q) * dQ + da_rx * drx
+                        db = b_e / (3.0 * Q) * dQ + db_rx * drx
+                    else:
+                        da = db = 0.0
+                    dhalf = -0.5 * dpen
+                    dpa = dhalf * na + half * dna
+                    dpr = dhalf * nr + half * dnr
+                else:
+                    dna = dnr = dQ = da = db = dpa = dpr = drx = 0.0
+                dRr = dbr + dpr
+                dspin = dOa * pr + Oa * dpr - dOr * pa - Or * dpa
+                dvt = dwc * Rr + wc * dRr + dspin
+                dwa = dwc + dOa
+                dVx = -dOt * (pr * nr + pa * na) - Ot * (dpr * nr + pr * dnr + dpa * na
+                                                         + pa * dna)
+                dVy = dvt - w_race * dRr
+                dOmx = dwa * nr + wa_rel * dnr - dOr * na - Or * dna
+                dOmy = dOt
+                dOmz = -(dwa * na + wa_rel * dna + dOr * nr + Or * dnr)
+                due = 0.5 * (dspin - dwc * Rr + (w_race - wc) * dRr)
+                dh = h_u * due + h_q * dQ + h_rx * drx
+                dgeo[n, I_Q, d] = dQ
+                dgeo[n, I_A, d] = da
+                dgeo[n, I_B, d] = db
+                dgeo[n, I_VY, d] = dVy
+                dgeo[n, I_VX, d] = dVx
+                dgeo[n, I_WZ, d] = dOmz
+                dgeo[n, I_WX, d] = dOmx
+                dgeo[n, I_WY, d] = dOmy
+                dgeo[n, I_H, d] = dh
+                dnorm[n, 0, d] = dna
+                dnorm[n, 1, d] = dnr
+                dnorm[n, 2, d] = dpa
+                dnorm[n, 3, d] = dpr
+
+
+@numba.njit(cache=True)
+def _jacobian_kernel(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
+                     c: np.ndarray, film_params: np.ndarray, law_params: np.ndarray,
+                     ln_tab: np.ndarray, slope_tab: np.ndarray, inv_dp: float, p_max: float,
+                     xg: np.ndarray, yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
+                     pidx: np.ndarray, pshape_u: np.ndarray, fd_num: float, dfd_dwc: float,
+                     dg0_dwc: float, xs: np.ndarray, gs: np.ndarray) -> tuple:
+    """Blocks (A, B, C, Dg, ok) of the scaled Jacobian at (X, G) (see the module docstring;
+    the same layout as ``ball_newton._fd_blocks``). ``fd_num`` = drag force at the drag
+    radius times that radius [N m] and ``dfd_dwc`` its derivative in omega_c; ``dg0_dwc``
+    = d/d omega_c of the constant global cage-torque residual (both from the Python models).
+    ok is False when a contact pressure leaves the viscosity table (the caller then uses
+    finite differences)."""
+    nz = X.shape[0]
+    nk = arc.shape[1]
+    n = nz * nk
+    geo = np.empty((N_GEO, n))
+    film = np.empty(n)
+    dgeo = np.empty((n, N_IN, N_DIR))
+    dnorm = np.empty((n, 4, N_DIR))
+    A = np.zeros((nz, N_BALL, N_BALL))
+    B = np.zeros((nz, N_BALL, N_GLOBAL))
+    C = np.zeros((nz, N_GLOBAL, N_BALL))
+    Dg = np.zeros((N_GLOBAL, N_GLOBAL))
+    _geometry_jac(X, G, cpsi, arc, c, film_params, geo, film, dgeo, dnorm)
+    for i in range(n):
+        if geo[G_Q, i] > 0.0 and 1.5 * geo[G_Q, i] / (math.pi * geo[G_A, i]
+                                                      * geo[G_B, i]) > p_max:
+            return A, B, C, Dg, False
+    tr = np.empty((n, 5))
+    tj = np.empty((n, 5, N_IN))
+    _contact_traction_jac(law_params, ln_tab, slope_tab, inv_dp, geo[G_Q], geo[G_A],
+                          geo[G_B], geo[G_VY], geo[G_VX], geo[G_OMZ], geo[G_OMX],
+                          geo[G_OMY], geo[G_CURV], film, xg, yg, pshape, area_w, pidx,
+                          pshape_u, tr, tj)
+    D, m, J = c[C_D], c[C_M], c[C_J]
+    F_s, M_s, T_s = c[C_FS], c[C_MS], c[C_TS]
+    mup, veps = c[C_MUP], c[C_VEPS]
+    wc = G[2]
+    dtr = np.empty(5)
+    # per ball: d(sum of the balances)/d dir (8 directions) and d/dQ_p (column 8)
+    dsum = np.empty((8, N_DIR + 1))   # sfa, sfr, sft, sma, smr, smt, gfa, gfr
+    for j in range(nz):
+        for r in range(8):
+            for d in range(N_DIR + 1):
+                dsum[r, d] = 0.0
+        for k in range(nk):
+            ci = j * nk + k
+            Q, na, nr = geo[G_Q, ci], geo[G_NA, ci], geo[G_NR, ci]
+            pa, pr = geo[G_PA, ci], geo[G_PR, ci]
+            Fx, Fy, Mx, Mz = tr[ci, 0], tr[ci, 1], tr[ci, 2], tr[ci, 4]
+            fa = -Q * na + Fx * nr
+            fr = -Q * nr - Fx * na
+            ft = Fy
+            inner = arc[A_INNER, k]
+            for d in range(N_DIR):
+                for i in range(5):
+                    acc = 0.0
+                    for q in range(N_IN):
+                        acc += tj[ci, i, q] * dgeo[ci, q, d]
+                    dtr[i] = acc
+                dQ = dgeo[ci, I_Q, d]
+                dna, dnr = dnorm[ci, 0, d], dnorm[ci, 1, d]
+                dpa, dpr = dnorm[ci, 2, d], dnorm[ci, 3, d]
+                dfa = -dQ * na - Q * dna + dtr[0] * nr + Fx * dnr
+                dfr = -dQ * nr - Q * dnr - dtr[0] * na - Fx * dna
+                dft = dtr[1]
+                dsum[0, d] += dfa
+                dsum[1, d] += dfr
+                dsum[2, d] += dft
+                dsum[3, d] += dpr * ft + pr * dft + dtr[2] * nr + Mx * dnr - dtr[4] * na \
+                    - Mz * dna
+                dsum[4, d] += -dpa * ft - pa * dft - dtr[2] * na - Mx * dna - dtr[4] * nr \
+                    - Mz * dnr
+                dsum[5, d] += dpa * fr + pa * dfr - dpr * fa - pr * dfa + dtr[3]
+                dsum[6, d] += inner * dfa
+                dsum[7, d] += inner * dfr
+        # pocket friction f = mu Q_p w / sqrt(|w|^2 + v_eps^2), w = (D/2)(Omega_r, -Omega_a)
+        br = X[j, 1]
+        Qp = X[j, 5]
+        sgn = 1.0 if Qp >= 0.0 else -1.0
+        pct = -sgn * 0.5 * D
+        wa_, wr_ = 0.5 * D * X[j, 3], -0.5 * D * X[j, 2]
+        wden = math.sqrt(wa_ * wa_ + wr_ * wr_ + veps * veps)
+        inv_w, inv_w3 = 1.0 / wden, 1.0 / (wden * wden * wden)
+        fpa_q, fpr_q = mup * wa_ * inv_w, mup * wr_ * inv_w          # d/dQ_p
+        fpa_wa = mup * Qp * (inv_w - wa_ * wa_ * inv_w3)
+        fpa_wr = -mup * Qp * wa_ * wr_ * inv_w3
+        fpr_wr = mup * Qp * (inv_w - wr_ * wr_ * inv_w3)
+        fpr_wa = fpa_wr
+        # d w_a / d Omega_r = D/2, d w_r / d Omega_a = -D/2
+        fpa_oa, fpa_or = -0.5 * D * fpa_wr, 0.5 * D * fpa_wa
+        fpr_oa, fpr_or = -0.5 * D * fpr_wr, 0.5 * D * fpr_wa
+        # physical derivatives of the residual rows in the 8 directions + Q_p (index 8)
+        dR = np.zeros((N_BALL, N_DIR + 1))
+        dG = np.zeros((N_GLOBAL, N_DIR + 1))
+        for d in range(N_DIR):
+            dR[0, d] = dsum[0, d] / F_s
+            dR[1, d] = dsum[1, d] / F_s
+            dR[2, d] = dsum[2, d] / F_s
+            dR[3, d] = dsum[3, d] / M_s
+            dR[4, d] = dsum[4, d] / M_s
+            dR[5, d] = dsum[5, d] / M_s
+            dG[0, d] = -dsum[6, d] / F_s
+            dG[1, d] = -dsum[7, d] * cpsi[j] / F_s
+        dR[0, D_OA] += fpa_oa / F_s
+        dR[0, D_OR] += fpa_or / F_s
+        dR[0, 8] += fpa_q / F_s
+        dR[1, D_OA] += fpr_oa / F_s
+        dR[1, D_OR] += fpr_or / F_s
+        dR[1, 8] += fpr_q / F_s
+        dR[1, D_BR] += m * wc * wc / F_s                      # centrifugal force
+        dR[1, D_WC] += 2.0 * m * wc * br / F_s
+        dR[2, D_BR] += fd_num / (br * br) / F_s              # - F_d, F_d = fd_num / b_r
+        dR[2, D_WC] -= dfd_dwc / br / F_s
+        dR[2, 8] += 1.0 / F_s
+        dR[3, D_OA] -= pct * fpr_oa / M_s
+        dR[3, D_OR] -= pct * fpr_or / M_s
+        dR[3, 8] -= pct * fpr_q / M_s
+        dR[4, D_OA] += pct * fpa_oa / M_s
+        dR[4, D_OR] += pct * fpa_or / M_s
+        dR[4, 8] += pct * fpa_q / M_s
+        dR[4, D_OT] += J * wc / M_s                            # gyroscopic moment
+        dR[4, D_WC] += J * X[j, 4] / M_s
+        dR[5, D_OR] -= J * wc / M_s
+        dR[5, D_WC] -= J * X[j, 3] / M_s
+        dG[2, D_BR] += -Qp / T_s
+        dG[2, D_OA] += pct * fpr_oa / T_s
+        dG[2, D_OR] += pct * fpr_or / T_s
+        dG[2, 8] += (-br + pct * fpr_q) / T_s
+        # scaled blocks: ball columns (b_a, b_r, Omega_a, Omega_r, Omega_t) = dirs 0..4,
+        # Q_p = 8; globals (delta_a, delta_r, omega_c) = dirs 5..7
+        for i in range(N_BALL):
+            for col in range(5):
+                A[j, i, col] = dR[i, col] * xs[col]
+            A[j, i, 5] = dR[i, 8] * xs[5]
+            for g in range(N_GLOBAL):
+                B[j, i, g] = dR[i, 5 + g] * gs[g]
+        for g in range(N_GLOBAL):
+            for col in range(5):
+                C[j, g, col] = dG[g, col] * xs[col]
+            C[j, g, 5] = dG[g, 8] * xs[5]
+            for h in range(N_GLOBAL):
+                Dg[g, h] += dG[g, 5 + h] * gs[h]
+    Dg[2, 2] += dg0_dwc * gs[2]
+    return A, B, C, Dg, True
+
+
+def supports_analytic(system) -> bool:
+    """True when ``system`` runs the default compiled models this Jacobian covers: the fused
+    kernel (compiled film, tabulated viscosity), the Eyring law with the smooth cap and
+    tau0 > 0, and the ball drag at a fixed radius."""
+    lp = getattr(system, "_law_params", None)
+    return bool(system._fused and system._tab is not None and system._law_id == EYRING
+                and lp is not None and lp[2] != 0.0 and lp[1] > 0.0
+                and system.models.drag_radius is not None)
+
+
+def analytic_blocks(system, X: np.ndarray, G: np.ndarray, *, wc_step: float = 1e-6):
+    """Analytic structured Jacobian of ``system`` at (X, G) (SI unknowns).
+
+    Returns a :class:`~thermobearing.skidding.ball_newton.JacobianBlocks` (the same layout
+    and scaling as the finite-difference blocks), or None when the system's models are not
+    covered (:func:`supports_analytic`) or a contact pressure leaves the viscosity table.
+    The cage-speed dependence of the Python cage and drag torque models is a forward
+    difference with relative step ``wc_step`` (two memoised model calls)."""
+    from .ball_newton import JacobianBlocks
+
+    if not supports_analytic(system):
+        return None
+    wc = float(G[2])
+    t0 = system._cage_torques(wc)
+    hw = wc_step * max(abs(wc), system.w_s * 1e-3)
+    t1 = system._cage_torques(wc + hw)
+    dfd = (t1[3] - t0[3]) / hw
+    dg0 = -((t1[0] + t1[1]) - (t0[0] + t0[1])) / hw / system.T_s
+    xs, gs = system.scales()
+    ln_tab, slope_tab, inv_dp, p_max = system._tab
+    A, B, C, Dg, ok = _jacobian_kernel(
+        np.ascontiguousarray(X, dtype=float), np.ascontiguousarray(G, dtype=float),
+        system._cpsi, system._arc, system._c, system._film_params, system._law_params,
+        ln_tab, slope_tab, inv_dp, p_max, *system._rule, float(t0[3]), dfd, dg0, xs, gs)
+    if not ok:
+        return None
+    return JacobianBlocks(A, B, C, Dg, system.F_s, xs, gs, system.Z)
+
+
+def _refresh_caches() -> None:
+    from .. import contact_traction, film, hertz, traction
+    from . import ball_residual
+
+    refresh_stale_caches("ball_jacobian", (_eyring_smooth_grad, _contact_traction_jac,
+                                           _geometry_jac, _jacobian_kernel),
+                         (contact_traction, traction, hertz, film, ball_residual))
+
+
+_refresh_caches()
