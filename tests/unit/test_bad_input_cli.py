@@ -376,3 +376,41 @@ def test_report_of_a_sweep_folder_with_an_empty_store(tmp_path, capsys):
     code, err = run_cli(capsys, "report", folder)
     assert code == 1
     assert_one_paragraph(err, "cases.jsonl", "one JSON record")
+
+
+def slow_case(scene_toml: str) -> dict[str, float]:
+    """A picklable sweep runner: notes that it started (file named by an environment
+    variable, inherited by the pool's processes) and takes 0.25 s."""
+    import os
+    import time
+
+    with open(os.environ["TB_AUDIT_CASE_LOG"], "a", encoding="utf-8") as fh:
+        fh.write("started\n")
+    time.sleep(0.25)
+    return {"x": 1.0}
+
+
+def test_ctrl_c_in_a_local_process_pool_does_not_run_the_queued_cases(tmp_path, monkeypatch):
+    # before: leaving the `with ProcessPoolExecutor` block on Ctrl-C waited for every queued
+    # case (all 16 ran, ~2 s on 2 workers) and threw their results away
+    from thermobearing import sweep
+    from thermobearing.scene import loads_scene
+
+    write_summary = sweep._write_summary
+
+    def interrupted_after_first(out, cases):
+        write_summary(out, cases)
+        raise KeyboardInterrupt
+
+    log = tmp_path / "started.log"
+    monkeypatch.setenv("TB_AUDIT_CASE_LOG", str(log))
+    monkeypatch.setattr(sweep, "_write_summary", interrupted_after_first)
+    scene = loads_scene(dumps_toml(BASE))
+    flows = ",".join(str(f) for f in range(5, 21))
+    params = [sweep.parse_set(f"supply.flow={flows}", scene.to_dict())]
+    out = tmp_path / "sw"
+    with pytest.raises(KeyboardInterrupt):
+        sweep.run_sweep(scene, params, out, runner=slow_case, workers=2, progress=False)
+    started = len(log.read_text().splitlines())
+    assert started < 8  # the running ones and the few already handed to a worker
+    assert len(sweep.finished_cases(out)) == 1
