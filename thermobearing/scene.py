@@ -530,6 +530,7 @@ class Scene:
         env = Environment.from_dict(data.get("environment", {}))
         _check_model_types(_table("models", data.get("models", {})))
         network = dict(data.get("network", {}))
+        solver = Solver.from_dict(data.get("solver", {}))
         scene = cls(
             title=title,
             source=str(data.get("source", "")),
@@ -540,7 +541,7 @@ class Scene:
             schedule=Schedule.from_dict(_require("scene", data, "schedule"), base_dir),
             models=dict(data.get("models", {})),
             network=network,
-            solver=Solver.from_dict(data.get("solver", {})),
+            solver=solver,
             outputs=Outputs.from_dict(data.get("outputs", {})),
             measured=Measured.from_dict(data["measured"]) if "measured" in data else None,
             base_dir=str(base_dir) if base_dir is not None else None,
@@ -606,6 +607,32 @@ def _check_model_types(models: Mapping[str, Any]) -> None:
             _table("models.heat_source_options", value)
         elif not isinstance(value, str):
             raise InputError(f"models.{key}", value, "a model name (a string)")
+
+
+def check_model_names(scene: Scene) -> None:
+    """Kinematics model, heat sources and stepper against their registries, so that the
+    error names the scene field (``models.heat_sources[1]``) and lists the known names.
+
+    ``thermobearing check`` / ``run`` / ``sweep`` call it before building the Simulation
+    (which checks the same names, with the registry family as the field). Film models are
+    checked, with the numerical ones, when the chain is planned.
+    """
+    from .heat_sources import HEAT_SOURCES
+    from .kinematic_models import KINEMATICS
+    from .network import STEPPERS
+
+    models, stepper = scene.models, scene.solver.stepper
+    kinematics = models.get("kinematics", "skidding")
+    if kinematics not in KINEMATICS:
+        raise UnknownNameError("models.kinematics", kinematics, KINEMATICS.names())
+    sources = models.get("heat_sources", [])
+    for i, name in enumerate([sources] if isinstance(sources, str) else sources):
+        if name not in HEAT_SOURCES:
+            where = "models.heat_sources" if isinstance(sources, str) else \
+                f"models.heat_sources[{i}]"
+            raise UnknownNameError(where, name, HEAT_SOURCES.names())
+    if stepper not in STEPPERS:
+        raise UnknownNameError("solver.stepper", stepper, STEPPERS.names())
 
 
 def check_measured_file(scene: Scene) -> None:

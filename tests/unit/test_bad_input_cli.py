@@ -52,7 +52,7 @@ def assert_one_paragraph(err: str, *words: str) -> None:
     ("schedule.steps", [{"duration": "5 min"}, {"duration": "-2 min"}],
      ["schedule.steps[1].duration", "'-2 min'", "> 0"]),
     ("supply.flow", "33 kg", ["supply.flow", "'33 kg'", "m**3/s"]),
-    ("models.kinematics", "skiding", ["skiding", "race_control", "skidding"]),
+    ("models.kinematics", "skiding", ["models.kinematics", "skiding", "race_control"]),
     ("solver.rtol", 0.0, ["solver.rtol", "0.0", "(0, 1)"]),
     ("solver.chunk", "0 s", ["solver.chunk", "'0 s'", "> 0"]),
     ("network.parameters", {}, ["network.parameters", "housing_outer_diameter"]),

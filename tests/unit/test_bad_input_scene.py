@@ -309,3 +309,21 @@ def test_lubricant_path_that_does_not_exist(tmp_path):
 def test_negative_oil_bath_level_shows_the_value_given():
     err = load_error("supply", {"method": "oil_bath", "flow": "0 L/min", "level": "-5 mm"})
     assert err.field == "supply.level" and err.value == "-5 mm" and ">= 0" in err.allowed
+
+
+@pytest.mark.parametrize(("path", "value", "field", "a_known_name"), [
+    ("models.kinematics", "skiding", "models.kinematics", "skidding"),
+    ("models.heat_sources", ["raceway_traction", "churnin"], "models.heat_sources[1]",
+     "churning_cage"),
+    ("models.heat_sources", "pocket", "models.heat_sources", "pocket_friction"),
+    ("solver.stepper", "rk45", "solver.stepper", "tr_bdf2"),
+])
+def test_unknown_model_name_names_the_scene_field(path, value, field, a_known_name):
+    # before: "kinematics model = 'skiding'", "stepper model = 'rk45'" (registry family,
+    # not the scene field); `check` / `run` / `sweep` call check_model_names first
+    from thermobearing.scene import check_model_names
+
+    scene = loads_scene(dumps_toml(edited(path, value)))
+    with pytest.raises(UnknownNameError) as info:
+        check_model_names(scene)
+    assert info.value.field == field and a_known_name in info.value.known

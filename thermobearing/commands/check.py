@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..scene import load_scene
+from ..scene import check_model_names, load_scene
 
 NAME = "check"
 HELP = "validate a scene and print the model chain that will run, with citations"
@@ -19,6 +19,7 @@ def run(args: argparse.Namespace) -> int:
     from ._preflight import preflight
 
     scene = load_scene(args.scene)
+    check_model_names(scene)
     sim = Simulation(scene, progress=False)
     preflight(sim)
     print(f"scene: {scene.title}")

@@ -12,7 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import load_scene
+from ..scene import check_model_names, load_scene
 from ._preflight import preflight
 
 NAME = "run"
@@ -30,6 +30,7 @@ def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
 
     scene = load_scene(args.scene)
+    check_model_names(scene)
     name = Path(args.scene).stem if args.scene else "qj1044_rig"
     out = Path(args.out) if args.out else Path("results") / name
     progress = None if not args.quiet else False

@@ -12,7 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import load_scene
+from ..scene import check_model_names, load_scene
 from ..sweep import finished_cases, parse_set, run_sweep
 
 NAME = "sweep"
@@ -34,6 +34,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
+    check_model_names(scene)
     d = scene.to_dict()
     params = [parse_set(s, d) for s in args.sets]
     out = Path(args.out)
