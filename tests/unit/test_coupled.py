@@ -203,13 +203,33 @@ duration = "3 min"
     cp.kinematics(0, step, T)
     lin = cp.linearize(step, T, dT=0.5)
     full = np.zeros_like(lin.J)
+    curv = np.zeros_like(lin.J)
     q0 = cp.heat(step, T)
     for j in range(len(T)):
-        Tp = T.copy()
+        Tp, Tm = T.copy(), T.copy()
         Tp[j] += 0.5
-        full[:, j] = (cp.heat(step, Tp) - q0) / 0.5
+        Tm[j] -= 0.5
+        qp, qm = cp.heat(step, Tp), cp.heat(step, Tm)
+        full[:, j] = (qp - qm) / 1.0
+        curv[:, j] = (qp - 2.0 * q0 + qm) / 0.25
     np.testing.assert_allclose(lin.q0, q0, rtol=1e-12)
     np.testing.assert_allclose(lin.J, full, rtol=1e-9, atol=1e-9 * np.abs(full).max())
+    np.testing.assert_allclose(lin.H, curv, rtol=1e-9, atol=1e-9 * np.abs(curv).max())
+    # the model reproduces the exact heat at the difference points (quadratic through
+    # three points per read column) and its Jacobian is the model's derivative
+    j_oil = cp.role_nodes[sim.bearings[0].name]["oil"][0]
+    for d in (-0.5, 0.5):
+        Td = T.copy()
+        Td[j_oil] += d
+        np.testing.assert_allclose(lin.heat(0.0, Td), cp.heat(step, Td), rtol=1e-10,
+                                   atol=1e-9 * np.abs(q0).max())
+    Td = T.copy()
+    Td[j_oil] += 0.2
+    np.testing.assert_allclose(lin.jac(0.0, Td)[:, j_oil],
+                               lin.J[:, j_oil] + 0.2 * lin.H[:, j_oil], rtol=1e-12)
+    moved = lin.moved(cp.heat(step, Td), Td)
+    np.testing.assert_allclose(moved.J, lin.jac(0.0, Td), rtol=1e-12)
+    np.testing.assert_array_equal(moved.H, lin.H)
     reads = sim.evaluate_heat(sim.bearings[0], step, sim.bearings[0].last,
                               cp.role_temperatures(sim.bearings[0], T)).reads
     assert "oil" in reads  # churning and the cage guide read the oil temperature
