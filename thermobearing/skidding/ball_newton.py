@@ -19,7 +19,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, InputError
 from .ball_jacobian import analytic_blocks, supports_analytic
-from .ball_residual import N_BALL, N_GLOBAL, ball_residual_system
+from .ball_residual import N_BALL, N_GLOBAL, _residual_one, ball_residual_system
 
 __all__ = ["JacobianBlocks", "chord_polish", "newton_block", "trust_region"]
 
@@ -320,13 +320,141 @@ def _propose(Ainv: np.ndarray, Ainv_B: np.ndarray, C: np.ndarray, Sinv: np.ndarr
     return dX, dG, big, Xn, Gn, degenerate
 
 
+_PH_DONE, _PH_REFRESH, _PH_HANDBACK = 0, 1, 2
+
+
+@numba.njit(cache=True)
+def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_x, cap_g,
+                 tol, polish_ratio, polish_below, keep_ratio, refresh_rate, it, max_iter,
+                 give_n, give_f, nrm0, last_ratio, polished, tq, cpsi, arc, c, film_params,
+                 law_id, law_params, ln_tab, slope_tab, inv_dp, p_max, xg, yg, pshape,
+                 area_w, pidx, pshape_u):
+    """The chord / good-Broyden iterations of a warm start (:func:`newton_block` with the
+    handed-over Jacobian) in one compiled loop: the same step (:func:`_propose`), residual
+    (``ball_residual._residual_one``) and acceptance rules as the Python loop, without its
+    per-iteration interpreter cost (~30 us against ~85 us of residual, measured). The cage
+    and drag torques of the Python models enter as a quadratic in the cage speed about
+    tq[0] (``tq`` = (omega_c0, half-width of the range, g0_2 coefficients c0 c1 c2, drag
+    coefficients d0 d1 d2)); the caller replaces them by the exact values at the end.
+
+    Hands back (status 2, nothing done for the step) before anything the Python loop does
+    differently: a damped step (the cap), a cage speed outside the model range, the staged
+    residual path or non-finite unknowns, the give-up test. Status 0: converged by the
+    Python loop's rule; 1: the Jacobian is to be refreshed (a rejected chord step, a poor
+    contraction, or the ``refresh_rate`` rule of :func:`newton_block`'s ``warm_refresh``).
+    Returns (status, X, G, R, Gc, G0, norm, m, iterations, evaluations, last_ratio, polished,
+    accepted, geo, film, tr, pocket, Fd) with the fields of the last accepted state."""
+    n_eval = 0
+    status = _PH_HANDBACK
+    geo = np.empty((0, 0))
+    film = np.empty(0)
+    tr = np.empty((0, 6))
+    pocket = np.empty((0, 7))
+    Fd = np.empty(0)
+    no_fd = np.empty(0)
+    accepted = False
+    wc_c, rng = tq[0], tq[1]
+    nb = X.shape[0] * X.shape[1]
+    while it < max_iter:
+        if nrm <= tol:
+            if polished or last_ratio < polish_ratio or nrm <= polish_below:
+                status = _PH_DONE
+                break
+            polished = True
+        if give_n >= 0 and it >= give_n and nrm > give_f * nrm0:
+            break
+        dX, dG, big, Xf, Gf, degenerate = _propose(Ainv, AiB, C, Sinv, R, Gc, G0, cap_x, cap_g,
+                                                   hist, m, xs, gs, X, G)
+        if degenerate:
+            m = 0
+        if big > 1.0:
+            break
+        d = Gf[2] - wc_c
+        if abs(d) > rng:
+            break
+        G0n = np.empty(3)
+        G0n[0] = G0[0]
+        G0n[1] = G0[1]
+        G0n[2] = tq[2] + d * (tq[3] + d * tq[4])
+        fd_num = tq[5] + d * (tq[6] + d * tq[7])
+        st, Rn, Gcn, nn, geo_n, film_n, tr_n, pocket_n, Fd_n = _residual_one(
+            Xf, Gf, cpsi, arc, c, film_params, law_id, law_params, ln_tab, slope_tab, inv_dp,
+            p_max, xg, yg, pshape, area_w, pidx, pshape_u, fd_num, no_fd, G0n)
+        if st != 0:
+            break
+        n_eval += 1
+        if math.isfinite(nn) and nn < nrm:
+            it += 1
+            X, G, R, Gc, G0 = Xf, Gf, Rn, Gcn, G0n
+            geo, film, tr, pocket, Fd = geo_n, film_n, tr_n, pocket_n, Fd_n
+            accepted = True
+            refresh = nn > keep_ratio * nrm
+            if not refresh and m < hist.shape[0]:
+                for i in range(dX.shape[0]):
+                    for j in range(dX.shape[1]):
+                        hist[m, i * dX.shape[1] + j] = dX[i, j]
+                for g in range(dG.size):
+                    hist[m, nb + g] = dG[g]
+                m += 1
+            if (not refresh and refresh_rate > 0.0 and nn > polish_below
+                    and math.log(polish_below / nn) < refresh_rate * math.log(nn / nrm)):
+                refresh = True
+            last_ratio = nn / nrm
+            nrm = nn
+            if refresh:
+                status = _PH_REFRESH
+                break
+        else:
+            status = _PH_REFRESH         # a chord step that does not lower the norm
+            break
+    return (status, X, G, R, Gc, G0, nrm, m, it, n_eval, last_ratio, polished, accepted, geo,
+            film, tr, pocket, Fd)
+
+
+def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, tol,
+                     polish_ratio, polish_below, keep_ratio, refresh_rate, max_iter, give_up,
+                     nrm0, last_ratio, polished):
+    """:func:`_chord_phase` with the torque model built from the Python models (exact values
+    at omega_c0 and omega_c0 +- h, h = 5e-4 omega_c0: a quadratic, used within +-3h) and the
+    exact torques put back at the returned state (its residual and norm are then those of
+    :meth:`ball_residual_system.evaluate`, and it becomes the system's last state)."""
+    wc0 = float(G[2])
+    h = 5e-4 * max(abs(wc0), 1e-3 * system.w_s)
+    t0, tp, tm = (system._cage_torques(w) for w in (wc0, wc0 + h, wc0 - h))
+    T_s = system.T_s
+
+    def g(t):
+        return -(t[0] + t[1]) / T_s
+
+    tq = np.array([wc0, 3.0 * h,
+                   g(t0), (g(tp) - g(tm)) / (2 * h), (g(tp) - 2 * g(t0) + g(tm)) / (2 * h * h),
+                   t0[3], (tp[3] - tm[3]) / (2 * h), (tp[3] - 2 * t0[3] + tm[3]) / (2 * h * h)])
+    give_n, give_f = give_up if give_up is not None else (-1, 0.0)
+    (status, X, G, R, Gc, G0m, nrm_m, m, it, n_ev, last_ratio, polished, accepted, geo, film,
+     tr, pocket, Fd) = _chord_phase(*jac, X, G, R, Gc, Gk, nrm, hist, m, *system.scales(),
+                                    _CAP_X, _CAP_G, tol, polish_ratio, polish_below,
+                                    keep_ratio, refresh_rate, it, max_iter, give_n, give_f,
+                                    nrm0, last_ratio, polished, tq, *kargs)
+    system.n_eval += n_ev
+    if accepted:
+        t = system._cage_torques(float(G[2]))
+        Gk = np.array([system._g0a, system._g0r, -(t[0] + t[1]) / T_s])
+        Fd_exact = t[3] / X[:, 1]
+        R = R.copy()
+        R[:, 2] += (Fd - Fd_exact) / system.F_s          # R_t = (F_t - F_d + Q_p) / F_s
+        nrm = _residual_norm(R, Gc, Gk)
+        system.store_last(X, G, R, Gc, Gk, nrm, geo, film, tr, pocket, Fd_exact, t[4])
+    return status, X, G, R, Gc, Gk, nrm, m, it, last_ratio, polished
+
+
 def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *,
                  tol: float = 1e-9, max_iter: int = 60, fd_step: float = 1e-7,
                  max_step: float = 1.0, reuse_ratio: float = 0.25,
                  polish_ratio: float = 1e-2, give_up: tuple[int, float] | None = None,
                  jacobian: JacobianBlocks | None = None, broyden_warm: bool = True,
                  polish_below: float = 0.2e-9, broyden_reuse_ratio: float = 0.5,
-                 stall_after: int = 0, analytic: bool = True, warm_refresh: float = 0.0):
+                 stall_after: int = 0, analytic: bool = True, warm_refresh: float = 0.0,
+                 compiled_chord: bool = True):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
     The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) needs
@@ -445,7 +573,21 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     broyden = jac is not None and broyden_warm
     hist = np.empty((max_iter + 1, Z * N_BALL + N_GLOBAL)) if broyden else None
     m = 0                                     # steps in the Broyden history
+    kargs = system.chord_kernel_args() if (broyden and compiled_chord) else None
+    phases = 0
     while it < max_iter:
+        if kargs is not None and broyden and jac is not None and phases < 2:
+            # the chord / Broyden steps in one compiled loop (same rules; hands back to
+            # this loop for anything else)
+            phases += 1
+            status, X, G, R, Gc, Gk, nrm, m, it, last_ratio, polished = _run_chord_phase(
+                system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, tol=tol,
+                polish_ratio=polish_ratio, polish_below=polish_below,
+                keep_ratio=broyden_reuse_ratio,
+                refresh_rate=warm_refresh if can_analytic else 0.0, max_iter=max_iter,
+                give_up=give_up, nrm0=nrm0, last_ratio=last_ratio, polished=polished)
+            if status == _PH_REFRESH:
+                jac = None
         if nrm <= tol:
             # a chord iteration converges linearly and stops just below tol,
             # where a Newton step would overshoot by orders of magnitude: one more step

@@ -709,6 +709,29 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.last_norm = nrm
         return R, Gc, G0, (make_details() if details else None)
 
+    def chord_kernel_args(self):
+        """Arguments of the compiled residual :func:`_residual_one` after (X, G) and before
+        the drag inputs, for compiled callers (``ball_newton._chord_phase``); None when the
+        system does not run the fused kernel with the ball drag at a fixed radius."""
+        if not (self._fused and self._tab is not None and self.models.drag_radius is not None):
+            return None
+        return (self._cpsi, self._arc, self._c, self._film_params, self._law_id,
+                self._law_params, *self._tab, *self._rule)
+
+    def store_last(self, X, G, R, Gc, G0, nrm, geo, film, tr, pocket, Fd, u_ball) -> None:
+        """Make (X, G) the last evaluated state (the memo of :meth:`evaluate` and the
+        details of the result) from fields computed by a compiled caller with the same
+        kernel (``ball_newton._chord_phase``); X, G must not be modified afterwards."""
+        Z, nk = self.Z, self._arc.shape[1]
+
+        def make_details():
+            return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),
+                                 pocket, Fd, u_ball, film.reshape(Z, nk))
+
+        self._last = (X, G, (R, Gc, G0), make_details, nrm)
+        self._last_tr = (X, G, tr)
+        self.last_norm = nrm
+
     def _staged(self, Xb, Gb, Fd_b, reuse, tr_ref, geo, film, tr, pocket, R, Gc):
         """The residual in stages: compiled geometry, the film model and the film law's
         viscosity in Python (any callables), compiled forces. Returns the film (or None)."""

@@ -208,3 +208,37 @@ def test_warm_step_with_refresh_converges_to_the_cold_start(bearing, temperature
         assert warm.heat["total"] == pytest.approx(other.heat["total"], rel=1e-7)
     assert warm.shaft_torque * W1800 == pytest.approx(warm.heat["total"], rel=1e-8)
     assert warm.residual_norm <= 1e-9
+
+
+@pytest.mark.parametrize("fa", [10e3, 1e3])
+def test_compiled_chord_phase_takes_the_python_loops_steps(bearing, fa):
+    # ball_newton._chord_phase runs the warm start's chord / Broyden steps in one compiled
+    # loop with the cage torques as a quadratic in the cage speed, then puts the exact torques
+    # back: the same iterations and evaluations as the Python loop, the same state to the
+    # solver tolerance, the exact residual at the end
+    models = _models(bearing, 303.15, W1800)
+    r0 = solve_ball(bearing, models, W1800, 1000.0, fa, theoretical_reference=0.45)
+    out = {}
+    for flag in (True, False):
+        original = ball_newton.newton_block
+
+        def patched(*a, _flag=flag, _orig=original, **k):
+            return _orig(*a, **{**k, "compiled_chord": _flag})
+
+        ball_mod.newton_block = patched
+        try:
+            out[flag] = solve_ball(bearing, models, W1800, 1000.0, 1.02 * fa + 20.0, guess=r0,
+                                   theoretical_reference=0.45)
+        finally:
+            ball_mod.newton_block = original
+    a, b = out[True], out[False]
+    assert (a.iterations, a.extra["n_eval"], a.extra["n_jacobian"]) == (
+        b.iterations, b.extra["n_eval"], b.extra["n_jacobian"])
+    assert a.cage_speed_ratio == pytest.approx(b.cage_speed_ratio, rel=1e-10)
+    assert a.shaft_torque * W1800 == pytest.approx(a.heat["total"], rel=1e-8)
+    # the returned residual is that of a fresh evaluation with the exact torque models
+    system = a.extra["system"].reloaded(1000.0, 1.02 * fa + 20.0)
+    system._last = None
+    R, Gc, G0, _ = system.evaluate(*a.unknowns)
+    assert math.sqrt(np.sum(R ** 2) + np.sum((Gc.sum(0) + G0) ** 2)) == pytest.approx(
+        a.residual_norm, rel=1e-6, abs=1e-13)
