@@ -414,3 +414,16 @@ def test_ctrl_c_in_a_local_process_pool_does_not_run_the_queued_cases(tmp_path, 
     started = len(log.read_text().splitlines())
     assert started < 8  # the running ones and the few already handed to a worker
     assert len(sweep.finished_cases(out)) == 1
+
+
+@pytest.mark.parametrize(("key", "value", "words"), [
+    ("housing_length", "-140 mm", ["housing_length", "-0.14", "> 0"]),
+    ("oil_fill", 2.0, ["oil_fill", "2.0", "[0, 1]"]),
+])
+def test_check_builds_the_network_so_template_values_are_checked(tmp_path, capsys, key, value,
+                                                                 words):
+    # before: `check` passed; `run` failed only after loading every model
+    scene = write_scene(tmp_path, edited(f"network.parameters.{key}", value))
+    code, err = run_cli(capsys, "check", scene)
+    assert code == 1
+    assert_one_paragraph(err, *words)

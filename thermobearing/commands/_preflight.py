@@ -2,8 +2,9 @@
 
 Everything that can be known wrong without solving a model fails here, in seconds, with the
 field named, instead of after the first operating points of a long run: the network
-template's required parameters, the ``[measured]`` CSV (columns, numbers, increasing
-times) and, when the scene builds a network, the column -> node map of ``[measured]``.
+template's required parameters and (``check``) their values, the ``[measured]`` CSV
+(columns, numbers, increasing times) and, when the scene builds a network, the column ->
+node map of ``[measured]``.
 """
 
 from __future__ import annotations
@@ -17,19 +18,20 @@ from ..scene import check_measured_file, check_network
 def preflight(sim: Any, build: bool = True) -> None:
     """Validate ``sim.scene`` beyond what loading it checks (see the module docstring).
 
-    ``build``: also build the thermal network (cheap) to check the measured-column map
+    ``build``: also build the thermal network (cheap), so that its template checks the
+    parameter values (a negative housing length ...) and the measured-column map is checked
     against its node names.
     """
     scene = sim.scene
     thermal = bool(sim.needs.get("network"))
     check_network(scene.network, require=thermal)
     check_measured_file(scene)
-    if not (build and thermal and scene.measured is not None):
+    if not (build and thermal):
         return
     from ..coupled import build_network
 
-    nodes = build_network(sim).state_nodes
-    for column, node in scene.measured.columns.items():
+    nodes = build_network(sim).state_nodes  # the template checks its parameter values
+    for column, node in (scene.measured.columns if scene.measured is not None else {}).items():
         if node not in nodes:
             raise InputError(f"measured.columns[{column!r}]", node,
                              "a node of the network: " + ", ".join(nodes))
