@@ -633,6 +633,18 @@ def check_model_names(scene: Scene) -> None:
             raise UnknownNameError(where, name, HEAT_SOURCES.names())
     if stepper not in STEPPERS:
         raise UnknownNameError("solver.stepper", stepper, STEPPERS.names())
+    if "control" in models:
+        from .state import RACE_CONTROLS
+
+        if kinematics != "race_control":
+            raise InputError("models.control", models["control"],
+                             "nothing unless kinematics = \"race_control\" (the option of "
+                             f"race control; kinematics here is {kinematics!r})")
+        if models["control"] not in RACE_CONTROLS:
+            raise UnknownNameError("models.control", models["control"], RACE_CONTROLS)
+    target = models.get("churning_heat_to", "oil")
+    if target not in ("oil", "paper002"):
+        raise UnknownNameError("models.churning_heat_to", target, ("oil", "paper002"))
 
 
 def check_measured_file(scene: Scene) -> None:

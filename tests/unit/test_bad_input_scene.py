@@ -327,3 +327,20 @@ def test_unknown_model_name_names_the_scene_field(path, value, field, a_known_na
     with pytest.raises(UnknownNameError) as info:
         check_model_names(scene)
     assert info.value.field == field and a_known_name in info.value.known
+
+
+@pytest.mark.parametrize(("models", "field", "words"), [
+    # before: TypeError "solve_ball() got an unexpected keyword argument 'control'" (run)
+    ({"kinematics": "skidding", "control": "outer_race"}, "models.control", "race_control"),
+    # before: passed `check`, refused by the model only at run time
+    ({"kinematics": "race_control", "control": "magic"}, "models.control", "outer_race"),
+    ({"kinematics": "race_control", "churning_heat_to": "sky"}, "models.churning_heat_to",
+     "paper002"),
+])
+def test_model_options_checked_before_the_run(models, field, words):
+    from thermobearing.scene import check_model_names
+
+    scene = loads_scene(dumps_toml(edited("models", models)))
+    with pytest.raises(InputError) as info:
+        check_model_names(scene)
+    assert info.value.field == field and words in info.value.allowed
