@@ -97,20 +97,31 @@ class _Linear:
     #: runaway) is not extrapolated with a parabola fitted over +-dT
     reach: float = 2.0
 
-    def _clipped(self, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        d = T - self.T0
-        return d, np.clip(d, -self.reach, self.reach)
+    def __post_init__(self) -> None:
+        # the read columns (H is zero elsewhere): the model is evaluated hundreds of times
+        # per run by the stepper, so the curvature term loops over these few columns only
+        self._cols: tuple[int, ...] = (() if self.H is None else
+                                       tuple(int(j) for j in np.flatnonzero(self.H.any(axis=0))))
 
     def heat(self, t: float, T: np.ndarray) -> np.ndarray:
-        if self.H is None:
-            return self.q0 + self.J @ (T - self.T0)
-        d, c = self._clipped(T)
-        return self.q0 + self.J @ d + self.H @ (c * d - 0.5 * c * c)
+        d = T - self.T0
+        q = self.q0 + self.J @ d
+        r = self.reach
+        for j in self._cols:
+            dj = float(d[j])
+            c = r if dj > r else -r if dj < -r else dj
+            q += (c * dj - 0.5 * c * c) * self.H[:, j]
+        return q
 
     def jac(self, t: float, T: np.ndarray) -> np.ndarray:
-        if self.H is None:
+        if not self._cols:
             return self.J
-        return self.J + self.H * self._clipped(T)[1][None, :]
+        out = self.J.copy()
+        r = self.reach
+        for j in self._cols:
+            dj = float(T[j] - self.T0[j])
+            out[:, j] += (r if dj > r else -r if dj < -r else dj) * self.H[:, j]
+        return out
 
     def moved(self, q: np.ndarray, T: np.ndarray) -> _Linear:
         """The same model re-centred at T with the exact heat q there (a later chunk on

@@ -21,11 +21,13 @@ there: measured in ``benchmarks/bm1_work_precision.py``), CSC sparse above.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 
+from ..errors import InputError
 from .graph import ThermalNetwork
 
 #: state-node count up to which the operator is dense
@@ -141,6 +143,17 @@ class Assembler:
                                     shape=(n, n)).tocsc()
         self.s0 = s
         self.bnd0 = (bnd_i, bnd_g, bnd_t)
+        self._bnd0_arrays = (np.array(bnd_i, dtype=int), np.array(bnd_g, dtype=float),
+                             np.array(bnd_t, dtype=float))
+        # the temperature-dependent edges, resolved once per revision (a boundary
+        # temperature change bumps the revision): (state index of a or -1, of b or -1,
+        # fixed temperature of a boundary end, model, edge name for errors)
+        self._var_edges: list[tuple[int, int, float, object, str]] = []
+        for a, b, _key, model in self.variable:
+            ia, ib = self.index.get(a, -1), self.index.get(b, -1)
+            t_fixed = (network.boundary_temperature(a) if ia < 0 else
+                       network.boundary_temperature(b) if ib < 0 else math.nan)
+            self._var_edges.append((ia, ib, t_fixed, model, f"edge {a!r}-{b!r}: conductance"))
         self.str_last = np.array(str_last, dtype=int)
         self.str_W = np.array(str_w)
         self.str_Tin = np.array(str_tin)
@@ -179,10 +192,45 @@ class Assembler:
             return self._constant_system
         if self.variable and T is None:
             T = np.full(self.n, 300.0)
+        s = self.s0.copy()
+        if self.dense:
+            # small networks: stamp each temperature-dependent edge into a copy of K0
+            # (scalar indexing; no list building, no sparse detour)
+            K = self.K0.copy()
+            extra_i, extra_g, extra_t = [], [], []
+            for ia, ib, t_fixed, model, what in self._var_edges:
+                Ta = float(T[ia]) if ia >= 0 else t_fixed
+                Tb = float(T[ib]) if ib >= 0 else t_fixed
+                g = float(model.conductance(Ta, Tb))
+                if not math.isfinite(g) or g < 0.0:
+                    raise InputError(what, g, "a finite value >= 0 W/K from the conductance "
+                                     "model")
+                if ia >= 0 and ib >= 0:
+                    K[ia, ia] += g
+                    K[ib, ib] += g
+                    K[ia, ib] -= g
+                    K[ib, ia] -= g
+                elif ia >= 0 or ib >= 0:
+                    i = ia if ia >= 0 else ib
+                    K[i, i] += g
+                    s[i] += g * t_fixed
+                    extra_i.append(i)
+                    extra_g.append(g)
+                    extra_t.append(t_fixed)
+            b_i, b_g, b_t = self._bnd0_arrays
+            if extra_i:
+                b_i = np.concatenate((b_i, np.array(extra_i, dtype=int)))
+                b_g = np.concatenate((b_g, extra_g))
+                b_t = np.concatenate((b_t, extra_t))
+            system = System(names=self.names, C=self.C, K=K, s=s, dense=True, bnd_index=b_i,
+                            bnd_G=b_g, bnd_T=b_t, str_last=self.str_last, str_W=self.str_W,
+                            str_Tin=self.str_Tin)
+            if not self.variable:
+                self._constant_system = system
+            return system
         rows: list[int] = []
         cols: list[int] = []
         vals: list[float] = []
-        s = self.s0.copy()
         bnd_i, bnd_g, bnd_t = (list(x) for x in self.bnd0)
         net = self.network
         for a, b, key, _model in self.variable:
@@ -192,11 +240,7 @@ class Assembler:
             self._stamp(a, b, g, rows, cols, vals, s, bnd_i, bnd_g, bnd_t)
         K = self.K0
         if rows:
-            if self.dense:  # small networks: stamp into a copy (no sparse detour)
-                K = K.copy()
-                np.add.at(K, (np.asarray(rows), np.asarray(cols)), vals)
-            else:
-                K = K + sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n)).tocsc()
+            K = K + sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n)).tocsc()
         system = System(
             names=self.names, C=self.C, K=K, s=s, dense=self.dense,
             bnd_index=np.array(bnd_i, dtype=int), bnd_G=np.array(bnd_g),

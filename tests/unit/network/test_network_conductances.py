@@ -124,6 +124,39 @@ def test_temperature_dependent_edge_is_lagged_but_converges():
     assert res.temperatures[-1, 0] == pytest.approx(st.temperatures["housing"], abs=1e-3)
 
 
+def test_dense_assembly_of_temperature_dependent_edges_equals_generic_stamping():
+    """The dense fast path (edges resolved once per revision) against the generic sparse
+    stamping: a state-state and a state-boundary temperature-dependent edge, a constant
+    edge and a boundary temperature changed after the first assembly."""
+    import scipy.sparse as sp
+
+    from thermobearing.network.assemble import Assembler
+
+    net = ThermalNetwork()
+    net.add_boundary("air", 300.0)
+    net.add_node("housing", 2e4, role="outer_ring")
+    net.add_node("shaft", 1e4, role="inner_ring")
+    net.add_edge("housing", "air", NaturalConvectionCylinder(0.3, 0.5))
+    net.add_edge("shaft", "housing", NaturalConvectionCylinder(0.1, 0.2))
+    net.add_edge("shaft", "air", Convection(10.0, 0.1))
+    for t_air in (300.0, 310.0):
+        net.set_boundary_temperature("air", t_air)
+        dense = Assembler(net)
+        generic = Assembler(net)
+        generic.dense = False
+        generic.K0 = sp.csc_matrix(generic.K0)
+        T = np.array([335.0, 321.0])
+        a, b = dense.system(T), generic.system(T)
+        np.testing.assert_allclose(a.K, b.K.toarray(), rtol=1e-15)
+        np.testing.assert_allclose(a.s, b.s, rtol=1e-15)
+        order_a, order_b = np.lexsort((a.bnd_G, a.bnd_index)), np.lexsort((b.bnd_G, b.bnd_index))
+        np.testing.assert_array_equal(a.bnd_index[order_a], b.bnd_index[order_b])
+        np.testing.assert_allclose(a.bnd_G[order_a], b.bnd_G[order_b], rtol=1e-15)
+        np.testing.assert_allclose(a.bnd_T[order_a], b.bnd_T[order_b], rtol=1e-15)
+        g = net.edge_conductance("housing", "air", 0, 335.0, t_air)
+        assert g > 0 and a.s[0] == pytest.approx(g * t_air, rel=1e-12)
+
+
 # ---------------------------------------------------------------------- templates
 @pytest.fixture(scope="module")
 def qj1044():
