@@ -120,3 +120,11 @@ def test_roller_unknown_drag_model_lists_known_ones(nu214, oil):
         with pytest.raises(UnknownNameError) as info:
             skidding.solve(nu214, oil, 500.0, 1000.0, 0.0, 330.0, drag_model="numeric")
     assert info.value.value == "numeric" and "closed_form" in info.value.known
+
+
+def test_roller_solver_misspelt_option_lists_the_options(nu214, oil):
+    # before: TypeError "build_model() got an unexpected keyword argument 'drag_modle'"
+    with pytest.raises(UnknownNameError) as info:
+        skidding.solve(nu214, oil, 500.0, 1000.0, 0.0, 330.0, drag_modle="closed_form")
+    assert info.value.value == "drag_modle"
+    assert {"drag_model", "film_model", "tol", "max_iter"} <= set(info.value.known)

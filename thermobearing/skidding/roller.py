@@ -38,7 +38,14 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_finite, check_positive, check_range
+from ..errors import (
+    ConvergenceError,
+    InputError,
+    UnknownNameError,
+    check_finite,
+    check_positive,
+    check_range,
+)
 from .roller_diagnostics import CageForceBalance, cage_force_balance
 from .roller_loads import _gapped, _load_distribution
 from .roller_model import (
@@ -171,6 +178,18 @@ def solve_model(
     )
 
 
+def _check_option_names(options: dict[str, Any]) -> None:
+    """UnknownNameError (listing the model options) for an option :func:`build_model` lacks."""
+    import inspect
+
+    known = [name for name, p in inspect.signature(build_model).parameters.items()
+             if p.kind is inspect.Parameter.KEYWORD_ONLY]
+    for key in options:
+        if key not in known:
+            raise UnknownNameError(f"roller skidding option {key!r}", key,
+                                   ["whirl", "x0", "azimuth", "tol", "max_iter", *known])
+
+
 def as_warm_start(guess: Any) -> np.ndarray | None:
     """(omega_r, omega_c) array from an array, a RollerSkiddingResult or a WhirlResult."""
     if guess is None:
@@ -236,6 +255,7 @@ def solve_roller(
         raise InputError("axial_load", axial_load,
                          "0 for a cylindrical roller bearing (roller-rib thrust is not modelled "
                          "in the skidding solver; see thermobearing.rib)")
+    _check_option_names(model_options)
     x0 = as_warm_start(x0)
     model = build_model(bearing, lubricant, temperature, **model_options)
     if whirl is not None:
