@@ -180,6 +180,24 @@ def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
         cur[parts[-1]] = value
 
 
+def _absolute_paths(d: dict[str, Any], base_dir: Path | None) -> None:
+    """Make the scene's relative file paths (bearing and lubricant TOMLs, measured CSV)
+    absolute against the scene's folder, so that a case's TOML text runs anywhere."""
+    if base_dir is None:
+        return
+
+    def fix(table: Any, key: str) -> None:
+        if isinstance(table, dict) and isinstance(table.get(key), str):
+            path = Path(table[key])
+            if not path.is_absolute():
+                table[key] = str(base_dir / path)
+
+    for bearing in d.get("bearings", []):
+        fix(bearing, "path")
+    fix(d.get("lubricant"), "path")
+    fix(d.get("measured"), "file")
+
+
 @dataclass(frozen=True)
 class Case:
     """One combination of sweep values."""
@@ -200,6 +218,7 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
         d = json.loads(json.dumps(base))
         for path, value in assignments:
             assign_path(d, path, value)
+        _absolute_paths(d, base_dir)  # the runner gets only the TOML text, not the folder
         sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
         key = json.dumps([base_text, [list(a) for a in assignments]], sort_keys=True)
         cid = hashlib.sha1(key.encode()).hexdigest()[:12]

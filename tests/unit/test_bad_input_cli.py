@@ -427,3 +427,28 @@ def test_check_builds_the_network_so_template_values_are_checked(tmp_path, capsy
     code, err = run_cli(capsys, "check", scene)
     assert code == 1
     assert_one_paragraph(err, *words)
+
+
+def test_sweep_of_a_scene_with_relative_file_paths(tmp_path, monkeypatch):
+    # before: each case's TOML kept 'oil.toml' / 'brg.toml' relative but lost the scene's
+    # folder, so every case failed in the runner ("lubricant preset = 'oil.toml' is not
+    # allowed: known names are ...") unless the sweep ran from the scene's folder
+    import shutil
+
+    from thermobearing.scene import configs_dir, load_scene, loads_scene
+    from thermobearing.sweep import expand, parse_set
+
+    folder = tmp_path / "rig"
+    folder.mkdir()
+    shutil.copy(configs_dir() / "lubricants" / "ISO_VG46.toml", folder / "oil.toml")
+    shutil.copy(configs_dir() / "bearings" / "QJ1044.toml", folder / "brg.toml")
+    data = edited("lubricant", {"path": "oil.toml"})
+    data["bearings"] = [{"name": "de", "path": "brg.toml"}]
+    write_scene(folder, data)
+    monkeypatch.chdir(tmp_path)  # somewhere else
+    scene = load_scene(folder / "scene.toml")
+    cases = expand(scene, [parse_set("supply.flow=5,10", scene.to_dict())])
+    for case in cases:
+        again = loads_scene(case.scene_toml)  # what the runner does, without the folder
+        assert again.lubricant["path"] == str(folder / "oil.toml")
+        assert again.bearings[0].path == str(folder / "brg.toml")
