@@ -609,6 +609,24 @@ def _check_model_types(models: Mapping[str, Any]) -> None:
             raise InputError(f"models.{key}", value, "a model name (a string)")
 
 
+def with_absolute_paths(scene: Scene) -> Scene:
+    """The scene with its relative file paths (bearing / lubricant TOMLs, measured CSV) made
+    absolute against its folder, so that its TOML text (a results folder's ``scene.toml``,
+    a sweep case) still finds them when read from elsewhere."""
+    if not scene.base_dir:
+        return scene
+    base = Path(scene.base_dir)
+    d = scene.to_dict()
+    changed = False
+    tables = [*d.get("bearings", []), d.get("lubricant"), d.get("measured")]
+    for table, key in zip(tables, ["path"] * (len(tables) - 1) + ["file"], strict=True):
+        if isinstance(table, dict) and isinstance(table.get(key), str) \
+                and not Path(table[key]).is_absolute():
+            table[key] = str((base / table[key]).resolve())
+            changed = True
+    return Scene.from_dict(d, base) if changed else scene
+
+
 def check_model_names(scene: Scene) -> None:
     """Kinematics model, heat sources and stepper against their registries, so that the
     error names the scene field (``models.heat_sources[1]``) and lists the known names.

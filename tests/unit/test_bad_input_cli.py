@@ -452,3 +452,23 @@ def test_sweep_of_a_scene_with_relative_file_paths(tmp_path, monkeypatch):
         again = loads_scene(case.scene_toml)  # what the runner does, without the folder
         assert again.lubricant["path"] == str(folder / "oil.toml")
         assert again.bearings[0].path == str(folder / "brg.toml")
+
+
+def test_run_folder_scene_keeps_files_findable(tmp_path, capsys, monkeypatch):
+    # before: scene.toml in the results folder kept "file = 'rig.csv'" relative to the
+    # ORIGINAL scene's folder, so `thermobearing report DIR` failed with
+    # "measured.file = 'rig.csv' is not allowed: an existing CSV file"
+    import thermobearing.coupled as coupled
+    from thermobearing.scene import check_measured_file, load_scene
+
+    def stop(sim, writer):  # stop right after the run wrote scene.toml
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(coupled, "run_coupled", stop)
+    scene_path = measured_scene(tmp_path, GOOD_CSV)
+    out = tmp_path / "elsewhere" / "results"
+    code, _ = run_cli(capsys, "run", scene_path, "--out", out, "--quiet")
+    assert code == 130
+    kept = load_scene(out / "scene.toml")
+    assert kept.measured.file == str((tmp_path / "rig.csv").resolve())
+    check_measured_file(kept)  # found from the results folder

@@ -12,7 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import check_model_names, load_scene
+from ..scene import check_model_names, load_scene, with_absolute_paths
 from ._preflight import preflight
 
 NAME = "run"
@@ -29,7 +29,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
 
-    scene = load_scene(args.scene)
+    # absolute file paths: the results folder's scene.toml (read by `report`) must find them
+    scene = with_absolute_paths(load_scene(args.scene))
     check_model_names(scene)
     name = Path(args.scene).stem if args.scene else "qj1044_rig"
     out = Path(args.out) if args.out else Path("results") / name
