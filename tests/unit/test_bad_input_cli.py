@@ -472,3 +472,19 @@ def test_run_folder_scene_keeps_files_findable(tmp_path, capsys, monkeypatch):
     kept = load_scene(out / "scene.toml")
     assert kept.measured.file == str((tmp_path / "rig.csv").resolve())
     check_measured_file(kept)  # found from the results folder
+
+
+def test_sweep_checks_the_base_scene_before_any_case(tmp_path, capsys, monkeypatch):
+    # before: every case died in the runner with a TypeError traceback
+    # ("four_node_paper002() missing 2 required keyword-only arguments")
+    import thermobearing.simulation as simulation
+
+    def must_not_run(scene_toml):
+        raise AssertionError("a case ran")
+
+    monkeypatch.setattr(simulation, "summarize_scene", must_not_run)
+    scene = write_scene(tmp_path, edited("network.parameters", {}))
+    code, err = run_cli(capsys, "sweep", scene, "--set", "supply.flow=5,10", "--out",
+                        tmp_path / "sw", "--workers", "1")
+    assert code == 1
+    assert_one_paragraph(err, "network.parameters", "housing_outer_diameter")

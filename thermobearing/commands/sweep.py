@@ -12,7 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import check_model_names, load_scene
+from ..scene import check_measured_file, check_model_names, check_network, load_scene
 from ..sweep import finished_cases, parse_set, run_sweep
 
 NAME = "sweep"
@@ -35,6 +35,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     scene = load_scene(args.scene)
     check_model_names(scene)
+    # what `run` checks before solving anything, once for the base scene (a case only
+    # changes values, which expand() validates)
+    check_network(scene.network,
+                  require=bool(set(scene.outputs.want) & {"temperatures", "energy"}))
+    check_measured_file(scene)
     d = scene.to_dict()
     params = [parse_set(s, d) for s in args.sets]
     out = Path(args.out)
