@@ -65,12 +65,13 @@ def run_map(Z, speeds, loads, temperature, warm):
                 r = solve_ball(b, models, w, 1000.0, fa, n_balls=Z,
                                guess=prev if warm else None, theoretical_reference=0.45)
                 ok, it, res, nev = True, r.iterations, r.residual_norm, r.extra["n_eval"]
+                njac = r.extra.get("n_jacobian", 0)
                 prev = r
             except ConvergenceError as err:
-                ok, it, res, nev = False, -1, err.residual, -1
+                ok, it, res, nev, njac = False, -1, err.residual, -1, -1
                 prev = None
             row = dict(speed_rpm=n, axial_load=fa, ok=ok, iterations=it, residual=res,
-                       time_s=time.process_time() - t0, evaluations=nev)
+                       time_s=time.process_time() - t0, evaluations=nev, jacobians=njac)
             if ok and warm:
                 # transient-like warm start: the same point after a 2 % (+20 N) load change
                 t1 = time.process_time()
@@ -78,9 +79,9 @@ def run_map(Z, speeds, loads, temperature, warm):
                     r2 = solve_ball(b, models, w, 1000.0, 1.02 * fa + 20.0, n_balls=Z,
                                     guess=prev, theoretical_reference=0.45)
                     row["small_step"] = (True, time.process_time() - t1, r2.iterations,
-                                         r2.extra["n_eval"])
+                                         r2.extra["n_eval"], r2.extra.get("n_jacobian", 0))
                 except ConvergenceError:
-                    row["small_step"] = (False, time.process_time() - t1, -1, -1)
+                    row["small_step"] = (False, time.process_time() - t1, -1, -1, -1)
             rows.append(row)
     return rows
 
@@ -294,13 +295,14 @@ def main(argv=None) -> int:
                 setting = f"Z={Z},{tname},{'warm' if warm else 'cold'}"
                 summary.append((setting, len(rows), fails, tpp, its, total))
                 nev = np.mean([r["evaluations"] for r in ok]) if ok else float("nan")
-                summary[-1] = summary[-1] + (nev,)
+                njac = np.mean([r["jacobians"] for r in ok]) if ok else float("nan")
+                summary[-1] = summary[-1] + (nev, njac)
                 small = [r["small_step"] for r in rows if "small_step" in r]
                 records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
                                     method="newton_block", setting=setting, time_s=tpp,
                                     error=float(max((r["residual"] for r in ok), default=np.nan)),
                                     ratio_vs_anchor=None, iterations=its, failures=fails,
-                                    points=len(rows), evaluations=nev))
+                                    points=len(rows), evaluations=nev, jacobians=njac))
                 if small:
                     ok_s = [x for x in small if x[0]]
                     small_med[(Z, tname)] = (float(np.median([x[1] for x in ok_s]))
@@ -310,13 +312,15 @@ def main(argv=None) -> int:
                                     float(np.mean([x[1] for x in ok_s])) if ok_s else np.nan,
                                     float(np.mean([x[2] for x in ok_s])) if ok_s else np.nan,
                                     0.0,
-                                    float(np.mean([x[3] for x in ok_s])) if ok_s else np.nan))
+                                    float(np.mean([x[3] for x in ok_s])) if ok_s else np.nan,
+                                    float(np.mean([x[4] for x in ok_s])) if ok_s else np.nan))
                     records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
                                         method="newton_block",
                                         setting=f"Z={Z},{tname},warm +2% load step",
                                         time_s=summary[-1][3], error=None, ratio_vs_anchor=None,
                                         iterations=summary[-1][4], failures=summary[-1][2],
-                                        points=len(small), evaluations=summary[-1][6]))
+                                        points=len(small), evaluations=summary[-1][6],
+                                        jacobians=summary[-1][7]))
     # anchor comparison on a subset (same residual, same cold start)
     sub_speeds = speeds[:: max(1, nmap // 3)]
     sub_loads = loads[:: max(1, nmap // 3)]
@@ -367,11 +371,12 @@ def main(argv=None) -> int:
         print(json.dumps(records, indent=1, default=float))
     else:
         print(f"{'setting':34s} {'points':>6s} {'fail':>5s} {'ms/pt':>8s} {'iters':>6s} "
-              f"{'evals':>6s}")
-        for s, npt, f, tpp, its, _, nev in summary:
-            print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.1f} {its:6.1f} {nev:6.1f}")
-        print("\n(evals: residual evaluations per point; a structured Jacobian is 9 of them,"
-              " evaluated as one batch)")
+              f"{'evals':>6s} {'jacs':>5s}")
+        for s, npt, f, tpp, its, _, nev, njac in summary:
+            print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.2f} {its:6.1f} {nev:6.1f} {njac:5.2f}")
+        print("\n(evals: residual evaluations per point; jacs: analytic Jacobians per point "
+              "(skidding.ball_jacobian, ~2-3 evaluations of CPU each); a finite-difference "
+              "Jacobian, where the models have no analytic one, is 9 evaluations in one batch)")
         print(f"\nanchor subset (cold start, hot oil, identical scaled residual; newton and hybr "
               f"timed {args.anchor_repeat} times interleaved, medians; least_squares once):")
         for z, m, t, f, n in anchor_rows:

@@ -310,6 +310,8 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
                     dnorm[n, i, d] = 0.0
                 dx_[d] = 0.0
                 dr_[d] = 0.0
+            if geo[G_Q, n] <= 0.0:
+                continue        # unloaded: no traction, Q and its derivative 0 (dgeo = 0)
             inner = arc[A_INNER, k]
             dx_[D_BX] = 1.0
             dx_[D_DA] = -inner
@@ -448,6 +450,8 @@ def _jacobian_kernel(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.nda
                 dsum[r, d] = 0.0
         for k in range(nk):
             ci = j * nk + k
+            if geo[G_Q, ci] <= 0.0:
+                continue        # an unloaded contact adds nothing to the balances' derivatives
             Q, na, nr = geo[G_Q, ci], geo[G_NA, ci], geo[G_NR, ci]
             pa, pr = geo[G_PA, ci], geo[G_PR, ci]
             Fx, Fy, Mx, Mz = tr[ci, 0], tr[ci, 1], tr[ci, 2], tr[ci, 4]

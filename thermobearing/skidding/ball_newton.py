@@ -1,12 +1,15 @@
 """Newton driver of the ball skidding solver: damped Newton with block elimination.
 
 One job: solve :class:`~thermobearing.skidding.ball_residual.ball_residual_system` from a
-start (:func:`newton_block`). Numerics (issue 5 item 4): Newton with a structured
-forward-difference Jacobian (:class:`JacobianBlocks`) -- the six per-ball columns are
-perturbed for all balls at once (ball blocks are independent except through the globals),
-three more evaluations give the global columns; the 6x6 ball blocks are eliminated and the
-3x3 Schur complement on the globals is solved; backtracking line search on the scaled
-residual norm. Failure raises ConvergenceError with the residual norm and the state.
+start (:func:`newton_block`). Numerics (issue 5 item 4): Newton with a structured Jacobian
+(:class:`JacobianBlocks`), analytic (:mod:`~thermobearing.skidding.ball_jacobian`, session 7)
+where the default compiled models run, else by forward differences -- the six per-ball
+columns are perturbed for all balls at once (ball blocks are independent except through the
+globals), three more evaluations give the global columns; the 6x6 ball blocks are eliminated
+and the 3x3 Schur complement on the globals is solved; backtracking line search on the scaled
+residual norm. Warm starts take chord / good-Broyden steps with the handed-over Jacobian in
+one compiled loop (:func:`_chord_phase`). Failure raises ConvergenceError with the residual
+norm and the state.
 """
 
 from __future__ import annotations
