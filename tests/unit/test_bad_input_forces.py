@@ -122,15 +122,16 @@ def test_cage_guide_boundary_friction_outside_0_1(qj_context):
     assert info.value.field == "options[cage_guide].boundary_friction"
 
 
-@pytest.mark.xfail(strict=True, reason="heat_sources/cage_guide.py (lead's file) checks "
-                   "friction_coefficient only under form='paper002_eq18'; under the default "
-                   "model a value of 1.5 (or -0.2) given in a scene's heat_source_options is "
-                   "silently ignored. Remove this marker when it is refused (or warned about).")
 def test_cage_guide_friction_coefficient_outside_0_1_is_not_ignored(qj_context):
     from thermobearing.heat_sources import HEAT_SOURCES
 
     with pytest.raises(InputError):
         HEAT_SOURCES.get("cage_guide")(qj_context({"cage_guide": {"friction_coefficient": 1.5}}))
+    # a valid value the default form would not use is refused too, naming the form
+    with pytest.raises(InputError) as info:
+        HEAT_SOURCES.get("cage_guide")(qj_context({"cage_guide": {"friction_coefficient": 0.05}}))
+    assert "paper002_eq18" in str(info.value)
+    assert info.value.field == "options[cage_guide].friction_coefficient"
 
 
 @pytest.mark.parametrize(("options", "words"), [

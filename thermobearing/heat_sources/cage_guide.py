@@ -138,6 +138,14 @@ def cage_guide(ctx: HeatContext) -> HeatResult:
     form = str(ctx.option(name, "form", "short_bearing"))
     if form not in ("short_bearing", "paper002_eq18"):
         raise InputError(f"options[{name}].form", form, "'short_bearing' or 'paper002_eq18'")
+    mu_given = ctx.option(name, "friction_coefficient", None)
+    if mu_given is not None:
+        check_range(f"options[{name}].friction_coefficient", mu_given, 0.0, 1.0)
+        if form != "paper002_eq18":
+            raise InputError(f"options[{name}].friction_coefficient", mu_given,
+                             "no value with form = 'short_bearing' (the default: its drag is "
+                             "the Petroff torque of the land film); the coefficient mu_c is "
+                             "used only with form = 'paper002_eq18'")
     eta = float(ctx.lubricant.dynamic_viscosity(ctx.temperature("oil")))
     material = getattr(cage, "material", None)
     e_mod = getattr(material, "youngs_modulus", None) or b.ring_material.youngs_modulus
