@@ -115,3 +115,21 @@ def test_thermal_ehl_slide_to_roll_both_surfaces_moving(oil4109):
         numerical_tehl(3e5, 0.005, 2.26e11, 10.0, 2.5, 330.0, lubricant=oil4109,
                        solid=get_material("STEEL_52100"))
     assert info.value.field == "slide_to_roll" and "|SRR| < 2" in info.value.allowed
+
+
+@pytest.mark.parametrize(("args", "field"), [
+    ((3e5, 10.0, math.nan, 330.0), "slide_to_roll"),
+    ((3e5, 10.0, 0.1, math.nan), "inlet_temperature"),
+    ((3e5, 10.0, 0.1, -5.0), "inlet_temperature"),
+    ((-3e5, 10.0, 0.1, 330.0), "load_per_length"),
+])
+def test_film_table_query_refuses_bad_points_before_solving(oil4109, args, field):
+    # before: a NaN slide-to-roll ratio or temperature became a garbage table index (an
+    # invalid-cast RuntimeWarning) and the table solved a node far outside the range
+    from thermobearing.ehl import FilmTable
+
+    table = FilmTable("numerical_ehl", 0.005, 2.26e11, lubricant=oil4109)
+    with pytest.raises(InputError) as info:
+        table(*args)
+    assert info.value.field == field
+    assert table.solves == 0

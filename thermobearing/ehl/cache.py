@@ -24,7 +24,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError, check_finite, check_positive
+from ..errors import (
+    ConvergenceError,
+    InputError,
+    check_finite,
+    check_positive,
+    check_temperature,
+)
 from ..registry import Registry
 
 EHL_SOLVERS: Registry[Callable[..., object]] = Registry(
@@ -184,6 +190,8 @@ class FilmTable:
         """Film and traction at one operating point (SI), from the table."""
         check_positive("load_per_length", load_per_length)
         check_positive("entrainment_speed", entrainment_speed)
+        check_finite("slide_to_roll", slide_to_roll)  # NaN became a garbage table index
+        check_temperature("inlet_temperature", inlet_temperature)
         self.queries += 1
         c = self._coords(load_per_length, entrainment_speed, slide_to_roll, inlet_temperature)
         if self.mode == "nearest":
