@@ -180,9 +180,19 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             raise InputError(name, v, "a finite value > 0")
     if int(n_balls) != n_balls or n_balls < 1:
         raise InputError("n_balls", n_balls, "an integer >= 1")
+    if len(search) != 2:
+        raise InputError("search", search, "(low, high) with 0 < low < high")
     lo_s, hi_s = float(search[0]), float(search[1])
     if not 0 < lo_s < hi_s:
         raise InputError("search", search, "(low, high) with 0 < low < high")
+    for name, v, low in (("cage_harmonics", cage_harmonics, 1),
+                         ("ball_pass_harmonics", ball_pass_harmonics, 0),
+                         ("shaft_sidebands", shaft_sidebands, 0), ("padding", padding, 1),
+                         ("n_bands", n_bands, 1)):
+        if isinstance(v, bool) or not isinstance(v, int | np.integer) or v < low:
+            raise InputError(name, v, f"a whole number >= {low}")
+    if not 0.0 < alpha < 1.0:
+        raise InputError("alpha", alpha, "a false-alarm probability in (0, 1)")
     f_lo = lo_s * csr_theoretical * shaft_frequency
     f_hi = hi_s * csr_theoretical * shaft_frequency
     comb = _comb(int(n_balls), cage_harmonics, ball_pass_harmonics, shaft_sidebands)

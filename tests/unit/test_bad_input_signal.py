@@ -200,3 +200,19 @@ def test_vibration_parameter_overrides_unknown_or_fixed_by_geometry():
     with pytest.raises(InputError) as info:
         paper004_parameters(n_balls=2)
     assert info.value.field == "vibration.n_balls" and "bearing geometry" in info.value.allowed
+
+
+@pytest.mark.parametrize(("kwargs", "field"), [
+    ({"alpha": 0.0}, "alpha"),                  # before: ZeroDivisionError
+    ({"alpha": 2.0}, "alpha"),                  # before: accepted
+    ({"padding": 0}, "padding"),                # before: ValueError from numpy's FFT
+    ({"search": (0.3,)}, "search"),             # before: IndexError
+    ({"cage_harmonics": 2.5}, "cage_harmonics"),  # before: TypeError
+    ({"cage_harmonics": 0}, "cage_harmonics"),  # before: "not detected" with no cage line
+    ({"n_bands": 0}, "n_bands"),
+    ({"shaft_sidebands": -1}, "shaft_sidebands"),
+])
+def test_analyser_settings_out_of_range(kwargs, field):
+    with pytest.raises(InputError) as info:
+        estimate(noise(), **kwargs)
+    assert info.value.field == field and info.value.value == next(iter(kwargs.values()))
