@@ -51,7 +51,8 @@ Layout (every table optional unless marked)::
 
     [solver]
     stepper = "exprb43"                # exprb43 | tr_bdf2 | backward_euler ...
-    rtol = 1e-4
+    rtol = 1e-7                        # step error scale atol + rtol |T| (default 1e-5 K + 3e-5 K)
+    atol = 1e-5                        # [K]; steps cost no heat-source call (chunk model)
     kinematics_tolerance = 0.03        # relative viscosity change that triggers a re-solve (BM-7)
     chunk = "90 s"                     # coupling interval: heat re-linearised, output row
 
@@ -405,11 +406,18 @@ class Measured:
 
 @dataclass(frozen=True)
 class Solver:
-    """Solver settings."""
+    """Solver settings.
+
+    ``rtol``, ``atol`` [K]: the stepper's error scale atol + rtol |T| per step. Inside a
+    coupling chunk the heat is the chunk's quadratic model (:mod:`thermobearing.coupled`),
+    so a step costs no heat-source evaluation and the tight defaults are nearly free
+    (default scene: 95 instead of 44 steps, 4e-6 instead of 5.6e-5 K from a tight LSODA
+    reference of the same chain, the same CPU time; BM-E2E).
+    """
 
     stepper: str = "exprb43"
-    rtol: float = 1e-4
-    atol: float = 1e-3
+    rtol: float = 1e-7
+    atol: float = 1e-5
     kinematics_tolerance: float = 0.03
     max_step: float = 600.0
     chunk: float = 90.0
