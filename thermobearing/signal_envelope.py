@@ -54,6 +54,11 @@ class EnvelopeSpectrum:
         return np.sqrt(self.power)
 
 
+def _check_padding(padding: int) -> None:
+    if isinstance(padding, bool) or not isinstance(padding, int | np.integer) or padding < 1:
+        raise InputError("padding", padding, "a whole zero-padding factor >= 1")
+
+
 def envelope_spectrum(x, sampling_rate: float, band: tuple[float, float] | None = None, *,
                       max_frequency: float | None = None, padding: int = 8,
                       min_band_frequency: float = 0.0,
@@ -74,6 +79,7 @@ def envelope_spectrum(x, sampling_rate: float, band: tuple[float, float] | None 
     """
     fs = float(sampling_rate)
     arr = check_signal(x, fs)
+    _check_padding(padding)
     nyq = fs / 2
     sk = math.nan
     if band is None:
@@ -191,6 +197,7 @@ def spectral_peak(x, sampling_rate: float, low: float, high: float, *, padding: 
     arr = check_signal(x, fs)
     if not (0 <= low < high <= fs / 2):
         raise InputError("range", (low, high), f"0 <= low < high <= Nyquist ({fs / 2:g} Hz)")
+    _check_padding(padding)
     w = np.hanning(arr.size)
     nfft = padding * arr.size
     amp = np.abs(np.fft.rfft((arr - arr.mean()) * w, nfft)) * 2.0 / w.sum()

@@ -7,6 +7,7 @@ envelope spectrum of :mod:`thermobearing.signal_envelope`.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -56,6 +57,11 @@ def kurtogram_bands(x, sampling_rate: float, n_bands: int = 1, *,
     """
     fs = float(sampling_rate)
     arr = check_signal(x, fs)
+    if isinstance(n_bands, bool) or not isinstance(n_bands, int | np.integer) or n_bands < 1:
+        raise InputError("n_bands", n_bands, "a whole number of bands >= 1")
+    for name, v in (("min_frequency", min_frequency), ("min_bandwidth", min_bandwidth)):
+        if not (math.isfinite(float(v)) and v >= 0):
+            raise InputError(name, v, "a finite frequency >= 0 Hz")
     arr = arr - arr.mean()
     cells: list[tuple[float, float, float]] = []
     table = []

@@ -216,3 +216,17 @@ def test_analyser_settings_out_of_range(kwargs, field):
     with pytest.raises(InputError) as info:
         estimate(noise(), **kwargs)
     assert info.value.field == field and info.value.value == next(iter(kwargs.values()))
+
+
+@pytest.mark.parametrize(("call", "field"), [
+    (lambda x: S.envelope_spectrum(x, FS, (1000.0, 3000.0), padding=0), "padding"),
+    (lambda x: S.spectral_peak(x, FS, 1000.0, 3000.0, padding=0), "padding"),
+    (lambda x: S.kurtogram_bands(x, FS, n_bands=0), "n_bands"),       # before: accepted
+    (lambda x: S.kurtogram_band(x, FS, min_frequency=-5.0), "min_frequency"),
+    (lambda x: S.envelope_spectrum(x, FS, (np.nan, 3000.0)), "band"),
+])
+def test_spectrum_helpers_settings_out_of_range(call, field):
+    # padding 0 was a ValueError from numpy's FFT
+    with pytest.raises(InputError) as info:
+        call(noise())
+    assert info.value.field == field
