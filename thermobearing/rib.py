@@ -82,7 +82,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numba import njit
 
-from .errors import InputError, UnknownNameError, check_positive, check_range
+from .errors import InputError, UnknownNameError, check_finite, check_positive, check_range
 from .hertz import point_contact, point_contact_stiffness
 
 #: end-face shapes: the paper's sphere (eqs. 1, 11) or the sphere cap with a chamfer blend
@@ -574,6 +574,12 @@ def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: f
         skew, axial_shift, skew_rate, roller_spin, axial_speed)))
     shape = arrs[0].shape
     flat = [np.ascontiguousarray(v.ravel()) for v in arrs]
+    names = ("skew", "axial_shift", "skew_rate", "roller_spin", "axial_speed")
+    for name, v in zip(names, flat, strict=True):  # a NaN read as "no contact" before
+        if not np.all(np.isfinite(v)):
+            raise InputError(name, v if v.size > 1 else float(v[0]), "finite numbers")
+    check_finite("inner_speed", inner_speed)
+    check_finite("cage_speed", cage_speed)
     f_g = 0.0
     if mixture_viscosity > 0.0:
         f_g = abs(float(lubricant_drag(geom, inner_speed, cage_speed, mixture_viscosity)[0]))

@@ -94,3 +94,26 @@ def test_rib_map_negative_clearance_one_line(capsys):
     err = capsys.readouterr().err
     assert code == 1 and "Traceback" not in err
     assert "rib.axial_clearance" in err and ">= 0" in err
+
+
+def test_rib_friction_outside_0_1_refused_before_the_dynamics(crb, oil):
+    # before: accepted by build_model; rib_forces refused it only when the finished run
+    # was post-processed
+    from thermobearing.skidding.roller_dynamics import build_model
+
+    with pytest.raises(InputError) as info:
+        build_model(crb, oil, 3000.0, 3000.0, 0.0, rib_friction=2.0)
+    assert info.value.field == "rib_friction" and "[0, 1]" in info.value.allowed
+
+
+@pytest.mark.parametrize("field", ["skew", "axial_shift", "roller_spin"])
+def test_rib_forces_nan_state_is_refused_not_read_as_no_contact(crb, field):
+    # before: a NaN skew returned zero forces (every comparison with NaN is False)
+    from thermobearing.rib import rib_forces
+
+    state = {"skew": 0.0, "axial_shift": 0.0, "roller_spin": -8000.0}
+    state[field] = float("nan")
+    with pytest.raises(InputError) as info:
+        rib_forces(rib_geometry(crb), state["skew"], state["axial_shift"], inner_speed=3000.0,
+                   cage_speed=1300.0, roller_spin=state["roller_spin"])
+    assert info.value.field == field and "finite" in info.value.allowed

@@ -316,6 +316,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     cp = bearing.cage.pocket_clearance if pocket_clearance is None else pocket_clearance
     check_positive("pocket_clearance", cp, allow_zero=True)
     check_range("oil_fraction", oil_fraction, 0.0, 1.0)
+    check_range("rib_friction", rib_friction, 0.0, 1.0)  # else refused only after the run
     check_positive("traction_limit", traction_limit)
     check_positive("traction_speed", traction_speed)
     check_positive("pocket_stiffness", pocket_stiffness)
