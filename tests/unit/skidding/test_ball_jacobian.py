@@ -242,3 +242,45 @@ def test_compiled_chord_phase_takes_the_python_loops_steps(bearing, fa):
     R, Gc, G0, _ = system.evaluate(*a.unknowns)
     assert math.sqrt(np.sum(R ** 2) + np.sum((Gc.sum(0) + G0) ** 2)) == pytest.approx(
         a.residual_norm, rel=1e-6, abs=1e-13)
+
+
+def test_first_warm_step_is_the_tangent_predictor(bearing):
+    # at the previous solution x0 the residual under the new loads is exactly the load change
+    # in the two ring-force rows (dR/dp dp), so the first step of a warm start with the
+    # Jacobian at x0, x1 = x0 - J^-1 dR/dp dp, is the Euler (tangent) predictor: the residual
+    # falls from O(dp) to O(dp^2). Measured here for +0.5 / +1 / +2 % axial-load steps.
+    from thermobearing.skidding.ball_newton import (
+        _CAP_G,
+        _CAP_X,
+        _NO_HIST,
+        _factor_blocks,
+        _inverse_small,
+        _propose,
+        _residual_norm,
+    )
+
+    models = _models(bearing, 353.15, W1800)
+    r0 = solve_ball(bearing, models, W1800, 1000.0, 10e3, theoretical_reference=0.45)
+    s0 = r0.extra["system"]
+    X, G = r0.unknowns
+    J0 = analytic_blocks(s0, X, G)
+    out = {}
+    for frac in (0.005, 0.01, 0.02):
+        s = s0.reloaded(1000.0, 10e3 * (1.0 + frac))
+        J = J0.rescaled(s)
+        R, Gc, Gk, _ = s.evaluate(X, G)
+        n0 = _residual_norm(R, Gc, Gk)
+        Ainv, AiB, S, ok = _factor_blocks(J.A, J.B, np.ascontiguousarray(J.C), J.Dg)
+        Sinv, ok2 = _inverse_small(S)
+        assert ok and ok2
+        xs, gs = s.scales()
+        *_, Xn, Gn, _ = _propose(Ainv, AiB, np.ascontiguousarray(J.C), Sinv, R, Gc, Gk, _CAP_X,
+                                 _CAP_G, _NO_HIST, 0, xs, gs, X, G)
+        Rn, Gcn, Gkn, _ = s.evaluate(Xn, Gn)
+        out[frac] = (n0, _residual_norm(Rn, Gcn, Gkn))
+    (a0, a1), (b0, b1), (c0, c1) = out[0.005], out[0.01], out[0.02]
+    # the start residual is first order in the step (the load term, exactly linear)...
+    assert b0 / a0 == pytest.approx(2.0, rel=0.02) and c0 / b0 == pytest.approx(2.0, rel=0.02)
+    # ... the predicted one second order (doubling the step: x 4, here within 3-5)
+    assert 3.0 < b1 / a1 < 5.0 and 3.0 < c1 / b1 < 5.0
+    assert c1 < 0.02 * c0
