@@ -7,9 +7,11 @@ nu [m^2/s], rho [kg/m^3], c_p [J/(kg K)], k [W/(m K)].
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Callable
+from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
@@ -248,25 +250,50 @@ class AirProperties(NamedTuple):
     prandtl: ArrayLike  #: -
 
 
+#: the 1-atm air table (``scripts/make_air_table.py``, from CoolProp): pressure [Pa], and
+#: the file with temperature [K] and density, viscosity, conductivity, c_p columns
+AIR_TABLE_PRESSURE = 101325.0
+_AIR_TABLE_FILE = Path(__file__).resolve().parent / "data" / "air_1atm.csv"
+
+
+@functools.lru_cache(maxsize=1)
+def _air_table() -> tuple[np.ndarray, ...]:
+    """(T, rho, mu, k, c_p) columns of the 1-atm air table."""
+    data = np.loadtxt(_AIR_TABLE_FILE, delimiter=",", comments="#", skiprows=2)
+    return tuple(np.ascontiguousarray(data[:, j]) for j in range(5))
+
+
 def air_properties(T: ArrayLike, p: ArrayLike = 101325.0) -> AirProperties:
-    """Dry-air properties from CoolProp (Lemmon et al. 2000 pseudo-pure air), vectorised.
+    """Dry-air properties (Lemmon et al. 2000 pseudo-pure air, CoolProp), vectorised.
+
+    At 1 atm between 100 and 1500 K the values are interpolated (linearly, 0.5 K spacing)
+    in a table made from CoolProp (``thermobearing/data/air_1atm.csv``,
+    ``scripts/make_air_table.py``; within 1e-5 relative of CoolProp, tested): importing
+    CoolProp costs ~5 s, more than a whole default protocol. Other pressures and
+    temperatures call CoolProp.
 
     Parameters
     ----------
-    T : temperature [K], 60-2000 K.
+    T : temperature [K], 100-2000 K (air is liquid below ~79 K at 1 atm; CoolProp's air
+        model starts at 60 K, its pseudo-pure model has no two-phase states).
     p : absolute pressure [Pa], > 0.
 
     Returns
     -------
     AirProperties(density, dynamic_viscosity, thermal_conductivity, specific_heat, prandtl).
     """
-    import CoolProp.CoolProp as CP
-
     check_temperature("temperature", T)
     check_positive("pressure", p)
     t, pp = np.broadcast_arrays(np.asarray(T, dtype=float), np.asarray(p, dtype=float))
-    if np.any(t < 60.0) or np.any(t > 2000.0):
-        raise InputError("temperature", T, "60 K to 2000 K for air (CoolProp range)")
+    if np.any(t < 100.0) or np.any(t > 2000.0):
+        raise InputError("temperature", T, "100 K to 2000 K for air (a gas at 1 atm; the "
+                         "range of its CoolProp model)")
+    tab = _air_table()
+    if np.all(pp == AIR_TABLE_PRESSURE) and np.all(t <= tab[0][-1]):
+        rho, mu, k, cp = (np.interp(t, tab[0], col) for col in tab[1:])
+        return AirProperties(_out(rho), _out(mu), _out(k), _out(cp), _out(mu * cp / k))
+    import CoolProp.CoolProp as CP
+
     vals = [
         np.asarray(CP.PropsSI(k, "T", t.ravel(), "P", pp.ravel(), "Air"), dtype=float).reshape(
             t.shape

@@ -246,6 +246,30 @@ def test_air_properties_sane():
     assert arr.density[0] == pytest.approx(a.density * 2e5 / 101325, rel=1e-3)
 
 
+def test_air_table_matches_coolprop_and_falls_back_outside():
+    """The 1-atm air table (scripts/make_air_table.py) against CoolProp itself at off-grid
+    temperatures, the CoolProp path above the table and at other pressures, and a clear
+    error where air is not a gas (the stepper's trial iterates may go there)."""
+    import CoolProp.CoolProp as CP
+
+    from thermobearing.errors import InputError
+
+    t = np.random.default_rng(7).uniform(100.0, 1500.0, 400)
+    a = air_properties(t)
+    for value, key, tol in ((a.density, "D", 1e-5), (a.dynamic_viscosity, "V", 3e-6),
+                            (a.thermal_conductivity, "L", 3e-6), (a.specific_heat, "C", 3e-6),
+                            (a.prandtl, "Prandtl", 1e-5)):
+        ref = CP.PropsSI(key, "T", t, "P", 101325.0, "Air")
+        np.testing.assert_allclose(value, ref, rtol=tol)
+    hot = air_properties(1800.0)  # beyond the table: CoolProp
+    assert hot.density == pytest.approx(CP.PropsSI("D", "T", 1800.0, "P", 101325.0, "Air"),
+                                        rel=1e-12)
+    assert isinstance(air_properties(320.0).density, float)
+    with pytest.raises(InputError) as info:
+        air_properties(81.45)
+    assert "100 K to 2000 K" in str(info.value)
+
+
 # ---------------------------------------------------------------- presets
 @pytest.mark.parametrize("name", PRESETS)
 def test_presets_load_and_are_sane(name):

@@ -267,26 +267,19 @@ class HertzContactPaper002(ConductanceModel):
 
 # --------------------------------------------------------------- correlations
 def _air(T: float):
-    """Air properties (rho, mu, k, c_p) at T [K], memoised on T rounded to 0.01 K (the
-    properties change by < 1e-4 relative over 0.01 K; a CoolProp call costs ~10 ms and the
-    stepper re-evaluates temperature-dependent edges every step)."""
-    return _air_at(round(float(T), 2))
+    """Air properties (rho, mu, k, c_p) at T [K] and 1 atm
+    (:func:`thermobearing.lubricant_properties.air_properties`: its 1-atm table, linear in T,
+    so the conductances are continuous in T), memoised on T."""
+    return _air_at(float(T))
 
 
 @functools.lru_cache(maxsize=4096)
 def _air_at(T: float):
-    """Air properties at T [K]: thermobearing.lubricant.air_properties if present, else CoolProp."""
-    try:
-        from ..lubricant import air_properties  # engineer A's CoolProp wrapper
-    except ImportError:  # pragma: no cover - until lubricant.py lands
-        air_properties = None
-    if air_properties is not None:
-        p = air_properties(T)
-        return (float(p.density), float(p.dynamic_viscosity), float(p.thermal_conductivity),
-                float(p.specific_heat))
-    from CoolProp.CoolProp import PropsSI
+    from ..lubricant_properties import air_properties
 
-    return tuple(float(PropsSI(k, "T", T, "P", 101325.0, "Air")) for k in ("D", "V", "L", "C"))
+    p = air_properties(T)
+    return (float(p.density), float(p.dynamic_viscosity), float(p.thermal_conductivity),
+            float(p.specific_heat))
 
 
 @_register("natural_convection_horizontal_cylinder",
