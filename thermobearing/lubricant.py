@@ -889,6 +889,9 @@ def load_lubricant(name_or_path: str | Path) -> Lubricant:
         if not candidate.is_file():
             raise UnknownNameError("lubricant preset", str(name_or_path), preset_names())
         path = candidate
-    with path.open("rb") as fh:
-        data = tomllib.load(fh)
+    try:
+        with path.open("rb") as fh:
+            data = tomllib.load(fh)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError("lubricant file", str(path), f"valid TOML ({exc})") from None
     return lubricant_from_dict(data, where=f"lubricant[{path.stem}]")

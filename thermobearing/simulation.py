@@ -281,7 +281,9 @@ class Simulation:
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
         from .geometry import load_bearing
+        from .scene import check_model_names
 
+        check_model_names(scene)  # the error names the scene field and the known names
         self.scene = scene
         self.progress = sys.stderr.isatty() if progress is None else bool(progress)
         lub_spec = scene.lubricant
@@ -480,9 +482,17 @@ class Simulation:
     # ------------------------------------------------------------------- run
     def run(self, out_dir: Path | str | None = None) -> Results:
         """Run the scene; write results to ``out_dir`` as they are computed (if given)."""
+        from .scene import check_measured_file, check_network, with_absolute_paths
+
+        # what loading cannot know wrong fails here, before any model is solved (the CLI
+        # runs the same checks earlier): the network template's required parameters and
+        # the measured CSV (columns, numbers, increasing times)
+        check_network(self.scene.network, require=bool(self.needs.get("network")))
+        check_measured_file(self.scene)
         writer = ResultsWriter(out_dir) if out_dir is not None else None
         t_wall = time.perf_counter()
-        scene_toml = self.scene.to_toml()
+        # absolute file paths: the results folder's scene.toml still finds its files
+        scene_toml = with_absolute_paths(self.scene).to_toml()
         if writer is not None:
             (Path(out_dir) / "scene.toml").write_text(scene_toml, encoding="utf-8")
         if self.needs["network"]:

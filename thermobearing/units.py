@@ -9,6 +9,7 @@ the SI unit declared for that field. A bare number is taken to be SI already.
 from __future__ import annotations
 
 import functools
+import math
 import re
 from typing import Any
 
@@ -99,6 +100,8 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if isinstance(value, bool):
         raise InputError(field, value, f"a number or a quantity string convertible to {target}")
     if isinstance(value, int | float):
+        if not math.isfinite(value):
+            raise InputError(field, value, f"a finite number (in {target})")
         return float(value)
     if not isinstance(value, str):
         raise InputError(field, value, f"a number or a quantity string convertible to {target}")
@@ -119,6 +122,10 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, AssertionError):
         raise InputError(field, value, f"a known unit convertible to {target}") from None
+    if not math.isfinite(out):
+        raise InputError(field, value, f"a finite quantity convertible to {target}")
+    if target == "K" and out <= 0.0:
+        raise InputError(field, value, "a temperature above absolute zero (> 0 K, > -273.15 degC)")
     return float(out)
 
 

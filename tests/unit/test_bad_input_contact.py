@@ -100,14 +100,16 @@ def test_lubricant_temperature_at_or_below_absolute_zero(temperature):
     assert "absolute zero" in info.value.allowed or "finite" in info.value.allowed
 
 
-@pytest.mark.xfail(strict=True, reason="units.to_si (lead's file) converts '-300 degC' to "
-                   "-26.85 K without complaint; scenes check it themselves, other callers "
-                   "(cage-speed, rib-map, the Python API) do not. Remove this marker when "
-                   "to_si refuses temperatures at or below 0 K.")
 def test_to_si_refuses_a_temperature_below_absolute_zero():
     with pytest.raises(InputError) as info:
         to_si("-300 degC", "temperature", field="supply.inlet_temperature")
     assert info.value.value == "-300 degC"
+    assert info.value.field == "supply.inlet_temperature" and "absolute zero" in info.value.allowed
+    with pytest.raises(InputError):
+        to_si(float("nan"), "volume_flow", field="supply.flow")
+    with pytest.raises(InputError):
+        to_si("inf L/min", "volume_flow", field="supply.flow")
+    assert to_si("-20 degC", "temperature") == pytest.approx(253.15)
 
 
 def test_viscosity_data_inconsistent_nu100_above_nu40():

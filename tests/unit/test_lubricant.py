@@ -452,3 +452,13 @@ def test_scalar_zero_pressure_fast_paths_equal_the_array_path(name):
         e, r = lub.dynamic_viscosity(float(t)), lub.density(float(t))
         assert type(e) is float and type(r) is float
         assert e == pytest.approx(eta[k], rel=1e-14) and r == pytest.approx(rho[k], rel=1e-14)
+
+
+def test_broken_lubricant_toml_is_a_named_input_error(tmp_path):
+    from thermobearing.errors import InputError
+
+    bad = tmp_path / "my_oil.toml"
+    bad.write_text("title = \n")
+    with pytest.raises(InputError) as info:
+        load_lubricant(bad)
+    assert info.value.field == "lubricant file" and "valid TOML" in info.value.allowed

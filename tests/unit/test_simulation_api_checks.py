@@ -1,0 +1,63 @@
+"""The Python API (``Simulation(scene).run()``) checks what the CLI's preflight checks, so
+that a script gets the same named errors, before any model is solved."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.unit.test_bad_input_cli import GOOD_CSV, measured_scene, write_scene
+from tests.unit.test_bad_input_scene import edited
+from thermobearing.errors import InputError, UnknownNameError
+from thermobearing.scene import load_scene
+from thermobearing.simulation import Simulation
+
+
+def _no_solve(monkeypatch):
+    """Make any kinematics solve fail loudly: the checks must come first."""
+    import thermobearing.simulation as simulation
+
+    def boom(*args, **kwargs):
+        raise AssertionError("a model was solved before the input check")
+
+    monkeypatch.setattr(simulation.Simulation, "solve_kinematics", boom)
+
+
+def test_missing_network_parameters_named_before_any_solve(tmp_path, monkeypatch):
+    scene = load_scene(write_scene(tmp_path, edited("network.parameters", {})))
+    _no_solve(monkeypatch)
+    with pytest.raises(InputError) as info:
+        Simulation(scene, progress=False).run()
+    assert "network.parameters" in info.value.field
+    assert "housing_outer_diameter" in str(info.value)
+
+
+def test_measured_text_cell_named_before_any_solve(tmp_path, monkeypatch):
+    scene = load_scene(measured_scene(tmp_path, "time [min],TC1\n0,35\n5,abc\n10,37\n"))
+    _no_solve(monkeypatch)
+    with pytest.raises(InputError) as info:
+        Simulation(scene, progress=False).run()
+    assert "TC1" in info.value.field and "'abc'" in str(info.value.value)
+
+
+def test_control_with_skidding_kinematics_named_at_construction(tmp_path):
+    data = edited("models.control", "outer_race")
+    data["models"]["kinematics"] = "skidding"
+    scene = load_scene(write_scene(tmp_path, data))
+    with pytest.raises((InputError, UnknownNameError)) as info:
+        Simulation(scene, progress=False)
+    assert "models.control" in str(info.value)
+
+
+def test_results_scene_toml_has_absolute_paths(tmp_path, monkeypatch):
+    import thermobearing.coupled as coupled
+
+    def stop(sim, writer):  # the scene.toml is written before the run starts
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(coupled, "run_coupled", stop)
+    scene = load_scene(measured_scene(tmp_path, GOOD_CSV))
+    out = tmp_path / "elsewhere"
+    with pytest.raises(KeyboardInterrupt):
+        Simulation(scene, progress=False).run(out)
+    kept = load_scene(out / "scene.toml")
+    assert kept.measured.file == str((tmp_path / "rig.csv").resolve())
