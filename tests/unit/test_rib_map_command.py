@@ -31,3 +31,28 @@ def test_rib_map_reduced_model_and_bad_orbits(tmp_path, capsys):
     assert len(rows) == 2 and float(rows[1][0]) == 0.03
     assert main(["rib-map", "--orbits", "2", "--out", str(tmp_path), "--no-plot"]) != 0
     assert "--orbits" in capsys.readouterr().err
+
+
+def test_rib_map_ctrl_c_keeps_finished_points_and_says_where(tmp_path, capsys, monkeypatch):
+    """Each point is written as soon as it is computed; Ctrl-C during the second point keeps
+    the first in the CSV and names the file."""
+    import thermobearing.skidding.roller_dynamics_map as rdm
+
+    real = rdm.simulate
+    calls = []
+
+    def interrupt_second(*args, **kwargs):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(rdm, "simulate", interrupt_second)
+    rc = main(["rib-map", "--param", "axial_clearance", "--values", "0.03,0.05 mm", "--model",
+               "reduced", "--unbalance", "0.11 g", "--out", str(tmp_path), "--no-plot"])
+    assert rc == 130
+    path = tmp_path / "rib_map_axial_clearance.csv"
+    rows = list(csv.reader(path.open()))
+    assert len(rows) == 2 and float(rows[1][0]) == 0.03
+    err = capsys.readouterr().err
+    assert "interrupted" in err and str(path) in err

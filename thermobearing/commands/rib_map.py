@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import sys
 from pathlib import Path
 
 from ..errors import InputError
@@ -183,10 +184,6 @@ def run(args: argparse.Namespace) -> int:
         values = (_parse_list(args.values, KINDS[p], "--values") if args.values is not None
                   else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
-        rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
-                              temperature=temperature, cache=cache, end_face=args.end_face,
-                              coupling=coupling, slide=args.slide,
-                              coupled_options=coupled_options, **options)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
@@ -198,7 +195,9 @@ def run(args: argparse.Namespace) -> int:
                         "rib_contact_fraction [-]", "rib_heat_per_roller [W]",
                         "bar_contact_fraction [-]", "pocket_friction_extra [N]",
                         "cage_speed [rad/s]", "cost [s]"])
-            for r in rows:
+            fh.flush()
+
+            def write_row(r: dict, w=w, fh=fh, scale=scale) -> None:
                 w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
                             f"{r['pv_left'] / 1e6:.6g}", f"{r['pv_right'] / 1e6:.6g}",
                             f"{r['pv_peak_left'] / 1e6:.6g}", f"{r['pv_peak_right'] / 1e6:.6g}",
@@ -211,6 +210,20 @@ def run(args: argparse.Namespace) -> int:
                             f"{r['bar_contact_fraction']:.4g}",
                             f"{r['pocket_friction_extra']:.5g}", f"{r['cage_speed']:.6g}",
                             f"{r['cost_s']:.3g}"])
+                fh.flush()  # every point is on disk as soon as it is computed
+
+            try:
+                rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,
+                                      temperature=temperature, cache=cache,
+                                      end_face=args.end_face, coupling=coupling,
+                                      slide=args.slide, coupled_options=coupled_options,
+                                      on_row=write_row, **options)
+            except KeyboardInterrupt:
+                fh.flush()
+                print(f"interrupted while mapping {p}: the points finished so far are in "
+                      f"{path} (and the parameters before it in {out}); rerun with --param "
+                      "to map the rest", file=sys.stderr)
+                return 130
         print(f"{p}: {path}")
         for r in rows:
             print(f"  {r['value'] / scale:8.4g} {unit:4s} m_u {r['unbalance_mass'] * 1e3:.3g} g"

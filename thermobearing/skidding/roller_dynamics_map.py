@@ -30,7 +30,7 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                 model: str = "reduced", temperature: float = 353.15,
                 cache: dict | None = None, end_face: str = "sphere",
                 slide: str = "offset", coupled_options: dict[str, Any] | None = None,
-                **model_options: Any) -> list[dict[str, float]]:
+                on_row: Any = None, **model_options: Any) -> list[dict[str, float]]:
     """PV and slip of the base case with ``parameter`` swept over ``values`` (SI).
 
     One row per (value, unbalance mass): the :class:`RollerResponse` fields (pv_left,
@@ -41,6 +41,8 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
     ``model``: "reduced", "full" (one roller) or "coupled" (all rollers + cage,
     :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, ~1.5 s CPU/point;
     ``coupled_options`` its keyword options, e.g. ``n_orbits``, ``warmup_orbits``).
+    ``on_row``: called with each row as soon as it is computed (a caller writes it out, so
+    an interrupted map keeps its finished points).
     """
     if parameter not in MAP_PARAMETERS:
         raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
@@ -82,4 +84,6 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
                          "bar_contact_fraction": r.bar_contact_fraction,
                          "cage_speed": (float(np.mean(r.series["cage_speed"]))
                                         if model == "coupled" else m.cage_speed)})
+            if on_row is not None:
+                on_row(rows[-1])
     return rows
