@@ -269,6 +269,22 @@ class _Evaluation:
     reads: frozenset[str] = frozenset(("inner_ring", "outer_ring", "elements", "cage", "oil"))
 
 
+def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: str) -> Any:
+    """``load_bearing`` with the scene's overrides; an override the bearing refuses is named
+    by its scene field (``bearings[0].overrides.contact_angle``) with the value as written
+    (``'90 deg'``), the converted SI value beside the rule."""
+    from .geometry import load_bearing
+
+    try:
+        return load_bearing(src, overrides=overrides or None)
+    except InputError as exc:
+        key = str(exc.field).rsplit(".", 1)[-1]
+        if overrides and key in overrides and type(exc) is InputError:
+            raise InputError(f"{where}.overrides.{key}", overrides[key],
+                             f"{exc.allowed} (checked in SI: {exc.value!r})") from None
+        raise
+
+
 class Simulation:
     """Run a scene.
 
@@ -280,7 +296,6 @@ class Simulation:
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
-        from .geometry import load_bearing
         from .scene import check_model_names
 
         check_model_names(scene)  # the error names the scene field and the known names
@@ -298,9 +313,9 @@ class Simulation:
         self.bearings: list[_Bearing] = []
         self.calibration_notes: list[str] = []
         dropped: list[str] = []
-        for spec in scene.bearings:
+        for i_spec, spec in enumerate(scene.bearings):
             src = spec.preset or str(scene.resolve_path(spec.path))
-            b = load_bearing(src, overrides=spec.overrides or None)
+            b = _load_scene_bearing(src, spec.overrides, f"bearings[{i_spec}]")
             is_ball = hasattr(b, "ball_diameter")
             opts = dict(kin_options)
             opts.update(film_kinematics_options(scene.models.get("film"), b, self.lubricant,

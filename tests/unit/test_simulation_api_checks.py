@@ -61,3 +61,12 @@ def test_results_scene_toml_has_absolute_paths(tmp_path, monkeypatch):
         Simulation(scene, progress=False).run(out)
     kept = load_scene(out / "scene.toml")
     assert kept.measured.file == str((tmp_path / "rig.csv").resolve())
+
+
+def test_bearing_override_refused_is_named_by_its_scene_field(tmp_path):
+    data = edited("bearings.0.overrides", {"contact_angle": "90 deg"})
+    scene = load_scene(write_scene(tmp_path, data))
+    with pytest.raises(InputError) as info:
+        Simulation(scene, progress=False)
+    assert info.value.field == "bearings[0].overrides.contact_angle"
+    assert info.value.value == "90 deg" and "SI" in info.value.allowed
