@@ -64,11 +64,24 @@ def build_network(sim: Simulation) -> Any:
                              "set in [environment] / [supply], not in the network")
     net = None
     for b in sim.bearings:
-        net = entry.obj(b.bearing, sim.lubricant, network=net, group=b.name,
-                        prefix=f"{b.name}.",
-                        ambient_temperature=scene.environment.ambient_temperature,
-                        oil_inlet_temperature=scene.supply.inlet_temperature,
-                        oil_flow=scene.supply.flow, **params)
+        try:
+            net = entry.obj(b.bearing, sim.lubricant, network=net, group=b.name,
+                            prefix=f"{b.name}.",
+                            ambient_temperature=scene.environment.ambient_temperature,
+                            oil_inlet_temperature=scene.supply.inlet_temperature,
+                            oil_flow=scene.supply.flow, **params)
+        except InputError as exc:
+            # name the scene field: the parameter itself where the template's field ends in
+            # its name (value as written), else the template's own field under [network]
+            key = str(exc.field).rsplit(".", 1)[-1]
+            if key in raw and type(exc) is InputError:
+                raise InputError(f"network.parameters.{key}", raw[key],
+                                 f"{exc.allowed} (template {name!r}, checked in SI: "
+                                 f"{exc.value!r})") from None
+            raise InputError(f"network (template {name!r}, bearing {b.name!r}): {exc.field}",
+                             exc.value, f"{exc.allowed}; set by [network] parameters "
+                             f"{', '.join(sorted(raw)) or '(none)'} or the template's "
+                             "defaults") from None
     net.validate()
     return net
 

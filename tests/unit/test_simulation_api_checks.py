@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from tests.unit.test_bad_input_cli import GOOD_CSV, measured_scene, write_scene
-from tests.unit.test_bad_input_scene import edited
+from tests.unit.test_bad_input_scene import BASE, edited
 from thermobearing.errors import InputError, UnknownNameError
 from thermobearing.scene import load_scene
 from thermobearing.simulation import Simulation
@@ -70,3 +70,22 @@ def test_bearing_override_refused_is_named_by_its_scene_field(tmp_path):
         Simulation(scene, progress=False)
     assert info.value.field == "bearings[0].overrides.contact_angle"
     assert info.value.value == "90 deg" and "SI" in info.value.allowed
+
+
+def test_network_parameter_refused_by_the_template_is_named_by_its_scene_field(tmp_path):
+    from thermobearing.coupled import build_network
+
+    params = dict(BASE["network"]["parameters"])
+    params["housing_length"] = "-140 mm"
+    scene = load_scene(write_scene(tmp_path, edited("network.parameters", params)))
+    sim = Simulation(scene, progress=False)
+    with pytest.raises(InputError) as info:
+        build_network(sim)
+    assert info.value.field == "network.parameters.housing_length"
+    assert info.value.value == "-140 mm"
+    params["housing_length"] = "140 mm"
+    params["h_oil"] = "-5 W/(m**2*K)"
+    scene = load_scene(write_scene(tmp_path, edited("network.parameters", params)))
+    with pytest.raises(InputError) as info:
+        build_network(Simulation(scene, progress=False))
+    assert info.value.field.startswith("network (template") and "h_oil" in str(info.value)
