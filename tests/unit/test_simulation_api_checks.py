@@ -89,3 +89,23 @@ def test_network_parameter_refused_by_the_template_is_named_by_its_scene_field(t
     with pytest.raises(InputError) as info:
         build_network(Simulation(scene, progress=False))
     assert info.value.field.startswith("network (template") and "h_oil" in str(info.value)
+
+
+def test_scene_sets_the_template_housing_material_and_contact_model(tmp_path):
+    from thermobearing.coupled import build_network
+    from thermobearing.scene import check_network
+
+    params = dict(BASE["network"]["parameters"])
+    params.update(housing_material="STEEL_LOW_CARBON", contact_model="hertz_contact_paper002")
+    data = edited("network.parameters", params)
+    check_network(data["network"], require=True)
+    net = build_network(Simulation(load_scene(write_scene(tmp_path, data)), progress=False))
+    steel = build_network(Simulation(load_scene(write_scene(tmp_path, BASE)), progress=False))
+    assert net.state_nodes == steel.state_nodes
+    # the contact model changes the ball-ring conductances
+    assert {e[3].__class__.__name__ for e in net.edges()} != {
+        e[3].__class__.__name__ for e in steel.edges()}
+    params["housing_material"] = "UNOBTAINIUM"
+    with pytest.raises(InputError):
+        build_network(Simulation(load_scene(write_scene(
+            tmp_path, edited("network.parameters", params))), progress=False))

@@ -121,7 +121,8 @@ def _cavity(bearing) -> dict[str, float]:
     parameters={"housing_outer_diameter": "m", "housing_length": "m", "shaft_diameter": "m",
                 "shaft_length": "m", "oil_flow": "m**3/s", "oil_inlet_temperature": "K",
                 "ambient_temperature": "K", "ball_load": "N", "h_oil": "W/(m**2*K)",
-                "h_air": "W/(m**2*K)", "oil_fill": "-"},
+                "h_air": "W/(m**2*K)", "oil_fill": "-", "contact_model": "-",
+                "housing_material": "-"},
     validity="lumped bodies (no gradient inside a component); paper 002's rig",
 )
 def four_node_paper002(
@@ -270,7 +271,8 @@ def _contact(model: str, a: float, b: float, ball, ring, Z: int):
     parameters={"housing_outer_diameter": "m", "housing_length": "m", "shaft_diameter": "m",
                 "shaft_length": "m", "oil_flow": "m**3/s", "oil_inlet_temperature": "K",
                 "ambient_temperature": "K", "ball_load": "N", "h_oil": "W/(m**2*K)",
-                "h_air": "W/(m**2*K)", "fit_conductance": "W/(m**2*K)", "oil_fill": "-"},
+                "h_air": "W/(m**2*K)", "fit_conductance": "W/(m**2*K)", "oil_fill": "-",
+                "contact_model": "-", "housing_material": "-"},
     validity="lumped bodies; fits by a contact conductance; cage exchanges heat with oil only",
 )
 def seven_node(
