@@ -88,9 +88,9 @@ def test_roller_dynamics_bad_input_before_any_solve(crb, oil, kwargs, field):
     assert info.value.field == field
 
 
-def test_rib_map_negative_clearance_one_line(capsys):
+def test_rib_map_negative_clearance_one_line(capsys, tmp_path):
     code = cli.main(["rib-map", "--param", "axial_clearance", "--values", "-0.03 mm",
-                     "--model", "reduced"])
+                     "--model", "reduced", "--out", str(tmp_path / "out")])
     err = capsys.readouterr().err
     assert code == 1 and "Traceback" not in err
     assert "rib.axial_clearance" in err and ">= 0" in err
