@@ -327,6 +327,22 @@ _PH_DONE, _PH_REFRESH, _PH_HANDBACK = 0, 1, 2
 
 
 @numba.njit(cache=True)
+def _torque_model(tq: np.ndarray, wc: float) -> tuple[float, float]:
+    """The constant cage-torque residual g0_2 = -(t_churn + t_guide) / T_s and the drag term
+    fd (drag force at the drag radius times that radius) at cage speed wc from the model of
+    :func:`_run_chord_phase`: t_churn = t_c0 (wc/wc0)^p (paper 002 eqs. 12-15: mu_v is a power
+    of N_Re in each flow regime, so the churning torque mu_v omega^2 is a power of omega) or
+    linear, t_guide linear (Petroff, paper 002 eq. 5), fd = fd_0 (wc/wc0)^q (q = 2 for the
+    drag of eq. 10) or linear."""
+    wc0 = tq[0]
+    d = wc - wc0
+    ratio = math.log(wc / wc0) if wc / wc0 > 0.0 else 0.0
+    tc = tq[2] * math.exp(tq[3] * ratio) if tq[9] == 1.0 else tq[2] + tq[3] * d
+    fd = tq[6] * math.exp(tq[7] * ratio) if tq[10] == 1.0 else tq[6] + tq[7] * d
+    return -(tc + tq[4] + tq[5] * d) / tq[8], fd
+
+
+@numba.njit(cache=True)
 def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_x, cap_g,
                  tol, polish_ratio, polish_below, keep_ratio, refresh_rate, it, max_iter,
                  give_n, give_f, nrm0, last_ratio, polished, tq, cpsi, arc, c, film_params,
@@ -336,9 +352,11 @@ def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_
     handed-over Jacobian) in one compiled loop: the same step (:func:`_propose`), residual
     (``ball_residual._residual_one``) and acceptance rules as the Python loop, without its
     per-iteration interpreter cost (~30 us against ~85 us of residual, measured). The cage
-    and drag torques of the Python models enter as a quadratic in the cage speed about
-    tq[0] (``tq`` = (omega_c0, half-width of the range, g0_2 coefficients c0 c1 c2, drag
-    coefficients d0 d1 d2)); the caller replaces them by the exact values at the end.
+    and drag torques of the Python models enter through a model in the cage speed about
+    tq[0] (``tq`` = (omega_c0, half-width of the range, churning torque t_c0 and exponent
+    (or slope), guide torque t_g0 and slope, drag term fd_0 and exponent (or slope), T_s,
+    1/0 power law / linear for the churning torque, the same for the drag; see
+    :func:`_torque_model`); the caller replaces them by the exact values at the end.
 
     Hands back (status 2, nothing done for the step) before anything the Python loop does
     differently: a damped step (the cap), a cage speed outside the model range, the staged
@@ -378,8 +396,7 @@ def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_
         G0n = np.empty(3)
         G0n[0] = G0[0]
         G0n[1] = G0[1]
-        G0n[2] = tq[2] + d * (tq[3] + d * tq[4])
-        fd_num = tq[5] + d * (tq[6] + d * tq[7])
+        G0n[2], fd_num = _torque_model(tq, Gf[2])
         st, Rn, Gcn, nn, geo_n, film_n, tr_n, pocket_n, Fd_n = _residual_one(
             Xf, Gf, cpsi, arc, c, film_params, law_id, law_params, ln_tab, slope_tab, inv_dp,
             p_max, xg, yg, pshape, area_w, pidx, pshape_u, fd_num, no_fd, G0n)
@@ -417,21 +434,30 @@ def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_
 def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, tol,
                      polish_ratio, polish_below, keep_ratio, refresh_rate, max_iter, give_up,
                      nrm0, last_ratio, polished):
-    """:func:`_chord_phase` with the torque model built from the Python models (exact values
-    at omega_c0 and omega_c0 +- h, h = 5e-4 omega_c0: a quadratic, used within +-3h) and the
-    exact torques put back at the returned state (its residual and norm are then those of
-    :meth:`ball_residual_system.evaluate`, and it becomes the system's last state)."""
+    """:func:`_chord_phase` with the torque model (:func:`_torque_model`) fitted to the Python
+    models' exact values at omega_c0 and omega_c0 + h (h = 1e-3 omega_c0; the churning torque
+    and the drag term as powers of omega_c when both values have one sign, else linear; the
+    guide torque linear), used within +-10 % of omega_c0, and the exact torques put back at
+    the returned state (its residual and norm are then those of
+    :meth:`ball_residual_system.evaluate`, and it becomes the system's last state). For the
+    default models (paper 002 eqs. 5, 10, 12-15) the model is exact within one flow regime
+    to round-off; for others, or across a regime change, the exact residual at the end is
+    larger than the phase's and the Python loop goes on from there."""
     wc0 = float(G[2])
-    h = 5e-4 * max(abs(wc0), 1e-3 * system.w_s)
-    t0, tp, tm = (system._cage_torques(w) for w in (wc0, wc0 + h, wc0 - h))
-    T_s = system.T_s
+    h = 1e-3 * max(abs(wc0), 1e-3 * system.w_s)
+    t0, t1 = system._cage_torques(wc0), system._cage_torques(wc0 + h)
+    lr = math.log1p(h / wc0) if wc0 != 0.0 else 0.0
 
-    def g(t):
-        return -(t[0] + t[1]) / T_s
+    def fit(a, b):
+        # (value, exponent, 1.0) for a power law through both points, else (value, slope, 0.0)
+        if lr != 0.0 and a != 0.0 and b / a > 0.0:
+            return a, math.log(b / a) / lr, 1.0
+        return a, (b - a) / h, 0.0
 
-    tq = np.array([wc0, 3.0 * h,
-                   g(t0), (g(tp) - g(tm)) / (2 * h), (g(tp) - 2 * g(t0) + g(tm)) / (2 * h * h),
-                   t0[3], (tp[3] - tm[3]) / (2 * h), (tp[3] - 2 * t0[3] + tm[3]) / (2 * h * h)])
+    tc, pc, pw_c = fit(t0[0], t1[0])
+    fd, pf, pw_f = fit(t0[3], t1[3])
+    tq = np.array([wc0, 0.1 * abs(wc0), tc, pc, t0[1], (t1[1] - t0[1]) / h, fd, pf,
+                   system.T_s, pw_c, pw_f])
     give_n, give_f = give_up if give_up is not None else (-1, 0.0)
     (status, X, G, R, Gc, G0m, nrm_m, m, it, n_ev, last_ratio, polished, accepted, geo, film,
      tr, pocket, Fd) = _chord_phase(*jac, X, G, R, Gc, Gk, nrm, hist, m, *system.scales(),
@@ -441,7 +467,7 @@ def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, t
     system.n_eval += n_ev
     if accepted:
         t = system._cage_torques(float(G[2]))
-        Gk = np.array([system._g0a, system._g0r, -(t[0] + t[1]) / T_s])
+        Gk = np.array([system._g0a, system._g0r, -(t[0] + t[1]) / system.T_s])
         Fd_exact = t[3] / X[:, 1]
         R = R.copy()
         R[:, 2] += (Fd - Fd_exact) / system.F_s          # R_t = (F_t - F_d + Q_p) / F_s

@@ -284,3 +284,28 @@ def test_first_warm_step_is_the_tangent_predictor(bearing):
     # ... the predicted one second order (doubling the step: x 4, here within 3-5)
     assert 3.0 < b1 / a1 < 5.0 and 3.0 < c1 / b1 < 5.0
     assert c1 < 0.02 * c0
+
+
+def test_torque_model_of_the_chord_phase_reproduces_the_models(bearing):
+    # ball_newton._torque_model: churning torque as a power of the cage speed (paper 002
+    # eqs. 12-15: mu_v a power of N_Re per flow regime), the Petroff guide torque linear
+    # (eq. 5), the ball drag term as a power (eq. 10: ~ omega^2), fitted to two exact values;
+    # exact to round-off within a regime, checked against the Python models +-5 %
+    from thermobearing.skidding.ball_newton import _torque_model
+
+    models = _models(bearing, 303.15, W1800)
+    r = solve_ball(bearing, models, W1800, 1000.0, 10e3, theoretical_reference=0.45)
+    s = r.extra["system"]
+    wc0 = r.cage_speed
+    h = 1e-3 * wc0
+    t0, t1 = s._cage_torques(wc0), s._cage_torques(wc0 + h)
+    lr = math.log1p(h / wc0)
+    tq = np.array([wc0, 0.1 * wc0, t0[0], math.log(t1[0] / t0[0]) / lr, t0[1],
+                   (t1[1] - t0[1]) / h, t0[3], math.log(t1[3] / t0[3]) / lr, s.T_s, 1.0, 1.0])
+    assert tq[7] == pytest.approx(2.0, rel=1e-9)          # drag ~ omega^2
+    for f in (0.95, 0.99, 1.0004, 1.03, 1.05):
+        wc = wc0 * f
+        g0, fd = _torque_model(tq, wc)
+        t = s._cage_torques(wc)
+        assert g0 == pytest.approx(-(t[0] + t[1]) / s.T_s, rel=1e-12)
+        assert fd == pytest.approx(t[3], rel=1e-12)
