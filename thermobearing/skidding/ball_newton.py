@@ -535,9 +535,13 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     chord / Broyden step with contraction rho = |F_new| / |F_old|, the steps still needed at
     that rate are log(polish_below / |F_new|) / log(rho); when that exceeds ``warm_refresh``
     the handed-over Jacobian is dropped and an analytic one taken at the current iterate
-    (Newton then converges in 1-2 evaluations). 0 disables it. Measured on the BM-5 5 x 5
-    map (Z = 16, +2 % steps, cost in residual evaluations with a Jacobian counted as 2.3):
-    off 6.95 / 6.35 (cold / hot oil), 2.5: 6.05 / 5.8, 3.5-4.5: 6.1-6.2 / 5.5-5.6, 6: 6.4 / 5.65.
+    (Newton then converges in 1-2 evaluations). 0 disables it (the default of
+    :func:`~thermobearing.skidding.ball.solve_ball`). Measured on the BM-5 maps (Z = 16, +2 %
+    steps): it saves evaluations (5 x 5 map, a Jacobian counted as 2.3 evaluations: off 6.5 /
+    6.35, 4: 6.1 / 5.9 cold / hot oil) but not CPU -- interleaved in one process, 4 cost 6-12 %
+    more than off on the 20 x 20 map (1.24 / 1.02 against 1.11 / 0.93 ms) and 3-6 % more on the
+    5 x 5 map: a refresh costs more than its 2-2.2 evaluations of kernel time (the Newton step
+    after it and the torque models run outside the compiled chord loop).
 
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """
