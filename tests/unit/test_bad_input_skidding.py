@@ -59,15 +59,14 @@ def test_ball_no_load_fails_with_residual_and_state_not_nan(qj1044, vg46):
     assert err.state == {"radial_load": 0.0, "axial_load": 0.0, "speed": 188.0}
 
 
-@pytest.mark.xfail(strict=True, reason="skidding/ball.py (N2's file) does not check tol: "
-                   "tol = 0 runs the whole continuation (~20 s with the default max_iter) and "
-                   "ends in a ConvergenceError at residual 2e-11 instead of an InputError "
-                   "naming tol. Remove this marker when tol <= 0 is refused up front.")
 def test_ball_solver_tolerance_out_of_range(qj1044, vg46):
     with pytest.raises(InputError) as info:
         skidding.solve(qj1044, vg46, 188.0, 1000.0, 10000.0, 330.0, supply=SUPPLY, tol=0.0,
                        max_iter=1)
     assert info.value.field == "tol"
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, 188.0, 1000.0, 10000.0, 330.0, supply=SUPPLY, max_iter=0)
+    assert info.value.field == "max_iter"
 
 
 def test_ball_solver_iteration_limit_reports_residual(qj1044, vg46):

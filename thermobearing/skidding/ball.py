@@ -43,7 +43,7 @@ import time
 
 import numpy as np
 
-from ..errors import ConvergenceError, check_finite, check_positive
+from ..errors import ConvergenceError, InputError, check_finite, check_positive
 from ..loads import ball_load_distribution
 from .ball_newton import (  # noqa: F401
     _CAP_G,
@@ -153,6 +153,10 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         check_positive("speed", speed)
         check_positive("radial_load", radial_load, allow_zero=True)
         check_finite("axial_load", axial_load)
+    if not (isinstance(tol, int | float) and 0.0 < tol < 1.0):
+        raise InputError("tol", tol, "a tolerance on the scaled residual norm in (0, 1)")
+    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
+        raise InputError("max_iter", max_iter, "a whole number of Newton iterations >= 1")
     t0 = time.perf_counter()
     prev = guess.extra.get("system") if guess is not None else None
     if (prev is not None and prev.bearing is bearing and prev.models is models
