@@ -19,12 +19,14 @@ axially free inner ring (eq. 20 line 1) is a report sensitivity (``ring_axial_*`
 
 from __future__ import annotations
 
+import math
+import warnings
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError
+from ..errors import ConvergenceError, InputError, ValidityWarning
 from ..units import to_si
 from . import RUNNERS
 
@@ -37,9 +39,12 @@ def _list(inputs: dict[str, Any], key: str, kind: str) -> list[float]:
 
 def parabolic_minimum(x: Any, y: Any) -> float:
     """Abscissa of the minimum of sampled ``y(x)``: vertex of the parabola through the
-    smallest sample and its two neighbours (the end sample if the minimum is at an end)."""
+    smallest sample and its two neighbours (the end sample if the minimum is at an end);
+    NaN when a sample is missing (a point that did not run)."""
     x = np.asarray(x, float)
     y = np.asarray(y, float)
+    if not np.all(np.isfinite(y)):
+        return math.nan
     i = int(np.argmin(y))
     if i == 0 or i == len(x) - 1:
         return float(x[i])
@@ -102,13 +107,29 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     warm = float(inputs.get("coupled_warmup_orbits", orbits))
     base_key = (round(rd.PAPER003_BASE["speed"], 6), round(rd.PAPER003_BASE["radial_load"], 6))
 
+    failures: list[str] = []
+    nan_row = dict.fromkeys(("pv_left", "pv_right", "pv_contact_left", "pv_contact_right",
+                             "pv_peak_left", "pv_peak_right", "slip_speed", "cost_s"),
+                            math.nan)
+
+    def failed(what: str, exc: ConvergenceError) -> dict[str, float]:
+        """A point whose coupled motion runs away on both traction paths (the model's
+        runaway regime, roller_dynamics_coupled module notes): its rows are NaN (the rows
+        that need it show no value and fail), the other points still run."""
+        failures.append(f"{what}: {exc}")
+        warnings.warn(f"paper003: {what}: {exc}", ValidityWarning, stacklevel=3)
+        return dict(nan_row)
+
     def coupled(mass: float, **rib: float) -> dict[str, float]:
         """All rollers + cage integrated (paper eqs. 18-19) at the base case."""
         m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
                            quasi_static=cache.get(base_key), rib={"slide": slide, **rib},
                            pocket_dof=pocket_dof, coupling="none")
-        r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm)
+        try:
+            r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm)
+        except ConvergenceError as exc:
+            return failed(f"coupled base point, unbalance {mass * 1e3:g} g, {rib}", exc)
         return {"pv_left": r.pv_left, "pv_right": r.pv_right,
                 "pv_contact_left": r.pv_contact_left, "pv_contact_right": r.pv_contact_right,
                 "pv_peak_left": r.pv_peak_left, "pv_peak_right": r.pv_peak_right,
@@ -116,11 +137,19 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
 
     def coupled_sweep(parameter: str, values: list[float],
                       masses: list[float] | None = None) -> list[dict]:
-        return rd.pv_slip_map(bearing, lub, parameter, values,
-                              [m_hi] if masses is None else masses,
-                              temperature=temperature, cache=cache, slide=slide,
-                              pocket_dof=pocket_dof, model="coupled", coupling="none",
-                              coupled_options={"n_orbits": orbits, "warmup_orbits": warm})
+        rows = []
+        for value in values:  # one point at a time: a runaway point leaves the others
+            for mass in ([m_hi] if masses is None else masses):
+                try:
+                    rows.extend(rd.pv_slip_map(
+                        bearing, lub, parameter, [value], [mass], temperature=temperature,
+                        cache=cache, slide=slide, pocket_dof=pocket_dof, model="coupled",
+                        coupling="none",
+                        coupled_options={"n_orbits": orbits, "warmup_orbits": warm}))
+                except ConvergenceError as exc:
+                    rows.append(failed(f"coupled {parameter} = {value:g} (SI), unbalance "
+                                       f"{mass * 1e3:g} g", exc))
+        return rows
 
     def unbalance_rows(base: list[dict], prefix: str) -> None:
         out[prefix + "pv_ratio_unbalance_high_vs_low"] = _pv(base[2]) / _pv(base[1])
@@ -197,13 +226,17 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                             quasi_static=cache.get(base_key),
                             rib={"slide": slide, "axial_clearance": v},
                             pocket_dof=pocket_dof, coupling="none")
-        ring_rows.append(simulate_coupled(mr, bearing, lub, n_orbits=orbits,
-                                          warmup_orbits=warm, ring_axial=True))
-    out["ring_axial_pv_ratio_axial_clearance_0.05_vs_min"] = (
-        (ring_rows[1].pv_left + ring_rows[1].pv_right)
-        / (ring_rows[0].pv_left + ring_rows[0].pv_right))
-    out["ring_axial_slip_ratio_axial_clearance_min_vs_0.05"] = (ring_rows[0].slip_speed
-                                                                / ring_rows[1].slip_speed)
+        try:
+            r = simulate_coupled(mr, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
+                                 ring_axial=True)
+            ring_rows.append({"pv_left": r.pv_left, "pv_right": r.pv_right,
+                              "slip_speed": r.slip_speed})
+        except ConvergenceError as exc:
+            ring_rows.append(failed(f"coupled, free inner ring, axial clearance {v:g} m", exc))
+    out["ring_axial_pv_ratio_axial_clearance_0.05_vs_min"] = _pv(ring_rows[1]) / _pv(
+        ring_rows[0])
+    out["ring_axial_slip_ratio_axial_clearance_min_vs_0.05"] = (ring_rows[0]["slip_speed"]
+                                                                / ring_rows[1]["slip_speed"])
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm (coupled gated, reduced
     # beside)
@@ -249,6 +282,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     full = rd.simulate_full(m)
     red = rd.simulate_reduced(m)
     cpl = coupled_base[2]
+    out["coupled_points_failed"] = float(len(failures))
     out["cost_coupled_s"] = cpl["cost_s"]
     out["cost_full_s"] = full.cost_s
     out["cost_reduced_s"] = red.cost_s
