@@ -459,4 +459,12 @@ def make_traction_law(name: str, **parameters: Any) -> TractionLaw:
     try:
         return cls(**parameters)
     except TypeError as exc:
-        raise InputError(f"traction[{name}] parameters", sorted(parameters), str(exc)) from None
+        import dataclasses
+        import inspect
+
+        if dataclasses.is_dataclass(cls):
+            known = [f.name for f in dataclasses.fields(cls) if f.init]
+        else:
+            known = [p for p in inspect.signature(cls).parameters if p != "self"]
+        raise InputError(f"traction[{name}] parameters", sorted(parameters),
+                         f"the parameters of {name!r}: {', '.join(known)} ({exc})") from None

@@ -154,3 +154,13 @@ def test_real_lubricant_if_available():
     tau = law.shear_stress(np.array([1e-4, 1.0, 10.0]), 1.5e9, 3e-7, 330.0).stress
     assert np.all(np.isfinite(tau)) and np.all(np.diff(tau) > 0)
     assert tau[-1] <= 0.075 * 1.5e9 * (1 + 1e-12)
+
+
+def test_misspelt_traction_parameter_lists_the_documented_ones():
+    from thermobearing.errors import InputError
+    from thermobearing.traction import make_traction_law
+
+    with pytest.raises(InputError) as info:
+        make_traction_law("linear_saturating", mu_mx=0.05)
+    assert info.value.field == "traction[linear_saturating] parameters"
+    assert "mu_max" in info.value.allowed and "slip_speed_max" in info.value.allowed
