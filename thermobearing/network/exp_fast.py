@@ -33,8 +33,9 @@ The compiled kernels are in :mod:`.exp_kernels`; this module holds the Python se
 (step-size control, restarts at breakpoints, recording) and the dense-output store.
 
 Applies when the network is dense (<= ``assemble.DENSE_LIMIT`` nodes), has no
-zero-capacity nodes and no temperature-dependent conductances, and the steps are
-adaptive; the general path in :mod:`.exponential` handles the rest. Units: times [s],
+zero-capacity nodes and the steps are adaptive; the general path in :mod:`.exponential`
+handles the rest. Temperature-dependent conductances (e.g. air convection) are assembled
+at each step start and held over the step, exactly as the general path does. Units: times [s],
 temperatures [K], heat [W], conductances [W/K], capacities [J/K], energies [J].
 """
 
@@ -134,8 +135,7 @@ class StorePiece:
 def applies(driver) -> bool:
     """Whether the compiled path can run this driver's network (see the module docstring)."""
     core = driver.core
-    return (driver.dt is None and core.sys.dense and not core.has_alg
-            and not core.asm.temperature_dependent and core.n > 0)
+    return driver.dt is None and core.sys.dense and not core.has_alg and core.n > 0
 
 
 def _general_start(core, K, jq, y0, q0):
@@ -183,20 +183,26 @@ class _Context:
     def __init__(self, sys_, C: np.ndarray) -> None:
         n = len(C)
         K = sys_.K
+        # (temperature-dependent edges are stamped symmetrically or onto the diagonal, so
+        # the symmetry of K does not depend on the temperatures it was assembled at)
         self.sym = bool(np.array_equal(K, K.T))
         self.rs = 1.0 / np.sqrt(C)  # C^-1/2 [(J/K)^-1/2]
-        # heat rates to the boundaries and to the streams are linear in the state:
-        # sum G_b (T_i - T_b) = flow[0] T - flow0[0]; sum W (T_last - T_in) = flow[1] T - ...
-        flow = np.zeros((2, n))
-        np.add.at(flow[0], sys_.bnd_index, sys_.bnd_G)
-        np.add.at(flow[1], sys_.str_last, sys_.str_W)
-        self.flow = flow
-        self.flow0 = np.array([float(sys_.bnd_G @ sys_.bnd_T),
-                               float(sys_.str_W @ sys_.str_Tin)])
+        self.flow, self.flow0 = _flows(sys_, n)
         self.zeros = np.zeros(n)
         self.empty = (np.zeros((0, n)), np.zeros((0, n, n)), np.zeros((0, n, 4)))
         self.empty_rows = (np.zeros(0), np.zeros(0), np.zeros((0, n)))
         self.ws = self._workspaces(n)
+
+
+def _flows(sys_, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The energy audit's linear forms of an assembled system: the heat rates to the
+    boundaries and to the streams are sum G_b (T_i - T_b) = flow[0] T - flow0[0] and
+    sum W (T_last - T_in) = flow[1] T - flow0[1] [W]."""
+    flow = np.zeros((2, n))
+    np.add.at(flow[0], sys_.bnd_index, sys_.bnd_G)
+    np.add.at(flow[1], sys_.str_last, sys_.str_W)
+    flow0 = np.array([float(sys_.bnd_G @ sys_.bnd_T), float(sys_.str_W @ sys_.str_Tin)])
+    return flow, flow0
 
 
 def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, zeros):
@@ -270,14 +276,20 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
     core = driver.core
     core.time_dependent = td
     core.set_heat(heat, heat_jacobian)
+    n = core.n
+    # temperature-dependent conductances: K(T) and s(T) are assembled at each step start
+    # and held over the step, as the generic driver does (core.update_system)
+    tdep = core.asm.temperature_dependent
+    if tdep:
+        core.update_system(y0)
     sys_ = core.sys
     K, s, C = sys_.K, sys_.s, core.C
-    n = core.n
     stats = core.stats
     ctx = driver.fast_info
     if ctx is None:
         ctx = driver.fast_info = _Context.of(driver.asm, sys_, C)
     sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
+    rk = zeros
     if heat is not None and heat_with_jacobian is None and heat_jacobian is None \
             and core.jacobian_mode not in ("none", "fd", "fd_diagonal"):
         from ..errors import InputError
@@ -358,6 +370,11 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             r = net.heat_vector(r)
                         c1 = (r - q0) * (h / dt_fd)
                     if not lin:
+                        if tdep:
+                            core.update_system(y)
+                            sys_ = core.sys
+                            K, s = sys_.K, sys_.s
+                            flow, flow0 = _flows(sys_, n)
                         if sym_now:
                             Bw, Jw, vw, tw = ws_real
                             ok, U2 = _ws_start_sym(K, s, jq, rs, y, q0, c1, td, h, Bw, Jw, vw)
@@ -413,9 +430,15 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             s_t0, s_h, s_y0 = store.t0, store.h, store.y0
                     else:
                         j = -1
+                    if tdep:  # the conductances' drift over the step (see _fk_finish)
+                        sys3 = driver.asm.system(U3)
+                        rk = (sys3.s - sys3.K @ U3) - (s - K @ U3)
+                        drift_b = sys3.to_boundaries(U3) - sys_.to_boundaries(U3)
                     y1, err, gen, to_b, to_s, stored = _ws_finish(
                         y, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
+                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, rk, tdep)
+                    if tdep:
+                        to_b += 0.5 * h * drift_b
                     if not math.isfinite(err):
                         raise _NewtonFailure(math.inf, "non-finite exponential step")
                 except _NewtonFailure as exc:
@@ -495,6 +518,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                 if h > max_step:
                     h = max_step
             if pending_rate and rec.active:  # (a segment ended by the tolerance guard)
+                if tdep:
+                    core.update_system(y)
                 f, _ = core.f(t, y)
                 rec.r.append(f * core.invC)
     finally:
