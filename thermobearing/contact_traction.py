@@ -81,7 +81,7 @@ from scipy.special import roots_jacobi, roots_legendre
 
 from .errors import InputError
 from .state import ContactSet
-from .traction import EYRING, TractionLaw, _eyring_smooth_node, _law_stress
+from .traction import EYRING, TractionLaw, _asinh_nonneg, _law_stress
 
 GENERALIZED = ("transverse_force", "rolling_force", "moment_transverse", "moment_rolling",
                "moment_normal")
@@ -287,6 +287,87 @@ def _table_viscosity(p: float, ln_tab: np.ndarray, slope_tab: np.ndarray,
     return math.exp(ln_tab[i] + (u - i) * slope_tab[i])
 
 
+@numba.njit(cache=True, error_model="numpy")
+def _integrate_eyring_fast(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
+                           inv_dp: float, q: np.ndarray, a: np.ndarray, b: np.ndarray,
+                           vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
+                           wy: np.ndarray, curv: np.ndarray, h: np.ndarray, xg: np.ndarray,
+                           yg: np.ndarray, pshape: np.ndarray, area_w: np.ndarray,
+                           pidx: np.ndarray, pshape_u: np.ndarray, point: bool,
+                           out: np.ndarray) -> None:
+    """Fast path of :func:`_integrate_contacts` for the ball solver's default law (Eyring
+    with the smooth cap, tau0 > 0, tabulated viscosity, no Jacobian): the same formulas
+    (:func:`thermobearing.traction._eyring_smooth_node`: tau_E = tau0 asinh(eta s / (h tau0)),
+    tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2), tau_L = Lambda p; the node sums of the
+    module docstring, in the same order), with the node loop written so that LLVM vectorises
+    it (session 8): asinh by the branch-free :func:`thermobearing.traction._asinh_nonneg`
+    (within 1 ulp of the C library's), numpy's error model (no zero-division checks; every
+    division here has a positive divisor or its result is replaced), and the sums over the
+    nodes taken in a second, sequential loop. Equal to the generic loop to round-off (test);
+    2.2-2.5x faster per contact (measured in-process, 48 loaded contacts x 32 nodes)."""
+    n = q.size
+    nk = xg.size
+    rate_u = np.empty(pshape_u.size)
+    rate_k = np.empty(nk)
+    px_k = np.empty(nk)
+    py_k = np.empty(nk)
+    heat_k = np.empty(nk)
+    lam, tau0, inv_tau0 = law_params[0], law_params[1], law_params[3]
+    for c in range(n):
+        for j in range(6):
+            out[c, j] = 0.0
+        p0 = _peak_pressure(q[c], a[c], b[c], point)
+        if p0 == 0.0:
+            continue
+        ac, bc = a[c], b[c]
+        ab = ac * bc
+        a2c = 0.5 * curv[c] * ac * ac
+        cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
+        cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
+        inv_h = 1.0 / h[c]
+        for u in range(pshape_u.size):
+            rate_u[u] = _table_viscosity(p0 * pshape_u[u], ln_tab, slope_tab, inv_dp) * inv_h
+        for k in range(nk):
+            rate_k[k] = rate_u[pidx[k]]
+        vxc, vyc = vx[c], vy[c]
+        for k in range(nk):                      # vectorised
+            xk, yk = xg[k], yg[k]
+            xk2 = xk * xk
+            dvx = vxc + cx2 * xk2 - cy * yk
+            dvy = vyc + cx * xk - cy2 * xk2
+            speed = math.sqrt(dvx * dvx + dvy * dvy)
+            tau_e = tau0 * _asinh_nonneg(rate_k[k] * speed * inv_tau0)
+            tau_l = lam * (p0 * pshape[k])
+            weight = ab * area_w[k]
+            tw = tau_e * tau_l * weight / math.sqrt(tau_l * tau_l + tau_e * tau_e)
+            if not tau_l > 0.0:
+                tw = tau_e * 1e-150 * weight
+            per_speed = tw / speed
+            if not speed > 0.0:
+                per_speed = 0.0
+            px_k[k] = per_speed * dvx             # -t_x
+            py_k[k] = per_speed * dvy             # -t_y
+            heat_k[k] = tw * speed
+        sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
+        for k in range(nk):
+            xk, yk = xg[k], yg[k]
+            xk2 = xk * xk
+            px, py = px_k[k], py_k[k]
+            sx0 += px
+            sx1 += px * xk2
+            sx2 += px * yk
+            sy0 += py
+            sy1 += py * xk2
+            sy2 += py * xk
+            heat += heat_k[k]
+        out[c, 0] = -sx0
+        out[c, 1] = -sy0
+        out[c, 2] = a2c * sy1
+        out[c, 3] = -a2c * sx1
+        out[c, 4] = bc * sx2 - ac * sy2
+        out[c, 5] = heat
+
+
 @numba.njit(cache=True)
 def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
                         ln_tab: np.ndarray, slope_tab: np.ndarray, inv_dp: float,
@@ -311,12 +392,14 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
     nk = xg.size
     rate_u = np.empty(pshape_u.size)
     # fast path (the ball solver's default law): Eyring with the smooth cap, tau0 > 0,
-    # tabulated viscosity, no Jacobian -- the node loop without the generic law's branches
-    # (:func:`thermobearing.traction._eyring_smooth_node`, same formula; ~15-20 % less time
-    # per contact, measured in-process against the generic loop)
-    fast = (law_id == EYRING and visc_mode == 1 and not jacobian and law_params[2] != 0.0
-            and law_params[1] > 0.0)
-    lam_f, tau0_f, inv_tau0_f = law_params[0], law_params[1], law_params[3]
+    # tabulated viscosity, no Jacobian -- :func:`_integrate_eyring_fast` (same formulas,
+    # vectorised node loop; session 6's scalar fast path was ~15-20 % faster than the generic
+    # loop, the vectorised one 2.2-2.5x faster than that)
+    if (law_id == EYRING and visc_mode == 1 and not jacobian and law_params[2] != 0.0
+            and law_params[1] > 0.0):
+        _integrate_eyring_fast(law_params, ln_tab, slope_tab, inv_dp, q, a, b, vy, vx, wz, wx,
+                               wy, curv, h, xg, yg, pshape, area_w, pidx, pshape_u, point, out)
+        return
     for c in range(n):
         for j in range(6):
             out[c, j] = 0.0
@@ -339,32 +422,6 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
                 rate_u[u] = _table_viscosity(p0 * pshape_u[u], ln_tab, slope_tab,
                                              inv_dp) * inv_h
         sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = heat = 0.0
-        if fast:
-            vxc, vyc = vx[c], vy[c]
-            for k in range(nk):
-                xk, yk = xg[k], yg[k]
-                xk2 = xk * xk
-                dvx = vxc + cx2 * xk2 - cy * yk
-                dvy = vyc + cx * xk - cy2 * xk2
-                speed = math.sqrt(dvx * dvx + dvy * dvy)
-                tw = _eyring_smooth_node(lam_f, tau0_f, inv_tau0_f, speed, p0 * pshape[k],
-                                         rate_u[pidx[k]], ab * area_w[k])
-                per_speed = tw / speed if speed > 0.0 else 0.0
-                px, py = per_speed * dvx, per_speed * dvy   # -t_x, -t_y
-                sx0 += px
-                sx1 += px * xk2
-                sx2 += px * yk
-                sy0 += py
-                sy1 += py * xk2
-                sy2 += py * xk
-                heat += tw * speed
-            out[c, 0] = -sx0
-            out[c, 1] = -sy0
-            out[c, 2] = a2c * sy1
-            out[c, 3] = -a2c * sx1
-            out[c, 4] = bc * sx2 - ac * sy2
-            out[c, 5] = heat
-            continue
         j00 = j01 = j02 = j03 = j04 = j11 = j12 = j13 = j14 = 0.0
         j22 = j23 = j24 = j33 = j34 = j44 = 0.0
         g0 = g1 = g2 = g3 = g4 = 0.0
@@ -591,4 +648,5 @@ def spin_moment_harris(mu: Any, normal_load: Any, semi_major: Any, semi_minor: A
 
 from . import traction as _traction  # noqa: E402  (the law kernels inlined above)
 
-refresh_stale_caches("contact_traction", (_integrate_contacts,), (_traction,))
+refresh_stale_caches("contact_traction", (_integrate_contacts, _integrate_eyring_fast),
+                     (_traction,))

@@ -36,6 +36,9 @@ from typing import Any, NamedTuple, Protocol
 
 import numba
 import numpy as np
+from llvmlite import ir
+from numba import types
+from numba.extending import intrinsic
 from scipy.optimize import brentq
 
 from .errors import InputError, check_positive, check_range
@@ -146,6 +149,94 @@ def _eyring_smooth_node(lam: float, tau0: float, inv_tau0: float, s: float, p: f
     if tau_l > 0.0:
         return tau_e * tau_l * weight / math.sqrt(tau_l * tau_l + tau_e * tau_e)
     return tau_e * 1e-150 * weight
+
+
+
+# ---------------------------------------------------------------------------
+# Vectorisable elementary functions of the Eyring fast path (session 8). numba compiles
+# math.log / math.asinh to calls of the C library, which stop LLVM from vectorising the
+# contact integration's node loop; these are the same algorithms in straight-line code
+# (bit manipulation and polynomials only), so that the node loop of
+# ``contact_traction._integrate_eyring_fast`` runs in SIMD registers (2.2-2.5x faster,
+# measured in-process on the 48 loaded contacts of a Z = 16 QJ1044 state).
+@intrinsic
+def _bits_of(typingctx, x):
+    """The IEEE-754 bit pattern of a float64 as an int64 (an LLVM bitcast, no conversion)."""
+    sig = types.int64(types.float64)
+
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], ir.IntType(64))
+
+    return sig, codegen
+
+
+@intrinsic
+def _float_of(typingctx, i):
+    """The float64 whose IEEE-754 bit pattern is the int64 ``i`` (an LLVM bitcast)."""
+    sig = types.float64(types.int64)
+
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], ir.DoubleType())
+
+    return sig, codegen
+
+
+# fdlibm e_log.c (Sun Microsystems 1993, as in FreeBSD and musl): log(1+f) = f - f^2/2 +
+# s (f^2/2 + R(s^2)), s = f / (2 + f), R a minimax polynomial (error < 2^-58.45)
+_LG1, _LG2 = 6.666666666666735130e-01, 3.999999999940941908e-01
+_LG3, _LG4 = 2.857142874366239149e-01, 2.222219843214978396e-01
+_LG5, _LG6 = 1.818357216161805012e-01, 1.531383769920937332e-01
+_LG7 = 1.479819860511658591e-01
+_LN2_HI, _LN2_LO = 6.93147180369123816490e-01, 1.90821492927058770002e-10
+_ASINH_BIG = 268435456.0           # 2^28: asinh(x) = ln(2x) to double precision above
+_LN2 = 6.93147180559945286227e-01
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _log_pos(x: float) -> float:
+    """Natural logarithm of a finite normal x > 0 without branches (vectorisable).
+
+    fdlibm's ``e_log.c`` (Sun Microsystems 1993; the algorithm of FreeBSD's and musl's
+    ``log``): x = 2^k (1 + f) with 1 + f in [sqrt(2)/2, sqrt(2)) taken from the bit pattern,
+    log x = k ln2_hi + (f - f^2/2 + s (f^2/2 + R(s^2)) + k ln2_lo), s = f / (2 + f). Within
+    1 ulp of the C library's log (test: 2e5 values over 1e-300..1e300); not for x <= 0,
+    subnormal x, inf or nan (the callers pass x >= 1)."""
+    ix = _bits_of(x)
+    hx = (ix >> 32) + (0x3FF00000 - 0x3FE6A09E)
+    k = (hx >> 20) - 0x3FF
+    hx = (hx & 0x000FFFFF) + 0x3FE6A09E
+    f = _float_of((hx << 32) | (ix & 0xFFFFFFFF)) - 1.0
+    hfsq = 0.5 * f * f
+    s = f / (2.0 + f)
+    z = s * s
+    w = z * z
+    t1 = w * (_LG2 + w * (_LG4 + w * _LG6))
+    t2 = z * (_LG1 + w * (_LG3 + w * (_LG5 + w * _LG7)))
+    dk = float(k)
+    return s * (hfsq + t1 + t2) + dk * _LN2_LO - hfsq + f + dk * _LN2_HI
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _asinh_nonneg(x: float) -> float:
+    """asinh(x) for x >= 0 without branches (vectorisable) [-].
+
+    asinh x = log1p(y), y = x + x^2 / (1 + sqrt(1 + x^2)) (fdlibm ``s_asinh.c``'s form
+    for moderate x), with log1p(y) = log(u) + (y - (u - 1)) / u, u = 1 + y (the rounding
+    error of u corrected to first order, Goldberg 1991, "What every computer scientist
+    should know about floating-point arithmetic", Theorem 4), log by :func:`_log_pos`;
+    above 2^28, ln(x) + ln(2) as in fdlibm (the neglected 1/(4x^2) is below 2^-58). Within
+    1 ulp of the C library's asinh (test: 2e5 values over 4e-18..2e17 and the edge cases up
+    to 1.7e308); nan and inf give nan."""
+    big = x > _ASINH_BIG
+    xs = _ASINH_BIG if big else x           # nan stays nan (and reaches c)
+    t = xs * xs
+    y = xs + t / (1.0 + math.sqrt(1.0 + t))
+    u = 1.0 + y
+    c = (y - (u - 1.0)) / u
+    if big:
+        u = x
+        c = _LN2 + 0.0 * x                   # ln 2 for finite x, nan for inf
+    return _log_pos(u) + c
 
 
 @numba.njit(cache=True)

@@ -164,3 +164,40 @@ def test_misspelt_traction_parameter_lists_the_documented_ones():
         make_traction_law("linear_saturating", mu_mx=0.05)
     assert info.value.field == "traction[linear_saturating] parameters"
     assert "mu_max" in info.value.allowed and "slip_speed_max" in info.value.allowed
+
+
+def test_vectorisable_log_and_asinh_match_the_c_library():
+    # session 8: the Eyring fast path of the contact integration uses branch-free log / asinh
+    # (fdlibm's algorithms) so that its node loop vectorises; they must agree with the C
+    # library's log / asinh (Python's math module) to 1 ulp over the whole range the
+    # traction law meets (asinh arguments eta s / (h tau0): 0 .. ~1e12) and beyond
+    import numba
+
+    from thermobearing.traction import _asinh_nonneg, _log_pos
+
+    @numba.njit(error_model="numpy")
+    def both(x, out_log, out_asinh):
+        for i in range(x.size):
+            out_log[i] = _log_pos(x[i]) if x[i] > 0.0 else 0.0
+            out_asinh[i] = _asinh_nonneg(x[i])
+
+    rng = np.random.default_rng(5)
+    x = np.concatenate([np.exp(rng.uniform(-40.0, 40.0, 200_000)),
+                        [0.0, 5e-324 * 2**60, 1e-300, 1e-20, 1e-9, 0.1, 0.5, 1.0, 1.0 + 2e-16,
+                         1.0 - 1e-16, 2.0, math.sqrt(2.0), 2.0**28 - 1.0, 2.0**28,
+                         2.0**28 + 2.0, 1e12, 1e200, 1.7e308]])
+    lg, ash = np.empty_like(x), np.empty_like(x)
+    both(x, lg, ash)
+    pos = x > 0.0
+    ref_log = np.log(x[pos])
+    ulp = np.abs(lg[pos] - ref_log) / np.spacing(np.maximum(np.abs(ref_log), 1e-300))
+    assert ulp.max() <= 1.0
+    ref_asinh = np.array([math.asinh(v) for v in x])
+    ulp = np.abs(ash - ref_asinh) / np.spacing(np.maximum(ref_asinh, 5e-324))
+    assert ulp.max() <= 1.0
+    assert ash[x == 0.0][0] == 0.0
+    # non-finite input gives nan, never a finite number
+    bad = np.array([math.nan, math.inf])
+    lg2, ash2 = np.empty(2), np.empty(2)
+    both(bad, lg2, ash2)
+    assert np.all(np.isnan(ash2))

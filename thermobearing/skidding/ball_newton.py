@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
+from ..contact_traction import refresh_stale_caches
 from ..errors import ConvergenceError, InputError
 from .ball_jacobian import analytic_blocks, supports_analytic
 from .ball_residual import N_BALL, N_GLOBAL, _residual_one, ball_residual_system
@@ -430,6 +431,22 @@ def _chord_phase(Ainv, AiB, C, Sinv, X, G, R, Gc, G0, nrm, hist, m, xs, gs, cap_
     return (status, X, G, R, Gc, G0, nrm, m, it, n_eval, last_ratio, polished, accepted, geo,
             film, tr, pocket, Fd)
 
+
+
+def _refresh_caches() -> None:
+    """numba's cache does not see edits of compiled callees in other files (see
+    :func:`thermobearing.contact_traction.refresh_stale_caches`): the chord phase compiles
+    the residual kernel into itself, so its cache follows the residual's modules."""
+    from .. import contact_traction, film, hertz, traction
+    from . import ball_residual
+
+    refresh_stale_caches("ball_newton", (_block_step, _inverse_small, _factor_blocks,
+                                         _fd_blocks, _residual_norm, _broyden_step, _propose,
+                                         _torque_model, _chord_phase),
+                         (contact_traction, traction, hertz, film, ball_residual))
+
+
+_refresh_caches()
 
 def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, tol,
                      polish_ratio, polish_below, keep_ratio, refresh_rate, max_iter, give_up,
