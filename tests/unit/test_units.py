@@ -37,3 +37,25 @@ def test_round_trip_and_format():
     assert from_si(308.15, "degC") == pytest.approx(35.0)
     assert from_si(to_si("1500 rpm", "rad/s"), "rpm") == pytest.approx(1500.0)
     assert to_si(format_quantity(0.00055, "L/min"), "m**3/s") == pytest.approx(0.00055)
+
+
+def test_registry_falls_back_to_parsing_when_the_definitions_cache_fails(monkeypatch):
+    """pint's on-disk definitions cache is an optimisation only: when it cannot be used
+    (read-only home, a half-written file) the registry is built by parsing, same units."""
+    import pint
+
+    from thermobearing import units
+
+    real = pint.UnitRegistry
+    calls = []
+
+    def flaky(*args, **kwargs):
+        calls.append(kwargs.get("cache_folder"))
+        if kwargs.get("cache_folder") is not None:
+            raise EOFError("truncated cache file")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(pint, "UnitRegistry", flaky)
+    ureg = units.unit_registry.__wrapped__()
+    assert calls == [":auto:", None]
+    assert ureg.Quantity(1800, "rpm_rev").to("rad/s").magnitude == pytest.approx(60 * math.pi)

@@ -14,10 +14,13 @@ import argparse
 import json
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from .. import signal as S
 from ..errors import InputError
 from ..units import to_si
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .. import signal as S
 
 NAME = "cage-speed"
 HELP = "measure the cage speed ratio and slip from a vibration record (envelope spectrum)"
@@ -50,6 +53,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from .. import signal as S  # noqa: F811  (imported here: the parser stays light)
     from ..geometry import load_bearing
 
     if not (math.isfinite(args.rpm) and args.rpm > 0):
