@@ -53,7 +53,7 @@ import warnings
 
 import numpy as np
 
-from ..contact_traction import integrate_contact_set
+from ..contact_traction import ContactTraction, integrate, integrate_contact_set
 from ..errors import InputError, UnknownNameError, ValidityWarning
 from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
 
@@ -106,6 +106,48 @@ def _contact_temperature(ctx: HeatContext, cs) -> np.ndarray:
     return np.full(cs.n_elements, t)
 
 
+_SET_FIELDS = ("normal_load", "semi_major", "semi_minor", "sliding_speed",
+               "transverse_sliding_speed", "spin_speed", "roll_speed", "tilt_speed",
+               "deformed_radius")
+
+
+def _integrate_sets(ctx: HeatContext, contacts, n_major: int, n_minor: int) -> list:
+    """``integrate_contact_set`` of every contact set, at its own temperature (the
+    solver's contact temperature where the set carries one, else the mean of the element
+    and ring nodes). Sets of one contact kind and size, all with films (or all without) and
+    at one temperature, are stacked into one ``contact_traction.integrate`` call: the
+    integration is per contact, so the result is the same as set by set (bit for bit,
+    tested), with one call's checks instead of one per raceway arc."""
+    sets = [cs if cs.temperature is not None
+            else cs.with_(temperature=_contact_temperature(ctx, cs)) for cs in contacts]
+    z = sets[0].n_elements if sets else 0
+    temps = [np.asarray(cs.temperature, dtype=float) for cs in sets]
+    # one temperature for all: a film law then takes its viscosity from the same source
+    # (e.g. the solver's isothermal table) in the stacked call as set by set
+    one_temperature = all(t.size and np.all(t == temps[0].flat[0]) for t in temps)
+    if len(sets) < 2 or not one_temperature \
+            or len({(cs.kind, cs.film_thickness is None, cs.n_elements) for cs in sets}) > 1:
+        return [integrate_contact_set(ctx.traction, cs, n_major=n_major, n_minor=n_minor)
+                for cs in sets]
+
+    def stack(name):
+        vals = [getattr(cs, name) for cs in sets]
+        if all(type(v) is np.ndarray and v.shape == (z,) for v in vals):
+            return np.array(vals, dtype=float)
+        return np.array([np.broadcast_to(np.asarray(v, dtype=float), (z,)) for v in vals])
+
+    film = None if sets[0].film_thickness is None else stack("film_thickness")
+    r = integrate(ctx.traction, **{f: stack(f) for f in _SET_FIELDS},
+                  film_thickness=film, temperature=stack("temperature"), kind=sets[0].kind,
+                  n_major=n_major, n_minor=n_minor)
+    return [ContactTraction(**{f: getattr(r, f)[k] for f in _RESULT_FIELDS})
+            for k in range(len(sets))]
+
+
+_RESULT_FIELDS = ("transverse_force", "rolling_force", "moment_transverse",
+                  "moment_rolling", "moment_normal", "heat")
+
+
 @HEAT_SOURCES.register(
     "raceway_traction",
     references=["gao2022_overskidding", "johnson1985", "harris_kotzalas2007",
@@ -131,10 +173,8 @@ def raceway_traction(ctx: HeatContext) -> HeatResult:
     split: dict[str, dict[str, float]] = {}
     pairs = []
     forces = {}
-    for cs in ctx.kinematics.contacts:
-        cs_t = cs if cs.temperature is not None else cs.with_(
-            temperature=_contact_temperature(ctx, cs))
-        r = integrate_contact_set(ctx.traction, cs_t, n_major=n_major, n_minor=n_minor)
+    contacts = ctx.kinematics.contacts
+    for cs, r in zip(contacts, _integrate_sets(ctx, contacts, n_major, n_minor), strict=True):
         share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
                                elem_mat, ring_mat)
         heat = r.heat
@@ -145,8 +185,9 @@ def raceway_traction(ctx: HeatContext) -> HeatResult:
         components[f"{cs.race} contact"] = float(np.sum(heat))
         split[f"{cs.race} contact"] = {"elements": to_elem, cs.ring_role: to_ring}
         q = np.stack([getattr(cs, n) for n in _Q_NAMES], axis=-1)
-        pairs.append(ForcePair(f"{cs.race} contact traction", r.generalized_force, q))
-        forces[f"{cs.race}_generalized_force"] = r.generalized_force
+        gen = r.generalized_force
+        pairs.append(ForcePair(f"{cs.race} contact traction", gen, q))
+        forces[f"{cs.race}_generalized_force"] = gen
     return HeatResult(
         source=name, power_by_role=roles, components=components,
         loss_class=dict.fromkeys(components, "load_dependent"),

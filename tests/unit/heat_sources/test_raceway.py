@@ -145,3 +145,32 @@ def test_paper002_eq11_taken_literally_is_unbounded():
     literal = du ** 2 / h * eta0 * 2 * math.pi * a * b * (math.exp(c) * (c - 1) + 1) / c ** 2
     bounded = 0.075 * q * du  # tau <= Lambda p everywhere -> heat <= Lambda Q dU
     assert literal > 1e7 * bounded
+
+
+@pytest.mark.parametrize("t_outer, stacked", [(330.0, True), ("ramp", False)])
+def test_stacked_integration_equals_set_by_set(qj1044, vg46, race_control_state, monkeypatch,
+                                                t_outer, stacked):
+    """The source integrates all contact sets of one kind at one temperature in one call;
+    per contact the heat and the generalized forces equal integrate_contact_set set by
+    set, bit for bit (film law, race-control films, sets that differ); sets at different
+    temperatures are integrated set by set (a film law's viscosity source may differ)."""
+    from thermobearing.contact_traction import integrate_contact_set
+
+    op, ks = race_control_state
+    law = make_traction_law("eyring_limiting_shear", lubricant=vg46)
+    z = qj1044.n_elements
+    inner, outer = ks.contacts
+    t2 = np.linspace(320.0, 340.0, z) if t_outer == "ramp" else t_outer
+    sets = (inner.with_(temperature=330.0),
+            outer.with_(temperature=t2, sliding_speed=np.linspace(-0.3, 0.4, z)))
+    ctx = make_context(qj1044, vg46, op, ks.with_(contacts=sets), traction=law)
+    calls = []
+    real = raceway.integrate
+    monkeypatch.setattr(raceway, "integrate", lambda *a, **k: calls.append(1) or real(*a, **k))
+    r = raceway.raceway_traction(ctx)
+    assert len(calls) == (1 if stacked else 0)
+    for cs in sets:
+        ref = integrate_contact_set(law, cs, n_major=16, n_minor=8)
+        assert r.components[f"{cs.race} contact"] == float(np.sum(ref.heat))
+        np.testing.assert_array_equal(r.forces[f"{cs.race}_generalized_force"],
+                                      ref.generalized_force)
