@@ -255,9 +255,17 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
             # centred cage (eccentricity 0): Petroff drag of paper 002 eq. 5 (F's form)
             return -land_drag_torque(eta_oil, cage.guide_land_diameter, wg, wc, land, c_r, 0.0)
 
+    r_c = 0.5 * d_c
+    gap_root = math.sqrt(gap_c / r_c)
+
     def cage_torque(wc):
-        reg = ch.viscous_friction_coefficient(0.5 * d_c, wc, gap_c, nu)
-        q = float(ch.cage_churning_power(rho_e, reg.mu_v, wc, cage.width, d_c))
+        # paper 002 eqs. 12-15: ch.viscous_friction_coefficient's scalar branch (N_Re =
+        # R |omega| c / nu, N_Ta = N_Re sqrt(c / R), the same operations, so the same bits)
+        # and its regime core ch._mu_v_regime without the ChurningRegime wrapping (session 8:
+        # the solver calls this once per new cage speed; 16 -> ~4 us per call)
+        re = r_c * abs(wc) * gap_c / nu
+        mu_v = ch._mu_v_regime(re, re * gap_root)[0]
+        q = float(ch.cage_churning_power(rho_e, mu_v, wc, cage.width, d_c))
         return q / wc if wc != 0 else 0.0
 
     arc = D

@@ -526,6 +526,9 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.w_race = np.where(self.inner, self.speed, 0.0)
         self.veps = 1e-6 * max(abs(self.speed) * self.Rm, 1e-3)
         self._torque_memo: dict[float, tuple] = {}
+        # the chord phase's cage-torque model ([centre omega_c, model array] of
+        # ball_newton._run_chord_phase), shared with the reloaded copies like the memo
+        self._torque_fit: list = []
         self._inner_torque_memo: float | None = None
         self.last_jacobian: JacobianBlocks | None = None
         self._last = None            # (X, G, (R, Gc, G0), details builder) of the last state
@@ -830,9 +833,13 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         t_guide = 0.0 if md.cage_guide_torque is None else float(md.cage_guide_torque(wc, wg))
         fd_num = u_ball = None
         if md.drag_radius is not None:
-            u_ball = np.array([wc * (1.0 - md.oil_speed_ratio) * md.drag_radius])
-            fd_num = float(np.asarray(md.ball_drag(np.abs(u_ball)), float)[0]
-                           * np.sign(u_ball[0])) * md.drag_radius
+            # the drag model called with a float (session 8: ~14 -> ~5 us per new cage speed
+            # for the default model; a model returning a size-1 array is accepted too)
+            u = wc * (1.0 - md.oil_speed_ratio) * md.drag_radius
+            u_ball = np.array([u])
+            sign = 1.0 if u > 0.0 else (-1.0 if u < 0.0 else 0.0)
+            fd_num = (np.asarray(md.ball_drag(abs(u)), dtype=float).item() * sign
+                      * md.drag_radius)
         if len(self._torque_memo) > 64:
             self._torque_memo.clear()
         self._torque_memo[wc] = (t_churn, t_guide, wg, fd_num, u_ball)
