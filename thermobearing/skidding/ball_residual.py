@@ -31,7 +31,6 @@ them. The cage and drag torques are Python callables of the models, memoised per
 
 from __future__ import annotations
 
-import copy
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -531,7 +530,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self._torque_fit: list = []
         self._inner_torque_memo: float | None = None
         self.last_jacobian: JacobianBlocks | None = None
-        self._last = None            # (X, G, (R, Gc, G0), details builder) of the last state
+        # (X, G, (R, Gc, G0), details builder, norm, fields) of the last state, fields =
+        # (geo (N_GEO, Z, k), tractions (Z, k, 6), pocket, F_d, u_ball, film (Z, k) or None)
+        self._last = None
+        self._scales = None          # (xs, gs) of :meth:`scales` at the current loads
         self._last_tr = None         # (X, G, tractions (Z*k, 6)) of the last single state
         check_positive("skidding.ball effective_modulus", self.Ep)
         check_positive("skidding.ball ball_mass", self.m)
@@ -701,16 +703,26 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         if md.drag_radius is None:
             Fd = Fd_in
 
+        fields = (geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6), pocket, Fd, u_ball,
+                  None if film_out is None else film_out.reshape(Z, nk))
+
         def make_details():
-            return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),
-                                 pocket, Fd, u_ball,
-                                 None if film_out is None else film_out.reshape(Z, nk))
+            return self._details(X, G, *fields)
 
         Xc, Gcp = X.copy(), G.copy()
-        self._last = (Xc, Gcp, (R, Gc, G0), make_details, nrm)
+        self._last = (Xc, Gcp, (R, Gc, G0), make_details, nrm, fields)
         self._last_tr = (Xc, Gcp, tr)
         self.last_norm = nrm
         return R, Gc, G0, (make_details() if details else None)
+
+    def evaluate_fields(self, X: np.ndarray, G: np.ndarray):
+        """(R, Gc, G0, fields) of one state (Z, 6), (3,) -- the memo when (X, G) is the last
+        state evaluated -- with fields = (geo (N_GEO, Z, k), tractions (Z, k, 6), pocket
+        (Z, N_POCKET), F_d (Z,), u_ball, film (Z, k) or None), the arrays the details are built
+        from (:meth:`_details`); the result building reads them without the details dict."""
+        R, Gc, G0, _ = self._evaluate_one(np.asarray(X, dtype=float),
+                                          np.asarray(G, dtype=float), False)
+        return R, Gc, G0, self._last[5]
 
     def chord_kernel_args(self):
         """Arguments of the compiled residual :func:`_residual_one` after (X, G) and before
@@ -726,12 +738,13 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         details of the result) from fields computed by a compiled caller with the same
         kernel (``ball_newton._chord_phase``); X, G must not be modified afterwards."""
         Z, nk = self.Z, self._arc.shape[1]
+        fields = (geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6), pocket, Fd, u_ball,
+                  film.reshape(Z, nk))
 
         def make_details():
-            return self._details(X, G, geo.reshape(N_GEO, Z, nk), tr.reshape(Z, nk, 6),
-                                 pocket, Fd, u_ball, film.reshape(Z, nk))
+            return self._details(X, G, *fields)
 
-        self._last = (X, G, (R, Gc, G0), make_details, nrm)
+        self._last = (X, G, (R, Gc, G0), make_details, nrm, fields)
         self._last_tr = (X, G, tr)
         self.last_norm = nrm
 
@@ -854,7 +867,8 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
     def reloaded(self, radial_load: float, axial_load: float) -> ball_residual_system:
         """The same system (bearing, models, speed, Z) at other loads: a copy that shares the
         load-independent constants and the cage-speed memo (warm starts)."""
-        new = copy.copy(self)
+        new = object.__new__(type(self))             # copy.copy without its protocol
+        new.__dict__.update(self.__dict__)
         new._set_loads(radial_load, axial_load)
         new.n_eval = 0
         new.n_jac = 0
@@ -867,12 +881,12 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             # row is a force, moment or torque over F_s, F_s D/2 or F_s d_m/2, all
             # proportional to F_s); the contact fields, tractions and details do not depend
             # on them. Equal to a fresh evaluation to round-off (a few ulp).
-            X, G, (R, Gc, _), details, _ = self._last
+            X, G, (R, Gc, _), details, _, fields = self._last
             f = self.F_s / new.F_s
             t = new._cage_torques(float(G[2]))
             G0 = np.array([new._g0a, new._g0r, -(t[0] + t[1]) / new.T_s])
             R, Gc = R * f, Gc * f
-            new._last = (X, G, (R, Gc, G0), details, _residual_norm_nb(R, Gc, G0))
+            new._last = (X, G, (R, Gc, G0), details, _residual_norm_nb(R, Gc, G0), fields)
             new._last_tr = self._last_tr
         return new
 
@@ -885,6 +899,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.M_s = self.F_s * 0.5 * self.D
         self.T_s = self.F_s * self.Rm
         self._g0a, self._g0r = self.Fa / self.F_s, self.Fr / self.F_s
+        self._scales = None
         c = self._c.copy()
         c[C_FS], c[C_MS], c[C_TS] = self.F_s, self.M_s, self.T_s
         self._c = c
@@ -899,10 +914,12 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
     # scaling of the unknowns: positions in microns from a reference, spins by omega_i d_m/D,
     # pocket force by F_s, ring displacement in microns, cage speed by omega_i
     def scales(self):
-        ws = self.w_s * 2.0 * self.Rm / self.D
-        xs = np.array([1e-6, 1e-6, ws, ws, ws, self.F_s])
-        gs = np.array([1e-6, 1e-6, self.w_s])
-        return xs, gs
+        """(xs (6,), gs (3,)), computed once per loads (read them, do not modify them)."""
+        if self._scales is None:
+            ws = self.w_s * 2.0 * self.Rm / self.D
+            self._scales = (np.array([1e-6, 1e-6, ws, ws, ws, self.F_s]),
+                            np.array([1e-6, 1e-6, self.w_s]))
+        return self._scales
 
     def unscale(self, y, x_ref, g_ref):
         xs, gs = self.scales()

@@ -19,7 +19,16 @@ import numba
 import numpy as np
 
 from ..loads import ball_arcs, ball_load_distribution
-from .ball_residual import ball_residual_system
+from .ball_residual import (
+    G_ALPHA,
+    G_OMZ,
+    G_Q,
+    G_UE,
+    G_VX,
+    G_VY,
+    _energy_audit,
+    ball_residual_system,
+)
 
 __all__ = ["BallSkiddingResult", "theoretical_csr"]
 
@@ -152,52 +161,79 @@ def _summary(Q: np.ndarray, alpha: np.ndarray, inner_f: np.ndarray, a0: float,
     return ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc
 
 
-def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
-
-    R, Gc, G0, det = system.evaluate(X, G, details=True)
-    b = system.bearing
-    cf = det["cf"]
-    Q = cf.load
-    wi, wc = system.speed, G[2]
-    csr = wc / wi
-    inner = system.inner
-    a0 = float(b.contact_angle)
+@numba.njit(cache=True)
+def _result_kernel(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
+                   pocket: np.ndarray, Fd: np.ndarray, inner_f: np.ndarray, a0: float,
+                   gamma: float) -> tuple:
+    """The numbers of a result in one compiled call (session 8; was :func:`_summary` and
+    ``ball_residual._energy_audit`` through the details dict): the summary of
+    :func:`_summary`, the raceway heat summed over all / inner / outer arcs [W], the pocket
+    and drag heat summed over the balls [W] and the balls' torque on the inner ring [N m] of
+    :func:`~thermobearing.skidding.ball_residual._energy_audit`, and the pure-rolling CSR at
+    the load-weighted operating angles (1 - gamma cos a_i) / (1 + cos(a_i - a_o)) (primer
+    over-skidding section 5) [-]. geo (N_GEO, Z, k), tr (Z, k, 6), pocket (Z, N_POCKET)."""
     ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc = _summary(
-        Q, cf.contact_angle, system.inner_f, a0, X, det["contact_heat"])
-    g = b.ball_diameter / b.pitch_diameter
-    kin = float((1 - g * np.cos(ai_m)) / (1 + np.cos(ai_m - ao_m)))
+        geo[G_Q], geo[G_ALPHA], inner_f, a0, X, tr[:, :, 5])
+    pocket_heat, drag_heat, shaft = _energy_audit(X, wc, geo, tr, pocket, Fd, inner_f)
+    race = race_in = race_out = 0.0
+    for k in range(per_arc.size):
+        race += per_arc[k]
+        race_in += per_arc[k] * inner_f[k]
+        race_out += per_arc[k] * (1.0 - inner_f[k])
+    kin = (1.0 - gamma * math.cos(ai_m)) / (1.0 + math.cos(ai_m - ao_m))
+    return (ai, ao, spin, beta, yaw, race, race_in, race_out, pocket_heat.sum(),
+            drag_heat.sum(), shaft, kin)
+
+
+def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_reference):
+    """:class:`BallSkiddingResult` of the converged state (X, G) of ``system`` (its fields
+    from the memo of the last evaluation when (X, G) is that state). Heat by component
+    [W]: raceway (inner / outer arcs), ball-pocket (paper 002 eq. 19), ball drag (eq. 10),
+    cage churning (eq. 15), cage guide (eq. 5), inner-ring churning (eq. 17); the shaft torque
+    is the balls' torque on the inner ring plus the ring's churning (and the guide land's
+    reaction when the land is on the inner ring)."""
+    R, Gc, G0, fields = system.evaluate_fields(X, G)
+    geo, tr, pocket, Fd = fields[0], fields[1], fields[2], fields[3]
+    b = system.bearing
+    wi, wc = system.speed, float(G[2])
+    csr = wc / wi
+    (ai, ao, spin, beta, yaw, race, race_in, race_out, pocket_heat, drag_heat, shaft_balls,
+     kin) = _result_kernel(X, wc, geo, tr, pocket, np.asarray(Fd, dtype=float),
+                           system.inner_f, float(b.contact_angle),
+                           float(b.ball_diameter / b.pitch_diameter))
     if theoretical_reference is None:
         theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
     th = float(theoretical_reference)
-    Om = X[:, 2:5]
-    heat = {"raceway": float(per_arc.sum()),
-            "raceway_inner": float(per_arc @ system.inner_f),
-            "raceway_outer": float(per_arc @ (1.0 - system.inner_f)),
-            "ball_pocket": float(det["pocket_heat"].sum()),
-            "ball_drag": float(det["drag_heat"].sum()),
-            "cage": float(det["cage_heat"]),
-            "cage_guide": float(det["guide_heat"]),
-            "inner_ring_churning": float(det["inner_churn_heat"])}
-    heat["total"] = float(sum(v for k, v in heat.items()
-                              if k not in ("raceway_inner", "raceway_outer")))
-    names = _race_names(inner)
+    t_churn, t_guide, wg = system._cage_torques(wc)[:3]
+    inner_torque = system._inner_torque()
+    if system.models.guide_on_inner_ring:
+        inner_torque += t_guide       # the land's reaction on the inner ring
+    heat = {"raceway": race, "raceway_inner": race_in, "raceway_outer": race_out,
+            "ball_pocket": pocket_heat, "ball_drag": drag_heat, "cage": t_churn * wc,
+            "cage_guide": t_guide * (wc - wg), "inner_ring_churning": inner_torque * wi}
+    heat["total"] = (race + pocket_heat + drag_heat + heat["cage"] + heat["cage_guide"]
+                     + heat["inner_ring_churning"])
+    names = system.__dict__.get("_race_names")
+    if names is None:
+        names = system._race_names = _race_names(system.inner)
 
     def build_state():
-        return _kinematic_state(system, X, det, names, heat)
+        return _kinematic_state(system, X, system._details(X, G, *fields), names, heat)
 
     return BallSkiddingResult(
-        cage_speed_ratio=float(csr), theoretical_cage_speed_ratio=th,
-        kinematic_cage_speed_ratio=kin, over_skid=float(csr / th - 1.0), converged=True,
+        cage_speed_ratio=csr, theoretical_cage_speed_ratio=th,
+        kinematic_cage_speed_ratio=kin, over_skid=csr / th - 1.0, converged=True,
         residual_norm=float(nrm), iterations=int(iters), wall_time=float(wall), inner_speed=wi,
-        cage_speed=float(wc), ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
-        delta_r=float(G[1]), spin=Om.copy(), spin_speed=spin, attitude_angle=beta,
-        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=Q, contact_angle=cf.contact_angle,
-        ring=system.arcs.ring, sliding_speed=det["Vy"], transverse_sliding_speed=det["Vx"],
-        spin_speed_contact=det["Om_z"], entrainment_speed=det["ue"], heat=heat,
-        shaft_torque=float(det["shaft_torque"]), state_builder=build_state, unknowns=(X, G),
+        cage_speed=wc, ball_x=X[:, 0].copy(), ball_r=X[:, 1].copy(), delta_a=float(G[0]),
+        delta_r=float(G[1]), spin=X[:, 2:5].copy(), spin_speed=spin, attitude_angle=beta,
+        yaw_angle=yaw, pocket_force=X[:, 5].copy(), normal_load=geo[G_Q],
+        contact_angle=geo[G_ALPHA], ring=system.arcs.ring, sliding_speed=geo[G_VY],
+        transverse_sliding_speed=geo[G_VX], spin_speed_contact=geo[G_OMZ],
+        entrainment_speed=geo[G_UE], heat=heat, shaft_torque=shaft_balls + inner_torque,
+        state_builder=build_state, unknowns=(X, G),
         extra={"n_eval": system.n_eval, "n_jacobian": system.n_jac,
                "inner_contact_angle": ai, "outer_contact_angle": ao,
-               "race_names": names, "residual": R,
+               "race_names": list(names), "residual": R,
                "traction_law": system.models.traction_law,
                "jacobian": system.last_jacobian, "system": system})
 
@@ -272,3 +308,16 @@ def _theoretical_key(bearing, radial_load, axial_load, n_balls) -> tuple:
             arcs.pitch_radius, arcs.effective_modulus, float(bearing.contact_angle),
             float(bearing.ball_diameter), float(bearing.pitch_diameter), float(radial_load),
             float(axial_load), int(n_balls or bearing.n_balls))
+
+
+def _refresh_caches() -> None:
+    """numba's cache does not see edits of compiled callees in other files: the result kernel
+    compiles ``ball_residual._energy_audit`` into itself (see
+    :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
+    from ..contact_traction import refresh_stale_caches
+    from . import ball_residual
+
+    refresh_stale_caches("ball_result", (_summary, _result_kernel), (ball_residual,))
+
+
+_refresh_caches()
