@@ -13,14 +13,64 @@ filled by decorators in that module; after import they are not changed.
 from __future__ import annotations
 
 import importlib
+import math
 import pkgutil
+import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Generic, TypeVar
 
-from .errors import UnknownNameError
+from .errors import InputError, UnknownNameError
 
 T = TypeVar("T")
+
+_INTERVAL = re.compile(r"^\s*([\[(])\s*([^,\s]+)\s*,\s*([^\]\)\s]+)\s*([\])])\s*$")
+
+
+@dataclass(frozen=True)
+class Interval:
+    """Allowed range of a numeric parameter, written in interval notation: ``"[0, 1]"``,
+    ``"(0, inf)"``, ``"[2, 256]"`` (bounds in the parameter's SI unit; ``inf`` allowed).
+
+    Attributes
+    ----------
+    low, high : bounds; low_closed, high_closed : whether the bound itself is allowed.
+    text : the interval as written (for messages).
+    """
+
+    low: float
+    high: float
+    low_closed: bool
+    high_closed: bool
+    text: str
+
+    @classmethod
+    def parse(cls, text: str) -> Interval:
+        """``"[a, b]"``, ``"(a, b]"``... -> Interval; ValueError on any other form."""
+        m = _INTERVAL.match(text)
+        if m is None:
+            raise ValueError(f"not an interval: {text!r} (write e.g. '[0, 1]' or '(0, inf)')")
+        low, high = float(m.group(2)), float(m.group(3))
+        if not low <= high:
+            raise ValueError(f"empty interval {text!r}")
+        return cls(low, high, m.group(1) == "[", m.group(4) == "]", text.strip())
+
+    def contains(self, value: float) -> bool:
+        """Whether ``value`` lies in the interval (NaN never does)."""
+        if not (value >= self.low if self.low_closed else value > self.low):
+            return False
+        return value <= self.high if self.high_closed else value < self.high
+
+    def check(self, field_name: str, value: Any, unit: str = "-") -> None:
+        """Raise :class:`InputError` naming ``field_name`` unless ``value`` is a number in
+        the interval."""
+        try:
+            x = float(value)
+        except (TypeError, ValueError):
+            x = math.nan
+        if not self.contains(x):
+            what = f"a number in {self.text}" + ("" if unit in ("-", "") else f" [{unit}]")
+            raise InputError(field_name, value, what)
 
 
 @dataclass(frozen=True)
@@ -35,6 +85,7 @@ class Entry(Generic[T]):
     parameters : documented parameter name -> SI unit string (``"-"`` if dimensionless).
     validity : validity range in words (``"1 <= k <= 8, 0.3 < U*1e11 < 100"``).
     summary : one line on what the model is.
+    limits : documented parameter name -> allowed :class:`Interval` of a numeric value.
     """
 
     name: str
@@ -43,6 +94,15 @@ class Entry(Generic[T]):
     parameters: Mapping[str, str] = field(default_factory=dict)
     validity: str = ""
     summary: str = ""
+    limits: Mapping[str, Interval] = field(default_factory=dict)
+
+    def check_parameter(self, key: str, value: Any, field_name: str) -> None:
+        """Check a given value of parameter ``key`` against its documented interval (if
+        any); the error names ``field_name``. Strings (names of forms, models) are left
+        to the model."""
+        lim = self.limits.get(key)
+        if lim is not None and not isinstance(value, str):
+            lim.check(field_name, value, self.parameters.get(key, "-"))
 
 
 class Registry(Generic[T]):
@@ -67,10 +127,19 @@ class Registry(Generic[T]):
         parameters: Mapping[str, str] | None = None,
         validity: str = "",
         summary: str = "",
+        limits: Mapping[str, str] | None = None,
     ) -> Callable[[T], T]:
-        """Decorator that registers ``obj`` under ``name``; returns ``obj`` unchanged."""
+        """Decorator that registers ``obj`` under ``name``; returns ``obj`` unchanged.
+
+        ``limits``: documented parameter -> allowed interval in SI (``"[0, 1]"``,
+        ``"(0, inf)"``), checked where a scene sets the parameter."""
         if not references:
             raise ValueError(f"registry {self.family!r}: model {name!r} needs references")
+        parsed = {k: Interval.parse(v) for k, v in (limits or {}).items()}
+        unknown = sorted(set(parsed) - set(parameters or {}))
+        if unknown:
+            raise ValueError(f"registry {self.family!r}: model {name!r} limits undocumented "
+                             f"parameters {unknown}")
 
         def decorator(obj: T) -> T:
             if name in self._entries:
@@ -83,6 +152,7 @@ class Registry(Generic[T]):
                 parameters=dict(parameters or {}),
                 validity=validity,
                 summary=summary or (doc[0] if doc else ""),
+                limits=parsed,
             )
             return obj
 

@@ -97,7 +97,10 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
     "0.11 g" } }``. Each source must be one of ``sources`` (the scene's heat sources) and
     each parameter one its registry entry documents; unit strings are converted to the
     documented SI unit, numbers are taken as SI, and strings of dimensionless (``"-"``)
-    parameters are passed as names (the source checks them).
+    parameters are passed as names (the source checks them) unless the parameter has a
+    documented interval (a number: ``"50 %"`` is 0.5). Numeric values are checked
+    against the interval the entry documents (``limits``), so ``thermobearing check``
+    refuses e.g. a negative gap or an oil fraction above 1 before anything is solved.
     """
     from .heat_sources import HEAT_SOURCES
     from .units import to_si
@@ -114,7 +117,8 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
                              + ", ".join(sources))
         if not isinstance(params, Mapping):
             raise InputError(field_name, params, "a table of parameter = value")
-        documented = HEAT_SOURCES.entry(src).parameters
+        entry = HEAT_SOURCES.entry(src)
+        documented = entry.parameters
         conv: dict[str, Any] = {}
         for key, value in params.items():
             if key not in documented:
@@ -122,11 +126,15 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
                                  "a documented parameter of " + src + ": "
                                  + ", ".join(sorted(documented)))
             unit = documented[key]
-            if isinstance(value, str) and unit == "-":
-                conv[key] = value
-            else:
-                conv[key] = to_si(value, "" if unit == "-" else unit,
-                                  field=f"{field_name}.{key}")
+            if isinstance(value, str) and unit == "-" and key not in entry.limits:
+                conv[key] = value  # a name (form, model): the source checks it
+                continue
+            conv[key] = to_si(value, "" if unit == "-" else unit, field=f"{field_name}.{key}")
+            try:  # the documented interval (registry limits), checked here: at `check`
+                entry.check_parameter(key, conv[key], f"{field_name}.{key}")
+            except InputError as exc:
+                read = "" if conv[key] == value else f" (read as {conv[key]:g} {unit})"
+                raise InputError(f"{field_name}.{key}", value, f"{exc.allowed}{read}") from None
         out[src] = conv
     return out
 

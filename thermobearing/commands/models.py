@@ -27,7 +27,9 @@ def run(args: argparse.Namespace) -> int:
         for e in reg.entries():
             print(f"  {e.name}: {e.summary}")
             if e.parameters:
-                params = ", ".join(f"{k} [{u}]" for k, u in e.parameters.items())
+                params = ", ".join(
+                    f"{k} [{u}]" + (f" in {e.limits[k].text}" if k in e.limits else "")
+                    for k, u in e.parameters.items())
                 print(f"      parameters: {params}")
             if e.validity:
                 print(f"      validity: {e.validity}")

@@ -176,8 +176,17 @@ class HeatContext:
                              "a node temperature for this role (heat sources read it)") from None
 
     def option(self, source: str, name: str, default: Any) -> Any:
-        """Option ``name`` of ``source`` (``default`` if not given)."""
-        return self.options.get(source, {}).get(name, default)
+        """Option ``name`` of ``source`` (``default`` if not given). A given value is
+        checked against the interval the source's registry entry documents for it
+        (``limits``), whoever set it (scene or kinematics model)."""
+        opts = self.options.get(source)
+        if not opts or name not in opts:
+            return default
+        value = opts[name]
+        entry = HEAT_SOURCES._entries.get(source)
+        if entry is not None and name in entry.limits:
+            entry.check_parameter(name, value, f"options[{source}].{name}")
+        return value
 
 
 @dataclass(frozen=True)

@@ -101,6 +101,8 @@ def _penetration_for_force(youngs_modulus, width, force) -> float:
     references=["gao2022_overskidding", "hamrock2004", "harris_kotzalas2007"],
     parameters={"critical_film": "m", "friction_coefficient": "-", "boundary_friction": "-",
                 "load": "N", "cage_share": "-"},
+    limits={"critical_film": "(0, inf)", "friction_coefficient": "[0, 1]",
+            "boundary_friction": "[0, 1]", "load": "[0, inf)", "cage_share": "[0, 1]"},
     validity="ring-guided cages; short-bearing theory B_c/D_g < ~0.5; eps < 1",
 )
 def cage_guide(ctx: HeatContext) -> HeatResult:

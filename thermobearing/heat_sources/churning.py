@@ -224,6 +224,7 @@ def _role(ctx: HeatContext, source: str, default: str) -> str:
     "churning_cage",
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
     parameters={"oil_fraction": "-", "gap": "m", "parker_constant": "-"},
+    limits={"oil_fraction": "[0, 1]", "gap": "(0, inf)", "parker_constant": "(0, inf)"},
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_cage(ctx: HeatContext) -> HeatResult:
@@ -257,6 +258,8 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     references=["gao2022_overskidding", "parker1984_tp2275"],
     parameters={"oil_fraction": "-", "gap": "m", "raceway_arc_length": "m",
                 "shoulder_length": "m"},
+    limits={"oil_fraction": "[0, 1]", "gap": "(0, inf)", "raceway_arc_length": "[0, inf)",
+            "shoulder_length": "[0, inf)"},
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_inner_ring(ctx: HeatContext) -> HeatResult:
@@ -294,6 +297,8 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
     "churning_elements",
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
     parameters={"drag_coefficient": "-", "oil_fraction": "-", "gap": "m", "oil_swirl": "-"},
+    limits={"drag_coefficient": "(0, 10)", "oil_fraction": "[0, 1]", "gap": "(0, inf)",
+            "oil_swirl": "[0, 1]"},
     validity="sphere/cylinder drag plateau (1e3 < Re < 2e5 for c_d = 0.45)",
 )
 def churning_elements(ctx: HeatContext) -> HeatResult:

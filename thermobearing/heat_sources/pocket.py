@@ -174,6 +174,9 @@ def pocket_heat(normal_force, friction_coefficient, sliding_speed):
     references=["gao2022_overskidding", "hamrock2004"],
     parameters={"friction_coefficient": "-", "mu_boundary": "-", "mu_hydrodynamic": "-",
                 "pocket_film": "m", "roughness": "m", "element_share": "-"},
+    limits={"friction_coefficient": "[0, 1]", "mu_boundary": "[0, 1]",
+            "mu_hydrodynamic": "[0, 1]", "pocket_film": "[0, inf)", "roughness": "(0, inf)",
+            "element_share": "[0, 1]"},
     validity="pocket normal force from the kinematic state; mu in [0, 1]",
 )
 def pocket_friction(ctx: HeatContext) -> HeatResult:

@@ -153,6 +153,7 @@ _RESULT_FIELDS = ("transverse_force", "rolling_force", "moment_transverse",
     references=["gao2022_overskidding", "johnson1985", "harris_kotzalas2007",
                 "blok1963_flash_temperature"],
     parameters={"n_major": "-", "n_minor": "-"},
+    limits={"n_major": "[2, 256]", "n_minor": "[1, 256]"},
     validity="any kinematic state with contact sets; traction law from the context",
 )
 def raceway_traction(ctx: HeatContext) -> HeatResult:

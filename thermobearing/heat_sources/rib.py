@@ -69,6 +69,9 @@ DEFAULT_MODEL = "coupled"
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
                 "element_share": "-", "temperature_step": "K", "model": "-"},
+    limits={"friction_coefficient": "[0, 1]", "oil_fraction": "[0, 1]",
+            "unbalance_mass": "[0, inf)", "element_share": "[0, 1]",
+            "temperature_step": "(0, inf)"},
     validity="cylindrical roller bearings with ribs (end_face_crown_radius, rib_height set)",
 )
 def rib_friction(ctx: HeatContext) -> HeatResult:
