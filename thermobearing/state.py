@@ -147,6 +147,28 @@ def _field_masks(names: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray, np.nda
 
 
 @dataclass(frozen=True)
+class PrecomputedTraction:
+    """Tractions of a contact set as its producer integrated them (see ContactSet).
+
+    Attributes
+    ----------
+    law : the traction law object used (identity is what a consumer compares).
+    n_major, n_minor : quadrature nodes along a and b.
+    result : ``contact_traction.ContactTraction`` with arrays of shape (Z,): forces [N],
+        moments [N m], heat [W].
+    """
+
+    law: Any
+    n_major: int
+    n_minor: int
+    result: Any
+
+    def matches(self, law: Any, n_major: int, n_minor: int) -> bool:
+        """Whether a consumer integrating ``law`` with this quadrature would get this."""
+        return self.law is law and self.n_major == n_major and self.n_minor == n_minor
+
+
+@dataclass(frozen=True)
 class ContactSet:
     """The contacts of all elements with one raceway (arrays of shape ``(Z,)``).
 
@@ -174,6 +196,12 @@ class ContactSet:
     film_thickness : central film thickness h_c [m] or None.
     temperature : lubricant/surface temperature at the contact inlet [K] or None.
     reduced_radius_x, reduced_radius_y : R_x, R_y [m] or None (rolling-resistance models).
+    traction : the tractions of these contacts as the model that produced the state
+        integrated them, or None: a :class:`PrecomputedTraction` (the law, the quadrature
+        and a ``contact_traction.ContactTraction`` of shape (Z,)). A heat source that would
+        integrate the same law with the same quadrature at the same state uses it instead
+        (the skidding solver's converged contact forces). :meth:`with_` drops it unless it
+        is passed again, so a changed field never meets stale tractions.
     """
 
     race: str
@@ -195,8 +223,12 @@ class ContactSet:
     reduced_radius_y: Any = None
     kind: str = "point"
     ring_role: str = ""
+    traction: PrecomputedTraction | None = None
 
     def __post_init__(self) -> None:
+        if self.traction is not None and not isinstance(self.traction, PrecomputedTraction):
+            raise InputError(f"contacts[{self.race}].traction", type(self.traction).__name__,
+                             "a PrecomputedTraction or None")
         if self.kind not in CONTACT_KINDS:
             raise UnknownNameError(f"contacts[{self.race}].kind", self.kind, CONTACT_KINDS)
         role = self.ring_role or (
@@ -262,7 +294,9 @@ class ContactSet:
         return np.divide(self.sliding_speed, u, out=np.zeros_like(u), where=u != 0)
 
     def with_(self, **changes: Any) -> ContactSet:
-        """A copy with some fields replaced (validated again)."""
+        """A copy with some fields replaced (validated again); precomputed tractions are
+        dropped unless ``traction`` is among the changes."""
+        changes.setdefault("traction", None)
         return replace(self, **changes)
 
 

@@ -117,7 +117,16 @@ def _integrate_sets(ctx: HeatContext, contacts, n_major: int, n_minor: int) -> l
     and ring nodes). Sets of one contact kind and size, all with films (or all without) and
     at one temperature, are stacked into one ``contact_traction.integrate`` call: the
     integration is per contact, so the result is the same as set by set (bit for bit,
-    tested), with one call's checks instead of one per raceway arc."""
+    tested), with one call's checks instead of one per raceway arc. Sets that carry the
+    tractions their producer integrated with the same law and quadrature at a solver
+    temperature (``ContactSet.traction``) are not integrated again."""
+    law = ctx.traction
+    if contacts and all(cs.traction is not None and cs.temperature is not None
+                        and cs.traction.matches(law, n_major, n_minor) for cs in contacts):
+        # the producer of the state (the skidding solver) integrated this very law with
+        # this quadrature at these contact fields and temperatures: its tractions are the
+        # integral this source would compute
+        return [cs.traction.result for cs in contacts]
     sets = [cs if cs.temperature is not None
             else cs.with_(temperature=_contact_temperature(ctx, cs)) for cs in contacts]
     z = sets[0].n_elements if sets else 0

@@ -174,3 +174,42 @@ def test_stacked_integration_equals_set_by_set(qj1044, vg46, race_control_state,
         assert r.components[f"{cs.race} contact"] == float(np.sum(ref.heat))
         np.testing.assert_array_equal(r.forces[f"{cs.race}_generalized_force"],
                                       ref.generalized_force)
+
+
+def test_precomputed_tractions_are_used_only_when_they_match(qj1044, vg46, race_control_state):
+    """A contact set carrying its producer's tractions (ContactSet.traction) is not
+    integrated again when the law object and the quadrature match and the set has its
+    temperature; a different law, quadrature or a field changed through with_() integrates
+    anew (with_ drops the stale tractions)."""
+    from thermobearing.contact_traction import ContactTraction, integrate_contact_set
+    from thermobearing.state import PrecomputedTraction
+
+    op, ks = race_control_state
+    law = make_traction_law("eyring_limiting_shear", lubricant=vg46)
+    sets = tuple(cs.with_(temperature=330.0) for cs in ks.contacts)
+    exact = [integrate_contact_set(law, cs, n_major=16, n_minor=8) for cs in sets]
+    # a marked copy (twice the true values) shows which path ran
+    marked = [ContactTraction(*(2.0 * getattr(r, f) for f in (
+        "transverse_force", "rolling_force", "moment_transverse", "moment_rolling",
+        "moment_normal", "heat"))) for r in exact]
+
+    def run(carried, law_used=law):
+        state = ks.with_(contacts=carried)
+        return raceway.raceway_traction(make_context(qj1044, vg46, op, state,
+                                                     traction=law_used))
+
+    with_pre = tuple(cs.with_(traction=PrecomputedTraction(law, 16, 8, m))
+                     for cs, m in zip(sets, marked, strict=True))
+    base = run(sets).total
+    assert base == pytest.approx(sum(float(np.sum(r.heat)) for r in exact), rel=1e-14)
+    assert run(with_pre).total == pytest.approx(2.0 * base, rel=1e-14)
+    other = make_traction_law("eyring_limiting_shear", lubricant=vg46)
+    assert run(with_pre, other).total == pytest.approx(base, rel=1e-14)
+    coarse = tuple(cs.with_(traction=PrecomputedTraction(law, 8, 4, m))
+                   for cs, m in zip(sets, marked, strict=True))
+    assert run(coarse).total == pytest.approx(base, rel=1e-14)
+    moved = tuple(cs.with_(sliding_speed=cs.sliding_speed) for cs in with_pre)
+    assert all(cs.traction is None for cs in moved)
+    assert run(moved).total == pytest.approx(base, rel=1e-14)
+    with pytest.raises(InputError, match="traction"):
+        sets[0].with_(traction=marked[0])
