@@ -14,7 +14,8 @@ pocket terms):
 
 1. contact geometry (:func:`~thermobearing.skidding.ball_residual._ball_geometry`): arc
    centre -> ball centre distance L, normal (n_a, n_r), approach, contact angle, R_x, the
-   Hamrock-Brewe stiffness K (Hamrock & Brewe 1983; ``hertz._hamrock_brewe_point_nb``),
+   Hamrock-Brewe stiffness K (Hamrock & Brewe 1983; ``hertz._hamrock_brewe_point_nb``'s
+   formula as the residual evaluates it, ``ball_residual._hb_point``),
    Q = K delta^1.5 and the Hertz ellipse a, b ~ Q^(1/3) (Harris & Kotzalas 2007, ch. 6)
    -- differentiated by hand, the R_x dependence of K, a, b by a forward difference in R_x;
    the slip kinematics (V_x, V_y, spin components, entrainment speed) are bilinear in the
@@ -50,7 +51,6 @@ import numba
 import numpy as np
 
 from ..contact_traction import _peak_pressure, _table_viscosity, refresh_stale_caches
-from ..hertz import _ellipse_nb, _hamrock_brewe_point_nb
 from ..traction import EYRING
 from .ball_residual import (
     A_INNER,
@@ -90,6 +90,8 @@ from .ball_residual import (
     N_GEO,
     N_GLOBAL,
     _ball_geometry,
+    _ellipse_vec,
+    _hb_point,
     guarded_film,
 )
 
@@ -387,10 +389,10 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
             # R_x dependence of the Hertz constants and the film (forward difference)
             drx_step = rx * _RX_STEP
             rx2 = rx + drx_step
-            r2, k2, e2, K2 = _hamrock_brewe_point_nb(rx2, ry, ep)
+            r2, k2, e2, K2 = _hb_point(rx2, ry, ep)      # as the residual (ball_residual)
             dK_rx = (K2 - K) / drx_step
             if Q > 0.0:
-                a2, b2, _ = _ellipse_nb(Q, r2, k2, e2, ep)
+                a2, b2, _ = _ellipse_vec(Q, r2, k2, e2, ep)
                 da_rx = (a2 - a_e) / drx_step
                 db_rx = (b2 - b_e) / drx_step
             else:

@@ -50,15 +50,14 @@ from ..contact_traction import (
     viscosity_source,
 )
 from ..errors import InputError, check_positive
-from ..film import _hd1977_central_nb
-from ..hertz import _ellipse_nb, _hamrock_brewe_point_nb
+from ..hertz import _Q as _HB_Q
 from ..loads import (
     INNER,
     ArcSet,
     ContactField,
     ball_arcs,
 )
-from ..traction import EYRING
+from ..traction import EYRING, _exp_fin, _log_pos
 
 if TYPE_CHECKING:
     from .ball_newton import JacobianBlocks
@@ -137,14 +136,116 @@ _NO_REUSE = np.zeros(1, dtype=np.int64)    # read only: a single state copies no
 (A_CX, A_CR, A_FREE, A_INNER, A_SIGN, A_RY, A_CURV, A_WRACE) = range(8)
 
 
-@numba.njit(cache=True)
+_TINY = 1e-300
+_TWO_OVER_PI = 2.0 / math.pi
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _hd1977_central_vec(u: float, eta0: float, alpha: float, q: float, rx: float, ry: float,
+                        ep: float) -> float:
+    """Hamrock & Dowson 1977 central film [m] -- the formula of
+    :func:`thermobearing.film._hd1977_central_nb` (H_c = 2.69 U^0.67 G^0.53 W^-0.067
+    (1 - 0.61 exp(-0.73 k)), k = 1.03 (R_y/R_x)^0.64, U = eta0 |u| / (E' R_x), G = alpha E',
+    W = Q / (E' R_x^2), h = H_c R_x) with the powers as exp(sum of exponent x log), by the
+    branch-free log / exp of :mod:`thermobearing.traction`, so that a loop over contacts
+    vectorises (session 8). Equal to ``_hd1977_central_nb`` to ~1e-14 relative (the logs'
+    rounding times the exponents; test); 0 for U = 0 or G = 0, +inf for W = 0 as there.
+    u [m/s], eta0 [Pa s], alpha [1/Pa], q [N], rx, ry [m], ep [Pa]."""
+    big_u = eta0 * abs(u) / (ep * rx)
+    big_g = alpha * ep
+    big_w = q / (ep * rx * rx)
+    kk = 1.03 * _exp_fin(0.64 * _log_pos(ry / rx))
+    h = rx * 2.69 * _exp_fin(0.67 * _log_pos(max(big_u, _TINY))
+                             + 0.53 * _log_pos(max(big_g, _TINY))
+                             - 0.067 * _log_pos(max(big_w, _TINY))) * (
+        1.0 - 0.61 * _exp_fin(-0.73 * kk))
+    if not big_g > 0.0:
+        h = 0.0
+    if not big_w > 0.0:
+        h = math.inf
+    if not big_u > 0.0:
+        h = 0.0
+    return h
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def guarded_film(u: float, q: float, rx: float, ry: float, fp: np.ndarray) -> float:
-    """Central film [m] of the solver's film model: Hamrock-Dowson 1977
-    (:func:`thermobearing.film._hd1977_central_nb`) at max(|u|, u_min), max(Q, Q_min),
-    floored at h_min; fp = (eta0 [Pa s], alpha [1/Pa], E' [Pa], u_min [m/s], Q_min [N],
-    h_min [m])."""
-    h = _hd1977_central_nb(max(abs(u), fp[3]), fp[0], fp[1], max(q, fp[4]), rx, ry, fp[2])
+    """Central film [m] of the solver's film model: Hamrock-Dowson 1977 (the formula of
+    :func:`thermobearing.film._hd1977_central_nb`, evaluated as :func:`_hd1977_central_vec`)
+    at max(|u|, u_min), max(Q, Q_min), floored at h_min; fp = (eta0 [Pa s], alpha [1/Pa],
+    E' [Pa], u_min [m/s], Q_min [N], h_min [m])."""
+    h = _hd1977_central_vec(max(abs(u), fp[3]), fp[0], fp[1], max(q, fp[4]), rx, ry, fp[2])
     return max(h, fp[5])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _film_rows(geo: np.ndarray, ry: np.ndarray, fp: np.ndarray, film: np.ndarray) -> None:
+    """:func:`guarded_film` (the same operations) of every contact of ``geo`` (N_GEO, n)
+    with R_y per contact ``ry`` (n,) into ``film`` (n,) (a vectorised loop)."""
+    # the parameters as scalars: loaded in the loop they would alias ``film`` for LLVM
+    eta0, alpha, ep, u_min, q_min, h_min = fp[0], fp[1], fp[2], fp[3], fp[4], fp[5]
+    for n in range(film.size):
+        h = _hd1977_central_vec(max(abs(geo[G_UE, n]), u_min), eta0, alpha,
+                                max(geo[G_Q, n], q_min), geo[G_RX, n], ry[n], ep)
+        film[n] = max(h, h_min)
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _hb_point(rx: float, ry: float, ep: float) -> tuple[float, float, float, float]:
+    """Hamrock-Brewe 1983 closed form of :func:`thermobearing.hertz._hamrock_brewe_point_nb`
+    -- (R [m], k [-], E [-], K [N/m^1.5]): 1/R = 1/R_x + 1/R_y, k = (R_big/R_small)^(2/pi),
+    E = 1 + (pi/2 - 1)/ratio, script-K = pi/2 + (pi/2 - 1) ln(ratio), K = pi k E'
+    (2 E R / (9 script-K^3))^(1/2) -- with the power by the branch-free log / exp of
+    :mod:`thermobearing.traction` (vectorisable; equal to the scalar function to ~1e-15
+    relative, test). rx, ry [m], ep = E' [Pa]. Reference: Hamrock & Brewe 1983 (J. Lubr.
+    Technol. 105), as ``hertz``."""
+    r_red = 1.0 / (1.0 / rx + 1.0 / ry)
+    ratio = max(rx, ry) / min(rx, ry)
+    lr = _log_pos(ratio)
+    k_el = _exp_fin(_TWO_OVER_PI * lr)
+    big_k = 0.5 * math.pi + _HB_Q * lr
+    big_e = 1.0 + _HB_Q / ratio
+    K = math.pi * k_el * ep * math.sqrt(2.0 * big_e * r_red / (9.0 * (big_k * big_k * big_k)))
+    return r_red, k_el, big_e, K
+
+
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _ellipse_vec(q: float, r_red: float, k_el: float, big_e: float,
+                 ep: float) -> tuple[float, float, float]:
+    """The Hertz ellipse of :func:`thermobearing.hertz._ellipse_nb` -- (a, b [m], p_max
+    [Pa]): b = (6 E Q R / (pi k E'))^(1/3), a = k b (= (6 k^2 E Q R / (pi E'))^(1/3)),
+    p_max = 3 Q / (2 pi a b); zeros at zero load -- with the cube root by the branch-free
+    log / exp (vectorisable; ~1e-15 relative, test). q [N] >= 0."""
+    loaded = q > 0.0
+    b3 = 6.0 * big_e * q * r_red / (math.pi * k_el * ep)
+    b3 = max(b3, _TINY)
+    b_e = _exp_fin(_log_pos(b3) * (1.0 / 3.0))
+    b_e += (b3 / (b_e * b_e) - b_e) * (1.0 / 3.0)       # one Newton step: ~1 ulp
+    if not loaded:
+        b_e = 0.0
+    a_e = k_el * b_e
+    p0 = 3.0 * q / (2.0 * math.pi * (a_e * b_e))
+    if not loaded:
+        p0 = 0.0
+    return a_e, b_e, p0
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _hertz_rows(geo: np.ndarray, ry: np.ndarray, ep: float) -> None:
+    """Stage 1b of :func:`_ball_geometry` (a vectorised loop over the contacts): from R_x
+    (row G_RX), R_y (``ry``) and the approach delta, the Hamrock-Brewe constants
+    (:func:`_hb_point`), the load Q = K delta^1.5 (Hertz) and the ellipse
+    (:func:`_ellipse_vec`) into rows G_Q, G_K, G_A, G_B, G_P0."""
+    for n in range(geo.shape[1]):
+        r_red, k_el, big_e, K = _hb_point(geo[G_RX, n], ry[n], ep)
+        pen = max(geo[G_APPROACH, n], 0.0)
+        Q = K * (pen * math.sqrt(pen))
+        a_e, b_e, p0 = _ellipse_vec(Q, r_red, k_el, big_e, ep)
+        geo[G_Q, n] = Q
+        geo[G_K, n] = K
+        geo[G_A, n] = a_e
+        geo[G_B, n] = b_e
+        geo[G_P0, n] = p0
 
 
 @numba.njit(cache=True)
@@ -192,14 +293,16 @@ def _residual_norm_nb(R: np.ndarray, Gc: np.ndarray, G0: np.ndarray) -> float:
 
 @numba.njit(cache=True)
 def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
-                   c: np.ndarray, geo: np.ndarray) -> None:
+                   c: np.ndarray, geo: np.ndarray) -> np.ndarray:
     """Stage 1: raceway-arc contacts (``loads.arc_contacts`` geometry, Hamrock-Brewe Hertz
     constants as ``loads._arc_stiffness_nb``, the Hertz ellipse) and the slip kinematics of every
     (state, ball, arc) contact, written into ``geo`` (N_GEO, B*Z*k); see the module
-    docstring of :mod:`thermobearing.contact_traction` for the contact frame."""
+    docstring of :mod:`thermobearing.contact_traction` for the contact frame. The Hertz part
+    runs in a second, vectorised loop (:func:`_hertz_rows`). Returns R_y per contact (n,)."""
     nb, nz = X.shape[0], X.shape[1]
     nk = arc.shape[1]
     D, dm, ep = c[C_D], c[C_DM], c[C_EP]
+    ry = np.empty(nb * nz * nk)
     for i in range(nb):
         da, dr_, wc = G[i, 0], G[i, 1], G[i, 2]
         for j in range(nz):
@@ -211,15 +314,14 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 cx = arc[A_CX, k] + inner * da
                 cr = arc[A_CR, k] + inner * (dr_ * cpsi[j])
                 dx, dr = bx - cx, br - cr
-                L = math.hypot(dx, dr)
+                L = math.sqrt(dx * dx + dr * dr)            # (no overflow: lengths ~mm)
                 na, nr = dx / L, dr / L                      # arc centre -> ball centre
                 approach = L - arc[A_FREE, k]
                 alpha = math.atan2(na, abs(nr))
-                rx = 0.5 * D * (1.0 - arc[A_SIGN, k] * (D * math.cos(alpha) / dm))
-                r_red, k_el, big_e, K = _hamrock_brewe_point_nb(rx, arc[A_RY, k], ep)
+                # cos(alpha) = |n_r| / |n| = |n_r| (n is a unit vector; to round-off)
+                rx = 0.5 * D * (1.0 - arc[A_SIGN, k] * (D * abs(nr) / dm))
+                ry[n] = arc[A_RY, k]
                 pen = max(approach, 0.0)
-                Q = K * pen ** 1.5
-                a_e, b_e, p0 = _ellipse_nb(Q, r_red, k_el, big_e, ep)
                 half = 0.5 * D - 0.5 * pen                   # lever to the contact centre
                 pa, pr = half * na, half * nr                # contact point - ball centre
                 w_race = arc[A_WRACE, k]
@@ -230,16 +332,11 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 # element minus race; contact frame e_x = (nr, -na, 0), e_y = e_t, e_z = -n
                 wa_rel = wc + Oa - w_race
                 geo[G_APPROACH, n] = approach
-                geo[G_Q, n] = Q
                 geo[G_NA, n] = na
                 geo[G_NR, n] = nr
                 geo[G_L, n] = L
                 geo[G_ALPHA, n] = alpha
-                geo[G_K, n] = K
                 geo[G_RX, n] = rx
-                geo[G_A, n] = a_e
-                geo[G_B, n] = b_e
-                geo[G_P0, n] = p0
                 geo[G_PA, n] = pa
                 geo[G_PR, n] = pr
                 geo[G_VX, n] = (-Ot * pr) * nr - (Ot * pa) * na
@@ -249,6 +346,8 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 geo[G_OMZ, n] = -(wa_rel * na + Or * nr)
                 geo[G_UE, n] = 0.5 * (spin_t + (w_race - wc) * Rr)
                 geo[G_CURV, n] = arc[A_CURV, k]
+    _hertz_rows(geo, ry, ep)
+    return ry
 
 
 @numba.njit(cache=True)
@@ -356,7 +455,7 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
     film law's viscosity from the table (``visc_mode`` 1) when ``ln_tab`` is not empty.
     Returns False (nothing written to R) when a node pressure leaves the table's range
     [0, p_max]: the caller then takes the staged path."""
-    _ball_geometry(X, G, cpsi, arc, c, geo)
+    ry = _ball_geometry(X, G, cpsi, arc, c, geo)
     n = geo.shape[1]
     visc_mode = 0
     if ln_tab.size > 0:
@@ -364,9 +463,7 @@ def _ball_residual_fused(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np
         for i in range(n):
             if geo[G_P0, i] > p_max:
                 return False
-    for i in range(n):
-        film[i] = guarded_film(geo[G_UE, i], geo[G_Q, i], geo[G_RX, i],
-                               arc[A_RY, i % arc.shape[1]], film_params)
+    _film_rows(geo, ry, film_params, film)
     _ball_forces(X, G, cpsi, arc, c, geo, film, law_id, law_params, visc_mode, ln_tab,
                  slope_tab, inv_dp, np.empty((0, 0)), xg, yg, pshape, area_w, pidx, pshape_u,
                  Fd, reuse, tr_ref, tr, pocket, R, Gc)
@@ -466,7 +563,8 @@ def _refresh_caches() -> None:
     refresh_stale_caches("ball_residual", (guarded_film, guarded_film_array, _ball_geometry,
                                            _ball_forces, _ball_residual_fused, _residual_one,
                                            _same_state, _residual_norm_nb,
-                                           _energy_audit),
+                                           _energy_audit, _hd1977_central_vec, _film_rows,
+                                           _hertz_rows, _hb_point, _ellipse_vec),
                          (contact_traction, traction, hertz, film))
 
 

@@ -305,3 +305,53 @@ def test_compiled_fd_blocks_equal_the_numpy_formulas():
                                atol=1e-9)
     Dg_ref = (((Gcb[6:].sum(1) + Gkb[6:]) - (Gc.sum(0) + Gk)) / h).T
     np.testing.assert_allclose(Dg, Dg_ref, rtol=1e-8, atol=1e-8)
+
+
+def test_vectorised_hertz_and_film_equal_the_scalar_kernels():
+    # session 8: the residual's Hertz constants, ellipse and film run in vectorised loops
+    # with branch-free log / exp (ball_residual._hb_point, _ellipse_vec, _hd1977_central_vec);
+    # they must equal the scalar kernels of hertz / film (libm powers and cube roots) to
+    # round-off: measured <= 1.1e-15 relative (Hertz) and 6.7e-15 (film) over these ranges
+    # (R_x 2-20 mm, R_y 0.05-1 m,
+    # loads 1e-3 N - 50 kN, entrainment 1e-3 - 50 m/s)
+    import numba
+
+    from thermobearing.skidding.ball_residual import (
+        _ellipse_vec,
+        _hb_point,
+        _hd1977_central_vec,
+    )
+
+    @numba.njit(error_model="numpy")
+    def vec(rx, ry, q, u, out):
+        for i in range(rx.size):
+            r, k, e, K = _hb_point(rx[i], ry[i], 2.26e11)
+            a, b, p = _ellipse_vec(q[i], r, k, e, 2.26e11)
+            out[i, 0], out[i, 1], out[i, 2], out[i, 3] = K, a, b, p
+            out[i, 4] = _hd1977_central_vec(u[i], 0.02, 2e-8, q[i], rx[i], ry[i], 2.26e11)
+
+    @numba.njit
+    def ref(rx, ry, q, u, out):
+        for i in range(rx.size):
+            r, k, e, K = _hamrock_brewe_point_nb(rx[i], ry[i], 2.26e11)
+            a, b, p = _ellipse_nb(q[i], r, k, e, 2.26e11)
+            out[i, 0], out[i, 1], out[i, 2], out[i, 3] = K, a, b, p
+            out[i, 4] = _hd1977_central_nb(u[i], 0.02, 2e-8, q[i], rx[i], ry[i], 2.26e11)
+
+    rng = np.random.default_rng(8)
+    n = 20000
+    rx = rng.uniform(2e-3, 20e-3, n)
+    ry = rng.uniform(0.05, 1.0, n)
+    q = np.exp(rng.uniform(np.log(1e-3), np.log(5e4), n))
+    u = np.exp(rng.uniform(np.log(1e-3), np.log(50.0), n))
+    q[:3] = 0.0
+    got, want = np.empty((n, 5)), np.empty((n, 5))
+    vec(rx, ry, q, u, got)
+    ref(rx, ry, q, u, want)
+    np.testing.assert_array_equal(got[:3, 1:4], 0.0)        # zero load: no ellipse
+    assert np.all(np.isinf(got[:3, 4]))                      # W = 0: infinite film, as libm
+    np.testing.assert_allclose(got[3:], want[3:], rtol=1e-14, atol=0.0)
+    # u = 0 gives no film, as the scalar kernel
+    out = np.empty((1, 5))
+    vec(rx[:1], ry[:1], q[3:4], np.zeros(1), out)
+    assert out[0, 4] == 0.0
