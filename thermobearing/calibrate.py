@@ -56,7 +56,8 @@ import numpy as np
 import pandas as pd
 
 from .errors import ConvergenceError, InputError
-from .scene import Scene, check_measured_file, dumps_toml
+from .scene import Scene, dumps_toml
+from .scene_checks import check_measured_file
 from .sweep import DISPLAY_UNITS, assign_path, check_path, get_path
 from .units import from_si, to_si, unit_registry
 

@@ -637,135 +637,6 @@ def with_absolute_paths(scene: Scene) -> Scene:
     return Scene.from_dict(d, base) if changed else scene
 
 
-def check_model_names(scene: Scene) -> None:
-    """Kinematics model, heat sources and stepper against their registries, so that the
-    error names the scene field (``models.heat_sources[1]``) and lists the known names.
-
-    ``thermobearing check`` / ``run`` / ``sweep`` call it before building the Simulation
-    (which checks the same names, with the registry family as the field). Film models are
-    checked, with the numerical ones, when the chain is planned.
-    """
-    from .heat_sources import HEAT_SOURCES
-    from .kinematic_models import KINEMATICS
-    from .network import STEPPERS
-
-    models, stepper = scene.models, scene.solver.stepper
-    kinematics = models.get("kinematics", "skidding")
-    if kinematics not in KINEMATICS:
-        raise UnknownNameError("models.kinematics", kinematics, KINEMATICS.names())
-    sources = models.get("heat_sources", [])
-    for i, name in enumerate([sources] if isinstance(sources, str) else sources):
-        if name not in HEAT_SOURCES:
-            where = "models.heat_sources" if isinstance(sources, str) else \
-                f"models.heat_sources[{i}]"
-            raise UnknownNameError(where, name, HEAT_SOURCES.names())
-    if stepper not in STEPPERS:
-        raise UnknownNameError("solver.stepper", stepper, STEPPERS.names())
-    if "control" in models:
-        from .state import RACE_CONTROLS
-
-        if kinematics != "race_control":
-            raise InputError("models.control", models["control"],
-                             "nothing unless kinematics = \"race_control\" (the option of "
-                             f"race control; kinematics here is {kinematics!r})")
-        if models["control"] not in RACE_CONTROLS:
-            raise UnknownNameError("models.control", models["control"], RACE_CONTROLS)
-    target = models.get("churning_heat_to", "oil")
-    if target not in ("oil", "paper002"):
-        raise UnknownNameError("models.churning_heat_to", target, ("oil", "paper002"))
-
-
-def check_measured_file(scene: Scene) -> None:
-    """Validate the data of the scene's ``[measured]`` CSV before a run or a fit reads it.
-
-    The file must exist; the time column and every mapped column must be in it; every
-    non-empty cell of those columns must be a number (empty cells are gaps, allowed here:
-    calibration refuses them itself); times must be finite and strictly increasing. The
-    error names the column, the row (1 = first data row) and the value.
-    """
-    import pandas as pd
-
-    m = scene.measured
-    if m is None:
-        return
-    path = scene.resolve_path(m.file)
-    if not path.is_file():
-        raise InputError("measured.file", m.file, f"an existing CSV file (looked at {path})")
-    try:
-        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        raise InputError("measured.file", m.file, f"a readable CSV file ({exc})") from None
-    if m.time_column not in df:
-        raise InputError("measured.time_column", m.time_column,
-                         "a column of the file: " + ", ".join(map(str, df.columns)))
-    for col in m.columns:
-        if col not in df:
-            raise InputError(f"measured.columns[{col!r}]", col,
-                             "a column of the file: " + ", ".join(map(str, df.columns)))
-    for col in [m.time_column, *m.columns]:
-        text = df[col].str.strip()
-        values = pd.to_numeric(text, errors="coerce")
-        bad = (values.isna() & (text != "")) | (text.str.lower().isin(("nan", "inf", "-inf")))
-        if col == m.time_column:
-            bad = bad | (text == "")
-        if bad.any():
-            row = int(bad.to_numpy().nonzero()[0][0])
-            raise InputError(f"measured column {col!r}", f"row {row + 1}: {df[col].iloc[row]!r}",
-                             "a number in every row" if col == m.time_column
-                             else "numbers (an empty cell is a gap)")
-    t = pd.to_numeric(df[m.time_column].str.strip()).to_numpy(dtype=float)
-    steps = t[1:] - t[:-1]
-    if steps.size and not (steps > 0).all():
-        row = int((steps <= 0).nonzero()[0][0]) + 1
-        raise InputError(f"measured column {m.time_column!r}",
-                         f"row {row + 1}: {t[row]:g} after {t[row - 1]:g}",
-                         "strictly increasing times")
-
-
-def check_network(network: Mapping[str, Any], require: bool = True) -> None:
-    """Validate a scene's ``[network]`` table before anything runs.
-
-    Keys ``template`` and ``parameters`` only; the template must be registered; every
-    parameter must be one the template documents, in a unit of the documented dimension;
-    with ``require``, the parameters the template requires (keyword-only without a default)
-    must be given (call it so before a run that builds the network).
-    Ambient, oil inlet temperature and oil flow come from ``[environment]`` / ``[supply]``.
-    """
-    import inspect
-
-    from .network.templates import TEMPLATES
-
-    _check_keys("network", network, ("template", "parameters"))
-    name = network.get("template", "four_node_paper002")
-    if not isinstance(name, str):
-        raise InputError("network.template", name, "a template name (a string)")
-    if name not in TEMPLATES:
-        raise UnknownNameError("network.template", name, TEMPLATES.names())
-    entry = TEMPLATES.entry(name)
-    params = _table("network.parameters", network.get("parameters", {}))
-    from_scene = ("ambient_temperature", "oil_inlet_temperature", "oil_flow")
-    for key, value in params.items():
-        if key in from_scene:
-            raise InputError(f"network.parameters.{key}", value,
-                             "set in [environment] / [supply], not in the network")
-        unit = entry.parameters.get(key)
-        if unit is None:
-            raise InputError(f"network.parameters.{key}", value,
-                             f"a parameter of template {name!r}: "
-                             + ", ".join(k for k in sorted(entry.parameters)
-                                         if k not in from_scene))
-        if unit == "-" and isinstance(value, str):
-            continue  # a dimensionless option given by name (a material, a model ...)
-        _quantity(value, unit if unit != "-" else "dimensionless", f"network.parameters.{key}")
-    required = [p.name for p in inspect.signature(entry.obj).parameters.values()
-                if p.kind is inspect.Parameter.KEYWORD_ONLY and p.default is inspect.Parameter.empty
-                and p.name not in from_scene and p.name not in params]
-    if required and require:
-        raise InputError("network.parameters", dict(params),
-                         f"values for the parameters template {name!r} requires: "
-                         + ", ".join(required))
-
-
 # ---------------------------------------------------------------------------
 def configs_dir() -> Path:
     """The repository's ``configs`` folder (bearings, lubricants, scenes)."""
@@ -860,3 +731,12 @@ def _is_table_array(v: Any) -> bool:
     """An array of named tables (``[[bearings]]``) is written in the long form."""
     return (isinstance(v, list) and bool(v)
             and all(isinstance(x, Mapping) and "name" in x for x in v))
+
+
+# the pre-run checks live in scene_checks (one job per module); re-exported here, where
+# callers have always found them
+from .scene_checks import (  # noqa: E402, F401
+    check_measured_file,
+    check_model_names,
+    check_network,
+)

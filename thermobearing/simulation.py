@@ -304,7 +304,7 @@ class Simulation:
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
-        from .scene import check_model_names
+        from .scene_checks import check_model_names
 
         check_model_names(scene)  # the error names the scene field and the known names
         self.scene = scene
@@ -505,7 +505,8 @@ class Simulation:
     # ------------------------------------------------------------------- run
     def run(self, out_dir: Path | str | None = None) -> Results:
         """Run the scene; write results to ``out_dir`` as they are computed (if given)."""
-        from .scene import check_measured_file, check_network, with_absolute_paths
+        from .scene import with_absolute_paths
+        from .scene_checks import check_measured_file, check_network
 
         # what loading cannot know wrong fails here, before any model is solved (the CLI
         # runs the same checks earlier): the network template's required parameters and

@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import InputError
-from ..scene import check_measured_file, check_network
+from ..scene_checks import check_measured_file, check_network
 
 
 def preflight(sim: Any, build: bool = True) -> None:

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from ..scene import check_model_names, load_scene
+from ..scene import load_scene
+from ..scene_checks import check_model_names
 
 NAME = "check"
 HELP = "validate a scene and print the model chain that will run, with citations"

@@ -12,7 +12,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import check_model_names, load_scene, with_absolute_paths
+from ..scene import load_scene, with_absolute_paths
+from ..scene_checks import check_model_names
 from ._preflight import preflight
 
 NAME = "run"

@@ -12,7 +12,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from ..scene import check_measured_file, check_model_names, check_network, load_scene
+from ..scene import load_scene
+from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
 
 NAME = "sweep"
