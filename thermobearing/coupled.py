@@ -226,6 +226,18 @@ class Coupler:
         return rows
 
 
+def _sample_times(t: float, h: float, interval: float | None) -> np.ndarray | None:
+    """Multiples of ``interval`` [s] strictly inside the chunk (t, t + h) (the chunk ends
+    have their own rows), or None."""
+    if interval is None:
+        return None
+    tol = 1e-9 * max(1.0, t + h)
+    k0 = math.floor((t + tol) / interval) + 1
+    times = interval * np.arange(k0, math.ceil((t + h - tol) / interval))
+    times = times[(times > t + tol) & (times < t + h - tol)]
+    return times if times.size else None
+
+
 #: node temperature [K] above which a run is stopped as a thermal runaway (300 degC: beyond
 #: the service range of bearing steels and lubricants)
 RUNAWAY_TEMPERATURE = 573.15
@@ -285,6 +297,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     stepper = TransientStepper(net, method=solver.stepper, rtol=solver.rtol, atol=solver.atol,
                                max_step=solver.max_step)
     chunk = solver.chunk
+    interval = scene.outputs.interval
     t = 0.0
     temp_rows = [_temperature_row(t, names, T)]
     if writer:
@@ -323,8 +336,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     # and curvature re-centred at T (they change only slowly)
                     lin = lin.moved(coupler.heat(step, T), T)
                 last_kin = kin_id
+                samples = _sample_times(t, h, interval)
                 try:
-                    out = stepper.advance(t, T, h, lin.heat, lin.jac)
+                    out = stepper.advance(t, T, h, lin.heat, lin.jac, sample_times=samples)
                 except ConvergenceError as exc:
                     if solver.stepper != "exprb43" or fallback_used:
                         raise
@@ -336,8 +350,14 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                         "with tr_bdf2 (set [solver] stepper = \"tr_bdf2\" to use it throughout)")
                     stepper = TransientStepper(net, method="tr_bdf2", rtol=solver.rtol,
                                                atol=solver.atol, max_step=solver.max_step)
-                    out = stepper.advance(t, T, h, lin.heat, lin.jac)
+                    out = stepper.advance(t, T, h, lin.heat, lin.jac, sample_times=samples)
                 audits.append(out.audit)
+                if out.samples is not None:
+                    rows_in = [_temperature_row(ts, names, Ts)
+                               for ts, Ts in zip(samples, out.samples, strict=True)]
+                    temp_rows.extend(rows_in)
+                    if writer:
+                        writer.append("temperatures", rows_in)
                 T, t = out.temperatures, out.time
                 if not np.all(np.isfinite(T)):
                     raise ConvergenceError("coupled transient", math.inf,

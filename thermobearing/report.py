@@ -74,13 +74,25 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
     """Node temperatures [degC] against time [min], measured points overlaid."""
     fig, ax = plt.subplots(figsize=(8, 4.5))
     t_min = temps["time [s]"].to_numpy() / 60.0
-    for col in temps.columns:
-        if col.endswith("[degC]"):
-            ax.plot(t_min, temps[col], label=col.replace(" [degC]", ""))
+    # one colour per node kind, one line style per bearing (``<bearing>.<node>``): two
+    # identical bearings on one shaft then show as overlapping solid and dashed lines
+    nodes = [c[:-len(" [degC]")] for c in temps.columns if c.endswith(" [degC]")]
+    groups = list(dict.fromkeys(n.split(".", 1)[0] for n in nodes if "." in n))
+    kinds = list(dict.fromkeys(n.split(".", 1)[-1] for n in nodes))
+    palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    styles = ("-", "--", ":", "-.")
+    colour = {}
+    for n in nodes:
+        kind = n.split(".", 1)[-1]
+        g = n.split(".", 1)[0] if "." in n else ""
+        colour[n] = palette[kinds.index(kind) % len(palette)]
+        ax.plot(t_min, temps[f"{n} [degC]"], label=n, color=colour[n],
+                ls=styles[groups.index(g) % len(styles)] if g in groups else "-")
     if measured is not None and column_map:
-        for sensor in column_map:
+        for sensor, node in column_map.items():
             if sensor in measured:
                 ax.plot(measured["time [s]"] / 60.0, measured[sensor], "o", ms=3,
+                        color=colour.get(node), mfc="none",
                         label=f"{sensor} (measured)")
     ax.set_xlabel("time [min]")
     ax.set_ylabel("temperature [degC]")

@@ -460,14 +460,27 @@ class Solver:
 
 @dataclass(frozen=True)
 class Outputs:
-    """What the scene must produce; decides which models run."""
+    """What the scene must produce; decides which models run.
+
+    ``interval`` [s] (optional, transient runs): temperature rows also at every multiple of
+    it, from the stepper's own dense output between the coupling chunk ends (default: the
+    chunk ends only). A measured CSV is compared with these rows, so a thermocouple log
+    sampled faster than the chunk is met by the model's curve, not by straight lines
+    between chunk ends.
+    """
 
     mode: str = "transient"
     want: tuple[str, ...] = ("temperatures", "losses", "kinematics", "energy", "report")
+    interval: float | None = None
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Outputs:
-        _check_keys("outputs", data, ("mode", "want"))
+        _check_keys("outputs", data, ("mode", "want", "interval"))
+        interval = None
+        if "interval" in data:
+            interval = _quantity(data["interval"], "time", "outputs.interval")
+            if not interval > 0:
+                raise InputError("outputs.interval", data["interval"], "a time > 0")
         mode = data.get("mode", "transient")
         if mode not in OUTPUT_MODES:
             raise UnknownNameError("outputs.mode", mode, OUTPUT_MODES)
@@ -479,10 +492,13 @@ class Outputs:
         for w in want:
             if w not in OUTPUT_KINDS:
                 raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
-        return cls(mode=mode, want=want)
+        return cls(mode=mode, want=want, interval=interval)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"mode": self.mode, "want": list(self.want)}
+        out: dict[str, Any] = {"mode": self.mode, "want": list(self.want)}
+        if self.interval is not None:
+            out["interval"] = _fmt(self.interval, "s")
+        return out
 
 
 @dataclass(frozen=True)

@@ -358,3 +358,64 @@ def test_default_rib_friction_left_out_where_the_geometry_cannot_host_it():
     sim = Simulation(loads_scene(named), progress=False)
     with pytest.raises(InputError, match="ribbed_ring"):
         sim.run()
+
+
+def test_output_interval_adds_dense_rows_without_changing_the_run(tmp_path):
+    """[outputs] interval: temperature rows at every multiple of it from the stepper's dense
+    output; the chunk-end rows are those of the run without it (bit for bit), the rows come
+    in time order, the file holds them too, and the interval round-trips through TOML."""
+    text = BASE + """
+[schedule]
+speed = "1800 rpm"
+radial_load = "1 kN"
+step_duration = "3 min"
+axial_load_steps = { start = "4 kN", stop = "8 kN", step = "4 kN" }
+[outputs]
+want = ["temperatures", "energy"]
+"""
+    plain = Simulation(loads_scene(text), progress=False).run()
+    scene = loads_scene(text.replace('want = ["temperatures", "energy"]',
+                                     'want = ["temperatures", "energy"]\ninterval = "20 s"'))
+    assert scene.outputs.interval == 20.0
+    assert loads_scene(scene.to_toml()).outputs.interval == 20.0
+    dense = Simulation(scene, progress=False).run(out_dir=tmp_path)
+    t0, t1 = plain.tables["temperatures"], dense.tables["temperatures"]
+    times = t1["time [s]"].to_numpy()
+    assert np.all(np.diff(times) > 0)
+    expected = np.union1d(t0["time [s]"].to_numpy(), np.arange(0.0, 360.0 + 1e-9, 20.0))
+    np.testing.assert_allclose(times, expected, rtol=0, atol=1e-9)
+    ends = t1[t1["time [s]"].isin(t0["time [s]"])]
+    assert ends.drop(columns=["time [min]"]).to_numpy().tolist() == \
+        t0.drop(columns=["time [min]"]).to_numpy().tolist()
+    col = "de.oil [degC]"
+    # interior rows lie on the curve: between the neighbouring rows' range, and the first
+    # 20 s of the oil's fast rise after the start are resolved (not a straight 90-s chord)
+    assert t1[col].iloc[1] > t0[col].iloc[0] + 0.5 * (t0[col].iloc[1] - t0[col].iloc[0])
+    written = np.loadtxt(tmp_path / "temperatures.csv", delimiter=",", skiprows=1,
+                         usecols=0)
+    np.testing.assert_allclose(written, times)
+    # the energy rows stay per chunk
+    assert len(dense.tables["energy"]) == len(plain.tables["energy"])
+
+
+def test_stepper_samples_equal_the_dense_output_of_integrate():
+    """TransientStepper.advance(sample_times=...) gives the temperatures integrate() gives
+    at the same times for the same heat (one segment, same method and tolerances)."""
+    from thermobearing.network import TransientStepper, integrate
+    from thermobearing.network.problems import bearing_network
+
+    net = bearing_network(4)
+    n = len(net.state_nodes)
+
+    def heat(t, T):
+        return np.full(n, 80.0) * (1.0 + 3e-3 * (T - 308.15))
+
+    ts = np.linspace(5.0, 295.0, 30)
+    st = TransientStepper(net, method="exprb43", rtol=1e-7, atol=1e-5)
+    out = st.advance(0.0, np.full(n, 308.15), 300.0, heat, sample_times=ts)
+    ref = integrate(net, heat, (0.0, 300.0), 308.15, method="exprb43", rtol=1e-7,
+                    atol=1e-5)
+    np.testing.assert_allclose(out.samples, ref.sample(ts), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(out.temperatures, ref.temperatures[-1], rtol=0, atol=1e-12)
+    with pytest.raises(InputError, match="sample_times"):
+        st.advance(300.0, out.temperatures, 60.0, heat, sample_times=[10.0])

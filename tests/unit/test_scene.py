@@ -84,3 +84,14 @@ def test_steps_and_file(tmp_path):
                             'axial_load = "4 kN"}]')
     sc = loads_scene(steps)
     assert sc.schedule.steps[1].axial_load == 4000.0 and sc.schedule.steps[0].axial_load == 2000.0
+
+
+@pytest.mark.parametrize("bad", ['"0 s"', '"-5 s"', '"5 kg"', '"soon"'])
+def test_output_interval_must_be_a_positive_time(bad):
+    import tomllib
+
+    from thermobearing.errors import InputError
+    from thermobearing.scene import Outputs
+
+    with pytest.raises(InputError, match="outputs.interval"):
+        Outputs.from_dict(tomllib.loads(f"interval = {bad}"))

@@ -764,6 +764,9 @@ class StepOutcome:
     temperatures: np.ndarray
     audit: EnergyAudit
     steps: int
+    #: temperatures [K] at the requested sample times, shape (len(times), n), from the
+    #: stepper's own dense output (or its Hermite interpolation); None if none were asked
+    samples: np.ndarray | None = None
 
 
 class TransientStepper:
@@ -788,23 +791,40 @@ class TransientStepper:
     def advance(self, t: float, T, dt: float, heat: HeatFn | None,
                 heat_jacobian: Callable | None = None,
                 heat_time_dependent: bool = True,
-                heat_with_jacobian: Callable | None = None) -> StepOutcome:
+                heat_with_jacobian: Callable | None = None,
+                sample_times: Sequence[float] | None = None) -> StepOutcome:
         """Advance from ``t`` to ``t + dt`` [s] from state ``T`` [K] with ``heat``
-        (``heat_time_dependent`` and ``heat_with_jacobian`` as in :func:`integrate`)."""
+        (``heat_time_dependent`` and ``heat_with_jacobian`` as in :func:`integrate`);
+        ``sample_times`` within [t, t + dt] [s]: the temperatures there are returned in
+        ``samples`` (the steps are recorded for it, at a small extra cost)."""
         if not math.isfinite(dt) or dt <= 0:
             raise InputError("dt", dt, "a step > 0 s")
+        ts = None if sample_times is None else np.asarray(sample_times, dtype=float)
+        if ts is not None and ts.size and not (
+                np.all(np.isfinite(ts)) and ts.min() >= t - 1e-9 * max(1.0, abs(t))
+                and ts.max() <= t + dt + 1e-9 * max(1.0, abs(t + dt))):
+            raise InputError("sample_times", (float(ts.min()), float(ts.max())),
+                             f"times within [{t}, {t + dt}] s")
         y = _initial_vector(self.network, T)
         heat, constant = _as_heat_fn(self.network, heat)
         if constant:
             heat_with_jacobian = None
         heat_jacobian = _jacobian_of(heat_jacobian, heat_with_jacobian)
-        rec = _Recorder(active=False)
+        sampled = ts is not None and ts.size > 0
+        rec = _Recorder(active=sampled)
         steps0 = self._driver.core.stats["steps"]
         y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian, rec,
                                   bool(heat_time_dependent) and not constant,
                                   heat_with_jacobian)
+        samples = None
+        if sampled:
+            part = TransientResult(
+                names=self.network.state_nodes, boundary={}, times=np.array(rec.t),
+                temperatures=np.array(rec.y), rates=np.array(rec.r), audit=rec.audit(),
+                dense=tuple(rec.pieces) if len(rec.pieces) == len(rec.rows) else ())
+            samples = part.sample(np.clip(ts, float(t), float(t) + float(dt)))
         return StepOutcome(float(t) + float(dt), y1, rec.audit(),
-                           self._driver.core.stats["steps"] - steps0)
+                           self._driver.core.stats["steps"] - steps0, samples)
 
 
 # the fixed-step comparison steppers (registered on import) and the steady solve live in
