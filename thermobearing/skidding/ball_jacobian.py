@@ -51,7 +51,7 @@ import numba
 import numpy as np
 
 from ..contact_traction import _peak_pressure, _table_viscosity, refresh_stale_caches
-from ..traction import EYRING
+from ..traction import EYRING, _log_pos
 from .ball_residual import (
     A_INNER,
     A_RY,
@@ -106,7 +106,7 @@ N_DIR = 8
 _RX_STEP = 1e-7            # relative forward-difference step in R_x (Hertz constants, film)
 
 
-@numba.njit(cache=True, inline="always")
+@numba.njit(cache=True, inline="always", error_model="numpy")
 def _eyring_smooth_grad(lam: float, tau0: float, inv_tau0: float, s: float, p: float,
                         rate: float) -> tuple[float, float, float, float]:
     """The Eyring law with the smooth cap (:func:`thermobearing.traction._eyring_smooth_node`
@@ -115,20 +115,24 @@ def _eyring_smooth_grad(lam: float, tau0: float, inv_tau0: float, s: float, p: f
     eta/h [Pa s/m]. tau_E = tau0 asinh(rate s / tau0), tau_L = Lambda p,
     tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2): dtau/dtau_E = tau_L^3 / (..)^(3/2),
     dtau/dtau_L = tau_E^3 / (..)^(3/2), dtau_E/ds = rate / sqrt(1 + x^2),
-    dtau_E/drate = s / sqrt(1 + x^2), x = rate s / tau0 (seed paper 002 eqs. 11-14)."""
+    dtau_E/drate = s / sqrt(1 + x^2), x = rate s / tau0 (seed paper 002 eqs. 11-14).
+    Branch-free (session 8: the node loop of :func:`_contact_traction_jac` vectorises);
+    log1p(y) = log(u) + (y - (u - 1)) / u, u = 1 + y, with the log of
+    :func:`thermobearing.traction._log_pos`."""
     x = rate * s * inv_tau0
     x2 = x * x
     sq = math.sqrt(1.0 + x2)
     # asinh(x) = log1p(x + x^2 / (1 + sqrt(1 + x^2))) (x >= 0), reusing the square root
-    tau_e = tau0 * math.log1p(x + x2 / (1.0 + sq))
+    y = x + x2 / (1.0 + sq)
+    u = 1.0 + y
+    tau_e = tau0 * (_log_pos(u) + (y - (u - 1.0)) / u)
     tau_l = lam * p
-    if tau_l > 0.0:
-        inv = 1.0 / math.sqrt(tau_l * tau_l + tau_e * tau_e)
-        tau = tau_e * tau_l * inv
-        inv3 = inv * inv * inv
-        d_e = tau_l * tau_l * tau_l * inv3
-        d_l = tau_e * tau_e * tau_e * inv3
-    else:
+    inv = 1.0 / math.sqrt(tau_l * tau_l + tau_e * tau_e)
+    tau = tau_e * tau_l * inv
+    inv3 = inv * inv * inv
+    d_e = tau_l * tau_l * tau_l * inv3
+    d_l = tau_e * tau_e * tau_e * inv3
+    if not tau_l > 0.0:
         tau = tau_e * 1e-150
         d_e = 1e-150
         d_l = 0.0
@@ -136,7 +140,7 @@ def _eyring_smooth_grad(lam: float, tau0: float, inv_tau0: float, s: float, p: f
     return tau, d_e * rate * inv_sq, d_l * lam, d_e * s * inv_sq
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, error_model="numpy")
 def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab: np.ndarray,
                           inv_dp: float, q: np.ndarray, a: np.ndarray, b: np.ndarray,
                           vy: np.ndarray, vx: np.ndarray, wz: np.ndarray, wx: np.ndarray,
@@ -163,6 +167,11 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
     nk = xg.size
     rate_u = np.empty(nu)
     lam_u = np.empty(nu)
+    rate_k, lamk_k = np.empty(nk), np.empty(nk)
+    px_k, py_k = np.empty(nk), np.empty(nk)
+    kxx_k, kyy_k, kxy_k = np.empty(nk), np.empty(nk), np.empty(nk)
+    exg_k, eyg_k, exh_k = np.empty(nk), np.empty(nk), np.empty(nk)
+    eyh_k, ext_k, eyt_k = np.empty(nk), np.empty(nk), np.empty(nk)
     last = ln_tab.size - 1
     for c in range(q.size):
         for i in range(5):
@@ -188,6 +197,40 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
             lam_u[u] = slope_tab[iu] * inv_dp
         vxc, vyc = vx[c], vy[c]
         curv_a = curv[c] * ac
+        for k in range(nk):
+            rate_k[k] = rate_u[pidx[k]]
+            lamk_k[k] = lam_u[pidx[k]]
+        # per node, vectorised (no sums here): slide speed, the law and its derivatives
+        for k in range(nk):
+            xk, yk = xg[k], yg[k]
+            xk2 = xk * xk
+            dvx = vxc + cx2 * xk2 - cy * yk
+            dvy = vyc + cx * xk - cy2 * xk2
+            s = math.sqrt(dvx * dvx + dvy * dvy)
+            pres = p0 * pshape[k]
+            rate = rate_k[k]
+            w = ab * area_w[k]
+            tau, ts, tp, trr = _eyring_smooth_grad(lam, tau0, inv_tau0, s, pres, rate)
+            inv_s = 1.0 / s
+            ex, ey = dvx * inv_s, dvy * inv_s
+            ratio = tau * inv_s
+            ps = w * ratio
+            if not s > 0.0:
+                ex = 0.0
+                ey = 0.0
+                ratio = ts
+                ps = 0.0
+            px_k[k] = ps * dvx
+            py_k[k] = ps * dvy
+            kxx_k[k] = w * (ts * ex * ex + ratio * (1.0 - ex * ex))
+            kyy_k[k] = w * (ts * ey * ey + ratio * (1.0 - ey * ey))
+            kxy_k[k] = w * (ts - ratio) * ex * ey
+            gp = w * pres * (tp + trr * rate * lamk_k[k])
+            th = w * trr * rate
+            tw = tau * w
+            exg_k[k], eyg_k[k] = ex * gp, ey * gp
+            exh_k[k], eyh_k[k] = ex * th, ey * th
+            ext_k[k], eyt_k[k] = ex * tw, ey * tw
         sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = 0.0
         # kxx sums over 1, x2, y, x4, x2y, y2
         xx_1 = xx_x2 = xx_y = xx_x4 = xx_x2y = xx_y2 = 0.0
@@ -202,32 +245,14 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
         for k in range(nk):
             xk, yk = xg[k], yg[k]
             xk2 = xk * xk
-            dvx = vxc + cx2 * xk2 - cy * yk
-            dvy = vyc + cx * xk - cy2 * xk2
-            s = math.sqrt(dvx * dvx + dvy * dvy)
-            pres = p0 * pshape[k]
-            rate = rate_u[pidx[k]]
-            w = ab * area_w[k]
-            tau, ts, tp, trr = _eyring_smooth_grad(lam, tau0, inv_tau0, s, pres, rate)
-            if s > 0.0:
-                inv_s = 1.0 / s
-                ex, ey = dvx * inv_s, dvy * inv_s
-                ratio = tau * inv_s
-                ps = w * ratio
-            else:
-                ex = ey = 0.0
-                ratio = ts
-                ps = 0.0
-            px, py = ps * dvx, ps * dvy
+            px, py = px_k[k], py_k[k]
+            kxx, kyy, kxy = kxx_k[k], kyy_k[k], kxy_k[k]
             sx0 += px
             sx1 += px * xk2
             sx2 += px * yk
             sy0 += py
             sy1 += py * xk2
             sy2 += py * xk
-            kxx = w * (ts * ex * ex + ratio * (1.0 - ex * ex))
-            kyy = w * (ts * ey * ey + ratio * (1.0 - ey * ey))
-            kxy = w * (ts - ratio) * ex * ey
             xk3 = xk2 * xk
             xk4 = xk2 * xk2
             xy = xk * yk
@@ -251,12 +276,9 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
             yy_x2 += kyy * xk2
             yy_x3 += kyy * xk3
             yy_x4 += kyy * xk4
-            gp = w * pres * (tp + trr * rate * lam_u[pidx[k]])
-            th = w * trr * rate
-            tw = tau * w
-            exg, eyg = ex * gp, ey * gp
-            exh, eyh = ex * th, ey * th
-            ext, eyt = ex * tw, ey * tw
+            exg, eyg = exg_k[k], eyg_k[k]
+            exh, eyh = exh_k[k], eyh_k[k]
+            ext, eyt = ext_k[k], eyt_k[k]
             pxg_1 += exg
             pxg_x2 += exg * xk2
             pxg_y += exg * yk
