@@ -1,4 +1,6 @@
-"""``thermobearing validate [CASE ...] [--json]``: run the validation cases against the papers."""
+"""``thermobearing validate [CASE ...] [--json] [--report FILE]``: run the validation cases
+against the papers (``--report`` also writes them as a Markdown page,
+:mod:`thermobearing.validation.report`)."""
 
 from __future__ import annotations
 
@@ -24,6 +26,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "case is named)")
     parser.add_argument("--quiet", action="store_true",
                         help="no progress lines on stderr")
+    parser.add_argument("--report", metavar="FILE", default=None,
+                        help="also write the records as a Markdown page (one section per "
+                             "case, failing rows first, links to each case's SOURCE.md)")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -46,5 +51,18 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(validation.records_as_dicts(records), indent=1))
     else:
         print(validation.format_table(records))
+    if args.report:
+        from pathlib import Path
+
+        from .. import __version__
+        from ..validation.report import markdown_report
+
+        path = Path(args.report)
+        command = "thermobearing validate " + " ".join(
+            [*args.cases, *(["--slow"] if args.slow else [])])
+        path.write_text(markdown_report(records, link_base=path.resolve().parent,
+                                        version=__version__, command=command.strip()),
+                        encoding="utf-8")
+        print(f"report written to {path}", file=sys.stderr)
     failed = [r for r in records if r.gated and not r.passed]
     return 1 if failed else 0

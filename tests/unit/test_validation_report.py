@@ -1,0 +1,47 @@
+"""The Markdown validation report (``thermobearing validate --report FILE``)."""
+
+from __future__ import annotations
+
+import math
+
+from thermobearing.validation import Record
+from thermobearing.validation.report import markdown_report
+
+
+def _records():
+    return [
+        Record("case_a", "film", "um", 0.514, 0.52, 0.0117, "±20 %", True, True),
+        Record("case_a", "trend", "-", 1.0, -1.0, -2.0, "[0.5, 1.5]", False, True,
+               note="sign reversed, see SOURCE.md"),
+        Record("case_b", "extra", "W", 10.0, math.nan, math.nan, "report", False, False),
+    ]
+
+
+def test_report_lists_failures_first_with_links_and_every_row(tmp_path):
+    cases = tmp_path / "cases"
+    (cases / "case_a").mkdir(parents=True)
+    (cases / "case_a" / "SOURCE.md").write_text(
+        "# case_a\n\n**Source.** Paper X, eq. 3.\nSecond line.\n\n## Why\nbecause of Y\n",
+        encoding="utf-8")
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    text = markdown_report(_records(), folder=cases, link_base=out_dir, version="9.9",
+                           command="thermobearing validate")
+    assert "3 rows: 1 of 2 gated rows pass, 1 fail; 1 `report` rows" in text
+    fail_section = text.split("## Rows that miss the asked accuracy")[1].split("## Cases")[0]
+    assert "trend" in fail_section and "film" not in fail_section
+    assert "[case_a](../cases/case_a/SOURCE.md)" in text
+    assert "**Source.** Paper X, eq. 3. Second line." in text  # first paragraph only
+    assert "because of Y" not in text
+    assert "| film | um | 0.514 | 0.52 | +1.17 % | ±20 % | PASS |" in text
+    assert "| trend | - | 1 | -1 | -200.00 % | [0.5, 1.5] | **FAIL** |" in text
+    assert "| extra | W | 10 | - | - | report | report |" in text
+    assert "Note: sign reversed, see SOURCE.md" in text
+    assert "thermobearing 9.9" in text
+
+
+def test_report_without_failures_has_no_failure_section(tmp_path):
+    recs = [r for r in _records() if r.passed or not r.gated]
+    text = markdown_report(recs, folder=tmp_path)
+    assert "Rows that miss" not in text
+    assert "1 of 1 gated rows pass, 0 fail" in text
