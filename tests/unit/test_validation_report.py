@@ -45,3 +45,16 @@ def test_report_without_failures_has_no_failure_section(tmp_path):
     text = markdown_report(recs, folder=tmp_path)
     assert "Rows that miss" not in text
     assert "1 of 1 gated rows pass, 0 fail" in text
+
+
+def test_validate_command_writes_the_report(tmp_path, capsys):
+    from thermobearing.cli import main
+
+    out = tmp_path / "REPORT.md"
+    code = main(["validate", "paper002_cage_frequency_arithmetic", "--quiet",
+                 "--report", str(out)])
+    assert code == 0
+    text = out.read_text(encoding="utf-8")
+    assert "### paper002_cage_frequency_arithmetic" in text
+    assert "`thermobearing validate paper002_cage_frequency_arithmetic`" in text
+    assert "| PASS |" in text and "**FAIL**" not in text
