@@ -68,7 +68,6 @@ from .ball_residual import (
     C_TS,
     C_VEPS,
     G_A,
-    G_ALPHA,
     G_APPROACH,
     G_B,
     G_CURV,
@@ -399,7 +398,7 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
             dr_[D_BR] = 1.0
             dr_[D_DR] = -inner * cpsi[j]
             L, na, nr = geo[G_L, n], geo[G_NA, n], geo[G_NR, n]
-            approach, alpha, rx = geo[G_APPROACH, n], geo[G_ALPHA, n], geo[G_RX, n]
+            approach, rx = geo[G_APPROACH, n], geo[G_RX, n]
             Q, K = geo[G_Q, n], geo[G_K, n]
             a_e, b_e = geo[G_A, n], geo[G_B, n]
             pen = approach if approach > 0.0 else 0.0
@@ -443,7 +442,8 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
                     dpen = dL if approach > 0.0 else 0.0
                     sg = 1.0 if nr >= 0.0 else -1.0
                     dalpha = (abs(nr) * dna - na * sg * dnr) / (na * na + nr * nr)
-                    drx = 0.5 * D * arc[A_SIGN, k] * (D / dm) * math.sin(alpha) * dalpha
+                    # sin(alpha) = n_a (unit normal; the residual takes cos(alpha) = |n_r|)
+                    drx = 0.5 * D * arc[A_SIGN, k] * (D / dm) * na * dalpha
                     dK = dK_rx * drx
                     dQ = pen ** 1.5 * dK + 1.5 * K * math.sqrt(pen) * dpen
                     if Q > 0.0:

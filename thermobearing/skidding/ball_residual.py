@@ -317,8 +317,8 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 L = math.sqrt(dx * dx + dr * dr)            # (no overflow: lengths ~mm)
                 na, nr = dx / L, dr / L                      # arc centre -> ball centre
                 approach = L - arc[A_FREE, k]
-                alpha = math.atan2(na, abs(nr))
-                # cos(alpha) = |n_r| / |n| = |n_r| (n is a unit vector; to round-off)
+                # contact angle alpha = atan2(n_a, |n_r|) (row G_ALPHA: by _contact_angles,
+                # for the results only); cos(alpha) = |n_r| (n is a unit vector)
                 rx = 0.5 * D * (1.0 - arc[A_SIGN, k] * (D * abs(nr) / dm))
                 ry[n] = arc[A_RY, k]
                 pen = max(approach, 0.0)
@@ -335,7 +335,6 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 geo[G_NA, n] = na
                 geo[G_NR, n] = nr
                 geo[G_L, n] = L
-                geo[G_ALPHA, n] = alpha
                 geo[G_RX, n] = rx
                 geo[G_PA, n] = pa
                 geo[G_PR, n] = pr
@@ -348,6 +347,16 @@ def _ball_geometry(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarr
                 geo[G_CURV, n] = arc[A_CURV, k]
     _hertz_rows(geo, ry, ep)
     return ry
+
+
+@numba.njit(cache=True)
+def _contact_angles(geo: np.ndarray) -> None:
+    """Row G_ALPHA of ``geo`` (N_GEO, n): the contact angle alpha = atan2(n_a, |n_r|) [rad]
+    of every contact (the angle of the arc centre -> ball centre line to the radial plane;
+    ``loads.arc_contacts``). Not part of the residual (whose R_x uses cos(alpha) = |n_r|):
+    filled for the results and details only (session 8: 64 atan2 less per evaluation)."""
+    for n in range(geo.shape[1]):
+        geo[G_ALPHA, n] = math.atan2(geo[G_NA, n], abs(geo[G_NR, n]))
 
 
 @numba.njit(cache=True)
@@ -564,7 +573,8 @@ def _refresh_caches() -> None:
                                            _ball_forces, _ball_residual_fused, _residual_one,
                                            _same_state, _residual_norm_nb,
                                            _energy_audit, _hd1977_central_vec, _film_rows,
-                                           _hertz_rows, _hb_point, _ellipse_vec),
+                                           _hertz_rows, _hb_point, _ellipse_vec,
+                                           _contact_angles),
                          (contact_traction, traction, hertz, film))
 
 
@@ -820,7 +830,9 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         from (:meth:`_details`); the result building reads them without the details dict."""
         R, Gc, G0, _ = self._evaluate_one(np.asarray(X, dtype=float),
                                           np.asarray(G, dtype=float), False)
-        return R, Gc, G0, self._last[5]
+        fields = self._last[5]
+        _contact_angles(fields[0].reshape(N_GEO, -1))
+        return R, Gc, G0, fields
 
     def chord_kernel_args(self):
         """Arguments of the compiled residual :func:`_residual_one` after (X, G) and before
@@ -905,6 +917,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         wi = self.speed
         t_churn, t_guide, wg = self._cage_torques(float(G[2]))[:3]
         wc = float(G[2])
+        _contact_angles(geo.reshape(N_GEO, -1))
         approach, Q, na, nr = geo[G_APPROACH], geo[G_Q], geo[G_NA], geo[G_NR]
         cf = ContactField(approach, Q, na, nr, geo[G_L], geo[G_ALPHA], geo[G_K])
         ry = self._ry_zk
