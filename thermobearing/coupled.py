@@ -226,6 +226,12 @@ class Coupler:
         return rows
 
 
+def _wants_loss_table(scene: Any) -> bool:
+    """Whether the run must tabulate the losses per step (asked, or the report shows them)."""
+    want = scene.outputs.want
+    return "losses" in want or "report" in want
+
+
 def _sample_times(t: float, h: float, interval: float | None) -> np.ndarray | None:
     """Multiples of ``interval`` [s] strictly inside the chunk (t, t + h) (the chunk ends
     have their own rows), or None."""
@@ -298,6 +304,8 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                                max_step=solver.max_step)
     chunk = solver.chunk
     interval = scene.outputs.interval
+    # the loss table (one more evaluation of every source per step) only when it is output
+    want_losses = _wants_loss_table(scene)
     t = 0.0
     temp_rows = [_temperature_row(t, names, T)]
     if writer:
@@ -378,10 +386,11 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     writer.append("temperatures", [row])
                     writer.append("energy", [e_row])
                 bar.update(h)
-            rows = coupler.loss_rows(i, t, step, T)
-            loss_rows.extend(rows)
-            if writer:
-                writer.append("losses", rows)
+            if want_losses:
+                rows = coupler.loss_rows(i, t, step, T)
+                loss_rows.extend(rows)
+                if writer:
+                    writer.append("losses", rows)
     finally:
         bar.close()
     audit = EnergyAudit.concatenate(audits)
@@ -390,7 +399,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
              "relative_energy_imbalance": audit.relative_imbalance(),
              **{f"stepper_{k}": v for k, v in stepper.stats.items()}}
     tables = {"temperatures": pd.DataFrame(temp_rows), "kinematics": pd.DataFrame(kin_rows),
-              "losses": pd.DataFrame(loss_rows), "energy": pd.DataFrame(energy_rows)}
+              "energy": pd.DataFrame(energy_rows)}
+    if want_losses:
+        tables["losses"] = pd.DataFrame(loss_rows)
     return tables, stats
 
 
@@ -425,14 +436,18 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                              **kinematics_columns(b.last)})
         row = {"step": i, **_temperature_row(0.0, names, T)}
         temp_rows.append(row)
-        rows = coupler.loss_rows(i, 0.0, step, T)
+        rows = (coupler.loss_rows(i, 0.0, step, T) if _wants_loss_table(sim.scene)
+                else [])
         loss_rows.extend(rows)
         if writer:
             writer.append("steady_temperatures", [row])
             writer.append("kinematics", kin_rows[-len(sim.bearings):])
-            writer.append("losses", rows)
+            if rows:
+                writer.append("losses", rows)
     tables = {"steady_temperatures": pd.DataFrame(temp_rows),
-              "kinematics": pd.DataFrame(kin_rows), "losses": pd.DataFrame(loss_rows)}
+              "kinematics": pd.DataFrame(kin_rows)}
+    if _wants_loss_table(sim.scene):
+        tables["losses"] = pd.DataFrame(loss_rows)
     return tables, {"steps": len(sim.scene.schedule.steps),
                     "outer_iterations": outer_iterations}
 

@@ -419,3 +419,36 @@ def test_stepper_samples_equal_the_dense_output_of_integrate():
     np.testing.assert_allclose(out.temperatures, ref.temperatures[-1], rtol=0, atol=1e-12)
     with pytest.raises(InputError, match="sample_times"):
         st.advance(300.0, out.temperatures, 60.0, heat, sample_times=[10.0])
+
+
+def test_loss_table_only_when_an_output_needs_it(monkeypatch):
+    """The per-step loss table costs one evaluation of every source per step: it is made
+    when the scene wants losses or the report, not for a temperatures-only scene (whose
+    temperatures are the same)."""
+    sched = """
+[schedule]
+speed = "1800 rpm"
+radial_load = "1 kN"
+step_duration = "3 min"
+axial_load_steps = { start = "4 kN", stop = "8 kN", step = "4 kN" }
+[outputs]
+want = [%s]
+"""
+    calls = []
+    real = Simulation.evaluate_heat
+
+    def counted(self, *a, **k):
+        calls.append(bool(k.get("with_rows")))
+        return real(self, *a, **k)
+
+    monkeypatch.setattr(Simulation, "evaluate_heat", counted)
+    full = Simulation(loads_scene(BASE + sched % '"temperatures", "losses"'),
+                      progress=False).run()
+    n_full, rows_full = len(calls), sum(calls)
+    calls.clear()
+    lean = Simulation(loads_scene(BASE + sched % '"temperatures"'), progress=False).run()
+    assert "losses" in full.tables and "losses" not in lean.tables
+    assert rows_full > 0 and sum(calls) == 0 and len(calls) == n_full - rows_full
+    cols = [c for c in full.tables["temperatures"].columns if c.endswith("[degC]")]
+    np.testing.assert_array_equal(lean.tables["temperatures"][cols].to_numpy(),
+                                  full.tables["temperatures"][cols].to_numpy())
