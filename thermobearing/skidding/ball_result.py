@@ -239,13 +239,22 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
 
 
 def _kinematic_state(system: ball_residual_system, X, det, names, heat):
-    """The :class:`~thermobearing.state.KinematicState` of a converged solution."""
-    from ..state import ContactSet, KinematicState
+    """The :class:`~thermobearing.state.KinematicState` of a converged solution. Each contact
+    set carries the tractions the solver integrated (``ContactSet.traction``: the law, the
+    quadrature and a ``ContactTraction`` per ball, from the same kernel the raceway heat
+    source would call at these fields), so that source does not integrate them again."""
+    from ..contact_traction import ContactTraction
+    from ..state import ContactSet, KinematicState, PrecomputedTraction
 
     cf = det["cf"]
     Q = cf.load
+    md = system.models
+    tr = det["tr"]
     sets = []
     for k, name in enumerate(names):
+        pre = PrecomputedTraction(md.traction_law, md.n_major, md.n_minor, ContactTraction(
+            tr.transverse_force[:, k], tr.rolling_force[:, k], tr.moment_transverse[:, k],
+            tr.moment_rolling[:, k], tr.moment_normal[:, k], tr.heat[:, k]))
         sets.append(ContactSet(
             race=name, normal_load=Q[:, k], semi_major=det["a"][:, k], semi_minor=det["b"][:, k],
             max_pressure=det["p0"][:, k], contact_angle=np.abs(cf.contact_angle[:, k]),
@@ -254,8 +263,8 @@ def _kinematic_state(system: ball_residual_system, X, det, names, heat):
             roll_speed=det["Om_x"][:, k], tilt_speed=det["Om_y"][:, k],
             deformed_radius=system.rd[k],
             film_thickness=None if det["film"] is None else np.maximum(det["film"][:, k], 0.0),
-            temperature=system.models.temperature,
-            reduced_radius_x=det["rx"][:, k], reduced_radius_y=det["ry"][:, k]))
+            temperature=md.temperature,
+            reduced_radius_x=det["rx"][:, k], reduced_radius_y=det["ry"][:, k], traction=pre))
     wc = float(det["wc"])
     return KinematicState(
         inner_speed=system.speed, outer_speed=0.0, cage_speed=wc,

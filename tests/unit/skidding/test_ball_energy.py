@@ -64,3 +64,45 @@ def test_chord_polish_tightens_a_loose_converged_state(setup):
     # inside the 1e-8 either way, from 1.6e-5 before the step
     assert _identity(tight, w) < 5e-9
     assert tight.cage_speed_ratio == pytest.approx(r.cage_speed_ratio, rel=1e-10)
+
+
+def test_kinematic_state_carries_the_tractions_the_raceway_source_would_integrate():
+    # session 8: the solver's KinematicState hands its contact tractions to the raceway heat
+    # source (ContactSet.traction, lead's mechanism): they must be what that source computes
+    # when it integrates the same law and quadrature itself (tractions stripped), and equal
+    # the solver's own raceway heat
+    import numpy as np
+
+    from thermobearing.heat_sources import HeatContext, evaluate
+    from thermobearing.skidding import solve
+    from thermobearing.skidding.ball_models import BallParameters, heat_context_options
+    from thermobearing.state import OperatingPoint
+
+    w = 1800 * math.pi / 30
+    b = load_bearing("QJ1044")
+    lub = load_lubricant("ISO_VG46")
+    supply = OilSupply("jet", 33 / 60000, 318.15)
+    params = BallParameters()
+    r = solve(b, lub, w, 1000.0, 10e3, 318.15, supply=supply, params=params)
+    ks = r.kinematic_state
+    law = r.extra["traction_law"]
+    assert all(cs.traction is not None and cs.traction.matches(law, params.n_major,
+                                                                params.n_minor)
+               for cs in ks.contacts)
+    stripped = ks.with_(contacts=tuple(cs.with_() for cs in ks.contacts))
+    assert all(cs.traction is None for cs in stripped.contacts)
+    options = heat_context_options(b, supply, w, params)
+
+    def raceway(state):
+        ctx = HeatContext.isothermal(318.15, bearing=b, lubricant=lub, supply=supply,
+                                     operating=OperatingPoint(w, 0.0, 1000.0, 10e3),
+                                     kinematics=state, traction=law, options=options)
+        return evaluate(["raceway_traction"], ctx)[0]
+
+    carried, fresh = raceway(ks), raceway(stripped)
+    assert carried.total == pytest.approx(fresh.total, rel=1e-12)
+    assert carried.total == pytest.approx(r.heat["raceway"], rel=1e-12)
+    for key, value in fresh.components.items():
+        assert carried.components[key] == pytest.approx(value, rel=1e-12, abs=1e-12)
+    for cs in ks.contacts:
+        assert np.all(np.isfinite(cs.traction.result.heat))
