@@ -183,9 +183,9 @@ class HeatContext:
         if not opts or name not in opts:
             return default
         value = opts[name]
-        entry = HEAT_SOURCES._entries.get(source)
-        if entry is not None and name in entry.limits:
-            entry.check_parameter(name, value, f"options[{source}].{name}")
+        if source in HEAT_SOURCES:
+            HEAT_SOURCES.entry(source).check_parameter(name, value,
+                                                       f"options[{source}].{name}")
         return value
 
 
