@@ -113,28 +113,47 @@ class _Linear:
     def __post_init__(self) -> None:
         # the read columns (H is zero elsewhere): the model is evaluated hundreds of times
         # per run by the stepper, so the curvature term loops over these few columns only
-        self._cols: tuple[int, ...] = (() if self.H is None else
-                                       tuple(int(j) for j in np.flatnonzero(self.H.any(axis=0))))
+        # (scalar loops: cheaper than numpy's fancy indexing for a handful of columns)
+        self._cols: tuple[tuple[int, np.ndarray], ...] = (
+            () if self.H is None else
+            tuple((int(j), self.H[:, j].copy()) for j in np.flatnonzero(self.H.any(axis=0))))
 
     def heat(self, t: float, T: np.ndarray) -> np.ndarray:
+        """q(T) [W] at state nodes T [K] (the chunk model does not depend on time)."""
         d = T - self.T0
         q = self.q0 + self.J @ d
         r = self.reach
-        for j in self._cols:
+        for j, h in self._cols:
             dj = float(d[j])
             c = r if dj > r else -r if dj < -r else dj
-            q += (c * dj - 0.5 * c * c) * self.H[:, j]
+            q += (c * dj - 0.5 * c * c) * h
         return q
 
     def jac(self, t: float, T: np.ndarray) -> np.ndarray:
+        """dq/dT [W/K] at T [K]."""
         if not self._cols:
             return self.J
         out = self.J.copy()
         r = self.reach
-        for j in self._cols:
+        for j, h in self._cols:
             dj = float(T[j] - self.T0[j])
-            out[:, j] += (r if dj > r else -r if dj < -r else dj) * self.H[:, j]
+            out[:, j] += (r if dj > r else -r if dj < -r else dj) * h
         return out
+
+    def heat_and_jac(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(q [W], dq/dT [W/K]) at T [K] in one pass (the steppers' heat_with_jacobian)."""
+        d = T - self.T0
+        q = self.q0 + self.J @ d
+        if not self._cols:
+            return q, self.J
+        out = self.J.copy()
+        r = self.reach
+        for j, h in self._cols:
+            dj = float(d[j])
+            c = r if dj > r else -r if dj < -r else dj
+            q += (c * dj - 0.5 * c * c) * h
+            out[:, j] += c * h
+        return q, out
 
     def moved(self, q: np.ndarray, T: np.ndarray) -> _Linear:
         """The same model re-centred at T with the exact heat q there (a later chunk on
@@ -346,7 +365,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 last_kin = kin_id
                 samples = _sample_times(t, h, interval)
                 try:
-                    out = stepper.advance(t, T, h, lin.heat, lin.jac, sample_times=samples)
+                    out = stepper.advance(t, T, h, lin.heat, heat_time_dependent=False,
+                                          heat_with_jacobian=lin.heat_and_jac,
+                                          sample_times=samples)
                 except ConvergenceError as exc:
                     if solver.stepper != "exprb43" or fallback_used:
                         raise
@@ -358,7 +379,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                         "with tr_bdf2 (set [solver] stepper = \"tr_bdf2\" to use it throughout)")
                     stepper = TransientStepper(net, method="tr_bdf2", rtol=solver.rtol,
                                                atol=solver.atol, max_step=solver.max_step)
-                    out = stepper.advance(t, T, h, lin.heat, lin.jac, sample_times=samples)
+                    out = stepper.advance(t, T, h, lin.heat, heat_time_dependent=False,
+                                          heat_with_jacobian=lin.heat_and_jac,
+                                          sample_times=samples)
                 audits.append(out.audit)
                 if out.samples is not None:
                     rows_in = [_temperature_row(ts, names, Ts)

@@ -35,8 +35,9 @@ The compiled kernels are in :mod:`.exp_kernels`; this module holds the Python se
 Applies when the network is dense (<= ``assemble.DENSE_LIMIT`` nodes), has no
 zero-capacity nodes and the steps are adaptive; the general path in :mod:`.exponential`
 handles the rest. Temperature-dependent conductances (e.g. air convection) are assembled
-at each step start and held over the step, exactly as the general path does. Units: times [s],
-temperatures [K], heat [W], conductances [W/K], capacities [J/K], energies [J].
+at each step start, held in the linear part over the step, and their drift enters the
+stage remainders, exactly as the general path does (:func:`.exponential._drift`). Units:
+times [s], temperatures [K], heat [W], conductances [W/K], capacities [J/K], energies [J].
 """
 
 from __future__ import annotations
@@ -54,7 +55,7 @@ from .exp_kernels import (  # noqa: F401  (_jacobi_eigh: re-exported for tests a
     _ws_stage3,
     _ws_start_sym,
 )
-from .exponential import _nb_scaled_jacobian, diagonalise_or_refuse
+from .exponential import _drift, _drift_booking, _nb_scaled_jacobian, diagonalise_or_refuse
 from .steppers import _NewtonFailure
 
 
@@ -198,9 +199,9 @@ def _flows(sys_, n: int) -> tuple[np.ndarray, np.ndarray]:
     """The energy audit's linear forms of an assembled system: the heat rates to the
     boundaries and to the streams are sum G_b (T_i - T_b) = flow[0] T - flow0[0] and
     sum W (T_last - T_in) = flow[1] T - flow0[1] [W]."""
-    flow = np.zeros((2, n))
-    np.add.at(flow[0], sys_.bnd_index, sys_.bnd_G)
-    np.add.at(flow[1], sys_.str_last, sys_.str_W)
+    flow = np.empty((2, n))
+    flow[0] = np.bincount(sys_.bnd_index, weights=sys_.bnd_G, minlength=n)
+    flow[1] = np.bincount(sys_.str_last, weights=sys_.str_W, minlength=n)
     flow0 = np.array([float(sys_.bnd_G @ sys_.bnd_T), float(sys_.str_W @ sys_.str_Tin)])
     return flow, flow0
 
@@ -278,7 +279,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
     core.set_heat(heat, heat_jacobian)
     n = core.n
     # temperature-dependent conductances: K(T) and s(T) are assembled at each step start
-    # and held over the step, as the generic driver does (core.update_system)
+    # and held in the linear part over the step, as the generic driver does
+    # (core.update_system); their drift enters the stage remainders (_drift)
     tdep = core.asm.temperature_dependent
     if tdep:
         core.update_system(y0)
@@ -289,7 +291,6 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
     if ctx is None:
         ctx = driver.fast_info = _Context.of(driver.asm, sys_, C)
     sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
-    rk = zeros
     if heat is not None and heat_with_jacobian is None and heat_jacobian is None \
             and core.jacobian_mode not in ("none", "fd", "fd_diagonal"):
         from ..errors import InputError
@@ -415,6 +416,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                         q2 = heat(tq if tq < t1 else t_left, U2)
                         if type(q2) is not np.ndarray or q2.shape != shp:
                             q2 = net.heat_vector(q2)
+                    if tdep:  # the conductances' drift enters the stage remainder D2
+                        q2, db2 = _drift(driver.asm, sys_, U2, q2)
                     U3 = _ws_stage3(y, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw)
                     if heat is not None:
                         tq = t + h
@@ -422,6 +425,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                         if type(q3) is not np.ndarray or q3.shape != shp:
                             q3 = net.heat_vector(q3)
                         n_heat += 2
+                    if tdep:  # ... and D3
+                        q3, db3 = _drift(driver.asm, sys_, U3, q3)
                     if store is not None:
                         j = store.count
                         if j == len(s_t0):  # full (or first use): grow, refresh the views
@@ -430,15 +435,13 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             s_t0, s_h, s_y0 = store.t0, store.h, store.y0
                     else:
                         j = -1
-                    if tdep:  # the conductances' drift over the step (see _fk_finish)
-                        sys3 = driver.asm.system(U3)
-                        rk = (sys3.s - sys3.K @ U3) - (s - K @ U3)
-                        drift_b = sys3.to_boundaries(U3) - sys_.to_boundaries(U3)
                     y1, err, gen, to_b, to_s, stored = _ws_finish(
                         y, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, rk, tdep)
-                    if tdep:
-                        to_b += 0.5 * h * drift_b
+                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
+                    if tdep:  # book the drift's share of the remainder to the boundaries
+                        yb = _drift_booking(h, db2, db3)
+                        gen += yb
+                        to_b += yb
                     if not math.isfinite(err):
                         raise _NewtonFailure(math.inf, "non-finite exponential step")
                 except _NewtonFailure as exc:

@@ -189,7 +189,7 @@ def _fk_stage3(lam, V, W, JqM, y0, wf, c1, td, h, U2, q2, q0):  # pragma: no cov
 
 @numba.njit(cache=True)
 def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol, rtol,
-               K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, rk, has_rk
+               K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t
                ):  # pragma: no cover - compiled
     """Step completion: (y_{n+1} [K], scaled error, generated, to_boundaries, to_streams,
     stored [J], rate at the step end from the step's own solution [K/s]).
@@ -204,11 +204,9 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
     flow[1] y_bar - flow0[1]) and, when ``j >= 0``, the dense-output row j of the store
     (step start t [s], h, y_n and the spectral data).
 
-    ``rk`` (``has_rk``): the drift -(K(U3) - K_n) U3 + s(U3) - s_n [W] of temperature-
-    dependent conductances over the step, applied as a forcing growing linearly over the
-    step (with c_1: m_1 = W (c_1 + rk)) and its own response V h phi2 W rk added to the
-    error estimate, as ``exponential._nb_finish`` does; the generated heat does not
-    include it (the caller books its integral, -h drift_b / 2, to the boundaries).
+    Temperature-dependent conductances: the caller adds their drift to q2 and q3
+    (``exp_fast._drift``), so it is part of D2 and D3, and moves its share of the
+    generated heat to the boundaries (``exp_fast._drift_booking``).
     """
     n = y0.shape[0]
     D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
@@ -216,10 +214,6 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
     m2 = 8.0 * wd2 - wd3
     m3 = 2.0 * wd3 - 8.0 * wd2
     wc1 = _project(W, c1) if td else 0.0 * wf
-    wrk = 0.0 * wf
-    if has_rk:
-        wrk = _project(W, rk)
-        wc1 = wc1 + wrk
     ph1 = tab[:, 1]
     ph2 = tab[:, 2]
     ph3 = tab[:, 3]
@@ -231,12 +225,6 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
         e = abs(est[i]) / (atol + rtol * abs(y1[i]))
         if not e <= err:  # also catches NaN
             err = e
-    if has_rk:
-        ek = _back(V, np.zeros(n), h * ph2 * wrk)
-        for i in range(n):
-            e = abs(ek[i]) / (atol + rtol * abs(y1[i]))
-            if not e <= err:
-                err = e
     rate = np.zeros(n)
     if err > 1.0 or not math.isfinite(err):
         return y1, err, 0.0, 0.0, 0.0, 0.0, rate
@@ -254,8 +242,6 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
         if td:
             gen += h * c1[i] / 2.0
             v += c1[i]
-        if has_rk:
-            v += rk[i]
         for m in range(n):
             gen += JqM[i, m] * integral[m]
             v += (JqM[i, m] - K[i, m]) * (y1[m] - y0[m])
@@ -354,7 +340,7 @@ def _ws_stage3(y0, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw):  # pragma: no cover -
 
 @numba.njit(cache=True)
 def _ws_finish(y0, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-               s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, rk, has_rk
+               s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t
                ):  # pragma: no cover - compiled
     """_fk_finish on the workspaces: (y_{n+1} [K], err, generated, to_boundaries,
     to_streams, stored [J]); the step-end rate [K/s] goes to vw[5]."""
@@ -362,7 +348,7 @@ def _ws_finish(y0, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw,
     y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
         Bw[:, 0], Bw[:, 1:n + 1], Bw[:, n + 1:2 * n + 1], Jw, y0, vw[0], q0,
         Bw[:, 2 * n + 1], Bw[:, 2 * n + 2], tw, c1, td, h, U3, q3, vw[2], atol, rtol, K, C,
-        flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, rk, has_rk)
+        flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
     for i in range(n):
         vw[5, i] = rate[i]
     return y1, err, gen, to_b, to_s, stored
