@@ -24,6 +24,7 @@ from .geometry import (
     _diagonal_free_angle,
 )
 from .materials import Material, get_material
+from .toml_files import read_toml
 from .units import to_si
 
 #: field -> unit kind of the scalar fields of a bearing TOML (None: not a quantity).
@@ -206,7 +207,7 @@ def load_bearing(name_or_path: str | Path,
     elif not path.is_file():
         raise InputError("bearing path", text, "an existing TOML file")
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data = read_toml(path)
     except tomllib.TOMLDecodeError as exc:
         raise InputError("bearing file", str(path), f"valid TOML ({exc})") from None
     data.pop("notes", None)

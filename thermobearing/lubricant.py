@@ -53,6 +53,7 @@ from .lubricant_properties import (
     dowson_higginson_density,
     linear_expansion_density,
 )
+from .toml_files import read_toml
 from .units import to_si
 from .viscosity_laws import (  # the laws live there; re-exported here
     _VT_OUTPUT,
@@ -535,8 +536,7 @@ def load_lubricant(name_or_path: str | Path) -> Lubricant:
             raise UnknownNameError("lubricant preset", str(name_or_path), preset_names())
         path = candidate
     try:
-        with path.open("rb") as fh:
-            data = tomllib.load(fh)
+        data = read_toml(path)
     except tomllib.TOMLDecodeError as exc:
         raise InputError("lubricant file", str(path), f"valid TOML ({exc})") from None
     return lubricant_from_dict(data, where=f"lubricant[{path.stem}]")

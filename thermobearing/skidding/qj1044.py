@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -32,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ConvergenceError, InputError
+from ..toml_files import read_toml
 from .ball import solve_ball, theoretical_csr
 from .ball_models import BallParameters, default_ball_models
 
@@ -138,7 +138,7 @@ def load_calibration(path: str | Path | None = None) -> dict[str, Any]:
     if not p.exists():
         raise InputError("calibration file", str(p), "an existing QJ1044.calibration.toml "
                          "(run thermobearing.skidding.qj1044.calibrate)")
-    raw = tomllib.loads(p.read_text())
+    raw = read_toml(p)
     cal = raw["calibrated"]
     params = BallParameters(
         limiting_shear_coefficient=float(cal["limiting_shear_coefficient"]),
