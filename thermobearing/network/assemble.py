@@ -83,7 +83,10 @@ class Assembler:
     """Builds :class:`System` for a network; constant edges are assembled once.
 
     Temperature-dependent edges are re-evaluated by :meth:`system` at the temperatures
-    given (the steppers call it once per step: the conductances are lagged one step).
+    given. The steppers assemble K_n = K(y_n) once per step for their linear part (Newton
+    matrix, exponential) and add the conductances' change within the step,
+    :meth:`drift`, to the heat at every stage value, so the step integrates the exact
+    right-hand side s(T) - K(T) T + q(T).
     """
 
     def __init__(self, network: ThermalNetwork) -> None:
@@ -250,6 +253,20 @@ class Assembler:
         if not self.variable:
             self._constant_system = system
         return system
+
+    def drift(self, reference: System, T: np.ndarray) -> tuple[np.ndarray, float]:
+        """(d [W], db [W]): the change of the conductance terms at state T [K] from those
+        of ``reference`` (the system a step holds, assembled at its start):
+        d = (s(T) - K(T) T) - (s_ref - K_ref T) per node, and db = Q_b(T; K(T)) -
+        Q_b(T; K_ref), the change of the heat to the boundaries it stands for. sum(d) = -db:
+        an edge between two state nodes moves heat between them only, and the streams'
+        capacity rates do not depend on temperature. Zero without temperature-dependent
+        edges."""
+        if not self.variable:
+            return np.zeros(self.n), 0.0
+        sys_t = self.system(T)
+        d = (sys_t.s - sys_t.K @ T) - (reference.s - reference.K @ T)
+        return d, sys_t.to_boundaries(T) - reference.to_boundaries(T)
 
     def _temp(self, node: str, T: np.ndarray) -> float:
         i = self.index.get(node)

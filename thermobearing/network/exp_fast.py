@@ -36,7 +36,7 @@ Applies when the network is dense (<= ``assemble.DENSE_LIMIT`` nodes), has no
 zero-capacity nodes and the steps are adaptive; the general path in :mod:`.exponential`
 handles the rest. Temperature-dependent conductances (e.g. air convection) are assembled
 at each step start, held in the linear part over the step, and their drift enters the
-stage remainders, exactly as the general path does (:func:`.exponential._drift`). Units:
+stage remainders, exactly as the general path does (:meth:`.assemble.Assembler.drift`). Units:
 times [s], temperatures [K], heat [W], conductances [W/K], capacities [J/K], energies [J].
 """
 
@@ -55,7 +55,7 @@ from .exp_kernels import (  # noqa: F401  (_jacobi_eigh: re-exported for tests a
     _ws_stage3,
     _ws_start_sym,
 )
-from .exponential import _drift, _drift_booking, _nb_scaled_jacobian, diagonalise_or_refuse
+from .exponential import _drift_booking, _nb_scaled_jacobian, diagonalise_or_refuse
 from .steppers import _NewtonFailure
 
 
@@ -280,7 +280,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
     n = core.n
     # temperature-dependent conductances: K(T) and s(T) are assembled at each step start
     # and held in the linear part over the step, as the generic driver does
-    # (core.update_system); their drift enters the stage remainders (_drift)
+    # (core.update_system); their drift enters the stage remainders (Assembler.drift)
     tdep = core.asm.temperature_dependent
     if tdep:
         core.update_system(y0)
@@ -417,7 +417,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                         if type(q2) is not np.ndarray or q2.shape != shp:
                             q2 = net.heat_vector(q2)
                     if tdep:  # the conductances' drift enters the stage remainder D2
-                        q2, db2 = _drift(driver.asm, sys_, U2, q2)
+                        d2, db2 = driver.asm.drift(sys_, U2)
+                        q2 = q2 + d2
                     U3 = _ws_stage3(y, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw)
                     if heat is not None:
                         tq = t + h
@@ -426,7 +427,8 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             q3 = net.heat_vector(q3)
                         n_heat += 2
                     if tdep:  # ... and D3
-                        q3, db3 = _drift(driver.asm, sys_, U3, q3)
+                        d3, db3 = driver.asm.drift(sys_, U3)
+                        q3 = q3 + d3
                     if store is not None:
                         j = store.count
                         if j == len(s_t0):  # full (or first use): grow, refresh the views

@@ -205,7 +205,7 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
     (step start t [s], h, y_n and the spectral data).
 
     Temperature-dependent conductances: the caller adds their drift to q2 and q3
-    (``exp_fast._drift``), so it is part of D2 and D3, and moves its share of the
+    (``Assembler.drift``), so it is part of D2 and D3, and moves its share of the
     generated heat to the boundaries (``exp_fast._drift_booking``).
     """
     n = y0.shape[0]

@@ -131,6 +131,10 @@ class _Core:
         self.adaptive = True  # error-controlled steps (a rejected trial may stop early)
         self.stats = {"steps": 0, "rejected": 0, "newton_failures": 0, "heat_evaluations": 0,
                       "jacobians": 0, "factorizations": 0, "solves": 0}
+        self._no_drift = (np.zeros(self.n), 0.0)
+        #: (d [W], db [W]) of the last stage value Newton returned: the conductances' drift
+        #: from the step's system (Assembler.drift); zero without temperature-dependent edges
+        self.stage_drift = self._no_drift
 
     # ------------------------------------------------------------ evaluations
     def set_heat(self, heat: HeatFn | None, heat_jacobian: Callable | None) -> None:
@@ -152,6 +156,19 @@ class _Core:
         if not math.isfinite(r.sum()):
             raise _NewtonFailure(math.inf, f"heat source returned a non-finite value at t={t}")
         return r
+
+    def q_stage(self, t: float, T: np.ndarray) -> np.ndarray:
+        """The heat at a stage value T plus the drift of the temperature-dependent
+        conductances from the step's system ``sys`` (assembled at the step start):
+        q(t, T) + d(T), so that s - K T + q_stage = s(T) - K(T) T + q(T) exactly and the
+        implicit stages solve the true equation rather than one with lagged conductances.
+        Records (d, db) in :attr:`stage_drift` for the step's books."""
+        q = self.q(t, T)
+        if not self.asm.temperature_dependent:
+            self.stage_drift = self._no_drift
+            return q
+        self.stage_drift = self.asm.drift(self.sys, T)
+        return q + self.stage_drift[0]
 
     def f(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(f, q): f = -K T + s + q [W]."""
@@ -256,6 +273,9 @@ class _Core:
                q_start: np.ndarray | None = None,
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
         """Solve C (y - y0) - coef f(t, y) - rhs = 0; returns (y, f(y), q(y), iterations).
+        With temperature-dependent conductances q is :meth:`q_stage` (the heat plus the
+        conductances' drift from the step's system, recorded in :attr:`stage_drift`), so f
+        is the exact right-hand side; ``q_start`` must be of that kind too.
 
         Written as W0 y - coef q(t, y) = C y0 + coef s + rhs with W0 = C + coef K, solved by
         simplified Newton with the factorised W = C + coef (K - dq/dT). An update dy is
@@ -271,7 +291,7 @@ class _Core:
         W0 = self.W0
         c_stage = self.C * y0 + coef * self.sys.s + rhs
         tol = kappa * (self.atol + self.rtol * float(np.abs(y0).min()))
-        q = self.q(t, y) if q_start is None else q_start
+        q = self.q_stage(t, y) if q_start is None else q_start
         R = W0 @ y - coef * q - c_stage
         prev = 0.0
         eta = self.eta
@@ -281,7 +301,7 @@ class _Core:
             if not math.isfinite(norm):
                 raise _NewtonFailure(float(np.abs(R).max()), "non-finite Newton update")
             y = y - dy
-            q = self.q(t, y)
+            q = self.q_stage(t, y)
             if it > 0:
                 theta = norm / prev
                 if theta >= 0.9:
@@ -374,9 +394,11 @@ class TRBDF2(_Method):
         # q, which Newton removes)
         start_q = None if core.time_dependent else q0
         z, fg, qg, _ = core.newton(t + _GAMMA * h, y0, y0, coef, coef * f0, q_start=start_q)
+        _, dbg = core.stage_drift
         # stage 2: BDF2 through y0, z to t + h, started from z (q known the same way)
         start_q = None if core.time_dependent else qg
         y1, f1, q1, _ = core.newton(t + h, y0, z, coef, (h * _W) * (f0 + fg), q_start=start_q)
+        d1, db1 = core.stage_drift
         est = core.solve(h * (_E0 * f0 + _E1 * fg + _E2 * f1))
         sc = core.atol + core.rtol * np.abs(y1)
         err = float((np.abs(est) / sc).max())
@@ -386,11 +408,15 @@ class TRBDF2(_Method):
             # step (error ~ delta/|z|), which the once-filtered estimate does not see.
             err = float((np.abs(core.solve(core.C * est)) / sc).max())
         ybar = _W * (y0 + z) + _D * y1
-        gen = h * (_W * (q0.sum() + qg.sum()) + _D * q1.sum())
+        # the stage heats qg, q1 carry the conductances' drift (zero at y0, where the step's
+        # system was assembled); its sum over the nodes is minus the change of the heat to
+        # the boundaries, so with the same weights it moves from generated to boundaries
+        moved = h * (_W * dbg + _D * db1)
+        gen = h * (_W * (q0.sum() + qg.sum()) + _D * q1.sum()) + moved
         sys_ = core.sys
-        to_b = h * sys_.to_boundaries(ybar)
+        to_b = h * sys_.to_boundaries(ybar) + moved
         to_s = h * sys_.to_streams(ybar) if len(sys_.str_W) else 0.0
-        return _Trial(y1, f1, q1, err, gen, to_b, to_s)
+        return _Trial(y1, f1, q1 - d1, err, gen, to_b, to_s)
 
 
 @STEPPERS.register("backward_euler", references=["hairer_wanner1996"],
@@ -410,13 +436,15 @@ class BackwardEuler(_Method):
         core.factor(h)
         ydot0 = f0 * core.invC
         y1, f1, q1, _ = core.newton(t + h, y0, y0 + h * ydot0, h, np.zeros_like(y0))
+        d1, db1 = core.stage_drift   # the conductances' drift at y1 (see TRBDF2.step)
         est = core.solve(0.5 * h * (f1 - f0))
         sc = core.atol + core.rtol * np.abs(y1)
         err = float((np.abs(est) / sc).max())
         if err > 1.0:  # second filtering, as in TRBDF2.step
             err = float((np.abs(core.solve(core.C * est)) / sc).max())
+        q1 = q1 - d1
         gen, to_b, to_s = _audit(core, h, (1.0,), (y1,), (q1,))
-        return _Trial(y1, f1, q1, err, gen, to_b, to_s)
+        return _Trial(y1, f1, q1, err, gen, to_b + h * db1, to_s)
 
 
 # ==================================================================== driver

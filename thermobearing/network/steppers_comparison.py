@@ -34,8 +34,10 @@ class CrankNicolson(_Method):
         core.factor(0.5 * h)
         ydot0 = f0 * core.invC
         y1, f1, q1, _ = core.newton(t + h, y0, y0 + h * ydot0, 0.5 * h, 0.5 * h * f0)
+        d1, db1 = core.stage_drift   # temperature-dependent conductances (TRBDF2.step)
+        q1 = q1 - d1
         gen, to_b, to_s = _audit(core, h, (0.5, 0.5), (y0, y1), (q0, q1))
-        return _Trial(y1, f1, q1, None, gen, to_b, to_s)
+        return _Trial(y1, f1, q1, None, gen, to_b + 0.5 * h * db1, to_s)
 
 
 @STEPPERS.register("explicit_euler", references=["hairer_wanner1996"],

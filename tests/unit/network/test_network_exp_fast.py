@@ -289,10 +289,10 @@ def test_network_edited_during_the_run_hands_over_to_the_driver(monkeypatch):
 
 def test_temperature_dependent_network_runs_compiled_and_matches_general_path(monkeypatch):
     """Seven-node template (oil and air convection with temperature-dependent properties):
-    the compiled path now runs it (K(T) assembled at each step start, the conductances'
-    drift over the step as a linearly growing forcing and as an error indicator, as the
-    general path does); both paths agree with a tight reference within their tolerance,
-    with each other, at sampled (dense-output) times too, and the books close."""
+    the compiled path runs it (K(T) assembled at each step start, the conductances' drift
+    added to the heat at the stage values, as the general path does); both paths agree
+    with a tight reference within their tolerance, with each other, at sampled
+    (dense-output) times too, and the books close."""
     from thermobearing.geometry import load_bearing
     from thermobearing.lubricant import load_lubricant
     from thermobearing.network import exp_fast, seven_node
@@ -328,9 +328,8 @@ def test_temperature_dependent_network_runs_compiled_and_matches_general_path(mo
         assert res.audit.relative_imbalance() < 1e-10
         assert np.max(np.abs(res.sample(grid) - ref.sample(grid))) < 2e-3
     assert np.max(np.abs(fast.sample(grid) - slow.sample(grid))) < 2e-3
-    # without the drift terms the compiled path's long steps were 200x less accurate
-    # (8e-4 K instead of 4e-6 K on the default scene): the error is bounded like the
-    # general path's
+    # without the drift the compiled path's long steps were 200x less accurate (8e-4 K
+    # instead of 4e-6 K on the default scene): the error is bounded like the general path's
     e_fast = np.max(np.abs(fast.temperatures[-1] - ref.temperatures[-1]))
     e_slow = np.max(np.abs(slow.temperatures[-1] - ref.temperatures[-1]))
     print(f"compiled {e_fast:.2e} K, general {e_slow:.2e} K, steps "

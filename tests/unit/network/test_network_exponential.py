@@ -277,8 +277,8 @@ def test_defective_stream_chain_is_refused_with_advice():
 
 def test_temperature_dependent_conductances_are_not_lagged_silently():
     """Seven-node template (oil and air convection with temperature-dependent properties):
-    the conductance drift over a step enters as a forcing growing linearly over the step
-    and as an error indicator, so long steps stay accurate; the books still close."""
+    the conductances' drift over a step is added to the heat at the stage values, so long
+    steps stay accurate; the books still close to round-off."""
     from thermobearing.geometry import load_bearing
     from thermobearing.lubricant import load_lubricant
     from thermobearing.network import seven_node
