@@ -206,6 +206,16 @@ def _flows(sys_, n: int) -> tuple[np.ndarray, np.ndarray]:
     return flow, flow0
 
 
+def _with_drift_jacobian(jq: np.ndarray, D: np.ndarray) -> np.ndarray:
+    """dq/dT plus the conductances' own derivatives D (``Assembler.drift_jacobian``):
+    diagonal (n,) when both are (boundary edges only), else the full (n, n) matrix."""
+    off = D.copy()
+    np.fill_diagonal(off, 0.0)
+    if jq.ndim == 1 and not off.any():
+        return jq + np.diagonal(D)
+    return (np.diag(jq) if jq.ndim == 1 else jq) + D
+
+
 def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, zeros):
     """(q [W], dq/dT [W/K], heat evaluations) at a step start; dq/dT (n,) or (n, n).
     Finiteness of both is checked by the step-start kernels (``ok`` of _fk_start_sym)."""
@@ -291,6 +301,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
     if ctx is None:
         ctx = driver.fast_info = _Context.of(driver.asm, sys_, C)
     sym, rs, flow, flow0, zeros = ctx.sym, ctx.rs, ctx.flow, ctx.flow0, ctx.zeros
+    dcol = zeros  # column sums of the conductances' Jacobian part (see _with_drift_jacobian)
     if heat is not None and heat_with_jacobian is None and heat_jacobian is None \
             and core.jacobian_mode not in ("none", "fd", "fd_diagonal"):
         from ..errors import InputError
@@ -371,16 +382,23 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             r = net.heat_vector(r)
                         c1 = (r - q0) * (h / dt_fd)
                     if not lin:
+                        jq_lin = jq
                         if tdep:
                             core.update_system(y)
                             sys_ = core.sys
                             K, s = sys_.K, sys_.s
                             flow, flow0 = _flows(sys_, n)
+                            # the conductances' own derivatives complete the Jacobian
+                            Dn = driver.asm.drift_jacobian(y)
+                            dcol = Dn.sum(axis=0)
+                            jq_lin = _with_drift_jacobian(jq, Dn)
+                            sym_now = sym and jq_lin.ndim == 1
                         if sym_now:
                             Bw, Jw, vw, tw = ws_real
-                            ok, U2 = _ws_start_sym(K, s, jq, rs, y, q0, c1, td, h, Bw, Jw, vw)
+                            ok, U2 = _ws_start_sym(K, s, jq_lin, rs, y, q0, c1, td, h, Bw, Jw,
+                                                   vw)
                         else:
-                            ok, lam, V, W, JqM, f0, wf = _general_start(core, K, jq, y, q0)
+                            ok, lam, V, W, JqM, f0, wf = _general_start(core, K, jq_lin, y, q0)
                         if not ok:
                             raise _fail(driver, _NewtonFailure(
                                 math.inf, f"heat source returned a non-finite value at t={t}"),
@@ -437,11 +455,12 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             s_t0, s_h, s_y0 = store.t0, store.h, store.y0
                     else:
                         j = -1
-                    y1, err, gen, to_b, to_s, stored = _ws_finish(
+                    y1, err, gen, to_b, to_s, stored, d_int = _ws_finish(
                         y, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
-                    if tdep:  # book the drift's share of the remainder to the boundaries
-                        yb = _drift_booking(h, db2, db3)
+                        s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, dcol)
+                    if tdep:  # the drift's share of generated goes to the boundaries
+                        yb = _drift_booking(h, db2 + float(dcol @ (U2 - y)),
+                                            db3 + float(dcol @ (U3 - y))) - d_int
                         gen += yb
                         to_b += yb
                     if not math.isfinite(err):

@@ -189,10 +189,10 @@ def _fk_stage3(lam, V, W, JqM, y0, wf, c1, td, h, U2, q2, q0):  # pragma: no cov
 
 @numba.njit(cache=True)
 def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, atol, rtol,
-               K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t
+               K, C, flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, dcol
                ):  # pragma: no cover - compiled
     """Step completion: (y_{n+1} [K], scaled error, generated, to_boundaries, to_streams,
-    stored [J], rate at the step end from the step's own solution [K/s]).
+    stored [J], rate at the step end from the step's own solution [K/s], dcol . I [J]).
 
     In the eigenbasis (m_k = W c_k): m_0 = W f_n, m_1 = W c_1 (td), m_2 = 8 W D2 - W D3,
     m_3 = 2 W D3 - 8 W D2 (exponential.py: a2, a3 of the interpolated remainder);
@@ -205,8 +205,9 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
     (step start t [s], h, y_n and the spectral data).
 
     Temperature-dependent conductances: the caller adds their drift to q2 and q3
-    (``Assembler.drift``), so it is part of D2 and D3, and moves its share of the
-    generated heat to the boundaries (``exp_fast._drift_booking``).
+    (``Assembler.drift``) and their derivative D (``Assembler.drift_jacobian``) to dq/dT,
+    so both are part of the step, and moves their share of the generated heat to the
+    boundaries (``exp_fast._drift_booking`` and ``dcol . I``, dcol the column sums of D).
     """
     n = y0.shape[0]
     D3 = _nb_remainder(U3, q3, q0, JqM, y0, c1, 1.0 if td else 0.0)
@@ -227,11 +228,12 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
             err = e
     rate = np.zeros(n)
     if err > 1.0 or not math.isfinite(err):
-        return y1, err, 0.0, 0.0, 0.0, 0.0, rate
+        return y1, err, 0.0, 0.0, 0.0, 0.0, rate, 0.0
     integral = _back(V, np.zeros(n), (h * h) * (ph2 * wf + ph3 * wc1 + 2.0 * ph4 * m2
                                                 + 6.0 * tab[:, 5] * m3))
     gen = 0.0
     stored = 0.0
+    d_int = 0.0
     fb = -flow0[0]
     fs = -flow0[1]
     for i in range(n):
@@ -247,6 +249,7 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
             v += (JqM[i, m] - K[i, m]) * (y1[m] - y0[m])
         rate[i] = v / C[i]
         stored += C[i] * (y1[i] - y0[i])
+        d_int += dcol[i] * integral[i]
         ybar = y0[i] + integral[i] / h
         fb += flow[0, i] * ybar
         fs += flow[1, i] * ybar
@@ -262,7 +265,7 @@ def _fk_finish(lam, V, W, JqM, y0, f0, q0, wf, wd2, tab, c1, td, h, U3, q3, D2, 
             s_M[j, e, 1] = wc1[e]
             s_M[j, e, 2] = m2[e]
             s_M[j, e, 3] = m3[e]
-    return y1, err, gen, h * fb, h * fs, stored, rate
+    return y1, err, gen, h * fb, h * fs, stored, rate, d_int
 
 
 @numba.njit(cache=True)
@@ -340,15 +343,15 @@ def _ws_stage3(y0, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw):  # pragma: no cover -
 
 @numba.njit(cache=True)
 def _ws_finish(y0, q0, q3, U3, c1, td, h, atol, rtol, K, C, flow, flow0, Bw, Jw, vw, tw,
-               s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t
+               s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, dcol
                ):  # pragma: no cover - compiled
     """_fk_finish on the workspaces: (y_{n+1} [K], err, generated, to_boundaries,
-    to_streams, stored [J]); the step-end rate [K/s] goes to vw[5]."""
+    to_streams, stored [J], dcol . I [J]); the step-end rate [K/s] goes to vw[5]."""
     n = y0.shape[0]
-    y1, err, gen, to_b, to_s, stored, rate = _fk_finish(
+    y1, err, gen, to_b, to_s, stored, rate, d_int = _fk_finish(
         Bw[:, 0], Bw[:, 1:n + 1], Bw[:, n + 1:2 * n + 1], Jw, y0, vw[0], q0,
         Bw[:, 2 * n + 1], Bw[:, 2 * n + 2], tw, c1, td, h, U3, q3, vw[2], atol, rtol, K, C,
-        flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t)
+        flow, flow0, s_lam, s_V, s_M, s_t0, s_h, s_y0, j, t, dcol)
     for i in range(n):
         vw[5, i] = rate[i]
-    return y1, err, gen, to_b, to_s, stored
+    return y1, err, gen, to_b, to_s, stored, d_int

@@ -54,16 +54,18 @@ loop of :mod:`.exp_fast` (same method; symmetric networks by a cyclic Jacobi eig
 sparse networks).
 
 Temperature-dependent conductances (e.g. free convection to the air): K_n = K(y_n) and
-s_n are held in the linear part over the step and their drift
+s_n are held in the linear part over the step, the conductances' own temperature
+derivatives D (:meth:`.assemble.Assembler.drift_jacobian`) are added to dq/dT so that the
+linear part is the exact linearisation, and the drift
 d(U) = (s(U) - K(U) U) - (s_n - K_n U) (:meth:`.assemble.Assembler.drift`) is added to the
 heat at the stage values U2 and U3, so the step integrates the exact right-hand side and
-its error estimate sees the drift. The Jacobian keeps -K_n (no dK/dT T term), so the drift
-is integrated at second order (measured on the seven-node template at fixed steps against
-Radau: errors 1.9e-5 / 6.6e-6 / 1.9e-6 / 4.9e-7 K at 300 / 150 / 75 / 37.5 s; with the
-exact Jacobian the order would be ~3). Held over the step with only a linear drift forcing
-added, as before, the global error fell like the inverse step count: on the default rig
-scene 4.1e-6 K at rtol 1e-7 and 1.4e-6 K at 1e-8 against a tight LSODA reference; with the
-drift in the stages 7.4e-7 K at 1e-7, with the same number of steps.
+its error estimate sees the drift. Measured on the seven-node template at fixed steps
+against Radau: 8.5e-6 / 1.2e-6 / 1.5e-7 / 1.8e-8 K at 300 / 150 / 75 / 37.5 s (order ~3;
+the air properties are tabulated linearly); without D 1.9e-5 / 6.6e-6 / 1.9e-6 / 4.9e-7 K
+(order 2), and with the conductances held over the step and only a linear drift forcing
+added (before) the global error fell like the inverse step count. On the default rig
+scene at rtol 1e-7: 6.7e-7 K against a tight LSODA reference with 64 + 7 steps (held:
+4.1e-6 K with 92 + 22).
 
 Zero-capacity (algebraic) nodes a are eliminated per step by the Schur complement of the
 linearised equations: 0 = r_a(s) + J_ad dy_d + J_aa dy_a gives
@@ -81,9 +83,10 @@ sum C (y_{n+1} - y_n) = h sum f_n + sum J I + sum int G, I = int_0^h (y - y_n) d
     to_bounds  = h Q_b(y_bar),  to_streams = h Q_s(y_bar),  y_bar = y_n + I / h
 
 and generated - stored - to_bounds - to_streams = 0 up to round-off in the exponential.
-The drift of temperature-dependent conductances is part of G; summed over the nodes it is
-minus the change of the heat to the boundaries, so its integral is moved from the
-generated column to the boundary column (:func:`_drift_booking`; the balance is unchanged).
+The drift of temperature-dependent conductances is part of G and their derivative D part
+of dq/dT; summed over the nodes both are minus the change of the heat to the boundaries,
+so their integrals are moved from the generated column to the boundary column
+(:func:`_drift_booking` and the column sums of D times I; the balance is unchanged).
 ``generated`` is the method's own quadrature of q along its continuous solution (it
 differs from the exact integral of q by the local error).
 
@@ -422,7 +425,8 @@ def diagonalise_or_refuse(A: np.ndarray, M: np.ndarray, invC: np.ndarray, has_m:
 class _Linearization:
     """Reduced, diagonalised linearisation at one step start (t_n, y_n)."""
 
-    __slots__ = ("lam", "V", "W", "Jq", "JqM", "d", "a", "Jaa_inv", "Jad", "y0", "t", "n")
+    __slots__ = ("lam", "V", "W", "Jq", "JqM", "d", "a", "Jaa_inv", "Jad", "y0", "t", "n",
+                 "dcol")
 
     def __init__(self, core: _Core, t: float, y0: np.ndarray) -> None:
         KmJ = core.KmJ
@@ -433,6 +437,14 @@ class _Linearization:
             self.JqM = np.zeros((core.n, core.n))
         else:
             self.JqM = np.diag(Jq) if Jq.ndim == 1 else np.ascontiguousarray(Jq)
+        self.dcol = None
+        if core.asm.temperature_dependent:
+            # the conductances' own derivatives complete the linearisation (they are part
+            # of JqM for the remainders; their column sums book the heat they move)
+            D = core.asm.drift_jacobian(y0)
+            KmJ = KmJ - D
+            self.JqM = self.JqM + D
+            self.dcol = D.sum(axis=0)
         self.t = t
         self.y0 = y0
         self.n = core.n
@@ -598,8 +610,10 @@ class ExpRosenbrock43(_Method):
                            sys_.str_W, sys_.str_Tin)
         to_b = h * fb
         to_s = h * fs
-        if drift:  # the drift's share of the remainder's integral goes to the boundaries
-            yb = _drift_booking(h, db2, db3)
+        if drift:  # the drift's share of generated goes to the boundaries
+            dcol = lin.dcol
+            yb = (_drift_booking(h, db2 + float(dcol @ (U2 - y0)), db3 + float(dcol @ (U3 - y0)))
+                  - h * float(dcol @ (ybar - y0)))
             gen += yb
             to_b += yb
         return _Trial(y1, f1, q1, err, gen, to_b, to_s, ExpPiece(t, h, y0, lin, cs, use))

@@ -289,8 +289,9 @@ def test_network_edited_during_the_run_hands_over_to_the_driver(monkeypatch):
 
 def test_temperature_dependent_network_runs_compiled_and_matches_general_path(monkeypatch):
     """Seven-node template (oil and air convection with temperature-dependent properties):
-    the compiled path runs it (K(T) assembled at each step start, the conductances' drift
-    added to the heat at the stage values, as the general path does); both paths agree
+    the compiled path runs it (K(T) assembled at each step start, the conductances'
+    derivatives added to dq/dT and their drift to the heat at the stage values, as the
+    general path does); both paths agree
     with a tight reference within their tolerance, with each other, at sampled
     (dense-output) times too, and the books close."""
     from thermobearing.geometry import load_bearing
