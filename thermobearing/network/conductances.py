@@ -3,7 +3,8 @@
 Each model is a small frozen dataclass with ``conductance(Ta, Tb) -> G [W/K]`` (``Ta``, ``Tb``
 the temperatures [K] of the edge's first and second node) and ``to_dict()`` for the scene
 TOML. Models whose ``temperature_dependent`` flag is set are re-evaluated by the steppers at
-the start of every step (lagged one step; see :mod:`.steppers`).
+the start of every step for their linear part and at every stage value for the drift
+within the step (``Assembler.drift``; see :mod:`.steppers`), so they are not lagged.
 
 Paper 002 (Gao et al. 2022, ``seeds/002_*.txt``) eq. 27 writes a convective resistance as
 ``R = L / (h A)``; that is dimensionally wrong (K m / W). A convective resistance is

@@ -117,7 +117,8 @@ class _Core:
         return self.sys.s - self.sys.K @ T + q, q
 
     def update_system(self, T: np.ndarray, keep_heat_jacobian: bool = False) -> None:
-        """Re-evaluate temperature-dependent conductances at T (lagged).
+        """Re-assemble temperature-dependent conductances at T (the step's K_n; the drift
+        within the step is added to the stage heat, :meth:`q_stage`).
 
         With ``keep_heat_jacobian`` the last dq/dT is reused (K - dq/dT rebuilt without new
         heat evaluations), else the Jacobian must be refreshed before the next factor.
