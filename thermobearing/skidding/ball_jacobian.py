@@ -694,11 +694,11 @@ def analytic_blocks(system, X: np.ndarray, G: np.ndarray, *, wc_step: float = 1e
 
 def _refresh_caches() -> None:
     from .. import contact_traction, film, hertz, traction
-    from . import ball_residual
+    from . import ball_residual_kernels
 
     refresh_stale_caches("ball_jacobian", (_eyring_smooth_grad, _contact_traction_jac,
                                            _jac_node_sums, _geometry_jac, _jacobian_kernel),
-                         (contact_traction, traction, hertz, film, ball_residual))
+                         (contact_traction, traction, hertz, film, ball_residual_kernels))
 
 
 _refresh_caches()

@@ -321,12 +321,12 @@ def _theoretical_key(bearing, radial_load, axial_load, n_balls) -> tuple:
 
 def _refresh_caches() -> None:
     """numba's cache does not see edits of compiled callees in other files: the result kernel
-    compiles ``ball_residual._energy_audit`` into itself (see
+    compiles ``ball_residual_kernels._energy_audit`` into itself (see
     :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
     from ..contact_traction import refresh_stale_caches
-    from . import ball_residual
+    from . import ball_residual_kernels
 
-    refresh_stale_caches("ball_result", (_summary, _result_kernel), (ball_residual,))
+    refresh_stale_caches("ball_result", (_summary, _result_kernel), (ball_residual_kernels,))
 
 
 _refresh_caches()
