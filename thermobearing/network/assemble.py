@@ -268,17 +268,20 @@ class Assembler:
         d = (sys_t.s - sys_t.K @ T) - (reference.s - reference.K @ T)
         return d, sys_t.to_boundaries(T) - reference.to_boundaries(T)
 
-    def drift_jacobian(self, T: np.ndarray, step: float = 1e-3) -> np.ndarray:
+    def drift_jacobian(self, T: np.ndarray, step: float = 1e-3) -> np.ndarray | sp.csr_matrix:
         """D [W/K], (n, n): the part of the Jacobian of s(T) - K(T) T at state T [K] that the
         held K(T) leaves out, the conductances' own temperature derivatives: for an edge
         of conductance g(Ta, Tb) carrying g (Ta - Tb) from a to b, D[a, a] = -g_a dT,
         D[a, b] = -g_b dT, D[b, a] = g_a dT, D[b, b] = g_b dT (dT = Ta - Tb; rows and
         columns of boundary ends left out), g_a, g_b by central differences of the model
-        over +-``step`` [K]. The steppers add it to the heat Jacobian so that their linear
-        part is the exact linearisation; zero without temperature-dependent edges.
-        Column sums are the change of the heat to the boundaries per kelvin (an edge
-        between two state nodes contributes none)."""
-        D = np.zeros((self.n, self.n))
+        over +-``step`` [K]. The steppers and the steady Newton add it to the Jacobian so
+        that their linear part is the exact linearisation; zero without temperature-
+        dependent edges. A dense array for a dense system, else a CSR matrix. Column sums
+        are the change of the heat to the boundaries per kelvin (an edge between two state
+        nodes contributes none)."""
+        rows: list[int] = []
+        cols: list[int] = []
+        vals: list[float] = []
         for ia, ib, t_fixed, model, what in self._var_edges:
             Ta = float(T[ia]) if ia >= 0 else t_fixed
             Tb = float(T[ib]) if ib >= 0 else t_fixed
@@ -293,15 +296,17 @@ class Assembler:
             if not (math.isfinite(ga) and math.isfinite(gb)):
                 raise InputError(what, (ga, gb), "a conductance model with finite "
                                  "temperature derivatives")
-            if ia >= 0:
-                D[ia, ia] -= ga * dT
-                if ib >= 0:
-                    D[ia, ib] -= gb * dT
-            if ib >= 0:
-                D[ib, ib] += gb * dT
-                if ia >= 0:
-                    D[ib, ia] += ga * dT
-        return D
+            for i, j, v in ((ia, ia, -ga * dT), (ia, ib, -gb * dT), (ib, ib, gb * dT),
+                            (ib, ia, ga * dT)):
+                if i >= 0 and j >= 0:
+                    rows.append(i)
+                    cols.append(j)
+                    vals.append(v)
+        if self.dense:
+            D = np.zeros((self.n, self.n))
+            np.add.at(D, (np.array(rows, dtype=int), np.array(cols, dtype=int)), vals)
+            return D
+        return sp.coo_matrix((vals, (rows, cols)), shape=(self.n, self.n)).tocsr()
 
     def _temp(self, node: str, T: np.ndarray) -> float:
         i = self.index.get(node)

@@ -56,7 +56,7 @@ from .exp_kernels import (  # noqa: F401  (_jacobi_eigh: re-exported for tests a
     _ws_start_sym,
 )
 from .exponential import _drift_booking, _nb_scaled_jacobian, diagonalise_or_refuse
-from .steppers import _NewtonFailure
+from .stepper_core import _NewtonFailure, stage_drift
 
 
 # ------------------------------------------------------------ dense output store
@@ -435,7 +435,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                         if type(q2) is not np.ndarray or q2.shape != shp:
                             q2 = net.heat_vector(q2)
                     if tdep:  # the conductances' drift enters the stage remainder D2
-                        d2, db2 = driver.asm.drift(sys_, U2)
+                        d2, db2 = stage_drift(driver.asm, sys_, U2)
                         q2 = q2 + d2
                     U3 = _ws_stage3(y, c1, td, h, U2, q2, q0, Bw, Jw, vw, tw)
                     if heat is not None:
@@ -445,7 +445,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                             q3 = net.heat_vector(q3)
                         n_heat += 2
                     if tdep:  # ... and D3
-                        d3, db3 = driver.asm.drift(sys_, U3)
+                        d3, db3 = stage_drift(driver.asm, sys_, U3)
                         q3 = q3 + d3
                     if store is not None:
                         j = store.count

@@ -103,6 +103,7 @@ import math
 import numba
 import numpy as np
 
+from .stepper_core import stage_drift
 from .steppers import STEPPERS, _Core, _Method, _NewtonFailure, _Trial
 
 _FACT = (1.0, 1.0, 2.0, 6.0, 24.0, 120.0, 720.0)
@@ -442,6 +443,8 @@ class _Linearization:
             # the conductances' own derivatives complete the linearisation (they are part
             # of JqM for the remainders; their column sums book the heat they move)
             D = core.asm.drift_jacobian(y0)
+            if not isinstance(D, np.ndarray):  # a sparse network's system
+                D = D.toarray()
             KmJ = KmJ - D
             self.JqM = self.JqM + D
             self.dcol = D.sum(axis=0)
@@ -591,12 +594,12 @@ class ExpRosenbrock43(_Method):
         q2 = core.q(t + 0.5 * h, U2)
         drift = core.asm.temperature_dependent
         if drift:  # the conductances' drift enters the stage remainders D2 and D3
-            d2, db2 = core.asm.drift(sys_, U2)
+            d2, db2 = stage_drift(core.asm, sys_, U2)
             q2 = q2 + d2
         D2, U3 = _nb_stage3(*L, y0, f0, c1, td, h, U2, q2, q0, lin.JqM)
         q3 = core.q(t + h, U3)
         if drift:
-            d3, db3 = core.asm.drift(sys_, U3)
+            d3, db3 = stage_drift(core.asm, sys_, U3)
             q3 = q3 + d3
         y1, err, cs, use, gen, ybar = _nb_finish(*L, y0, f0, c1, td, h, U3, q3, q0, lin.JqM,
                                                  D2, core.atol, core.rtol)

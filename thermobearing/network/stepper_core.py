@@ -36,6 +36,21 @@ class _NewtonFailure(Exception):
         self.reason = reason
 
 
+def stage_drift(asm: Assembler, reference: System, T: np.ndarray) -> tuple[np.ndarray, float]:
+    """``asm.drift(reference, T)`` at a trial stage value T [K]. A too-long trial step can put
+    a stage far outside the physical range (e.g. below 0 K), where a conductance model
+    refuses the temperature: that is a failed trial (the step is retried with h/4, and
+    below the minimum step the ConvergenceError carries the model's message), not an
+    error of the input."""
+    try:
+        d, db = asm.drift(reference, T)
+    except (InputError, ValueError, FloatingPointError) as exc:
+        raise _NewtonFailure(math.inf, f"conductance at a trial stage value: {exc}") from None
+    if not (math.isfinite(db) and math.isfinite(float(d.sum()))):
+        raise _NewtonFailure(math.inf, "non-finite conductance at a trial stage value")
+    return d, db
+
+
 # ===================================================================== the core
 class _Core:
     """Evaluations, Jacobian and LU cache for one assembled system and heat function."""
@@ -108,7 +123,7 @@ class _Core:
         if not self.asm.temperature_dependent:
             self.stage_drift = self._no_drift
             return q
-        self.stage_drift = self.asm.drift(self.sys, T)
+        self.stage_drift = stage_drift(self.asm, self.sys, T)
         return q + self.stage_drift[0]
 
     def f(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

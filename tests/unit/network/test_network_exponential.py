@@ -290,3 +290,25 @@ def test_temperature_dependent_conductances_are_not_lagged_silently():
     res = integrate(net, q, (0.0, 1800.0), 308.15, method="exprb43", rtol=1e-6, atol=1e-5)
     assert np.max(np.abs(res.temperatures[-1] - ref.temperatures[-1])) < 2e-3  # 2.8e-4 K
     assert res.audit.relative_imbalance() < 1e-10
+
+
+def test_wild_trial_stage_of_a_temperature_dependent_network_is_a_rejected_step():
+    """A long first trial step puts exprb43's stage values far outside the physical range
+    (here > 2000 K, where the air properties of free convection stop): that trial is
+    rejected and retried shorter (``stepper_core.stage_drift``), not an InputError of the
+    input as it was; the run reaches the hot steady state and its books close."""
+    from thermobearing.network import solve_steady
+    from thermobearing.network.conductances import NaturalConvectionCylinder
+
+    net = ThermalNetwork("hot")
+    net.add_boundary("amb", 300.0)
+    net.add_node("n0", 1.0)
+    net.add_node("n1", 5000.0)
+    net.add_edge("n0", "n1", 0.2)
+    net.add_edge("n0", "amb", NaturalConvectionCylinder(0.05, 0.05))
+    heat = np.array([400.0, 1.0])
+    res = integrate(net, heat, (0.0, 1e6), 300.0, method="exprb43", rtol=1e-9, atol=1e-9)
+    assert res.stats["rejected"] + res.stats["newton_failures"] > 0
+    assert res.audit.relative_imbalance() < 1e-12
+    steady = solve_steady(net, heat).temperatures_vector
+    np.testing.assert_allclose(res.temperatures[-1], steady, atol=1e-6)

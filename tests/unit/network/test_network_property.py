@@ -54,3 +54,37 @@ def test_random_networks_conserve_energy_and_reach_steady(case):
     stored = float(np.dot([net.capacity(n) for n in net.state_nodes],
                           res.temperatures[-1] - T_amb))
     assert abs(tot["stored"] - stored) <= 1e-9 * max(1.0, abs(stored))
+
+
+@st.composite
+def networks_with_free_convection(draw):
+    """A random network of :func:`networks` plus temperature-dependent edges: free convection
+    of a horizontal cylinder to the ambient from one node and, sometimes, between two nodes
+    (an edge between two state nodes gives the conductances' Jacobian off-diagonal terms)."""
+    from thermobearing.network.conductances import NaturalConvectionCylinder
+
+    net, heat, t_end = draw(networks())
+    n = len(net.state_nodes)
+    i = draw(st.integers(0, n - 1))
+    net.add_edge(f"n{i}", "amb", NaturalConvectionCylinder(draw(st.floats(0.05, 0.5)),
+                                                           draw(st.floats(0.05, 2.0))))
+    if n > 1 and draw(st.booleans()):
+        a, b = draw(st.permutations(range(n)))[:2]
+        net.add_edge(f"n{a}", f"n{b}", NaturalConvectionCylinder(0.1, draw(st.floats(0.05, 1.0))))
+    return net, heat, t_end
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(networks_with_free_convection())
+def test_temperature_dependent_networks_close_their_books_and_reach_steady(case):
+    """exprb43 with temperature-dependent conductances (their drift in the stages, their
+    derivatives in the linearisation): the books close to round-off and the run ends on the
+    steady state of the nonlinear network (steady Newton)."""
+    net, heat, t_end = case
+    T_amb = net.boundary_temperature("amb")
+    res = integrate(net, heat, (0.0, t_end), T_amb, method="exprb43", rtol=1e-9, atol=1e-9)
+    assert res.audit.relative_imbalance() < 1e-10
+    assert np.all(np.isfinite(res.temperatures))
+    steady = solve_steady(net, heat).temperatures_vector
+    scale = max(1.0, float(np.max(steady - T_amb)))
+    np.testing.assert_allclose(res.temperatures[-1], steady, atol=1e-5 * scale, rtol=0)
