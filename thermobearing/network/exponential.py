@@ -440,12 +440,12 @@ class _Linearization:
             self.JqM = np.diag(Jq) if Jq.ndim == 1 else np.ascontiguousarray(Jq)
         self.dcol = None
         if core.asm.temperature_dependent:
-            # the conductances' own derivatives complete the linearisation (they are part
-            # of JqM for the remainders; their column sums book the heat they move)
+            # the conductances' own derivatives D are in core.KmJ (the exact linearisation,
+            # _Core._k_minus_j); they are part of JqM for the remainders too, and their
+            # column sums book the heat they move
             D = core.asm.drift_jacobian(y0)
             if not isinstance(D, np.ndarray):  # a sparse network's system
                 D = D.toarray()
-            KmJ = KmJ - D
             self.JqM = self.JqM + D
             self.dcol = D.sum(axis=0)
         self.t = t

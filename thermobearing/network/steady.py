@@ -41,16 +41,12 @@ def solve_steady(network: ThermalNetwork, heat: HeatFn | None = None, T_guess=No
     asm = Assembler(network)
     core = _Core(network, asm, 0.0, 1.0, jacobian)
     core.set_heat(heat, heat_jacobian)
-    tdep = asm.temperature_dependent
     core.update_system(y)
     f, q = core.f(t, y)
     res = float(np.max(np.abs(f)))
     for it in range(1, max_iter + 1):
         core.refresh_jacobian(t, y, q)
-        KmJ = core.KmJ
-        if tdep:
-            D = asm.drift_jacobian(y)
-            KmJ = (KmJ - D).tocsc() if sp.issparse(KmJ) else KmJ - D
+        KmJ = core.KmJ  # with the conductances' derivatives (_Core._k_minus_j)
         if sp.issparse(KmJ):
             dy = spla.spsolve(KmJ.tocsc(), f)
         else:

@@ -148,13 +148,23 @@ class _Core:
             if not keep_heat_jacobian:
                 self.KmJ = None
                 return
-            K, Jq = self.sys.K, self.Jq
-            if Jq is None:
-                self.KmJ = K
-            elif self.sys.dense:
-                self.KmJ = K - (np.diag(Jq) if Jq.ndim == 1 else Jq)
-            else:
-                self.KmJ = (K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))).tocsc()
+            self.KmJ = self._k_minus_j(self.Jq, T)
+
+    def _k_minus_j(self, Jq: np.ndarray | None, T: np.ndarray) -> np.ndarray | sp.spmatrix:
+        """-(df/dT) = K - dq/dT - D [W/K] at T [K] on the current system, D the
+        conductances' own temperature derivatives (``Assembler.drift_jacobian``; zero
+        without temperature-dependent edges): the exact Jacobian for the Newton matrices,
+        the exponential's linearisation and the steady solve."""
+        K = self.sys.K
+        if self.sys.dense:
+            KmJ = K if Jq is None else K - (np.diag(Jq) if Jq.ndim == 1 else Jq)
+            if self.asm.temperature_dependent:
+                KmJ = KmJ - self.asm.drift_jacobian(T)
+            return KmJ
+        KmJ = K if Jq is None else K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))
+        if self.asm.temperature_dependent:
+            KmJ = KmJ - self.asm.drift_jacobian(T)
+        return sp.csc_matrix(KmJ)
 
     def refresh_jacobian(self, t: float, T: np.ndarray, q0: np.ndarray | None = None) -> None:
         self.stats["jacobians"] += 1
@@ -181,15 +191,8 @@ class _Core:
                     Jq[:, j] = (self.q(t, Tp) - q0) / delta[j]
             else:
                 raise InputError("jacobian", mode, "'fd', 'fd_diagonal' or 'none'")
-        K = self.sys.K
-        if Jq is None:
-            KmJ = K
-        elif self.sys.dense:
-            KmJ = K - (np.diag(Jq) if Jq.ndim == 1 else Jq)
-        else:
-            KmJ = (K - (sp.diags(Jq) if Jq.ndim == 1 else sp.csc_matrix(Jq))).tocsc()
         self.Jq = Jq
-        self.KmJ = KmJ
+        self.KmJ = self._k_minus_j(Jq, T)
         self.jac_y, self.jac_t = T, t
         self.lu_coef = -1.0
         self.eta = 1.0
