@@ -1,24 +1,12 @@
 """Residual of the ball/cage/ring equilibrium of the ball skidding solver (paper 002, QJ1044).
 
 One job: evaluate the scaled residuals of :mod:`thermobearing.skidding.ball`'s unknowns
-(:class:`ball_residual_system`) for the force models it balances (:class:`BallModels`).
-Per ball j the unknowns are x_j = (b_a, b_r, Omega_a, Omega_r, Omega_t, Q_p) (ball-centre
-position [m], angular velocity relative to the cage frame [rad/s], cage-pocket normal force
-[N]); the globals are the inner-ring displacements (delta_a, delta_r) [m] and the cage speed
-omega_c [rad/s]. Equations per ball (paper 002, Fig. 1(c) and eq. 9 in steady state;
-primer ../shared/notes/over-skidding.md section 3.4 in vector form):
-
-    sum_k (-Q_k n_k + F_k) + m omega_c^2 b_r e_r - F_drag e_t + Q_p e_t + f_p = 0
-    sum_k (p_k x F_k + M_k) + p_p x f_p - omega_c e_a x (J Omega)            = 0
-
-with F_k, M_k the traction force and moment of contact k integrated over the Hertz ellipse
-with slip and spin by :func:`thermobearing.contact_traction.integrate` (the same code path as
-the raceway heat source, so heat = force x sliding speed), the centrifugal force, the
-churning drag of the ball (paper 002 eq. 10), the pocket force and its friction f_p
-(paper 002 eqs. 6-8 and 19) and the gyroscopic moment ``omega_c e_a x J Omega``
-(= J omega_R omega_m sin(beta) about the tangential axis; primer section 3.3). Globals: inner
-ring force balance (F_a, F_r) and the cage torque balance (pocket forces against the
-cage-guide and cage-churning torque, paper 002 eqs. 5 and 8).
+(:class:`ball_residual_system`) for the force models it balances (:class:`BallModels`). The
+unknowns (per ball the centre position, the angular velocity relative to the cage frame and
+the cage-pocket force; the inner-ring displacements and the cage speed) and the equations
+(paper 002 Fig. 1(c), eqs. 5-10 and 19; primer ../shared/notes/over-skidding.md sections
+3.3-3.4) are written out once, in the docstring of
+:mod:`thermobearing.skidding.ball_residual_kernels`.
 
 Implementation: the residual of a batch of states is compiled (numba, ``cache=True``) in
 :mod:`thermobearing.skidding.ball_residual_kernels` (re-exported here):
