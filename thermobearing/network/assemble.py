@@ -48,6 +48,9 @@ class System:
     bnd_index, bnd_G, bnd_T : conductive edges to boundaries: state index, G [W/K], T_b [K].
     str_first, str_last, str_W, str_Tin : streams: first and last state index, W [W/K],
         inlet temperature [K].
+    var_g : conductances [W/K] of the assembler's temperature-dependent edges at this
+        system's temperatures, in the assembler's order (dense systems; None otherwise):
+        :meth:`Assembler.drift` works from them.
     """
 
     names: tuple[str, ...]
@@ -61,6 +64,7 @@ class System:
     str_last: np.ndarray
     str_W: np.ndarray
     str_Tin: np.ndarray
+    var_g: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -201,13 +205,15 @@ class Assembler:
             # (scalar indexing; no list building, no sparse detour)
             K = self.K0.copy()
             extra_i, extra_g, extra_t = [], [], []
-            for ia, ib, t_fixed, model, what in self._var_edges:
+            var_g = np.empty(len(self._var_edges))
+            for k, (ia, ib, t_fixed, model, what) in enumerate(self._var_edges):
                 Ta = float(T[ia]) if ia >= 0 else t_fixed
                 Tb = float(T[ib]) if ib >= 0 else t_fixed
                 g = float(model.conductance(Ta, Tb))
                 if not math.isfinite(g) or g < 0.0:
                     raise InputError(what, g, "a finite value >= 0 W/K from the conductance "
                                      "model")
+                var_g[k] = g
                 if ia >= 0 and ib >= 0:
                     K[ia, ia] += g
                     K[ib, ib] += g
@@ -227,7 +233,7 @@ class Assembler:
                 b_t = np.concatenate((b_t, extra_t))
             system = System(names=self.names, C=self.C, K=K, s=s, dense=True, bnd_index=b_i,
                             bnd_G=b_g, bnd_T=b_t, str_last=self.str_last, str_W=self.str_W,
-                            str_Tin=self.str_Tin)
+                            str_Tin=self.str_Tin, var_g=var_g)
             if not self.variable:
                 self._constant_system = system
             return system
@@ -264,9 +270,31 @@ class Assembler:
         edges."""
         if not self.variable:
             return np.zeros(self.n), 0.0
-        sys_t = self.system(T)
-        d = (sys_t.s - sys_t.K @ T) - (reference.s - reference.K @ T)
-        return d, sys_t.to_boundaries(T) - reference.to_boundaries(T)
+        g_ref = reference.var_g
+        if g_ref is None or len(g_ref) != len(self._var_edges):
+            sys_t = self.system(T)
+            d = (sys_t.s - sys_t.K @ T) - (reference.s - reference.K @ T)
+            return d, sys_t.to_boundaries(T) - reference.to_boundaries(T)
+        # dense systems: only the temperature-dependent edges change; edge k carries
+        # (g(T) - g_ref) (Ta - Tb) more from a to b
+        d = np.zeros(self.n)
+        db = 0.0
+        for k, (ia, ib, t_fixed, model, what) in enumerate(self._var_edges):
+            Ta = float(T[ia]) if ia >= 0 else t_fixed
+            Tb = float(T[ib]) if ib >= 0 else t_fixed
+            g = float(model.conductance(Ta, Tb))
+            if not math.isfinite(g) or g < 0.0:
+                raise InputError(what, g, "a finite value >= 0 W/K from the conductance model")
+            flux = (g - g_ref[k]) * (Ta - Tb)
+            if ia >= 0:
+                d[ia] -= flux
+            else:
+                db -= flux   # from the boundary a into the network
+            if ib >= 0:
+                d[ib] += flux
+            else:
+                db += flux   # from the network into the boundary b
+        return d, db
 
     def drift_jacobian(self, T: np.ndarray, step: float = 1e-3) -> np.ndarray | sp.csr_matrix:
         """D [W/K], (n, n): the part of the Jacobian of s(T) - K(T) T at state T [K] that the

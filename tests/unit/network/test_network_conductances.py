@@ -157,6 +157,41 @@ def test_dense_assembly_of_temperature_dependent_edges_equals_generic_stamping()
         assert g > 0 and a.s[0] == pytest.approx(g * t_air, rel=1e-12)
 
 
+def test_drift_and_its_jacobian_from_the_edges_equal_reassembly():
+    """Assembler.drift on a dense system works edge by edge from the step's stored
+    conductances; it equals the change of s - K T between two full assemblies, sums to
+    minus the change of the heat to the boundaries, and drift_jacobian is its derivative
+    (central differences of the drift)."""
+    import dataclasses
+
+    from thermobearing.network.assemble import Assembler
+
+    net = ThermalNetwork()
+    net.add_boundary("air", 300.0)
+    net.add_node("housing", 2e4, role="outer_ring")
+    net.add_node("shaft", 1e4, role="inner_ring")
+    net.add_edge("housing", "air", NaturalConvectionCylinder(0.3, 0.5))
+    net.add_edge("shaft", "housing", NaturalConvectionCylinder(0.1, 0.2))
+    net.add_edge("shaft", "air", Convection(10.0, 0.1))
+    asm = Assembler(net)
+    T0, T = np.array([335.0, 321.0]), np.array([341.0, 318.5])
+    ref = asm.system(T0)
+    d, db = asm.drift(ref, T)
+    full = asm.system(T)
+    np.testing.assert_allclose(d, (full.s - full.K @ T) - (ref.s - ref.K @ T), atol=1e-10)
+    assert db == pytest.approx(full.to_boundaries(T) - ref.to_boundaries(T), rel=1e-10)
+    assert d.sum() == pytest.approx(-db, rel=1e-10)
+    d_generic, db_generic = asm.drift(dataclasses.replace(ref, var_g=None), T)
+    np.testing.assert_allclose(d, d_generic, atol=1e-10)
+    D = asm.drift_jacobian(T0)
+    h = 1e-4
+    for j in range(2):
+        e = np.zeros(2)
+        e[j] = h
+        fd = (asm.drift(ref, T0 + e)[0] - asm.drift(ref, T0 - e)[0]) / (2.0 * h)
+        np.testing.assert_allclose(D[:, j], fd, rtol=1e-5, atol=1e-9)
+
+
 # ---------------------------------------------------------------------- templates
 @pytest.fixture(scope="module")
 def qj1044():
