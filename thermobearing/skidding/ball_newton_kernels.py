@@ -4,8 +4,9 @@ One job: the numba kernels (``cache=True``) of :mod:`thermobearing.skidding.ball
 re-exports every name of this module): the block elimination of the structured Jacobian
 (6x6 ball blocks :func:`_factor_blocks` / :func:`_inverse_small`, the 3x3 Schur complement on
 the globals, the capped step :func:`_block_step`), the forward-difference blocks
-(:func:`_fd_blocks`), the scaled residual norm (:func:`_residual_norm`), the rescaling of a
-handed-over Jacobian (:func:`_rescale_blocks`), the good-Broyden update (:func:`_broyden_step`,
+(:func:`_fd_blocks`), the scaled residual norm (``_residual_norm_nb`` of
+:mod:`.ball_residual_kernels`, imported), the rescaling of a handed-over Jacobian
+(:func:`_rescale_blocks`), the good-Broyden update (:func:`_broyden_step`,
 :func:`_propose`), the cage-torque model of the compiled chord phase (:func:`_torque_model`),
 the chord / Broyden iterations of a warm start in one compiled loop (:func:`_chord_phase`,
 which compiles the residual kernel :func:`~thermobearing.skidding.ball_residual_kernels.
@@ -24,6 +25,7 @@ import numba
 import numpy as np
 
 from ..contact_traction import refresh_stale_caches
+from .ball_residual_kernels import _residual_norm_nb as _residual_norm  # one kernel for both
 from .ball_residual_kernels import _residual_one
 
 
@@ -175,21 +177,6 @@ def _fd_blocks(Rb: np.ndarray, Gcb: np.ndarray, Gkb: np.ndarray, R: np.ndarray,
                 t += Gcb[nbx + gg, z, g]
             Dg[g, gg] = (t - base) / h
     return A, B, C, Dg
-
-
-@numba.njit(cache=True)
-def _residual_norm(R: np.ndarray, Gc: np.ndarray, Gk: np.ndarray) -> float:
-    """sqrt(|R|^2 + |sum_z Gc_z + Gk|^2) of one state (compiled)."""
-    acc = 0.0
-    for z in range(R.shape[0]):
-        for i in range(R.shape[1]):
-            acc += R[z, i] * R[z, i]
-    for g in range(Gk.size):
-        t = Gk[g]
-        for z in range(Gc.shape[0]):
-            t += Gc[z, g]
-        acc += t * t
-    return math.sqrt(acc)
 
 
 @numba.njit(cache=True)
@@ -443,7 +430,7 @@ def _refresh_caches() -> None:
     from . import ball_residual_kernels
 
     refresh_stale_caches("ball_newton_kernels", (_block_step, _inverse_small, _factor_blocks,
-                                                 _fd_blocks, _residual_norm, _broyden_step,
+                                                 _fd_blocks, _broyden_step,
                                                  _propose, _torque_model, _chord_phase,
                                                  _rescale_blocks, _exact_torques),
                          (contact_traction, traction, hertz, film, ball_residual_kernels))
