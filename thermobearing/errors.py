@@ -31,7 +31,10 @@ class InputError(ThermobearingError, ValueError):
         self.field = field
         self.value = value
         self.allowed = allowed
-        super().__init__(f"{field} = {value!r} is not allowed: {allowed}")
+        if value is None:  # nothing was given
+            super().__init__(f"{field} is missing: {allowed}")
+        else:
+            super().__init__(f"{field} = {value!r} is not allowed: {allowed}")
 
 
 class UnknownNameError(InputError, KeyError):

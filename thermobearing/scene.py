@@ -40,10 +40,14 @@ Layout (every table optional unless marked)::
     # file = "protocol.csv"   # columns duration [s], speed [rpm], radial_load [N], axial_load [N]
 
     [models]                           # one name per family (see `thermobearing models`)
-    kinematics = "skidding"            # skidding | race_control
-    film = "hamrock_dowson_1977"
-    traction = "..."
-    heat_sources = ["raceway", "churning", "cage_guide", "pocket"]
+    kinematics = "skidding"            # skidding | race_control | none (with global_friction)
+    control = "outer_race"             # race control only: which race controls the spin
+    film = "hamrock_dowson_1977_central"   # default; pan_hamrock_central for rollers
+    heat_sources = ["raceway_traction", "churning_elements", "churning_cage",
+                    "churning_inner_ring", "cage_guide", "pocket_friction"]
+    heat_source_options = { pocket_friction = { ... } }   # per-source parameters
+    churning_heat_to = "oil"           # oil | paper002 (where the churning heat is booked)
+    calibration = "preset"             # preset (<bearing>.calibration.toml if any) | none
 
     [network]
     template = "four_node_paper002"

@@ -52,6 +52,9 @@ from .scene import Scene, Step, loads_scene
 from .state import OilSupply, OperatingPoint
 from .units import from_si
 
+#: The keys a scene's ``[models]`` table accepts.
+MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
+                        "churning_heat_to", "calibration"})
 BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
                 "cage_guide", "pocket_friction")
 ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
@@ -160,12 +163,10 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
     from .film import FILM
     from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
 
-    allowed = {"kinematics", "film", "heat_sources", "heat_source_options", "control",
-               "churning_heat_to", "calibration"}
     for key in scene.models:
-        if key not in allowed:
+        if key not in MODEL_KEYS:
             raise InputError(f"models.{key}", scene.models[key],
-                             "a known model family: " + ", ".join(sorted(allowed)))
+                             "a known model family: " + ", ".join(sorted(MODEL_KEYS)))
     need = _needs(scene)
     links: list[ChainLink] = []
 
@@ -293,6 +294,16 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
         raise
 
 
+def _supply_notes(scene: Scene) -> list[str]:
+    """What the scene sets that its oil supply does not use (said, not refused)."""
+    sup = scene.supply
+    if sup.method == "oil_bath" and sup.flow == 0.0:
+        return [f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is not "
+                "used: an oil bath without flow has no inlet; the bath temperature is the "
+                "network's oil node"]
+    return []
+
+
 class Simulation:
     """Run a scene.
 
@@ -313,13 +324,13 @@ class Simulation:
         self.lubricant = load_lubricant(lub_spec.get("preset") or
                                         str(scene.resolve_path(lub_spec["path"])))
         self.supply = OilSupply.from_scene(scene.supply)
+        self.notes: list[str] = _supply_notes(scene)
         kin_name = scene.models.get("kinematics", "skidding")
         KINEMATICS.entry(kin_name)
         kin_options: dict[str, Any] = {}
         if "control" in scene.models:
             kin_options["control"] = scene.models["control"]
         self.bearings: list[_Bearing] = []
-        self.calibration_notes: list[str] = []
         dropped: list[str] = []
         for i_spec, spec in enumerate(scene.bearings):
             src = spec.preset or str(scene.resolve_path(spec.path))
@@ -331,8 +342,8 @@ class Simulation:
             if is_ball:
                 params, b, note = _apply_calibration(b, spec, scene)
                 opts["params"] = params
-                if note and note not in self.calibration_notes:
-                    self.calibration_notes.append(note)
+                if note and note not in self.notes:
+                    self.notes.append(note)
             key = repr((spec.preset, spec.path, sorted(spec.overrides.items())))
             sources = heat_source_names(scene, is_ball)
             why = ("rib_friction" in sources and "heat_sources" not in scene.models
@@ -351,7 +362,7 @@ class Simulation:
                       if link.family != HEAT_SOURCE_FAMILY or link.name in running]
         self.needs = _needs(scene)
         self.network = None
-        self.warnings: list[str] = list(self.calibration_notes) + dropped
+        self.warnings: list[str] = list(self.notes) + dropped
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         # identical bearings (same preset and overrides) at the same state share results
@@ -366,7 +377,7 @@ class Simulation:
             lines.append(f"  {i}. {link.family}: {link.name}  ({link.purpose})")
             if with_citations:
                 lines.extend(f"       {c}" for c in cite(link.references))
-        lines.extend(f"  note: {n}" for n in self.calibration_notes)
+        lines.extend(f"  note: {n}" for n in self.notes)
         return "\n".join(lines)
 
     def citations(self) -> list[str]:

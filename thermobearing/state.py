@@ -65,7 +65,8 @@ class OilSupply:
     method : ``"jet" | "circulation" | "oil_bath" | "oil_air" | "grease"``.
     flow_rate : volume flow of oil through the bearing [m^3/s]; > 0, zero allowed only for
         ``oil_bath`` and ``grease``.
-    inlet_temperature : oil inlet (or sump) temperature [K].
+    inlet_temperature : oil inlet temperature [K]; an oil bath without flow has no inlet
+        (its temperature is the network's oil node), so it is not used there.
     level : static oil level of a bath [m], measured from the lowest point of the outer-ring
         raceway (SKF's ``H``); required for ``oil_bath``, ignored otherwise.
     """

@@ -97,12 +97,10 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
     if not path or not raw:
         raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
     check_path(scene_dict, path)
-    numbers, unit = _split_unit(raw)
-    if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):  # strings: lubricant presets etc.
-        values: tuple[Any, ...] = tuple(v.strip() for v in raw.split(",") if v.strip())
-        return SweepParameter(path, values)
-    unit = unit or _existing_unit(scene_dict, path)
-    if ":" in numbers:
+    if ":" in raw:
+        numbers, unit = _split_unit(raw)
+        if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):
+            raise InputError(f"--set {path}", raw, "a range start:stop:step with one unit")
         parts = numbers.split(":")
         if len(parts) != 3:
             raise InputError(f"--set {path}", raw, "a range start:stop:step")
@@ -110,13 +108,24 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         if d <= 0 or b < a:
             raise InputError(f"--set {path}", raw, "start <= stop and step > 0")
         n = int(math.floor((b - a) / d + 1e-9)) + 1
-        nums = [a + i * d for i in range(n)]
-    else:
-        nums = [_number(p, f"--set {path}") for p in numbers.split(",") if p.strip()]
-    if not nums:
+        unit = unit or _existing_unit(scene_dict, path)
+        return SweepParameter(path, tuple(f"{a + i * d:g} {unit}" if unit else a + i * d
+                                          for i in range(n)))
+    items = [v.strip() for v in raw.split(",") if v.strip()]
+    if not items:
         raise InputError(f"--set {path}", raw, "at least one value")
-    values = tuple(f"{x:g} {unit}" if unit else x for x in nums)
-    return SweepParameter(path, values)
+    split = [_split_unit(v) for v in items]
+    if not all(re.fullmatch(r"[-+0-9.eE ]+", num) for num, _ in split):
+        return SweepParameter(path, tuple(items))  # strings: lubricant presets etc.
+    # each value may carry its own unit ("30 degC,50 degC"); a bare number takes the unit
+    # written after the list ("15,33 L/min"), else the unit of the scene's current value
+    trailing = split[-1][1] or _existing_unit(scene_dict, path)
+    values = []
+    for num, unit in split:
+        x = _number(num.strip(), f"--set {path}")
+        unit = unit or trailing
+        values.append(f"{x:g} {unit}" if unit else x)
+    return SweepParameter(path, tuple(values))
 
 
 def get_path(d: Mapping[str, Any], path: str) -> Any:

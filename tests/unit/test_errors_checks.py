@@ -59,3 +59,11 @@ def test_zero_allowed_only_when_asked_and_int_inputs():
         check_positive("f", 0)
     with pytest.raises(InputError, match="finite"):
         check_finite("f", float("nan"))
+
+
+def test_missing_value_is_said_as_missing():
+    """A field given no value reads 'is missing', not '= None is not allowed'."""
+    assert str(InputError("supply.level", None, "an oil level for an oil bath")) == \
+        "supply.level is missing: an oil level for an oil bath"
+    assert str(InputError("supply.level", -1.0, "an oil level >= 0")) == \
+        "supply.level = -1.0 is not allowed: an oil level >= 0"

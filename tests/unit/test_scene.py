@@ -95,3 +95,28 @@ def test_output_interval_must_be_a_positive_time(bad):
 
     with pytest.raises(InputError, match="outputs.interval"):
         Outputs.from_dict(tomllib.loads(f"interval = {bad}"))
+
+
+def test_docstring_layout_models_names_are_real():
+    """The ``[models]`` block of the scene module's layout names only accepted keys and
+    registered models (it drifted once: 'raceway', 'traction' were never names)."""
+    import re
+    import tomllib
+
+    from thermobearing import scene as scene_module
+    from thermobearing.film import FILM
+    from thermobearing.heat_sources import HEAT_SOURCES
+    from thermobearing.kinematic_models import KINEMATICS
+    from thermobearing.simulation import MODEL_KEYS
+    from thermobearing.state import RACE_CONTROLS
+
+    doc = scene_module.__doc__
+    block = doc.split("[models]", 1)[1].split("\n    [", 1)[0]
+    text = "\n".join(line for line in block.splitlines()[1:] if "..." not in line)
+    models = tomllib.loads(re.sub(r"^    ", "", text, flags=re.M))
+    assert set(models) <= MODEL_KEYS
+    assert {"kinematics", "film", "heat_sources"} <= set(models)
+    assert models["kinematics"] in KINEMATICS
+    assert models["film"] in FILM
+    assert all(name in HEAT_SOURCES for name in models["heat_sources"])
+    assert models["control"] in RACE_CONTROLS

@@ -59,6 +59,16 @@ def test_losses_scene_has_no_network_and_balances_roles():
     assert res.citations
 
 
+def test_oil_bath_says_its_inlet_temperature_is_unused():
+    bath = loads_scene(BASE.replace('flow = "33 L/min"', 'method = "oil_bath"\nlevel = "20 mm"')
+                       + '[outputs]\nmode = "steady"\nwant = ["losses"]\n')
+    sim = Simulation(bath, progress=False)
+    assert any("supply.inlet_temperature (35 degC) is not used" in n for n in sim.notes)
+    assert "supply.inlet_temperature" in sim.describe_chain()
+    assert not any("inlet_temperature" in n
+               for n in Simulation(scene(["losses"]), progress=False).notes)
+
+
 def test_unknown_model_family_is_an_error():
     bad = loads_scene(BASE.replace('kinematics = "race_control"',
                                    'kinematics = "race_control"\ncolour = "red"'))

@@ -41,6 +41,24 @@ def test_parse_and_expand():
     assert all(s.speed == pytest.approx(1800 * math.pi / 30) for s in sc.schedule.steps)
 
 
+def test_values_with_their_own_units():
+    """Each value may carry its unit; a bare number takes the list's trailing unit, else the
+    scene value's; a range takes one unit after it."""
+    scene = load_scene()
+    d = scene.to_dict()
+    p = parse_set("supply.inlet_temperature=30degC,50 degC", d)
+    assert p.values == ("30 degC", "50 degC")
+    assert parse_set("supply.flow=15 L/min,0.5 L/s", d).values == ("15 L/min", "0.5 L/s")
+    assert parse_set("supply.flow=15,33 L/min", d).values == ("15 L/min", "33 L/min")
+    assert parse_set("supply.flow=15,33", d).values == ("15 L/min", "33 L/min")
+    assert parse_set("schedule.radial_load=1:3:1 kN", d).values == ("1 kN", "2 kN", "3 kN")
+    assert parse_set("lubricant.preset=ISO_VG32,ISO_VG68", d).values == ("ISO_VG32",
+                                                                        "ISO_VG68")
+    cases = expand(scene, [p])
+    temps = [loads_scene(c.scene_toml).supply.inlet_temperature for c in cases]
+    assert temps == pytest.approx([303.15, 323.15])
+
+
 @pytest.mark.parametrize("spec", ["supply.colour=1,2", "nosuch.field=3", "supply.flow",
                                   "supply.flow=3:1:1"])
 def test_bad_parameter(spec):
