@@ -21,8 +21,8 @@ from .geometry import (
     Bearing,
     CageGeometry,
     RollerBearing,
-    _diagonal_free_angle,
 )
+from .geometry_ball import _diagonal_free_angle
 from .materials import Material, get_material
 from .toml_files import read_toml
 from .units import to_si

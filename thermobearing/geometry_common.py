@@ -1,0 +1,102 @@
+"""Pieces shared by the ball and roller bearing classes: kind names, the characteristic-frequency
+record, envelope checks and the epicyclic kinematics of pure rolling.
+
+Kinematic conventions (outer ring fixed unless an outer speed is given):
+
+- gamma = D cos(alpha) / d_m (Harris & Kotzalas 2007, vol. 1 ch. 2; ``harris_kotzalas2007``).
+- Epicyclic cage speed ratio with equal contact angles, CSR = (1 - gamma)/2; paper 000 eq. 40
+  (``li2018_nu214_skidding``) for rollers, paper 004 section 2, omega_ct
+  (``luo2022_cage_slip_vibration``) for balls. With unequal inner/outer angles the
+  race-control forms of :mod:`thermobearing.kinematics` are used.
+- Characteristic frequencies: BPFO = Z f_cage, BPFI = Z (f_shaft - f_cage); with cage slip
+  s_c, f_cage = (1 - s_c) f_cage,th (paper 004, the f_bpo rule after its Fig. 11).
+
+Everything is SI (m, rad, Hz).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from .errors import InputError, check_positive, check_range
+
+BALL_KINDS = ("deep_groove", "angular_contact", "four_point")
+ROLLER_KINDS = ("cylindrical",)
+RACES = ("inner", "outer")
+
+
+class CharacteristicFrequencies(NamedTuple):
+    """Characteristic frequencies [Hz] (outer ring fixed unless stated).
+
+    shaft: inner-ring rotation frequency; cage: cage (fundamental train) frequency;
+    bpfo / bpfi: ball (roller) pass frequency over a point of the outer / inner ring;
+    ball_spin: rotation frequency of an element about its own axis relative to the cage.
+    """
+
+    shaft: float
+    cage: float
+    bpfo: float
+    bpfi: float
+    ball_spin: float
+
+
+
+def _check_envelope(prefix: str, bore: float, outer: float, width: float, element: float,
+                    element_name: str, n: int, pitch: float, count_name: str) -> None:
+    for name, value in (("bore", bore), ("outer_diameter", outer), ("width", width),
+                        (element_name, element), ("pitch_diameter", pitch)):
+        check_positive(f"{prefix}.{name}", value)
+    if outer <= bore:
+        raise InputError(f"{prefix}.outer_diameter", outer, f"a value > bore = {bore}")
+    section = 0.5 * (outer - bore)
+    if element >= section:
+        raise InputError(f"{prefix}.{element_name}", element,
+                         f"a value smaller than the radial section (D - d)/2 = {section:.6g} m")
+    if not bore < pitch < outer:
+        raise InputError(f"{prefix}.pitch_diameter", pitch,
+                         f"a value between bore {bore:.6g} m and outer diameter {outer:.6g} m")
+    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 3:
+        raise InputError(f"{prefix}.{count_name}", n, "an integer >= 3")
+    if n * element >= math.pi * pitch:
+        raise InputError(f"{prefix}.{count_name}", n,
+                         f"at most {int(math.pi * pitch / element)} elements of diameter "
+                         f"{element:.6g} m on the pitch circle (they would overlap)")
+
+
+def _check_rings(bearing: Any) -> None:
+    """The raceways must lie inside the ring envelope (rings of positive thickness)."""
+    if bearing.inner_raceway_diameter <= bearing.bore:
+        raise InputError("bearing.pitch_diameter", bearing.pitch_diameter,
+                         f"a value leaving an inner ring: raceway diameter "
+                         f"{bearing.inner_raceway_diameter:.6g} m <= bore {bearing.bore:.6g} m")
+    if bearing.outer_raceway_diameter >= bearing.outer_diameter:
+        raise InputError("bearing.pitch_diameter", bearing.pitch_diameter,
+                         f"a value leaving an outer ring: raceway diameter "
+                         f"{bearing.outer_raceway_diameter:.6g} m >= outer diameter "
+                         f"{bearing.outer_diameter:.6g} m")
+
+
+def _cage_ratio(gamma: Any) -> Any:
+    """Epicyclic cage/inner-ring speed ratio (1 - gamma)/2 (outer ring fixed)."""
+    return 0.5 * (1.0 - gamma)
+
+
+def _frequencies(shaft_hz: float, gamma: float, n: int, pitch: float, element: float,
+                 cage_slip: float, outer_hz: float) -> CharacteristicFrequencies:
+    """Frequencies of an epicyclic set with cage slip (paper 004, f_bpo with (1 - s_c)).
+
+    f_cage = (1 - s_c) [f_i (1 - gamma) + f_o (1 + gamma)] / 2; BPFO = Z |f_cage - f_o|;
+    BPFI = Z |f_i - f_cage|; element spin relative to the cage from rolling on the outer race
+    (which the cage slip leaves intact in paper 004's picture): f_spin = |f_cage - f_o| d_m
+    (1 + gamma) / D; with s_c = 0 this is Harris's (d_m / 2D) f_i (1 - gamma^2).
+    """
+    check_range("cage_slip", cage_slip, -1.0, 1.0, low_inclusive=False, high_inclusive=False)
+    check_positive("shaft_speed_hz", shaft_hz, allow_zero=True)
+    cage = (1.0 - cage_slip) * 0.5 * (shaft_hz * (1.0 - gamma) + outer_hz * (1.0 + gamma))
+    bpfo = n * abs(cage - outer_hz)
+    bpfi = n * abs(shaft_hz - cage)
+    spin = abs(cage - outer_hz) * pitch * (1.0 + gamma) / element
+    return CharacteristicFrequencies(shaft_hz, cage, bpfo, bpfi, spin)
