@@ -13,7 +13,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import ConvergenceError
-from .roller_dynamics import DynamicsModel, _mean, _params, _state_post, load_states
+from .roller_dynamics_integrate import _state_post
+from .roller_dynamics_model import DynamicsModel, load_states
+from .roller_dynamics_response import _mean
+from .roller_dynamics_rhs import _params
 
 
 def unbalance_orbital_force(m: DynamicsModel, cage_speed: float) -> float:

@@ -12,7 +12,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import InputError
-from .roller_dynamics import build_model, simulate
+from .roller_dynamics_integrate import simulate
+from .roller_dynamics_setup import build_model
 
 #: map parameters of paper 003 Figs. 7-12 and their SI units
 MAP_PARAMETERS = {"radial_load": "N", "speed": "rad/s", "axial_clearance": "m",

@@ -1,0 +1,194 @@
+"""Integration drivers of the paper 003 roller dynamics: the ``full`` model
+(:func:`simulate_full`, scipy's Radau IIA over whole orbits [hairer_wanner1996]) and the
+``reduced`` model (:func:`simulate_reduced`, frozen load states with the compiled fixed-step
+RK4 :func:`_rk4_frozen`); :func:`simulate` dispatches. The models and their accuracy are
+described in :mod:`thermobearing.skidding.roller_dynamics`; the right-hand side is
+:mod:`~thermobearing.skidding.roller_dynamics_rhs`, the statistics
+:mod:`~thermobearing.skidding.roller_dynamics_response`.
+
+numba's cache does not notice edits of compiled callees in other files (the RK4 loop inlines
+the right-hand side): :func:`thermobearing.contact_traction.refresh_stale_caches`. Units: SI.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Any
+
+import numpy as np
+from numba import njit
+from scipy.integrate import solve_ivp
+
+from ..contact_traction import refresh_stale_caches
+from ..errors import ConvergenceError, InputError
+from .roller_dynamics_model import DynamicsModel, load_states
+from .roller_dynamics_response import RollerResponse, _post, _response
+from .roller_dynamics_rhs import _params, _rhs, _roller_rhs
+
+
+def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: float = 3.0,
+                  rtol: float = 1e-6, samples_per_period: int = 64,
+                  start_azimuth: float = 0.0, spin_dof: bool = False) -> RollerResponse:
+    """Integrate X, alpha, z (pocket) and psi of one roller over ``n_orbits`` orbits
+    (Radau), the load state (raceway loads, spin, quasi-static pocket force) following the
+    azimuth.
+
+    ``spin_dof=False`` (default): the spin follows the orbit's spins of the model (for a
+    coupled model, :func:`couple_spins`, the quasi-static balance of the raceway, pocket
+    and mean rib moments). ``spin_dof=True`` adds omega_r as a degree of freedom,
+    J_p omega_r' = -k (omega_r - omega(phi)) - M_bias(phi) + M_rib,x(t), with k the spin
+    stiffness of the quasi-static traction model: for unloaded rollers J_p/k is ~13 ms,
+    three orbits at the base case, so that option needs many more orbits to settle.
+    The first ``warmup_periods`` spin periods are integrated and discarded; statistics
+    are taken over the following ``n_orbits`` orbits. ConvergenceError if the integrator
+    fails.
+    """
+    t0 = time.process_time()
+    n_calls = [0]
+    g = m.geom
+    c = _params(m)
+
+    # state: X, X', alpha, alpha', z, z', psi (, omega_r with spin_dof)
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        n_calls[0] += 1
+        phi = start_azimuth + m.cage_speed * t
+        n_i, n_o, w_qs = m.at(phi)
+        w = y[7] if spin_dof else w_qs
+        k = m.stiffness_at(phi)
+        d = _roller_rhs(m, c, y, n_i, n_o, w, y[6], m.pocket_force_at(phi),
+                        m.circumferential_damping(k))
+        if not spin_dof:
+            return np.array([d[0], d[1], d[2], d[3], d[4], d[5], w])
+        wdot = (-k * (y[7] - w_qs) - m.bias_at(phi) + d[6]) / m.polar_inertia
+        return np.array([d[0], d[1], d[2], d[3], d[4], d[5], w, wdot])
+
+    _, _, w0 = m.at(start_azimuth)
+    f0 = m.pocket_force_at(start_azimuth)
+    z0 = math.copysign(0.5 * m.pocket_clearance, f0) if m.pocket_dof else 0.0
+    period = 2.0 * math.pi / max(abs(w0), 1.0)
+    t_warm = warmup_periods * period
+    t_end = t_warm + n_orbits * 2.0 * math.pi / m.cage_speed
+    n_out = int(samples_per_period * (t_end - t_warm) / period) + 2
+    t_eval = np.linspace(t_warm, t_end, n_out)
+    n_y = 8 if spin_dof else 7
+    atol = np.array([1e-9, 1e-6, 1e-7, 1e-3, 1e-9, 1e-6, 1e-6, 1e-2])[:n_y]
+    y0 = np.array([0.0, 0.0, 0.0, 0.0, z0, 0.0, 0.0, w0])[:n_y]
+    sol = solve_ivp(rhs, (0.0, t_end), y0,
+                    method="Radau", rtol=rtol, atol=atol, t_eval=t_eval,
+                    max_step=period / 8.0)
+    if not sol.success:
+        raise ConvergenceError("roller_dynamics.full", float("nan"), sol.message,
+                               {"t": sol.t[-1] if sol.t.size else 0.0})
+    y = sol.y
+    phis = start_azimuth + m.cage_speed * sol.t
+    spin = (y[7] if spin_dof else np.array([m.at(p)[2] for p in phis]))
+    post = _post(m, sol.t, y[0], y[1], y[2], y[3], spin, y[4], y[5],
+                 np.array([m.pocket_force_at(p) for p in phis]))
+    return _response(post, "full", time.process_time() - t0, n_calls[0], g)
+
+
+def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods: float = 3.0,
+                     steps_per_period: int = 400, samples_per_period: int = 100
+                     ) -> RollerResponse:
+    """Skew and axial motion at the orbit's distinct frozen load states (the ``reduced`` model of
+    :mod:`thermobearing.skidding.roller_dynamics`).
+
+    Each state is integrated with classical RK4 at a fixed step of 1/``steps_per_period``
+    spin period, and at most 1/omega_c with omega_c the rib contact's axial frequency at a
+    20 um approach (~6e5 rad/s: h <= 1.6 us; RK4 is stable to h omega < 2.8) for
+    ``warmup_periods`` + ``periods`` spin periods; statistics over the last ``periods``,
+    averaged with the states' orbit shares. The mean rib spin moment changes the spin
+    quasi-statically by M / k_omega before the slip is evaluated.
+    """
+    t0 = time.process_time()
+    n_calls = 0
+    weights = []
+    c = _params(m)
+    for n_i, n_o, w_qs, share, k, f_d in load_states(m):
+        post, calls = _state_post(m, c, n_i, n_o, w_qs, periods, warmup_periods,
+                                  steps_per_period, samples_per_period, k, f_d)
+        n_calls += calls
+        weights.append((share, post))
+    return _response(weights[0][1], "reduced", time.process_time() - t0, n_calls, m.geom,
+                     weights)
+
+
+def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> RollerResponse:
+    """Dispatch to :func:`simulate_full` or :func:`simulate_reduced`."""
+    if model == "full":
+        return simulate_full(m, **options)
+    if model == "reduced":
+        return simulate_reduced(m, **options)
+    raise InputError("model", model, ("full", "reduced"))
+
+
+def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: float,
+                periods: float, warmup_periods: float, steps_per_period: int,
+                samples_per_period: int, k: float = 0.0, f_d: float = 0.0
+                ) -> tuple[dict[str, np.ndarray], int]:
+    """RK4 run of the skew/axial/pocket motion at one frozen load state and spin ``w``
+    [rad/s] with spin stiffness ``k`` [N m s] (raceway damping of the pocket motion) and
+    quasi-static pocket force ``f_d`` [N]: (post-processed samples, right-hand-side calls).
+    ConvergenceError if it diverges."""
+    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
+    h_max = 1.0 / omega_c
+    period = 2.0 * math.pi / max(abs(w), 1.0)
+    n_per = max(steps_per_period, int(math.ceil(period / h_max)))
+    h = period / n_per
+    n_warm = int(round(warmup_periods * n_per))
+    n_keep = int(round(periods * n_per))
+    every = max(1, n_per // samples_per_period)
+    z0 = math.copysign(0.5 * m.pocket_clearance, f_d) if m.pocket_dof else 0.0
+    rows = _rk4_frozen(c, float(n_i), float(n_o), float(w), float(f_d),
+                       m.circumferential_damping(k), z0, h, n_warm, n_keep, every)
+    if not np.all(np.isfinite(rows)):
+        raise ConvergenceError("roller_dynamics.reduced", float("inf"),
+                               "RK4 diverged (reduce the step: steps_per_period)",
+                               {"state": (n_i, n_o, w)})
+    spin = np.full(rows.shape[0], w)
+    post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin,
+                 rows[:, 5], rows[:, 6], f_d)
+    return post, 4 * (n_warm + n_keep)
+
+
+@njit(cache=True)
+def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, c_z: float,
+                z0: float, h: float, n_warm: int, n_keep: int, every: int) -> np.ndarray:
+    """Classical RK4 at a frozen load state; returns (n_keep // every, 7) rows
+    (t, X, X', alpha, alpha', z, z') after ``n_warm`` discarded steps (start at z0)."""
+    y = np.zeros(6)
+    y[4] = z0
+    k = np.zeros((4, 6))
+    out = np.zeros((n_keep // every, 7))
+    t = 0.0
+    j = 0
+    for step in range(n_warm + n_keep):
+        for stage in range(4):
+            c = 0.0 if stage == 0 else (0.5 if stage < 3 else 1.0)
+            yy = y + c * h * k[stage - 1] if stage > 0 else y.copy()
+            tt = t + c * h
+            r = _rhs(p, yy[0], yy[1], yy[2], yy[3], yy[4], yy[5], n_i, n_o, spin, spin * tt,
+                     f_d, c_z)
+            for q in range(6):
+                k[stage, q] = r[q]
+        y = y + h / 6.0 * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])
+        t += h
+        if step >= n_warm and (step - n_warm) % every == 0 and j < out.shape[0]:
+            out[j, 0] = t
+            out[j, 1:] = y
+            j += 1
+    return out
+
+
+def _refresh_caches() -> None:
+    """Flush the RK4 kernel's numba cache when its inlined callees changed (rhs, rib, pocket
+    modules; :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
+    from .. import rib
+    from . import roller_dynamics_pocket, roller_dynamics_rhs
+
+    refresh_stale_caches("roller_dynamics_integrate", (_rk4_frozen,),
+                         (roller_dynamics_rhs, rib, roller_dynamics_pocket))
+
+
+_refresh_caches()
