@@ -22,7 +22,9 @@ there: measured in ``benchmarks/bm1_work_precision.py``), CSC sparse above.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -316,11 +318,9 @@ class Assembler:
             dT = Ta - Tb
             ga = gb = 0.0
             if ia >= 0:
-                ga = (float(model.conductance(Ta + step, Tb))
-                      - float(model.conductance(Ta - step, Tb))) / (2.0 * step)
+                ga = _derivative(lambda x, m=model, b=Tb: m.conductance(x, b), Ta, step)
             if ib >= 0:
-                gb = (float(model.conductance(Ta, Tb + step))
-                      - float(model.conductance(Ta, Tb - step))) / (2.0 * step)
+                gb = _derivative(lambda x, m=model, a=Ta: m.conductance(a, x), Tb, step)
             if not (math.isfinite(ga) and math.isfinite(gb)):
                 raise InputError(what, (ga, gb), "a conductance model with finite "
                                  "temperature derivatives")
@@ -341,6 +341,21 @@ class Assembler:
         if i is None:
             return self.network.boundary_temperature(node)
         return float(T[i])
+
+
+def _derivative(g: Callable[[float], Any], x: float, step: float) -> float:
+    """dg/dx by the central difference over +-``step``; at the edge of the model's range
+    (an InputError one side, e.g. air at its 2000 K limit) the one-sided difference on the
+    side the model accepts."""
+    try:
+        return (float(g(x + step)) - float(g(x - step))) / (2.0 * step)
+    except InputError:
+        pass
+    g0 = float(g(x))
+    try:
+        return (float(g(x + step)) - g0) / step
+    except InputError:
+        return (g0 - float(g(x - step))) / step
 
 
 def assembler_for(network: ThermalNetwork) -> Assembler:

@@ -16,7 +16,8 @@ oil in the cavity) is written in the docstring; change it after construction wit
 ``set_capacity``/``set_edge_conductance`` if you know better.
 
 Role map of the four-node template (contract): outer_ring -> housing, inner_ring -> shaft,
-elements -> balls, cage -> oil, oil -> oil.
+elements -> balls, cage -> oil, oil -> oil. In a roller bearing the element node is named
+``rollers`` (same role, same equations with the rollers' mass and surface).
 """
 
 from __future__ import annotations
@@ -88,6 +89,11 @@ def _element(bearing) -> dict[str, Any]:
             "area": math.pi * D * L + 0.5 * math.pi * D**2}
 
 
+def _element_node(bearing) -> str:
+    """Name of the rolling-element node: ``balls`` or ``rollers``."""
+    return "balls" if _is_ball(bearing) else "rollers"
+
+
 def _oil_properties(lubricant, T: float) -> tuple[float, float]:
     return float(lubricant.density(T)), float(lubricant.specific_heat(T))
 
@@ -150,7 +156,7 @@ def four_node_paper002(
 
     Nodes [J/K] (C = rho c V, eq. 21):
 
-    - ``balls``: Z m_ball c_ball;
+    - ``balls`` (``rollers`` in a roller bearing): Z m_ball c_ball;
     - ``housing``: housing annulus pi/4 (D_h^2 - D^2) L_h plus the outer ring, estimated
       as the annulus between the outer diameter D and the outer land diameter D_Lo over
       the width B;
@@ -220,7 +226,8 @@ def four_node_paper002(
     if bearing.cage.material is not None:
         c_oil += bearing.cage_mass * bearing.cage.material.specific_heat
 
-    net.add_node(p + "balls", c_balls, group=group, role="elements")
+    e = _element_node(bearing)
+    net.add_node(p + e, c_balls, group=group, role="elements")
     net.add_node(p + "housing", c_house, group=group, role="outer_ring")
     net.add_node(p + "shaft", c_shaft, group=group, role="inner_ring")
     net.add_node(p + "oil", c_oil, group=group, role=("oil", "cage"))
@@ -228,12 +235,12 @@ def four_node_paper002(
     axes = _contact_axes(bearing, ball_load)
     for race, node in (("outer", "housing"), ("inner", "shaft")):
         a, b = axes[race]
-        net.add_edge(p + "balls", p + node, _contact(contact_model, a, b, ball, ring, Z),
-                     name=f"{p}balls--{node} (Hertz, eq. 26)")
+        net.add_edge(p + e, p + node, _contact(contact_model, a, b, ball, ring, Z),
+                     name=f"{p}{e}--{node} (Hertz, eq. 26)")
     A_boil = Z * el["area"]
     A_hoil = math.pi * d_lo * L_h
     A_soil = math.pi * d_li * L_h
-    net.add_edge(p + "balls", p + "oil", Convection(h_oil, A_boil), name=f"{p}balls--oil")
+    net.add_edge(p + e, p + "oil", Convection(h_oil, A_boil), name=f"{p}{e}--oil")
     net.add_edge(p + "housing", p + "oil", Convection(h_oil, A_hoil), name=f"{p}housing--oil")
     net.add_edge(p + "shaft", p + "oil", Convection(h_oil, A_soil), name=f"{p}shaft--oil")
     A_hatm = math.pi * (D_h**2 - d_lo**2) / 2.0 + math.pi * D_h * L_h
@@ -341,15 +348,16 @@ def seven_node(
     net.add_node(p + "housing", c_house, group=group)
     net.add_node(p + "inner_ring", c_inner, group=group, role="inner_ring")
     net.add_node(p + "shaft", c_shaft, group=group)
-    net.add_node(p + "balls", base.capacity("__tmp__balls"), group=group, role="elements")
+    e = _element_node(bearing)
+    net.add_node(p + e, base.capacity(f"__tmp__{e}"), group=group, role="elements")
     net.add_node(p + "cage", max(c_cage, 0.0), group=group, role="cage")
     net.add_node(p + "oil", c_oil, group=group, role="oil")
 
     net.add_edge(p + "outer_ring", p + "housing", ContactFit(fit_conductance, math.pi * D * B))
     net.add_edge(p + "inner_ring", p + "shaft", ContactFit(fit_conductance, math.pi * d * B))
-    net.add_edge(p + "balls", p + "outer_ring", edge["__tmp__balls--housing (Hertz, eq. 26)"])
-    net.add_edge(p + "balls", p + "inner_ring", edge["__tmp__balls--shaft (Hertz, eq. 26)"])
-    net.add_edge(p + "balls", p + "oil", edge["__tmp__balls--oil"])
+    net.add_edge(p + e, p + "outer_ring", edge[f"__tmp__{e}--housing (Hertz, eq. 26)"])
+    net.add_edge(p + e, p + "inner_ring", edge[f"__tmp__{e}--shaft (Hertz, eq. 26)"])
+    net.add_edge(p + e, p + "oil", edge[f"__tmp__{e}--oil"])
     net.add_edge(p + "outer_ring", p + "oil", Convection(h_oil, math.pi * d_lo * B))
     net.add_edge(p + "inner_ring", p + "oil", Convection(h_oil, math.pi * d_li * B))
     net.add_edge(p + "housing", p + "oil", edge["__tmp__housing--oil"])
