@@ -29,6 +29,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
+from .errors import InputError  # noqa: E402
 from .results import Results  # noqa: E402
 
 SECTIONS = ("Scene", "Model chain", "Figures", "Energy audit", "Validity warnings",
@@ -101,19 +102,51 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
     return _png(fig)
 
 
+_OPERATING = (("speed [rpm]", "r/min"), ("radial load [kN]", "kN radial"),
+              ("axial load [kN]", "kN axial"))
+
+
+def operating_axis(df: pd.DataFrame) -> tuple[str, dict[Any, float], list[str], str]:
+    """How to lay the operating points of a losses / kinematics table along an axis.
+
+    Returns (key column, position of each key value, tick labels, axis label). When one
+    of speed, radial load and axial load varies and the steps have distinct values of it
+    (a load or speed sweep), the axis is that quantity; otherwise (several vary, or a
+    value repeats) it is the step, labelled with the quantities that vary.
+    """
+    cols = [c for c, _ in _OPERATING if c in df]
+    key = "step" if "step" in df else (cols[-1] if cols else None)
+    if key is None:
+        raise InputError("table", list(df.columns), "a step or an operating-point column")
+    points = df.drop_duplicates(key).sort_values(key)
+    varying = [c for c in cols if points[c].nunique() > 1]
+    if len(varying) == 1 and points[varying[0]].is_unique:
+        col = varying[0]
+        order = points.sort_values(col)
+        pos = {k: float(i) for i, k in enumerate(order[key])}
+        return key, pos, [f"{v:g}" for v in order[col]], col
+    pos = {k: float(i) for i, k in enumerate(points[key])}
+    units = dict(_OPERATING)
+    labels = [" / ".join(f"{row[c]:g} {units[c]}" for c in varying) or f"{row[key]}"
+              for _, row in points.iterrows()]
+    return key, pos, labels, "step" if key == "step" else key
+
+
 def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
-    """Stacked power-loss bars [W] per operating step, one colour per source."""
+    """Stacked power-loss bars [W] per operating step, one colour per source (paper 002
+    Fig. 15); the axis is the swept quantity, or the step when several vary."""
     df = losses if bearing is None else losses[losses["bearing"] == bearing]
-    pivot = df.pivot_table(index="axial load [kN]", columns="source", values="power [W]",
+    key, pos, labels, xlabel = operating_axis(df)
+    pivot = df.pivot_table(index=key, columns="source", values="power [W]",
                            aggfunc="sum").fillna(0.0)
+    x = np.array([pos[k] for k in pivot.index])
     fig, ax = plt.subplots(figsize=(8, 4.5))
     bottom = np.zeros(len(pivot))
-    x = np.arange(len(pivot))
     for src in pivot.columns:
         ax.bar(x, pivot[src].to_numpy(), bottom=bottom, label=src)
         bottom += pivot[src].to_numpy()
-    ax.set_xticks(x, [f"{v:g}" for v in pivot.index], rotation=90, fontsize=7)
-    ax.set_xlabel("axial load [kN]")
+    ax.set_xticks(np.arange(len(labels)), labels, rotation=90, fontsize=7)
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("power loss [W]" + (f" ({bearing})" if bearing else ""))
     ax.legend(fontsize=7)
     ax.grid(axis="y", alpha=0.3)
@@ -121,15 +154,32 @@ def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
 
 
 def fig_csr(kin: pd.DataFrame) -> bytes:
-    """Cage speed ratio against axial load, with the theoretical (epicyclic) ratio."""
+    """Cage speed ratio against the swept quantity (paper 002 Fig. 10: axial load, one line
+    per speed when the protocol repeats the load sweep at several speeds), with the
+    theoretical (epicyclic) ratio dashed; against the step when other quantities vary."""
     fig, ax = plt.subplots(figsize=(7, 4.2))
-    for (bearing, rpm), g in kin.groupby(["bearing", "speed [rpm]"]):
-        g = g.sort_values("axial load [kN]")
-        ax.plot(g["axial load [kN]"], g["cage speed ratio [-]"], "o-", ms=3,
-                label=f"{bearing}, {rpm:.0f} r/min")
+    points = kin.drop_duplicates("step") if "step" in kin else kin
+    varying = {c for c, _ in _OPERATING if c in kin and points[c].nunique() > 1}
+    per_speed = varying == {"speed [rpm]", "axial load [kN]"}
+    groups = kin.groupby(["bearing", "speed [rpm]"] if per_speed else ["bearing"])
+    labels: list[str] = []
+    for name, g in groups:
+        name = name if isinstance(name, tuple) else (name,)
+        if per_speed:
+            g = g.sort_values("axial load [kN]").assign(_x=lambda d: d["axial load [kN]"])
+            xlabel = "axial load [kN]"
+        else:
+            key, pos, labels, xlabel = operating_axis(g)
+            g = g.assign(_x=[pos[k] for k in g[key]]).sort_values("_x")
+        label = name[0] if len(name) == 1 else f"{name[0]}, {name[1]:.0f} r/min"
+        ax.plot(g["_x"], g["cage speed ratio [-]"], "o-", ms=3, label=label)
         if "theoretical cage speed ratio [-]" in g:
-            ax.plot(g["axial load [kN]"], g["theoretical cage speed ratio [-]"], "k--", lw=0.8)
-    ax.set_xlabel("axial load [kN]")
+            ax.plot(g["_x"], g["theoretical cage speed ratio [-]"], "k--", lw=0.8)
+    if labels:
+        every = max(1, math.ceil(len(labels) / 30))
+        ax.set_xticks(np.arange(0, len(labels), every), labels[::every], rotation=90,
+                      fontsize=7)
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("cage speed ratio CSR [-]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
@@ -285,7 +335,7 @@ def attach_figures(results: Results, scene: Any) -> None:
         first = losses["bearing"].iloc[0]
         results.figures["power_losses"] = fig_loss_bars(losses, bearing=first)
     kin = results.tables.get("kinematics")
-    if kin is not None and not kin.empty and kin["axial load [kN]"].nunique() > 1:
+    if kin is not None and not kin.empty and len(kin) > 1:
         results.figures["cage_speed_ratio"] = fig_csr(kin)
 
 

@@ -74,3 +74,34 @@ def test_writer_appends(tmp_path):
     w.append("losses", [{"a": 3, "b": 4}])
     df = pd.read_csv(tmp_path / "losses.csv")
     assert df["a"].tolist() == [1, 3]
+
+
+def _steps(rows):
+    return pd.DataFrame([{"step": i, "bearing": "b", "speed [rpm]": n, "radial load [kN]": fr,
+                          "axial load [kN]": fa, "source": "s", "power [W]": 1.0}
+                         for i, (n, fr, fa) in enumerate(rows)])
+
+
+def test_operating_axis_follows_what_the_schedule_sweeps():
+    """The loss bars and the CSR plot lay the steps along the swept quantity; when several
+    vary or a value repeats, along the step (three speed steps at 0 kN axial were once
+    stacked into one bar at 'axial load 0')."""
+    from thermobearing.report import operating_axis
+
+    key, pos, labels, xlabel = operating_axis(_steps([(1800, 1, a) for a in (0, 2, 4)]))
+    assert (key, xlabel, labels) == ("step", "axial load [kN]", ["0", "2", "4"])
+    key, pos, labels, xlabel = operating_axis(_steps([(n, 2, 0) for n in (3000, 1000, 2000)]))
+    assert xlabel == "speed [rpm]" and labels == ["1000", "2000", "3000"]
+    assert pos == {1: 0.0, 2: 1.0, 0: 2.0}
+    key, pos, labels, xlabel = operating_axis(_steps([(2000, 2, 0), (5000, 2, 0),
+                                                      (8000, 0.2, 0)]))
+    assert xlabel == "step" and len(set(pos.values())) == 3
+    assert labels[2] == "8000 r/min / 0.2 kN radial"
+    key, pos, labels, xlabel = operating_axis(_steps([(1000, 1, 0), (2000, 1, 0),
+                                                      (1000, 1, 0)]))
+    assert xlabel == "step" and labels == ["1000 r/min", "2000 r/min", "1000 r/min"]
+    png = fig_loss_bars(_steps([(2000, 2, 0), (5000, 2, 0), (8000, 0.2, 0)]))
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    kin = _steps([(n, 1, a) for n in (900, 1800) for a in (0, 2)]).assign(
+        **{"cage speed ratio [-]": 0.4, "theoretical cage speed ratio [-]": 0.45})
+    assert fig_csr(kin)[:8] == b"\x89PNG\r\n\x1a\n"
