@@ -192,7 +192,8 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
     n = len(components)
     cols = min(3, n)
     rows = math.ceil(n / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3.3 * rows), squeeze=False)
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3.3 * rows), squeeze=False,
+                             layout="constrained")
     for ax, comp in zip(axes.flat, components, strict=False):
         pv = summary.pivot_table(index=y, columns=x, values=comp, aggfunc="mean")
         cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
@@ -207,20 +208,29 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
 
 
 def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
-               group: str | None = None) -> bytes:
-    """What-if curves: each result in ``ys`` against the swept ``x`` (e.g. oil flow)."""
-    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys), 3.5), squeeze=False)
-    groups = summary.groupby(group) if group else [(None, summary)]
+               group: str | Sequence[str] | None = None) -> bytes:
+    """What-if curves: each result in ``ys`` against the swept ``x`` (e.g. oil flow), one
+    curve per value combination of the ``group`` column(s) (the other swept parameters)."""
+    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys), 3.5), squeeze=False,
+                             layout="constrained")
+    by = [group] if isinstance(group, str) else list(group or [])
+    groups = summary.groupby(by) if by else [((), summary)]
     for key, g in groups:
+        key = key if isinstance(key, tuple) else (key,)
+        label = ", ".join(f"{c} = {_fmt_value(v)}" for c, v in zip(by, key, strict=True))
         g = g.sort_values(x)
         for ax, y in zip(axes.flat, ys, strict=True):
-            ax.plot(g[x], g[y], "o-", label=None if key is None else f"{group} = {key}")
+            ax.plot(g[x], g[y], "o-", label=label or None)
             ax.set_xlabel(x, fontsize=8)
             ax.set_ylabel(y, fontsize=8)
             ax.grid(alpha=0.3)
-    if group:
+    if by:
         axes.flat[0].legend(fontsize=7)
     return _png(fig)
+
+
+def _fmt_value(v: Any) -> str:
+    return f"{v:g}" if isinstance(v, (int, float, np.number)) else str(v)
 
 
 # ---------------------------------------------------------------------------

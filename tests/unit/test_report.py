@@ -105,3 +105,30 @@ def test_operating_axis_follows_what_the_schedule_sweeps():
     kin = _steps([(n, 1, a) for n in (900, 1800) for a in (0, 2)]).assign(
         **{"cage speed ratio [-]": 0.4, "theoretical cage speed ratio [-]": 0.45})
     assert fig_csr(kin)[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_sweep_report_separates_every_swept_parameter(tmp_path):
+    """Three swept parameters: the what-if curves have one curve per combination of the
+    other two, and the loss maps over the first two numeric ones are drawn per value of
+    the third (they were once averaged over it)."""
+    import itertools
+    import json
+
+    from thermobearing.commands.report import sweep_report
+
+    rows, store = [], []
+    for i, (n, fa, q) in enumerate(itertools.product((600, 1200, 1800), (2, 10), (15, 33))):
+        params = {"schedule.speed": f"{n} rpm", "schedule.axial_load": f"{fa} kN",
+                  "supply.flow": f"{q} L/min"}
+        result = {"total loss [W]": n * (1 + fa / 100) * q / 33, "churning [W]": n * q / 66,
+                  "pocket [W]": n * fa / 100, "max over-skidding [%]": fa / n}
+        rows.append({"case": f"c{i}", **params, **result})
+        store.append(json.dumps({"case": f"c{i}", "params": params, "result": result}))
+    pd.DataFrame(rows).to_csv(tmp_path / "summary.csv", index=False)
+    (tmp_path / "cases.jsonl").write_text("\n".join(store) + "\n", encoding="utf-8")
+    text = sweep_report(tmp_path).read_text(encoding="utf-8")
+    captions = re.findall(r"<figcaption>([^<]*)</figcaption>", text)
+    assert "loss maps (supply.flow [L/min] = 15.0)" in captions
+    assert "loss maps (supply.flow [L/min] = 33.0)" in captions
+    assert sum(c.startswith("what-if") for c in captions) == 3
+    assert len(re.findall(r'src="data:image/png;base64,', text)) == len(captions) == 5

@@ -59,6 +59,11 @@ def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
     return out
 
 
+#: loss-map figures per sweep report (one per value combination of the parameters beyond
+#: the first two numeric ones)
+MAX_MAP_SLICES = 4
+
+
 def sweep_report(folder: Path) -> Path:
     from ..report import fig_loss_maps, fig_whatif, figure_html
 
@@ -79,19 +84,31 @@ def sweep_report(folder: Path) -> Path:
     for x in pcols:
         if not pd.api.types.is_numeric_dtype(df[x]):
             continue
-        group = next((p for p in pcols if p != x), None)
+        group = [p for p in pcols if p != x]
         ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + temps[:2]
         if ys:
             figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)
     numeric = [c for c in pcols if pd.api.types.is_numeric_dtype(df[c])]
+    notes: list[str] = []
     if len(numeric) >= 2 and losses:
-        figs["loss maps"] = fig_loss_maps(df, numeric[0], numeric[1], losses)
+        x, y = numeric[:2]
+        rest = [c for c in pcols if c not in (x, y)]
+        slices = list(df.groupby(rest)) if rest else [((), df)]
+        for key, sub in slices[:MAX_MAP_SLICES]:
+            key = key if isinstance(key, tuple) else (key,)
+            where = ", ".join(f"{c} = {v}" for c, v in zip(rest, key, strict=True))
+            figs[f"loss maps ({where})" if where else "loss maps"] = \
+                fig_loss_maps(sub, x, y, losses)
+        if len(slices) > MAX_MAP_SLICES:
+            notes.append(f"loss maps drawn for the first {MAX_MAP_SLICES} of {len(slices)} "
+                         f"combinations of {', '.join(rest)}; every case is in the summary")
     html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
             "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
             "td,th{padding:2px 6px;border-bottom:1px solid #ddd}</style></head><body>",
             f"<h1>Sweep report: {folder.name}</h1>",
             f"<p>{len(df)} cases; swept: {', '.join(params)}</p>",
+            *(f"<p>{n}</p>" for n in notes),
             "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
             "<h2>Summary</h2>", df.to_html(index=False, float_format=lambda v: f"{v:.4g}"),
             "</body></html>"]
