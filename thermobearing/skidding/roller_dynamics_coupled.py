@@ -88,15 +88,10 @@ import numpy as np
 from numba import njit
 
 from ..errors import ConvergenceError, InputError, check_positive
-from .roller_dynamics import (
-    DynamicsModel,
-    RollerResponse,
-    _params,
-    _post,
-    _response,
-    _rhs_ring,
-)
+from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_pocket import pocket_force_z
+from .roller_dynamics_response import RollerResponse, _post, _response
+from .roller_dynamics_rhs import _params, _rhs_ring
 from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
 
 #: band of the cage speed around the quasi-static one, as a fraction (simulate_coupled):
@@ -640,3 +635,21 @@ def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: i
 
 __all__ = ["DEFAULT_CAGE_BAND", "MAX_TABLE_BUILDS", "N_ROLLER_STATES", "cage_inertia",
            "cage_land_coefficient", "inner_ring_mass", "simulate_coupled"]
+
+
+def _refresh_caches() -> None:
+    """Flush the kernels' numba caches when a module whose compiled functions they inline
+    changed (roller_dynamics_rhs's ``_rhs_ring``, rib.py, roller_dynamics_pocket.py,
+    roller_dynamics_table.py; :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
+    from .. import rib
+    from ..contact_traction import refresh_stale_caches
+    from . import roller_dynamics_pocket, roller_dynamics_rhs, roller_dynamics_table
+
+    refresh_stale_caches("roller_dynamics_coupled",
+                         (_pocket_film_friction, _interp_sorted, _deriv_into,
+                          _refresh_from_table, _integrate),
+                         (roller_dynamics_rhs, rib, roller_dynamics_pocket,
+                          roller_dynamics_table))
+
+
+_refresh_caches()
