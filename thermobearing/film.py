@@ -32,7 +32,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from .errors import InputError, ValidityWarning, check_positive
+from .errors import InputError, ValidityWarning, check_finite, check_positive
 from .registry import Registry
 
 FILM: Registry[Callable[..., Any]] = Registry(
@@ -386,6 +386,7 @@ def thermal_loading(entrainment_speed: Any, dynamic_viscosity: Any,
 
     Cheng's / Murch-Wilson's inlet-heating parameter (Gupta et al. 1992; Wilson & Sheu 1983).
     """
+    check_finite("entrainment_speed", entrainment_speed)  # NaN gave NaN silently (session 10)
     check_positive("dynamic_viscosity", dynamic_viscosity)
     check_positive("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
                    allow_zero=True)
@@ -423,6 +424,7 @@ def wilson_sheu_1983(entrainment_speed: Any, dynamic_viscosity: Any,
     """
     big_l = np.asarray(thermal_loading(entrainment_speed, dynamic_viscosity,
                                        temperature_viscosity_coefficient, thermal_conductivity))
+    check_finite("slide_to_roll", slide_to_roll)
     s = np.abs(np.asarray(slide_to_roll, dtype=float))
     _warn_range("wilson_sheu_1983", L=(big_l, (0.0, 10.0)), S=(s, (0.0, 2.0)))
     return (1.0 / (1.0 + 0.241 * (1.0 + 14.8 * s**0.83) * big_l**0.64))[()]
@@ -447,12 +449,18 @@ def gupta_1992(entrainment_speed: Any, dynamic_viscosity: Any,
     """
     big_l = np.asarray(thermal_loading(entrainment_speed, dynamic_viscosity,
                                        temperature_viscosity_coefficient, thermal_conductivity))
+    check_finite("slide_to_roll", slide_to_roll)
     s = np.abs(np.asarray(slide_to_roll, dtype=float))
     check_positive("max_pressure", max_pressure, allow_zero=True)
     check_positive("effective_modulus", effective_modulus)
     ph = np.asarray(max_pressure, dtype=float) / np.asarray(effective_modulus, dtype=float)
     _warn_range("gupta_1992", L=(big_l, (0.0, 10.0)), S=(s, (0.0, 2.0)), p_over_E=(ph, (0, 0.01)))
-    phi = (1.0 - 13.2 * ph * big_l**0.42) / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * big_l**0.64)
+    with np.errstate(invalid="ignore"):
+        phi = (1.0 - 13.2 * ph * big_l**0.42) / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83)
+                                                 * big_l**0.64)
+    # L -> inf (L overflows for absurd speeds): numerator ~ -L^0.42 or 1, denominator ~ L^0.64,
+    # so phi -> 0 (clipped below); inf/inf would otherwise be NaN (session 10)
+    phi = np.where(np.isinf(big_l), 0.0, phi)
     if np.any(phi < 0.05):
         warnings.warn("gupta_1992: phi_T below 0.05 clipped (outside the fitted regime)",
                       ValidityWarning, stacklevel=2)

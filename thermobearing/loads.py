@@ -564,6 +564,12 @@ def _rigid_pair_nb(cpsi: np.ndarray, tab: np.ndarray, D: float, dm: float, ep: f
         r0, r1 = -res[0], -res[1]
         m00, m01, m10, m11 = Jm[0, 0] - k_reg, Jm[0, 1], Jm[1, 0], Jm[1, 1] - k_reg
         det = m00 * m11 - m01 * m10
+        if not (abs(det) > 0.0 and math.isfinite(det)):
+            # singular 2 x 2 system (found by a property test: a deep-groove bearing under a
+            # radial load of 1 N or less at rest, the axial row vanishing as the
+            # regularisation decays): keep the last displacement as the start, the full
+            # Newton of ball_load_distribution takes it from there
+            break
         d0 = (m11 * r0 - m01 * r1) / det
         d1 = (m00 * r1 - m10 * r0) / det
         lam = min(1.0, 0.01 * D / max(max(abs(d0), abs(d1)), 1e-300))
@@ -744,6 +750,19 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     norm, it, ok = _ld_solve(bx, br, u, cpsi, tab, c, np.ascontiguousarray(wm, dtype=float),
                              gyroscopic == "shared", tol * F_scale * np.sqrt(2 * Z + 2),
                              step_max, k_ring, int(max_iter), cf, Fc, Mg)
+    if not ok and np.isfinite(norm):
+        # Robustness (session 10, property tests): the Jacobian-only ring spring k_ring,
+        # sized by the load, is stiffer than the only axial stiffness of a deep-groove
+        # bearing under a light radial load (the geometric Q/L of the loaded balls), so
+        # the steps resolve a small fraction of the axial error and Newton crawls (SKF6304
+        # at rest: 10 N radial, no convergence in 100 iterations, 139 needed). Retry from
+        # the last iterate with the spring 1e-6 as stiff: converges in a few steps, and the
+        # solution does not depend on the spring.
+        norm, it2, ok = _ld_solve(bx, br, u, cpsi, tab, c,
+                                  np.ascontiguousarray(wm, dtype=float), gyroscopic == "shared",
+                                  tol * F_scale * np.sqrt(2 * Z + 2), step_max, 1e-6 * k_ring,
+                                  int(max_iter), cf, Fc, Mg)
+        it += it2
     if not ok:
         raise ConvergenceError("ball_load_distribution", norm,
                                f"no convergence in {max_iter} Newton iterations",

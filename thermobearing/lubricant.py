@@ -21,6 +21,7 @@ Units: T [K], p [Pa], nu [m^2/s], eta [Pa s], rho [kg/m^3], c_p [J/(kg K)], k [W
 
 from __future__ import annotations
 
+import math
 import tomllib
 import warnings
 from collections.abc import Callable, Mapping
@@ -243,7 +244,26 @@ class Lubricant:
 
     # -- viscosity ----------------------------------------------------------
     def _vt(self, T: ArrayLike) -> ArrayLike:
-        return VISCOSITY_TEMPERATURE.get(self.viscosity_law)(T, **self.viscosity_parameters)
+        law = VISCOSITY_TEMPERATURE.get(self.viscosity_law)
+        try:
+            if type(T) is float:       # the scalar laws use math: overflow raises
+                v = law(T, **self.viscosity_parameters)
+                if math.isfinite(v):
+                    return v
+            else:
+                with np.errstate(over="ignore", invalid="ignore"):
+                    v = law(T, **self.viscosity_parameters)
+        except OverflowError:
+            v = np.inf
+        if not np.all(np.isfinite(v)):
+            # far below the oil's pour point the law's double exponential overflows (ASTM
+            # D341 at a few kelvin: OverflowError or inf, then NaN alpha); say so instead
+            # (session 10, property tests)
+            raise InputError("temperature", T,
+                             f"a temperature at which the {self.viscosity_law} viscosity law of "
+                             f"{self.name} is finite (it overflows at this temperature; the "
+                             "law is meant for the liquid range, cloud to boiling point)")
+        return v
 
     @_memo_scalar
     def kinematic_viscosity(self, T: ArrayLike) -> ArrayLike:
@@ -272,6 +292,7 @@ class Lubricant:
         Hamrock 2004 ch. 4; with an alpha correlation z follows alpha(T). For a Barus oil
         this is the Roelands index with the same initial slope.
         """
+        check_temperature("temperature", T)   # a constant z ignored T (0 K passed; session 10)
         pp = self.pressure_parameters
         if "z" in pp:
             return _out(np.full_like(np.asarray(T, dtype=float), pp["z"]))
@@ -358,7 +379,16 @@ class Lubricant:
         params = dict(self.thermal_parameters)
         if self.thermal_model == "cragoe":
             params.setdefault("density15", float(self.density(288.15)))
-        return LUBRICANT_THERMAL.get(self.thermal_model)(T, **params)
+        cp, k = LUBRICANT_THERMAL.get(self.thermal_model)(T, **params)
+        if not (np.all(np.asarray(cp) > 0.0) and np.all(np.asarray(k) > 0.0)):
+            # a linear correlation extrapolated far beyond its range (Cragoe's k turns
+            # negative above ~2100 K) must not return a negative conductivity (session 10)
+            entry = LUBRICANT_THERMAL.entry(self.thermal_model)
+            raise InputError("temperature", T,
+                             f"a temperature at which the {self.thermal_model} thermal "
+                             f"properties of {self.name} are positive (validity: "
+                             f"{entry.validity})")
+        return cp, k
 
     @_memo_scalar
     def specific_heat(self, T: ArrayLike) -> ArrayLike:

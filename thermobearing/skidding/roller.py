@@ -141,14 +141,17 @@ def solve_model(
             best = (x, e, norm, it, ok, ld)
         if ok:
             break
+    floor = 0.0  # round-off floor of a bracketed state (0: Newton met tol)
     if not best[4] and fallback:
         # robust fallback: roller equations by vectorised bisection inside a bracketed
         # (Brent) solve of the cage equation, then a Newton polish
-        x, e, norm, it, ok, ld = _nested(model, omega, loads, psi, whirl_acceleration, tol,
-                                         max_iter, best[5], float(best[0][z]))
+        x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, whirl_acceleration,
+                                                tol, max_iter, best[5], float(best[0][z]))
         if ok:
             best = (x, e, norm, it, ok, ld)
             method = "bracketed"
+        elif x is not None and e is not None and norm < best[2]:
+            best = (x, e, norm, it, ok, ld)
     x, e, norm, it, ok, ld = best
     if not ok:
         raise ConvergenceError(
@@ -156,7 +159,7 @@ def solve_model(
             "fallback failed",
             {"cage_speed": x[z], "cage_speed_ratio": x[z] / omega, "radial_load": radial_load,
              "inner_speed": omega, "roller_speed_mean": float(np.mean(x[:z])),
-             "iterations": it})
+             "iterations": it, "round_off_floor": floor})
     csr = x[z] / omega
     csr_th = model.theoretical_cage_speed_ratio
     return RollerSkiddingResult(
@@ -169,6 +172,7 @@ def solve_model(
         converged=True, residual_norm=norm, iterations=it,
         residual=np.append(e.roller_eq, e.cage_eq), temperature=model.temperature,
         eta0=model.eta0, extras={"ring_displacement": ld.ring_displacement, "method": method,
+                                 "round_off_floor": floor,
                                  "n_loaded": ld.n_loaded, "contact_length": model.length,
                                  "radius_inner": model.radius_inner,
                                  "radius_outer": model.radius_outer,
