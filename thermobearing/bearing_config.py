@@ -32,7 +32,8 @@ _LENGTH_FIELDS = (
     "bore", "outer_diameter", "width", "ball_diameter", "pitch_diameter", "diametral_clearance",
     "gothic_arch_offset", "inner_shoulder_diameter", "outer_shoulder_diameter",
     "roller_diameter", "roller_length", "roller_effective_length", "crown_radius",
-    "end_face_crown_radius", "axial_clearance", "rib_height",
+    "end_face_crown_radius", "axial_clearance", "rib_height", "raceway_roughness",
+    "element_roughness",
 )
 _ANGLE_FIELDS = ("contact_angle", "rib_angle")
 _PLAIN_FIELDS = ("inner_conformity", "outer_conformity")

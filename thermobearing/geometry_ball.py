@@ -33,6 +33,7 @@ from .geometry_common import (
     _cage_ratio,
     _check_envelope,
     _check_rings,
+    _check_roughness,
     _frequencies,
 )
 from .geometry_thermal import _ThermalClearance
@@ -86,6 +87,9 @@ class BallBearing(_ThermalClearance):
     cage : :class:`CageGeometry`.
     inner_shoulder_diameter, outer_shoulder_diameter : land diameters [m]; default
         d_m -+ 0.6 D (shoulder height about 0.1 D above the groove edge, an estimate).
+    raceway_roughness, element_roughness : RMS roughness Rq of the raceways and of the
+        elements [m] (optional, both or neither): the film parameter Lambda = h / (Rq_r^2 +
+        Rq_e^2)^(1/2) of the run's validity checks (:mod:`thermobearing.operating_checks`).
     source : where the data come from. estimated : field -> reasoning for estimated values.
     """
 
@@ -107,6 +111,8 @@ class BallBearing(_ThermalClearance):
     gothic_arch_offset: float | None = None
     inner_shoulder_diameter: float | None = None
     outer_shoulder_diameter: float | None = None
+    raceway_roughness: float | None = None
+    element_roughness: float | None = None
     source: str = ""
     estimated: Mapping[str, str] = field(default_factory=dict)
 
@@ -122,6 +128,7 @@ class BallBearing(_ThermalClearance):
         check_range("bearing.contact_angle", self.contact_angle, 0.0, math.pi / 2,
                     high_inclusive=False, unit="rad")
         check_positive("bearing.diametral_clearance", self.diametral_clearance, allow_zero=True)
+        _check_roughness(self)
         if self.kind == "four_point":
             if self.contact_angle <= 0.0:
                 raise InputError("bearing.contact_angle", self.contact_angle,

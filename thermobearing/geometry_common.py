@@ -100,3 +100,20 @@ def _frequencies(shaft_hz: float, gamma: float, n: int, pitch: float, element: f
     bpfi = n * abs(shaft_hz - cage)
     spin = abs(cage - outer_hz) * pitch * (1.0 + gamma) / element
     return CharacteristicFrequencies(shaft_hz, cage, bpfo, bpfi, spin)
+
+
+def _check_roughness(bearing: Any) -> None:
+    """``raceway_roughness`` and ``element_roughness`` [m] (RMS, Rq): both given or both
+    absent, each >= 0 and not both zero (the film parameter divides by their composite)."""
+    r, e = bearing.raceway_roughness, bearing.element_roughness
+    if r is None and e is None:
+        return
+    for name, value in (("raceway_roughness", r), ("element_roughness", e)):
+        if value is None:
+            raise InputError(f"bearing.{name}", None, "a value when the other surface's "
+                             "roughness is given (RMS Rq [m])")
+        check_positive(f"bearing.{name}", value, allow_zero=True)
+    if r == 0.0 and e == 0.0:
+        raise InputError("bearing.raceway_roughness", r, "a roughness > 0 on at least one "
+                         "surface")
+

@@ -21,6 +21,7 @@ from .geometry_common import (
     _cage_ratio,
     _check_envelope,
     _check_rings,
+    _check_roughness,
     _frequencies,
 )
 from .geometry_thermal import _ThermalClearance
@@ -44,6 +45,9 @@ class RollerBearing(_ThermalClearance):
     axial_clearance : C_a, roller-rib axial clearance [m] (paper 003 eq. 1).
     rib_height : h_f, rib height above the raceway [m] (paper 003 eq. 15).
     ribbed_ring : "inner" | "outer" | "both" -- which ring guides the rollers axially.
+    raceway_roughness, element_roughness : RMS roughness Rq of the raceways and of the
+        elements [m] (optional, both or neither): the film parameter Lambda = h / (Rq_r^2 +
+        Rq_e^2)^(1/2) of the run's validity checks (:mod:`thermobearing.operating_checks`).
     roller_material, ring_material, cage, source, estimated : as for :class:`BallBearing`.
     """
 
@@ -67,6 +71,8 @@ class RollerBearing(_ThermalClearance):
     axial_clearance: float = 0.0
     rib_height: float | None = None
     ribbed_ring: str = "outer"
+    raceway_roughness: float | None = None
+    element_roughness: float | None = None
     source: str = ""
     estimated: Mapping[str, str] = field(default_factory=dict)
 
@@ -77,6 +83,7 @@ class RollerBearing(_ThermalClearance):
                         self.roller_diameter, "roller_diameter", self.n_rollers,
                         self.pitch_diameter, "n_rollers")
         check_positive("bearing.roller_length", self.roller_length)
+        _check_roughness(self)
         if self.roller_length > self.width:
             raise InputError("bearing.roller_length", self.roller_length,
                              f"a value <= width = {self.width:.6g} m")

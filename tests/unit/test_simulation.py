@@ -116,3 +116,18 @@ def test_skidding_heat_sources_book_the_solver_shaft_power():
     ev = sim.evaluate_heat(b, step, kin, temps)
     shaft_power = kin.raw.shaft_torque * step.speed
     assert sum(ev.by_role.values()) == pytest.approx(shaft_power, rel=1e-8)
+
+
+def test_run_warns_of_skidding_steps_in_its_results():
+    """The QJ1044 at 1800 r/min skids at zero axial load (CSR about 0.21 against 0.45) and
+    over-skids at 4 kN (paper 002's bulge): the run's warnings name the bearing and the
+    steps (operating_checks); the film parameter is checked (the preset gives its
+    roughness) and nothing else is flagged."""
+    sc = loads_scene(BASE.replace('kinematics = "race_control"', 'kinematics = "skidding"')
+                     .replace('start = "2 kN"', 'start = "0 kN"')
+                     + '[outputs]\nmode = "steady"\nwant = ["kinematics"]\n')
+    res = Simulation(sc, progress=False).run()
+    lines = [w for w in res.warnings if w.startswith("de: ")]
+    assert len(lines) == 2, res.warnings
+    assert "cage skidding" in lines[0] and "(step 0)" in lines[0]
+    assert "cage over-skidding" in lines[1] and "(step 1)" in lines[1]
