@@ -1,0 +1,258 @@
+"""Property tests of :func:`thermobearing.skidding.solve` on the ball (QJ1044, SKF6304) and
+roller (NU214, D1842926) presets over speed, load and oil temperature, cold and warm starts.
+
+Invariants of a converged state (README promises; paper 002 / paper 000 models):
+
+- every returned float finite, contact loads >= 0, sliding speeds finite;
+- 0 < CSR < 1 for an inner-ring-driven bearing with the outer ring fixed;
+- the theoretical CSR inside its geometric bounds: ball (1 - gamma cos alpha)/2 with
+  gamma = D/d_m, so (1 - D/d_m)/2 <= CSR_th <= 1/2; roller (1 - D/d_m)/2 (paper 000 eq. 40);
+- ring equilibrium from the returned fields only. Ball (inner-ring arcs, contact force on the
+  ball -Q n + F_x t with the transverse traction F_x of the kinematic state; the signed
+  contact angle alpha of the result): F_a = -sum (Q sin alpha + F_x cos alpha),
+  F_r = sum cos(psi) (Q cos alpha - F_x sin alpha), to the solver tolerance (scaled by the
+  load). Roller: sum Q_i cos(psi) = F_r (paper 000 eqs. 20/23);
+- a failure is a ConvergenceError with a residual that is not NaN, never NaN in a result.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from thermobearing.errors import ConvergenceError, ValidityWarning
+from thermobearing.geometry import load_bearing
+from thermobearing.lubricant import load_lubricant
+from thermobearing.skidding import solve
+from thermobearing.state import OilSupply
+
+RPM = math.pi / 30.0
+BALL = {name: load_bearing(name) for name in ("QJ1044", "SKF6304")}
+ROLLER = {name: load_bearing(name) for name in ("NU214", "D1842926")}
+VG68 = load_lubricant("ISO_VG68")
+ROLLER_OIL = {"NU214": load_lubricant("PAPER000_OIL"), "D1842926": load_lubricant("OIL_4109")}
+
+
+def _supply(temperature):
+    return OilSupply("jet", 33 / 60000, temperature)
+
+
+def _ball_solve(name, rpm, fr, fa, t_c, **kw):
+    t = t_c + 273.15
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        return solve(BALL[name], VG68, rpm * RPM, fr, fa, t, supply=_supply(t), **kw)
+
+
+def check_ball_invariants(r, fr, fa, name):
+    b = BALL[name]
+    assert r.converged
+    for v in (r.cage_speed_ratio, r.theoretical_cage_speed_ratio, r.residual_norm,
+              r.kinematic_cage_speed_ratio, r.cage_speed, r.shaft_torque, r.delta_a, r.delta_r):
+        assert math.isfinite(v)
+    for arr in (r.normal_load, r.contact_angle, r.sliding_speed, r.transverse_sliding_speed,
+                r.spin, r.entrainment_speed, r.pocket_force, r.ball_x, r.ball_r):
+        assert np.all(np.isfinite(arr))
+    assert all(math.isfinite(v) for v in r.heat.values())
+    assert 0.0 < r.cage_speed_ratio < 1.0
+    gamma = b.ball_diameter / b.pitch_diameter
+    assert 0.5 * (1.0 - gamma) - 1e-12 <= r.theoretical_cage_speed_ratio <= 0.5 + 1e-12
+    assert np.all(r.normal_load >= 0.0)
+    st_ = r.kinematic_state
+    inner = r.ring == 0
+    q, al = r.normal_load, r.contact_angle
+    fx = np.stack([c.traction.result.transverse_force for c in st_.contacts], axis=1)
+    fa_s = -np.sum((q * np.sin(al) + fx * np.cos(al))[:, inner])
+    fr_s = np.sum(((q * np.cos(al) - fx * np.sin(al))[:, inner]).T * np.cos(st_.azimuth))
+    # residual scaled by F_s (the solver's force scale, about the largest ball load): 1e-9
+    # of it, plus round-off of the sums; 1e-7 of the load covers both with margin
+    slack = 1e-7 * max(fr, abs(fa), 100.0)
+    assert abs(fa_s - fa) <= slack
+    assert abs(fr_s - fr) <= slack
+
+
+# load and speed ranges: QJ1044 (220 mm bore, C of the 400 kN class): to 4000 r/min, loads
+# up to 100 kN radial / 200 kN axial; SKF6304 (C = 16.8 kN): to 20000 r/min, 30 kN / 10 kN.
+# Light loads below ~0.3 % of C are left out here: they are the documented open failures
+# below (xfail) -- this test asks that every point in range either converges with the
+# invariants or raises a ConvergenceError with a residual.
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(name=st.sampled_from(sorted(BALL)), log_rpm=st.floats(math.log(10.0), math.log(20000.0)),
+       fr_frac=st.one_of(st.just(0.0), st.floats(0.005, 1.0)),
+       fa_frac=st.one_of(st.just(0.0), st.floats(0.005, 1.0)), negative=st.booleans(),
+       t_c=st.floats(0.0, 140.0))
+def test_ball_solve_converges_with_invariants_or_says_why(name, log_rpm, fr_frac, fa_frac,
+                                                          negative, t_c):
+    rpm_max, fr_max, fa_max = {"QJ1044": (4000.0, 1e5, 2e5),
+                               "SKF6304": (20000.0, 3e4, 1e4)}[name]
+    rpm = min(math.exp(log_rpm), rpm_max)
+    fr, fa = fr_frac * fr_max, fa_frac * fa_max
+    if negative and name == "QJ1044":
+        fa = -fa
+    try:
+        r = _ball_solve(name, rpm, fr, fa, t_c)
+    except ConvergenceError as err:
+        assert not math.isnan(err.residual)
+        if fr == 0.0 and fa == 0.0:
+            assert err.residual == math.inf and "inner ring" in str(err)
+        return
+    check_ball_invariants(r, fr, fa, name)
+
+
+@pytest.mark.parametrize("name, rpm, fr, fa, t_c", [
+    ("QJ1044", 300.0, 5000.0, 2000.0, 40.0), ("QJ1044", 1500.0, 0.0, 20000.0, 80.0),
+    ("QJ1044", 3000.0, 20000.0, -5000.0, 120.0), ("QJ1044", 10.0, 50000.0, 0.0, 0.0),
+    ("SKF6304", 3000.0, 1000.0, 0.0, 40.0), ("SKF6304", 10000.0, 2000.0, 500.0, 90.0),
+    ("SKF6304", 300.0, 5000.0, 100.0, 140.0), ("SKF6304", 20000.0, 100.0, 0.0, 20.0),
+])
+def test_ball_solve_grid_converges(name, rpm, fr, fa, t_c):
+    """Ordinary operating points must converge (the property test above accepts failures)."""
+    check_ball_invariants(_ball_solve(name, rpm, fr, fa, t_c), fr, fa, name)
+
+
+@pytest.mark.parametrize("rpm, fr, fa", [(10.0, 1000.0, 0.0), (10.0, 15000.0, 100.0),
+                                         (10.0, 5000.0, 0.0)])
+def test_deep_groove_low_speed_converges(rpm, fr, fa):
+    """Defect found here (session 10): the SKF6304 at 10 r/min under 1-15 kN radial load
+    failed with ConvergenceError (the cold start stood at 1e-6..5e-7 after 150 iterations,
+    converging only linearly -- the unloaded balls are held by a tiny centrifugal contact --
+    and the continuation then failed at 0.40 / 0.72). A cold start that hits the iteration
+    limit below 1e-2 now gets more Newton iterations from its last iterate."""
+    r = _ball_solve("SKF6304", rpm, fr, fa, 40.0)
+    check_ball_invariants(r, fr, fa, "SKF6304")
+    assert r.extra.get("fallback") in (None, "newton_restart", "trust_region")
+
+
+@pytest.mark.xfail(strict=True, raises=ConvergenceError,
+                   reason="open (session 10): SKF6304 at 30-300 r/min, 1-15 kN radial, 40 degC "
+                          "fails: the cold start stalls or meets a singular ball block "
+                          "(measured residuals 1.9e-5 at 30 r/min 1 kN + 100 N axial, 1.9e-1 at "
+                          "100 r/min 5 kN, 1.6e-5 at 100 r/min 15 kN); the unloaded balls' "
+                          "blocks are near-singular at low speed")
+@pytest.mark.parametrize("rpm, fr, fa", [(30.0, 1000.0, 100.0), (100.0, 5000.0, 0.0),
+                                         (100.0, 15000.0, 0.0)])
+def test_deep_groove_low_speed_open(rpm, fr, fa):
+    _ball_solve("SKF6304", rpm, fr, fa, 40.0)
+
+
+@pytest.mark.xfail(strict=True, raises=ConvergenceError,
+                   reason="open (session 10): QJ1044 under light radial loads (~1-140 N, "
+                          "|Fa| <= 12 N; < 0.05 % of C) fails after the continuation in axial "
+                          "load (measured residuals: 2.3 N, 47 r/min, 18 degC -> 1.8e-1; 95 N "
+                          "and -11.7 N, 64 r/min, 106 degC -> 1.3; 132.5 N, 199 r/min, 64 degC "
+                          "-> 1.9e-2); pure axial 2.15 N at 35.5 r/min: the load distribution "
+                          "itself stops at 0.30 N")
+@pytest.mark.parametrize("rpm, fr, fa, t_c", [
+    (46.59985437797942, 2.322471332414693, 0.0, 18.014249724403722),
+    (63.672776703535376, 95.01279747271084, -11.656930368526035, 106.16282068053458),
+    (198.7891532224581, 132.53113679030767, 0.0, 64.13113846805669),
+    (35.5459707281424, 0.0, 2.150154110935353, 23.03101730637418),
+])
+def test_qj1044_light_load_open(rpm, fr, fa, t_c):
+    _ball_solve("QJ1044", rpm, fr, fa, t_c)
+
+
+@pytest.mark.parametrize("name", sorted(BALL))
+def test_ball_zero_load_is_a_clear_convergence_error(name):
+    """Defect found here (session 10): the SKF6304 with no load "converged" to CSR = 0 (or
+    -0.0) with every ball in the outer groove; the QJ1044 raised. Both now raise with
+    residual inf and the reason."""
+    with pytest.raises(ConvergenceError, match="no ball touches the inner ring") as info:
+        _ball_solve(name, 3000.0, 0.0, 0.0, 40.0)
+    assert info.value.residual == math.inf
+
+
+@settings(max_examples=8, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(name=st.sampled_from(sorted(BALL)), rpm=st.floats(200.0, 3000.0),
+       fr=st.floats(500.0, 5000.0), step=st.floats(0.8, 1.25), t_c=st.floats(20.0, 100.0))
+def test_ball_warm_start_matches_cold(name, rpm, fr, step, t_c):
+    """Warm start from the previous result (guess=) lands on the cold-start solution of the
+    new point (same equations: CSR to ~1e-7 of itself, set by the 1e-9 residual)."""
+    fa = 0.3 * fr
+    try:
+        first = _ball_solve(name, rpm, fr, fa, t_c)
+        cold = _ball_solve(name, rpm * step, fr * step, fa, t_c)
+    except ConvergenceError:
+        return
+    warm = _ball_solve(name, rpm * step, fr * step, fa, t_c, guess=first)
+    check_ball_invariants(warm, fr * step, fa, name)
+    assert warm.cage_speed_ratio == pytest.approx(cold.cage_speed_ratio, rel=1e-6)
+
+
+# --------------------------------------------------------------------------------- rollers
+def _roller_solve(name, rpm, fr, t_c, **kw):
+    return solve(ROLLER[name], ROLLER_OIL[name], rpm * RPM, fr, 0.0, t_c + 273.15, **kw)
+
+
+def check_roller_invariants(r, fr, name):
+    b = ROLLER[name]
+    assert r.converged
+    for v in (r.cage_speed_ratio, r.theoretical_cage_speed_ratio, r.residual_norm, r.slip,
+              r.cage_speed):
+        assert math.isfinite(v)
+    for arr in (r.roller_speed, r.inner_load, r.outer_load, r.inner_sliding_speed,
+                r.outer_sliding_speed, r.inner_entrainment_speed, r.outer_entrainment_speed,
+                r.pocket_normal_force, r.pocket_friction, r.residual):
+        assert np.all(np.isfinite(arr))
+    assert 0.0 < r.cage_speed_ratio < 1.0
+    gamma = b.roller_diameter / b.pitch_diameter
+    assert r.theoretical_cage_speed_ratio == pytest.approx(0.5 * (1.0 - gamma), rel=1e-12)
+    assert np.all(r.inner_load >= 0.0) and np.all(r.outer_load >= 0.0)
+    # ring equilibrium (radial): sum Q_i (cos psi, sin psi) = (F_r, 0)
+    assert np.sum(r.inner_load * np.cos(r.azimuth)) == pytest.approx(fr, rel=1e-8)
+    assert abs(np.sum(r.inner_load * np.sin(r.azimuth))) <= 1e-8 * fr
+    if r.extras["method"] == "newton":
+        assert r.residual_norm <= 1e-9
+    else:
+        assert r.residual_norm <= max(1e-9, 4.0 * r.extras["round_off_floor"])
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(name=st.sampled_from(sorted(ROLLER)), log_rpm=st.floats(math.log(10.0), math.log(20000.0)),
+       log_fr=st.floats(math.log(50.0), math.log(20000.0)), t_c=st.floats(0.0, 140.0))
+def test_roller_solve_invariants(name, log_rpm, log_fr, t_c):
+    fr = math.exp(log_fr)
+    try:
+        r = _roller_solve(name, math.exp(log_rpm), fr, t_c)
+    except ConvergenceError as err:
+        assert not math.isnan(err.residual)
+        return
+    check_roller_invariants(r, fr, name)
+
+
+@pytest.mark.parametrize("name, rpm, fr, t_c", [
+    ("NU214", 1000.0, 2000.0, 40.0), ("NU214", 10000.0, 100.0, 80.0),
+    ("D1842926", 13218.0, 2000.0, 80.0), ("D1842926", 10.0, 20000.0, 140.0),
+])
+def test_roller_solve_grid_and_warm_start(name, rpm, fr, t_c):
+    r = _roller_solve(name, rpm, fr, t_c)
+    check_roller_invariants(r, fr, name)
+    warm = _roller_solve(name, rpm * 1.05, fr * 1.1, t_c, guess=r)
+    cold = _roller_solve(name, rpm * 1.05, fr * 1.1, t_c)
+    check_roller_invariants(warm, fr * 1.1, name)
+    assert warm.cage_speed_ratio == pytest.approx(cold.cage_speed_ratio, rel=1e-6)
+
+
+@pytest.mark.parametrize("name", sorted(ROLLER))
+def test_roller_zero_load_is_a_clear_convergence_error(name):
+    with pytest.raises(ConvergenceError, match="no roller touches the inner ring") as info:
+        _roller_solve(name, 1000.0, 0.0, 40.0)
+    assert info.value.residual == math.inf
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("rpm", [10.0, 1000.0, 10000.0])
+def test_roller_heavy_load_bracketed_to_round_off(rpm):
+    """Defect found here (session 10): NU214, 100 kN (about 0.7 C): the bracketed fallback
+    stopped Brent at 1e-10 of the inner speed, where the cage equation still had 4.2 kN of
+    residual (norm 0.18 at 1000 r/min) and reported it as converged. Brent now goes to a few
+    ulps: measured norms 1.0e-6, 3.6e-6, 4.5e-6 (10 / 1000 / 10000 r/min), each within 4x
+    the residual that one-ulp speed changes make there (extras['round_off_floor'])."""
+    r = _roller_solve("NU214", rpm, 1e5, 40.0)
+    check_roller_invariants(r, 1e5, "NU214")
+    assert r.extras["method"] == "bracketed" and r.residual_norm < 1e-5
