@@ -743,11 +743,14 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
     """Sweep runner: run a scene and reduce it to a few numbers.
 
     Returns total and per-source loss [W] (mean over steps, first bearing), the maximum
-    over-skidding [%], the final temperature of every node [degC] and its rise [K] when the
-    scene has a network.
+    and minimum over-skidding [%], the largest Hertz pressure [MPa] and the smallest film
+    parameter Lambda [-] of the solved states (:mod:`.operating_checks`; Lambda when the
+    bearing gives its roughness), the final temperature of every node [degC] and its rise
+    [K] when the scene has a network.
     """
     scene = loads_scene(scene_toml)
-    res = Simulation(scene, progress=False).run()
+    sim = Simulation(scene, progress=False)
+    res = sim.run()
     out: dict[str, float] = {}
     losses = res.tables.get("losses")
     if losses is not None and not losses.empty:
@@ -761,6 +764,12 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
     if kin is not None and not kin.empty:
         out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
         out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
+        states = [c for log in sim.checks.values() for cs in log.steps.values() for c in cs]
+        if states:
+            out["max contact pressure [MPa]"] = max(c.max_pressure for c in states) / 1e6
+            films = [c.film_parameter for c in states if c.film_parameter is not None]
+            if films:
+                out["min film parameter [-]"] = min(films)
     temps = res.tables.get("temperatures")
     if temps is not None and not temps.empty:
         for c in temps.columns:

@@ -131,3 +131,15 @@ def test_run_warns_of_skidding_steps_in_its_results():
     assert len(lines) == 2, res.warnings
     assert "cage skidding" in lines[0] and "(step 0)" in lines[0]
     assert "cage over-skidding" in lines[1] and "(step 1)" in lines[1]
+
+
+def test_sweep_summary_carries_the_validity_extremes():
+    """summarize_scene (the sweep runner) reports the largest Hertz pressure and the
+    smallest film parameter of the solved states, so a sweep can map them."""
+    from thermobearing.simulation import summarize_scene
+
+    out = summarize_scene(scene(["kinematics", "losses"]).to_toml())
+    # QJ1044 at 2 and 6 kN axial + 1 kN radial: about 0.8-1 GPa, Lambda well above 3
+    assert 500.0 < out["max contact pressure [MPa]"] < 2000.0
+    assert out["min film parameter [-]"] > 3.0
+    assert out["total loss [W]"] > 0.0
