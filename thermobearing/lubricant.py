@@ -248,21 +248,21 @@ class Lubricant:
         try:
             if type(T) is float:       # the scalar laws use math: overflow raises
                 v = law(T, **self.viscosity_parameters)
-                if math.isfinite(v):
+                if math.isfinite(v) and v > 0.0:
                     return v
             else:
                 with np.errstate(over="ignore", invalid="ignore"):
                     v = law(T, **self.viscosity_parameters)
         except OverflowError:
             v = np.inf
-        if not np.all(np.isfinite(v)):
+        if not (np.all(np.isfinite(v)) and np.all(np.asarray(v) > 0.0)):
             # far below the oil's pour point the law's double exponential overflows (ASTM
-            # D341 at a few kelvin: OverflowError or inf, then NaN alpha); say so instead
-            # (session 10, property tests)
+            # D341 at a few kelvin: OverflowError or inf, then NaN alpha), far above boiling
+            # an exponential law underflows to 0; say so instead (session 10, property tests)
             raise InputError("temperature", T,
                              f"a temperature at which the {self.viscosity_law} viscosity law of "
-                             f"{self.name} is finite (it overflows at this temperature; the "
-                             "law is meant for the liquid range, cloud to boiling point)")
+                             f"{self.name} is finite and > 0 (it overflows or underflows here; "
+                             "the law is meant for the liquid range, cloud to boiling point)")
         return v
 
     @_memo_scalar
@@ -364,6 +364,11 @@ class Lubricant:
         """
         if self.density_temperature_law == "astm_d1250_lube":
             rho = astm_d1250_lube_density(T, self.density_reference)
+            if not np.all(np.asarray(rho) > 0.0):
+                # the exponential law underflows to 0 at absurd temperatures (1e12 K), and a
+                # zero density divided the skidding models' drag by zero (session 10)
+                raise InputError("temperature", T, "temperatures at which the ASTM D1250 "
+                                 "density law is > 0 (it underflows far above boiling)")
         else:
             rho = linear_expansion_density(T, self.density_reference,
                                            self.density_reference_temperature,

@@ -74,13 +74,14 @@ def test_impossible_temperatures_raise_input_error(name, method, temperature):
 @pytest.mark.parametrize("name", sorted(PRESETS))
 @pytest.mark.parametrize("method", ["kinematic_viscosity", "dynamic_viscosity",
                                     "pressure_viscosity_coefficient", "roelands_index",
-                                    "specific_heat", "thermal_conductivity"])
-@pytest.mark.parametrize("temperature", [1.0, np.array([1.0, 300.0]), 5000.0])
+                                    "density", "specific_heat", "thermal_conductivity"])
+@pytest.mark.parametrize("temperature", [1.0, np.array([1.0, 300.0]), 5000.0, 1e12])
 def test_extreme_temperatures_finite_or_clear_error(name, method, temperature):
     """Defect found here (session 10): at 1 K the ASTM D341 presets raised OverflowError
     (a bare math error) and MIL_PRF_23699's alpha was NaN; at 5000 K Cragoe's conductivity
-    was negative (-0.21 W/(m K)). Now either a finite positive value or an InputError that
-    names the temperature."""
+    was negative (-0.21 W/(m K)); at 1e12 K the ASTM D1250 density underflowed to 0 (the ball
+    skidding models then divided by it: ZeroDivisionError). Now either a finite positive value
+    or an InputError that names the temperature."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityWarning)
         try:
