@@ -259,9 +259,10 @@ def integrate(
     h = None
     if film_thickness is not None:
         h = np.broadcast_to(np.asarray(film_thickness, dtype=float), q_load.shape)
-        if np.any(h[(q_load > 0) & (a > 0) & (b > 0)] <= 0):
-            raise InputError("contact_traction.film_thickness", "values <= 0 at loaded contacts",
-                             "a film thickness > 0 [m]")
+        # ~(h > 0) also catches NaN (a NaN film gave NaN tractions silently; session 10)
+        if np.any(~(h[(q_load > 0) & (a > 0) & (b > 0)] > 0)):
+            raise InputError("contact_traction.film_thickness",
+                             "values <= 0 or NaN at loaded contacts", "a film thickness > 0 [m]")
     return _integrate_core(law, q_load, a, b, vy, vx, wz, wx, wy, curvature, h, temperature,
                            kind, int(n_major), int(n_minor), jacobian)
 

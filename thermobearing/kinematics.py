@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError, UnknownNameError, check_range
+from .errors import InputError, UnknownNameError, check_finite, check_range
 
 CONTROLS = ("outer_race", "inner_race")
 
@@ -171,6 +171,8 @@ def element_kinematics(bearing: Any, inner_speed: float, contact_angle_i: Any = 
             raise InputError(name, v, "a finite speed in rad/s")
     d, dm, g = _geometry(bearing)
     ai, ao = _angles(bearing, contact_angle_i, contact_angle_o)
+    if attitude is not None:
+        check_finite("attitude", attitude)  # NaN / inf gave NaN kinematics silently (session 10)
     beta = np.asarray(ai if attitude is None else attitude, dtype=float)
     w_rel = inner_speed - outer_speed
     csr, spin_ratio = rolling_speeds(g, ai, ao, beta)
