@@ -77,6 +77,15 @@ def _as_speed(slide_speed: Any) -> np.ndarray:
     return s
 
 
+def _as_pressure(pressure: Any) -> np.ndarray:
+    """Pressure array [Pa]; NaN or inf raise InputError (a NaN pressure gave a NaN stress
+    silently in the pressure-proportional laws; session 10)."""
+    p = np.asarray(pressure, dtype=float)
+    if not np.all(np.isfinite(p)):
+        raise InputError("traction.pressure", "non-finite values", "finite pressures [Pa]")
+    return p
+
+
 # ---------------------------------------------------------------------------
 # Compiled kernels: the ONE implementation of every law's stress. ``shear_stress`` (below)
 # and the contact integration (contact_traction._integrate_contacts, also inside the ball
@@ -336,7 +345,7 @@ class LinearSaturatingTraction:
     def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
                      temperature: Any = None) -> ShearStress:
         """Shear stress tau = mu(dv) p [Pa] and d tau / d dv [Pa s/m]."""
-        return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
+        return self._stress(_as_speed(slide_speed), _as_pressure(pressure))
 
     @functools.cached_property
     def kernel(self) -> tuple[int, np.ndarray]:
@@ -549,7 +558,7 @@ class FourParameterTraction:
     def shear_stress(self, slide_speed: Any, pressure: Any, film_thickness: Any = None,
                      temperature: Any = None) -> ShearStress:
         """Shear stress mu(u) p [Pa] and its derivative [Pa s/m]."""
-        return self._stress(_as_speed(slide_speed), np.asarray(pressure, dtype=float))
+        return self._stress(_as_speed(slide_speed), _as_pressure(pressure))
 
     @functools.cached_property
     def kernel(self) -> tuple[int, np.ndarray]:

@@ -118,3 +118,32 @@ def test_nan_film_is_refused():
         integrate(LAW, normal_load=[1000.0, 500.0], semi_major=[2e-3, 1.5e-3],
                   semi_minor=[3e-4, 2e-4], sliding_speed=[0.1, 0.0],
                   film_thickness=[math.nan, 1e-7], temperature=323.15)
+
+
+@pytest.mark.parametrize("law", [
+    make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.1),
+    make_traction_law("four_parameter", mu_zero=0.0, mu_max=0.07, slip_speed_at_max=0.5,
+                      mu_infinity=0.04),
+    LAW,
+])
+@pytest.mark.parametrize("pressure", [math.nan, math.inf])
+def test_traction_law_rejects_non_finite_pressure(law, pressure):
+    """Defect found here (session 10): the pressure-proportional laws (paper 004's linear
+    saturating, the ADORE-type four-parameter curve) returned NaN / inf stress for a NaN / inf
+    pressure; the Eyring law already refused it through the lubricant."""
+    with pytest.raises(InputError, match="pressure"):
+        law.shear_stress(0.1, pressure, 1e-7, 323.15)
+
+
+@settings(max_examples=40, deadline=None)
+@given(s=st.floats(0.0, 20.0), p=st.floats(1e6, 3e9), ds=st.floats(1e-4, 1.0))
+def test_traction_laws_bounded_and_monotone_below_peak(s, p, ds):
+    """tau / p never above the law's maximum coefficient; the linear-saturating and Eyring
+    laws are non-decreasing in the sliding speed (paper 004 Fig. 3; Johnson & Tevaarwerk 1977
+    with the limiting shear cap)."""
+    lin = make_traction_law("linear_saturating", mu_max=0.05, slip_speed_max=0.1)
+    t1, t2 = lin.shear_stress(s, p).stress, lin.shear_stress(s + ds, p).stress
+    assert 0.0 <= t1 <= t2 <= 0.05 * p * (1 + 1e-12)
+    e1 = LAW.shear_stress(s, p, 1e-7, 323.15).stress
+    e2 = LAW.shear_stress(s + ds, p, 1e-7, 323.15).stress
+    assert 0.0 <= e1 <= e2 * (1 + 1e-12) and e2 <= 0.075 * p * (1 + 1e-9)
