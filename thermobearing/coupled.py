@@ -350,7 +350,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 if k == 0:
                     for b in sim.bearings:
                         row = {**step_columns(i, t, b.name, step),
-                               **kinematics_columns(b.last)}
+                               **kinematics_columns(b.last, b.bearing)}
                         kin_rows.append(row)
                         if writer:
                             writer.append("kinematics", [row])
@@ -456,7 +456,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                                    {"step": i})
         for b in sim.bearings:
             kin_rows.append({**step_columns(i, 0.0, b.name, step),
-                             **kinematics_columns(b.last)})
+                             **kinematics_columns(b.last, b.bearing)})
         row = {"step": i, **_temperature_row(0.0, names, T)}
         temp_rows.append(row)
         rows = (coupler.loss_rows(i, 0.0, step, T) if _wants_loss_table(sim.scene)

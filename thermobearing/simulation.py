@@ -573,7 +573,7 @@ class Simulation:
                 base = step_columns(i, 0.0, b.name, step)
                 if self.needs["kinematics"]:
                     kin = self.solve_kinematics(b, i, step, temps)
-                    row = {**base, **kinematics_columns(kin)}
+                    row = {**base, **kinematics_columns(kin, b.bearing)}
                     kin_rows.append(row)
                     if writer:
                         writer.append("kinematics", [row])
@@ -664,11 +664,17 @@ def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[st
             "axial load [kN]": step.axial_load / 1e3}
 
 
-def kinematics_columns(kin: KinematicsResult) -> dict[str, Any]:
-    """Kinematics table columns of one result."""
+def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
+    """Kinematics table columns of one result, with the largest Hertz pressure and the
+    smallest film parameter of its loaded contacts (:mod:`.operating_checks`; NaN when
+    the bearing gives no roughness)."""
+    check = check_state(bearing, kin)
     return {"cage speed ratio [-]": kin.cage_speed_ratio,
             "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
             "over-skidding [%]": 100.0 * kin.over_skid,
+            "max contact pressure [MPa]": check.max_pressure / 1e6,
+            "min film parameter [-]": (math.nan if check.film_parameter is None
+                                       else check.film_parameter),
             "converged": kin.converged, "residual": kin.residual_norm,
             "iterations": kin.iterations}
 
