@@ -88,8 +88,15 @@ def race_control_guess(bearing, speed, radial_load, axial_load, n_balls=None):
     dm = float(bearing.pitch_diameter)
     a0 = float(bearing.contact_angle)
     wm0 = 0.5 * speed * (1.0 - D * np.cos(a0) / dm)
-    ld = ball_load_distribution(bearing, radial_load, axial_load, speed, orbital_speed=wm0,
-                                n_balls=n_balls)
+    try:
+        ld = ball_load_distribution(bearing, radial_load, axial_load, speed, orbital_speed=wm0,
+                                    n_balls=n_balls)
+    except ConvergenceError:
+        # only a starting point: a looser tolerance will do (session 10, property tests:
+        # SKF6304 at 46 r/min, Fr = 9.1 kN, Fa = 2.5 kN crawled at 3e-5 N against a 5e-6 N
+        # tolerance -- the unloaded balls are held by centrifugal contacts of ~1e-4 N)
+        ld = ball_load_distribution(bearing, radial_load, axial_load, speed,
+                                    orbital_speed=wm0, n_balls=n_balls, tol=1e-6)
     ai, ao = ld.inner_contact_angle, ld.outer_contact_angle
     g = D / dm
     beta = np.arctan2(np.sin(ao), np.cos(ao) + g) * (1.0 if axial_load >= 0 else -1.0)
