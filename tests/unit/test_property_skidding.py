@@ -286,3 +286,25 @@ def test_roller_heavy_load_bracketed_to_round_off(rpm):
     r = _roller_solve("NU214", rpm, 1e5, 40.0)
     check_roller_invariants(r, 1e5, "NU214")
     assert r.extras["method"] == "bracketed" and r.residual_norm < 1e-5
+
+
+def test_warm_start_from_another_bearing_is_handled():
+    """Defects found here (session 10): a warm start from another bearing's result crashed
+    with bare Python errors -- ball from a ball result of a different ball count:
+    UnboundLocalError; ball from a roller result: AttributeError; roller from a roller result
+    of a different roller count: IndexError; roller from a ball result: TypeError. Now: the
+    ball solver starts cold from a result of another ball count (as its code intended), a
+    wrong type or size is an InputError naming the guess."""
+    from thermobearing.errors import InputError
+
+    ball_qj = _ball_solve("QJ1044", 1000.0, 2000.0, 500.0, 40.0)
+    cold = _ball_solve("SKF6304", 1000.0, 2000.0, 500.0, 40.0)
+    warm = _ball_solve("SKF6304", 1000.0, 2000.0, 500.0, 40.0, guess=ball_qj)
+    assert warm.cage_speed_ratio == pytest.approx(cold.cage_speed_ratio, rel=1e-9)
+    roller_nu = _roller_solve("NU214", 1000.0, 2000.0, 40.0)
+    with pytest.raises(InputError, match="guess"):
+        _ball_solve("SKF6304", 1000.0, 2000.0, 500.0, 40.0, guess=roller_nu)
+    with pytest.raises(InputError, match="x0"):
+        _roller_solve("D1842926", 1000.0, 2000.0, 40.0, guess=roller_nu)
+    with pytest.raises(InputError, match="x0"):
+        _roller_solve("NU214", 1000.0, 2000.0, 40.0, guess=ball_qj)

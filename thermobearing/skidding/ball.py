@@ -174,6 +174,14 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
             "no external load: no ball touches the inner ring (with clearance >= 0 nothing "
             "presses the balls against it), nothing drives the cage, CSR undefined in this "
             "model", {"radial_load": 0.0, "axial_load": 0.0, "speed": speed})
+    if guess is not None and not isinstance(guess, BallSkiddingResult):
+        # (session 10: a roller result raised AttributeError)
+        raise InputError("guess", type(guess).__name__,
+                         "a BallSkiddingResult of an earlier solve (warm start) or None")
+    if guess is not None and guess.ball_x.size != int(n_balls or bearing.n_balls):
+        # another bearing's (or ball count's) state cannot start this one: cold start (a
+        # QJ1044 result given to the SKF6304 raised UnboundLocalError; session 10)
+        guess = None
     t0 = time.perf_counter()
     prev = guess.extra.get("system") if guess is not None else None
     if (prev is not None and prev.bearing is bearing and prev.models is models

@@ -103,6 +103,12 @@ def solve_model(
     """
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
+    if x0 is not None and np.size(x0) != z + 1:
+        # another bearing's state (session 10: a D1842926 start for the NU214 raised
+        # IndexError deep in the residual)
+        raise InputError("x0", f"{np.size(x0)} values",
+                         f"{z + 1} values (omega_r of the {z} rollers, omega_c) of this bearing, "
+                         "e.g. a previous result of the same bearing")
 
     last_q: list[np.ndarray | None] = [None]
 
@@ -203,9 +209,14 @@ def as_warm_start(guess: Any) -> np.ndarray | None:
         guess = states[-1]
     if hasattr(guess, "roller_speed") and hasattr(guess, "cage_speed"):
         return np.append(np.asarray(guess.roller_speed, dtype=float), float(guess.cage_speed))
-    arr = np.asarray(guess, dtype=float)
-    if arr.ndim != 1 or arr.size < 4:
-        raise InputError("x0", guess, "an array (omega_r..., omega_c) or a previous result")
+    allowed = "an array (omega_r..., omega_c) [rad/s] or a previous roller skidding result"
+    try:
+        arr = np.asarray(guess, dtype=float)
+    except (TypeError, ValueError):
+        # e.g. a ball bearing's result (TypeError from float(); session 10)
+        raise InputError("x0", type(guess).__name__, allowed) from None
+    if arr.ndim != 1 or arr.size < 4 or not np.all(np.isfinite(arr)):
+        raise InputError("x0", guess, allowed)
     return arr
 
 
