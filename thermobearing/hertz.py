@@ -275,7 +275,8 @@ def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
 
     Notes
     -----
-    Validity: linear elastic half-spaces, contact small against the radii, frictionless.
+    Validity: linear elastic half-spaces, contact small against the radii, frictionless; a
+    ValidityWarning when the half-width along x exceeds :data:`HERTZ_SMALL_CONTACT` R_x.
     References: Hamrock & Brewe 1983 (``hamrock_brewe1983``); Harris & Kotzalas 2007.
     """
     w = np.asarray(load, dtype=float)
@@ -289,6 +290,7 @@ def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
     ep = np.asarray(effective_modulus, dtype=float)
     a, b, p = _ellipse(w, r, k, big_e, ep)
     delta = big_k * np.cbrt(9.0 / (2.0 * big_e * r) * (w / (math.pi * k * ep)) ** 2)
+    _warn_large_contact(np.where(np.asarray(rx) <= np.asarray(ry), b, a), rx, "point_contact")
     k_b = np.broadcast_to(k, np.shape(a)) if np.ndim(a) else k
     return PointContact(a[()], b[()], p[()], delta[()], np.asarray(k_b)[()],
                         np.broadcast_to(big_k, np.shape(a))[()] if np.ndim(a) else big_k,
@@ -335,6 +337,25 @@ def line_contact_stiffness(length: Any, effective_modulus: Any = _STEEL_E_PRIME)
     l_mm = np.asarray(length, dtype=float) * 1e3
     # Q = (delta_mm l_mm^0.8 / 3.84e-5)^(10/9), delta_mm = 1e3 delta_m
     return ((1e3 * l_mm**0.8 / 3.84e-5) ** (10.0 / 9.0))[()]
+
+
+#: largest contact half-width in the rolling direction relative to the reduced radius R_x
+#: for which the half-space (small-contact) assumption of Hertz is taken to hold. Hertz
+#: requires the contact to be small against the radii (Johnson 1985 section 4.1: a << R);
+#: 0.1 is this package's chosen guard, not a published bound. Bearing contacts reach it only
+#: far beyond their ratings (SKF6304: ~15 kN on one ball, p_0 ~ 5.5 GPa).
+HERTZ_SMALL_CONTACT = 0.1
+
+
+def _warn_large_contact(half_width_x: Any, rx: Any, where: str) -> None:
+    """ValidityWarning when the half-width along x exceeds HERTZ_SMALL_CONTACT R_x."""
+    ratio = np.asarray(half_width_x, dtype=float) / np.asarray(rx, dtype=float)
+    if np.any(ratio > HERTZ_SMALL_CONTACT):
+        warnings.warn(
+            f"{where}: contact half-width {float(np.max(ratio)):.3g} R_x is not small against "
+            f"the radius (Hertz's half-space assumption; guard {HERTZ_SMALL_CONTACT} R_x): the "
+            "load is far beyond the elastic small-contact range", ValidityWarning,
+            stacklevel=3)
 
 
 def _warn_not_steel(effective_modulus: Any) -> None:
@@ -395,6 +416,7 @@ def line_contact(load: Any, length: Any, rx: Any, effective_modulus: Any, *,
         p = np.where(point_regime, pc.max_pressure, p)
         delta = np.where(point_regime, pc.approach, delta)
         contact_len = np.where(point_regime, 2.0 * pc.a, contact_len)
+    _warn_large_contact(b, rx_a, "line_contact")
     _warn_not_steel(ep)
     return LineContact(np.asarray(b)[()], np.asarray(p)[()], np.asarray(delta)[()],
                        np.asarray(contact_len)[()], np.asarray(point_regime)[()])
