@@ -34,6 +34,7 @@ import numpy as np
 from .errors import (
     InputError,
     UnknownNameError,
+    ValidityWarning,
     check_finite,
     check_positive,
     check_temperature,
@@ -91,6 +92,10 @@ __all__ = [
 # ---------------------------------------------------------------------------
 # the Lubricant
 # ---------------------------------------------------------------------------
+#: upper end of ASTM D341's stated range, 1e6 cSt [m^2/s]
+_D341_MAX_NU = 1.0
+
+
 def _frozen(mapping: Mapping[str, Any]) -> tuple:
     return tuple(sorted((k, repr(v)) for k, v in mapping.items()))
 
@@ -248,7 +253,7 @@ class Lubricant:
         try:
             if type(T) is float:       # the scalar laws use math: overflow raises
                 v = law(T, **self.viscosity_parameters)
-                if math.isfinite(v) and v > 0.0:
+                if math.isfinite(v) and 0.0 < v <= _D341_MAX_NU:
                     return v
             else:
                 with np.errstate(over="ignore", invalid="ignore"):
@@ -263,6 +268,12 @@ class Lubricant:
                              f"a temperature at which the {self.viscosity_law} viscosity law of "
                              f"{self.name} is finite and > 0 (it overflows or underflows here; "
                              "the law is meant for the liquid range, cloud to boiling point)")
+        if self.viscosity_law == "astm_d341" and np.any(np.asarray(v) > _D341_MAX_NU):
+            # the law's stated range ends at 1e6 cSt (its registry entry; below 0.21 cSt the
+            # law itself warns): colder than that it extrapolates (session 10)
+            warnings.warn(f"{self.name}: ASTM D341 used above 1e6 cSt "
+                          f"({float(np.max(v)) * 1e6:.3g} cSt): outside its range (the oil is "
+                          "below its pour point)", ValidityWarning, stacklevel=3)
         return v
 
     @_memo_scalar

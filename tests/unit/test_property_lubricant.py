@@ -99,3 +99,18 @@ def test_extreme_temperatures_finite_or_clear_error(name, method, temperature):
 def test_bad_pressure_names_field(pressure):
     with pytest.raises(InputError, match="pressure"):
         PRESETS["ISO_VG68"].dynamic_viscosity(313.15, pressure)
+
+
+def test_d341_beyond_its_upper_range_warns():
+    """ASTM D341's stated range ends at 1e6 cSt (registry entry of the law); below 0.21 cSt
+    the law itself warns, above 1e6 cSt (ISO VG 100 at -55 degC: 1.9e7 cSt, far below its pour
+    point) it extrapolated silently until session 10. Normal cold starts (-20 degC) do not
+    warn."""
+    lub = PRESETS["ISO_VG100"]
+    with pytest.warns(ValidityWarning, match="above 1e6 cSt"):
+        lub.kinematic_viscosity(218.15)
+    with pytest.warns(ValidityWarning, match="above 1e6 cSt"):
+        lub.dynamic_viscosity(np.array([218.15, 313.15]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ValidityWarning)
+        assert lub.kinematic_viscosity(253.15) > 0.0
