@@ -53,6 +53,8 @@ from .scene import Scene, Step, loads_scene
 from .state import OilSupply, OperatingPoint
 from .units import from_si
 
+#: validity warnings printed by :meth:`Simulation.summary_text` (the report lists all)
+MAX_SHOWN_WARNINGS = 8
 #: The keys a scene's ``[models]`` table accepts.
 MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
                         "churning_heat_to", "calibration"})
@@ -622,6 +624,12 @@ class Simulation:
                          f"{abs(last['imbalance [J]']) / max(abs(gen), 1e-300):.2e} (relative)")
         lines.append(f"wall time {results.stats.get('wall_time_s', float('nan')):.2f} s, "
                      f"{results.stats.get('kinematics_solves', 0)} kinematics solves")
+        if results.warnings:
+            shown = results.warnings[:MAX_SHOWN_WARNINGS]
+            lines.append(f"validity warnings ({len(results.warnings)}; all in the report):")
+            lines.extend(f"  - {w}" for w in shown)
+            if len(results.warnings) > len(shown):
+                lines.append(f"  ... {len(results.warnings) - len(shown)} more")
         return "\n".join(lines)
 
 

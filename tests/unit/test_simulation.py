@@ -126,9 +126,13 @@ def test_run_warns_of_skidding_steps_in_its_results():
     sc = loads_scene(BASE.replace('kinematics = "race_control"', 'kinematics = "skidding"')
                      .replace('start = "2 kN"', 'start = "0 kN"')
                      + '[outputs]\nmode = "steady"\nwant = ["kinematics"]\n')
-    res = Simulation(sc, progress=False).run()
+    sim = Simulation(sc, progress=False)
+    res = sim.run()
     lines = [w for w in res.warnings if w.startswith("de: ")]
     assert len(lines) == 2, res.warnings
+    text = sim.summary_text(res)
+    assert f"validity warnings ({len(res.warnings)}; all in the report):" in text
+    assert f"  - {lines[0]}" in text
     assert "cage skidding" in lines[0] and "(step 0)" in lines[0]
     assert "cage over-skidding" in lines[1] and "(step 1)" in lines[1]
 
