@@ -719,6 +719,11 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
             row["central film [um]"] = extra["numerical central film [um]"]
             row["minimum film [um]"] = extra["numerical minimum film [um]"]
             row["film model"] = extra["film model"]
+        sigma = composite_roughness(b.bearing)
+        if sigma is not None:  # Lambda of the film the row reports (operating_checks)
+            row = rows[-1]
+            h = row.get("minimum film [um]", row["central film [um]"])
+            row["film parameter [-]"] = h * 1e-6 / sigma
     return rows
 
 

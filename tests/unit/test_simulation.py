@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from thermobearing.errors import InputError
@@ -42,6 +43,9 @@ def test_film_scene_runs_no_kinematics_no_network():
     film = res.tables["film"]
     assert set(film["race"]) >= {"inner", "outer"} or len(film) >= 2
     assert (film["central film [um]"] > 0).all()
+    # Lambda = h / (0.1^2 + 0.025^2)^(1/2) um with the QJ1044 preset's roughness estimates
+    np.testing.assert_allclose(film["film parameter [-]"],
+                               film["central film [um]"] / np.hypot(0.1, 0.025), rtol=1e-12)
     assert "kinematics" not in res.tables
 
 
