@@ -242,7 +242,7 @@ def check_roller_invariants(r, fr, name):
         assert r.residual_norm <= max(1e-9, 4.0 * r.extras["round_off_floor"])
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(name=st.sampled_from(sorted(ROLLER)), log_rpm=st.floats(math.log(10.0), math.log(20000.0)),
        log_fr=st.floats(math.log(50.0), math.log(20000.0)), t_c=st.floats(0.0, 140.0))
 def test_roller_solve_invariants(name, log_rpm, log_fr, t_c):
