@@ -127,25 +127,23 @@ class CheckLog:
         over = {i: max(c, key=lambda c: c.slip) for i, c in self.steps.items()}
         for name, worst, sign in (("skidding (cage slower than epicyclic)", skid, -1.0),
                                   ("over-skidding (cage faster than epicyclic)", over, 1.0)):
-            bad = sorted(i for i, c in worst.items() if sign * c.slip > SKID_LIMIT)
-            if bad:
-                i = max(bad, key=lambda k: sign * worst[k].slip)
-                c = worst[i]
+            flagged = _flag(worst, lambda c, s=sign: s * c.slip > SKID_LIMIT,
+                            lambda c, s=sign: s * c.slip)
+            if flagged:
+                where, i, c = flagged
                 lines.append(
-                    f"{self.bearing}: cage {name} by more than {SKID_LIMIT:.0%} at "
-                    f"{len(bad)} of {len(worst)} steps ({_ranges(bad)}); largest "
-                    f"{100 * c.slip:+.1f} % at step {i} (CSR {c.csr:.4f} against "
+                    f"{self.bearing}: cage {name} by more than {SKID_LIMIT:.0%} {where}; "
+                    f"largest {100 * c.slip:+.1f} % at step {i} (CSR {c.csr:.4f} against "
                     f"{c.csr_th:.4f}): gross sliding of the elements (smearing risk)")
         stress = {i: max(c, key=lambda c: c.max_pressure) for i, c in self.steps.items()}
-        bad = sorted(i for i, c in stress.items() if c.max_pressure > c.stress_limit)
-        if bad:
-            i = max(bad, key=lambda k: stress[k].max_pressure)
-            c = stress[i]
+        flagged = _flag(stress, lambda c: c.max_pressure > c.stress_limit,
+                        lambda c: c.max_pressure)
+        if flagged:
+            where, i, c = flagged
             lines.append(
                 f"{self.bearing}: contact pressure above the ISO 76 static-rating stress "
-                f"{c.stress_limit / 1e6:.0f} MPa at {len(bad)} of {len(stress)} steps "
-                f"({_ranges(bad)}); largest {c.max_pressure / 1e6:.0f} MPa at step {i}: "
-                "permanent raceway deformation")
+                f"{c.stress_limit / 1e6:.0f} MPa {where}; largest "
+                f"{c.max_pressure / 1e6:.0f} MPa at step {i}: permanent raceway deformation")
         if self.roughness is None:
             lines.append(f"{self.bearing}: film parameter Lambda not checked: the bearing "
                          "gives no raceway_roughness / element_roughness")
@@ -153,19 +151,28 @@ class CheckLog:
         films = {i: min((c for c in cs if c.film_parameter is not None),
                         key=lambda c: c.film_parameter, default=None)
                  for i, cs in self.steps.items()}
-        bad = sorted(i for i, c in films.items()
-                     if c is not None and c.film_parameter < LAMBDA_BOUNDARY)
-        if bad:
-            i = min(bad, key=lambda k: films[k].film_parameter)
-            c = films[i]
+        flagged = _flag(films, lambda c: c.film_parameter < LAMBDA_BOUNDARY,
+                        lambda c: -c.film_parameter)
+        if flagged:
+            where, i, c = flagged
             lines.append(
                 f"{self.bearing}: film parameter Lambda < {LAMBDA_BOUNDARY:g} (boundary "
-                f"lubrication) at {len(bad)} of {len(films)} steps ({_ranges(bad)}); "
-                f"smallest {c.film_parameter:.2f} at step {i} ({c.race} contact; film of "
-                f"the scene's film model over the composite roughness "
-                f"{self.roughness * 1e6:.3g} um): the EHL film and traction models do "
-                "not hold there")
+                f"lubrication) {where}; smallest {c.film_parameter:.2f} at step {i} "
+                f"({c.race} contact; film of the scene's film model over the composite "
+                f"roughness {self.roughness * 1e6:.3g} um): the EHL film and traction "
+                "models do not hold there")
         return lines
+
+
+def _flag(worst: dict[int, StateCheck | None], failing: Any, score: Any
+          ) -> tuple[str, int, StateCheck] | None:
+    """For the per-step worst states: ("at k of n steps (ranges)", the failing step of the
+    largest ``score``, its state), or None when no step fails."""
+    bad = sorted(i for i, c in worst.items() if c is not None and failing(c))
+    if not bad:
+        return None
+    i = max(bad, key=lambda k: score(worst[k]))
+    return f"at {len(bad)} of {len(worst)} steps ({_ranges(bad)})", i, worst[i]
 
 
 def _ranges(steps: list[int]) -> str:
