@@ -352,11 +352,14 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     for (kind, k, n, fm, snr) in entries:
         lines.append(DetectedLine(kind, (k, n), k * fc + n * shaft_frequency,
                                   fm if snr > thresh else math.nan, snr, snr > thresh))
-    # the shaft line itself (information only)
+    # the shaft line itself (information only); a peak in its +-2 % window that a line of
+    # the cage comb explains (e.g. 2 f_c = 29.5 Hz beside f_s = 30.2 Hz at CSR 0.488) is
+    # that line, not the shaft
     shaft_meas = None
     if shaft_frequency < es.frequency[-1] - df:
         fm, snr = refine_peak(es, shaft_frequency, 0.02 * shaft_frequency + df)
-        if snr > math.log(n_indep_line / alpha):
+        comb_line = any(abs(fm - (k * fc + n * shaft_frequency)) <= df for k, n, *_ in used)
+        if snr > math.log(n_indep_line / alpha) and not comb_line:
             shaft_meas = fm
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))

@@ -178,3 +178,28 @@ def test_shaft_modulation_alone_is_not_a_cage_line():
     x = impulse_train(1.0 / 7.0, n_balls=7, cage_modulation=0.0, snr_db=0.0, seed=9)
     est = S.estimate_cage_speed(x, FS, 30.0, 7, 0.37, search=(0.3, 1.3))
     assert not est.detected
+
+
+def test_cage_harmonic_beside_the_shaft_is_not_reported_as_the_shaft_line():
+    """At CSR 0.488 (QJ1044 over-skidding 8 %) the second cage harmonic, 29.5 Hz, falls in
+    the +-2 % window around the 30.2 Hz shaft frequency; a signal without any shaft
+    component must not report it as a measured shaft line (it once did)."""
+    csr = 0.452 * 1.08
+    x = impulse_train(csr, f_shaft=30.2, n_balls=20, duration=2.0, snr_db=0.0,
+                      cage_modulation=0.5, seed=4)
+    est = S.estimate_cage_speed(x, FS, 30.2, 20, 0.452)
+    assert est.detected and abs(est.csr / csr - 1) < 0.005
+    assert est.measured_shaft_frequency is None
+    shaft = [ln for ln in est.lines if ln.kind == "shaft"]
+    assert len(shaft) == 1 and not shaft[0].detected
+
+
+def test_a_real_shaft_line_is_still_measured():
+    """Amplitude modulation at the shaft frequency (runout) next to the cage comb: the shaft
+    line is measured at its frequency."""
+    t = np.arange(int(2 * FS)) / FS
+    x = impulse_train(0.45 * 0.9, f_shaft=30.0, duration=2.0, snr_db=10.0, seed=5)
+    x = x * (1.0 + 0.5 * np.cos(2 * math.pi * 30.0 * t))
+    est = S.estimate_cage_speed(x, FS, 30.0, 9, 0.45)
+    assert est.detected
+    assert est.measured_shaft_frequency == pytest.approx(30.0, abs=0.05)
