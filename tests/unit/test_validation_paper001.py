@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 from thermobearing.validation import run_case
 
 
+@pytest.mark.slow  # 34 s: the whole validation case (also run by `thermobearing validate`)
 def test_paper001_cage_sliding_trends_case():
     records = run_case("paper001_cage_sliding_trends")
     assert records and all(math.isfinite(r.computed) for r in records)

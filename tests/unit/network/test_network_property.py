@@ -80,7 +80,7 @@ def networks_with_free_convection(draw):
     return net, heat, t_end
 
 
-@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(networks_with_free_convection())
 def test_temperature_dependent_networks_close_their_books_and_reach_steady(case):
     """exprb43 and TR-BDF2 with temperature-dependent conductances (their drift in the
