@@ -86,6 +86,7 @@ def _ctx(b, lub, temperature, axial_load=0.0, options=None):
         options={"rib_friction": {"unbalance_mass": UNBALANCE, **(options or {})}})
 
 
+@pytest.mark.slow  # 13 s
 def test_coupled_heat_source_books_the_model_heat_and_caches_per_state(crb):
     from thermobearing.heat_sources import HEAT_SOURCES
 

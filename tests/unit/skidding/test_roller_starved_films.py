@@ -96,6 +96,7 @@ def test_films_too_thin_for_any_gap_rest_the_ring_on_one_roller():
     assert ld.ring_displacement[0] > 1.25e-5 - 2e-6
 
 
+@pytest.mark.slow  # 10 s
 def test_starved_film_supported_bearing_converges_and_keeps_the_energy_balance(nu214, oil):
     # paper 000 NU214, 150 N, 5000 r/min, 0.08 Pa s: with a 10 um oil layer the films no
     # longer reach across the gaps opposite the load (fewer rollers carry inner films than
@@ -111,6 +112,7 @@ def test_starved_film_supported_bearing_converges_and_keeps_the_energy_balance(n
     assert r.shaft_torque * OMEGA == pytest.approx(r.power_loss["total"], rel=1e-8)
 
 
+@pytest.mark.slow  # 20 s
 def test_starved_film_supported_cage_slows_with_load_through_fewer_driven_rollers(nu214, oil):
     # The session-6 mechanism of the paper 000 case (SOURCE.md): with a 10 um oil layer the
     # load moves the ring off centre, the films opposite the load no longer reach across
