@@ -74,7 +74,6 @@ def test_centrifugal_force_splits_contact_angles_and_seats_unloaded_balls():
 def test_robust_no_nan(Fr, Fa, n):
     ld = ball_load_distribution(qj_like(), Fr, Fa, n * math.pi / 30)
     assert ld.converged and np.all(np.isfinite(ld.contacts.load))
-    assert ld.extra["max_centring_force"] < 1e-2
 
 
 def test_warm_start_is_cheaper():
@@ -98,9 +97,12 @@ def test_gyroscopic_friction_option_balances_the_ring():
 
 
 # Values of the numpy implementation of ball_load_distribution (commit 87c0e55, before it was
-# compiled), captured with that code at full precision: the compiled Newton must reproduce
-# them to round-off (same iterations; positions to ~1e-15 m, loads to ~1e-11 relative were
-# measured over 1051 load/speed/Z/gyroscopic cases of both ball-bearing presets).
+# compiled), captured with that code at full precision. Until session 11 the compiled Newton
+# reproduced them to round-off. Since then the weak ball-centring spring is Jacobian-only
+# (it was a force in the residual of up to ~1e-5 N that entered the equilibrium) and the
+# solver takes per-ball damped, Levenberg-Marquardt steps, so the solution must agree to the
+# size of that removed force and the convergence tolerance (loads 2e-5 N of 300-1000 N,
+# positions 1e-10 m, angles 1e-8 rad), in no more iterations than the reference took.
 # (bearing, Fr [N], Fa [N], speed [r/min], gyroscopic, Z) ->
 # (delta_a, delta_r, ball_x[1], ball_r[1], inner_load[0], outer_load[-1],
 #  inner_contact_angle[0], gyroscopic_moment[0], iterations)
@@ -130,7 +132,7 @@ _NUMPY_REFERENCE = [
 
 
 @pytest.mark.parametrize("case,expected", _NUMPY_REFERENCE)
-def test_compiled_distribution_reproduces_the_numpy_values(case, expected):
+def test_compiled_distribution_reproduces_the_numpy_solution(case, expected):
     from thermobearing.geometry import load_bearing
 
     name, Fr, Fa, n, gyro, Z = case
@@ -138,10 +140,10 @@ def test_compiled_distribution_reproduces_the_numpy_values(case, expected):
                                 gyroscopic=gyro, n_balls=Z)
     got = (ld.delta_a, ld.delta_r, ld.ball_x[1], ld.ball_r[1], ld.inner_load[0],
            ld.outer_load[-1], ld.inner_contact_angle[0], ld.gyroscopic_moment[0])
-    atol = (1e-14, 1e-14, 1e-14, 1e-14, 1e-8, 1e-8, 1e-11, 1e-11)   # m, m, m, m, N, N, rad, N m
+    atol = (1e-10, 1e-10, 1e-10, 1e-10, 2e-5, 2e-5, 1e-8, 1e-10)   # m, m, m, m, N, N, rad, N m
     for g, e, a in zip(got, expected[:8], atol, strict=True):
-        assert g == pytest.approx(e, rel=1e-9, abs=a)
-    assert ld.iterations == expected[8]
+        assert g == pytest.approx(e, rel=0.0, abs=a)
+    assert ld.iterations <= expected[8]
 
 
 def test_arc_contacts_with_fixed_stiffness_scales_the_load():

@@ -126,14 +126,33 @@ def test_ball_load_distribution_light_radial_load_deep_groove():
         _check_ball(ld, fr, fa)
 
 
+def test_ball_load_distribution_points_fixed_in_session_11():
+    """Defects found here (session 10, open until session 11): SKF6304 at rest under 1 N
+    radial stopped at 4.3e-5 N; 21.9 kN radial + 6.26 kN axial (2.8x C0) stalled at 2.6e-4 N
+    at 10 r/min and took 660 iterations at 100 r/min. Causes: the ball-centring spring was a
+    force in the residual, centred on the pitch circle, that pulled balls resting in a groove
+    up its flank with more than their centrifugal force; the ring spring never relaxed; a
+    straight Newton step of a ball rolling down a groove flank climbed the arc. Now both
+    springs are Jacobian-only Levenberg-Marquardt terms, each ball is damped on its own
+    residual, and the ball steps follow the arc of their most loaded contact."""
+    b = BEARINGS["SKF6304"]
+    for fr, fa, rpm, max_it in ((1.0, 0.0, 0.0, 60), (21885.0, 6260.0, 10.0, 20),
+                                (21885.0, 6260.0, 100.0, 20), (21885.0, 6260.0, 0.0, 20),
+                                (10.0, 0.0, 10.0, 30)):
+        ld = ball_load_distribution(b, fr, fa, rpm * math.pi / 30)
+        _check_ball(ld, fr, fa)
+        assert ld.iterations <= max_it
+
+
 @pytest.mark.xfail(strict=True, raises=ConvergenceError,
-                   reason="open: SKF6304 at rest under a pure radial load of 1 N or less: the "
+                   reason="open: SKF6304 at rest under a pure radial load below 1 N: the "
                           "axial direction is a near-mechanism (only the loaded ball's "
                           "geometric stiffness Q/L holds it); Newton stops at residual "
-                          "4.3e-5 N (1 N) / 9.6e-4 N (1 mN) against a tolerance of 4e-9 N")
-def test_ball_load_distribution_sub_newton_radial_load_open():
-    ld = ball_load_distribution(BEARINGS["SKF6304"], 1.0, 0.0)
-    _check_ball(ld, 1.0, 0.0)
+                          "6.9e-3 N (0.1 N) / 4.0e-4 N (1 mN) against a tolerance of 4e-9 N")
+@pytest.mark.parametrize("fr", [0.1, 1e-3])
+def test_ball_load_distribution_sub_newton_radial_load_open(fr):
+    ld = ball_load_distribution(BEARINGS["SKF6304"], fr, 0.0)
+    _check_ball(ld, fr, 0.0)
 
 
 def test_ball_load_distribution_errors_are_clear():
@@ -190,12 +209,3 @@ def test_roller_zero_load_zero_clearance_is_finite():
     assert np.all(ld.inner_load == 0.0)
     np.testing.assert_allclose(ld.outer_load, 50.0)
 
-
-@pytest.mark.xfail(raises=ConvergenceError, strict=True,
-                   reason="open (session 10): SKF6304 at 21.9 kN radial + 6.26 kN axial "
-                   "(2.8x C0) and 10 r/min: the load distribution stalls at a residual of "
-                   "2.6e-4 N after 100 Newton iterations (2.4e-4 after 400; 1.2e-5 at rest, "
-                   "converged in 41); at 100 r/min it needs 660 iterations. Found by a "
-                   "random draw of test_ball_ring_equilibrium.")
-def test_ball_heavy_load_low_speed_open():
-    ball_load_distribution(BEARINGS["SKF6304"], 21885.0, 6260.0, 10.0 * math.pi / 30.0)
