@@ -25,16 +25,24 @@ range in which the bearing (and the models) run as intended:
   computed the losses do not hold (Hamrock, Schmid & Jacobson 2004, ch. 3, the bands of
   :func:`thermobearing.film.film_parameter`).
 
+The three thresholds are a study's choice: :class:`CheckLimits` holds them (defaults: the
+module constants below), a scene sets them in its optional ``[checks]`` table
+(:mod:`thermobearing.scene`), and the summary lines name the threshold used and where it
+comes from when it is not the default.
+
 Units SI. Pure functions; :class:`CheckLog` accumulates one bearing's steps.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
+
+from .errors import InputError
 
 #: |CSR / CSR_th - 1| above which a step is reported as skidding / over-skidding [-]
 SKID_LIMIT = 0.05
@@ -42,6 +50,132 @@ SKID_LIMIT = 0.05
 ISO76_STRESS = {"ball": 4.2e9, "self_aligning_ball": 4.6e9, "roller": 4.0e9}
 #: film parameter below which the contacts run in boundary lubrication [-]
 LAMBDA_BOUNDARY = 1.0
+#: the bearing families of the contact-stress limit (keys of ``ISO76_STRESS``)
+STRESS_FAMILIES = ("ball", "self_aligning_ball", "roller")
+#: smallest contact-stress limit accepted [Pa]: 1 MPa, far below any rolling contact's
+#: design stress (steel about 1.5-4.2 GPa, polymer bearings tens of MPa), so that a bare
+#: number meant in MPa (``3500``, read as 3500 Pa) is refused, not applied
+MIN_STRESS_LIMIT = 1e6
+#: where the thresholds of a :class:`CheckLimits` built without a source come from
+DEFAULT_LIMITS_SOURCE = "CheckLimits"
+
+
+@dataclass(frozen=True)
+class CheckLimits:
+    """The thresholds of the validity checks of one run.
+
+    skid_limit : |CSR / CSR_th - 1| above which a step is skidding / over-skidding [-],
+        in (0, 1) (default ``SKID_LIMIT``, 5 %).
+    ball_stress_limit, self_aligning_ball_stress_limit, roller_stress_limit : largest
+        admissible Hertz pressure p0 [Pa] of the bearing family (defaults: the ISO 76
+        static-rating stresses ``ISO76_STRESS``, 4200 / 4600 / 4000 MPa).
+    min_film_parameter : film parameter Lambda [-] below which a step is flagged (default
+        ``LAMBDA_BOUNDARY``, 1: boundary lubrication).
+    source : where the values that differ from the defaults come from (named in the
+        summary lines, e.g. ``"scene [checks]"``).
+
+    Every limit must be finite and > 0, the skid limit < 1; an :class:`InputError` names the
+    field otherwise.
+    """
+
+    skid_limit: float = SKID_LIMIT
+    ball_stress_limit: float = ISO76_STRESS["ball"]
+    self_aligning_ball_stress_limit: float = ISO76_STRESS["self_aligning_ball"]
+    roller_stress_limit: float = ISO76_STRESS["roller"]
+    min_film_parameter: float = LAMBDA_BOUNDARY
+    source: str = DEFAULT_LIMITS_SOURCE
+
+    def __post_init__(self) -> None:
+        for name in ("skid_limit", *(f"{f}_stress_limit" for f in STRESS_FAMILIES),
+                     "min_film_parameter"):
+            check_limit_value(name, getattr(self, name), f"CheckLimits.{name}")
+        if not isinstance(self.source, str):
+            raise InputError("CheckLimits.source", self.source, "a text (where the limits "
+                             "come from)")
+
+    def stress_limit(self, family: str) -> float:
+        """Contact-stress limit [Pa] of a bearing family (``STRESS_FAMILIES``)."""
+        if family not in STRESS_FAMILIES:
+            raise InputError("family", family, "one of " + ", ".join(STRESS_FAMILIES))
+        return float(getattr(self, f"{family}_stress_limit"))
+
+    def is_default(self, name: str) -> bool:
+        """Whether the limit ``name`` (a field name) has its default value."""
+        return getattr(self, name) == _DEFAULT_VALUES[name]
+
+    @property
+    def all_default(self) -> bool:
+        """Every threshold is the default (the source then does not matter)."""
+        return all(self.is_default(n) for n in _DEFAULT_VALUES)
+
+    def describe(self) -> str:
+        """One line naming every threshold and whether it is the default or set (for the
+        report): ``"skidding |s| > 5% (default); contact stress > 4200 MPa ball, ..."``."""
+        def tag(names: tuple[str, ...], default: str) -> str:
+            return default if all(self.is_default(n) for n in names) else self.source
+
+        iso = "ISO 76 static-rating stress"
+        stress = ", ".join(f"{self.stress_limit(f) / 1e6:.4g} MPa {f.replace('_', '-')}"
+                           for f in STRESS_FAMILIES)
+        if all(self.is_default(f"{f}_stress_limit") for f in STRESS_FAMILIES):
+            stress += f" ({iso})"
+        else:  # some families set: the source of each
+            stress = ", ".join(
+                f"{self.stress_limit(f) / 1e6:.4g} MPa {f.replace('_', '-')} "
+                f"({tag((f'{f}_stress_limit',), 'ISO 76')})" for f in STRESS_FAMILIES)
+        return (f"cage skidding / over-skidding |CSR/CSR_th - 1| > {_pct(self.skid_limit)} "
+                f"({tag(('skid_limit',), 'default')}); Hertz pressure > {stress}; "
+                "film parameter "
+                f"Lambda < {self.min_film_parameter:g} "
+                f"({tag(('min_film_parameter',), 'default: boundary lubrication')})")
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> CheckLimits:
+        """The limits of an :meth:`as_dict` record (a run's ``metadata.json``); unknown keys
+        are an :class:`InputError`."""
+        known = (*_DEFAULT_VALUES, "source")
+        for key in data:
+            if key not in known:
+                raise InputError(f"check_limits.{key}", data[key],
+                                 "a known key: " + ", ".join(known))
+        source = str(data.get("source", DEFAULT_LIMITS_SOURCE))
+        return cls(**{k: data[k] for k in _DEFAULT_VALUES if k in data}, source=source)
+
+    def as_dict(self) -> dict[str, float | str]:
+        """The thresholds in SI (stress [Pa], the others [-]) and their source, for a run's
+        results (``Results.check_limits``, ``metadata.json``)."""
+        out: dict[str, float | str] = {n: float(getattr(self, n)) for n in _DEFAULT_VALUES}
+        out["source"] = "default" if self.all_default else self.source
+        return out
+
+
+def check_limit_value(name: str, value: Any, field_name: str, raw: Any = None) -> None:
+    """Raise :class:`InputError` naming ``field_name`` unless ``value`` is a valid threshold
+    ``name`` of :class:`CheckLimits` (finite, > 0; the skid limit < 1). ``raw``: the value
+    as the user wrote it (default ``value``), shown in the message."""
+    shown = value if raw is None else raw
+    allowed = {"skid_limit": "a fraction in (0, 1), e.g. 0.02 or \"2 %\"",
+               "min_film_parameter": "a film parameter Lambda > 0, e.g. 1.5"}.get(
+        name, f"a stress >= {MIN_STRESS_LIMIT / 1e6:g} MPa (a bare number is in Pa), "
+        "e.g. \"3500 MPa\"")
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise InputError(field_name, shown, allowed)
+    low, high = {"skid_limit": (0.0, 1.0), "min_film_parameter": (0.0, math.inf)}.get(
+        name, (MIN_STRESS_LIMIT, math.inf))
+    if not (math.isfinite(value) and value > 0.0 and low <= value < high):
+        raise InputError(field_name, shown, allowed)
+
+
+#: the default value of every threshold of :class:`CheckLimits` (field name -> SI value)
+_DEFAULT_VALUES: dict[str, float] = {f.name: f.default for f in fields(CheckLimits)
+                                     if f.name != "source"}
+#: the default thresholds (the module constants)
+DEFAULT_LIMITS = CheckLimits()
+
+
+def _pct(fraction: float) -> str:
+    """0.05 -> ``"5%"``, 0.025 -> ``"2.5%"`` (the summary lines' spelling)."""
+    return f"{100.0 * fraction:.4g}%"
 
 
 @dataclass(frozen=True)
@@ -49,10 +183,12 @@ class StateCheck:
     """The checked quantities of one kinematic state.
 
     slip : CSR / CSR_th - 1 [-] (negative: skidding). csr, csr_th : the two ratios [-].
-    max_pressure : largest Hertz pressure of the loaded contacts [Pa]; stress_limit : ISO 76
-    stress of the bearing's family [Pa]. film_parameter : smallest Lambda of the loaded
-    contacts [-], None when the bearing gives no roughness or the state no film; race : the
-    raceway where it occurs.
+    max_pressure : largest Hertz pressure of the loaded contacts [Pa]; stress_limit : the
+    contact-stress limit of the bearing's family it was checked against [Pa] (the ISO 76
+    stress unless :class:`CheckLimits` sets another). film_parameter : smallest Lambda of the
+    loaded contacts [-], None when the bearing gives no roughness or the state no film;
+    race : the raceway where it occurs. family : the bearing family of the stress limit
+    (``STRESS_FAMILIES``; "" when unknown).
     """
 
     slip: float
@@ -62,6 +198,7 @@ class StateCheck:
     stress_limit: float
     film_parameter: float | None
     race: str = ""
+    family: str = ""
 
 
 def composite_roughness(bearing: Any) -> float | None:
@@ -73,17 +210,24 @@ def composite_roughness(bearing: Any) -> float | None:
     return math.hypot(r, e)
 
 
-def stress_limit(bearing: Any) -> float:
-    """ISO 76 static-rating contact stress [Pa] of the bearing's family (module docstring)."""
+def bearing_family(bearing: Any) -> str:
+    """The family of the contact-stress limit (``STRESS_FAMILIES``): ball, self-aligning
+    ball (``kind == "self_aligning"``) or roller bearing."""
     if hasattr(bearing, "ball_diameter"):
-        kind = "self_aligning_ball" if getattr(bearing, "kind", "") == "self_aligning" \
+        return "self_aligning_ball" if getattr(bearing, "kind", "") == "self_aligning" \
             else "ball"
-        return ISO76_STRESS[kind]
-    return ISO76_STRESS["roller"]
+    return "roller"
 
 
-def check_state(bearing: Any, kin: Any) -> StateCheck:
-    """The checked quantities of a solved state (``kinematic_models.KinematicsResult``)."""
+def stress_limit(bearing: Any, limits: CheckLimits = DEFAULT_LIMITS) -> float:
+    """Contact-stress limit [Pa] of the bearing's family: the ISO 76 static-rating stress
+    (module docstring) unless ``limits`` sets another."""
+    return limits.stress_limit(bearing_family(bearing))
+
+
+def check_state(bearing: Any, kin: Any, limits: CheckLimits = DEFAULT_LIMITS) -> StateCheck:
+    """The checked quantities of a solved state (``kinematic_models.KinematicsResult``);
+    ``limits`` gives the stress limit recorded with it (default: ISO 76)."""
     sigma = composite_roughness(bearing)
     p_max = 0.0
     lam_min, race_min = math.inf, ""
@@ -102,18 +246,25 @@ def check_state(bearing: Any, kin: Any) -> StateCheck:
     return StateCheck(
         slip=float(kin.over_skid), csr=float(kin.cage_speed_ratio),
         csr_th=float(kin.theoretical_cage_speed_ratio), max_pressure=p_max,
-        stress_limit=stress_limit(bearing),
-        film_parameter=None if math.isinf(lam_min) else lam_min, race=race_min)
+        stress_limit=stress_limit(bearing, limits),
+        film_parameter=None if math.isinf(lam_min) else lam_min, race=race_min,
+        family=bearing_family(bearing))
 
 
 @dataclass
 class CheckLog:
     """The worst checked quantities of one bearing per schedule step (a step's kinematics
-    may be re-solved as the temperatures move; the worst state counts)."""
+    may be re-solved as the temperatures move; the worst state counts).
+
+    bearing : the bearing's name in the scene. roughness : composite RMS roughness [m], None
+    when the bearing gives none. limits : the thresholds the summary applies (record states
+    made by :func:`check_state` with the same ``limits``: the stress limit is the state's).
+    """
 
     bearing: str
     roughness: float | None
     steps: dict[int, list[StateCheck]] = field(default_factory=dict)
+    limits: CheckLimits = DEFAULT_LIMITS
 
     def record(self, step: int, check: StateCheck) -> None:
         self.steps.setdefault(step, []).append(check)
@@ -121,47 +272,82 @@ class CheckLog:
     def summary(self) -> list[str]:
         """One line per check that some step fails (empty when every step passes), plus a
         line saying the film parameter was not checked when the bearing gives no
-        roughness."""
+        roughness. A threshold that is not the default is named with its source
+        (``CheckLimits.source``, e.g. "scene [checks]")."""
+        lim = self.limits
         lines: list[str] = []
+        skid_limit = lim.skid_limit
+        skid_text = _pct(skid_limit) if lim.is_default("skid_limit") \
+            else f"{_pct(skid_limit)} ({lim.source})"
         skid = {i: min(c, key=lambda c: c.slip) for i, c in self.steps.items()}
         over = {i: max(c, key=lambda c: c.slip) for i, c in self.steps.items()}
         for name, worst, sign in (("skidding (cage slower than epicyclic)", skid, -1.0),
                                   ("over-skidding (cage faster than epicyclic)", over, 1.0)):
-            flagged = _flag(worst, lambda c, s=sign: s * c.slip > SKID_LIMIT,
+            flagged = _flag(worst, lambda c, s=sign: s * c.slip > skid_limit,
                             lambda c, s=sign: s * c.slip)
             if flagged:
                 where, i, c = flagged
                 lines.append(
-                    f"{self.bearing}: cage {name} by more than {SKID_LIMIT:.0%} {where}; "
+                    f"{self.bearing}: cage {name} by more than {skid_text} {where}; "
                     f"largest {100 * c.slip:+.1f} % at step {i} (CSR {c.csr:.4f} against "
                     f"{c.csr_th:.4f}): gross sliding of the elements (smearing risk)")
         stress = {i: max(c, key=lambda c: c.max_pressure) for i, c in self.steps.items()}
         flagged = _flag(stress, lambda c: c.max_pressure > c.stress_limit,
                         lambda c: c.max_pressure)
         if flagged:
-            where, i, c = flagged
-            lines.append(
-                f"{self.bearing}: contact pressure above the ISO 76 static-rating stress "
-                f"{c.stress_limit / 1e6:.0f} MPa {where}; largest "
-                f"{c.max_pressure / 1e6:.0f} MPa at step {i}: permanent raceway deformation")
+            lines.append(self._stress_line(*flagged))
         if self.roughness is None:
             lines.append(f"{self.bearing}: film parameter Lambda not checked: the bearing "
                          "gives no raceway_roughness / element_roughness")
             return lines
+        lam_min = lim.min_film_parameter
         films = {i: min((c for c in cs if c.film_parameter is not None),
                         key=lambda c: c.film_parameter, default=None)
                  for i, cs in self.steps.items()}
-        flagged = _flag(films, lambda c: c.film_parameter < LAMBDA_BOUNDARY,
+        flagged = _flag(films, lambda c: c.film_parameter < lam_min,
                         lambda c: -c.film_parameter)
         if flagged:
             where, i, c = flagged
-            lines.append(
-                f"{self.bearing}: film parameter Lambda < {LAMBDA_BOUNDARY:g} (boundary "
-                f"lubrication) {where}; smallest {c.film_parameter:.2f} at step {i} "
-                f"({c.race} contact; film of the scene's film model over the composite "
-                f"roughness {self.roughness * 1e6:.3g} um): the EHL film and traction "
-                "models do not hold there")
+            detail = (f"smallest {c.film_parameter:.2f} at step {i} ({c.race} contact; film "
+                      f"of the scene's film model over the composite roughness "
+                      f"{self.roughness * 1e6:.3g} um)")
+            if lim.is_default("min_film_parameter"):
+                lines.append(
+                    f"{self.bearing}: film parameter Lambda < {lam_min:g} (boundary "
+                    f"lubrication) {where}; {detail}: the EHL film and traction "
+                    "models do not hold there")
+            else:
+                lines.append(
+                    f"{self.bearing}: film parameter Lambda < {lam_min:g} ({lim.source}) "
+                    f"{where}; {detail}: {_film_regime(c.film_parameter)}")
         return lines
+
+    def _stress_line(self, where: str, i: int, c: StateCheck) -> str:
+        """The summary line of the contact-stress check (worst state ``c`` at step ``i``)."""
+        iso = ISO76_STRESS.get(c.family)
+        head = f"{self.bearing}: contact pressure above the "
+        tail = f"; largest {c.max_pressure / 1e6:.0f} MPa at step {i}"
+        if iso is None or c.stress_limit == iso:
+            return (f"{head}ISO 76 static-rating stress {c.stress_limit / 1e6:.0f} MPa "
+                    f"{where}{tail}: permanent raceway deformation")
+        if c.max_pressure > iso:
+            effect = (f": above the ISO 76 static-rating stress {iso / 1e6:.0f} MPa too "
+                      "(permanent raceway deformation)")
+        else:
+            effect = f" (below the ISO 76 static-rating stress {iso / 1e6:.0f} MPa)"
+        return (f"{head}stress limit {c.stress_limit / 1e6:.4g} MPa ({self.limits.source}) "
+                f"{where}{tail}{effect}")
+
+
+def _film_regime(lam: float) -> str:
+    """The lubrication regime of a film parameter (bands of
+    :func:`thermobearing.film.film_parameter`, Hamrock et al. 2004, ch. 3)."""
+    if lam < 1.0:
+        return ("boundary lubrication (Lambda < 1), where the EHL film and traction models "
+                "do not hold")
+    if lam < 3.0:
+        return "mixed lubrication (1 <= Lambda < 3): the asperities carry part of the load"
+    return "full-film lubrication (Lambda >= 3), below the set threshold"
 
 
 def _flag(worst: dict[int, StateCheck | None], failing: Any, score: Any

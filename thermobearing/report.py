@@ -15,6 +15,7 @@ the model chain that ran, its citations, the energy audit and the validity warni
 from __future__ import annotations
 
 import base64
+import dataclasses
 import html
 import io
 import math
@@ -30,6 +31,7 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
 from .errors import InputError  # noqa: E402
+from .operating_checks import CheckLimits  # noqa: E402
 from .results import Results  # noqa: E402
 
 SECTIONS = ("Scene", "Model chain", "Figures", "Energy audit", "Validity warnings",
@@ -284,6 +286,9 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     else:
         parts.append("<p>(no transient run: no energy audit)</p>")
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
+    if results.check_limits:
+        limits = CheckLimits.from_dict(results.check_limits)
+        parts.append(f"<p>thresholds of the operating checks: {esc(limits.describe())}</p>")
     if results.warnings:
         parts.append("<ul>" + "".join(f"<li class='warn'>{esc(w)}</li>"
                                       for w in results.warnings) + "</ul>")
@@ -350,7 +355,12 @@ def attach_figures(results: Results, scene: Any) -> None:
 
 
 def write_report(results: Results, scene: Any, path: Path | str) -> Path:
-    """Write the self-contained HTML report of a run."""
+    """Write the self-contained HTML report of a run (a run without recorded check limits,
+    e.g. one read back from an older ``metadata.json``, shows the scene's ``[checks]``,
+    else the defaults)."""
+    if not results.check_limits:
+        limits = getattr(scene, "checks", None) or CheckLimits()
+        results = dataclasses.replace(results, check_limits=limits.as_dict())
     extra = {}
     temps = results.tables.get("temperatures")
     if scene.measured is not None and temps is not None:

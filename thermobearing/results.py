@@ -46,6 +46,9 @@ class Results:
     citations : formatted references of the models that ran.
     warnings : validity warnings collected during the run.
     stats : solver statistics (steps, Newton iterations, re-solves, wall time...).
+    check_limits : the thresholds the validity warnings applied
+        (``operating_checks.CheckLimits.as_dict``: skid limit [-], stress limits [Pa] per
+        bearing family, minimum film parameter [-], and their source); empty when unknown.
     """
 
     tables: dict[str, pd.DataFrame] = field(default_factory=dict)
@@ -55,6 +58,7 @@ class Results:
     warnings: list[str] = field(default_factory=list)
     stats: dict[str, Any] = field(default_factory=dict)
     figures: dict[str, bytes] = field(default_factory=dict)
+    check_limits: dict[str, Any] = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> pd.DataFrame:
         return self.tables[name]
@@ -82,6 +86,8 @@ class Results:
             "warnings": self.warnings,
             "stats": _jsonable(self.stats),
         }
+        if self.check_limits:
+            meta["check_limits"] = _jsonable(self.check_limits)
         (out / "metadata.json").write_text(json.dumps(meta, indent=1), encoding="utf-8")
         for name, png in self.figures.items():
             (out / f"{name}.png").write_bytes(png)

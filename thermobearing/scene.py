@@ -64,6 +64,11 @@ Layout (every table optional unless marked)::
     mode = "transient"                 # transient | steady
     want = ["temperatures", "losses", "kinematics", "energy", "report"]
 
+    [checks]                           # thresholds of the validity warnings (operating_checks)
+    skid_limit = "2 %"                 # |CSR/CSR_th - 1| [-]; default 5 %
+    contact_stress_limit = "3500 MPa"  # or { ball = ..., self_aligning_ball = ..., roller = ... }
+    min_film_parameter = 1.5           # Lambda [-]; default 1 (boundary lubrication)
+
     [measured]
     file = "rig.csv"
     time_column = "time [min]"
@@ -83,6 +88,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import InputError, UnknownNameError
+from .operating_checks import STRESS_FAMILIES, CheckLimits, check_limit_value
 from .units import format_quantity, to_si
 
 SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
@@ -90,6 +96,10 @@ OUTPUT_MODES = ("transient", "steady")
 OUTPUT_KINDS = (
     "temperatures", "losses", "kinematics", "energy", "film", "report", "figures",
 )
+#: the keys of the optional ``[checks]`` table
+CHECK_KEYS = ("skid_limit", "contact_stress_limit", "min_film_parameter")
+#: what a run's summary names as the source of limits set in the scene
+CHECKS_SOURCE = "scene [checks]"
 
 
 def _check_keys(section: str, data: Mapping[str, Any], allowed: Sequence[str]) -> None:
@@ -505,6 +515,59 @@ class Outputs:
         return out
 
 
+def checks_from_dict(data: Mapping[str, Any]) -> CheckLimits:
+    """The thresholds of the optional ``[checks]`` table (:class:`CheckLimits`, SI).
+
+    ``skid_limit`` and ``min_film_parameter`` are dimensionless (``0.02``, ``"2 %"``, ``1.5``);
+    ``contact_stress_limit`` is a stress (``"3500 MPa"``) for every bearing family, or a
+    table ``{ ball = ..., self_aligning_ball = ..., roller = ... }`` setting some of them
+    (the others keep the ISO 76 stress). Keys left out keep their defaults.
+    """
+    _check_keys("checks", data, CHECK_KEYS)
+    kw: dict[str, float] = {}
+
+    def limit(name: str, raw: Any, kind: str, where: str) -> None:
+        value = to_si(raw, kind, field=where)
+        check_limit_value(name, value, where, raw)
+        kw[name] = value
+
+    for name in ("skid_limit", "min_film_parameter"):
+        if name in data:
+            limit(name, data[name], "dimensionless", f"checks.{name}")
+    if "contact_stress_limit" in data:
+        raw = data["contact_stress_limit"]
+        if isinstance(raw, Mapping):
+            _check_keys("checks.contact_stress_limit", raw, STRESS_FAMILIES)
+            if not raw:
+                raise InputError("checks.contact_stress_limit", dict(raw),
+                                 "a stress, or a table naming one or more of "
+                                 + ", ".join(STRESS_FAMILIES))
+            for family, value in raw.items():
+                limit(f"{family}_stress_limit", value, "stress",
+                      f"checks.contact_stress_limit.{family}")
+        else:
+            for family in STRESS_FAMILIES:
+                limit(f"{family}_stress_limit", raw, "stress", "checks.contact_stress_limit")
+    return CheckLimits(**kw, source=CHECKS_SOURCE)
+
+
+def checks_to_dict(limits: CheckLimits) -> dict[str, Any]:
+    """The ``[checks]`` table of ``limits``: only the thresholds that differ from the
+    defaults; one stress when every family has the same set value."""
+    out: dict[str, Any] = {}
+    if not limits.is_default("skid_limit"):
+        out["skid_limit"] = limits.skid_limit
+    stress = {f: limits.stress_limit(f) for f in STRESS_FAMILIES
+              if not limits.is_default(f"{f}_stress_limit")}
+    if len(stress) == len(STRESS_FAMILIES) and len(set(stress.values())) == 1:
+        out["contact_stress_limit"] = _fmt(next(iter(stress.values())), "MPa")
+    elif stress:
+        out["contact_stress_limit"] = {f: _fmt(v, "MPa") for f, v in stress.items()}
+    if not limits.is_default("min_film_parameter"):
+        out["min_film_parameter"] = limits.min_film_parameter
+    return out
+
+
 @dataclass(frozen=True)
 class Scene:
     """One configured study (see the module docstring for the TOML layout)."""
@@ -522,9 +585,11 @@ class Scene:
     measured: Measured | None = None
     source: str = ""
     base_dir: str | None = None
+    #: thresholds of the run's validity checks (``[checks]``; None: the defaults)
+    checks: CheckLimits | None = None
 
     _TOP = ("title", "source", "bearings", "lubricant", "supply", "environment", "schedule",
-            "models", "network", "solver", "outputs", "measured")
+            "models", "network", "solver", "outputs", "measured", "checks")
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Scene:
@@ -547,7 +612,7 @@ class Scene:
         if ("preset" in lub) == ("path" in lub):
             raise InputError("lubricant", lub, "exactly one of 'preset' or 'path'")
         for name in ("supply", "environment", "schedule", "models", "network", "solver",
-                     "outputs", "measured"):
+                     "outputs", "measured", "checks"):
             if name in data:
                 _table(name, data[name])
         if "path" in lub:
@@ -575,6 +640,7 @@ class Scene:
             outputs=Outputs.from_dict(data.get("outputs", {})),
             measured=Measured.from_dict(data["measured"]) if "measured" in data else None,
             base_dir=str(base_dir) if base_dir is not None else None,
+            checks=checks_from_dict(data["checks"]) if "checks" in data else None,
         )
         # names, keys and units of [network] now; the template's required parameters only
         # when the scene is run (check_network(..., require=True) in `run` / `check`), so
@@ -602,6 +668,8 @@ class Scene:
             out["network"] = dict(self.network)
         out["solver"] = self.solver.to_dict()
         out["outputs"] = self.outputs.to_dict()
+        if self.checks is not None:
+            out["checks"] = checks_to_dict(self.checks)
         if self.measured is not None:
             out["measured"] = self.measured.to_dict()
         return out

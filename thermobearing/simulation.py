@@ -47,7 +47,7 @@ import pandas as pd
 from .citations import cite
 from .errors import ConvergenceError, InputError, UnknownNameError, ValidityWarning
 from .kinematic_models import KINEMATICS, KinematicsResult
-from .operating_checks import CheckLog, check_state, composite_roughness
+from .operating_checks import CheckLimits, CheckLog, check_state, composite_roughness
 from .results import Results, ResultsWriter
 from .scene import Scene, Step, loads_scene
 from .state import OilSupply, OperatingPoint
@@ -371,8 +371,11 @@ class Simulation:
         # identical bearings (same preset and overrides) at the same state share results
         self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
         self._heat_memo: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
+        #: thresholds of the validity checks: the scene's [checks], else the defaults
+        self.check_limits = scene.checks if scene.checks is not None else CheckLimits()
         #: validity checks of every solved kinematic state, per bearing (report warnings)
-        self.checks = {b.name: CheckLog(b.name, composite_roughness(b.bearing))
+        self.checks = {b.name: CheckLog(b.name, composite_roughness(b.bearing),
+                                        limits=self.check_limits)
                        for b in self.bearings}
 
     # ------------------------------------------------------------------ chain
@@ -406,7 +409,8 @@ class Simulation:
         shared = self._kin_shared.get((b.key, step_index))
         if shared is not None and abs(visc / shared[0] - 1.0) <= tol:
             b.last, b.last_viscosity, b.last_step = shared[1], shared[0], step_index
-            self.checks[b.name].record(step_index, check_state(b.bearing, shared[1]))
+            self.checks[b.name].record(step_index, check_state(b.bearing, shared[1],
+                                                               self.check_limits))
             return shared[1]
         op = self._operating(step)
         fn = KINEMATICS.get(b.kinematics_name)
@@ -430,7 +434,7 @@ class Simulation:
         b.last, b.last_viscosity, b.last_step = res, visc, step_index
         self._kin_shared[(b.key, step_index)] = (visc, res)
         b.solves += 1
-        self.checks[b.name].record(step_index, check_state(b.bearing, res))
+        self.checks[b.name].record(step_index, check_state(b.bearing, res, self.check_limits))
         return res
 
     def _note(self, caught: Sequence[warnings.WarningMessage], where: str) -> None:
@@ -550,7 +554,7 @@ class Simulation:
         results = Results(tables=tables, scene_toml=scene_toml,
                           chain=[(link.family, link.name) for link in self.chain],
                           citations=self.citations(), warnings=list(self.warnings) + checked,
-                          stats=stats)
+                          stats=stats, check_limits=self.check_limits.as_dict())
         if out_dir is not None:
             from .report import attach_figures, write_report
 
