@@ -74,8 +74,9 @@ class CheckLimits:
     source : where the values that differ from the defaults come from (named in the
         summary lines, e.g. ``"scene [checks]"``).
 
-    Every limit must be finite and > 0, the skid limit < 1; an :class:`InputError` names the
-    field otherwise.
+    Every limit must be a finite number > 0, the skid limit < 1, a stress limit at least
+    ``MIN_STRESS_LIMIT`` (1 MPa); an :class:`InputError` names the field otherwise. Integers
+    are stored as floats.
     """
 
     skid_limit: float = SKID_LIMIT
@@ -89,6 +90,7 @@ class CheckLimits:
         for name in ("skid_limit", *(f"{f}_stress_limit" for f in STRESS_FAMILIES),
                      "min_film_parameter"):
             check_limit_value(name, getattr(self, name), f"CheckLimits.{name}")
+            object.__setattr__(self, name, float(getattr(self, name)))
         if not isinstance(self.source, str):
             raise InputError("CheckLimits.source", self.source, "a text (where the limits "
                              "come from)")
@@ -327,10 +329,13 @@ class CheckLog:
         iso = ISO76_STRESS.get(c.family)
         head = f"{self.bearing}: contact pressure above the "
         tail = f"; largest {c.max_pressure / 1e6:.0f} MPa at step {i}"
-        if iso is None or c.stress_limit == iso:
+        legacy = iso is None and self.limits.all_default  # a state made without a family
+        if c.stress_limit == iso or legacy:
             return (f"{head}ISO 76 static-rating stress {c.stress_limit / 1e6:.0f} MPa "
                     f"{where}{tail}: permanent raceway deformation")
-        if c.max_pressure > iso:
+        if iso is None:
+            effect = ""
+        elif c.max_pressure > iso:
             effect = (f": above the ISO 76 static-rating stress {iso / 1e6:.0f} MPa too "
                       "(permanent raceway deformation)")
         else:

@@ -184,6 +184,22 @@ def test_as_dict_round_trip_and_unknown_key():
         CheckLimits.from_dict({"colour": 1})
 
 
+def test_limits_apply_by_bearing_family():
+    """The stress limit of a state is its bearing family's: the NU214 is a roller bearing,
+    the QJ1044 a ball bearing (presets); integers are stored as floats."""
+    from thermobearing.geometry import load_bearing
+    from thermobearing.operating_checks import bearing_family, stress_limit
+
+    limits = CheckLimits(ball_stress_limit=3_800_000_000, roller_stress_limit=3.1e9)
+    assert isinstance(limits.ball_stress_limit, float)
+    assert bearing_family(load_bearing("NU214")) == "roller"
+    assert stress_limit(load_bearing("NU214"), limits) == 3.1e9
+    assert stress_limit(load_bearing("QJ1044"), limits) == 3.8e9
+    assert stress_limit(load_bearing("QJ1044")) == ISO76_STRESS["ball"]
+    with pytest.raises(InputError, match="family"):
+        limits.stress_limit("needle")
+
+
 # ------------------------------------------------------------------ wording
 def _state(slip=0.0, p=1e9, limit=4.2e9, lam=None, family="ball"):
     return StateCheck(slip, 0.45 * (1 + slip), 0.45, p, limit, lam, "inner", family)
@@ -215,6 +231,20 @@ def test_set_stress_limit_says_how_it_stands_to_iso76():
         "stress 4200 MPa)")
     assert above.summary()[0].endswith(": above the ISO 76 static-rating stress 4200 MPa "
                                        "too (permanent raceway deformation)")
+
+
+def test_state_without_family_under_set_limits_says_stress_limit():
+    """A StateCheck built without its family (older callers) is named by the set limit, not
+    as the ISO 76 stress; with the default limits the wording is the ISO 76 one."""
+    limits = CheckLimits(ball_stress_limit=3.5e9, source="scene [checks]")
+    log = CheckLog("b", None, limits=limits)
+    log.record(0, _state(p=3.8e9, limit=3.5e9, family=""))
+    assert log.summary()[0] == ("b: contact pressure above the stress limit 3500 MPa "
+                                "(scene [checks]) at 1 of 1 steps (step 0); largest 3800 MPa "
+                                "at step 0")
+    legacy = CheckLog("b", None)
+    legacy.record(0, _state(p=4.4e9, family=""))
+    assert "ISO 76 static-rating stress 4200 MPa at 1 of 1 steps" in legacy.summary()[0]
 
 
 def test_set_film_parameter_names_the_regime():
