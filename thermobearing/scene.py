@@ -556,7 +556,9 @@ def checks_to_dict(limits: CheckLimits) -> dict[str, Any]:
     defaults; one stress when every family has the same set value."""
     out: dict[str, Any] = {}
     if not limits.is_default("skid_limit"):
-        out["skid_limit"] = limits.skid_limit
+        percent = f"{100.0 * limits.skid_limit:.12g} %"  # as users write it, when exact
+        out["skid_limit"] = percent if to_si(percent, "dimensionless") == limits.skid_limit \
+            else limits.skid_limit
     stress = {f: limits.stress_limit(f) for f in STRESS_FAMILIES
               if not limits.is_default(f"{f}_stress_limit")}
     if len(stress) == len(STRESS_FAMILIES) and len(set(stress.values())) == 1:

@@ -123,8 +123,12 @@ def test_only_set_thresholds_are_written():
     text = loads_scene(with_checks('skid_limit = "2 %"\ncontact_stress_limit = "3500 MPa"')
                        ).to_toml()
     block = text.split("[checks]\n", 1)[1].split("\n[", 1)[0]
-    assert block.strip().splitlines() == ["skid_limit = 0.02",
+    assert block.strip().splitlines() == ['skid_limit = "2 %"',
                                           'contact_stress_limit = "3500 MPa"']
+    # a fraction whose percent string would not read back exactly is written as a number
+    odd = 0.1 + 0.2 - 0.3 + 0.0275
+    text = loads_scene(with_checks(f"skid_limit = {odd!r}")).to_toml()
+    assert loads_scene(text).checks.skid_limit == odd
 
 
 @pytest.mark.parametrize(("body", "field", "allowed"), [
