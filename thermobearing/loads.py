@@ -30,8 +30,9 @@ ball that touches nothing, on the ring when no ball touches) are Jacobian-only
 Levenberg-Marquardt terms, relaxed after every full step, so the solution is the one of
 the contact forces alone; each ball is damped on its own residual before a global line
 search is tried (:func:`_ld_damped_balls`), its step stops where an open contact would
-close, and it follows the arc of its most loaded contact (:func:`_ld_ball_trial`). The
-solutions agree with the former numpy implementation to 2e-5 N and 1e-10 m in no more
+close, and it follows the arcs of its (up to two) most loaded contacts
+(:func:`_ld_ball_trial`). A cold start that fails is repeated from the balls seated in the
+outer groove by their centrifugal force, then with a softer ring spring. The solutions agree with the former numpy implementation to 2e-5 N and 1e-10 m in no more
 iterations (tests/unit/test_loads.py).
 
 Units: SI throughout (m, N, rad/s, kg).
@@ -439,22 +440,46 @@ def _ld_newton_step(cf: np.ndarray, tab: np.ndarray, cpsi: np.ndarray, Rx: np.nd
 def _ld_ball_trial(bx: np.ndarray, br: np.ndarray, dbx: np.ndarray, dbr: np.ndarray,
                    lam: np.ndarray, arc: np.ndarray, bx2: np.ndarray, br2: np.ndarray) -> None:
     """Ball positions ``b + lam_j db_j`` with a curvature correction: a loaded ball is put back
-    at the distance from the centre of its most loaded arc that the linear step predicts,
-    ``L + lam_j (db_j . n)``. A straight step along the groove (the ball rolling down a flank
-    to the groove bottom) otherwise climbs the arc by s^2 / (2 L), which for a ball held only
-    by its centrifugal force is a large load (SKF6304, 10 N at 10 r/min: 22 um along the
-    flank, 0.85 um into the race, 20 N against 9e-6 N). The correction is second order in the
-    step, so Newton's local convergence is kept. ``arc`` rows: (on, c_x, c_r, L, db . n)."""
+    at the distances from the centres of its (up to two) most loaded arcs that the linear step
+    predicts, ``L + lam_j (db_j . n)``: on that circle about the one arc centre, or at the
+    intersection of the two circles nearest the straight trial. A straight step along the
+    groove (the ball rolling down a flank to the groove bottom, or rolling along both arcs of
+    a diagonal contact pair while the ring moves axially) otherwise climbs the arcs by
+    s^2 / (2 L), which for a lightly loaded ball is a large load (SKF6304, 10 N at 10 r/min:
+    22 um along the flank, 0.85 um into the race, 20 N against 9e-6 N). The correction is
+    second order in the step, so Newton's local convergence is kept.
+    ``arc`` rows: (count, c_x, c_r, L, db . n) of the first arc, then the same of the second."""
     for j in range(bx.size):
         x = bx[j] + lam[j] * dbx[j]
         r = br[j] + lam[j] * dbr[j]
         if arc[j, 0] > 0.0:
-            ex, er = x - arc[j, 1], r - arc[j, 2]
+            ax, ar = arc[j, 1], arc[j, 2]
+            la = arc[j, 3] + lam[j] * arc[j, 4]
+            ex, er = x - ax, r - ar
             dist = math.hypot(ex, er)
-            want = arc[j, 3] + lam[j] * arc[j, 4]
-            if dist > 0.0 and want > 0.0:
-                x = arc[j, 1] + ex * want / dist
-                r = arc[j, 2] + er * want / dist
+            done = False
+            if arc[j, 0] > 1.0 and la > 0.0:
+                cx, cr = arc[j, 5], arc[j, 6]
+                lb = arc[j, 7] + lam[j] * arc[j, 8]
+                dx, dr = cx - ax, cr - ar
+                d = math.hypot(dx, dr)
+                if d > 0.0 and lb > 0.0:
+                    a = (la * la - lb * lb + d * d) / (2.0 * d)
+                    h2 = la * la - a * a
+                    if h2 >= 0.0:
+                        h = math.sqrt(h2)
+                        px, pr = ax + a * dx / d, ar + a * dr / d
+                        # the two intersections; keep the one nearer the straight trial
+                        x1, r1 = px - h * dr / d, pr + h * dx / d
+                        x2, r2 = px + h * dr / d, pr - h * dx / d
+                        if (x1 - x) ** 2 + (r1 - r) ** 2 <= (x2 - x) ** 2 + (r2 - r) ** 2:
+                            x, r = x1, r1
+                        else:
+                            x, r = x2, r2
+                        done = True
+            if not done and dist > 0.0 and la > 0.0:
+                x = ax + ex * la / dist
+                r = ar + er * la / dist
         bx2[j] = x
         br2[j] = r
 
@@ -489,23 +514,33 @@ def _ld_damped_balls(bx: np.ndarray, br: np.ndarray, u: np.ndarray, dbx: np.ndar
     for j in range(nz):
         ref[j] = math.hypot(Rx[j], Rr[j])
     _ld_residual(bx, br, u2, K, cpsi, tab, c, wm, gyro, cf2, Rx, Rr, Rg, Fc2, Mg2, fx, fr)
-    # most loaded contact of each ball at the trial ring position: its arc centre, distance
-    # and normal for the curvature correction below
-    arc = np.zeros((nz, 5))          # (on, c_x, c_r, L + predicted change per unit lam)
+    # the two most loaded contacts of each ball at the trial ring position (the second only
+    # if it carries at least 1 % of the first): arc centres, distances and the step's normal
+    # components, for the curvature correction of _ld_ball_trial
+    arc = np.zeros((nz, 9))
     for j in range(nz):
         ref[j] = max(ref[j], math.hypot(Rx[j], Rr[j]))
-        qbest = 0.0
+        k1 = k2 = -1
         for k in range(nk):
             app0[j, k] = cf2[F_APPROACH, j, k]
             q = cf2[F_LOAD, j, k]
-            if q > qbest:
-                qbest = q
+            if q > 0.0:
+                if k1 < 0 or q > cf2[F_LOAD, j, k1]:
+                    k2 = k1
+                    k1 = k
+                elif k2 < 0 or q > cf2[F_LOAD, j, k2]:
+                    k2 = k
+        if k2 >= 0 and cf2[F_LOAD, j, k2] < 0.01 * cf2[F_LOAD, j, k1]:
+            k2 = -1
+        for slot, k in ((0, k1), (1, k2)):
+            if k >= 0:
                 dist, nx, nr = cf2[F_DIST, j, k], cf2[F_NX, j, k], cf2[F_NR, j, k]
-                arc[j, 0] = 1.0
-                arc[j, 1] = bx[j] - dist * nx
-                arc[j, 2] = br[j] - dist * nr
-                arc[j, 3] = dist
-                arc[j, 4] = dbx[j] * nx + dbr[j] * nr
+                o = 1 + 4 * slot
+                arc[j, 0] += 1.0
+                arc[j, o] = bx[j] - dist * nx
+                arc[j, o + 1] = br[j] - dist * nr
+                arc[j, o + 2] = dist
+                arc[j, o + 3] = dbx[j] * nx + dbr[j] * nr
     _ld_ball_trial(bx, br, dbx, dbr, lam, arc, bx2, br2)
     _ld_residual(bx2, br2, u2, K, cpsi, tab, c, wm, gyro, cf2, Rx, Rr, Rg, Fc2, Mg2, fx, fr)
     for j in range(nz):
@@ -891,19 +926,35 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
                   float(radial_load)])
     cf = np.empty((7, Z, arcs.n_arcs))
     Fc, Mg = np.empty(Z), np.empty(Z)
-    norm, it, ok = _ld_solve(bx, br, u, cpsi, tab, c, np.ascontiguousarray(wm, dtype=float),
-                             gyroscopic == "shared", tol * F_scale * np.sqrt(2 * Z + 2),
+    tol_abs = tol * F_scale * np.sqrt(2 * Z + 2)
+    wmc = np.ascontiguousarray(wm, dtype=float)
+    norm, it, ok = _ld_solve(bx, br, u, cpsi, tab, c, wmc, gyroscopic == "shared", tol_abs,
                              step_max, k_ring, int(max_iter), cf, Fc, Mg)
+    if not ok and np.isfinite(norm) and guess is None and np.any(wm != 0.0):
+        # second start (session 11): every ball seated in the outer groove by its
+        # centrifugal force, the ring at the rigid-pair displacement. The rigid-pair start
+        # places the balls without the centrifugal force; where it is comparable with the
+        # load (a four-point bearing under a few newtons of axial load at 16-100 r/min:
+        # 0.015-0.55 N per ball) it must move them into a third arc along the direction that
+        # the diagonal contact pair leaves soft to first order, and Newton crawls there
+        # (QJ1044, 2.15 N axial at 35.5 r/min: stall at 0.30 N); from the seat the ring's
+        # inner arcs close on the balls and Newton converges in 7-11 iterations.
+        bx_s, br_s, _ = rigid_pair_guess(bearing, arcs, 0.0, 0.0, psi, m * wm**2)
+        _, _, u_s = rigid_pair_guess(bearing, arcs, axial_load, radial_load, psi, m * wm**2)
+        norm_s, it2, ok_s = _ld_solve(bx_s, br_s, u_s, cpsi, tab, c, wmc,
+                                      gyroscopic == "shared", tol_abs, step_max, k_ring,
+                                      int(max_iter), cf, Fc, Mg)
+        it += it2
+        if ok_s or norm_s < norm:
+            bx, br, u, norm, ok = bx_s, br_s, u_s, norm_s, ok_s
     if not ok and np.isfinite(norm):
         # the ring spring k_ring, sized by the load, can be far stiffer than the bearing's
         # own stiffness (a four-point bearing under a few newtons of axial load; a deep-groove
         # bearing under a light radial load, whose axial stiffness is only the geometric Q/L
         # of the loaded balls), and the line search then never relaxes it: retry from the
         # last iterate with the spring 1e-6 as stiff (the solution does not depend on it)
-        norm, it2, ok = _ld_solve(bx, br, u, cpsi, tab, c,
-                                  np.ascontiguousarray(wm, dtype=float), gyroscopic == "shared",
-                                  tol * F_scale * np.sqrt(2 * Z + 2), step_max, 1e-6 * k_ring,
-                                  int(max_iter), cf, Fc, Mg)
+        norm, it2, ok = _ld_solve(bx, br, u, cpsi, tab, c, wmc, gyroscopic == "shared",
+                                  tol_abs, step_max, 1e-6 * k_ring, int(max_iter), cf, Fc, Mg)
         it += it2
     if not ok:
         raise ConvergenceError("ball_load_distribution", norm,

@@ -160,14 +160,12 @@ def test_deep_groove_random_points_open(rpm, fr, fa, t_c):
                           "residuals: 95 N / -11.7 N, 64 r/min, 106 degC -> 9.9e-3; 132.5 N, 199 "
                           "r/min, 64 degC -> 1.9e-2; pure axial -1.13 N, 3380 r/min -> 4.2e-5; "
                           "73 kN / -69 kN, 25 r/min, 136 degC -> 6.0e-7, a stall just above tol "
-                          "1e-9); pure axial 2.15 N at 35.5 r/min: the load distribution of the "
-                          "cold start itself stops at 0.30 N")
+                          "1e-9)")
 @pytest.mark.parametrize("rpm, fr, fa, t_c", [
     (63.672776703535376, 95.01279747271084, -11.656930368526035, 106.16282068053458),
     (198.7891532224581, 132.53113679030767, 0.0, 64.13113846805669),
     (3380.2734102008462, 0.0, -1.1268599366221774, 82.48432835431878),
     (25.494333451043417, 73141.19514807193, -69370.13988833768, 136.28429038166476),
-    (35.5459707281424, 0.0, 2.150154110935353, 23.03101730637418),
 ])
 def test_qj1044_open(rpm, fr, fa, t_c):
     """Diagnosis of the 132.5 N / 199 r/min point (for whoever takes it up): the cold-start
@@ -185,14 +183,18 @@ def test_qj1044_open(rpm, fr, fa, t_c):
     ("QJ1044", 46.59985437797942, 2.322471332414693, 0.0, 18.014249724403722),
     ("SKF6304", 46.39835042989977, 9115.666601244337, 2494.2805171883797, 90.22107768877245),
     ("SKF6304", 83.94415645584766, 4188.788083839123, 0.0, 72.49645099902192),
+    ("QJ1044", 35.5459707281424, 0.0, 2.150154110935353, 23.03101730637418),
 ])
-def test_ball_points_fixed_in_session_10(name, rpm, fr, fa, t_c):
+def test_ball_points_found_by_the_probe_converge(name, rpm, fr, fa, t_c):
     """QJ1044, 2.3 N radial at 47 r/min: failed at 1.8e-1 after the continuation, converges
     with the Newton restart / singular-block fallback. SKF6304, 9.1 kN + 2.5 kN at 46 r/min,
     90 degC: the cold start's load distribution crawled at 3e-5 N against its 5e-6 N
     tolerance (ConvergenceError); as a starting point it is now taken at tol 1e-6. SKF6304,
     4.19 kN at 84 r/min, 72.5 degC (failed at 0.35 until session 11, fixed with the load
-    distribution's start, loads.py)."""
+    distribution's start, loads.py). QJ1044, 2.15 N pure axial at 35.5 r/min (until session
+    11 the cold start's load distribution stopped at 0.30 N: the centrifugal force, 0.07 N
+    per ball, moves every ball into a third arc; now a second start seats the balls in the
+    outer groove, loads.py)."""
     check_ball_invariants(_ball_solve(name, rpm, fr, fa, t_c), fr, fa, name)
 
 
@@ -336,7 +338,7 @@ def _probe_points(name, seed, n):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name, seed, n, allowed", [("QJ1044", 1, 150, 12),
+@pytest.mark.parametrize("name, seed, n, allowed", [("QJ1044", 1, 150, 11),
                                                     ("SKF6304", 2, 120, 3)])
 def test_random_probe_failure_count(name, seed, n, allowed):
     """Regression guard with the measured numbers (session 10, ~1 min): every converged point
