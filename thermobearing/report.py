@@ -355,10 +355,10 @@ def attach_figures(results: Results, scene: Any) -> None:
 
 
 def write_report(results: Results, scene: Any, path: Path | str) -> Path:
-    """Write the self-contained HTML report of a run (a run without recorded check limits,
-    e.g. one read back from an older ``metadata.json``, shows the scene's ``[checks]``,
-    else the defaults)."""
-    if not results.check_limits:
+    """Write the self-contained HTML report of a run (a run with a kinematics table but
+    without recorded check limits, e.g. one read back from an older ``metadata.json``,
+    shows the scene's ``[checks]``, else the defaults)."""
+    if not results.check_limits and "kinematics" in results.tables:
         limits = getattr(scene, "checks", None) or CheckLimits()
         results = dataclasses.replace(results, check_limits=limits.as_dict())
     extra = {}

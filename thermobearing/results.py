@@ -48,7 +48,8 @@ class Results:
     stats : solver statistics (steps, Newton iterations, re-solves, wall time...).
     check_limits : the thresholds the validity warnings applied
         (``operating_checks.CheckLimits.as_dict``: skid limit [-], stress limits [Pa] per
-        bearing family, minimum film parameter [-], and their source); empty when unknown.
+        bearing family, minimum film parameter [-], and their source); empty when no
+        kinematic state was checked (film-only runs) or unknown.
     """
 
     tables: dict[str, pd.DataFrame] = field(default_factory=dict)

@@ -551,10 +551,13 @@ class Simulation:
         stats["wall_time_s"] = time.perf_counter() - t_wall
         stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
         checked = [line for log in self.checks.values() for line in log.summary()]
+        # the thresholds are recorded when some state was checked (not in film-only runs)
+        limits = self.check_limits.as_dict() if any(
+            log.steps for log in self.checks.values()) else {}
         results = Results(tables=tables, scene_toml=scene_toml,
                           chain=[(link.family, link.name) for link in self.chain],
                           citations=self.citations(), warnings=list(self.warnings) + checked,
-                          stats=stats, check_limits=self.check_limits.as_dict())
+                          stats=stats, check_limits=limits)
         if out_dir is not None:
             from .report import attach_figures, write_report
 

@@ -275,6 +275,14 @@ def default_run():
     return sim, sim.run()
 
 
+def test_film_only_run_records_no_limits():
+    """A film-only scene solves no kinematic state, so no check ran: no limits recorded."""
+    text = with_checks('skid_limit = "2 %"').replace('want = ["kinematics"]', 'want = ["film"]')
+    res = Simulation(loads_scene(text), progress=False).run()
+    assert "film" in res.tables and res.check_limits == {}
+    assert "thresholds of the operating checks" not in html_report(res, "t")
+
+
 def _check_lines(results):
     return [w for w in results.warnings if w.startswith("de: ")]
 
