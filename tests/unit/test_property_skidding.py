@@ -142,7 +142,9 @@ def test_deep_groove_low_speed_converges(rpm, fr, fa):
                           "residual after the fallbacks, session 11): 21.4 kN + 37 N, 1231 "
                           "r/min, 26 degC -> 1.1e-3 (1.1e-4 in session 10)")
 @pytest.mark.parametrize("rpm, fr, fa, t_c", [
-    (1230.724071006954, 21445.099494558173, 36.85524752432373, 26.21535976081373),
+    # ~11 s CPU to fail through every fallback: slow
+    pytest.param(1230.724071006954, 21445.099494558173, 36.85524752432373, 26.21535976081373,
+                 marks=pytest.mark.slow),
 ])
 def test_deep_groove_random_points_open(rpm, fr, fa, t_c):
     _ball_solve("SKF6304", rpm, fr, fa, t_c)
@@ -155,8 +157,11 @@ def test_deep_groove_random_points_open(rpm, fr, fa, t_c):
                           "73 kN / -69 kN, 25 r/min, 136 degC -> 6.0e-7, a stall just above "
                           "tol 1e-9")
 @pytest.mark.parametrize("rpm, fr, fa, t_c", [
-    (1510.6048702365651, 1.902654029285824, 0.0, 35.002567590481576),
-    (3380.2734102008462, 0.0, -1.1268599366221774, 82.48432835431878),
+    # the first two take ~6 s CPU each to fail through every fallback: slow
+    pytest.param(1510.6048702365651, 1.902654029285824, 0.0, 35.002567590481576,
+                 marks=pytest.mark.slow),
+    pytest.param(3380.2734102008462, 0.0, -1.1268599366221774, 82.48432835431878,
+                 marks=pytest.mark.slow),
     (25.494333451043417, 73141.19514807193, -69370.13988833768, 136.28429038166476),
 ])
 def test_qj1044_open(rpm, fr, fa, t_c):
