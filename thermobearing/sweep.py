@@ -285,11 +285,11 @@ def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
     return df
 
 
-def _dask_client(scheduler: str):
+def _dask_client(scheduler: str, timeout: float = 5.0):
     from distributed import Client
 
     try:
-        return Client(scheduler, timeout="5s", set_as_default=False)
+        return Client(scheduler, timeout=f"{timeout}s", set_as_default=False)
     except (OSError, TimeoutError) as exc:
         raise SchedulerUnreachable(
             f"cannot reach the dask scheduler at {scheduler!r}: {exc}; start it (dask "
@@ -322,6 +322,7 @@ def run_sweep(
     scheduler: str | None = None,
     fallback_local: bool = False,
     progress: bool | None = None,
+    connect_timeout: float = 5.0,
 ) -> pd.DataFrame:
     """Run every case not yet in ``out_dir``; returns the summary table of all cases.
 
@@ -336,8 +337,13 @@ def run_sweep(
     scheduler : address of a dask.distributed scheduler to run the cases on.
     fallback_local : if the scheduler cannot be reached, run locally instead of failing.
     progress : show a progress bar (default: when stderr is a terminal).
+    connect_timeout : seconds to wait for the scheduler before it counts as unreachable.
     """
     from tqdm.auto import tqdm
+
+    if not (isinstance(connect_timeout, (int, float)) and not isinstance(connect_timeout, bool)
+            and math.isfinite(connect_timeout) and connect_timeout > 0):
+        raise InputError("connect_timeout", connect_timeout, "a positive number of seconds")
 
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 1):
@@ -358,7 +364,7 @@ def run_sweep(
             client = None
             if scheduler:
                 try:
-                    client = _dask_client(scheduler)
+                    client = _dask_client(scheduler, connect_timeout)
                 except SchedulerUnreachable:
                     if not fallback_local:
                         raise
