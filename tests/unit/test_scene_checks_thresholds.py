@@ -14,6 +14,7 @@ import math
 import pandas as pd
 import pytest
 
+from tests.unit.test_simulation import BASE as SIMULATION_BASE
 from thermobearing.errors import InputError
 from thermobearing.operating_checks import (
     ISO76_STRESS,
@@ -29,24 +30,7 @@ from thermobearing.simulation import Simulation
 
 # the steady race-control scene of tests/unit/test_simulation.py (QJ1044, 1800 r/min,
 # 1 kN radial, 2 and 6 kN axial): kinematics only, about 2 s
-BASE = """
-title = "t"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[schedule]
-speed = "1800 rpm"
-radial_load = "1 kN"
-step_duration = "3 min"
-axial_load_steps = { start = "2 kN", stop = "6 kN", step = "4 kN" }
-[models]
-kinematics = "race_control"
-[outputs]
+BASE = SIMULATION_BASE + """[outputs]
 mode = "steady"
 want = ["kinematics"]
 """
