@@ -32,8 +32,9 @@ the contact forces alone; each ball is damped on its own residual before a globa
 search is tried (:func:`_ld_damped_balls`), its step stops where an open contact would
 close, and it follows the arcs of its (up to two) most loaded contacts
 (:func:`_ld_ball_trial`). A cold start that fails is repeated from the balls seated in the
-outer groove by their centrifugal force, then with a softer ring spring. The solutions agree with the former numpy implementation to 2e-5 N and 1e-10 m in no more
-iterations (tests/unit/test_loads.py).
+outer groove by their centrifugal force, then with a softer ring spring. The solutions
+agree with the former numpy implementation to 2e-5 N and 1e-10 m in no more iterations
+(tests/unit/test_loads.py).
 
 Units: SI throughout (m, N, rad/s, kg).
 """

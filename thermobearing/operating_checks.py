@@ -1,8 +1,9 @@
 """Validity checks of a solved operating state: cage skidding, contact stress, film parameter.
 
 A run records, per bearing and schedule step, the worst of three quantities of every
-kinematic state it solved, and its report lists the steps where one of them leaves the
-range in which the bearing (and the models) run as intended:
+kinematic state it solved (a film-only run: of its film table's rows, race control, no
+skidding), and its report lists the steps where one of them leaves the range in which the
+bearing (and the models) run as intended:
 
 - **Cage skidding / over-skidding.** s = CSR / CSR_th - 1 [-], the cage speed against the
   epicyclic (pure-rolling) cage speed at the quasi-static contact angles. Beyond
@@ -232,10 +233,40 @@ def stress_limit(bearing: Any, limits: CheckLimits = DEFAULT_LIMITS) -> float:
 def check_state(bearing: Any, kin: Any, limits: CheckLimits = DEFAULT_LIMITS) -> StateCheck:
     """The checked quantities of a solved state (``kinematic_models.KinematicsResult``);
     ``limits`` gives the stress limit recorded with it (default: ISO 76)."""
+    return _check_contacts(bearing, kin.state, float(kin.over_skid),
+                           float(kin.cage_speed_ratio), float(kin.theoretical_cage_speed_ratio),
+                           limits)
+
+
+def check_film_rows(bearing: Any, rows: Any, cage_speed_ratio: float,
+                    limits: CheckLimits = DEFAULT_LIMITS) -> StateCheck:
+    """The contact-stress and film checks of a film-only step: its rows of
+    ``simulation.film_table`` (the most loaded element per raceway, race control), with
+    ``max pressure [GPa]`` and, when the bearing gives its roughness, ``film parameter
+    [-]`` (Lambda of the film the row reports: the numerical minimum film when a numerical
+    model is named, else the closed-form central film). Race control runs the cage at the
+    epicyclic speed, so the slip is 0 by construction (CSR = CSR_th = ``cage_speed_ratio``)."""
+    p_max = 0.0
+    lam_min, race_min = math.inf, ""
+    for row in rows:
+        p_max = max(p_max, float(row["max pressure [GPa]"]) * 1e9)
+        lam = row.get("film parameter [-]")
+        if lam is not None and math.isfinite(lam) and lam < lam_min:
+            lam_min, race_min = float(lam), str(row["race"])
+    return StateCheck(slip=0.0, csr=cage_speed_ratio, csr_th=cage_speed_ratio,
+                      max_pressure=p_max, stress_limit=stress_limit(bearing, limits),
+                      film_parameter=None if math.isinf(lam_min) else lam_min,
+                      race=race_min, family=bearing_family(bearing))
+
+
+def _check_contacts(bearing: Any, state: Any, slip: float, csr: float, csr_th: float,
+                    limits: CheckLimits) -> StateCheck:
+    """Largest Hertz pressure and smallest film parameter of the loaded contacts of a
+    ``state.KinematicState`` [Pa, -], with the given slip and cage speed ratios."""
     sigma = composite_roughness(bearing)
     p_max = 0.0
     lam_min, race_min = math.inf, ""
-    for cs in kin.state.contacts:
+    for cs in state.contacts:
         q = np.atleast_1d(np.asarray(cs.normal_load, dtype=float))
         loaded = q > 0.0
         if not loaded.any():
@@ -248,8 +279,7 @@ def check_state(bearing: Any, kin: Any, limits: CheckLimits = DEFAULT_LIMITS) ->
             if lam < lam_min:
                 lam_min, race_min = lam, cs.race
     return StateCheck(
-        slip=float(kin.over_skid), csr=float(kin.cage_speed_ratio),
-        csr_th=float(kin.theoretical_cage_speed_ratio), max_pressure=p_max,
+        slip=slip, csr=csr, csr_th=csr_th, max_pressure=p_max,
         stress_limit=stress_limit(bearing, limits),
         film_parameter=None if math.isinf(lam_min) else lam_min, race=race_min,
         family=bearing_family(bearing))

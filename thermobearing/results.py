@@ -49,7 +49,8 @@ class Results:
     check_limits : the thresholds the validity warnings applied
         (``operating_checks.CheckLimits.as_dict``: skid limit [-], stress limits [Pa] per
         bearing family, minimum film parameter [-], and their source); empty when no
-        kinematic state was checked (film-only runs) or unknown.
+        state was checked or unknown (film-only runs check the stress and film parameter
+        of their film table's rows).
     """
 
     tables: dict[str, pd.DataFrame] = field(default_factory=dict)

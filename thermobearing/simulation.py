@@ -47,7 +47,13 @@ import pandas as pd
 from .citations import cite
 from .errors import ConvergenceError, InputError, UnknownNameError, ValidityWarning
 from .kinematic_models import KINEMATICS, KinematicsResult
-from .operating_checks import CheckLimits, CheckLog, check_state, composite_roughness
+from .operating_checks import (
+    CheckLimits,
+    CheckLog,
+    check_film_rows,
+    check_state,
+    composite_roughness,
+)
 from .results import Results, ResultsWriter
 from .scene import Scene, Step, loads_scene
 from .state import OilSupply, OperatingPoint
@@ -551,7 +557,7 @@ class Simulation:
         stats["wall_time_s"] = time.perf_counter() - t_wall
         stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
         checked = [line for log in self.checks.values() for line in log.summary()]
-        # the thresholds are recorded when some state was checked (not in film-only runs)
+        # the thresholds are recorded when some state was checked
         limits = self.check_limits.as_dict() if any(
             log.steps for log in self.checks.values()) else {}
         results = Results(tables=tables, scene_toml=scene_toml,
@@ -593,8 +599,11 @@ class Simulation:
                         if writer:
                             writer.append("losses", rows)
                 else:
-                    rows = film_table(b, self.lubricant, step, temps)
+                    rows, csr = film_table(b, self.lubricant, step, temps)
                     film_rows.extend({**base, **r} for r in rows)
+                    # the stress and Lambda checks apply to the film rows too
+                    self.checks[b.name].record(i, check_film_rows(b.bearing, rows, csr,
+                                                                  self.check_limits))
         tables = {}
         if kin_rows:
             tables["kinematics"] = pd.DataFrame(kin_rows)
@@ -695,8 +704,9 @@ def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
 
 
 def film_table(b: _Bearing, lubricant: Any, step: Step,
-               temps: Mapping[str, float]) -> list[dict[str, Any]]:
-    """Contact and film of the most loaded element (film-only scenes): race control."""
+               temps: Mapping[str, float]) -> tuple[list[dict[str, Any]], float]:
+    """Contact and film of the most loaded element per raceway (film-only scenes): race
+    control. Returns the rows and the state's cage speed ratio [-]."""
     from .state import race_control_state
 
     op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
@@ -731,7 +741,8 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
             row = rows[-1]
             h = row.get("minimum film [um]", row["central film [um]"])
             row["film parameter [-]"] = h * 1e-6 / sigma
-    return rows
+    csr = state.cage_speed / state.inner_speed if state.inner_speed else math.nan
+    return rows, float(csr)
 
 
 def _numerical_film_of(b: _Bearing, lubricant: Any) -> Any:

@@ -259,12 +259,28 @@ def default_run():
     return sim, sim.run()
 
 
-def test_film_only_run_records_no_limits():
-    """A film-only scene solves no kinematic state, so no check ran: no limits recorded."""
-    text = with_checks('skid_limit = "2 %"').replace('want = ["kinematics"]', 'want = ["film"]')
+def test_film_only_run_checks_stress_and_film():
+    """A film-only scene (race control, no skidding solver) checks the contact stress and
+    the film parameter of its film table's rows (the most loaded element per raceway), so a
+    set limit flags the step and the limits are recorded; the worst values are the table's.
+    (Until session 11 film-only runs checked nothing.)"""
+    film_only = 'want = ["film"]'
+    text = with_checks('min_film_parameter = 1000\ncontact_stress_limit = "100 MPa"').replace(
+        'want = ["kinematics"]', film_only)
     res = Simulation(loads_scene(text), progress=False).run()
-    assert "film" in res.tables and res.check_limits == {}
-    assert "thresholds of the operating checks" not in html_report(res, "t")
+    film = res.tables["film"]
+    assert res.check_limits["min_film_parameter"] == 1000.0
+    lines = _check_lines(res)
+    stress = [w for w in lines if "stress limit 100 MPa (scene [checks])" in w]
+    lam = [w for w in lines if "Lambda < 1000 (scene [checks])" in w]
+    assert len(stress) == 1 and len(lam) == 1
+    assert f"largest {film['max pressure [GPa]'].max() * 1e3:.0f} MPa" in stress[0]
+    assert f"smallest {film['film parameter [-]'].min():.2f}" in lam[0]
+    assert "thresholds of the operating checks" in html_report(res, "t")
+    # the default limits flag nothing in this scene (0.8 GPa, Lambda about 25)
+    default = Simulation(loads_scene(BASE.replace('want = ["kinematics"]', film_only)),
+                         progress=False).run()
+    assert _check_lines(default) == [] and default.check_limits["source"] == "default"
 
 
 def _check_lines(results):
