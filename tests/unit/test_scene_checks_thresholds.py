@@ -346,3 +346,19 @@ def test_set_limits_warn_where_the_defaults_do_not(default_run, tmp_path):
             f"|CSR/CSR_th - 1| &gt; {skid_lim:.4g}% (scene [checks])") in page
     assert f"{p_lim:.4g} MPa ball (scene [checks])" in page
     assert f"  - {lines[0]}" in sim.summary_text(res)
+
+
+def test_report_of_a_folder_shows_the_limits_the_run_applied(default_run, tmp_path):
+    """``thermobearing report DIR`` re-renders a run folder with the thresholds recorded in
+    its ``metadata.json`` (the ones its warnings were made with), not with a ``[checks]``
+    table added to the folder's scene.toml afterwards (until session 12 it read the scene)."""
+    from thermobearing.commands.report import run_report
+
+    _, res = default_run
+    folder = res.write(tmp_path / "run")
+    scene = folder / "scene.toml"
+    scene.write_text(scene.read_text(encoding="utf-8")
+                     + '\n[checks]\nskid_limit = "0.5 %"\n', encoding="utf-8")
+    page = run_report(folder).read_text(encoding="utf-8")
+    assert "|CSR/CSR_th - 1| &gt; 5% (default)" in page
+    assert "0.5% (scene [checks])" not in page

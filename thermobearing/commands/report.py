@@ -135,7 +135,8 @@ def run_report(folder: Path) -> Path:
     results = Results(tables=tables, scene_toml=scene_toml,
                       chain=[tuple(x) for x in meta.get("chain", [])],
                       citations=meta.get("citations", []), warnings=meta.get("warnings", []),
-                      stats=meta.get("stats", {}))
+                      stats=meta.get("stats", {}),
+                      check_limits=meta.get("check_limits", {}))
     attach_figures(results, scene)
     return write_report(results, scene, folder / "report.html")
 
