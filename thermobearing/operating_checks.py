@@ -75,7 +75,9 @@ class CheckLimits:
     min_film_parameter : film parameter Lambda [-] below which a step is flagged (default
         ``LAMBDA_BOUNDARY``, 1: boundary lubrication).
     source : where the values that differ from the defaults come from (named in the
-        summary lines, e.g. ``"scene [checks]"``).
+        summary lines, e.g. ``"scene [checks]"``). Provenance only: two limit sets with
+        the same thresholds compare equal whatever their sources (a scene built in Python
+        and the same scene read back from its TOML are equal).
 
     Every limit must be a finite number > 0, the skid limit < 1, a stress limit at least
     ``MIN_STRESS_LIMIT`` (1 MPa); an :class:`InputError` names the field otherwise. Integers
@@ -87,7 +89,7 @@ class CheckLimits:
     self_aligning_ball_stress_limit: float = ISO76_STRESS["self_aligning_ball"]
     roller_stress_limit: float = ISO76_STRESS["roller"]
     min_film_parameter: float = LAMBDA_BOUNDARY
-    source: str = DEFAULT_LIMITS_SOURCE
+    source: str = field(default=DEFAULT_LIMITS_SOURCE, compare=False)
 
     def __post_init__(self) -> None:
         for name in ("skid_limit", *(f"{f}_stress_limit" for f in STRESS_FAMILIES),

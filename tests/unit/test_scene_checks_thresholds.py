@@ -100,6 +100,21 @@ def test_round_trip(body):
     assert again.to_toml() == text
 
 
+def test_scene_built_in_python_round_trips_equal():
+    """A scene given ``CheckLimits`` in Python (source "CheckLimits") reads back from its TOML
+    with the source "scene [checks]": the thresholds are what equality compares, so the two
+    scenes are equal (until session 12 they compared unequal on the source text)."""
+    import dataclasses
+
+    base = loads_scene(with_checks(""))
+    limits = CheckLimits(skid_limit=0.02, roller_stress_limit=3.1e9)
+    scene = dataclasses.replace(base, checks=limits)
+    again = loads_scene(scene.to_toml())
+    assert again.checks.source == "scene [checks]" and limits.source != again.checks.source
+    assert again.checks == limits and again == scene
+    assert CheckLimits(skid_limit=0.03) != limits
+
+
 def test_only_set_thresholds_are_written():
     text = loads_scene(with_checks('contact_stress_limit = { roller = "3000 MPa" }')).to_toml()
     block = text.split("[checks]\n", 1)[1].split("\n[", 1)[0]
