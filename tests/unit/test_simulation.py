@@ -65,12 +65,19 @@ def test_losses_scene_has_no_network_and_balances_roles():
 
 def test_oil_bath_says_its_inlet_temperature_is_unused():
     bath = loads_scene(BASE.replace('flow = "33 L/min"', 'method = "oil_bath"\nlevel = "20 mm"')
+                       .replace('inlet_temperature = "35 degC"', 'inlet_temperature = "50 degC"')
                        + '[outputs]\nmode = "steady"\nwant = ["losses"]\n')
     sim = Simulation(bath, progress=False)
-    assert any("supply.inlet_temperature (35 degC) is not used" in n for n in sim.notes)
+    assert any("supply.inlet_temperature (50 degC) is not used" in n for n in sim.notes)
     assert "supply.inlet_temperature" in sim.describe_chain()
     assert not any("inlet_temperature" in n
                for n in Simulation(scene(["losses"]), progress=False).notes)
+    # an oil bath that leaves the inlet temperature at its default (the ambient) gets no note
+    default = loads_scene(BASE.replace('flow = "33 L/min"', 'method = "oil_bath"\nlevel = "20 mm"')
+                          .replace('inlet_temperature = "35 degC"\n', '')
+                          + '[outputs]\nmode = "steady"\nwant = ["losses"]\n')
+    assert default.supply.inlet_temperature == default.environment.ambient_temperature
+    assert not any("inlet_temperature" in n for n in Simulation(default, progress=False).notes)
 
 
 def test_unknown_model_family_is_an_error():
