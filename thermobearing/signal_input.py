@@ -7,8 +7,8 @@ sampled record (:class:`AccelerationRecord`, :func:`load_acceleration`,
 
 from __future__ import annotations
 
-import csv
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,11 +29,15 @@ class AccelerationRecord:
     data : samples [m/s^2] (or any consistent unit: the analysis is scale-free).
     sampling_rate : [Hz].
     source : file name or description.
+    channel : the column (header name, ``column k`` or ``[:, k]``) the samples come from,
+        "" for a one-channel file; n_channels : channels in the file (time column excluded).
     """
 
     data: np.ndarray
     sampling_rate: float
     source: str = ""
+    channel: str = ""
+    n_channels: int = 1
 
     @property
     def duration(self) -> float:
@@ -58,7 +62,8 @@ def check_signal(x, sampling_rate: float, field: str = "signal") -> np.ndarray:
     bad = ~np.isfinite(arr)
     if bad.any():
         raise InputError(f"{field}", f"{int(bad.sum())} NaN/inf samples (first at index "
-                         f"{int(np.argmax(bad))})", "finite samples only")
+                         f"{int(np.argmax(bad))})", "finite samples only (the analysis needs a "
+                         "gap-free record: cut it before the first bad sample or fill the gaps)")
     spread = float(np.ptp(arr))
     scale = max(float(np.max(np.abs(arr))), 1e-300)
     if spread <= 1e-12 * scale or spread == 0.0:
@@ -68,19 +73,26 @@ def check_signal(x, sampling_rate: float, field: str = "signal") -> np.ndarray:
 
 def load_acceleration(path: str | Path, sampling_rate: float | None = None,
                       column: int | str | None = None) -> AccelerationRecord:
-    """Read an acceleration record from ``.npy``, ``.npz`` or ``.csv``.
+    """Read an acceleration record from ``.npy``, ``.npz``, ``.csv``, ``.tsv`` or ``.txt``.
 
     Parameters
     ----------
-    path : file. ``.npy``: a 1-D array (``sampling_rate`` required). ``.npz``: arrays
-        ``acceleration`` (or ``data``/``x``) and ``sampling_rate`` (or ``fs``).
-        ``.csv``: one column of samples (``sampling_rate`` required) or a time column
-        [s] first and the samples second (the rate is (n - 1) / time span; every step must
-        be within half a step of the mean, i.e. no gaps); a non-numeric first row is a
-        header.
+    path : file. ``.npy``: a 1-D array, or a 2-D array of channels in columns (pick one
+        with ``column``); ``sampling_rate`` required. ``.npz``: arrays ``acceleration`` (or
+        ``data``/``x``) and ``sampling_rate`` (or ``fs``). ``.csv``/``.tsv``/``.txt`` as
+        data-acquisition software exports them: comma, semicolon, tab or space separated,
+        decimal commas (with a semicolon, tab or space separator), a header row of channel
+        names (more text rows above it and a units row below it are skipped), ``#`` comment
+        lines. A first column that increases uniformly is a time column [s] (``Time [ms]``
+        or a units row ``ms`` gives its unit): the rate is (n - 1) / time span and every
+        step must be within half a step of the mean (no gaps); a sample counter 0, 1, 2, ...
+        is no time column. Without ``column`` the samples are the second column (the first
+        after the time), or the only one. Empty cells are missing samples: an error that
+        says where (the analysis needs a gap-free record).
     sampling_rate : [Hz]; overrides nothing: if the file carries a rate that differs by
         more than 1e-4 relative, that is an error.
-    column : CSV column (index or header name) holding the samples.
+    column : column (index or header name, also a name of the units row) holding the
+        samples; for a 2-D ``.npy``/``.npz`` the column index.
     """
     p = Path(path)
     if not p.is_file():
@@ -88,21 +100,36 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     suffix = p.suffix.lower()
     file_rate: float | None = None
     no_rate = "the file carries no time column"
-    if suffix == ".npy":
-        data = np.load(p, allow_pickle=False)
-    elif suffix == ".npz":
-        with np.load(p, allow_pickle=False) as z:
-            key = next((k for k in ("acceleration", "data", "x") if k in z), None)
-            if key is None:
-                raise InputError("file", str(p), "an .npz with an 'acceleration' array")
-            data = z[key]
-            rk = next((k for k in ("sampling_rate", "fs") if k in z), None)
-            file_rate = float(z[rk]) if rk else None
-    elif suffix in (".csv", ".txt"):
-        data, file_rate, why = _read_csv(p, column)
+    channel, n_channels = "", 1
+    if suffix in (".npy", ".npz"):
+        if suffix == ".npy":
+            data = np.load(p, allow_pickle=False)
+        else:
+            with np.load(p, allow_pickle=False) as z:
+                key = next((k for k in ("acceleration", "data", "x") if k in z), None)
+                if key is None:
+                    raise InputError("file", str(p), "an .npz with an 'acceleration' array")
+                data = z[key]
+                rk = next((k for k in ("sampling_rate", "fs") if k in z), None)
+                file_rate = float(z[rk]) if rk else None
+        if np.ndim(data) == 2 and 1 in np.shape(data):
+            data = np.ravel(data)
+        elif np.ndim(data) == 2:
+            n_channels = int(np.shape(data)[1])
+            if column is None or isinstance(column, str) or not (
+                    0 <= int(column) < n_channels):
+                raise InputError("column", column, f"a column index in [0, {n_channels - 1}] "
+                                 f"(the array has {n_channels} channels in columns, shape "
+                                 f"{np.shape(data)})")
+            channel = f"[:, {int(column)}]"
+            data = np.asarray(data)[:, int(column)]
+        elif column is not None:
+            raise InputError("column", column, "nothing: the array holds one channel")
+    elif suffix in (".csv", ".txt", ".tsv", ".dat"):
+        data, file_rate, why, channel, n_channels = _read_csv(p, column)
         no_rate = why or no_rate
     else:
-        raise InputError("file", str(p), "a .npy, .npz or .csv file")
+        raise InputError("file", str(p), "a .npy, .npz, .csv, .tsv or .txt file")
     if file_rate is not None and sampling_rate is not None:
         if abs(file_rate - sampling_rate) > 1e-4 * sampling_rate:
             raise InputError("sampling_rate", sampling_rate,
@@ -110,58 +137,192 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     rate = sampling_rate if sampling_rate is not None else file_rate
     if rate is None:
         raise InputError("sampling_rate", None, f"a sampling rate in Hz ({no_rate})")
-    arr = check_signal(np.ravel(data) if np.ndim(data) == 2 and 1 in np.shape(data) else data,
-                       float(rate), field=p.name)
-    return AccelerationRecord(arr, float(rate), str(p))
+    arr = check_signal(data, float(rate), field=p.name)
+    return AccelerationRecord(arr, float(rate), str(p), channel, n_channels)
+
+
+#: header words that mark the first column as a time column
+_TIME_WORDS = ("time", "zeit", "temps", "tiempo", "t")
+#: header words that mark the first column as a sample counter (not a time)
+_INDEX_WORDS = ("sample", "samples", "index", "idx", "n", "no", "nr", "#", "point", "points")
+#: lines read to find the layout (delimiter, decimal mark, header and units rows)
+_SNIFF_LINES = 200
+
+
+@dataclass(frozen=True)
+class _CsvLayout:
+    sep: str  # "," ";" "\t" or r"\s+"
+    decimal: str  # "." or ","
+    skip: int  # raw lines before the first data row
+    header: list[str] | None  # column names (first text row with one cell per column)
+    units: list[str] | None  # a second text row with one cell per column (a units row)
+    ncol: int
+
+
+def _split(line: str, sep: str) -> list[str]:
+    cells = line.split() if sep == r"\s+" else line.split(sep)
+    return [c.strip().strip('"').strip("'").strip() for c in cells]
+
+
+def _is_number(cell: str, decimal: str) -> bool:
+    if cell == "":
+        return True  # a missing sample (reported as NaN later), not a header cell
+    try:
+        float(cell.replace(",", ".") if decimal == "," else cell)
+    except ValueError:
+        return cell.lower() in ("nan", "-nan", "inf", "-inf")
+    return True
+
+
+def _sniff(p: Path) -> _CsvLayout:
+    """Delimiter, decimal mark, header/units rows of a DAQ export (first lines only)."""
+    raw: list[tuple[int, str]] = []
+    with p.open(encoding="utf-8-sig", errors="replace", newline="") as fh:
+        for i, line in enumerate(fh):
+            line = line.rstrip("\r\n")
+            if line.strip() and not line.lstrip().startswith("#"):
+                raw.append((i, line))
+            if len(raw) >= _SNIFF_LINES:
+                break
+    if not raw:
+        raise InputError("file", str(p), "a CSV with at least one row of numbers")
+    body = [ln for _, ln in raw]
+    sep = "\t" if any("\t" in ln for ln in body) else ";" if any(";" in ln for ln in body) \
+        else "," if any("," in ln for ln in body) else r"\s+"
+    decimal = "."
+    if sep != ",":
+        num_comma = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
+        cells = [c for ln in body for c in _split(ln, sep)]
+        if any(num_comma.match(c) for c in cells) and not any(
+                re.match(r"^[+-]?\d*\.\d+", c) for c in cells):
+            decimal = ","
+    first_data = next((k for k, ln in enumerate(body)
+                       if all(_is_number(c, decimal) for c in _split(ln, sep))
+                       and any(c for c in _split(ln, sep))), None)
+    if first_data is None:
+        raise InputError("file", str(p), f"rows of numbers within its first {_SNIFF_LINES} "
+                         f"lines (separator {_sep_name(sep)!r}, decimal mark {decimal!r})")
+    ncol = len(_split(body[first_data], sep))
+    texts = [_split(ln, sep) for ln in body[:first_data]]
+    texts = [t for t in texts if len(t) == ncol]
+    header = texts[0] if texts else None
+    units = texts[1] if len(texts) > 1 else None
+    return _CsvLayout(sep, decimal, raw[first_data][0], header, units, ncol)
+
+
+def _sep_name(sep: str) -> str:
+    return {"\t": "tab", r"\s+": "spaces"}.get(sep, sep)
+
+
+def _time_scale(layout: _CsvLayout, p: Path) -> float | None:
+    """Seconds per unit of the first column when its header or units row names a time unit
+    (``Time [ms]``, ``t (us)``, a units row ``ms``); 1.0 for a bare ``time``; None when the
+    header says nothing about time."""
+    unit = None
+    name = layout.header[0] if layout.header else ""
+    m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]", name)
+    if m:
+        unit = m.group(1)
+    elif layout.units and layout.units[0]:
+        unit = layout.units[0]
+    word = re.split(r"[\s\[(_/]", name.strip().lower(), maxsplit=1)[0] if name else ""
+    if unit is None:
+        return 1.0 if word in _TIME_WORDS else None
+    unit = unit.replace("µ", "u").replace("μ", "u")
+    try:
+        from .units import to_si
+
+        return to_si(f"1 {unit}", "time", field=f"{p.name} time column unit")
+    except InputError:
+        return 1.0 if word in _TIME_WORDS else None
 
 
 def _read_csv(p: Path, column: int | str | None
-              ) -> tuple[np.ndarray, float | None, str | None]:
-    """Samples, the rate from a time column (or None) and why there is no rate (or None)."""
-    with p.open(newline="", encoding="utf-8") as fh:
-        rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
-    if not rows:
-        raise InputError("file", str(p), "a CSV with at least one row of numbers")
-    header = None
+              ) -> tuple[np.ndarray, float | None, str | None, str, int]:
+    """Samples, the rate from a time column (or None), why there is no rate (or None), the
+    name of the channel read and the number of channels (time column excluded).
+
+    Reads what data-acquisition software exports: comma, semicolon, tab or space separated
+    columns, decimal commas (with ``;``/tab/space separators), a header row of channel names,
+    more text rows above it or a units row below it (skipped), ``#`` comment lines, empty
+    cells (missing samples: NaN, reported by :func:`check_signal`). The first column is a
+    time column when it increases uniformly (its unit from ``Time [ms]`` or a units row;
+    seconds otherwise); a sample counter (0, 1, 2, ... or 1, 2, 3, ...) is not a time.
+    """
+    import pandas as pd
+
+    layout = _sniff(p)
     try:
-        [float(c) for c in rows[0]]
-    except ValueError:
-        header = [c.strip() for c in rows[0]]
-        rows = rows[1:]
-    try:
-        table = np.array([[float(c) for c in r] for r in rows], dtype=float)
-    except ValueError as exc:
-        raise InputError("file", str(p), f"numeric CSV rows ({exc})") from None
+        df = pd.read_csv(p, sep=layout.sep, decimal=layout.decimal, skiprows=layout.skip,
+                         header=None, comment="#", skip_blank_lines=True, encoding="utf-8-sig",
+                         engine="c", skipinitialspace=True, na_values=["", "nan", "NaN"],
+                         keep_default_na=True)
+    except (ValueError, pd.errors.ParserError) as exc:
+        raise InputError("file", str(p), f"rows of {layout.ncol} values separated by "
+                         f"{_sep_name(layout.sep)!r} ({str(exc).strip()})") from None
+    if df.shape[1] > layout.ncol and df.iloc[:, layout.ncol:].isna().all().all():
+        df = df.iloc[:, :layout.ncol]  # a trailing separator on every line
+    for j in range(df.shape[1]):
+        if df.dtypes.iloc[j].kind not in "fiu":
+            col = df.iloc[:, j]
+            bad = pd.to_numeric(col.astype(str).str.replace(",", ".") if layout.decimal == ","
+                                else col, errors="coerce").isna() & col.notna()
+            k = int(np.argmax(bad.to_numpy()))
+            raise InputError("file", str(p), f"numbers in every data row (data row {k + 1}, "
+                             f"column {j + 1}: {col.iloc[k]!r}; separator "
+                             f"{_sep_name(layout.sep)!r}, decimal mark {layout.decimal!r})")
+    table = df.to_numpy(dtype=float)
     if table.ndim != 2 or table.shape[0] == 0:
         raise InputError("file", str(p), "a CSV with rows of equal length")
     ncol = table.shape[1]
+    header = layout.header
+    names = header if header is not None and len(header) == ncol else [
+        f"column {j}" for j in range(ncol)]
     if column is not None:
         if isinstance(column, str):
-            if header is None or column not in header:
-                raise InputError("column", column, f"one of the header names {header}")
-            idx = header.index(column)
+            rows = [r for r in (layout.header, layout.units) if r is not None]
+            hit = next((r.index(column) for r in rows if column in r), None)
+            if hit is None:
+                lowered = [[c.lower() for c in r] for r in rows]
+                hit = next((r.index(column.lower()) for r in lowered if column.lower() in r),
+                           None)
+            if hit is None:
+                raise InputError("column", column, f"one of the header names {header}"
+                                 if header else "a column index (the file has no header row)")
+            idx = hit
         else:
             idx = int(column)
             if not 0 <= idx < ncol:
-                raise InputError("column", column, f"an index in [0, {ncol - 1}]")
-        samples = table[:, idx]
+                raise InputError("column", column, f"an index in [0, {ncol - 1}] "
+                                 f"(columns: {names})")
     else:
-        samples = table[:, 0] if ncol == 1 else table[:, 1]
+        idx = 0 if ncol == 1 else 1
+    samples = table[:, idx]
     rate = None
     why = None
-    if ncol >= 2 and (column is None or column != 0):
+    if ncol >= 2 and idx != 0:
         t = table[:, 0]
         dt = np.diff(t)
-        if dt.size and not np.all(dt > 0):
+        scale = _time_scale(layout, p)
+        counter = (dt.size > 0 and bool(np.all(dt == 1.0)) and t[0] in (0.0, 1.0)
+                   and scale is None) or (header is not None and header[0].strip().lower()
+                                          in _INDEX_WORDS)
+        if counter:
+            why = (f"its first column {names[0]!r} counts samples (0, 1, 2, ...), it is no "
+                   "time column")
+        elif dt.size and not np.all(dt > 0):
             k = int(np.argmax(~(dt > 0)))
             why = (f"the first column is no time column: it does not increase at data row "
                    f"{k + 2} ({t[k + 1]:g} after {t[k]:g})")
-        if dt.size and np.all(dt > 0):
+        elif dt.size:
             # rate from the span (robust to the print precision of the time column); steps
             # that deviate by more than half a step mean missing or irregular samples
             mean_dt = float(t[-1] - t[0]) / dt.size
             if np.max(np.abs(dt - mean_dt)) > 0.5 * mean_dt:
-                raise InputError("file time column", "non-uniform time steps",
-                                 "uniform sampling (no gaps)")
-            rate = 1.0 / mean_dt
-    return samples, rate, why
+                k = int(np.argmax(np.abs(dt - mean_dt)))
+                raise InputError("file time column", "non-uniform time steps "
+                                 f"({t[k + 1]:g} after {t[k]:g} at data row {k + 2}; mean "
+                                 f"step {mean_dt:g})", "uniform sampling (no gaps)")
+            rate = 1.0 / (mean_dt * (scale if scale is not None else 1.0))
+    n_channels = ncol - 1 if rate is not None else ncol
+    return samples, rate, why, (names[idx] if ncol > 1 else ""), n_channels

@@ -29,7 +29,9 @@ EXIT_NOT_DETECTED = 3
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("file", help="acceleration record: .csv (time, accel), .npy or .npz")
+    parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
+                        "(time column first, then channels; comma, semicolon or tab separated, "
+                        "decimal commas, header and units rows), .npy or .npz")
     parser.add_argument("--rpm", type=float, required=True,
                         help="inner-ring (shaft) speed in r/min (tachometer)")
     parser.add_argument("--bearing", required=True, help="bearing preset name or TOML path")
@@ -37,7 +39,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="sampling rate (e.g. 25600 or '25.6 kHz'); needed unless the "
                              "file has a time column or a rate")
     parser.add_argument("--column", default=None,
-                        help="CSV column of the samples (index or header name)")
+                        help="column of the samples (index or header name; default: the "
+                             "first after the time column); for a 2-D .npy the column index")
     parser.add_argument("--contact-angle", default=None,
                         help="contact angle for the pure-rolling ratio (e.g. '40 deg'; "
                              "default: the bearing's nominal angle)")
@@ -92,7 +95,8 @@ def run(args: argparse.Namespace) -> int:
 def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
             plot: Path | None) -> dict:
     return {
-        "file": record.source, "sampling_rate_hz": record.sampling_rate,
+        "file": record.source, "channel": record.channel or None,
+        "sampling_rate_hz": record.sampling_rate,
         "duration_s": record.duration, "bearing": name,
         "shaft_frequency_hz": est.shaft_frequency,
         "measured_shaft_frequency_hz": est.measured_shaft_frequency,
@@ -112,8 +116,11 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
            plot: Path | None) -> None:
     bands = ", ".join(f"{lo:.0f}-{hi:.0f} Hz" for lo, hi in
                       (est.spectrum.bands or (est.spectrum.band,)))
-    print(f"record      {record.source}: {record.data.size} samples at "
-          f"{record.sampling_rate:g} Hz ({record.duration:.3g} s)")
+    chan = f" [{record.channel}]" if record.channel else ""
+    more = (f"; channel {record.channel!r} of {record.n_channels} (--column picks another)"
+            if record.n_channels > 1 else "")
+    print(f"record      {record.source}{chan}: {record.data.size} samples at "
+          f"{record.sampling_rate:g} Hz ({record.duration:.3g} s){more}")
     print(f"bearing     {name}: CSR_th = {est.csr_theoretical:.4f}; shaft "
           f"{est.shaft_frequency:.4g} Hz" + (
               f" (envelope line at {est.measured_shaft_frequency:.4f} Hz)"

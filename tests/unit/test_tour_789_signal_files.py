@@ -1,0 +1,137 @@
+"""User tour of ``thermobearing cage-speed`` (issue 8): the files a test rig's DAQ exports.
+
+Before the tour, the reader took only comma-separated files with one header row: a
+semicolon-separated export with decimal commas and a units row, a tab-separated file and a
+file with an empty cell all failed with "numeric CSV rows (could not convert string to
+float: ...)"; a time column in milliseconds gave a rate 1000x too small; a sample counter
+as first column was read as a time at 1 Hz; a 2-D .npy could not be read at all; the
+printout did not say which channel it analysed; a 60 s, 51.2 kHz CSV took 27 s CPU and
+1.4 GB (pandas' C parser now).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing import cli
+from thermobearing import signal as S
+from thermobearing.errors import InputError
+
+FS = 25600.0
+
+
+def record(csr=0.4, duration=1.0, f_shaft=30.0, n_balls=9, seed=0):
+    """Ball-pass impulses (Z f_c, 30 % modulated at f_c) ringing a 3 kHz resonance, plus
+    white noise of equal power (0 dB): the cage speed ratio of this record is ``csr``."""
+    rng = np.random.default_rng(seed)
+    n = int(FS * duration)
+    fc = csr * f_shaft
+    imp = np.zeros(n)
+    for tk in np.arange(0.0, duration, 1.0 / (n_balls * fc)):
+        i = int(round(tk * FS))
+        if i < n:
+            imp[i] += 1.0 + 0.3 * math.cos(2 * math.pi * fc * tk)
+    th = np.arange(int(0.01 * FS)) / FS
+    w = 2 * math.pi * 3000.0
+    x = np.convolve(imp, np.exp(-0.03 * w * th) * np.sin(w * th))[:n]
+    return x + rng.normal(scale=math.sqrt(np.mean(x**2)), size=n)
+
+
+def write(path, lines):
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+def test_semicolon_decimal_comma_units_row(tmp_path):
+    x = record(duration=0.5)
+    y = -x
+    t = np.arange(x.size) / FS
+    rows = ["Time;Accel X;Accel Y", "s;m/s^2;m/s^2"] + [
+        f"{a:.7f};{b:.6f};{c:.6f}".replace(".", ",") for a, b, c in zip(t, x, y, strict=True)]
+    rec = S.load_acceleration(write(tmp_path / "daq.csv", rows))
+    assert rec.sampling_rate == pytest.approx(FS, rel=1e-6)
+    assert np.allclose(rec.data, x, atol=1e-6)
+    assert rec.channel == "Accel X" and rec.n_channels == 2
+    rec = S.load_acceleration(tmp_path / "daq.csv", column="Accel Y")
+    assert np.allclose(rec.data, y, atol=1e-6) and rec.channel == "Accel Y"
+
+
+@pytest.mark.parametrize("suffix", [".txt", ".csv", ".tsv"])
+def test_tab_separated(tmp_path, suffix):
+    x = record(duration=0.5)
+    t = np.arange(x.size) / FS
+    rows = ["Time\tacc"] + [f"{a:.7f}\t{b:.6f}" for a, b in zip(t, x, strict=True)]
+    rec = S.load_acceleration(write(tmp_path / f"daq{suffix}", rows))
+    assert rec.sampling_rate == pytest.approx(FS, rel=1e-6) and rec.data.size == x.size
+
+
+def test_time_column_in_milliseconds(tmp_path):
+    # before: the rate came out as 25.6 Hz (the time read as seconds)
+    x = record(duration=0.5)
+    t_ms = 1e3 * np.arange(x.size) / FS
+    rows = ["Time [ms],acc [g]"] + [f"{a:.6f},{b:.6f}" for a, b in zip(t_ms, x, strict=True)]
+    rec = S.load_acceleration(write(tmp_path / "ms.csv", rows))
+    assert rec.sampling_rate == pytest.approx(FS, rel=1e-6)
+    rows = ["t,acc", "ms,g"] + [f"{a:.6f},{b:.6f}" for a, b in zip(t_ms, x, strict=True)]
+    rec = S.load_acceleration(write(tmp_path / "ms_units_row.csv", rows))
+    assert rec.sampling_rate == pytest.approx(FS, rel=1e-6)
+
+
+def test_sample_counter_is_no_time_column(tmp_path):
+    # before: a counter 0, 1, 2, ... was a time column: "sampling rate 1 Hz"
+    x = record(duration=0.5)
+    rows = ["sample,acc"] + [f"{i},{b:.6f}" for i, b in enumerate(x)]
+    path = write(tmp_path / "counter.csv", rows)
+    with pytest.raises(InputError, match="counts samples"):
+        S.load_acceleration(path)
+    rec = S.load_acceleration(path, sampling_rate=FS)
+    assert rec.sampling_rate == FS and np.allclose(rec.data, x, atol=1e-6)
+
+
+def test_empty_cell_is_a_missing_sample_named_by_index(tmp_path):
+    x = record(duration=0.5)
+    t = np.arange(x.size) / FS
+    rows = ["time,acc"] + [f"{a:.7f},{'' if i == 42 else f'{b:.6f}'}"
+                           for i, (a, b) in enumerate(zip(t, x, strict=True))]
+    with pytest.raises(InputError, match=r"1 NaN/inf samples \(first at index 42\)"):
+        S.load_acceleration(write(tmp_path / "gap.csv", rows))
+
+
+def test_text_in_a_data_row_names_row_and_column(tmp_path):
+    x = record(duration=0.5)
+    t = np.arange(x.size) / FS
+    rows = ["time,acc"] + [f"{a:.7f},{'OVL' if i == 9 else f'{b:.6f}'}"
+                           for i, (a, b) in enumerate(zip(t, x, strict=True))]
+    with pytest.raises(InputError, match="data row 10, column 2: 'OVL'"):
+        S.load_acceleration(write(tmp_path / "ovl.csv", rows))
+
+
+def test_two_dimensional_npy_needs_a_column(tmp_path):
+    x = record(duration=0.5)
+    np.save(tmp_path / "two.npy", np.column_stack([x, -x]))
+    with pytest.raises(InputError, match=r"column index in \[0, 1\]"):
+        S.load_acceleration(tmp_path / "two.npy", sampling_rate=FS)
+    rec = S.load_acceleration(tmp_path / "two.npy", sampling_rate=FS, column=1)
+    assert np.array_equal(rec.data, -x) and rec.channel == "[:, 1]"
+
+
+def test_cli_names_the_channel_and_finds_the_cage(tmp_path, capsys):
+    # paper 002 point 2 again (CSR 15.13/30.2 = 0.501 at f_i = 30.2 Hz), QJ1044 (Z from the
+    # preset), exported by a DAQ with semicolons, decimal commas and a units row
+    from thermobearing.geometry import load_bearing
+
+    z = load_bearing("QJ1044").n_balls
+    x = record(15.13 / 30.2, duration=4.0, f_shaft=30.2, n_balls=z, seed=5)
+    t = np.arange(x.size) / FS
+    rows = ["Zeit;Beschl. DE;Beschl. NDE", "s;m/s2;m/s2"] + [
+        f"{a:.7f};{b:.6f};{b:.6f}".replace(".", ",") for a, b in zip(t, x, strict=True)]
+    path = write(tmp_path / "export.csv", rows)
+    rc = cli.main(["cage-speed", str(path), "--rpm", "1812", "--bearing", "QJ1044",
+                   "--no-plot"])
+    out = capsys.readouterr().out
+    assert rc == 0
+    assert "[Beschl. DE]" in out and "of 2 (--column picks another)" in out
+    assert "CSR         0.5010" in out
