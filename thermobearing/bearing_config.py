@@ -13,6 +13,7 @@ from dataclasses import MISSING, fields, replace
 from pathlib import Path
 from typing import Any
 
+from .bearing_estimates import complete_from_catalogue
 from .errors import InputError, UnknownNameError
 from .geometry import (
     BALL_KINDS,
@@ -121,9 +122,13 @@ def _cage(data: Any) -> CageGeometry:
 
 
 def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Bearing:
-    """Build a bearing from a config mapping (unit strings allowed); unknown keys are errors."""
+    """Build a bearing from a config mapping (unit strings allowed); unknown keys are errors.
+
+    ``estimate_missing = true`` fills the internal geometry a catalogue does not give, each
+    value marked in ``estimated`` with its rule (:mod:`thermobearing.bearing_estimates`).
+    """
     allowed = set(_LENGTH_FIELDS + _ANGLE_FIELDS + _PLAIN_FIELDS + _INT_FIELDS + _TEXT_FIELDS
-                  + _TABLE_FIELDS)
+                  + _TABLE_FIELDS + ("estimate_missing",))
     for key in data:
         if key not in allowed:
             raise InputError(f"{origin}.{key}", data[key],
@@ -135,6 +140,8 @@ def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Be
         raise UnknownNameError(f"{origin}.kind", kind, BALL_KINDS + ROLLER_KINDS)
     if not str(data.get("source", "")).strip():
         raise InputError(f"{origin}.source", data.get("source"), "a non-empty source")
+    if "estimate_missing" in data:
+        data = complete_from_catalogue(data, origin=origin)
     kw: dict[str, Any] = {}
     for key in _LENGTH_FIELDS:
         if key in data:

@@ -294,6 +294,16 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
                                       for w in results.warnings) + "</ul>")
     else:
         parts.append("<p>none</p>")
+    parts.append("<h2 id='estimated-inputs'>Estimated inputs</h2>")
+    if results.estimated:
+        parts.append("<p>input values no source gives, with the reasoning of each (the "
+                     "bearing and lubricant configs' <code>estimated</code> tables; "
+                     "<code>estimate_missing:</code> marks catalogue-data estimates)</p>")
+        for what, entries in results.estimated.items():
+            parts.append(f"<h3>{esc(what)}</h3>" + _table(pd.DataFrame(
+                {"field": list(entries), "reasoning": list(entries.values())})))
+    else:
+        parts.append("<p>none</p>")
     parts.append("<h2 id='tables'>Tables</h2>")
     for name, df in {**results.tables, **(extra_tables or {})}.items():
         parts.append(f"<h3>{esc(name)}</h3>{_table(df)}")

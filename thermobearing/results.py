@@ -51,6 +51,8 @@ class Results:
         bearing family, minimum film parameter [-], and their source); empty when no
         state was checked or unknown (film-only runs check the stress and film parameter
         of their film table's rows).
+    estimated : the input values no source gives, with their reasoning: what -> field ->
+        reasoning (``Simulation.estimated_inputs``: per bearing and the lubricant).
     """
 
     tables: dict[str, pd.DataFrame] = field(default_factory=dict)
@@ -61,6 +63,7 @@ class Results:
     stats: dict[str, Any] = field(default_factory=dict)
     figures: dict[str, bytes] = field(default_factory=dict)
     check_limits: dict[str, Any] = field(default_factory=dict)
+    estimated: dict[str, dict[str, str]] = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> pd.DataFrame:
         return self.tables[name]
@@ -90,6 +93,8 @@ class Results:
         }
         if self.check_limits:
             meta["check_limits"] = _jsonable(self.check_limits)
+        if self.estimated:
+            meta["estimated"] = _jsonable(self.estimated)
         (out / "metadata.json").write_text(json.dumps(meta, indent=1), encoding="utf-8")
         for name, png in self.figures.items():
             (out / f"{name}.png").write_bytes(png)

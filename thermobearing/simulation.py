@@ -401,6 +401,27 @@ class Simulation:
     def citations(self) -> list[str]:
         return cite(k for link in self.chain for k in link.references)
 
+    def estimated_inputs(self) -> dict[str, dict[str, str]]:
+        """The input values no source gives, with the reasoning of each: per scene bearing
+        (its config's ``estimated`` table, including what ``estimate_missing`` filled) and
+        ``"lubricant"``; empty entries are left out."""
+        out = {f"bearing {b.name} ({b.bearing.name})": dict(b.bearing.estimated)
+               for b in self.bearings if b.bearing.estimated}
+        lub = dict(getattr(self.lubricant, "estimated", {}) or {})
+        if lub:
+            out[f"lubricant ({self.lubricant.name})"] = lub
+        return out
+
+    def describe_estimates(self) -> str:
+        """One line per bearing / lubricant with the estimated fields (``thermobearing
+        check``); the reasoning of each is in the report."""
+        lines = ["estimated inputs (no source gives them; reasoning in the report):"]
+        for what, fields_ in self.estimated_inputs().items():
+            filled = sum(v.startswith("estimate_missing:") for v in fields_.values())
+            how = f", {filled} by estimate_missing" if filled else ""
+            lines.append(f"  {what}: {len(fields_)} values{how}: " + ", ".join(fields_))
+        return "\n".join(lines) if len(lines) > 1 else ""
+
     # ------------------------------------------------------------ evaluation
     def _operating(self, step: Step) -> OperatingPoint:
         return OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
@@ -566,7 +587,8 @@ class Simulation:
         results = Results(tables=tables, scene_toml=scene_toml,
                           chain=[(link.family, link.name) for link in self.chain],
                           citations=self.citations(), warnings=list(self.warnings) + checked,
-                          stats=stats, check_limits=limits)
+                          stats=stats, check_limits=limits,
+                          estimated=self.estimated_inputs())
         if out_dir is not None:
             from .report import attach_figures, write_report
 

@@ -26,4 +26,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"scene: {scene.title}")
     print(f"schedule: {len(scene.schedule.steps)} steps, {scene.schedule.duration / 60:g} min")
     print(sim.describe_chain(with_citations=True))
+    estimates = sim.describe_estimates()
+    if estimates:
+        print(estimates)
     return 0

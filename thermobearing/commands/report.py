@@ -136,7 +136,8 @@ def run_report(folder: Path) -> Path:
                       chain=[tuple(x) for x in meta.get("chain", [])],
                       citations=meta.get("citations", []), warnings=meta.get("warnings", []),
                       stats=meta.get("stats", {}),
-                      check_limits=meta.get("check_limits", {}))
+                      check_limits=meta.get("check_limits", {}),
+                      estimated=meta.get("estimated", {}))
     attach_figures(results, scene)
     return write_report(results, scene, folder / "report.html")
 
