@@ -219,7 +219,18 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     if band is not None:
         es = envelope_spectrum(arr, fs, band, max_frequency=f_max, padding=padding)
     else:
-        cells = kurtogram_bands(arr, fs, n_bands, min_frequency=f_top, min_bandwidth=f_max)
+        try:
+            cells = kurtogram_bands(arr, fs, n_bands, min_frequency=f_top,
+                                    min_bandwidth=f_max)
+        except InputError as exc:
+            if exc.field != "band":
+                raise
+            need = _kurtogram_rate(duration, f_top, f_max, fs)
+            raise InputError("sampling_rate", fs, f"a rate of at least {need:.4g} Hz for "
+                             f"this record: the demodulation band must lie above the highest "
+                             f"line searched ({f_top:.4g} Hz), be at least {f_max:.4g} Hz "
+                             f"wide and stay below Nyquist ({nyq:g} Hz); or give a band "
+                             "(--band)") from None
         parts = [envelope_spectrum(arr, fs, c.band, max_frequency=f_max, padding=padding)
                  for c in cells]
         size = min(e.frequency.size for e in parts)
@@ -364,11 +375,12 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))
     detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary and off
+    strong = any(snr > strict for _, _, _, snr, _ in used)
     if not detected:
         reason = (f"no significant cage comb (false-alarm probability {p_fa:.3g} vs alpha "
                   f"{alpha:g}, {len(used)} lines above threshold, consistency "
                   f"{consistency:.2f}, fundamental line {'found' if primary else 'missing'}"
-                  f"{'' if off else ', all strong lines on shaft harmonics'})")
+                  f"{'' if off or not strong else ', all strong lines on shaft harmonics'})")
         return CageSpeedEstimate(False, None, None, None, None, float(shaft_frequency),
                                  shaft_meas, float(csr_theoretical), float(max(confidence, 0)),
                                  p_fa, consistency, tuple(lines), es, reason)
@@ -376,6 +388,25 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     return CageSpeedEstimate(True, fc, csr, cage_slip(csr, csr_theoretical), n_balls * fc,
                              float(shaft_frequency), shaft_meas, float(csr_theoretical),
                              float(confidence), p_fa, consistency, tuple(lines), es, "")
+
+
+def _kurtogram_rate(duration: float, f_min: float, bandwidth: float, fs: float) -> float:
+    """Smallest sampling rate [Hz] (in 1 % steps above ``fs``) at which a record of
+    ``duration`` [s] has a kurtogram cell of :func:`kurtogram_bands` (window lengths 8-512,
+    cells of width 2 fs / N_w on the STFT bins) above ``f_min`` [Hz], at least ``bandwidth``
+    [Hz] wide and below Nyquist."""
+    rate = fs
+    for _ in range(2000):
+        rate *= 1.01
+        n = duration * rate
+        for nw in (8, 16, 32, 64, 128, 256, 512):
+            half = rate / nw
+            if nw * 8 > n or 2 * half < bandwidth:
+                continue
+            k_lo = math.ceil(f_min / half + 1.0 - 1e-12)
+            if (k_lo + 1) * half <= rate / 2 and k_lo >= 1:
+                return rate
+    return rate
 
 
 def _priority(kind: str, k: int) -> int:

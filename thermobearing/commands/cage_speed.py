@@ -146,6 +146,19 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
         print(f"plot        {plot}")
 
 
+def _peak_hold(f, a, points: int = 6000):
+    """At most ~``points`` (f, max of a) pairs: a long record's spectrum has millions of bins
+    (60 s at 51.2 kHz: 1.5 M), more than a figure shows and slow to draw; the maximum
+    over each group of bins keeps every line visible."""
+    import numpy as np
+
+    k = max(1, int(np.ceil(a.size / points)))
+    if k == 1:
+        return f, a
+    m = a.size // k
+    return f[:m * k:k], a[:m * k].reshape(m, k).max(axis=1)
+
+
 def _plot(est: S.CageSpeedEstimate, record: S.AccelerationRecord, path: Path,
           name: str) -> None:
     import matplotlib
@@ -160,15 +173,19 @@ def _plot(est: S.CageSpeedEstimate, record: S.AccelerationRecord, path: Path,
     win = np.hanning(x.size)
     a = np.abs(np.fft.rfft(x * win)) * 2.0 / win.sum()
     f = np.fft.rfftfreq(x.size, 1.0 / record.sampling_rate)
+    f, a = _peak_hold(f, a)
     ax0.semilogy(f, np.maximum(a, 1e-300), lw=0.6)
     ax0.set_xlabel("frequency [Hz]")
-    ax0.set_ylabel("amplitude")
+    ax0.set_ylabel("amplitude [unit of the record]")
     ax0.set_title(f"{Path(record.source).name}: spectrum ({name})")
     for lo, hi in es.bands or (es.band,):
         ax0.axvspan(lo, hi, color="tab:orange", alpha=0.2)
-    ax1.plot(es.frequency, es.normalised, lw=0.7, color="k")
+    fe, re_ = _peak_hold(es.frequency, es.normalised)
+    ax1.semilogy(fe, np.maximum(re_, 1e-2), lw=0.7, color="k")
+    ax1.set_ylim(bottom=0.1)
+    ax1.set_xlim(0.0, float(es.frequency[-1]))
     ax1.set_xlabel("frequency [Hz]")
-    ax1.set_ylabel("envelope power / noise floor")
+    ax1.set_ylabel("envelope power / noise floor [-]")
     colours = {"cage": "tab:red", "ball_pass": "tab:blue", "ball_pass_sideband": "tab:cyan",
                "sideband": "tab:green", "shaft": "tab:purple"}
     for ln in est.lines:

@@ -1,0 +1,71 @@
+"""User tour of ``thermobearing cage-speed`` (issue 8): messages and the spectrum plot.
+
+Found on the tour: a record sampled too slowly for the kurtogram got
+``band = 'min_frequency 301 Hz, min_bandwidth 332 Hz' is not allowed`` although the user
+gave no band (the rate was the problem, and the rate check before it had passed); a noise
+record's "not detected" reason said "all strong lines on shaft harmonics" when there were
+no lines at all; the envelope panel of the plot was linear (the cage lines, 1e2-1e4 times
+the noise floor, invisible beside a 1e5 ball-pass line) and the raw spectrum of a 60 s
+record drew 1.5 M points.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from thermobearing import cli
+from thermobearing import signal as S
+from thermobearing.commands.cage_speed import _peak_hold
+from thermobearing.errors import InputError
+
+# SKF 6304 (Z = 7, pure-rolling CSR 0.3677 at 0 deg) at 1800 r/min: the comb reaches
+# 3 Z f_c at CSR 1.3 x 0.3677, i.e. 301 Hz
+Z, CSR_TH, F_SHAFT = 7, 0.3677083333333333, 30.0
+
+
+def test_rate_too_low_for_the_kurtogram_names_the_rate_and_the_rate_needed():
+    fs = 1280.0  # passes the comb check (> 4 x 301 Hz) but leaves no band 332 Hz wide
+    x = np.random.default_rng(1).normal(size=int(4 * fs))
+    with pytest.raises(InputError) as info:
+        S.estimate_cage_speed(x, fs, F_SHAFT, Z, CSR_TH)
+    err = info.value
+    assert err.field == "sampling_rate" and err.value == fs
+    assert "at least 1332 Hz" in str(err) and "--band" in str(err)
+    # at the rate it names, the kurtogram finds a band (noise: analysed, not detected)
+    fs2 = 1332.0
+    est = S.estimate_cage_speed(np.random.default_rng(2).normal(size=int(4 * fs2)), fs2,
+                                F_SHAFT, Z, CSR_TH)
+    assert not est.detected
+
+
+def test_not_detected_reason_does_not_invent_shaft_lines():
+    x = np.random.default_rng(3).normal(size=4 * 25600)
+    est = S.estimate_cage_speed(x, 25600.0, F_SHAFT, Z, CSR_TH)
+    assert not est.detected and est.cage_frequency is None
+    assert "no significant cage comb" in est.reason
+    strong = [ln for ln in est.lines if ln.kind != "shaft" and ln.snr > 20.0]
+    assert not strong  # noise: no line stands out ...
+    assert "shaft harmonics" not in est.reason  # ... so none "on shaft harmonics" either
+
+
+def test_peak_hold_keeps_a_one_bin_line_and_thins_the_rest():
+    f = np.arange(1_500_001) * 0.0167
+    a = np.full(f.size, 1e-3)
+    a[1_234_567] = 5.0
+    fp, ap = _peak_hold(f, a)
+    assert ap.size <= 6000 and ap.max() == 5.0
+    assert fp[int(np.argmax(ap))] == pytest.approx(f[1_234_567], abs=300 * 0.0167)
+    f2, a2 = _peak_hold(f[:100], a[:100])
+    assert f2.size == 100
+
+
+def test_plot_of_a_long_record_is_written(tmp_path, capsys):
+    fs = 25600.0
+    x = np.random.default_rng(4).normal(size=int(20 * fs))
+    np.save(tmp_path / "long.npy", x)
+    rc = cli.main(["cage-speed", str(tmp_path / "long.npy"), "--fs", "25.6 kHz", "--rpm",
+                   "1800", "--bearing", "SKF6304", "--plot", str(tmp_path / "p.png")])
+    out = capsys.readouterr().out
+    assert rc == 3 and "NOT DETECTED" in out
+    assert (tmp_path / "p.png").stat().st_size > 10_000
