@@ -76,13 +76,21 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, fields, replace
 from typing import Any, NamedTuple
 
 import numpy as np
 from numba import njit
 
-from .errors import InputError, UnknownNameError, check_finite, check_positive, check_range
+from .errors import (
+    InputError,
+    UnknownNameError,
+    ValidityWarning,
+    check_finite,
+    check_positive,
+    check_range,
+)
 from .hertz import point_contact, point_contact_stiffness
 
 #: end-face shapes: the paper's sphere (eqs. 1, 11) or the sphere cap with a chamfer blend
@@ -150,12 +158,46 @@ class RibGeometry:
         if self.rib_height >= self.roller_diameter:
             raise InputError("rib.rib_height", self.rib_height,
                              f"a value < D_w = {self.roller_diameter:.4g} m")
+        if self.end_face == "sphere":
+            self._check_contact_on_roller()
         h = self.contact_height()
         if h > self.rib_height:
             raise InputError(
                 "rib.rib_height", self.rib_height,
                 f"a rib higher than the end-face contact point H_contact = {h * 1e3:.4g} mm "
                 "(paper 003 eq. 11): the roller cannot touch the rib")
+
+    def _check_contact_on_roller(self) -> None:
+        """The end-face point that touches the rib (whole sphere, eq. 11) lies
+        rho = R_s sin(theta_f) from the roller axis. Beyond the roller radius (H_contact < 0)
+        it is below the inner raceway, off the roller's end face: paper 003's own maps go
+        there (0.6-0.9 deg at 300 mm, 600-800 mm at 0.3 deg with D_w = 6 mm), so that is a
+        ValidityWarning; beyond a roller diameter the geometry has nothing to do with a roller
+        (and eq. 10's rib-cone radius d_i/2 + H_contact soon turns negative): InputError."""
+        rho = self.contact_arm
+        r = 0.5 * self.roller_diameter
+        if rho <= r:
+            return
+        angle_max = math.degrees(math.asin(min(1.0, self.roller_diameter
+                                                / self.crown_radius)))
+        crown_max = self.roller_diameter / max(math.sin(self.rib_angle), 1e-300)
+        where = (f"the end-face point that touches the rib, R_s sin(theta_f) = "
+                 f"{rho * 1e3:.3g} mm from the roller axis (paper 003 eq. 11, crown radius "
+                 f"{self.crown_radius * 1e3:.4g} mm, rib angle "
+                 f"{math.degrees(self.rib_angle):.3g} deg)")
+        if rho >= self.roller_diameter:
+            raise InputError(
+                "rib.rib_angle / rib.crown_radius",
+                f"{math.degrees(self.rib_angle):.4g} deg / {self.crown_radius * 1e3:.4g} mm",
+                f"{where} within a roller diameter D_w = {self.roller_diameter * 1e3:.4g} mm "
+                f"of it: a rib angle < {angle_max:.3g} deg at this crown radius or a crown "
+                f"radius < {crown_max * 1e3:.4g} mm at this rib angle (end_face='cap' keeps "
+                "the contact on the face)")
+        warnings.warn(ValidityWarning(
+            f"rib: {where} is beyond the roller radius {r * 1e3:.3g} mm, i.e. "
+            f"{(rho - r) * 1e3:.3g} mm below the inner raceway: off the roller's end face. "
+            "Paper 003's whole-sphere model is extrapolated there (its Figs. 11-12 go there); "
+            "end_face='cap' bounds the face by its chamfer blend"), stacklevel=4)
 
     def contact_height(self, tilt: Any = 0.0, side: int = 1) -> Any:
         """H_contact [m], height of the contact point above the inner raceway (eq. 11).

@@ -91,6 +91,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "full and reduced model)")
     parser.add_argument("--out", default="rib_map", help="output folder")
     parser.add_argument("--no-plot", action="store_true", help="CSV only")
+    parser.add_argument("--quiet", action="store_true",
+                        help="no progress line per point (on stderr)")
 
 
 def _parse_list(text: str, kind: str, field: str) -> list[float]:
@@ -120,11 +122,11 @@ def _plot(rows: list[dict], parameter: str, unit: str, scale: float, path: Path)
         x = [r["value"] / scale for r in sel]
         color = f"C{i}"
         ax1.plot(x, [r["pv_left"] / 1e6 for r in sel], "o--", color=color,
-                 label=f"L, {mu * 1e3:.2f} g")
+                 label=f"left face, m_u {mu * 1e3:.2f} g")
         ax1.plot(x, [r["pv_right"] / 1e6 for r in sel], "s-", color=color,
-                 label=f"R, {mu * 1e3:.2f} g")
+                 label=f"right face, m_u {mu * 1e3:.2f} g")
         ax2.plot(x, [r["slip_speed"] for r in sel], "o-", color=color,
-                 label=f"{mu * 1e3:.2f} g")
+                 label=f"m_u {mu * 1e3:.2f} g")
     ax1.set_xlabel(f"{parameter} [{unit}]")
     ax1.set_ylabel("PV of the roller end face [MPa m/s]")
     ax1.set_title("(a) PV value")
@@ -151,7 +153,6 @@ def run(args: argparse.Namespace) -> int:
     if args.values is not None and len(params) != 1:
         raise InputError("--values", args.values, "exactly one --param with --values")
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     cache: dict = {}
     try:
         warm, stats = (float(v) for v in args.orbits.split(","))
@@ -162,6 +163,14 @@ def run(args: argparse.Namespace) -> int:
     coupling = args.coupling or ("none" if args.model == "coupled" else "rib")
     options = {"spin": args.spin, "pocket_dof": not args.no_pocket_dof,
                "raceway_traction": args.raceway_traction}
+    sweeps = {p: (_parse_list(args.values, KINDS[p], "--values") if args.values is not None
+                  else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
+              for p, (unit, defaults) in ((p, DEFAULT_SWEEPS[p]) for p in params)}
+    from ..skidding.roller_dynamics_map import PAPER003_BASE, check_map_points
+
+    for p, vals in sweeps.items():  # every point checked before the first (long) solve
+        check_map_points(bearing, p, vals, masses, dict(PAPER003_BASE),
+                         end_face=args.end_face, slide=args.slide)
     if args.cost:
         from ..skidding.roller_dynamics_coupled import simulate_coupled
 
@@ -179,10 +188,16 @@ def run(args: argparse.Namespace) -> int:
         for r in (cpl, full, red):
             print(f"  {r.model:8s} PV L/R {r.pv_left / 1e6:.4g}/{r.pv_right / 1e6:.4g} MPa m/s,"
                   f" slip {r.slip_speed:.4g} m/s")
+    out.mkdir(parents=True, exist_ok=True)
+    total = sum(len(v) for v in sweeps.values()) * len(masses)
+    done = [0]
+    if not args.quiet:
+        print(f"rib-map: {total} points ({len(params)} parameter(s) x values x "
+              f"{len(masses)} unbalance mass(es)), model {args.model}; one line per point "
+              f"on stderr, rows written to {out} as they finish", file=sys.stderr)
     for p in params:
-        unit, defaults = DEFAULT_SWEEPS[p]
-        values = (_parse_list(args.values, KINDS[p], "--values") if args.values is not None
-                  else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
+        unit = DEFAULT_SWEEPS[p][0]
+        values = sweeps[p]
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         path = out / f"rib_map_{p}.csv"
         with path.open("w", newline="") as fh:
@@ -197,7 +212,7 @@ def run(args: argparse.Namespace) -> int:
                         "cage_speed [rad/s]", "cost [s]"])
             fh.flush()
 
-            def write_row(r: dict, w=w, fh=fh, scale=scale) -> None:
+            def write_row(r: dict, w=w, fh=fh, scale=scale, p=p, unit=unit) -> None:
                 w.writerow([f"{r['value'] / scale:.6g}", f"{r['unbalance_mass'] * 1e3:.4g}",
                             f"{r['pv_left'] / 1e6:.6g}", f"{r['pv_right'] / 1e6:.6g}",
                             f"{r['pv_peak_left'] / 1e6:.6g}", f"{r['pv_peak_right'] / 1e6:.6g}",
@@ -211,6 +226,13 @@ def run(args: argparse.Namespace) -> int:
                             f"{r['pocket_friction_extra']:.5g}", f"{r['cage_speed']:.6g}",
                             f"{r['cost_s']:.3g}"])
                 fh.flush()  # every point is on disk as soon as it is computed
+                done[0] += 1
+                if not args.quiet:
+                    print(f"[{done[0]}/{total}] {p} {r['value'] / scale:.4g} {unit}, m_u "
+                          f"{r['unbalance_mass'] * 1e3:.3g} g: PV L/R "
+                          f"{r['pv_left'] / 1e6:.4g}/{r['pv_right'] / 1e6:.4g} MPa m/s, slip "
+                          f"{r['slip_speed']:.4g} m/s ({r['cost_s']:.2g} s CPU)",
+                          file=sys.stderr, flush=True)
 
             try:
                 rows = rd.pv_slip_map(bearing, lubricant, p, values, masses, model=args.model,

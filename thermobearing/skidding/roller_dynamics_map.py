@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, check_positive
 from .roller_dynamics_integrate import simulate
 from .roller_dynamics_setup import build_model
 
@@ -49,6 +49,8 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
         raise InputError("parameter", parameter, tuple(MAP_PARAMETERS))
     cfg = dict(PAPER003_BASE)
     cfg.update(base or {})
+    check_map_points(bearing, parameter, values, unbalance_masses, cfg, end_face=end_face,
+                     slide=slide)
     cache = {} if cache is None else cache
     rows = []
     for value in np.atleast_1d(np.asarray(values, float)):
@@ -88,3 +90,27 @@ def pv_slip_map(bearing: Any, lubricant: Any, parameter: str, values: Any,
             if on_row is not None:
                 on_row(rows[-1])
     return rows
+
+
+def check_map_points(bearing: Any, parameter: str, values: Any, unbalance_masses: Any,
+                     cfg: dict[str, float], *, end_face: str = "sphere",
+                     slide: str = "offset") -> None:
+    """Check every point of a map before the first solve (a bad value at the end of a long
+    map must not surface after minutes of work): speed > 0, radial load >= 0, pocket
+    clearance >= 0, the rib geometry of every (axial clearance, rib angle, crown radius)
+    (:class:`thermobearing.rib.RibGeometry`: e.g. a rib angle that puts the end-face contact
+    off the roller) and every unbalance mass (0 <= m_u < roller mass).
+    InputError names the field and the value as given (SI)."""
+    from ..rib import rib_geometry, unbalance_check
+
+    for value in np.atleast_1d(np.asarray(values, float)):
+        point = dict(cfg)
+        point[parameter] = float(value)
+        check_positive("speed", point["speed"])
+        check_positive("radial_load", point["radial_load"], allow_zero=True)
+        check_positive("pocket_clearance", point["pocket_clearance"], allow_zero=True)
+        rib_geometry(bearing, axial_clearance=point["axial_clearance"],
+                     rib_angle=point["rib_angle"], crown_radius=point["crown_radius"],
+                     end_face=end_face, slide=slide)
+    for mass in np.atleast_1d(np.asarray(unbalance_masses, float)):
+        unbalance_check(float(mass), bearing.roller_mass)
