@@ -90,3 +90,22 @@ def test_rib_map_prints_progress_per_point(tmp_path, capsys):
                "reduced", "--unbalance", "0.11 g", "--out", str(tmp_path), "--no-plot",
                "--quiet"])
     assert rc == 0 and "[1/1]" not in capsys.readouterr().err
+
+
+def test_values_without_a_unit_are_refused_and_spaces_separate(tmp_path, capsys):
+    # before: "--values 0.01,0.03" mapped an axial clearance of 10 and 30 mm (SI metres)
+    # without a word, and "0.01 0.03 mm" failed on the unit '0.010.03 mm'
+    from thermobearing.commands.rib_map import _parse_list
+
+    with pytest.raises(InputError, match=r"e\.g\. '0\.01,0\.03 mm' \(bare numbers would be in m"):
+        _parse_list("0.01,0.03", "length", "--values", "mm")
+    with pytest.raises(InputError, match="--unbalance"):
+        _parse_list("0.06,0.11", "mass", "--unbalance", "g")
+    assert _parse_list("0.01 0.03 mm", "length", "--values", "mm") == pytest.approx(
+        [1e-5, 3e-5])
+    assert _parse_list("0.3, 0.5 deg", "angle", "--values", "deg") == pytest.approx(
+        [math.radians(0.3), math.radians(0.5)])
+    assert _parse_list("2000 3000", "force", "--values", "N", bare_ok=True) == [2000.0, 3000.0]
+    rc = main(["rib-map", "--param", "axial_clearance", "--values", "0.01,0.03", "--out",
+               str(tmp_path / "x")])
+    assert rc == 1 and "bare numbers" in capsys.readouterr().err

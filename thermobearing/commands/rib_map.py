@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -49,8 +50,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         choices=sorted(DEFAULT_SWEEPS), help="parameter(s) to sweep "
                         "(repeatable; default: all six)")
     parser.add_argument("--values", default=None,
-                        help="sweep values with one unit, e.g. '0.3,0.5,0.7 deg' (only with "
-                             "a single --param)")
+                        help="sweep values with one unit, e.g. '0.3,0.5,0.7 deg' or "
+                             "'0.03 0.05 mm' (only with a single --param; a negative first "
+                             "value: --values=\"-0.01,0.03 mm\")")
     parser.add_argument("--unbalance", default="0.06,0.08,0.11 g",
                         help="roller unbalance masses, e.g. '0.06,0.11 g'")
     parser.add_argument("--model", default="coupled", choices=("reduced", "full", "coupled"),
@@ -95,17 +97,36 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="no progress line per point (on stderr)")
 
 
-def _parse_list(text: str, kind: str, field: str) -> list[float]:
-    parts = text.strip().split()
-    unit = parts[-1] if len(parts) > 1 else ""
-    nums = "".join(parts[:-1]) if len(parts) > 1 else parts[0]
+def _parse_list(text: str, kind: str, field: str, example_unit: str,
+                bare_ok: bool = False) -> list[float]:
+    """SI values of a list like ``'0.3,0.5,0.7 deg'`` or ``'0.3 0.5 0.7 deg'`` (one unit at
+    the end, commas and/or spaces between the numbers). Bare numbers are refused unless
+    ``bare_ok`` (the display unit is the SI one): ``'0.01,0.03'`` for an axial clearance
+    would be 10 and 30 mm."""
+    tokens = [t for t in re.split(r"[,;\s]+", text.strip()) if t]
+    if not tokens:
+        raise InputError(field, text, f"a list of values with a unit, e.g. '1,2 {example_unit}'")
+    unit = ""
+    try:
+        float(tokens[-1])
+    except ValueError:
+        unit = tokens.pop()
+    if not unit and not bare_ok:
+        from ..units import SI_UNITS
+
+        raise InputError(field, text, f"values with a unit, e.g. '{','.join(tokens)} "
+                         f"{example_unit}' (bare numbers would be in {SI_UNITS[kind]}, "
+                         "the SI unit)")
     out = []
-    for tok in nums.split(","):
-        if not tok:
-            continue
-        out.append(to_si(f"{tok} {unit}".strip(), kind, field=field) if unit else float(tok))
+    for tok in tokens:
+        try:
+            float(tok)
+        except ValueError:
+            raise InputError(field, text, f"numbers separated by commas or spaces, then one "
+                             f"unit, e.g. '1,2 {example_unit}'") from None
+        out.append(to_si(f"{tok} {unit}", kind, field=field) if unit else float(tok))
     if not out:
-        raise InputError(field, text, "a comma-separated list of values with a unit")
+        raise InputError(field, text, f"a list of values with a unit, e.g. '1,2 {example_unit}'")
     return out
 
 
@@ -148,7 +169,7 @@ def run(args: argparse.Namespace) -> int:
     bearing = load_bearing(args.bearing)
     lubricant = load_lubricant(args.lubricant)
     temperature = to_si(args.temperature, "temperature", field="--temperature")
-    masses = _parse_list(args.unbalance, "mass", "--unbalance")
+    masses = _parse_list(args.unbalance, "mass", "--unbalance", "g")
     params = args.params or list(DEFAULT_SWEEPS)
     if args.values is not None and len(params) != 1:
         raise InputError("--values", args.values, "exactly one --param with --values")
@@ -163,7 +184,8 @@ def run(args: argparse.Namespace) -> int:
     coupling = args.coupling or ("none" if args.model == "coupled" else "rib")
     options = {"spin": args.spin, "pocket_dof": not args.no_pocket_dof,
                "raceway_traction": args.raceway_traction}
-    sweeps = {p: (_parse_list(args.values, KINDS[p], "--values") if args.values is not None
+    sweeps = {p: (_parse_list(args.values, KINDS[p], "--values", unit, bare_ok=unit == "N")
+                  if args.values is not None
                   else [to_si(f"{v} {unit}", KINDS[p], field=p) for v in defaults])
               for p, (unit, defaults) in ((p, DEFAULT_SWEEPS[p]) for p in params)}
     from ..skidding.roller_dynamics_map import PAPER003_BASE, check_map_points
