@@ -69,3 +69,25 @@ def test_plot_of_a_long_record_is_written(tmp_path, capsys):
     out = capsys.readouterr().out
     assert rc == 3 and "NOT DETECTED" in out
     assert (tmp_path / "p.png").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(("angle", "message"), [
+    ("40", "an angle with a unit, e.g. '40 deg'"), ("100 deg", r"in \[0, 90\) deg"),
+    ("-5 deg", r"in \[0, 90\) deg")])
+def test_contact_angle_needs_a_unit_and_a_range(tmp_path, capsys, angle, message):
+    # before: "--contact-angle 40" was 40 rad (QJ1044 CSR_th 0.5416 instead of 0.4522) and
+    # "100 deg" gave CSR_th 0.5108, both without a word
+    import re
+
+    np.save(tmp_path / "x.npy", np.random.default_rng(5).normal(size=25600))
+    rc = cli.main(["cage-speed", str(tmp_path / "x.npy"), "--fs", "25600", "--rpm", "1800",
+                   "--bearing", "QJ1044", "--no-plot", f"--contact-angle={angle}"])
+    err = capsys.readouterr().err
+    assert rc == 1 and "--contact-angle" in err and re.search(message, err)
+
+
+def test_contact_angle_with_unit_sets_the_pure_rolling_ratio(tmp_path, capsys):
+    np.save(tmp_path / "x.npy", np.random.default_rng(6).normal(size=4 * 25600))
+    cli.main(["cage-speed", str(tmp_path / "x.npy"), "--fs", "25600", "--rpm", "1800",
+              "--bearing", "QJ1044", "--no-plot", "--contact-angle", "40 deg"])
+    assert "CSR_th = 0.4522" in capsys.readouterr().out  # (1 - D cos 40 deg / d_m) / 2

@@ -73,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     record = S.load_acceleration(args.file, sampling_rate=fs, column=column)
     bearing = load_bearing(args.bearing)
     angle = (bearing.contact_angle if args.contact_angle is None
-             else to_si(args.contact_angle, "angle", field="--contact-angle"))
+             else _contact_angle(args.contact_angle))
     csr_th = float(bearing.theoretical_cage_speed_ratio(angle))
     n_elem = int(bearing.n_elements)
     shaft_hz = args.rpm / 60.0
@@ -90,6 +90,21 @@ def run(args: argparse.Namespace) -> int:
     else:
         _print(est, record, bearing.name, plot_path)
     return 0 if est.detected else EXIT_NOT_DETECTED
+
+
+def _contact_angle(text: str) -> float:
+    """--contact-angle [rad] from '40 deg' (a unit is required: a bare 40 would be 40 rad,
+    which gave CSR_th 0.5416 instead of 0.4522 for the QJ1044); 0 <= angle < 90 deg."""
+    try:
+        float(text)
+    except ValueError:
+        pass
+    else:
+        raise InputError("--contact-angle", text, f"an angle with a unit, e.g. '{text} deg'")
+    angle = to_si(text, "angle", field="--contact-angle")
+    if not 0.0 <= angle < 0.5 * math.pi:
+        raise InputError("--contact-angle", text, "an angle in [0, 90) deg")
+    return angle
 
 
 def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
