@@ -91,3 +91,25 @@ def test_contact_angle_with_unit_sets_the_pure_rolling_ratio(tmp_path, capsys):
     cli.main(["cage-speed", str(tmp_path / "x.npy"), "--fs", "25600", "--rpm", "1800",
               "--bearing", "QJ1044", "--no-plot", "--contact-angle", "40 deg"])
     assert "CSR_th = 0.4522" in capsys.readouterr().out  # (1 - D cos 40 deg / d_m) / 2
+
+
+def test_clipped_record_is_said_and_still_measured(tmp_path, capsys):
+    # a DAQ input range too small: 10 % of the samples at the rails. Before: not a word.
+    from thermobearing.commands.cage_speed import clipped_fraction
+
+    rng = np.random.default_rng(7)
+    fs, f_shaft, csr = 25600.0, 30.0, 0.34
+    t = np.arange(int(4 * fs)) / fs
+    fc = csr * f_shaft
+    # ball-pass bursts (Z = 7) modulated at the cage frequency, ringing at 3 kHz, + noise
+    env = (1 + 0.3 * np.cos(2 * np.pi * fc * t)) * (np.mod(t * Z * fc, 1.0) < 0.05)
+    x = env * np.sin(2 * np.pi * 3000 * t) + 0.3 * rng.normal(size=t.size)
+    rail = np.quantile(np.abs(x), 0.9)
+    xc = np.clip(x, -rail, rail)
+    assert clipped_fraction(x) < 1e-3 < 0.05 < clipped_fraction(xc)
+    np.save(tmp_path / "clip.npy", xc)
+    rc = cli.main(["cage-speed", str(tmp_path / "clip.npy"), "--fs", "25600", "--rpm", "1800",
+                   "--bearing", "SKF6304", "--no-plot"])
+    out = capsys.readouterr().out
+    assert rc == 0 and "looks clipped" in out
+    assert "CSR         0.3400" in out

@@ -92,6 +92,22 @@ def run(args: argparse.Namespace) -> int:
     return 0 if est.detected else EXIT_NOT_DETECTED
 
 
+#: fraction of samples at the record's extremes above which the printout says "clipped"
+CLIP_NOTE = 1e-3
+
+
+def clipped_fraction(x) -> float:
+    """Fraction of the samples that sit at the record's maximum or minimum (within 1e-9 of
+    the range): a clipped (saturated) record has a run of them, an unclipped one about
+    2 / n."""
+    import numpy as np
+
+    a = np.asarray(x, dtype=float)
+    lo, hi = float(a.min()), float(a.max())
+    tol = 1e-9 * max(hi - lo, 1e-300)
+    return float(np.count_nonzero((a >= hi - tol) | (a <= lo + tol))) / a.size
+
+
 def _contact_angle(text: str) -> float:
     """--contact-angle [rad] from '40 deg' (a unit is required: a bare 40 would be 40 rad,
     which gave CSR_th 0.5416 instead of 0.4522 for the QJ1044); 0 <= angle < 90 deg."""
@@ -124,6 +140,7 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
                    "measured_hz": None if math.isnan(ln.measured) else ln.measured,
                    "snr": ln.snr, "detected": ln.detected} for ln in est.lines],
         "plot": str(plot) if plot else None,
+        "clipped_fraction": clipped_fraction(record.data),
     }
 
 
@@ -141,6 +158,11 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
               f" (envelope line at {est.measured_shaft_frequency:.4f} Hz)"
               if est.measured_shaft_frequency else ""))
     print(f"bands       {bands}")
+    clip = clipped_fraction(record.data)
+    if clip > CLIP_NOTE:
+        print(f"note        the record looks clipped: {100 * clip:.2g} % of the samples sit at "
+              "its extreme values (input range of the DAQ?); the frequencies are still "
+              "measured, amplitudes are not")
     if est.detected:
         print(f"cage        {est.cage_frequency:.4f} Hz   "
               f"(ball pass {est.ball_pass_frequency:.3f} Hz)")
