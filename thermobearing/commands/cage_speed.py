@@ -29,6 +29,9 @@ EXIT_NOT_DETECTED = 3
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.epilog = ("exit status: 0 cage line detected (CSR, slip and confidence printed), "
+                     "3 not detected (the reason printed, no frequency), 1 bad input. "
+                     "Example: thermobearing cage-speed rig.csv --rpm 1800 --bearing QJ1044")
     parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
                         "(time column first, then channels; comma, semicolon or tab separated, "
                         "decimal commas, header and units rows), .npy or .npz")
