@@ -113,3 +113,22 @@ def test_clipped_record_is_said_and_still_measured(tmp_path, capsys):
     out = capsys.readouterr().out
     assert rc == 0 and "looks clipped" in out
     assert "CSR         0.3400" in out
+
+
+def test_kurtogram_moments_in_chunks_equal_the_whole_stft(monkeypatch):
+    # a 60 s, 51.2 kHz record held 0.55 GB of STFT at once in the kurtogram (0.33 GB peak
+    # for the whole analysis now); the chunked moments must be those of scipy's STFT
+    from scipy import signal as sps
+
+    import thermobearing.signal_kurtogram as K
+
+    x = np.random.default_rng(8).standard_t(3, size=50_001)  # impulsive: SK > 0
+    monkeypatch.setattr(K, "_CHUNK_VALUES", 1000)  # many chunks
+    for nw in (8, 64, 512):
+        f, _, z = sps.stft(x, fs=1000.0, window="hann", nperseg=nw, noverlap=3 * nw // 4,
+                           boundary=None, padded=False, detrend=False)
+        p2 = np.abs(z) ** 2
+        sk = (p2**2).mean(axis=1) / p2.mean(axis=1) ** 2
+        f2, m2, m4 = K._stft_moments(x, 1000.0, nw)
+        assert np.array_equal(f, f2)
+        assert np.allclose(m4 / m2**2, sk, rtol=1e-10, atol=0)
