@@ -204,10 +204,33 @@ def _sniff(p: Path) -> _CsvLayout:
                          f"lines (separator {_sep_name(sep)!r}, decimal mark {decimal!r})")
     ncol = len(_split(body[first_data], sep))
     texts = [_split(ln, sep) for ln in body[:first_data]]
-    texts = [t for t in texts if len(t) == ncol]
-    header = texts[0] if texts else None
-    units = texts[1] if len(texts) > 1 else None
+    texts = [t for t in texts if len(t) == ncol]  # metadata lines above have other counts
+    # the channel names are the text row next to the data, or the one above a units row
+    units = texts.pop() if len(texts) >= 2 and _is_units_row(texts[-1]) else None
+    header = texts[-1] if texts else None
     return _CsvLayout(sep, decimal, raw[first_data][0], header, units, ncol)
+
+
+def _is_units_row(cells: list[str]) -> bool:
+    """True when every non-empty cell parses as a unit (``s``, ``m/s²``, ``[g]``, ``mV``)
+    and at least one is not empty: a units row below the channel names."""
+    from .units import unit_registry
+
+    ureg = unit_registry()
+    seen = False
+    for c in cells:
+        c = c.strip().strip("[]()").replace("²", "**2").replace("³", "**3")
+        c = c.replace("µ", "u").replace("μ", "u")
+        if not c:
+            continue
+        try:
+            q = ureg.parse_expression(c)
+        except Exception:  # noqa: BLE001 - pint raises many kinds for a non-unit word
+            return False
+        if not hasattr(q, "units") or getattr(q, "magnitude", 1) != 1:
+            return False
+        seen = True
+    return seen
 
 
 def _sep_name(sep: str) -> str:

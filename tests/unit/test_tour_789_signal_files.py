@@ -135,3 +135,24 @@ def test_cli_names_the_channel_and_finds_the_cage(tmp_path, capsys):
     assert rc == 0
     assert "[Beschl. DE]" in out and "of 2 (--column picks another)" in out
     assert "CSR         0.5010" in out
+
+
+def test_metadata_block_bom_crlf_header_and_units_row(tmp_path):
+    # a DAQ export with a BOM, CRLF line ends, metadata lines (one with as many cells as
+    # the data: it was taken for the header, channel '2026-11-23'), channel names with
+    # units and a units row below them
+    x = record(duration=0.5)
+    t = np.arange(x.size) / FS
+    lines = ["Export from DAQ v2.1", "Sample rate: 25600 Hz", "Date;2026-11-23;10:00", "",
+             "Time [s];Acc DE [m/s²];Acc NDE [m/s²]", "s;m/s²;m/s²"]
+    lines += [f"{a:.7f};{b:.6f};{-b:.6f}".replace(".", ",") for a, b in zip(t, x, strict=True)]
+    path = tmp_path / "export.csv"
+    path.write_text("\r\n".join(lines) + "\r\n", encoding="utf-8-sig", newline="")
+    rec = S.load_acceleration(path)
+    assert rec.channel == "Acc DE [m/s²]" and rec.sampling_rate == pytest.approx(FS, rel=1e-6)
+    rec = S.load_acceleration(path, column="Acc NDE [m/s²]")
+    assert np.allclose(rec.data, -x, atol=1e-6)
+    # one text row only is the header, even when its words parse as units ('t', 'acc')
+    rows = ["t acc"] + [f"{a:.7f}   {b:.6f}" for a, b in zip(t, x, strict=True)]
+    rec = S.load_acceleration(write(tmp_path / "spaces.txt", rows))
+    assert rec.channel == "acc" and rec.sampling_rate == pytest.approx(FS, rel=1e-6)
