@@ -43,15 +43,23 @@ DISPLAY_UNITS = {  # display unit used when the scene's own value carries none
     "speed": "rpm", "radial_load": "kN", "axial_load": "kN", "duration": "min",
     "flow": "L/min", "inlet_temperature": "degC", "ambient_temperature": "degC",
     "initial_temperature": "degC", "level": "mm",
+    # [checks] thresholds (operating_checks): a bare 2 means 2 %, a bare 3500 means 3500 MPa
+    "skid_limit": "%", "contact_stress_limit": "MPa", "ball": "MPa",
+    "self_aligning_ball": "MPa", "roller": "MPa",
 }
 
 
 @dataclass(frozen=True)
 class SweepParameter:
-    """One swept field: dotted path and its values (TOML-ready strings or numbers)."""
+    """One swept field: dotted path and its values (TOML-ready strings or numbers).
+
+    ``dropped``: values of the ``--set`` text left out because they repeat an earlier one
+    (the same quantity, e.g. ``15`` after ``15 L/min``), as ``"'15' (= '15 L/min')"``.
+    """
 
     path: str
     values: tuple[Any, ...]
+    dropped: tuple[str, ...] = ()
 
 
 class SchedulerUnreachable(ThermobearingError):
@@ -61,9 +69,9 @@ class SchedulerUnreachable(ThermobearingError):
 # ---------------------------------------------------------------------------
 def _split_unit(text: str) -> tuple[str, str]:
     """``"15,33 L/min"`` -> ``("15,33", "L/min")``: the numbers (ending in a digit or a dot),
-    then the unit (whatever follows, starting with a letter). Text that does not start with
-    numbers comes back whole with no unit."""
-    m = re.match(r"^\s*([-+0-9.eE:,\s]*[0-9.])\s*([A-Za-z].*?)?\s*$", text)
+    then the unit (whatever follows, starting with a letter or ``%``). Text that does not
+    start with numbers comes back whole with no unit."""
+    m = re.match(r"^\s*([-+0-9.eE:,\s]*[0-9.])\s*([A-Za-z%].*?)?\s*$", text)
     if not m:
         return text, ""
     return m.group(1), (m.group(2) or "").strip()
@@ -115,17 +123,54 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
     if not items:
         raise InputError(f"--set {path}", raw, "at least one value")
     split = [_split_unit(v) for v in items]
-    if not all(re.fullmatch(r"[-+0-9.eE ]+", num) for num, _ in split):
-        return SweepParameter(path, tuple(items))  # strings: lubricant presets etc.
+    numeric = [bool(re.fullmatch(r"[-+0-9.eE ]+", num)) for num, _ in split]
+    if not any(numeric):
+        return _unique(path, items, items)  # strings: lubricant presets etc.
     # each value may carry its own unit ("30 degC,50 degC"); a bare number takes the unit
-    # written after the list ("15,33 L/min"), else the unit of the scene's current value
-    trailing = split[-1][1] or _existing_unit(scene_dict, path)
-    values = []
-    for num, unit in split:
+    # written after the list ("15,33 L/min"), else the unit of the scene's current value.
+    # A text among numbers ("15,abc") is passed on as written, so that the scene's check
+    # names that value.
+    last = max(i for i, ok in enumerate(numeric) if ok)
+    trailing = split[last][1] or _existing_unit(scene_dict, path)
+    values: list[Any] = []
+    for item, (num, unit), ok in zip(items, split, numeric, strict=True):
+        if not ok:
+            values.append(item)
+            continue
         x = _number(num.strip(), f"--set {path}")
         unit = unit or trailing
         values.append(f"{x:g} {unit}" if unit else x)
-    return SweepParameter(path, tuple(values))
+    return _unique(path, values, items)
+
+
+def _same_quantity_key(value: Any) -> Any:
+    """Key under which two sweep values are the same quantity ("15 L/min" and "0.25 L/s");
+    the text itself when it is not a quantity."""
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        return ("", float(f"{float(value):.12g}"))
+    try:
+        from .units import unit_registry
+
+        q = unit_registry().Quantity(value).to_base_units()
+        return (f"{q.units:~}", float(f"{float(q.magnitude):.12g}"))
+    except Exception:  # noqa: BLE001 - not a quantity (a preset name ...): compare the text
+        return ("text", str(value).strip())
+
+
+def _unique(path: str, values: Sequence[Any], written: Sequence[str]) -> SweepParameter:
+    """The parameter with repeated values dropped (a repeated value would run the same case
+    twice); what was dropped is kept in ``dropped`` for the command to say."""
+    kept: list[Any] = []
+    seen: dict[Any, Any] = {}
+    dropped: list[str] = []
+    for value, text in zip(values, written, strict=True):
+        key = _same_quantity_key(value)
+        if key in seen:
+            dropped.append(f"{text!r} (= {seen[key]!r})")
+            continue
+        seen[key] = value
+        kept.append(value)
+    return SweepParameter(path, tuple(kept), tuple(dropped))
 
 
 def get_path(d: Mapping[str, Any], path: str) -> Any:
@@ -148,11 +193,24 @@ _SETTABLE_NEW = {  # optional fields a sweep may set although the scene leaves t
     "solver": ("stepper", "rtol", "atol", "kinematics_tolerance", "max_step"),
     "schedule": ("speed", "radial_load", "axial_load", "duration"),
     "lubricant": ("preset", "path"),
+    # the validity-check thresholds (optional [checks] table; they change no physics)
+    "checks": ("skid_limit", "contact_stress_limit", "min_film_parameter"),
 }
 
+#: what an unknown path error offers as examples
+_KNOWN_PATHS = ("supply.flow, supply.inlet_temperature, schedule.speed, "
+                "schedule.axial_load, environment.ambient_temperature, lubricant.preset, "
+                "checks.skid_limit, bearings.0.overrides.<field>, network.parameters.<name>")
 
-def check_path(scene_dict: Mapping[str, Any], path: str) -> None:
-    """Raise InputError unless ``path`` names a field a sweep or a fit may set."""
+
+def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") -> None:
+    """Raise InputError unless ``path`` names a field a sweep or a fit may set.
+
+    ``option``: the option or argument named in the error (``--set`` for a sweep,
+    ``fit`` for a calibration).
+    """
+    from .operating_checks import STRESS_FAMILIES
+
     parts = path.split(".")
     try:
         get_path(scene_dict, path)
@@ -161,13 +219,50 @@ def check_path(scene_dict: Mapping[str, Any], path: str) -> None:
         pass
     if len(parts) == 2 and parts[1] in _SETTABLE_NEW.get(parts[0], ()):
         return
+    if len(parts) == 3 and parts[:2] == ["checks", "contact_stress_limit"]:
+        current = scene_dict.get("checks", {}).get("contact_stress_limit")
+        if parts[2] not in STRESS_FAMILIES:
+            raise InputError(option, path, "checks.contact_stress_limit.<family>, a family "
+                             "of " + ", ".join(STRESS_FAMILIES))
+        if current is not None and not isinstance(current, Mapping):
+            raise InputError(option, path, "checks.contact_stress_limit (the scene gives one "
+                             f"stress for every family, {current!r}, not a table)")
+        return
     if len(parts) >= 2 and parts[0] in ("models", "network"):
         return  # free-form tables: the model/template validates its own keys
     if len(parts) >= 3 and parts[0] == "bearings" and parts[2] == "overrides":
         return
-    raise InputError("--set", path, "an existing scene field (e.g. supply.flow, "
-                     "schedule.speed, environment.ambient_temperature, lubricant.preset, "
-                     "bearings.0.overrides.<field>, network.parameters.<name>)")
+    raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"
+                     + _did_you_mean(scene_dict, path))
+
+
+def _did_you_mean(scene_dict: Mapping[str, Any], path: str) -> str:
+    """``"; did you mean network.parameters.h_oil?"`` for a bare, misplaced or misspelt
+    name: the known paths with the same last name, else the closest spellings."""
+    import difflib
+
+    known = [f"{section}.{key}" for section, keys in _SETTABLE_NEW.items() for key in keys]
+    for section in ("supply", "environment", "solver", "checks", "outputs"):
+        table = scene_dict.get(section)
+        if isinstance(table, Mapping):
+            known += [f"{section}.{k}" for k in table if f"{section}.{k}" not in known]
+    network = scene_dict.get("network", {})
+    params = network.get("parameters", {}) if isinstance(network, Mapping) else {}
+    names = set(params) if isinstance(params, Mapping) else set()
+    template = network.get("template") if isinstance(network, Mapping) else None
+    if template:
+        try:
+            from .network.templates import TEMPLATES
+
+            names |= set(TEMPLATES.entry(template).parameters)
+        except Exception:  # noqa: BLE001 - an unknown template is reported elsewhere
+            pass
+    known += [f"network.parameters.{n}" for n in sorted(names)]
+    last = path.rsplit(".", 1)[-1]
+    hits = [k for k in known if k.rsplit(".", 1)[-1] == last and k != path]
+    if not hits:
+        hits = difflib.get_close_matches(path, known, n=3, cutoff=0.8)
+    return f"; did you mean {' or '.join(hits)}?" if hits else ""
 
 
 def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
@@ -217,10 +312,17 @@ class Case:
 
 
 def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
-    """Cartesian product of the sweep values, each validated as a scene."""
+    """Cartesian product of the sweep values, each validated as a scene (a path swept
+    twice is an error; a repeated combination is one case)."""
+    paths = [p.path for p in params]
+    for path in paths:
+        if paths.count(path) > 1:
+            raise InputError("--set", path, "each path once (give all its values in one "
+                             "--set, e.g. supply.flow=15,20,33)")
     base = scene.to_dict()
     base_text = scene.to_toml()
-    cases = []
+    cases: list[Case] = []
+    seen: set[str] = set()
     base_dir = Path(scene.base_dir) if scene.base_dir else None
     for combo in itertools.product(*(p.values for p in params)):
         assignments = tuple((p.path, v) for p, v in zip(params, combo, strict=True))
@@ -231,6 +333,9 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
         sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
         key = json.dumps([base_text, [list(a) for a in assignments]], sort_keys=True)
         cid = hashlib.sha1(key.encode()).hexdigest()[:12]
+        if cid in seen:
+            continue
+        seen.add(cid)
         cases.append(Case(cid, assignments, sc.to_toml()))
     return cases
 
@@ -266,14 +371,52 @@ def _append(out_dir: Path, record: Mapping[str, Any]) -> None:
 
 
 def summary_frame(records: Iterable[Mapping[str, Any]]) -> pd.DataFrame:
-    """One row per case: the swept values then the runner's results."""
+    """One row per case: the swept values then the runner's results.
+
+    A swept quantity appears twice: as set (``supply.flow``: ``"15 L/min"``, the text the
+    case's scene holds) and as a number with its unit in the column name
+    (``supply.flow [L/min]``: 15.0, in the unit of the first case's value), so that the
+    table plots and filters without parsing text. Text values (lubricant presets) appear
+    once.
+    """
+    recs = list(records)
     rows = []
-    for rec in records:
+    for rec in recs:
         row = {"case": rec["case"]}
         row.update(rec["params"])
         row.update(rec["result"])
         rows.append(row)
-    return pd.DataFrame(rows)
+    df = pd.DataFrame(rows)
+    params = list(dict.fromkeys(k for rec in recs for k in rec["params"]))
+    for path in params:
+        numeric = _numeric_column(df[path].tolist())
+        if numeric is not None:
+            unit, values = numeric
+            df.insert(df.columns.get_loc(path) + 1, f"{path} [{unit}]", values)
+    return df
+
+
+def _numeric_column(values: Sequence[Any]) -> tuple[str, list[float]] | None:
+    """(unit, numbers) of swept values that are all quantities of one dimension, in the
+    unit of the first (``["15 L/min", "0.5 L/s"]`` -> ``("L/min", [15.0, 30.0])``); None
+    for bare numbers (already numeric), text, or mixed dimensions."""
+    from .units import unit_registry
+
+    if not values or not all(isinstance(v, str) for v in values):
+        return None
+    ureg = unit_registry()
+    try:
+        first = values[0].strip().split(maxsplit=1)
+        if len(first) != 2:
+            return None
+        unit = first[1]
+        numbers = []
+        for v in values:
+            num, _, u = v.strip().partition(" ")
+            numbers.append(float(ureg.Quantity(float(num), u.strip()).to(unit).magnitude))
+    except Exception:  # noqa: BLE001 - text (a preset name) or mixed dimensions: no column
+        return None
+    return unit, numbers
 
 
 def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
@@ -285,31 +428,107 @@ def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
     return df
 
 
+def check_scheduler_address(scheduler: str) -> None:
+    """InputError unless ``scheduler`` reads as a dask.distributed scheduler address
+    (``tcp://host:8786``, ``host:8786``, ``tls://...``, ``inproc://...``): a typo is named
+    at once instead of failing inside dask with a traceback."""
+    from distributed.comm.addressing import parse_address, parse_host_port
+    from distributed.comm.registry import backends
+
+    allowed = ("a dask scheduler address such as tcp://host:8786 or host:8786 (schemes: "
+               + ", ".join(sorted(backends)) + ")")
+    if not isinstance(scheduler, str) or not scheduler.strip():
+        raise InputError("--scheduler", scheduler, allowed)
+    try:
+        scheme, loc = parse_address(scheduler.strip())
+    except (ValueError, TypeError):
+        raise InputError("--scheduler", scheduler, allowed) from None
+    if scheme not in backends:
+        raise InputError("--scheduler", scheduler, allowed)
+    if scheme in ("tcp", "tls", "ws", "wss", "ucx"):
+        try:
+            host, port = parse_host_port(loc)
+        except (ValueError, TypeError):
+            raise InputError("--scheduler", scheduler, allowed) from None
+        if not host or not 0 < int(port) < 65536:
+            raise InputError("--scheduler", scheduler, allowed)
+
+
 def _dask_client(scheduler: str, timeout: float = 5.0):
+    """A dask Client connected to ``scheduler``, or SchedulerUnreachable.
+
+    dask's own ``timeout`` bounds the TCP connection only; a server that accepts the
+    connection but never answers the handshake (another service on that port, e.g. the
+    scheduler's web dashboard) would block forever, and one that answers with something
+    else fails with an arbitrary exception. The connection is therefore made in a helper
+    thread with an overall deadline of three times ``timeout``, and every failure is
+    reported as unreachable.
+    """
+    import threading
+
     from distributed import Client
 
-    try:
-        return Client(scheduler, timeout=f"{timeout}s", set_as_default=False)
-    except (OSError, TimeoutError) as exc:
+    check_scheduler_address(scheduler)
+    box: dict[str, Any] = {}
+
+    def connect() -> None:
+        try:
+            box["client"] = Client(scheduler, timeout=f"{timeout}s", set_as_default=False)
+        except Exception as exc:  # noqa: BLE001 - any failure: reported as unreachable
+            box["error"] = f"{type(exc).__name__}: {exc}" if not isinstance(
+                exc, OSError | TimeoutError) else str(exc)
+
+    worker = threading.Thread(target=connect, name="thermobearing-dask-connect", daemon=True)
+    worker.start()
+    worker.join(3.0 * timeout)
+    advice = ("; start it (dask scheduler) or give its right address, or ask for a local "
+              "run instead (--fallback-local, fallback_local=True)")
+    if worker.is_alive():
         raise SchedulerUnreachable(
-            f"cannot reach the dask scheduler at {scheduler!r}: {exc}; start it (dask "
-            "scheduler) or give its right address, or ask for a local run instead "
-            "(--fallback-local, fallback_local=True)"
-        ) from None
+            f"cannot reach the dask scheduler at {scheduler!r}: something accepted the "
+            f"connection but did not answer as a dask scheduler within {3.0 * timeout:g} s "
+            "(is that the scheduler's port, usually 8786, and not its dashboard's, 8787?)"
+            + advice)
+    if "error" in box:
+        raise SchedulerUnreachable(
+            f"cannot reach the dask scheduler at {scheduler!r}: {box['error']}" + advice)
+    return box["client"]
 
 
 @contextmanager
-def _naming_case(case: Case, out: Path) -> Iterator[None]:
+def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
     """A package error raised by one case names the case's values and where the finished
-    cases are (the type and fields of the error are kept)."""
+    cases are (the type and fields of the error are kept); ``out`` None: the error comes
+    from the check of the cases before any ran."""
     try:
         yield
     except ThermobearingError as exc:
         values = ", ".join(f"{k}={v}" for k, v in case.assignments)
-        exc.args = (f"sweep case {case.case_id} ({values}): {exc}; the finished cases are "
-                    f"kept in {_store_path(out)} (rerun the same command to resume)",
-                    *exc.args[1:])
+        if out is None:
+            where = "no case was run (every case is checked before the first one runs)"
+        else:
+            n = len(finished_cases(out))
+            where = (f"{n} finished case(s) are kept in {_store_path(out)} (rerun the same "
+                     "command to resume)")
+        exc.args = (f"sweep case {case.case_id} ({values}): {exc}; {where}", *exc.args[1:])
         raise
+
+
+def check_cases(cases: Sequence[Case]) -> None:
+    """Check every case as a scene that can run, before the first one runs: what
+    ``thermobearing check`` checks without solving (model, bearing and lubricant preset
+    names, the network template's parameters and values, the measured CSV). A bad value
+    (``lubricant.preset=ISO_VG99``) then fails in a second, naming the case, instead of
+    after the good cases have run. Costs a few milliseconds per case."""
+    from .commands._preflight import preflight
+    from .scene_checks import check_model_names
+    from .simulation import Simulation
+
+    for case in cases:
+        with _naming_case(case, None):
+            scene = loads_scene(case.scene_toml)
+            check_model_names(scene)
+            preflight(Simulation(scene, progress=False), build=True)
 
 
 def run_sweep(
@@ -323,6 +542,7 @@ def run_sweep(
     fallback_local: bool = False,
     progress: bool | None = None,
     connect_timeout: float = 5.0,
+    check: bool = True,
 ) -> pd.DataFrame:
     """Run every case not yet in ``out_dir``; returns the summary table of all cases.
 
@@ -337,7 +557,10 @@ def run_sweep(
     scheduler : address of a dask.distributed scheduler to run the cases on.
     fallback_local : if the scheduler cannot be reached, run locally instead of failing.
     progress : show a progress bar (default: when stderr is a terminal).
-    connect_timeout : seconds to wait for the scheduler before it counts as unreachable.
+    connect_timeout : seconds to wait for the scheduler before it counts as unreachable
+        (a server that accepts the connection but does not answer as a scheduler: three
+        times as long).
+    check : check every case not yet run with :func:`check_cases` before the first runs.
     """
     from tqdm.auto import tqdm
 
@@ -349,13 +572,17 @@ def run_sweep(
                                 or workers < 1):
         raise InputError("workers", workers, "a whole number of local processes >= 1 "
                          "(1 = serial in this process; default: one per CPU)")
+    if scheduler:
+        check_scheduler_address(scheduler)
     if runner is None:
         from .simulation import summarize_scene as runner
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     cases = expand(scene, params)
     done = finished_cases(out)
     todo = [c for c in cases if c.case_id not in done]
+    if check:
+        check_cases(todo)
+    out.mkdir(parents=True, exist_ok=True)
     show = sys.stderr.isatty() if progress is None else progress
     bar = tqdm(total=len(cases), initial=len(cases) - len(todo), disable=not show,
                desc="sweep", unit="case")

@@ -1,9 +1,11 @@
 """``thermobearing sweep SCENE --set path=values ... --out DIR``: a resumable parameter sweep.
 
 Example: ``thermobearing sweep qj1044_rig --set supply.flow=15,20,25,33
---set schedule.speed=600:1800:300 --out sweep_flow``. Every finished case is appended
-to ``DIR/cases.jsonl`` at once; rerunning the same command skips finished cases.
-``--scheduler ADDRESS`` runs the cases on an existing dask.distributed cluster.
+--set schedule.speed=600:1800:300 --out sweep_flow`` (SCENE may be left out: the default
+scene, as for ``run``). Every case is checked before the first one runs; every finished
+case is appended to ``DIR/cases.jsonl`` at once; rerunning the same command skips
+finished cases. ``--scheduler ADDRESS`` runs the cases on an existing dask.distributed
+cluster. The terminal shows the main results; ``DIR/summary.csv`` has every column.
 """
 
 from __future__ import annotations
@@ -21,7 +23,9 @@ HELP = "sweep scene parameters (cartesian product), locally or on dask, resumabl
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("scene", help="scene TOML path or preset name")
+    parser.add_argument("scene", nargs="?",
+                        help="scene TOML path or preset name (default: the embedded QJ1044 "
+                             "rig of seed paper 002, as for `run`)")
     parser.add_argument("--set", action="append", required=True, dest="sets",
                         metavar="PATH=VALUES",
                         help="e.g. supply.flow=15,33 or schedule.speed=600:1800:300")
@@ -43,6 +47,10 @@ def run(args: argparse.Namespace) -> int:
     check_measured_file(scene)
     d = scene.to_dict()
     params = [parse_set(s, d) for s in args.sets]
+    for p in params:
+        if p.dropped:
+            print(f"sweep: {p.path}: repeated value(s) left out: {', '.join(p.dropped)}",
+                  file=sys.stderr)
     out = Path(args.out)
     try:
         df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
@@ -54,6 +62,31 @@ def run(args: argparse.Namespace) -> int:
               f"(table: {out / 'summary.csv'}); rerun the same command to resume with the "
               "cases not yet run", file=sys.stderr)
         return 130
-    print(df.to_string(index=False, float_format=lambda v: f"{v:.4g}"))
-    print(f"summary written to {out / 'summary.csv'}")
+    shown, hidden = terminal_columns(df, [p.path for p in params])
+    print(df[shown].to_string(index=False, float_format=lambda v: f"{v:.4g}"))
+    more = f" ({hidden} more result columns there)" if hidden else ""
+    print(f"summary written to {out / 'summary.csv'}{more}")
     return 0
+
+
+#: results shown on the terminal when the runner gives them (summary.csv has all)
+_MAIN_RESULTS = ("total loss [W]", "max over-skidding [%]")
+
+
+def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
+    """Columns printed on the terminal: the case, the swept values as set, and a few main
+    results (total loss, over-skidding, the first housing temperature and its rise, when
+    present; else the first results); and how many result columns are left out."""
+    params = [c for c in df.columns if c in swept
+              or any(c.startswith(p + " [") for p in swept)]
+    results = [c for c in df.columns if c != "case" and c not in params]
+    chosen = [c for c in _MAIN_RESULTS if c in results]
+    chosen += [c for c in results if "housing" in c and c.startswith(("final", "rise"))][:2]
+    for c in results:
+        if len(chosen) >= max_results:
+            break
+        if c not in chosen:
+            chosen.append(c)
+    chosen = [c for c in results if c in chosen]  # keep the table's order
+    shown = ["case", *[c for c in df.columns if c in swept], *chosen]
+    return [c for c in shown if c in df.columns], len(results) - len(chosen)

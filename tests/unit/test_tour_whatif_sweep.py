@@ -1,0 +1,254 @@
+"""What a user meets in an oil-flow what-if sweep from the command line (issue 6 item 6,
+session-12 tour): each test is a defect found by running ``thermobearing sweep`` on the
+default scene, written before its fix. The runner is a small deterministic function of the
+case's scene (the physics runner is tested elsewhere); what is under test is the sweep.
+"""
+
+from __future__ import annotations
+
+import json
+import socket
+import threading
+import time
+
+import pandas as pd
+import pytest
+
+from thermobearing import cli
+from thermobearing.errors import InputError, UnknownNameError
+from thermobearing.scene import load_scene, loads_scene
+from thermobearing.sweep import (
+    SchedulerUnreachable,
+    expand,
+    finished_cases,
+    parse_set,
+    run_sweep,
+)
+
+
+def capacity_runner(scene_toml: str) -> dict[str, float]:
+    """Enthalpy capacity of the oil stream [W/K] (870 kg/m^3, 1900 J/(kg K)) and the skid
+    limit [-] of a case: enough to see which case ran with which values."""
+    sc = loads_scene(scene_toml)
+    skid = sc.checks.skid_limit if sc.checks is not None else float("nan")
+    return {"oil capacity [W/K]": sc.supply.flow * 870.0 * 1900.0, "skid limit [-]": skid}
+
+
+def loss_runner(scene_toml: str) -> dict[str, float]:
+    """A 'total loss [W]' that grows with the flow (what the sweep report plots)."""
+    return {"total loss [W]": 1e6 * loads_scene(scene_toml).supply.flow}
+
+
+@pytest.fixture(scope="module")
+def scene():
+    return load_scene()  # the default scene: QJ1044 rig of paper 002, no [checks] table
+
+
+# --- checks.* thresholds can be swept on a scene without a [checks] table ----------------
+def test_check_thresholds_sweep_without_a_checks_table(scene):
+    # before: "--set = 'checks.skid_limit' is not allowed: an existing scene field"
+    d = scene.to_dict()
+    assert "checks" not in d
+    p = parse_set("checks.skid_limit=2%,5 %,10", d)  # a bare number is in percent
+    assert p.values == ("2 %", "5 %", "10 %")
+    limits = [loads_scene(c.scene_toml).checks.skid_limit for c in expand(scene, [p])]
+    assert limits == pytest.approx([0.02, 0.05, 0.10])
+    stress = parse_set("checks.contact_stress_limit=3000,3500", d)  # bare: MPa
+    assert stress.values == ("3000 MPa", "3500 MPa")
+    film = parse_set("checks.min_film_parameter=1,1.5", d)
+    assert film.values == (1.0, 1.5)
+    ball = parse_set("checks.contact_stress_limit.ball=3200 MPa", d)
+    [case] = expand(scene, [ball, film][:1])
+    assert loads_scene(case.scene_toml).checks.ball_stress_limit == pytest.approx(3.2e9)
+    with pytest.raises(InputError, match="self_aligning_ball"):
+        parse_set("checks.contact_stress_limit.balls=3200 MPa", d)
+
+
+# --- repeated values run once -----------------------------------------------------------
+def test_repeated_values_are_dropped_and_said(scene, tmp_path, capsys, monkeypatch):
+    d = scene.to_dict()
+    # before: 15,15,33 gave three cases, two identical ones both run (3 lines in cases.jsonl)
+    p = parse_set("supply.flow=15,15,33", d)
+    assert p.values == ("15 L/min", "33 L/min")
+    assert p.dropped == ("'15' (= '15 L/min')",)
+    # the same quantity in another unit is the same case
+    q = parse_set("supply.flow=15 L/min,0.25 L/s,33", d)
+    assert q.values == ("15 L/min", "33 L/min") and len(q.dropped) == 1
+    assert parse_set("lubricant.preset=ISO_VG32,ISO_VG32", d).values == ("ISO_VG32",)
+    # a path given twice is refused (the second --set would silently win)
+    with pytest.raises(InputError, match="each path once"):
+        expand(scene, [parse_set("supply.flow=15", d), parse_set("supply.flow=33", d)])
+    import thermobearing.simulation as simulation
+
+    calls = []
+    monkeypatch.setattr(simulation, "summarize_scene",
+                        lambda text: calls.append(text) or capacity_runner(text))
+    out = tmp_path / "dup"
+    code = cli.main(["sweep", "--set", "supply.flow=15,15,33", "--out", str(out),
+                     "--workers", "1", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 0 and len(calls) == 2
+    assert "repeated value(s) left out: '15' (= '15 L/min')" in err
+    assert len((out / "cases.jsonl").read_text().splitlines()) == 2
+
+
+# --- a text among numbers is named, not the number before it ----------------------------
+def test_text_among_numbers_names_the_text(scene):
+    # before: "supply.flow = '15' is not allowed" for --set supply.flow=15,abc
+    p = parse_set("supply.flow=15,abc", scene.to_dict())
+    assert p.values == ("15 L/min", "abc")
+    with pytest.raises(InputError) as info:
+        expand(scene, [p])
+    assert "'abc'" in str(info.value) and "'15'" not in str(info.value)
+
+
+# --- a bad value found by the models' set-up fails before any case runs ------------------
+def test_bad_preset_fails_before_the_first_case(scene, tmp_path):
+    # before: the good cases ran, then "sweep case ... lubricant preset = 'ISO_VG99' is not
+    # allowed ...; the finished cases are kept" (and with one case: kept nothing)
+    calls = []
+
+    def runner(text):
+        calls.append(text)
+        return capacity_runner(text)
+
+    p = parse_set("lubricant.preset=ISO_VG32,ISO_VG99", scene.to_dict())
+    with pytest.raises(UnknownNameError) as info:
+        run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
+    msg = str(info.value)
+    assert calls == []
+    assert "lubricant.preset=ISO_VG99" in msg and "ISO_VG46" in msg
+    assert "no case was run" in msg
+    assert not (tmp_path / "cases.jsonl").exists()
+
+
+def test_a_case_failing_at_run_time_says_how_many_are_kept(scene, tmp_path):
+    from thermobearing.errors import ConvergenceError
+
+    def runner(text):
+        if loads_scene(text).supply.flow > 20e-3 / 60:  # the 33 L/min case
+            raise ConvergenceError("coupled transient", 2.0, "thermal runaway", {})
+        return capacity_runner(text)
+
+    p = parse_set("supply.flow=15,33", scene.to_dict())
+    with pytest.raises(ConvergenceError, match=r"1 finished case\(s\) are kept"):
+        run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
+
+
+# --- summary.csv: swept quantities as numbers with the unit in the column name -----------
+def test_summary_has_numeric_swept_columns_with_units(scene, tmp_path):
+    # before: only 'supply.flow' with text cells "15 L/min": not a number, no unit in name
+    d = scene.to_dict()
+    params = [parse_set("supply.flow=15 L/min,0.5 L/s", d),
+              parse_set("supply.inlet_temperature=30 degC,313.15 K", d),
+              parse_set("lubricant.preset=ISO_VG32", d)]
+    df = run_sweep(scene, params, tmp_path, runner=capacity_runner, workers=1,
+                   progress=False)
+    back = pd.read_csv(tmp_path / "summary.csv")
+    for table in (df, back):
+        cols = list(table.columns)
+        assert cols[:7] == ["case", "supply.flow", "supply.flow [L/min]",
+                            "supply.inlet_temperature", "supply.inlet_temperature [degC]",
+                            "lubricant.preset", "oil capacity [W/K]"]
+        assert pd.api.types.is_float_dtype(table["supply.flow [L/min]"])
+        assert sorted(table["supply.flow [L/min]"]) == pytest.approx([15.0, 15.0, 30.0, 30.0])
+        assert sorted(set(table["supply.inlet_temperature [degC]"])) == pytest.approx(
+            [30.0, 40.0])
+
+
+def test_sweep_report_reads_the_new_summary(scene, tmp_path, capsys):
+    """The report of a sweep folder (commands/report.py) still draws its what-if curves
+    from a summary with the numeric columns."""
+    d = scene.to_dict()
+    params = [parse_set("supply.flow=15,33", d), parse_set("lubricant.preset=ISO_VG32,"
+                                                           "ISO_VG68", d)]
+    run_sweep(scene, params, tmp_path, runner=loss_runner, workers=1, progress=False)
+    assert cli.main(["report", str(tmp_path)]) == 0
+    html = (tmp_path / "report.html").read_text()
+    assert "what-if: supply.flow [L/min]" in html
+    assert html.count("<img") == 1
+
+
+# --- the terminal shows the main results, not 30 columns ---------------------------------
+def test_terminal_table_is_compact(tmp_path, capsys, monkeypatch):
+    import thermobearing.simulation as simulation
+
+    many = {"total loss [W]": 1000.0, "max over-skidding [%]": 9.0,
+            **{f"final n{i}.housing [degC]": 40.0 + i for i in range(12)},
+            **{f"churning {i} [W]": float(i) for i in range(12)}}
+    monkeypatch.setattr(simulation, "summarize_scene", lambda text: dict(many))
+    out = tmp_path / "wide"
+    # SCENE left out: the default scene, as for `thermobearing run` (before: an error)
+    code = cli.main(["sweep", "--set", "supply.flow=15,33", "--out", str(out),
+                     "--workers", "1", "--quiet"])
+    text = capsys.readouterr().out
+    assert code == 0
+    header = text.splitlines()[0]
+    assert "supply.flow" in header and "total loss [W]" in header
+    assert "max over-skidding [%]" in header and "final n0.housing [degC]" in header
+    assert "churning 5 [W]" not in header and len(header) < 160
+    assert "more result columns there" in text
+    assert len(pd.read_csv(out / "summary.csv").columns) == 2 + 1 + len(many)
+
+
+# --- the dask scheduler: a typo, and a port that is not a scheduler ------------------------
+@pytest.mark.parametrize("address", ["localhost:notaport", "tcp://host", "http://host:8787",
+                                     "tcp://host:99999", ""])
+def test_malformed_scheduler_address_is_named(scene, tmp_path, address):
+    # before: ValueError traceback from inside dask, then a 10-s hang in Client.__del__
+    p = parse_set("supply.flow=15", scene.to_dict())
+    t0 = time.monotonic()
+    with pytest.raises(InputError, match="--scheduler") as info:
+        run_sweep(scene, [p], tmp_path, runner=capacity_runner, scheduler=address or " ",
+                  progress=False)
+    assert "tcp://host:8786" in str(info.value)
+    assert time.monotonic() - t0 < 3.0
+    assert not (tmp_path / "cases.jsonl").exists()
+
+
+@pytest.fixture()
+def silent_server():
+    """A TCP server that accepts connections and never answers (another service on the
+    port, e.g. a web dashboard waiting for a request line)."""
+    srv = socket.socket()
+    srv.bind(("127.0.0.1", 0))
+    srv.listen(8)
+    conns = []
+    stop = threading.Event()
+
+    def serve():
+        srv.settimeout(0.1)
+        while not stop.is_set():
+            try:
+                conns.append(srv.accept()[0])
+            except OSError:
+                continue
+
+    th = threading.Thread(target=serve, daemon=True)
+    th.start()
+    yield f"tcp://127.0.0.1:{srv.getsockname()[1]}"
+    stop.set()
+    th.join(1.0)
+    for c in conns:
+        c.close()
+    srv.close()
+
+
+def test_server_that_is_not_a_scheduler_is_reported_not_waited_for(scene, tmp_path,
+                                                                   silent_server):
+    # before: the sweep waited forever in dask's handshake (its timeout covers the TCP
+    # connection only)
+    p = parse_set("supply.flow=15,33", scene.to_dict())
+    t0 = time.monotonic()
+    with pytest.raises(SchedulerUnreachable, match="did not answer as a dask scheduler"):
+        run_sweep(scene, [p], tmp_path / "a", runner=capacity_runner,
+                  scheduler=silent_server, progress=False, connect_timeout=0.5)
+    assert time.monotonic() - t0 < 5.0
+    assert not (tmp_path / "a" / "cases.jsonl").exists()  # nothing ran locally unasked
+    df = run_sweep(scene, [p], tmp_path / "b", runner=capacity_runner,
+                   scheduler=silent_server, fallback_local=True, workers=1, progress=False,
+                   connect_timeout=0.5)
+    assert len(df) == 2 and len(finished_cases(tmp_path / "b")) == 2
+    assert [json.loads(x)["params"]["supply.flow"] for x in
+            (tmp_path / "b" / "cases.jsonl").read_text().splitlines()] == ["15 L/min",
+                                                                            "33 L/min"]
