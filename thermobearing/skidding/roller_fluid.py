@@ -431,9 +431,12 @@ def closed_form_contact_forces(
     xg, wg = _nodes(_N_HERTZ)
     pres = p_h[..., None] * np.sqrt(1.0 - xg**2)
     speed = np.abs(slide)[..., None] * np.ones_like(xg)
+    # a scalar temperature stays scalar: the lubricant then memoises its atmospheric
+    # viscosity and Roelands index (an array of equal temperatures recomputed them at every
+    # node of every call: ~60 % of a residual evaluation, session 12)
     stress, dstress = traction_law.shear_stress(
         speed, pres, hc_safe[..., None] * np.ones_like(xg),
-        temperature * np.ones_like(pres))
+        float(temperature) if np.ndim(temperature) == 0 else temperature * np.ones_like(pres))
     dx_w = (b[..., None] * wg) * length
     f_hz = np.sum(np.asarray(stress) * dx_w, axis=-1)
     df_hz = np.sum(np.asarray(dstress) * dx_w, axis=-1)

@@ -29,8 +29,14 @@ from .roller_residual import _Eval, evaluate
 
 def _newton(model: RollerModel, omega: float, x0: np.ndarray, inner_load: np.ndarray,
             fb: np.ndarray, psi: np.ndarray, acc: tuple[float, float], *, tol: float,
-            max_iter: int) -> tuple[np.ndarray, _Eval, float, int, bool]:
-    """Newton with the arrow-structured FD Jacobian and backtracking. x = (omega_r, omega_c)."""
+            max_iter: int, fd_step: float = 1e-7) -> tuple[np.ndarray, _Eval, float, int, bool]:
+    """Newton with the arrow-structured FD Jacobian and backtracking. x = (omega_r, omega_c).
+
+    ``fd_step``: forward-difference step as a fraction of the inner-ring speed. Near pure
+    rolling under load the Hertz-zone tractions saturate within a slip of order 1e-7, so the
+    default step spans the saturation and the secant Jacobian stalls Newton; 1e-10 resolves
+    it (:func:`~thermobearing.skidding.roller.solve_model` retries with it before the
+    bracketed fallback)."""
     z = model.n_rollers
     force_scale = max(float(np.max(inner_load, initial=0.0)),
                       model.roller_mass * 0.5 * model.pitch_diameter * omega**2 * 0.05, 1e-3)
@@ -46,7 +52,7 @@ def _newton(model: RollerModel, omega: float, x0: np.ndarray, inner_load: np.nda
     it = 0
     while norm > tol and it < max_iter:
         it += 1
-        h = 1e-7 * omega
+        h = fd_step * omega
         xp = x.copy()
         xp[:z] += h
         _, rp, pkp = ev(xp)
