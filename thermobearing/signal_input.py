@@ -220,8 +220,8 @@ def _is_units_row(cells: list[str]) -> bool:
     seen = False
     for c in cells:
         c = c.strip().strip("[]()").replace("²", "**2").replace("³", "**3")
-        c = c.replace("µ", "u").replace("μ", "u")
-        if not c:
+        c = re.sub(r"([A-Za-z])([23])\b", r"\1**\2", c.replace("µ", "u").replace("μ", "u"))
+        if not c or c in ("-", "%"):
             continue
         try:
             q = ureg.parse_expression(c)
