@@ -152,6 +152,9 @@ class FittedParameter:
     ``ci_low``/``ci_high`` bound the approximate (linearised) 95 % confidence interval;
     ``std_error_z`` is the standard error in the fitted coordinate (in ln for log
     parameters, i.e. roughly a relative standard error; in K for temperatures).
+    ``no_influence``: the parameter did not change the predicted temperatures at the
+    sensors (zero Jacobian column at the start); it was left at its start, out of the fit,
+    with an unbounded interval.
     """
 
     path: str
@@ -163,6 +166,7 @@ class FittedParameter:
     ci_high: float
     std_error_z: float
     at_bound: bool = False
+    no_influence: bool = False
 
 
 @dataclass
@@ -181,7 +185,8 @@ class CalibrationResult:
     success, message : from least_squares.
     covariance, correlation : of the fitted coordinates z (linearised).
     identifiable : False when J^T J is (numerically) singular: the data cannot separate
-        the parameters; the intervals are then infinite.
+        the parameters (the intervals are then infinite), or when a parameter has no
+        influence (``FittedParameter.no_influence``; the others keep their intervals).
     scene : the calibrated scene.
     notes : what the user should know (dropped points, bounds hit, ...).
     """
@@ -361,7 +366,7 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         else:
             value = None
     else:
-        check_path(scene_dict, path)
+        check_path(scene_dict, path, "fit")
         try:
             raw = get_path(scene_dict, path)
         except (KeyError, IndexError, ValueError, TypeError):
@@ -519,19 +524,22 @@ class _Model:
                           float(np.sqrt(np.mean(r**2))))
         return r
 
-    def jacobian(self, z: np.ndarray) -> np.ndarray:
-        """Forward differences in z (backward where the forward step leaves the bounds)."""
+    def jacobian(self, z: np.ndarray, columns: Sequence[int] | None = None) -> np.ndarray:
+        """Forward differences in z (backward where the forward step leaves the bounds);
+        ``columns``: only these parameters' columns (one model run each), in that order."""
         z = np.asarray(z, float)
         r0 = self.residuals(z)
-        J = np.empty((r0.size, z.size))
-        for j, p in enumerate(self.params):
+        cols = list(range(z.size)) if columns is None else list(columns)
+        J = np.empty((r0.size, len(cols)))
+        for k, j in enumerate(cols):
+            p = self.params[j]
             lo, hi = p.z_bounds()
             h = p.fd_step if z[j] + p.fd_step <= hi else -p.fd_step
             if not lo <= z[j] + h <= hi:
                 h = p.fd_step
             zp = z.copy()
             zp[j] += h
-            J[:, j] = (self.residuals(zp) - r0) / h
+            J[:, k] = (self.residuals(zp) - r0) / h
         return J
 
 
@@ -546,6 +554,16 @@ def _sensor_table(model: _Model, r: np.ndarray, r_initial: np.ndarray) -> pd.Dat
                      "mean error [K]": float(np.mean(e)),
                      "initial RMSE [K]": float(np.sqrt(np.mean(before[sensor]**2)))})
     return pd.DataFrame(rows)
+
+
+def no_influence(J: np.ndarray, rel: float = 1e-9, abs_tol: float = 1e-12) -> np.ndarray:
+    """Columns of the Jacobian ``J`` [K per unit of z] that are zero: parameters whose
+    finite-difference step changed no predicted temperature at the sensors by more than
+    ``rel`` times the largest column's change (or ``abs_tol`` K per unit z)."""
+    J = np.asarray(J, float)
+    norms = np.sqrt(np.sum(J**2, axis=0))
+    top = float(norms.max()) if norms.size else 0.0
+    return ~(norms > max(rel * top, abs_tol))
 
 
 # ---------------------------------------------------------------------------
@@ -635,28 +653,53 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     lo = np.array([p.z_bounds()[0] for p in params])
     hi = np.array([p.z_bounds()[1] for p in params])
     r_initial = model.residuals(z0)
-    sol = optimize.least_squares(model.residuals, z0, jac=model.jacobian, bounds=(lo, hi),
-                                 method="trf", x_scale=1.0, xtol=xtol, ftol=ftol,
-                                 gtol=1e-10, max_nfev=max_runs)
-    z = np.asarray(sol.x, float)
+    # a parameter that does not change the predicted temperatures at the sensors (e.g. the
+    # oil level of a jet-lubricated scene) is left at its start and out of the fit: fitting
+    # it would make J^T J singular, leave every interval undetermined and cost runs
+    J0 = model.jacobian(z0)
+    dead = no_influence(J0)
+    for j in np.flatnonzero(dead):
+        notes.append(f"{params[j].path} has no influence on the predicted temperatures at "
+                     f"the sensors (its Jacobian column is zero at a {params[j].fd_step:g} "
+                     "step in the fit coordinate): the data cannot determine it, it was left "
+                     "at its start and out of the fit; leave it out of --fit")
+    live = np.flatnonzero(~dead)
+    if live.size == 0:
+        raise InputError("fit", fit, "at least one parameter that changes the predicted "
+                         "temperatures at the measured sensors (none of these does: "
+                         "check the path, the node map of [measured] and the models)")
+
+    def full(z_live: np.ndarray) -> np.ndarray:
+        z_all = z0.copy()
+        z_all[live] = z_live
+        return z_all
+
+    sol = optimize.least_squares(lambda zl: model.residuals(full(zl)), z0[live],
+                                 jac=lambda zl: model.jacobian(full(zl), live),
+                                 bounds=(lo[live], hi[live]), method="trf", x_scale=1.0,
+                                 xtol=xtol, ftol=ftol, gtol=1e-10, max_nfev=max_runs)
+    z = full(np.asarray(sol.x, float))
     r = model.residuals(z)
-    J = model.jacobian(z)
-    dof = m - len(params)
+    J = model.jacobian(z, live)
+    dof = m - live.size
     ssr = float(r @ r)
     s2 = ssr / dof
-    jtj = J.T @ J
+    cov = np.full((len(params), len(params)), np.inf)
+    corr = np.full_like(cov, np.nan)
     sv = np.linalg.svd(J, compute_uv=False)
-    identifiable = bool(sv[-1] > 1e-8 * sv[0] and sv[-1] > 0)
-    if identifiable:
-        cov = s2 * np.linalg.inv(jtj)
-        sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
-        corr = cov / np.outer(sd, sd) if np.all(sd > 0) else np.full_like(cov, np.nan)
+    separable = bool(sv[-1] > 1e-8 * sv[0] and sv[-1] > 0)
+    identifiable = separable and not dead.any()
+    if separable:
+        cov_live = s2 * np.linalg.inv(J.T @ J)
+        sd_live = np.sqrt(np.clip(np.diag(cov_live), 0.0, None))
+        cov[np.ix_(live, live)] = cov_live
+        if np.all(sd_live > 0):
+            corr[np.ix_(live, live)] = cov_live / np.outer(sd_live, sd_live)
     else:
-        cov = np.full((len(params), len(params)), np.inf)
-        sd = np.full(len(params), np.inf)
-        corr = np.full_like(cov, np.nan)
+        cov[np.ix_(live, live)] = np.inf
         notes.append("the data do not separate the fitted parameters (J^T J is singular): "
                      "fit fewer parameters or add sensors/protocol steps")
+    sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     tq = float(stats.t.ppf(0.5 + confidence / 2.0, dof))
     fitted = []
     for j, p in enumerate(params):
@@ -678,7 +721,7 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
             initial=p.show(p.initial), value=p.show(p.from_z(z[j])),
             ci_low=p.show(v_lo) if math.isfinite(v_lo) else v_lo,
             ci_high=p.show(v_hi) if math.isfinite(v_hi) else v_hi,
-            std_error_z=float(sd[j]), at_bound=at_bound))
+            std_error_z=float(sd[j]), at_bound=at_bound, no_influence=bool(dead[j])))
     if not sol.success:
         notes.append(f"least_squares stopped without converging: {sol.message}")
     return CalibrationResult(
@@ -687,8 +730,10 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
         initial_rmse=float(np.sqrt(np.mean(r_initial**2))),
         residual_sd=math.sqrt(s2), points=m, dof=dof, runs=model.runs,
         success=bool(sol.success), message=str(sol.message), covariance=cov,
-        correlation=corr, identifiable=identifiable, scene=_stamped(model.scene(z), fitted,
-                                                                  scene),
+        correlation=corr, identifiable=identifiable,
+        scene=_stamped(_apply(model.base, [params[j] for j in live],
+                              [params[j].from_z(z[j]) for j in live], model.base_dir),
+                       [f for f, d in zip(fitted, dead, strict=True) if not d], scene),
         measured_file=str(scene.resolve_path(scene.measured.file).resolve()),
         column_map=column_map,
         notes=notes)
@@ -740,7 +785,7 @@ def synthetic_measurements(scene: Scene, sensors: Mapping[str, str], *,
     d = json.loads(json.dumps(scene.to_dict()))  # deep copy: to_dict shares nested tables
     d.pop("measured", None)
     for path, v in (values or {}).items():
-        check_path(d, path)
+        check_path(d, path, "values")
         assign_path(d, path, v)
     sc = Scene.from_dict(d, Path(scene.base_dir) if scene.base_dir else None)
     temps = predicted_temperatures(sc)

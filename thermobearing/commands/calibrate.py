@@ -43,7 +43,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--bounds", action="append", default=[], metavar="PATH=LOW:HIGH",
                         help="bounds, e.g. network.parameters.h_oil=50:5000 (SI or units)")
     parser.add_argument("--max-runs", type=int, default=60,
-                        help="limit on least-squares function evaluations (default 60)")
+                        help="limit on least-squares function evaluations (default 60); "
+                             "each Jacobian adds one model run per fitted parameter, so "
+                             "the runs counted on the terminal can exceed it")
     parser.add_argument("--quiet", action="store_true", help="no per-run progress lines")
 
 
@@ -95,8 +97,9 @@ def run(args: argparse.Namespace) -> int:
 
     if not args.quiet:
         print(f"scene: {scene.title}")
-        print(f"fitting {', '.join(fit)} to {scene.measured.file if scene.measured else '?'} "
-              "(one scene run per evaluation)", flush=True)
+        data = scene.resolve_path(scene.measured.file).resolve() if scene.measured else "?"
+        print(f"fitting {', '.join(fit)} to {data} (one scene run per evaluation)",
+              flush=True)
     try:
         result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
                            callback=progress)

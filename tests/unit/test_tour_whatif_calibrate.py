@@ -1,0 +1,79 @@
+"""What a user meets calibrating a scene from the command line (issue 6 item 7, session-12
+tour): each test is a defect found by running ``thermobearing calibrate`` on the shipped
+synthetic example, written before its fix. The "measured" data are SYNTHETIC (model output,
+``synthetic_measurements``), so the right answer is known.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tests.unit.test_calibrate import SENSORS, _short_scene
+from thermobearing import cli
+from thermobearing.calibrate import calibrate, no_influence, synthetic_measurements
+from thermobearing.errors import InputError
+from thermobearing.scene import load_scene
+
+
+# --- a bad --fit name: the option is named, and the right path suggested ----------------
+@pytest.mark.parametrize(("fit", "hint"), [
+    ("h_oil", "did you mean network.parameters.h_oil?"),
+    ("supply.flw", "did you mean supply.flow?"),
+    ("inlet_temperature", "did you mean supply.inlet_temperature?"),
+])
+def test_bad_fit_name_names_fit_and_suggests(capsys, fit, hint):
+    # before: "--set = 'h_oil' is not allowed" (the sweep's option) and no suggestion
+    code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit", fit, "--quiet",
+                     "--out", "unused_never_written"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert f"fit = '{fit}'" in err and "--set" not in err
+    assert hint in err and "network.parameters.<name>" in err
+
+
+def test_bad_synthetic_value_path_names_values():
+    with pytest.raises(InputError, match="values = 'h_air'"):
+        synthetic_measurements(load_scene("qj1044_synthetic_measured"), SENSORS,
+                               values={"h_air": 15.0})
+
+
+# --- a parameter with no influence is named and does not spoil the others ---------------
+def test_no_influence_columns():
+    J = np.array([[1.0, 0.0, 2e-3], [2.0, 0.0, -1e-3], [0.5, 1e-14, 0.0]])
+    assert no_influence(J).tolist() == [False, True, False]
+    assert no_influence(np.zeros((3, 2))).tolist() == [True, True]
+
+
+def test_parameter_without_influence_is_reported_and_left_out(tmp_path):
+    """h_oil (true 400 W/(m^2 K)) with the oil-bath level of a JET-lubricated scene, which
+    no model reads. Before: J^T J singular, so h_oil's interval came out as 0 .. inf too
+    ("the data do not separate the fitted parameters"), after 45 model runs instead of ~18
+    (full example); and the calibrated scene gained supply.level = 20 mm."""
+    truth = {"network.parameters.h_oil": "400 W/(m**2*K)"}
+    scene0 = _short_scene(tmp_path, measured=False)
+    data = synthetic_measurements(scene0, SENSORS, values=truth, noise_sd=0.0, every=300.0,
+                                  decimals=6)
+    scene = _short_scene(tmp_path, data)
+    res = calibrate(scene, ["network.parameters.h_oil", "supply.level"],
+                    x0={"supply.level": "20 mm"})
+    h_oil, level = res.parameters
+    assert level.no_influence and not h_oil.no_influence
+    assert level.value == pytest.approx(20.0) and level.ci_high == np.inf
+    assert h_oil.value == pytest.approx(400.0, rel=3e-3)
+    assert np.isfinite(h_oil.ci_low) and np.isfinite(h_oil.ci_high)
+    assert not res.identifiable
+    assert any("supply.level has no influence" in n for n in res.notes)
+    assert not any("do not separate" in n for n in res.notes)
+    assert res.dof == res.points - 1
+    assert res.scene.supply.level is None  # not written into the calibrated scene
+    # the dead parameter costs one run at the start only: start + its column + the fit
+    assert res.runs <= 14
+
+
+def test_only_parameters_without_influence_is_an_error(tmp_path):
+    data = synthetic_measurements(_short_scene(tmp_path, measured=False), SENSORS,
+                                  noise_sd=0.0, every=900.0, decimals=6)
+    scene = _short_scene(tmp_path, data)
+    with pytest.raises(InputError, match="changes the predicted temperatures"):
+        calibrate(scene, ["supply.level"], x0={"supply.level": "20 mm"})
