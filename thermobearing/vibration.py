@@ -64,6 +64,19 @@ times cheaper at equal accuracy (the cost of the exact spin flows); with a steep
 0.05, dv_m = 0.01 m/s) RK4 needs 3e-7 s and the split scheme is 4-7 times cheaper at errors of
 1e-4-1e-3 (CPU time, one run; the ratios move by some 20 % between runs on a shared machine).
 ``method="auto"`` picks between them from :func:`stability_report`.
+
+Example (issue 8's loop: simulate a slipping bearing, measure its cage speed back)::
+
+    from thermobearing import signal as S, vibration as V
+    from thermobearing.traction import make_traction_law
+    p = V.paper004_parameters(ball_diameter_deviation=(2e-6,) + (0.0,) * 6)  # one big ball
+    law = make_traction_law("linear_saturating", mu_max=0.01, slip_speed_max=0.1)
+    r = V.simulate(p, 188.5, 2000.0, traction=law, cage_slip=0.08, duration=2.0,
+                   sampling_rate=25600.0, anti_alias=True)  # 1800 r/min, 2000 N, as a DAQ
+    r.statistics_x  # PTP, RMS, kurtosis [m/s^2, m/s^2, -] (paper 004 Table 2's indicators)
+    est = S.estimate_cage_speed(r.acceleration_x, r.sampling_rate, 30.0, p.n_balls,
+                                p.theoretical_cage_speed_ratio)
+    est.csr, est.slip  # 0.3383, 0.080 ((1 - 0.08) x 0.3677)
 """
 
 from __future__ import annotations
