@@ -398,7 +398,17 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         if not lo < hi:
             raise InputError(f"bounds[{path}]", b, "low < high")
         if not lo <= value <= hi:
-            raise InputError(f"x0[{path}]", value, f"a start inside the bounds [{lo}, {hi}]")
+            shown = display if display not in _DIMENSIONLESS else ""
+
+            def fmt(v: float) -> str:
+                if not shown or not unit:
+                    return f"{v:g}"
+                return f"{from_si(v, shown):g} {shown}"
+
+            where = "given by --x0" if path in x0 else "the scene's value; --x0 PATH=VALUE " \
+                "sets another"
+            raise InputError(f"x0[{path}]", fmt(value), f"a start inside the bounds "
+                             f"{fmt(lo)} .. {fmt(hi)} (the start is {where})")
     transform = "linear" if (is_temp or value <= 0 or lo < 0) else "log"
     scale = 1.0 if (is_temp or value == 0) else abs(value)
     step = fd_step.get(path, 0.1 if is_temp else 0.01)

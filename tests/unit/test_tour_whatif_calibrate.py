@@ -22,12 +22,14 @@ from thermobearing.scene import load_scene
     ("supply.flw", "did you mean supply.flow?"),
     ("inlet_temperature", "did you mean supply.inlet_temperature?"),
 ])
-def test_bad_fit_name_names_fit_and_suggests(capsys, fit, hint):
+def test_bad_fit_name_names_fit_and_suggests(tmp_path, capsys, fit, hint):
     # before: "--set = 'h_oil' is not allowed" (the sweep's option) and no suggestion
+    out = tmp_path / "cal"
     code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit", fit, "--quiet",
-                     "--out", "unused_never_written"])
+                     "--out", str(out)])
     err = capsys.readouterr().err
     assert code == 1
+    assert not out.exists()  # before: an empty results folder was left behind
     assert f"fit = '{fit}'" in err and "--set" not in err
     assert hint in err and "network.parameters.<name>" in err
 
@@ -77,3 +79,36 @@ def test_only_parameters_without_influence_is_an_error(tmp_path):
     scene = _short_scene(tmp_path, data)
     with pytest.raises(InputError, match="changes the predicted temperatures"):
         calibrate(scene, ["supply.level"], x0={"supply.level": "20 mm"})
+
+
+# --- bounds that exclude the start: say where the start comes from, in the user's unit ---
+def test_bounds_excluding_the_start_name_the_start_and_x0(tmp_path, capsys):
+    # before: "x0[supply.inlet_temperature] = 308.15 is not allowed: a start inside the
+    # bounds [313.15, 323.15]" (kelvin, and the user never gave an x0)
+    code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit",
+                     "supply.inlet_temperature", "--bounds",
+                     "supply.inlet_temperature=40 degC:50 degC", "--quiet",
+                     "--out", str(tmp_path / "cal")])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "'35 degC'" in err and "40 degC .. 50 degC" in err
+    assert "the scene's value" in err and "--x0" in err
+
+
+# --- Ctrl-C before the first model run finished ------------------------------------------
+def test_ctrl_c_before_any_run_says_nothing_was_written(tmp_path, capsys, monkeypatch):
+    import thermobearing.calibrate as calibrate_module
+
+    def interrupted(scene, fit, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(calibrate_module, "calibrate", interrupted)
+    out = tmp_path / "cal"
+    code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit",
+                     "network.parameters.h_oil", "--out", str(out), "--quiet"])
+    err = capsys.readouterr().err
+    # before: "every finished model run is in .../calibration_runs.csv; no model run had
+    # finished" -- a file that did not exist
+    assert code == 130
+    assert "before the first model run finished" in err and "nothing was written" in err
+    assert not (out / "calibration_runs.csv").exists()

@@ -76,12 +76,14 @@ def run(args: argparse.Namespace) -> int:
 
     if args.max_runs < 1:
         raise InputError("--max-runs", args.max_runs, "a number of model runs >= 1")
-    out.mkdir(parents=True, exist_ok=True)
     runs_csv = out / "calibration_runs.csv"
     runs_csv.unlink(missing_ok=True)
     best: dict[str, object] = {"rmse": math.inf}
 
     def progress(run_no: int, values: dict[str, float], rmse: float) -> None:
+        # the folder is made with the first finished run: a fit refused before any run
+        # (bad path, bounds, data) leaves nothing behind
+        out.mkdir(parents=True, exist_ok=True)
         new = not runs_csv.exists()
         with runs_csv.open("a", newline="", encoding="utf-8") as fh:
             writer = csv.writer(fh)
@@ -106,11 +108,12 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         if "run" in best:
             shown = ", ".join(f"{k}={v:.6g}" for k, v in best["values"].items())
-            found = f"; best so far: run {best['run']}, {shown}, RMSE {best['rmse']:.4g} K"
+            print(f"\ninterrupted: every finished model run is in {runs_csv}; best so far: "
+                  f"run {best['run']}, {shown}, RMSE {best['rmse']:.4g} K (no calibrated "
+                  "scene was written)", file=sys.stderr)
         else:
-            found = "; no model run had finished"
-        print(f"\ninterrupted: every finished model run is in {runs_csv}{found} "
-              "(no calibrated scene was written)", file=sys.stderr)
+            print("\ninterrupted before the first model run finished: nothing was written "
+                  f"(the runs would have gone to {runs_csv})", file=sys.stderr)
         return 130
     print(result.summary_text())
     paths = result.write(out, scene_name=f"{name}_calibrated.toml")
