@@ -81,7 +81,8 @@ def _number(text: str, field: str) -> float:
     try:
         return float(text)
     except ValueError:
-        raise InputError(field, text, "a number") from None
+        raise InputError(field, text, "a number (several values are separated by commas: "
+                         "15,20,33 or 15,20,33 L/min)") from None
 
 
 def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
@@ -577,6 +578,9 @@ def run_sweep(
     if runner is None:
         from .simulation import summarize_scene as runner
     out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise InputError("--out", str(out), "a results folder (new or of this sweep); this "
+                         "is a file")
     cases = expand(scene, params)
     done = finished_cases(out)
     todo = [c for c in cases if c.case_id not in done]

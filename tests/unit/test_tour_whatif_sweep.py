@@ -252,3 +252,15 @@ def test_server_that_is_not_a_scheduler_is_reported_not_waited_for(scene, tmp_pa
     assert [json.loads(x)["params"]["supply.flow"] for x in
             (tmp_path / "b" / "cases.jsonl").read_text().splitlines()] == ["15 L/min",
                                                                             "33 L/min"]
+
+
+# --- small things typed by hand --------------------------------------------------------
+def test_out_that_is_a_file_and_values_without_commas(scene, tmp_path):
+    # before: "error: File exists: afile" and "'15 33' is not allowed: a number"
+    path = tmp_path / "afile"
+    path.write_text("x")
+    p = parse_set("supply.flow=15", scene.to_dict())
+    with pytest.raises(InputError, match="--out.*this is a file"):
+        run_sweep(scene, [p], path, runner=capacity_runner, workers=1, progress=False)
+    with pytest.raises(InputError, match="separated by commas"):
+        parse_set("supply.flow=15 33", scene.to_dict())

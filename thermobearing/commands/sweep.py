@@ -28,7 +28,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "rig of seed paper 002, as for `run`)")
     parser.add_argument("--set", action="append", required=True, dest="sets",
                         metavar="PATH=VALUES",
-                        help="e.g. supply.flow=15,33 or schedule.speed=600:1800:300")
+                        help="one swept field (repeat for a cartesian product): comma "
+                             "list or start:stop:step, a bare number in the scene's unit, "
+                             "e.g. supply.flow=15,20,33, supply.inlet_temperature=30,45 degC, "
+                             "schedule.speed=600:1800:300, lubricant.preset=ISO_VG32,"
+                             "ISO_VG68, checks.skid_limit=2,5 (%%), "
+                             "network.parameters.h_oil=200,400")
     parser.add_argument("--out", required=True, help="results folder")
     parser.add_argument("--workers", type=int, default=None, help="local processes")
     parser.add_argument("--scheduler", default=None, help="dask scheduler address")
