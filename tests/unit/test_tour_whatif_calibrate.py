@@ -112,3 +112,14 @@ def test_ctrl_c_before_any_run_says_nothing_was_written(tmp_path, capsys, monkey
     assert code == 130
     assert "before the first model run finished" in err and "nothing was written" in err
     assert not (out / "calibration_runs.csv").exists()
+
+
+def test_scene_without_measured_fails_before_the_header(tmp_path, capsys):
+    # before: "fitting network.parameters.h_oil to ? (one scene run per evaluation)", then
+    # the error
+    code = cli.main(["calibrate", "qj1044_rig", "--fit", "network.parameters.h_oil",
+                     "--out", str(tmp_path / "cal")])
+    captured = capsys.readouterr()
+    assert code == 1
+    assert "to ?" not in captured.out and "fitting" not in captured.out
+    assert "[measured]" in captured.err and "examples/README.md" in captured.err

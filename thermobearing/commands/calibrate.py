@@ -97,9 +97,13 @@ def run(args: argparse.Namespace) -> int:
         shown = ", ".join(f"{k.rsplit('.', 1)[-1]}={v:.5g}" for k, v in values.items())
         print(f"  run {run_no:3d}: {shown}  RMSE {rmse:.4g} K", file=sys.stderr, flush=True)
 
+    if scene.measured is None:  # before the header, which names the data file
+        raise InputError("measured", None, "a [measured] table (file, time_column, unit, "
+                         "columns = { csv column = node }) in the scene to calibrate "
+                         "against; examples/README.md shows one")
     if not args.quiet:
         print(f"scene: {scene.title}")
-        data = scene.resolve_path(scene.measured.file).resolve() if scene.measured else "?"
+        data = scene.resolve_path(scene.measured.file).resolve()
         print(f"fitting {', '.join(fit)} to {data} (one scene run per evaluation)",
               flush=True)
     try:
