@@ -264,3 +264,21 @@ def test_out_that_is_a_file_and_values_without_commas(scene, tmp_path):
         run_sweep(scene, [p], path, runner=capacity_runner, workers=1, progress=False)
     with pytest.raises(InputError, match="separated by commas"):
         parse_set("supply.flow=15 33", scene.to_dict())
+
+
+def test_ctrl_c_before_the_first_case_finished(tmp_path, capsys, monkeypatch):
+    import thermobearing.simulation as simulation
+
+    def interrupted(text):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(simulation, "summarize_scene", interrupted)
+    out = tmp_path / "sw"
+    code = cli.main(["sweep", "--set", "supply.flow=15,33", "--out", str(out), "--workers",
+                     "1", "--quiet"])
+    err = capsys.readouterr().err
+    # before: "0 finished case(s) are kept in .../cases.jsonl (table: .../summary.csv)",
+    # two files that did not exist
+    assert code == 130
+    assert "before the first case finished" in err and "nothing was kept" in err
+    assert not (out / "cases.jsonl").exists()

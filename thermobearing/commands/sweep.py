@@ -63,9 +63,13 @@ def run(args: argparse.Namespace) -> int:
                        progress=False if args.quiet else None)
     except KeyboardInterrupt:
         done = len(finished_cases(out))
-        print(f"\ninterrupted: {done} finished case(s) are kept in {out / 'cases.jsonl'} "
-              f"(table: {out / 'summary.csv'}); rerun the same command to resume with the "
-              "cases not yet run", file=sys.stderr)
+        if done:
+            print(f"\ninterrupted: {done} finished case(s) are kept in "
+                  f"{out / 'cases.jsonl'} (table: {out / 'summary.csv'}); rerun the same "
+                  "command to resume with the cases not yet run", file=sys.stderr)
+        else:
+            print("\ninterrupted before the first case finished: nothing was kept; rerun "
+                  "the same command to start again", file=sys.stderr)
         return 130
     shown, hidden = terminal_columns(df, [p.path for p in params])
     print(df[shown].to_string(index=False, float_format=lambda v: f"{v:.4g}"))
