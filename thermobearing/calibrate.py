@@ -47,6 +47,7 @@ import inspect
 import json
 import math
 import os
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -383,8 +384,17 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         else:
             value, unit, written = _parse_existing(raw, path)
             display = written or unit
+    def given(v: Any, field_name: str) -> float:
+        """A user's x0 / bound: a bare-number STRING ("40", from the command line) is in the
+        parameter's display unit (the scene's unit, as ``sweep --set`` reads bare numbers);
+        a Python number is SI; a unit string is converted."""
+        if (isinstance(v, str) and unit and display not in _DIMENSIONLESS
+                and re.fullmatch(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*", v)):
+            v = f"{v.strip()} {display}"
+        return to_si(v, unit or "dimensionless", field=field_name)
+
     if path in x0:
-        value = to_si(x0[path], unit or "dimensionless", field=f"x0[{path}]")
+        value = given(x0[path], f"x0[{path}]")
     if value is None:
         raise InputError(f"x0[{path}]", None, "a starting value: the scene does not set this "
                          "field and its default is a correlation, not a number")
@@ -394,7 +404,7 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         b = bounds[path]
         if len(b) != 2:
             raise InputError(f"bounds[{path}]", b, "a pair (low, high)")
-        lo, hi = (to_si(v, unit or "dimensionless", field=f"bounds[{path}]") for v in b)
+        lo, hi = (given(v, f"bounds[{path}]") for v in b)
         if not lo < hi:
             raise InputError(f"bounds[{path}]", b, "low < high")
         if not lo <= value <= hi:
@@ -592,9 +602,12 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     fit : dotted paths of the fitted fields, e.g. ``network.parameters.h_oil``,
         ``network.parameters.h_air``, ``supply.inlet_temperature``,
         ``environment.ambient_temperature``.
-    bounds : path -> (low, high), numbers in SI or unit strings (``("50 W/(m**2*K)",
-        "5000 W/(m**2*K)")``). Default: (0, inf) for positive quantities, free otherwise.
-    x0 : path -> starting value (SI or unit string). Default: the scene's value, or the
+    bounds : path -> (low, high): unit strings (``("50 W/(m**2*K)", "5000 W/(m**2*K)")``),
+        Python numbers in SI, or bare-number strings (``("30", "40")``, as the command line
+        gives them) in the parameter's display unit (the scene's unit: degC for
+        temperatures, L/min for flows). Default: (0, inf) for positive quantities, free
+        otherwise.
+    x0 : path -> starting value (read as ``bounds``). Default: the scene's value, or the
         network template's default when the scene does not set the parameter.
     fd_step : path -> finite-difference step in the fitted coordinate (default 0.01 in ln
         for positive quantities, 0.1 K for temperatures).

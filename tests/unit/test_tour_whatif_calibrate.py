@@ -123,3 +123,27 @@ def test_scene_without_measured_fails_before_the_header(tmp_path, capsys):
     assert code == 1
     assert "to ?" not in captured.out and "fitting" not in captured.out
     assert "[measured]" in captured.err and "examples/README.md" in captured.err
+
+
+# --- bare numbers in --bounds / --x0 are in the parameter's unit, as in sweep --set --------
+def test_bare_bounds_and_start_are_in_the_parameters_unit(capsys, tmp_path):
+    from thermobearing.calibrate import _make_parameter
+
+    scene = load_scene("qj1044_synthetic_measured")
+    d = scene.to_dict()
+    # before: "30:45" meant 30 K .. 45 K, so the 35 degC start was "outside the bounds"
+    t_in = _make_parameter(scene, d, "supply.inlet_temperature", {},
+                           {"supply.inlet_temperature": ("30", "45")}, {})
+    assert (t_in.lower, t_in.upper) == (pytest.approx(303.15), pytest.approx(318.15))
+    flow = _make_parameter(scene, d, "supply.flow", {"supply.flow": "20"},
+                           {"supply.flow": ("10", "40")}, {})
+    assert flow.initial == pytest.approx(20e-3 / 60) and flow.upper == pytest.approx(40e-3 / 60)
+    # Python numbers stay SI (the library's documented convention)
+    h = _make_parameter(scene, d, "network.parameters.h_oil", {},
+                        {"network.parameters.h_oil": (50.0, 5000.0)}, {})
+    assert (h.lower, h.upper) == (50.0, 5000.0)
+    code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit",
+                     "supply.inlet_temperature", "--bounds", "supply.inlet_temperature=40:50",
+                     "--quiet", "--out", str(tmp_path / "cal")])
+    assert code == 1
+    assert "40 degC .. 50 degC" in capsys.readouterr().err

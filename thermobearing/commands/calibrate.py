@@ -39,9 +39,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="folder for the calibrated scene and tables "
                              "(default: calibration/<scene name>)")
     parser.add_argument("--x0", action="append", default=[], metavar="PATH=VALUE",
-                        help="starting value, e.g. network.parameters.h_air='10 W/(m**2*K)'")
+                        help="starting value, e.g. network.parameters.h_air='10 W/(m**2*K)' "
+                             "(a bare number is in the parameter's unit, as shown in the "
+                             "results table: degC for temperatures, L/min for flows)")
     parser.add_argument("--bounds", action="append", default=[], metavar="PATH=LOW:HIGH",
-                        help="bounds, e.g. network.parameters.h_oil=50:5000 (SI or units)")
+                        help="bounds, e.g. network.parameters.h_oil=50:5000 or "
+                             "supply.inlet_temperature=30:45 (bare numbers in the "
+                             "parameter's unit, degC here) or with units")
     parser.add_argument("--max-runs", type=int, default=60,
                         help="limit on least-squares function evaluations (default 60); "
                              "each Jacobian adds one model run per fitted parameter, so "
@@ -70,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
         low, sep, high = value.partition(":")
         if not sep:
             raise InputError("--bounds", value, "LOW:HIGH")
-        bounds[path] = tuple(_number_or_text(v) for v in (low, high))
+        bounds[path] = (low.strip(), high.strip())  # bare numbers: the parameter's unit
     name = Path(args.scene).stem
     out = Path(args.out) if args.out else Path("calibration") / name
 
@@ -124,9 +128,3 @@ def run(args: argparse.Namespace) -> int:
     print(f"calibrated scene written to {paths['scene']} (tables in {out}/)")
     return 0
 
-
-def _number_or_text(text: str) -> float | str:
-    try:
-        return float(text)
-    except ValueError:
-        return text.strip()
