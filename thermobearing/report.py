@@ -190,7 +190,10 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
 
 def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                   components: Sequence[str]) -> bytes:
-    """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17)."""
+    """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17);
+    a component whose table has one value of ``x`` or ``y`` is drawn as a curve over the
+    other (a contour needs at least 2 x 2 points); missing combinations (a sweep still
+    running) are left blank."""
     n = len(components)
     cols = min(3, n)
     rows = math.ceil(n / cols)
@@ -198,10 +201,27 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                              layout="constrained")
     for ax, comp in zip(axes.flat, components, strict=False):
         pv = summary.pivot_table(index=y, columns=x, values=comp, aggfunc="mean")
+        ax.set_title(comp, fontsize=8)
+        if pv.empty:  # no case has this component (yet)
+            ax.text(0.5, 0.5, "no values", ha="center", va="center", transform=ax.transAxes)
+            ax.set_axis_off()
+            continue
+        if min(pv.shape) < 2:
+            # one value of x or of y (e.g. --set supply.inlet_temperature=35): no area to
+            # contour, so the component is drawn as a curve over the parameter that varies
+            along, other = (x, y) if pv.shape[1] >= pv.shape[0] else (y, x)
+            line = pv.iloc[0] if along == x else pv.iloc[:, 0]
+            fixed = pv.index[0] if along == x else pv.columns[0]
+            ax.plot(line.index.to_numpy(float), line.to_numpy(float), "o-",
+                    label=f"{other} = {_fmt_value(fixed)}")
+            ax.set_xlabel(along, fontsize=8)
+            ax.set_ylabel(comp, fontsize=8)
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
+            continue
         cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
                          levels=12)
         fig.colorbar(cs, ax=ax)
-        ax.set_title(comp, fontsize=8)
         ax.set_xlabel(x, fontsize=8)
         ax.set_ylabel(y, fontsize=8)
     for ax in list(axes.flat)[n:]:

@@ -1,0 +1,57 @@
+"""The sweep report's figures (report.fig_loss_maps / fig_whatif) on the sweeps a user makes
+(session-12 tour of issue 6 item 6): each test is a defect found on the command line."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pandas as pd
+
+from thermobearing import cli
+from thermobearing.report import fig_loss_maps
+from thermobearing.scene import load_scene, loads_scene
+from thermobearing.sweep import parse_set, run_sweep
+
+
+def loss_runner(scene_toml: str) -> dict[str, float]:
+    """Made-up but deterministic 'losses' of a case: linear in flow and inlet temperature."""
+    sc = loads_scene(scene_toml)
+    return {"total loss [W]": 1e6 * sc.supply.flow + sc.supply.inlet_temperature,
+            "churning [W]": 5e5 * sc.supply.flow}
+
+
+def test_loss_maps_with_one_value_of_a_parameter_are_curves():
+    # before: TypeError "Input z must be at least a (2, 2) shaped array, but has shape (1, 3)"
+    df = pd.DataFrame({"x": [1.0, 2.0, 3.0], "y": [5.0, 5.0, 5.0],
+                       "a [W]": [1.0, 2.0, 3.0], "b [W]": [np.nan] * 3})
+    png = fig_loss_maps(df, "x", "y", ["a [W]", "b [W]"])
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    png = fig_loss_maps(df.rename(columns={"x": "y", "y": "x"}), "x", "y", ["a [W]"])
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_loss_maps_of_a_sweep_still_running_leave_gaps():
+    df = pd.DataFrame({"x": [1.0, 2.0, 3.0, 1.0, 2.0], "y": [1.0, 1.0, 1.0, 2.0, 2.0],
+                       "a [W]": [1.0, 2.0, 3.0, 4.0, 5.0]})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert fig_loss_maps(df, "x", "y", ["a [W]"])[:4] == b"\x89PNG"
+
+
+def test_report_of_a_sweep_with_a_single_valued_parameter(tmp_path, capsys):
+    # `thermobearing sweep --set supply.flow=15,33 --set supply.inlet_temperature=35` then
+    # `thermobearing report DIR`: before, a traceback from matplotlib's contourf
+    scene = load_scene()
+    d = scene.to_dict()
+    run_sweep(scene, [parse_set("supply.flow=15,33", d),
+                      parse_set("supply.inlet_temperature=35", d)], tmp_path,
+              runner=loss_runner, workers=1, progress=False)
+    assert cli.main(["report", str(tmp_path)]) == 0
+    html = (tmp_path / "report.html").read_text()
+    assert "loss maps" in html and html.count("<img") >= 2
+
+
+def test_loss_maps_single_case():
+    df = pd.DataFrame({"x": [1.0], "y": [2.0], "a [W]": [3.0]})
+    assert fig_loss_maps(df, "x", "y", ["a [W]"])[:4] == b"\x89PNG"
