@@ -43,9 +43,14 @@ DISPLAY_UNITS = {  # display unit used when the scene's own value carries none
     "speed": "rpm", "radial_load": "kN", "axial_load": "kN", "duration": "min",
     "flow": "L/min", "inlet_temperature": "degC", "ambient_temperature": "degC",
     "initial_temperature": "degC", "level": "mm",
-    # [checks] thresholds (operating_checks): a bare 2 means 2 %, a bare 3500 means 3500 MPa
-    "skid_limit": "%", "contact_stress_limit": "MPa", "ball": "MPa",
-    "self_aligning_ball": "MPa", "roller": "MPa",
+}
+#: display units of whole paths (checked before DISPLAY_UNITS): the [checks] thresholds of
+#: operating_checks, so that a bare 2 means 2 % and a bare 3500 means 3500 MPa
+PATH_UNITS = {
+    "checks.skid_limit": "%", "checks.contact_stress_limit": "MPa",
+    "checks.contact_stress_limit.ball": "MPa",
+    "checks.contact_stress_limit.self_aligning_ball": "MPa",
+    "checks.contact_stress_limit.roller": "MPa",
 }
 
 
@@ -95,7 +100,7 @@ def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
         parts = value.split(maxsplit=1)
         if len(parts) == 2:
             return parts[1]
-    return DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
+    return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
 
 
 def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
