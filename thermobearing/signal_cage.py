@@ -199,9 +199,12 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     f_top = max(k * f_hi + n * shaft_frequency for _, k, n in comb)
     nyq = fs / 2
     if f_top * 2 > nyq:
+        fewer = (f"; or fewer ball-pass harmonics than {ball_pass_harmonics} "
+                 "(ball_pass_harmonics, cage-speed --ball-pass-harmonics)"
+                 if ball_pass_harmonics > 1 else "")
         raise InputError("sampling_rate", fs, f"a rate above {4 * f_top:g} Hz for lines up to "
                          f"{f_top:g} Hz (a demodulation band as wide as the lines must fit "
-                         "above them)")
+                         f"above them){fewer}")
     duration = arr.size / fs
     if duration * f_lo < 3:
         raise InputError("signal.duration", duration,

@@ -132,3 +132,45 @@ def test_kurtogram_moments_in_chunks_equal_the_whole_stft(monkeypatch):
         f2, m2, m4 = K._stft_moments(x, 1000.0, nw)
         assert np.array_equal(f, f2)
         assert np.allclose(m4 / m2**2, sk, rtol=1e-10, atol=0)
+
+
+def _train(csr, f_shaft, n, fs=25600.0, duration=2.0, f_res=9000.0, seed=0):
+    """Impulses at n csr f_shaft, 30 % modulated at csr f_shaft, ringing at f_res, + 0 dB
+    white noise."""
+    rng = np.random.default_rng(seed)
+    size = int(fs * duration)
+    fc = csr * f_shaft
+    imp = np.zeros(size)
+    for tk in np.arange(0.0, duration, 1.0 / (n * fc)):
+        i = int(round(tk * fs))
+        if i < size:
+            imp[i] += 1.0 + 0.3 * np.cos(2 * np.pi * fc * tk)
+    th = np.arange(int(0.01 * fs)) / fs
+    w = 2 * np.pi * f_res
+    x = np.convolve(imp, np.exp(-0.03 * w * th) * np.sin(w * th))[:size]
+    return x + rng.normal(scale=np.sqrt(np.mean(x**2)), size=size)
+
+
+def test_fast_bearing_at_25k6_uses_fewer_ball_pass_harmonics(tmp_path, capsys):
+    # D1842926 (Z = 30) at 13218 r/min: 3 Z f_c reaches 11.9 kHz, a 47.6 kHz rate; a
+    # 25.6 kHz rig record was refused outright before. The fundamentals (f_c ~ 97 Hz,
+    # BPFO ~ 2.9 kHz) fit: the comb drops to one ball-pass harmonic and says so.
+    from thermobearing.geometry import load_bearing
+
+    b = load_bearing("D1842926")
+    f_shaft = 13218 / 60
+    np.save(tmp_path / "hs.npy", _train(0.44, f_shaft, b.n_elements))
+    rc = cli.main(["cage-speed", str(tmp_path / "hs.npy"), "--fs", "25600", "--rpm", "13218",
+                   "--bearing", "D1842926", "--no-plot"])
+    out = capsys.readouterr().out
+    assert rc == 0 and "CSR         0.4400" in out
+    assert "comb reduced to 1 ball-pass harmonic(s)" in out
+    rc = cli.main(["cage-speed", str(tmp_path / "hs.npy"), "--fs", "25600", "--rpm", "13218",
+                   "--bearing", "D1842926", "--no-plot", "--ball-pass-harmonics", "3"])
+    err = capsys.readouterr().err
+    assert rc == 1 and "fewer ball-pass harmonics than 3" in err
+    # noise with the reduced comb: still not detected
+    np.save(tmp_path / "n.npy", np.random.default_rng(9).normal(size=2 * 25600))
+    rc = cli.main(["cage-speed", str(tmp_path / "n.npy"), "--fs", "25600", "--rpm", "13218",
+                   "--bearing", "D1842926", "--no-plot"])
+    assert rc == 3 and "NOT DETECTED" in capsys.readouterr().out
