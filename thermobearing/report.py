@@ -232,23 +232,42 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
 def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
                group: str | Sequence[str] | None = None) -> bytes:
     """What-if curves: each result in ``ys`` against the swept ``x`` (e.g. oil flow), one
-    curve per value combination of the ``group`` column(s) (the other swept parameters)."""
-    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys), 3.5), squeeze=False,
-                             layout="constrained")
+    curve per value combination of the ``group`` column(s) (the other swept parameters).
+
+    The legend names the group columns once (its title) and each curve by its values; up
+    to ``_LEGEND_INSIDE`` curves it sits in the first panel, beyond that outside the
+    panels on the right (inside, nine curves of a 4 x 3 x 3 sweep hid the first panel's
+    data). Beyond ten curves the line style changes with each colour cycle.
+    """
     by = [group] if isinstance(group, str) else list(group or [])
-    groups = summary.groupby(by) if by else [((), summary)]
-    for key, g in groups:
+    groups = list(summary.groupby(by)) if by else [((), summary)]
+    outside = len(groups) > _LEGEND_INSIDE
+    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys) + (2.2 if outside else 0.0),
+                                                  3.5), squeeze=False, layout="constrained")
+    styles = ("-", "--", ":", "-.")
+    for i, (key, g) in enumerate(groups):
         key = key if isinstance(key, tuple) else (key,)
-        label = ", ".join(f"{c} = {_fmt_value(v)}" for c, v in zip(by, key, strict=True))
+        label = ", ".join(_fmt_value(v) for v in key)
         g = g.sort_values(x)
         for ax, y in zip(axes.flat, ys, strict=True):
-            ax.plot(g[x], g[y], "o-", label=label or None)
+            ax.plot(g[x], g[y], marker="o", linestyle=styles[(i // 10) % len(styles)],
+                    label=label or None)
             ax.set_xlabel(x, fontsize=8)
             ax.set_ylabel(y, fontsize=8)
             ax.grid(alpha=0.3)
     if by:
-        axes.flat[0].legend(fontsize=7)
+        title = ", ".join(by)
+        if outside:
+            handles, labels = axes.flat[0].get_legend_handles_labels()
+            fig.legend(handles, labels, loc="outside right upper", fontsize=7,
+                       title=title, title_fontsize=7)
+        else:
+            axes.flat[0].legend(fontsize=7, title=title, title_fontsize=7)
     return _png(fig)
+
+
+#: what-if curves up to which the legend sits inside the first panel
+_LEGEND_INSIDE = 3
 
 
 def _fmt_value(v: Any) -> str:

@@ -55,3 +55,44 @@ def test_report_of_a_sweep_with_a_single_valued_parameter(tmp_path, capsys):
 def test_loss_maps_single_case():
     df = pd.DataFrame({"x": [1.0], "y": [2.0], "a [W]": [3.0]})
     assert fig_loss_maps(df, "x", "y", ["a [W]"])[:4] == b"\x89PNG"
+
+
+def _captured_figure(monkeypatch):
+    """Make report._png hand back the figure instead of PNG bytes (to inspect it)."""
+    import thermobearing.report as report
+
+    seen = []
+    monkeypatch.setattr(report, "_png", lambda fig: seen.append(fig) or b"")
+    return seen
+
+
+def test_whatif_legend_of_many_curves_is_outside_the_panels(monkeypatch):
+    # before: nine curves of a 4 x 3 x 3 sweep (flow x inlet temperature x oil grade) had
+    # their 'supply.inlet_temperature [degC] = 30, lubricant.preset = ISO_VG32' labels in
+    # the first panel, covering its data
+    from thermobearing.report import fig_whatif
+
+    seen = _captured_figure(monkeypatch)
+    rows = [{"flow [L/min]": f, "T_in [degC]": t, "oil": o, "total loss [W]": f * t}
+            for f in (15, 20, 25, 33) for t in (30, 40, 50) for o in ("VG32", "VG46", "VG68")]
+    df = pd.DataFrame(rows)
+    fig_whatif(df, "flow [L/min]", ["total loss [W]"], group=["T_in [degC]", "oil"])
+    fig = seen[-1]
+    assert fig.axes[0].get_legend() is None and len(fig.legends) == 1
+    legend = fig.legends[0]
+    assert legend.get_title().get_text() == "T_in [degC], oil"
+    labels = [t.get_text() for t in legend.get_texts()]
+    assert len(labels) == 9 and labels[0] == "30, VG32"
+    # two curves: the legend stays in the first panel, titled with the column
+    fig_whatif(df[(df["T_in [degC]"] == 30) & (df["oil"] != "VG68")], "flow [L/min]",
+               ["total loss [W]"], group="oil")
+    inside = seen[-1].axes[0].get_legend()
+    assert inside is not None and inside.get_title().get_text() == "oil"
+    # no group: no legend
+    fig_whatif(df[(df["T_in [degC]"] == 30) & (df["oil"] == "VG32")], "flow [L/min]",
+               ["total loss [W]"])
+    assert seen[-1].axes[0].get_legend() is None and not seen[-1].legends
+    import matplotlib.pyplot as plt
+
+    for f in seen:
+        plt.close(f)
