@@ -165,6 +165,7 @@ def test_fast_bearing_at_25k6_uses_fewer_ball_pass_harmonics(tmp_path, capsys):
     out = capsys.readouterr().out
     assert rc == 0 and "CSR         0.4400" in out
     assert "comb reduced to 1 ball-pass harmonic(s)" in out
+    assert "(roller pass " in out and "= BPFO)" in out  # not "ball pass" for rollers
     rc = cli.main(["cage-speed", str(tmp_path / "hs.npy"), "--fs", "25600", "--rpm", "13218",
                    "--bearing", "D1842926", "--no-plot", "--ball-pass-harmonics", "3"])
     err = capsys.readouterr().err

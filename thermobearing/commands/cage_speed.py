@@ -109,7 +109,8 @@ def run(args: argparse.Namespace) -> int:
         rec["ball_pass_harmonics"] = harmonics
         print(json.dumps(rec, indent=1))
     else:
-        _print(est, record, bearing.name, plot_path)
+        _print(est, record, bearing.name, plot_path,
+               element="ball" if hasattr(bearing, "n_balls") else "roller")
         if args.ball_pass_harmonics is None and harmonics < 3:
             print(f"note        comb reduced to {harmonics} ball-pass harmonic(s): "
                   f"{record.sampling_rate:g} Hz cannot carry 3 of this bearing at this speed")
@@ -169,7 +170,7 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
 
 
 def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
-           plot: Path | None) -> None:
+           plot: Path | None, element: str = "ball") -> None:
     bands = ", ".join(f"{lo:.0f}-{hi:.0f} Hz" for lo, hi in
                       (est.spectrum.bands or (est.spectrum.band,)))
     chan = f" [{record.channel}]" if record.channel else ""
@@ -189,7 +190,7 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
               "measured, amplitudes are not")
     if est.detected:
         print(f"cage        {est.cage_frequency:.4f} Hz   "
-              f"(ball pass {est.ball_pass_frequency:.3f} Hz)")
+              f"({element} pass {est.ball_pass_frequency:.3f} Hz = BPFO)")
         print(f"CSR         {est.csr:.4f}")
         kind = "over-skidding" if est.slip < 0 else "skidding"
         print(f"slip        {100 * est.slip:+.2f} %  ({kind}; s = 1 - CSR/CSR_th)")
