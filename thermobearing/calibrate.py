@@ -586,6 +586,25 @@ def no_influence(J: np.ndarray, rel: float = 1e-9, abs_tol: float = 1e-12) -> np
     return ~(norms > max(rel * top, abs_tol))
 
 
+def correlation_notes(paths: Sequence[str], corr: np.ndarray,
+                      threshold: float = 0.95) -> list[str]:
+    """A note for every pair of fitted parameters whose estimates are correlated beyond
+    ``threshold`` (|r|, linearised): the data then determine mainly a combination of the
+    two, and each one's interval is wide because of the other (Bates and Watts 1988,
+    sec. 2.3)."""
+    out = []
+    corr = np.asarray(corr, float)
+    for i in range(len(paths)):
+        for j in range(i + 1, len(paths)):
+            r = corr[i, j]
+            if np.isfinite(r) and abs(r) > threshold:
+                out.append(f"{paths[i]} and {paths[j]} are strongly correlated (r = {r:.4g}): "
+                           "the data determine mainly a combination of the two, so each "
+                           "interval is wide; fix one of them, or add a sensor or protocol "
+                           "step that tells them apart")
+    return out
+
+
 # ---------------------------------------------------------------------------
 def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence[Any]]
               | None = None, x0: Mapping[str, Any] | None = None,
@@ -723,6 +742,7 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
         notes.append("the data do not separate the fitted parameters (J^T J is singular): "
                      "fit fewer parameters or add sensors/protocol steps")
     sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    notes += correlation_notes([p.path for p in params], corr)
     tq = float(stats.t.ppf(0.5 + confidence / 2.0, dof))
     fitted = []
     for j, p in enumerate(params):

@@ -147,3 +147,18 @@ def test_bare_bounds_and_start_are_in_the_parameters_unit(capsys, tmp_path):
                      "--quiet", "--out", str(tmp_path / "cal")])
     assert code == 1
     assert "40 degC .. 50 degC" in capsys.readouterr().err
+
+
+# --- strongly correlated estimates are said in words, not only in the matrix --------------
+def test_strong_correlation_is_a_note():
+    from thermobearing.calibrate import correlation_notes
+
+    # the three-parameter fit of the shipped example (h_oil, h_air, inlet temperature):
+    # correlations -0.9996, -0.9976, 0.9991 -- printed only as a matrix before
+    corr = np.array([[1.0, -0.9996, -0.9976], [-0.9996, 1.0, 0.9991],
+                     [-0.9976, 0.9991, 1.0]])
+    notes = correlation_notes(["h_oil", "h_air", "t_in"], corr)
+    assert len(notes) == 3 and "h_oil and h_air are strongly correlated (r = -0.9996)" in \
+        notes[0]
+    assert correlation_notes(["a", "b"], np.array([[1.0, 0.5], [0.5, 1.0]])) == []
+    assert correlation_notes(["a", "b"], np.full((2, 2), np.nan)) == []
