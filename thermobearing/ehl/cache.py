@@ -18,7 +18,9 @@ rather than the closed-form keyword set.
 from __future__ import annotations
 
 import itertools
+import logging
 import math
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -32,6 +34,10 @@ from ..errors import (
     check_temperature,
 )
 from ..registry import Registry
+
+#: one INFO record per table-node solve (a front end can show it as progress: the first
+#: query of a new cell costs up to 16 solves of seconds each)
+LOG = logging.getLogger("thermobearing.ehl")
 
 EHL_SOLVERS: Registry[Callable[..., object]] = Registry(
     "ehl_solver", "numerical line-contact EHL film and traction (isothermal or thermal)"
@@ -144,6 +150,7 @@ class FilmTable:
                  srr_step: float = 0.02, temperature_step: float = 5.0,
                  mode: str = "linear", **solver_kwargs) -> None:
         self.solver = EHL_SOLVERS.get(model)
+        self.solver_name = model
         check_positive("reduced_radius_x", reduced_radius_x)
         check_positive("effective_modulus", effective_modulus)
         for name, v in (("load_step", load_step), ("speed_step", speed_step)):
@@ -164,6 +171,7 @@ class FilmTable:
         self._failed: dict[tuple[int, int, int, int], Exception] = {}
         self.solves = 0
         self.queries = 0
+        self.solve_time = 0.0  # CPU seconds spent in node solves
 
     def _coords(self, w: float, u: float, srr: float, T: float) -> np.ndarray:
         return np.array([math.log(w), math.log(u), srr, T]) / np.array(self.steps)
@@ -176,12 +184,22 @@ class FilmTable:
                 raise failed
             lw, lu, s, t = (i * st for i, st in zip(idx, self.steps, strict=True))
             self.solves += 1
+            t0 = time.process_time()
             try:
                 got = self.solver(math.exp(lw), self.rx, self.ep, math.exp(lu), s, t,
                                   lubricant=self.lubricant, **self.kwargs)
             except (InputError, ConvergenceError) as err:
                 self._failed[idx] = err
+                self.solve_time += time.process_time() - t0
+                LOG.info("%s table (R_x %.4g m): node w' %.4g N/m, u %.4g m/s, SRR %.3g, "
+                         "T %.1f K failed after %.1f s CPU", self.solver_name, self.rx,
+                         math.exp(lw), math.exp(lu), s, t, time.process_time() - t0)
                 raise
+            dt = time.process_time() - t0
+            self.solve_time += dt
+            LOG.info("%s table (R_x %.4g m): node %d, w' %.4g N/m, u %.4g m/s, SRR %.3g, "
+                     "T %.1f K: %.1f s CPU (%.0f s in this table)", self.solver_name, self.rx,
+                     self.solves, math.exp(lw), math.exp(lu), s, t, dt, self.solve_time)
             self._nodes[idx] = got
         return got
 

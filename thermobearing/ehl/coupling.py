@@ -175,6 +175,12 @@ class TehlFilmModel:
         """Table queries answered so far (all tables)."""
         return sum(t.queries for t in self.tables.values())
 
+    @property
+    def solve_time(self) -> float:
+        """CPU seconds spent in thermal solves so far (all tables); each solve is also an
+        INFO record of the ``thermobearing.ehl`` logger (progress for a front end)."""
+        return sum(t.solve_time for t in self.tables.values())
+
     def temperature_of(self, eta0: float) -> float:
         """Inlet temperature [K] at which the lubricant has viscosity ``eta0`` [Pa s]
         (bisection on the monotone viscosity law; used when no temperature is given)."""
