@@ -337,7 +337,9 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
             assign_path(d, path, value)
         _absolute_paths(d, base_dir)  # the runner gets only the TOML text, not the folder
         sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
-        key = json.dumps([base_text, [list(a) for a in assignments]], sort_keys=True)
+        # the id does not depend on the order of the --set options (distinct paths commute)
+        key = json.dumps([base_text, sorted([list(a) for a in assignments], key=str)],
+                         sort_keys=True)
         cid = hashlib.sha1(key.encode()).hexdigest()[:12]
         if cid in seen:
             continue

@@ -282,3 +282,22 @@ def test_ctrl_c_before_the_first_case_finished(tmp_path, capsys, monkeypatch):
     assert code == 130
     assert "before the first case finished" in err and "nothing was kept" in err
     assert not (out / "cases.jsonl").exists()
+
+
+def test_resume_does_not_depend_on_the_order_of_the_set_options(scene, tmp_path):
+    # before: `--set supply.flow=... --set supply.inlet_temperature=...` and the same two
+    # options the other way round gave other case ids: the rerun recomputed every case
+    d = scene.to_dict()
+    flow = parse_set("supply.flow=15,33", d)
+    t_in = parse_set("supply.inlet_temperature=30,45", d)
+    calls = []
+
+    def runner(text):
+        calls.append(text)
+        return capacity_runner(text)
+
+    first = run_sweep(scene, [flow, t_in], tmp_path, runner=runner, workers=1, progress=False)
+    assert len(calls) == 4
+    again = run_sweep(scene, [t_in, flow], tmp_path, runner=runner, workers=1, progress=False)
+    assert len(calls) == 4
+    assert sorted(again["case"]) == sorted(first["case"])
