@@ -209,6 +209,10 @@ class VibrationParameters:
         """
         from .hertz import point_contact_stiffness
 
+        if not hasattr(bearing, "n_balls"):
+            raise InputError("bearing", getattr(bearing, "name", type(bearing).__name__),
+                             "a ball bearing (paper 004's model has Hertz point contacts and "
+                             "ball spins; a roller bearing is not modelled)")
         from_geometry = ("n_balls", "ball_diameter", "pitch_diameter", "inner_stiffness",
                          "outer_stiffness", "ball_mass", "source")
         known = [f.name for f in fields(cls) if f.name not in from_geometry]

@@ -83,3 +83,15 @@ def test_divergence_names_the_stability_bound():
                                                       match="stability bound of this case"):
         V.simulate(p, WS, LOAD, traction=MILD, duration=0.02, settle_time=0.02,
                    method="rk4", max_step=1e-5, sampling_rate=100e3)
+
+
+def test_roller_bearing_is_refused_by_name():
+    # before: InputError "radius_ratio = inf ... (R_big/R_small)" from the Hertz stiffness
+    from thermobearing.errors import InputError
+    from thermobearing.geometry import load_bearing
+
+    with pytest.raises(InputError) as info:
+        V.VibrationParameters.from_bearing(load_bearing("NU214"), inner_ring_mass=0.4,
+                                           support_damping=350.0)
+    assert info.value.field == "bearing" and info.value.value == "NU214"
+    assert "a ball bearing" in str(info.value)
