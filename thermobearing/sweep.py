@@ -1,20 +1,33 @@
 """Parameter sweeps over a scene: cartesian products, run locally or on dask, resumable.
 
 ``thermobearing sweep SCENE --set supply.flow=15,20,25,33 --set schedule.speed=600:1800:300``
-expands every combination of the ``--set`` values into one case, runs each case with a
-runner (by default :func:`thermobearing.simulation.summarize_scene`), and appends each
-finished case to ``DIR/cases.jsonl`` the moment it completes; ``DIR/summary.csv`` is
-rewritten after each case. Rerunning the same command skips the cases already in
-``cases.jsonl``, so an interrupted sweep resumes where it stopped.
+expands every combination of the ``--set`` values into one case, checks every case as a
+scene that can run (:func:`check_cases`: preset and model names, network values, the
+measured file) before the first one runs, runs each case with a runner (by default
+:func:`thermobearing.simulation.summarize_scene`), and appends each finished case to
+``DIR/cases.jsonl`` the moment it completes; ``DIR/summary.csv`` is rewritten after each
+case. Rerunning the same command (in any order of its ``--set`` options) skips the cases
+already in ``cases.jsonl``, so an interrupted sweep resumes where it stopped.
 
 Values: a comma list (``15,20,25,33``) or a range ``start:stop:step`` (stop included).
 A bare number takes the unit the scene uses for that field (``schedule.speed=600:1800:300``
-with a scene written in rpm means rpm); a unit may be given after the list
-(``supply.flow=15,33 L/min``). ``schedule.<field>`` sets that field in every step.
+with a scene written in rpm means rpm; a field the scene leaves out takes
+:data:`DISPLAY_UNITS` / :data:`PATH_UNITS`: L/min, degC, % for ``checks.skid_limit``, MPa
+for the contact-stress limits); a unit may be given after the list
+(``supply.flow=15,33 L/min``) or with each value. Text values are presets
+(``lubricant.preset=ISO_VG32,ISO_VG68``). A repeated value (the same quantity) is dropped
+and reported in :attr:`SweepParameter.dropped`. ``schedule.<field>`` sets that field in
+every step; ``checks.<threshold>`` sets a validity-check threshold (no physics changes).
+
+``summary.csv``: the case id, each swept value as set (``supply.flow``: ``"15 L/min"``)
+and, for quantities, as a number with the unit in the column name
+(``supply.flow [L/min]``), then the runner's results.
 
 Executors: a local process pool (default), serial (``workers=1``), or an existing
-dask.distributed scheduler (``scheduler="tcp://host:8786"``). An unreachable scheduler is
-an error unless ``fallback_local=True``.
+dask.distributed scheduler (``scheduler="tcp://host:8786"``). A malformed address is an
+InputError; an unreachable scheduler (or a server that does not answer as one within
+three times ``connect_timeout``) is :class:`SchedulerUnreachable` unless
+``fallback_local=True``.
 """
 
 from __future__ import annotations
