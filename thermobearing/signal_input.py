@@ -79,7 +79,8 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     ----------
     path : file. ``.npy``: a 1-D array, or a 2-D array of channels in columns (pick one
         with ``column``); ``sampling_rate`` required. ``.npz``: arrays ``acceleration`` (or
-        ``data``/``x``) and ``sampling_rate`` (or ``fs``). ``.csv``/``.tsv``/``.txt`` as
+        ``data``/``x``) and ``sampling_rate`` (or ``fs``). ``.wav``: the rate from the file,
+        channels in columns (pick one with ``column``). ``.csv``/``.tsv``/``.txt`` as
         data-acquisition software exports them: comma, semicolon, tab or space separated,
         decimal commas (with a semicolon, tab or space separator), a header row of channel
         names (more text rows above it and a units row below it are skipped), ``#`` comment
@@ -96,14 +97,23 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     """
     p = Path(path)
     if not p.is_file():
-        raise InputError("file", str(p), "an existing .npy, .npz or .csv file")
+        raise InputError("file", str(p),
+                         "an existing .npy, .npz or .csv file (or .wav, .tsv, .txt)")
     suffix = p.suffix.lower()
     file_rate: float | None = None
     no_rate = "the file carries no time column"
     channel, n_channels = "", 1
-    if suffix in (".npy", ".npz"):
+    if suffix in (".npy", ".npz", ".wav"):
         if suffix == ".npy":
             data = np.load(p, allow_pickle=False)
+        elif suffix == ".wav":
+            from scipy.io import wavfile
+
+            try:
+                wav_rate, data = wavfile.read(p)
+            except ValueError as exc:
+                raise InputError("file", str(p), f"a PCM or float WAV file ({exc})") from None
+            file_rate = float(wav_rate)
         else:
             with np.load(p, allow_pickle=False) as z:
                 key = next((k for k in ("acceleration", "data", "x") if k in z), None)
@@ -129,7 +139,7 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
         data, file_rate, why, channel, n_channels = _read_csv(p, column)
         no_rate = why or no_rate
     else:
-        raise InputError("file", str(p), "a .npy, .npz, .csv, .tsv or .txt file")
+        raise InputError("file", str(p), "a .npy, .npz, .wav, .csv, .tsv or .txt file")
     if file_rate is not None and sampling_rate is not None:
         if abs(file_rate - sampling_rate) > 1e-4 * sampling_rate:
             raise InputError("sampling_rate", sampling_rate,

@@ -178,3 +178,17 @@ def test_example_synthetic_vibration_file_round_trip(tmp_path, capsys):
     assert rc == 0
     # true CSR (1 + 0.12) x 0.3677083 = 0.411833
     assert "CSR         0.4118" in text and "slip        -12.0" in text
+
+
+def test_wav_file_carries_its_rate_and_channels(tmp_path):
+    from scipy.io import wavfile
+
+    x = record(duration=0.5)
+    pcm = np.round(x / np.abs(x).max() * 32000).astype(np.int16)
+    wavfile.write(tmp_path / "rec.wav", int(FS), np.column_stack([pcm, -pcm]))
+    with pytest.raises(InputError, match=r"column index in \[0, 1\]"):
+        S.load_acceleration(tmp_path / "rec.wav")
+    rec = S.load_acceleration(tmp_path / "rec.wav", column=0)
+    assert rec.sampling_rate == FS and np.array_equal(rec.data, pcm.astype(float))
+    with pytest.raises(InputError, match="rate of the file"):
+        S.load_acceleration(tmp_path / "rec.wav", sampling_rate=FS / 2, column=0)

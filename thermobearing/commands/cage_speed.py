@@ -34,7 +34,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                      "Example: thermobearing cage-speed rig.csv --rpm 1800 --bearing QJ1044")
     parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
                         "(time column first, then channels; comma, semicolon or tab separated, "
-                        "decimal commas, header and units rows), .npy or .npz")
+                        "decimal commas, header and units rows), .wav, .npy or .npz")
     parser.add_argument("--rpm", type=float, required=True,
                         help="inner-ring (shaft) speed in r/min (tachometer)")
     parser.add_argument("--bearing", required=True, help="bearing preset name or TOML path")
