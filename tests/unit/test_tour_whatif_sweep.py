@@ -301,3 +301,17 @@ def test_resume_does_not_depend_on_the_order_of_the_set_options(scene, tmp_path)
     again = run_sweep(scene, [t_in, flow], tmp_path, runner=runner, workers=1, progress=False)
     assert len(calls) == 4
     assert sorted(again["case"]) == sorted(first["case"])
+
+
+def test_a_sweep_whose_cases_give_no_results_says_so(tmp_path, capsys, monkeypatch):
+    # `thermobearing sweep paper001_tehl --set schedule.speed=1000,2000`: 80 s of runs and
+    # a summary.csv with the swept values only, without a word (a film-only scene: the
+    # sweep's runner reduces losses, kinematics and temperatures)
+    import thermobearing.simulation as simulation
+
+    monkeypatch.setattr(simulation, "summarize_scene", lambda text: {})
+    code = cli.main(["sweep", "--set", "supply.flow=15,33", "--out", str(tmp_path / "s"),
+                     "--workers", "1", "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 0
+    assert "gave no results" in err and "summarize_scene" in err

@@ -75,6 +75,13 @@ def run(args: argparse.Namespace) -> int:
     print(df[shown].to_string(index=False, float_format=lambda v: f"{v:.4g}"))
     more = f" ({hidden} more result columns there)" if hidden else ""
     print(f"summary written to {out / 'summary.csv'}{more}")
+    swept = {p.path for p in params}
+    if all(c == "case" or c in swept or any(c.startswith(p + " [") for p in swept)
+           for c in df.columns):
+        print("note: the cases gave no results to tabulate: a sweep reduces each run to its "
+              "losses, kinematics and temperatures (thermobearing.simulation."
+              "summarize_scene), and this scene's outputs are "
+              f"{', '.join(scene.outputs.want)}", file=sys.stderr)
     return 0
 
 
