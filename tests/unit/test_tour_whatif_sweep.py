@@ -315,3 +315,21 @@ def test_a_sweep_whose_cases_give_no_results_says_so(tmp_path, capsys, monkeypat
     err = capsys.readouterr().err
     assert code == 0
     assert "gave no results" in err and "summarize_scene" in err
+
+
+def test_film_only_scene_is_noted_before_the_runs(tmp_path, capsys, monkeypatch):
+    import thermobearing.simulation as simulation
+
+    calls = []
+
+    def runner(text):
+        calls.append(capsys.readouterr().err)  # what the user had read when the runs began
+        return {}
+
+    monkeypatch.setattr(simulation, "summarize_scene", runner)
+    code = cli.main(["sweep", "paper001_tehl", "--set", "schedule.speed=1000,2000", "--out",
+                     str(tmp_path / "s"), "--workers", "1", "--quiet"])
+    err = calls[0] + capsys.readouterr().err
+    assert code == 0
+    assert "will give no results" in calls[0] and "film" in calls[0]
+    assert err.count("no results") == 1

@@ -57,6 +57,14 @@ def run(args: argparse.Namespace) -> int:
             print(f"sweep: {p.path}: repeated value(s) left out: {', '.join(p.dropped)}",
                   file=sys.stderr)
     out = Path(args.out)
+    tabulated = {"losses", "kinematics", "temperatures"}
+    empty_note = ("a sweep reduces each run to its losses, kinematics and temperatures "
+                  "(thermobearing.simulation.summarize_scene), and this scene's outputs are "
+                  f"{', '.join(scene.outputs.want)}")
+    warned = not set(scene.outputs.want) & tabulated
+    if warned:  # say it before the runs, not after
+        print(f"note: the cases will give no results to tabulate: {empty_note}",
+              file=sys.stderr)
     try:
         df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
                        fallback_local=args.fallback_local,
@@ -76,12 +84,9 @@ def run(args: argparse.Namespace) -> int:
     more = f" ({hidden} more result columns there)" if hidden else ""
     print(f"summary written to {out / 'summary.csv'}{more}")
     swept = {p.path for p in params}
-    if all(c == "case" or c in swept or any(c.startswith(p + " [") for p in swept)
-           for c in df.columns):
-        print("note: the cases gave no results to tabulate: a sweep reduces each run to its "
-              "losses, kinematics and temperatures (thermobearing.simulation."
-              "summarize_scene), and this scene's outputs are "
-              f"{', '.join(scene.outputs.want)}", file=sys.stderr)
+    if not warned and all(c == "case" or c in swept
+                          or any(c.startswith(p + " [") for p in swept) for c in df.columns):
+        print(f"note: the cases gave no results to tabulate: {empty_note}", file=sys.stderr)
     return 0
 
 
