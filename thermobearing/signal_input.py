@@ -31,6 +31,7 @@ class AccelerationRecord:
     source : file name or description.
     channel : the column (header name, ``column k`` or ``[:, k]``) the samples come from,
         "" for a one-channel file; n_channels : channels in the file (time column excluded).
+    gaps_filled : missing samples filled by interpolation (``load_acceleration(fill_gaps=True)``).
     """
 
     data: np.ndarray
@@ -38,6 +39,7 @@ class AccelerationRecord:
     source: str = ""
     channel: str = ""
     n_channels: int = 1
+    gaps_filled: int = 0
 
     @property
     def duration(self) -> float:
@@ -63,7 +65,8 @@ def check_signal(x, sampling_rate: float, field: str = "signal") -> np.ndarray:
     if bad.any():
         raise InputError(f"{field}", f"{int(bad.sum())} NaN/inf samples (first at index "
                          f"{int(np.argmax(bad))})", "finite samples only (the analysis needs a "
-                         "gap-free record: cut it before the first bad sample or fill the gaps)")
+                         "gap-free record: cut it before the first bad sample or fill short "
+                         "gaps: load_acceleration(fill_gaps=True), cage-speed --fill-gaps)")
     spread = float(np.ptp(arr))
     scale = max(float(np.max(np.abs(arr))), 1e-300)
     if spread <= 1e-12 * scale or spread == 0.0:
@@ -72,7 +75,8 @@ def check_signal(x, sampling_rate: float, field: str = "signal") -> np.ndarray:
 
 
 def load_acceleration(path: str | Path, sampling_rate: float | None = None,
-                      column: int | str | None = None) -> AccelerationRecord:
+                      column: int | str | None = None, *,
+                      fill_gaps: bool = False) -> AccelerationRecord:
     """Read an acceleration record from ``.npy``, ``.npz``, ``.csv``, ``.tsv`` or ``.txt``.
 
     Parameters
@@ -94,6 +98,11 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
         more than 1e-4 relative, that is an error.
     column : column (index or header name, also a name of the units row) holding the
         samples; for a 2-D ``.npy``/``.npz`` the column index.
+    fill_gaps : fill isolated missing samples (NaN, empty cells: DAQ dropouts) by linear
+        interpolation between their neighbours, when each gap is at most
+        ``MAX_GAP_SAMPLES`` samples and all together at most ``MAX_GAP_FRACTION`` of the
+        record (else the error stands); the count is in ``gaps_filled``. Default False: a
+        missing sample is an error that says where.
     """
     p = Path(path)
     if not p.is_file():
@@ -147,8 +156,38 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     rate = sampling_rate if sampling_rate is not None else file_rate
     if rate is None:
         raise InputError("sampling_rate", None, f"a sampling rate in Hz ({no_rate})")
+    filled = 0
+    if fill_gaps:
+        data, filled = _fill_gaps(np.asarray(data, dtype=float), p.name)
     arr = check_signal(data, float(rate), field=p.name)
-    return AccelerationRecord(arr, float(rate), str(p), channel, n_channels)
+    return AccelerationRecord(arr, float(rate), str(p), channel, n_channels, filled)
+
+
+#: longest run of missing samples ``fill_gaps`` interpolates over
+MAX_GAP_SAMPLES = 5
+#: largest share of missing samples ``fill_gaps`` accepts
+MAX_GAP_FRACTION = 1e-3
+
+
+def _fill_gaps(x: np.ndarray, name: str) -> tuple[np.ndarray, int]:
+    """Linear interpolation over short runs of non-finite samples (see load_acceleration)."""
+    bad = ~np.isfinite(x)
+    n_bad = int(bad.sum())
+    if n_bad == 0 or x.ndim != 1:
+        return x, 0
+    edges = np.diff(np.concatenate([[0], bad.astype(np.int8), [0]]))
+    starts, ends = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    longest = int(np.max(ends - starts))
+    if longest > MAX_GAP_SAMPLES or n_bad > MAX_GAP_FRACTION * x.size or bad[0] or bad[-1]:
+        k = int(starts[int(np.argmax(ends - starts))])
+        raise InputError(name, f"{n_bad} missing samples, the longest run {longest} at index "
+                         f"{k}", f"gaps of at most {MAX_GAP_SAMPLES} samples, "
+                         f"{100 * MAX_GAP_FRACTION:g} % of the record in all, not at its ends, "
+                         "to be filled (cut the record around longer dropouts)")
+    idx = np.arange(x.size)
+    out = x.copy()
+    out[bad] = np.interp(idx[bad], idx[~bad], x[~bad])
+    return out, n_bad
 
 
 #: header words that mark the first column as a time column

@@ -192,3 +192,20 @@ def test_wav_file_carries_its_rate_and_channels(tmp_path):
     assert rec.sampling_rate == FS and np.array_equal(rec.data, pcm.astype(float))
     with pytest.raises(InputError, match="rate of the file"):
         S.load_acceleration(tmp_path / "rec.wav", sampling_rate=FS / 2, column=0)
+
+
+def test_fill_gaps_interpolates_short_dropouts_only(tmp_path):
+    x = record(duration=0.5)
+    y = x.copy()
+    y[[100, 5000, 5001]] = np.nan  # three dropouts, the longest 2 samples
+    np.save(tmp_path / "drop.npy", y)
+    with pytest.raises(InputError, match="--fill-gaps"):
+        S.load_acceleration(tmp_path / "drop.npy", sampling_rate=FS)
+    rec = S.load_acceleration(tmp_path / "drop.npy", sampling_rate=FS, fill_gaps=True)
+    assert rec.gaps_filled == 3 and np.all(np.isfinite(rec.data))
+    assert rec.data[100] == pytest.approx(0.5 * (x[99] + x[101]))
+    assert np.array_equal(rec.data[:100], x[:100])
+    y[2000:2010] = np.nan  # a 10-sample dropout: not filled, named
+    np.save(tmp_path / "long_drop.npy", y)
+    with pytest.raises(InputError, match="the longest run 10 at index 2000"):
+        S.load_acceleration(tmp_path / "long_drop.npy", sampling_rate=FS, fill_gaps=True)

@@ -52,6 +52,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--search", nargs=2, type=float, default=(0.3, 1.3),
                         metavar=("LOW", "HIGH"),
                         help="search range of CSR / CSR_th (default 0.3 1.3)")
+    parser.add_argument("--fill-gaps", action="store_true", dest="fill_gaps",
+                        help="interpolate over short dropouts (NaN / empty samples: runs of "
+                             "at most 5 samples, 0.1 %% of the record in all); default: "
+                             "an error that says where")
     parser.add_argument("--ball-pass-harmonics", type=int, default=None,
                         dest="ball_pass_harmonics", metavar="N",
                         help="ball-pass harmonics in the comb (default: 3, or fewer when the "
@@ -77,7 +81,8 @@ def run(args: argparse.Namespace) -> int:
     column = args.column
     if column is not None and column.isdigit():
         column = int(column)
-    record = S.load_acceleration(args.file, sampling_rate=fs, column=column)
+    record = S.load_acceleration(args.file, sampling_rate=fs, column=column,
+                                 fill_gaps=args.fill_gaps)
     bearing = load_bearing(args.bearing)
     angle = (bearing.contact_angle if args.contact_angle is None
              else _contact_angle(args.contact_angle))
@@ -152,6 +157,7 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
             plot: Path | None) -> dict:
     return {
         "file": record.source, "channel": record.channel or None,
+        "gaps_filled": record.gaps_filled,
         "sampling_rate_hz": record.sampling_rate,
         "duration_s": record.duration, "bearing": name,
         "shaft_frequency_hz": est.shaft_frequency,
@@ -183,6 +189,9 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
               f" (envelope line at {est.measured_shaft_frequency:.4f} Hz)"
               if est.measured_shaft_frequency else ""))
     print(f"bands       {bands}")
+    if record.gaps_filled:
+        print(f"note        {record.gaps_filled} missing sample(s) filled by linear "
+              "interpolation (--fill-gaps)")
     clip = clipped_fraction(record.data)
     if clip > CLIP_NOTE:
         print(f"note        the record looks clipped: {100 * clip:.2g} % of the samples sit at "
