@@ -162,3 +162,21 @@ def test_strong_correlation_is_a_note():
         notes[0]
     assert correlation_notes(["a", "b"], np.array([[1.0, 0.5], [0.5, 1.0]])) == []
     assert correlation_notes(["a", "b"], np.full((2, 2), np.nan)) == []
+
+
+def test_ctrl_c_says_how_to_go_on_from_the_best_run(tmp_path, capsys, monkeypatch):
+    import thermobearing.calibrate as calibrate_module
+
+    def interrupted(scene, fit, *, callback=None, **kwargs):
+        callback(1, {"network.parameters.h_oil": 270.0}, 0.70)
+        callback(2, {"network.parameters.h_oil": 375.0626}, 0.108)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(calibrate_module, "calibrate", interrupted)
+    code = cli.main(["calibrate", "qj1044_synthetic_measured", "--fit",
+                     "network.parameters.h_oil", "--out", str(tmp_path / "cal"), "--quiet"])
+    err = capsys.readouterr().err
+    # before: the best run was named, but not how to start a new fit there (bare --x0
+    # numbers are in the parameter's unit, the unit of the progress lines)
+    assert code == 130
+    assert "rerun with --x0 network.parameters.h_oil=375.063" in err

@@ -116,9 +116,11 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         if "run" in best:
             shown = ", ".join(f"{k}={v:.6g}" for k, v in best["values"].items())
+            again = " ".join(f"--x0 {k}={v:.6g}" for k, v in best["values"].items())
             print(f"\ninterrupted: every finished model run is in {runs_csv}; best so far: "
                   f"run {best['run']}, {shown}, RMSE {best['rmse']:.4g} K (no calibrated "
-                  "scene was written)", file=sys.stderr)
+                  f"scene was written; to go on from there, rerun with {again})",
+                  file=sys.stderr)
         else:
             print("\ninterrupted before the first model run finished: nothing was written "
                   f"(the runs would have gone to {runs_csv})", file=sys.stderr)
