@@ -516,6 +516,20 @@ def _dask_client(scheduler: str, timeout: float = 5.0):
     return box["client"]
 
 
+def _require_workers(client: Any, scheduler: str, timeout: float) -> None:
+    """SchedulerUnreachable (the client closed) unless the scheduler has a worker within
+    ``timeout`` seconds: a scheduler started without workers accepts the cases and never
+    runs them, and the sweep would wait forever."""
+    try:
+        client.wait_for_workers(1, timeout=timeout)
+    except (TimeoutError, OSError):
+        client.close()
+        raise SchedulerUnreachable(
+            f"the dask scheduler at {scheduler!r} has no workers (none joined within "
+            f"{timeout:g} s): start some (dask worker {scheduler}), or ask for a local run "
+            "instead (--fallback-local, fallback_local=True)") from None
+
+
 @contextmanager
 def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
     """A package error raised by one case names the case's values and where the finished
@@ -616,10 +630,13 @@ def run_sweep(
             if scheduler:
                 try:
                     client = _dask_client(scheduler, connect_timeout)
-                except SchedulerUnreachable:
+                    _require_workers(client, scheduler, connect_timeout)
+                except SchedulerUnreachable as exc:
                     if not fallback_local:
                         raise
-                    print(f"sweep: scheduler {scheduler} unreachable, running locally",
+                    client = None
+                    why = "has no workers" if "no workers" in str(exc) else "unreachable"
+                    print(f"sweep: scheduler {scheduler} {why}, running locally",
                           file=sys.stderr)
             if client is not None:
                 from distributed import as_completed as dask_completed

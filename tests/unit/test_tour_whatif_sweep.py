@@ -333,3 +333,22 @@ def test_film_only_scene_is_noted_before_the_runs(tmp_path, capsys, monkeypatch)
     assert code == 0
     assert "will give no results" in calls[0] and "film" in calls[0]
     assert err.count("no results") == 1
+
+
+def test_scheduler_without_workers_is_an_error_not_a_wait(scene, tmp_path):
+    # before: a scheduler started without `dask worker` took the cases and the sweep waited
+    # forever (0/2 on the progress bar, nothing on a non-terminal)
+    distributed = pytest.importorskip("distributed")
+    p = parse_set("supply.flow=15,33", scene.to_dict())
+    with distributed.LocalCluster(n_workers=0, processes=False,
+                                  dashboard_address=None) as cluster:
+        t0 = time.monotonic()
+        with pytest.raises(SchedulerUnreachable, match="has no workers"):
+            run_sweep(scene, [p], tmp_path / "a", runner=capacity_runner,
+                      scheduler=cluster.scheduler_address, progress=False,
+                      connect_timeout=0.5)
+        assert time.monotonic() - t0 < 5.0
+        df = run_sweep(scene, [p], tmp_path / "b", runner=capacity_runner,
+                       scheduler=cluster.scheduler_address, fallback_local=True, workers=1,
+                       progress=False, connect_timeout=0.5)
+    assert len(df) == 2
