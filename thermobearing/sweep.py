@@ -547,6 +547,14 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
                      "command to resume)")
         exc.args = (f"sweep case {case.case_id} ({values}): {exc}; {where}", *exc.args[1:])
         raise
+    except Exception as exc:
+        # not an input or solver error the package names (a bug, a dask worker without
+        # thermobearing, ...): the traceback stays, with a note on the case and the store
+        values = ", ".join(f"{k}={v}" for k, v in case.assignments)
+        kept = "" if out is None else (f"; {len(finished_cases(out))} finished case(s) are "
+                                       f"kept in {_store_path(out)}")
+        exc.add_note(f"in sweep case {case.case_id} ({values}){kept}")
+        raise
 
 
 def check_cases(cases: Sequence[Case]) -> None:

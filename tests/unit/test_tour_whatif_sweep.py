@@ -352,3 +352,17 @@ def test_scheduler_without_workers_is_an_error_not_a_wait(scene, tmp_path):
                        scheduler=cluster.scheduler_address, fallback_local=True, workers=1,
                        progress=False, connect_timeout=0.5)
     assert len(df) == 2
+
+
+def test_an_unexpected_error_in_a_case_names_the_case(scene, tmp_path):
+    # before: a bare ZeroDivisionError traceback, no word on which case or what was kept
+    def runner(text):
+        if loads_scene(text).supply.flow > 20e-3 / 60:
+            raise ZeroDivisionError("float division by zero")
+        return capacity_runner(text)
+
+    p = parse_set("supply.flow=15,33", scene.to_dict())
+    with pytest.raises(ZeroDivisionError) as info:
+        run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
+    note = " ".join(getattr(info.value, "__notes__", []))
+    assert "supply.flow=33 L/min" in note and "1 finished case(s) are kept" in note
