@@ -104,16 +104,43 @@ def _number(text: str, field: str) -> float:
 
 
 def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
-    """Unit of the field's current value in the scene (for bare sweep numbers)."""
+    """Unit of the field's current value in the scene (for bare sweep numbers); for a
+    bearing override the scene does not set, the unit of the bearing preset's value
+    (``bearings.0.overrides.diametral_clearance=0.1,0.2`` means mm for QJ1044, whose
+    preset writes "0.10 mm")."""
     try:
         value = get_path(scene_dict, path)
-    except KeyError:
+    except (KeyError, IndexError, ValueError, TypeError):
         value = None
+    parts = path.split(".")
+    if value is None and len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
+        value = _bearing_file_value(scene_dict, parts[1], parts[3:])
     if isinstance(value, str):
-        parts = value.split(maxsplit=1)
-        if len(parts) == 2:
-            return parts[1]
+        words = value.split(maxsplit=1)
+        if len(words) == 2:
+            return words[1]
     return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
+
+
+def _bearing_file_value(scene_dict: Mapping[str, Any], index: str, keys: Sequence[str]) -> Any:
+    """The raw value of ``keys`` in the bearing TOML (preset or absolute path) of the
+    scene's bearing ``index``; None when it cannot be read."""
+    import tomllib
+
+    from .scene import configs_dir
+
+    try:
+        bearing = scene_dict["bearings"][int(index)]
+        if "preset" in bearing:
+            file = configs_dir() / "bearings" / f"{bearing['preset']}.toml"
+        else:
+            file = Path(bearing["path"])
+        cur: Any = tomllib.loads(file.read_text(encoding="utf-8"))
+        for key in keys:
+            cur = cur[key]
+        return cur
+    except (KeyError, IndexError, ValueError, TypeError, OSError, tomllib.TOMLDecodeError):
+        return None
 
 
 def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
@@ -158,7 +185,10 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
             continue
         x = _number(num.strip(), f"--set {path}")
         unit = unit or trailing
-        values.append(f"{x:g} {unit}" if unit else x)
+        if unit:
+            values.append(f"{x:g} {unit}")
+        else:  # a count written as a whole number stays an integer (n_balls=18,20)
+            values.append(int(num) if re.fullmatch(r"\s*[-+]?\d+\s*", num) else x)
     return _unique(path, values, items)
 
 
@@ -249,7 +279,14 @@ def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") 
         return
     if len(parts) >= 2 and parts[0] in ("models", "network"):
         return  # free-form tables: the model/template validates its own keys
-    if len(parts) >= 3 and parts[0] == "bearings" and parts[2] == "overrides":
+    if parts[0] == "bearings" and len(parts) >= 2:
+        names = [b.get("name", "?") for b in scene_dict.get("bearings", [])]
+        if not (parts[1].isdigit() and int(parts[1]) < len(names)):
+            listed = ", ".join(f"{i} = {n}" for i, n in enumerate(names))
+            raise InputError(option, path, f"bearings.<index>.<field> with an index of the "
+                             f"scene's bearings ({listed}), e.g. "
+                             "bearings.0.overrides.diametral_clearance")
+    if len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
         return
     raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"
                      + _did_you_mean(scene_dict, path))

@@ -366,3 +366,23 @@ def test_an_unexpected_error_in_a_case_names_the_case(scene, tmp_path):
         run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
     note = " ".join(getattr(info.value, "__notes__", []))
     assert "supply.flow=33 L/min" in note and "1 finished case(s) are kept" in note
+
+
+# --- bearing overrides: the preset's unit, whole counts, an index that exists -------------
+def test_bearing_override_values(scene):
+    d = scene.to_dict()
+    # before: a bare 0.1 was 0.1 m (the override is not in the scene, no display unit);
+    # now the unit of the preset's own value ("0.10 mm" in configs/bearings/QJ1044.toml)
+    p = parse_set("bearings.0.overrides.diametral_clearance=0.1,0.2", d)
+    assert p.values == ("0.1 mm", "0.2 mm")
+    assert parse_set("bearings.1.overrides.cage.guide_clearance=0.4", d).values == ("0.4 mm",)
+    # before: 18.0, refused as "an integer >= 3"
+    n = parse_set("bearings.0.overrides.n_balls=18,20", d)
+    assert n.values == (18, 20) and all(isinstance(v, int) for v in n.values)
+    cases = expand(scene, [p, n])
+    assert len(cases) == 4
+    # before: IndexError / ValueError tracebacks
+    for bad in ("bearings.5.overrides.diametral_clearance=1",
+                "bearings.x.overrides.diametral_clearance=1"):
+        with pytest.raises(InputError, match="0 = drive_end, 1 = non_drive_end"):
+            parse_set(bad, d)
