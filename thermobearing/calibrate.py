@@ -372,6 +372,12 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
             raw = get_path(scene_dict, path)
         except (KeyError, IndexError, ValueError, TypeError):
             raw = None
+        if raw is None and len(parts) >= 4 and parts[0] == "bearings" \
+                and parts[2] == "overrides":
+            # a bearing value the scene does not override: start from the preset's value
+            from .sweep import bearing_file_value
+
+            raw = bearing_file_value(scene_dict, parts[1], parts[3:])
         kind = _SCENE_KINDS.get(path)
         if kind is not None:
             from .units import si_unit
@@ -396,8 +402,9 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
     if path in x0:
         value = given(x0[path], f"x0[{path}]")
     if value is None:
-        raise InputError(f"x0[{path}]", None, "a starting value: the scene does not set this "
-                         "field and its default is a correlation, not a number")
+        raise InputError(f"x0[{path}]", None, "a starting value (--x0 PATH=VALUE): the scene "
+                         "does not set this field and its default is not a number (a "
+                         "correlation, or a value the models choose)")
     is_temp = unit == "K"
     lo, hi = (0.0, math.inf) if (not is_temp and value > 0) else (-math.inf, math.inf)
     if path in bounds:

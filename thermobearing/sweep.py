@@ -114,7 +114,7 @@ def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
         value = None
     parts = path.split(".")
     if value is None and len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
-        value = _bearing_file_value(scene_dict, parts[1], parts[3:])
+        value = bearing_file_value(scene_dict, parts[1], parts[3:])
     if isinstance(value, str):
         words = value.split(maxsplit=1)
         if len(words) == 2:
@@ -122,7 +122,7 @@ def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
     return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
 
 
-def _bearing_file_value(scene_dict: Mapping[str, Any], index: str, keys: Sequence[str]) -> Any:
+def bearing_file_value(scene_dict: Mapping[str, Any], index: str, keys: Sequence[str]) -> Any:
     """The raw value of ``keys`` in the bearing TOML (preset or absolute path) of the
     scene's bearing ``index``; None when it cannot be read."""
     import tomllib

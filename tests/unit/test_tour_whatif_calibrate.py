@@ -180,3 +180,15 @@ def test_ctrl_c_says_how_to_go_on_from_the_best_run(tmp_path, capsys, monkeypatc
     # numbers are in the parameter's unit, the unit of the progress lines)
     assert code == 130
     assert "rerun with --x0 network.parameters.h_oil=375.063" in err
+
+
+def test_bearing_override_starts_from_the_preset_value():
+    # before: "x0[...] is missing: a starting value: the scene does not set this field and
+    # its default is a correlation" -- the default is the preset's "0.10 mm"
+    from thermobearing.calibrate import _make_parameter
+
+    scene = load_scene("qj1044_synthetic_measured")
+    p = _make_parameter(scene, scene.to_dict(), "bearings.0.overrides.diametral_clearance",
+                        {}, {}, {})
+    assert p.initial == pytest.approx(0.10e-3) and p.display_unit == "mm"
+    assert p.transform == "log"
