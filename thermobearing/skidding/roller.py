@@ -118,19 +118,26 @@ def solve_model(
         last_q[0] = ld.inner_load
         return ld, fbw
 
-    starts = [x0] if x0 is not None else []
-    starts += [initial_guess(model, omega, c) for c in (0.8, 0.4)]
+    # Attempts, in order (each a start and the finite-difference step of its Newton, as a
+    # fraction of the inner speed):
+    # - a warm start, first with the fine step 1e-10, then with the default 1e-7: near pure
+    #   rolling under load the tractions saturate within a slip of ~1e-7, the default step
+    #   spans the saturation and Newton stalls, creeping through up to 60 x 30 line-search
+    #   evaluations (session 12: a catalogue NU 206 protocol at 2 kN spent half its CPU so);
+    # - the cold guesses at 0.8 and 0.4 of the epicyclic cage speed (default step), as before;
+    # - pure rolling with the fine step: where those fail under load (the cage equation jumps
+    #   across pure rolling) the solution is within ~1e-8 of it (NU 206, 2 kN, 22-27 degC:
+    #   converges in 0.1-0.5 s of CPU to the state the bracketed fallback found in 6-12 s);
+    # - the best iterate so far with the fine step.
+    # The bracketed fallback runs only when all of them fail.
+    attempts = [(x0, 1e-10), (x0, 1e-7)] if x0 is not None else []
+    attempts += [(initial_guess(model, omega, c), 1e-7) for c in (0.8, 0.4)]
+    attempts.append((initial_guess(model, omega, 1.0), 1e-10))
     best = None
     method = "newton"
-    # Newton with the default finite-difference step from every start; if none converges,
-    # once more from the best state with a 1000x smaller step (near pure rolling under load
-    # the tractions saturate within a slip of ~1e-7: the default step spans the saturation
-    # and Newton stalls). Session 12: a catalogue NU 206 (2 kN, 1500-6000 r/min, ISO VG 68
-    # at 47 degC) then converges by Newton in 0.2-0.6 s of CPU to the state the bracketed
-    # fallback found in 12 s (CSR equal to 1e-12)
-    attempts = [(s, 1e-7) for s in starts]
     films = model.ring_support == "films"
     i_attempt = 0
+    polished = False
     while i_attempt < len(attempts):
         start, fd_step = attempts[i_attempt]
         i_attempt += 1
@@ -157,7 +164,8 @@ def solve_model(
             best = (x, e, norm, it, ok, ld)
         if ok:
             break
-        if i_attempt == len(attempts) and fd_step == 1e-7:
+        if i_attempt == len(attempts) and not polished:
+            polished = True
             attempts.append((best[0], 1e-10))
     floor = 0.0  # round-off floor of a bracketed state (0: Newton met tol)
     if not best[4] and fallback:
