@@ -362,9 +362,13 @@ class Simulation:
                    and _rib_friction_unavailable(b))
             if why:  # a default source the bearing's geometry cannot host: left out, said
                 sources = tuple(n for n in sources if n != "rib_friction")
+                # the hint only where the bearing's data can fix it (session 12: it was
+                # also printed for outer-ring ribs, which no key of the bearing changes)
+                hint = ("" if why.startswith(("ribs on the outer ring", "not a cylindrical"))
+                        else "; name it in [models] heat_sources once the bearing has "
+                             "end_face_crown_radius and rib_height")
                 dropped.append(f"{spec.name}: default heat source rib_friction left out "
-                               f"({why}); name it in [models] heat_sources once the bearing "
-                               "has end_face_crown_radius and rib_height")
+                               f"({why}){hint}")
             self.bearings.append(_Bearing(spec.name, key, b, is_ball, sources, kin_name, opts))
         from .heat_sources import HEAT_SOURCES
 
