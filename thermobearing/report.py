@@ -237,9 +237,16 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
     The legend names the group columns once (its title) and each curve by its values; up
     to ``_LEGEND_INSIDE`` curves it sits in the first panel, beyond that outside the
     panels on the right (inside, nine curves of a 4 x 3 x 3 sweep hid the first panel's
-    data). Beyond ten curves the line style changes with each colour cycle.
+    data). Beyond ten curves the line style changes with each colour cycle. A text ``x``
+    (a lubricant preset) is drawn at one position per value, labelled with it.
     """
     by = [group] if isinstance(group, str) else list(group or [])
+    categories: list[Any] = []
+    if not pd.api.types.is_numeric_dtype(summary[x]):
+        # text values (lubricant presets): one position per value, in order of appearance
+        categories = list(dict.fromkeys(summary[x].tolist()))
+        summary = summary.assign(**{x: summary[x].map({c: i for i, c in
+                                                       enumerate(categories)})})
     groups = list(summary.groupby(by)) if by else [((), summary)]
     outside = len(groups) > _LEGEND_INSIDE
     fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys) + (2.2 if outside else 0.0),
@@ -255,6 +262,9 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
             ax.set_xlabel(x, fontsize=8)
             ax.set_ylabel(y, fontsize=8)
             ax.grid(alpha=0.3)
+            if categories:
+                ax.set_xticks(range(len(categories)), [str(c) for c in categories],
+                              fontsize=7, rotation=30 if len(categories) > 4 else 0)
     if by:
         title = ", ".join(by)
         if outside:

@@ -96,3 +96,22 @@ def test_whatif_legend_of_many_curves_is_outside_the_panels(monkeypatch):
 
     for f in seen:
         plt.close(f)
+
+
+def test_whatif_over_oil_grades(monkeypatch):
+    # a sweep of lubricant.preset alone had no what-if figure: fig_whatif needed a numeric x
+    from thermobearing.report import fig_whatif
+
+    seen = _captured_figure(monkeypatch)
+    df = pd.DataFrame({"lubricant.preset": ["ISO_VG32", "ISO_VG68", "ISO_VG32", "ISO_VG68"],
+                       "supply.flow [L/min]": [15.0, 15.0, 33.0, 33.0],
+                       "total loss [W]": [1261.0, 1559.0, 1522.0, 1878.0]})
+    fig_whatif(df, "lubricant.preset", ["total loss [W]"], group="supply.flow [L/min]")
+    ax = seen[-1].axes[0]
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["ISO_VG32", "ISO_VG68"]
+    lines = ax.get_lines()
+    assert len(lines) == 2
+    assert list(lines[1].get_ydata()) == [1522.0, 1878.0]  # 33 L/min: VG32 then VG68
+    import matplotlib.pyplot as plt
+
+    plt.close(seen[-1])
