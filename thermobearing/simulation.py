@@ -378,7 +378,10 @@ class Simulation:
                       if link.family != HEAT_SOURCE_FAMILY or link.name in running]
         self.needs = _needs(scene)
         self.network = None
-        self.warnings: list[str] = list(self.notes) + dropped
+        # a source left out matters only to a run that books losses (a film-only or
+        # kinematics-only scene runs no heat source: nothing to say; session 12)
+        self.warnings: list[str] = list(self.notes) + (
+            dropped if _needs(scene)["losses"] else [])
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         # identical bearings (same preset and overrides) at the same state share results
@@ -584,6 +587,15 @@ class Simulation:
             tables, stats = self._run_operating_points(writer)
         stats["wall_time_s"] = time.perf_counter() - t_wall
         stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
+        for b in self.bearings:
+            # the numerical film's table work (numerical_tehl): how often it answered from
+            # the table and how much CPU its thermal solves cost (session 12: a run sat
+            # minutes in them without a sign)
+            fm = b.kin_options.get("film_model")
+            if fm is not None and hasattr(fm, "solve_time"):
+                stats[f"{b.name}: film table"] = {"solves": int(fm.solves),
+                                                  "queries": int(fm.queries),
+                                                  "solve_cpu_s": float(fm.solve_time)}
         checked = [line for log in self.checks.values() for line in log.summary()]
         # the thresholds are recorded when some state was checked
         limits = self.check_limits.as_dict() if any(
@@ -669,6 +681,10 @@ class Simulation:
                          f"{abs(last['imbalance [J]']) / max(abs(gen), 1e-300):.2e} (relative)")
         lines.append(f"wall time {results.stats.get('wall_time_s', float('nan')):.2f} s, "
                      f"{results.stats.get('kinematics_solves', 0)} kinematics solves")
+        for key, value in results.stats.items():
+            if key.endswith(": film table") and isinstance(value, dict):
+                lines.append(f"{key} (numerical film): {value['solves']} thermal EHL solves "
+                             f"({value['solve_cpu_s']:.1f} s CPU), {value['queries']} queries")
         if results.warnings:
             shown = results.warnings[:MAX_SHOWN_WARNINGS]
             lines.append(f"validity warnings ({len(results.warnings)}; all in the report):")

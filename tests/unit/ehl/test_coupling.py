@@ -104,6 +104,14 @@ def test_film_only_scene_reports_thermal_film_below_closed_form():
     assert np.all(hm <= hc * (1 + 1e-9))
     inner = film[film["race"] == "inner"]["minimum film [um]"].iloc[0]
     assert 0.3 < inner < 0.6  # paper 001: 0.445 um (within its 20 % band and some)
+    # the table's work is recorded and summarised (session 12: a run sat minutes in thermal
+    # solves without a sign); a film-only run books no loss, so no heat-source note
+    table = res.stats[f"{sim.bearings[0].name}: film table"]
+    model = sim.bearings[0].kin_options["film_model"]
+    assert table == {"solves": model.solves, "queries": model.queries,
+                     "solve_cpu_s": model.solve_time} and table["solves"] > 0
+    assert f"{table['solves']} thermal EHL solves" in sim.summary_text(res)
+    assert not any("rib_friction" in w for w in res.warnings)
 
 
 @pytest.mark.slow
