@@ -132,3 +132,21 @@ def test_sweep_report_separates_every_swept_parameter(tmp_path):
     assert "loss maps (supply.flow [L/min] = 33.0)" in captions
     assert sum(c.startswith("what-if") for c in captions) == 3
     assert len(re.findall(r'src="data:image/png;base64,', text)) == len(captions) == 5
+
+
+def test_sweep_report_keeps_the_sweeps_numeric_columns():
+    """A summary with mixed units of one swept quantity (15 L/min, 0.5 L/s): the sweep writes
+    'supply.flow [L/min]' converted value by value; the report keeps it (until session 12 it
+    re-read the text with the first row's unit, 0.5 L/s became 0.5 L/min). A parameter held
+    at one value draws no what-if curve; a text parameter (oil grade) does."""
+    import pandas as pd
+
+    from thermobearing.commands.report import _numeric_params
+
+    df = pd.DataFrame({"case": ["a", "b"], "supply.flow": ["15 L/min", "0.5 L/s"],
+                       "supply.flow [L/min]": [15.0, 30.0],
+                       "supply.inlet_temperature": ["35 degC", "40 degC"],
+                       "total loss [W]": [1.0, 2.0]})
+    out = _numeric_params(df, ["supply.flow", "supply.inlet_temperature"])
+    assert list(out["supply.flow [L/min]"]) == [15.0, 30.0] and "supply.flow" not in out
+    assert list(out["supply.inlet_temperature [degC]"]) == [35.0, 40.0]  # older summaries

@@ -46,9 +46,17 @@ def _read_table(path: Path, needed: tuple[str, ...] = ()) -> pd.DataFrame:
 
 
 def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
-    """Swept values like '15 L/min' -> numbers in a column named 'supply.flow [L/min]'."""
+    """Swept values like '15 L/min' -> numbers in a column named 'supply.flow [L/min]'.
+
+    A summary written by this version of ``thermobearing sweep`` already has that column,
+    converted to one unit value by value (``15 L/min`` and ``0.5 L/s`` both in L/min): it is
+    kept and the text column dropped (session 12: the text was re-read with the first row's
+    unit for every value). Older summaries are converted from the text as before."""
     out = df.copy()
     for p in params:
+        if any(c.startswith(p + " [") for c in out.columns):
+            out = out.drop(columns=[p])
+            continue
         values = out[p].astype(str)
         m = values.str.extract(r"^\s*([-+0-9.eE]+)\s*(.*)$")
         if m[0].notna().all():
@@ -81,9 +89,12 @@ def sweep_report(folder: Path) -> Path:
     figs: dict[str, bytes] = {}
     losses = [c for c in results if c.endswith("[W]") and not c.startswith("max")]
     temps = [c for c in results if c.startswith("final") or c.startswith("rise")]
+    # the housing node first: it is where a rig's thermocouple sits (paper 002 Fig. 19)
+    temps.sort(key=lambda c: ".housing" not in c)
     for x in pcols:
-        if not pd.api.types.is_numeric_dtype(df[x]):
-            continue
+        if df[x].nunique() < 2:
+            continue  # a parameter held at one value draws no curve
+        # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
         ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + temps[:2]
         if ys:
