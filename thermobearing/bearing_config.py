@@ -201,10 +201,12 @@ def load_bearing(name_or_path: str | Path,
     """Load a bearing from a preset name (``"QJ1044"``) or a TOML path.
 
     ``overrides`` replaces top-level keys (unit strings allowed, e.g.
-    ``{"diametral_clearance": "0.1 mm"}``) before the bearing is built. For a four-point preset
-    with a gothic-arch offset, overriding only the clearance keeps the offset and lets the
-    contact angle follow (as :meth:`BallBearing.with_clearance`). Unknown keys, unknown
-    presets and bad values raise :class:`~thermobearing.errors.InputError`.
+    ``{"diametral_clearance": "0.1 mm"}``) before the bearing is built; a table given for a
+    table (``{"cage": {"guide_clearance": "0.4 mm"}}``) is merged into it key by key. For a
+    four-point preset with a gothic-arch offset, overriding only the clearance keeps the
+    offset and lets the contact angle follow (as :meth:`BallBearing.with_clearance`).
+    Unknown keys, unknown presets and bad values raise
+    :class:`~thermobearing.errors.InputError`.
     """
     text = str(name_or_path)
     path = Path(text)
@@ -226,7 +228,12 @@ def load_bearing(name_or_path: str | Path,
                 and "gothic_arch_offset" not in overrides):
             # the ground gothic arch stays; the free contact angle follows the new clearance
             data = {k: v for k, v in data.items() if k != "contact_angle"}
-        data = {**data, **overrides}
+        # a table overridden by a table is merged key by key (``cage = { guide_clearance =
+        # "0.4 mm" }`` changes that one key; session 12: it replaced the whole [cage] table
+        # and the other cage keys were reported missing); anything else replaces
+        data = {**data, **{k: ({**data[k], **v} if isinstance(v, Mapping)
+                               and isinstance(data.get(k), Mapping) else v)
+                           for k, v in overrides.items()}}
     data.setdefault("name", path.stem)
     return bearing_from_dict(data, origin=f"bearing[{path.stem}]")
 

@@ -167,3 +167,19 @@ def test_catalogue_bearing_scene_runs_and_reports_its_estimates(tmp_path, capsys
                  run_report(tmp_path / "out").read_text(encoding="utf-8")):
         assert "<h2 id='estimated-inputs'>Estimated inputs</h2>" in page
         assert "bearing test (6206)" in page and "ISO 5753-1 Normal (CN)" in page
+
+
+def test_table_overrides_merge_into_the_preset_table():
+    """``overrides = { cage = { guide_clearance = "0.4 mm" } }`` changes that key of the
+    preset's [cage] and keeps the others (until session 12 it replaced the table and the
+    other cage keys were reported missing); a plain value still replaces."""
+    from thermobearing.geometry import load_bearing
+
+    base = load_bearing("QJ1044")
+    b = load_bearing("QJ1044", {"cage": {"guide_clearance": "0.4 mm"},
+                                "diametral_clearance": "0.12 mm"})
+    assert b.cage.guide_clearance == pytest.approx(0.4e-3)
+    assert b.cage.width == base.cage.width and b.cage.guidance == base.cage.guidance
+    assert b.diametral_clearance == pytest.approx(0.12e-3)
+    with pytest.raises(InputError, match="cage.colour"):
+        load_bearing("QJ1044", {"cage": {"colour": "red"}})
