@@ -358,6 +358,20 @@ class CheckLog:
                     f"{where}; {detail}: {_film_regime(c.film_parameter)}")
         return lines
 
+    def flagged_steps(self) -> dict[str, int]:
+        """How many schedule steps each check flags (the worst state of a step counts, as
+        in :meth:`summary`): ``"skid"`` (|CSR/CSR_th - 1| above the skid limit), ``"stress"``
+        (Hertz pressure above the state's stress limit), ``"film"`` (Lambda below the
+        minimum; 0 when the bearing gives no roughness)."""
+        lim = self.limits
+        skid = stress = film = 0
+        for cs in self.steps.values():
+            skid += any(abs(c.slip) > lim.skid_limit for c in cs)
+            stress += any(c.max_pressure > c.stress_limit for c in cs)
+            film += any(c.film_parameter is not None
+                        and c.film_parameter < lim.min_film_parameter for c in cs)
+        return {"skid": int(skid), "stress": int(stress), "film": int(film)}
+
     def _stress_line(self, where: str, i: int, c: StateCheck) -> str:
         """The summary line of the contact-stress check (worst state ``c`` at step ``i``)."""
         iso = ISO76_STRESS.get(c.family)

@@ -158,3 +158,52 @@ def test_sweep_summary_carries_the_validity_extremes():
     assert 500.0 < out["max contact pressure [MPa]"] < 2000.0
     assert out["min film parameter [-]"] > 3.0
     assert out["total loss [W]"] > 0.0
+
+
+def test_sweep_summary_weights_steps_by_duration_and_counts_flagged_steps():
+    """summarize_scene: ``total loss [W]`` is the scene's loss (every bearing) averaged over
+    the protocol with each step weighted by its duration, per-bearing totals beside it;
+    ``steps over ... limit [-]`` count the steps the [checks] thresholds flag (session 12:
+    the loss was the plain step mean of the first bearing, and a sweep of the thresholds
+    gave identical rows). Hand check: the step losses from the losses table."""
+    import pandas as pd
+
+    from thermobearing.simulation import summarize_scene
+
+    two = BASE.replace('[lubricant]', '[[bearings]]\nname = "nde"\npreset = "QJ1044"\n'
+                       '[lubricant]').replace(
+        'step_duration = "3 min"\naxial_load_steps = { start = "2 kN", stop = "6 kN", '
+        'step = "4 kN" }',
+        'steps = [{ duration = "1 min", axial_load = "2 kN" }, '
+        '{ duration = "3 min", axial_load = "6 kN" }]')
+    text = two + '[outputs]\nmode = "steady"\nwant = ["losses", "kinematics"]\n'
+    res = Simulation(loads_scene(text), progress=False).run()
+    per_step = res.tables["losses"].groupby("step")["power [W]"].sum()
+    out = summarize_scene(loads_scene(text).to_toml())
+    assert out["total loss [W]"] == pytest.approx(0.25 * per_step[0] + 0.75 * per_step[1],
+                                                  rel=1e-12)
+    assert out["max total loss [W]"] == pytest.approx(per_step.max(), rel=1e-12)
+    assert out["total loss de [W]"] + out["total loss nde [W]"] == pytest.approx(
+        out["total loss [W]"], rel=1e-12)
+    sources = [k for k in out if k.endswith("[W]") and not k.startswith(("total", "max"))]
+    assert sum(out[k] for k in sources) == pytest.approx(out["total loss [W]"], rel=1e-12)
+    assert out["steps over skid limit [-]"] == 0.0 and out["steps over stress limit [-]"] == 0
+    strict = summarize_scene(loads_scene(
+        text + '[checks]\nskid_limit = "0.01 %"\ncontact_stress_limit = "100 MPa"\n').to_toml())
+    # race control runs 2-4 % off the epicyclic cage speed: every step of both bearings
+    assert strict["steps over skid limit [-]"] == 4.0
+    assert strict["steps over stress limit [-]"] == 4.0
+    assert strict["total loss [W]"] == out["total loss [W]"]  # thresholds change no physics
+    assert isinstance(pd.Series(out).sum(), float)
+
+
+def test_sweep_summary_of_a_film_only_scene_gives_the_films():
+    from thermobearing.simulation import summarize_scene
+
+    """A film-only sweep case gives the film table's smallest central film and film
+    parameter (session 12: only the check extremes; the QJ1044 rows here are about 2.6 um
+    and Lambda about 25, as in test_film_scene_runs_no_kinematics_no_network)."""
+    out = summarize_scene(scene(["film"]).to_toml())
+    assert 1.0 < out["min central film [um]"] < 5.0
+    assert out["min film parameter [-]"] > 3.0
+    assert "total loss [W]" not in out and "max over-skidding [%]" not in out
