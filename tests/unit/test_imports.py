@@ -16,6 +16,8 @@ FIRST_IMPORTS = (
     "thermobearing.skidding.roller_dynamics_map",
     "thermobearing.skidding.ball_newton_kernels",
     "thermobearing.network.stepper_core",
+    "thermobearing.loads_arcs",
+    "thermobearing.loads_kernels",
 )
 
 
