@@ -189,11 +189,14 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
 
 
 def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
-                  components: Sequence[str]) -> bytes:
+                  components: Sequence[str],
+                  ranges: Mapping[str, tuple[float, float]] | None = None) -> bytes:
     """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17);
     a component whose table has one value of ``x`` or ``y`` is drawn as a curve over the
     other (a contour needs at least 2 x 2 points); missing combinations (a sweep still
-    running) are left blank."""
+    running) are left blank. ``ranges``: component -> (low, high) of its colour scale, so
+    that the maps of several slices of a sweep (one per value of a third parameter) share
+    one scale and can be compared by colour (default: each map its own range)."""
     n = len(components)
     cols = min(3, n)
     rows = math.ceil(n / cols)
@@ -219,8 +222,10 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
             continue
+        lo, hi = (ranges or {}).get(comp, (math.nan, math.nan))
+        levels = np.linspace(lo, hi, 13) if hi > lo else 12
         cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
-                         levels=12)
+                         levels=levels)
         fig.colorbar(cs, ax=ax)
         ax.set_xlabel(x, fontsize=8)
         ax.set_ylabel(y, fontsize=8)

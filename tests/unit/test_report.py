@@ -150,3 +150,29 @@ def test_sweep_report_keeps_the_sweeps_numeric_columns():
     out = _numeric_params(df, ["supply.flow", "supply.inlet_temperature"])
     assert list(out["supply.flow [L/min]"]) == [15.0, 30.0] and "supply.flow" not in out
     assert list(out["supply.inlet_temperature [degC]"]) == [35.0, 40.0]  # older summaries
+
+
+def test_loss_map_slices_share_one_colour_scale(monkeypatch):
+    """fig_loss_maps(ranges=...): the contour levels span the given range, so the maps of
+    the slices of a three-parameter sweep can be compared by colour (session 12: each map
+    had its own scale)."""
+    import matplotlib.axes
+    import numpy as np
+    import pandas as pd
+
+    from thermobearing.report import fig_loss_maps
+
+    seen = []
+    orig = matplotlib.axes.Axes.contourf
+
+    def spy(self, *args, **kw):
+        seen.append(kw.get("levels"))
+        return orig(self, *args, **kw)
+
+    monkeypatch.setattr(matplotlib.axes.Axes, "contourf", spy)
+    df = pd.DataFrame([{"q": q, "n": n, "churning [W]": q * n} for q in (15.0, 33.0)
+                       for n in (600.0, 1800.0)])
+    fig_loss_maps(df, "q", "n", ["churning [W]"], ranges={"churning [W]": (0.0, 1e5)})
+    assert np.allclose(seen[-1], np.linspace(0.0, 1e5, 13))
+    fig_loss_maps(df, "q", "n", ["churning [W]"])
+    assert seen[-1] == 12

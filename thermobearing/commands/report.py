@@ -105,11 +105,14 @@ def sweep_report(folder: Path) -> Path:
         x, y = numeric[:2]
         rest = [c for c in pcols if c not in (x, y)]
         slices = list(df.groupby(rest)) if rest else [((), df)]
+        # one colour scale per component across the slices (comparable by colour)
+        ranges = {c: (float(df[c].min()), float(df[c].max())) for c in losses
+                  if df[c].notna().any()}
         for key, sub in slices[:MAX_MAP_SLICES]:
             key = key if isinstance(key, tuple) else (key,)
             where = ", ".join(f"{c} = {v}" for c, v in zip(rest, key, strict=True))
             figs[f"loss maps ({where})" if where else "loss maps"] = \
-                fig_loss_maps(sub, x, y, losses)
+                fig_loss_maps(sub, x, y, losses, ranges=ranges)
         if len(slices) > MAX_MAP_SLICES:
             notes.append(f"loss maps drawn for the first {MAX_MAP_SLICES} of {len(slices)} "
                          f"combinations of {', '.join(rest)}; every case is in the summary")
