@@ -77,6 +77,12 @@ Example (issue 8's loop: simulate a slipping bearing, measure its cage speed bac
     est = S.estimate_cage_speed(r.acceleration_x, r.sampling_rate, 30.0, p.n_balls,
                                 p.theoretical_cage_speed_ratio)
     est.csr, est.slip  # 0.3383, 0.080 ((1 - 0.08) x 0.3677)
+
+Modules: :mod:`thermobearing.vibration_params` (parameter set, traction table),
+:mod:`thermobearing.vibration_kernels` (compiled right-hand side and integrators),
+:mod:`thermobearing.vibration_results` (result type, statistics, spectrum); this module keeps
+the stability estimate and the drivers :func:`simulate` / :func:`simulate_with_skidding` and
+re-exports the names of all three.
 """
 
 from __future__ import annotations
@@ -84,18 +90,47 @@ from __future__ import annotations
 import math
 import time
 import warnings
-from dataclasses import dataclass, field, fields
-from typing import Any, NamedTuple
+from dataclasses import dataclass
+from typing import Any
 
-import numba
 import numpy as np
 
-from .errors import (
-    InputError,
-    UnknownNameError,
-    ValidityWarning,
-    check_positive,
-    check_range,
+from .errors import InputError, ValidityWarning, check_positive, check_range
+
+# split modules (names re-exported: callers import them from here)
+from .vibration_kernels import (  # noqa: F401
+    _C,
+    _CB,
+    _CF,
+    _COSA,
+    _D,
+    _DM,
+    _FYS,
+    _J,
+    _KI,
+    _KO,
+    _MI,
+    _MR,
+    _PD,
+    _UNB,
+    _W,
+    _WC,
+    _WS,
+    _Z,
+    _integrate,
+    _loads,
+    _mu_signed,
+    _rhs,
+    _spin_flow,
+    _spin_sub,
+    _torque,
+)
+from .vibration_params import VibrationParameters, paper004_parameters, traction_table
+from .vibration_results import (
+    VibrationResult,
+    VibrationStatistics,
+    amplitude_spectrum,
+    statistics,
 )
 
 __all__ = [
@@ -114,483 +149,6 @@ __all__ = [
 ]
 
 METHODS = ("auto", "split", "rk4")
-
-
-# ---------------------------------------------------------------------------
-# parameters
-# ---------------------------------------------------------------------------
-@dataclass(frozen=True)
-class VibrationParameters:
-    """Parameters of the lumped model (SI).
-
-    Attributes
-    ----------
-    n_balls : Z. ball_diameter : D [m]. pitch_diameter : d_m [m].
-    contact_angle : alpha [rad] (kinematics only; paper 004: 0).
-    radial_clearance : P_d of paper 004 eqs. 13-14 [m]: the total radial play, split
-        equally between the inner and the outer contact.
-    inner_stiffness, outer_stiffness : K_i, K_o [N/m^1.5] (Q = K delta^1.5).
-    inner_ring_mass : m_i [kg] (with the shaft). ball_mass : m_r [kg].
-    ball_inertia : J_r [kg m^2].
-    support_damping : c of the ring [N s/m]. ball_damping : c of the ball radial motion
-        [N s/m] (paper 004 uses the same c).
-    ball_diameter_deviation : per-ball D_j - D [m] (empty: all nominal).
-    unbalance : m_u e of the rotor [kg m] (a force m_u e omega_s^2 rotating with the shaft).
-    centrifugal : include m_r omega_c^2 d_m/2 on the balls (paper 004 neglects it).
-    source : where the values come from.
-    """
-
-    n_balls: int
-    ball_diameter: float
-    pitch_diameter: float
-    radial_clearance: float
-    inner_stiffness: float
-    outer_stiffness: float
-    inner_ring_mass: float
-    ball_mass: float
-    ball_inertia: float
-    support_damping: float
-    ball_damping: float
-    contact_angle: float = 0.0
-    ball_diameter_deviation: tuple[float, ...] = ()
-    unbalance: float = 0.0
-    centrifugal: bool = False
-    source: str = ""
-
-    def __post_init__(self) -> None:
-        if int(self.n_balls) != self.n_balls or self.n_balls < 3:
-            raise InputError("vibration.n_balls", self.n_balls, "an integer >= 3")
-        for name in ("ball_diameter", "pitch_diameter", "inner_stiffness", "outer_stiffness",
-                     "inner_ring_mass", "ball_mass", "ball_inertia"):
-            check_positive(f"vibration.{name}", getattr(self, name))
-        for name in ("radial_clearance", "support_damping", "ball_damping", "unbalance"):
-            check_positive(f"vibration.{name}", getattr(self, name), allow_zero=True)
-        check_range("vibration.contact_angle", self.contact_angle, 0.0, math.pi / 2,
-                    high_inclusive=False, unit="rad")
-        if self.ball_diameter >= self.pitch_diameter:
-            raise InputError("vibration.ball_diameter", self.ball_diameter,
-                             f"less than the pitch diameter {self.pitch_diameter:g} m")
-        dev = tuple(float(v) for v in self.ball_diameter_deviation)
-        if dev and len(dev) != self.n_balls:
-            raise InputError("vibration.ball_diameter_deviation", len(dev),
-                             f"{self.n_balls} values (one per ball) or none")
-        for v in dev:
-            if not math.isfinite(v) or abs(v) > 0.01 * self.ball_diameter:
-                raise InputError("vibration.ball_diameter_deviation", v,
-                                 "finite deviations below 1 % of the ball diameter")
-        object.__setattr__(self, "ball_diameter_deviation", dev)
-
-    @property
-    def gamma(self) -> float:
-        """D cos(alpha)/d_m [-]."""
-        return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
-
-    @property
-    def theoretical_cage_speed_ratio(self) -> float:
-        """(1 - gamma)/2, paper 004 eq. 1 (outer ring fixed)."""
-        return 0.5 * (1.0 - self.gamma)
-
-    def ball_pass_frequency_outer(self, shaft_speed_hz: float, cage_slip: float = 0.0) -> float:
-        """f_bpo = Z (1 - s_c)(1 - gamma) f_s / 2 [Hz], paper 004 eq. 27."""
-        return self.n_balls * (1.0 - cage_slip) * self.theoretical_cage_speed_ratio * (
-            shaft_speed_hz)
-
-    @classmethod
-    def from_bearing(cls, bearing: Any, *, inner_ring_mass: float, support_damping: float,
-                     ball_damping: float | None = None, radial_clearance: float | None = None,
-                     contact_angle: float = 0.0, ball_inertia: float | None = None,
-                     **extra: Any) -> VibrationParameters:
-        """Parameters of a :class:`thermobearing.geometry.BallBearing`.
-
-        K_i, K_o from :func:`thermobearing.hertz.point_contact_stiffness` with the reduced
-        radii of ``bearing.curvature(race, contact_angle)`` and ``bearing.effective_modulus``
-        (Harris & Kotzalas 2007 / Hamrock & Brewe 1983, as ref. [33] of paper 004 says).
-        ``radial_clearance`` defaults to half the diametral clearance.
-        """
-        from .hertz import point_contact_stiffness
-
-        if not hasattr(bearing, "n_balls"):
-            raise InputError("bearing", getattr(bearing, "name", type(bearing).__name__),
-                             "a ball bearing (paper 004's model has Hertz point contacts and "
-                             "ball spins; a roller bearing is not modelled)")
-        from_geometry = ("n_balls", "ball_diameter", "pitch_diameter", "inner_stiffness",
-                         "outer_stiffness", "ball_mass", "source")
-        known = [f.name for f in fields(cls) if f.name not in from_geometry]
-        for key, value in extra.items():
-            if key in from_geometry:
-                raise InputError(f"vibration.{key}", value, "nothing: it follows from the "
-                                 "bearing geometry (change the bearing or its overrides)")
-            if key not in known:
-                raise UnknownNameError(f"vibration.{key}", key, known)
-        ki = float(point_contact_stiffness(*bearing.curvature("inner", contact_angle),
-                                           bearing.effective_modulus))
-        ko = float(point_contact_stiffness(*bearing.curvature("outer", contact_angle),
-                                           bearing.effective_modulus))
-        return cls(
-            n_balls=int(bearing.n_balls), ball_diameter=float(bearing.ball_diameter),
-            pitch_diameter=float(bearing.pitch_diameter),
-            radial_clearance=(0.5 * bearing.diametral_clearance if radial_clearance is None
-                              else float(radial_clearance)),
-            inner_stiffness=ki, outer_stiffness=ko, inner_ring_mass=float(inner_ring_mass),
-            ball_mass=float(bearing.ball_mass),
-            ball_inertia=float(bearing.ball_inertia if ball_inertia is None else ball_inertia),
-            support_damping=float(support_damping),
-            ball_damping=float(support_damping if ball_damping is None else ball_damping),
-            contact_angle=float(contact_angle), source=f"bearing {bearing.name}", **extra)
-
-
-def paper004_parameters(**overrides: Any) -> VibrationParameters:
-    """SKF 6304 with paper 004 Table 1: m_i = 0.4 kg, J_r = 3.18e-8 kg m^2, c = 350 N s/m,
-    P_d = 15 um, alpha = 0, D = 9.525 mm, d_m = 36 mm, Z = 7, E = 207 GPa, nu = 0.3.
-
-    Geometry, conformities and stiffness come from the ``SKF6304`` preset of
-    :func:`thermobearing.geometry.load_bearing` (the paper gives no groove radii); Table 1
-    values override the preset where the paper gives them.
-    """
-    from .geometry import load_bearing
-
-    bearing = load_bearing("SKF6304")
-    kw: dict[str, Any] = dict(inner_ring_mass=0.4, support_damping=350.0,
-                              radial_clearance=15e-6, contact_angle=0.0, ball_inertia=3.18e-8)
-    kw.update(overrides)
-    p = VibrationParameters.from_bearing(bearing, **kw)
-    if abs(p.ball_diameter - 9.525e-3) > 1e-9 or abs(p.pitch_diameter - 36e-3) > 1e-9 or (
-            p.n_balls != 7):
-        raise InputError("SKF6304 preset", (p.ball_diameter, p.pitch_diameter, p.n_balls),
-                         "paper 004 Table 1: D = 9.525 mm, d_m = 36 mm, Z = 7")
-    return p
-
-
-# ---------------------------------------------------------------------------
-# traction law -> piecewise-linear table used by the compiled kernel
-# ---------------------------------------------------------------------------
-def traction_table(law: Any, max_speed: float, n: int = 96) -> tuple[np.ndarray, np.ndarray]:
-    """Nodes (|dv| [m/s], mu [-]) of a pressure-independent traction law.
-
-    The law must offer ``coefficient(slide_speed)`` (``linear_saturating``,
-    ``four_parameter`` of :mod:`thermobearing.traction`); laws that need a film and a
-    temperature (``eyring_limiting_shear``) are refused: paper 004's lumped model has no
-    film. ``linear_saturating`` is represented exactly by the nodes (0, dv_m); other laws
-    by ``n`` nodes (denser at small slip) up to ``max_speed`` and constant beyond.
-    """
-    if getattr(law, "requires_film", False) or not hasattr(law, "coefficient"):
-        raise InputError("vibration.traction", type(law).__name__,
-                         "a pressure-independent law with coefficient(dv) "
-                         "(linear_saturating or four_parameter)")
-    vm = getattr(law, "slip_speed_max", None)
-    if type(law).__name__ == "LinearSaturatingTraction" and vm is not None:
-        nodes = np.array([0.0, float(vm)])
-    else:
-        nodes = np.unique(np.concatenate([[0.0], np.geomspace(1e-4, max_speed, n - 1)]))
-    mu = np.asarray(law.coefficient(nodes), dtype=float)
-    if not np.all(np.isfinite(mu)) or np.any(mu < 0):
-        raise InputError("vibration.traction", type(law).__name__, "finite mu >= 0")
-    return nodes.astype(float), mu
-
-
-# ---------------------------------------------------------------------------
-# compiled kernel
-# ---------------------------------------------------------------------------
-# P layout
-_Z, _D, _DM, _COSA, _PD, _KI, _KO, _MI, _MR, _J, _C, _CB, _WS, _WC, _W, _UNB, _CF, _FYS = range(18)
-
-
-@numba.njit(cache=True)
-def _mu_signed(v, tv, tmu):
-    a = abs(v)
-    n = tv.size
-    if a >= tv[n - 1]:
-        m = tmu[n - 1]
-    else:
-        lo = 0
-        hi = n - 1
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if tv[mid] <= a:
-                lo = mid
-            else:
-                hi = mid
-        m = tmu[lo] + (tmu[hi] - tmu[lo]) * (a - tv[lo]) / (tv[hi] - tv[lo])
-    if v > 0.0:
-        return m
-    if v < 0.0:
-        return -m
-    return 0.0
-
-
-@numba.njit(cache=True)
-def _loads(t, y, P, dev, qi, qo, cth, sth):
-    """Contact loads (eqs. 11-16) and cos/sin of the ball angles (eq. 12, by recurrence)."""
-    z = int(P[_Z])
-    half = 0.5 * P[_PD]
-    c = math.cos(P[_WC] * t)
-    s = math.sin(P[_WC] * t)
-    dc = math.cos(2.0 * math.pi / z)
-    ds = math.sin(2.0 * math.pi / z)
-    for j in range(z):
-        cth[j] = c
-        sth[j] = s
-        dr = y[0] * c + y[1] * s
-        d = y[4 + j]
-        din = dr - d - half + 0.5 * dev[j]
-        dout = d - half + 0.5 * dev[j]
-        qi[j] = P[_KI] * din * math.sqrt(din) if din > 0.0 else 0.0
-        qo[j] = P[_KO] * dout * math.sqrt(dout) if dout > 0.0 else 0.0
-        c, s = c * dc - s * ds, s * dc + c * ds
-
-
-@numba.njit(cache=True)
-def _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, dy):
-    """Full right-hand side; also leaves the contact loads in qi, qo."""
-    z = int(P[_Z])
-    ws = P[_WS]
-    wc = P[_WC]
-    gam = P[_D] * P[_COSA] / P[_DM]
-    r = 0.5 * P[_D] * P[_COSA]
-    ai = 0.5 * (ws - wc) * P[_DM] * (1.0 - gam)
-    ao = 0.5 * wc * P[_DM] * (1.0 + gam)
-    _loads(t, y, P, dev, qi, qo, cth, sth)
-    fx = P[_W] - P[_C] * y[2]
-    fy = -P[_C] * y[3]
-    if P[_UNB] != 0.0:
-        fx += P[_UNB] * ws * ws * math.cos(ws * t)
-        fy += P[_UNB] * ws * ws * math.sin(ws * t)
-    cf = P[_CF] * P[_MR] * wc * wc * 0.5 * P[_DM]
-    for j in range(z):
-        c = cth[j]
-        s = sth[j]
-        w = y[4 + 2 * z + j]
-        fin = qi[j] * _mu_signed(ai - r * w, tv, tmu) if qi[j] > 0.0 else 0.0
-        fout = qo[j] * _mu_signed(ao - r * w, tv, tmu) if qo[j] > 0.0 else 0.0
-        fx += -qi[j] * c + fin * s
-        fy += -qi[j] * s - P[_FYS] * fin * c  # P[_FYS] = 1 (consistent) or -1 (eq20_as_text)
-        dy[4 + j] = y[4 + z + j]
-        dy[4 + z + j] = (qi[j] - qo[j] + cf - P[_CB] * y[4 + z + j]) / P[_MR]
-        dy[4 + 2 * z + j] = 0.5 * P[_D] * (fin + fout) / P[_J]
-    dy[0] = y[2]
-    dy[1] = y[3]
-    dy[2] = fx / P[_MI]
-    dy[3] = fy / P[_MI]
-
-
-@numba.njit(cache=True)
-def _torque(w, a_i, a_o, q_i, q_o, r, half_d, tv, tmu):
-    return half_d * (q_i * _mu_signed(a_i - r * w, tv, tmu)
-                     + q_o * _mu_signed(a_o - r * w, tv, tmu))
-
-
-@numba.njit(cache=True)
-def _spin_flow(w0, tau, a_i, a_o, q_i, q_o, r, half_d, jr, tv, tmu):
-    """Exact solution of J w' = T(w) over tau with frozen loads (T piecewise linear)."""
-    if q_i <= 0.0 and q_o <= 0.0:
-        return w0
-    w = w0
-    rem = tau
-    for _ in range(4 * tv.size + 16):
-        t0 = _torque(w, a_i, a_o, q_i, q_o, r, half_d, tv, tmu)
-        if t0 == 0.0 or rem <= 0.0:
-            return w
-        direction = 1.0 if t0 > 0.0 else -1.0
-        # nearest kink of T ahead: w where a contact's sliding speed a - r w = +-tv[k]
-        bp = math.inf
-        dist = math.inf
-        eps = 1e-12 * (abs(w) + 1.0)
-        for k in range(tv.size):
-            for m in range(4):
-                if m < 2:
-                    if q_i <= 0.0:
-                        continue
-                    wb = (a_i - tv[k]) / r if m == 0 else (a_i + tv[k]) / r
-                else:
-                    if q_o <= 0.0:
-                        continue
-                    wb = (a_o - tv[k]) / r if m == 2 else (a_o + tv[k]) / r
-                dd = (wb - w) * direction
-                if eps < dd < dist:
-                    dist = dd
-                    bp = wb
-        probe = w + direction * (0.5 * dist if dist < math.inf else 1.0)
-        b = (_torque(probe, a_i, a_o, q_i, q_o, r, half_d, tv, tmu) - t0) / (probe - w)
-        if b == 0.0:
-            t_bp = jr * dist / abs(t0) if dist < math.inf else math.inf
-            if t_bp >= rem:
-                return w + t0 * rem / jr
-            w = bp
-            rem -= t_bp
-            continue
-        wstar = w - t0 / b  # root of the segment's line
-        if b < 0.0 and (wstar - w) * direction <= dist:
-            return wstar + (w - wstar) * math.exp(b * rem / jr)
-        ratio = (bp - wstar) / (w - wstar) if dist < math.inf else math.inf
-        t_bp = jr / b * math.log(ratio) if ratio > 0.0 and ratio < math.inf else math.inf
-        if t_bp >= rem or t_bp <= 0.0:
-            return wstar + (w - wstar) * math.exp(b * rem / jr)
-        w = bp
-        rem -= t_bp
-    return w
-
-
-@numba.njit(cache=True)
-def _spin_sub(t, y, tau, P, dev, tv, tmu, qi, qo, cth, sth):
-    """Spin sub-flow over tau with the loads of (t, y) frozen."""
-    z = int(P[_Z])
-    ws = P[_WS]
-    wc = P[_WC]
-    gam = P[_D] * P[_COSA] / P[_DM]
-    r = 0.5 * P[_D] * P[_COSA]
-    ai = 0.5 * (ws - wc) * P[_DM] * (1.0 - gam)
-    ao = 0.5 * wc * P[_DM] * (1.0 + gam)
-    _loads(t, y, P, dev, qi, qo, cth, sth)
-    for j in range(z):
-        k = 4 + 2 * z + j
-        y[k] = _spin_flow(y[k], tau, ai, ao, qi[j], qo[j], r, 0.5 * P[_D], P[_J], tv, tmu)
-
-
-@numba.njit(cache=True)
-def _integrate(method, y, t0, h, sub, n_out, P, dev, tv, tmu, ax, ay, xs, ys, q0, f0):
-    """Advance y in place; record n_out samples every `sub` steps of size h.
-
-    method 0: RK4 on all equations. method 1: Strang splitting, spin(h/2) - mechanics RK4(h)
-    - spin(h/2); the two spin half-flows that meet between steps inside an output interval
-    use the same frozen loads and are merged into one flow over h (exactly equivalent).
-    """
-    n = y.size
-    z = int(P[_Z])
-    nmech = 4 + 2 * z
-    m = nmech if method == 1 else n
-    k1 = np.empty(n)
-    k2 = np.empty(n)
-    k3 = np.empty(n)
-    k4 = np.empty(n)
-    tmp = np.empty(n)
-    dy = np.empty(n)
-    qi = np.empty(z)
-    qo = np.empty(z)
-    cth = np.empty(z)
-    sth = np.empty(z)
-    t = t0
-    evals = 0
-    gam = P[_D] * P[_COSA] / P[_DM]
-    r = 0.5 * P[_D] * P[_COSA]
-    ai = 0.5 * (P[_WS] - P[_WC]) * P[_DM] * (1.0 - gam)
-    for i in range(n_out):
-        _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, dy)
-        evals += 1
-        ax[i] = dy[2]
-        ay[i] = dy[3]
-        xs[i] = y[0]
-        ys[i] = y[1]
-        q0[i] = qi[0]
-        f0[i] = qi[0] * _mu_signed(ai - r * y[4 + 2 * z], tv, tmu)
-        for step in range(sub):
-            if method == 1:
-                _spin_sub(t, y, 0.5 * h if step == 0 else h, P, dev, tv, tmu, qi, qo, cth,
-                          sth)
-            _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, k1)
-            for q in range(m):
-                tmp[q] = y[q] + 0.5 * h * k1[q]
-            for q in range(m, n):
-                tmp[q] = y[q]
-            _rhs(t + 0.5 * h, tmp, P, dev, tv, tmu, qi, qo, cth, sth, k2)
-            for q in range(m):
-                tmp[q] = y[q] + 0.5 * h * k2[q]
-            _rhs(t + 0.5 * h, tmp, P, dev, tv, tmu, qi, qo, cth, sth, k3)
-            for q in range(m):
-                tmp[q] = y[q] + h * k3[q]
-            _rhs(t + h, tmp, P, dev, tv, tmu, qi, qo, cth, sth, k4)
-            for q in range(m):
-                y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
-            evals += 4
-            t += h
-        if method == 1:
-            _spin_sub(t, y, 0.5 * h, P, dev, tv, tmu, qi, qo, cth, sth)
-    return evals
-
-
-# ---------------------------------------------------------------------------
-# results and statistics
-# ---------------------------------------------------------------------------
-class VibrationStatistics(NamedTuple):
-    """Statistical indicators of an acceleration record (paper 004 section 4.3)."""
-
-    ptp: float  #: peak-to-peak [m/s^2]
-    rms: float  #: root mean square [m/s^2]
-    kurtosis: float  #: Pearson kurtosis [-] (3 for Gaussian)
-
-
-def statistics(acceleration: Any) -> VibrationStatistics:
-    """Peak-to-peak, RMS and kurtosis of a record (paper 004 section 4.3, Table 2).
-
-    PTP = max - min; RMS = sqrt(mean(a^2)) (about zero, as a vibration level);
-    kurtosis = mean((a - mean)^4) / var^2 (Pearson's, 3 for a Gaussian signal).
-    """
-    a = np.asarray(acceleration, dtype=float)
-    if a.ndim != 1 or a.size < 4 or not np.all(np.isfinite(a)):
-        raise InputError("acceleration", f"shape {a.shape}", "a finite 1-D record")
-    d = a - a.mean()
-    var = float(np.mean(d * d))
-    if var <= 0.0:
-        raise InputError("acceleration", "a constant record", "a varying record")
-    return VibrationStatistics(float(a.max() - a.min()), float(np.sqrt(np.mean(a * a))),
-                               float(np.mean(d**4) / var**2))
-
-
-def amplitude_spectrum(x: Any, sampling_rate: float) -> tuple[np.ndarray, np.ndarray]:
-    """One-sided amplitude spectrum (Hann window, amplitude-corrected): (f [Hz], |A|)."""
-    a = np.asarray(x, dtype=float)
-    a = a - a.mean()
-    w = np.hanning(a.size)
-    spec = np.abs(np.fft.rfft(a * w)) * 2.0 / w.sum()
-    return np.fft.rfftfreq(a.size, 1.0 / sampling_rate), spec
-
-
-@dataclass(frozen=True)
-class VibrationResult:
-    """Time series of one simulation (after the settling time).
-
-    Attributes
-    ----------
-    time : [s] (from the start of the simulation). sampling_rate : output rate [Hz].
-    acceleration_x, acceleration_y : inner-ring acceleration [m/s^2] (x along the load).
-    displacement_x, displacement_y : inner-ring displacement [m].
-    first_ball_inner_load, first_ball_inner_friction : Q_in and F_in of ball 1 [N].
-    shaft_speed, cage_speed : [rad/s]; cage_slip : s_c [-].
-    method, step : integrator and its step [s]; rhs_evaluations; wall_time [s].
-    parameters : the :class:`VibrationParameters`.
-    """
-
-    time: np.ndarray
-    sampling_rate: float
-    acceleration_x: np.ndarray
-    acceleration_y: np.ndarray
-    displacement_x: np.ndarray
-    displacement_y: np.ndarray
-    first_ball_inner_load: np.ndarray
-    first_ball_inner_friction: np.ndarray
-    shaft_speed: float
-    cage_speed: float
-    cage_slip: float
-    radial_load: float
-    method: str
-    step: float
-    rhs_evaluations: int
-    wall_time: float
-    parameters: VibrationParameters = field(repr=False)
-
-    @property
-    def statistics_x(self) -> VibrationStatistics:
-        """PTP, RMS, kurtosis of the x acceleration (paper 004 Table 2)."""
-        return statistics(self.acceleration_x)
-
-    @property
-    def ball_pass_frequency_outer(self) -> float:
-        """Z omega_c / 2 pi [Hz] of this run (paper 004 eq. 27)."""
-        return self.parameters.n_balls * self.cage_speed / (2.0 * math.pi)
-
-    def spectrum(self, component: str = "x") -> tuple[np.ndarray, np.ndarray]:
-        """Amplitude spectrum of the ring acceleration ("x" or "y")."""
-        a = self.acceleration_x if component == "x" else self.acceleration_y
-        return amplitude_spectrum(a, self.sampling_rate)
 
 
 @dataclass(frozen=True)

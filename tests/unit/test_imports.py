@@ -18,6 +18,9 @@ FIRST_IMPORTS = (
     "thermobearing.network.stepper_core",
     "thermobearing.loads_arcs",
     "thermobearing.loads_kernels",
+    "thermobearing.vibration_params",
+    "thermobearing.vibration_kernels",
+    "thermobearing.vibration_results",
 )
 
 
