@@ -21,6 +21,10 @@ FIRST_IMPORTS = (
     "thermobearing.vibration_params",
     "thermobearing.vibration_kernels",
     "thermobearing.vibration_results",
+    "thermobearing.calibrate_params",
+    "thermobearing.calibrate_model",
+    "thermobearing.calibrate_result",
+    "thermobearing.calibrate_synthetic",
 )
 
 
