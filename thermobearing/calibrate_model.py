@@ -22,7 +22,6 @@ import pandas as pd
 from .calibrate_params import FitParameter, _apply
 from .errors import ConvergenceError, InputError
 from .scene import Scene
-from .scene_checks import check_measured_file
 
 __all__ = ["measured_table", "predicted_temperatures"]
 
@@ -39,15 +38,17 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
         if node not in nodes:
             raise InputError(f"measured.columns[{col!r}]", node,
                              "a node of the scene's network: " + ", ".join(nodes))
-    check_measured_file(scene)  # text cells, times going backwards: named InputErrors
+    # one reader (thermobearing.measured): text cells, times going backwards, unreadable
+    # times are named InputErrors there; empty cells and dropout flags come back as NaN
     df = read_measured(scene)
-    for col in ["time [s]", *scene.measured.columns]:
+    for col in scene.measured.columns:
         vals = df[col].to_numpy(dtype=float)
         bad = np.flatnonzero(~np.isfinite(vals))
         if bad.size:
-            name = scene.measured.time_column if col == "time [s]" else col
-            raise InputError(f"measured column {name!r}", f"row {int(bad[0]) + 1}: "
-                             f"{vals[bad[0]]}", "finite numbers (no gaps, NaN or inf)")
+            raise InputError(f"measured column {col!r}", f"row {int(bad[0]) + 1}: a gap "
+                             f"(empty cell or dropout flag; {bad.size} in this column)",
+                             "finite numbers in every row (the fit needs every sample: cut "
+                             "the rows or leave the sensor out of measured.columns)")
     return df
 
 

@@ -48,7 +48,8 @@ def _png(fig: plt.Figure) -> bytes:
 def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
                        column_map: Mapping[str, str]) -> pd.DataFrame:
     """Per-sensor RMSE and max |error| [K] of the predicted node temperature at the
-    measured times (linear interpolation in time).
+    measured times (linear interpolation in time; measured gaps -- NaN -- and samples
+    outside the run are left out, ``points`` counts the samples used).
 
     ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
     and one column per sensor in degC; ``column_map`` maps sensor -> node.
@@ -60,9 +61,11 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
         if col not in temps or sensor not in measured:
             continue
         t = measured["time [s]"].to_numpy()
-        inside = (t >= t_model[0]) & (t <= t_model[-1])
+        values = measured[sensor].to_numpy(dtype=float)
+        # samples outside the run and gaps (empty cells, dropout flags: NaN) are left out
+        inside = (t >= t_model[0]) & (t <= t_model[-1]) & np.isfinite(values)
         pred = np.interp(t[inside], t_model, temps[col].to_numpy())
-        err = pred - measured[sensor].to_numpy()[inside]
+        err = pred - values[inside]
         if err.size == 0:
             continue
         rows.append({"sensor": sensor, "node": node,
@@ -369,11 +372,14 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
 
 # ---------------------------------------------------------------------------
 def read_measured(scene: Any) -> pd.DataFrame | None:
-    """The scene's measured temperatures as ``time [s]`` + one degC column per sensor.
+    """The scene's measured temperatures as ``time [s]`` + one degC column per sensor
+    (NaN where the logger wrote an empty cell or a dropout flag), read by
+    :func:`thermobearing.measured.read_measured_file` (the formats are listed there).
 
-    Raises InputError when a mapped column is missing from the file."""
+    Raises InputError when the file or a mapped column is missing, a time does not
+    increase, or a cell is not readable (the error names the column, row and value)."""
     from .errors import InputError
-    from .units import to_si
+    from .measured import read_measured_file
 
     m = scene.measured
     if m is None:
@@ -381,25 +387,8 @@ def read_measured(scene: Any) -> pd.DataFrame | None:
     path = scene.resolve_path(m.file)
     if not path.is_file():
         raise InputError("measured.file", m.file, "an existing CSV file")
-    df = pd.read_csv(path, comment="#")
-    if m.time_column not in df:
-        raise InputError("measured.time_column", m.time_column,
-                         "a column of the file: " + ", ".join(df.columns))
-    for col in m.columns:
-        if col not in df:
-            raise InputError(f"measured.columns[{col!r}]", col,
-                             "a column of the file: " + ", ".join(df.columns))
-    unit = m.time_column.partition("[")[2].rstrip("] ") or "s"
-    out = pd.DataFrame({"time [s]": df[m.time_column].astype(float)
-                        * to_si(f"1 {unit}", "time", field="measured.time_column")})
-    for col in m.columns:
-        values = df[col].astype(float).to_numpy()
-        if m.unit == "K":
-            values = values - 273.15
-        elif m.unit == "degF":
-            values = (values - 32.0) * 5.0 / 9.0
-        out[col] = values
-    return out
+    return read_measured_file(path, m.time_column, m.columns, m.unit,
+                              time_zero=getattr(m, "time_zero", None))
 
 
 def attach_figures(results: Results, scene: Any) -> None:

@@ -69,17 +69,19 @@ Layout (every table optional unless marked)::
     contact_stress_limit = "3500 MPa"  # or { ball = ..., self_aligning_ball = ..., roller = ... }
     min_film_parameter = 1.5           # Lambda [-]; default 1 (boundary lubrication)
 
-    [measured]
-    file = "rig.csv"
-    time_column = "time [min]"
+    [measured]                         # a rig's thermocouple file (measured.py: ; or tab,
+    file = "rig.csv"                   # decimal commas, metadata and units rows, timestamps,
+    time_column = "time [min]"         # hh:mm:ss, dropout flags such as OVL or ----)
     unit = "degC"
     columns = { "T_outer_DE" = "drive_end.housing" }
+    # time_zero = "2026-11-23 10:00:00"  # t = 0 in the time column's format, or "first"
 """
 
 from __future__ import annotations
 
 import copy
 import csv
+import datetime
 import math
 import tomllib
 from collections.abc import Mapping, Sequence
@@ -394,28 +396,48 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
 
 @dataclass(frozen=True)
 class Measured:
-    """Measured temperatures: a CSV with a time column and a column -> node map."""
+    """Measured temperatures: a rig's thermocouple file with a time column and a
+    column -> node map (formats: :func:`thermobearing.measured.read_measured_file`).
+
+    ``time_zero``: the instant of the scene's t = 0 in the time column's own format (a
+    timestamp, ``hh:mm:ss`` or a number in the column's unit) or ``"first"`` (the first
+    row); None: the first row for timestamps, the values as they are otherwise.
+    """
 
     file: str
     columns: Mapping[str, str]
     time_column: str = "time [min]"
     unit: str = "degC"
+    time_zero: str | None = None
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Measured:
-        _check_keys("measured", data, ("file", "columns", "time_column", "unit"))
+        _check_keys("measured", data, ("file", "columns", "time_column", "unit", "time_zero"))
         unit = data.get("unit", "degC")
         if unit not in ("degC", "K", "degF"):
             raise InputError("measured.unit", unit, "degC, K or degF")
         cols = data.get("columns")
         if not isinstance(cols, Mapping) or not cols:
             raise InputError("measured.columns", cols, "a table of CSV column -> node name")
+        zero = data.get("time_zero")
+        if isinstance(zero, datetime.datetime | datetime.time):  # an unquoted TOML time
+            zero = zero.isoformat(sep=" ") if isinstance(zero, datetime.datetime) \
+                else zero.isoformat()
+        if zero is not None and (not isinstance(zero, str | int | float)
+                                 or isinstance(zero, bool) or not str(zero).strip()):
+            raise InputError("measured.time_zero", zero, "\"first\" or a time in the format "
+                             "of the file's time column (\"2026-11-23 10:00:00\", "
+                             "\"00:05:00\", 5)")
         return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
-                   time_column=str(data.get("time_column", "time [min]")), unit=unit)
+                   time_column=str(data.get("time_column", "time [min]")), unit=unit,
+                   time_zero=None if zero is None else str(zero).strip())
 
     def to_dict(self) -> dict[str, Any]:
-        return {"file": self.file, "columns": dict(self.columns),
-                "time_column": self.time_column, "unit": self.unit}
+        out = {"file": self.file, "columns": dict(self.columns),
+               "time_column": self.time_column, "unit": self.unit}
+        if self.time_zero is not None:
+            out["time_zero"] = self.time_zero
+        return out
 
 
 @dataclass(frozen=True)

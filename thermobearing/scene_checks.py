@@ -54,14 +54,17 @@ def check_model_names(scene: Scene) -> None:
 
 
 def check_measured_file(scene: Scene) -> None:
-    """Validate the data of the scene's ``[measured]`` CSV before a run or a fit reads it.
+    """Validate the data of the scene's ``[measured]`` file before a run or a fit reads it.
 
-    The file must exist; the time column and every mapped column must be in it; every
-    non-empty cell of those columns must be a number (empty cells are gaps, allowed here:
-    calibration refuses them itself); times must be finite and strictly increasing. The
-    error names the column, the row (1 = first data row) and the value.
+    The file must exist and be readable by
+    :func:`thermobearing.measured.read_measured_file` (the one reader; the formats are
+    listed there): the time column and every mapped column in its header row, every
+    non-empty cell of the mapped columns a number or a dropout flag (``OVL``, ``----``:
+    gaps, like empty cells; calibration refuses gaps itself), every time readable and the
+    times strictly increasing. The error names the column, the row (1 = first data row)
+    and the value.
     """
-    import pandas as pd
+    from .measured import read_measured_file
 
     m = scene.measured
     if m is None:
@@ -69,35 +72,8 @@ def check_measured_file(scene: Scene) -> None:
     path = scene.resolve_path(m.file)
     if not path.is_file():
         raise InputError("measured.file", m.file, f"an existing CSV file (looked at {path})")
-    try:
-        df = pd.read_csv(path, comment="#", dtype=str, keep_default_na=False)
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as exc:
-        raise InputError("measured.file", m.file, f"a readable CSV file ({exc})") from None
-    if m.time_column not in df:
-        raise InputError("measured.time_column", m.time_column,
-                         "a column of the file: " + ", ".join(map(str, df.columns)))
-    for col in m.columns:
-        if col not in df:
-            raise InputError(f"measured.columns[{col!r}]", col,
-                             "a column of the file: " + ", ".join(map(str, df.columns)))
-    for col in [m.time_column, *m.columns]:
-        text = df[col].str.strip()
-        values = pd.to_numeric(text, errors="coerce")
-        bad = (values.isna() & (text != "")) | (text.str.lower().isin(("nan", "inf", "-inf")))
-        if col == m.time_column:
-            bad = bad | (text == "")
-        if bad.any():
-            row = int(bad.to_numpy().nonzero()[0][0])
-            raise InputError(f"measured column {col!r}", f"row {row + 1}: {df[col].iloc[row]!r}",
-                             "a number in every row" if col == m.time_column
-                             else "numbers (an empty cell is a gap)")
-    t = pd.to_numeric(df[m.time_column].str.strip()).to_numpy(dtype=float)
-    steps = t[1:] - t[:-1]
-    if steps.size and not (steps > 0).all():
-        row = int((steps <= 0).nonzero()[0][0]) + 1
-        raise InputError(f"measured column {m.time_column!r}",
-                         f"row {row + 1}: {t[row]:g} after {t[row - 1]:g}",
-                         "strictly increasing times")
+    read_measured_file(path, m.time_column, m.columns, m.unit,
+                       time_zero=getattr(m, "time_zero", None))
 
 
 def check_network(network: Mapping[str, Any], require: bool = True) -> None:

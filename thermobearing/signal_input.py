@@ -3,6 +3,9 @@
 One job: turn a ``.npy``/``.npz``/``.csv`` file or an array into a checked, uniformly
 sampled record (:class:`AccelerationRecord`, :func:`load_acceleration`,
 :func:`check_signal`) for the envelope analysis of :mod:`thermobearing.signal`.
+The layout detection of delimited DAQ exports (:func:`read_text_lines`,
+:func:`guess_separator`, :func:`guess_decimal_mark`, :func:`split_cells`,
+:func:`is_units_row`) is shared with :mod:`thermobearing.measured` (thermocouple files).
 """
 
 from __future__ import annotations
@@ -208,9 +211,48 @@ class _CsvLayout:
     ncol: int
 
 
-def _split(line: str, sep: str) -> list[str]:
+def split_cells(line: str, sep: str) -> list[str]:
+    """The cells of one line of a delimited text file, stripped of spaces and quotes
+    (``sep``: ``","``, ``";"``, ``"\\t"`` or ``r"\\s+"``; no quoted separators)."""
     cells = line.split() if sep == r"\s+" else line.split(sep)
     return [c.strip().strip('"').strip("'").strip() for c in cells]
+
+
+_split = split_cells
+
+
+def read_text_lines(p: Path, max_lines: int | None = None) -> list[tuple[int, str]]:
+    """The non-blank lines of a text file that are no ``#`` comment, as (0-based line
+    index, text without the line end): UTF-8 with or without BOM, LF or CRLF line ends
+    (undecodable bytes replaced). At most ``max_lines`` lines when given."""
+    raw: list[tuple[int, str]] = []
+    with p.open(encoding="utf-8-sig", errors="replace", newline="") as fh:
+        for i, line in enumerate(fh):
+            line = line.rstrip("\r\n")
+            if line.strip() and not line.lstrip().startswith("#"):
+                raw.append((i, line))
+            if max_lines is not None and len(raw) >= max_lines:
+                break
+    return raw
+
+
+def guess_separator(lines: list[str]) -> str:
+    """The column separator of a DAQ export: tab if any line has one, else semicolon,
+    else comma, else runs of spaces (``r"\\s+"``)."""
+    return "\t" if any("\t" in ln for ln in lines) else ";" if any(";" in ln for ln in lines) \
+        else "," if any("," in ln for ln in lines) else r"\s+"
+
+
+def guess_decimal_mark(cells: list[str], sep: str) -> str:
+    """``","`` when ``sep`` is not a comma, some cells look like ``12,5`` and none like
+    ``12.5``; else ``"."``."""
+    if sep == ",":
+        return "."
+    num_comma = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
+    if any(num_comma.match(c) for c in cells) and not any(
+            re.match(r"^[+-]?\d*\.\d+", c) for c in cells):
+        return ","
+    return "."
 
 
 def _is_number(cell: str, decimal: str) -> bool:
@@ -225,26 +267,12 @@ def _is_number(cell: str, decimal: str) -> bool:
 
 def _sniff(p: Path) -> _CsvLayout:
     """Delimiter, decimal mark, header/units rows of a DAQ export (first lines only)."""
-    raw: list[tuple[int, str]] = []
-    with p.open(encoding="utf-8-sig", errors="replace", newline="") as fh:
-        for i, line in enumerate(fh):
-            line = line.rstrip("\r\n")
-            if line.strip() and not line.lstrip().startswith("#"):
-                raw.append((i, line))
-            if len(raw) >= _SNIFF_LINES:
-                break
+    raw = read_text_lines(p, _SNIFF_LINES)
     if not raw:
         raise InputError("file", str(p), "a CSV with at least one row of numbers")
     body = [ln for _, ln in raw]
-    sep = "\t" if any("\t" in ln for ln in body) else ";" if any(";" in ln for ln in body) \
-        else "," if any("," in ln for ln in body) else r"\s+"
-    decimal = "."
-    if sep != ",":
-        num_comma = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
-        cells = [c for ln in body for c in _split(ln, sep)]
-        if any(num_comma.match(c) for c in cells) and not any(
-                re.match(r"^[+-]?\d*\.\d+", c) for c in cells):
-            decimal = ","
+    sep = guess_separator(body)
+    decimal = guess_decimal_mark([c for ln in body for c in _split(ln, sep)], sep)
     first_data = next((k for k, ln in enumerate(body)
                        if all(_is_number(c, decimal) for c in _split(ln, sep))
                        and any(c for c in _split(ln, sep))), None)
@@ -260,7 +288,7 @@ def _sniff(p: Path) -> _CsvLayout:
     return _CsvLayout(sep, decimal, raw[first_data][0], header, units, ncol)
 
 
-def _is_units_row(cells: list[str]) -> bool:
+def is_units_row(cells: list[str]) -> bool:
     """True when every non-empty cell parses as a unit (``s``, ``m/s²``, ``[g]``, ``mV``)
     and at least one is not empty: a units row below the channel names."""
     from .units import unit_registry
@@ -280,6 +308,9 @@ def _is_units_row(cells: list[str]) -> bool:
             return False
         seen = True
     return seen
+
+
+_is_units_row = is_units_row
 
 
 def _sep_name(sep: str) -> str:

@@ -1,0 +1,386 @@
+"""Thermocouple files in: reading a test rig's measured temperatures for a scene.
+
+One job: turn the file of a scene's ``[measured]`` table, as a data logger, a rig PLC or a
+LabVIEW/DAQ program writes it, into ``time [s]`` + one degC column per mapped sensor
+(:func:`read_measured_file`). :func:`thermobearing.report.read_measured`,
+:func:`thermobearing.scene_checks.check_measured_file` and
+:func:`thermobearing.calibrate_model.measured_table` all read through it.
+
+The layout detection (BOM, CRLF, ``#`` comment lines, separator guess, decimal mark, units
+row) is that of the accelerometer files (:mod:`thermobearing.signal_input`); the header row
+is found by the scene's ``time_column`` name, so metadata lines above it (logger name, date,
+channel list) and free-text columns (a quoted comment column) do not disturb it.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from collections.abc import Mapping
+from datetime import datetime, timedelta
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from .errors import InputError
+from .signal_input import guess_decimal_mark, guess_separator, is_units_row, read_text_lines
+
+__all__ = ["DROPOUT_FLAGS", "read_measured_file"]
+
+#: cell texts (case-insensitive, after stripping) that mark a broken or overloaded sensor:
+#: read as NaN (a gap), like an empty cell. Runs of two or more dashes or stars count too.
+DROPOUT_FLAGS = frozenset({
+    "ovl", "ovr", "over", "overload", "overrange", "over range", "under", "underrange",
+    "unl", "open", "oc", "o.c.", "open circuit", "err", "error", "fault", "nan", "n/a",
+    "na", "#n/a", "null", "none", "inf", "-inf", "+inf", "invalid", "?",
+})
+_DASHES = re.compile(r"^(-{2,}|\*{2,}|-?\*+-?)$")
+_TEMPERATURE_UNITS = {"degc": "degC", "°c": "degC", "c": "degC", "celsius": "degC",
+                      "k": "K", "kelvin": "K", "degf": "degF", "°f": "degF", "f": "degF",
+                      "fahrenheit": "degF", "deg c": "degC", "deg f": "degF", "℃": "degC"}
+_SEPARATORS = ("\t", ";", ",", r"\s+")
+_ELAPSED = re.compile(r"^(\d+):(\d{1,2})(?::(\d{1,2}))?(?:[.,](\d+))?$")
+#: timestamp layouts tried in order (after ISO 8601 ``2026-11-23T10:15:30`` /
+#: ``2026-11-23 10:15:30``, read by datetime.fromisoformat)
+_STAMP_FORMATS = (
+    ("%d.%m.%Y %H:%M:%S", "dd.mm.yyyy hh:mm:ss"), ("%d.%m.%Y %H:%M", "dd.mm.yyyy hh:mm"),
+    ("%Y/%m/%d %H:%M:%S", "yyyy/mm/dd hh:mm:ss"), ("%Y/%m/%d %H:%M", "yyyy/mm/dd hh:mm"),
+    ("%d/%m/%Y %H:%M:%S", "dd/mm/yyyy hh:mm:ss"), ("%m/%d/%Y %H:%M:%S", "mm/dd/yyyy hh:mm:ss"),
+    ("%d/%m/%Y %H:%M", "dd/mm/yyyy hh:mm"), ("%m/%d/%Y %H:%M", "mm/dd/yyyy hh:mm"),
+)
+
+
+def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str, str] | list,
+                       unit: str = "degC", *, time_zero: str | None = None,
+                       field: str = "measured") -> pd.DataFrame:
+    """Read a rig's thermocouple file: ``time [s]`` + one degC column per sensor.
+
+    Formats accepted
+    ----------------
+    - **Layout**: comma, semicolon or tab separated (or runs of spaces when the time is a
+      number or ``hh:mm:ss``); UTF-8 with or without BOM; LF or CRLF line ends; ``#``
+      comment lines anywhere; any metadata lines above the header row (the header row is
+      the first row with a cell equal to ``time_column``, case-insensitive as a fallback);
+      quoted cells (a comment column may hold separators); columns not mapped are ignored.
+    - **Units row**: a row right under the header whose cells are units (``s;degC;degC``,
+      ``[min],[°C]``, ``hh:mm:ss``). It gives the time unit when ``time_column`` has no
+      ``[unit]``; a temperature unit in it that contradicts ``unit`` is an error.
+    - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator (detected
+      from the sensor cells: some ``35,27`` and no ``35.27``).
+    - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``) or
+      of the units row (seconds without either); elapsed ``hh:mm:ss[.f]`` or ``mm:ss[.f]``;
+      timestamps ``2026-11-23 10:15:30`` / ISO ``2026-11-23T10:15:30[.f][+01:00]``,
+      ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026 10:15:30`` or
+      ``11/23/2026 10:15:30`` (day or month first decided by a field > 12; all <= 12 is
+      ambiguous: an error), seconds optional. Timestamps count from the first row;
+      numbers and ``hh:mm:ss`` are taken as they are.
+    - **Sensor cells**: numbers in ``unit`` (degC, K or degF); empty cells and dropout
+      flags (``OVL``, ``----``, ``***``, ``Err``, ``open``, ``N/A``, ``NaN``, ``inf``, ...:
+      :data:`DROPOUT_FLAGS`) are NaN.
+
+    Parameters
+    ----------
+    path : the file.
+    time_column : header name of the time column (``"time [min]"``).
+    columns : the mapped sensor columns (header names; a mapping's keys).
+    unit : temperature unit of the sensor columns: ``degC``, ``K`` or ``degF``.
+    time_zero : the scene's time zero, in the time column's own format (a timestamp, an
+        ``hh:mm:ss``, or a number in the column's unit), or ``"first"`` (the first row, for
+        any format). None: the first row for timestamps, else the values as they are.
+    field : scene table named in the errors.
+
+    Returns
+    -------
+    DataFrame with ``time [s]`` (strictly increasing) and one column per sensor [degC].
+
+    Raises
+    ------
+    InputError naming the field, the data row (1 = first data row) and the value: a missing
+    file or column, a time that does not increase, a time cell of another format than the
+    first row's or of no known format, a text cell in a sensor column that is no dropout
+    flag, a units row that contradicts ``unit``, a file without data rows.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError(f"{field}.file", str(path), f"an existing CSV file (looked at {p})")
+    sensors = list(columns)
+    if unit not in ("degC", "K", "degF"):
+        raise InputError(f"{field}.unit", unit, "degC, K or degF")
+    lines = read_text_lines(p)
+    if not lines:
+        raise InputError(f"{field}.file", str(path), "a CSV file with a header row and data")
+    sep, h, header = _find_header(lines, time_column)
+    if h is None:
+        raise InputError(f"{field}.time_column", time_column,
+                         "a column of the file: " + ", ".join(header))
+    names = [c.lower() for c in header]
+    tcol = _index(header, names, time_column)
+    idx = {}
+    for col in sensors:
+        j = _index(header, names, col)
+        if j is None:
+            raise InputError(f"{field}.columns[{col!r}]", col,
+                             "a column of the file: " + ", ".join(header))
+        idx[col] = j
+    rows = [_cells(ln, sep) for _, ln in lines[h + 1:]]
+    units = None
+    if rows and _looks_like_units(rows[0], tcol):
+        units = rows.pop(0)
+    if not rows:
+        raise InputError(f"{field}.file", str(path), f"data rows under the header row "
+                         f"({', '.join(header)})")
+    need = max([tcol, *idx.values()]) + 1
+    for k, r in enumerate(rows):
+        if len(r) < need:
+            raise InputError(f"{field}.file", f"row {k + 1}: {sep.join(r)!r}",
+                             f"at least {need} cells separated by {_sep_name(sep)!r} "
+                             f"(as in the header row: {', '.join(header)})")
+    if units is not None:
+        _check_units_row(units, idx, unit, field)
+    cells = {col: [r[j] for r in rows] for col, j in idx.items()}
+    decimal = guess_decimal_mark([c for v in cells.values() for c in v], sep)
+    tunit = _time_unit(time_column, units[tcol] if units is not None else "")
+    times = _parse_times([r[tcol] for r in rows], tunit, decimal, time_zero, time_column,
+                         field)
+    out = pd.DataFrame({"time [s]": times})
+    for col in sensors:
+        values = _parse_temperatures(cells[col], decimal, col)
+        if unit == "K":
+            values = values - 273.15
+        elif unit == "degF":
+            values = (values - 32.0) * 5.0 / 9.0
+        out[col] = values
+    return out
+
+
+# --------------------------------------------------------------------------- layout
+def _sep_name(sep: str) -> str:
+    return {"\t": "tab", r"\s+": "spaces"}.get(sep, sep)
+
+
+def _cells(line: str, sep: str) -> list[str]:
+    if sep == r"\s+":
+        return line.split()
+    try:
+        return [c.strip() for c in next(csv.reader([line], delimiter=sep, quotechar='"'),
+                                         [])]
+    except csv.Error as exc:  # e.g. a NUL byte: not a text file
+        raise InputError("measured.file", line[:60], f"lines of text ({exc})") from None
+
+
+def _index(header: list[str], lowered: list[str], name: str) -> int | None:
+    if name in header:
+        return header.index(name)
+    return lowered.index(name.lower()) if name.lower() in lowered else None
+
+
+def _find_header(lines: list[tuple[int, str]], time_column: str
+                 ) -> tuple[str, int | None, list[str]]:
+    """Separator, index (in ``lines``) and cells of the header row: the first row with a
+    cell equal to ``time_column`` under the guessed separator, then under the others. When
+    none has it: the guessed separator and the widest of the first rows (for the error)."""
+    body = [ln for _, ln in lines[:200]]
+    guess = guess_separator(body)
+    wanted = time_column.strip().lower()
+    for sep in (guess, *(s for s in _SEPARATORS if s != guess)):
+        for k, (_, ln) in enumerate(lines[:200]):
+            cells = _cells(ln, sep)
+            if time_column in cells or wanted in (c.lower() for c in cells):
+                return sep, k, cells
+    widest = max((_cells(ln, guess) for ln in body[:50]), key=len)
+    return guess, None, widest
+
+
+def _is_time_format(cell: str) -> bool:
+    c = cell.strip().strip("[]()").lower()
+    return c in ("hh:mm:ss", "h:mm:ss", "mm:ss", "hh:mm:ss.s", "hh:mm:ss.ss", "hh:mm:ss.sss",
+                 "date", "datetime", "timestamp", "yyyy-mm-dd hh:mm:ss", "dd.mm.yyyy hh:mm:ss")
+
+
+def _looks_like_units(cells: list[str], tcol: int) -> bool:
+    """A units row: every non-empty cell a unit (the time cell may also be a time format
+    such as ``hh:mm:ss``), at least one not empty, and no cell a number."""
+    if any(_number(c, ".") is not None or _number(c, ",") is not None for c in cells if c):
+        return False
+    probe = ["" if (j == tcol and _is_time_format(c)) else c.replace("℃", "degC")
+             for j, c in enumerate(cells)]
+    if not any(probe):
+        return any(cells)
+    return is_units_row(probe)
+
+
+def _check_units_row(units: list[str], idx: Mapping[str, int], unit: str, field: str) -> None:
+    for col, j in idx.items():
+        if j >= len(units):
+            continue
+        said = _TEMPERATURE_UNITS.get(units[j].strip().strip("[]()").lower())
+        if said is not None and said != unit:
+            raise InputError(f"{field}.unit", unit, f"{said!r}, the unit the file's units row "
+                             f"gives for column {col!r} (set unit = \"{said}\")")
+
+
+def _time_unit(time_column: str, units_cell: str) -> str:
+    m = re.search(r"\[\s*([^\]]+?)\s*\]", time_column)
+    if m:
+        return m.group(1)
+    cell = units_cell.strip().strip("[]()")
+    return cell if cell and not _is_time_format(cell) else "s"
+
+
+# --------------------------------------------------------------------------- cells
+def _number(cell: str, decimal: str) -> float | None:
+    c = cell.strip()
+    if decimal == ",":
+        c = c.replace(",", ".")
+    try:
+        x = float(c)
+    except ValueError:
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _is_dropout(cell: str) -> bool:
+    c = cell.strip().lower()
+    return c == "" or c in DROPOUT_FLAGS or bool(_DASHES.match(c))
+
+
+def _parse_temperatures(cells: list[str], decimal: str, col: str) -> np.ndarray:
+    out = np.empty(len(cells))
+    for k, c in enumerate(cells):
+        x = _number(c, decimal)
+        if x is None:
+            if not _is_dropout(c):
+                raise InputError(f"measured column {col!r}", f"row {k + 1}: {c!r}",
+                                 "numbers (an empty cell or a dropout flag such as OVL, "
+                                 "----, Err, N/A is a gap)")
+            x = math.nan
+        out[k] = x
+    return out
+
+
+def _elapsed(cell: str) -> float | None:
+    m = _ELAPSED.match(cell.strip())
+    if m is None:
+        return None
+    a, b, c, frac = m.groups()
+    if c is None:  # mm:ss
+        seconds = int(a) * 60 + int(b)
+        if int(b) >= 60:
+            return None
+    else:
+        if int(b) >= 60 or int(c) >= 60:
+            return None
+        seconds = int(a) * 3600 + int(b) * 60 + int(c)
+    return seconds + (float("0." + frac) if frac else 0.0)
+
+
+def _stamp_parser(first: str, cells: list[str], name: str):
+    """A parser str -> datetime | None for the timestamp layout of ``first`` (None if it
+    is no timestamp); the description of that layout."""
+    text = first.strip()
+    try:
+        datetime.fromisoformat(text)
+        if re.match(r"^\d{4}-\d{2}-\d{2}", text):
+            def iso(c: str) -> datetime | None:
+                try:
+                    return datetime.fromisoformat(c.strip())
+                except ValueError:
+                    return None
+            return iso, "ISO 8601 yyyy-mm-dd hh:mm:ss"
+    except ValueError:
+        pass
+    candidates = [(f, d) for f, d in _STAMP_FORMATS if _strptime(text, f) is not None]
+    if not candidates:
+        return None, ""
+    if len({f.split(" ")[0] for f, _ in candidates} & {"%d/%m/%Y", "%m/%d/%Y"}) == 2:
+        # both day-first and month-first read the first row: decide on the others
+        ok = [(f, d) for f, d in candidates
+              if all(_strptime(c, f) is not None for c in cells if c.strip())]
+        if len(ok) != 1:
+            raise InputError(name, f"row 1: {first!r}", "an unambiguous date: every "
+                             "dd/mm and mm/dd field <= 12, so day and month cannot be told "
+                             "apart (write yyyy-mm-dd or dd.mm.yyyy)")
+        candidates = ok
+    fmt, desc = candidates[0]
+    return (lambda c: _strptime(c, fmt)), desc
+
+
+def _strptime(cell: str, fmt: str) -> datetime | None:
+    c = cell.strip()
+    frac = 0.0
+    m = re.match(r"^(.*:\d{2})[.,](\d+)$", c)
+    if m and fmt.endswith("%S"):
+        c, frac = m.group(1), float("0." + m.group(2))
+    try:
+        return datetime.strptime(c, fmt) + timedelta(seconds=frac)
+    except ValueError:
+        return None
+
+
+def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | None,
+                 time_column: str, field: str) -> np.ndarray:
+    """Elapsed seconds of the time cells (the format of the first row for all rows)."""
+    from .units import to_si
+
+    name = f"measured column {time_column!r}"
+    first = cells[0].strip()
+    scale = None
+    if _number(first, decimal) is not None:
+        scale = to_si(f"1 {tunit}", "time", field=f"{field}.time_column")
+        kind, desc = "number", f"numbers in {tunit}"
+
+        def parse(c: str) -> float | None:
+            x = _number(c, decimal)
+            return None if x is None else x * scale
+    elif _elapsed(first) is not None:
+        kind, desc, parse = "elapsed", "elapsed hh:mm:ss or mm:ss", _elapsed
+    else:
+        stamp, desc = _stamp_parser(first, cells, name)
+        if stamp is None:
+            raise InputError(name, f"row 1: {first!r}", "numbers (in the unit of the column "
+                             "name's brackets or the units row), elapsed hh:mm:ss / mm:ss, or "
+                             "timestamps yyyy-mm-dd hh:mm:ss (ISO 8601, T allowed), "
+                             "dd.mm.yyyy hh:mm:ss, yyyy/mm/dd hh:mm:ss, dd/mm/yyyy hh:mm:ss")
+        kind, parse = "stamp", stamp
+    values: list = []
+    for k, c in enumerate(cells):
+        v = parse(c) if c.strip() else None
+        if v is None:
+            raise InputError(name, f"row {k + 1}: {c!r}", f"a time in every row, in the format "
+                             f"of row 1 ({desc})")
+        values.append(v)
+    if kind == "stamp":
+        aware = {v.tzinfo is not None for v in values}
+        if len(aware) > 1:
+            k = next(i for i, v in enumerate(values) if (v.tzinfo is not None) != (
+                values[0].tzinfo is not None))
+            raise InputError(name, f"row {k + 1}: {cells[k]!r}", "timestamps all with or all "
+                             "without a UTC offset")
+    zero = _time_zero(time_zero, values, parse, kind, desc, field)
+    if kind == "stamp":
+        t = np.array([(v - zero).total_seconds() for v in values])
+    else:
+        t = np.asarray(values, dtype=float) - float(zero)
+    steps = np.diff(t)
+    if steps.size and not (steps > 0).all():
+        k = int(np.flatnonzero(steps <= 0)[0]) + 1
+        raise InputError(name, f"row {k + 1}: {cells[k].strip()} after {cells[k - 1].strip()}",
+                         "strictly increasing times")
+    return t
+
+
+def _time_zero(time_zero: str | None, values: list, parse, kind: str, desc: str, field: str):
+    if time_zero is None:
+        return values[0] if kind == "stamp" else 0.0
+    if str(time_zero).strip().lower() == "first":
+        return values[0]
+    zero = parse(str(time_zero))
+    if zero is None:
+        raise InputError(f"{field}.time_zero", time_zero, f"\"first\" or a time in the format "
+                         f"of the file's time column ({desc})")
+    if kind == "stamp" and (zero.tzinfo is None) != (values[0].tzinfo is None):
+        raise InputError(f"{field}.time_zero", time_zero, "a timestamp with a UTC offset "
+                         "exactly when the file's timestamps have one")
+    return zero
