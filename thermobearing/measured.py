@@ -41,6 +41,8 @@ _TEMPERATURE_UNITS = {"degc": "degC", "°c": "degC", "c": "degC", "celsius": "de
                       "k": "K", "kelvin": "K", "degf": "degF", "°f": "degF", "f": "degF",
                       "fahrenheit": "degF", "deg c": "degC", "deg f": "degF", "℃": "degC"}
 _SEPARATORS = ("\t", ";", ",", r"\s+")
+_PLAIN = re.compile(r"^[+-]?\d*[.,]?\d+$")
+_PROBE_ROWS = 500
 _ELAPSED = re.compile(r"^(\d+):(\d{1,2})(?::(\d{1,2}))?(?:[.,](\d+))?$")
 #: timestamp layouts tried in order (after ISO 8601 ``2026-11-23T10:15:30`` /
 #: ``2026-11-23 10:15:30``, read by datetime.fromisoformat)
@@ -125,28 +127,34 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
                              "a column of the file: " + ", ".join(header))
         idx[col] = j
     rows = [_cells(ln, sep) for _, ln in lines[h + 1:]]
+    at = [i + 1 for i, _ in lines[h + 1:]]  # file line of each row, for the errors
     units = None
     if rows and _looks_like_units(rows[0], tcol):
         units = rows.pop(0)
+        at.pop(0)
     if not rows:
         raise InputError(f"{field}.file", str(path), f"data rows under the header row "
                          f"({', '.join(header)})")
     need = max([tcol, *idx.values()]) + 1
     for k, r in enumerate(rows):
         if len(r) < need:
-            raise InputError(f"{field}.file", f"row {k + 1}: {sep.join(r)!r}",
+            raise InputError(f"{field}.file", f"row {k + 1}: {sep.join(r)!r} (line {at[k]})",
                              f"at least {need} cells separated by {_sep_name(sep)!r} "
                              f"(as in the header row: {', '.join(header)})")
     if units is not None:
         _check_units_row(units, idx, unit, field)
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
-    decimal = guess_decimal_mark([c for v in cells.values() for c in v], sep)
+    # decimal mark from the sensor cells and plain-number time cells of the first rows
+    # (timestamps such as 23.11.2026 would look like decimal points)
+    probe = [c for v in cells.values() for c in v[:_PROBE_ROWS]]
+    probe += [r[tcol] for r in rows[:_PROBE_ROWS] if _PLAIN.match(r[tcol].strip())]
+    decimal = guess_decimal_mark(probe, sep)
     tunit = _time_unit(time_column, units[tcol] if units is not None else "")
     times = _parse_times([r[tcol] for r in rows], tunit, decimal, time_zero, time_column,
-                         field)
+                         field, at)
     out = pd.DataFrame({"time [s]": times})
     for col in sensors:
-        values = _parse_temperatures(cells[col], decimal, col)
+        values = _parse_temperatures(cells[col], decimal, col, at)
         if unit == "K":
             values = values - 273.15
         elif unit == "degF":
@@ -246,17 +254,18 @@ def _is_dropout(cell: str) -> bool:
     return c == "" or c in DROPOUT_FLAGS or bool(_DASHES.match(c))
 
 
-def _parse_temperatures(cells: list[str], decimal: str, col: str) -> np.ndarray:
-    out = np.empty(len(cells))
-    for k, c in enumerate(cells):
-        x = _number(c, decimal)
-        if x is None:
-            if not _is_dropout(c):
-                raise InputError(f"measured column {col!r}", f"row {k + 1}: {c!r}",
-                                 "numbers (an empty cell or a dropout flag such as OVL, "
-                                 "----, Err, N/A is a gap)")
-            x = math.nan
-        out[k] = x
+def _parse_temperatures(cells: list[str], decimal: str, col: str, at: list[int]
+                        ) -> np.ndarray:
+    text = [c.replace(",", ".") for c in cells] if decimal == "," else cells  # stripped
+    out = np.asarray(pd.to_numeric(np.asarray(text, dtype=object), errors="coerce"),
+                     dtype=float)
+    for k in np.flatnonzero(~np.isfinite(out)):  # text, nan, inf: a flag or an error
+        c = cells[k]
+        if not _is_dropout(c):
+            raise InputError(f"measured column {col!r}", f"row {k + 1}: {c!r} (line {at[k]})",
+                             "numbers (an empty cell or a dropout flag such as OVL, "
+                             "----, Err, N/A is a gap)")
+        out[k] = math.nan
     return out
 
 
@@ -320,7 +329,7 @@ def _strptime(cell: str, fmt: str) -> datetime | None:
 
 
 def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | None,
-                 time_column: str, field: str) -> np.ndarray:
+                 time_column: str, field: str, at: list[int]) -> np.ndarray:
     """Elapsed seconds of the time cells (the format of the first row for all rows)."""
     from .units import to_si
 
@@ -339,8 +348,9 @@ def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | No
     else:
         stamp, desc = _stamp_parser(first, cells, name)
         if stamp is None:
-            raise InputError(name, f"row 1: {first!r}", "numbers (in the unit of the column "
-                             "name's brackets or the units row), elapsed hh:mm:ss / mm:ss, or "
+            raise InputError(name, f"row 1: {first!r} (line {at[0]})", "numbers (in the "
+                             "unit of the column name's brackets or the units row), "
+                             "elapsed hh:mm:ss / mm:ss, or "
                              "timestamps yyyy-mm-dd hh:mm:ss (ISO 8601, T allowed), "
                              "dd.mm.yyyy hh:mm:ss, yyyy/mm/dd hh:mm:ss, dd/mm/yyyy hh:mm:ss")
         kind, parse = "stamp", stamp
@@ -348,16 +358,16 @@ def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | No
     for k, c in enumerate(cells):
         v = parse(c) if c.strip() else None
         if v is None:
-            raise InputError(name, f"row {k + 1}: {c!r}", f"a time in every row, in the format "
-                             f"of row 1 ({desc})")
+            raise InputError(name, f"row {k + 1}: {c!r} (line {at[k]})",
+                             f"a time in every row, in the format of row 1 ({desc})")
         values.append(v)
     if kind == "stamp":
         aware = {v.tzinfo is not None for v in values}
         if len(aware) > 1:
             k = next(i for i, v in enumerate(values) if (v.tzinfo is not None) != (
                 values[0].tzinfo is not None))
-            raise InputError(name, f"row {k + 1}: {cells[k]!r}", "timestamps all with or all "
-                             "without a UTC offset")
+            raise InputError(name, f"row {k + 1}: {cells[k]!r} (line {at[k]})",
+                             "timestamps all with or all without a UTC offset")
     zero = _time_zero(time_zero, values, parse, kind, desc, field)
     if kind == "stamp":
         t = np.array([(v - zero).total_seconds() for v in values])
@@ -366,8 +376,8 @@ def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | No
     steps = np.diff(t)
     if steps.size and not (steps > 0).all():
         k = int(np.flatnonzero(steps <= 0)[0]) + 1
-        raise InputError(name, f"row {k + 1}: {cells[k].strip()} after {cells[k - 1].strip()}",
-                         "strictly increasing times")
+        raise InputError(name, f"row {k + 1}: {cells[k].strip()} after {cells[k - 1].strip()} "
+                         f"(line {at[k]})", "strictly increasing times")
     return t
 
 
