@@ -27,16 +27,20 @@ import pandas as pd
 from .errors import InputError
 from .signal_input import guess_decimal_mark, guess_separator, is_units_row, read_text_lines
 
-__all__ = ["DROPOUT_FLAGS", "read_measured_file"]
+__all__ = ["DROPOUT_FLAGS", "OVERLOAD_CODE", "read_measured_file"]
 
 #: cell texts (case-insensitive, after stripping) that mark a broken or overloaded sensor:
 #: read as NaN (a gap), like an empty cell. Runs of two or more dashes or stars count too.
 DROPOUT_FLAGS = frozenset({
     "ovl", "ovr", "over", "overload", "overrange", "over range", "under", "underrange",
     "unl", "open", "oc", "o.c.", "open circuit", "err", "error", "fault", "nan", "n/a",
-    "na", "#n/a", "null", "none", "inf", "-inf", "+inf", "invalid", "?",
+    "na", "#n/a", "null", "none", "inf", "-inf", "+inf", "invalid", "?", "burnout",
+    "burn out", "b.o.", "+over", "-over", "+ovl", "-ovl", "overflow", "underflow",
 })
-_DASHES = re.compile(r"^(-{2,}|\*{2,}|-?\*+-?)$")
+_DASHES = re.compile(r"^(-{2,}|\+{2,}|\*{2,}|-?\*+-?)$")
+#: |value| at or above this is an overload code, not a temperature (Keysight/Agilent DAQs
+#: write +9.9E+37 for an open thermocouple): read as a gap
+OVERLOAD_CODE = 1e30
 _TEMPERATURE_UNITS = {"degc": "degC", "°c": "degC", "c": "degC", "celsius": "degC",
                       "k": "K", "kelvin": "K", "degf": "degF", "°f": "degF", "f": "degF",
                       "fahrenheit": "degF", "deg c": "degC", "deg f": "degF", "℃": "degC"}
@@ -51,6 +55,10 @@ _STAMP_FORMATS = (
     ("%Y/%m/%d %H:%M:%S", "yyyy/mm/dd hh:mm:ss"), ("%Y/%m/%d %H:%M", "yyyy/mm/dd hh:mm"),
     ("%d/%m/%Y %H:%M:%S", "dd/mm/yyyy hh:mm:ss"), ("%m/%d/%Y %H:%M:%S", "mm/dd/yyyy hh:mm:ss"),
     ("%d/%m/%Y %H:%M", "dd/mm/yyyy hh:mm"), ("%m/%d/%Y %H:%M", "mm/dd/yyyy hh:mm"),
+    ("%m/%d/%Y %I:%M:%S %p", "mm/dd/yyyy hh:mm:ss AM/PM"),
+    ("%d/%m/%Y %I:%M:%S %p", "dd/mm/yyyy hh:mm:ss AM/PM"),
+    ("%m/%d/%y %I:%M:%S %p", "mm/dd/yy hh:mm:ss AM/PM"),
+    ("%d/%m/%y %I:%M:%S %p", "dd/mm/yy hh:mm:ss AM/PM"),
 )
 
 
@@ -68,7 +76,8 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
       quoted cells (a comment column may hold separators); columns not mapped are ignored.
     - **Units row**: a row right under the header whose cells are units (``s;degC;degC``,
       ``[min],[°C]``, ``hh:mm:ss``). It gives the time unit when ``time_column`` has no
-      ``[unit]``; a temperature unit in it that contradicts ``unit`` is an error.
+      ``[unit]``; a temperature unit in it, or in a sensor column's name (``TC1 [K]``,
+      ``TC1 (°F)``), that contradicts ``unit`` is an error.
     - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator (detected
       from the sensor cells: some ``35,27`` and no ``35.27``).
     - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``) or
@@ -76,11 +85,13 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
       timestamps ``2026-11-23 10:15:30`` / ISO ``2026-11-23T10:15:30[.f][+01:00]``,
       ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026 10:15:30`` or
       ``11/23/2026 10:15:30`` (day or month first decided by a field > 12; all <= 12 is
-      ambiguous: an error), seconds optional. Timestamps count from the first row;
-      numbers and ``hh:mm:ss`` are taken as they are.
-    - **Sensor cells**: numbers in ``unit`` (degC, K or degF); empty cells and dropout
-      flags (``OVL``, ``----``, ``***``, ``Err``, ``open``, ``N/A``, ``NaN``, ``inf``, ...:
-      :data:`DROPOUT_FLAGS`) are NaN.
+      ambiguous: an error), seconds optional; 12-hour ``11/23/2026 10:15:30 AM`` (also
+      two-digit years). The time column's unit may also be in parentheses: ``Time (s)``.
+      Timestamps count from the first row; numbers and ``hh:mm:ss`` are taken as they are.
+    - **Sensor cells**: numbers in ``unit`` (degC, K or degF); empty cells, dropout flags
+      (``OVL``, ``+OVER``, ``Burnout``, ``----``, ``+++++``, ``***``, ``Err``, ``open``,
+      ``N/A``, ``NaN``, ``inf``, ...: :data:`DROPOUT_FLAGS`) and overload codes
+      (|value| >= :data:`OVERLOAD_CODE`, e.g. ``+9.9E+37``) are NaN.
 
     Parameters
     ----------
@@ -142,7 +153,8 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
                              f"at least {need} cells separated by {_sep_name(sep)!r} "
                              f"(as in the header row: {', '.join(header)})")
     if units is not None:
-        _check_units_row(units, idx, unit, field)
+        _check_units_row(units, idx, unit, field, "units row")
+    _check_units_row([_bracket(c) for c in header], idx, unit, field, "column name")
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
     # decimal mark from the sensor cells and plain-number time cells of the first rows
     # (timestamps such as 23.11.2026 would look like decimal points)
@@ -219,18 +231,26 @@ def _looks_like_units(cells: list[str], tcol: int) -> bool:
     return is_units_row(probe)
 
 
-def _check_units_row(units: list[str], idx: Mapping[str, int], unit: str, field: str) -> None:
+def _bracket(name: str) -> str:
+    """The unit in a column name's brackets (``TC1 [K]``, ``Temp (°C)``), or ""."""
+    m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]\s*$", name)
+    return m.group(1) if m else ""
+
+
+def _check_units_row(units: list[str], idx: Mapping[str, int], unit: str, field: str,
+                     where: str) -> None:
+    """A temperature unit given by the file (units row or column name) must be ``unit``."""
     for col, j in idx.items():
         if j >= len(units):
             continue
         said = _TEMPERATURE_UNITS.get(units[j].strip().strip("[]()").lower())
         if said is not None and said != unit:
-            raise InputError(f"{field}.unit", unit, f"{said!r}, the unit the file's units row "
+            raise InputError(f"{field}.unit", unit, f"{said!r}, the unit the file's {where} "
                              f"gives for column {col!r} (set unit = \"{said}\")")
 
 
 def _time_unit(time_column: str, units_cell: str) -> str:
-    m = re.search(r"\[\s*([^\]]+?)\s*\]", time_column)
+    m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]", time_column)
     if m:
         return m.group(1)
     cell = units_cell.strip().strip("[]()")
@@ -259,13 +279,16 @@ def _parse_temperatures(cells: list[str], decimal: str, col: str, at: list[int]
     text = [c.replace(",", ".") for c in cells] if decimal == "," else cells  # stripped
     out = np.asarray(pd.to_numeric(np.asarray(text, dtype=object), errors="coerce"),
                      dtype=float)
-    for k in np.flatnonzero(~np.isfinite(out)):  # text, nan, inf: a flag or an error
+    with np.errstate(invalid="ignore"):
+        overload = np.abs(out) >= OVERLOAD_CODE  # +9.9E+37 and the like: a gap
+    for k in np.flatnonzero(~np.isfinite(out) & ~overload):  # text, nan, inf: flag or error
         c = cells[k]
         if not _is_dropout(c):
             raise InputError(f"measured column {col!r}", f"row {k + 1}: {c!r} (line {at[k]})",
                              "numbers (an empty cell or a dropout flag such as OVL, "
                              "----, Err, N/A is a gap)")
         out[k] = math.nan
+    out[overload] = math.nan
     return out
 
 
@@ -303,15 +326,17 @@ def _stamp_parser(first: str, cells: list[str], name: str):
     candidates = [(f, d) for f, d in _STAMP_FORMATS if _strptime(text, f) is not None]
     if not candidates:
         return None, ""
-    if len({f.split(" ")[0] for f, _ in candidates} & {"%d/%m/%Y", "%m/%d/%Y"}) == 2:
-        # both day-first and month-first read the first row: decide on the others
-        ok = [(f, d) for f, d in candidates
-              if all(_strptime(c, f) is not None for c in cells if c.strip())]
-        if len(ok) != 1:
+    if len(candidates) > 1:
+        # several layouts read the first row (01/02/2026: day or month first?): keep those
+        # that read every row; if they still disagree on some row, it is ambiguous
+        rest = [c for c in cells if c.strip()]
+        parsed = {f: [_strptime(c, f) for c in rest] for f, _ in candidates}
+        ok = [(f, d) for f, d in candidates if None not in parsed[f]]
+        if len(ok) > 1 and any(parsed[f] != parsed[ok[0][0]] for f, _ in ok[1:]):
             raise InputError(name, f"row 1: {first!r}", "an unambiguous date: every "
                              "dd/mm and mm/dd field <= 12, so day and month cannot be told "
                              "apart (write yyyy-mm-dd or dd.mm.yyyy)")
-        candidates = ok
+        candidates = ok or candidates
     fmt, desc = candidates[0]
     return (lambda c: _strptime(c, fmt)), desc
 

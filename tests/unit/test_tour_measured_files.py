@@ -212,6 +212,38 @@ def test_kelvin_file_with_units_row(tmp_path, original, reference):
         read_measured_file(path, "time [min]", [DE, NDE], "degC")
 
 
+def test_us_daq_export_12_hour_clock_overload_codes_and_flags(tmp_path, original, reference):
+    """A US DAQ export (BenchLink / Graphtec style): metadata, ``Scan`` counter, 12-hour
+    timestamps crossing noon, units in the column names ``(C)``, an overload code
+    ``+9.90000000E+37`` and the flags ``+OVER``, ``Burnout``, ``+++++`` as gaps."""
+    de, nde = f"{DE} (C)", f"{NDE} (C)"
+    gaps = {5: "+9.90000000E+37", 6: "+OVER", 30: "Burnout", 59: "+++++"}
+    lines = ['"Acquisition Date:","11/23/2026 11:45:30 AM"', '"Instrument:","34972A"', "",
+             f'"Scan","Time","{de}","{nde}"']
+    start = datetime(2026, 11, 23, 11, 45, 30)
+    for k, (t, a, b) in enumerate(rows(original)):
+        stamp = (start + timedelta(minutes=float(t))).strftime("%m/%d/%Y %I:%M:%S %p")
+        lines.append(f"{k + 1},{stamp},{gaps.get(k, f'{a:+.8E}')},{b:+.8E}")
+    got = read_measured_file(write(tmp_path / "daq.csv", lines), "Time", [de, nde])
+    assert lines[-1].split(",")[1] == "11/23/2026 12:45:30 PM"  # crossed noon
+    keep = [k for k in range(len(reference)) if k not in gaps]
+    assert np.isnan(got[de].iloc[list(gaps)]).all()
+    np.testing.assert_allclose(got[de].iloc[keep], reference[DE].iloc[keep], rtol=1e-12)
+    np.testing.assert_allclose(got[nde], reference[NDE], rtol=1e-12)
+    np.testing.assert_array_equal(got["time [s]"], reference["time [s]"])
+
+
+def test_time_unit_in_parentheses_and_unit_in_column_name(tmp_path, original, reference):
+    lines = [f"Time (s),{DE},{NDE}"] + [f"{t * 60},{a},{b}" for t, a, b in rows(original)]
+    same_table(read_measured_file(write(tmp_path / "s.csv", lines), "Time (s)", [DE, NDE]),
+               reference)
+    path = write(tmp_path / "k.csv", ["t,TC1 [K],TC2", "0,308.15,35", "1,309.15,36"])
+    with pytest.raises(InputError, match=r"measured.unit.*'K'.*column name.*'TC1 \[K\]'"):
+        read_measured_file(path, "t", ["TC1 [K]", "TC2"])
+    got = read_measured_file(path, "t", ["TC1 [K]"], "K")
+    np.testing.assert_allclose(got["TC1 [K]"], [35.0, 36.0])
+
+
 # --------------------------------------------------------------------------- bad files
 def bad(tmp_path, lines, time_column="t", match="", **kw):
     path = write(tmp_path / "bad.csv", lines)
