@@ -70,7 +70,8 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     Formats accepted
     ----------------
     - **Layout**: comma, semicolon or tab separated (or runs of spaces when the time is a
-      number or ``hh:mm:ss``); UTF-8 with or without BOM; LF or CRLF line ends; ``#``
+      number or ``hh:mm:ss``); UTF-8 with or without BOM, or Windows-1252 (a file that is
+      not valid UTF-8: ``°C`` and umlauts of Windows loggers); LF or CRLF line ends; ``#``
       comment lines anywhere; any metadata lines above the header row (the header row is
       the first row with a cell equal to ``time_column``, case-insensitive as a fallback);
       quoted cells (a comment column may hold separators); columns not mapped are ignored.
@@ -121,7 +122,7 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     sensors = list(columns)
     if unit not in ("degC", "K", "degF"):
         raise InputError(f"{field}.unit", unit, "degC, K or degF")
-    lines = read_text_lines(p)
+    lines = read_text_lines(p, encoding=_encoding(p))
     if not lines:
         raise InputError(f"{field}.file", str(path), "a CSV file with a header row and data")
     sep, h, header = _find_header(lines, time_column)
@@ -176,6 +177,16 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
 
 
 # --------------------------------------------------------------------------- layout
+def _encoding(p: Path) -> str:
+    """UTF-8 (BOM or not) when the file decodes as UTF-8, else Windows-1252: loggers on
+    Windows write ``°C`` and umlauts in the ANSI code page."""
+    try:
+        p.read_bytes().decode("utf-8")
+    except UnicodeDecodeError:
+        return "cp1252"
+    return "utf-8-sig"
+
+
 def _sep_name(sep: str) -> str:
     return {"\t": "tab", r"\s+": "spaces"}.get(sep, sep)
 

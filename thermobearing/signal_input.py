@@ -221,12 +221,13 @@ def split_cells(line: str, sep: str) -> list[str]:
 _split = split_cells
 
 
-def read_text_lines(p: Path, max_lines: int | None = None) -> list[tuple[int, str]]:
+def read_text_lines(p: Path, max_lines: int | None = None, *,
+                    encoding: str = "utf-8-sig") -> list[tuple[int, str]]:
     """The non-blank lines of a text file that are no ``#`` comment, as (0-based line
-    index, text without the line end): UTF-8 with or without BOM, LF or CRLF line ends
-    (undecodable bytes replaced). At most ``max_lines`` lines when given."""
+    index, text without the line end): UTF-8 with or without BOM (or ``encoding``), LF or
+    CRLF line ends (undecodable bytes replaced). At most ``max_lines`` lines when given."""
     raw: list[tuple[int, str]] = []
-    with p.open(encoding="utf-8-sig", errors="replace", newline="") as fh:
+    with p.open(encoding=encoding, errors="replace", newline="") as fh:
         for i, line in enumerate(fh):
             line = line.rstrip("\r\n")
             if line.strip() and not line.lstrip().startswith("#"):

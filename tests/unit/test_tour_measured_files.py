@@ -162,6 +162,21 @@ def test_time_zero_shifts_timestamps(tmp_path, original, reference, run):
     np.testing.assert_allclose(first["time [s]"], plain["time [s]"])
 
 
+@pytest.mark.parametrize("time_column, cells, zero, expect", [
+    ("t [min]", ["3", "4", "5,5"], "3", [0.0, 60.0, 150.0]),        # a number in minutes
+    ("t [min]", ["3", "4", "5,5"], "first", [0.0, 60.0, 150.0]),
+    ("t", ["10:00:00", "10:01:00", "10:02:30"], "09:59:00", [60.0, 120.0, 210.0]),  # clock
+    ("t", ["10:00:00", "10:01:00", "10:02:30"], "first", [0.0, 60.0, 150.0]),
+    ("t", ["10:00:00", "10:01:00", "10:02:30"], None, [36000.0, 36060.0, 36150.0]),
+])
+def test_time_zero_for_numbers_and_clock_times(tmp_path, time_column, cells, zero, expect):
+    lines = [f"{time_column};TC1"] + [f"{c};35,{k}" for k, c in enumerate(cells)]
+    got = read_measured_file(write(tmp_path / "z.csv", lines), time_column, ["TC1"],
+                             time_zero=zero)
+    np.testing.assert_allclose(got["time [s]"], expect)
+    np.testing.assert_allclose(got["TC1"], [35.0, 35.1, 35.2])
+
+
 @pytest.mark.parametrize("style", ["hh:mm:ss", "mm:ss"])
 def test_elapsed_clock_format(tmp_path, original, reference, style):
     lines = [f"elapsed;{DE};{NDE}", f"{style};°C;°C"]
@@ -200,6 +215,17 @@ def test_dropout_flags_and_empty_cells_are_gaps(tmp_path, original, reference, r
     nodes = ["drive_end.housing", "non_drive_end.housing"]
     with pytest.raises(InputError, match=r"TC_DE_synthetic.*row 4: a gap.*4 in this column"):
         measured_table(scene, nodes)
+
+
+def test_windows_1252_file_with_umlauts_and_degree_sign(tmp_path, original, reference):
+    """A Windows logger writes the ANSI code page: ``°C`` and ``Gehäuse`` are not UTF-8."""
+    de, nde = "Gehäuse AS", "Gehäuse BS"
+    lines = ["Messgerät;ALMEMO 2890", f"Zeit;{de};{nde}", "min;°C;°C"]
+    lines += [f"{comma(t)};{comma(a)};{comma(b)}" for t, a, b in rows(original)]
+    path = tmp_path / "ansi.csv"
+    path.write_bytes("\r\n".join(lines).encode("cp1252"))
+    got = read_measured_file(path, "Zeit", [de, nde])
+    same_table(got.rename(columns={de: DE, nde: NDE}), reference)
 
 
 def test_kelvin_file_with_units_row(tmp_path, original, reference):
