@@ -17,7 +17,7 @@ from __future__ import annotations
 import csv
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from datetime import datetime, timedelta
 from pathlib import Path
 
@@ -62,7 +62,8 @@ _STAMP_FORMATS = (
 )
 
 
-def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str, str] | list,
+def read_measured_file(path: str | Path, time_column: str | Sequence[str],
+                       columns: Mapping[str, str] | list,
                        unit: str = "degC", *, time_zero: str | None = None,
                        field: str = "measured") -> pd.DataFrame:
     """Read a rig's thermocouple file: ``time [s]`` + one degC column per sensor.
@@ -97,7 +98,9 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     Parameters
     ----------
     path : the file.
-    time_column : header name of the time column (``"time [min]"``).
+    time_column : header name of the time column (``"time [min]"``), or the names of a
+        date column and a time-of-day column (``["Datum", "Uhrzeit"]``: their cells are
+        joined with a space and read as timestamps).
     columns : the mapped sensor columns (header names; a mapping's keys).
     unit : temperature unit of the sensor columns: ``degC``, ``K`` or ``degF``.
     time_zero : the scene's time zero, in the time column's own format (a timestamp, an
@@ -125,12 +128,20 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     lines = read_text_lines(p, encoding=_encoding(p))
     if not lines:
         raise InputError(f"{field}.file", str(path), "a CSV file with a header row and data")
-    sep, h, header = _find_header(lines, time_column)
+    tnames = [time_column] if isinstance(time_column, str) else [str(c) for c in time_column]
+    if not 1 <= len(tnames) <= 2:
+        raise InputError(f"{field}.time_column", time_column, "a column name, or the names "
+                         "of a date column and a time-of-day column")
+    sep, h, header = _find_header(lines, tnames[0])
     if h is None:
         raise InputError(f"{field}.time_column", time_column,
                          "a column of the file: " + ", ".join(header))
     names = [c.lower() for c in header]
-    tcol = _index(header, names, time_column)
+    tcols = [_index(header, names, c) for c in tnames]
+    if None in tcols:
+        raise InputError(f"{field}.time_column", time_column,
+                         "columns of the file: " + ", ".join(header))
+    tcol = tcols[0]
     idx = {}
     for col in sensors:
         j = _index(header, names, col)
@@ -141,13 +152,13 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     rows = [_cells(ln, sep) for _, ln in lines[h + 1:]]
     at = [i + 1 for i, _ in lines[h + 1:]]  # file line of each row, for the errors
     units = None
-    if rows and _looks_like_units(rows[0], tcol):
+    if rows and _looks_like_units(rows[0], tcols):
         units = rows.pop(0)
         at.pop(0)
     if not rows:
         raise InputError(f"{field}.file", str(path), f"data rows under the header row "
                          f"({', '.join(header)})")
-    need = max([tcol, *idx.values()]) + 1
+    need = max([*tcols, *idx.values()]) + 1
     for k, r in enumerate(rows):
         if len(r) < need:
             raise InputError(f"{field}.file", f"row {k + 1}: {sep.join(r)!r} (line {at[k]})",
@@ -162,8 +173,9 @@ def read_measured_file(path: str | Path, time_column: str, columns: Mapping[str,
     probe = [c for v in cells.values() for c in v[:_PROBE_ROWS]]
     probe += [r[tcol] for r in rows[:_PROBE_ROWS] if _PLAIN.match(r[tcol].strip())]
     decimal = guess_decimal_mark(probe, sep)
-    tunit = _time_unit(time_column, units[tcol] if units is not None else "")
-    times = _parse_times([r[tcol] for r in rows], tunit, decimal, time_zero, time_column,
+    tunit = _time_unit(tnames[0], units[tcol] if units is not None else "")
+    tcells = [" ".join(r[j] for j in tcols) for r in rows]
+    times = _parse_times(tcells, tunit, decimal, time_zero, " + ".join(tnames),
                          field, at)
     out = pd.DataFrame({"time [s]": times})
     for col in sensors:
@@ -227,15 +239,16 @@ def _find_header(lines: list[tuple[int, str]], time_column: str
 def _is_time_format(cell: str) -> bool:
     c = cell.strip().strip("[]()").lower()
     return c in ("hh:mm:ss", "h:mm:ss", "mm:ss", "hh:mm:ss.s", "hh:mm:ss.ss", "hh:mm:ss.sss",
-                 "date", "datetime", "timestamp", "yyyy-mm-dd hh:mm:ss", "dd.mm.yyyy hh:mm:ss")
+                 "date", "datetime", "timestamp", "yyyy-mm-dd hh:mm:ss", "dd.mm.yyyy hh:mm:ss",
+                 "yyyy-mm-dd", "dd.mm.yyyy", "mm/dd/yyyy", "dd/mm/yyyy", "time", "clock")
 
 
-def _looks_like_units(cells: list[str], tcol: int) -> bool:
+def _looks_like_units(cells: list[str], tcols: list[int]) -> bool:
     """A units row: every non-empty cell a unit (the time cell may also be a time format
     such as ``hh:mm:ss``), at least one not empty, and no cell a number."""
     if any(_number(c, ".") is not None or _number(c, ",") is not None for c in cells if c):
         return False
-    probe = ["" if (j == tcol and _is_time_format(c)) else c.replace("℃", "degC")
+    probe = ["" if (j in tcols and _is_time_format(c)) else c.replace("℃", "degC")
              for j, c in enumerate(cells)]
     if not any(probe):
         return any(cells)

@@ -74,6 +74,7 @@ Layout (every table optional unless marked)::
     time_column = "time [min]"         # hh:mm:ss, dropout flags such as OVL or ----)
     unit = "degC"
     columns = { "T_outer_DE" = "drive_end.housing" }
+    # time_column = ["Datum", "Uhrzeit"] # a date and a time-of-day column, read together
     # time_zero = "2026-11-23 10:00:00"  # t = 0 in the time column's format, or "first"
 """
 
@@ -399,6 +400,7 @@ class Measured:
     """Measured temperatures: a rig's thermocouple file with a time column and a
     column -> node map (formats: :func:`thermobearing.measured.read_measured_file`).
 
+    ``time_column``: a column name, or ``[date column, time-of-day column]``.
     ``time_zero``: the instant of the scene's t = 0 in the time column's own format (a
     timestamp, ``hh:mm:ss`` or a number in the column's unit) or ``"first"`` (the first
     row); None: the first row for timestamps, the values as they are otherwise.
@@ -406,7 +408,7 @@ class Measured:
 
     file: str
     columns: Mapping[str, str]
-    time_column: str = "time [min]"
+    time_column: str | tuple[str, str] = "time [min]"
     unit: str = "degC"
     time_zero: str | None = None
 
@@ -428,13 +430,24 @@ class Measured:
             raise InputError("measured.time_zero", zero, "\"first\" or a time in the format "
                              "of the file's time column (\"2026-11-23 10:00:00\", "
                              "\"00:05:00\", 5)")
+        tcol = data.get("time_column", "time [min]")
+        if isinstance(tcol, list | tuple):
+            if len(tcol) != 2 or not all(isinstance(c, str) and c for c in tcol):
+                raise InputError("measured.time_column", tcol, "a column name, or the names "
+                                 "of a date column and a time-of-day column [\"date\", "
+                                 "\"time\"]")
+            tcol = (tcol[0], tcol[1])
+        else:
+            tcol = str(tcol)
         return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
-                   time_column=str(data.get("time_column", "time [min]")), unit=unit,
+                   time_column=tcol, unit=unit,
                    time_zero=None if zero is None else str(zero).strip())
 
     def to_dict(self) -> dict[str, Any]:
+        tcol = self.time_column
         out = {"file": self.file, "columns": dict(self.columns),
-               "time_column": self.time_column, "unit": self.unit}
+               "time_column": tcol if isinstance(tcol, str) else list(tcol),
+               "unit": self.unit}
         if self.time_zero is not None:
             out["time_zero"] = self.time_zero
         return out

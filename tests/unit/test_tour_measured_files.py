@@ -177,6 +177,25 @@ def test_time_zero_for_numbers_and_clock_times(tmp_path, time_column, cells, zer
     np.testing.assert_allclose(got["TC1"], [35.0, 35.1, 35.2])
 
 
+def test_separate_date_and_time_columns_across_midnight(tmp_path, original, reference):
+    """``Datum;Uhrzeit;...`` (ALMEMO / Testo style): ``time_column = ["Datum", "Uhrzeit"]``
+    in the scene; the log runs across midnight, which a time-of-day column alone cannot."""
+    start = datetime(2026, 11, 23, 23, 30, 0)
+    lines = [f"Datum;Uhrzeit;{DE};{NDE}", "dd.mm.yyyy;hh:mm:ss;°C;°C"]
+    for t, a, b in rows(original):
+        stamp = start + timedelta(minutes=float(t))
+        lines.append(f"{stamp:%d.%m.%Y};{stamp:%H:%M:%S};{comma(a)};{comma(b)}")
+    path = write(tmp_path / "almemo.csv", lines)
+    scene = scene_with(path, time_column=["Datum", "Uhrzeit"])
+    assert scene.measured.time_column == ("Datum", "Uhrzeit")
+    assert loads_scene(scene.to_toml(), base_dir=tmp_path).measured == scene.measured
+    same_table(read_measured(scene), reference)
+    with pytest.raises(InputError, match=r"measured.time_column.*date column"):
+        scene_with(path, time_column=["Datum"])
+    with pytest.raises(InputError, match=r"measured.time_column.*'Zeit'.*Datum, Uhrzeit"):
+        read_measured_file(path, ["Datum", "Zeit"], [DE])
+
+
 @pytest.mark.parametrize("style", ["hh:mm:ss", "mm:ss"])
 def test_elapsed_clock_format(tmp_path, original, reference, style):
     lines = [f"elapsed;{DE};{NDE}", f"{style};°C;°C"]
