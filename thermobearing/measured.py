@@ -79,7 +79,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     - **Units row**: a row right under the header whose cells are units (``s;degC;degC``,
       ``[min],[°C]``, ``hh:mm:ss``). It gives the time unit when ``time_column`` has no
       ``[unit]``; a temperature unit in it, or in a sensor column's name (``TC1 [K]``,
-      ``TC1 (°F)``), that contradicts ``unit`` is an error.
+      ``TC1 (°F)``; a bare ``(C)`` / ``(F)`` there is not read as a unit), that contradicts
+      ``unit`` is an error.
     - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator (detected
       from the sensor cells: some ``35,27`` and no ``35.27``).
     - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``) or
@@ -166,7 +167,9 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
                              f"(as in the header row: {', '.join(header)})")
     if units is not None:
         _check_units_row(units, idx, unit, field, "units row")
-    _check_units_row([_bracket(c) for c in header], idx, unit, field, "column name")
+    # a bare C or F in a name's brackets may be a label (``TC (F)``: front), not a unit
+    _check_units_row([u if u.lower() not in ("c", "f") else "" for u in map(_bracket, header)],
+                     idx, unit, field, "column name")
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
     # decimal mark from the sensor cells and plain-number time cells of the first rows
     # (timestamps such as 23.11.2026 would look like decimal points)

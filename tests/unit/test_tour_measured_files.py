@@ -287,6 +287,9 @@ def test_time_unit_in_parentheses_and_unit_in_column_name(tmp_path, original, re
         read_measured_file(path, "t", ["TC1 [K]", "TC2"])
     got = read_measured_file(path, "t", ["TC1 [K]"], "K")
     np.testing.assert_allclose(got["TC1 [K]"], [35.0, 36.0])
+    # a bare (F) in a name may be a label ("front"): no unit check on it
+    path = write(tmp_path / "f.csv", ["t,TC (F)", "0,35", "1,36"])
+    np.testing.assert_allclose(read_measured_file(path, "t", ["TC (F)"])["TC (F)"], [35, 36])
 
 
 # --------------------------------------------------------------------------- bad files
