@@ -192,7 +192,7 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     measured = measured_table(scene, nodes)
     column_map = dict(scene.measured.columns)
     model = _Model(scene, params, measured, column_map, callback)
-    m = len(model.times) * len(column_map)
+    m = model.n_points
     if m < len(params) + 1:
         raise InputError("measured", f"{m} points inside the protocol",
                          f"at least {len(params) + 1} points to fit {len(params)} parameters")
@@ -200,6 +200,10 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     if model.dropped:
         notes.append(f"{model.dropped} measured times outside the simulated protocol "
                      f"(0 .. {scene.schedule.duration:g} s) were not used")
+    gaps = {s: n for s, n in model.gaps.items() if n}
+    if gaps:
+        notes.append("gaps in the measured file (empty cells or dropout flags) left out of "
+                     "the fit: " + ", ".join(f"{s} {n}" for s, n in gaps.items()))
     z0 = np.array([p.to_z(p.initial) for p in params])
     lo = np.array([p.z_bounds()[0] for p in params])
     hi = np.array([p.z_bounds()[1] for p in params])

@@ -28,7 +28,9 @@ __all__ = ["measured_table", "predicted_temperatures"]
 
 def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
     """The scene's measured temperatures (``time [s]`` + one degC column per sensor),
-    checked: every mapped node exists, every value is finite."""
+    checked: every mapped node exists and every sensor has at least one sample. Gaps (empty
+    cells, dropout flags: NaN) are kept; the fit leaves each sensor's gaps out of its
+    residuals (session 12: a single dropout made a logger file unusable for calibration)."""
     from .report import read_measured
 
     if scene.measured is None:
@@ -43,12 +45,10 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
     df = read_measured(scene)
     for col in scene.measured.columns:
         vals = df[col].to_numpy(dtype=float)
-        bad = np.flatnonzero(~np.isfinite(vals))
-        if bad.size:
-            raise InputError(f"measured column {col!r}", f"row {int(bad[0]) + 1}: a gap "
-                             f"(empty cell or dropout flag; {bad.size} in this column)",
-                             "finite numbers in every row (the fit needs every sample: cut "
-                             "the rows or leave the sensor out of measured.columns)")
+        if not np.isfinite(vals).any():
+            raise InputError(f"measured column {col!r}", f"{vals.size} gaps",
+                             "at least one reading (every row is empty or a dropout flag: "
+                             "leave the sensor out of measured.columns)")
     return df
 
 
@@ -88,6 +88,11 @@ class _Model:
         self.inside = (t >= 0.0) & (t <= t_end * (1 + 1e-12))
         self.dropped = int((~self.inside).sum())
         self.times = t[self.inside]
+        # per sensor: the samples inside the protocol that are readings (gaps left out)
+        self.keep = {s: self.inside & np.isfinite(measured[s].to_numpy(float))
+                     for s in self.column_map}
+        self.gaps = {s: int((self.inside & ~k).sum()) for s, k in self.keep.items()}
+        self.n_points = sum(int(k.sum()) for k in self.keep.values())
 
     def values(self, z: np.ndarray) -> list[float]:
         return [p.from_z(float(zi)) for p, zi in zip(self.params, z, strict=True)]
@@ -100,8 +105,11 @@ class _Model:
                          for p, v in zip(self.params, self.values(z), strict=True))
 
     def split(self, r: np.ndarray) -> dict[str, np.ndarray]:
-        n = len(self.times)
-        return {s: r[i * n:(i + 1) * n] for i, s in enumerate(self.column_map)}
+        out, start = {}, 0
+        for s in self.column_map:
+            n = int(self.keep[s].sum())
+            out[s], start = r[start:start + n], start + n
+        return out
 
     def residuals(self, z: np.ndarray) -> np.ndarray:
         key = np.asarray(z, float).tobytes()
@@ -119,10 +127,12 @@ class _Model:
                                    f"{exc} (at {self._where(z)})", exc.state) from exc
         self.runs += 1
         t_model = temps["time [s]"].to_numpy(float)
+        t_meas = self.measured["time [s]"].to_numpy(float)
         parts = []
         for sensor, node in self.column_map.items():
-            pred = np.interp(self.times, t_model, temps[f"{node} [degC]"].to_numpy(float))
-            parts.append(pred - self.measured[sensor].to_numpy(float)[self.inside])
+            keep = self.keep[sensor]
+            pred = np.interp(t_meas[keep], t_model, temps[f"{node} [degC]"].to_numpy(float))
+            parts.append(pred - self.measured[sensor].to_numpy(float)[keep])
         r = np.concatenate(parts)
         if not np.all(np.isfinite(r)):
             raise ConvergenceError("calibration", math.inf, "non-finite predicted temperature",

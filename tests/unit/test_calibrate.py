@@ -156,12 +156,24 @@ def test_column_mapped_to_missing_node_names_column_and_nodes(tmp_path, short_da
     assert "TC_DE" in msg and "drive_end.housing" in msg and "non_drive_end.oil" in msg
 
 
-def test_non_finite_data_is_an_error(tmp_path, short_data):
-    bad = short_data.copy()
-    bad.loc[3, "TC_NDE"] = np.nan
-    scene = _short_scene(tmp_path, bad)
-    with pytest.raises(InputError, match=r"TC_NDE.*row 4"):
-        calibrate(scene, ["network.parameters.h_oil"])
+def test_gaps_are_left_out_of_the_fit(tmp_path, short_data):
+    """A gap (empty cell or logger dropout flag, NaN) leaves that sample of that sensor out
+    of the residuals and is named in the notes (until session 12 any gap refused the whole
+    file); a sensor without a single reading is an error naming it."""
+    gappy = short_data.copy()
+    gappy["TC_NDE"] = gappy["TC_NDE"].astype(object)
+    gappy.loc[3, "TC_NDE"] = "OVL"
+    res = calibrate(_short_scene(tmp_path, gappy), ["network.parameters.h_oil"])
+    points = res.sensors.set_index("sensor")["points"]
+    assert points["TC_NDE"] == len(short_data) - 1 and points["TC_DE"] == len(short_data)
+    assert res.points == 2 * len(short_data) - 1
+    assert any("TC_NDE 1" in n and "left out" in n for n in res.notes)
+    full = calibrate(_short_scene(tmp_path, short_data), ["network.parameters.h_oil"])
+    assert res.parameters[0].value == pytest.approx(full.parameters[0].value, rel=0.05)
+    dead = short_data.copy()
+    dead["TC_NDE"] = np.nan
+    with pytest.raises(InputError, match=r"TC_NDE.*at least one reading"):
+        calibrate(_short_scene(tmp_path, dead), ["network.parameters.h_oil"])
 
 
 def test_missing_csv_column_is_an_error(tmp_path, short_data):
