@@ -153,6 +153,15 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
             out[key] = value
             estimated.setdefault(key, note + why)
 
+    def fill_clearance(table: str, matters: str) -> None:
+        """The mid-range of the ISO 5753-1 Normal group of the bore (when not given)."""
+        if "diametral_clearance" not in out:
+            lo, hi = normal_clearance(table, d)
+            fill("diametral_clearance", 0.5 * (lo + hi),
+                 f"mid-range of the ISO 5753-1 Normal (CN) group for a {d * 1e3:g} mm bore, "
+                 f"{lo * 1e6:g}-{hi * 1e6:g} um; give the measured or the C3/C4 value where "
+                 f"it matters ({matters})")
+
     d = _si(data, "bore", "length", origin)
     D_out = _si(data, "outer_diameter", "length", origin)
     B = _si(data, "width", "length", origin)
@@ -169,12 +178,7 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
         if kind == "deep_groove":
             fill("contact_angle", 0.0, "0 deg: deep groove (the free angle follows from the "
                  "clearance)")
-            if "diametral_clearance" not in out:
-                lo, hi = normal_clearance("deep_groove", d)
-                fill("diametral_clearance", 0.5 * (lo + hi),
-                     f"mid-range of the ISO 5753-1 Normal (CN) group for a {d * 1e3:g} mm "
-                     f"bore, {lo * 1e6:g}-{hi * 1e6:g} um; give the measured or the C3/C4 "
-                     "value where it matters (free contact angle, load zone)")
+            fill_clearance("deep_groove", "free contact angle, load zone")
         else:
             fill("diametral_clearance", 0.0, "0: an angular-contact bearing mounted without "
                  "play (the design contact angle is taken as the free angle); give the "
@@ -184,12 +188,7 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
              "0.020 um), Rq = 1.25 Ra; enters only the Lambda validity check")
     else:
         elem = _si(data, "roller_diameter", "length", origin)
-        if "diametral_clearance" not in out:
-            lo, hi = normal_clearance("cylindrical", d)
-            fill("diametral_clearance", 0.5 * (lo + hi),
-                 f"mid-range of the ISO 5753-1 Normal group for a {d * 1e3:g} mm bore, "
-                 f"{lo * 1e6:g}-{hi * 1e6:g} um; give the measured or the C3/C4 value where "
-                 "it matters (load zone)")
+        fill_clearance("cylindrical", "load zone")
         fill("roller_material", "STEEL_52100", "through-hardened bearing steel (52100 / "
              "100Cr6)")
         fill("element_roughness", 0.08e-6, "Rq 0.08 um: superfinished rollers (Ra about "
