@@ -136,19 +136,11 @@ def test_kurtogram_moments_in_chunks_equal_the_whole_stft(monkeypatch):
 
 def _train(csr, f_shaft, n, fs=25600.0, duration=2.0, f_res=9000.0, seed=0):
     """Impulses at n csr f_shaft, 30 % modulated at csr f_shaft, ringing at f_res, + 0 dB
-    white noise."""
-    rng = np.random.default_rng(seed)
-    size = int(fs * duration)
-    fc = csr * f_shaft
-    imp = np.zeros(size)
-    for tk in np.arange(0.0, duration, 1.0 / (n * fc)):
-        i = int(round(tk * fs))
-        if i < size:
-            imp[i] += 1.0 + 0.3 * np.cos(2 * np.pi * fc * tk)
-    th = np.arange(int(0.01 * fs)) / fs
-    w = 2 * np.pi * f_res
-    x = np.convolve(imp, np.exp(-0.03 * w * th) * np.sin(w * th))[:size]
-    return x + rng.normal(scale=np.sqrt(np.mean(x**2)), size=size)
+    white noise (the generator of the paper 002 analyser case)."""
+    from thermobearing.validation.runners_vibration import _synthetic_record
+
+    return _synthetic_record(csr * f_shaft, n, fs, duration, np.random.default_rng(seed),
+                             resonance=f_res)
 
 
 def test_fast_bearing_at_25k6_uses_fewer_ball_pass_harmonics(tmp_path, capsys):

@@ -11,33 +11,23 @@ printout did not say which channel it analysed; a 60 s, 51.2 kHz CSV took 27 s C
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
 from thermobearing import cli
 from thermobearing import signal as S
 from thermobearing.errors import InputError
+from thermobearing.validation.runners_vibration import _synthetic_record
 
 FS = 25600.0
 
 
 def record(csr=0.4, duration=1.0, f_shaft=30.0, n_balls=9, seed=0):
     """Ball-pass impulses (Z f_c, 30 % modulated at f_c) ringing a 3 kHz resonance, plus
-    white noise of equal power (0 dB): the cage speed ratio of this record is ``csr``."""
-    rng = np.random.default_rng(seed)
-    n = int(FS * duration)
-    fc = csr * f_shaft
-    imp = np.zeros(n)
-    for tk in np.arange(0.0, duration, 1.0 / (n_balls * fc)):
-        i = int(round(tk * FS))
-        if i < n:
-            imp[i] += 1.0 + 0.3 * math.cos(2 * math.pi * fc * tk)
-    th = np.arange(int(0.01 * FS)) / FS
-    w = 2 * math.pi * 3000.0
-    x = np.convolve(imp, np.exp(-0.03 * w * th) * np.sin(w * th))[:n]
-    return x + rng.normal(scale=math.sqrt(np.mean(x**2)), size=n)
+    white noise of equal power (0 dB): the cage speed ratio of this record is ``csr`` (the
+    generator of the paper 002 analyser case)."""
+    return _synthetic_record(csr * f_shaft, n_balls, FS, duration,
+                             np.random.default_rng(seed))
 
 
 def write(path, lines):

@@ -171,10 +171,10 @@ def paper002_cage_frequency_arithmetic(inputs: dict[str, Any], case_dir: Path
 
 
 def _synthetic_record(f_cage: float, n_balls: int, fs: float, duration: float,
-                      rng: np.random.Generator) -> np.ndarray:
+                      rng: np.random.Generator, resonance: float = 3000.0) -> np.ndarray:
     """Ball-pass impulses at Z f_c, amplitude modulated by 30 % at f_c (a cage line, as in
-    paper 002 Fig. 12), exciting a 3 kHz, 3 %-damped resonance, plus white noise of equal
-    power (0 dB)."""
+    paper 002 Fig. 12), exciting a ``resonance`` [Hz] (default 3 kHz), 3 %-damped, plus white
+    noise of equal power (0 dB). (Also the synthetic record of the signal tests.)"""
     n = int(fs * duration)
     imp = np.zeros(n)
     for tk in np.arange(0.0, duration, 1.0 / (n_balls * f_cage)):
@@ -182,7 +182,7 @@ def _synthetic_record(f_cage: float, n_balls: int, fs: float, duration: float,
         if i < n:
             imp[i] += 1.0 + 0.3 * math.cos(2 * math.pi * f_cage * tk)
     th = np.arange(int(0.01 * fs)) / fs
-    w = 2 * math.pi * 3000.0
+    w = 2 * math.pi * resonance
     h = np.exp(-0.03 * w * th) * np.sin(w * th)
     x = np.convolve(imp, h)[:n]
     return x + rng.normal(scale=math.sqrt(float(np.mean(x * x))), size=n)
