@@ -21,7 +21,8 @@ from .results import ResultsWriter
 from .scene import Step
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .simulation import Simulation, _Bearing
+    from .simulation import Simulation
+    from .simulation_bearings import _Bearing
 
 ROLES = ("inner_ring", "outer_ring", "elements", "cage", "oil")
 

@@ -88,7 +88,7 @@ def check_network(network: Mapping[str, Any], require: bool = True) -> None:
     import inspect
 
     from .network.templates import TEMPLATES
-    from .scene import _check_keys, _quantity, _table
+    from .scene_values import _check_keys, _quantity, _table
 
     _check_keys("network", network, ("template", "parameters"))
     name = network.get("template", "four_node_paper002")

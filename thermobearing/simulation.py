@@ -28,16 +28,20 @@ since the last solve: the losses scale with a power < 1 of the viscosity, so thi
 their change. Steady mode (``mode = "steady"``): for each step the coupled fixed point
 of network and heat sources by Newton (affine heat with its Jacobian), with the kinematics
 re-solved until the temperatures stop moving.
+
+The parts it wires live beside it: :mod:`thermobearing.simulation_chain` (the chain plan,
+heat-source names and options, film-model options), :mod:`thermobearing.simulation_bearings`
+(one scene bearing's record and set-up), :mod:`thermobearing.simulation_tables` (table rows),
+:mod:`thermobearing.simulation_summary` (the sweep runner :func:`summarize_scene`); their
+public names are importable from here.
 """
 
 from __future__ import annotations
 
-import math
 import sys
 import time
 import warnings
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -55,265 +59,40 @@ from .operating_checks import (
     composite_roughness,
 )
 from .results import Results, ResultsWriter
-from .scene import Scene, Step, loads_scene
+from .scene import Scene, Step
+from .simulation_bearings import (
+    _apply_calibration,
+    _Bearing,
+    _Evaluation,
+    _load_scene_bearing,
+    _supply_notes,
+)
+from .simulation_chain import (
+    BALL_SOURCES,
+    MODEL_KEYS,
+    ROLLER_SOURCES,
+    ChainLink,
+    _needs,
+    _rib_friction_unavailable,
+    check_film_model,
+    film_kinematics_options,
+    heat_source_names,
+    plan_chain,
+    scene_heat_source_options,
+)
+from .simulation_summary import summarize_scene
+from .simulation_tables import film_table, kinematics_columns, step_columns
 from .state import OilSupply, OperatingPoint
-from .units import from_si
+
+__all__ = [
+    "BALL_SOURCES", "MAX_SHOWN_WARNINGS", "MODEL_KEYS", "ROLLER_SOURCES", "ChainLink",
+    "Simulation", "check_film_model", "check_known", "film_kinematics_options", "film_table",
+    "heat_source_names", "kinematics_columns", "plan_chain", "scene_heat_source_options",
+    "step_columns", "summarize_scene",
+]
 
 #: validity warnings printed by :meth:`Simulation.summary_text` (the report lists all)
 MAX_SHOWN_WARNINGS = 8
-#: The keys a scene's ``[models]`` table accepts.
-MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
-                        "churning_heat_to", "calibration"})
-BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
-                "cage_guide", "pocket_friction")
-ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
-                  "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction",
-                  "rib_friction")
-
-
-@dataclass(frozen=True)
-class ChainLink:
-    """One model of the chain: family, registered name, citation keys, why it runs."""
-
-    family: str
-    name: str
-    references: tuple[str, ...]
-    purpose: str
-
-
-def _needs(scene: Scene) -> dict[str, bool]:
-    want = set(scene.outputs.want)
-    thermal = bool(want & {"temperatures", "energy"})
-    losses = thermal or "losses" in want or "report" in want
-    kin = losses or "kinematics" in want
-    return {"film": True, "kinematics": kin, "losses": losses, "network": thermal,
-            "transient": thermal and scene.outputs.mode == "transient"}
-
-
-def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
-    """Heat sources of the scene (``[models] heat_sources``) or the defaults per type."""
-    names = scene.models.get("heat_sources")
-    if names is None:
-        if scene.models.get("kinematics") == "none":
-            return ("global_friction",)
-        return BALL_SOURCES if is_ball else ROLLER_SOURCES
-    if isinstance(names, str):
-        names = [names]
-    return tuple(names)
-
-
-def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str, dict]:
-    """``[models] heat_source_options`` checked and converted to SI.
-
-    A table per heat source, e.g. ``{ rib_friction = { model = "reduced", unbalance_mass =
-    "0.11 g" } }``. Each source must be one of ``sources`` (the scene's heat sources) and
-    each parameter one its registry entry documents; unit strings are converted to the
-    documented SI unit, numbers are taken as SI, and strings of dimensionless (``"-"``)
-    parameters are passed as names (the source checks them) unless the parameter has a
-    documented interval (a number: ``"50 %"`` is 0.5). Numeric values are checked
-    against the interval the entry documents (``limits``), so ``thermobearing check``
-    refuses e.g. a negative gap or an oil fraction above 1 before anything is solved.
-    """
-    from .heat_sources import HEAT_SOURCES
-    from .units import to_si
-
-    raw = scene.models.get("heat_source_options", {})
-    if not isinstance(raw, Mapping):
-        raise InputError("models.heat_source_options", raw,
-                         "a table of heat-source name -> table of parameters")
-    out: dict[str, dict] = {}
-    for src, params in raw.items():
-        field_name = f"models.heat_source_options.{src}"
-        if src not in sources:
-            raise InputError(field_name, src, "one of the scene's heat sources: "
-                             + ", ".join(sources))
-        if not isinstance(params, Mapping):
-            raise InputError(field_name, params, "a table of parameter = value")
-        entry = HEAT_SOURCES.entry(src)
-        documented = entry.parameters
-        conv: dict[str, Any] = {}
-        for key, value in params.items():
-            if key not in documented:
-                raise InputError(f"{field_name}.{key}", value,
-                                 "a documented parameter of " + src + ": "
-                                 + ", ".join(sorted(documented)))
-            unit = documented[key]
-            if isinstance(value, str) and unit == "-" and key not in entry.limits:
-                conv[key] = value  # a name (form, model): the source checks it
-                continue
-            conv[key] = to_si(value, "" if unit == "-" else unit, field=f"{field_name}.{key}")
-            try:  # the documented interval (registry limits), checked here: at `check`
-                entry.check_parameter(key, conv[key], f"{field_name}.{key}")
-            except InputError as exc:
-                read = "" if conv[key] == value else f" (read as {conv[key]:g} {unit})"
-                raise InputError(f"{field_name}.{key}", value, f"{exc.allowed}{read}") from None
-        out[src] = conv
-    return out
-
-
-def _rib_friction_unavailable(bearing: Any) -> str | None:
-    """Why the ``rib_friction`` source cannot run on this bearing, or None."""
-    from .rib import rib_geometry
-
-    if getattr(bearing, "kind", None) != "cylindrical":
-        return "not a cylindrical roller bearing"
-    if getattr(bearing, "ribbed_ring", "inner") == "outer":
-        return "ribs on the outer ring only (paper 003's inner-ring rib model)"
-    try:
-        rib_geometry(bearing)
-    except InputError as exc:
-        return str(exc)
-    return None
-
-
-def plan_chain(scene: Scene, lubricant: Any | None = None,
-               is_ball: bool = True) -> list[ChainLink]:
-    """The minimal model chain for the scene's outputs (see the module docstring)."""
-    from .film import FILM
-    from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
-
-    for key in scene.models:
-        if key not in MODEL_KEYS:
-            raise InputError(f"models.{key}", scene.models[key],
-                             "a known model family: " + ", ".join(sorted(MODEL_KEYS)))
-    need = _needs(scene)
-    links: list[ChainLink] = []
-
-    def add(registry: Any, name: str, purpose: str) -> None:
-        entry = registry.entry(name)
-        links.append(ChainLink(registry.family, name, entry.references, purpose))
-
-    if lubricant is not None:
-        add(VISCOSITY_TEMPERATURE, lubricant.viscosity_law, "oil viscosity at node temperatures")
-        add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
-    film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
-                            else "pan_hamrock_central")
-    if film not in FILM and film in _numerical_film_models():
-        from .ehl import EHL_SOLVERS
-
-        check_film_model(film, is_ball)
-        add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
-            "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
-    else:
-        if film not in FILM:
-            raise UnknownNameError("models.film", film,
-                                   FILM.names() + _numerical_film_models())
-        add(FILM, film, "film thickness of the raceway contacts")
-    if need["kinematics"]:
-        add(KINEMATICS, scene.models.get("kinematics", "skidding"),
-            "cage and element speeds, sliding speeds")
-    if need["losses"]:
-        from .heat_sources import HEAT_SOURCES
-
-        for name in heat_source_names(scene, is_ball):
-            add(HEAT_SOURCES, name, "power loss")
-    if need["network"]:
-        from .network import STEPPERS
-        from .network.templates import TEMPLATES
-
-        add(TEMPLATES, scene.network.get("template", "four_node_paper002"),
-            "thermal network")
-        if need["transient"]:
-            add(STEPPERS, scene.solver.stepper, "transient temperatures")
-    return links
-
-
-def _numerical_film_models() -> list[str]:
-    """Names of the numerical line-contact film models (``thermobearing.ehl.EHL_SOLVERS``)."""
-    from .ehl import EHL_SOLVERS
-
-    return EHL_SOLVERS.names()
-
-
-def check_film_model(film: str, is_ball: bool) -> None:
-    """Numerical EHL film models are line-contact (roller) models: InputError for balls."""
-    from .film import FILM
-
-    if is_ball and film not in FILM and film in _numerical_film_models():
-        raise InputError(
-            "models.film", film,
-            "a closed-form film model for ball bearings (" + ", ".join(FILM.names())
-            + "); " + " and ".join(repr(n) for n in _numerical_film_models())
-            + " solve line contacts and apply to roller bearings only")
-
-
-def film_kinematics_options(film: str | None, bearing: Any, lubricant: Any,
-                            is_ball: bool) -> dict[str, Any]:
-    """Roller-solver options that put a numerical film model in the quasi-dynamics.
-
-    ``numerical_tehl``: a :class:`thermobearing.ehl.coupling.TehlFilmModel` (one per bearing,
-    its interpolation table lives as long as the Simulation) as ``film_model`` and the
-    ``numerical_tehl`` drag model; ``numerical_ehl``: the isothermal numerical drag model.
-    Closed-form names: no options (the roller solver keeps its own default film).
-    """
-    from .film import FILM
-
-    if film is None or film in FILM or film not in _numerical_film_models():
-        return {}
-    check_film_model(film, is_ball)
-    if film == "numerical_tehl":
-        from .ehl.coupling import roller_film_model
-
-        return {"film_model": roller_film_model(bearing, lubricant),
-                "drag_model": "numerical_tehl"}
-    return {"drag_model": film}
-
-
-# ---------------------------------------------------------------------------
-@dataclass
-class _Bearing:
-    """One bearing of the scene with its models and warm-start memory."""
-
-    name: str
-    key: str
-    bearing: Any
-    is_ball: bool
-    sources: tuple[str, ...]
-    kinematics_name: str
-    kin_options: dict[str, Any]
-    last: KinematicsResult | None = None
-    last_viscosity: float = math.nan
-    last_step: int = -1
-    solves: int = 0
-
-
-@dataclass
-class _Evaluation:
-    """Heat of one bearing at one state: per role, per source/component, and diagnostics."""
-
-    by_role: dict[str, float]
-    rows: list[dict[str, Any]] = field(default_factory=list)
-    #: temperature roles the sources read (the heat depends on no other node temperature)
-    reads: frozenset[str] = frozenset(("inner_ring", "outer_ring", "elements", "cage", "oil"))
-
-
-def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: str) -> Any:
-    """``load_bearing`` with the scene's overrides; an override the bearing refuses is named
-    by its scene field (``bearings[0].overrides.contact_angle``) with the value as written
-    (``'90 deg'``), the converted SI value beside the rule."""
-    from .geometry import load_bearing
-
-    try:
-        return load_bearing(src, overrides=overrides or None)
-    except InputError as exc:
-        key = str(exc.field).rsplit(".", 1)[-1]
-        if overrides and key in overrides and type(exc) is InputError:
-            raise InputError(f"{where}.overrides.{key}", overrides[key],
-                             f"{exc.allowed} (checked in SI: {exc.value!r})") from None
-        raise
-
-
-def _supply_notes(scene: Scene) -> list[str]:
-    """What the scene sets that its oil supply does not use (said, not refused). An oil
-    bath's inlet temperature defaults to the ambient one: only another value was set by the
-    user and is worth a note (session 12: every oil-bath run said so, as a warning)."""
-    sup = scene.supply
-    if (sup.method == "oil_bath" and sup.flow == 0.0
-            and sup.inlet_temperature != scene.environment.ambient_temperature):
-        return [f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is not "
-                "used: an oil bath without flow has no inlet; the bath temperature is the "
-                "network's oil node"]
-    return []
 
 
 class Simulation:
@@ -692,209 +471,6 @@ class Simulation:
             if len(results.warnings) > len(shown):
                 lines.append(f"  ... {len(results.warnings) - len(shown)} more")
         return "\n".join(lines)
-
-
-# ---------------------------------------------------------------------------
-def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any, str]:
-    """Ball force-model parameters and bearing for the skidding solver.
-
-    With ``[models] calibration = "preset"`` (default) and a file
-    ``configs/bearings/<preset>.calibration.toml`` (written by the skidding calibration,
-    fitted on one stated condition), its parameters are used and its diametral clearance
-    replaces the preset's estimate unless the scene overrides the clearance. Returns
-    (parameters, bearing, note); ``calibration = "none"`` keeps the defaults.
-    """
-    from .geometry import configs_dir
-    from .skidding.ball_models import BallParameters
-
-    mode = scene.models.get("calibration", "preset")
-    if mode not in ("preset", "none"):
-        raise InputError("models.calibration", mode, "'preset' or 'none'")
-    path = Path(configs_dir()) / "bearings" / f"{bearing.name}.calibration.toml"
-    if mode == "none" or not path.is_file():
-        return BallParameters(), bearing, ""
-    from .skidding.qj1044 import load_calibration, with_clearance
-
-    cal = load_calibration(path)
-    if "diametral_clearance" not in (spec.overrides or {}):
-        bearing = with_clearance(bearing, cal["diametral_clearance"])
-    cond = cal["condition"]
-    note = (f"calibrated ball force-model parameters from {path.name} "
-            f"(fitted at {cond.get('speed')}, {cond.get('flow')}; other conditions are "
-            f"predictions)")
-    return cal["params"], bearing, note
-
-
-def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
-    """The columns that identify one operating step in the tables."""
-    return {"step": index, "time [s]": time_s, "bearing": bearing,
-            "speed [rpm]": from_si(step.speed, "rpm"),
-            "radial load [kN]": step.radial_load / 1e3,
-            "axial load [kN]": step.axial_load / 1e3}
-
-
-def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
-    """Kinematics table columns of one result, with the largest Hertz pressure and the
-    smallest film parameter of its loaded contacts (:mod:`.operating_checks`; NaN when
-    the bearing gives no roughness)."""
-    check = check_state(bearing, kin)
-    return {"cage speed ratio [-]": kin.cage_speed_ratio,
-            "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
-            "over-skidding [%]": 100.0 * kin.over_skid,
-            "max contact pressure [MPa]": check.max_pressure / 1e6,
-            "min film parameter [-]": (math.nan if check.film_parameter is None
-                                       else check.film_parameter),
-            "converged": kin.converged, "residual": kin.residual_norm,
-            "iterations": kin.iterations}
-
-
-def film_table(b: _Bearing, lubricant: Any, step: Step,
-               temps: Mapping[str, float]) -> tuple[list[dict[str, Any]], float]:
-    """Contact and film of the most loaded element per raceway (film-only scenes): race
-    control. Returns the rows and the state's cage speed ratio [-]."""
-    from .state import race_control_state
-
-    op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
-                        axial_load=step.axial_load)
-    t_c = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
-    state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
-    rows = []
-    numerical = _numerical_film_of(b, lubricant)
-    for cs in state.contacts:
-        q = np.asarray(cs.normal_load)
-        j = int(np.argmax(q))
-        extra: dict[str, Any] = {}
-        if numerical is not None:
-            extra = numerical(cs.race, float(q[j]),
-                              float(np.asarray(cs.entrainment_speed)[j]), t_c)
-        rows.append({"race": cs.race, "max load [N]": float(q[j]),
-                     "max pressure [GPa]": float(np.asarray(cs.max_pressure)[j]) / 1e9,
-                     "semi-major a [mm]": float(np.asarray(cs.semi_major)[j]) * 1e3,
-                     "semi-minor b [mm]": float(np.asarray(cs.semi_minor)[j]) * 1e3,
-                     "contact angle [deg]": math.degrees(float(np.asarray(cs.contact_angle)[j])),
-                     "entrainment speed [m/s]": float(np.asarray(cs.entrainment_speed)[j]),
-                     "central film [um]": (float(np.asarray(cs.film_thickness)[j]) * 1e6
-                                           if cs.film_thickness is not None else math.nan)})
-        if extra:
-            row = rows[-1]
-            row["closed-form central film [um]"] = row["central film [um]"]
-            row["central film [um]"] = extra["numerical central film [um]"]
-            row["minimum film [um]"] = extra["numerical minimum film [um]"]
-            row["film model"] = extra["film model"]
-        sigma = composite_roughness(b.bearing)
-        if sigma is not None:  # Lambda of the film the row reports (operating_checks)
-            row = rows[-1]
-            h = row.get("minimum film [um]", row["central film [um]"])
-            row["film parameter [-]"] = h * 1e-6 / sigma
-    csr = state.cage_speed / state.inner_speed if state.inner_speed else math.nan
-    return rows, float(csr)
-
-
-def _numerical_film_of(b: _Bearing, lubricant: Any) -> Any:
-    """For film-only scenes with a numerical film model: ``f(race, load, u_e, T) -> columns``
-    (central and minimum film of the numerical model at pure rolling, the closed-form
-    central film beside it), else None."""
-    model = b.kin_options.get("film_model")
-    drag = b.kin_options.get("drag_model")
-    if model is None and drag != "numerical_ehl":
-        return None
-    bearing = b.bearing
-    length = bearing.roller_effective_length
-    e_prime = bearing.effective_modulus
-
-    def columns(race: str, load: float, ue: float, temperature: float) -> dict[str, Any]:
-        rx, _ = bearing.curvature(race)
-        w = load / length
-        if model is not None:
-            res = model.films(w, ue, 0.0, temperature, rx, e_prime)
-            hc, hm = float(res.central_film[0]), float(res.minimum_film[0])
-            name = "numerical_tehl"
-        else:
-            from .ehl import EHL_SOLVERS
-
-            p = EHL_SOLVERS.get("numerical_ehl")(w, rx, e_prime, ue, 0.0, temperature,
-                                                 lubricant=lubricant)
-            hc, hm, name = p.central_film, p.minimum_film, "numerical_ehl"
-        return {"film model": name, "numerical central film [um]": hc * 1e6,
-                "numerical minimum film [um]": hm * 1e6}
-
-    return columns
-
-
-def summarize_scene(scene_toml: str) -> dict[str, float]:
-    """Sweep runner: run a scene and reduce it to a few numbers.
-
-    Returns, with the unit in each name:
-
-    * ``total loss [W]``: the scene's power loss (all bearings) averaged over the protocol,
-      each step weighted by its duration; ``max total loss [W]`` the largest step; one
-      ``<source> [W]`` per heat source (all bearings, the same average); with more than one
-      bearing also ``total loss <bearing> [W]`` each. (Until session 12 these were plain
-      means over the steps of the first bearing only, which their names did not say.)
-    * ``max / min over-skidding [%]``, ``max contact pressure [MPa]`` and ``min film
-      parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
-      gives its roughness), and ``steps over skid limit [-]``, ``steps over stress limit
-      [-]``, ``steps under film limit [-]`` (the scene's ``[checks]`` thresholds; summed over
-      bearings), so that a sweep of the thresholds shows what they flag;
-    * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
-      parameter [-]`` of the film table;
-    * with a network: ``final <node> [degC]`` and ``rise <node> [K]`` (final minus the
-      node's temperature at the start, the scene's initial temperature; a scene whose inlet
-      oil is warmer than that counts the difference in the rise too).
-    """
-    scene = loads_scene(scene_toml)
-    sim = Simulation(scene, progress=False)
-    res = sim.run()
-    out: dict[str, float] = {}
-    durations = {i: float(st.duration) for i, st in enumerate(scene.schedule.steps)}
-    losses = res.tables.get("losses")
-    if losses is not None and not losses.empty:
-        def averaged(frame: pd.DataFrame) -> tuple[pd.DataFrame, pd.Series]:
-            per = frame.groupby(["step", "source"])["power [W]"].sum().unstack(fill_value=0.0)
-            w = np.array([durations.get(int(i), 0.0) for i in per.index])
-            w = w / w.sum() if w.sum() > 0 else np.full(len(per), 1.0 / len(per))
-            return per, pd.Series(w, index=per.index)
-
-        per, w = averaged(losses)
-        total = per.sum(axis=1)
-        out["total loss [W]"] = float((total * w).sum())
-        out["max total loss [W]"] = float(total.max())
-        for src in per.columns:
-            out[f"{src} [W]"] = float((per[src] * w).sum())
-        names = list(dict.fromkeys(losses["bearing"]))
-        if len(names) > 1:
-            for name in names:
-                per_b, w_b = averaged(losses[losses["bearing"] == name])
-                out[f"total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
-    kin = res.tables.get("kinematics")
-    if kin is not None and not kin.empty:
-        out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
-        out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
-    states = [c for log in sim.checks.values() for cs in log.steps.values() for c in cs]
-    if states:
-        out["max contact pressure [MPa]"] = max(c.max_pressure for c in states) / 1e6
-        films = [c.film_parameter for c in states if c.film_parameter is not None]
-        if films:
-            out["min film parameter [-]"] = min(films)
-        counts = [log.flagged_steps() for log in sim.checks.values()]
-        out["steps over skid limit [-]"] = float(sum(c["skid"] for c in counts))
-        out["steps over stress limit [-]"] = float(sum(c["stress"] for c in counts))
-        out["steps under film limit [-]"] = float(sum(c["film"] for c in counts))
-    film = res.tables.get("film")
-    if film is not None and not film.empty and kin is None:
-        for col, key in (("central film [um]", "min central film [um]"),
-                         ("minimum film [um]", "min minimum film [um]"),
-                         ("film parameter [-]", "min film parameter [-]")):
-            if col in film:
-                out[key] = float(film[col].min())
-    temps = res.tables.get("temperatures")
-    if temps is not None and not temps.empty:
-        for c in temps.columns:
-            if c.endswith("[degC]"):
-                out[f"final {c}"] = float(temps[c].iloc[-1])
-                out[f"rise {c.replace('[degC]', '[K]')}"] = float(temps[c].iloc[-1]
-                                                                  - temps[c].iloc[0])
-    return out
 
 
 def check_known(name: str, known: Sequence[str], field_name: str) -> None:

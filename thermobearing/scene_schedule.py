@@ -1,0 +1,164 @@
+"""The ``[schedule]`` table of a scene: the operating steps (duration, speed, loads) from
+defaults, an axial-load sweep, an array of steps or a CSV protocol file.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .scene_values import _check_keys, _fmt, _quantity, _require, _table
+
+
+@dataclass(frozen=True)
+class Step:
+    """One schedule step: duration [s], inner-ring speed [rad/s], loads [N]."""
+
+    duration: float
+    speed: float
+    radial_load: float
+    axial_load: float
+
+
+_STEP_KEYS = ("duration", "speed", "radial_load", "axial_load")
+_STEP_KINDS = {"duration": "time", "speed": "angular_speed", "radial_load": "force",
+               "axial_load": "force"}
+_STEP_UNITS = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
+
+
+def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: str) -> Step:
+    _check_keys(where, values, _STEP_KEYS)
+    out = dict(defaults)
+    for key, raw in values.items():
+        out[key] = _quantity(raw, _STEP_KINDS[key], f"{where}.{key}")
+    for key in _STEP_KEYS:
+        if key not in out:
+            raise InputError(f"{where}.{key}", None, "a value (no default given in [schedule])")
+    if not out["duration"] > 0:
+        raise InputError(f"{where}.duration", values.get("duration", out["duration"]),
+                         "a duration > 0")
+    for key in ("radial_load", "axial_load"):
+        if out[key] < 0:
+            raise InputError(f"{where}.{key}", values.get(key, out[key]), "a load >= 0")
+    if out["speed"] < 0:
+        raise InputError(f"{where}.speed", values.get("speed", out["speed"]), "a speed >= 0")
+    return Step(**{k: float(out[k]) for k in _STEP_KEYS})
+
+
+@dataclass(frozen=True)
+class Schedule:
+    """The protocol: a tuple of steps run one after the other."""
+
+    steps: tuple[Step, ...]
+
+    @property
+    def breakpoints(self) -> list[float]:
+        """Times [s] at which one step ends and the next begins (discontinuities)."""
+        t, out = 0.0, []
+        for s in self.steps[:-1]:
+            t += s.duration
+            out.append(t)
+        return out
+
+    @property
+    def duration(self) -> float:
+        return float(sum(s.duration for s in self.steps))
+
+    def step_at(self, t: float) -> int:
+        """Index of the step active at time ``t`` (right-continuous)."""
+        acc = 0.0
+        for i, s in enumerate(self.steps):
+            acc += s.duration
+            if t < acc:
+                return i
+        return len(self.steps) - 1
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Schedule:
+        allowed = ("speed", "radial_load", "axial_load", "step_duration", "duration",
+                   "axial_load_steps", "steps", "file")
+        _check_keys("schedule", data, allowed)
+        defaults: dict[str, float] = {}
+        for key, kind_key in (("speed", "speed"), ("radial_load", "radial_load"),
+                              ("axial_load", "axial_load")):
+            if key in data:
+                defaults[key] = _quantity(data[key], _STEP_KINDS[kind_key], f"schedule.{key}")
+        dur_key = "step_duration" if "step_duration" in data else "duration"
+        if dur_key in data:
+            defaults["duration"] = _quantity(data[dur_key], "time", f"schedule.{dur_key}")
+        forms = [k for k in ("axial_load_steps", "steps", "file") if k in data]
+        if len(forms) > 1:
+            raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
+        steps: list[Step] = []
+        if not forms:
+            if "duration" not in defaults:
+                defaults["duration"] = 3600.0
+            steps.append(_make_step({}, defaults, "schedule"))
+        elif forms[0] == "axial_load_steps":
+            sweep = _table("schedule.axial_load_steps", data["axial_load_steps"])
+            _check_keys("schedule.axial_load_steps", sweep, ("start", "stop", "step"))
+            a0 = _quantity(_require("schedule.axial_load_steps", sweep, "start"), "force",
+                       field="schedule.axial_load_steps.start")
+            a1 = _quantity(_require("schedule.axial_load_steps", sweep, "stop"), "force",
+                       field="schedule.axial_load_steps.stop")
+            da = _quantity(_require("schedule.axial_load_steps", sweep, "step"), "force",
+                       field="schedule.axial_load_steps.step")
+            if da <= 0 or a1 < a0:
+                raise InputError("schedule.axial_load_steps", dict(sweep),
+                                 "start <= stop and step > 0")
+            n = int(math.floor((a1 - a0) / da + 1e-9)) + 1
+            for i in range(n):
+                steps.append(_make_step({}, {**defaults, "axial_load": a0 + i * da},
+                                        f"schedule.axial_load_steps[{i}]"))
+        elif forms[0] == "steps":
+            items = data["steps"]
+            if not isinstance(items, list):
+                raise InputError("schedule.steps", items,
+                                 "an array of tables, e.g. [{ duration = \"3 min\" }, ...]")
+            for i, item in enumerate(items):
+                where = f"schedule.steps[{i}]"
+                steps.append(_make_step(_table(where, item), defaults, where))
+        else:
+            steps.extend(_read_schedule_file(data["file"], defaults, base_dir))
+        if not steps:
+            raise InputError("schedule", dict(data), "at least one step")
+        return cls(steps=tuple(steps))
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "steps": [
+                {k: _fmt(getattr(s, k), _STEP_UNITS[k]) for k in _STEP_KEYS} for s in self.steps
+            ]
+        }
+
+
+def _read_schedule_file(name: str, defaults: Mapping[str, float],
+                        base_dir: Path | None) -> list[Step]:
+    path = Path(name)
+    if not path.is_absolute() and base_dir is not None:
+        path = base_dir / path
+    if not path.is_file():
+        raise InputError("schedule.file", name, "an existing CSV file")
+    units = {"duration": "s", "speed": "rpm", "radial_load": "N", "axial_load": "N"}
+    steps = []
+    with path.open(newline="", encoding="utf-8") as fh:
+        reader = csv.DictReader(fh)
+        colmap: dict[str, str] = {}
+        for col in reader.fieldnames or []:
+            key, _, unit = col.partition("[")
+            key = key.strip()
+            if key not in _STEP_KEYS:
+                raise InputError(f"schedule.file column {col!r}", col,
+                                 "columns named " + ", ".join(_STEP_KEYS) + " with [unit]")
+            colmap[col] = key
+            if unit:
+                units[key] = unit.rstrip("] ")
+        for i, row in enumerate(reader):
+            values = {colmap[c]: f"{v} {units[colmap[c]]}" for c, v in row.items() if v}
+            steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
+    return steps

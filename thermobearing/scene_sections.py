@@ -1,0 +1,345 @@
+"""The sections of a scene other than the schedule, each a frozen dataclass read from its
+TOML table (``from_dict``: strict keys, unit strings to SI) and written back (``to_dict``):
+``[[bearings]]`` (:class:`BearingSpec`), ``[supply]``, ``[environment]``, ``[measured]``,
+``[solver]``, ``[outputs]``, and the ``[checks]`` thresholds (:func:`checks_from_dict`,
+:func:`checks_to_dict`). The layout of the whole file is in :mod:`thermobearing.scene`.
+"""
+
+from __future__ import annotations
+
+import datetime
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
+from typing import Any
+
+from .errors import InputError, UnknownNameError
+from .operating_checks import STRESS_FAMILIES, CheckLimits, check_limit_value
+from .scene_values import _check_keys, _fmt, _quantity, _require, _table
+from .units import to_si
+
+SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
+OUTPUT_MODES = ("transient", "steady")
+OUTPUT_KINDS = (
+    "temperatures", "losses", "kinematics", "energy", "film", "report", "figures",
+)
+#: the keys of the optional ``[checks]`` table
+CHECK_KEYS = ("skid_limit", "contact_stress_limit", "min_film_parameter")
+#: what a run's summary names as the source of limits set in the scene
+CHECKS_SOURCE = "scene [checks]"
+
+
+@dataclass(frozen=True)
+class BearingSpec:
+    """One bearing of the scene: a preset or a TOML path, with overrides."""
+
+    name: str
+    preset: str | None = None
+    path: str | None = None
+    overrides: Mapping[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], index: int) -> BearingSpec:
+        sec = f"bearings[{index}]"
+        _check_keys(sec, data, ("name", "preset", "path", "overrides"))
+        preset, path = data.get("preset"), data.get("path")
+        if (preset is None) == (path is None):
+            raise InputError(f"{sec}.preset", preset, "exactly one of 'preset' or 'path'")
+        return cls(
+            name=str(data.get("name", f"bearing{index + 1}")),
+            preset=preset,
+            path=path,
+            overrides=dict(_table(f"{sec}.overrides", data.get("overrides", {}))),
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"name": self.name}
+        if self.preset:
+            out["preset"] = self.preset
+        if self.path:
+            out["path"] = self.path
+        if self.overrides:
+            out["overrides"] = dict(self.overrides)
+        return out
+
+
+@dataclass(frozen=True)
+class Supply:
+    """Oil supply: method, volume flow [m^3/s], inlet temperature [K], bath level [m]."""
+
+    method: str = "jet"
+    flow: float = 0.0
+    inlet_temperature: float = 308.15
+    level: float | None = None
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], ambient: float) -> Supply:
+        _check_keys("supply", data, ("method", "flow", "inlet_temperature", "level"))
+        method = data.get("method", "jet")
+        if method not in SUPPLY_METHODS:
+            raise UnknownNameError("supply.method", method, SUPPLY_METHODS)
+        flow = _quantity(data.get("flow", 0.0), "volume_flow", "supply.flow")
+        if flow < 0 or (flow == 0 and method not in ("oil_bath", "grease")):
+            raise InputError(
+                "supply.flow", data.get("flow"),
+                "a flow > 0 (zero only for an oil bath or grease)",
+            )
+        t_in = _quantity(data.get("inlet_temperature", ambient), "temperature",
+                     field="supply.inlet_temperature")
+        if t_in <= 0:
+            raise InputError("supply.inlet_temperature", data.get("inlet_temperature"),
+                             "a temperature above absolute zero")
+        level = data.get("level")
+        level_si = None if level is None else _quantity(level, "length", "supply.level")
+        if level_si is not None and level_si < 0:
+            raise InputError("supply.level", level, "an oil level >= 0")
+        if method == "oil_bath" and level_si is None:
+            raise InputError("supply.level", None, "an oil level for an oil bath")
+        return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si)
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "method": self.method,
+            "flow": _fmt(self.flow, "L/min"),
+            "inlet_temperature": _fmt(self.inlet_temperature, "degC"),
+        }
+        if self.level is not None:
+            out["level"] = _fmt(self.level, "mm")
+        return out
+
+
+@dataclass(frozen=True)
+class Environment:
+    """Ambient and initial temperatures [K]."""
+
+    ambient_temperature: float = 308.15
+    initial_temperature: float = 308.15
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Environment:
+        _check_keys("environment", data, ("ambient_temperature", "initial_temperature"))
+        amb = _quantity(data.get("ambient_temperature", "35 degC"), "temperature",
+                    field="environment.ambient_temperature")
+        ini = _quantity(data.get("initial_temperature", amb), "temperature",
+                    field="environment.initial_temperature")
+        for name, v in (("ambient_temperature", amb), ("initial_temperature", ini)):
+            if v <= 0:
+                raise InputError(f"environment.{name}", data.get(name, v),
+                                 "a temperature above absolute zero (0 K = -273.15 degC)")
+        return cls(ambient_temperature=amb, initial_temperature=ini)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "ambient_temperature": _fmt(self.ambient_temperature, "degC"),
+            "initial_temperature": _fmt(self.initial_temperature, "degC"),
+        }
+
+
+@dataclass(frozen=True)
+class Measured:
+    """Measured temperatures: a rig's thermocouple file with a time column and a
+    column -> node map (formats: :func:`thermobearing.measured.read_measured_file`).
+
+    ``time_column``: a column name, or ``[date column, time-of-day column]``.
+    ``time_zero``: the instant of the scene's t = 0 in the time column's own format (a
+    timestamp, ``hh:mm:ss`` or a number in the column's unit) or ``"first"`` (the first
+    row); None: the first row for timestamps, the values as they are otherwise.
+    """
+
+    file: str
+    columns: Mapping[str, str]
+    time_column: str | tuple[str, str] = "time [min]"
+    unit: str = "degC"
+    time_zero: str | None = None
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Measured:
+        _check_keys("measured", data, ("file", "columns", "time_column", "unit", "time_zero"))
+        unit = data.get("unit", "degC")
+        if unit not in ("degC", "K", "degF"):
+            raise InputError("measured.unit", unit, "degC, K or degF")
+        cols = data.get("columns")
+        if not isinstance(cols, Mapping) or not cols:
+            raise InputError("measured.columns", cols, "a table of CSV column -> node name")
+        zero = data.get("time_zero")
+        if isinstance(zero, datetime.datetime | datetime.time):  # an unquoted TOML time
+            zero = zero.isoformat(sep=" ") if isinstance(zero, datetime.datetime) \
+                else zero.isoformat()
+        if zero is not None and (not isinstance(zero, str | int | float)
+                                 or isinstance(zero, bool) or not str(zero).strip()):
+            raise InputError("measured.time_zero", zero, "\"first\" or a time in the format "
+                             "of the file's time column (\"2026-11-23 10:00:00\", "
+                             "\"00:05:00\", 5)")
+        tcol = data.get("time_column", "time [min]")
+        if isinstance(tcol, list | tuple):
+            if len(tcol) != 2 or not all(isinstance(c, str) and c for c in tcol):
+                raise InputError("measured.time_column", tcol, "a column name, or the names "
+                                 "of a date column and a time-of-day column [\"date\", "
+                                 "\"time\"]")
+            tcol = (tcol[0], tcol[1])
+        else:
+            tcol = str(tcol)
+        return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
+                   time_column=tcol, unit=unit,
+                   time_zero=None if zero is None else str(zero).strip())
+
+    def to_dict(self) -> dict[str, Any]:
+        tcol = self.time_column
+        out = {"file": self.file, "columns": dict(self.columns),
+               "time_column": tcol if isinstance(tcol, str) else list(tcol),
+               "unit": self.unit}
+        if self.time_zero is not None:
+            out["time_zero"] = self.time_zero
+        return out
+
+
+@dataclass(frozen=True)
+class Solver:
+    """Solver settings.
+
+    ``rtol``, ``atol`` [K]: the stepper's error scale atol + rtol |T| per step. Inside a
+    coupling chunk the heat is the chunk's quadratic model (:mod:`thermobearing.coupled`),
+    so a step costs no heat-source evaluation and the tight defaults are nearly free
+    (default scene: 95 instead of 44 steps, 4e-6 instead of 5.6e-5 K from a tight LSODA
+    reference of the same chain, the same CPU time; BM-E2E). TR-BDF2, second order, pays
+    more for them: 756 instead of 145 steps on the default scene, +37 % CPU; on a large
+    network where its steps dominate, rtol 1e-4 / atol 1e-3 K keep the old cost.
+    """
+
+    stepper: str = "exprb43"
+    rtol: float = 1e-7
+    atol: float = 1e-5
+    kinematics_tolerance: float = 0.03
+    max_step: float = 600.0
+    chunk: float = 90.0
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Solver:
+        names = [f.name for f in fields(cls)]
+        _check_keys("solver", data, names)
+        kw: dict[str, Any] = {}
+        if "stepper" in data:
+            if not isinstance(data["stepper"], str):
+                raise InputError("solver.stepper", data["stepper"], "a stepper name (a string)")
+            kw["stepper"] = data["stepper"]
+        limits = {"rtol": ("a relative tolerance in (0, 1)", 1.0),
+                  "atol": ("an absolute tolerance > 0 (K)", math.inf),
+                  "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0)}
+        for key, (allowed, high) in limits.items():
+            if key in data:
+                raw = data[key]
+                if isinstance(raw, bool) or not isinstance(raw, int | float):
+                    raise InputError(f"solver.{key}", raw, "a number: " + allowed)
+                v = float(raw)
+                if not (math.isfinite(v) and 0.0 < v < high):
+                    raise InputError(f"solver.{key}", raw, allowed)
+                kw[key] = v
+        for key in ("max_step", "chunk"):
+            if key in data:
+                kw[key] = _quantity(data[key], "time", f"solver.{key}")
+                if kw[key] <= 0:
+                    raise InputError(f"solver.{key}", data[key], "a time > 0")
+        return cls(**kw)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"stepper": self.stepper, "rtol": self.rtol, "atol": self.atol,
+                "kinematics_tolerance": self.kinematics_tolerance,
+                "max_step": _fmt(self.max_step, "s"), "chunk": _fmt(self.chunk, "s")}
+
+
+@dataclass(frozen=True)
+class Outputs:
+    """What the scene must produce; decides which models run.
+
+    ``interval`` [s] (optional, transient runs): temperature rows also at every multiple of
+    it, from the stepper's own dense output between the coupling chunk ends (default: the
+    chunk ends only). A measured CSV is compared with these rows, so a thermocouple log
+    sampled faster than the chunk is met by the model's curve, not by straight lines
+    between chunk ends.
+    """
+
+    mode: str = "transient"
+    want: tuple[str, ...] = ("temperatures", "losses", "kinematics", "energy", "report")
+    interval: float | None = None
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Outputs:
+        _check_keys("outputs", data, ("mode", "want", "interval"))
+        interval = None
+        if "interval" in data:
+            interval = _quantity(data["interval"], "time", "outputs.interval")
+            if not interval > 0:
+                raise InputError("outputs.interval", data["interval"], "a time > 0")
+        mode = data.get("mode", "transient")
+        if mode not in OUTPUT_MODES:
+            raise UnknownNameError("outputs.mode", mode, OUTPUT_MODES)
+        raw_want = data.get("want", cls.want)
+        if isinstance(raw_want, str) or not isinstance(raw_want, list | tuple):
+            raise InputError("outputs.want", raw_want,
+                             "an array of output names, e.g. [\"temperatures\", \"losses\"]")
+        want = tuple(raw_want)
+        for w in want:
+            if w not in OUTPUT_KINDS:
+                raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
+        return cls(mode=mode, want=want, interval=interval)
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"mode": self.mode, "want": list(self.want)}
+        if self.interval is not None:
+            out["interval"] = _fmt(self.interval, "s")
+        return out
+
+
+def checks_from_dict(data: Mapping[str, Any]) -> CheckLimits:
+    """The thresholds of the optional ``[checks]`` table (:class:`CheckLimits`, SI).
+
+    ``skid_limit`` and ``min_film_parameter`` are dimensionless (``0.02``, ``"2 %"``, ``1.5``);
+    ``contact_stress_limit`` is a stress (``"3500 MPa"``) for every bearing family, or a
+    table ``{ ball = ..., self_aligning_ball = ..., roller = ... }`` setting some of them
+    (the others keep the ISO 76 stress). Keys left out keep their defaults.
+    """
+    _check_keys("checks", data, CHECK_KEYS)
+    kw: dict[str, float] = {}
+
+    def limit(name: str, raw: Any, kind: str, where: str) -> None:
+        value = to_si(raw, kind, field=where)
+        check_limit_value(name, value, where, raw)
+        kw[name] = value
+
+    for name in ("skid_limit", "min_film_parameter"):
+        if name in data:
+            limit(name, data[name], "dimensionless", f"checks.{name}")
+    if "contact_stress_limit" in data:
+        raw = data["contact_stress_limit"]
+        if isinstance(raw, Mapping):
+            _check_keys("checks.contact_stress_limit", raw, STRESS_FAMILIES)
+            if not raw:
+                raise InputError("checks.contact_stress_limit", dict(raw),
+                                 "a stress, or a table naming one or more of "
+                                 + ", ".join(STRESS_FAMILIES))
+            for family, value in raw.items():
+                limit(f"{family}_stress_limit", value, "stress",
+                      f"checks.contact_stress_limit.{family}")
+        else:
+            for family in STRESS_FAMILIES:
+                limit(f"{family}_stress_limit", raw, "stress", "checks.contact_stress_limit")
+    return CheckLimits(**kw, source=CHECKS_SOURCE)
+
+
+def checks_to_dict(limits: CheckLimits) -> dict[str, Any]:
+    """The ``[checks]`` table of ``limits``: only the thresholds that differ from the
+    defaults; one stress when every family has the same set value."""
+    out: dict[str, Any] = {}
+    if not limits.is_default("skid_limit"):
+        percent = f"{100.0 * limits.skid_limit:.12g} %"  # as users write it, when exact
+        out["skid_limit"] = percent if to_si(percent, "dimensionless") == limits.skid_limit \
+            else limits.skid_limit
+    stress = {f: limits.stress_limit(f) for f in STRESS_FAMILIES
+              if not limits.is_default(f"{f}_stress_limit")}
+    if len(stress) == len(STRESS_FAMILIES) and len(set(stress.values())) == 1:
+        out["contact_stress_limit"] = _fmt(next(iter(stress.values())), "MPa")
+    elif stress:
+        out["contact_stress_limit"] = {f: _fmt(v, "MPa") for f, v in stress.items()}
+    if not limits.is_default("min_film_parameter"):
+        out["min_film_parameter"] = limits.min_film_parameter
+    return out

@@ -1,0 +1,102 @@
+"""One scene bearing inside a :class:`~thermobearing.simulation.Simulation`: its record (models,
+heat sources, warm-start memory), the heat of one evaluation, and its set-up from the scene
+(preset with overrides, the ball force-model calibration, notes on the oil supply).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .kinematic_models import KinematicsResult
+from .scene import Scene
+
+
+@dataclass
+class _Bearing:
+    """One bearing of the scene with its models and warm-start memory."""
+
+    name: str
+    key: str
+    bearing: Any
+    is_ball: bool
+    sources: tuple[str, ...]
+    kinematics_name: str
+    kin_options: dict[str, Any]
+    last: KinematicsResult | None = None
+    last_viscosity: float = math.nan
+    last_step: int = -1
+    solves: int = 0
+
+
+@dataclass
+class _Evaluation:
+    """Heat of one bearing at one state: per role, per source/component, and diagnostics."""
+
+    by_role: dict[str, float]
+    rows: list[dict[str, Any]] = field(default_factory=list)
+    #: temperature roles the sources read (the heat depends on no other node temperature)
+    reads: frozenset[str] = frozenset(("inner_ring", "outer_ring", "elements", "cage", "oil"))
+
+
+def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: str) -> Any:
+    """``load_bearing`` with the scene's overrides; an override the bearing refuses is named
+    by its scene field (``bearings[0].overrides.contact_angle``) with the value as written
+    (``'90 deg'``), the converted SI value beside the rule."""
+    from .geometry import load_bearing
+
+    try:
+        return load_bearing(src, overrides=overrides or None)
+    except InputError as exc:
+        key = str(exc.field).rsplit(".", 1)[-1]
+        if overrides and key in overrides and type(exc) is InputError:
+            raise InputError(f"{where}.overrides.{key}", overrides[key],
+                             f"{exc.allowed} (checked in SI: {exc.value!r})") from None
+        raise
+
+
+def _supply_notes(scene: Scene) -> list[str]:
+    """What the scene sets that its oil supply does not use (said, not refused). An oil
+    bath's inlet temperature defaults to the ambient one: only another value was set by the
+    user and is worth a note (session 12: every oil-bath run said so, as a warning)."""
+    sup = scene.supply
+    if (sup.method == "oil_bath" and sup.flow == 0.0
+            and sup.inlet_temperature != scene.environment.ambient_temperature):
+        return [f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is not "
+                "used: an oil bath without flow has no inlet; the bath temperature is the "
+                "network's oil node"]
+    return []
+
+
+def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any, str]:
+    """Ball force-model parameters and bearing for the skidding solver.
+
+    With ``[models] calibration = "preset"`` (default) and a file
+    ``configs/bearings/<preset>.calibration.toml`` (written by the skidding calibration,
+    fitted on one stated condition), its parameters are used and its diametral clearance
+    replaces the preset's estimate unless the scene overrides the clearance. Returns
+    (parameters, bearing, note); ``calibration = "none"`` keeps the defaults.
+    """
+    from .geometry import configs_dir
+    from .skidding.ball_models import BallParameters
+
+    mode = scene.models.get("calibration", "preset")
+    if mode not in ("preset", "none"):
+        raise InputError("models.calibration", mode, "'preset' or 'none'")
+    path = Path(configs_dir()) / "bearings" / f"{bearing.name}.calibration.toml"
+    if mode == "none" or not path.is_file():
+        return BallParameters(), bearing, ""
+    from .skidding.qj1044 import load_calibration, with_clearance
+
+    cal = load_calibration(path)
+    if "diametral_clearance" not in (spec.overrides or {}):
+        bearing = with_clearance(bearing, cal["diametral_clearance"])
+    cond = cal["condition"]
+    note = (f"calibrated ball force-model parameters from {path.name} "
+            f"(fitted at {cond.get('speed')}, {cond.get('flow')}; other conditions are "
+            f"predictions)")
+    return cal["params"], bearing, note

@@ -1,0 +1,216 @@
+"""The model chain of a scene: which models run, in which order and why.
+
+Model only what a scene needs (:func:`plan_chain`): ``film`` alone runs no kinematics and
+no network; ``kinematics``/``losses`` run no network; ``temperatures``/``energy`` add the
+network and the transient stepper (or the steady solve in ``mode = "steady"``). Also the
+scene's heat sources (defaults per bearing type) and their options in SI, and the roller
+solver's options that put a numerical film model into the quasi-dynamics.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from .errors import InputError, UnknownNameError
+from .kinematic_models import KINEMATICS
+from .scene import Scene
+
+#: The keys a scene's ``[models]`` table accepts.
+MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
+                        "churning_heat_to", "calibration"})
+BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
+                "cage_guide", "pocket_friction")
+ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
+                  "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction",
+                  "rib_friction")
+
+
+
+@dataclass(frozen=True)
+class ChainLink:
+    """One model of the chain: family, registered name, citation keys, why it runs."""
+
+    family: str
+    name: str
+    references: tuple[str, ...]
+    purpose: str
+
+
+def _needs(scene: Scene) -> dict[str, bool]:
+    want = set(scene.outputs.want)
+    thermal = bool(want & {"temperatures", "energy"})
+    losses = thermal or "losses" in want or "report" in want
+    kin = losses or "kinematics" in want
+    return {"film": True, "kinematics": kin, "losses": losses, "network": thermal,
+            "transient": thermal and scene.outputs.mode == "transient"}
+
+
+def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
+    """Heat sources of the scene (``[models] heat_sources``) or the defaults per type."""
+    names = scene.models.get("heat_sources")
+    if names is None:
+        if scene.models.get("kinematics") == "none":
+            return ("global_friction",)
+        return BALL_SOURCES if is_ball else ROLLER_SOURCES
+    if isinstance(names, str):
+        names = [names]
+    return tuple(names)
+
+
+def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str, dict]:
+    """``[models] heat_source_options`` checked and converted to SI.
+
+    A table per heat source, e.g. ``{ rib_friction = { model = "reduced", unbalance_mass =
+    "0.11 g" } }``. Each source must be one of ``sources`` (the scene's heat sources) and
+    each parameter one its registry entry documents; unit strings are converted to the
+    documented SI unit, numbers are taken as SI, and strings of dimensionless (``"-"``)
+    parameters are passed as names (the source checks them) unless the parameter has a
+    documented interval (a number: ``"50 %"`` is 0.5). Numeric values are checked
+    against the interval the entry documents (``limits``), so ``thermobearing check``
+    refuses e.g. a negative gap or an oil fraction above 1 before anything is solved.
+    """
+    from .heat_sources import HEAT_SOURCES
+    from .units import to_si
+
+    raw = scene.models.get("heat_source_options", {})
+    if not isinstance(raw, Mapping):
+        raise InputError("models.heat_source_options", raw,
+                         "a table of heat-source name -> table of parameters")
+    out: dict[str, dict] = {}
+    for src, params in raw.items():
+        field_name = f"models.heat_source_options.{src}"
+        if src not in sources:
+            raise InputError(field_name, src, "one of the scene's heat sources: "
+                             + ", ".join(sources))
+        if not isinstance(params, Mapping):
+            raise InputError(field_name, params, "a table of parameter = value")
+        entry = HEAT_SOURCES.entry(src)
+        documented = entry.parameters
+        conv: dict[str, Any] = {}
+        for key, value in params.items():
+            if key not in documented:
+                raise InputError(f"{field_name}.{key}", value,
+                                 "a documented parameter of " + src + ": "
+                                 + ", ".join(sorted(documented)))
+            unit = documented[key]
+            if isinstance(value, str) and unit == "-" and key not in entry.limits:
+                conv[key] = value  # a name (form, model): the source checks it
+                continue
+            conv[key] = to_si(value, "" if unit == "-" else unit, field=f"{field_name}.{key}")
+            try:  # the documented interval (registry limits), checked here: at `check`
+                entry.check_parameter(key, conv[key], f"{field_name}.{key}")
+            except InputError as exc:
+                read = "" if conv[key] == value else f" (read as {conv[key]:g} {unit})"
+                raise InputError(f"{field_name}.{key}", value, f"{exc.allowed}{read}") from None
+        out[src] = conv
+    return out
+
+
+def _rib_friction_unavailable(bearing: Any) -> str | None:
+    """Why the ``rib_friction`` source cannot run on this bearing, or None."""
+    from .rib import rib_geometry
+
+    if getattr(bearing, "kind", None) != "cylindrical":
+        return "not a cylindrical roller bearing"
+    if getattr(bearing, "ribbed_ring", "inner") == "outer":
+        return "ribs on the outer ring only (paper 003's inner-ring rib model)"
+    try:
+        rib_geometry(bearing)
+    except InputError as exc:
+        return str(exc)
+    return None
+
+
+def plan_chain(scene: Scene, lubricant: Any | None = None,
+               is_ball: bool = True) -> list[ChainLink]:
+    """The minimal model chain for the scene's outputs (see the module docstring)."""
+    from .film import FILM
+    from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
+
+    for key in scene.models:
+        if key not in MODEL_KEYS:
+            raise InputError(f"models.{key}", scene.models[key],
+                             "a known model family: " + ", ".join(sorted(MODEL_KEYS)))
+    need = _needs(scene)
+    links: list[ChainLink] = []
+
+    def add(registry: Any, name: str, purpose: str) -> None:
+        entry = registry.entry(name)
+        links.append(ChainLink(registry.family, name, entry.references, purpose))
+
+    if lubricant is not None:
+        add(VISCOSITY_TEMPERATURE, lubricant.viscosity_law, "oil viscosity at node temperatures")
+        add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
+    film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
+                            else "pan_hamrock_central")
+    if film not in FILM and film in _numerical_film_models():
+        from .ehl import EHL_SOLVERS
+
+        check_film_model(film, is_ball)
+        add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
+            "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
+    else:
+        if film not in FILM:
+            raise UnknownNameError("models.film", film,
+                                   FILM.names() + _numerical_film_models())
+        add(FILM, film, "film thickness of the raceway contacts")
+    if need["kinematics"]:
+        add(KINEMATICS, scene.models.get("kinematics", "skidding"),
+            "cage and element speeds, sliding speeds")
+    if need["losses"]:
+        from .heat_sources import HEAT_SOURCES
+
+        for name in heat_source_names(scene, is_ball):
+            add(HEAT_SOURCES, name, "power loss")
+    if need["network"]:
+        from .network import STEPPERS
+        from .network.templates import TEMPLATES
+
+        add(TEMPLATES, scene.network.get("template", "four_node_paper002"),
+            "thermal network")
+        if need["transient"]:
+            add(STEPPERS, scene.solver.stepper, "transient temperatures")
+    return links
+
+
+def _numerical_film_models() -> list[str]:
+    """Names of the numerical line-contact film models (``thermobearing.ehl.EHL_SOLVERS``)."""
+    from .ehl import EHL_SOLVERS
+
+    return EHL_SOLVERS.names()
+
+
+def check_film_model(film: str, is_ball: bool) -> None:
+    """Numerical EHL film models are line-contact (roller) models: InputError for balls."""
+    from .film import FILM
+
+    if is_ball and film not in FILM and film in _numerical_film_models():
+        raise InputError(
+            "models.film", film,
+            "a closed-form film model for ball bearings (" + ", ".join(FILM.names())
+            + "); " + " and ".join(repr(n) for n in _numerical_film_models())
+            + " solve line contacts and apply to roller bearings only")
+
+
+def film_kinematics_options(film: str | None, bearing: Any, lubricant: Any,
+                            is_ball: bool) -> dict[str, Any]:
+    """Roller-solver options that put a numerical film model in the quasi-dynamics.
+
+    ``numerical_tehl``: a :class:`thermobearing.ehl.coupling.TehlFilmModel` (one per bearing,
+    its interpolation table lives as long as the Simulation) as ``film_model`` and the
+    ``numerical_tehl`` drag model; ``numerical_ehl``: the isothermal numerical drag model.
+    Closed-form names: no options (the roller solver keeps its own default film).
+    """
+    from .film import FILM
+
+    if film is None or film in FILM or film not in _numerical_film_models():
+        return {}
+    check_film_model(film, is_ball)
+    if film == "numerical_tehl":
+        from .ehl.coupling import roller_film_model
+
+        return {"film_model": roller_film_model(bearing, lubricant),
+                "drag_model": "numerical_tehl"}
+    return {"drag_model": film}

@@ -1,0 +1,88 @@
+"""The sweep runner: run a scene given as TOML text and reduce it to a few named numbers
+(:func:`summarize_scene`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from .scene import loads_scene
+
+
+def summarize_scene(scene_toml: str) -> dict[str, float]:
+    """Sweep runner: run a scene and reduce it to a few numbers.
+
+    Returns, with the unit in each name:
+
+    * ``total loss [W]``: the scene's power loss (all bearings) averaged over the protocol,
+      each step weighted by its duration; ``max total loss [W]`` the largest step; one
+      ``<source> [W]`` per heat source (all bearings, the same average); with more than one
+      bearing also ``total loss <bearing> [W]`` each. (Until session 12 these were plain
+      means over the steps of the first bearing only, which their names did not say.)
+    * ``max / min over-skidding [%]``, ``max contact pressure [MPa]`` and ``min film
+      parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
+      gives its roughness), and ``steps over skid limit [-]``, ``steps over stress limit
+      [-]``, ``steps under film limit [-]`` (the scene's ``[checks]`` thresholds; summed over
+      bearings), so that a sweep of the thresholds shows what they flag;
+    * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
+      parameter [-]`` of the film table;
+    * with a network: ``final <node> [degC]`` and ``rise <node> [K]`` (final minus the
+      node's temperature at the start, the scene's initial temperature; a scene whose inlet
+      oil is warmer than that counts the difference in the rise too).
+    """
+    from .simulation import Simulation
+
+    scene = loads_scene(scene_toml)
+    sim = Simulation(scene, progress=False)
+    res = sim.run()
+    out: dict[str, float] = {}
+    durations = {i: float(st.duration) for i, st in enumerate(scene.schedule.steps)}
+    losses = res.tables.get("losses")
+    if losses is not None and not losses.empty:
+        def averaged(frame: pd.DataFrame) -> tuple[pd.DataFrame, pd.Series]:
+            per = frame.groupby(["step", "source"])["power [W]"].sum().unstack(fill_value=0.0)
+            w = np.array([durations.get(int(i), 0.0) for i in per.index])
+            w = w / w.sum() if w.sum() > 0 else np.full(len(per), 1.0 / len(per))
+            return per, pd.Series(w, index=per.index)
+
+        per, w = averaged(losses)
+        total = per.sum(axis=1)
+        out["total loss [W]"] = float((total * w).sum())
+        out["max total loss [W]"] = float(total.max())
+        for src in per.columns:
+            out[f"{src} [W]"] = float((per[src] * w).sum())
+        names = list(dict.fromkeys(losses["bearing"]))
+        if len(names) > 1:
+            for name in names:
+                per_b, w_b = averaged(losses[losses["bearing"] == name])
+                out[f"total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
+    kin = res.tables.get("kinematics")
+    if kin is not None and not kin.empty:
+        out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
+        out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
+    states = [c for log in sim.checks.values() for cs in log.steps.values() for c in cs]
+    if states:
+        out["max contact pressure [MPa]"] = max(c.max_pressure for c in states) / 1e6
+        films = [c.film_parameter for c in states if c.film_parameter is not None]
+        if films:
+            out["min film parameter [-]"] = min(films)
+        counts = [log.flagged_steps() for log in sim.checks.values()]
+        out["steps over skid limit [-]"] = float(sum(c["skid"] for c in counts))
+        out["steps over stress limit [-]"] = float(sum(c["stress"] for c in counts))
+        out["steps under film limit [-]"] = float(sum(c["film"] for c in counts))
+    film = res.tables.get("film")
+    if film is not None and not film.empty and kin is None:
+        for col, key in (("central film [um]", "min central film [um]"),
+                         ("minimum film [um]", "min minimum film [um]"),
+                         ("film parameter [-]", "min film parameter [-]")):
+            if col in film:
+                out[key] = float(film[col].min())
+    temps = res.tables.get("temperatures")
+    if temps is not None and not temps.empty:
+        for c in temps.columns:
+            if c.endswith("[degC]"):
+                out[f"final {c}"] = float(temps[c].iloc[-1])
+                out[f"rise {c.replace('[degC]', '[K]')}"] = float(temps[c].iloc[-1]
+                                                                  - temps[c].iloc[0])
+    return out

@@ -1,0 +1,115 @@
+"""Rows of the result tables of a run: the columns that identify an operating step, the
+kinematics columns of a solved state, and the contact / film table of film-only scenes
+(closed-form, or the numerical film model beside it).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from .kinematic_models import KinematicsResult
+from .operating_checks import check_state, composite_roughness
+from .scene import Step
+from .simulation_bearings import _Bearing
+from .state import OperatingPoint
+from .units import from_si
+
+
+def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
+    """The columns that identify one operating step in the tables."""
+    return {"step": index, "time [s]": time_s, "bearing": bearing,
+            "speed [rpm]": from_si(step.speed, "rpm"),
+            "radial load [kN]": step.radial_load / 1e3,
+            "axial load [kN]": step.axial_load / 1e3}
+
+
+def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
+    """Kinematics table columns of one result, with the largest Hertz pressure and the
+    smallest film parameter of its loaded contacts (:mod:`.operating_checks`; NaN when
+    the bearing gives no roughness)."""
+    check = check_state(bearing, kin)
+    return {"cage speed ratio [-]": kin.cage_speed_ratio,
+            "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
+            "over-skidding [%]": 100.0 * kin.over_skid,
+            "max contact pressure [MPa]": check.max_pressure / 1e6,
+            "min film parameter [-]": (math.nan if check.film_parameter is None
+                                       else check.film_parameter),
+            "converged": kin.converged, "residual": kin.residual_norm,
+            "iterations": kin.iterations}
+
+
+def film_table(b: _Bearing, lubricant: Any, step: Step,
+               temps: Mapping[str, float]) -> tuple[list[dict[str, Any]], float]:
+    """Contact and film of the most loaded element per raceway (film-only scenes): race
+    control. Returns the rows and the state's cage speed ratio [-]."""
+    from .state import race_control_state
+
+    op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
+                        axial_load=step.axial_load)
+    t_c = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
+    state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
+    rows = []
+    numerical = _numerical_film_of(b, lubricant)
+    for cs in state.contacts:
+        q = np.asarray(cs.normal_load)
+        j = int(np.argmax(q))
+        extra: dict[str, Any] = {}
+        if numerical is not None:
+            extra = numerical(cs.race, float(q[j]),
+                              float(np.asarray(cs.entrainment_speed)[j]), t_c)
+        rows.append({"race": cs.race, "max load [N]": float(q[j]),
+                     "max pressure [GPa]": float(np.asarray(cs.max_pressure)[j]) / 1e9,
+                     "semi-major a [mm]": float(np.asarray(cs.semi_major)[j]) * 1e3,
+                     "semi-minor b [mm]": float(np.asarray(cs.semi_minor)[j]) * 1e3,
+                     "contact angle [deg]": math.degrees(float(np.asarray(cs.contact_angle)[j])),
+                     "entrainment speed [m/s]": float(np.asarray(cs.entrainment_speed)[j]),
+                     "central film [um]": (float(np.asarray(cs.film_thickness)[j]) * 1e6
+                                           if cs.film_thickness is not None else math.nan)})
+        if extra:
+            row = rows[-1]
+            row["closed-form central film [um]"] = row["central film [um]"]
+            row["central film [um]"] = extra["numerical central film [um]"]
+            row["minimum film [um]"] = extra["numerical minimum film [um]"]
+            row["film model"] = extra["film model"]
+        sigma = composite_roughness(b.bearing)
+        if sigma is not None:  # Lambda of the film the row reports (operating_checks)
+            row = rows[-1]
+            h = row.get("minimum film [um]", row["central film [um]"])
+            row["film parameter [-]"] = h * 1e-6 / sigma
+    csr = state.cage_speed / state.inner_speed if state.inner_speed else math.nan
+    return rows, float(csr)
+
+
+def _numerical_film_of(b: _Bearing, lubricant: Any) -> Any:
+    """For film-only scenes with a numerical film model: ``f(race, load, u_e, T) -> columns``
+    (central and minimum film of the numerical model at pure rolling, the closed-form
+    central film beside it), else None."""
+    model = b.kin_options.get("film_model")
+    drag = b.kin_options.get("drag_model")
+    if model is None and drag != "numerical_ehl":
+        return None
+    bearing = b.bearing
+    length = bearing.roller_effective_length
+    e_prime = bearing.effective_modulus
+
+    def columns(race: str, load: float, ue: float, temperature: float) -> dict[str, Any]:
+        rx, _ = bearing.curvature(race)
+        w = load / length
+        if model is not None:
+            res = model.films(w, ue, 0.0, temperature, rx, e_prime)
+            hc, hm = float(res.central_film[0]), float(res.minimum_film[0])
+            name = "numerical_tehl"
+        else:
+            from .ehl import EHL_SOLVERS
+
+            p = EHL_SOLVERS.get("numerical_ehl")(w, rx, e_prime, ue, 0.0, temperature,
+                                                 lubricant=lubricant)
+            hc, hm, name = p.central_film, p.minimum_film, "numerical_ehl"
+        return {"film model": name, "numerical central film [um]": hc * 1e6,
+                "numerical minimum film [um]": hm * 1e6}
+
+    return columns
