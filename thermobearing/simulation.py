@@ -16,18 +16,19 @@ Coupled transient (``mode = "transient"``)
 Each schedule step is cut into ``chunks`` (solver.chunk, default 90 s: BM-7 found it the
 cheapest setting within 1 K / 5 % on the default protocol). At the start of a
 chunk the heat sources are evaluated on the current kinematic state at the current node
-temperatures, and linearised in the node temperatures by finite differences (one extra
-evaluation per node of the bearing's group): q(T) = q0 + J (T - T0). The network stepper
-(TR-BDF2 by default) integrates the chunk with that affine heat and its constant Jacobian,
-so the temperature feedback on viscosity is implicit inside the step. The Jacobian is
-recomputed at each load step and after each kinematics re-solve, and reused (with fresh heat)
-for the other chunks. The kinematics
+temperatures and expanded to second order in each node temperature a source reads, by
+central differences (two evaluations per read node; the curvature is continued linearly
+beyond 2 K): q(T) = q0 + J (T - T0) + 1/2 H (T - T0)^2 (``coupled._Linear``). The network
+stepper (``solver.stepper``, exprb43 by default) integrates the chunk with that quadratic
+heat and its Jacobian, so the temperature feedback on viscosity is implicit inside the step.
+J and H are recomputed at each load step and after each kinematics re-solve, and reused
+(with fresh heat, re-centred) for the other chunks. The kinematics
 (skidding solver) are re-solved at a step change and whenever the oil viscosity at the
 contact temperature has moved by more than ``solver.kinematics_tolerance`` (relative)
 since the last solve: the losses scale with a power < 1 of the viscosity, so this bounds
 their change. Steady mode (``mode = "steady"``): for each step the coupled fixed point
-of network and heat sources by Newton (affine heat with its Jacobian), with the kinematics
-re-solved until the temperatures stop moving.
+of network and heat sources by Newton (the same quadratic heat with its Jacobian), with the
+kinematics re-solved until the temperatures stop moving.
 
 The parts it wires live beside it: :mod:`thermobearing.simulation_chain` (the chain plan,
 heat-source names and options, film-model options), :mod:`thermobearing.simulation_bearings`
@@ -141,8 +142,8 @@ class Simulation:
                    and _rib_friction_unavailable(b))
             if why:  # a default source the bearing's geometry cannot host: left out, said
                 sources = tuple(n for n in sources if n != "rib_friction")
-                # the hint only where the bearing's data can fix it (session 12: it was
-                # also printed for outer-ring ribs, which no key of the bearing changes)
+                # the hint only where the bearing's data can fix it (earlier versions also
+                # printed it for outer-ring ribs, which no key of the bearing changes)
                 hint = ("" if why.startswith(("ribs on the outer ring", "not a cylindrical"))
                         else "; name it in [models] heat_sources once the bearing has "
                              "end_face_crown_radius and rib_height")
@@ -158,7 +159,7 @@ class Simulation:
         self.needs = _needs(scene)
         self.network = None
         # a source left out matters only to a run that books losses (a film-only or
-        # kinematics-only scene runs no heat source: nothing to say; session 12)
+        # kinematics-only scene runs no heat source: nothing to say)
         self.warnings: list[str] = list(self.notes) + (
             dropped if _needs(scene)["losses"] else [])
         self.source_options = scene_heat_source_options(
@@ -368,8 +369,8 @@ class Simulation:
         stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
         for b in self.bearings:
             # the numerical film's table work (numerical_tehl): how often it answered from
-            # the table and how much CPU its thermal solves cost (session 12: a run sat
-            # minutes in them without a sign)
+            # the table and how much CPU its thermal solves cost (a run could sit minutes in
+            # them without a sign)
             fm = b.kin_options.get("film_model")
             if fm is not None and hasattr(fm, "solve_time"):
                 stats[f"{b.name}: film table"] = {"solves": int(fm.solves),
@@ -474,5 +475,6 @@ class Simulation:
 
 
 def check_known(name: str, known: Sequence[str], field_name: str) -> None:
+    """UnknownNameError naming ``field_name`` when ``name`` is not one of ``known``."""
     if name not in known:
         raise UnknownNameError(field_name, name, known)

@@ -62,7 +62,7 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
 def _supply_notes(scene: Scene) -> list[str]:
     """What the scene sets that its oil supply does not use (said, not refused). An oil
     bath's inlet temperature defaults to the ambient one: only another value was set by the
-    user and is worth a note (session 12: every oil-bath run said so, as a warning)."""
+    user and is worth a note (not every oil-bath run, as a warning)."""
     sup = scene.supply
     if (sup.method == "oil_bath" and sup.flow == 0.0
             and sup.inlet_temperature != scene.environment.ambient_temperature):

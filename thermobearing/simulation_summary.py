@@ -18,7 +18,7 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
     * ``total loss [W]``: the scene's power loss (all bearings) averaged over the protocol,
       each step weighted by its duration; ``max total loss [W]`` the largest step; one
       ``<source> [W]`` per heat source (all bearings, the same average); with more than one
-      bearing also ``total loss <bearing> [W]`` each. (Until session 12 these were plain
+      bearing also ``total loss <bearing> [W]`` each. (Earlier versions gave plain
       means over the steps of the first bearing only, which their names did not say.)
     * ``max / min over-skidding [%]``, ``max contact pressure [MPa]`` and ``min film
       parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
