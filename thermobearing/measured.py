@@ -2,32 +2,42 @@
 
 One job: turn the file of a scene's ``[measured]`` table, as a data logger, a rig PLC or a
 LabVIEW/DAQ program writes it, into ``time [s]`` + one degC column per mapped sensor
-(:func:`read_measured_file`). :func:`thermobearing.report.read_measured`,
+(:func:`read_measured_file`), and say what was left out (:func:`measured_notes`) and how
+the file's time span meets a run's (:func:`coverage_notes`).
+:func:`thermobearing.report.read_measured`,
 :func:`thermobearing.scene_checks.check_measured_file` and
 :func:`thermobearing.calibrate_model.measured_table` all read through it.
 
-The layout detection (BOM, CRLF, ``#`` comment lines, separator guess, decimal mark, units
-row) is that of the accelerometer files (:mod:`thermobearing.signal_input`); the header row
-is found by the scene's ``time_column`` name, so metadata lines above it (logger name, date,
-channel list) and free-text columns (a quoted comment column) do not disturb it.
+The layout (separator, header row found by the scene's ``time_column``, fixed-width
+columns, units row) is :mod:`thermobearing.measured_layout`; the time column
+:mod:`thermobearing.measured_time`.
 """
 
 from __future__ import annotations
 
-import csv
 import math
 import re
+import warnings
 from collections.abc import Mapping, Sequence
-from datetime import datetime, timedelta
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from .errors import InputError
-from .signal_input import guess_decimal_mark, guess_separator, is_units_row, read_text_lines
+from .measured_layout import (
+    closest_name,
+    file_encoding,
+    find_layout,
+    looks_like_units,
+    stated_units,
+)
+from .measured_time import parse_times
+from .signal_input import guess_decimal_mark, read_text_lines
 
-__all__ = ["DROPOUT_FLAGS", "OVERLOAD_CODE", "read_measured_file"]
+__all__ = ["ABSOLUTE_ZERO_C", "DROPOUT_FLAGS", "OVERLOAD_CODE", "RANGE_ENDS_C",
+           "THERMOCOUPLE_MAX_C",
+           "coverage_notes", "measured_notes", "read_measured_file"]
 
 #: cell texts (case-insensitive, after stripping) that mark a broken or overloaded sensor:
 #: read as NaN (a gap), like an empty cell. Runs of two or more dashes or stars count too.
@@ -36,65 +46,73 @@ DROPOUT_FLAGS = frozenset({
     "unl", "open", "oc", "o.c.", "open circuit", "err", "error", "fault", "nan", "n/a",
     "na", "#n/a", "null", "none", "inf", "-inf", "+inf", "invalid", "?", "burnout",
     "burn out", "b.o.", "+over", "-over", "+ovl", "-ovl", "overflow", "underflow",
+    "#value!", "#div/0!", "#num!", "-nan", "+nan",
 })
 _DASHES = re.compile(r"^(-{2,}|\+{2,}|\*{2,}|-?\*+-?)$")
 #: |value| at or above this is an overload code, not a temperature (Keysight/Agilent DAQs
 #: write +9.9E+37 for an open thermocouple): read as a gap
 OVERLOAD_CODE = 1e30
-_TEMPERATURE_UNITS = {"degc": "degC", "°c": "degC", "c": "degC", "celsius": "degC",
-                      "k": "K", "kelvin": "K", "degf": "degF", "°f": "degF", "f": "degF",
-                      "fahrenheit": "degF", "deg c": "degC", "deg f": "degF", "℃": "degC"}
-_SEPARATORS = ("\t", ";", ",", r"\s+")
+#: absolute zero [degC]: a reading below it is no temperature (a code such as -999)
+ABSOLUTE_ZERO_C = -273.15
+#: top of the IEC 60584-1:2013 thermocouple reference tables [degC] (type B, the highest
+#: of the standard types): a reading above it is no thermocouple temperature (9999.9)
+THERMOCOUPLE_MAX_C = 1820.0
+#: ends of the IEC 60584-1:2013 reference tables of thermocouple types K, J, T, E, N
+#: [degC]: where many loggers pin an open or shorted thermocouple (noted, not dropped)
+RANGE_ENDS_C = {-270.0: "K, T, E, N", -210.0: "J", 1372.0: "K", 1200.0: "J", 400.0: "T",
+                1000.0: "E", 1300.0: "N"}
 _PLAIN = re.compile(r"^[+-]?\d*[.,]?\d+$")
 _PROBE_ROWS = 500
-_ELAPSED = re.compile(r"^(\d+):(\d{1,2})(?::(\d{1,2}))?(?:[.,](\d+))?$")
-#: timestamp layouts tried in order (after ISO 8601 ``2026-11-23T10:15:30`` /
-#: ``2026-11-23 10:15:30``, read by datetime.fromisoformat)
-_STAMP_FORMATS = (
-    ("%d.%m.%Y %H:%M:%S", "dd.mm.yyyy hh:mm:ss"), ("%d.%m.%Y %H:%M", "dd.mm.yyyy hh:mm"),
-    ("%Y/%m/%d %H:%M:%S", "yyyy/mm/dd hh:mm:ss"), ("%Y/%m/%d %H:%M", "yyyy/mm/dd hh:mm"),
-    ("%d/%m/%Y %H:%M:%S", "dd/mm/yyyy hh:mm:ss"), ("%m/%d/%Y %H:%M:%S", "mm/dd/yyyy hh:mm:ss"),
-    ("%d/%m/%Y %H:%M", "dd/mm/yyyy hh:mm"), ("%m/%d/%Y %H:%M", "mm/dd/yyyy hh:mm"),
-    ("%m/%d/%Y %I:%M:%S %p", "mm/dd/yyyy hh:mm:ss AM/PM"),
-    ("%d/%m/%Y %I:%M:%S %p", "dd/mm/yyyy hh:mm:ss AM/PM"),
-    ("%m/%d/%y %I:%M:%S %p", "mm/dd/yy hh:mm:ss AM/PM"),
-    ("%d/%m/%y %I:%M:%S %p", "dd/mm/yy hh:mm:ss AM/PM"),
-)
+_TO_C = {"degC": lambda x: x, "K": lambda x: x - 273.15,
+         "degF": lambda x: (x - 32.0) * 5.0 / 9.0}
 
 
 def read_measured_file(path: str | Path, time_column: str | Sequence[str],
                        columns: Mapping[str, str] | list,
                        unit: str = "degC", *, time_zero: str | None = None,
+                       time_format: str | None = None,
+                       missing_values: Sequence[float | str] | None = None,
                        field: str = "measured") -> pd.DataFrame:
     """Read a rig's thermocouple file: ``time [s]`` + one degC column per sensor.
 
     Formats accepted
     ----------------
-    - **Layout**: comma, semicolon or tab separated (or runs of spaces when the time is a
-      number or ``hh:mm:ss``); UTF-8 with or without BOM, or Windows-1252 (a file that is
-      not valid UTF-8: ``°C`` and umlauts of Windows loggers); LF or CRLF line ends; ``#``
-      comment lines anywhere; any metadata lines above the header row (the header row is
-      the first row with a cell equal to ``time_column``, case-insensitive as a fallback);
-      quoted cells (a comment column may hold separators); columns not mapped are ignored.
+    - **Layout**: comma, semicolon or tab separated, or columns separated by spaces (an
+      aligned or fixed-width export whose names hold single spaces, ``Time [s]   TC 1 outer
+      ring``, is split at runs of two or more spaces; blank cells under a name are gaps:
+      rule in :mod:`thermobearing.measured_layout`); UTF-8 with or without BOM, or
+      Windows-1252; LF or CRLF line ends; ``#`` comment lines anywhere; any metadata lines
+      above the header row (the first row with a cell equal to ``time_column``,
+      case-insensitive as a fallback); quoted cells; columns not mapped are ignored.
     - **Units row**: a row right under the header whose cells are units (``s;degC;degC``,
       ``[min],[°C]``, ``hh:mm:ss``). It gives the time unit when ``time_column`` has no
-      ``[unit]``; a temperature unit in it, or in a sensor column's name (``TC1 [K]``,
-      ``TC1 (°F)``; a bare ``(C)`` / ``(F)`` there is not read as a unit), that contradicts
-      ``unit`` is an error.
-    - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator (detected
-      from the sensor cells: some ``35,27`` and no ``35.27``).
-    - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``) or
-      of the units row (seconds without either); elapsed ``hh:mm:ss[.f]`` or ``mm:ss[.f]``;
-      timestamps ``2026-11-23 10:15:30`` / ISO ``2026-11-23T10:15:30[.f][+01:00]``,
-      ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026 10:15:30`` or
-      ``11/23/2026 10:15:30`` (day or month first decided by a field > 12; all <= 12 is
-      ambiguous: an error), seconds optional; 12-hour ``11/23/2026 10:15:30 AM`` (also
-      two-digit years). The time column's unit may also be in parentheses: ``Time (s)``.
-      Timestamps count from the first row; numbers and ``hh:mm:ss`` are taken as they are.
-    - **Sensor cells**: numbers in ``unit`` (degC, K or degF); empty cells, dropout flags
-      (``OVL``, ``+OVER``, ``Burnout``, ``----``, ``+++++``, ``***``, ``Err``, ``open``,
-      ``N/A``, ``NaN``, ``inf``, ...: :data:`DROPOUT_FLAGS`) and overload codes
-      (|value| >= :data:`OVERLOAD_CODE`, e.g. ``+9.9E+37``) are NaN.
+      ``[unit]``. A temperature unit the file gives a sensor column (units row, or the
+      name's brackets ``TC1 [degF]``, ``TC1 (K)``; a bare ``(C)`` / ``(F)`` is no unit):
+      when every such unit is the same and not ``unit``, an error (set ``unit``); when the
+      file gives different units to different columns, each column is read in its own
+      (columns without one in ``unit``) and the notes say so.
+    - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator.
+    - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``,
+      ``Time (s)``) or of the units row (seconds without either); elapsed ``hh:mm:ss[.f]``
+      or ``mm:ss[.f]``; timestamps ``2026-11-23 10:15:30`` / ISO 8601 (``T``, fraction,
+      UTC offset), ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026
+      10:15:30`` or ``11/23/2026 10:15:30`` (day or month first decided by a field > 12;
+      all <= 12 is an error), seconds optional, 12-hour ``AM/PM``; Excel serial day
+      numbers and Unix seconds (``time_format``; Excel also for a date-named column, see
+      :mod:`thermobearing.measured_time`). Timestamps count from the first row; numbers
+      and ``hh:mm:ss`` are taken as they are (both unless ``time_zero``).
+    - **Repeated times** (a logger writing whole seconds at 2 Hz, a line written twice):
+      rows with the same time as the row before are averaged (gaps left out), noted.
+      A time that steps back (a daylight-saving change, a logger restart) is an error
+      naming the row and the step.
+    - **Sensor cells**: numbers in ``unit``. Gaps (NaN, counted per sensor and cause in
+      the notes): empty cells, dropout flags (:data:`DROPOUT_FLAGS`: ``OVL``, ``+OVER``,
+      ``Burnout``, ``----``, ``Err``, ``NaN``, ...), overload codes (|value| >=
+      :data:`OVERLOAD_CODE`, ``+9.9E+37``) and the codes of ``missing_values``. Any other
+      reading below absolute zero or above :data:`THERMOCOUPLE_MAX_C` is an error (a
+      logger's numeric code such as -999 or 9999.9 is never dropped unless listed).
+      Readings of exactly a thermocouple range end (:data:`RANGE_ENDS_C`: 1372 degC,
+      -270 degC for type K, where loggers pin an open thermocouple) stay, with a note.
 
     Parameters
     ----------
@@ -105,55 +123,67 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     columns : the mapped sensor columns (header names; a mapping's keys).
     unit : temperature unit of the sensor columns: ``degC``, ``K`` or ``degF``.
     time_zero : the scene's time zero, in the time column's own format (a timestamp, an
-        ``hh:mm:ss``, or a number in the column's unit), or ``"first"`` (the first row, for
-        any format). None: the first row for timestamps, else the values as they are.
+        ``hh:mm:ss``, or a number in the column's unit; a timestamp also for Excel / Unix
+        times), or ``"first"`` (the first row). None: the first row for timestamps, else
+        the values as they are.
+    time_format : None / ``"auto"`` (the formats above), ``"excel"``, ``"excel_1904"``,
+        ``"unix"``, or a strptime pattern (``"%d/%m/%Y %H:%M:%S"``: settles day/month).
+    missing_values : the logger's codes for "no reading", numbers in the file's unit
+        (``[-999, 9999.9]``: cells equal to one are gaps) or extra texts (``"S.C."``).
     field : scene table named in the errors.
 
     Returns
     -------
-    DataFrame with ``time [s]`` (strictly increasing) and one column per sensor [degC].
+    DataFrame with ``time [s]`` (strictly increasing) and one column per sensor [degC];
+    ``attrs["notes"]`` (list of str: averaged rows, mixed units, Excel dates, readings at
+    a thermocouple range end) and
+    ``attrs["gaps"]`` ({sensor: {cause: count}}); :func:`measured_notes` words both.
 
     Raises
     ------
-    InputError naming the field, the data row (1 = first data row) and the value: a missing
-    file or column, a time that does not increase, a time cell of another format than the
-    first row's or of no known format, a text cell in a sensor column that is no dropout
-    flag, a units row that contradicts ``unit``, a file without data rows.
+    InputError naming the field, the data row (1 = first data row), the file line and the
+    value: a missing file or column (with the nearest header name), a time that steps
+    back, a time cell of another format than the first row's or of no known format, a
+    text cell in a sensor column that is no dropout flag, a reading that is no
+    temperature, a unit the file gives that contradicts ``unit``, no data rows.
     """
     p = Path(path)
     if not p.is_file():
         raise InputError(f"{field}.file", str(path), f"an existing CSV file (looked at {p})")
     sensors = list(columns)
-    if unit not in ("degC", "K", "degF"):
+    if unit not in _TO_C:
         raise InputError(f"{field}.unit", unit, "degC, K or degF")
-    lines = read_text_lines(p, encoding=_encoding(p))
+    codes, texts = _missing(missing_values, field)
+    lines = read_text_lines(p, encoding=file_encoding(p))
     if not lines:
         raise InputError(f"{field}.file", str(path), "a CSV file with a header row and data")
     tnames = [time_column] if isinstance(time_column, str) else [str(c) for c in time_column]
     if not 1 <= len(tnames) <= 2:
         raise InputError(f"{field}.time_column", time_column, "a column name, or the names "
                          "of a date column and a time-of-day column")
-    sep, h, header = _find_header(lines, tnames[0])
+    layout, h, header = find_layout(lines, tnames[0])
     if h is None:
-        raise InputError(f"{field}.time_column", time_column,
-                         "a column of the file: " + ", ".join(header))
+        raise InputError(f"{field}.time_column", time_column, "a column of the file: "
+                         + ", ".join(header) + closest_name(tnames[0], header))
     names = [c.lower() for c in header]
     tcols = [_index(header, names, c) for c in tnames]
     if None in tcols:
-        raise InputError(f"{field}.time_column", time_column,
-                         "columns of the file: " + ", ".join(header))
+        miss = next(c for c, j in zip(tnames, tcols, strict=True) if j is None)
+        raise InputError(f"{field}.time_column", time_column, "columns of the file: "
+                         + ", ".join(header) + closest_name(miss, header))
     tcol = tcols[0]
     idx = {}
     for col in sensors:
         j = _index(header, names, col)
         if j is None:
-            raise InputError(f"{field}.columns[{col!r}]", col,
-                             "a column of the file: " + ", ".join(header))
+            raise InputError(f"{field}.columns[{col!r}]", col, "a column of the file: "
+                             + ", ".join(header) + closest_name(col, header))
         idx[col] = j
-    rows = [_cells(ln, sep) for _, ln in lines[h + 1:]]
     at = [i + 1 for i, _ in lines[h + 1:]]  # file line of each row, for the errors
+    rows = [layout.split(ln, f"line {a}") for a, (_, ln) in zip(at, lines[h + 1:],
+                                                                strict=True)]
     units = None
-    if rows and _looks_like_units(rows[0], tcols):
+    if rows and looks_like_units(rows[0], tcols):
         units = rows.pop(0)
         at.pop(0)
     if not rows:
@@ -162,287 +192,223 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     need = max([*tcols, *idx.values()]) + 1
     for k, r in enumerate(rows):
         if len(r) < need:
-            raise InputError(f"{field}.file", f"row {k + 1}: {sep.join(r)!r} (line {at[k]})",
-                             f"at least {need} cells separated by {_sep_name(sep)!r} "
+            raise InputError(f"{field}.file", f"row {k + 1}: {' | '.join(r)!r} (line {at[k]})",
+                             f"at least {need} cells separated by {layout.name!r} "
                              f"(as in the header row: {', '.join(header)})")
-    if units is not None:
-        _check_units_row(units, idx, unit, field, "units row")
-    # a bare C or F in a name's brackets may be a label (``TC (F)``: front), not a unit
-    _check_units_row([u if u.lower() not in ("c", "f") else "" for u in map(_bracket, header)],
-                     idx, unit, field, "column name")
+    notes: list[str] = []
+    col_units = _column_units(stated_units(units, header, idx), unit, field, notes)
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
     # decimal mark from the sensor cells and plain-number time cells of the first rows
     # (timestamps such as 23.11.2026 would look like decimal points)
     probe = [c for v in cells.values() for c in v[:_PROBE_ROWS]]
     probe += [r[tcol] for r in rows[:_PROBE_ROWS] if _PLAIN.match(r[tcol].strip())]
-    decimal = guess_decimal_mark(probe, sep)
+    decimal = guess_decimal_mark(probe, "spaces" if layout.sep == "spaces" else layout.sep)
     tunit = _time_unit(tnames[0], units[tcol] if units is not None else "")
     tcells = [" ".join(r[j] for j in tcols) for r in rows]
-    times = _parse_times(tcells, tunit, decimal, time_zero, " + ".join(tnames),
-                         field, at)
+    times, desc = parse_times(tcells, tunit, decimal, time_zero, " + ".join(tnames), field,
+                              at, time_format=time_format)
+    if time_format in (None, "auto") and desc.startswith("Excel"):
+        notes.append(f"time column {tnames[0]!r} read as {desc}: a date-named column of "
+                     "day numbers (set measured time_format to read it otherwise)")
     out = pd.DataFrame({"time [s]": times})
+    gaps = {}
     for col in sensors:
-        values = _parse_temperatures(cells[col], decimal, col, at)
-        if unit == "K":
-            values = values - 273.15
-        elif unit == "degF":
-            values = (values - 32.0) * 5.0 / 9.0
-        out[col] = values
+        raw, gaps[col] = _parse_readings(cells[col], decimal, col, at, codes, texts)
+        out[col] = _to_celsius(raw, col_units.get(col, unit), col, cells[col], at)
+        notes += _range_end_notes(out[col].to_numpy(float), col, at)
+    out = _average_repeats(out, at, notes)
+    out.attrs["notes"] = notes
+    out.attrs["gaps"] = gaps
     return out
 
 
-# --------------------------------------------------------------------------- layout
-def _encoding(p: Path) -> str:
-    """UTF-8 (BOM or not) when the file decodes as UTF-8, else Windows-1252: loggers on
-    Windows write ``°C`` and umlauts in the ANSI code page."""
-    try:
-        p.read_bytes().decode("utf-8")
-    except UnicodeDecodeError:
-        return "cp1252"
-    return "utf-8-sig"
+def measured_notes(measured: pd.DataFrame) -> list[str]:
+    """What the reader left out or decided, one line each: per sensor the gaps by cause
+    (``TC1: 3 of 120 readings are gaps (2 dropout flags, 1 missing_values code)``), rows
+    averaged, mixed units, Excel dates. Empty when the file had nothing of the kind."""
+    out = list(measured.attrs.get("notes", []))
+    n = len(measured)
+    for col, causes in measured.attrs.get("gaps", {}).items():
+        total = sum(causes.values())
+        if total:
+            parts = ", ".join(f"{k} {c}" for c, k in causes.items() if k)
+            out.append(f"{col}: {total} of {n} readings are gaps ({parts})")
+    return out
 
 
-def _sep_name(sep: str) -> str:
-    return {"\t": "tab", r"\s+": "spaces"}.get(sep, sep)
+def coverage_notes(measured: pd.DataFrame, t_start: float, t_end: float) -> list[str]:
+    """How the measured times meet a run from ``t_start`` to ``t_end`` [s]: samples before
+    or after the run (left out of the errors), a run longer than the file, or no overlap
+    at all (a wrong time unit, ``time_zero`` or ``time_format``?). Empty when the file
+    spans exactly the run."""
+    t = measured["time [s]"].to_numpy(float)
+    if t.size == 0:
+        return []
+    span = (f"measured {t[0] / 60:.6g}-{t[-1] / 60:.6g} min, "
+            f"run {t_start / 60:.6g}-{t_end / 60:.6g} min")
+    if t[-1] < t_start or t[0] > t_end:
+        return [f"no measured time inside the run ({span}): check the time column's unit, "
+                "measured time_zero or time_format"]
+    out = []
+    before, after = int((t < t_start).sum()), int((t > t_end).sum())
+    if before or after:
+        out.append(f"{before + after} measured samples outside the run are left out "
+                   f"({before} before, {after} after; {span})")
+    if t[0] > t_start or t[-1] < t_end:
+        out.append(f"the run is compared with measured data only where the file has "
+                   f"them ({span})")
+    return out
 
 
-def _cells(line: str, sep: str) -> list[str]:
-    if sep == r"\s+":
-        return line.split()
-    try:
-        return [c.strip() for c in next(csv.reader([line], delimiter=sep, quotechar='"'),
-                                         [])]
-    except csv.Error as exc:  # e.g. a NUL byte: not a text file
-        raise InputError("measured.file", line[:60], f"lines of text ({exc})") from None
-
-
+# --------------------------------------------------------------------------- helpers
 def _index(header: list[str], lowered: list[str], name: str) -> int | None:
     if name in header:
         return header.index(name)
     return lowered.index(name.lower()) if name.lower() in lowered else None
 
 
-def _find_header(lines: list[tuple[int, str]], time_column: str
-                 ) -> tuple[str, int | None, list[str]]:
-    """Separator, index (in ``lines``) and cells of the header row: the first row with a
-    cell equal to ``time_column`` under the guessed separator, then under the others. When
-    none has it: the guessed separator and the widest of the first rows (for the error)."""
-    body = [ln for _, ln in lines[:200]]
-    guess = guess_separator(body)
-    wanted = time_column.strip().lower()
-    for sep in (guess, *(s for s in _SEPARATORS if s != guess)):
-        for k, (_, ln) in enumerate(lines[:200]):
-            cells = _cells(ln, sep)
-            if time_column in cells or wanted in (c.lower() for c in cells):
-                return sep, k, cells
-    widest = max((_cells(ln, guess) for ln in body[:50]), key=len)
-    return guess, None, widest
+def _time_unit(time_column: str, units_cell: str) -> str | None:
+    """The unit of a time column of numbers (its name's brackets, else the units row),
+    None when neither gives one."""
+    from .measured_layout import is_time_format
 
-
-def _is_time_format(cell: str) -> bool:
-    c = cell.strip().strip("[]()").lower()
-    return c in ("hh:mm:ss", "h:mm:ss", "mm:ss", "hh:mm:ss.s", "hh:mm:ss.ss", "hh:mm:ss.sss",
-                 "date", "datetime", "timestamp", "yyyy-mm-dd hh:mm:ss", "dd.mm.yyyy hh:mm:ss",
-                 "yyyy-mm-dd", "dd.mm.yyyy", "mm/dd/yyyy", "dd/mm/yyyy", "time", "clock")
-
-
-def _looks_like_units(cells: list[str], tcols: list[int]) -> bool:
-    """A units row: every non-empty cell a unit (the time cell may also be a time format
-    such as ``hh:mm:ss``), at least one not empty, and no cell a number."""
-    if any(_number(c, ".") is not None or _number(c, ",") is not None for c in cells if c):
-        return False
-    probe = ["" if (j in tcols and _is_time_format(c)) else c.replace("℃", "degC")
-             for j, c in enumerate(cells)]
-    if not any(probe):
-        return any(cells)
-    return is_units_row(probe)
-
-
-def _bracket(name: str) -> str:
-    """The unit in a column name's brackets (``TC1 [K]``, ``Temp (°C)``), or ""."""
-    m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]\s*$", name)
-    return m.group(1) if m else ""
-
-
-def _check_units_row(units: list[str], idx: Mapping[str, int], unit: str, field: str,
-                     where: str) -> None:
-    """A temperature unit given by the file (units row or column name) must be ``unit``."""
-    for col, j in idx.items():
-        if j >= len(units):
-            continue
-        said = _TEMPERATURE_UNITS.get(units[j].strip().strip("[]()").lower())
-        if said is not None and said != unit:
-            raise InputError(f"{field}.unit", unit, f"{said!r}, the unit the file's {where} "
-                             f"gives for column {col!r} (set unit = \"{said}\")")
-
-
-def _time_unit(time_column: str, units_cell: str) -> str:
     m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]", time_column)
     if m:
         return m.group(1)
     cell = units_cell.strip().strip("[]()")
-    return cell if cell and not _is_time_format(cell) else "s"
+    return cell if cell and not is_time_format(cell) else None
 
 
-# --------------------------------------------------------------------------- cells
-def _number(cell: str, decimal: str) -> float | None:
-    c = cell.strip()
-    if decimal == ",":
-        c = c.replace(",", ".")
-    try:
-        x = float(c)
-    except ValueError:
-        return None
-    return x if math.isfinite(x) else None
+def _missing(values: Sequence[float | str] | None, field: str
+             ) -> tuple[frozenset[float], frozenset[str]]:
+    """Numeric codes and texts of ``missing_values``."""
+    if values is None:
+        return frozenset(), frozenset()
+    if isinstance(values, str | int | float):
+        values = [values]
+    codes, texts = set(), set()
+    for v in values:
+        if isinstance(v, bool) or not isinstance(v, str | int | float):
+            raise InputError(f"{field}.missing_values", values, "a list of the logger's "
+                             "codes for no reading: numbers in the file's unit (-999, "
+                             "9999.9) or texts (\"S.C.\")")
+        try:
+            x = float(str(v).strip().replace(",", "."))
+        except ValueError:
+            texts.add(str(v).strip().lower())
+            continue
+        if not math.isfinite(x):
+            texts.add(str(v).strip().lower())
+        else:
+            codes.add(x)
+    return frozenset(codes), frozenset(texts)
+
+
+def _column_units(stated: Mapping[str, tuple[str, str]], unit: str, field: str,
+                  notes: list[str]) -> dict[str, str]:
+    """The unit of each sensor column: the file's when it gives different units to
+    different columns (noted); one unit that is not ``unit`` is an error."""
+    said = {u for u, _ in stated.values()}
+    if len(said) == 1 and unit not in said:
+        col, (u, where) = next(iter(stated.items()))
+        raise InputError(f"{field}.unit", unit, f"{u!r}, the unit the file's {where} "
+                         f"gives for column {col!r} (set unit = \"{u}\")")
+    if len(said) > 1:
+        notes.append("the file gives the sensor columns different units; each is read in "
+                     "its own: " + ", ".join(f"{c} in {u} ({w})" for c, (u, w) in
+                                             stated.items()))
+        return {c: u for c, (u, _) in stated.items()}
+    return {}
 
 
 def _is_dropout(cell: str) -> bool:
     c = cell.strip().lower()
-    return c == "" or c in DROPOUT_FLAGS or bool(_DASHES.match(c))
+    return c in DROPOUT_FLAGS or bool(_DASHES.match(c))
 
 
-def _parse_temperatures(cells: list[str], decimal: str, col: str, at: list[int]
-                        ) -> np.ndarray:
+def _parse_readings(cells: list[str], decimal: str, col: str, at: list[int],
+                    codes: frozenset[float], texts: frozenset[str]
+                    ) -> tuple[np.ndarray, dict[str, int]]:
+    """The numbers of a sensor column in the file's unit, NaN at gaps; the gap count by
+    cause."""
     text = [c.replace(",", ".") for c in cells] if decimal == "," else cells  # stripped
     out = np.asarray(pd.to_numeric(np.asarray(text, dtype=object), errors="coerce"),
                      dtype=float)
+    gaps = {"empty cells": 0, "dropout flags": 0, "overload codes": 0,
+            "missing_values codes": 0}
     with np.errstate(invalid="ignore"):
         overload = np.abs(out) >= OVERLOAD_CODE  # +9.9E+37 and the like: a gap
-    for k in np.flatnonzero(~np.isfinite(out) & ~overload):  # text, nan, inf: flag or error
-        c = cells[k]
-        if not _is_dropout(c):
+    listed = np.isin(out, list(codes)) if codes else np.zeros(out.shape, bool)
+    for k in np.flatnonzero(~np.isfinite(out) & ~overload):  # text, nan, inf
+        c = cells[k].strip()
+        if c == "":
+            gaps["empty cells"] += 1
+        elif c.lower() in texts:
+            gaps["missing_values codes"] += 1
+        elif _is_dropout(c):
+            gaps["dropout flags"] += 1
+        else:
             raise InputError(f"measured column {col!r}", f"row {k + 1}: {c!r} (line {at[k]})",
                              "numbers (an empty cell or a dropout flag such as OVL, "
-                             "----, Err, N/A is a gap)")
+                             "----, Err, N/A is a gap; other codes: measured missing_values)")
         out[k] = math.nan
-    out[overload] = math.nan
+    gaps["overload codes"] = int(overload.sum())
+    gaps["missing_values codes"] += int((listed & ~overload).sum())
+    out[overload | listed] = math.nan
+    return out, gaps
+
+
+def _to_celsius(values: np.ndarray, unit: str, col: str, cells: list[str],
+                at: list[int]) -> np.ndarray:
+    """degC of readings in ``unit``; a reading below absolute zero or above the top of the
+    thermocouple tables is an error (a logger code to list in missing_values)."""
+    out = _TO_C[unit](values)
+    with np.errstate(invalid="ignore"):
+        bad = (out < ABSOLUTE_ZERO_C - 1e-9) | (out > THERMOCOUPLE_MAX_C)
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        same = int(np.sum(values[bad] == values[k]))
+        raise InputError(f"measured column {col!r}", f"row {k + 1}: {cells[k].strip()!r} "
+                         f"(line {at[k]}; {same} reading(s) of it, {int(bad.sum())} outside "
+                         "in all)",
+                         f"temperatures in {unit} between absolute zero "
+                         f"({ABSOLUTE_ZERO_C:g} degC) and {THERMOCOUPLE_MAX_C:g} degC (top "
+                         "of the IEC 60584-1 thermocouple tables); a logger's code for no "
+                         "reading is a gap when listed in measured missing_values, e.g. "
+                         f"missing_values = [{cells[k].strip().replace(',', '.')}]")
     return out
 
 
-def _elapsed(cell: str) -> float | None:
-    m = _ELAPSED.match(cell.strip())
-    if m is None:
-        return None
-    a, b, c, frac = m.groups()
-    if c is None:  # mm:ss
-        seconds = int(a) * 60 + int(b)
-        if int(b) >= 60:
-            return None
-    else:
-        if int(b) >= 60 or int(c) >= 60:
-            return None
-        seconds = int(a) * 3600 + int(b) * 60 + int(c)
-    return seconds + (float("0." + frac) if frac else 0.0)
+def _range_end_notes(values: np.ndarray, col: str, at: list[int]) -> list[str]:
+    """A note per thermocouple range end the column reads exactly (an open thermocouple
+    pinned there by the logger?); the readings stay (list them in missing_values)."""
+    out = []
+    for end, types in RANGE_ENDS_C.items():
+        hit = np.flatnonzero(np.abs(values - end) < 1e-6)
+        if hit.size:
+            out.append(f"{col}: {hit.size} reading(s) of exactly {end:g} degC (first at line "
+                       f"{at[int(hit[0])]}), the end of the type {types} thermocouple range "
+                       "(IEC 60584-1): an open thermocouple? If so, list the code in "
+                       "measured missing_values")
+    return out
 
 
-def _stamp_parser(first: str, cells: list[str], name: str):
-    """A parser str -> datetime | None for the timestamp layout of ``first`` (None if it
-    is no timestamp); the description of that layout."""
-    text = first.strip()
-    try:
-        datetime.fromisoformat(text)
-        if re.match(r"^\d{4}-\d{2}-\d{2}", text):
-            def iso(c: str) -> datetime | None:
-                try:
-                    return datetime.fromisoformat(c.strip())
-                except ValueError:
-                    return None
-            return iso, "ISO 8601 yyyy-mm-dd hh:mm:ss"
-    except ValueError:
-        pass
-    candidates = [(f, d) for f, d in _STAMP_FORMATS if _strptime(text, f) is not None]
-    if not candidates:
-        return None, ""
-    if len(candidates) > 1:
-        # several layouts read the first row (01/02/2026: day or month first?): keep those
-        # that read every row; if they still disagree on some row, it is ambiguous
-        rest = [c for c in cells if c.strip()]
-        parsed = {f: [_strptime(c, f) for c in rest] for f, _ in candidates}
-        ok = [(f, d) for f, d in candidates if None not in parsed[f]]
-        if len(ok) > 1 and any(parsed[f] != parsed[ok[0][0]] for f, _ in ok[1:]):
-            raise InputError(name, f"row 1: {first!r}", "an unambiguous date: every "
-                             "dd/mm and mm/dd field <= 12, so day and month cannot be told "
-                             "apart (write yyyy-mm-dd or dd.mm.yyyy)")
-        candidates = ok or candidates
-    fmt, desc = candidates[0]
-    return (lambda c: _strptime(c, fmt)), desc
-
-
-def _strptime(cell: str, fmt: str) -> datetime | None:
-    c = cell.strip()
-    frac = 0.0
-    m = re.match(r"^(.*:\d{2})[.,](\d+)$", c)
-    if m and fmt.endswith("%S"):
-        c, frac = m.group(1), float("0." + m.group(2))
-    try:
-        return datetime.strptime(c, fmt) + timedelta(seconds=frac)
-    except ValueError:
-        return None
-
-
-def _parse_times(cells: list[str], tunit: str, decimal: str, time_zero: str | None,
-                 time_column: str, field: str, at: list[int]) -> np.ndarray:
-    """Elapsed seconds of the time cells (the format of the first row for all rows)."""
-    from .units import to_si
-
-    name = f"measured column {time_column!r}"
-    first = cells[0].strip()
-    scale = None
-    if _number(first, decimal) is not None:
-        scale = to_si(f"1 {tunit}", "time", field=f"{field}.time_column")
-        kind, desc = "number", f"numbers in {tunit}"
-
-        def parse(c: str) -> float | None:
-            x = _number(c, decimal)
-            return None if x is None else x * scale
-    elif _elapsed(first) is not None:
-        kind, desc, parse = "elapsed", "elapsed hh:mm:ss or mm:ss", _elapsed
-    else:
-        stamp, desc = _stamp_parser(first, cells, name)
-        if stamp is None:
-            raise InputError(name, f"row 1: {first!r} (line {at[0]})", "numbers (in the "
-                             "unit of the column name's brackets or the units row), "
-                             "elapsed hh:mm:ss / mm:ss, or "
-                             "timestamps yyyy-mm-dd hh:mm:ss (ISO 8601, T allowed), "
-                             "dd.mm.yyyy hh:mm:ss, yyyy/mm/dd hh:mm:ss, dd/mm/yyyy hh:mm:ss")
-        kind, parse = "stamp", stamp
-    values: list = []
-    for k, c in enumerate(cells):
-        v = parse(c) if c.strip() else None
-        if v is None:
-            raise InputError(name, f"row {k + 1}: {c!r} (line {at[k]})",
-                             f"a time in every row, in the format of row 1 ({desc})")
-        values.append(v)
-    if kind == "stamp":
-        aware = {v.tzinfo is not None for v in values}
-        if len(aware) > 1:
-            k = next(i for i, v in enumerate(values) if (v.tzinfo is not None) != (
-                values[0].tzinfo is not None))
-            raise InputError(name, f"row {k + 1}: {cells[k]!r} (line {at[k]})",
-                             "timestamps all with or all without a UTC offset")
-    zero = _time_zero(time_zero, values, parse, kind, desc, field)
-    if kind == "stamp":
-        t = np.array([(v - zero).total_seconds() for v in values])
-    else:
-        t = np.asarray(values, dtype=float) - float(zero)
-    steps = np.diff(t)
-    if steps.size and not (steps > 0).all():
-        k = int(np.flatnonzero(steps <= 0)[0]) + 1
-        raise InputError(name, f"row {k + 1}: {cells[k].strip()} after {cells[k - 1].strip()} "
-                         f"(line {at[k]})", "strictly increasing times")
-    return t
-
-
-def _time_zero(time_zero: str | None, values: list, parse, kind: str, desc: str, field: str):
-    if time_zero is None:
-        return values[0] if kind == "stamp" else 0.0
-    if str(time_zero).strip().lower() == "first":
-        return values[0]
-    zero = parse(str(time_zero))
-    if zero is None:
-        raise InputError(f"{field}.time_zero", time_zero, f"\"first\" or a time in the format "
-                         f"of the file's time column ({desc})")
-    if kind == "stamp" and (zero.tzinfo is None) != (values[0].tzinfo is None):
-        raise InputError(f"{field}.time_zero", time_zero, "a timestamp with a UTC offset "
-                         "exactly when the file's timestamps have one")
-    return zero
+def _average_repeats(out: pd.DataFrame, at: list[int], notes: list[str]) -> pd.DataFrame:
+    """Rows with the same time as the row before: one row, the mean of their readings
+    (gaps left out; all gaps stay a gap)."""
+    t = out["time [s]"].to_numpy(float)
+    repeat = np.r_[False, np.diff(t) == 0.0]
+    if not repeat.any():
+        return out
+    group = np.cumsum(~repeat) - 1
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # mean of an all-gap group: NaN
+        merged = out.groupby(group, sort=False).agg(
+            {c: "first" if c == "time [s]" else (lambda s: float(np.nanmean(s)) if
+                                                 s.notna().any() else math.nan)
+             for c in out.columns}).reset_index(drop=True)
+    first = int(np.flatnonzero(repeat)[0])
+    notes.append(f"{int(repeat.sum())} row(s) repeat the time of the row before and are "
+                 f"averaged with it (first at line {at[first]}, {t[first]:g} s); "
+                 f"{len(merged)} of {len(out)} rows kept")
+    return merged
