@@ -19,6 +19,7 @@ import dataclasses
 import html
 import io
 import math
+import textwrap
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -32,10 +33,12 @@ import pandas as pd  # noqa: E402
 
 from .errors import InputError  # noqa: E402
 from .operating_checks import CheckLimits  # noqa: E402
+from .report_losses import fig_destinations, fig_loss_bars  # noqa: E402
 from .results import Results  # noqa: E402
 
-SECTIONS = ("Scene", "Model chain", "Figures", "Energy audit", "Validity warnings",
-            "Tables", "Citations")
+#: the sections every report has (with a scene also "Bearing and operating points")
+SECTIONS = ("Loss breakdown", "Figures", "Validity warnings", "Model chain", "Energy audit",
+            "Estimated inputs", "Tables", "Scene", "Citations")
 
 
 def _png(fig: plt.Figure) -> bytes:
@@ -137,27 +140,6 @@ def operating_axis(df: pd.DataFrame) -> tuple[str, dict[Any, float], list[str], 
     return key, pos, labels, "step" if key == "step" else key
 
 
-def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
-    """Stacked power-loss bars [W] per operating step, one colour per source (paper 002
-    Fig. 15); the axis is the swept quantity, or the step when several vary."""
-    df = losses if bearing is None else losses[losses["bearing"] == bearing]
-    key, pos, labels, xlabel = operating_axis(df)
-    pivot = df.pivot_table(index=key, columns="source", values="power [W]",
-                           aggfunc="sum").fillna(0.0)
-    x = np.array([pos[k] for k in pivot.index])
-    fig, ax = plt.subplots(figsize=(8, 4.5))
-    bottom = np.zeros(len(pivot))
-    for src in pivot.columns:
-        ax.bar(x, pivot[src].to_numpy(), bottom=bottom, label=src)
-        bottom += pivot[src].to_numpy()
-    ax.set_xticks(np.arange(len(labels)), labels, rotation=90, fontsize=7)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("power loss [W]" + (f" ({bearing})" if bearing else ""))
-    ax.legend(fontsize=7)
-    ax.grid(axis="y", alpha=0.3)
-    return _png(fig)
-
-
 def fig_csr(kin: pd.DataFrame) -> bytes:
     """Cage speed ratio against the swept quantity (paper 002 Fig. 10: axial load, one line
     per speed when the protocol repeats the load sweep at several speeds), with the
@@ -193,13 +175,15 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
 
 def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                   components: Sequence[str],
-                  ranges: Mapping[str, tuple[float, float]] | None = None) -> bytes:
+                  ranges: Mapping[str, tuple[float, float]] | None = None,
+                  titles: Mapping[str, str] | None = None) -> bytes:
     """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17);
     a component whose table has one value of ``x`` or ``y`` is drawn as a curve over the
     other (a contour needs at least 2 x 2 points); missing combinations (a sweep still
     running) are left blank. ``ranges``: component -> (low, high) of its colour scale, so
     that the maps of several slices of a sweep (one per value of a third parameter) share
-    one scale and can be compared by colour (default: each map its own range)."""
+    one scale and can be compared by colour (default: each map its own range). ``titles``:
+    component -> panel title (default the column name), e.g. the loss in words."""
     n = len(components)
     cols = min(3, n)
     rows = math.ceil(n / cols)
@@ -207,7 +191,7 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                              layout="constrained")
     for ax, comp in zip(axes.flat, components, strict=False):
         pv = summary.pivot_table(index=y, columns=x, values=comp, aggfunc="mean")
-        ax.set_title(comp, fontsize=8)
+        ax.set_title(textwrap.fill((titles or {}).get(comp, comp), 45), fontsize=8)
         if pv.empty:  # no case has this component (yet)
             ax.text(0.5, 0.5, "no values", ha="center", va="center", transform=ax.transAxes)
             ax.set_axis_off()
@@ -229,7 +213,7 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
         levels = np.linspace(lo, hi, 13) if hi > lo else 12
         cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
                          levels=levels)
-        fig.colorbar(cs, ax=ax)
+        fig.colorbar(cs, ax=ax, label="W" if comp.endswith("[W]") else None)
         ax.set_xlabel(x, fontsize=8)
         ax.set_ylabel(y, fontsize=8)
     for ax in list(axes.flat)[n:]:
@@ -299,49 +283,44 @@ def figure_html(name: str, png: bytes) -> str:
             f"<figcaption>{html.escape(name)}</figcaption></figure>")
 
 
-def _table(df: pd.DataFrame, max_rows: int = 60) -> str:
-    if df is None or df.empty:
-        return "<p>(empty)</p>"
-    shown = df if len(df) <= max_rows else df.iloc[:: max(1, len(df) // max_rows)]
-    return shown.to_html(index=False, float_format=lambda v: f"{v:.4g}", border=0)
-
-
 def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.DataFrame]
-                | None = None) -> str:
-    """The self-contained HTML report (figures embedded as base64 PNG)."""
+                | None = None, *, scene: Any = None) -> str:
+    """The self-contained HTML report (figures embedded as base64 PNG).
+
+    Sections: the bearing and its operating points (with ``scene``), the loss breakdown
+    (by source and share, by receiving component, the catalogue cross-check), figures,
+    validity warnings, the models that ran with their validity ranges, the energy audit,
+    estimated inputs, the tables, the scene as TOML and the citations."""
+    from .report_sections import chain_table, context_html, html_table, losses_html
+
     esc = html.escape
     parts = [
         "<!DOCTYPE html><html><head><meta charset='utf-8'>",
         f"<title>{esc(title)}</title>",
         "<style>body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
         "table{border-collapse:collapse;font-size:12px}td,th{padding:2px 6px;"
-        "border-bottom:1px solid #ddd}figure{margin:1em 0}img{max-width:100%}"
+        "border-bottom:1px solid #ddd}td{text-align:right}figure{margin:1em 0}"
+        "img{max-width:100%}"
         "pre{background:#f6f6f6;padding:0.5em;overflow-x:auto;font-size:12px}"
-        ".warn{color:#a40}</style></head><body>",
+        ".warn{color:#a40}.note{color:#555;font-size:12px}</style></head><body>",
         f"<h1>{esc(title)}</h1>",
-        "<h2 id='scene'>Scene</h2>",
-        f"<pre>{esc(results.scene_toml)}</pre>",
-        "<h2 id='model-chain'>Model chain</h2><ol>",
     ]
-    parts += [f"<li><b>{esc(fam)}</b>: {esc(name)}</li>" for fam, name in results.chain]
-    parts.append("</ol>")
-    stats = {k: v for k, v in results.stats.items() if not isinstance(v, dict | list)}
-    if stats:
-        parts.append("<p>" + ", ".join(f"{esc(str(k))} = {esc(str(v))}"
-                                       for k, v in stats.items()) + "</p>")
+    bearings: dict[str, Any] = {}
+    lubricant = None
+    if scene is not None:
+        from .report_context import load_scene_bearings, load_scene_lubricant
+
+        bearings, notes = load_scene_bearings(scene)
+        try:
+            lubricant = load_scene_lubricant(scene)
+        except InputError as exc:
+            notes.append(f"lubricant: not readable for the report ({exc})")
+        parts.append(context_html(scene, results.tables, bearings, lubricant, notes))
+    parts.append(losses_html(results.tables.get("losses"), results.tables, scene, bearings,
+                             lubricant))
     parts.append("<h2 id='figures'>Figures</h2>")
-    parts += [figure_html(name, png) for name, png in results.figures.items()]
-    parts.append("<h2 id='energy-audit'>Energy audit</h2>")
-    energy = results.tables.get("energy")
-    if energy is not None and not energy.empty:
-        last = energy.iloc[-1]
-        parts.append(_table(pd.DataFrame([last])))
-        gen = float(last.get("generated [J]", float("nan")))
-        imb = float(last.get("imbalance [J]", float("nan")))
-        if gen and math.isfinite(gen) and math.isfinite(imb):
-            parts.append(f"<p>relative imbalance: {abs(imb) / abs(gen):.3e}</p>")
-    else:
-        parts.append("<p>(no transient run: no energy audit)</p>")
+    parts += [figure_html(FIGURE_CAPTIONS.get(name, name), png)
+              for name, png in results.figures.items()]
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
     if results.check_limits:
         limits = CheckLimits.from_dict(results.check_limits)
@@ -351,23 +330,63 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
                                       for w in results.warnings) + "</ul>")
     else:
         parts.append("<p>none</p>")
+    parts.append("<h2 id='model-chain'>Model chain</h2>")
+    parts.append("<p>the models that ran, in order, with the validity range each states "
+                 "(<code>thermobearing models FAMILY</code> gives their references)</p>")
+    parts.append(html_table(chain_table(results.chain)))
+    stats = {k: v for k, v in results.stats.items() if not isinstance(v, dict | list)}
+    if stats:
+        parts.append("<p>solver statistics: " + ", ".join(
+            f"{esc(str(k))} = {esc(_fmt_stat(v))}" for k, v in stats.items()) + "</p>")
+    parts.append("<h2 id='energy-audit'>Energy audit</h2>")
+    energy = results.tables.get("energy")
+    if energy is not None and not energy.empty:
+        last = energy.iloc[-1]
+        parts.append(html_table(pd.DataFrame([last])))
+        gen = float(last.get("generated [J]", float("nan")))
+        imb = float(last.get("imbalance [J]", float("nan")))
+        if gen and math.isfinite(gen) and math.isfinite(imb):
+            parts.append(f"<p>relative imbalance: {abs(imb) / abs(gen):.3e}</p>")
+    else:
+        parts.append("<p>(no transient run: no energy audit of the thermal network; the "
+                     "loss breakdown's totals are the sums of its sources)</p>")
     parts.append("<h2 id='estimated-inputs'>Estimated inputs</h2>")
     if results.estimated:
         parts.append("<p>input values no source gives, with the reasoning of each (the "
                      "bearing and lubricant configs' <code>estimated</code> tables; "
                      "<code>estimate_missing:</code> marks catalogue-data estimates)</p>")
         for what, entries in results.estimated.items():
-            parts.append(f"<h3>{esc(what)}</h3>" + _table(pd.DataFrame(
+            parts.append(f"<h3>{esc(what)}</h3>" + html_table(pd.DataFrame(
                 {"field": list(entries), "reasoning": list(entries.values())})))
     else:
         parts.append("<p>none</p>")
     parts.append("<h2 id='tables'>Tables</h2>")
     for name, df in {**results.tables, **(extra_tables or {})}.items():
-        parts.append(f"<h3>{esc(name)}</h3>{_table(df)}")
+        series = name in ("temperatures", "energy")
+        csv = f"{name}.csv" if name in results.tables else None
+        parts.append(f"<h3>{esc(name)}</h3>{html_table(df, csv_name=csv, series=series)}")
+    parts.append("<h2 id='scene'>Scene</h2>")
+    parts.append(f"<pre>{esc(results.scene_toml)}</pre>")
     parts.append("<h2 id='citations'>Citations</h2><ol>")
     parts += [f"<li>{esc(c)}</li>" for c in results.citations]
     parts.append("</ol></body></html>")
     return "\n".join(parts)
+
+
+#: figure name -> caption in the report
+FIGURE_CAPTIONS = {
+    "temperatures": "node temperatures [degC] against time [min] (measured points overlaid)",
+    "power_losses": "power loss by source [W] per operating point and bearing",
+    "heat_destinations": "heat received by each component [W] per operating point and "
+                         "bearing",
+    "cage_speed_ratio": "cage speed ratio [-] (theoretical ratio dashed)",
+}
+
+
+def _fmt_stat(v: Any) -> str:
+    if isinstance(v, float) and not isinstance(v, bool):
+        return f"{v:.3g}"
+    return str(v)
 
 
 # ---------------------------------------------------------------------------
@@ -400,8 +419,10 @@ def attach_figures(results: Results, scene: Any) -> None:
         results.figures["temperatures"] = fig_temperatures(temps, measured, cmap)
     losses = results.tables.get("losses")
     if losses is not None and not losses.empty:
-        first = losses["bearing"].iloc[0]
-        results.figures["power_losses"] = fig_loss_bars(losses, bearing=first)
+        results.figures["power_losses"] = fig_loss_bars(losses)
+        dest = fig_destinations(losses)
+        if dest is not None:
+            results.figures["heat_destinations"] = dest
     kin = results.tables.get("kinematics")
     if kin is not None and not kin.empty and len(kin) > 1:
         results.figures["cage_speed_ratio"] = fig_csr(kin)
@@ -419,7 +440,7 @@ def write_report(results: Results, scene: Any, path: Path | str) -> Path:
     if scene.measured is not None and temps is not None:
         err = temperature_errors(temps, read_measured(scene), scene.measured.columns)
         extra["measured vs predicted"] = err
-    text = html_report(results, scene.title, extra)
+    text = html_report(results, scene.title, extra, scene=scene)
     out = Path(path)
     out.write_text(text, encoding="utf-8")
     return out

@@ -6,8 +6,13 @@ Tables (all optional; a scene fills only what its outputs need):
     one row per output time: ``time [s]``, ``time [min]``, then ``<node> [degC]`` per node.
 ``losses``
     long form, one row per (step, bearing, source, component): ``step``, ``time [s]``,
-    ``bearing``, ``speed [rpm]``, ``axial load [kN]``, ``radial load [kN]``, ``source``,
-    ``component``, ``role``, ``power [W]``, ``load dependence``.
+    ``bearing``, ``speed [rpm]``, ``radial load [kN]``, ``axial load [kN]``, ``source``,
+    ``component``, ``power [W]``, ``load dependence`` (and ``role``, the component the
+    heat goes to, when the run records it: the report then shows the heat per component).
+``loss_breakdown`` (written from ``losses``, not kept in :attr:`Results.tables`)
+    one row per (step, bearing) with its speed and loads, one ``<source> [W]`` column per
+    heat source, ``load-dependent [W]``, ``load-independent [W]`` and ``total [W]`` (the
+    sum of the sources): :func:`thermobearing.report_losses.breakdown_by_source`.
 ``kinematics``
     one row per (step, bearing): speeds, loads, ``cage speed ratio [-]``,
     ``theoretical cage speed ratio [-]``, ``over-skidding [%]`` and solver statistics.
@@ -69,8 +74,9 @@ class Results:
         return self.tables[name]
 
     def write(self, out_dir: Path | str) -> Path:
-        """Write every table as CSV (and Parquet when pyarrow is present), the resolved
-        scene, the metadata and the figures to ``out_dir``; returns the folder."""
+        """Write every table as CSV (and Parquet when pyarrow is present), the loss
+        breakdown per operating point (``loss_breakdown.csv``, one column per source), the
+        resolved scene, the metadata and the figures to ``out_dir``; returns the folder."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         try:
@@ -83,6 +89,11 @@ class Results:
             df.to_csv(out / f"{name}.csv", index=False)
             if parquet:
                 df.to_parquet(out / f"{name}.parquet", index=False)
+        losses = self.tables.get("losses")
+        if losses is not None and not losses.empty and "source" in losses:
+            from .report_losses import breakdown_by_source
+
+            breakdown_by_source(losses).to_csv(out / "loss_breakdown.csv", index=False)
         if self.scene_toml:
             (out / "scene.toml").write_text(self.scene_toml, encoding="utf-8")
         meta = {
@@ -123,7 +134,9 @@ class ResultsWriter:
         self.out = Path(out_dir)
         self.out.mkdir(parents=True, exist_ok=True)
         self._columns: dict[str, list[str]] = {}
-        for name in TABLES:
+        # the tables of an earlier run in the folder (and the breakdown derived from its
+        # losses) must not pass for this run's
+        for name in (*TABLES, "loss_breakdown"):
             path = self.out / f"{name}.csv"
             if path.exists():
                 path.unlink()

@@ -131,7 +131,9 @@ def test_sweep_report_separates_every_swept_parameter(tmp_path):
     assert "loss maps (supply.flow [L/min] = 15.0)" in captions
     assert "loss maps (supply.flow [L/min] = 33.0)" in captions
     assert sum(c.startswith("what-if") for c in captions) == 3
-    assert len(re.findall(r'src="data:image/png;base64,', text)) == len(captions) == 5
+    # and one stacked-bar figure of every case's loss by source
+    assert sum(c.startswith("loss by source") for c in captions) == 1
+    assert len(re.findall(r'src="data:image/png;base64,', text)) == len(captions) == 6
 
 
 def test_sweep_report_keeps_the_sweeps_numeric_columns():

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from html import escape
 from pathlib import Path
 
 import pandas as pd
@@ -73,7 +74,13 @@ MAX_MAP_SLICES = 4
 
 
 def sweep_report(folder: Path) -> Path:
+    """Write ``folder/report.html`` for a sweep folder: the base scene's bearing and
+    conditions (when the folder has the sweep's ``scene.toml``), the loss by source of every
+    case as stacked bars, what-if curves, loss maps (sources named in words, in the order
+    of the run reports) and the summary table (powers rounded for a reader)."""
     from ..report import fig_loss_maps, fig_whatif, figure_html
+    from ..report_losses import fig_sweep_breakdown, source_label, summary_sources
+    from ..report_sections import html_table
 
     df = _read_table(folder / "summary.csv", ("case",))
     store = folder / "cases.jsonl"
@@ -87,7 +94,13 @@ def sweep_report(folder: Path) -> Path:
     pcols = [c for c in df.columns if any(c == p or c.startswith(p + " [") for p in params)]
     results = [c for c in df.columns if c not in pcols and c != "case"]
     figs: dict[str, bytes] = {}
-    losses = [c for c in results if c.endswith("[W]") and not c.startswith("max")]
+    bars = fig_sweep_breakdown(df, pcols)
+    if bars is not None:
+        figs["loss by source [W] of every case (all bearings, protocol average)"] = bars
+    sources = summary_sources(results)
+    totals = [c for c in results if c.startswith("total loss") and c.endswith("[W]")]
+    losses = totals + [f"{s} [W]" for s in sources]
+    titles = {f"{s} [W]": f"{source_label(s)} [W]" for s in sources}
     temps = [c for c in results if c.startswith("final") or c.startswith("rise")]
     # the housing node first: it is where a rig's thermocouple sits (paper 002 Fig. 19)
     temps.sort(key=lambda c: ".housing" not in c)
@@ -112,23 +125,48 @@ def sweep_report(folder: Path) -> Path:
             key = key if isinstance(key, tuple) else (key,)
             where = ", ".join(f"{c} = {v}" for c, v in zip(rest, key, strict=True))
             figs[f"loss maps ({where})" if where else "loss maps"] = \
-                fig_loss_maps(sub, x, y, losses, ranges=ranges)
+                fig_loss_maps(sub, x, y, losses, ranges=ranges, titles=titles)
         if len(slices) > MAX_MAP_SLICES:
             notes.append(f"loss maps drawn for the first {MAX_MAP_SLICES} of {len(slices)} "
                          f"combinations of {', '.join(rest)}; every case is in the summary")
     html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
             "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
-            "td,th{padding:2px 6px;border-bottom:1px solid #ddd}</style></head><body>",
-            f"<h1>Sweep report: {folder.name}</h1>",
-            f"<p>{len(df)} cases; swept: {', '.join(params)}</p>",
-            *(f"<p>{n}</p>" for n in notes),
+            "td,th{padding:2px 6px;border-bottom:1px solid #ddd}td{text-align:right}"
+            ".note{color:#555;font-size:12px}</style></head><body>",
+            f"<h1>Sweep report: {escape(folder.name)}</h1>",
+            _base_scene_html(folder),
+            f"<p>{len(df)} cases; swept: {escape(', '.join(params))}. Losses in W: each "
+            "case's loss of all its bearings, averaged over its protocol (steps weighted by "
+            "their duration); <code>total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
+            *(f"<p>{escape(n)}</p>" for n in notes),
             "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
-            "<h2>Summary</h2>", df.to_html(index=False, float_format=lambda v: f"{v:.4g}"),
+            "<h2>Summary</h2>", html_table(df, max_rows=500, csv_name="summary.csv"),
             "</body></html>"]
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
     return out
+
+
+def _base_scene_html(folder: Path) -> str:
+    """The sweep's base scene (``scene.toml`` in the folder): its title, bearings and
+    conditions; a note when the folder does not record it."""
+    path = folder / "scene.toml"
+    if not path.is_file():
+        return ("<p class='note'>(this sweep folder has no scene.toml: its base scene, the "
+                "bearing and the conditions not swept, are not recorded here)</p>")
+    from ..report_context import bearing_table, load_scene_bearings, supply_text
+    from ..report_sections import html_table
+    from ..scene import loads_scene
+
+    scene = loads_scene(path.read_text(encoding="utf-8"), base_dir=folder, source=str(path))
+    bearings, notes = load_scene_bearings(scene)
+    parts = [f"<h2>Base scene: {escape(scene.title)}</h2>",
+             html_table(bearing_table(scene, bearings)),
+             f"<p>{escape(supply_text(scene, None))} (values the sweep sets replace "
+             "these)</p>"]
+    parts += [f"<p class='note'>{escape(n)}</p>" for n in notes]
+    return "\n".join(parts)
 
 
 def run_report(folder: Path) -> Path:

@@ -1,0 +1,363 @@
+"""The power-loss breakdown of a run, as a reader of the report sees it.
+
+The ``losses`` table of a run is long form (one row per step, bearing, source and
+component, ``power [W]``). This module turns it into what a bearing engineer reads:
+
+- :func:`breakdown_by_source`: one row per operating point and bearing, one ``<source> [W]``
+  column per heat source, the load-dependent / load-independent split and the total
+  (written by :meth:`thermobearing.results.Results.write` as ``loss_breakdown.csv``);
+- :func:`breakdown_by_destination`: the same points, one column per component the heat
+  goes to (inner ring, outer ring, rolling elements, cage, oil), when the table has the
+  ``role`` column;
+- :func:`fig_loss_bars`: stacked bars per operating point, one panel per bearing, the
+  sources in one fixed order and colour in every figure of every report
+  (:func:`source_colours`), named in words (:data:`SOURCE_LABELS`).
+
+Only bookkeeping: no physics here, the powers are the heat sources' own.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+
+from .errors import InputError  # noqa: E402
+
+#: registered heat-source name -> what the loss is, in a bearing engineer's words; the
+#: order is the order of the stacked bars and of the breakdown tables (load-dependent
+#: contact friction first, then the cage, then the oil drag)
+SOURCE_LABELS: dict[str, str] = {
+    "raceway_traction": "raceway contacts (rolling and sliding shear)",
+    "ehl_rolling_resistance": "EHL rolling resistance",
+    "rib_friction": "roller end / rib friction",
+    "pocket_friction": "cage pockets (element / pocket friction)",
+    "cage_guide": "cage guide land (film shear)",
+    "churning_elements": "oil drag on the rolling elements (churning)",
+    "churning_cage": "oil drag on the cage (churning)",
+    "churning_inner_ring": "oil drag on the inner ring (churning)",
+    "global_friction": "whole bearing (catalogue friction model)",
+}
+
+#: node role of the heat -> the component it heats, in words
+ROLE_LABELS: dict[str, str] = {
+    "inner_ring": "inner ring",
+    "outer_ring": "outer ring",
+    "elements": "rolling elements",
+    "cage": "cage",
+    "oil": "oil",
+}
+
+#: loss class of the losses table -> words (FVA split of the frictional moment, losses.py)
+CLASS_LABELS: dict[str, str] = {"load_dependent": "load-dependent",
+                                "load_independent": "load-independent"}
+
+#: operating-point columns of the losses / kinematics tables, in display order
+OPERATING = ("speed [rpm]", "radial load [kN]", "axial load [kN]")
+
+_PALETTE = tuple(plt.get_cmap("tab10").colors) + tuple(plt.get_cmap("Dark2").colors)
+
+
+def source_label(name: str) -> str:
+    """The words for heat source ``name`` (a plug-in source: its name, underscores as
+    spaces)."""
+    return SOURCE_LABELS.get(name, name.replace("_", " "))
+
+
+def source_order(names: Iterable[str]) -> list[str]:
+    """``names`` (each once) in the fixed display order: the known sources in the order of
+    :data:`SOURCE_LABELS`, then any other (plug-in) source alphabetically."""
+    known = list(SOURCE_LABELS)
+    unique = set(names)
+    return ([n for n in known if n in unique]
+            + sorted(n for n in unique if n not in SOURCE_LABELS))
+
+
+def source_colours(names: Iterable[str]) -> dict[str, Any]:
+    """One colour per source that depends on the source alone: a known source has the
+    colour of its place in :data:`SOURCE_LABELS` in every figure; other sources take the
+    colours after those, in alphabetical order."""
+    known = list(SOURCE_LABELS)
+    out: dict[str, Any] = {}
+    others = sorted(n for n in set(names) if n not in SOURCE_LABELS)
+    for n in set(names):
+        i = known.index(n) if n in SOURCE_LABELS else len(known) + others.index(n)
+        out[n] = _PALETTE[i % len(_PALETTE)]
+    return out
+
+
+def _check(losses: pd.DataFrame, needed: Iterable[str]) -> None:
+    missing = [c for c in needed if c not in losses.columns]
+    if missing:
+        raise InputError("losses table columns", list(losses.columns),
+                         "a losses table of `thermobearing run` with "
+                         + ", ".join(repr(c) for c in missing))
+
+
+def point_keys(losses: pd.DataFrame) -> list[str]:
+    """The columns that identify one operating point of one bearing in ``losses``: step and
+    bearing (those present), the time when one step has rows at several times, and the
+    speed and loads (constant within a step, kept for the reader)."""
+    keys = [c for c in ("step", "bearing") if c in losses]
+    if "time [s]" in losses and "step" in losses:
+        if (losses.groupby("step")["time [s]"].nunique() > 1).any():
+            keys.append("time [s]")
+    keys += [c for c in OPERATING if c in losses]
+    if not keys:
+        raise InputError("losses table columns", list(losses.columns),
+                         "a step, bearing or operating-point column")
+    return keys
+
+
+def breakdown_by_source(losses: pd.DataFrame) -> pd.DataFrame:
+    """One row per operating point and bearing: ``<source> [W]`` per heat source (the sum of
+    its components, in :func:`source_order`), ``load-dependent [W]`` and
+    ``load-independent [W]`` when the table has the ``load dependence`` column, and
+    ``total [W]``, the sum of the source columns.
+
+    ``losses``: the long ``losses`` table (``source``, ``power [W]`` and the point columns
+    of :func:`point_keys`).
+    """
+    _check(losses, ("source", "power [W]"))
+    keys = point_keys(losses)
+    pivot = losses.pivot_table(index=keys, columns="source", values="power [W]",
+                               aggfunc="sum", fill_value=0.0, sort=False)
+    order = source_order(pivot.columns)
+    out = pivot[order].rename(columns={s: f"{s} [W]" for s in order})
+    if "load dependence" in losses:
+        cls = losses.pivot_table(index=keys, columns="load dependence", values="power [W]",
+                                 aggfunc="sum", fill_value=0.0, sort=False)
+        for c, label in CLASS_LABELS.items():
+            out[f"{label} [W]"] = cls[c] if c in cls else 0.0
+    out["total [W]"] = pivot[order].sum(axis=1)
+    out.columns.name = None
+    return out.reset_index()
+
+
+def breakdown_by_destination(losses: pd.DataFrame) -> pd.DataFrame | None:
+    """One row per operating point and bearing: the heat each component receives,
+    ``<component> [W]`` (inner ring, outer ring, rolling elements, cage, oil: the ``role``
+    column, :data:`ROLE_LABELS`), and ``total [W]``; None when the table has no ``role``
+    column (then the heat sources' split over the components was not recorded)."""
+    if "role" not in losses:
+        return None
+    _check(losses, ("power [W]",))
+    keys = point_keys(losses)
+    pivot = losses.pivot_table(index=keys, columns="role", values="power [W]",
+                               aggfunc="sum", fill_value=0.0, sort=False)
+    roles = [r for r in ROLE_LABELS if r in pivot.columns] + sorted(
+        r for r in pivot.columns if r not in ROLE_LABELS)
+    out = pivot[roles].rename(columns={r: f"{ROLE_LABELS.get(r, r)} [W]" for r in roles})
+    out["total [W]"] = pivot[roles].sum(axis=1)
+    out.columns.name = None
+    return out.reset_index()
+
+
+def shares(breakdown: pd.DataFrame) -> pd.DataFrame:
+    """Each ``<source> [W]`` column of :func:`breakdown_by_source` as a share of the
+    point's total, ``<source> [%]`` (0 where the total is 0)."""
+    cols = [c for c in breakdown.columns if c.endswith(" [W]") and c != "total [W]"
+            and c[:-4] not in CLASS_LABELS.values()]
+    keys = [c for c in breakdown.columns if not c.endswith(" [W]")]
+    total = breakdown["total [W]"].where(breakdown["total [W]"] > 0, np.nan)
+    out = breakdown[keys].copy()
+    for c in cols:
+        out[c[:-4] + " [%]"] = (100.0 * breakdown[c] / total).fillna(0.0)
+    return out
+
+
+def fmt_power(v: Any) -> str:
+    """A power [W] rounded for a reader: whole watts from 10 W, one decimal from 1 W,
+    two significant digits below (losses carry model errors of several per cent)."""
+    if not isinstance(v, (int, float, np.number)) or isinstance(v, bool):
+        return str(v)
+    v = float(v)
+    if not math.isfinite(v):
+        return str(v)
+    a = abs(v)
+    if a == 0.0:
+        return "0"
+    if a >= 10.0:
+        return f"{v:,.0f}"
+    if a >= 1.0:
+        return f"{v:.1f}"
+    return f"{v:.2g}"
+
+
+def readable(table: pd.DataFrame) -> pd.DataFrame:
+    """A breakdown table with its source columns named in words (``<label> [W]`` or
+    ``[%]``) for the report; the CSV keeps the registered names."""
+    names = {}
+    for c in table.columns:
+        for unit in (" [W]", " [%]"):
+            if c.endswith(unit) and c[:-len(unit)] in SOURCE_LABELS:
+                names[c] = source_label(c[:-len(unit)]) + unit
+    return table.rename(columns=names)
+
+
+def _operating_axis(df: pd.DataFrame) -> tuple[str, dict[Any, float], list[str], str]:
+    from .report import operating_axis
+
+    return operating_axis(df)
+
+
+def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
+    """Stacked power-loss bars [W] per operating point, one colour per source (paper 002
+    Fig. 15), one panel per bearing (``bearing``: that one only). The sources are stacked
+    in :func:`source_order` with the colours of :func:`source_colours`, so every figure of
+    every report shows a source in the same place and colour; the axis is the swept
+    quantity, or the step labelled with what varies (``report.operating_axis``)."""
+    _check(losses, ("source", "power [W]"))
+    if bearing is not None:
+        losses = losses[losses["bearing"] == bearing]
+    names = list(dict.fromkeys(losses["bearing"])) if "bearing" in losses else [None]
+    order = source_order(losses["source"])
+    colours = source_colours(order)
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.6 * len(names) + 0.8),
+                             squeeze=False, sharey=True, layout="constrained")
+    for ax, name in zip(axes[:, 0], names, strict=True):
+        df = losses if name is None else losses[losses["bearing"] == name]
+        key, pos, labels, xlabel = _operating_axis(df)
+        pivot = df.pivot_table(index=key, columns="source", values="power [W]",
+                               aggfunc="sum").fillna(0.0)
+        x = np.array([pos[k] for k in pivot.index])
+        bottom = np.zeros(len(pivot))
+        for src in order:
+            if src not in pivot:
+                continue
+            ax.bar(x, pivot[src].to_numpy(), bottom=bottom, color=colours[src],
+                   label=source_label(src))
+            bottom += pivot[src].to_numpy()
+        every = max(1, math.ceil(len(labels) / 30))
+        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
+                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("power loss [W]")
+        if name is not None:
+            ax.set_title(f"bearing {name}", fontsize=9)
+        ax.grid(axis="y", alpha=0.3)
+    # one legend for all panels, top of the stack first (as the bars read)
+    handles, labels_ = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles[::-1], labels_[::-1], loc="outside right upper", fontsize=7,
+               title="loss source", title_fontsize=7)
+    return _png(fig)
+
+
+def fig_destinations(losses: pd.DataFrame) -> bytes | None:
+    """Stacked bars of the heat per receiving component [W] (inner ring, outer ring,
+    rolling elements, cage, oil) per operating point, one panel per bearing; None when the
+    losses table has no ``role`` column."""
+    if "role" not in losses:
+        return None
+    renamed = losses.drop(columns=["source"]).rename(columns={"role": "source"})
+    roles = [r for r in ROLE_LABELS if r in set(renamed["source"])]
+    names = list(dict.fromkeys(losses["bearing"])) if "bearing" in losses else [None]
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.6 * len(names) + 0.8),
+                             squeeze=False, sharey=True, layout="constrained")
+    colours = dict(zip(ROLE_LABELS, plt.get_cmap("Set2").colors, strict=False))
+    for ax, name in zip(axes[:, 0], names, strict=True):
+        df = renamed if name is None else renamed[renamed["bearing"] == name]
+        key, pos, labels, xlabel = _operating_axis(df)
+        pivot = df.pivot_table(index=key, columns="source", values="power [W]",
+                               aggfunc="sum").fillna(0.0)
+        x = np.array([pos[k] for k in pivot.index])
+        bottom = np.zeros(len(pivot))
+        for role in roles + sorted(set(pivot.columns) - set(roles)):
+            if role not in pivot:
+                continue
+            ax.bar(x, pivot[role].to_numpy(), bottom=bottom, label=ROLE_LABELS.get(role, role),
+                   color=colours.get(role))
+            bottom += pivot[role].to_numpy()
+        every = max(1, math.ceil(len(labels) / 30))
+        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
+                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("heat received [W]")
+        if name is not None:
+            ax.set_title(f"bearing {name}", fontsize=9)
+        ax.grid(axis="y", alpha=0.3)
+    handles, labels_ = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles[::-1], labels_[::-1], loc="outside right upper", fontsize=7,
+               title="heat goes to", title_fontsize=7)
+    return _png(fig)
+
+
+def summary_sources(columns: Iterable[str]) -> list[str]:
+    """The heat sources with a ``<source> [W]`` column in a sweep summary, in
+    :func:`source_order` (the summary's totals and maxima are not sources)."""
+    names = [c[:-4] for c in columns if str(c).endswith(" [W]")
+             and not str(c).startswith(("total loss", "max "))]
+    return source_order(names)
+
+
+def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | None:
+    """Stacked bars of the loss by source [W] for every case of a sweep summary (the
+    ``<source> [W]`` columns: all bearings, averaged over the protocol), the cases sorted by
+    the swept parameters ``params`` and labelled with their values; the sources in the
+    order and colours of every other loss figure. None when the summary has no sources."""
+    sources = summary_sources(summary.columns)
+    if not sources:
+        return None
+    df = summary.sort_values(params).reset_index(drop=True) if params else summary
+    colours = source_colours(sources)
+    fig, ax = plt.subplots(figsize=(max(6.0, 0.35 * len(df) + 3.0), 4.2),
+                           layout="constrained")
+    x = np.arange(len(df))
+    bottom = np.zeros(len(df))
+    for src in sources:
+        values = df[f"{src} [W]"].fillna(0.0).to_numpy(float)
+        ax.bar(x, values, bottom=bottom, color=colours[src], label=source_label(src))
+        bottom += values
+    labels = [" / ".join(_fmt(row[p]) for p in params) for _, row in df.iterrows()]
+    every = max(1, math.ceil(len(labels) / 40))
+    ax.set_xticks(x[::every], labels[::every], rotation=90, fontsize=7)
+    ax.set_xlabel(" / ".join(params))
+    ax.set_ylabel("power loss [W] (all bearings, protocol average)")
+    ax.grid(axis="y", alpha=0.3)
+    handles, names = ax.get_legend_handles_labels()
+    fig.legend(handles[::-1], names[::-1], loc="outside right upper", fontsize=7,
+               title="loss source", title_fontsize=7)
+    return _png(fig)
+
+
+def _fmt(v: Any) -> str:
+    return f"{v:g}" if isinstance(v, (int, float, np.number)) else str(v)
+
+
+def _png(fig: plt.Figure) -> bytes:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return buf.getvalue()
+
+
+def glossary(losses: pd.DataFrame) -> pd.DataFrame:
+    """The heat sources of a losses table: registered name (the CSV column), what it is,
+    and its loss class (load-dependent / load-independent, ``losses.py``) when known."""
+    order = source_order(losses["source"])
+    out = pd.DataFrame({"in the CSV files": order,
+                        "loss": [source_label(s) for s in order]})
+    classes = loss_class_of(losses)
+    if classes:
+        out["class"] = [classes.get(s, "") for s in order]
+    return out
+
+
+def loss_class_of(losses: pd.DataFrame) -> Mapping[str, str]:
+    """Source -> its loss class in words (``mixed`` if its components differ); empty
+    without the ``load dependence`` column."""
+    if "load dependence" not in losses:
+        return {}
+    out = {}
+    for src, g in losses.groupby("source"):
+        classes = {CLASS_LABELS.get(c, str(c)) for c in g["load dependence"].dropna()}
+        out[str(src)] = classes.pop() if len(classes) == 1 else "mixed"
+    return out

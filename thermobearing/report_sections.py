@@ -1,0 +1,172 @@
+"""HTML sections of the run report: the operating context and the power-loss breakdown.
+
+:func:`html_table` renders a table for a reader (powers rounded by
+:func:`report_losses.fmt_power`, per cent values to three significant digits, other
+numbers to four; a long table is cut with a note naming its CSV file). :func:`context_html` says
+which bearing ran at which operating points; :func:`losses_html` gives the loss breakdown
+by source and by receiving component, the sum check, the loss glossary and the catalogue
+cross-check (:func:`report_context.catalogue_crosscheck`).
+"""
+
+from __future__ import annotations
+
+import html
+import math
+from typing import Any
+
+import pandas as pd
+
+from . import report_context as ctx
+from . import report_losses as rl
+from .errors import InputError
+
+#: rows of a table shown in the report (the CSV files have all)
+MAX_ROWS = 60
+
+
+def fmt_number(v: float) -> str:
+    """Four significant digits, without an exponent from 1e4 to 1e12 (a speed of 20000
+    r/min reads ``20,000``, not ``2e+04``)."""
+    if math.isfinite(v) and 1e4 <= abs(v) < 1e12:
+        return f"{v:,.0f}"
+    return f"{v:.4g}"
+
+
+def _formatters(df: pd.DataFrame) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for c in df.columns:
+        if not pd.api.types.is_float_dtype(df[c]):
+            continue
+        if str(c).endswith("[W]"):
+            out[c] = rl.fmt_power
+        elif str(c).endswith("[%]"):
+            out[c] = lambda v: f"{v:.3g}"
+    return out
+
+
+def html_table(df: pd.DataFrame | None, max_rows: int = MAX_ROWS, *,
+               csv_name: str | None = None, series: bool = False) -> str:
+    """A table as HTML for a reader. Longer than ``max_rows``: a time series
+    (``series``) shows every k-th row, any other table its first ``max_rows`` rows; either
+    way a note says how many rows are shown and where the rest is (``csv_name``)."""
+    if df is None or df.empty:
+        return "<p>(empty)</p>"
+    note = ""
+    shown = df
+    if len(df) > max_rows:
+        where = f"; all {len(df)} in {csv_name}" if csv_name else ""
+        if series:
+            k = -(-len(df) // max_rows)
+            shown = df.iloc[::k]
+            note = f"every {k}th of {len(df)} rows shown{where}"
+        else:
+            shown = df.iloc[:max_rows]
+            note = f"first {max_rows} of {len(df)} rows shown{where}"
+    text = shown.to_html(index=False, float_format=fmt_number, border=0,
+                         formatters=_formatters(shown))
+    return text + (f"<p class='note'>({html.escape(note)})</p>" if note else "")
+
+
+def context_html(scene: Any, tables: dict[str, pd.DataFrame], bearings: dict[str, Any],
+                 lubricant: Any | None, notes: list[str]) -> str:
+    """'Bearing and operating points': the bearings, lubricant and supply, the schedule."""
+    esc = html.escape
+    parts = ["<h2 id='bearing-and-operating-points'>Bearing and operating points</h2>",
+             html_table(ctx.bearing_table(scene, bearings)),
+             f"<p>{esc(ctx.supply_text(scene, lubricant))}</p>"]
+    parts += [f"<p class='warn'>{esc(n)}</p>" for n in notes]
+    parts.append("<h3>schedule</h3>" + html_table(ctx.operating_points(scene)))
+    return "\n".join(parts)
+
+
+def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], scene: Any,
+                bearings: dict[str, Any], lubricant: Any | None) -> str:
+    """'Loss breakdown': by source [W] and share [%], the glossary, by receiving component,
+    the sum check and the catalogue cross-check."""
+    esc = html.escape
+    parts = ["<h2 id='loss-breakdown'>Loss breakdown</h2>"]
+    if losses is None or losses.empty:
+        parts.append("<p>(no losses table: the scene's outputs ask for no losses)</p>")
+        return "\n".join(parts)
+    if scene is not None:
+        parts.append(f"<p>{esc(ctx.loss_temperature_note(tables, scene))}</p>")
+    by_source = rl.breakdown_by_source(losses)
+    parts += ["<h3>power loss by source [W]</h3>",
+              "<p>per operating point and bearing; total = the sum of the sources "
+              "(load-dependent + load-independent); the same numbers, registered source "
+              "names as columns, are in loss_breakdown.csv</p>",
+              html_table(rl.readable(by_source), csv_name="loss_breakdown.csv"),
+              "<h3>share of the total by source [%]</h3>",
+              html_table(rl.readable(rl.shares(by_source))),
+              "<h3>what the sources are</h3>", html_table(rl.glossary(losses))]
+    by_dest = rl.breakdown_by_destination(losses)
+    parts.append("<h3>heat received by component [W]</h3>")
+    if by_dest is None:
+        parts.append("<p>(the losses table has no role column: which component each "
+                     "source heats was not recorded in this run)</p>")
+    else:
+        gap = float((by_dest["total [W]"] - by_source["total [W]"]).abs().max())
+        parts += [html_table(by_dest),
+                  f"<p>sum check: the totals by component and by source differ by at most "
+                  f"{gap:.3g} W</p>"]
+    parts.append(_crosscheck_html(losses, tables, scene, bearings, lubricant))
+    return "\n".join(parts)
+
+
+def _crosscheck_html(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], scene: Any,
+                     bearings: dict[str, Any], lubricant: Any | None) -> str:
+    esc = html.escape
+    head = ("<h3>catalogue cross-check</h3><p>the run's total loss beside the whole-bearing "
+            "estimates of the SKF four-term model and Palmgren's M0 + M1 at the same speed, "
+            "loads, lubrication method and oil temperature (thermobearing.global_friction). "
+            "Both are catalogue-level models of the whole bearing, fitted to catalogue "
+            "bearings in standard conditions: they see neither the cage, nor the oil jet's "
+            "flow, nor the skidding of this run, so they are an order-of-magnitude check, "
+            "not a reference</p>")
+    if scene is None or lubricant is None or not bearings:
+        return head + "<p>(not available: the scene's bearing or lubricant was not read)</p>"
+    try:
+        table, notes = ctx.catalogue_crosscheck(losses, tables, scene, bearings, lubricant)
+    except InputError as exc:
+        return head + f"<p class='warn'>(not available: {esc(str(exc))})</p>"
+    return (head + html_table(table)
+            + "".join(f"<p class='note'>{esc(n)}</p>" for n in notes))
+
+
+#: model family -> the module holding its registry (imported on demand; a family not
+#: listed is shown without its summary and validity)
+_REGISTRY_MODULES = {
+    "viscosity_temperature": "thermobearing.viscosity_laws",
+    "pressure_viscosity": "thermobearing.viscosity_laws",
+    "film": "thermobearing.film",
+    "thermal_film": "thermobearing.film",
+    "kinematics": "thermobearing.kinematic_models",
+    "heat_source": "thermobearing.heat_sources",
+    "global_friction": "thermobearing.global_friction",
+    "network_template": "thermobearing.network.templates",
+    "stepper": "thermobearing.network.steppers",
+    "traction": "thermobearing.traction",
+    "traction_curve": "thermobearing.traction_curve",
+}
+
+
+def chain_table(chain: list[tuple[str, str]]) -> pd.DataFrame:
+    """The models that ran: family, model, what it is and its validity range as its
+    registry entry states them (``thermobearing models`` lists the same)."""
+    import importlib
+
+    from .registry import Registry
+
+    rows = []
+    for family, name in chain:
+        summary = validity = ""
+        module = _REGISTRY_MODULES.get(family)
+        if module is not None:
+            for value in vars(importlib.import_module(module)).values():
+                if isinstance(value, Registry) and value.family == family and name in value:
+                    entry = value.entry(name)
+                    summary, validity = entry.summary, entry.validity
+                    break
+        rows.append({"family": family, "model": name, "what it is": summary,
+                     "valid for": validity or "(no range stated)"})
+    return pd.DataFrame(rows)
