@@ -10,10 +10,12 @@ columns are separated by spaces is read by one rule:
   to ``time_column`` (names with single spaces inside, ``Time [s]   TC 1 outer ring``, as a
   fixed-width export or an aligned table writes them), else at every run of spaces;
 - a data row is split the same way (runs of 2+ spaces, else every run) when that gives as
-  many cells as the header; otherwise (a blank cell, or one space between two cells) each
-  piece of the row goes to the header name it lies under (its characters overlap that
-  name's, or it is nearest to it): blank cells of a fixed-width export are then gaps.
-  Two pieces under one name is an error naming the row.
+  many cells as the header; a row of more pieces whose first column is the time joins its
+  first pieces into the time cell (``2026-11-23 10:15:30 35.2 35.0``); otherwise (a blank
+  cell, or one space between two cells) each piece of the row goes to the header name it
+  lies under (its characters overlap that name's, or it is nearest to it): blank cells of
+  a fixed-width export are then gaps. Two pieces under one name is an error naming the
+  row.
 """
 
 from __future__ import annotations
@@ -61,12 +63,15 @@ class Layout:
 
     ``sep``: ``"\\t"``, ``";"``, ``","`` or ``"spaces"``; ``spans``: character spans of the
     header names (spaces only: where the cells of a fixed-width row lie); ``wide``: the
-    header was split at runs of two or more spaces.
+    header was split at runs of two or more spaces; ``time_first``: the time column is the
+    first (spaces only: a row with more pieces than names joins its first pieces, a
+    timestamp such as ``2026-11-23 10:15:30`` with single spaces around it).
     """
 
     sep: str
     spans: tuple[tuple[int, int], ...] = ()
     wide: bool = False
+    time_first: bool = False
 
     @property
     def name(self) -> str:
@@ -86,6 +91,10 @@ class Layout:
             cells = [t for t, _, _ in _pieces(line, pattern)]
             if len(cells) == n:
                 return cells
+        if self.time_first and len(cells) > n and not _is_number(cells[0]):
+            # a timestamp with a space in column 1 (a time of numbers holds none)
+            extra = len(cells) - n
+            return [" ".join(cells[:extra + 1]), *cells[extra + 1:]]
         return self._by_position(line, row)
 
     def _by_position(self, line: str, row: str) -> list[str]:
@@ -150,7 +159,8 @@ def find_layout(lines: list[tuple[int, str]], time_column: str
                 pieces = _pieces(ln, _WIDE if wide else _ANY)
                 cells = [t for t, _, _ in pieces]
                 if _has(cells, time_column):
-                    return Layout(SPACES, tuple((a, b) for _, a, b in pieces), wide), k, cells
+                    spans = tuple((a, b) for _, a, b in pieces)
+                    return Layout(SPACES, spans, wide, _has(cells[:1], time_column)), k, cells
     layout = Layout(guess)
     widest = max((layout.header(ln) for ln in body[:50]), key=len)
     return layout, None, widest

@@ -77,6 +77,21 @@ def test_single_spaces_still_split_at_every_run(tmp_path):
     assert got["TC2"].tolist() == [36.0, 37.0]
 
 
+def test_spaces_with_units_row_and_single_spaced_timestamps(tmp_path):
+    """An aligned file with a units row (its K contradicts degC: the error), and a
+    single-space file whose first column is a timestamp holding a space."""
+    lines = ["Time [s]   TC 1 outer   TC 2", "s          K            K", "0.0        308.15       "
+             "309.15", "60.0       308.25       309.35"]
+    path = write(tmp_path / "u.txt", lines)
+    with pytest.raises(InputError, match=r"measured.unit.*'K'.*units row.*'TC 1 outer'"):
+        read_measured_file(path, "Time [s]", ["TC 1 outer", "TC 2"])
+    got = read_measured_file(path, "Time [s]", ["TC 1 outer", "TC 2"], "K")
+    np.testing.assert_allclose(got["TC 2"], [36.0, 36.2])
+    lines = ["Timestamp TC1 TC2", "2026-11-23 10:15:30 35.2 35.0", "2026-11-23 10:16:30 35.3 35.1"]
+    got = read_measured_file(write(tmp_path / "s.txt", lines), "Timestamp", ["TC1", "TC2"])
+    assert got["time [s]"].tolist() == [0.0, 60.0] and got["TC2"].tolist() == [35.0, 35.1]
+
+
 def test_two_cells_under_one_name_is_an_error(tmp_path):
     lines = ["Time [s]    TC 1 outer ring   TC 2", "0.0   35.2   35.3   99.0   1.0"]
     with pytest.raises(InputError, match=r"measured.file.*line 2.*two or more spaces.*"
