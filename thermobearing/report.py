@@ -33,7 +33,11 @@ import pandas as pd  # noqa: E402
 
 from .errors import InputError  # noqa: E402
 from .operating_checks import CheckLimits  # noqa: E402
-from .report_losses import fig_destinations, fig_loss_bars  # noqa: E402
+from .report_losses import (  # noqa: E402
+    fig_destinations,
+    fig_loss_bars,
+    network_heat_check,
+)
 from .results import Results  # noqa: E402
 
 #: the sections every report has (with a scene also "Bearing and operating points")
@@ -347,6 +351,16 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
         imb = float(last.get("imbalance [J]", float("nan")))
         if gen and math.isfinite(gen) and math.isfinite(imb):
             parts.append(f"<p>relative imbalance: {abs(imb) / abs(gen):.3e}</p>")
+        losses = results.tables.get("losses")
+        check = (network_heat_check(losses, energy)
+                 if losses is not None and not losses.empty else None)
+        if check is not None:
+            worst = float(check["difference [%]"].abs().max())
+            parts.append("<h3>loss breakdown vs the heat into the network</h3>"
+                         "<p>the breakdown's total (all bearings) at the end of each step "
+                         "beside the network's mean heat input over the output interval "
+                         "ending there; they differ by the change of the losses over that "
+                         f"interval: at most {worst:.3g} % here</p>" + html_table(check))
     else:
         parts.append("<p>(no transient run: no energy audit of the thermal network; the "
                      "loss breakdown's totals are the sums of its sources)</p>")

@@ -58,7 +58,8 @@ def bearing_table(scene: Any, bearings: dict[str, Any]) -> pd.DataFrame:
     for spec in scene.bearings:
         b = bearings.get(spec.name)
         row: dict[str, Any] = {"bearing": spec.name,
-                               "designation": spec.preset or str(spec.path)}
+                               "designation": (getattr(b, "name", "") if b is not None
+                                               else "") or spec.preset or str(spec.path)}
         if b is not None:
             row["type"] = str(getattr(b, "kind", type(b).__name__)).replace("_", " ")
             row["d x D x B [mm]"] = " x ".join(

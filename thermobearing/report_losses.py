@@ -332,6 +332,37 @@ def _fmt(v: Any) -> str:
     return f"{v:g}" if isinstance(v, (int, float, np.number)) else str(v)
 
 
+def network_heat_check(losses: pd.DataFrame, energy: pd.DataFrame) -> pd.DataFrame | None:
+    """The loss breakdown against the heat the thermal network received (energy audit of
+    the breakdown): for each time of the losses table (a step's end), the breakdown's total
+    over all bearings [W] and the network's mean heat input over the output interval that
+    ends there, (generated[k] - generated[k-1]) / (t[k] - t[k-1]) from the ``energy``
+    table [W], and their difference [%]. The two agree to the change of the heat over
+    that interval (the breakdown is evaluated at its end). None without the columns
+    (``time [s]``, ``generated [J]``) or without matching times."""
+    if energy is None or energy.empty or "time [s]" not in losses or not {
+            "time [s]", "generated [J]"} <= set(energy.columns):
+        return None
+    t = energy["time [s]"].to_numpy(float)
+    gen = energy["generated [J]"].to_numpy(float)
+    if t[0] > 0.0:  # the table starts after the first interval: nothing generated at 0
+        t, gen = np.concatenate(([0.0], t)), np.concatenate(([0.0], gen))
+    keys = ["step", "time [s]"] if "step" in losses else ["time [s]"]
+    rows = []
+    for key, g in losses.groupby(keys, sort=True):
+        key = key if isinstance(key, tuple) else (key,)
+        te = float(key[-1])
+        k = int(np.argmin(np.abs(t - te)))
+        if k == 0 or abs(t[k] - te) > 1e-6 * max(1.0, te):
+            continue
+        rate = (gen[k] - gen[k - 1]) / (t[k] - t[k - 1])
+        total = float(g["power [W]"].sum())
+        rows.append({**dict(zip(keys, key, strict=True)), "breakdown total [W]": total,
+                     "network heat input [W]": rate,
+                     "difference [%]": 100.0 * (rate / total - 1.0) if total else math.nan})
+    return pd.DataFrame(rows) if rows else None
+
+
 def _png(fig: plt.Figure) -> bytes:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")

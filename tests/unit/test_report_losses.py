@@ -210,3 +210,41 @@ def test_large_numbers_in_report_tables_read_without_an_exponent():
                                     "residual": [2.6e-11, 1.0]}))
     assert "20,000" in text and "1800" in text and "2.6e-11" in text
     assert "e+04" not in text
+
+
+def test_report_with_its_scene_names_the_bearing_the_models_and_their_ranges():
+    from thermobearing.scene import loads_scene
+
+    scene = loads_scene("""
+title = "t"
+[[bearings]]
+name = "de"
+preset = "QJ1044"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "33 L/min"
+inlet_temperature = "35 degC"
+[schedule]
+speed = "1800 rpm"
+radial_load = "1 kN"
+axial_load = "10 kN"
+step_duration = "3 min"
+""")
+    res = Results(tables={"losses": _losses(("de",))[lambda d: d["step"] == 0]},
+                  chain=[("film", "hamrock_dowson_1977_central"),
+                         ("heat_source", "cage_guide")])
+    text = html_report(res, "t", scene=scene)
+    page = _Tables()
+    page.feed(text)
+    bearing = page.table("Bearing and operating points")
+    assert bearing["rows"][0][:4] == ["de", "QJ1044", "four point", "220 x 340 x 56"]
+    chain = page.table("Model chain")
+    assert chain["head"] == ["family", "model", "what it is", "valid for"]
+    assert "2000 <= G <= 8000" in chain["rows"][0][3]
+    # a steady breakdown (no transient): said, and the losses' temperature is named
+    assert "no transient run: no energy audit of the thermal network" in text
+    assert "initial temperature, 35 degC" in text
+    assert page.table("catalogue cross-check")["head"][-1] == \
+        "this run vs Palmgren M0 + M1 [%]"

@@ -49,4 +49,6 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(sim.summary_text(results))
     print(f"results written to {out}/ (report: {out / 'report.html'})")
+    if (out / "loss_breakdown.csv").is_file():
+        print(f"loss breakdown, one column per source [W]: {out / 'loss_breakdown.csv'}")
     return 0
