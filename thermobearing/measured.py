@@ -161,7 +161,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     if not 1 <= len(tnames) <= 2:
         raise InputError(f"{field}.time_column", time_column, "a column name, or the names "
                          "of a date column and a time-of-day column")
-    layout, h, header = find_layout(lines, tnames[0])
+    layout, h, header = find_layout(lines, tnames[0], [*tnames[1:], *sensors])
     if h is None:
         raise InputError(f"{field}.time_column", time_column, "a column of the file: "
                          + ", ".join(header) + closest_name(tnames[0], header))

@@ -139,28 +139,32 @@ def _has(cells: Sequence[str], name: str) -> bool:
     return name in cells or name.strip().lower() in (c.lower() for c in cells)
 
 
-def find_layout(lines: list[tuple[int, str]], time_column: str
+def find_layout(lines: list[tuple[int, str]], time_column: str, want: Sequence[str] = ()
                 ) -> tuple[Layout, int | None, list[str]]:
     """Layout, index (in ``lines``) and cells of the header row: the first row with a cell
-    equal to ``time_column`` (case-insensitive as a fallback) under the guessed separator,
-    then under the others (spaces: runs of 2+ spaces first, see the module docstring).
-    When none has it: the guessed layout and the widest of the first rows (for the error)."""
+    equal to ``time_column`` (case-insensitive as a fallback) and to every name of
+    ``want`` (a metadata line ``Time;10:15:30`` above the header is passed over), else the
+    first with ``time_column`` alone; under the guessed separator, then under the others
+    (spaces: runs of 2+ spaces first, see the module docstring). When none has it: the
+    guessed layout and the widest of the first rows (for the error)."""
     body = [ln for _, ln in lines[:200]]
     guess = guess_separator(body)
     guess = SPACES if guess == r"\s+" else guess
-    for sep in (guess, *(s for s in _SEPARATORS if s != guess)):
-        for k, (_, ln) in enumerate(lines[:200]):
-            if sep != SPACES:
-                cells = split_delimited(ln, sep)
-                if _has(cells, time_column):
-                    return Layout(sep), k, cells
-                continue
-            for wide in (True, False):
-                pieces = _pieces(ln, _WIDE if wide else _ANY)
-                cells = [t for t, _, _ in pieces]
-                if _has(cells, time_column):
-                    spans = tuple((a, b) for _, a, b in pieces)
-                    return Layout(SPACES, spans, wide, _has(cells[:1], time_column)), k, cells
+    for names in ((time_column, *want), (time_column,)) if want else ((time_column,),):
+        for sep in (guess, *(s for s in _SEPARATORS if s != guess)):
+            for k, (_, ln) in enumerate(lines[:200]):
+                if sep != SPACES:
+                    cells = split_delimited(ln, sep)
+                    if all(_has(cells, n) for n in names):
+                        return Layout(sep), k, cells
+                    continue
+                for wide in (True, False):
+                    pieces = _pieces(ln, _WIDE if wide else _ANY)
+                    cells = [t for t, _, _ in pieces]
+                    if all(_has(cells, n) for n in names):
+                        spans = tuple((a, b) for _, a, b in pieces)
+                        return (Layout(SPACES, spans, wide, _has(cells[:1], time_column)), k,
+                                cells)
     layout = Layout(guess)
     widest = max((layout.header(ln) for ln in body[:50]), key=len)
     return layout, None, widest

@@ -224,8 +224,12 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
     for k, c in enumerate(cells):
         v = parse(c) if c.strip() else None
         if v is None:
+            again = c.strip().lower() == time_column.replace(" + ", " ").strip().lower()
             raise InputError(name, f"row {k + 1}: {c!r} (line {at[k]})",
-                             f"a time in every row, in the format of row 1 ({desc})")
+                             f"a time in every row, in the format of row 1 ({desc})" + (
+                                 "; this is the header row again: a second recording "
+                                 "appended to the file? Give each recording its own file"
+                                 if again else ""))
         values.append(v)
     if kind == "stamp":
         aware = [v.tzinfo is not None for v in values]

@@ -237,7 +237,24 @@ def test_logger_restart_names_row_and_cause(tmp_path):
         read_measured_file(write(tmp_path / "r.csv", lines), "t [min]", ["TC1"])
 
 
+def test_header_repeated_by_an_appended_recording(tmp_path):
+    lines = ["Zeit;TC1", "0;35,0", "60;35,5", "Zeit;TC1", "0;36,0"]
+    with pytest.raises(InputError, match=r"row 3: 'Zeit' \(line 4\).*header row again.*"
+                                         r"own file"):
+        read_measured_file(write(tmp_path / "a.csv", lines), "Zeit", ["TC1"])
+
+
 # --------------------------------------------------------------------------- more
+def test_metadata_line_with_the_time_column_name_above_the_header(tmp_path):
+    """``Time;10:15:30`` in the logger's metadata: the header is the row that also has
+    the mapped sensor columns."""
+    lines = ["Logger;TC-08", "Date;23.11.2026", "Time;10:15:30", "", "Time;TC1;TC2",
+             "s;°C;°C", "0;35,2;35,3", "60;35,4;35,5"]
+    got = read_measured_file(write(tmp_path / "m.csv", lines), "Time", ["TC1", "TC2"])
+    assert got.values.tolist() == [[0.0, 35.2, 35.3], [60.0, 35.4, 35.5]]
+
+
+
 def test_units_per_column_and_fahrenheit(tmp_path):
     """``TC1 [degF]`` next to ``TC2 [degC]``: each in its own unit (noted); all degF:
     the scene must say degF (the error says so)."""
