@@ -94,8 +94,9 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator.
     - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``,
       ``Time (s)``) or of the units row (seconds without either); elapsed ``hh:mm:ss[.f]``
-      or ``mm:ss[.f]``; timestamps ``2026-11-23 10:15:30`` / ISO 8601 (``T``, fraction,
-      UTC offset), ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026
+      or ``mm:ss[.f]`` (clock times passing midnight: +24 h from there, noted);
+      timestamps ``2026-11-23 10:15:30`` / ISO 8601 (``T``, fraction, UTC offset),
+      ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026
       10:15:30`` or ``11/23/2026 10:15:30`` (day or month first decided by a field > 12;
       all <= 12 is an error), seconds optional, 12-hour ``AM/PM``; Excel serial day
       numbers and Unix seconds (``time_format``; Excel also for a date-named column, see
@@ -206,7 +207,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     tunit = _time_unit(tnames[0], units[tcol] if units is not None else "")
     tcells = [" ".join(r[j] for j in tcols) for r in rows]
     times, desc = parse_times(tcells, tunit, decimal, time_zero, " + ".join(tnames), field,
-                              at, time_format=time_format)
+                              at, time_format=time_format, notes=notes)
     if time_format in (None, "auto") and desc.startswith("Excel"):
         notes.append(f"time column {tnames[0]!r} read as {desc}: a date-named column of "
                      "day numbers (set measured time_format to read it otherwise)")

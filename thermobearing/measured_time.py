@@ -3,7 +3,8 @@
 One job for :mod:`thermobearing.measured`: read the time cells (numbers in a unit, elapsed
 ``hh:mm:ss``, timestamps of the usual logger layouts, Excel serial day numbers, Unix
 seconds, or a ``strptime`` pattern the scene gives) as seconds from the time zero, and
-refuse times that step back with an error naming the row and the size of the step.
+refuse times that step back with an error naming the row and the size of the step (a
+clock-time column ``hh:mm:ss`` passing midnight gets 24 h added from there, noted).
 
 Excel serial dates (``46349.4375`` = a day number plus the fraction of the day) are read
 as such only with a clear sign: ``time_format = "excel"`` (or ``"excel_1904"``), or a
@@ -179,7 +180,8 @@ def check_time_format(time_format: str | None, field: str) -> None:
 
 def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: str | None,
                 time_column: str, field: str, at: list[int], *,
-                time_format: str | None = None) -> tuple[np.ndarray, str]:
+                time_format: str | None = None, notes: list[str] | None = None
+                ) -> tuple[np.ndarray, str]:
     """Elapsed seconds of the time cells (the format of the first row for all rows) and
     the description of the format read.
 
@@ -237,6 +239,8 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
             k = aware.index(not aware[0])
             raise InputError(name, f"row {k + 1}: {cells[k]!r} (line {at[k]})",
                              "timestamps all with or all without a UTC offset")
+    if kind == "elapsed":
+        values = _past_midnight(values, at, notes)
     zero = _time_zero(time_zero, values, parse, kind, desc, field)
     if kind == "stamp":
         t = np.array([(v - zero).total_seconds() for v in values])
@@ -249,6 +253,28 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
 def _date_named(time_column: str) -> bool:
     bare = re.sub(r"[\[(][^\])]*[\])]\s*$", "", time_column).strip().lower()
     return bare in DATE_NAMES
+
+
+def _past_midnight(values: list[float], at: list[int], notes: list[str] | None
+                   ) -> list[float]:
+    """A time-of-day column (``hh:mm:ss`` below 24 h) crossing midnight: 24 h added from
+    each row where the clock falls back by one day less the sampling step (noted)."""
+    v = np.asarray(values, dtype=float)
+    if v.size < 2 or v.max() >= 86400.0:
+        return values
+    steps = np.diff(v)
+    ahead = steps[steps > 0]
+    usual = float(np.median(ahead)) if ahead.size else 0.0
+    wrap = np.flatnonzero((steps < 0) & (np.abs(-steps + usual - 86400.0) <= max(60.0, usual)))
+    if not wrap.size:
+        return values
+    days = np.zeros(v.size)
+    for k in wrap:
+        days[k + 1:] += 86400.0
+    if notes is not None:
+        notes.append(f"the clock times pass midnight {wrap.size} time(s) (first at line "
+                     f"{at[int(wrap[0]) + 1]}): 24 h added from there")
+    return list(v + days)
 
 
 def _check_increasing(t: np.ndarray, cells: list[str], at: list[int], name: str,

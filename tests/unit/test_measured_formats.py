@@ -230,6 +230,16 @@ def test_daylight_saving_step_back_names_row_and_cause():
         read_measured_file(DATA / "dst_step.csv", "Timestamp", ["TC_DE"])
 
 
+def test_clock_times_past_midnight(tmp_path):
+    """``hh:mm:ss`` of a log running across midnight: 24 h added from the wrap, noted;
+    ``time_zero`` in the same clock format."""
+    lines = ["Uhrzeit;TC1", "23:58:30;35,0", "23:59:30;35,1", "00:00:30;35,2", "00:01:30;35,3"]
+    got = read_measured_file(write(tmp_path / "m.csv", lines), "Uhrzeit", ["TC1"],
+                             time_zero="23:58:00")
+    assert got["time [s]"].tolist() == [30.0, 90.0, 150.0, 210.0]
+    assert "midnight 1 time(s) (first at line 4)" in measured_notes(got)[0]
+
+
 def test_logger_restart_names_row_and_cause(tmp_path):
     lines = ["t [min],TC1", "0,35", "1,36", "2,37", "0,35.5", "1,36.5"]
     with pytest.raises(InputError, match=r"row 4: 0 after 2 \(line 5\).*steps back by "
