@@ -137,32 +137,32 @@ def test_deep_groove_low_speed_converges(rpm, fr, fa):
     assert r.extra.get("fallback") in (None, "newton_restart", "trust_region")
 
 
-@pytest.mark.xfail(strict=True, raises=ConvergenceError,
-                   reason="open: SKF6304 point of the random probe that still fails (final "
-                          "residual after the fallbacks, session 11): 21.4 kN + 37 N, 1231 "
-                          "r/min, 26 degC -> 1.1e-3 (1.1e-4 in session 10)")
-@pytest.mark.parametrize("rpm, fr, fa, t_c", [
-    # ~11 s CPU to fail through every fallback: slow
-    pytest.param(1230.724071006954, 21445.099494558173, 36.85524752432373, 26.21535976081373,
-                 marks=pytest.mark.slow),
+@pytest.mark.parametrize("name, rpm, fr, fa, t_c", [
+    # SKF6304, 21.4 kN + 37 N, 1231 r/min, 26 degC: ~13 s CPU (slow)
+    pytest.param("SKF6304", 1230.724071006954, 21445.099494558173, 36.85524752432373,
+                 26.21535976081373, marks=pytest.mark.slow),
+    ("QJ1044", 25.494333451043417, 73141.19514807193, -69370.13988833768, 136.28429038166476),
 ])
-def test_deep_groove_random_points_open(rpm, fr, fa, t_c):
-    _ball_solve("SKF6304", rpm, fr, fa, t_c)
+def test_stalled_newton_points_converge_without_the_stall_rule(name, rpm, fr, fa, t_c):
+    """Points of the random probe that failed through every fallback (final residuals
+    1.1e-3 and 6.0e-7): the damped Newton's stall rule stopped them, the trust-region
+    fallback did not reach the tolerance, and the continuation failed too. Newton iterations
+    without the stall rule from the best iterate, tried after the trust region, converge
+    (307 / 286 more iterations, measured on one x86-64 machine; the path taken depends on
+    round-off, the convergence is what is asked)."""
+    check_ball_invariants(_ball_solve(name, rpm, fr, fa, t_c), fr, fa, name)
 
 
 @pytest.mark.xfail(strict=True, raises=ConvergenceError,
-                   reason="open (session 11): QJ1044 points of the random probe that still "
-                          "fail after the fallbacks (final residuals): 1.9 N radial, 1511 "
-                          "r/min, 35 degC -> 3.3e-5; pure axial -1.13 N, 3380 r/min -> 3.9e-3; "
-                          "73 kN / -69 kN, 25 r/min, 136 degC -> 6.0e-7, a stall just above "
-                          "tol 1e-9")
+                   reason="open: QJ1044 points of the random probe that still fail after "
+                          "the fallbacks (final residuals): 1.9 N radial, 1511 r/min, "
+                          "35 degC -> 3.3e-5; pure axial -1.13 N, 3380 r/min -> 3.8e-3")
 @pytest.mark.parametrize("rpm, fr, fa, t_c", [
-    # the first two take ~6 s CPU each to fail through every fallback: slow
+    # ~5-8 s CPU each to fail through every fallback: slow
     pytest.param(1510.6048702365651, 1.902654029285824, 0.0, 35.002567590481576,
                  marks=pytest.mark.slow),
     pytest.param(3380.2734102008462, 0.0, -1.1268599366221774, 82.48432835431878,
                  marks=pytest.mark.slow),
-    (25.494333451043417, 73141.19514807193, -69370.13988833768, 136.28429038166476),
 ])
 def test_qj1044_open(rpm, fr, fa, t_c):
     _ball_solve("QJ1044", rpm, fr, fa, t_c)
@@ -173,16 +173,20 @@ def test_qj1044_open(rpm, fr, fa, t_c):
     ("QJ1044", 198.7891532224581, 132.53113679030767, 0.0, 64.13113846805669),
     ("SKF6304", 70.96875525812881, 121.484868574429, 2.95462529462894, 135.4898762229222),
 ])
-def test_light_load_points_converge_through_the_continuation(name, rpm, fr, fa, t_c):
+def test_light_load_points_converge_through_the_fallbacks(name, rpm, fr, fa, t_c):
     """Points of the random probe under light loads (95-133 N radial) that failed until
     session 11. QJ1044, 132.5 N at 199 r/min: the cold start sits at 1.5e-2 (the unloaded
     balls' spin / pocket-friction balance: their churning drag, 0.144 N, exceeds the traction
     their centrifugal contacts carry, 0.092 N), and the continuation in axial load failed on
     the warm step 251 -> 158 N although a cold start at 160 N converges. The continuation
-    now retries a failed step cold, then halves it; the state is marked ``"continuation"``."""
+    now retries a failed step cold, then halves it; the state is marked ``"continuation"``.
+    Which fallback reaches the root depends on round-off in the compiled kernels (the SKF6304
+    point converges by the continuation on one x86-64 machine and by the Newton restart on
+    another, whose fused multiply-adds round differently), so the test asks that the cold start
+    does not converge plainly and that a fallback recovers the point with the invariants."""
     r = _ball_solve(name, rpm, fr, fa, t_c)
     check_ball_invariants(r, fr, fa, name)
-    assert r.extra.get("fallback") == "continuation"
+    assert r.extra.get("fallback") in ("continuation", "newton_restart", "trust_region")
 
 
 @pytest.mark.parametrize("name, rpm, fr, fa, t_c", [
