@@ -110,8 +110,9 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
       the notes): empty cells, dropout flags (:data:`DROPOUT_FLAGS`: ``OVL``, ``+OVER``,
       ``Burnout``, ``----``, ``Err``, ``NaN``, ...), overload codes (|value| >=
       :data:`OVERLOAD_CODE`, ``+9.9E+37``) and the codes of ``missing_values``. Any other
-      reading below absolute zero or above :data:`THERMOCOUPLE_MAX_C` is an error (a
-      logger's numeric code such as -999 or 9999.9 is never dropped unless listed).
+      reading at or below absolute zero (0 K) or above :data:`THERMOCOUPLE_MAX_C` is an
+      error (a logger's numeric code such as -999 or 9999.9 is never dropped unless
+      listed).
       Readings of exactly a thermocouple range end (:data:`RANGE_ENDS_C`: 1372 degC,
       -270 degC for type K, where loggers pin an open thermocouple) stay, with a note.
 
@@ -361,20 +362,21 @@ def _parse_readings(cells: list[str], decimal: str, col: str, at: list[int],
 
 def _to_celsius(values: np.ndarray, unit: str, col: str, cells: list[str],
                 at: list[int]) -> np.ndarray:
-    """degC of readings in ``unit``; a reading below absolute zero or above the top of the
-    thermocouple tables is an error (a logger code to list in missing_values)."""
+    """degC of readings in ``unit``; a reading at or below absolute zero (no instrument
+    reads 0 K: a code) or above the top of the thermocouple tables is an error (a logger
+    code to list in missing_values)."""
     out = _TO_C[unit](values)
     with np.errstate(invalid="ignore"):
-        bad = (out < ABSOLUTE_ZERO_C - 1e-9) | (out > THERMOCOUPLE_MAX_C)
+        bad = (out <= ABSOLUTE_ZERO_C + 1e-9) | (out > THERMOCOUPLE_MAX_C)
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         same = int(np.sum(values[bad] == values[k]))
         raise InputError(f"measured column {col!r}", f"row {k + 1}: {cells[k].strip()!r} "
                          f"(line {at[k]}; {same} reading(s) of it, {int(bad.sum())} outside "
                          "in all)",
-                         f"temperatures in {unit} between absolute zero "
-                         f"({ABSOLUTE_ZERO_C:g} degC) and {THERMOCOUPLE_MAX_C:g} degC (top "
-                         "of the IEC 60584-1 thermocouple tables); a logger's code for no "
+                         f"temperatures in {unit} above absolute zero "
+                         f"({ABSOLUTE_ZERO_C:g} degC) and up to {THERMOCOUPLE_MAX_C:g} degC "
+                         "(top of the IEC 60584-1 thermocouple tables); a logger's code for no "
                          "reading is a gap when listed in measured missing_values, e.g. "
                          f"missing_values = [{cells[k].strip().replace(',', '.')}]")
     return out

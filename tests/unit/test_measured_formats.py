@@ -157,7 +157,7 @@ def test_numeric_codes_are_errors_unless_listed(first8):
     listed in missing_values they are gaps, counted per sensor with the text flags."""
     path = DATA / "sentinels.csv"
     with pytest.raises(InputError, match=r"measured column 'TC_DE'.*row 3: '-999' \(line 4.*"
-                                         r"absolute zero.*missing_values = \[-999\]"):
+                                         r"above absolute zero.*missing_values = \[-999\]"):
         read_measured_file(path, "time [s]", ["TC_DE", "TC_NDE"])
     with pytest.raises(InputError, match=r"measured column 'TC_NDE'.*row 4: '9999.9'.*"
                                          r"1820 degC"):
@@ -185,6 +185,8 @@ def test_text_codes_decimal_comma_codes_and_kelvin(tmp_path):
     kelvin = write(tmp_path / "k.csv", ["t,TC1", "0,308.15", "1,0", "2,309.15"])
     got = read_measured_file(kelvin, "t", ["TC1"], "K", missing_values=[0])
     np.testing.assert_allclose(got["TC1"], [35.0, np.nan, 36.0])
+    with pytest.raises(InputError, match=r"row 2: '0' \(line 3.*above absolute zero"):
+        read_measured_file(kelvin, "t", ["TC1"], "K")  # 0 K: a code, not a reading
     with pytest.raises(InputError, match=r"measured.missing_values.*list"):
         read_measured_file(kelvin, "t", ["TC1"], "K", missing_values=[None])
 
