@@ -3,6 +3,7 @@
 Figures (PNG bytes, matplotlib with the Agg backend):
 
 - temperatures against time, measured data overlaid, with per-sensor RMSE / max error;
+  steady-state temperatures per operating point (``mode = "steady"``);
 - stacked power-loss bars per operating point (in the style of seed paper 002 Fig. 15);
 - cage speed ratio against axial load with the theoretical ratio (paper 002 Fig. 10);
 - speed x load maps of each loss component and oil-flow what-if curves (from a sweep
@@ -109,6 +110,38 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
                         label=f"{sensor} (measured)")
     ax.set_xlabel("time [min]")
     ax.set_ylabel("temperature [degC]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    return _png(fig)
+
+
+def fig_steady_temperatures(steady: pd.DataFrame, points: pd.DataFrame | None = None
+                            ) -> bytes:
+    """Steady-state node temperatures [degC] per step (``mode = "steady"``), one line per
+    node (colour per node kind, line style per bearing as in :func:`fig_temperatures`);
+    the axis is the swept quantity of ``points`` (a table with ``step`` and the operating
+    columns, e.g. the kinematics table), else the step."""
+    nodes = [c[:-len(" [degC]")] for c in steady.columns if c.endswith(" [degC]")]
+    df = steady
+    if points is not None and "step" in points and "step" in steady:
+        cols = ["step"] + [c for c, _ in _OPERATING if c in points]
+        df = steady.merge(points[cols].drop_duplicates("step"), on="step", how="left")
+    key, pos, labels, xlabel = operating_axis(df)
+    df = df.assign(_x=[pos[k] for k in df[key]]).sort_values("_x")
+    groups = list(dict.fromkeys(n.split(".", 1)[0] for n in nodes if "." in n))
+    kinds = list(dict.fromkeys(n.split(".", 1)[-1] for n in nodes))
+    palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    styles = ("-", "--", ":", "-.")
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for n in nodes:
+        g = n.split(".", 1)[0] if "." in n else ""
+        ax.plot(df["_x"], df[f"{n} [degC]"], "o", label=n, ms=4,
+                color=palette[kinds.index(n.split(".", 1)[-1]) % len(palette)],
+                ls=styles[groups.index(g) % len(styles)] if g in groups else "-")
+    ax.set_xticks(np.arange(len(labels)), labels, rotation=90 if len(labels) > 8 else 0,
+                  fontsize=7)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("steady-state temperature [degC]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
     return _png(fig)
@@ -390,6 +423,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
 #: figure name -> caption in the report
 FIGURE_CAPTIONS = {
     "temperatures": "node temperatures [degC] against time [min] (measured points overlaid)",
+    "steady_temperatures": "steady-state node temperatures [degC] per operating point",
     "power_losses": "power loss by source [W] per operating point and bearing",
     "heat_destinations": "heat received by each component [W] per operating point and "
                          "bearing",
@@ -431,6 +465,10 @@ def attach_figures(results: Results, scene: Any) -> None:
         measured = read_measured(scene)
         cmap = dict(scene.measured.columns) if scene.measured is not None else None
         results.figures["temperatures"] = fig_temperatures(temps, measured, cmap)
+    steady = results.tables.get("steady_temperatures")
+    if steady is not None and not steady.empty:
+        results.figures["steady_temperatures"] = fig_steady_temperatures(
+            steady, results.tables.get("kinematics"))
     losses = results.tables.get("losses")
     if losses is not None and not losses.empty:
         results.figures["power_losses"] = fig_loss_bars(losses)

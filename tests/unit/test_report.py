@@ -178,3 +178,26 @@ def test_loss_map_slices_share_one_colour_scale(monkeypatch):
     assert np.allclose(seen[-1], np.linspace(0.0, 1e5, 13))
     fig_loss_maps(df, "q", "n", ["churning [W]"])
     assert seen[-1] == 12
+
+
+def test_sweep_report_names_the_sources_in_words_and_says_what_it_does_not_record(tmp_path):
+    import json
+
+    from thermobearing.commands.report import sweep_report
+
+    rows, store = [], []
+    for i, (n, fr) in enumerate(((600, 1), (600, 5), (1800, 1), (1800, 5))):
+        params = {"schedule.speed": f"{n} rpm", "schedule.radial_load": f"{fr} kN"}
+        result = {"total loss [W]": n * 1.1, "raceway_traction [W]": n * 0.1 * fr,
+                  "churning_elements [W]": n * (1.1 - 0.1 * fr)}
+        rows.append({"case": f"c{i}", **params, **result})
+        store.append(json.dumps({"case": f"c{i}", "params": params, "result": result}))
+    pd.DataFrame(rows).to_csv(tmp_path / "summary.csv", index=False)
+    (tmp_path / "cases.jsonl").write_text("\n".join(store) + "\n", encoding="utf-8")
+    text = sweep_report(tmp_path).read_text(encoding="utf-8")
+    summary = text[text.index("<h2>Summary</h2>"):]
+    assert "<th>raceway contacts (rolling and sliding shear) [W]</th>" in summary
+    assert "<th>raceway_traction [W]</th>" not in summary
+    assert "has no scene.toml" in text
+    captions = re.findall(r"<figcaption>([^<]*)</figcaption>", text)
+    assert captions[0].startswith("loss by source [W] of every case")

@@ -248,3 +248,29 @@ step_duration = "3 min"
     assert "initial temperature, 35 degC" in text
     assert page.table("catalogue cross-check")["head"][-1] == \
         "this run vs Palmgren M0 + M1 [%]"
+
+
+def test_steady_temperatures_are_drawn_against_the_swept_speed(monkeypatch):
+    from thermobearing.report import attach_figures, fig_steady_temperatures
+
+    labels = []
+    real = matplotlib.axes.Axes.set_xlabel
+    monkeypatch.setattr(matplotlib.axes.Axes, "set_xlabel",
+                        lambda self, text, *a, **k: (labels.append(text),
+                                                     real(self, text, *a, **k))[1])
+    steady = pd.DataFrame({"step": [0, 1, 2], "de.oil [degC]": [35.2, 35.8, 37.1],
+                           "de.housing [degC]": [36.0, 39.1, 45.4]})
+    kin = pd.DataFrame({"step": [0, 1, 2], "bearing": "de", "speed [rpm]": [600.0, 1200.0,
+                                                                            1800.0],
+                        "radial load [kN]": 1.0, "axial load [kN]": 10.0,
+                        "cage speed ratio [-]": 0.452,
+                        "theoretical cage speed ratio [-]": 0.452})
+    assert fig_steady_temperatures(steady, kin)[:4] == b"\x89PNG"
+    assert labels == ["speed [rpm]"]
+    res = Results(tables={"steady_temperatures": steady, "kinematics": kin})
+
+    class _Scene:
+        measured = None
+
+    attach_figures(res, _Scene())
+    assert "steady_temperatures" in res.figures

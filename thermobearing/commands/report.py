@@ -79,7 +79,7 @@ def sweep_report(folder: Path) -> Path:
     case as stacked bars, what-if curves, loss maps (sources named in words, in the order
     of the run reports) and the summary table (powers rounded for a reader)."""
     from ..report import fig_loss_maps, fig_whatif, figure_html
-    from ..report_losses import fig_sweep_breakdown, source_label, summary_sources
+    from ..report_losses import fig_sweep_breakdown, readable, source_label, summary_sources
     from ..report_sections import html_table
 
     df = _read_table(folder / "summary.csv", ("case",))
@@ -141,7 +141,9 @@ def sweep_report(folder: Path) -> Path:
             "their duration); <code>total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
             *(f"<p>{escape(n)}</p>" for n in notes),
             "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
-            "<h2>Summary</h2>", html_table(df, max_rows=500, csv_name="summary.csv"),
+            "<h2>Summary</h2>",
+            "<p>the sources named in words; summary.csv has their registered names</p>",
+            html_table(readable(df), max_rows=500, csv_name="summary.csv"),
             "</body></html>"]
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
