@@ -95,9 +95,9 @@ def elapsed(cell: str) -> float | None:
 def _strptime(cell: str, fmt: str) -> datetime | None:
     c = cell.strip()
     frac = 0.0
-    m = re.match(r"^(.*:\d{2})[.,](\d+)$", c)
-    if m and fmt.endswith("%S"):
-        c, frac = m.group(1), float("0." + m.group(2))
+    m = re.match(r"^(.*:\d{2})[.,](\d+)(\s*[AaPp][Mm])?$", c)  # 10:15:30.250 [AM]
+    if m and "%S" in fmt:
+        c, frac = m.group(1) + (m.group(3) or ""), float("0." + m.group(2))
     try:
         return datetime.strptime(c, fmt) + timedelta(seconds=frac)
     except ValueError:

@@ -232,6 +232,12 @@ def test_daylight_saving_step_back_names_row_and_cause():
         read_measured_file(DATA / "dst_step.csv", "Timestamp", ["TC_DE"])
 
 
+def test_twelve_hour_timestamps_with_fractions(tmp_path):
+    lines = ["Time,TC1 (C)", "11/23/2026 11:59:59.750 AM,35.0", "11/23/2026 12:00:00.250 PM,35.1"]
+    got = read_measured_file(write(tmp_path / "ni.csv", lines), "Time", ["TC1 (C)"])
+    np.testing.assert_allclose(got["time [s]"], [0.0, 0.5])
+
+
 def test_clock_times_past_midnight(tmp_path):
     """``hh:mm:ss`` of a log running across midnight: 24 h added from the wrap, noted;
     ``time_zero`` in the same clock format."""
