@@ -20,7 +20,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       ``<source> [W]`` per heat source (all bearings, the same average); with more than one
       bearing also ``total loss <bearing> [W]`` each. (Earlier versions gave plain
       means over the steps of the first bearing only, which their names did not say.)
-    * ``max / min over-skidding [%]``, ``max contact pressure [MPa]`` and ``min film
+    * ``max / min over-skidding [%]`` (signed, 100 (CSR / CSR_th - 1) as in the kinematics
+      table: negative where the cage lags, so a maximum below zero means every step
+      skids), ``max contact pressure [MPa]`` and ``min film
       parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
       gives its roughness), and ``steps over skid limit [-]``, ``steps over stress limit
       [-]``, ``steps under film limit [-]`` (the scene's ``[checks]`` thresholds; summed over
