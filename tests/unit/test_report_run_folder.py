@@ -44,7 +44,9 @@ def test_run_writes_and_names_the_breakdown_and_report_rerenders_it(tmp_path, ca
     assert wide["total [W]"].iloc[0] == pytest.approx(long["power [W]"].sum())
     first = (out / "report.html").read_text(encoding="utf-8")
     (out / "report.html").unlink()
+    (out / "loss_breakdown.csv").unlink()  # as in a folder of an older version
     assert main(["report", str(out)]) == 0
+    pd.testing.assert_frame_equal(pd.read_csv(out / "loss_breakdown.csv"), wide)
     again = (out / "report.html").read_text(encoding="utf-8")
     for text in (first, again):
         assert "<h3>power loss by source [W]</h3>" in text

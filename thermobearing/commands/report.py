@@ -1,10 +1,11 @@
 """``thermobearing report DIR``: (re)write the HTML report of a run or a sweep folder.
 
 A run folder (from ``thermobearing run --out DIR``) is re-rendered from its tables,
-``scene.toml`` and ``metadata.json``. A sweep folder (``summary.csv`` from
-``thermobearing sweep``) gets what-if curves of every result against each swept
-parameter and, with two numeric swept parameters, contour maps of each loss component
-(the style of seed paper 002 Figs. 16-17).
+``scene.toml`` and ``metadata.json`` (its ``loss_breakdown.csv`` rewritten from
+``losses.csv``). A sweep folder (``summary.csv`` from ``thermobearing sweep``) gets the
+loss by source of every case as stacked bars, what-if curves of every result against each
+swept parameter and, with two numeric swept parameters, contour maps of each loss
+component (the style of seed paper 002 Figs. 16-17).
 """
 
 from __future__ import annotations
@@ -192,6 +193,12 @@ def run_report(folder: Path) -> Path:
                       stats=meta.get("stats", {}),
                       check_limits=meta.get("check_limits", {}),
                       estimated=meta.get("estimated", {}))
+    losses = tables.get("losses")
+    if losses is not None and not losses.empty and "source" in losses:
+        # a folder of an older version has no breakdown CSV; the report refers to it
+        from ..report_losses import breakdown_by_source
+
+        breakdown_by_source(losses).to_csv(folder / "loss_breakdown.csv", index=False)
     attach_figures(results, scene)
     return write_report(results, scene, folder / "report.html")
 
