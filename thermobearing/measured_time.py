@@ -8,10 +8,12 @@ clock-time column ``hh:mm:ss`` passing midnight gets 24 h added from there, note
 
 Excel serial dates (``46349.4375`` = a day number plus the fraction of the day) are read
 as such only with a clear sign: ``time_format = "excel"`` (or ``"excel_1904"``), or a
-time column named like a date (``Date``, ``DateTime``, ``Timestamp``, ``Datum``,
-``Zeitstempel``; no unit in its name or the units row) whose first cell is a number in the
-day-number range of the years 1950-2099 (18264-73050). A plain ``Time`` column of numbers
-stays seconds (or the unit of its name or units row): seconds since midnight look the same.
+time column named as a date (``Date``, ``DateTime``, ``Date/Time``, ``Datum``, ``Excel
+time``; no unit in its name or the units row) whose first cell is a number in the
+day-number range of the years 1950-2099 (18264-73050). Any other column of numbers without
+a unit (``Time``, ``Timestamp``: a seconds counter or seconds since midnight look the same)
+stays seconds; when its first cell lies in that range the notes say so and name the
+option.
 """
 
 from __future__ import annotations
@@ -27,10 +29,10 @@ from .errors import InputError
 __all__ = ["DATE_NAMES", "EXCEL_RANGE", "TIME_FORMATS", "parse_times"]
 
 #: time column names (case-insensitive, without a bracketed unit) that say "a date"
+#: (``Timestamp`` is not among them: DAQ programs also name a seconds counter so)
 DATE_NAMES = frozenset({
-    "date", "datetime", "date time", "date/time", "date_time", "date-time", "timestamp",
-    "time stamp", "time_stamp", "datum", "zeitstempel", "datum/uhrzeit", "datum uhrzeit",
-    "excel time", "excel date"})
+    "date", "datetime", "date time", "date/time", "date_time", "date-time", "date&time",
+    "datum", "datum/uhrzeit", "datum uhrzeit", "excel time", "excel date"})
 #: Excel serial day numbers (1900 date system) of 1950-01-01 and 2099-12-31: the range in
 #: which a date-named column of numbers is read as Excel dates without ``time_format``
 EXCEL_RANGE = (18264.0, 73050.0)
@@ -197,10 +199,16 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
     first = cells[0].strip()
     fmt = None if time_format in (None, "auto") else time_format
     parse: Callable[[str], object]
-    if fmt is None and number(first, decimal) is not None and tunit is None \
-            and _date_named(time_column) \
-            and EXCEL_RANGE[0] <= (number(first, decimal) or 0.0) <= EXCEL_RANGE[1]:
-        fmt = "excel"  # a date column of day numbers: the clear sign (module docstring)
+    x0 = number(first, decimal)
+    day_numbers = x0 is not None and tunit is None and EXCEL_RANGE[0] <= x0 <= EXCEL_RANGE[1]
+    if fmt is None and day_numbers:
+        if _date_named(time_column):
+            fmt = "excel"  # a date column of day numbers: the clear sign (module docstring)
+        elif notes is not None:
+            notes.append(f"time column {time_column!r}: numbers without a unit, read as "
+                         f"seconds; row 1 ({first}) is also an Excel day number "
+                         f"({_EXCEL_EPOCH + timedelta(days=x0):%Y-%m-%d %H:%M}): if the "
+                         "column holds Excel dates, set measured time_format = \"excel\"")
     if fmt in _EPOCHS:
         kind, desc, parse = "stamp", TIME_FORMATS[fmt], _serial_parser(fmt, decimal)
     elif fmt is not None:

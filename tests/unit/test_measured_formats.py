@@ -118,15 +118,23 @@ def test_excel_only_with_a_clear_sign(tmp_path):
     path = write(tmp_path / "x.csv", lines)
     plain = read_measured_file(path, "Time", ["TC1"])  # seconds since midnight look alike
     np.testing.assert_allclose(plain["time [s]"], [46349.4375, 46349.4381944444])
-    assert measured_notes(plain) == []
+    assert measured_notes(plain) == [
+        "time column 'Time': numbers without a unit, read as seconds; row 1 (46349.4375) "
+        "is also an Excel day number (2026-11-23 10:30): if the column holds Excel dates, "
+        "set measured time_format = \"excel\""]
     # the run (0-20 min) then has no measured time: coverage_notes says so
     assert "no measured time inside the run" in coverage_notes(plain, 0.0, 1200.0)[0]
     asked = read_measured_file(path, "Time", ["TC1"], time_format="excel")
     np.testing.assert_allclose(asked["time [s]"], [0.0, 60.0], atol=1e-9)
     # a date-named column outside the 1950-2099 day numbers: not Excel, seconds as before
-    counter = read_measured_file(write(tmp_path / "c.csv", ["Timestamp,TC1", "0,35", "1,36"]),
-                                 "Timestamp", ["TC1"])
-    assert counter["time [s]"].tolist() == [0.0, 1.0]
+    counter = read_measured_file(write(tmp_path / "c.csv", ["Date,TC1", "0,35", "1,36"]),
+                                 "Date", ["TC1"])
+    assert counter["time [s]"].tolist() == [0.0, 1.0] and measured_notes(counter) == []
+    # "Timestamp" may be a seconds counter: seconds, with the note
+    stamp = read_measured_file(write(tmp_path / "s.csv", ["Timestamp,TC1", "20000,35",
+                                                          "20001,36"]), "Timestamp", ["TC1"])
+    assert stamp["time [s]"].tolist() == [20000.0, 20001.0]
+    assert "Excel day number (1954-10-03 00:00)" in measured_notes(stamp)[0]
 
 
 @pytest.mark.parametrize("fmt, cells, expect", [
