@@ -174,6 +174,39 @@ def shares(breakdown: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+def summary_lines(breakdown: pd.DataFrame) -> list[str]:
+    """One sentence per bearing of a :func:`breakdown_by_source` table: the range of its
+    total loss over the operating points (naming the points) and the largest source at the
+    point of the highest loss, with its power and share."""
+    not_sources = {"total [W]", *(f"{label} [W]" for label in CLASS_LABELS.values())}
+    sources = [c for c in breakdown.columns if c.endswith(" [W]") and c not in not_sources]
+    groups = breakdown.groupby("bearing", sort=False) if "bearing" in breakdown else \
+        [(None, breakdown)]
+    lines = []
+    for name, g in groups:
+        lo, hi = g.loc[g["total [W]"].idxmin()], g.loc[g["total [W]"].idxmax()]
+        who = f"bearing {name}: " if name is not None else ""
+        if len(g) == 1:
+            text = f"{who}total loss {fmt_power(hi['total [W]'])} W ({_point(hi)})"
+        else:
+            text = (f"{who}total loss {fmt_power(lo['total [W]'])} W ({_point(lo)}) to "
+                    f"{fmt_power(hi['total [W]'])} W ({_point(hi)})")
+        if sources and hi["total [W]"] > 0:
+            top = max(sources, key=lambda c: hi[c])
+            text += (f"; the largest source there is {source_label(top[:-4])}, "
+                     f"{fmt_power(hi[top])} W ({100.0 * hi[top] / hi['total [W]']:.0f} %)")
+        lines.append(text)
+    return lines
+
+
+def _point(row: pd.Series) -> str:
+    units = {"speed [rpm]": "r/min", "radial load [kN]": "kN radial",
+             "axial load [kN]": "kN axial"}
+    where = [f"{row[c]:g} {u}" for c, u in units.items() if c in row]
+    step = f"step {row['step']}" if "step" in row else ""
+    return ", ".join([step] + where) if step else ", ".join(where)
+
+
 def fmt_power(v: Any) -> str:
     """A power [W] rounded for a reader: whole watts from 10 W, one decimal from 1 W,
     two significant digits below (losses carry model errors of several per cent)."""

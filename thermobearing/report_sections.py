@@ -91,6 +91,8 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
     if scene is not None:
         parts.append(f"<p>{esc(ctx.loss_temperature_note(tables, scene))}</p>")
     by_source = rl.breakdown_by_source(losses)
+    parts.append("<ul class='summary'>" + "".join(
+        f"<li>{esc(line)}</li>" for line in rl.summary_lines(by_source)) + "</ul>")
     parts += ["<h3>power loss by source [W]</h3>",
               "<p>per operating point and bearing; total = the sum of the sources "
               "(load-dependent + load-independent); the same numbers, registered source "

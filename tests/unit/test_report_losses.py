@@ -274,3 +274,14 @@ def test_steady_temperatures_are_drawn_against_the_swept_speed(monkeypatch):
 
     attach_figures(res, _Scene())
     assert "steady_temperatures" in res.figures
+
+
+def test_summary_names_the_range_of_the_total_and_the_largest_source():
+    from thermobearing.report_losses import summary_lines
+
+    lines = summary_lines(breakdown_by_source(_losses()))
+    assert len(lines) == 2 and lines[0].startswith("bearing de: ")
+    # step 0: 110 W; step 2: 330 W, of which the element churning 150 W (45 %)
+    assert ("total loss 110 W (step 0, 1800 r/min, 1 kN radial, 0 kN axial) to 330 W "
+            "(step 2, 1800 r/min, 1 kN radial, 4 kN axial)") in lines[0]
+    assert lines[0].endswith(f"{SOURCE_LABELS['churning_elements']}, 150 W (45 %)")
