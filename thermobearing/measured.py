@@ -86,15 +86,17 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
       case-insensitive as a fallback); quoted cells; columns not mapped are ignored.
     - **Units row**: a row right under the header whose cells are units (``s;degC;degC``,
       ``[min],[°C]``, ``hh:mm:ss``). It gives the time unit when ``time_column`` has no
-      ``[unit]``. A temperature unit the file gives a sensor column (units row, or the
-      name's brackets ``TC1 [degF]``, ``TC1 (K)``; a bare ``(C)`` / ``(F)`` is no unit):
-      when every such unit is the same and not ``unit``, an error (set ``unit``); when the
+      ``[unit]`` (nor ``/unit``: ``t/min``, ``Zeit / s``). A temperature unit the file
+      gives a sensor column (units row, or the name's brackets ``TC1 [degF]``, ``TC1 (K)``,
+      or after a slash ``T1/°C``; a bare ``(C)`` / ``(F)`` is no unit): when every such
+      unit is the same and not ``unit``, an error (set ``unit``); when the
       file gives different units to different columns, each column is read in its own
       (columns without one in ``unit``) and the notes say so.
     - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator.
     - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``,
-      ``Time (s)``) or of the units row (seconds without either); elapsed ``hh:mm:ss[.f]``
-      or ``mm:ss[.f]`` (clock times passing midnight: +24 h from there, noted);
+      ``Time (s)``), of its ``/unit`` ending or of the units row (seconds without any);
+      elapsed ``hh:mm:ss[.f]`` or ``mm:ss[.f]`` (clock times passing midnight: +24 h from
+      there, noted);
       timestamps ``2026-11-23 10:15:30`` / ISO 8601 (``T``, fraction, UTC offset),
       ``23.11.2026 10:15:30``, ``2026/11/23 10:15:30``, ``23/11/2026
       10:15:30`` or ``11/23/2026 10:15:30`` (day or month first decided by a field > 12;
@@ -270,13 +272,21 @@ def _index(header: list[str], lowered: list[str], name: str) -> int | None:
 
 
 def _time_unit(time_column: str, units_cell: str) -> str | None:
-    """The unit of a time column of numbers (its name's brackets, else the units row),
-    None when neither gives one."""
-    from .measured_layout import is_time_format
+    """The unit of a time column of numbers (its name's brackets, a time unit after a
+    slash: ``t/min``, else the units row), None when none gives one."""
+    from .measured_layout import is_time_format, slash_unit
+    from .units import to_si
 
     m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]", time_column)
     if m:
         return m.group(1)
+    after = slash_unit(time_column)
+    if after:
+        try:
+            to_si(f"1 {after}", "time")
+            return after
+        except InputError:
+            pass  # Datum/Uhrzeit: no unit
     cell = units_cell.strip().strip("[]()")
     return cell if cell and not is_time_format(cell) else None
 

@@ -32,7 +32,7 @@ from .errors import InputError
 from .signal_input import guess_separator, is_units_row
 
 __all__ = ["Layout", "TEMPERATURE_UNITS", "bracket_unit", "closest_name", "file_encoding",
-           "find_layout", "is_time_format", "looks_like_units", "stated_units"]
+           "find_layout", "is_time_format", "looks_like_units", "slash_unit", "stated_units"]
 
 SPACES = "spaces"
 _SEPARATORS = ("\t", ";", ",", SPACES)
@@ -214,11 +214,19 @@ def bracket_unit(name: str) -> str:
     return m.group(1) if m else ""
 
 
+def slash_unit(name: str) -> str:
+    """The text after the last slash of a name written quantity/unit (DIN 1313:
+    ``t/min``, ``Zeit / s``, ``T1/°C``), or "" (the caller checks it is a unit)."""
+    m = re.match(r"^.*\S\s*/\s*([^/\s][^/]*?)\s*$", name)
+    return m.group(1) if m else ""
+
+
 def stated_units(units_row: list[str] | None, header: list[str],
                  idx: Mapping[str, int]) -> dict[str, tuple[str, str]]:
     """The temperature unit the file itself gives each mapped column, with where it says
     so: ``{column: (unit, "units row" | "column name")}``. The units row wins over the
-    name; a bare ``C`` / ``F`` in a name's brackets (``TC (F)``: front) is no unit."""
+    name's brackets, those over a ``/unit`` ending (``T1/°C``); a bare ``C`` / ``F`` in
+    a name (``TC (F)``: front, ``TC/F``) is no unit."""
     out: dict[str, tuple[str, str]] = {}
     for col, j in idx.items():
         if units_row is not None and j < len(units_row):
@@ -227,6 +235,10 @@ def stated_units(units_row: list[str] | None, header: list[str],
                 out[col] = (said, "units row")
                 continue
         text = bracket_unit(header[j]).lower()
+        if text not in ("c", "f") and TEMPERATURE_UNITS.get(text) is not None:
+            out[col] = (TEMPERATURE_UNITS[text], "column name")
+            continue
+        text = slash_unit(header[j]).lower()  # T1/°C; a bare /C or /F may be a label
         if text not in ("c", "f") and TEMPERATURE_UNITS.get(text) is not None:
             out[col] = (TEMPERATURE_UNITS[text], "column name")
     return out

@@ -297,6 +297,19 @@ def test_units_per_column_and_fahrenheit(tmp_path):
     np.testing.assert_allclose(got["TC1"], [35.0, 36.0])
 
 
+def test_units_written_quantity_slash_unit(tmp_path):
+    """DIN 1313 names ``t/min`` and ``T1/°C``: the time in minutes, the unit checked;
+    ``Datum/Uhrzeit`` or ``DE/NDE`` after a slash are no units."""
+    path = write(tmp_path / "d.csv", ["t/min;T1/°C;T2 / K;DE/NDE", "0;35,0;308,15;1",
+                                      "1,5;35,5;309,15;2"])
+    got = read_measured_file(path, "t/min", ["T1/°C", "DE/NDE"])
+    assert got["time [s]"].tolist() == [0.0, 90.0] and got["DE/NDE"].tolist() == [1.0, 2.0]
+    with pytest.raises(InputError, match=r"measured.unit = 'degC'.*'K'.*column name.*'T2 / K'"):
+        read_measured_file(path, "t/min", ["T2 / K"])
+    got = read_measured_file(path, "t/min", ["T1/°C", "T2 / K"])  # each in its own unit
+    np.testing.assert_allclose(got["T2 / K"], [35.0, 36.0])
+
+
 def test_column_map_typo_names_the_nearest_column(tmp_path):
     path = write(tmp_path / "c.csv", ["Time [s],TC_DE_outer,TC_NDE_outer", "0,35,36"])
     with pytest.raises(InputError, match=r"measured.columns\['TC_DE_outr'\].*did you mean "
