@@ -266,9 +266,17 @@ def coverage_notes(measured: pd.DataFrame, t_start: float, t_end: float) -> list
 
 # --------------------------------------------------------------------------- helpers
 def _index(header: list[str], lowered: list[str], name: str) -> int | None:
-    if name in header:
-        return header.index(name)
-    return lowered.index(name.lower()) if name.lower() in lowered else None
+    """Position of ``name`` in the header (exact, else case-insensitive); a name the
+    header has twice is an error (which of the two would be a guess)."""
+    for cells, key in ((header, name), (lowered, name.lower())):
+        at = [j for j, c in enumerate(cells) if c == key]
+        if len(at) > 1:
+            raise InputError("measured file header", name, "column names that appear once "
+                             f"(this one is columns {' and '.join(str(j + 1) for j in at)}: "
+                             "rename one in the file)")
+        if at:
+            return at[0]
+    return None
 
 
 def _time_unit(time_column: str, units_cell: str) -> str | None:

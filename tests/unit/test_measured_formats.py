@@ -310,6 +310,13 @@ def test_units_written_quantity_slash_unit(tmp_path):
     np.testing.assert_allclose(got["T2 / K"], [35.0, 36.0])
 
 
+def test_a_mapped_name_twice_in_the_header(tmp_path):
+    path = write(tmp_path / "two.csv", ["t,TC1,TC2,TC1", "0,35,36,37"])
+    with pytest.raises(InputError, match=r"header.*'TC1'.*columns 2 and 4"):
+        read_measured_file(path, "t", ["TC1"])
+    assert read_measured_file(path, "t", ["TC2"])["TC2"].tolist() == [36.0]
+
+
 def test_column_map_typo_names_the_nearest_column(tmp_path):
     path = write(tmp_path / "c.csv", ["Time [s],TC_DE_outer,TC_NDE_outer", "0,35,36"])
     with pytest.raises(InputError, match=r"measured.columns\['TC_DE_outr'\].*did you mean "
