@@ -140,7 +140,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     -------
     DataFrame with ``time [s]`` (strictly increasing) and one column per sensor [degC];
     ``attrs["notes"]`` (list of str: averaged rows, mixed units, Excel dates, readings at
-    a thermocouple range end) and
+    a thermocouple range end, a degC column whose readings all exceed 273.15) and
     ``attrs["gaps"]`` ({sensor: {cause: count}}); :func:`measured_notes` words both.
 
     Raises
@@ -200,7 +200,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
                              f"at least {need} cells separated by {layout.name!r} "
                              f"(as in the header row: {', '.join(header)})")
     notes: list[str] = []
-    col_units = _column_units(stated_units(units, header, idx), unit, field, notes)
+    stated = stated_units(units, header, idx)
+    col_units = _column_units(stated, unit, field, notes)
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
     # decimal mark from the sensor cells and plain-number time cells of the first rows
     # (timestamps such as 23.11.2026 would look like decimal points)
@@ -220,6 +221,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
         raw, gaps[col] = _parse_readings(cells[col], decimal, col, at, codes, texts)
         out[col] = _to_celsius(raw, col_units.get(col, unit), col, cells[col], at)
         notes += _range_end_notes(out[col].to_numpy(float), col, at)
+        if col_units.get(col, unit) == "degC" and col not in stated:
+            notes += _kelvin_note(out[col].to_numpy(float), col)
     out = _average_repeats(out, at, notes)
     out.attrs["notes"] = notes
     out.attrs["gaps"] = gaps
@@ -412,6 +415,17 @@ def _range_end_notes(values: np.ndarray, col: str, at: list[int]) -> list[str]:
                        "(IEC 60584-1): an open thermocouple? If so, list the code in "
                        "measured missing_values")
     return out
+
+
+def _kelvin_note(values: np.ndarray, col: str) -> list[str]:
+    """A note when a column read as degC (no unit in the file) has every reading above
+    273.15: what a thermocouple channel set to K gives at rig temperatures."""
+    finite = values[np.isfinite(values)]
+    if finite.size and float(finite.min()) > 273.15:
+        return [f"{col}: every reading is above 273.15 (lowest {float(finite.min()):g}), read "
+                "as degC: a channel logging in K? Then set measured unit = \"K\" or give "
+                "the unit in the file (units row, or the column name: [K])"]
+    return []
 
 
 def _average_repeats(out: pd.DataFrame, at: list[int], notes: list[str]) -> pd.DataFrame:

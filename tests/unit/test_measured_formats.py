@@ -317,6 +317,16 @@ def test_a_mapped_name_twice_in_the_header(tmp_path):
     assert read_measured_file(path, "t", ["TC2"])["TC2"].tolist() == [36.0]
 
 
+def test_a_kelvin_channel_read_as_celsius_is_noted(tmp_path):
+    path = write(tmp_path / "k.csv", ["t,TC1,TC2", "0,308.42,35.0", "60,309.10,OVL"])
+    got = read_measured_file(path, "t", ["TC1", "TC2"])
+    assert got["TC1"].tolist() == [308.42, 309.1]  # the reading stays: only a note
+    assert measured_notes(got)[0].startswith("TC1: every reading is above 273.15 (lowest "
+                                             "308.42), read as degC: a channel logging in K?")
+    assert not any(n.startswith("TC2") and "273.15" in n for n in measured_notes(got))
+    assert measured_notes(read_measured_file(path, "t", ["TC1"], "K")) == []
+
+
 def test_column_map_typo_names_the_nearest_column(tmp_path):
     path = write(tmp_path / "c.csv", ["Time [s],TC_DE_outer,TC_NDE_outer", "0,35,36"])
     with pytest.raises(InputError, match=r"measured.columns\['TC_DE_outr'\].*did you mean "
