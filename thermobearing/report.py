@@ -9,8 +9,11 @@ Figures (PNG bytes, matplotlib with the Agg backend):
 - speed x load maps of each loss component and oil-flow what-if curves (from a sweep
   summary, paper 002 Figs. 16-17).
 
-:func:`html_report` writes one HTML file with every figure embedded as base64, the scene,
-the model chain that ran, its citations, the energy audit and the validity warnings.
+:func:`html_report` writes one HTML file with every figure embedded as base64: the bearing
+and its operating points, the loss breakdown (:mod:`.report_sections`,
+:mod:`.report_losses`, :mod:`.report_context`), the validity warnings, the model chain that
+ran with the validity ranges of its models, the energy audit, the estimated inputs, the
+tables, the scene and its citations.
 """
 
 from __future__ import annotations
@@ -314,10 +317,12 @@ def _fmt_value(v: Any) -> str:
 
 
 # ---------------------------------------------------------------------------
-def figure_html(name: str, png: bytes) -> str:
+def figure_html(name: str, png: bytes, caption: str | None = None) -> str:
+    """A figure embedded as base64 PNG: ``alt`` is its name (the PNG file's name in a
+    run folder), the caption says what it shows (default: the name)."""
     data = base64.b64encode(png).decode("ascii")
     return (f'<figure><img alt="{html.escape(name)}" src="data:image/png;base64,{data}">'
-            f"<figcaption>{html.escape(name)}</figcaption></figure>")
+            f"<figcaption>{html.escape(caption or name)}</figcaption></figure>")
 
 
 def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.DataFrame]
@@ -356,7 +361,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     parts.append(losses_html(results.tables.get("losses"), results.tables, scene, bearings,
                              lubricant))
     parts.append("<h2 id='figures'>Figures</h2>")
-    parts += [figure_html(FIGURE_CAPTIONS.get(name, name), png)
+    parts += [figure_html(name, png, FIGURE_CAPTIONS.get(name))
               for name, png in results.figures.items()]
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
     if results.check_limits:

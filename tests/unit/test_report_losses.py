@@ -81,6 +81,10 @@ def test_breakdown_by_destination_matches_the_totals_and_names_the_components():
     first = dest.iloc[0]
     assert first["cage [W]"] == pytest.approx(30.0 + 4.0)
     assert breakdown_by_destination(_losses(with_role=False)) is None
+    from thermobearing.report_losses import fig_destinations
+
+    assert fig_destinations(losses)[:8] == b"\x89PNG\r\n\x1a\n"
+    assert fig_destinations(_losses(with_role=False)) is None
 
 
 def test_a_table_without_sources_is_refused_by_name():
@@ -285,3 +289,11 @@ def test_summary_names_the_range_of_the_total_and_the_largest_source():
     assert ("total loss 110 W (step 0, 1800 r/min, 1 kN radial, 0 kN axial) to 330 W "
             "(step 2, 1800 r/min, 1 kN radial, 4 kN axial)") in lines[0]
     assert lines[0].endswith(f"{SOURCE_LABELS['churning_elements']}, 150 W (45 %)")
+
+
+def test_figures_keep_their_file_name_as_alt_and_say_what_they_show():
+    res = Results(tables={"losses": _losses()})
+    res.figures["power_losses"] = fig_loss_bars(_losses())
+    text = html_report(res, "demo")
+    assert re.search(r'<img alt="power_losses" src="data:image/png;base64,', text)
+    assert "<figcaption>power loss by source [W] per operating point and bearing" in text
