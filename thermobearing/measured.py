@@ -141,7 +141,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     DataFrame with ``time [s]`` (strictly increasing) and one column per sensor [degC];
     ``attrs["notes"]`` (list of str: averaged rows, mixed units, Excel dates, readings at
     a thermocouple range end, a degC column whose readings all exceed 273.15) and
-    ``attrs["gaps"]`` ({sensor: {cause: count}}); :func:`measured_notes` words both.
+    ``attrs["gaps"]`` ({sensor: {cause: count}}), ``attrs["rows"]`` (the file's data
+    rows); :func:`measured_notes` words them.
 
     Raises
     ------
@@ -207,7 +208,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     # (timestamps such as 23.11.2026 would look like decimal points)
     probe = [c for v in cells.values() for c in v[:_PROBE_ROWS]]
     probe += [r[tcol] for r in rows[:_PROBE_ROWS] if _PLAIN.match(r[tcol].strip())]
-    decimal = guess_decimal_mark(probe, "spaces" if layout.sep == "spaces" else layout.sep)
+    decimal = guess_decimal_mark(probe, layout.sep)
     tunit = _time_unit(tnames[0], units[tcol] if units is not None else "")
     tcells = [" ".join(r[j] for j in tcols) for r in rows]
     times, desc = parse_times(tcells, tunit, decimal, time_zero, " + ".join(tnames), field,
@@ -226,6 +227,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     out = _average_repeats(out, at, notes)
     out.attrs["notes"] = notes
     out.attrs["gaps"] = gaps
+    out.attrs["rows"] = len(rows)  # data rows of the file (before averaging repeats)
     return out
 
 
@@ -234,7 +236,7 @@ def measured_notes(measured: pd.DataFrame) -> list[str]:
     (``TC1: 3 of 120 readings are gaps (2 dropout flags, 1 missing_values code)``), rows
     averaged, mixed units, Excel dates. Empty when the file had nothing of the kind."""
     out = list(measured.attrs.get("notes", []))
-    n = len(measured)
+    n = measured.attrs.get("rows", len(measured))
     for col, causes in measured.attrs.get("gaps", {}).items():
         total = sum(causes.values())
         if total:

@@ -230,7 +230,9 @@ def test_repeated_times_are_averaged_and_noted(tmp_path):
     assert got["time [s]"].tolist() == [0.0, 1.0, 2.0]
     np.testing.assert_allclose(got["TC1"], [35.1, 35.5, 35.8])
     np.testing.assert_allclose(got["TC2"], [40.0, 40.5, np.nan])
-    assert "2 row(s) repeat the time" in measured_notes(got)[0]
+    notes = measured_notes(got)
+    assert "2 row(s) repeat the time" in notes[0] and "3 of 5 rows kept" in notes[0]
+    assert notes[1] == "TC2: 2 of 5 readings are gaps (2 dropout flags)"
 
 
 def test_daylight_saving_step_back_names_row_and_cause():
