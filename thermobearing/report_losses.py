@@ -60,6 +60,10 @@ ROLE_LABELS: dict[str, str] = {
 CLASS_LABELS: dict[str, str] = {"load_dependent": "load-dependent",
                                 "load_independent": "load-independent"}
 
+#: the columns of a breakdown table that are not a source
+_NOT_SOURCES = frozenset({"total [W]", "unclassified [W]",
+                          *(f"{label} [W]" for label in CLASS_LABELS.values())})
+
 #: operating-point columns of the losses / kinematics tables, in display order
 OPERATING = ("speed [rpm]", "radial load [kN]", "axial load [kN]")
 
@@ -120,8 +124,9 @@ def point_keys(losses: pd.DataFrame) -> list[str]:
 def breakdown_by_source(losses: pd.DataFrame) -> pd.DataFrame:
     """One row per operating point and bearing: ``<source> [W]`` per heat source (the sum of
     its components, in :func:`source_order`), ``load-dependent [W]`` and
-    ``load-independent [W]`` when the table has the ``load dependence`` column, and
-    ``total [W]``, the sum of the source columns.
+    ``load-independent [W]`` when the table has the ``load dependence`` column (and
+    ``unclassified [W]`` when some component has no class), and ``total [W]``, the sum of
+    the source columns.
 
     ``losses``: the long ``losses`` table (``source``, ``power [W]`` and the point columns
     of :func:`point_keys`).
@@ -137,6 +142,12 @@ def breakdown_by_source(losses: pd.DataFrame) -> pd.DataFrame:
                                  aggfunc="sum", fill_value=0.0, sort=False)
         for c, label in CLASS_LABELS.items():
             out[f"{label} [W]"] = cls[c] if c in cls else 0.0
+        # a component its source gives no class (empty cell): shown, so that the classes
+        # still add up to the total
+        rest = pivot[order].sum(axis=1) - sum(out[f"{label} [W]"]
+                                               for label in CLASS_LABELS.values())
+        if (rest.abs() > 1e-9 * pivot[order].sum(axis=1).abs().clip(lower=1.0)).any():
+            out["unclassified [W]"] = rest
     out["total [W]"] = pivot[order].sum(axis=1)
     out.columns.name = None
     return out.reset_index()
@@ -164,8 +175,7 @@ def breakdown_by_destination(losses: pd.DataFrame) -> pd.DataFrame | None:
 def shares(breakdown: pd.DataFrame) -> pd.DataFrame:
     """Each ``<source> [W]`` column of :func:`breakdown_by_source` as a share of the
     point's total, ``<source> [%]`` (0 where the total is 0)."""
-    cols = [c for c in breakdown.columns if c.endswith(" [W]") and c != "total [W]"
-            and c[:-4] not in CLASS_LABELS.values()]
+    cols = [c for c in breakdown.columns if c.endswith(" [W]") and c not in _NOT_SOURCES]
     keys = [c for c in breakdown.columns if not c.endswith(" [W]")]
     total = breakdown["total [W]"].where(breakdown["total [W]"] > 0, np.nan)
     out = breakdown[keys].copy()
@@ -178,8 +188,7 @@ def summary_lines(breakdown: pd.DataFrame) -> list[str]:
     """One sentence per bearing of a :func:`breakdown_by_source` table: the range of its
     total loss over the operating points (naming the points) and the largest source at the
     point of the highest loss, with its power and share."""
-    not_sources = {"total [W]", *(f"{label} [W]" for label in CLASS_LABELS.values())}
-    sources = [c for c in breakdown.columns if c.endswith(" [W]") and c not in not_sources]
+    sources = [c for c in breakdown.columns if c.endswith(" [W]") and c not in _NOT_SOURCES]
     groups = breakdown.groupby("bearing", sort=False) if "bearing" in breakdown else \
         [(None, breakdown)]
     lines = []

@@ -297,3 +297,14 @@ def test_figures_keep_their_file_name_as_alt_and_say_what_they_show():
     text = html_report(res, "demo")
     assert re.search(r'<img alt="power_losses" src="data:image/png;base64,', text)
     assert "<figcaption>power loss by source [W] per operating point and bearing" in text
+
+
+def test_components_without_a_loss_class_are_shown_so_the_classes_add_up():
+    losses = _losses(("de",))
+    losses.loc[losses["source"] == "cage_guide", "load dependence"] = ""
+    wide = breakdown_by_source(losses)
+    np.testing.assert_allclose(wide["unclassified [W]"], [30.0, 60.0, 90.0])
+    np.testing.assert_allclose(wide["load-dependent [W]"] + wide["load-independent [W]"]
+                               + wide["unclassified [W]"], wide["total [W]"])
+    assert "unclassified [%]" not in shares(wide)
+    assert "unclassified [W]" not in breakdown_by_source(_losses(("de",)))
