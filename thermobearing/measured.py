@@ -395,8 +395,8 @@ def _to_celsius(values: np.ndarray, unit: str, col: str, cells: list[str],
         k = int(np.flatnonzero(bad)[0])
         same = int(np.sum(values[bad] == values[k]))
         raise InputError(f"measured column {col!r}", f"row {k + 1}: {cells[k].strip()!r} "
-                         f"(line {at[k]}; {same} reading(s) of it, {int(bad.sum())} outside "
-                         "in all)",
+                         f"(line {at[k]}; {same} reading(s) of this value, {int(bad.sum())} "
+                         "out of range in the column)",
                          f"temperatures in {unit} above absolute zero "
                          f"({ABSOLUTE_ZERO_C:g} degC) and up to {THERMOCOUPLE_MAX_C:g} degC "
                          "(top of the IEC 60584-1 thermocouple tables); a logger's code for no "
