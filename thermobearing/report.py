@@ -361,8 +361,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     parts.append(losses_html(results.tables.get("losses"), results.tables, scene, bearings,
                              lubricant))
     parts.append("<h2 id='figures'>Figures</h2>")
-    parts += [figure_html(name, png, FIGURE_CAPTIONS.get(name))
-              for name, png in results.figures.items()]
+    parts += [figure_html(name, png, _caption(name)) for name, png in results.figures.items()]
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
     if results.check_limits:
         limits = CheckLimits.from_dict(results.check_limits)
@@ -436,6 +435,14 @@ FIGURE_CAPTIONS = {
 }
 
 
+def _caption(name: str) -> str | None:
+    if name.startswith("loss_maps"):
+        bearing = name[len("loss_maps_"):]
+        return ("power loss maps over speed and load [W]"
+                + (f", bearing {bearing}" if bearing else ""))
+    return FIGURE_CAPTIONS.get(name)
+
+
 def _fmt_stat(v: Any) -> str:
     if isinstance(v, float) and not isinstance(v, bool):
         return f"{v:.3g}"
@@ -477,12 +484,33 @@ def attach_figures(results: Results, scene: Any) -> None:
     losses = results.tables.get("losses")
     if losses is not None and not losses.empty:
         results.figures["power_losses"] = fig_loss_bars(losses)
+        results.figures.update(_run_loss_maps(losses))
         dest = fig_destinations(losses)
         if dest is not None:
             results.figures["heat_destinations"] = dest
     kin = results.tables.get("kinematics")
     if kin is not None and not kin.empty and len(kin) > 1:
         results.figures["cage_speed_ratio"] = fig_csr(kin)
+
+
+def _run_loss_maps(losses: pd.DataFrame) -> dict[str, bytes]:
+    """Loss maps over speed x load of a run whose steps cover such a grid
+    (:func:`report_losses.map_axes`): one figure per bearing (up to four), the total and
+    each source, named ``loss_maps_<bearing>``."""
+    from .report_losses import breakdown_by_source, map_axes, source_label, summary_sources
+
+    wide = breakdown_by_source(losses)
+    axes = map_axes(wide)
+    if axes is None:
+        return {}
+    sources = summary_sources(wide.columns)
+    comps = ["total [W]"] + [f"{s} [W]" for s in sources]
+    titles = {f"{s} [W]": f"{source_label(s)} [W]" for s in sources}
+    names = list(dict.fromkeys(wide["bearing"]))[:4] if "bearing" in wide else [None]
+    return {f"loss_maps_{name}" if name else "loss_maps":
+            fig_loss_maps(wide if name is None else wide[wide["bearing"] == name],
+                          axes[0], axes[1], comps, titles=titles)
+            for name in names}
 
 
 def write_report(results: Results, scene: Any, path: Path | str) -> Path:

@@ -184,6 +184,17 @@ def shares(breakdown: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
+def map_axes(breakdown: pd.DataFrame) -> tuple[str, str] | None:
+    """The two operating quantities of a speed x load map, when the points of
+    :func:`breakdown_by_source` cover one: the speed and the one load that vary, each with
+    at least two values (a contour needs 2 x 2 points); None otherwise (one quantity
+    varies, or both loads vary with the speed)."""
+    varying = [c for c in OPERATING if c in breakdown and breakdown[c].nunique() > 1]
+    if len(varying) != 2 or "speed [rpm]" not in varying:
+        return None
+    return varying[0], varying[1]
+
+
 def summary_lines(breakdown: pd.DataFrame) -> list[str]:
     """One sentence per bearing of a :func:`breakdown_by_source` table: the range of its
     total loss over the operating points (naming the points) and the largest source at the
@@ -333,9 +344,10 @@ def fig_destinations(losses: pd.DataFrame) -> bytes | None:
 
 
 def summary_sources(columns: Iterable[str]) -> list[str]:
-    """The heat sources with a ``<source> [W]`` column in a sweep summary, in
-    :func:`source_order` (the summary's totals and maxima are not sources)."""
-    names = [c[:-4] for c in columns if str(c).endswith(" [W]")
+    """The heat sources with a ``<source> [W]`` column in a sweep summary or a
+    :func:`breakdown_by_source` table, in :func:`source_order` (totals, maxima and the
+    loss classes are not sources)."""
+    names = [c[:-4] for c in columns if str(c).endswith(" [W]") and c not in _NOT_SOURCES
              and not str(c).startswith(("total loss", "max "))]
     return source_order(names)
 
