@@ -310,22 +310,17 @@ def test_components_without_a_loss_class_are_shown_so_the_classes_add_up():
     assert "unclassified [W]" not in breakdown_by_source(_losses(("de",)))
 
 
-def test_a_run_over_a_speed_by_load_grid_gets_loss_maps_per_bearing():
-    from thermobearing.report import attach_figures
+def test_a_run_over_a_speed_by_load_grid_gets_loss_maps_named_by_bearing():
+    from thermobearing.report import _caption, _run_loss_maps
     from thermobearing.report_losses import map_axes
 
-    grid = _losses(("de", "nde"))
+    grid = _losses(("nde",))
+    grid = grid[grid["source"].isin(("raceway_traction", "cage_guide"))]
     grid["speed [rpm]"] = grid["step"].map({0: 600.0, 1: 600.0, 2: 1800.0})
     extra = grid[grid["step"] == 2].assign(step=3, **{"axial load [kN]": 0.0})
     grid = pd.concat([grid, extra], ignore_index=True)  # 2 speeds x 2 axial loads
     assert map_axes(breakdown_by_source(grid)) == ("speed [rpm]", "axial load [kN]")
     assert map_axes(breakdown_by_source(_losses())) is None  # only the axial load varies
-    res = Results(tables={"losses": grid})
-
-    class _Scene:
-        measured = None
-
-    attach_figures(res, _Scene())
-    assert {"loss_maps_de", "loss_maps_nde"} <= set(res.figures)
-    text = html_report(res, "demo")
-    assert "<figcaption>power loss maps over speed and load [W], bearing nde" in text
+    maps = _run_loss_maps(grid)
+    assert list(maps) == ["loss_maps_nde"] and maps["loss_maps_nde"][:4] == b"\x89PNG"
+    assert _caption("loss_maps_nde") == "power loss maps over speed and load [W], bearing nde"
