@@ -31,7 +31,7 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
     checked: every mapped node exists and every sensor has at least one sample. Gaps (empty
     cells, dropout flags: NaN) are kept; the fit leaves each sensor's gaps out of its
     residuals (session 12: a single dropout made a logger file unusable for calibration)."""
-    from .report import read_measured
+    from .measured import read_scene_measured
 
     if scene.measured is None:
         raise InputError("measured", None, "a [measured] table (file, time_column, unit, "
@@ -42,7 +42,7 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
                              "a node of the scene's network: " + ", ".join(nodes))
     # one reader (thermobearing.measured): text cells, times going backwards, unreadable
     # times are named InputErrors there; empty cells and dropout flags come back as NaN
-    df = read_measured(scene)
+    df = read_scene_measured(scene)
     for col in scene.measured.columns:
         vals = df[col].to_numpy(dtype=float)
         if not np.isfinite(vals).any():

@@ -20,6 +20,7 @@ import re
 import warnings
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -37,7 +38,7 @@ from .signal_input import guess_decimal_mark, read_text_lines
 
 __all__ = ["ABSOLUTE_ZERO_C", "DROPOUT_FLAGS", "OVERLOAD_CODE", "RANGE_ENDS_C",
            "THERMOCOUPLE_MAX_C",
-           "coverage_notes", "measured_notes", "read_measured_file"]
+           "coverage_notes", "measured_notes", "read_measured_file", "read_scene_measured"]
 
 #: cell texts (case-insensitive, after stripping) that mark a broken or overloaded sensor:
 #: read as NaN (a gap), like an empty cell. Runs of two or more dashes or stars count too.
@@ -231,6 +232,25 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     return out
 
 
+def read_scene_measured(scene: Any) -> pd.DataFrame | None:
+    """The ``[measured]`` file of ``scene`` read with every option of its section
+    (time column, unit, ``time_zero``, ``time_format``, ``missing_values``): the one call
+    that ``check``, the report and ``calibrate`` share. None when the scene has none.
+
+    Raises InputError naming ``measured.file`` when the file does not exist, and the
+    reader's errors otherwise."""
+    m = scene.measured
+    if m is None:
+        return None
+    path = scene.resolve_path(m.file)
+    if not path.is_file():
+        raise InputError("measured.file", m.file, f"an existing data file (looked at {path})")
+    return read_measured_file(path, m.time_column, m.columns, m.unit,
+                              time_zero=getattr(m, "time_zero", None),
+                              time_format=getattr(m, "time_format", None),
+                              missing_values=getattr(m, "missing_values", None))
+
+
 def measured_notes(measured: pd.DataFrame) -> list[str]:
     """What the reader left out or decided, one line each: per sensor the gaps by cause
     (``TC1: 3 of 120 readings are gaps (2 dropout flags, 1 missing_values code)``), rows
@@ -240,7 +260,8 @@ def measured_notes(measured: pd.DataFrame) -> list[str]:
     for col, causes in measured.attrs.get("gaps", {}).items():
         total = sum(causes.values())
         if total:
-            parts = ", ".join(f"{k} {c}" for c, k in causes.items() if k)
+            parts = ", ".join(f"{k} {c[:-1] if k == 1 and c.endswith('s') else c}"
+                              for c, k in causes.items() if k)
             out.append(f"{col}: {total} of {n} readings are gaps ({parts})")
     return out
 

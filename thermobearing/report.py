@@ -452,22 +452,15 @@ def _fmt_stat(v: Any) -> str:
 # ---------------------------------------------------------------------------
 def read_measured(scene: Any) -> pd.DataFrame | None:
     """The scene's measured temperatures as ``time [s]`` + one degC column per sensor
-    (NaN where the logger wrote an empty cell or a dropout flag), read by
-    :func:`thermobearing.measured.read_measured_file` (the formats are listed there).
+    (NaN where the logger wrote an empty cell, a dropout flag or one of the section's
+    ``missing_values``): :func:`thermobearing.measured.read_scene_measured` (the formats
+    are listed at :func:`thermobearing.measured.read_measured_file`).
 
-    Raises InputError when the file or a mapped column is missing, a time does not
-    increase, or a cell is not readable (the error names the column, row and value)."""
-    from .errors import InputError
-    from .measured import read_measured_file
+    Raises InputError when the file or a mapped column is missing, a time steps back, or a
+    cell is not readable (the error names the column, row and value)."""
+    from .measured import read_scene_measured
 
-    m = scene.measured
-    if m is None:
-        return None
-    path = scene.resolve_path(m.file)
-    if not path.is_file():
-        raise InputError("measured.file", m.file, "an existing CSV file")
-    return read_measured_file(path, m.time_column, m.columns, m.unit,
-                              time_zero=getattr(m, "time_zero", None))
+    return read_scene_measured(scene)
 
 
 def attach_figures(results: Results, scene: Any) -> None:

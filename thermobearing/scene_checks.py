@@ -59,21 +59,15 @@ def check_measured_file(scene: Scene) -> None:
     The file must exist and be readable by
     :func:`thermobearing.measured.read_measured_file` (the one reader; the formats are
     listed there): the time column and every mapped column in its header row, every
-    non-empty cell of the mapped columns a number or a dropout flag (``OVL``, ``----``:
-    gaps, like empty cells; calibration refuses gaps itself), every time readable and the
-    times strictly increasing. The error names the column, the row (1 = first data row)
+    non-empty cell of the mapped columns a number, a dropout flag (``OVL``, ``----``) or one of
+    the section's ``missing_values`` (gaps, like empty cells; calibration leaves them out of
+    its residuals), every time readable and the times never stepping back (repeated times
+    are averaged). The error names the column, the row (1 = first data row)
     and the value.
     """
-    from .measured import read_measured_file
+    from .measured import read_scene_measured
 
-    m = scene.measured
-    if m is None:
-        return
-    path = scene.resolve_path(m.file)
-    if not path.is_file():
-        raise InputError("measured.file", m.file, f"an existing CSV file (looked at {path})")
-    read_measured_file(path, m.time_column, m.columns, m.unit,
-                       time_zero=getattr(m, "time_zero", None))
+    read_scene_measured(scene)
 
 
 def check_network(network: Mapping[str, Any], require: bool = True) -> None:

@@ -144,6 +144,11 @@ class Measured:
     ``time_zero``: the instant of the scene's t = 0 in the time column's own format (a
     timestamp, ``hh:mm:ss`` or a number in the column's unit) or ``"first"`` (the first
     row); None: the first row for timestamps, the values as they are otherwise.
+    ``time_format``: how to read the time column when the file cannot say it: ``"excel"``,
+    ``"excel_1904"`` (day numbers), ``"unix"`` (seconds since 1970) or a strptime pattern
+    (``"%d/%m/%Y %H:%M:%S"``); None: detected (:mod:`thermobearing.measured_time`).
+    ``missing_values``: the logger's dropout codes, numbers in the file's unit (``-999``,
+    ``9999.9``) or texts (``"OPEN"``); their readings are gaps, counted per sensor.
     """
 
     file: str
@@ -151,10 +156,31 @@ class Measured:
     time_column: str | tuple[str, str] = "time [min]"
     unit: str = "degC"
     time_zero: str | None = None
+    time_format: str | None = None
+    missing_values: tuple[float | str, ...] | None = None
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Measured:
-        _check_keys("measured", data, ("file", "columns", "time_column", "unit", "time_zero"))
+        from .measured_time import check_time_format
+
+        _check_keys("measured", data, ("file", "columns", "time_column", "unit", "time_zero",
+                                       "time_format", "missing_values"))
+        time_format = data.get("time_format")
+        if time_format is not None and not isinstance(time_format, str):
+            raise InputError("measured.time_format", time_format,
+                             "a text: excel, excel_1904, unix or a strptime pattern")
+        check_time_format(time_format, "measured")
+        missing = data.get("missing_values")
+        if missing is not None:
+            if isinstance(missing, str | int | float) and not isinstance(missing, bool):
+                missing = [missing]
+            if (not isinstance(missing, list | tuple) or not missing
+                    or any(isinstance(v, bool) or not isinstance(v, str | int | float)
+                           or (isinstance(v, str) and not v.strip()) for v in missing)):
+                raise InputError("measured.missing_values", missing,
+                                 "a list of the logger's dropout codes: numbers in the "
+                                 "file's unit or texts, e.g. [-999, 9999.9, \"OPEN\"]")
+            missing = tuple(missing)
         unit = data.get("unit", "degC")
         if unit not in ("degC", "K", "degF"):
             raise InputError("measured.unit", unit, "degC, K or degF")
@@ -181,7 +207,8 @@ class Measured:
             tcol = str(tcol)
         return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
                    time_column=tcol, unit=unit,
-                   time_zero=None if zero is None else str(zero).strip())
+                   time_zero=None if zero is None else str(zero).strip(),
+                   time_format=time_format, missing_values=missing)
 
     def to_dict(self) -> dict[str, Any]:
         tcol = self.time_column
@@ -190,6 +217,10 @@ class Measured:
                "unit": self.unit}
         if self.time_zero is not None:
             out["time_zero"] = self.time_zero
+        if self.time_format is not None:
+            out["time_format"] = self.time_format
+        if self.missing_values is not None:
+            out["missing_values"] = list(self.missing_values)
         return out
 
 

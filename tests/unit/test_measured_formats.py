@@ -51,8 +51,8 @@ def test_fixed_width_names_with_spaces_blank_cell_and_flag(first8):
     assert np.isnan(got[cols[0]].iloc[4]) and np.isnan(got[cols[1]].iloc[6])
     keep = [0, 1, 2, 3, 4, 5, 7]
     np.testing.assert_allclose(got[cols[1]].iloc[keep], first8["NDE"].iloc[keep], atol=1e-12)
-    assert measured_notes(got) == ["TC 1 outer ring: 1 of 8 readings are gaps (1 empty cells)",
-                                   "TC 2 housing: 1 of 8 readings are gaps (1 dropout flags)"]
+    assert measured_notes(got) == ["TC 1 outer ring: 1 of 8 readings are gaps (1 empty cell)",
+                                   "TC 2 housing: 1 of 8 readings are gaps (1 dropout flag)"]
 
 
 @pytest.mark.parametrize("align", ["<", ">"])
@@ -178,8 +178,8 @@ def test_numeric_codes_are_errors_unless_listed(first8):
     assert got.attrs["gaps"]["TC_DE"] == {"empty cells": 0, "dropout flags": 1,
                                           "overload codes": 0, "missing_values codes": 1}
     assert measured_notes(got) == [
-        "TC_DE: 2 of 8 readings are gaps (1 dropout flags, 1 missing_values codes)",
-        "TC_NDE: 2 of 8 readings are gaps (1 dropout flags, 1 missing_values codes)"]
+        "TC_DE: 2 of 8 readings are gaps (1 dropout flag, 1 missing_values code)",
+        "TC_NDE: 2 of 8 readings are gaps (1 dropout flag, 1 missing_values code)"]
 
 
 def test_text_codes_decimal_comma_codes_and_kelvin(tmp_path):

@@ -29,4 +29,22 @@ def run(args: argparse.Namespace) -> int:
     estimates = sim.describe_estimates()
     if estimates:
         print(estimates)
+    if scene.measured is not None:
+        print(describe_measured(scene))
     return 0
+
+
+def describe_measured(scene) -> str:
+    """The ``[measured]`` file as the run will read it: sensors, samples, time span and
+    the reader's notes (gaps per sensor and cause, averaged rows, units) and how the file
+    covers the schedule."""
+    from ..measured import coverage_notes, measured_notes, read_scene_measured
+
+    df = read_scene_measured(scene)
+    t = df["time [s]"]
+    sensors = [c for c in df.columns if c != "time [s]"]
+    lines = [f"measured: {scene.measured.file}: {len(sensors)} sensors, {len(df)} samples"
+             + (f", {t.iloc[0] / 60:.6g}-{t.iloc[-1] / 60:.6g} min" if len(df) else "")]
+    notes = measured_notes(df) + coverage_notes(df, 0.0, scene.schedule.duration)
+    lines += [f"  - {n}" for n in notes]
+    return "\n".join(lines)
