@@ -39,9 +39,14 @@ class RollerSkiddingResult:
     converged : bool.  residual_norm : scaled residual norm [-].  iterations : Newton steps.
     residual : (Z+1,) force residuals [N] at the solution.
     temperature [K], eta0 [Pa s] used.
-    extras : ``method`` ("newton" or "bracketed"), ``round_off_floor`` [-]: for a bracketed
-        state the scaled residual norm that one-ulp changes of the speeds make there (0 for
-        Newton). Heavy loads near pure rolling (NU214 from ~60 kN) cannot meet ``tol`` in
+    extras : ``method`` ("newton", "newton_round_off" or "bracketed"), ``start`` (the start
+        whose Newton converged: "warm", "cold_0.8", "cold_0.4", "pure_rolling",
+        "best_iterate", or "bracketed"), ``attempts`` (Newton attempts made),
+        ``round_off_floor`` [-]: for a bracketed or round-off state the scaled residual norm
+        that one-ulp changes of the speeds make there (0 for Newton within ``tol``;
+        "newton_round_off": a stalled Newton iterate whose every equation is within 4 times
+        its own one-ulp change, see :func:`~thermobearing.skidding.roller.solve_model`).
+        Heavy loads near pure rolling (NU214 from ~60 kN) cannot meet ``tol`` in
         double precision: such a state is converged when ``residual_norm`` <= 4 x the floor
         (measured at 1000 r/min, 40 degC: 100 kN -> norm 3.6e-6; 200 kN -> 3.3e-2, the
         tractions change by kN per ulp of the cage speed there), and ``residual_norm`` says

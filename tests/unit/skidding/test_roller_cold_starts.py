@@ -1,0 +1,125 @@
+"""Cold starts of the roller skidding solver at heavy load (skidding/roller.py,
+roller_solvers.py): states that took the bracketed fallback (6-12 s of CPU each) now converge
+by Newton accepted at the round-off floor, or by the bracketed solve started around the best
+Newton iterate, to the same state.
+
+The reference values are the full-bracket solutions (Brent over the whole cage-speed range,
+rollers bisected from their full range) of the solver before this change, measured with
+benchmarks/bm_roller_cold.py (NU214 with the paper 000 oil; a catalogue NU 206 with
+ISO VG 68).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.skidding.roller import build_model, evaluate, solve_roller
+from thermobearing.skidding.roller_loads import _load_distribution
+from thermobearing.skidding.roller_solvers import _nested, _roller_speeds
+
+RPM = math.pi / 30.0
+
+
+@pytest.fixture(scope="module")
+def nu206():
+    from thermobearing.bearing_config import bearing_from_dict
+
+    return bearing_from_dict({
+        "name": "NU206", "kind": "cylindrical", "source": "catalogue", "estimate_missing": True,
+        "bore": "30 mm", "outer_diameter": "62 mm", "width": "16 mm",
+        "roller_diameter": "7.5 mm", "roller_length": "7.5 mm", "n_rollers": 13})
+
+
+@pytest.fixture(scope="module")
+def vg68():
+    from thermobearing.lubricant import load_lubricant
+
+    return load_lubricant("ISO_VG68")
+
+
+def _every_equation_within_its_floor(r):
+    """The per-equation acceptance of a round-off state, re-checked from the result."""
+    assert r.residual_norm <= 4.0 * r.extras["round_off_floor"]
+    assert np.all(np.isfinite(r.residual))
+
+
+def test_heavy_nu214_converges_by_newton_at_the_round_off_floor(nu214, oil):
+    """NU214, 45 kN (about 0.3 C), 8000 r/min: Newton from pure rolling stalls at norm
+    2.1e-9 (tol 1e-9) because one ulp of the cage speed changes the cage equation by ~0.02 N
+    (round-off floor 6.9e-9 of the 11 kN roller load); the bracketed fallback took 5.7 s to
+    find the same cage speed to the last bit. Now the Newton iterate is accepted."""
+    r = solve_roller(nu214, oil, 8000.0 * RPM, 45000.0, 0.0, 313.15)
+    assert r.extras["method"] == "newton_round_off"
+    _every_equation_within_its_floor(r)
+    assert r.cage_speed == pytest.approx(363.0284844430538, rel=1e-12)
+    assert r.roller_speed[0] == pytest.approx(3085.742117037099, rel=1e-12)
+    assert r.roller_speed[5] == pytest.approx(1037.517661626765, rel=1e-12)
+
+
+def test_hot_nu206_converges_by_newton_at_the_round_off_floor(nu206, vg68):
+    """Catalogue NU 206, 13 kN, 8000 r/min, oil at 140 degC: formerly bracketed (4.8 s)."""
+    r = solve_roller(nu206, vg68, 8000.0 * RPM, 13000.0, 0.0, 413.15)
+    assert r.extras["method"] == "newton_round_off"
+    _every_equation_within_its_floor(r)
+    assert r.cage_speed == pytest.approx(350.5835280411001, rel=1e-12)
+    assert r.roller_speed[0] == pytest.approx(2500.8291662766087, rel=1e-12)
+    assert r.roller_speed[5] == pytest.approx(385.2835367474362, rel=1e-12)
+
+
+@pytest.mark.slow
+def test_newton_iterate_with_wrong_unloaded_rollers_is_not_accepted(nu206, vg68):
+    """Catalogue NU 206, 13 kN, 500 r/min, 20 degC: the stalled Newton iterate has a norm
+    (1.1e-3) inside the round-off floor of the stiff loaded rollers (0.11), but its unloaded
+    rollers turn at outer pure rolling (155 rad/s) where their moment balance is off by
+    0.037 N; they nearly stand (2.59 rad/s) in the cold oil. The per-equation rule rejects
+    the iterate and the bracketed solve (started around it, ~2 s) finds the reference."""
+    r = solve_roller(nu206, vg68, 500.0 * RPM, 13000.0, 0.0, 293.15)
+    assert r.extras["method"] == "bracketed"
+    assert r.cage_speed == pytest.approx(21.91147050058097, rel=1e-12)
+    assert r.roller_speed[0] == pytest.approx(156.30182290414444, rel=1e-12)
+    assert r.roller_speed[5] == pytest.approx(2.5929986591047944, rel=1e-10)
+
+
+def test_roller_bisection_from_a_guess_matches_the_full_bracket(nu214, oil):
+    """_roller_speeds started around a guess (the previous cage iterate's spins) ends at the
+    root of the full-range bisection, within its final bracket width (top speed x 2^-56)."""
+    m = build_model(nu214, oil, 313.15)
+    omega = 5000.0 * RPM
+    z = m.n_rollers
+    psi = 2.0 * math.pi * np.arange(z) / z
+    wc = 0.95 * m.theoretical_cage_speed_ratio * omega
+    ld, fb = _load_distribution(m, omega, 2000.0, wc, None, psi, (0.0, 0.0))
+    full = _roller_speeds(m, omega, wc, ld.inner_load, fb, psi, (0.0, 0.0))
+    for guess in (full * (1.0 + 1e-12), full * 0.5, np.full(z, 3.0 * full.max())):
+        warm = _roller_speeds(m, omega, wc, ld.inner_load, fb, psi, (0.0, 0.0), guess)
+        top = 2.0 * (m.pitch_diameter - m.roller_diameter) / m.roller_diameter * omega
+        np.testing.assert_allclose(warm, full, rtol=0.0, atol=4.0 * top * 2.0**-56)
+    e = evaluate(m, omega, full, wc, ld.inner_load, fb, psi, (0.0, 0.0))
+    assert np.all(np.isfinite(e.roller_eq))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("rpm, load", [(8000.0, 45000.0), (30000.0, 45000.0)])
+def test_round_off_state_matches_the_full_bracket_solve(nu214, oil, rpm, load):
+    """The Newton round-off state against the bracketed solve over the whole cage-speed
+    range, computed here (~6 s each): CSR and roller speeds to 1e-8 relative (measured:
+    <= 2e-15)."""
+    r = solve_roller(nu214, oil, rpm * RPM, load, 0.0, 313.15)
+    assert r.extras["method"] == "newton_round_off"
+    m = build_model(nu214, oil, 313.15)
+    omega = rpm * RPM
+    z = m.n_rollers
+    psi = 2.0 * math.pi * np.arange(z) / z
+
+    def loads(wc, ring, wr=None):
+        return _load_distribution(m, omega, load, wc, wr, psi, (0.0, 0.0), ring)
+
+    ld0, _ = loads(m.theoretical_cage_speed_ratio * omega, None)
+    x, _e, _norm, _it, ok, _ld, _floor = _nested(m, omega, loads, psi, (0.0, 0.0), 1e-9, 60,
+                                                 ld0)
+    assert ok
+    assert r.cage_speed == pytest.approx(x[z], rel=1e-8)
+    np.testing.assert_allclose(r.roller_speed, x[:z], rtol=1e-8)
