@@ -76,7 +76,7 @@ def test_race_control_zero_spin_and_linear_in_speed(name, ai, ao, speed, factor)
 
 @pytest.mark.parametrize("attitude", [math.nan, math.inf])
 def test_attitude_must_be_finite(attitude):
-    """Defect found here (session 10): a NaN attitude gave NaN kinematics silently and an
+    """Defect found by this test: a NaN attitude gave NaN kinematics silently and an
     infinite one a RuntimeWarning and NaN; now InputError names the attitude."""
     with pytest.raises(InputError, match="attitude"):
         kin.element_kinematics(BEARINGS["QJ1044"], 100.0, attitude=attitude)
@@ -112,7 +112,7 @@ def test_traction_heat_is_power_of_tractions_and_non_negative(seed, n, t_c):
 
 
 def test_nan_film_is_refused():
-    """Defect found here (session 10): a NaN film thickness at a loaded contact passed the
+    """Defect found by this test: a NaN film thickness at a loaded contact passed the
     `h <= 0` check and gave NaN tractions and heat silently."""
     with pytest.raises(InputError, match="film_thickness"):
         integrate(LAW, normal_load=[1000.0, 500.0], semi_major=[2e-3, 1.5e-3],
@@ -128,7 +128,7 @@ def test_nan_film_is_refused():
 ])
 @pytest.mark.parametrize("pressure", [math.nan, math.inf])
 def test_traction_law_rejects_non_finite_pressure(law, pressure):
-    """Defect found here (session 10): the pressure-proportional laws (paper 004's linear
+    """Defect found by this test: the pressure-proportional laws (paper 004's linear
     saturating, the ADORE-type four-parameter curve) returned NaN / inf stress for a NaN / inf
     pressure; the Eyring law already refused it through the lubricant."""
     with pytest.raises(InputError, match="pressure"):

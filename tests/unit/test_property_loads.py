@@ -115,7 +115,7 @@ def test_ball_load_zone_shrinks_with_clearance():
 
 
 def test_ball_load_distribution_light_radial_load_deep_groove():
-    """Defect found here (session 10): a deep-groove bearing under a radial load of 10 N at
+    """Defect found by this test: a deep-groove bearing under a radial load of 10 N at
     rest raised ConvergenceError (no convergence in 100 iterations: the load-scaled
     Jacobian-only ring spring swamped the small geometric axial stiffness of the loaded ball),
     and 1 N or less raised ZeroDivisionError from the rigid-pair start. Now 10 N converges and
@@ -127,7 +127,7 @@ def test_ball_load_distribution_light_radial_load_deep_groove():
 
 
 def test_ball_load_distribution_points_fixed_in_session_11():
-    """Defects found here (session 10, open until session 11): SKF6304 at rest under 1 N
+    """Defects found by this test: SKF6304 at rest under 1 N
     radial stopped at 4.3e-5 N; 21.9 kN radial + 6.26 kN axial (2.8x C0) stalled at 2.6e-4 N
     at 10 r/min and took 660 iterations at 100 r/min. Causes: the ball-centring spring was a
     force in the residual, centred on the pitch circle, that pulled balls resting in a groove
@@ -152,7 +152,7 @@ def test_four_point_light_axial_load_with_centrifugal_force(fa, rpm, n_arcs):
     force (0.015-0.55 N per ball) is comparable with the load and puts every ball into a third
     arc: the rigid-pair start (no centrifugal force) left the balls in diagonal contact, and
     Newton crawled along the direction that pair leaves soft (2.15 N at 35.5 r/min failed at
-    0.30 N; the others needed 150-180 iterations). Since session 11 a second start seats the
+    0.30 N; the others needed 150-180 iterations). A second start now seats the
     balls in the outer groove; the solution has three loaded arcs per ball where the
     centrifugal force is large enough (0.015 N per ball at 16.3 r/min leaves two)."""
     ld = ball_load_distribution(BEARINGS["QJ1044"], 0.0, fa, rpm * math.pi / 30)

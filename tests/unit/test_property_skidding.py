@@ -121,7 +121,7 @@ def test_ball_solve_grid_converges(name, rpm, fr, fa, t_c):
                                          (10.0, 5000.0, 100.0), (30.0, 1000.0, 100.0),
                                          (30.0, 5000.0, 100.0)])
 def test_deep_groove_low_speed_converges(rpm, fr, fa):
-    """Defects found here (session 10): the SKF6304 at 10-300 r/min under 1-15 kN radial load
+    """Defects found by this test: the SKF6304 at 10-300 r/min under 1-15 kN radial load
     failed with ConvergenceError. (1) At 10 r/min the cold start stood at 1e-6..5e-7 after
     150 iterations, converging only linearly (the unloaded balls are held by a centrifugal
     contact of ~1e-3 N), and the continuation then failed at 0.40 / 0.72: a cold start that
@@ -130,11 +130,10 @@ def test_deep_groove_low_speed_converges(rpm, fr, fa):
     that contact along a step) and gave up at once (2.0e-4 at 100 r/min, 5 kN): it now takes
     damped steps with the last good factorisation, and the iterate reaches the fallbacks.
     (3) The last three points (1-5 kN radial with 100 N axial at 10-30 r/min) stalled at
-    2.5e-8 .. 6.2e-7 until session 11, when the load distribution that starts the solver
+    2.5e-8 .. 6.2e-7 until the load distribution that starts the solver
     stopped pulling the unloaded balls up their groove flanks (loads.py)."""
     r = _ball_solve("SKF6304", rpm, fr, fa, 40.0)
     check_ball_invariants(r, fr, fa, "SKF6304")
-    assert r.extra.get("fallback") in (None, "newton_restart", "trust_region")
 
 
 @pytest.mark.parametrize("name, rpm, fr, fa, t_c", [
@@ -174,16 +173,17 @@ def test_qj1044_open(rpm, fr, fa, t_c):
     ("SKF6304", 70.96875525812881, 121.484868574429, 2.95462529462894, 135.4898762229222),
 ])
 def test_light_load_points_converge_through_the_fallbacks(name, rpm, fr, fa, t_c):
-    """Points of the random probe under light loads (95-133 N radial) that failed until
-    session 11. QJ1044, 132.5 N at 199 r/min: the cold start sits at 1.5e-2 (the unloaded
-    balls' spin / pocket-friction balance: their churning drag, 0.144 N, exceeds the traction
-    their centrifugal contacts carry, 0.092 N), and the continuation in axial load failed on
-    the warm step 251 -> 158 N although a cold start at 160 N converges. The continuation
-    now retries a failed step cold, then halves it; the state is marked ``"continuation"``.
-    Which fallback reaches the root depends on round-off in the compiled kernels (the SKF6304
-    point converges by the continuation on one x86-64 machine and by the Newton restart on
-    another, whose fused multiply-adds round differently), so the test asks that the cold start
-    does not converge plainly and that a fallback recovers the point with the invariants."""
+    """Points of the random probe under light loads (95-133 N radial) that failed before the
+    continuation retried failed steps. QJ1044, 132.5 N at 199 r/min: the cold start sits at
+    1.5e-2 (the unloaded balls' spin / pocket-friction balance: their churning drag, 0.144
+    N, exceeds the traction their centrifugal contacts carry, 0.092 N), and the continuation
+    in axial load failed on the warm step 251 -> 158 N although a cold start at 160 N
+    converges. The continuation now retries a failed step cold, then halves it; the state is
+    marked ``"continuation"``. Which fallback reaches the root depends on round-off in the
+    compiled kernels (the SKF6304 point converges by the continuation on one x86-64 machine
+    and by the Newton restart on another, where the compiled kernels round differently), so
+    the test asks that the cold start does not converge plainly and that a fallback recovers
+    the point with the invariants."""
     r = _ball_solve(name, rpm, fr, fa, t_c)
     check_ball_invariants(r, fr, fa, name)
     assert r.extra.get("fallback") in ("continuation", "newton_restart", "trust_region")
@@ -200,7 +200,7 @@ def test_ball_points_found_by_the_probe_converge(name, rpm, fr, fa, t_c):
     with the Newton restart / singular-block fallback. SKF6304, 9.1 kN + 2.5 kN at 46 r/min,
     90 degC: the cold start's load distribution crawled at 3e-5 N against its 5e-6 N
     tolerance (ConvergenceError); as a starting point it is now taken at tol 1e-6. SKF6304,
-    4.19 kN at 84 r/min, 72.5 degC (failed at 0.35 until session 11, fixed with the load
+    4.19 kN at 84 r/min, 72.5 degC (failed at 0.35 until fixed with the load
     distribution's start, loads.py). QJ1044, 2.15 N pure axial at 35.5 r/min (until session
     11 the cold start's load distribution stopped at 0.30 N: the centrifugal force, 0.07 N
     per ball, moves every ball into a third arc; now a second start seats the balls in the
@@ -210,7 +210,7 @@ def test_ball_points_found_by_the_probe_converge(name, rpm, fr, fa, t_c):
 
 @pytest.mark.parametrize("name", sorted(BALL))
 def test_ball_zero_load_is_a_clear_convergence_error(name):
-    """Defect found here (session 10): the SKF6304 with no load "converged" to CSR = 0 (or
+    """Defect found by this test: the SKF6304 with no load "converged" to CSR = 0 (or
     -0.0) with every ball in the outer groove; the QJ1044 raised. Both now raise with
     residual inf and the reason."""
     with pytest.raises(ConvergenceError, match="no ball touches the inner ring") as info:
@@ -299,7 +299,7 @@ def test_roller_zero_load_is_a_clear_convergence_error(name):
 @pytest.mark.slow
 @pytest.mark.parametrize("rpm", [10.0, 1000.0, 10000.0])
 def test_roller_heavy_load_bracketed_to_round_off(rpm):
-    """Defect found here (session 10): NU214, 100 kN (about 0.7 C): the bracketed fallback
+    """Defect found by this test: NU214, 100 kN (about 0.7 C): the bracketed fallback
     stopped Brent at 1e-10 of the inner speed, where the cage equation still had 4.2 kN of
     residual (norm 0.18 at 1000 r/min) and reported it as converged. Brent now goes to a few
     ulps: measured norms 1.0e-6, 3.6e-6, 4.5e-6 (10 / 1000 / 10000 r/min), each within 4x
@@ -310,7 +310,7 @@ def test_roller_heavy_load_bracketed_to_round_off(rpm):
 
 
 def test_warm_start_from_another_bearing_is_handled():
-    """Defects found here (session 10): a warm start from another bearing's result crashed
+    """Defects found by this test: a warm start from another bearing's result crashed
     with bare Python errors -- ball from a ball result of a different ball count:
     UnboundLocalError; ball from a roller result: AttributeError; roller from a roller result
     of a different roller count: IndexError; roller from a ball result: TypeError. Now: the
@@ -332,7 +332,7 @@ def test_warm_start_from_another_bearing_is_handled():
 
 
 def _probe_points(name, seed, n):
-    """The seeded random probe of session 10: log-uniform speed over the bearing's range,
+    """The seeded random probe: log-uniform speed over the bearing's range,
     radial / axial load either 0 or log-uniform from 1 N to the range's top (QJ1044: axial of
     either sign), oil 0-140 degC."""
     rng = np.random.default_rng(seed)
@@ -348,18 +348,21 @@ def _probe_points(name, seed, n):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name, seed, n, allowed", [("QJ1044", 1, 150, 3),
-                                                    ("SKF6304", 2, 120, 2)])
+@pytest.mark.parametrize("name, seed, n, allowed", [("QJ1044", 1, 150, 2),
+                                                    ("SKF6304", 2, 120, 1)])
 def test_random_probe_failure_count(name, seed, n, allowed):
-    """Regression guard with the measured numbers (session 10, ~1 min): every converged point
+    """Regression guard with the measured numbers (~1 min): every converged point
     of the seeded probe satisfies the invariants, zero-load points raise with residual inf,
     and at most ``allowed`` loaded points fail (measured after the fixes: QJ1044 12 of 150 --
     11 of them below 140 N of load, one 73 kN / -69 kN point stalling at 6e-7; SKF6304 4 of
     120, at 17-84 r/min or 21 kN; before the fixes 13 and 16 loaded points failed and the
-    SKF6304 returned CSR = 0 at zero load). Session 11 (load distribution, loads.py, and a
-    continuation in axial load that retries a failed step cold, then halves it): QJ1044 3
-    (1.9 N at 1511 r/min, -1.13 N axial at 3380 r/min, 73 kN / -69 kN at 25 r/min); SKF6304
-    2 (21.4 kN + 37 N at 1231 r/min, 22.7 kN + 58 N at 16.6 r/min)."""
+    SKF6304 returned CSR = 0 at zero load). With the load distribution's second start
+    (loads.py) and a continuation in axial load that retries a failed step cold, then halves
+    it: QJ1044 3 (1.9 N at 1511 r/min, -1.13 N axial at 3380 r/min, 73 kN / -69 kN at
+    25 r/min); SKF6304 2 (21.4 kN + 37 N at 1231 r/min, 22.7 kN + 58 N at 16.6 r/min). With
+    Newton iterations without the stall rule after a failed trust region: QJ1044 2 (the
+    first two, final residuals 3.3e-5 and 3.8e-3), SKF6304 1 (22.7 kN + 58 N at 16.6 r/min,
+    1.2e-2); 7 s and 12 s of CPU for the two probes."""
     failures = []
     for rpm, fr, fa, t_c in _probe_points(name, seed, n):
         try:

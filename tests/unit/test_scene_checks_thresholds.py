@@ -103,7 +103,7 @@ def test_round_trip(body):
 def test_scene_built_in_python_round_trips_equal():
     """A scene given ``CheckLimits`` in Python (source "CheckLimits") reads back from its TOML
     with the source "scene [checks]": the thresholds are what equality compares, so the two
-    scenes are equal (until session 12 they compared unequal on the source text)."""
+    scenes are equal (earlier versions compared them unequal on the source text)."""
     import dataclasses
 
     base = loads_scene(with_checks(""))
@@ -278,7 +278,7 @@ def test_film_only_run_checks_stress_and_film():
     """A film-only scene (race control, no skidding solver) checks the contact stress and
     the film parameter of its film table's rows (the most loaded element per raceway), so a
     set limit flags the step and the limits are recorded; the worst values are the table's.
-    (Until session 11 film-only runs checked nothing.)"""
+    (Earlier versions checked nothing in film-only runs.)"""
     film_only = 'want = ["film"]'
     text = with_checks('min_film_parameter = 1000\ncontact_stress_limit = "100 MPa"').replace(
         'want = ["kinematics"]', film_only)
@@ -366,7 +366,7 @@ def test_set_limits_warn_where_the_defaults_do_not(default_run, tmp_path):
 def test_report_of_a_folder_shows_the_limits_the_run_applied(default_run, tmp_path):
     """``thermobearing report DIR`` re-renders a run folder with the thresholds recorded in
     its ``metadata.json`` (the ones its warnings were made with), not with a ``[checks]``
-    table added to the folder's scene.toml afterwards (until session 12 it read the scene)."""
+    table added to the folder's scene.toml afterwards (earlier versions read the scene)."""
     from thermobearing.commands.report import run_report
 
     _, res = default_run

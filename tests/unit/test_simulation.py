@@ -163,7 +163,7 @@ def test_sweep_summary_carries_the_validity_extremes():
 def test_sweep_summary_weights_steps_by_duration_and_counts_flagged_steps():
     """summarize_scene: ``total loss [W]`` is the scene's loss (every bearing) averaged over
     the protocol with each step weighted by its duration, per-bearing totals beside it;
-    ``steps over ... limit [-]`` count the steps the [checks] thresholds flag (session 12:
+    ``steps over ... limit [-]`` count the steps the [checks] thresholds flag (earlier versions:
     the loss was the plain step mean of the first bearing, and a sweep of the thresholds
     gave identical rows). Hand check: the step losses from the losses table."""
     import pandas as pd
@@ -201,7 +201,7 @@ def test_sweep_summary_of_a_film_only_scene_gives_the_films():
     from thermobearing.simulation import summarize_scene
 
     """A film-only sweep case gives the film table's smallest central film and film
-    parameter (session 12: only the check extremes; the QJ1044 rows here are about 2.6 um
+    parameter (only the check extremes; the QJ1044 rows here are about 2.6 um
     and Lambda about 25, as in test_film_scene_runs_no_kinematics_no_network)."""
     out = summarize_scene(scene(["film"]).to_toml())
     assert 1.0 < out["min central film [um]"] < 5.0

@@ -92,7 +92,7 @@ def race_control_guess(bearing, speed, radial_load, axial_load, n_balls=None):
         ld = ball_load_distribution(bearing, radial_load, axial_load, speed, orbital_speed=wm0,
                                     n_balls=n_balls)
     except ConvergenceError:
-        # only a starting point: a looser tolerance will do (session 10, property tests:
+        # only a starting point: a looser tolerance will do (property tests:
         # SKF6304 at 46 r/min, Fr = 9.1 kN, Fa = 2.5 kN crawled at 3e-5 N against a 5e-6 N
         # tolerance -- the unloaded balls are held by centrifugal contacts of ~1e-4 N)
         ld = ball_load_distribution(bearing, radial_load, axial_load, speed,
@@ -170,7 +170,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         raise InputError("max_iter", max_iter, "a whole number of Newton iterations >= 1")
     if radial_load == 0.0 and axial_load == 0.0:
         # no external load (clearance >= 0): the inner ring carries no contact load in
-        # equilibrium, so nothing drives the balls or the cage (session 10: the SKF6304
+        # equilibrium, so nothing drives the balls or the cage (the SKF6304
         # "converged" here to CSR = 0 or -0 with every ball parked in the outer groove)
         raise ConvergenceError(
             "skidding.ball", math.inf,
@@ -178,12 +178,12 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
             "presses the balls against it), nothing drives the cage, CSR undefined in this "
             "model", {"radial_load": 0.0, "axial_load": 0.0, "speed": speed})
     if guess is not None and not isinstance(guess, BallSkiddingResult):
-        # (session 10: a roller result raised AttributeError)
+        # (a roller result raised AttributeError)
         raise InputError("guess", type(guess).__name__,
                          "a BallSkiddingResult of an earlier solve (warm start) or None")
     if guess is not None and guess.ball_x.size != int(n_balls or bearing.n_balls):
         # another bearing's (or ball count's) state cannot start this one: cold start (a
-        # QJ1044 result given to the SKF6304 raised UnboundLocalError; session 10)
+        # QJ1044 result given to the SKF6304 raised UnboundLocalError)
         guess = None
     t0 = time.perf_counter()
     prev = guess.extra.get("system") if guess is not None else None
@@ -231,7 +231,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                                             stall_after=25)
         except ConvergenceError as err:
             # a Newton that stalled close to a root (residual below 1e-2): Powell's
-            # trust-region method from its last iterate (session 6: one point of the BM-5
+            # trust-region method from its last iterate (one point of the BM-5
             # 20 x 20 map stalled at 1.9e-3 and converged this way); else, or if that fails,
             # the continuation in axial load
             last = getattr(err, "iterate", None)
@@ -241,7 +241,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                 try:
                     if "iteration" in err.state:   # a stall or failed line search
                         raise err
-                    # the iteration limit reached while still converging (session 10,
+                    # the iteration limit reached while still converging (the
                     # property tests: a deep-groove bearing under a radial load crawls along
                     # the near-mechanism of its axial play -- SKF6304, 10 r/min, 1 kN, 40 degC
                     # stood at 1.1e-6 after 150 iterations and converges in 208; at 5 kN in
@@ -315,7 +315,7 @@ def _continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol,
 
     Each load step is warm-started from the last converged state; a step that fails is
     retried cold at its load (race-control start), then halved (at most three times) between
-    the last converged load and it (session 11: QJ1044 at 199 r/min, 132.5 N radial, the
+    the last converged load and it (QJ1044 at 199 r/min, 132.5 N radial, the
     warm step 251 -> 158 N axial failed at 1.9e-2 while a cold start at 160 N converges).
     No cap on the failed solves: capped at 4 or 8, the seeded random probe lost 5 or 1 of
     the QJ1044 points this recovers; a point that fails after all of them costs up to ~16 s

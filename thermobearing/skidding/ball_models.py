@@ -261,7 +261,7 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
     def cage_torque(wc):
         # paper 002 eqs. 12-15: ch.viscous_friction_coefficient's scalar branch (N_Re =
         # R |omega| c / nu, N_Ta = N_Re sqrt(c / R), the same operations, so the same bits)
-        # and its regime core ch._mu_v_regime without the ChurningRegime wrapping (session 8:
+        # and its regime core ch._mu_v_regime without the ChurningRegime wrapping (
         # the solver calls this once per new cage speed; 16 -> ~4 us per call)
         re = r_c * abs(wc) * gap_c / nu
         mu_v = ch._mu_v_regime(re, re * gap_root)[0]
