@@ -105,9 +105,11 @@ def supply_text(scene: Any, lubricant: Any | None) -> str:
 
 def operating_points(scene: Any) -> pd.DataFrame:
     """The schedule: one row per step with its duration [min], speed [rpm] and radial and
-    axial load [kN]."""
+    axial load [kN] (the speed rounded as in the result tables)."""
+    from .simulation_tables import set_value
+
     return pd.DataFrame([{"step": i, "duration [min]": st.duration / 60.0,
-                          "speed [rpm]": from_si(st.speed, "rpm"),
+                          "speed [rpm]": set_value(from_si(st.speed, "rpm")),
                           "radial load [kN]": st.radial_load / 1e3,
                           "axial load [kN]": st.axial_load / 1e3}
                          for i, st in enumerate(scene.schedule.steps)])

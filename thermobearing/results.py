@@ -5,10 +5,13 @@ Tables (all optional; a scene fills only what its outputs need):
 ``temperatures``
     one row per output time: ``time [s]``, ``time [min]``, then ``<node> [degC]`` per node.
 ``losses``
-    long form, one row per (step, bearing, source, component): ``step``, ``time [s]``,
-    ``bearing``, ``speed [rpm]``, ``radial load [kN]``, ``axial load [kN]``, ``source``,
-    ``component``, ``power [W]``, ``load dependence`` (and ``role``, the component the
-    heat goes to, when the run records it: the report then shows the heat per component).
+    long form, one row per (step, bearing, source, component, role): ``step``,
+    ``time [s]``, ``bearing``, ``speed [rpm]``, ``radial load [kN]``, ``axial load [kN]``,
+    ``source``, ``component``, ``role`` (where that part of the component's heat goes:
+    inner_ring, outer_ring, elements, cage or oil), ``power [W]``, ``load dependence``.
+    A component's rows add up to its power, a source's to its loss. Folders of earlier
+    versions have no ``role`` (one row per component); the report then leaves out the heat
+    per receiving component.
 ``loss_breakdown`` (written from ``losses``, not kept in :attr:`Results.tables`)
     one row per (step, bearing) with its speed and loads, one ``<source> [W]`` column per
     heat source, ``load-dependent [W]``, ``load-independent [W]`` and ``total [W]`` (the

@@ -270,6 +270,9 @@ class Simulation:
         contact temperature, is evaluated once per kinematics solve, not once per
         finite-difference column. Two identical bearings in the same state share results.
         ``reads`` of the evaluation is the union of the roles the sources read.
+        ``with_rows``: also the loss-table rows, one per source, component and role (the
+        component where the heat goes, :meth:`heat_sources.HeatResult.split`) with its
+        power [W]; a component's rows add up to its power.
         """
         from .heat_sources import HeatContext, evaluate_recorded
 
@@ -308,10 +311,12 @@ class Simulation:
             for role, p in r.power_by_role.items():
                 by_role[role] += p
             if with_rows:
-                for comp, p in r.components.items():
-                    rows.append({"source": r.source, "component": comp,
-                                 "power [W]": p,
-                                 "load dependence": r.loss_class.get(comp, "")})
+                # one row per component and the role its heat goes to (HeatResult.split:
+                # the source's own split, else in proportion to its heat by role)
+                rows.extend({"source": r.source, "component": comp, "role": role,
+                             "power [W]": p,
+                             "load dependence": r.loss_class.get(comp, "")}
+                            for comp, role, p in r.split())
         return _Evaluation(by_role, rows, frozenset(reads_all))
 
     def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:

@@ -20,11 +20,29 @@ from .units import from_si
 
 
 def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
-    """The columns that identify one operating step in the tables."""
+    """The columns that identify one operating step in the tables.
+
+    The speed is the step's set value converted from rad/s to r/min and rounded to
+    :data:`SET_VALUE_DIGITS` significant digits: the conversion's round-off (1500 r/min
+    read back as ``1500.0000000000002``) is not part of the value a user set."""
     return {"step": index, "time [s]": time_s, "bearing": bearing,
-            "speed [rpm]": from_si(step.speed, "rpm"),
+            "speed [rpm]": set_value(from_si(step.speed, "rpm")),
             "radial load [kN]": step.radial_load / 1e3,
             "axial load [kN]": step.axial_load / 1e3}
+
+
+#: significant digits of a set value (speed) written to the tables: far more than any
+#: rig sets, far fewer than the 15-17 at which unit-conversion round-off shows
+SET_VALUE_DIGITS = 12
+
+
+def set_value(x: float) -> float:
+    """``x`` rounded to :data:`SET_VALUE_DIGITS` significant digits (non-finite values and
+    zero unchanged)."""
+    x = float(x)
+    if not math.isfinite(x) or x == 0.0:
+        return x
+    return float(f"{x:.{SET_VALUE_DIGITS}g}")
 
 
 def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
