@@ -236,7 +236,8 @@ def solve_model(
 def _round_off_state(model: RollerModel, omega: float, best: tuple[Any, ...],
                      loads: Any, psi: np.ndarray, acc: tuple[float, float], tol: float
                      ) -> tuple[tuple[Any, ...] | None, float]:
-    """The best Newton iterate, with the loads of its own cage speed, when every one of its
+    """The best Newton iterate (or its cage speed with the rollers bisected there, whichever
+    has the smaller norm), with the loads of its own cage speed, when every one of its
     equations is within 4 round-off floors of that equation (or within ``tol`` of the force
     scale; :func:`~thermobearing.skidding.roller_solvers._newton_floor`): (state, floor), or
     (None, floor) when it is not. ``floor``: the norm of the per-equation floors scaled as
@@ -251,15 +252,22 @@ def _round_off_state(model: RollerModel, omega: float, best: tuple[Any, ...],
         return None, math.inf
     mg = _gapped(model, ld)
     scale = _force_scale(model, omega, ld.inner_load)
-    changes = _newton_floor(mg, omega, x[:z], float(x[z]), ld.inner_load, fb, psi, acc)
+    wc = float(x[z])
+    wr_root, changes = _newton_floor(mg, omega, x[:z], wc, ld.inner_load, fb, psi, acc)
     floor = float(np.linalg.norm(changes)) / scale
-    e = evaluate(mg, omega, x[:z], float(x[z]), ld.inner_load, fb, psi, acc)
-    res = np.append(e.roller_eq, e.cage_eq)
-    norm = float(np.linalg.norm(res)) / scale
-    if not (np.all(np.abs(res) <= np.maximum(4.0 * changes, tol * scale / math.sqrt(z + 1)))
-            and norm <= max(tol, 4.0 * floor)):
-        return None, floor
-    return (x, e, norm, best[3], True, ld), floor
+    accepted = None
+    # candidates: the iterate, and its cage speed with the rollers bisected there (Newton's
+    # line search on the norm can leave the smooth equations of unloaded rollers unsolved
+    # while the stiff loaded ones dominate; film-supported rings: loads follow the spins)
+    for wr in (x[:z],) if model.ring_support == "films" else (x[:z], wr_root):
+        e = evaluate(mg, omega, wr, wc, ld.inner_load, fb, psi, acc)
+        res = np.append(e.roller_eq, e.cage_eq)
+        norm = float(np.linalg.norm(res)) / scale
+        if (np.all(np.abs(res) <= np.maximum(4.0 * changes, tol * scale / math.sqrt(z + 1)))
+                and norm <= max(tol, 4.0 * floor)
+                and (accepted is None or norm < accepted[2])):
+            accepted = (np.append(wr, wc), e, norm, best[3], True, ld)
+    return accepted, floor
 
 
 def _check_option_names(options: dict[str, Any]) -> None:

@@ -130,7 +130,9 @@ def _roller_speeds(model: RollerModel, omega: float, wc: float, inner_load: np.n
     state (e.g. the previous cage iterate); each roller's bracket then starts at
     guess +- 1e-9 omega and widens 16-fold per round (either way, clipped to the full
     bracket) until it holds the sign change: ~26 residual evaluations instead of 56 for the
-    same final width.
+    same final width. The bisection also ends when every bracket is down to two adjacent
+    floats (spins above ~2^-56 ``top`` / 2^-52, the usual case: the last halvings cannot
+    move it).
     """
     d_m, d = model.pitch_diameter, model.roller_diameter
     top = 2.0 * max((d_m - d) / d * (omega - wc), (d_m + d) / d * wc) + 1e-9 * omega
@@ -161,7 +163,8 @@ def _roller_speeds(model: RollerModel, omega: float, wc: float, inner_load: np.n
         lo, hi = np.where(ok, a, lo), np.where(ok, b, hi)
     width_end = top * 2.0**-56
     for _ in range(56):
-        if float(np.max(hi - lo)) <= width_end:
+        # done at the final width, or where the bracket is down to adjacent floats
+        if np.all(hi - lo <= np.maximum(width_end, np.spacing(hi))):
             break
         mid = 0.5 * (lo + hi)
         r = eq(mid)
@@ -269,9 +272,10 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
 
 def _newton_floor(model: RollerModel, omega: float, wr: np.ndarray, wc: float,
                   inner_load: np.ndarray, fb: np.ndarray, psi: np.ndarray,
-                  acc: tuple[float, float]) -> np.ndarray:
+                  acc: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
     """Round-off floor of each equation [N] ((Z + 1,), rollers then cage) at the cage speed
-    ``wc`` of a stalled Newton iterate.
+    ``wc`` of a stalled Newton iterate, and the roller spins solving their moment balances
+    at ``wc`` (Z,) [rad/s]: (spins, floors).
 
     The rollers are re-solved at ``wc`` by bisection (started around the iterate's spins
     ``wr``) and :func:`_round_off_changes` is taken there, so the floor measures the local
@@ -284,7 +288,7 @@ def _newton_floor(model: RollerModel, omega: float, wr: np.ndarray, wc: float,
     floor of the stiff loaded rollers while its unloaded rollers turned 60x too fast.
     """
     wr_root = _roller_speeds(model, omega, wc, inner_load, fb, psi, acc, wr)
-    return _round_off_changes(model, omega, wr_root, wc, inner_load, fb, psi, acc)
+    return wr_root, _round_off_changes(model, omega, wr_root, wc, inner_load, fb, psi, acc)
 
 
 def _round_off_changes(model: RollerModel, omega: float, wr: np.ndarray, wc: float,
