@@ -9,6 +9,9 @@ Registry ``kinematics`` (scenes choose with ``[models] kinematics = "..."``):
     the skidding / over-skidding solver (``skidding.solve``): cage and element speeds
     from the traction / drag balance, warm-started from the previous operating point.
 
+A schedule step with both rings at rest (a stop in a rig protocol, when the bearing cools)
+needs no solver: every registered model returns :func:`standstill` there.
+
 Both return a :class:`KinematicsResult` whose ``state`` is the
 :class:`~thermobearing.state.KinematicState` the heat sources read and whose
 ``heat_options`` are the :class:`~thermobearing.heat_sources.HeatContext` options that
@@ -17,6 +20,8 @@ match the force models the kinematics used (so heat = force x sliding speed).
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -80,6 +85,37 @@ def _ball_heat_options(bearing: Any, supply: OilSupply, speed: float, params: An
     return opts
 
 
+def at_rest(operating: OperatingPoint) -> bool:
+    """Both rings stopped (inner and outer speed exactly 0)."""
+    return operating.inner_speed == 0.0 and operating.outer_speed == 0.0
+
+
+def standstill(bearing: Any, operating: OperatingPoint) -> KinematicsResult:
+    """The bearing at rest under its loads: nothing rolls or slides, so no heat source
+    dissipates anything (:func:`thermobearing.heat_sources.evaluate_recorded` books 0 W
+    for every source of a ``"standstill"`` state) while the network keeps cooling.
+
+    The contacts are those of the quasi-static load distribution at zero speed
+    (``state.race_control_state`` without a lubricant: Hertz loads and pressures for the
+    stress check, no film, all speeds 0); with no load at all there are none. The cage
+    speed ratio is undefined at rest: NaN (the kinematics table leaves it empty, the
+    operating checks flag nothing); the theoretical ratio is the bearing's nominal one."""
+    from .state import race_control_state
+
+    theo = float(bearing.theoretical_cage_speed_ratio())
+    z = bearing.n_elements
+    if operating.radial_load == 0.0 and operating.axial_load == 0.0:
+        import numpy as np
+
+        state = KinematicState(inner_speed=0.0, outer_speed=0.0, cage_speed=0.0,
+                               orbital_speed=np.zeros(z), element_spin=np.zeros(z),
+                               contacts=(), origin="standstill")
+    else:
+        state = dataclasses.replace(race_control_state(bearing, operating), origin="standstill")
+    return KinematicsResult(state=state, cage_speed_ratio=math.nan,
+                            theoretical_cage_speed_ratio=theo)
+
+
 KINEMATICS: Registry[Any] = Registry(
     "kinematics", "element and cage speeds: race control or the skidding solver")
 
@@ -94,6 +130,8 @@ def race_control(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
                  guess: KinematicsResult | None = None, options: Mapping[str, Any] | None = None
                  ) -> KinematicsResult:
     """Race-control kinematics (``state.race_control_state``, outer-race control by default)."""
+    if at_rest(operating):
+        return standstill(bearing, operating)
     from .state import race_control_state
 
     opts = dict(options or {})
@@ -121,6 +159,8 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
              guess: KinematicsResult | None = None, options: Mapping[str, Any] | None = None
              ) -> KinematicsResult:
     """The skidding solver (``skidding.solve``), warm-started from ``guess``."""
+    if at_rest(operating):
+        return standstill(bearing, operating)
     from .skidding import solve
 
     opts = dict(options or {})
@@ -167,6 +207,8 @@ def no_kinematics(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
     """The epicyclic (pure-rolling) cage speed at the nominal contact angle and no contact
     detail: the cheapest rung, for heat sources that need only speeds and loads (the
     ``global_friction`` source). Sources that integrate contacts cannot run on it."""
+    if at_rest(operating):
+        return standstill(bearing, operating)
     import numpy as np
 
     csr = float(bearing.theoretical_cage_speed_ratio())

@@ -48,7 +48,7 @@ import numpy as np
 from .errors import InputError, UnknownNameError, check_finite, check_positive, check_temperature
 
 SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
-ORIGINS = ("race_control", "skidding", "given")
+ORIGINS = ("race_control", "skidding", "given", "standstill")
 CONTACT_KINDS = ("point", "line")
 RING_ROLES = ("inner_ring", "outer_ring")
 
@@ -329,7 +329,8 @@ class KinematicState:
     element_drag_force : (Z,) fluid drag on each element [N] from the solver, or None.
     cage_eccentricity : cage-centre eccentricity ratio epsilon in the guide clearance [-].
     cage_guide_force : cage-land normal force from the solver [N] or None.
-    origin : ``"race_control" | "skidding" | "given"``.
+    origin : ``"race_control" | "skidding" | "given" | "standstill"`` (both rings at rest:
+        :func:`thermobearing.kinematic_models.standstill`).
     """
 
     inner_speed: float

@@ -304,6 +304,12 @@ def evaluate_recorded(names: Iterable[str], ctx: HeatContext,
         unknown = roles - set(ROLES)
         if unknown:
             raise UnknownNameError("network node role", sorted(unknown)[0], ROLES)
+    if ctx.kinematics.origin == "standstill":
+        # both rings at rest (kinematic_models.standstill): no relative motion anywhere,
+        # so no source dissipates; each books 0 W (a row per source keeps the loss tables
+        # complete) and reads no temperature
+        return [(HeatResult(name, {"oil": 0.0}, {"at rest": 0.0}), frozenset())
+                for name in names]
     results = []
     temps = ctx.temperatures
     for name in names:
