@@ -2,8 +2,9 @@
 
 Figures (PNG bytes, matplotlib with the Agg backend):
 
-- temperatures against time, measured data overlaid, with per-sensor RMSE / max error;
-  steady-state temperatures per operating point (``mode = "steady"``);
+- temperatures against time, measured data overlaid, with per-sensor RMSE / max error
+  and the measured file's notes (:mod:`.report_measured`); steady-state temperatures per
+  operating point (``mode = "steady"``);
 - stacked power-loss bars per operating point (in the style of seed paper 002 Fig. 15);
 - cage speed ratio against axial load with the theoretical ratio (paper 002 Fig. 10);
 - speed x load maps of each loss component and oil-flow what-if curves (from a sweep
@@ -42,6 +43,11 @@ from .report_losses import (  # noqa: E402
     fig_loss_bars,
     network_heat_check,
 )
+from .report_measured import (  # noqa: E402  (re-exported: the report's public names)
+    comparison_notes,
+    fig_temperatures,
+    temperature_errors,
+)
 from .results import Results  # noqa: E402
 
 #: the sections every report has (with a scene also "Bearing and operating points")
@@ -54,68 +60,6 @@ def _png(fig: plt.Figure) -> bytes:
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
     plt.close(fig)
     return buf.getvalue()
-
-
-def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
-                       column_map: Mapping[str, str]) -> pd.DataFrame:
-    """Per-sensor RMSE and max |error| [K] of the predicted node temperature at the
-    measured times (linear interpolation in time; measured gaps -- NaN -- and samples
-    outside the run are left out, ``points`` counts the samples used).
-
-    ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
-    and one column per sensor in degC; ``column_map`` maps sensor -> node.
-    """
-    rows = []
-    t_model = temps["time [s]"].to_numpy()
-    for sensor, node in column_map.items():
-        col = f"{node} [degC]"
-        if col not in temps or sensor not in measured:
-            continue
-        t = measured["time [s]"].to_numpy()
-        values = measured[sensor].to_numpy(dtype=float)
-        # samples outside the run and gaps (empty cells, dropout flags: NaN) are left out
-        inside = (t >= t_model[0]) & (t <= t_model[-1]) & np.isfinite(values)
-        pred = np.interp(t[inside], t_model, temps[col].to_numpy())
-        err = pred - values[inside]
-        if err.size == 0:
-            continue
-        rows.append({"sensor": sensor, "node": node,
-                     "RMSE [K]": float(np.sqrt(np.mean(err**2))),
-                     "max error [K]": float(np.max(np.abs(err))),
-                     "points": int(err.size)})
-    return pd.DataFrame(rows)
-
-
-def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
-                     column_map: Mapping[str, str] | None = None) -> bytes:
-    """Node temperatures [degC] against time [min], measured points overlaid."""
-    fig, ax = plt.subplots(figsize=(8, 4.5))
-    t_min = temps["time [s]"].to_numpy() / 60.0
-    # one colour per node kind, one line style per bearing (``<bearing>.<node>``): two
-    # identical bearings on one shaft then show as overlapping solid and dashed lines
-    nodes = [c[:-len(" [degC]")] for c in temps.columns if c.endswith(" [degC]")]
-    groups = list(dict.fromkeys(n.split(".", 1)[0] for n in nodes if "." in n))
-    kinds = list(dict.fromkeys(n.split(".", 1)[-1] for n in nodes))
-    palette = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    styles = ("-", "--", ":", "-.")
-    colour = {}
-    for n in nodes:
-        kind = n.split(".", 1)[-1]
-        g = n.split(".", 1)[0] if "." in n else ""
-        colour[n] = palette[kinds.index(kind) % len(palette)]
-        ax.plot(t_min, temps[f"{n} [degC]"], label=n, color=colour[n],
-                ls=styles[groups.index(g) % len(styles)] if g in groups else "-")
-    if measured is not None and column_map:
-        for sensor, node in column_map.items():
-            if sensor in measured:
-                ax.plot(measured["time [s]"] / 60.0, measured[sensor], "o", ms=3,
-                        color=colour.get(node), mfc="none",
-                        label=f"{sensor} (measured)")
-    ax.set_xlabel("time [min]")
-    ax.set_ylabel("temperature [degC]")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, ncol=2)
-    return _png(fig)
 
 
 def fig_steady_temperatures(steady: pd.DataFrame, points: pd.DataFrame | None = None
@@ -326,13 +270,16 @@ def figure_html(name: str, png: bytes, caption: str | None = None) -> str:
 
 
 def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.DataFrame]
-                | None = None, *, scene: Any = None) -> str:
+                | None = None, *, scene: Any = None,
+                table_notes: Mapping[str, Sequence[str]] | None = None) -> str:
     """The self-contained HTML report (figures embedded as base64 PNG).
 
     Sections: the bearing and its operating points (with ``scene``), the loss breakdown
     (by source and share, by receiving component, the catalogue cross-check), figures,
     validity warnings, the models that ran with their validity ranges, the energy audit,
-    estimated inputs, the tables, the scene as TOML and the citations."""
+    estimated inputs, the tables, the scene as TOML and the citations. ``table_notes``:
+    table name -> notes listed under that table (e.g. the measured file's gaps under
+    "measured vs predicted")."""
     from .report_sections import chain_table, context_html, html_table, losses_html
 
     esc = html.escape
@@ -416,6 +363,10 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
         series = name in ("temperatures", "energy")
         csv = f"{name}.csv" if name in results.tables else None
         parts.append(f"<h3>{esc(name)}</h3>{html_table(df, csv_name=csv, series=series)}")
+        notes = (table_notes or {}).get(name)
+        if notes:
+            parts.append("<ul class='notes'>" + "".join(
+                f"<li class='note'>{esc(n)}</li>" for n in notes) + "</ul>")
     parts.append("<h2 id='scene'>Scene</h2>")
     parts.append(f"<pre>{esc(results.scene_toml)}</pre>")
     parts.append("<h2 id='citations'>Citations</h2><ol>")
@@ -513,12 +464,14 @@ def write_report(results: Results, scene: Any, path: Path | str) -> Path:
     if not results.check_limits and "kinematics" in results.tables:
         limits = getattr(scene, "checks", None) or CheckLimits()
         results = dataclasses.replace(results, check_limits=limits.as_dict())
-    extra = {}
+    extra, notes = {}, {}
     temps = results.tables.get("temperatures")
-    if scene.measured is not None and temps is not None:
-        err = temperature_errors(temps, read_measured(scene), scene.measured.columns)
-        extra["measured vs predicted"] = err
-    text = html_report(results, scene.title, extra, scene=scene)
+    if scene.measured is not None and temps is not None and not temps.empty:
+        measured = read_measured(scene)
+        name = "measured vs predicted"
+        extra[name] = temperature_errors(temps, measured, scene.measured.columns)
+        notes[name] = comparison_notes(measured, temps, scene.measured.columns)
+    text = html_report(results, scene.title, extra, scene=scene, table_notes=notes)
     out = Path(path)
     out.write_text(text, encoding="utf-8")
     return out

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import Any
 
 from ..scene import load_scene, with_absolute_paths
 from ..scene_checks import check_model_names
@@ -48,7 +49,22 @@ def run(args: argparse.Namespace) -> int:
         return 130
     if not args.quiet:
         print(sim.summary_text(results))
+        _print_measured(scene, results)
     print(f"results written to {out}/ (report: {out / 'report.html'})")
     if (out / "loss_breakdown.csv").is_file():
         print(f"loss breakdown, one column per source [W]: {out / 'loss_breakdown.csv'}")
     return 0
+
+
+def _print_measured(scene: Any, results: Any) -> None:
+    """Each sensor's error and the measured file's notes (gaps, averaged rows, coverage of
+    the run), shortened; the report lists them all."""
+    temps = results.tables.get("temperatures")
+    if scene.measured is None or temps is None or temps.empty:
+        return
+    from ..measured import read_scene_measured
+    from ..report_measured import terminal_lines
+
+    measured = read_scene_measured(scene)
+    for line in terminal_lines(measured, temps, scene.measured.columns):
+        print(line)
