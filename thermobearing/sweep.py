@@ -6,8 +6,9 @@ scene that can run (:func:`check_cases`: preset and model names, network values,
 measured file) before the first one runs, runs each case with a runner (by default
 :func:`thermobearing.simulation.summarize_scene`), and appends each finished case to
 ``DIR/cases.jsonl`` the moment it completes; ``DIR/summary.csv`` is rewritten after each
-case. Rerunning the same command (in any order of its ``--set`` options) skips the cases
-already in ``cases.jsonl``, so an interrupted sweep resumes where it stopped.
+case; ``DIR/scene.toml`` records the base scene (:func:`record_base_scene`). Rerunning the
+same command (in any order of its ``--set`` options) skips the cases already in
+``cases.jsonl``, so an interrupted sweep resumes where it stopped.
 
 Values: a comma list (``15,20,25,33``) or a range ``start:stop:step`` (stop included).
 A bare number takes the unit the scene uses for that field (``schedule.speed=600:1800:300``
@@ -477,6 +478,31 @@ def _numeric_column(values: Sequence[Any]) -> tuple[str, list[float]] | None:
     return unit, numbers
 
 
+def record_base_scene(out_dir: Path, scene: Scene) -> None:
+    """Write the base scene, its file paths absolute, to ``out_dir/scene.toml``: the sweep
+    report names the bearing and the conditions not swept from it.
+
+    A folder resumed with another base scene gets it replaced, as ``summary.csv`` is
+    rewritten with the cases of this sweep alone (the case ids include the base scene, so
+    none of the earlier cases counts as finished; their records stay in ``cases.jsonl``);
+    stderr says so."""
+    from .scene import with_absolute_paths
+
+    text = with_absolute_paths(scene).to_toml()
+    path = out_dir / "scene.toml"
+    if path.is_file():
+        try:
+            old = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            old = None
+        if old == text:
+            return
+        print(f"sweep: {path} held another base scene; replaced by this sweep's (its "
+              "cases run anew; summary.csv lists this sweep's cases, cases.jsonl keeps "
+              "the earlier ones)", file=sys.stderr)
+    path.write_text(text, encoding="utf-8")
+
+
 def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
     done = finished_cases(out_dir)
     order = {c.case_id: i for i, c in enumerate(cases)}
@@ -666,6 +692,7 @@ def run_sweep(
     if check:
         check_cases(todo)
     out.mkdir(parents=True, exist_ok=True)
+    record_base_scene(out, scene)
     show = sys.stderr.isatty() if progress is None else progress
     bar = tqdm(total=len(cases), initial=len(cases) - len(todo), disable=not show,
                desc="sweep", unit="case")

@@ -4,7 +4,8 @@ Example: ``thermobearing sweep qj1044_rig --set supply.flow=15,20,25,33
 --set schedule.speed=600:1800:300 --out sweep_flow`` (SCENE may be left out: the default
 scene, as for ``run``). Every case is checked before the first one runs; every finished
 case is appended to ``DIR/cases.jsonl`` at once; rerunning the same command skips
-finished cases. ``--scheduler ADDRESS`` runs the cases on an existing dask.distributed
+finished cases. ``DIR/scene.toml`` records the base scene (file paths absolute) for
+``thermobearing report DIR``. ``--scheduler ADDRESS`` runs the cases on an existing dask.distributed
 cluster. The terminal shows the main results; ``DIR/summary.csv`` has every column.
 """
 
