@@ -91,8 +91,8 @@ def run_scipy(Z, points, temperature, repeat=5):
 
     newton_block and root(hybr) are timed ``repeat`` times each, interleaved (newton, hybr,
     newton, hybr, ...; a fresh residual system every time, so no memo is shared), and every
-    timing is kept: the caller reports medians and the spread over the repeats (session 6:
-    the earlier least-of-3 per method timed the two methods minutes apart on the shared
+    timing is kept: the caller reports medians and the spread over the repeats (a
+    least-of-3 per method timed the two methods minutes apart on the shared
     machine, and the printed ratio followed the machine's load). least_squares (seconds per
     point) runs once. Returns [((speed, Fa), {method: (converged, [times], residual)})]."""
     from scipy.optimize import least_squares, root
@@ -253,7 +253,8 @@ def main(argv=None) -> int:
                     help="interleaved timings of newton_block and root(hybr) per anchor point "
                          "(medians and their spread are reported)")
     ap.add_argument("--anchor-points", type=int, default=None,
-                    help="points of the scipy anchor subset (default: a 3 x 3 grid of the map, "
+                    help="points of the scipy anchor subset (default: every (n/3)-th speed "
+                         "and load of the n x n map, a 4 x 4 grid of the 20 x 20 map; "
                          "the 300/1650/3000 r/min x 40 kN/200 N grid with --quick)")
     ap.add_argument("--no-first-call", action="store_true",
                     help="skip the first-call (numba compile / cache load) measurement")
@@ -325,8 +326,8 @@ def main(argv=None) -> int:
     sub_speeds = speeds[:: max(1, nmap // 3)]
     sub_loads = loads[:: max(1, nmap // 3)]
     if args.quick:
-        # spread over the map (the session-5 quick subset was the first four points, all at
-        # 300 r/min, two of them light-load points where hybr fails early)
+        # spread over the map (the first four points would all be at 300 r/min, two of
+        # them light-load points where hybr fails early)
         sub_speeds, sub_loads = speeds[::2], loads[::2]
     pts = [(float(n), float(fa)) for n in sub_speeds for fa in sub_loads]
     if args.anchor_points:

@@ -8,8 +8,9 @@ Levels (all on the same network, stepper and schedule):
 
 - L0: a global friction model, no kinematics: the SKF four-term model or Palmgren's
   M0 + M1 (:mod:`thermobearing.global_friction`), oil viscosity at the bearing's oil-node
-  temperature, the whole loss on the oil node (driver in ``benchmarks/_protocol.py``:
-  the package has no scene-level L0 model yet);
+  temperature, the whole loss on the oil node (driver in ``benchmarks/_protocol.py``; a
+  scene runs the same rung with ``[models] kinematics = "none"`` and the
+  ``global_friction`` source);
 - L1 race control: quasi-static loads with race-control kinematics
   (``[models] kinematics = "race_control"``) + closed-form film + the local heat sources;
 - L1 skidding: the scene's default (skidding solver + closed-form film + heat sources);
@@ -28,9 +29,10 @@ loss = max |P - P_ref| / P_ref over the bearings' total losses [-]. Budget: 1 K 
 solver settings) and the cheapest solver setting of L1 skidding within the budget.
 
 Solver sweeps of L1 skidding against the same reference: ``solver.kinematics_tolerance``
-0.3, 0.1, 0.03, 0.01, 0.003 (chunk 60 s) and ``solver.chunk`` 180, 90, 60, 30, 15 s
-(tolerance 0.01). ``ratio_vs_anchor`` = (CPU time of the scene's default, L1 skidding at
-tolerance 0.01 and chunk 60 s) / (record CPU time): > 1 is cheaper than the default.
+0.3, 0.1, 0.03, 0.01, 0.003 (at the scene's chunk, 90 s) and ``solver.chunk`` 180, 90, 60,
+30, 15 s (at the scene's tolerance, 0.03). ``ratio_vs_anchor`` = (CPU time of the scene's
+default, L1 skidding at tolerance 0.03 and chunk 90 s) / (record CPU time): > 1 is cheaper
+than the default.
 
 Timing: one warm-up run of a 2-step protocol first (lazy imports, caches) so that no
 record pays first-call costs. Each record has the wall time (``time_s``) and the process
