@@ -229,8 +229,8 @@ def load_bearing(name_or_path: str | Path,
             # the ground gothic arch stays; the free contact angle follows the new clearance
             data = {k: v for k, v in data.items() if k != "contact_angle"}
         # a table overridden by a table is merged key by key (``cage = { guide_clearance =
-        # "0.4 mm" }`` changes that one key; session 12: it replaced the whole [cage] table
-        # and the other cage keys were reported missing); anything else replaces
+        # "0.4 mm" }`` changes that one key; replacing the whole [cage] table left the
+        # other cage keys reported missing); anything else replaces
         data = {**data, **{k: ({**data[k], **v} if isinstance(v, Mapping)
                                and isinstance(data.get(k), Mapping) else v)
                            for k, v in overrides.items()}}

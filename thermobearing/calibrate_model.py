@@ -30,7 +30,7 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
     """The scene's measured temperatures (``time [s]`` + one degC column per sensor),
     checked: every mapped node exists and every sensor has at least one sample. Gaps (empty
     cells, dropout flags: NaN) are kept; the fit leaves each sensor's gaps out of its
-    residuals (session 12: a single dropout made a logger file unusable for calibration)."""
+    residuals (a single dropout made a logger file unusable for calibration)."""
     from .measured import read_scene_measured
 
     if scene.measured is None:

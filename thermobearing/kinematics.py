@@ -172,7 +172,7 @@ def element_kinematics(bearing: Any, inner_speed: float, contact_angle_i: Any = 
     d, dm, g = _geometry(bearing)
     ai, ao = _angles(bearing, contact_angle_i, contact_angle_o)
     if attitude is not None:
-        check_finite("attitude", attitude)  # NaN / inf gave NaN kinematics silently (session 10)
+        check_finite("attitude", attitude)  # NaN / inf gave NaN kinematics silently
     beta = np.asarray(ai if attitude is None else attitude, dtype=float)
     w_rel = inner_speed - outer_speed
     csr, spin_ratio = rolling_speeds(g, ai, ao, beta)

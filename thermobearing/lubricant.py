@@ -263,14 +263,14 @@ class Lubricant:
         if not (np.all(np.isfinite(v)) and np.all(np.asarray(v) > 0.0)):
             # far below the oil's pour point the law's double exponential overflows (ASTM
             # D341 at a few kelvin: OverflowError or inf, then NaN alpha), far above boiling
-            # an exponential law underflows to 0; say so instead (session 10, property tests)
+            # an exponential law underflows to 0; say so instead (property tests)
             raise InputError("temperature", T,
                              f"a temperature at which the {self.viscosity_law} viscosity law of "
                              f"{self.name} is finite and > 0 (it overflows or underflows here; "
                              "the law is meant for the liquid range, cloud to boiling point)")
         if self.viscosity_law == "astm_d341" and np.any(np.asarray(v) > _D341_MAX_NU):
             # the law's stated range ends at 1e6 cSt (its registry entry; below 0.21 cSt the
-            # law itself warns): colder than that it extrapolates (session 10)
+            # law itself warns): colder than that it extrapolates
             warnings.warn(f"{self.name}: ASTM D341 used above 1e6 cSt "
                           f"({float(np.max(v)) * 1e6:.3g} cSt): outside its range (the oil is "
                           "below its pour point)", ValidityWarning, stacklevel=3)
@@ -303,7 +303,7 @@ class Lubricant:
         Hamrock 2004 ch. 4; with an alpha correlation z follows alpha(T). For a Barus oil
         this is the Roelands index with the same initial slope.
         """
-        check_temperature("temperature", T)   # a constant z ignored T (0 K passed; session 10)
+        check_temperature("temperature", T)   # a constant z ignored T (0 K passed)
         pp = self.pressure_parameters
         if "z" in pp:
             return _out(np.full_like(np.asarray(T, dtype=float), pp["z"]))
@@ -377,7 +377,7 @@ class Lubricant:
             rho = astm_d1250_lube_density(T, self.density_reference)
             if not np.all(np.asarray(rho) > 0.0):
                 # the exponential law underflows to 0 at absurd temperatures (1e12 K), and a
-                # zero density divided the skidding models' drag by zero (session 10)
+                # zero density divided the skidding models' drag by zero
                 raise InputError("temperature", T, "temperatures at which the ASTM D1250 "
                                  "density law is > 0 (it underflows far above boiling)")
         else:
@@ -398,7 +398,7 @@ class Lubricant:
         cp, k = LUBRICANT_THERMAL.get(self.thermal_model)(T, **params)
         if not (np.all(np.asarray(cp) > 0.0) and np.all(np.asarray(k) > 0.0)):
             # a linear correlation extrapolated far beyond its range (Cragoe's k turns
-            # negative above ~2100 K) must not return a negative conductivity (session 10)
+            # negative above ~2100 K) must not return a negative conductivity
             entry = LUBRICANT_THERMAL.entry(self.thermal_model)
             raise InputError("temperature", T,
                              f"a temperature at which the {self.thermal_model} thermal "

@@ -18,7 +18,7 @@ bearing (and the models) run as intended:
   leaves a total permanent deformation of about 1e-4 of the element diameter (ISO 76:2006
   Rolling bearings -- Static load ratings, clauses 3.2-3.3: 4200 / 4600 / 4000 MPa for
   radial ball / self-aligning ball / roller bearings, 4200 / 4000 MPa for thrust ball /
-  roller bearings; checked in session 11 against the clause text as reproduced publicly and
+  roller bearings; checked against the clause text as reproduced publicly and
   against NSK's bearing handbook, "Static load ratings"; the standard itself is paywalled).
 - **Film parameter.** Lambda = h / sigma [-] with the contact's film thickness h from the
   scene's film model (central film unless a minimum-film model is named) and the composite

@@ -171,7 +171,7 @@ def test_catalogue_bearing_scene_runs_and_reports_its_estimates(tmp_path, capsys
 
 def test_table_overrides_merge_into_the_preset_table():
     """``overrides = { cage = { guide_clearance = "0.4 mm" } }`` changes that key of the
-    preset's [cage] and keeps the others (until session 12 it replaced the table and the
+    preset's [cage] and keeps the others (earlier versions replaced the table and the
     other cage keys were reported missing); a plain value still replaces."""
     from thermobearing.geometry import load_bearing
 

@@ -158,8 +158,8 @@ def test_column_mapped_to_missing_node_names_column_and_nodes(tmp_path, short_da
 
 def test_gaps_are_left_out_of_the_fit(tmp_path, short_data):
     """A gap (empty cell or logger dropout flag, NaN) leaves that sample of that sensor out
-    of the residuals and is named in the notes (until session 12 any gap refused the whole
-    file); a sensor without a single reading is an error naming it."""
+    of the residuals and is named in the notes (earlier versions refused the whole file for
+    any gap); a sensor without a single reading is an error naming it."""
     gappy = short_data.copy()
     gappy["TC_NDE"] = gappy["TC_NDE"].astype(object)
     gappy.loc[3, "TC_NDE"] = "OVL"

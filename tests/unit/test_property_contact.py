@@ -170,7 +170,7 @@ def test_film_limits_are_not_nan():
 @pytest.mark.parametrize("func", [film.wilson_sheu_1983, film.gupta_1992])
 @pytest.mark.parametrize("field", ["entrainment_speed", "slide_to_roll"])
 def test_thermal_reduction_rejects_nan(func, field):
-    """Defect found here (session 10): a NaN entrainment speed or slide-to-roll ratio gave
+    """Defect found by this test: a NaN entrainment speed or slide-to-roll ratio gave
     phi_T = NaN silently (thermal_loading had no finite check); now InputError names it."""
     kw = dict(entrainment_speed=5.0, dynamic_viscosity=0.02,
               temperature_viscosity_coefficient=0.03, thermal_conductivity=0.13,
@@ -208,7 +208,7 @@ def test_gupta_overflowing_thermal_loading_is_clipped_not_nan():
 
 
 def test_point_contact_far_beyond_small_contact_warns():
-    """Defect found here (session 10): Hertz returned a contact whose half-width is 15 % of
+    """Defect found by this test: Hertz returned a contact whose half-width is 15 % of
     the reduced radius (SKF6304 inner contact, 50 kN on one ball, p_0 = 8.7 GPa) without a
     word; the half-space assumption needs a << R. Now a ValidityWarning beyond 0.1 R_x (the
     package's guard), none at bearing loads (1 kN: p_0 = 2.4 GPa)."""

@@ -77,7 +77,7 @@ def test_impossible_temperatures_raise_input_error(name, method, temperature):
                                     "density", "specific_heat", "thermal_conductivity"])
 @pytest.mark.parametrize("temperature", [1.0, np.array([1.0, 300.0]), 5000.0, 1e12])
 def test_extreme_temperatures_finite_or_clear_error(name, method, temperature):
-    """Defect found here (session 10): at 1 K the ASTM D341 presets raised OverflowError
+    """Defect found by this test: at 1 K the ASTM D341 presets raised OverflowError
     (a bare math error) and MIL_PRF_23699's alpha was NaN; at 5000 K Cragoe's conductivity
     was negative (-0.21 W/(m K)); at 1e12 K the ASTM D1250 density underflowed to 0 (the ball
     skidding models then divided by it: ZeroDivisionError). Now either a finite positive value
@@ -104,7 +104,7 @@ def test_bad_pressure_names_field(pressure):
 def test_d341_beyond_its_upper_range_warns():
     """ASTM D341's stated range ends at 1e6 cSt (registry entry of the law); below 0.21 cSt
     the law itself warns, above 1e6 cSt (ISO VG 100 at -55 degC: 1.9e7 cSt, far below its pour
-    point) it extrapolated silently until session 10. Normal cold starts (-20 degC) do not
+    point) it extrapolated silently in earlier versions. Normal cold starts (-20 degC) do not
     warn."""
     lub = PRESETS["ISO_VG100"]
     with pytest.warns(ValidityWarning, match="above 1e6 cSt"):

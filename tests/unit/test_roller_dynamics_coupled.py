@@ -61,7 +61,7 @@ def test_coupled_run_without_unbalance():
 @pytest.mark.slow
 def test_coupled_refresh_convergence():
     # the traction linearisation refreshed every 20 us vs 10 us: slip and PV agree
-    # (evaluate path, base case, 0.11 g; measured session 6: slip 5.619 vs 5.604 m/s, PV
+    # (evaluate path, base case, 0.11 g; measured: slip 5.619 vs 5.604 m/s, PV
     # 1263 vs 1255 MPa m/s). On the table path a different refresh is a different trajectory
     # of the chaotic impacting motion, whose one-orbit slip scatters by about +-1.5 % (paper003
     # SOURCE.md; measured 5.60 vs 5.44 m/s there), so the refresh itself is checked on the
@@ -139,7 +139,7 @@ def test_cage_land_coefficient_is_petroff():
     assert k == pytest.approx(ref, rel=1e-12) and w_g == SPEED
 
 
-# --- cage band and the table path's fallback (session 6, D3) -------------------------------
+# --- cage band and the table path's fallback (D3) -------------------------------
 # The state that stopped configs/scenes/crb_rib_example.toml with 0.06 g: paper 003's bearing
 # as the scene's NUP variant, 20000 r/min, 3 kN, MIL-PRF-23699 at 420 K (the "elements" node
 # the scene's transient probed). On the table path the cage ran away (886 -> 1840 rad/s, one

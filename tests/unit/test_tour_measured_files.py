@@ -230,7 +230,7 @@ def test_dropout_flags_and_empty_cells_are_gaps(tmp_path, original, reference, r
     assert err.loc[DE, "points"] == 61 - len(flags)
     assert err.loc[DE, "RMSE [K]"] == pytest.approx(expect.loc[DE, "RMSE [K]"], rel=1e-14)
     assert np.isfinite(err["RMSE [K]"]).all()
-    # calibration leaves each sensor's gaps out of its residuals (session 12; before: a
+    # calibration leaves each sensor's gaps out of its residuals (before: a
     # named error): the table keeps them as NaN
     nodes = ["drive_end.housing", "non_drive_end.housing"]
     table = measured_table(scene, nodes)

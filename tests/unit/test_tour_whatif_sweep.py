@@ -166,7 +166,7 @@ def test_sweep_report_reads_the_new_summary(scene, tmp_path, capsys):
     assert cli.main(["report", str(tmp_path)]) == 0
     html = (tmp_path / "report.html").read_text()
     assert "what-if: supply.flow [L/min]" in html
-    # the oil grade (text) gets its own what-if figure (session 12; before: skipped)
+    # the oil grade (text) gets its own what-if figure (before: skipped)
     assert "what-if: lubricant.preset" in html
     assert html.count("<img") == 2
 

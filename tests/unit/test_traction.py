@@ -167,7 +167,7 @@ def test_misspelt_traction_parameter_lists_the_documented_ones():
 
 
 def test_vectorisable_log_and_asinh_match_the_c_library():
-    # session 8: the Eyring fast path of the contact integration uses branch-free log / asinh
+    # the Eyring fast path of the contact integration uses branch-free log / asinh
     # so that its node loop vectorises. The log (fdlibm's algorithm) must agree with the C
     # library's log (Python's math module) to 1 ulp; the asinh ln(x + sqrt(1 + x^2)) to 2 ulp
     # where asinh >= 0.5 and to 2.8e-16 absolute below (its documented accuracy: absolute,

@@ -36,7 +36,7 @@ temperature), which is continuous at the boundary; the rolling force there stays
 form's. The Couette stress in the Hertz zone is the skidding solver's traction law (limiting
 shear stress), not the stress of the thermal solution (Newtonian: unbounded at GPa pressures).
 
-Hertz-zone pressure (session 5): the traction law is evaluated under the film pressure of
+Hertz-zone pressure: the traction law is evaluated under the film pressure of
 :func:`thermobearing.skidding.roller_pressure.hertz_zone_pressure` with the model
 ``"regime_min"`` (default of :func:`tehl_contact_forces`' ``film_pressure``): the
 semi-elliptic shape with the peak ``min(p_H, p_rig)``, ``p_rig`` the rigid-isoviscous
@@ -311,7 +311,7 @@ def tehl_contact_forces(load: Any, length: float, radius: float, effective_modul
     (``solve_roller(..., film_model=TehlFilmModel(...), drag_model="numerical_tehl")``).
     ``film_pressure``: pressure under which the Hertz-zone oil is sheared, ``"regime_min"``
     (default: the smaller of the Hertz and the rigid-isoviscous peak, module docstring) or
-    ``"hertz"`` (p_H at every load, the model before session 5); the Hertz-zone integral is
+    ``"hertz"`` (p_H at every load, the earlier model); the Hertz-zone integral is
     then :func:`thermobearing.skidding.roller_maxwell.maxwell_contact_forces` with a viscous
     film (the traction law point by point), the code path of the isothermal option.
     """

@@ -51,7 +51,7 @@ L_RANGE = (0.0, 40.0)
 #: ``solve_dimensionless`` warns that the pressure peak is not grid-converged [-]
 MAX_PRESSURE_CHANGE = 0.1
 #: Newton iterations allowed from the Hertz/Moes initial guess before the coarse-grid time
-#: march takes over (BM-6, session 4: heavy loads converge directly in 6-12 iterations,
+#: march takes over (BM-6: heavy loads converge directly in 6-12 iterations,
 #: M = 10 does not converge at all without the march).
 DIRECT_START_ITERATIONS = 15
 #: Levels with at most this many nodes use the dense Newton (LU of the full matrix).
@@ -61,10 +61,10 @@ DENSE_LEVEL_MAX = 384
 #: the Richardson estimate, a difference of >= 1e-4 relative), ``FEED_TOL`` on the grids
 #: below, which only give the next grid its start (whose Newton re-adjusts the exit spike
 #: anyway). The discretisation error of the films is >= 1e-4 (relative) at the BM-6
-#: resolutions; against 1e-8 / 1e-6 / 1e-6 (session 4) these values change h_c, h_min and
+#: resolutions; against 1e-8 / 1e-6 / 1e-6 these values change h_c, h_min and
 #: p_max of the BM-6 cases by < 1e-6 (relative) and the error estimate in its 4th digit, and
 #: save the last (quadratic) Newton iteration of each level (BM-6, N = 1024: 205 -> 183
-#: Newton iterations over the 9 cases; session 5).
+#: Newton iterations over the 9 cases).
 FINE_TOL = 1e-7
 COARSE_TOL = 1e-5
 FEED_TOL = 1e-3
@@ -237,10 +237,10 @@ def start_grid(M: float) -> int:
     """Nodes of the start grid (the coldest solve) for Moes load ``M``.
 
     The start grid must resolve the exit spike well enough for the time march / Newton to
-    converge, and every node there costs a dense Newton iteration. Measured (session 4, N =
+    converge, and every node there costs a dense Newton iteration. Measured (N =
     1024, L in {2, 5, 10, 20}): 64 nodes converge for 5 <= M <= 50 and save 10-40 % against
     128 (M = 10, L = 20: 72 against 114 ms), fail from M = 100; 128 nodes fail for M = 200
-    and 250 with L <= 5 (before session 4 as well), 256 converge for 120 <= M <= 250; M >= 300
+    and 250 with L <= 5 (as with the earlier solver), 256 converge for 120 <= M <= 250; M >= 300
     starts on 512 nodes as before. A start that fails is retried on twice the nodes (see
     :func:`solve_dimensionless`).
     """

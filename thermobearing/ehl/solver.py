@@ -331,19 +331,19 @@ def newton_solve(
     band : near-field half-width (nodes) of the two-level preconditioner
         (:class:`thermobearing.ehl.precond.TwoLevelPreconditioner`; its far field is carried
         on a coarse grid of spacing ``band/2``). Default ``max(16, n // 64)``: BM-6 at 2048
-        nodes (session 4), median 92 ms with 32 against 134 ms with 16 (the coarse grid and
+        nodes, median 92 ms with 32 against 134 ms with 16 (the coarse grid and
         its dense parts halve); at 1024 nodes 16 and 32 were within the timing noise.
     gmres_rtol : relative tolerance of the inner GMRES solve (an inexact Newton forcing
         term, Dembo, Eisenstat & Steihaug 1982): 1e-2 left the Newton iteration counts of
         BM-6 unchanged (+-1) and cut its GMRES iterations by about a quarter against 1e-4.
-        (An Eisenstat-Walker adaptive forcing term was tried in session 4: the same Newton
+        (An Eisenstat-Walker adaptive forcing term was tried: the same Newton
         iteration counts, 305 against 306 over BM-6 at N = 1024 -- the last iterations are
         slowed by the degenerate complementarity node at the film rupture, not by GMRES.)
     reuse_gmres : the far-field (coarse) part of the preconditioner, its costly part, is
         kept from one Newton iteration to the next while the last GMRES solve took at most
         this many iterations; the banded near field is refactored at every iteration (it
         follows the local changes at the exit spike and the rupture point). BM-6 at N = 1024
-        (session 4): 369 GMRES iterations over the 9 cases with the near field refreshed,
+       : 369 GMRES iterations over the 9 cases with the near field refreshed,
         812 with the whole preconditioner lagged; the far field was rebuilt only once per
         grid level.
 
@@ -449,7 +449,7 @@ def newton_solve(
 
 
 #: Local smoothing of a prolongated start (:func:`smooth_spike`): half-width of the window
-#: [nodes] and number of local Newton steps (BM-6, session 5, see the function).
+#: [nodes] and number of local Newton steps (BM-6, see the function).
 SPIKE_WINDOW = 16
 SPIKE_ITERATIONS = 4
 #: ... only where the start's largest scaled residual exceeds this (a spike far off) [-]

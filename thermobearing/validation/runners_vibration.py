@@ -133,7 +133,7 @@ def paper004_bpfo_with_slip(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     out: dict[str, float] = {}
     for slip in inputs["cage_slips"]:
         # recorded as a DAQ would (low-passed to the rate): point sampling at 25.6 kHz folds
-        # the ball's 46 kHz radial mode into the record (a ValidityWarning, session 12)
+        # the ball's 46 kHz radial mode into the record (a ValidityWarning)
         r = V.simulate(params, ws, load, traction=_law(inputs), cage_slip=float(slip),
                        duration=dur, settle_time=0.05, sampling_rate=fs, anti_alias=True)
         f, _ = S.spectral_peak(r.acceleration_x, fs, 0.5 * f0 * (1 - float(slip)),

@@ -104,7 +104,7 @@ def test_film_only_scene_reports_thermal_film_below_closed_form():
     assert np.all(hm <= hc * (1 + 1e-9))
     inner = film[film["race"] == "inner"]["minimum film [um]"].iloc[0]
     assert 0.3 < inner < 0.6  # paper 001: 0.445 um (within its 20 % band and some)
-    # the table's work is recorded and summarised (session 12: a run sat minutes in thermal
+    # the table's work is recorded and summarised (a run sat minutes in thermal
     # solves without a sign); a film-only run books no loss, so no heat-source note
     table = res.stats[f"{sim.bearings[0].name}: film table"]
     model = sim.bearings[0].kin_options["film_model"]

@@ -109,7 +109,7 @@ def test_smooth_kernel_split_is_c2_and_interpolates_from_the_coarse_grid():
 
 def test_two_level_preconditioner_is_close_to_the_newton_matrix():
     # spectral radius of I - M^-1 A for the Newton matrix A at a converged M = 100, L = 10
-    # solution on 256 nodes and at a perturbed state; measured 0.08 on 512 nodes (session 4)
+    # solution on 256 nodes and at a perturbed state; measured 0.08 on 512 nodes
     from thermobearing.ehl.line import solve_dimensionless
     from thermobearing.ehl.precond import TwoLevelPreconditioner
     from thermobearing.ehl.reynolds import fischer_burmeister as _fb

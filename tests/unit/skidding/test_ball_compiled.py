@@ -308,7 +308,7 @@ def test_compiled_fd_blocks_equal_the_numpy_formulas():
 
 
 def test_vectorised_hertz_and_film_equal_the_scalar_kernels():
-    # session 8: the residual's Hertz constants, ellipse and film run in vectorised loops
+    # the residual's Hertz constants, ellipse and film run in vectorised loops
     # with branch-free log / exp (ball_residual._hb_point, _ellipse_vec, _hd1977_central_vec);
     # they must equal the scalar kernels of hertz / film (libm powers and cube roots) to
     # round-off: measured <= 1.1e-15 relative (Hertz) and 6.7e-15 (film) over these ranges

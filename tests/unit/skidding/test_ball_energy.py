@@ -60,14 +60,14 @@ def test_chord_polish_tightens_a_loose_converged_state(setup):
     assert taken and nrm < 1e-9
     tight = _result(system, X2, G2, nrm, 1, 0.0, r.theoretical_cage_speed_ratio)
     # measured 7.7e-10 with the finite-difference chord Jacobian, 2.2e-9 with the analytic
-    # one (session 7; the converged state itself is at 1.3e-9 there, its residual 1.4e-11):
+    # one (the converged state itself is at 1.3e-9 there, its residual 1.4e-11):
     # inside the 1e-8 either way, from 1.6e-5 before the step
     assert _identity(tight, w) < 5e-9
     assert tight.cage_speed_ratio == pytest.approx(r.cage_speed_ratio, rel=1e-10)
 
 
 def test_kinematic_state_carries_the_tractions_the_raceway_source_would_integrate():
-    # session 8: the solver's KinematicState hands its contact tractions to the raceway heat
+    # the solver's KinematicState hands its contact tractions to the raceway heat
     # source (ContactSet.traction, lead's mechanism): they must be what that source computes
     # when it integrates the same law and quadrature itself (tractions stripped), and equal
     # the solver's own raceway heat

@@ -1,4 +1,4 @@
-"""The trust-region fallback of solve_ball (session 6).
+"""The trust-region fallback of solve_ball.
 
 At the BM-5 map point QJ1044 with 16 balls, 30 degC ISO VG46 (33 L/min jets), 3000 r/min,
 Fr = 1 kN, Fa = 15.7 kN the damped Newton of ``newton_block`` stalls at a scaled residual of
@@ -48,7 +48,7 @@ def test_newton_alone_stalls_there(setting):
 
 
 def test_newton_with_the_analytic_jacobian_converges_there(setting):
-    # session 7: with the analytic Jacobian (skidding/ball_jacobian.py; exact where the
+    # with the analytic Jacobian (skidding/ball_jacobian.py; exact where the
     # finite-difference spin columns straddle the Eyring knee) the same Newton converges
     b, m = setting
     system = ball_residual_system(b, m, W3000, 1000.0, FA, 16)

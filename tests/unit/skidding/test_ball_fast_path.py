@@ -157,8 +157,8 @@ def test_reused_jacobian_is_rescaled_exactly(bearing, models, states):
     # finite differences with a step of 1e-5 (scaled unknowns): the same physical perturbation
     # in both systems (the scales of the positions, spins and globals do not depend on the
     # loads; the residual is linear in the pocket force), and a round-off noise 100x below
-    # the solver's 1e-7 step, whose noise (|diff| / max|J| of Dg 1.75e-7 with the session-7
-    # code, 2.3e-7 after session 8's vectorised Hertz / film; 1.75e-9 / 1.8e-9 with 1e-5,
+    # the solver's 1e-7 step, whose noise (|diff| / max|J| of Dg 1.75e-7 with the scalar
+    # kernels, 2.3e-7 with the vectorised Hertz / film; 1.75e-9 / 1.8e-9 with 1e-5,
     # measured) sat at this test's tolerance and made it pass or fail by round-off
     j1 = _fresh_blocks(s1, X, G, fd_step=1e-5)
     j2 = _fresh_blocks(s2, X, G, fd_step=1e-5)
