@@ -200,3 +200,13 @@ def test_sensors_have_their_own_marker_in_their_nodes_colour_and_the_axes_are_th
     # the predicted 35-46.8 degC and the in-run readings (up to 47.1), not the 900 degC
     # after the run nor the pinned 1372: 5 % of that span either side
     assert 34.0 < low < 35.0 and 47.1 < high < 48.0
+
+
+def test_a_run_longer_than_the_file_is_compared_where_the_file_has_data(tmp_path):
+    scene = _scene(_logger_file(tmp_path / "short.csv", [0.0, 10.0, 20.0, 30.0]))
+    measured = read_measured(scene)
+    err = temperature_errors(_temps(), measured, COLUMNS).set_index("sensor")
+    assert err.loc["TC_NDE", "points"] == 4
+    lines = terminal_lines(measured, _temps(), COLUMNS)
+    assert any("the run is compared with measured data only where the file has them "
+               "(measured 0-30 min, run 0-60 min)" in x for x in lines)
