@@ -167,7 +167,7 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
     [kN]``, ``axial load [kN]``, ``oil [degC]``, ``this run [W]``, ``<model> [W]``,
     ``this run vs <model> [%]``, the models named as in :data:`CATALOGUE_MODELS`) and one
     note per model a bearing cannot be estimated with (the model's error, e.g. a
-    designation without a series)."""
+    designation without a series). Steps at rest (0 r/min) are left out, with a note."""
     from .global_friction import global_friction
 
     needed = ("step", "bearing", "speed [rpm]", "radial load [kN]", "axial load [kN]",
@@ -183,7 +183,13 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
     level = scene.supply.level
     rows, notes = [], []
     refused: set[tuple[str, str]] = set()
+    at_rest: list[Any] = []
     for (step, name), p in points.iterrows():
+        if float(p["speed"]) == 0.0:
+            # a stop of the protocol: no loss in the run nor in either model, no ratio
+            if step not in at_rest:
+                at_rest.append(step)
+            continue
         row: dict[str, Any] = {"step": step, "bearing": name, "speed [rpm]": p["speed"],
                                "radial load [kN]": p["radial"], "axial load [kN]": p["axial"],
                                "oil [degC]": p["T"] - _KELVIN, "this run [W]": p["total"]}
@@ -206,4 +212,7 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
             row[f"this run vs {label} [%]"] = (100.0 * (p["total"] / res.power - 1.0)
                                                if res.power > 0 else math.nan)
         rows.append(row)
+    if at_rest:
+        notes.append("steps at rest (0 r/min) left out: no loss in the run nor in the "
+                     "models (steps " + ", ".join(str(s) for s in at_rest) + ")")
     return pd.DataFrame(rows), notes

@@ -62,7 +62,9 @@ def html_table(df: pd.DataFrame | None, max_rows: int = MAX_ROWS, *,
         else:
             shown = df.iloc[:max_rows]
             note = f"first {max_rows} of {len(df)} rows shown{where}"
-    text = shown.to_html(index=False, float_format=fmt_number, border=0,
+    # an undefined value (a sensor without samples, the cage speed ratio at rest) reads
+    # as a dash, not "NaN"
+    text = shown.to_html(index=False, float_format=fmt_number, border=0, na_rep="\u2014",
                          formatters=_formatters(shown))
     return text + (f"<p class='note'>({html.escape(note)})</p>" if note else "")
 

@@ -138,7 +138,7 @@ def test_measured_file_missing(tmp_path, capsys):
     data = edited("measured", {"file": "nope.csv", "columns": {"TC1": "de.housing"}})
     code, err = run_cli(capsys, "check", write_scene(tmp_path, data))
     assert code == 1
-    assert_one_paragraph(err, "measured.file", "'nope.csv'", "an existing CSV file")
+    assert_one_paragraph(err, "measured.file", "'nope.csv'", "an existing data file")
 
 
 def test_measured_good_file_passes_check(tmp_path, capsys):

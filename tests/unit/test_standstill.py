@@ -18,6 +18,31 @@ from thermobearing.state import OilSupply, OperatingPoint
 
 OIL = load_lubricant("ISO_VG46")
 SUPPLY = OilSupply("jet", 33 / 60000, 308.15)
+STOP_SCENE = """
+title = "run, stop, run"
+[[bearings]]
+name = "de"
+preset = "QJ1044"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+flow = "33 L/min"
+inlet_temperature = "35 degC"
+[environment]
+ambient_temperature = "35 degC"
+[schedule]
+radial_load = "1 kN"
+axial_load = "10 kN"
+step_duration = "10 min"
+steps = [{ speed = "1800 rpm" }, { speed = "0 rpm" }, { speed = "1200 rpm" }]
+[models]
+kinematics = "race_control"
+[network]
+template = "four_node_paper002"
+parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
+[outputs]
+want = ["temperatures", "losses", "kinematics", "energy"]
+"""
 
 
 @pytest.mark.parametrize("model", ["race_control", "skidding", "none"])
@@ -65,31 +90,8 @@ def test_every_source_books_zero_at_rest():
 
 
 def test_protocol_with_a_stop_cools_during_it_and_closes_the_energy_books(tmp_path):
-    scene = loads_scene("""
-title = "run, stop, run"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-[schedule]
-radial_load = "1 kN"
-axial_load = "10 kN"
-step_duration = "10 min"
-steps = [{ speed = "1800 rpm" }, { speed = "0 rpm" }, { speed = "1200 rpm" }]
-[models]
-kinematics = "race_control"
-[network]
-template = "four_node_paper002"
-parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
-[outputs]
-want = ["temperatures", "losses", "kinematics", "energy"]
-""")
+    scene = loads_scene(STOP_SCENE)
+
     res = Simulation(scene, progress=False).run(out_dir=tmp_path)
     losses = res.tables["losses"]
     stop = losses[losses["step"] == 1]
@@ -106,3 +108,24 @@ want = ["temperatures", "losses", "kinematics", "energy"]
     assert np.all(np.diff(housing[during]) <= 1e-9)
     e = res.tables["energy"].iloc[-1]
     assert abs(e["imbalance [J]"]) <= 1e-4 * e["generated [J]"]
+
+
+def test_report_of_a_protocol_with_a_stop_has_no_nan(tmp_path):
+    """The report's tables show undefined values at rest as a dash and the catalogue
+    cross-check leaves the stop out with a note (its ratio would be 0 / 0)."""
+    from thermobearing.report_context import catalogue_crosscheck
+
+    scene = loads_scene(STOP_SCENE.replace('want = ["temperatures", "losses", "kinematics", '
+                                           '"energy"]', 'want = ["losses", "report"]'))
+    res = Simulation(scene, progress=False).run(out_dir=tmp_path)
+    import re
+
+    # the text of the page (the embedded figures' base64 may hold any letters)
+    html = re.sub(r"data:image/png;base64,[^\"']*", "", (tmp_path / "report.html").read_text())
+    assert "NaN" not in html and ">nan<" not in html
+    sim = Simulation(scene, progress=False)
+    table, notes = catalogue_crosscheck(res.tables["losses"], res.tables, scene,
+                                        {b.name: b.bearing for b in sim.bearings},
+                                        sim.lubricant)
+    assert list(table["step"]) == [0, 2]
+    assert any("steps at rest (0 r/min) left out" in n and "(steps 1)" in n for n in notes)
