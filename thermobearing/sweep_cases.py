@@ -1,0 +1,84 @@
+"""The cases of a sweep: the cartesian product of the swept values, each one a scene.
+
+:func:`expand` turns the swept fields (:class:`~thermobearing.sweep_params.SweepParameter`)
+into one :class:`Case` per combination: its id (independent of the order of the ``--set``
+options), the values it sets and the TOML text of its scene, whose file paths are made
+absolute so that the text runs anywhere (a worker process, a dask worker).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+from .scene import Scene, loads_scene
+from .sweep_params import SweepParameter, assign_path
+
+
+def _absolute_paths(d: dict[str, Any], base_dir: Path | None) -> None:
+    """Make the scene's relative file paths (bearing and lubricant TOMLs, measured CSV)
+    absolute against the scene's folder, so that a case's TOML text runs anywhere."""
+    if base_dir is None:
+        return
+
+    def fix(table: Any, key: str) -> None:
+        if isinstance(table, dict) and isinstance(table.get(key), str):
+            path = Path(table[key])
+            if not path.is_absolute():
+                table[key] = str(base_dir / path)
+
+    for bearing in d.get("bearings", []):
+        fix(bearing, "path")
+    fix(d.get("lubricant"), "path")
+    fix(d.get("measured"), "file")
+
+
+@dataclass(frozen=True)
+class Case:
+    """One combination of sweep values."""
+
+    case_id: str
+    assignments: tuple[tuple[str, Any], ...]
+    scene_toml: str
+
+
+def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
+    """Cartesian product of the sweep values, each validated as a scene (a path swept
+    twice is an error; a repeated combination is one case)."""
+    paths = [p.path for p in params]
+    for path in paths:
+        if paths.count(path) > 1:
+            raise InputError("--set", path, "each path once (give all its values in one "
+                             "--set, e.g. supply.flow=15,20,33)")
+    base = scene.to_dict()
+    base_text = scene.to_toml()
+    cases: list[Case] = []
+    seen: set[str] = set()
+    base_dir = Path(scene.base_dir) if scene.base_dir else None
+    for combo in itertools.product(*(p.values for p in params)):
+        assignments = tuple((p.path, v) for p, v in zip(params, combo, strict=True))
+        d = json.loads(json.dumps(base))
+        for path, value in assignments:
+            assign_path(d, path, value)
+        _absolute_paths(d, base_dir)  # the runner gets only the TOML text, not the folder
+        sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
+        # the id does not depend on the order of the --set options (distinct paths commute)
+        key = json.dumps([base_text, sorted([list(a) for a in assignments], key=str)],
+                         sort_keys=True)
+        cid = hashlib.sha1(key.encode()).hexdigest()[:12]
+        if cid in seen:
+            continue
+        seen.add(cid)
+        cases.append(Case(cid, assignments, sc.to_toml()))
+    return cases
+
+
+def scene_from_case(case: Case) -> Scene:
+    """The scene of one case."""
+    return loads_scene(case.scene_toml)

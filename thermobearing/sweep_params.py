@@ -1,0 +1,310 @@
+"""The ``--set`` parameter language of a sweep: dotted scene paths and their values.
+
+``--set supply.flow=15,20,25,33`` or ``--set schedule.speed=600:1800:300`` names a field of
+the scene by its dotted path and gives its values (:func:`parse_set`); :func:`check_path`
+says whether a sweep (or a calibration fit) may set that path, :func:`get_path` and
+:func:`assign_path` read and write it in a scene dict.
+
+Values: a comma list (``15,20,25,33``) or a range ``start:stop:step`` (stop included).
+A bare number takes the unit the scene uses for that field (``schedule.speed=600:1800:300``
+with a scene written in rpm means rpm; a field the scene leaves out takes
+:data:`DISPLAY_UNITS` / :data:`PATH_UNITS`: L/min, degC, % for ``checks.skid_limit``, MPa
+for the contact-stress limits); a unit may be given after the list
+(``supply.flow=15,33 L/min``) or with each value. Text values are presets
+(``lubricant.preset=ISO_VG32,ISO_VG68``). A repeated value (the same quantity) is dropped
+and reported in :attr:`SweepParameter.dropped`. ``schedule.<field>`` sets that field in
+every step; ``checks.<threshold>`` sets a validity-check threshold (no physics changes).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .errors import InputError
+
+DISPLAY_UNITS = {  # display unit used when the scene's own value carries none
+    "speed": "rpm", "radial_load": "kN", "axial_load": "kN", "duration": "min",
+    "flow": "L/min", "inlet_temperature": "degC", "ambient_temperature": "degC",
+    "initial_temperature": "degC", "level": "mm",
+}
+#: display units of whole paths (checked before DISPLAY_UNITS): the [checks] thresholds of
+#: operating_checks, so that a bare 2 means 2 % and a bare 3500 means 3500 MPa
+PATH_UNITS = {
+    "checks.skid_limit": "%", "checks.contact_stress_limit": "MPa",
+    "checks.contact_stress_limit.ball": "MPa",
+    "checks.contact_stress_limit.self_aligning_ball": "MPa",
+    "checks.contact_stress_limit.roller": "MPa",
+}
+
+
+@dataclass(frozen=True)
+class SweepParameter:
+    """One swept field: dotted path and its values (TOML-ready strings or numbers).
+
+    ``dropped``: values of the ``--set`` text left out because they repeat an earlier one
+    (the same quantity, e.g. ``15`` after ``15 L/min``), as ``"'15' (= '15 L/min')"``.
+    """
+
+    path: str
+    values: tuple[Any, ...]
+    dropped: tuple[str, ...] = ()
+
+
+def _split_unit(text: str) -> tuple[str, str]:
+    """``"15,33 L/min"`` -> ``("15,33", "L/min")``: the numbers (ending in a digit or a dot),
+    then the unit (whatever follows, starting with a letter or ``%``). Text that does not
+    start with numbers comes back whole with no unit."""
+    m = re.match(r"^\s*([-+0-9.eE:,\s]*[0-9.])\s*([A-Za-z%].*?)?\s*$", text)
+    if not m:
+        return text, ""
+    return m.group(1), (m.group(2) or "").strip()
+
+
+def _number(text: str, field: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise InputError(field, text, "a number (several values are separated by commas: "
+                         "15,20,33 or 15,20,33 L/min)") from None
+
+
+def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
+    """Unit of the field's current value in the scene (for bare sweep numbers); for a
+    bearing override the scene does not set, the unit of the bearing preset's value
+    (``bearings.0.overrides.diametral_clearance=0.1,0.2`` means mm for QJ1044, whose
+    preset writes "0.10 mm")."""
+    try:
+        value = get_path(scene_dict, path)
+    except (KeyError, IndexError, ValueError, TypeError):
+        value = None
+    parts = path.split(".")
+    if value is None and len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
+        value = bearing_file_value(scene_dict, parts[1], parts[3:])
+    if isinstance(value, str):
+        words = value.split(maxsplit=1)
+        if len(words) == 2:
+            return words[1]
+    return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
+
+
+def bearing_file_value(scene_dict: Mapping[str, Any], index: str, keys: Sequence[str]) -> Any:
+    """The raw value of ``keys`` in the bearing TOML (preset or absolute path) of the
+    scene's bearing ``index``; None when it cannot be read."""
+    import tomllib
+
+    from .scene import configs_dir
+
+    try:
+        bearing = scene_dict["bearings"][int(index)]
+        if "preset" in bearing:
+            file = configs_dir() / "bearings" / f"{bearing['preset']}.toml"
+        else:
+            file = Path(bearing["path"])
+        cur: Any = tomllib.loads(file.read_text(encoding="utf-8"))
+        for key in keys:
+            cur = cur[key]
+        return cur
+    except (KeyError, IndexError, ValueError, TypeError, OSError, tomllib.TOMLDecodeError):
+        return None
+
+
+def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
+    """Parse one ``--set path=values`` argument against the scene it applies to."""
+    if "=" not in spec:
+        raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
+    path, raw = (s.strip() for s in spec.split("=", 1))
+    if not path or not raw:
+        raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
+    check_path(scene_dict, path)
+    if ":" in raw:
+        numbers, unit = _split_unit(raw)
+        if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):
+            raise InputError(f"--set {path}", raw, "a range start:stop:step with one unit")
+        parts = numbers.split(":")
+        if len(parts) != 3:
+            raise InputError(f"--set {path}", raw, "a range start:stop:step")
+        a, b, d = (_number(p, f"--set {path}") for p in parts)
+        if d <= 0 or b < a:
+            raise InputError(f"--set {path}", raw, "start <= stop and step > 0")
+        n = int(math.floor((b - a) / d + 1e-9)) + 1
+        unit = unit or _existing_unit(scene_dict, path)
+        return SweepParameter(path, tuple(f"{a + i * d:g} {unit}" if unit else a + i * d
+                                          for i in range(n)))
+    items = [v.strip() for v in raw.split(",") if v.strip()]
+    if not items:
+        raise InputError(f"--set {path}", raw, "at least one value")
+    split = [_split_unit(v) for v in items]
+    numeric = [bool(re.fullmatch(r"[-+0-9.eE ]+", num)) for num, _ in split]
+    if not any(numeric):
+        return _unique(path, items, items)  # strings: lubricant presets etc.
+    # each value may carry its own unit ("30 degC,50 degC"); a bare number takes the unit
+    # written after the list ("15,33 L/min"), else the unit of the scene's current value.
+    # A text among numbers ("15,abc") is passed on as written, so that the scene's check
+    # names that value.
+    last = max(i for i, ok in enumerate(numeric) if ok)
+    trailing = split[last][1] or _existing_unit(scene_dict, path)
+    values: list[Any] = []
+    for item, (num, unit), ok in zip(items, split, numeric, strict=True):
+        if not ok:
+            values.append(item)
+            continue
+        x = _number(num.strip(), f"--set {path}")
+        unit = unit or trailing
+        if unit:
+            values.append(f"{x:g} {unit}")
+        else:  # a count written as a whole number stays an integer (n_balls=18,20)
+            values.append(int(num) if re.fullmatch(r"\s*[-+]?\d+\s*", num) else x)
+    return _unique(path, values, items)
+
+
+def _same_quantity_key(value: Any) -> Any:
+    """Key under which two sweep values are the same quantity ("15 L/min" and "0.25 L/s");
+    the text itself when it is not a quantity."""
+    if isinstance(value, int | float) and not isinstance(value, bool):
+        return ("", float(f"{float(value):.12g}"))
+    try:
+        from .units import unit_registry
+
+        q = unit_registry().Quantity(value).to_base_units()
+        return (f"{q.units:~}", float(f"{float(q.magnitude):.12g}"))
+    except Exception:  # noqa: BLE001 - not a quantity (a preset name ...): compare the text
+        return ("text", str(value).strip())
+
+
+def _unique(path: str, values: Sequence[Any], written: Sequence[str]) -> SweepParameter:
+    """The parameter with repeated values dropped (a repeated value would run the same case
+    twice); what was dropped is kept in ``dropped`` for the command to say."""
+    kept: list[Any] = []
+    seen: dict[Any, Any] = {}
+    dropped: list[str] = []
+    for value, text in zip(values, written, strict=True):
+        key = _same_quantity_key(value)
+        if key in seen:
+            dropped.append(f"{text!r} (= {seen[key]!r})")
+            continue
+        seen[key] = value
+        kept.append(value)
+    return SweepParameter(path, tuple(kept), tuple(dropped))
+
+
+def get_path(d: Mapping[str, Any], path: str) -> Any:
+    """Value at a dotted path of a scene dict (``schedule.<field>``: the first step's)."""
+    cur: Any = d
+    parts = path.split(".")
+    if parts[0] == "schedule" and len(parts) == 2 and "steps" in d.get("schedule", {}):
+        return d["schedule"]["steps"][0][parts[1]]
+    for p in parts:
+        if isinstance(cur, list):
+            cur = cur[int(p)]
+        else:
+            cur = cur[p]
+    return cur
+
+
+_SETTABLE_NEW = {  # optional fields a sweep may set although the scene leaves them out
+    "supply": ("method", "flow", "inlet_temperature", "level"),
+    "environment": ("ambient_temperature", "initial_temperature"),
+    "solver": ("stepper", "rtol", "atol", "kinematics_tolerance", "max_step"),
+    "schedule": ("speed", "radial_load", "axial_load", "duration"),
+    "lubricant": ("preset", "path"),
+    # the validity-check thresholds (optional [checks] table; they change no physics)
+    "checks": ("skid_limit", "contact_stress_limit", "min_film_parameter"),
+}
+
+#: what an unknown path error offers as examples
+_KNOWN_PATHS = ("supply.flow, supply.inlet_temperature, schedule.speed, "
+                "schedule.axial_load, environment.ambient_temperature, lubricant.preset, "
+                "checks.skid_limit, bearings.0.overrides.<field>, network.parameters.<name>")
+
+
+def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") -> None:
+    """Raise InputError unless ``path`` names a field a sweep or a fit may set.
+
+    ``option``: the option or argument named in the error (``--set`` for a sweep,
+    ``fit`` for a calibration).
+    """
+    from .operating_checks import STRESS_FAMILIES
+
+    parts = path.split(".")
+    try:
+        get_path(scene_dict, path)
+        return
+    except (KeyError, IndexError, ValueError, TypeError):
+        pass
+    if len(parts) == 2 and parts[1] in _SETTABLE_NEW.get(parts[0], ()):
+        return
+    if len(parts) == 3 and parts[:2] == ["checks", "contact_stress_limit"]:
+        current = scene_dict.get("checks", {}).get("contact_stress_limit")
+        if parts[2] not in STRESS_FAMILIES:
+            raise InputError(option, path, "checks.contact_stress_limit.<family>, a family "
+                             "of " + ", ".join(STRESS_FAMILIES))
+        if current is not None and not isinstance(current, Mapping):
+            raise InputError(option, path, "checks.contact_stress_limit (the scene gives one "
+                             f"stress for every family, {current!r}, not a table)")
+        return
+    if len(parts) >= 2 and parts[0] in ("models", "network"):
+        return  # free-form tables: the model/template validates its own keys
+    if parts[0] == "bearings" and len(parts) >= 2:
+        names = [b.get("name", "?") for b in scene_dict.get("bearings", [])]
+        if not (parts[1].isdigit() and int(parts[1]) < len(names)):
+            listed = ", ".join(f"{i} = {n}" for i, n in enumerate(names))
+            raise InputError(option, path, f"bearings.<index>.<field> with an index of the "
+                             f"scene's bearings ({listed}), e.g. "
+                             "bearings.0.overrides.diametral_clearance")
+    if len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
+        return
+    raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"
+                     + _did_you_mean(scene_dict, path))
+
+
+def _did_you_mean(scene_dict: Mapping[str, Any], path: str) -> str:
+    """``"; did you mean network.parameters.h_oil?"`` for a bare, misplaced or misspelt
+    name: the known paths with the same last name, else the closest spellings."""
+    import difflib
+
+    known = [f"{section}.{key}" for section, keys in _SETTABLE_NEW.items() for key in keys]
+    for section in ("supply", "environment", "solver", "checks", "outputs"):
+        table = scene_dict.get(section)
+        if isinstance(table, Mapping):
+            known += [f"{section}.{k}" for k in table if f"{section}.{k}" not in known]
+    network = scene_dict.get("network", {})
+    params = network.get("parameters", {}) if isinstance(network, Mapping) else {}
+    names = set(params) if isinstance(params, Mapping) else set()
+    template = network.get("template") if isinstance(network, Mapping) else None
+    if template:
+        try:
+            from .network.templates import TEMPLATES
+
+            names |= set(TEMPLATES.entry(template).parameters)
+        except Exception:  # noqa: BLE001 - an unknown template is reported elsewhere
+            pass
+    known += [f"network.parameters.{n}" for n in sorted(names)]
+    last = path.rsplit(".", 1)[-1]
+    hits = [k for k in known if k.rsplit(".", 1)[-1] == last and k != path]
+    if not hits:
+        hits = difflib.get_close_matches(path, known, n=3, cutoff=0.8)
+    return f"; did you mean {' or '.join(hits)}?" if hits else ""
+
+
+def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
+    """Set a dotted path of a scene dict (``schedule.<field>``: in every step)."""
+    parts = path.split(".")
+    if parts[0] == "schedule" and len(parts) == 2:
+        for step in d["schedule"]["steps"]:
+            step[parts[1]] = value
+        return
+    cur: Any = d
+    for p in parts[:-1]:
+        if isinstance(cur, list):
+            cur = cur[int(p)]
+        else:
+            cur = cur.setdefault(p, {})
+    if isinstance(cur, list):
+        cur[int(parts[-1])] = value
+    else:
+        cur[parts[-1]] = value

@@ -1,0 +1,136 @@
+"""The results store of a sweep folder: ``cases.jsonl``, ``summary.csv`` and ``scene.toml``.
+
+Each finished case is appended to ``DIR/cases.jsonl`` the moment it completes
+(:func:`finished_cases` reads them back, so that a rerun skips them); ``DIR/summary.csv``
+is rewritten after each case; ``DIR/scene.toml`` records the base scene
+(:func:`record_base_scene`).
+
+``summary.csv``: the case id, each swept value as set (``supply.flow``: ``"15 L/min"``)
+and, for quantities, as a number with the unit in the column name
+(``supply.flow [L/min]``), then the runner's results.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections.abc import Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from .scene import Scene
+from .sweep_cases import Case
+
+
+def _store_path(out_dir: Path) -> Path:
+    return out_dir / "cases.jsonl"
+
+
+def finished_cases(out_dir: Path | str) -> dict[str, dict[str, Any]]:
+    """Cases already in the results store (id -> record); a torn last line is ignored."""
+    path = _store_path(Path(out_dir))
+    done: dict[str, dict[str, Any]] = {}
+    if not path.is_file():
+        return done
+    for line in path.read_text(encoding="utf-8").splitlines():
+        try:
+            rec = json.loads(line)
+        except json.JSONDecodeError:
+            continue
+        done[rec["case"]] = rec
+    return done
+
+
+def _record(case: Case, result: Mapping[str, Any]) -> dict[str, Any]:
+    return {"case": case.case_id, "params": dict(case.assignments), "result": dict(result)}
+
+
+def _append(out_dir: Path, record: Mapping[str, Any]) -> None:
+    with _store_path(out_dir).open("a", encoding="utf-8") as fh:
+        fh.write(json.dumps(record) + "\n")
+        fh.flush()
+
+
+def summary_frame(records: Iterable[Mapping[str, Any]]) -> pd.DataFrame:
+    """One row per case: the swept values then the runner's results.
+
+    A swept quantity appears twice: as set (``supply.flow``: ``"15 L/min"``, the text the
+    case's scene holds) and as a number with its unit in the column name
+    (``supply.flow [L/min]``: 15.0, in the unit of the first case's value), so that the
+    table plots and filters without parsing text. Text values (lubricant presets) appear
+    once.
+    """
+    recs = list(records)
+    rows = []
+    for rec in recs:
+        row = {"case": rec["case"]}
+        row.update(rec["params"])
+        row.update(rec["result"])
+        rows.append(row)
+    df = pd.DataFrame(rows)
+    params = list(dict.fromkeys(k for rec in recs for k in rec["params"]))
+    for path in params:
+        numeric = _numeric_column(df[path].tolist())
+        if numeric is not None:
+            unit, values = numeric
+            df.insert(df.columns.get_loc(path) + 1, f"{path} [{unit}]", values)
+    return df
+
+
+def _numeric_column(values: Sequence[Any]) -> tuple[str, list[float]] | None:
+    """(unit, numbers) of swept values that are all quantities of one dimension, in the
+    unit of the first (``["15 L/min", "0.5 L/s"]`` -> ``("L/min", [15.0, 30.0])``); None
+    for bare numbers (already numeric), text, or mixed dimensions."""
+    from .units import unit_registry
+
+    if not values or not all(isinstance(v, str) for v in values):
+        return None
+    ureg = unit_registry()
+    try:
+        first = values[0].strip().split(maxsplit=1)
+        if len(first) != 2:
+            return None
+        unit = first[1]
+        numbers = []
+        for v in values:
+            num, _, u = v.strip().partition(" ")
+            numbers.append(float(ureg.Quantity(float(num), u.strip()).to(unit).magnitude))
+    except Exception:  # noqa: BLE001 - text (a preset name) or mixed dimensions: no column
+        return None
+    return unit, numbers
+
+
+def record_base_scene(out_dir: Path, scene: Scene) -> None:
+    """Write the base scene, its file paths absolute, to ``out_dir/scene.toml``: the sweep
+    report names the bearing and the conditions not swept from it.
+
+    A folder resumed with another base scene gets it replaced, as ``summary.csv`` is
+    rewritten with the cases of this sweep alone (the case ids include the base scene, so
+    none of the earlier cases counts as finished; their records stay in ``cases.jsonl``);
+    stderr says so."""
+    from .scene import with_absolute_paths
+
+    text = with_absolute_paths(scene).to_toml()
+    path = out_dir / "scene.toml"
+    if path.is_file():
+        try:
+            old = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError):
+            old = None
+        if old == text:
+            return
+        print(f"sweep: {path} held another base scene; replaced by this sweep's (its "
+              "cases run anew; summary.csv lists this sweep's cases, cases.jsonl keeps "
+              "the earlier ones)", file=sys.stderr)
+    path.write_text(text, encoding="utf-8")
+
+
+def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
+    done = finished_cases(out_dir)
+    order = {c.case_id: i for i, c in enumerate(cases)}
+    recs = sorted((r for r in done.values() if r["case"] in order), key=lambda r: order[r["case"]])
+    df = summary_frame(recs)
+    df.to_csv(out_dir / "summary.csv", index=False)
+    return df
