@@ -68,6 +68,9 @@ from .roller_solvers import (  # noqa: F401
     initial_guess,
 )
 
+#: ``method`` values of :func:`solve_model`
+SOLVE_METHODS = ("newton", "bracketed")
+
 __all__ = [
     "DEFAULT_POCKET_CLEARANCE_FRACTION",
     "RING_SUPPORT_MODELS",
@@ -75,6 +78,7 @@ __all__ = [
     "CageForceBalance",
     "RollerModel",
     "RollerSkiddingResult",
+    "SOLVE_METHODS",
     "as_warm_start",
     "build_model",
     "cage_force_balance",
@@ -99,15 +103,26 @@ def solve_model(
     load_x0: tuple[float, float] | None = None,
     fallback: bool = True,
     radial_acceleration: np.ndarray | None = None,
+    method: str = "newton",
 ) -> RollerSkiddingResult:
     """Solve the Z + 1 equations for a prepared :class:`RollerModel` (see :func:`solve_roller`).
 
+    ``method``: "newton" (default): the Newton attempts (warm start, cold guesses, pure
+    rolling, the best iterate; a stalled iterate within every equation's round-off floor is
+    accepted), the bracketed solve only when they all fail. "bracketed": no Newton attempt;
+    the bracketed solve (Brent on the cage equation over its whole range, every roller
+    bisected over its whole range, then a Newton polish) from the loads at the cold guess
+    (0.8 of the epicyclic cage speed) -- the robust path the solver took before the
+    round-off acceptance, slow (seconds per point) but with no start to depend on; the
+    reference of ``benchmarks/bm_roller_cold.py``. It ignores ``x0``.
     ``fallback=False`` skips the (slow, robust) bracketed solve when Newton fails and raises
     the ConvergenceError at once. ``radial_acceleration`` (Z,) [m/s^2]: the whirl
     acceleration in each roller's radial balance (eqs. 20/23) when it is not the projection
     of ``whirl_acceleration`` (see :class:`~thermobearing.skidding.whirl.Whirl`); the
     tangential balance (eqs. 21/24) always uses the projection.
     """
+    if method not in SOLVE_METHODS:
+        raise UnknownNameError("roller skidding method", method, SOLVE_METHODS)
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
     if x0 is not None and np.size(x0) != z + 1:
@@ -145,11 +160,13 @@ def solve_model(
     # iterate (benchmarks/bm_roller_cold.py, 180 cold points: 20 took it, 5-12 s of CPU
     # each; now 12 converge as "newton_round_off" in 0.2-0.8 s, 8 by the bracketed solve in
     # 1.3-2.7 s, all to the former states within 3e-14).
+    if method == "bracketed":
+        return _bracketed_only(model, omega, radial_load, loads, psi, whirl_acceleration, tol,
+                               max_iter, load_x0)
     attempts = [(x0, 1e-10, "warm"), (x0, 1e-7, "warm")] if x0 is not None else []
     attempts += [(initial_guess(model, omega, c), 1e-7, f"cold_{c:g}") for c in (0.8, 0.4)]
     attempts.append((initial_guess(model, omega, 1.0), 1e-10, "pure_rolling"))
     best = None
-    method = "newton"
     films = model.ring_support == "films"
     i_attempt = 0
     polished = False
@@ -211,6 +228,47 @@ def solve_model(
             {"cage_speed": x[z], "cage_speed_ratio": x[z] / omega, "radial_load": radial_load,
              "inner_speed": omega, "roller_speed_mean": float(np.mean(x[:z])),
              "iterations": it, "round_off_floor": floor})
+    return _result(model, omega, psi, best, method, best_start, i_attempt, floor, tol)
+
+
+def _bracketed_only(model: RollerModel, omega: float, radial_load: float, loads: Any,
+                    psi: np.ndarray, acc: tuple[float, float], tol: float, max_iter: int,
+                    load_x0: tuple[float, float] | None) -> RollerSkiddingResult:
+    """``solve_model(method="bracketed")``: :func:`_nested` over the whole cage-speed range
+    (no start around a Newton iterate) from the loads at the cold guess (0.8 of the
+    epicyclic cage speed, rollers rolling on the outer race)."""
+    z = model.n_rollers
+    cold = initial_guess(model, omega, 0.8)
+    ld0, _ = loads(float(cold[z]), load_x0, cold[:z])
+    if ld0.n_loaded == 0:
+        raise ConvergenceError(
+            "roller_skidding", math.inf,
+            f"no roller touches the inner ring (radial load {radial_load:g} N with clearance):"
+            " the cage speed is undetermined", {"radial_load": radial_load, "inner_speed": omega})
+    x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, acc, tol, max_iter, ld0)
+    if not ok:
+        raise ConvergenceError(
+            "roller_skidding", norm, "the bracketed solve (method='bracketed') failed: no sign "
+            "change of the cage equation, Brent did not converge or the root is beyond 4 "
+            "round-off floors",
+            {"radial_load": radial_load, "inner_speed": omega, "round_off_floor": floor,
+             "cage_speed": float(x[z])})
+    return _result(model, omega, psi, (x, e, norm, it, ok, ld), "bracketed", "bracketed", 0,
+                   floor, tol)
+
+
+def _result(model: RollerModel, omega: float, psi: np.ndarray, best: tuple[Any, ...],
+            method: str, start: str, attempts: int, floor: float, tol: float
+            ) -> RollerSkiddingResult:
+    """The :class:`RollerSkiddingResult` of a converged state ``best`` = (x, eval, norm,
+    iterations, ok, load distribution); ``method``, ``start``, ``attempts`` and ``floor`` go
+    to its extras, with ``round_off_equations`` and ``residual_note`` (what the norm means:
+    :func:`_residual_note`; see the class docstring)."""
+    x, e, norm, it, _ok, ld = best
+    z = model.n_rollers
+    residual = np.append(e.roller_eq, e.cage_eq)
+    scale = float(np.linalg.norm(residual)) / norm if norm > 0.0 else 1.0
+    at_floor = tuple(int(i) for i in np.flatnonzero(np.abs(residual) > tol * scale))
     csr = x[z] / omega
     csr_th = model.theoretical_cage_speed_ratio
     return RollerSkiddingResult(
@@ -221,10 +279,13 @@ def solve_model(
         inner_entrainment_speed=e.ue_i, outer_entrainment_speed=e.ue_o,
         inner=e.inner, outer=e.outer, pocket_normal_force=e.pocket, pocket_friction=e.friction,
         converged=True, residual_norm=norm, iterations=it,
-        residual=np.append(e.roller_eq, e.cage_eq), temperature=model.temperature,
+        residual=residual, temperature=model.temperature,
         eta0=model.eta0, extras={"ring_displacement": ld.ring_displacement, "method": method,
-                                 "start": best_start, "attempts": i_attempt,
+                                 "start": start, "attempts": attempts,
                                  "round_off_floor": floor,
+                                 "round_off_equations": at_floor,
+                                 "residual_note": _residual_note(residual, scale, norm, floor,
+                                                                 tol, at_floor, z),
                                  "n_loaded": ld.n_loaded, "contact_length": model.length,
                                  "radius_inner": model.radius_inner,
                                  "radius_outer": model.radius_outer,
@@ -232,6 +293,30 @@ def solve_model(
                                  "raceway_radius_inner": 0.5 * (model.pitch_diameter
                                                                 - model.roller_diameter)},
     )
+
+
+def _residual_note(residual: np.ndarray, scale: float, norm: float, floor: float, tol: float,
+                   at_floor: tuple[int, ...], z: int) -> str:
+    """What ``residual_norm`` means for this state, in words (``extras["residual_note"]``).
+
+    Within ``tol``: the distance from the root in the scaled residual. Beyond it (a state
+    accepted at the round-off floor): the equations ``at_floor`` (indices < Z: roller moment
+    balances, Z: the cage) change by about their residual when a speed moves by one ulp --
+    a loaded roller rolling on a raceway at a slide of a few ulps of its surface speed, where
+    the saturated traction steps by up to mu Q between neighbouring floats -- so the norm
+    measures that step of the equations in double precision, not a distance from the root
+    (measured: catalogue NU 206, 13 kN, 20 degC, ISO VG 68, 2000 and 30000 r/min: norm 0.10
+    and 0.11 of the 4.7 kN roller load, 110-410 N on the two most loaded rollers and the
+    cage; the state equals the bracketed solve's to 1e-15, benchmarks/bm_roller_cold.py).
+    """
+    if not at_floor:
+        return f"residual norm {norm:.3g} <= tol {tol:g}: within the tolerance"
+    names = ", ".join("cage" if i == z else f"roller {i}" for i in at_floor)
+    worst = float(np.max(np.abs(residual[list(at_floor)])))
+    return (f"residual norm {norm:.3g} > tol {tol:g} at the round-off floor {floor:.3g}: "
+            f"{names} (up to {worst:.3g} N, force scale {scale:.4g} N) change by about that "
+            "much per one-ulp change of the speeds (saturated traction near pure rolling); "
+            "the norm is that step, not a distance from the root")
 
 
 def _round_off_state(model: RollerModel, omega: float, best: tuple[Any, ...],
