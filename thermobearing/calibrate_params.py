@@ -25,7 +25,7 @@ import numpy as np
 
 from .errors import InputError
 from .scene import Scene
-from .sweep import DISPLAY_UNITS, assign_path, check_path, get_path
+from .sweep_params import DISPLAY_UNITS, assign_path, check_path, get_path
 from .units import from_si, to_si, unit_registry
 
 __all__ = ["FitParameter"]
@@ -179,7 +179,7 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         if raw is None and len(parts) >= 4 and parts[0] == "bearings" \
                 and parts[2] == "overrides":
             # a bearing value the scene does not override: start from the preset's value
-            from .sweep import bearing_file_value
+            from .sweep_params import bearing_file_value
 
             raw = bearing_file_value(scene_dict, parts[1], parts[3:])
         kind = _SCENE_KINDS.get(path)

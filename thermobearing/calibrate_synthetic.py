@@ -23,7 +23,7 @@ import pandas as pd
 from .calibrate_model import predicted_temperatures
 from .errors import InputError
 from .scene import Scene
-from .sweep import assign_path, check_path
+from .sweep_params import assign_path, check_path
 
 __all__ = ["SYNTHETIC_LABEL", "synthetic_measurements"]
 
