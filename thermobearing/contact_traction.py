@@ -591,8 +591,10 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
     arrays = np.broadcast_arrays(q_load, a, b, vy, vx, wz, wx, wy, curvature,
                                  1.0 if h is None else h)
     shape_s = arrays[0].shape
+    # writable C-contiguous float64 (np.require copies a read-only broadcast view): one
+    # compiled specialisation of the kernels, the one the ball residual's kernels use
     q, a_, b_, vy_, vx_, wz_, wx_, wy_, cv, hh = (
-        np.ascontiguousarray(x, dtype=np.float64).ravel() for x in arrays)
+        np.require(np.ravel(x), np.float64, "CW") for x in arrays)
     if h is not None:
         loaded = (q > 0) & (a_ > 0) & (b_ > 0)
         hh = np.where(loaded, hh, 1.0)
@@ -614,9 +616,9 @@ def _integrate_core(law: TractionLaw, q_load: np.ndarray, a: np.ndarray, b: np.n
             law, float(temp[0]) if t_one else None, pmax)
         if visc_mode == 2:
             # the temperature part of the viscosity once per contact, broadcast over nodes
-            eta_nodes = np.ascontiguousarray(np.broadcast_to(np.asarray(
+            eta_nodes = np.array(np.broadcast_to(np.asarray(
                 law.lubricant.dynamic_viscosity(temp[:, None], np.maximum(pn, 0.0)),
-                dtype=float), pn.shape))
+                dtype=float), pn.shape), order="C")         # writable, as above
     out = np.empty((n, 6))
     jac = np.empty((n, 5, 5)) if jacobian else _EMPTY3
     grad = np.empty((n, 5)) if jacobian else _EMPTY2

@@ -431,7 +431,9 @@ def _ld_solve(bx: np.ndarray, br: np.ndarray, u: np.ndarray, cpsi: np.ndarray,
                             fx, fr)
         if norm <= tol_abs:
             return norm, it, True
-        K[:, :] = cf[F_K]
+        for j in range(nz):     # element loops: a slice assignment from an array compiles
+            for k in range(nk):  # numba's shape-mismatch message code (seconds)
+                K[j, k] = cf[F_K, j, k]
         _ld_newton_step(cf, tab, cpsi, Rx, Rr, Rg, kb, kr, dbx, dbr, du)
         # each ball's step and the ring's capped at step_max on their own: a free ball's
         # large step must not shorten everyone else's
@@ -453,9 +455,11 @@ def _ld_solve(bx: np.ndarray, br: np.ndarray, u: np.ndarray, cpsi: np.ndarray,
         n2 = _ld_damped_balls(bx, br, u, dbx, dbr, du, K, cpsi, tab, c, wm, gyro, cf2, Fc2,
                               Mg2, fx, fr, bx2, br2, u2)
         if n2 < (1.0 - 1e-4) * norm:
-            bx[:] = bx2
-            br[:] = br2
-            u[:] = u2
+            for j in range(nz):
+                bx[j] = bx2[j]
+                br[j] = br2[j]
+            u[0] = u2[0]
+            u[1] = u2[1]
             kb = max(0.1 * kb, 1e-10 * k_reg)
             kr = max(0.1 * kr, 1e-10 * k_ring)
             continue

@@ -17,8 +17,12 @@ import numpy as np
 
 from .exponential import _nb_phi_row, _nb_remainder
 
-
 # ------------------------------------------------------------ compiled kernels
+# the phi orders as int64 constants, not literals: Literal[int](2) and Literal[int](5) would
+# compile _phi_tab and _nb_phi_row once per value (exponential._I0)
+_K2, _K4, _K5 = np.int64(2), np.int64(4), np.int64(5)
+
+
 @numba.njit(cache=True)
 def _phi_tab(lam, tau, kmax):  # pragma: no cover - compiled
     """tab[i, k] = phi_k(tau lambda_i), k = 0..kmax, in the dtype of lambda (real for a
@@ -65,7 +69,7 @@ def _fk_stage2(lam, V, W, y0, wf, c1, td, h):  # pragma: no cover - compiled
     """U2 = y(h/2) for the forcing f_n (+ c_1 s/h): y_n + V [tau phi1(tau lam) W f_n
     (+ tau theta phi2(tau lam) W c_1)], tau = h/2, theta = 1/2 [K]. ``wf`` = W f_n."""
     tau = 0.5 * h
-    tab = _phi_tab(lam, tau, 2)
+    tab = _phi_tab(lam, tau, _K2)
     acc = tau * tab[:, 1] * wf
     if td:
         acc = acc + (0.5 * tau) * tab[:, 2] * _project(W, c1)
@@ -180,7 +184,7 @@ def _fk_stage3(lam, V, W, JqM, y0, wf, c1, td, h, U2, q2, q0):  # pragma: no cov
     (+ h phi2 W c_1)]."""
     D2 = _nb_remainder(U2, q2, q0, JqM, y0, c1, 0.5 if td else 0.0)
     wd2 = _project(W, D2)
-    tab = _phi_tab(lam, h, 5)
+    tab = _phi_tab(lam, h, _K5)
     acc = h * tab[:, 1] * (wf + wd2)
     if td:
         acc = acc + h * tab[:, 2] * _project(W, c1)
@@ -287,7 +291,7 @@ def _fk_dense(s_lam, s_V, s_M, s_y0, s_t0, s_h, idx, t):  # pragma: no cover - c
             continue
         th = tau / s_h[j]
         for e in range(n):
-            _nb_phi_row(tau * s_lam[j, e], 4, ph)
+            _nb_phi_row(tau * s_lam[j, e], _K4, ph)
             acc[e] = tau * (ph[1] * s_M[j, e, 0] + th * ph[2] * s_M[j, e, 1]
                             + 2.0 * th * th * ph[3] * s_M[j, e, 2]
                             + 6.0 * th * th * th * ph[4] * s_M[j, e, 3])

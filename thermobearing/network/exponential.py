@@ -146,6 +146,10 @@ def phi_functions(z: np.ndarray, kmax: int) -> list[np.ndarray]:
 # ------------------------------------------------------------ compiled kernels
 # One call per stage keeps the per-step cost at a few microseconds for small networks
 # (numpy's per-call overhead would dominate at n = 4). Same formulas as phi_functions.
+# Integer arguments passed from compiled code go as these int64 constants: a literal 0
+# would be typed Literal[int](0) and compile the callee once per value and once more for
+# the Python callers' int64.
+_I0, _I1, _I6 = np.int64(0), np.int64(1), np.int64(6)
 @numba.njit(cache=True)
 def _nb_phi_row(z, kmax, out):  # pragma: no cover - compiled
     """out[k] = phi_k(z), k = 0..kmax, for one complex z."""
@@ -173,7 +177,7 @@ def _nb_combine(lam, V, W, cs, use, tau, h, shift):  # pragma: no cover - compil
     acc = np.zeros(nd, dtype=np.complex128)
     th = tau / h
     for i in range(nd):
-        _nb_phi_row(tau * lam[i], 6, ph)
+        _nb_phi_row(tau * lam[i], _I6, ph)
         tot = 0.0j
         fk = 1.0
         thk = 1.0
@@ -234,28 +238,31 @@ def _nb_increment(lam, V, W, cs, use, tau, h, shift, d, a, Jaa_inv, Jad):  # pra
 @numba.njit(cache=True)
 def _nb_final(lam, V, W, cs, use, h, d, a, Jaa_inv, Jad, y0, atol, rtol):  # pragma: no cover
     """(y_{n+1}, scaled error norm, int_0^h (y - y_n) ds) of an exprb43 step."""
-    y1 = y0 + _nb_increment(lam, V, W, cs, use, h, h, 0, d, a, Jaa_inv, Jad)
+    y1 = y0 + _nb_increment(lam, V, W, cs, use, h, h, _I0, d, a, Jaa_inv, Jad)
     est_use = np.zeros(4, dtype=np.bool_)
     est_use[3] = True
-    est = _nb_increment(lam, V, W, cs, est_use, h, h, 0, d, a, Jaa_inv, Jad)
+    est = _nb_increment(lam, V, W, cs, est_use, h, h, _I0, d, a, Jaa_inv, Jad)
     err = 0.0
     for i in range(y1.shape[0]):
         e = abs(est[i]) / (atol + rtol * abs(y1[i]))
         if not e <= err:  # also catches NaN
             err = e
-    integral = _nb_increment(lam, V, W, cs, use, h, h, 1, d, a, Jaa_inv, Jad)
+    integral = _nb_increment(lam, V, W, cs, use, h, h, _I1, d, a, Jaa_inv, Jad)
     return y1, err, integral
 
 
 @numba.njit(cache=True)
 def _nb_dense(lam, V, W, cs, use, taus, h, d, a, Jaa_inv, Jad):  # pragma: no cover
     """Full-state increments y(tau) - y_n at several tau (rows)."""
-    out = np.empty((taus.shape[0], W.shape[1]))
+    n = W.shape[1]
+    out = np.zeros((taus.shape[0], n))
     for p in range(taus.shape[0]):
-        if taus[p] == 0.0:
-            out[p, :] = 0.0
-        else:
-            out[p, :] = _nb_increment(lam, V, W, cs, use, taus[p], h, 0, d, a, Jaa_inv, Jad)
+        if taus[p] != 0.0:
+            # element loop: a row assignment from an array compiles numba's shape-mismatch
+            # message code (seconds)
+            inc = _nb_increment(lam, V, W, cs, use, taus[p], h, _I0, d, a, Jaa_inv, Jad)
+            for i in range(n):
+                out[p, i] = inc[i]
     return out
 
 
@@ -306,7 +313,7 @@ def _nb_stage2(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h):  # pragma: no 
     use = np.zeros(4, dtype=np.bool_)
     use[0] = True
     use[1] = td
-    return y0 + _nb_increment(lam, V, W, cs, use, 0.5 * h, h, 0, d, a, Jaa_inv, Jad)
+    return y0 + _nb_increment(lam, V, W, cs, use, 0.5 * h, h, _I0, d, a, Jaa_inv, Jad)
 
 
 @numba.njit(cache=True)
@@ -320,7 +327,7 @@ def _nb_stage3(lam, V, W, d, a, Jaa_inv, Jad, y0, f0, c1, td, h, U2, q2, q0,
     use = np.zeros(4, dtype=np.bool_)
     use[0] = True
     use[1] = td
-    return D2, y0 + _nb_increment(lam, V, W, cs, use, h, h, 0, d, a, Jaa_inv, Jad)
+    return D2, y0 + _nb_increment(lam, V, W, cs, use, h, h, _I0, d, a, Jaa_inv, Jad)
 
 
 @numba.njit(cache=True)
@@ -366,10 +373,13 @@ def _nb_dense_batch(lams, Vs, Ws, css, uses, y0s, t0s, hs, k, t):  # pragma: no 
         j = k[i]
         tau = min(max(t[i] - t0s[j], 0.0), hs[j])
         if tau == 0.0:
-            out[i] = y0s[j]
+            for r in range(n):          # element loops, as in _nb_dense
+                out[i, r] = y0s[j, r]
         else:
-            out[i] = y0s[j] + _nb_increment(lams[j], Vs[j], Ws[j], css[j], uses[j], tau, hs[j],
-                                            0, d, a, e0, e1)
+            inc = _nb_increment(lams[j], Vs[j], Ws[j], css[j], uses[j], tau, hs[j], _I0, d, a,
+                                e0, e1)
+            for r in range(n):
+                out[i, r] = y0s[j, r] + inc[r]
     return out
 
 
@@ -421,7 +431,9 @@ def diagonalise_or_refuse(A: np.ndarray, M: np.ndarray, invC: np.ndarray, has_m:
     if not cond <= _COND_MAX:
         raise _NewtonFailure(math.inf, f"near-defective Jacobian (cond(V) = {cond:.1e}); "
                                        "use method='tr_bdf2' for this network")
-    return lam, V, W
+    # V C-contiguous (LAPACK's eig gives it in Fortran order), as the symmetric path's: the
+    # stage kernels then compile for one layout (the same values)
+    return lam, np.ascontiguousarray(V), W
 
 class _Linearization:
     """Reduced, diagonalised linearisation at one step start (t_n, y_n)."""

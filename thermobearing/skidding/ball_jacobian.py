@@ -387,9 +387,12 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
     nz = X.shape[0]
     nk = arc.shape[1]
     Xb = np.empty((1, nz, X.shape[1]))
-    Xb[0] = X
+    for j in range(nz):     # element loops: a slice assignment from an array compiles numba's
+        for i in range(X.shape[1]):          # shape-mismatch message code (seconds)
+            Xb[0, j, i] = X[j, i]
     Gb = np.empty((1, G.size))
-    Gb[0] = G
+    for g in range(G.size):
+        Gb[0, g] = G[g]
     _ball_geometry(Xb, Gb, cpsi, arc, c, geo)
     D, dm, ep = c[C_D], c[C_DM], c[C_EP]
     wc = G[2]

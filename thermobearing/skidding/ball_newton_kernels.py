@@ -128,7 +128,9 @@ def _factor_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
         inv, ok = _inverse_small(A[z])
         if not ok:
             return Ainv, AiB, S, False
-        Ainv[z] = inv
+        for i in range(nb):          # element loop: a slice assignment from an array
+            for j in range(nb):      # compiles numba's shape-mismatch message code
+                Ainv[z, i, j] = inv[i, j]
         for i in range(nb):
             for g in range(ng):
                 acc = 0.0
@@ -225,8 +227,11 @@ def _broyden_step(hist: np.ndarray, m: int, dX: np.ndarray, dG: np.ndarray,
     ng = dG.size
     n = nz * nb + ng
     z = np.empty(n)
-    z[:nz * nb] = dX.ravel()
-    z[nz * nb:] = dG
+    for i in range(nz):          # element loops: a slice assignment from an array compiles
+        for j in range(nb):      # numba's shape-mismatch message code (seconds, once per kernel)
+            z[i * nb + j] = dX[i, j]
+    for g in range(ng):
+        z[nz * nb + g] = dG[g]
     for j in range(m - 1):
         dot = 0.0
         nrm = 0.0

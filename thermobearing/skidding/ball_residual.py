@@ -303,7 +303,9 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             wc1 = G[..., 2:3]                                 # (..., 1)
             u_ball = (wc1 * (1.0 - md.oil_speed_ratio)) * X[..., 1]
             Fd = np.asarray(md.ball_drag(np.abs(u_ball)), float) * np.sign(u_ball)
-            Fd_b = np.ascontiguousarray(np.broadcast_to(Fd, batch + (Z,)).reshape(n_states, Z))
+            # a writable C-contiguous copy (a read-only broadcast view would compile the
+            # kernels once more for read-only arrays)
+            Fd_b = np.array(np.broadcast_to(Fd, batch + (Z,)).reshape(n_states, Z), order="C")
         else:
             # drag force at the drag radius times r_drag (memoised), over the ball radius
             fd_num = np.array([t[3] for t in per_wc])
@@ -477,9 +479,9 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             visc_mode, ln_tab, slope_tab, inv_dp = viscosity_source(
                 md.traction_law, md.temperature, float(pn.max()) if pn.size else 0.0)
             if visc_mode == 2:
-                eta_nodes = np.ascontiguousarray(np.broadcast_to(np.asarray(
+                eta_nodes = np.array(np.broadcast_to(np.asarray(
                     md.traction_law.lubricant.dynamic_viscosity(md.temperature, pn),
-                    dtype=float), pn.shape))
+                    dtype=float), pn.shape), order="C")       # writable, as the kernel's
         _ball_forces(Xb, Gb, self._cpsi, self._arc, self._c, geo, film, self._law_id,
                      self._law_params, visc_mode, ln_tab, slope_tab, inv_dp, eta_nodes,
                      *self._rule, Fd_b, reuse, tr_ref, tr, pocket, R, Gc)

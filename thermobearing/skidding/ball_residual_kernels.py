@@ -65,7 +65,8 @@ N_GEO = 20
 P_S, P_WA, P_WR, P_WN, P_FPA, P_FPR, P_FC = range(7)
 N_POCKET = 7
 _EMPTY_TR = np.zeros((0, 6))
-_NO_REUSE = np.zeros(1, dtype=np.int64)    # read only: a single state copies nothing
+_NO_REUSE = np.zeros(1, dtype=np.int64)    # a single state copies nothing
+_TRUE, _FALSE = np.bool_(True), np.bool_(False)   # typed bool in compiled calls
 # float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p
 (C_D, C_DM, C_EP, C_M, C_J, C_FS, C_MS, C_TS, C_VEPS, C_MUP) = range(10)
 # arc table rows: centre x, centre r, free distance, inner (1/0), sign (+1 inner / -1 outer),
@@ -320,15 +321,19 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
     for i in range(nb):
         lo, hi = i * per, (i + 1) * per
         if reuse[i] == 1:
-            tr[lo:hi, :] = tr_ref
+            for r in range(per):                 # element loops, not tr[lo:hi] = tr_ref:
+                for q in range(6):               # numba's slice assignment compiles its
+                    tr[lo + r, q] = tr_ref[r, q]  # shape-mismatch message code (~1-3 s)
             continue
+        # _TRUE / _FALSE: a literal True / False would be typed Literal[bool] and compile
+        # _integrate_contacts a second time beside the Python callers' bool
         _integrate_contacts(law_id, law_params, visc_mode, ln_tab, slope_tab, inv_dp,
                             eta_nodes[lo:hi] if eta_nodes.shape[0] > 0 else eta_nodes,
                             geo[G_Q, lo:hi], geo[G_A, lo:hi], geo[G_B, lo:hi],
                             geo[G_VY, lo:hi], geo[G_VX, lo:hi], geo[G_OMZ, lo:hi],
                             geo[G_OMX, lo:hi], geo[G_OMY, lo:hi], geo[G_CURV, lo:hi],
-                            film[lo:hi], xg, yg, pshape, area_w, pidx, pshape_u, True, False,
-                            tr[lo:hi], e3, e2)
+                            film[lo:hi], xg, yg, pshape, area_w, pidx, pshape_u, _TRUE,
+                            _FALSE, tr[lo:hi], e3, e2)
     D, m, J = c[C_D], c[C_M], c[C_J]
     F_s, M_s, T_s = c[C_FS], c[C_MS], c[C_TS]
     for i in range(nb):
@@ -442,15 +447,19 @@ def _residual_one(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
     for g in range(G.size):
         tot += G[g]
     Xb = np.empty((1, nz, X.shape[1]))
-    Xb[0] = X
+    for j in range(nz):        # element loops, as in _ball_forces (no slice assignment)
+        for i in range(X.shape[1]):
+            Xb[0, j, i] = X[j, i]
     Gb = np.empty((1, G.size))
-    Gb[0] = G
+    for g in range(G.size):
+        Gb[0, g] = G[g]
     Fd = np.empty((1, nz))
-    if Fd_in.size == 0:
-        for j in range(nz):
-            Fd[0, j] = fd_num / X[j, 1]
-    else:
-        Fd[0] = Fd_in
+    for j in range(nz):
+        Fd[0, j] = fd_num / X[j, 1] if Fd_in.size == 0 else Fd_in[j]
+    # writable arrays, as the batch path passes them (a module-level array would enter as a
+    # read-only constant and compile _ball_residual_fused a second time)
+    no_reuse = np.zeros(1, dtype=np.int64)
+    empty_tr = np.empty((0, 6))
     geo = np.empty((N_GEO, n))
     film = np.empty(n)
     tr = np.empty((n, 6))
@@ -461,7 +470,7 @@ def _residual_one(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
         return 1, R[0], Gc[0], math.inf, geo, film, tr, pocket[0], Fd[0]
     if not _ball_residual_fused(Xb, Gb, cpsi, arc, c, film_params, law_id, law_params, ln_tab,
                                 slope_tab, inv_dp, p_max, xg, yg, pshape, area_w, pidx,
-                                pshape_u, Fd, _NO_REUSE, _EMPTY_TR, geo, film, tr,
+                                pshape_u, Fd, no_reuse, empty_tr, geo, film, tr,
                                 pocket, R, Gc):
         return 2, R[0], Gc[0], math.inf, geo, film, tr, pocket[0], Fd[0]
     acc = 0.0

@@ -176,7 +176,8 @@ def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, 
         t += h
         if step >= n_warm and (step - n_warm) % every == 0 and j < out.shape[0]:
             out[j, 0] = t
-            out[j, 1:] = y
+            for q in range(6):      # element loop: a slice assignment from an array
+                out[j, 1 + q] = y[q]  # compiles numba's shape-mismatch message code
             j += 1
     return out
 

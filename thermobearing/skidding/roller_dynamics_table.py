@@ -50,6 +50,8 @@ from numba import njit
 
 from ..errors import InputError, check_positive
 
+_ONE = np.int64(1)   # int64 constant for compiled calls (a literal 1 compiles once more)
+
 #: output columns of the table: raceway shear S [N], orbital force F_d [N], outer load Q_o [N]
 T_SHEAR, T_POCKET, T_OUTER = 0, 1, 2
 
@@ -235,7 +237,7 @@ def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarr
                 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + tl * (3.0 * (p1 - p2) + p3 - p0)))
     res = np.zeros(3)
     for col in range(3):
-        res[col] = _cubic(layer, 1, tc, col)
+        res[col] = _cubic(layer, _ONE, tc, col)   # int64, not Literal[int](1): one compile
     return res[0], res[1], res[2], 0
 
 
