@@ -245,7 +245,8 @@ def _bracketed_only(model: RollerModel, omega: float, radial_load: float, loads:
             "roller_skidding", math.inf,
             f"no roller touches the inner ring (radial load {radial_load:g} N with clearance):"
             " the cage speed is undetermined", {"radial_load": radial_load, "inner_speed": omega})
-    x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, acc, tol, max_iter, ld0)
+    x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, acc, tol, max_iter, ld0,
+                                            wc_loads=float(cold[z]))
     if not ok:
         raise ConvergenceError(
             "roller_skidding", norm, "the bracketed solve (method='bracketed') failed: no sign "

@@ -198,7 +198,8 @@ def _cage_bracket(cage: Callable[[float], float], wc0: float | None, lo_c: float
 
 def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np.ndarray,
             acc: tuple[float, float], tol: float, max_iter: int, ld0: Any,
-            wc0: float | None = None, wr0: np.ndarray | None = None
+            wc0: float | None = None, wr0: np.ndarray | None = None,
+            wc_loads: float | None = None
             ) -> tuple[np.ndarray, _Eval, float, int, bool, Any, float]:
     """Bracketed fallback: Brent on the cage equation with bisected roller spins.
 
@@ -207,7 +208,9 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
     of the previous cage iterate (:func:`_roller_speeds`); the root is the same (the cage
     equation falls monotonically with the cage speed), found with ~10x fewer residual
     evaluations. The outer fixed point on the centrifugal loads ends when Brent's root is
-    within 1e-8 omega of the cage speed the loads were computed at.
+    within 1e-8 omega of the cage speed the loads were computed at. Without ``wc0`` the
+    bracket is the whole cage-speed range and the first loads are taken at ``wc_loads``
+    (e.g. the cold guess; default the bottom of the range).
 
     Returns (x, eval, norm, iterations, ok, load distribution, floor): ``floor`` is the
     scaled residual norm one-ulp changes of the speeds make at the bracketed root
@@ -224,7 +227,8 @@ def _nested(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np
     lo_c, hi_c = 1e-6 * csr_th * omega, min(0.999, 1.5 * csr_th) * omega
     spins = [None if wr0 is None else np.array(wr0, dtype=float)]
     for _outer in range(4):
-        wc_guess = (first if first is not None and 0 < first < omega else lo_c) \
+        start = first if first is not None else wc_loads
+        wc_guess = (start if start is not None and 0 < start < omega else lo_c) \
             if wc is None else wc
         ld, fb = loads(wc_guess, tuple(ld.ring_displacement))
         mg = _gapped(model, ld)
