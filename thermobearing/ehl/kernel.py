@@ -70,7 +70,7 @@ class LogKernel:
         self._dense: np.ndarray | None = None
 
     #: up to this many nodes the product is a cached dense matrix-vector product (BLAS):
-    #: 4 us against 28 us for the two FFTs at 128 nodes, 12 against 32 us at 256 (session 4)
+    #: 4 us against 28 us for the two FFTs at 128 nodes, 12 against 32 us at 256
     DENSE_MAX = 256
 
     def apply(self, p: np.ndarray) -> np.ndarray:
