@@ -28,7 +28,8 @@ anchor's state: |CSR / CSR_anchor - 1| and max_j |w_j / w_j,anchor - 1| over the
 speeds w_j (record fields ``csr_error``, ``roller_error``; ``error`` the larger). Ours stops
 at the scaled residual tol 1e-9 when Newton meets it: the speeds of nearly standing
 unloaded rollers, whose moment balances are tiny beside the force scale (the largest roller
-load), are then off by up to ~1e-4 of their own speed while the CSR agrees to ~1e-14.
+load), are then off by up to ~1e-4 of their own speed, the CSR by up to ~1e-7 (light load,
+high speed).
 Printed: one line per point, then per bearing the median and range of the ratios, the
 largest errors and the failures of each method.
 
