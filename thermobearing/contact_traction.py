@@ -259,7 +259,7 @@ def integrate(
     h = None
     if film_thickness is not None:
         h = np.broadcast_to(np.asarray(film_thickness, dtype=float), q_load.shape)
-        # ~(h > 0) also catches NaN (a NaN film gave NaN tractions silently; session 10)
+        # ~(h > 0) also catches NaN (a NaN film gave NaN tractions silently)
         if np.any(~(h[(q_load > 0) & (a > 0) & (b > 0)] > 0)):
             raise InputError("contact_traction.film_thickness",
                              "values <= 0 or NaN at loaded contacts", "a film thickness > 0 [m]")
@@ -293,8 +293,8 @@ def _node_sums(xg: np.ndarray, yg: np.ndarray, px: np.ndarray, py: np.ndarray,
                heat: np.ndarray) -> tuple[float, float, float, float, float, float, float]:
     """The node sums of one contact (module docstring): sum px, px xg^2, px yg, py, py xg^2,
     py xg and heat, with the additions free to be reassociated (numba fastmath 'reassoc'
-    only: no contraction, no finite-math assumptions) so that LLVM vectorises them (session
-    8: 41 -> 28 us for the 48 loaded contacts of a Z = 16 state, in-process; the order of the
+    only: no contraction, no finite-math assumptions) so that LLVM vectorises them
+    (41 -> 28 us for the 48 loaded contacts of a Z = 16 state, in-process; the order of the
     additions changes the sums at round-off, 3e-16 of the largest measured)."""
     sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = h = 0.0
     for k in range(xg.size):
@@ -323,12 +323,12 @@ def _integrate_eyring_fast(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab
     (:func:`thermobearing.traction._eyring_smooth_node`: tau_E = tau0 asinh(eta s / (h tau0)),
     tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2), tau_L = Lambda p; the node sums of the
     module docstring, in the same order), with the node loop written so that LLVM vectorises
-    it (session 8): asinh by the branch-free :func:`thermobearing.traction._asinh_abs`
+    it: asinh by the branch-free :func:`thermobearing.traction._asinh_abs`
     (within 2 ulp of the C library's, 2.8e-16 absolute at small arguments), the node force
     over the slide speed in one division, numpy's error model (no zero-division checks; every
     division here has a positive divisor or its result is replaced), and the sums over the
     nodes taken in a second loop (:func:`_node_sums`, vectorised too). Equal to the generic
-    loop to round-off (test); ~3.5x faster per contact than session 6's scalar fast path
+    loop to round-off (test); ~3.5x faster per contact than the earlier scalar fast path
     (measured in-process, 48 loaded contacts x 32 nodes: 97 -> 28 us). The
     viscosity table's exp is :func:`thermobearing.traction._exp_fin` (within 1 ulp)."""
     n = q.size
@@ -414,7 +414,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
     rate_u = np.empty(pshape_u.size)
     # fast path (the ball solver's default law): Eyring with the smooth cap, tau0 > 0,
     # tabulated viscosity, no Jacobian -- :func:`_integrate_eyring_fast` (same formulas,
-    # vectorised node loop; session 6's scalar fast path was ~15-20 % faster than the generic
+    # vectorised node loop; the earlier scalar fast path was ~15-20 % faster than the generic
     # loop, the vectorised one 2.2-2.5x faster than that)
     if (law_id == EYRING and visc_mode == 1 and not jacobian and law_params[2] != 0.0
             and law_params[1] > 0.0):

@@ -386,7 +386,7 @@ def thermal_loading(entrainment_speed: Any, dynamic_viscosity: Any,
 
     Cheng's / Murch-Wilson's inlet-heating parameter (Gupta et al. 1992; Wilson & Sheu 1983).
     """
-    check_finite("entrainment_speed", entrainment_speed)  # NaN gave NaN silently (session 10)
+    check_finite("entrainment_speed", entrainment_speed)  # NaN gave NaN silently
     check_positive("dynamic_viscosity", dynamic_viscosity)
     check_positive("temperature_viscosity_coefficient", temperature_viscosity_coefficient,
                    allow_zero=True)
@@ -459,7 +459,7 @@ def gupta_1992(entrainment_speed: Any, dynamic_viscosity: Any,
         phi = (1.0 - 13.2 * ph * big_l**0.42) / (1.0 + 0.213 * (1.0 + 2.23 * s**0.83)
                                                  * big_l**0.64)
     # L -> inf (L overflows for absurd speeds): numerator ~ -L^0.42 or 1, denominator ~ L^0.64,
-    # so phi -> 0 (clipped below); inf/inf would otherwise be NaN (session 10)
+    # so phi -> 0 (clipped below); inf/inf would otherwise be NaN
     phi = np.where(np.isinf(big_l), 0.0, phi)
     if np.any(phi < 0.05):
         warnings.warn("gupta_1992: phi_T below 0.05 clipped (outside the fitted regime)",

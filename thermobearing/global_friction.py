@@ -335,7 +335,7 @@ def skf_four_term(
     Oil level H (``oil_level``, from the lowest point of the outer raceway) is used for
     ``lubrication="oil_bath"``. For "oil_jet"/"circulating" the drag is the oil-bath value
     with H = half the rolling-element diameter, doubled -- SKF's rule for oil jets as
-    recalled (not checked against the catalogue this session). "oil_air"/"grease": no drag.
+    recalled (not checked against the catalogue). "oil_air"/"grease": no drag.
 
     Parameters
     ----------

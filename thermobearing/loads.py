@@ -25,7 +25,7 @@ damped block Newton are compiled (numba, ``cache=True``: :func:`_contacts_nb`,
 Hertz constants are the compiled Hamrock-Brewe fast path of :mod:`thermobearing.hertz` that
 the ball skidding residual also uses.
 
-Newton's safeguards (session 11): the springs that keep the block system regular (on a
+Newton's safeguards: the springs that keep the block system regular (on a
 ball that touches nothing, on the ring when no ball touches) are Jacobian-only
 Levenberg-Marquardt terms, relaxed after every full step, so the solution is the one of
 the contact forces alone; each ball is damped on its own residual before a global line
@@ -234,7 +234,7 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     # load scale for the residual; Jacobian-only (Levenberg-Marquardt) springs on the balls
     # (holds a ball that touches nothing) and on the ring (moves it towards contact when no
     # ball touches), relaxed by the solver after full steps: the solution does not depend on
-    # them. Session 11: the ball spring was a force in the residual (centred on the pitch
+    # them. The ball spring used to be a force in the residual (centred on the pitch
     # circle) that pulled balls resting in a groove up its flank with more than their
     # centrifugal force and stalled Newton (SKF6304, 21.9 kN + 6.3 kN at 10 r/min), and the
     # ring spring stayed at its start value, so Newton converged linearly.
@@ -257,7 +257,7 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     norm, it, ok = _ld_solve(bx, br, u, cpsi, tab, c, wmc, gyroscopic == "shared", tol_abs,
                              step_max, k_ring, int(max_iter), cf, Fc, Mg)
     if not ok and np.isfinite(norm) and guess is None and np.any(wm != 0.0):
-        # second start (session 11): every ball seated in the outer groove by its
+        # second start: every ball seated in the outer groove by its
         # centrifugal force, the ring at the rigid-pair displacement. The rigid-pair start
         # places the balls without the centrifugal force; where it is comparable with the
         # load (a four-point bearing under a few newtons of axial load at 16-100 r/min:

@@ -444,7 +444,7 @@ def _ld_solve(bx: np.ndarray, br: np.ndarray, u: np.ndarray, cpsi: np.ndarray,
         scale = min(1.0, step_max / max(abs(du[0]), abs(du[1]), 1e-300))
         du[0] *= scale
         du[1] *= scale
-        # Per-ball damping first (session 11): a ball at the edge of the load zone whose
+        # Per-ball damping first: a ball at the edge of the load zone whose
         # open contact is a fraction of a micrometre from closing has almost no stiffness
         # across it, so its Newton step can drive it deep into that contact; a global line
         # search then cuts every step and the loaded balls and the ring crawl. Each ball's

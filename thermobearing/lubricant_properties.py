@@ -84,14 +84,14 @@ def alpha_mineral_asme_fit(eta: ArrayLike) -> ArrayLike:
     references=["gold2001"],
     parameters={"nu": "m**2/s"},
     validity="paraffinic mineral oils; constants recalled (s = 9.904, t = 0.139), not "
-    "checked against the original this session; gives ~26 % lower alpha than the ASME 1953 data",
+    "checked against the original; gives ~26 % lower alpha than the ASME 1953 data",
     summary="Gold et al. 2001: alpha = s nu^t (1/GPa, nu in mm^2/s), paraffinic mineral oils",
 )
 def alpha_gold_paraffinic(nu: ArrayLike) -> ArrayLike:
     """Gold et al. (2001) alpha = s nu^t for paraffinic mineral oils [1/Pa].
 
     alpha [1/GPa] = 9.904 (nu [mm^2/s])^0.1390. The constants are as recalled from the
-    literature and could not be checked against Gold et al. this session; on the mineral
+    literature and could not be checked against Gold et al.; on the mineral
     oils of Stachowiak Table 2.3 this form gives alpha about 26 % lower than the table (a
     test documents the offset). Not used by the presets.
     """

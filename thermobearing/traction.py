@@ -79,7 +79,7 @@ def _as_speed(slide_speed: Any) -> np.ndarray:
 
 def _as_pressure(pressure: Any) -> np.ndarray:
     """Pressure array [Pa]; NaN or inf raise InputError (a NaN pressure gave a NaN stress
-    silently in the pressure-proportional laws; session 10)."""
+    silently in the pressure-proportional laws)."""
     p = np.asarray(pressure, dtype=float)
     if not np.all(np.isfinite(p)):
         raise InputError("traction.pressure", "non-finite values", "finite pressures [Pa]")
@@ -162,7 +162,7 @@ def _eyring_smooth_node(lam: float, tau0: float, inv_tau0: float, s: float, p: f
 
 
 # ---------------------------------------------------------------------------
-# Vectorisable elementary functions of the Eyring fast path (session 8). numba compiles
+# Vectorisable elementary functions of the Eyring fast path. numba compiles
 # math.log / math.asinh to calls of the C library, which stop LLVM from vectorising the
 # contact integration's node loop; these are the same algorithms in straight-line code
 # (bit manipulation and polynomials only), so that the node loop of

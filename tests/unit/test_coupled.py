@@ -355,7 +355,7 @@ def test_default_rib_friction_left_out_where_the_geometry_cannot_host_it():
     assert all(link.name != "rib_friction" for link in sim.chain)
     said = [w for w in sim.warnings if "rib_friction left out" in w]
     assert len(said) == 1 and "ribs on the outer ring" in said[0]
-    # no key of the bearing can fix outer-ring ribs: no hint to add geometry (session 12)
+    # no key of the bearing can fix outer-ring ribs: no hint to add geometry
     assert "end_face_crown_radius" not in said[0]
     named = _CRB_SCENE.format(preset="NU214", models='heat_sources = ["rib_friction"]')
     sim = Simulation(loads_scene(named), progress=False)

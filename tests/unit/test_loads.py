@@ -97,8 +97,8 @@ def test_gyroscopic_friction_option_balances_the_ring():
 
 
 # Values of the numpy implementation of ball_load_distribution (commit 87c0e55, before it was
-# compiled), captured with that code at full precision. Until session 11 the compiled Newton
-# reproduced them to round-off. Since then the weak ball-centring spring is Jacobian-only
+# compiled), captured with that code at full precision. The compiled Newton first
+# reproduced them to round-off. Now the weak ball-centring spring is Jacobian-only
 # (it was a force in the residual of up to ~1e-5 N that entered the equilibrium) and the
 # solver takes per-ball damped, Levenberg-Marquardt steps, so the solution must agree to the
 # size of that removed force and the convergence tolerance (loads 2e-5 N of 300-1000 N,

@@ -126,7 +126,7 @@ def test_ball_load_distribution_light_radial_load_deep_groove():
         _check_ball(ld, fr, fa)
 
 
-def test_ball_load_distribution_points_fixed_in_session_11():
+def test_ball_load_distribution_points_of_the_probe_converge():
     """Defects found by this test: SKF6304 at rest under 1 N
     radial stopped at 4.3e-5 N; 21.9 kN radial + 6.26 kN axial (2.8x C0) stalled at 2.6e-4 N
     at 10 r/min and took 660 iterations at 100 r/min. Causes: the ball-centring spring was a

@@ -201,8 +201,8 @@ def test_ball_points_found_by_the_probe_converge(name, rpm, fr, fa, t_c):
     90 degC: the cold start's load distribution crawled at 3e-5 N against its 5e-6 N
     tolerance (ConvergenceError); as a starting point it is now taken at tol 1e-6. SKF6304,
     4.19 kN at 84 r/min, 72.5 degC (failed at 0.35 until fixed with the load
-    distribution's start, loads.py). QJ1044, 2.15 N pure axial at 35.5 r/min (until session
-    11 the cold start's load distribution stopped at 0.30 N: the centrifugal force, 0.07 N
+    distribution's start, loads.py). QJ1044, 2.15 N pure axial at 35.5 r/min (the
+    cold start's load distribution used to stop at 0.30 N: the centrifugal force, 0.07 N
     per ball, moves every ball into a third arc; now a second start seats the balls in the
     outer groove, loads.py)."""
     check_ball_invariants(_ball_solve(name, rpm, fr, fa, t_c), fr, fa, name)

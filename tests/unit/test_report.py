@@ -138,7 +138,7 @@ def test_sweep_report_separates_every_swept_parameter(tmp_path):
 
 def test_sweep_report_keeps_the_sweeps_numeric_columns():
     """A summary with mixed units of one swept quantity (15 L/min, 0.5 L/s): the sweep writes
-    'supply.flow [L/min]' converted value by value; the report keeps it (until session 12 it
+    'supply.flow [L/min]' converted value by value; the report keeps it (earlier versions
     re-read the text with the first row's unit, 0.5 L/s became 0.5 L/min). A parameter held
     at one value draws no what-if curve; a text parameter (oil grade) does."""
     import pandas as pd
@@ -156,7 +156,7 @@ def test_sweep_report_keeps_the_sweeps_numeric_columns():
 
 def test_loss_map_slices_share_one_colour_scale(monkeypatch):
     """fig_loss_maps(ranges=...): the contour levels span the given range, so the maps of
-    the slices of a three-parameter sweep can be compared by colour (session 12: each map
+    the slices of a three-parameter sweep can be compared by colour (each map
     had its own scale)."""
     import matplotlib.axes
     import numpy as np

@@ -400,7 +400,7 @@ def test_film_supported_ring(nu214, oil, state150):
     (1500.0, 295.15, -7.83e-9), (6000.0, 300.0, -1.59e-8)])
 def test_loaded_near_pure_rolling_converges_by_newton_with_a_fine_step(rpm, t_oil,
                                                                         slip_fallback):
-    """Defect found in session 12 (a catalogue NU 206 on a motor rig, 2 kN, ISO VG 68 at
+    """Defect found by a user tour (a catalogue NU 206 on a motor rig, 2 kN, ISO VG 68 at
     22-47 degC): Newton's finite-difference step (1e-7 of the inner speed) spanned the
     saturation of the tractions near pure rolling, Newton stalled from both cold guesses and
     every state took the bracketed fallback (6-12 s of CPU each: a 60-min protocol ran 90 s).

@@ -1,4 +1,4 @@
-"""What a user meets calibrating a scene from the command line (issue 6 item 7, session-12
+"""What a user meets calibrating a scene from the command line (issue 6 item 7, a user
 tour): each test is a defect found by running ``thermobearing calibrate`` on the shipped
 synthetic example, written before its fix. The "measured" data are SYNTHETIC (model output,
 ``synthetic_measurements``), so the right answer is known.

@@ -1,5 +1,5 @@
 """The sweep report's figures (report.fig_loss_maps / fig_whatif) on the sweeps a user makes
-(session-12 tour of issue 6 item 6): each test is a defect found on the command line."""
+(a user tour of issue 6 item 6): each test is a defect found on the command line."""
 
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """What a user meets in an oil-flow what-if sweep from the command line (issue 6 item 6,
-session-12 tour): each test is a defect found by running ``thermobearing sweep`` on the
+a user tour): each test is a defect found by running ``thermobearing sweep`` on the
 default scene, written before its fix. The runner is a small deterministic function of the
 case's scene (the physics runner is tested elsewhere); what is under test is the sweep.
 """

@@ -52,7 +52,7 @@ def _numeric_params(df: pd.DataFrame, params: list[str]) -> pd.DataFrame:
 
     A summary written by this version of ``thermobearing sweep`` already has that column,
     converted to one unit value by value (``15 L/min`` and ``0.5 L/s`` both in L/min): it is
-    kept and the text column dropped (session 12: the text was re-read with the first row's
+    kept and the text column dropped (the text was re-read with the first row's
     unit for every value). Older summaries are converted from the text as before."""
     out = df.copy()
     for p in params:

@@ -23,9 +23,9 @@ Setup: one banded LU (half-band ``width + 2``), ``nc`` banded back-substitutions
 Schur complement, as for the purely banded preconditioner before. Inside a Newton solve the
 far-field part (``Z`` and the coarse LU) is built once per grid and kept while GMRES converges
 fast; the banded near field is refactored at every iteration (:meth:`refresh_near`).
-Measured on BM-6 (session 4): spectral radius of ``I - M^-1 A`` 0.08 at M = 100, L = 20 on
+Measured on BM-6: spectral radius of ``I - M^-1 A`` 0.08 at M = 100, L = 20 on
 512 nodes, 2-3 GMRES iterations per Newton step (1279 -> 278 GMRES iterations over the 9
-cases at N = 1024 against the banded preconditioner of half-band n/8). Session 5: one
+cases at N = 1024 against the banded preconditioner of half-band n/8). One
 compiled call per application (:func:`_bordered_solve`; the coarse LU solve folded into
 ``W = (I + V Z)^-1 Kc`` at setup) instead of ~15 numpy / LAPACK-wrapper calls.
 """

@@ -115,7 +115,7 @@ def _eyring_smooth_grad(lam: float, tau0: float, inv_tau0: float, s: float, p: f
     tau = tau_E tau_L / sqrt(tau_L^2 + tau_E^2): dtau/dtau_E = tau_L^3 / (..)^(3/2),
     dtau/dtau_L = tau_E^3 / (..)^(3/2), dtau_E/ds = rate / sqrt(1 + x^2),
     dtau_E/drate = s / sqrt(1 + x^2), x = rate s / tau0 (seed paper 002 eqs. 11-14).
-    Branch-free (session 8: the node loop of :func:`_contact_traction_jac` vectorises);
+    Branch-free (the node loop of :func:`_contact_traction_jac` vectorises);
     log1p(y) = log(u) + (y - (u - 1)) / u, u = 1 + y, with the log of
     :func:`thermobearing.traction._log_pos`."""
     x = rate * s * inv_tau0
@@ -147,7 +147,7 @@ def _jac_node_sums(xg: np.ndarray, yg: np.ndarray, px_k: np.ndarray, py_k: np.nd
     """The 43 node sums of :func:`_contact_traction_jac` for one contact (the tractions'
     6 and the derivatives' 37 monomial sums) from the per-node values, with the additions
     free to be reassociated (numba fastmath 'reassoc' only) so that LLVM vectorises them
-    (session 8; the order changes the sums at round-off)."""
+    (the order changes the sums at round-off)."""
     sx0 = sx1 = sx2 = sy0 = sy1 = sy2 = 0.0
     # kxx sums over 1, x2, y, x4, x2y, y2
     xx_1 = xx_x2 = xx_y = xx_x4 = xx_x2y = xx_y2 = 0.0

@@ -2,7 +2,7 @@
 
 One job: solve :class:`~thermobearing.skidding.ball_residual.ball_residual_system` from a
 start (:func:`newton_block`). Numerics (issue 5 item 4): Newton with a structured Jacobian
-(:class:`JacobianBlocks`), analytic (:mod:`~thermobearing.skidding.ball_jacobian`, session 7)
+(:class:`JacobianBlocks`), analytic (:mod:`~thermobearing.skidding.ball_jacobian`)
 where the default compiled models run, else by forward differences -- the six per-ball
 columns are perturbed for all balls at once (ball blocks are independent except through the
 globals), three more evaluations give the global columns; the 6x6 ball blocks are eliminated
@@ -43,8 +43,8 @@ from .ball_residual import N_BALL, N_GLOBAL, _residual_one, ball_residual_system
 __all__ = ["JacobianBlocks", "chord_polish", "newton_block", "trust_region"]
 
 # largest Newton step per scaled unknown (positions in microns, spins / (omega_i d_m / D),
-# pocket force / F_s; ring displacement in microns, cage speed / omega_i). Spins 0.5 (0.2
-# until session 5): light-load cold starts crept at the cap, every damped step scaled to
+# pocket force / F_s; ring displacement in microns, cage speed / omega_i). Spins 0.5 (with
+# 0.2, light-load cold starts crept at the cap, every damped step scaled to
 # 1/5 of the Newton step by one ball's axial spin, with a fresh Jacobian each time (12 such
 # iterations at 300 r/min, Fa = 0, hot oil). Measured on 540 cold starts (Z = 8/16/32,
 # 300-3000 r/min x 10, Fa = 0 and 200 N-40 kN x 8, cold and hot oil, newton_block alone):
@@ -104,14 +104,14 @@ def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, t
     to round-off; for others, or across a regime change, the exact residual at the end is
     larger than the phase's and the Python loop goes on from there. The model is kept on the
     system (``_torque_fit``, shared with its ``reloaded`` copies) and reused while omega_c0 is
-    within 5 % of the centre it was fitted at (session 8)."""
+    within 5 % of the centre it was fitted at."""
     wc0 = float(G[2])
     held = system._torque_fit
     if held and abs(wc0 - held[0]) <= 0.05 * abs(held[0]):
         # the model of an earlier solve of this system (the same models and speed: a warm
         # start's system shares it, see ``reloaded``), centred within 5 % of wc0: exact for
         # the default models within a flow regime, so refitting would give the same model
-        # (session 8: saves a Python torque evaluation per warm start)
+        # (saves a Python torque evaluation per warm start)
         tq = held[1].copy()
         tq[8] = system.T_s
     else:
@@ -179,7 +179,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     some again); a fresh Jacobian ends the Broyden phase. The polishing step is skipped
     when the norm is already below ``polish_below`` (the energy balance closes to ~1e-9).
 
-    ``fd_step``: forward-difference step in scaled unknowns (1e-7; 1e-6 until session 5). With
+    ``fd_step``: forward-difference step in scaled unknowns (1e-7; formerly 1e-6). With
     1e-6 some states got a Jacobian poor enough that Newton with a fresh Jacobian at every
     iterate converged only linearly (ratio 0.55: QJ1044, Z = 16, 600 r/min, 1 kN, hot oil),
     and the Z = 32 hot-oil cold starts at 300 r/min, 200 N and 0 N needed a load continuation
@@ -195,13 +195,13 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     many iterations, a failed line search or a stall carries the last iterate as
     ``err.iterate = (X, G, norm)``.
 
-    ``analytic`` (session 7): a fresh Jacobian is the analytic one of
+    ``analytic``: a fresh Jacobian is the analytic one of
     :func:`~thermobearing.skidding.ball_jacobian.analytic_blocks` (forward-mode derivatives
     through the compiled residual; about 2-3 residual evaluations of CPU instead of the
     batch of nine perturbed states) when the system's models have it, else the finite
     differences. Counted in ``system.n_jac``, not in ``n_eval``.
 
-    ``warm_refresh`` (session 7, warm starts with the analytic Jacobian): after an accepted
+    ``warm_refresh`` (warm starts with the analytic Jacobian): after an accepted
     chord / Broyden step with contraction rho = |F_new| / |F_old|, the steps still needed at
     that rate are log(polish_below / |F_new|) / log(rho); when that exceeds ``warm_refresh``
     the handed-over Jacobian is dropped and an analytic one taken at the current iterate
@@ -309,7 +309,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
             try:
                 jac = jacobian_fd(X, G, R, Gc, Gk)
             except ConvergenceError as err:
-                # a singular ball block at this iterate (session 10, property tests: SKF6304
+                # a singular ball block at this iterate (property tests: SKF6304
                 # at 100 r/min, 5 kN -- a ball of the unloaded zone, held by a centrifugal
                 # contact of ~1e-3 N, loses it along the step): damped steps with the last
                 # good factorisation; else hand the iterate to the caller's fallbacks
@@ -403,7 +403,7 @@ def trust_region(system: ball_residual_system, X: np.ndarray, G: np.ndarray, *,
     same scaled residual, from (X, G): the fallback of :func:`~thermobearing.skidding.ball.
     solve_ball` when the damped Newton of :func:`newton_block` stalls close to a root.
 
-    Measured (session 6): at QJ1044 with Z = 16, 30 degC oil, 3000 r/min, Fa = 15.7 kN,
+    Measured: at QJ1044 with Z = 16, 30 degC oil, 3000 r/min, Fa = 15.7 kN,
     Fr = 1 kN (a BM-5 20 x 20 map point) the damped Newton stalls at a scaled residual of
     1.9e-3 (the line search accepts steps of ~1e-3 of the Newton step: the finite-difference
     ball blocks of the balls near psi = 180 deg change by up to 44 % between steps 1e-6 and

@@ -185,7 +185,7 @@ def _fd_blocks(Rb: np.ndarray, Gcb: np.ndarray, Gkb: np.ndarray, R: np.ndarray,
 def _rescale_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray, f: float,
                     xs: np.ndarray, xs_old: np.ndarray, gs: np.ndarray, gs_old: np.ndarray
                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """:meth:`JacobianBlocks.rescaled` compiled (session 8; six numpy operations cost ~20 us):
+    """:meth:`JacobianBlocks.rescaled` compiled (six numpy operations cost ~20 us):
     column c of every block times (f xs_c) / xs_old_c (ball columns) or (f gs_g) / gs_old_g
     (global columns), the same operations as the numpy expressions it replaces."""
     nz, nb, ng = A.shape[0], A.shape[1], B.shape[2]

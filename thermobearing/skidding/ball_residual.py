@@ -548,7 +548,7 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         t_guide = 0.0 if md.cage_guide_torque is None else float(md.cage_guide_torque(wc, wg))
         fd_num = u_ball = None
         if md.drag_radius is not None:
-            # the drag model called with a float (session 8: ~14 -> ~5 us per new cage speed
+            # the drag model called with a float (~14 -> ~5 us per new cage speed
             # for the default model; a model returning a size-1 array is accepted too)
             u = wc * (1.0 - md.oil_speed_ratio) * md.drag_radius
             u_ball = np.array([u])

@@ -86,7 +86,7 @@ def _hd1977_central_vec(u: float, eta0: float, alpha: float, q: float, rx: float
     (1 - 0.61 exp(-0.73 k)), k = 1.03 (R_y/R_x)^0.64, U = eta0 |u| / (E' R_x), G = alpha E',
     W = Q / (E' R_x^2), h = H_c R_x) with the powers as exp(sum of exponent x log), by the
     branch-free log / exp of :mod:`thermobearing.traction`, so that a loop over contacts
-    vectorises (session 8). Equal to ``_hd1977_central_nb`` to ~1e-14 relative (the logs'
+    vectorises. Equal to ``_hd1977_central_nb`` to ~1e-14 relative (the logs'
     rounding times the exponents; test); 0 for U = 0 or G = 0, +inf for W = 0 as there.
     u [m/s], eta0 [Pa s], alpha [1/Pa], q [N], rx, ry [m], ep [Pa]."""
     big_u = eta0 * abs(u) / (ep * rx)
@@ -292,7 +292,7 @@ def _contact_angles(geo: np.ndarray) -> None:
     """Row G_ALPHA of ``geo`` (N_GEO, n): the contact angle alpha = atan2(n_a, |n_r|) [rad]
     of every contact (the angle of the arc centre -> ball centre line to the radial plane;
     ``loads.arc_contacts``). Not part of the residual (whose R_x uses cos(alpha) = |n_r|):
-    filled for the results and details only (session 8: 64 atan2 less per evaluation)."""
+    filled for the results and details only (64 atan2 less per evaluation)."""
     for n in range(geo.shape[1]):
         geo[G_ALPHA, n] = math.atan2(geo[G_NA, n], abs(geo[G_NR, n]))
 

@@ -165,7 +165,7 @@ def _summary(Q: np.ndarray, alpha: np.ndarray, inner_f: np.ndarray, a0: float,
 def _result_kernel(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
                    pocket: np.ndarray, Fd: np.ndarray, inner_f: np.ndarray, a0: float,
                    gamma: float) -> tuple:
-    """The numbers of a result in one compiled call (session 8; was :func:`_summary` and
+    """The numbers of a result in one compiled call (was :func:`_summary` and
     ``ball_residual._energy_audit`` through the details dict): the summary of
     :func:`_summary`, the raceway heat summed over all / inner / outer arcs [W], the pocket
     and drag heat summed over the balls [W] and the balls' torque on the inner ring [N m] of

@@ -38,7 +38,7 @@ Python-driven RK4 loop 7.6-11.8 s; slip 5.23 / 5.51 (table) vs 5.23 / 5.51 (eval
 differences are those of the chaotic impacting motion under floating-point-level changes
 (validation case SOURCE.md). Refresh convergence is checked in the tests. Units: SI.
 
-Cage runaway and the fallback (2026-11-22, sixth session, D3). The example scene
+Cage runaway and the fallback (2026-11-22). The example scene
 ``configs/scenes/crb_rib_example.toml`` with 0.06 g (paper 003's bearing as an NUP variant,
 20000 r/min, 3 kN, MIL-PRF-23699) stopped with "the state keeps leaving the traction table":
 at 420 K (the "elements" temperature its transient probed) the table path's cage ran from

@@ -3,7 +3,7 @@ inner-ring speed = total heat to 1e-8 relative at every converged state).
 
 At 300 r/min, 40 kN axial load and hot oil the heat is small (~70 W) against the contact
 forces, so a residual just inside the scaled tolerance (4e-10) left the identity at 7.3e-8
-(session-4 code, finite-difference step 1e-6, measured); solve_ball now takes a chord step
+(earlier code, finite-difference step 1e-6, measured); solve_ball now takes a chord step
 more where the identity is above ``energy_tol`` (2e-9).
 """
 

@@ -3,7 +3,7 @@
 At the BM-5 map point QJ1044 with 16 balls, 30 degC ISO VG46 (33 L/min jets), 3000 r/min,
 Fr = 1 kN, Fa = 15.7 kN the damped Newton of ``newton_block`` stalls at a scaled residual of
 1.9e-3 (measured: the line search accepts ~1e-3 of every Newton step) and the axial-load
-continuation stalled the same way, so the point failed (also with the session-5 code);
+continuation stalled the same way, so the point failed (also with earlier code);
 Powell's hybrid method (``ball_newton.trust_region``, scipy's MINPACK hybrd) from the stalled
 iterate converges. The map and its settings are those of benchmarks/bm5_skidding.py.
 """

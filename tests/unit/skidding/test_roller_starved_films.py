@@ -114,7 +114,7 @@ def test_starved_film_supported_bearing_converges_and_keeps_the_energy_balance(n
 
 @pytest.mark.slow  # 20 s
 def test_starved_film_supported_cage_slows_with_load_through_fewer_driven_rollers(nu214, oil):
-    # The session-6 mechanism of the paper 000 case (SOURCE.md): with a 10 um oil layer the
+    # The starved-film mechanism of the paper 000 case (SOURCE.md): with a 10 um oil layer the
     # load moves the ring off centre, the films opposite the load no longer reach across
     # their gaps, fewer rollers are driven and the cage slows from 100 to 200 N (measured
     # 1483.3 -> 1423.4 r/min, 18 -> 15 driven rollers; paper 000 Table 2: 1292.78 ->
