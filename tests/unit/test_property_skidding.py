@@ -306,7 +306,10 @@ def test_roller_heavy_load_bracketed_to_round_off(rpm):
     the residual that one-ulp speed changes make there (extras['round_off_floor'])."""
     r = _roller_solve("NU214", rpm, 1e5, 40.0)
     check_roller_invariants(r, 1e5, "NU214")
-    assert r.extras["method"] == "bracketed" and r.residual_norm < 1e-5
+    # bracketed, or Newton accepted at the same per-equation round-off floor (which of the
+    # two depends on round-off in the compiled kernels)
+    assert r.extras["method"] in ("bracketed", "newton_round_off")
+    assert r.residual_norm <= 4.0 * r.extras["round_off_floor"] and r.residual_norm < 1e-5
 
 
 def test_warm_start_from_another_bearing_is_handled():

@@ -414,7 +414,10 @@ def test_loaded_near_pure_rolling_converges_by_newton_with_a_fine_step(rpm, t_oi
         "bore": "30 mm", "outer_diameter": "62 mm", "width": "16 mm",
         "roller_diameter": "7.5 mm", "roller_length": "7.5 mm", "n_rollers": 13})
     r = solve_roller(nu206, load_lubricant("ISO_VG68"), rpm * math.pi / 30, 2000.0, 0.0, t_oil)
-    assert r.converged and r.extras["method"] == "newton" and r.residual_norm <= 1e-9
+    # not the bracketed fallback (a state at the round-off floor is as good; which of the
+    # two Newton endings a point takes depends on round-off)
+    assert r.converged and r.extras["method"] in ("newton", "newton_round_off")
+    assert r.residual_norm <= max(1e-9, 4.0 * r.extras.get("round_off_floor", 0.0))
     assert r.slip == pytest.approx(slip_fallback, rel=5e-3)
     loss = r.power_loss
     assert loss["total"] > 0
