@@ -280,8 +280,10 @@ def run_sweep(
                         for fut in dask_completed(list(futures)):
                             with _naming_case(futures[fut], out):
                                 result = fut.result()
-                            _append(out, _record(futures[fut], result))
-                            _write_summary(out, cases)
+                            rec = _record(futures[fut], result)
+                            _append(out, rec)
+                            done[rec["case"]] = rec
+                            _write_summary(out, cases, done)
                             bar.update(1)
                 finally:
                     client.close()
@@ -289,8 +291,10 @@ def run_sweep(
                 for c in todo:
                     with _naming_case(c, out):
                         result = runner(c.scene_toml)
-                    _append(out, _record(c, result))
-                    _write_summary(out, cases)
+                    rec = _record(c, result)
+                    _append(out, rec)
+                    done[rec["case"]] = rec
+                    _write_summary(out, cases, done)
                     bar.update(1)
             else:
                 with ProcessPoolExecutor(max_workers=workers) as pool:
@@ -299,8 +303,10 @@ def run_sweep(
                         for fut in as_completed(futs):
                             with _naming_case(futs[fut], out):
                                 result = fut.result()
-                            _append(out, _record(futs[fut], result))
-                            _write_summary(out, cases)
+                            rec = _record(futs[fut], result)
+                            _append(out, rec)
+                            done[rec["case"]] = rec
+                            _write_summary(out, cases, done)
                             bar.update(1)
                     except KeyboardInterrupt:
                         # leaving the with-block would wait for every queued case: drop them
@@ -308,4 +314,4 @@ def run_sweep(
                         raise
     finally:
         bar.close()
-    return _write_summary(out, cases)
+    return _write_summary(out, cases, done)

@@ -127,8 +127,14 @@ def record_base_scene(out_dir: Path, scene: Scene) -> None:
     path.write_text(text, encoding="utf-8")
 
 
-def _write_summary(out_dir: Path, cases: Sequence[Case]) -> pd.DataFrame:
-    done = finished_cases(out_dir)
+def _write_summary(out_dir: Path, cases: Sequence[Case],
+                   done: Mapping[str, Mapping[str, Any]] | None = None) -> pd.DataFrame:
+    """Rewrite ``summary.csv`` with the finished ``cases`` in their order. ``done``: the
+    records the caller keeps in memory (id -> record, as :func:`finished_cases` returns
+    them); without it the store is read back (once per call: a sweep that passed nothing
+    re-read ``cases.jsonl`` after every case, quadratic in the number of cases)."""
+    if done is None:
+        done = finished_cases(out_dir)
     order = {c.case_id: i for i, c in enumerate(cases)}
     recs = sorted((r for r in done.values() if r["case"] in order), key=lambda r: order[r["case"]])
     df = summary_frame(recs)

@@ -398,8 +398,8 @@ def test_ctrl_c_in_a_local_process_pool_does_not_run_the_queued_cases(tmp_path, 
 
     write_summary = sweep._write_summary
 
-    def interrupted_after_first(out, cases):
-        write_summary(out, cases)
+    def interrupted_after_first(out, cases, *done):
+        write_summary(out, cases, *done)
         raise KeyboardInterrupt
 
     log = tmp_path / "started.log"

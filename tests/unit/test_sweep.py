@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import pandas as pd
 import pytest
 
 from thermobearing.errors import InputError
@@ -130,3 +131,32 @@ def test_unreachable_scheduler(tmp_path):
     with pytest.raises(InputError, match="connect_timeout"):
         run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
                   scheduler="tcp://127.0.0.1:9", progress=False, connect_timeout=0.0)
+
+
+def test_summary_is_written_from_memory_not_by_rereading_the_store(tmp_path, monkeypatch):
+    """The store (cases.jsonl) is read once, when the sweep starts (which cases are done);
+    after each case summary.csv is rewritten from the records kept in memory (it used to
+    re-read the whole store after every case: quadratic in the number of cases). The
+    summary still lists every case in order, also after a resume."""
+    from thermobearing import sweep_store
+
+    reads = []
+    original = sweep_store.finished_cases
+
+    def counted(out_dir):
+        reads.append(out_dir)
+        return original(out_dir)
+
+    monkeypatch.setattr(sweep_store, "finished_cases", counted)
+    monkeypatch.setattr("thermobearing.sweep.finished_cases", counted)
+    scene = load_scene()
+    params = [parse_set("supply.flow=10,20,30,40,50", scene.to_dict())]
+    df = run_sweep(scene, params, tmp_path, runner=flow_speed_runner, workers=1, progress=False)
+    assert len(reads) == 1 and len(df) == 5
+    assert list(df["supply.flow"]) == ["10 L/min", "20 L/min", "30 L/min", "40 L/min",
+                                      "50 L/min"]
+    on_disk = pd.read_csv(tmp_path / "summary.csv")
+    assert list(on_disk["case"]) == list(df["case"])
+    more = [parse_set("supply.flow=10,20,30,40,50,60", scene.to_dict())]
+    df2 = run_sweep(scene, more, tmp_path, runner=flow_speed_runner, workers=1, progress=False)
+    assert len(reads) == 2 and len(df2) == 6 and list(df2["case"])[:5] == list(df["case"])
