@@ -438,11 +438,15 @@ def glossary(losses: pd.DataFrame) -> pd.DataFrame:
 
 def loss_class_of(losses: pd.DataFrame) -> Mapping[str, str]:
     """Source -> its loss class in words (``mixed`` if its components differ); empty
-    without the ``load dependence`` column."""
+    without the ``load dependence`` column. Rows without a class (an empty cell: the 0 W
+    row each source books at a step at rest, or a component its source gives no class)
+    do not count; a source with no classed row at all gets an empty string."""
     if "load dependence" not in losses:
         return {}
     out = {}
     for src, g in losses.groupby("source"):
-        classes = {CLASS_LABELS.get(c, str(c)) for c in g["load dependence"].dropna()}
-        out[str(src)] = classes.pop() if len(classes) == 1 else "mixed"
+        classes = {CLASS_LABELS.get(c, str(c)) for c in g["load dependence"]
+                   if isinstance(c, str) and c}
+        out[str(src)] = (classes.pop() if len(classes) == 1
+                         else "mixed" if classes else "")
     return out
