@@ -262,6 +262,42 @@ def _operating_axis(df: pd.DataFrame) -> tuple[str, dict[Any, float], list[str],
     return operating_axis(df)
 
 
+def _stacked_panels(losses: pd.DataFrame, column: str, order: list[str],
+                    colours: Mapping[str, Any], label_of: Any, ylabel: str,
+                    legend_title: str) -> bytes:
+    """Stacked bars of ``power [W]`` per operating point, one bar segment per value of
+    ``column`` (in ``order``, then any other value alphabetically), one panel per bearing,
+    one legend for all panels (top of the stack first, as the bars read)."""
+    names = list(dict.fromkeys(losses["bearing"])) if "bearing" in losses else [None]
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.6 * len(names) + 0.8),
+                             squeeze=False, sharey=True, layout="constrained")
+    for ax, name in zip(axes[:, 0], names, strict=True):
+        df = losses if name is None else losses[losses["bearing"] == name]
+        key, pos, labels, xlabel = _operating_axis(df)
+        pivot = df.pivot_table(index=key, columns=column, values="power [W]",
+                               aggfunc="sum").fillna(0.0)
+        x = np.array([pos[k] for k in pivot.index])
+        bottom = np.zeros(len(pivot))
+        for value in order + sorted(set(pivot.columns) - set(order)):
+            if value not in pivot:
+                continue
+            ax.bar(x, pivot[value].to_numpy(), bottom=bottom, color=colours.get(value),
+                   label=label_of(value))
+            bottom += pivot[value].to_numpy()
+        every = max(1, math.ceil(len(labels) / 30))
+        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
+                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        if name is not None:
+            ax.set_title(f"bearing {name}", fontsize=9)
+        ax.grid(axis="y", alpha=0.3)
+    handles, labels_ = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles[::-1], labels_[::-1], loc="outside right upper", fontsize=7,
+               title=legend_title, title_fontsize=7)
+    return _png(fig)
+
+
 def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
     """Stacked power-loss bars [W] per operating point, one colour per source (paper 002
     Fig. 15), one panel per bearing (``bearing``: that one only). The sources are stacked
@@ -271,37 +307,9 @@ def fig_loss_bars(losses: pd.DataFrame, bearing: str | None = None) -> bytes:
     _check(losses, ("source", "power [W]"))
     if bearing is not None:
         losses = losses[losses["bearing"] == bearing]
-    names = list(dict.fromkeys(losses["bearing"])) if "bearing" in losses else [None]
     order = source_order(losses["source"])
-    colours = source_colours(order)
-    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.6 * len(names) + 0.8),
-                             squeeze=False, sharey=True, layout="constrained")
-    for ax, name in zip(axes[:, 0], names, strict=True):
-        df = losses if name is None else losses[losses["bearing"] == name]
-        key, pos, labels, xlabel = _operating_axis(df)
-        pivot = df.pivot_table(index=key, columns="source", values="power [W]",
-                               aggfunc="sum").fillna(0.0)
-        x = np.array([pos[k] for k in pivot.index])
-        bottom = np.zeros(len(pivot))
-        for src in order:
-            if src not in pivot:
-                continue
-            ax.bar(x, pivot[src].to_numpy(), bottom=bottom, color=colours[src],
-                   label=source_label(src))
-            bottom += pivot[src].to_numpy()
-        every = max(1, math.ceil(len(labels) / 30))
-        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
-                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel("power loss [W]")
-        if name is not None:
-            ax.set_title(f"bearing {name}", fontsize=9)
-        ax.grid(axis="y", alpha=0.3)
-    # one legend for all panels, top of the stack first (as the bars read)
-    handles, labels_ = axes[0, 0].get_legend_handles_labels()
-    fig.legend(handles[::-1], labels_[::-1], loc="outside right upper", fontsize=7,
-               title="loss source", title_fontsize=7)
-    return _png(fig)
+    return _stacked_panels(losses, "source", order, source_colours(order), source_label,
+                           "power loss [W]", "loss source")
 
 
 def fig_destinations(losses: pd.DataFrame) -> bytes | None:
@@ -310,37 +318,11 @@ def fig_destinations(losses: pd.DataFrame) -> bytes | None:
     losses table has no ``role`` column."""
     if "role" not in losses:
         return None
-    renamed = losses.drop(columns=["source"]).rename(columns={"role": "source"})
-    roles = [r for r in ROLE_LABELS if r in set(renamed["source"])]
-    names = list(dict.fromkeys(losses["bearing"])) if "bearing" in losses else [None]
-    fig, axes = plt.subplots(len(names), 1, figsize=(9, 3.6 * len(names) + 0.8),
-                             squeeze=False, sharey=True, layout="constrained")
+    roles = [r for r in ROLE_LABELS if r in set(losses["role"])]
     colours = dict(zip(ROLE_LABELS, plt.get_cmap("Set2").colors, strict=False))
-    for ax, name in zip(axes[:, 0], names, strict=True):
-        df = renamed if name is None else renamed[renamed["bearing"] == name]
-        key, pos, labels, xlabel = _operating_axis(df)
-        pivot = df.pivot_table(index=key, columns="source", values="power [W]",
-                               aggfunc="sum").fillna(0.0)
-        x = np.array([pos[k] for k in pivot.index])
-        bottom = np.zeros(len(pivot))
-        for role in roles + sorted(set(pivot.columns) - set(roles)):
-            if role not in pivot:
-                continue
-            ax.bar(x, pivot[role].to_numpy(), bottom=bottom, label=ROLE_LABELS.get(role, role),
-                   color=colours.get(role))
-            bottom += pivot[role].to_numpy()
-        every = max(1, math.ceil(len(labels) / 30))
-        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
-                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel("heat received [W]")
-        if name is not None:
-            ax.set_title(f"bearing {name}", fontsize=9)
-        ax.grid(axis="y", alpha=0.3)
-    handles, labels_ = axes[0, 0].get_legend_handles_labels()
-    fig.legend(handles[::-1], labels_[::-1], loc="outside right upper", fontsize=7,
-               title="heat goes to", title_fontsize=7)
-    return _png(fig)
+    return _stacked_panels(losses, "role", roles, colours,
+                           lambda r: ROLE_LABELS.get(r, r), "heat received [W]",
+                           "heat goes to")
 
 
 def summary_sources(columns: Iterable[str]) -> list[str]:
