@@ -67,6 +67,7 @@ from .simulation_bearings import (
     _Evaluation,
     _load_scene_bearing,
     _supply_notes,
+    axial_load_path,
 )
 from .simulation_chain import (
     BALL_SOURCES,
@@ -149,6 +150,9 @@ class Simulation:
                              "end_face_crown_radius and rib_height")
                 dropped.append(f"{spec.name}: default heat source rib_friction left out "
                                f"({why}){hint}")
+            no_path = axial_load_path(spec.name, b, scene.schedule.steps, kin_name, sources)
+            if no_path:
+                dropped.append(no_path)
             self.bearings.append(_Bearing(spec.name, key, b, is_ball, sources, kin_name, opts))
         from .heat_sources import HEAT_SOURCES
 

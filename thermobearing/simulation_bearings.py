@@ -100,3 +100,47 @@ def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any,
             f"(fitted at {cond.get('speed')}, {cond.get('flow')}; other conditions are "
             f"predictions)")
     return cal["params"], bearing, note
+
+
+def axial_load_path(name: str, bearing: Any, steps: Any, kinematics: str,
+                    sources: tuple[str, ...]) -> str | None:
+    """Check the schedule's axial loads against a cylindrical roller bearing's ribs before
+    anything is solved (``thermobearing check`` and ``Simulation``); None for other bearings
+    or a schedule without axial load.
+
+    An axial load on a cylindrical roller bearing has a path only through roller end faces
+    on ribs of both rings (NJ / NUP / NF types, ``ribbed_ring = "both"``; paper 003 sec.
+    3.2): on an NU-type bearing (``ribbed_ring = "outer"``, no inner-ring rib) it has none,
+    and the roller skidding solver carries no rib thrust (``skidding.roller``), so both are
+    errors naming the first loaded step and what to change. Under race control the thrust's
+    heat is booked by the ``rib_friction`` source only: without it the run would book no
+    loss for the axial load, so the returned note says so (a run warning); the whole-bearing
+    ``global_friction`` source takes the axial load in its own formula.
+    """
+    if getattr(bearing, "kind", None) != "cylindrical":
+        return None
+    loaded = [i for i, s in enumerate(steps) if s.axial_load != 0.0]
+    if not loaded:
+        return None
+    i = loaded[0]
+    value = f"{steps[i].axial_load / 1000.0:g} kN"
+    where = f"schedule step {i} axial_load (bearing {name!r}, {bearing.name})"
+    ribs = getattr(bearing, "ribbed_ring", "both")
+    if ribs == "outer":
+        raise InputError(
+            where, value,
+            "0 kN: ribbed_ring = 'outer' is an NU-type bearing (no rib on the inner ring), "
+            "which carries no axial load; an NJ / NUP-type bearing carries it through its "
+            "ribs (override ribbed_ring = 'both' with end_face_crown_radius and rib_height, "
+            "kinematics = 'race_control' and the rib_friction heat source)")
+    if kinematics == "skidding":
+        raise InputError(
+            where, value,
+            "0 kN with kinematics = 'skidding' (the roller skidding solver carries no rib "
+            "thrust); set [models] kinematics = 'race_control', where the rib_friction heat "
+            "source books the roller end-face / rib heat of the axial load")
+    if "rib_friction" not in sources and "global_friction" not in sources:
+        steps_text = ", ".join(str(j) for j in loaded)
+        return (f"{name}: the axial load of steps {steps_text} books no loss (the rib_friction "
+                "heat source, which carries it on the ribs, is not running)")
+    return None

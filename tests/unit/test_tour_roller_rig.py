@@ -4,8 +4,12 @@ with a stop, jet and oil bath, two bearings on one shaft, the report's loss tabl
 from __future__ import annotations
 
 import pandas as pd
+import pytest
 
+from thermobearing.errors import InputError
 from thermobearing.report_losses import glossary, loss_class_of
+from thermobearing.scene import loads_scene
+from thermobearing.simulation import Simulation
 
 
 def _losses_with_a_stop() -> pd.DataFrame:
@@ -47,3 +51,73 @@ def test_a_source_with_two_classes_is_mixed_and_one_without_any_is_blank():
     classes = loss_class_of(pd.concat([losses, extra], ignore_index=True))
     assert classes["churning_elements"] == "mixed"
     assert classes["plugin_source"] == ""
+
+
+def _crb_scene(bearing: str, kinematics: str, axial: str = "2 kN", extra_models: str = "",
+               overrides: str = "") -> str:
+    return f"""
+title = "CRB rig, axial load"
+[[bearings]]
+name = "de"
+preset = "{bearing}"
+{overrides}
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+flow = "2 L/min"
+inlet_temperature = "40 degC"
+[environment]
+ambient_temperature = "22 degC"
+[schedule]
+radial_load = "8 kN"
+step_duration = "3 min"
+speed = "3000 rpm"
+steps = [{{ axial_load = "0 kN" }}, {{ axial_load = "{axial}" }}]
+[models]
+kinematics = "{kinematics}"
+{extra_models}
+[network]
+template = "four_node_paper002"
+parameters = {{ housing_outer_diameter = "200 mm", housing_length = "50 mm" }}
+[outputs]
+want = ["temperatures", "losses"]
+"""
+
+
+@pytest.mark.parametrize("kinematics", ["race_control", "skidding", "none"])
+def test_an_axial_load_on_an_nu_bearing_is_refused_before_the_solve(kinematics):
+    """NU 214 (ribbed_ring = "outer"): no inner-ring rib, no path for an axial load. Race
+    control used to run it and book nothing for it; the skidding solver refused it only
+    at the step, in N. Now Simulation (and so `check`) names the step, the value in kN and
+    what to change."""
+    extra = ('heat_sources = ["global_friction"]' if kinematics == "none" else "")
+    with pytest.raises(InputError) as err:
+        Simulation(loads_scene(_crb_scene("NU214", kinematics, extra_models=extra)),
+                   progress=False)
+    msg = str(err.value)
+    assert "schedule step 1 axial_load (bearing 'de', NU214) = '2 kN'" in msg
+    assert "NU-type" in msg and "ribbed_ring = 'both'" in msg
+
+
+def test_an_axial_load_under_the_roller_skidding_solver_says_to_use_race_control():
+    scene = _crb_scene("CRB_50x75x16", "skidding", overrides='overrides = { ribbed_ring = "both" }')
+    with pytest.raises(InputError, match="kinematics = 'race_control'") as err:
+        Simulation(loads_scene(scene), progress=False)
+    assert "= '2 kN'" in str(err.value)
+
+
+def test_race_control_axial_load_without_the_rib_source_is_warned():
+    scene = _crb_scene("CRB_50x75x16", "race_control",
+                       overrides='overrides = { ribbed_ring = "both" }',
+                       extra_models='heat_sources = ["raceway_traction", "churning_elements"]')
+    sim = Simulation(loads_scene(scene), progress=False)
+    assert any("axial load of steps 1 books no loss" in w for w in sim.warnings)
+    # with the rib source named (the default set includes it) nothing is said
+    ok = Simulation(loads_scene(_crb_scene("CRB_50x75x16", "race_control",
+                                           overrides='overrides = { ribbed_ring = "both" }')),
+                    progress=False)
+    assert not any("books no loss" in w for w in ok.warnings)
+    # no axial load anywhere: no check at all (NU 214, the usual radial rig)
+    plain = Simulation(loads_scene(_crb_scene("NU214", "skidding", axial="0 kN")),
+                       progress=False)
+    assert not any("axial" in w for w in plain.warnings)
