@@ -559,7 +559,11 @@ def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str 
             alpha = lubricant.pressure_viscosity_coefficient(temperature)
             uu = np.broadcast_to(np.asarray(u, dtype=float), (z,))
             loaded = q > 0
-            qq = np.where(loaded, q, 1.0)
+            # unloaded elements go in at 0 N: the film formulas give them +inf (no
+            # conjunction to size, replaced by 0 below) and leave them out of their range
+            # check (a placeholder load here made every roller bearing's race-control run
+            # warn of a load parameter W far below the formula's range)
+            qq = np.asarray(q, dtype=float)
             if is_ball:
                 h = film_mod.hamrock_dowson_1977_central(uu, eta, alpha, qq, rx, ry,
                                                          effective_modulus=e_mod)

@@ -3,6 +3,7 @@ with a stop, jet and oil bath, two bearings on one shaft, the report's loss tabl
 
 from __future__ import annotations
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -121,3 +122,46 @@ def test_race_control_axial_load_without_the_rib_source_is_warned():
     plain = Simulation(loads_scene(_crb_scene("NU214", "skidding", axial="0 kN")),
                        progress=False)
     assert not any("axial" in w for w in plain.warnings)
+
+
+def test_race_control_film_range_check_sees_only_the_loaded_rollers():
+    """NU 214 under a radial load: the rollers outside the load zone carry nothing. They went
+    into the film formula at a 1 N placeholder, so every race-control run warned of a load
+    parameter W' (~6e-8) far below Pan-Hamrock's range, taken from no real contact. The
+    range warning now sees the loaded rollers only: its lower end is the smallest loaded
+    roller's W' = Q / (E' R_x L)."""
+    import re
+    import warnings
+
+    from thermobearing.errors import ValidityWarning
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.state import OperatingPoint, race_control_state
+
+    b = load_bearing("NU214")
+    op = OperatingPoint(inner_speed=3000 * np.pi / 30, radial_load=8000.0, axial_load=0.0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        state = race_control_state(b, op, lubricant=load_lubricant("ISO_VG46"),
+                                   temperature=323.15)
+    lows = {}
+    for w in caught:
+        m = re.search(r"pan_hamrock_central: W in \[([0-9.e+-]+),", str(w.message))
+        if m and issubclass(w.category, ValidityWarning):
+            lows[len(lows)] = float(m.group(1))
+    loaded_w = []
+    # the inner contacts have an unloaded zone (the outer ones carry the rollers'
+    # centrifugal force all round)
+    assert (np.asarray(state.contacts[0].normal_load) == 0).any()
+    for c in state.contacts:
+        q = np.asarray(c.normal_load, float)
+        h = np.asarray(c.film_thickness, float)
+        assert np.all(h[q == 0] == 0.0) and np.all(np.isfinite(h)) and np.all(h[q > 0] > 0)
+        rx = np.broadcast_to(np.asarray(c.reduced_radius_x, float), q.shape)
+        loaded_w.append(q[q > 0] / (b.effective_modulus * rx[q > 0]
+                                    * b.roller_effective_length))
+    placeholder = 1.0 / (b.effective_modulus * float(np.min(rx)) * b.roller_effective_length)
+    smallest = min(float(np.min(w)) for w in loaded_w)
+    assert smallest > 5 * placeholder
+    for low in lows.values():
+        assert low >= smallest * (1 - 1e-3)
