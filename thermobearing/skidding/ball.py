@@ -124,7 +124,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                max_iter: int = 150, continuation: bool = True,
                theoretical_reference=None, warm_iterations: int = 25,
                energy_tol: float = 2e-9, energy_polish: int = 2,
-               warm_refresh: float = 0.0) -> BallSkiddingResult:
+               warm_refresh: float = 0.0, cold_fallback: bool = True) -> BallSkiddingResult:
     """Solve the ball/cage/ring equilibrium at one operating point.
 
     Parameters
@@ -138,7 +138,9 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         the first chord Jacobian).
     warm_iterations : iterations allowed from the warm start before the cold start.
     tol : tolerance on the scaled residual norm (forces / F_s, moments / (F_s D/2)).
-    continuation : on a cold-start failure, continue from a higher axial load. (A cold start
+    continuation : on a cold-start failure, continue from a higher axial load, and if that
+        fails, in speed from a slow state (:func:`_speed_continuation`, ``extra["fallback"]
+        = "speed_continuation"``). (A cold start
         that reaches the iteration limit below a residual of 1e-2 first gets a second budget
         of Newton iterations from its last iterate, ``extra["fallback"] = "newton_restart"``;
         one whose damped Newton stalls there gets the trust-region fallback
@@ -149,6 +151,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     energy_tol, energy_polish : a converged state whose energy identity |T_shaft omega_i -
         sum heat| / sum heat is above ``energy_tol`` gets up to ``energy_polish`` more chord
         steps (each kept only if it lowers the residual; the identity is required to 1e-8).
+    cold_fallback : with ``guess``, a warm start that fails starts cold (default); False:
+        it raises (the steps of :func:`_speed_continuation` after the first).
     warm_refresh : warm starts: refresh the Jacobian analytically when the chord steps would
         need more than this many further evaluations (see
         :func:`~thermobearing.skidding.ball_newton.newton_block`; 0, the default: only when a
@@ -214,6 +218,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                                             jacobian=guess.extra.get("jacobian"),
                                             give_up=(6, 0.5), warm_refresh=warm_refresh)
         except ConvergenceError:
+            if not cold_fallback:
+                raise
             guess = None
     if guess is None:
         X0, G0, ld0 = race_control_guess(bearing, speed, radial_load, axial_load, n_balls)
@@ -274,10 +280,16 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
             except ConvergenceError:
                 if not continuation:
                     raise err from None
-                X, G, nrm, iters, system.last_jacobian = _continuation(
-                    bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
-                    err)
-                fallback = "continuation"
+                try:
+                    X, G, nrm, iters, system.last_jacobian = _continuation(
+                        bearing, models, speed, radial_load, axial_load, n_balls, tol,
+                        max_iter, err)
+                    fallback = "continuation"
+                except ConvergenceError as err_load:
+                    X, G, nrm, iters, system.last_jacobian = _speed_continuation(
+                        bearing, models, speed, radial_load, axial_load, n_balls, tol,
+                        max_iter, err_load)
+                    fallback = "speed_continuation"
     own_reference = theoretical_reference is None
     if own_reference and guess is not None:
         # CSR_th depends on the loads and the geometry only (a zero-speed load
@@ -307,6 +319,56 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         res.extra["theoretical_key"] = (bearing, float(radial_load), float(axial_load),
                                         system.Z)
     return res
+
+
+def _speed_continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol,
+                        max_iter, err, *, start_ratios=(1.0 / 16.0, 1.0 / 40.0), steps=12):
+    """Continuation in the inner-ring speed, the last fallback (issue 5 item 4): from a
+    slow state (``start_ratios`` of the speed; centrifugal force and gyroscopic moment
+    scale with its square) up to the speed in ``steps`` geometric steps: the first solved
+    cold (:func:`solve_ball` without the continuations), each next one warm from the last
+    only; a failed step is halved (at most three times), then the next start ratio is
+    tried. The force models stay those
+    of the target speed along the path: the intermediate states are only the path, the
+    returned state is solved at the target speed with its own models.
+
+    Measured: QJ1044 at 1.9 N radial, 1511 r/min, 35 degC (the cage turns at 0.09 % of
+    the shaft: every start and the continuation in axial load fail, the best at 3.3e-5)
+    converges from 94 r/min in about 1 s of CPU. Returns (X, G, residual norm, iterations,
+    last Jacobian); raises a ConvergenceError naming the speed where the path stopped."""
+    last_err = err
+    for ratio in start_ratios:
+        speeds = list(speed * np.geomspace(ratio, 1.0, steps))
+        speeds[-1] = float(speed)
+        res = None
+        last_speed = None
+        halvings = 0
+        total = 0
+        while speeds:
+            w = float(speeds[0])
+            try:
+                # the first step from cold with the restarts and the trust region; the
+                # others warm only (a failed one is halved, not restarted cold)
+                res = solve_ball(bearing, models, w, radial_load, axial_load, n_balls=n_balls,
+                                 guess=res, tol=tol, max_iter=max_iter, continuation=False,
+                                 cold_fallback=res is None)
+            except ConvergenceError as e:
+                last_err = e
+                if last_speed is not None and halvings < 3:
+                    halvings += 1
+                    speeds.insert(0, math.sqrt(last_speed * w))
+                    continue
+                res = None
+                break
+            last_speed = w
+            total += res.iterations
+            speeds.pop(0)
+        if res is not None and not speeds:
+            X, G = res.unknowns
+            return X.copy(), G.copy(), res.residual_norm, total, res.extra.get("jacobian")
+    raise ConvergenceError("skidding.ball", last_err.residual,
+                           f"continuation in speed failed too ({last_err}); before it: {err}",
+                           dict(last_err.state)) from None
 
 
 def _continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
