@@ -207,3 +207,20 @@ def test_sweep_summary_of_a_film_only_scene_gives_the_films():
     assert 1.0 < out["min central film [um]"] < 5.0
     assert out["min film parameter [-]"] > 3.0
     assert "total loss [W]" not in out and "max over-skidding [%]" not in out
+
+
+def test_global_friction_books_each_term_with_its_load_class():
+    """The L0 source books the SKF model's terms (rolling, sliding, drag; no seal row for an
+    open bearing) as components with their FVA load class, adding up to M omega."""
+    text = BASE.replace('kinematics = "race_control"', 'kinematics = "none"') + (
+        '[outputs]\nmode = "steady"\nwant = ["losses"]\n')
+    losses = Simulation(loads_scene(text), progress=False).run().tables["losses"]
+    step0 = losses[losses["step"] == 0]
+    by_comp = step0.groupby("component")["power [W]"].sum()
+    assert set(by_comp.index) == {"skf_four_term rolling", "skf_four_term sliding",
+                                  "skf_four_term drag"}
+    classes = dict(zip(step0["component"], step0["load dependence"], strict=False))
+    assert classes["skf_four_term drag"] == "load_independent"
+    assert classes["skf_four_term rolling"] == classes["skf_four_term sliding"] == \
+        "load_dependent"
+    assert (by_comp > 0).all()

@@ -14,6 +14,8 @@ from ..global_friction import global_friction
 from . import HEAT_SOURCES, ROLES, HeatContext, HeatResult
 
 _MODELS = ("skf_four_term", "palmgren")
+#: terms of the global models that do not depend on the load (FVA convention)
+_LOAD_INDEPENDENT = frozenset({"drag", "seal", "M0"})
 
 
 @HEAT_SOURCES.register(
@@ -26,7 +28,9 @@ _MODELS = ("skf_four_term", "palmgren")
 def global_friction_source(ctx: HeatContext) -> HeatResult:
     """Power loss M * |omega_i - omega_o| [W] of the global model ``model`` (option,
     default ``skf_four_term``), with the kinematic viscosity at the temperature of
-    ``temperature_role`` (default ``oil``), booked on ``role`` (default ``oil``)."""
+    ``temperature_role`` (default ``oil``), booked on ``role`` (default ``oil``); one
+    component per term of the model (SKF rolling / sliding / seal / drag, Palmgren M0 / M1)
+    with its load class."""
     from ..errors import InputError, UnknownNameError
 
     name = "global_friction"
@@ -44,7 +48,17 @@ def global_friction_source(ctx: HeatContext) -> HeatResult:
     power = float(res.power)
     if not power >= 0.0:
         raise InputError(f"heat source {name!r} power", power, "a finite loss >= 0 W")
-    comps = {f"{model} total": power}
+    # one component per term of the model, each with its load class (the FVA split the
+    # loss tables use): SKF rolling and sliding and Palmgren's M1 depend on the load, SKF
+    # drag and seal and Palmgren's M0 do not
+    comps = {f"{model} {term}": float(m) * speed for term, m in res.components.items()
+             if float(m) != 0.0}   # (no seal: no seal row)
+    total = sum(comps.values())
+    if comps and total > 0.0:
+        comps = {k: v * power / total for k, v in comps.items()}  # the same total
+    else:
+        comps = {f"{model} total": power}
+    classes = {k: ("load_independent" if k.split(" ")[-1] in _LOAD_INDEPENDENT
+                   else "load_dependent") for k in comps}
     return HeatResult(source=name, power_by_role={role: power}, components=comps,
-                      loss_class={f"{model} total": "load_dependent"},
-                      details={"torque [N m]": float(res.torque)})
+                      loss_class=classes, details={"torque [N m]": float(res.torque)})
