@@ -50,7 +50,13 @@ import numpy as np
 import pandas as pd
 
 from .citations import cite
-from .errors import ConvergenceError, InputError, UnknownNameError, ValidityWarning
+from .errors import (
+    ConvergenceError,
+    InputError,
+    ThermobearingError,
+    UnknownNameError,
+    ValidityWarning,
+)
 from .kinematic_models import KINEMATICS, KinematicsResult
 from .operating_checks import (
     CheckLimits,
@@ -368,12 +374,18 @@ class Simulation:
         scene_toml = with_absolute_paths(self.scene).to_toml()
         if writer is not None:
             (Path(out_dir) / "scene.toml").write_text(scene_toml, encoding="utf-8")
-        if self.needs["network"]:
-            from .coupled import run_coupled
+        try:
+            if self.needs["network"]:
+                from .coupled import run_coupled
 
-            tables, stats = run_coupled(self, writer)
-        else:
-            tables, stats = self._run_operating_points(writer)
+                tables, stats = run_coupled(self, writer)
+            else:
+                tables, stats = self._run_operating_points(writer)
+        except (ThermobearingError, KeyboardInterrupt) as exc:
+            if out_dir is not None:  # the folder's report still has the chain, the checks
+                self._write_stopped(Path(out_dir), scene_toml, exc,  # and why it stopped
+                                    time.perf_counter() - t_wall)
+            raise
         stats["wall_time_s"] = time.perf_counter() - t_wall
         stats["kinematics_solves"] = sum(b.solves for b in self.bearings)
         for b in self.bearings:
@@ -401,6 +413,25 @@ class Simulation:
             results.write(out_dir)
             write_report(results, self.scene, Path(out_dir) / "report.html")
         return results
+
+    def _write_stopped(self, out: Path, scene_toml: str, exc: BaseException,
+                       wall: float) -> None:
+        """``metadata.json`` of a run stopped by an error or Ctrl-C: the tables written so
+        far are on disk (``ResultsWriter``); this adds the model chain, the estimated
+        inputs, the validity checks of the steps solved and, first among the warnings, why
+        the run stopped, so that ``thermobearing report DIR`` says so instead of reading as
+        a finished run with no warnings."""
+        why = ("interrupted (Ctrl-C)" if isinstance(exc, KeyboardInterrupt)
+               else f"stopped by an error: {exc}")
+        note = (f"run {why}; the tables hold only the steps computed before it, the report "
+                "covers those")
+        checked = [line for log in self.checks.values() for line in log.summary()]
+        limits = self.check_limits.as_dict() if any(
+            log.steps for log in self.checks.values()) else {}
+        Results(scene_toml=scene_toml, chain=[(link.family, link.name) for link in self.chain],
+                citations=self.citations(), warnings=[note, *self.warnings, *checked],
+                stats={"stopped": why, "wall_time_s": wall}, check_limits=limits,
+                estimated=self.estimated_inputs()).write(out)
 
     def _run_operating_points(self, writer: ResultsWriter | None
                               ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:

@@ -165,3 +165,69 @@ def test_race_control_film_range_check_sees_only_the_loaded_rollers():
     assert smallest > 5 * placeholder
     for low in lows.values():
         assert low >= smallest * (1 - 1e-3)
+
+
+_STOPPED_SCENE = """
+title = "NU 214 rig, two speed steps"
+[[bearings]]
+name = "test"
+preset = "NU214"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+flow = "2 L/min"
+inlet_temperature = "40 degC"
+[environment]
+ambient_temperature = "22 degC"
+[schedule]
+radial_load = "8 kN"
+axial_load = "0 kN"
+step_duration = "3 min"
+steps = [{ speed = "3000 rpm" }, { speed = "6000 rpm" }]
+[network]
+template = "four_node_paper002"
+parameters = { housing_outer_diameter = "200 mm", housing_length = "50 mm" }
+[outputs]
+want = ["temperatures", "losses", "kinematics", "energy"]
+"""
+
+
+def test_a_run_stopped_by_an_error_says_where_its_steps_are_and_its_report_says_why(
+        tmp_path, capsys, monkeypatch):
+    """A transient that stops (here a thermal runaway raised in the second step) used to
+    leave a folder whose `thermobearing report` read as a finished run: no validity
+    warnings (the cage skid checks of the solved steps lost), no model chain, no estimated
+    inputs and no word of the stop; the terminal did not say where the steps were."""
+    import json
+
+    import thermobearing.network as network
+    from thermobearing.cli import main
+    from thermobearing.errors import ConvergenceError
+
+    advance = network.TransientStepper.advance
+    calls = []
+
+    def runaway(self, *args, **kwargs):
+        calls.append(1)
+        if len(calls) >= 3:  # second step (and its tr_bdf2 retry)
+            raise ConvergenceError("coupled transient", 116.0, "thermal runaway: node "
+                                   "'test.rollers' reached 416 degC", {"step": 1})
+        return advance(self, *args, **kwargs)
+
+    monkeypatch.setattr(network.TransientStepper, "advance", runaway)
+    scene = tmp_path / "rig.toml"
+    scene.write_text(_STOPPED_SCENE, encoding="utf-8")
+    out = tmp_path / "res"
+    code = main(["run", str(scene), "--out", str(out), "--quiet"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "thermobearing run: error: coupled transient did not converge" in err
+    assert f"the steps computed before the error are in {out}/" in err
+    meta = json.loads((out / "metadata.json").read_text())
+    assert meta["warnings"][0].startswith("run stopped by an error: coupled transient")
+    assert ["kinematics", "skidding"] in meta["chain"]
+    assert "bearing test (NU214)" in meta["estimated"]
+    assert (out / "temperatures.csv").is_file() and (out / "losses.csv").is_file()
+    assert main(["report", str(out)]) == 0
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert "run stopped by an error" in html and "pan_hamrock_central" in html

@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from ..errors import ThermobearingError
 from ..scene import load_scene, with_absolute_paths
 from ..scene_checks import check_model_names
 from ._preflight import preflight
@@ -47,6 +48,13 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         print(f"\ninterrupted: everything computed so far is in {out}/", file=sys.stderr)
         return 130
+    except ThermobearingError as exc:
+        # the error as the command line prints it, then where the steps before it are
+        print(f"thermobearing run: error: {exc}", file=sys.stderr)
+        if (out / "metadata.json").is_file():  # written by Simulation.run when it stops
+            print(f"the steps computed before the error are in {out}/ (`thermobearing "
+                  f"report {out}` writes their report)", file=sys.stderr)
+        return 1
     if not args.quiet:
         print(sim.summary_text(results))
         _print_measured(scene, results)
