@@ -18,7 +18,7 @@ import pytest
 
 from thermobearing.skidding.roller import build_model, evaluate, solve_roller
 from thermobearing.skidding.roller_loads import _load_distribution
-from thermobearing.skidding.roller_solvers import _nested, _roller_speeds
+from thermobearing.skidding.roller_solvers import _cage_bracket, _nested, _roller_speeds
 
 RPM = math.pi / 30.0
 #: the two ways a state below the reach of tol is found (Newton accepted at the per-equation
@@ -122,6 +122,34 @@ def test_roller_bisection_from_a_guess_matches_the_full_bracket(nu214, oil):
         np.testing.assert_allclose(warm, full, rtol=0.0, atol=4.0 * top * 2.0**-56)
     e = evaluate(m, omega, full, wc, ld.inner_load, fb, psi, (0.0, 0.0))
     assert np.all(np.isfinite(e.roller_eq))
+
+
+
+@pytest.mark.parametrize("offset", [2e-13, -2e-13, 1.5e-12, -3e-11, 0.2])
+def test_cage_bracket_starts_at_the_iterate(offset):
+    """_cage_bracket on a falling function whose root is ``offset`` (relative) from the start:
+    the start is one end and the bracket 1e-12 of it wide when the root is that near,
+    16 times wider per round beyond; a root out of that reach gets the full range."""
+    wc0, lo_c, hi_c = 20.0, 1e-5, 40.0
+    root = wc0 * (1.0 + offset)
+    calls = []
+
+    def cage(w):
+        calls.append(w)
+        return root - w
+
+    a, b, f_a, f_b = _cage_bracket(cage, wc0, lo_c, hi_c)
+    assert f_a > 0.0 > f_b and a < root < b
+    assert (f_a, f_b) == (cage(a), cage(b))
+    if abs(offset) <= 1e-12:
+        assert wc0 in (a, b)
+        assert b - a == pytest.approx(1e-12 * wc0, rel=1e-3)
+        assert len(calls) == 2 + 2
+    elif abs(offset) < 1e-6:
+        assert b - a < 32.0 * abs(root - wc0)
+    else:
+        assert (a, b) == (lo_c, hi_c)
+    assert _cage_bracket(cage, None, lo_c, hi_c)[:2] == (lo_c, hi_c)
 
 
 @pytest.mark.slow
