@@ -479,11 +479,7 @@ class Simulation:
         lines = []
         kin = results.tables.get("kinematics")
         if kin is not None and not kin.empty:
-            first = kin.iloc[0]
-            lines.append(f"CSR at first step: {first['cage speed ratio [-]']:.4f} "
-                         f"(theoretical {first['theoretical cage speed ratio [-]']:.4f})")
-            k = kin["over-skidding [%]"].to_numpy()
-            lines.append(f"over-skidding: max {np.nanmax(k):+.2f} %, min {np.nanmin(k):+.2f} %")
+            lines.extend(_first_csr_lines(kin))
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
             per_step = losses.groupby(["step", "bearing"])["power [W]"].sum()
@@ -512,6 +508,29 @@ class Simulation:
             if len(results.warnings) > len(shown):
                 lines.append(f"  ... {len(results.warnings) - len(shown)} more")
         return "\n".join(lines)
+
+
+def _first_csr_lines(kin: pd.DataFrame) -> list[str]:
+    """The cage speed ratio at each bearing's first turning step and the over-skidding
+    range: a step at rest has no ratio (NaN), so it is skipped, not printed as ``nan``."""
+    csr, theo = "cage speed ratio [-]", "theoretical cage speed ratio [-]"
+    parts, later = [], False
+    for name, rows in kin.groupby("bearing", sort=False):
+        turning = rows[np.isfinite(rows[csr].to_numpy(dtype=float))]
+        if turning.empty:
+            continue
+        first = turning.iloc[0]
+        label = f"{name} " if kin["bearing"].nunique() > 1 else ""
+        later = later or first["step"] != 0
+        parts.append(f"{label}{first[csr]:.4f} (theoretical {first[theo]:.4f}"
+                     + (f", step {int(first['step'])})" if first["step"] != 0 else ")"))
+    if not parts:
+        return ["cage speed ratio: every step at rest (undefined)"]
+    k = kin["over-skidding [%]"].to_numpy(dtype=float)
+    return [("CSR at first step: " if len(parts) == 1 and not later
+             else "CSR at first turning step: ")
+            + ", ".join(parts),
+            f"over-skidding: max {np.nanmax(k):+.2f} %, min {np.nanmin(k):+.2f} %"]
 
 
 def check_known(name: str, known: Sequence[str], field_name: str) -> None:

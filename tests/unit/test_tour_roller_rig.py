@@ -231,3 +231,26 @@ def test_a_run_stopped_by_an_error_says_where_its_steps_are_and_its_report_says_
     assert main(["report", str(out)]) == 0
     html = (out / "report.html").read_text(encoding="utf-8")
     assert "run stopped by an error" in html and "pan_hamrock_central" in html
+
+
+def test_terminal_csr_line_skips_steps_at_rest_and_names_each_bearing():
+    """A protocol starting at rest printed "CSR at first step: nan"; a two-bearing shaft
+    printed the first bearing's ratio only, unnamed."""
+    from thermobearing.simulation import _first_csr_lines
+
+    def row(step, bearing, csr, theo, skid):
+        return {"step": step, "bearing": bearing, "cage speed ratio [-]": csr,
+                "theoretical cage speed ratio [-]": theo, "over-skidding [%]": skid}
+
+    nan = float("nan")
+    one = pd.DataFrame([row(0, "test", nan, 0.4333, nan), row(1, "test", 0.4321, 0.4333, -0.28)])
+    lines = _first_csr_lines(one)
+    assert lines[0] == "CSR at first turning step: 0.4321 (theoretical 0.4333, step 1)"
+    assert "nan" not in " ".join(lines)
+    assert lines[1] == "over-skidding: max -0.28 %, min -0.28 %"
+    two = pd.DataFrame([row(0, "de", 0.4214, 0.4214, 0.0), row(0, "nde", 0.3701, 0.3677, 0.66)])
+    assert _first_csr_lines(two)[0] == ("CSR at first turning step: de 0.4214 (theoretical "
+                                        "0.4214), nde 0.3701 (theoretical 0.3677)")
+    assert _first_csr_lines(one.iloc[:1]) == ["cage speed ratio: every step at rest "
+                                              "(undefined)"]
+    assert _first_csr_lines(one.iloc[1:].assign(step=0))[0].startswith("CSR at first step: ")
