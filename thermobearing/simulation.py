@@ -74,6 +74,7 @@ from .simulation_bearings import (
     _load_scene_bearing,
     _supply_notes,
     axial_load_path,
+    radial_load_contact,
 )
 from .simulation_chain import (
     BALL_SOURCES,
@@ -156,6 +157,7 @@ class Simulation:
                              "end_face_crown_radius and rib_height")
                 dropped.append(f"{spec.name}: default heat source rib_friction left out "
                                f"({why}){hint}")
+            radial_load_contact(spec.name, b, scene.schedule.steps, kin_name)
             no_path = axial_load_path(spec.name, b, scene.schedule.steps, kin_name, sources)
             if no_path:
                 dropped.append(no_path)

@@ -144,3 +144,26 @@ def axial_load_path(name: str, bearing: Any, steps: Any, kinematics: str,
         return (f"{name}: the axial load of steps {steps_text} books no loss (the rib_friction "
                 "heat source, which carries it on the ribs, is not running)")
     return None
+
+
+def radial_load_contact(name: str, bearing: Any, steps: Any, kinematics: str) -> None:
+    """Refuse, before anything is solved, a turning step without radial load on a cylindrical
+    roller bearing with clearance under the roller skidding solver: no roller touches the
+    inner ring, so the solver has no traction to drive the cage and stops at that step
+    ("the cage speed is undetermined", ``skidding.roller``). The error names the step and
+    what to change (a radial load, as a rig's loading unit or the shaft weight applies, or
+    race control)."""
+    if kinematics != "skidding" or getattr(bearing, "kind", None) != "cylindrical":
+        return
+    if not getattr(bearing, "diametral_clearance", 0.0) > 0.0:
+        return
+    for i, s in enumerate(steps):
+        if s.speed != 0.0 and s.radial_load <= 0.0:
+            raise InputError(
+                f"schedule step {i} radial_load (bearing {name!r}, {bearing.name})",
+                f"{s.radial_load / 1000.0:g} kN",
+                "> 0 kN with kinematics = 'skidding': with its diametral clearance "
+                f"({bearing.diametral_clearance * 1e3:g} mm) no roller touches the inner ring "
+                "without a radial load, so the roller skidding solver has no traction to "
+                "drive the cage (paper 000); give the radial load the rig applies (at least "
+                "the shaft's weight share) or set [models] kinematics = 'race_control'")

@@ -254,3 +254,23 @@ def test_terminal_csr_line_skips_steps_at_rest_and_names_each_bearing():
     assert _first_csr_lines(one.iloc[:1]) == ["cage speed ratio: every step at rest "
                                               "(undefined)"]
     assert _first_csr_lines(one.iloc[1:].assign(step=0))[0].startswith("CSR at first step: ")
+
+
+def test_a_turning_step_without_radial_load_under_roller_skidding_is_refused_at_check():
+    """NU 214 (clearance 25 um) at 0 kN radial: the roller skidding solver stopped at the
+    step ("no roller touches the inner ring ... the cage speed is undetermined") after
+    `check` had passed it, with no word of what to change."""
+    text = _crb_scene("NU214", "skidding", axial="0 kN").replace(
+        'steps = [{ axial_load = "0 kN" }, { axial_load = "0 kN" }]',
+        'axial_load = "0 kN"\nsteps = [{ speed = "0 rpm", radial_load = "0 kN" }, '
+        '{ radial_load = "0 kN" }]')
+    assert 'radial_load = "0 kN" }]' in text
+    with pytest.raises(InputError) as err:
+        Simulation(loads_scene(text), progress=False)
+    msg = str(err.value)  # step 0 is at rest: no solver runs there, so step 1 is named
+    assert "schedule step 1 radial_load (bearing 'de', NU214) = '0 kN'" in msg
+    assert "kinematics = 'race_control'" in msg and "0.025 mm" in msg
+    # race control runs it (the ring is centred; nothing to solve for the cage)
+    ok = Simulation(loads_scene(text.replace('kinematics = "skidding"',
+                                             'kinematics = "race_control"')), progress=False)
+    assert ok.bearings[0].kinematics_name == "race_control"
