@@ -166,7 +166,8 @@ class Simulation:
 
         HEAT_SOURCE_FAMILY = HEAT_SOURCES.family
         running = {n for b in self.bearings for n in b.sources}
-        self.chain = [link for link in plan_chain(scene, self.lubricant, self.bearings[0].is_ball)
+        self.chain = [link for link in plan_chain(scene, self.lubricant,
+                                                      [b.is_ball for b in self.bearings])
                       if link.family != HEAT_SOURCE_FAMILY or link.name in running]
         self.needs = _needs(scene)
         self.network = None

@@ -124,8 +124,13 @@ def _rib_friction_unavailable(bearing: Any) -> str | None:
 
 
 def plan_chain(scene: Scene, lubricant: Any | None = None,
-               is_ball: bool = True) -> list[ChainLink]:
-    """The minimal model chain for the scene's outputs (see the module docstring)."""
+               is_ball: bool | Sequence[bool] = True) -> list[ChainLink]:
+    """The minimal model chain for the scene's outputs (see the module docstring).
+
+    ``is_ball``: the kind of the scene's bearings, one flag or one per bearing; a shaft with
+    ball and roller bearings lists the default film model and the heat sources of each
+    kind once (a ball bearing beside a roller bearing runs the point-contact film).
+    """
     from .film import FILM
     from .lubricant import PRESSURE_VISCOSITY, VISCOSITY_TEMPERATURE
 
@@ -143,26 +148,31 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
     if lubricant is not None:
         add(VISCOSITY_TEMPERATURE, lubricant.viscosity_law, "oil viscosity at node temperatures")
         add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
-    film = scene.models.get("film", "hamrock_dowson_1977_central" if is_ball
-                            else "pan_hamrock_central")
-    if film not in FILM and film in _numerical_film_models():
-        from .ehl import EHL_SOLVERS
+    kinds = tuple(dict.fromkeys([is_ball] if isinstance(is_ball, bool) else is_ball))
+    films = {scene.models.get("film", "hamrock_dowson_1977_central" if ball
+                              else "pan_hamrock_central"): ball for ball in kinds}
+    for film, ball in films.items():
+        which = ("" if len(films) == 1
+                 else " (ball bearings)" if ball else " (roller bearings)")
+        if film not in FILM and film in _numerical_film_models():
+            from .ehl import EHL_SOLVERS
 
-        check_film_model(film, is_ball)
-        add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
-            "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
-    else:
-        if film not in FILM:
-            raise UnknownNameError("models.film", film,
-                                   FILM.names() + _numerical_film_models())
-        add(FILM, film, "film thickness of the raceway contacts")
+            for ball in kinds:
+                check_film_model(film, ball)
+            add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
+                "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
+        else:
+            if film not in FILM:
+                raise UnknownNameError("models.film", film,
+                                       FILM.names() + _numerical_film_models())
+            add(FILM, film, "film thickness of the raceway contacts" + which)
     if need["kinematics"]:
         add(KINEMATICS, scene.models.get("kinematics", "skidding"),
             "cage and element speeds, sliding speeds")
     if need["losses"]:
         from .heat_sources import HEAT_SOURCES
 
-        for name in heat_source_names(scene, is_ball):
+        for name in dict.fromkeys(n for ball in kinds for n in heat_source_names(scene, ball)):
             add(HEAT_SOURCES, name, "power loss")
     if need["network"]:
         from .network import STEPPERS

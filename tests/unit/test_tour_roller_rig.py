@@ -274,3 +274,27 @@ def test_a_turning_step_without_radial_load_under_roller_skidding_is_refused_at_
     ok = Simulation(loads_scene(text.replace('kinematics = "skidding"',
                                              'kinematics = "race_control"')), progress=False)
     assert ok.bearings[0].kinematics_name == "race_control"
+
+
+def test_a_shaft_with_a_ball_and_a_roller_bearing_lists_the_models_of_both():
+    """Ball bearing at the non-drive end named first, NU 214 at the drive end: the model
+    chain (`check`, the report's model table and citations) was planned for the first
+    bearing's kind only, so it left out the roller bearing's film model and its EHL
+    rolling resistance, which the run did use."""
+    text = _crb_scene("NU214", "skidding", axial="0 kN").replace(
+        '[[bearings]]\nname = "de"',
+        '[[bearings]]\nname = "nde"\npreset = "SKF6304"\n[[bearings]]\nname = "de"')
+    sim = Simulation(loads_scene(text), progress=False)
+    assert [b.is_ball for b in sim.bearings] == [True, False]
+    chain = [(link.family, link.name) for link in sim.chain]
+    assert ("film", "hamrock_dowson_1977_central") in chain
+    assert ("film", "pan_hamrock_central") in chain
+    assert ("heat_source", "ehl_rolling_resistance") in chain
+    assert "ehl_rolling_resistance" in sim.bearings[1].sources
+    text_chain = sim.describe_chain()
+    assert "(roller bearings)" in text_chain and "(ball bearings)" in text_chain
+    # one kind: one film line, worded as before
+    single = Simulation(loads_scene(_crb_scene("NU214", "skidding", axial="0 kN")),
+                        progress=False)
+    films = [link for link in single.chain if link.family == "film"]
+    assert [f.purpose for f in films] == ["film thickness of the raceway contacts"]
