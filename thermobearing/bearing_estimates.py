@@ -29,6 +29,9 @@ Rules (field: rule; source):
   steel ``STEEL_52100``.
 * ``raceway_roughness``, ``element_roughness``: Rq 0.1 um raceways; 0.025 um balls
   (ISO 3290-1 G10), 0.08 um rollers; as the presets (their ``[estimated]`` reasoning).
+* ``roller_effective_length``: the roller length (end chamfers neglected, as the presets);
+  ``ribbed_ring``: ``"outer"``, the NU type (the geometry's default, now listed as an
+  estimate: an N, NJ or NUP bearing must say so).
 * ``[cage]``: rolling-element guided; pressed steel (deep groove) or machined brass
   (others); pocket clearance 3 % of D (balls) / 2 % of D_w (rollers); width 0.55 B (balls)
   / 0.75 B (rollers); bore and outside diameter d_m -+ 0.45 D / 0.5 D_w; mass from the
@@ -189,6 +192,13 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
     else:
         elem = _si(data, "roller_diameter", "length", origin)
         fill_clearance("cylindrical", "load zone")
+        length = _si(data, "roller_length", "length", origin)
+        fill("roller_effective_length", length,
+             f"the roller length, {length * 1e3:.4g} mm: end chamfers neglected (as the "
+             "presets); the straight length is shorter by the two chamfers")
+        fill("ribbed_ring", "outer", "'outer': NU type (two ribs on the outer ring, none on "
+             "the inner ring), which carries no axial load; give 'inner' for an N type or "
+             "'both' for NJ / NUP types")
         fill("roller_material", "STEEL_52100", "through-hardened bearing steel (52100 / "
              "100Cr6)")
         fill("element_roughness", 0.08e-6, "Rq 0.08 um: superfinished rollers (Ra about "

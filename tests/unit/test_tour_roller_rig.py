@@ -298,3 +298,23 @@ def test_a_shaft_with_a_ball_and_a_roller_bearing_lists_the_models_of_both():
                         progress=False)
     films = [link for link in single.chain if link.family == "film"]
     assert [f.purpose for f in films] == ["film thickness of the raceway contacts"]
+
+
+def test_catalogue_roller_bearing_lists_its_rib_type_and_straight_length_as_estimated():
+    """An NU 2xx page gives d, D, B and the roller set; estimate_missing filled the ribs
+    (NU type) and the straight roller length through the geometry's defaults without
+    listing them, so `check` did not show that an NJ / NUP bearing must say so."""
+    from thermobearing.bearing_config import bearing_from_dict
+
+    page = {"name": "NU 210", "kind": "cylindrical", "source": "catalogue page",
+            "estimate_missing": True, "bore": "50 mm", "outer_diameter": "90 mm",
+            "width": "20 mm", "roller_diameter": "11 mm", "roller_length": "11 mm",
+            "n_rollers": 14}
+    b = bearing_from_dict(page)
+    assert b.ribbed_ring == "outer" and b.roller_effective_length == pytest.approx(0.011)
+    assert b.estimated["ribbed_ring"].startswith("estimate_missing: 'outer': NU type")
+    assert "11 mm" in b.estimated["roller_effective_length"]
+    # values the page gives are kept and not marked
+    nj = bearing_from_dict({**page, "ribbed_ring": "both", "roller_effective_length": "10 mm"})
+    assert nj.ribbed_ring == "both" and nj.roller_effective_length == pytest.approx(0.010)
+    assert "ribbed_ring" not in nj.estimated and "roller_effective_length" not in nj.estimated
