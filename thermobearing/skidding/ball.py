@@ -322,7 +322,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
 
 
 def _speed_continuation(bearing, models, speed, radial_load, axial_load, n_balls, tol,
-                        max_iter, err, *, start_ratios=(1.0 / 16.0, 1.0 / 40.0), steps=12):
+                        max_iter, err, *, start_ratios=(0.25, 1.0 / 16.0, 1.0 / 40.0),
+                        steps=12):
     """Continuation in the inner-ring speed, the last fallback (issue 5 item 4): from a
     slow state (``start_ratios`` of the speed; centrifugal force and gyroscopic moment
     scale with its square) up to the speed in ``steps`` geometric steps: the first solved
@@ -332,9 +333,11 @@ def _speed_continuation(bearing, models, speed, radial_load, axial_load, n_balls
     of the target speed along the path: the intermediate states are only the path, the
     returned state is solved at the target speed with its own models.
 
-    Measured: QJ1044 at 1.9 N radial, 1511 r/min, 35 degC (the cage turns at 0.09 % of
-    the shaft: every start and the continuation in axial load fail, the best at 3.3e-5)
-    converges from 94 r/min in about 1 s of CPU. Returns (X, G, residual norm, iterations,
+    Measured: QJ1044 at 1.9 N radial, 1511 r/min, 35 degC, and at -1.13 N axial, 3380
+    r/min, 82 degC (the cage turns at 0.09 / 0.11 % of the shaft: every start and the
+    continuation in axial load fail, the best at 3.3e-5 / 3.8e-3) converge in about 1 s of
+    CPU each; the second only from a quarter of the speed (from a sixteenth its first, cold
+    step stalls). Returns (X, G, residual norm, iterations,
     last Jacobian); raises a ConvergenceError naming the speed where the path stopped."""
     last_err = err
     for ratio in start_ratios:
