@@ -429,6 +429,34 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     return tables, stats
 
 
+#: half-width [K] of the trust region of a steady pass whose chunk model has no steady
+#: state (:class:`_HeldBeyond`)
+STEADY_TRUST_REGION = 10.0
+
+
+@dataclass
+class _HeldBeyond:
+    """The chunk model's heat with each node temperature held within ``reach`` [K] of the
+    linearisation point: q(clip(T, T0 - reach, T0 + reach)), bounded, so the network has a
+    steady state whatever the model's slope (its Jacobian is zero on the held columns)."""
+
+    lin: _Linear
+    reach: float
+
+    def _clip(self, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        lo, hi = self.lin.T0 - self.reach, self.lin.T0 + self.reach
+        return np.clip(T, lo, hi), (T < lo) | (T > hi)
+
+    def heat(self, t: float, T: np.ndarray) -> np.ndarray:
+        return self.lin.heat(t, self._clip(T)[0])
+
+    def jac(self, t: float, T: np.ndarray) -> np.ndarray:
+        Tc, held = self._clip(T)
+        out = np.array(self.lin.jac(t, Tc), dtype=float, copy=True)
+        out[:, held] = 0.0
+        return out
+
+
 def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                 ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
     """Each schedule step as its own steady operating point (coupled fixed point)."""
@@ -444,7 +472,16 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
         for _ in range(1, 31):
             coupler.kinematics(i, step, T)
             lin = coupler.linearize(step, T)
-            res = solve_steady(net, lin.heat, T_guess=T, heat_jacobian=lin.jac)
+            try:
+                res = solve_steady(net, lin.heat, T_guess=T, heat_jacobian=lin.jac)
+            except ConvergenceError:
+                # far from T0 the chunk model's straight-line heat can fall below zero (a
+                # cold start: the losses fall steeply as the oil thins) and leave the
+                # network without a steady state; the heat held at its value on the edge
+                # of a trust region around T0 always has one, and the next pass
+                # re-linearises there (the fixed point, T = T0, is the same)
+                held = _HeldBeyond(lin, STEADY_TRUST_REGION)
+                res = solve_steady(net, held.heat, T_guess=T, heat_jacobian=held.jac)
             T_new = np.array([res.temperatures[n] for n in names])
             change = float(np.max(np.abs(T_new - T)))
             T = T_new
