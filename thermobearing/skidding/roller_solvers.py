@@ -193,7 +193,11 @@ def _cage_bracket(cage: Callable[[float], float], wc0: float | None, lo_c: float
     45 kN), forced through the bracketed solve: 242-478 residual evaluations instead of
     292-698. The root is the same to 1.1e-15 (CSR and roller speeds). These counts include
     brentq's second evaluation of the two ends; :func:`_nested` takes those values from the
-    bracket instead (2 cage evaluations fewer, see there)."""
+    bracket instead (2 cage evaluations fewer, see there). Both together, at the 8 NU 206
+    points of the full benchmark that take the bracketed solve (6 kN at 20 degC and 13 kN
+    at 60 degC, 500-30000 r/min): 776-901 residual evaluations per cold solve instead of
+    879-1065, CPU 1.09-1.28x (medians of 6 alternated pairs per point, 1.20x in total),
+    states within 1.1e-14."""
     if wc0 is not None and lo_c < wc0 < hi_c:
         f0 = cage(wc0)
         if f0 > 0.0:
