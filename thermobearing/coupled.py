@@ -432,6 +432,8 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
 #: half-width [K] of the trust region of a steady pass whose chunk model has no steady
 #: state (:class:`_HeldBeyond`)
 STEADY_TRUST_REGION = 10.0
+#: largest node temperature change [K] of one outer pass of a steady run
+STEADY_MAX_PASS_CHANGE = 100.0
 
 
 @dataclass
@@ -469,6 +471,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     temp_rows, kin_rows, loss_rows = [], [], []
     outer_iterations = 0
     for i, step in enumerate(sim.scene.schedule.steps):
+        omega, r_prev = 1.0, None
         for _ in range(1, 31):
             coupler.kinematics(i, step, T)
             lin = coupler.linearize(step, T)
@@ -483,11 +486,28 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                 held = _HeldBeyond(lin, STEADY_TRUST_REGION)
                 res = solve_steady(net, held.heat, T_guess=T, heat_jacobian=held.jac)
             T_new = np.array([res.temperatures[n] for n in names])
-            change = float(np.max(np.abs(T_new - T)))
-            T = T_new
+            r = T_new - T
+            change = float(np.max(np.abs(r)))
             outer_iterations += 1
             if change < 1e-3:
+                T = T_new
                 break
+            # Aitken's dynamic relaxation of the outer update (Irons & Tuck): the pass
+            # holds the kinematics, whose heat falls as the oil thins, so the plain
+            # update overshoots and oscillates (NU 214 at 10000 r/min from 39 degC: 745,
+            # 97, 312, 126 ... degC, 20 passes); the relaxation factor from the last two
+            # updates damps it, capped to (0.1, 1], and no pass moves a node by more than
+            # STEADY_MAX_PASS_CHANGE
+            if r_prev is not None:
+                dr = r - r_prev
+                den = float(dr @ dr)
+                if den > 0.0:
+                    omega = min(max(-omega * float(r_prev @ dr) / den, 0.1), 1.0)
+            r_prev = r
+            step_T = omega * r
+            big = float(np.max(np.abs(step_T)))
+            T = T + (step_T * (STEADY_MAX_PASS_CHANGE / big) if big > STEADY_MAX_PASS_CHANGE
+                     else step_T)
         else:
             raise ConvergenceError("coupled steady state", change,
                                    "temperatures still move after 30 kinematics updates",
