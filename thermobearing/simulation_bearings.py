@@ -62,14 +62,20 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
 def _supply_notes(scene: Scene) -> list[str]:
     """What the scene sets that its oil supply does not use (said, not refused). An oil
     bath's inlet temperature defaults to the ambient one: only another value was set by the
-    user and is worth a note (not every oil-bath run, as a warning)."""
+    user and is worth a note (not every oil-bath run, as a warning). A level set for another
+    method (a jet switched from an oil bath) is not used either."""
     sup = scene.supply
+    notes = []
     if (sup.method == "oil_bath" and sup.flow == 0.0
             and sup.inlet_temperature != scene.environment.ambient_temperature):
-        return [f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is not "
-                "used: an oil bath without flow has no inlet; the bath temperature is the "
-                "network's oil node"]
-    return []
+        notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
+                     "not used: an oil bath without flow has no inlet; the bath temperature "
+                     "is the network's oil node")
+    if sup.method != "oil_bath" and sup.level is not None:
+        notes.append(f"supply.level ({sup.level * 1e3:g} mm) is not used by the "
+                     f"{sup.method} supply: only an oil bath (supply.method = \"oil_bath\") "
+                     "has a level")
+    return notes
 
 
 def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any, str]:

@@ -416,3 +416,17 @@ def test_steady_outer_passes_are_relaxed_and_never_visit_absurd_temperatures(mon
     assert res.stats["outer_iterations"] <= 8
     assert max(seen) - 273.15 < rollers + 100.0
     assert not any("alpha fit used outside" in w for w in sim.warnings)
+
+
+def test_a_bath_level_left_in_a_jet_scene_is_noted():
+    """Switching a scene from oil bath to jet and leaving `level` in [supply] ran without a
+    word (the jet's oil fraction comes from its flow)."""
+    text = _crb_scene("NU214", "skidding", axial="0 kN").replace(
+        'inlet_temperature = "40 degC"', 'inlet_temperature = "40 degC"\nlevel = "10 mm"')
+    sim = Simulation(loads_scene(text), progress=False)
+    assert sim.notes == ['supply.level (10 mm) is not used by the jet supply: only an oil '
+                         'bath (supply.method = "oil_bath") has a level']
+    assert "note: supply.level (10 mm)" in sim.describe_chain()
+    plain = Simulation(loads_scene(_crb_scene("NU214", "skidding", axial="0 kN")),
+                       progress=False)
+    assert plain.notes == []
