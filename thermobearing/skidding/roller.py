@@ -126,7 +126,7 @@ def solve_model(
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
     if x0 is not None and np.size(x0) != z + 1:
-        # another bearing's state (session 10: a D1842926 start for the NU214 raised
+        # another bearing's state (a D1842926 start for the NU214 raised
         # IndexError deep in the residual)
         raise InputError("x0", f"{np.size(x0)} values",
                          f"{z + 1} values (omega_r of the {z} rollers, omega_c) of this bearing, "
@@ -145,7 +145,7 @@ def solve_model(
     # - a warm start, first with the fine step 1e-10, then with the default 1e-7: near pure
     #   rolling under load the tractions saturate within a slip of ~1e-7, the default step
     #   spans the saturation and Newton stalls, creeping through up to 60 x 30 line-search
-    #   evaluations (session 12: a catalogue NU 206 protocol at 2 kN spent half its CPU so);
+    #   evaluations (a catalogue NU 206 protocol at 2 kN spent half its CPU so);
     # - the cold guesses at 0.8 and 0.4 of the epicyclic cage speed (default step), as before;
     # - pure rolling with the fine step: where those fail under load (the cage equation jumps
     #   across pure rolling) the solution is within ~1e-8 of it (NU 206, 2 kN, 22-27 degC:
@@ -382,7 +382,7 @@ def as_warm_start(guess: Any) -> np.ndarray | None:
     try:
         arr = np.asarray(guess, dtype=float)
     except (TypeError, ValueError):
-        # e.g. a ball bearing's result (TypeError from float(); session 10)
+        # e.g. a ball bearing's result (TypeError from float())
         raise InputError("x0", type(guess).__name__, allowed) from None
     if arr.ndim != 1 or arr.size < 4 or not np.all(np.isfinite(arr)):
         raise InputError("x0", guess, allowed)

@@ -433,7 +433,7 @@ def closed_form_contact_forces(
     speed = np.abs(slide)[..., None] * np.ones_like(xg)
     # a scalar temperature stays scalar: the lubricant then memoises its atmospheric
     # viscosity and Roelands index (an array of equal temperatures recomputed them at every
-    # node of every call: ~60 % of a residual evaluation, session 12)
+    # node of every call: ~60 % of a residual evaluation)
     stress, dstress = traction_law.shear_stress(
         speed, pres, hc_safe[..., None] * np.ones_like(xg),
         float(temperature) if np.ndim(temperature) == 0 else temperature * np.ones_like(pres))
