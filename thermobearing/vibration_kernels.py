@@ -73,15 +73,25 @@ def _loads(t, y, P, dev, qi, qo, cth, sth):
 
 
 @numba.njit(cache=True)
-def _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, dy):
-    """Full right-hand side; also leaves the contact loads in qi, qo."""
-    z = int(P[_Z])
+def _race_speeds(P):
+    """(omega_s, omega_ca, r, a_i, a_o): shaft and cage speeds [rad/s], the ball's rolling
+    radius D cos(alpha) / 2 [m] and the race surface speeds relative to the cage at the
+    inner and outer contacts [m/s], paper 004 eqs. 4-8 without the ball's own spin (the
+    sliding speeds are a_i - r w and a_o - r w)."""
     ws = P[_WS]
     wc = P[_WC]
     gam = P[_D] * P[_COSA] / P[_DM]
     r = 0.5 * P[_D] * P[_COSA]
     ai = 0.5 * (ws - wc) * P[_DM] * (1.0 - gam)
     ao = 0.5 * wc * P[_DM] * (1.0 + gam)
+    return ws, wc, r, ai, ao
+
+
+@numba.njit(cache=True)
+def _rhs(t, y, P, dev, tv, tmu, qi, qo, cth, sth, dy):
+    """Full right-hand side; also leaves the contact loads in qi, qo."""
+    z = int(P[_Z])
+    ws, wc, r, ai, ao = _race_speeds(P)
     _loads(t, y, P, dev, qi, qo, cth, sth)
     fx = P[_W] - P[_C] * y[2]
     fy = -P[_C] * y[3]
@@ -167,12 +177,7 @@ def _spin_flow(w0, tau, a_i, a_o, q_i, q_o, r, half_d, jr, tv, tmu):
 def _spin_sub(t, y, tau, P, dev, tv, tmu, qi, qo, cth, sth):
     """Spin sub-flow over tau with the loads of (t, y) frozen."""
     z = int(P[_Z])
-    ws = P[_WS]
-    wc = P[_WC]
-    gam = P[_D] * P[_COSA] / P[_DM]
-    r = 0.5 * P[_D] * P[_COSA]
-    ai = 0.5 * (ws - wc) * P[_DM] * (1.0 - gam)
-    ao = 0.5 * wc * P[_DM] * (1.0 + gam)
+    _, _, r, ai, ao = _race_speeds(P)
     _loads(t, y, P, dev, qi, qo, cth, sth)
     for j in range(z):
         k = 4 + 2 * z + j
