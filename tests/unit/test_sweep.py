@@ -160,3 +160,19 @@ def test_summary_is_written_from_memory_not_by_rereading_the_store(tmp_path, mon
     more = [parse_set("supply.flow=10,20,30,40,50,60", scene.to_dict())]
     df2 = run_sweep(scene, more, tmp_path, runner=flow_speed_runner, workers=1, progress=False)
     assert len(reads) == 2 and len(df2) == 6 and list(df2["case"])[:5] == list(df["case"])
+
+
+def test_terminal_columns_fill_with_the_largest_losses():
+    """Without the main results (no network: no housing rows), the terminal table fills
+    with the loss columns that carry the most, not the first ones (a roller-guided cage
+    books 0 W of cage-guide loss in every case)."""
+    from thermobearing.commands.sweep import terminal_columns
+
+    df = pd.DataFrame({"case": ["a", "b"], "schedule.speed": ["1 rpm", "2 rpm"],
+                       "total loss [W]": [10.0, 20.0], "cage_guide [W]": [0.0, 0.0],
+                       "churning_elements [W]": [5.0, 9.0], "raceway_traction [W]": [1.0, 2.0],
+                       "steps over skid limit [-]": [0.0, 1.0]})
+    shown, hidden = terminal_columns(df, ["schedule.speed"])
+    assert shown == ["case", "schedule.speed", "total loss [W]", "churning_elements [W]",
+                     "raceway_traction [W]", "steps over skid limit [-]"]
+    assert hidden == 1

@@ -15,6 +15,8 @@ import argparse
 import sys
 from pathlib import Path
 
+import pandas as pd
+
 from ..scene import load_scene
 from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
@@ -98,17 +100,25 @@ _MAIN_RESULTS = ("total loss [W]", "max over-skidding [%]")
 def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
     """Columns printed on the terminal: the case, the swept values as set, and a few main
     results (total loss, over-skidding, the first housing temperature and its rise, when
-    present; else the first results); and how many result columns are left out."""
+    present; else the largest loss columns, then the others); and how many result columns
+    are left out."""
     params = [c for c in df.columns if c in swept
               or any(c.startswith(p + " [") for p in swept)]
     results = [c for c in df.columns if c != "case" and c not in params]
     chosen = [c for c in _MAIN_RESULTS if c in results]
     chosen += [c for c in results if "housing" in c and c.startswith(("final", "rise"))][:2]
-    for c in results:
+
+    def weight(c: str) -> tuple[int, float]:
+        # fill with the largest loss columns first (a source that books 0 W in every case,
+        # e.g. the cage guide of a roller-guided cage, says nothing), then the others
+        values = pd.to_numeric(df[c], errors="coerce").abs()
+        size = float(values.mean()) if values.notna().any() else 0.0
+        return (0 if c.endswith("[W]") and size > 0.0 else 1, -size)
+
+    for c in sorted((c for c in results if c not in chosen), key=weight):
         if len(chosen) >= max_results:
             break
-        if c not in chosen:
-            chosen.append(c)
+        chosen.append(c)
     chosen = [c for c in results if c in chosen]  # keep the table's order
     shown = ["case", *[c for c in df.columns if c in swept], *chosen]
     return [c for c in shown if c in df.columns], len(results) - len(chosen)
