@@ -126,15 +126,18 @@ def breakdown_by_source(losses: pd.DataFrame) -> pd.DataFrame:
     its components, in :func:`source_order`), ``load-dependent [W]`` and
     ``load-independent [W]`` when the table has the ``load dependence`` column (and
     ``unclassified [W]`` when some component has no class), and ``total [W]``, the sum of
-    the source columns.
+    the source columns. A source without rows at a point (it does not run on that bearing)
+    is left empty there.
 
     ``losses``: the long ``losses`` table (``source``, ``power [W]`` and the point columns
     of :func:`point_keys`).
     """
     _check(losses, ("source", "power [W]"))
     keys = point_keys(losses)
+    # a source that did not run on a bearing (another kind's source on a mixed shaft) has
+    # no rows there: its cell stays empty (NaN), not 0 W, and the sums skip it
     pivot = losses.pivot_table(index=keys, columns="source", values="power [W]",
-                               aggfunc="sum", fill_value=0.0, sort=False)
+                               aggfunc="sum", sort=False)
     order = source_order(pivot.columns)
     out = pivot[order].rename(columns={s: f"{s} [W]" for s in order})
     if "load dependence" in losses:

@@ -324,3 +324,22 @@ def test_a_run_over_a_speed_by_load_grid_gets_loss_maps_named_by_bearing():
     maps = _run_loss_maps(grid)
     assert list(maps) == ["loss_maps_nde"] and maps["loss_maps_nde"][:4] == b"\x89PNG"
     assert _caption("loss_maps_nde") == "power loss maps over speed and load [W], bearing nde"
+
+
+def test_a_source_that_does_not_run_on_a_bearing_is_left_empty():
+    """A shaft with a ball and a roller bearing: the roller's EHL rolling resistance has no
+    rows for the ball bearing, so its cell there is empty (not 0 W, which would read as a
+    computed zero), and the total is the sum of the sources that ran."""
+    import math
+
+    losses = pd.DataFrame({
+        "step": [0, 0, 0], "bearing": ["crb", "crb", "ball"],
+        "speed [rpm]": [1000.0] * 3, "radial load [kN]": [1.0] * 3,
+        "axial load [kN]": [0.0] * 3,
+        "source": ["raceway_traction", "ehl_rolling_resistance", "raceway_traction"],
+        "component": ["inner contact", "inner contact", "inner contact"],
+        "power [W]": [3.0, 2.0, 5.0]})
+    table = breakdown_by_source(losses).set_index("bearing")
+    assert table.loc["crb", "ehl_rolling_resistance [W]"] == 2.0
+    assert math.isnan(table.loc["ball", "ehl_rolling_resistance [W]"])
+    assert table.loc["ball", "total [W]"] == 5.0 and table.loc["crb", "total [W]"] == 5.0
