@@ -561,7 +561,7 @@ def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str 
             loaded = q > 0
             # unloaded elements go in at 0 N: the film formulas give them +inf (no
             # conjunction to size, replaced by 0 below) and leave them out of their range
-            # check (a placeholder load here made every roller bearing's race-control run
+            # check (a stand-in load of 1 N here made every roller bearing's race-control run
             # warn of a load parameter W far below the formula's range)
             qq = np.asarray(q, dtype=float)
             if is_ball:

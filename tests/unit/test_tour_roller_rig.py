@@ -126,7 +126,7 @@ def test_race_control_axial_load_without_the_rib_source_is_warned():
 
 def test_race_control_film_range_check_sees_only_the_loaded_rollers():
     """NU 214 under a radial load: the rollers outside the load zone carry nothing. They went
-    into the film formula at a 1 N placeholder, so every race-control run warned of a load
+    into the film formula at a stand-in load of 1 N, so every race-control run warned of a load
     parameter W' (~6e-8) far below Pan-Hamrock's range, taken from no real contact. The
     range warning now sees the loaded rollers only: its lower end is the smallest loaded
     roller's W' = Q / (E' R_x L)."""
@@ -160,9 +160,9 @@ def test_race_control_film_range_check_sees_only_the_loaded_rollers():
         rx = np.broadcast_to(np.asarray(c.reduced_radius_x, float), q.shape)
         loaded_w.append(q[q > 0] / (b.effective_modulus * rx[q > 0]
                                     * b.roller_effective_length))
-    placeholder = 1.0 / (b.effective_modulus * float(np.min(rx)) * b.roller_effective_length)
+    w_one_newton = 1.0 / (b.effective_modulus * float(np.min(rx)) * b.roller_effective_length)
     smallest = min(float(np.min(w)) for w in loaded_w)
-    assert smallest > 5 * placeholder
+    assert smallest > 5 * w_one_newton
     for low in lows.values():
         assert low >= smallest * (1 - 1e-3)
 
