@@ -74,6 +74,7 @@ from .simulation_bearings import (
     _load_scene_bearing,
     _supply_notes,
     axial_load_path,
+    level_notes,
     radial_load_contact,
 )
 from .simulation_chain import (
@@ -136,6 +137,8 @@ class Simulation:
             src = spec.preset or str(scene.resolve_path(spec.path))
             b = _load_scene_bearing(src, spec.overrides, f"bearings[{i_spec}]")
             is_ball = hasattr(b, "ball_diameter")
+            self.notes.extend(n for n in level_notes(scene, spec.name, b)
+                              if n not in self.notes)
             opts = dict(kin_options)
             opts.update(film_kinematics_options(scene.models.get("film"), b, self.lubricant,
                                                 is_ball))

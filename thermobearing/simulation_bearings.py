@@ -78,6 +78,20 @@ def _supply_notes(scene: Scene) -> list[str]:
     return notes
 
 
+def level_notes(scene: Scene, name: str, bearing: Any) -> list[str]:
+    """An oil-bath level above the top of a bearing's outer raceway (measured from its
+    lowest point, :func:`thermobearing.heat_sources.churning.oil_bath_fraction`): the
+    bearing runs fully immersed, which a level written without a unit (read in metres,
+    ``level = 5``) gives by mistake; said, not refused (a flooded housing is a real case)."""
+    sup = scene.supply
+    top = getattr(bearing, "outer_raceway_diameter", None)
+    if sup.method != "oil_bath" or sup.level is None or top is None or sup.level <= top:
+        return []
+    return [f"supply.level ({sup.level * 1e3:g} mm) is above the top of the outer raceway "
+            f"of bearing {name} ({top * 1e3:g} mm above its lowest point): it runs fully "
+            "immersed (a level without a unit is read in metres: \"5 mm\", not 5)"]
+
+
 def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any, str]:
     """Ball force-model parameters and bearing for the skidding solver.
 

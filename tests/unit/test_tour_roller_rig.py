@@ -430,3 +430,17 @@ def test_a_bath_level_left_in_a_jet_scene_is_noted():
     plain = Simulation(loads_scene(_crb_scene("NU214", "skidding", axial="0 kN")),
                        progress=False)
     assert plain.notes == []
+
+
+def test_an_oil_bath_level_above_the_bearing_is_noted():
+    """`level = 5` (no unit: 5 m) ran as a fully immersed bearing without a word; a level
+    above the top of the outer raceway is now noted (with the unit hint), a normal one not."""
+    def bath(level: str) -> str:
+        return _crb_scene("NU214", "race_control", axial="0 kN").replace(
+            'flow = "2 L/min"', f'method = "oil_bath"\nflow = "0 L/min"\nlevel = {level}')
+
+    sim = Simulation(loads_scene(bath("5")), progress=False)
+    notes = [n for n in sim.notes if n.startswith("supply.level (5000 mm) is above")]
+    assert len(notes) == 1 and "fully immersed" in notes[0] and '"5 mm"' in notes[0]
+    normal = Simulation(loads_scene(bath('"10 mm"')), progress=False)
+    assert not any("is above the top" in n for n in normal.notes)
