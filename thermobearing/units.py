@@ -3,7 +3,10 @@
 Inside the package everything is SI (m, kg, s, K, N, Pa, W, rad). This module is the
 only place that knows about pint: a config value such as ``"1800 rpm"``, ``"33 L/min"``,
 ``"35 degC"``, ``"2 kN"`` or ``"0.08 Pa*s"`` is converted once, at load time, to a float in
-the SI unit declared for that field. A bare number is taken to be SI already.
+the SI unit declared for that field. A bare number is taken to be SI already. Spellings of
+data sheets that pint does not read are accepted too: ``"16000 r/min"`` (``rev/min``),
+a bare exponent digit after a length unit (``"30 mm3/h"``, ``"32 mm2/s"``); a decimal
+comma (``"0,5 kN"``) is an error that shows the value with a point.
 """
 
 from __future__ import annotations
@@ -53,6 +56,14 @@ SI_UNITS: dict[str, str] = {
 }
 
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+#: a number written with a decimal comma ("0,5 kN")
+_DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+")
+#: revolutions per minute / second as ISO 80000 and catalogues write them ("r/min",
+#: "rev/min"), which pint does not read
+_REV_PER = re.compile(r"(?<![A-Za-z_])(?:r|rev)\s*/\s*(min|s)(?![A-Za-z_])")
+#: a length unit with its exponent written as a bare digit ("mm3/h", "mm2/s", "kg/m3")
+_BARE_EXPONENT = re.compile(r"(?<![A-Za-z_\u00b5\u03bc])(km|dm|cm|mm|um|\u00b5m|\u03bcm|m|in|ft)"
+                            r"([23])(?![\d.])")
 
 
 @functools.lru_cache(maxsize=1)
@@ -118,6 +129,11 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if match is None:
         raise InputError(field, value, f"'<number> <unit>' convertible to {target}")
     number, unit_text = match.groups()
+    if _DECIMAL_COMMA.match(value):
+        raise InputError(field, value, f"a number with a decimal point, not a comma "
+                         f"('{value.strip().replace(',', '.', 1)}'), in a unit convertible "
+                         f"to {target}")
+    unit_text = _usual_spellings(unit_text)
     if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
         unit_text = "delta_degC"
     if target == "delta_degC" and unit_text in ("K", "kelvin"):
@@ -136,6 +152,14 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if target == "K" and out <= 0.0:
         raise InputError(field, value, "a temperature above absolute zero (> 0 K, > -273.15 degC)")
     return float(out)
+
+
+def _usual_spellings(unit_text: str) -> str:
+    """Unit spellings of data sheets in pint's: ``r/min`` and ``rev/min`` -> ``rpm``
+    (``r/s`` -> ``rps``), a bare exponent digit after a length unit -> ``**``
+    (``mm3/h`` -> ``mm**3/h``, ``mm2/s`` -> ``mm**2/s``, ``kg/m3`` -> ``kg/m**3``)."""
+    unit_text = _REV_PER.sub(lambda m: "rpm" if m.group(1) == "min" else "rps", unit_text)
+    return _BARE_EXPONENT.sub(r"\1**\2", unit_text)
 
 
 @functools.lru_cache(maxsize=4096)
