@@ -65,12 +65,18 @@ class BearingSpec:
 
 @dataclass(frozen=True)
 class Supply:
-    """Oil supply: method, volume flow [m^3/s], inlet temperature [K], bath level [m]."""
+    """Oil supply: method, volume flow [m^3/s], inlet temperature [K], bath level [m].
+
+    ``inlet_given``: whether the scene gave the inlet temperature; one it did not give is
+    the ambient temperature and is left out of :meth:`to_dict`, so a scene changed at
+    ``environment.ambient_temperature`` (a sweep, a calibration) moves it along.
+    """
 
     method: str = "jet"
     flow: float = 0.0
     inlet_temperature: float = 308.15
     level: float | None = None
+    inlet_given: bool = field(default=True, compare=False, repr=False)
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], ambient: float) -> Supply:
@@ -95,14 +101,13 @@ class Supply:
             raise InputError("supply.level", level, "an oil level >= 0")
         if method == "oil_bath" and level_si is None:
             raise InputError("supply.level", None, "an oil level for an oil bath")
-        return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si)
+        return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si,
+                   inlet_given="inlet_temperature" in data)
 
     def to_dict(self) -> dict[str, Any]:
-        out: dict[str, Any] = {
-            "method": self.method,
-            "flow": _fmt(self.flow, "L/min"),
-            "inlet_temperature": _fmt(self.inlet_temperature, "degC"),
-        }
+        out: dict[str, Any] = {"method": self.method, "flow": _fmt(self.flow, "L/min")}
+        if self.inlet_given:
+            out["inlet_temperature"] = _fmt(self.inlet_temperature, "degC")
         if self.level is not None:
             out["level"] = _fmt(self.level, "mm")
         return out
@@ -110,10 +115,16 @@ class Supply:
 
 @dataclass(frozen=True)
 class Environment:
-    """Ambient and initial temperatures [K]."""
+    """Ambient and initial temperatures [K].
+
+    ``initial_given``: whether the scene gave the initial temperature; one it did not give
+    is the ambient temperature and is left out of :meth:`to_dict`, so a scene changed at
+    ``ambient_temperature`` (a sweep, a calibration) starts at the new ambient.
+    """
 
     ambient_temperature: float = 308.15
     initial_temperature: float = 308.15
+    initial_given: bool = field(default=True, compare=False, repr=False)
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Environment:
@@ -126,13 +137,14 @@ class Environment:
             if v <= 0:
                 raise InputError(f"environment.{name}", data.get(name, v),
                                  "a temperature above absolute zero (0 K = -273.15 degC)")
-        return cls(ambient_temperature=amb, initial_temperature=ini)
+        return cls(ambient_temperature=amb, initial_temperature=ini,
+                   initial_given="initial_temperature" in data)
 
     def to_dict(self) -> dict[str, Any]:
-        return {
-            "ambient_temperature": _fmt(self.ambient_temperature, "degC"),
-            "initial_temperature": _fmt(self.initial_temperature, "degC"),
-        }
+        out = {"ambient_temperature": _fmt(self.ambient_temperature, "degC")}
+        if self.initial_given:
+            out["initial_temperature"] = _fmt(self.initial_temperature, "degC")
+        return out
 
 
 @dataclass(frozen=True)

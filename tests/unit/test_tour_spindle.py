@@ -36,3 +36,69 @@ def test_decimal_comma_is_named_with_the_corrected_value():
         to_si("0,5 kN", "N", field="schedule.axial_load")
     text = str(err.value)
     assert "schedule.axial_load" in text and "decimal point" in text and "'0.5 kN'" in text
+
+
+# --- a sweep of the ambient temperature -------------------------------------------------
+_SCENE = """
+title = "spindle pair"
+[[bearings]]
+name = "front"
+preset = "SKF6304"
+[lubricant]
+preset = "ISO_VG32"
+[supply]
+method = "oil_air"
+flow = "30 mm3/h"
+[environment]
+ambient_temperature = "22 degC"
+{extra}
+[schedule]
+speed = "12000 r/min"
+radial_load = "200 N"
+axial_load = "0.5 kN"
+steps = [{{ duration = "10 min" }}]
+[outputs]
+mode = "steady"
+want = ["losses"]
+"""
+
+
+def _ambient_cases(extra: str):
+    from thermobearing.scene import loads_scene
+    from thermobearing.sweep_cases import expand, scene_from_case
+    from thermobearing.sweep_params import parse_set
+
+    scene = loads_scene(_SCENE.format(extra=extra))
+    param = parse_set("environment.ambient_temperature=22,60", scene.to_dict())
+    return [scene_from_case(c) for c in expand(scene, [param])]
+
+
+def test_ambient_sweep_moves_the_temperatures_that_default_to_ambient():
+    """The initial and oil-inlet temperatures a scene leaves to the ambient follow a swept
+    ambient (they stayed at the base scene's ambient: a losses-only sweep of the ambient,
+    evaluated at the initial temperature, gave the same losses for every value)."""
+    cold, hot = _ambient_cases("")
+    assert cold.environment.initial_temperature == pytest.approx(295.15)
+    assert hot.environment.ambient_temperature == pytest.approx(333.15)
+    assert hot.environment.initial_temperature == pytest.approx(333.15)
+    assert hot.supply.inlet_temperature == pytest.approx(333.15)
+
+
+def test_ambient_sweep_keeps_temperatures_the_scene_gives():
+    _, hot = _ambient_cases('initial_temperature = "25 degC"')
+    assert hot.environment.initial_temperature == pytest.approx(298.15)
+    assert hot.supply.inlet_temperature == pytest.approx(333.15)  # inlet not given
+
+
+def test_scene_round_trip_keeps_what_was_given():
+    from thermobearing.scene import loads_scene
+
+    scene = loads_scene(_SCENE.format(extra=""))
+    text = scene.to_toml()
+    assert "initial_temperature" not in text and "inlet_temperature" not in text
+    again = loads_scene(text)
+    assert again.environment == scene.environment
+    assert again.supply.inlet_temperature == scene.supply.inlet_temperature
+    assert not again.environment.initial_given and not again.supply.inlet_given
+    given = loads_scene(_SCENE.format(extra='initial_temperature = "22 degC"'))
+    assert "initial_temperature" in given.to_toml()
