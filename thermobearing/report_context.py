@@ -92,7 +92,8 @@ def supply_text(scene: Any, lubricant: Any | None) -> str:
                      f"mm^2/s at the inlet {s.inlet_temperature - _KELVIN:.4g} degC)")
     supply = f"supply {s.method.replace('_', ' ')}"
     if s.flow:
-        supply += (f", {from_si(s.flow, 'L/min'):.4g} L/min at "
+        unit = getattr(s, "flow_unit", "L/min")  # the scene's own unit (mm^3/h for oil-air)
+        supply += (f", {from_si(s.flow, unit):.4g} {unit.replace('**', '^')} at "
                    f"{s.inlet_temperature - _KELVIN:.4g} degC")
     if s.level is not None:
         supply += f", oil level {1e3 * s.level:.4g} mm"

@@ -7,12 +7,12 @@ from __future__ import annotations
 import csv
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from .errors import InputError
-from .scene_values import _check_keys, _fmt, _quantity, _require, _table
+from .scene_values import _check_keys, _fmt, _quantity, _require, _table, _unit_of
 
 
 @dataclass(frozen=True)
@@ -50,11 +50,27 @@ def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: 
     return Step(**{k: float(out[k]) for k in _STEP_KEYS})
 
 
+def _note_units(units: dict[str, str], values: Mapping[str, Any]) -> None:
+    """Record the unit of each step quantity the scene writes with one (the first wins)."""
+    for key, raw in values.items():
+        if key in _STEP_KINDS and key not in units and isinstance(raw, str):
+            unit = _unit_of(raw, _STEP_KINDS[key], "")
+            if unit:
+                units[key] = unit
+
+
 @dataclass(frozen=True)
 class Schedule:
-    """The protocol: a tuple of steps run one after the other."""
+    """The protocol: a tuple of steps run one after the other.
+
+    ``units``: the unit the scene wrote each step quantity in (``{"axial_load": "N"}``);
+    :meth:`to_dict` writes the steps in them (else min, rpm, kN), so a sweep's bare numbers
+    are in the scene's own unit (``--set schedule.axial_load=300,800`` after ``"500 N"``
+    means newtons).
+    """
 
     steps: tuple[Step, ...]
+    units: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def breakpoints(self) -> list[float]:
@@ -91,6 +107,11 @@ class Schedule:
         dur_key = "step_duration" if "step_duration" in data else "duration"
         if dur_key in data:
             defaults["duration"] = _quantity(data[dur_key], "time", f"schedule.{dur_key}")
+        units: dict[str, str] = {}
+        _note_units(units, {k: data[k] for k in ("speed", "radial_load", "axial_load")
+                            if k in data})
+        if dur_key in data:
+            _note_units(units, {"duration": data[dur_key]})
         forms = [k for k in ("axial_load_steps", "steps", "file") if k in data]
         if len(forms) > 1:
             raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
@@ -104,6 +125,7 @@ class Schedule:
             _check_keys("schedule.axial_load_steps", sweep, ("start", "stop", "step"))
             a0 = _quantity(_require("schedule.axial_load_steps", sweep, "start"), "force",
                        field="schedule.axial_load_steps.start")
+            _note_units(units, {"axial_load": sweep["start"]})
             a1 = _quantity(_require("schedule.axial_load_steps", sweep, "stop"), "force",
                        field="schedule.axial_load_steps.stop")
             da = _quantity(_require("schedule.axial_load_steps", sweep, "step"), "force",
@@ -123,22 +145,24 @@ class Schedule:
             for i, item in enumerate(items):
                 where = f"schedule.steps[{i}]"
                 steps.append(_make_step(_table(where, item), defaults, where))
+                _note_units(units, item)
         else:
-            steps.extend(_read_schedule_file(data["file"], defaults, base_dir))
+            steps.extend(_read_schedule_file(data["file"], defaults, base_dir, units))
         if not steps:
             raise InputError("schedule", dict(data), "at least one step")
-        return cls(steps=tuple(steps))
+        return cls(steps=tuple(steps), units=units)
 
     def to_dict(self) -> dict[str, Any]:
+        units = {**_STEP_UNITS, **self.units}
         return {
             "steps": [
-                {k: _fmt(getattr(s, k), _STEP_UNITS[k]) for k in _STEP_KEYS} for s in self.steps
+                {k: _fmt(getattr(s, k), units[k]) for k in _STEP_KEYS} for s in self.steps
             ]
         }
 
 
 def _read_schedule_file(name: str, defaults: Mapping[str, float],
-                        base_dir: Path | None) -> list[Step]:
+                        base_dir: Path | None, seen_units: dict[str, str]) -> list[Step]:
     path = Path(name)
     if not path.is_absolute() and base_dir is not None:
         path = base_dir / path
@@ -161,4 +185,5 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
         for i, row in enumerate(reader):
             values = {colmap[c]: f"{v} {units[colmap[c]]}" for c, v in row.items() if v}
             steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
+            _note_units(seen_units, values)
     return steps

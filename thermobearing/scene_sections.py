@@ -15,7 +15,7 @@ from typing import Any
 
 from .errors import InputError, UnknownNameError
 from .operating_checks import STRESS_FAMILIES, CheckLimits, check_limit_value
-from .scene_values import _check_keys, _fmt, _quantity, _require, _table
+from .scene_values import _check_keys, _fmt, _quantity, _require, _table, _unit_of
 from .units import to_si
 
 SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
@@ -77,6 +77,9 @@ class Supply:
     inlet_temperature: float = 308.15
     level: float | None = None
     inlet_given: bool = field(default=True, compare=False, repr=False)
+    #: the unit the scene wrote the flow in (``"mm**3/h"`` for oil-air), used to write it
+    #: back, by a sweep's bare numbers and by the report
+    flow_unit: str = field(default="L/min", compare=False, repr=False)
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], ambient: float) -> Supply:
@@ -102,10 +105,11 @@ class Supply:
         if method == "oil_bath" and level_si is None:
             raise InputError("supply.level", None, "an oil level for an oil bath")
         return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si,
-                   inlet_given="inlet_temperature" in data)
+                   inlet_given="inlet_temperature" in data,
+                   flow_unit=_unit_of(data.get("flow"), "volume_flow", "L/min"))
 
     def to_dict(self) -> dict[str, Any]:
-        out: dict[str, Any] = {"method": self.method, "flow": _fmt(self.flow, "L/min")}
+        out: dict[str, Any] = {"method": self.method, "flow": _fmt(self.flow, self.flow_unit)}
         if self.inlet_given:
             out["inlet_temperature"] = _fmt(self.inlet_temperature, "degC")
         if self.level is not None:

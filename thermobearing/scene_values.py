@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .errors import InputError
-from .units import format_quantity, to_si
+from .units import format_quantity, quantity_unit, to_si
 
 
 def _check_keys(section: str, data: Mapping[str, Any], allowed: Sequence[str]) -> None:
@@ -36,6 +36,21 @@ def _quantity(raw: Any, kind: str, field: str) -> float:
     if not math.isfinite(value):
         raise InputError(field, raw, "a finite number with a unit")
     return value
+
+
+def _unit_of(raw: Any, kind: str, default: str) -> str:
+    """The unit a scene value was written in (``"500 N"`` -> ``"N"``), so that the scene is
+    written back and read by a sweep's bare numbers in the user's unit; ``default`` for a
+    bare number or a unit that does not convert to ``kind`` (a temperature difference,
+    an offset unit)."""
+    unit = quantity_unit(raw)
+    if unit is None:
+        return default
+    try:
+        to_si(f"1 {unit}", kind)
+    except InputError:
+        return default
+    return unit
 
 
 def _require(section: str, data: Mapping[str, Any], key: str) -> Any:

@@ -162,6 +162,18 @@ def _usual_spellings(unit_text: str) -> str:
     return _BARE_EXPONENT.sub(r"\1**\2", unit_text)
 
 
+def quantity_unit(value: Any) -> str | None:
+    """The unit of a quantity string in pint's spelling (``"30 mm3/h"`` -> ``"mm**3/h"``,
+    ``"16000 r/min"`` -> ``"rpm"``); None for a bare number or a string without a unit.
+    The unit is not checked here (:func:`to_si` does that)."""
+    if not isinstance(value, str):
+        return None
+    match = _NUMBER_UNIT.match(value)
+    if match is None or not match.group(2):
+        return None
+    return _usual_spellings(match.group(2))
+
+
 @functools.lru_cache(maxsize=4096)
 def _convert(number: float, unit_text: str, target: str) -> float:
     """``number unit_text`` in ``target`` (pint; memoised: configs repeat the same few

@@ -102,3 +102,42 @@ def test_scene_round_trip_keeps_what_was_given():
     assert not again.environment.initial_given and not again.supply.inlet_given
     given = loads_scene(_SCENE.format(extra='initial_temperature = "22 degC"'))
     assert "initial_temperature" in given.to_toml()
+
+
+# --- bare sweep numbers in the scene's own units ----------------------------------------
+def _spindle_scene(axial: str = '"500 N"', flow: str = '"30 mm3/h"'):
+    from thermobearing.scene import loads_scene
+
+    text = (_SCENE.format(extra="").replace('axial_load = "0.5 kN"', f"axial_load = {axial}")
+            .replace('flow = "30 mm3/h"', f"flow = {flow}"))
+    return loads_scene(text)
+
+
+def test_bare_sweep_numbers_are_in_the_units_the_scene_was_written_in():
+    """A preload written "500 N" swept with ``--set schedule.axial_load=300,800`` means
+    300 and 800 N (it meant kN: 300 kN on a spindle bearing), and an oil-air flow written
+    in mm^3/h is swept in mm^3/h (it meant L/min)."""
+    from thermobearing.sweep_cases import expand, scene_from_case
+    from thermobearing.sweep_params import parse_set
+
+    scene = _spindle_scene()
+    d = scene.to_dict()
+    load = parse_set("schedule.axial_load=300,800", d)
+    flow = parse_set("supply.flow=10,100", d)
+    cases = [scene_from_case(c) for c in expand(scene, [load, flow])]
+    assert sorted({c.schedule.steps[0].axial_load for c in cases}) == [300.0, 800.0]
+    assert sorted({c.supply.flow for c in cases}) == pytest.approx([10e-9 / 3600, 100e-9 / 3600])
+
+
+def test_scene_units_default_where_the_scene_gives_bare_numbers():
+    scene = _spindle_scene(axial="500.0", flow="8.3e-12")
+    d = scene.to_dict()
+    assert d["schedule"]["steps"][0]["axial_load"] == "0.5 kN"
+    assert d["supply"]["flow"].endswith("L/min")
+
+
+def test_report_gives_the_oil_air_flow_in_the_scene_unit():
+    from thermobearing.report_context import supply_text
+
+    text = supply_text(_spindle_scene(), None)
+    assert "30 mm^3/h at 22 degC" in text
