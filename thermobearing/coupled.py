@@ -29,11 +29,15 @@ ROLES = ("inner_ring", "outer_ring", "elements", "cage", "oil")
 
 def build_network(sim: Simulation) -> Any:
     """The scene's thermal network: one template instance per bearing (group = bearing
-    name, node names prefixed ``<bearing>.``), sharing the ambient and oil-inlet boundaries.
+    name, node names prefixed ``<bearing>.``), sharing the ambient and oil-inlet boundaries,
+    and the ``[network] shaft_link`` edges between the ``shaft`` nodes of bearings on one
+    shaft (:mod:`.network.shaft`).
 
     ``[network] parameters`` are the template's parameters (unit strings allowed, converted
     with the units the template registers); the ambient and oil-inlet temperatures and the
-    oil flow come from the scene's environment and supply.
+    oil flow come from the scene's environment and supply. Each shaft link, and two or more
+    bearings left thermally independent (no link), are added to ``sim.notes`` (printed by
+    ``thermobearing check``).
     """
     from .errors import InputError
     from .network.templates import TEMPLATES
@@ -43,9 +47,11 @@ def build_network(sim: Simulation) -> Any:
     spec = dict(scene.network)
     name = spec.pop("template", "four_node_paper002")
     raw = dict(spec.pop("parameters", {}))
+    shafts = spec.pop("shaft_link", None)
     if spec:
         key = next(iter(spec))
-        raise InputError(f"network.{key}", spec[key], "the keys 'template' and 'parameters'")
+        raise InputError(f"network.{key}", spec[key],
+                         "the keys 'template', 'parameters' and 'shaft_link'")
     entry = TEMPLATES.entry(name)
     params: dict[str, Any] = {}
     for key, value in raw.items():
@@ -83,8 +89,35 @@ def build_network(sim: Simulation) -> Any:
                              exc.value, f"{exc.allowed}; set by [network] parameters "
                              f"{', '.join(sorted(raw)) or '(none)'} or the template's "
                              "defaults") from None
+    _link_shafts(sim, net, name, shafts, params)
     net.validate()
     return net
+
+
+def _link_shafts(sim: Simulation, net: Any, template: str, shafts: Any,
+                 params: Mapping[str, Any]) -> None:
+    """The scene's shaft links on ``net`` (``shafts``: the ``shaft_link`` value or None) and
+    their notes (each link; bearings left thermally independent) on ``sim.notes``."""
+    from .errors import InputError
+    from .network.shaft import independence_note, link_shafts, parse_shaft_links
+    from .network.templates import shaft_segment
+
+    names = [b.name for b in sim.bearings]
+    links, notes = [], []
+    if shafts is not None:
+        try:
+            segments = {b.name: shaft_segment(b.bearing, **params) for b in sim.bearings}
+        except TypeError:
+            raise InputError("network.shaft_link", shafts,
+                             f"a template whose shaft piece is known (template {template!r} "
+                             "has no housing_length / shaft_length parameter)") from None
+        links, notes = link_shafts(net, parse_shaft_links(shafts), names, segments, template)
+    alone = independence_note(names, links)
+    if alone:
+        notes.append(alone)
+    held = getattr(sim, "notes", None)
+    if held is not None:
+        held.extend(n for n in notes if n not in held)
 
 
 @dataclass

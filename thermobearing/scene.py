@@ -58,6 +58,7 @@ Layout (every table optional unless marked)::
     [network]
     template = "four_node_paper002"
     parameters = { ... }               # template parameters, unit strings allowed
+    shaft_link = { spacing = "500 mm" }  # bearings on one shaft (network/shaft.py)
 
     [solver]
     stepper = "exprb43"                # exprb43 | tr_bdf2 | backward_euler ...
@@ -200,7 +201,7 @@ class Scene:
         # names, keys and units of [network] now; the template's required parameters only
         # when the scene is run (check_network(..., require=True) in `run` / `check`), so
         # a scene that never builds its network still loads
-        check_network(network, require=False)
+        check_network(network, require=False, bearing_names=names)
         return scene
 
     def to_dict(self) -> dict[str, Any]:

@@ -6,7 +6,7 @@ scene field, the value and what is allowed. Re-exported by :mod:`thermobearing.s
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from .errors import InputError, UnknownNameError
@@ -70,21 +70,32 @@ def check_measured_file(scene: Scene) -> None:
     read_scene_measured(scene)
 
 
-def check_network(network: Mapping[str, Any], require: bool = True) -> None:
+def check_network(network: Mapping[str, Any], require: bool = True,
+                  bearing_names: Sequence[str] | None = None) -> None:
     """Validate a scene's ``[network]`` table before anything runs.
 
-    Keys ``template`` and ``parameters`` only; the template must be registered; every
-    parameter must be one the template documents, in a unit of the documented dimension;
-    with ``require``, the parameters the template requires (keyword-only without a default)
-    must be given (call it so before a run that builds the network).
-    Ambient, oil inlet temperature and oil flow come from ``[environment]`` / ``[supply]``.
+    Keys ``template``, ``parameters`` and ``shaft_link`` only; the template must be
+    registered; every parameter must be one the template documents, in a unit of the
+    documented dimension; with ``require``, the parameters the template requires
+    (keyword-only without a default) must be given (call it so before a run that builds
+    the network). ``shaft_link`` (bearings on one shaft, :mod:`.network.shaft`): its keys,
+    lengths > 0, material and bearing lists; with ``bearing_names`` (the scene's
+    ``[[bearings]]`` names) also the names on each shaft (else the network build checks
+    them). Ambient, oil inlet temperature and oil flow come from ``[environment]`` /
+    ``[supply]``.
     """
     import inspect
 
     from .network.templates import TEMPLATES
     from .scene_values import _check_keys, _quantity, _table
 
-    _check_keys("network", network, ("template", "parameters"))
+    _check_keys("network", network, ("template", "parameters", "shaft_link"))
+    if "shaft_link" in network:
+        from .network.shaft import parse_shaft_links, resolve_shafts
+
+        specs = parse_shaft_links(network["shaft_link"])
+        if bearing_names is not None:
+            resolve_shafts(specs, list(bearing_names))
     name = network.get("template", "four_node_paper002")
     if not isinstance(name, str):
         raise InputError("network.template", name, "a template name (a string)")

@@ -15,6 +15,10 @@ bearing's ``group``; pass ``group=`` to put two bearings in one network with
 oil in the cavity) is written in the docstring; change it after construction with
 ``set_capacity``/``set_edge_conductance`` if you know better.
 
+Every template has a ``shaft`` node (:data:`SHAFT_NODE`) holding the inner ring's shaft
+piece (:func:`shaft_segment`); ``[network] shaft_link`` joins those of bearings on one shaft
+(:mod:`.shaft`).
+
 Role map of the four-node template (contract): outer_ring -> housing, inner_ring -> shaft,
 elements -> balls, cage -> oil, oil -> oil. In a roller bearing the element node is named
 ``rollers`` (same role, same equations with the rollers' mass and surface).
@@ -23,6 +27,7 @@ elements -> balls, cage -> oil, oil -> oil. In a roller bearing the element node
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError
@@ -43,6 +48,11 @@ H_OIL_DEFAULT = 270.0
 #: default h of air on a rotating shaft end / ring faces [W/(m^2 K)] (estimate: natural
 #: convection plus linearised radiation ~ 10 W/(m^2 K), primer sec. 4.2 worked example).
 H_AIR_DEFAULT = 10.0
+#: default material of housing and shaft (the templates' ``housing_material``)
+HOUSING_MATERIAL_DEFAULT = "STEEL_52100"
+#: name of the node (after the bearing's prefix) that holds the inner ring's shaft piece in
+#: every template: ``[network] shaft_link`` joins these nodes (:mod:`.shaft`)
+SHAFT_NODE = "shaft"
 
 
 def _material(m):
@@ -98,6 +108,36 @@ def _oil_properties(lubricant, T: float) -> tuple[float, float]:
     return float(lubricant.density(T)), float(lubricant.specific_heat(T))
 
 
+@dataclass(frozen=True)
+class ShaftSegment:
+    """The solid shaft piece a template's ``shaft`` node holds besides the inner ring.
+
+    diameter d_s [m] (``shaft_diameter``, default the bore d), length L_s [m]
+    (``shaft_length``, default the housing length L_h; the piece is taken centred on the
+    bearing), material (``housing_material``). Capacity rho c pi d_s^2 / 4 L_s [J/K].
+    """
+
+    diameter: float
+    length: float
+    material: Any
+
+    @property
+    def capacity_per_length(self) -> float:
+        """rho c pi d_s^2 / 4 [J/(K m)]."""
+        return (self.material.density * self.material.specific_heat
+                * math.pi / 4.0 * self.diameter**2)
+
+
+def shaft_segment(bearing, *, housing_length: float, shaft_diameter: float | None = None,
+                  shaft_length: float | None = None,
+                  housing_material: str = HOUSING_MATERIAL_DEFAULT, **_: Any) -> ShaftSegment:
+    """The shaft piece of the templates' ``shaft`` node for the template parameters (SI),
+    as :func:`four_node_paper002` and :func:`seven_node` count it (other parameters are
+    ignored, so a template's whole parameter set can be passed)."""
+    return ShaftSegment(shaft_diameter or bearing.bore, shaft_length or housing_length,
+                        _material(housing_material))
+
+
 def _check_dims(**dims: float) -> None:
     for k, v in dims.items():
         if v is None:
@@ -147,7 +187,7 @@ def four_node_paper002(
     h_air: float | None = None,
     oil_fill: float = 0.3,
     contact_model: str = "hertz_constriction",
-    housing_material: str = "STEEL_52100",
+    housing_material: str = HOUSING_MATERIAL_DEFAULT,
     group: str = "bearing",
     prefix: str = "",
     network: ThermalNetwork | None = None,
@@ -162,7 +202,9 @@ def four_node_paper002(
       the width B;
     - ``shaft``: inner ring (annulus between the bore d and the inner land diameter D_Li
       over B) plus a solid shaft of ``shaft_diameter`` (default d) and ``shaft_length``
-      (default L_h);
+      (default L_h) of ``housing_material`` (:func:`shaft_segment`), the piece taken centred
+      on the bearing; bearings on one shaft are joined node to node by
+      :mod:`.shaft` (``[network] shaft_link``), which shares pieces that overlap;
     - ``oil``: oil filling ``oil_fill`` of the free cavity volume (between the lands, minus
       balls and cage) times rho c_p, plus the cage mass times its c.
 
@@ -204,8 +246,8 @@ def four_node_paper002(
     D_h, L_h = housing_outer_diameter, housing_length
     d = bearing.bore
     D = bearing.outer_diameter
-    d_s = shaft_diameter or d
-    L_s = shaft_length or L_h
+    shaft = shaft_segment(bearing, housing_length=L_h, shaft_diameter=shaft_diameter,
+                          shaft_length=shaft_length, housing_material=housing_material)
     ring = bearing.ring_material
     hous = _material(housing_material)
     el = _element(bearing)
@@ -218,9 +260,9 @@ def four_node_paper002(
     c_house = hous.density * hous.specific_heat * v_house + ring.density * ring.specific_heat \
         * v_outer
     v_inner = math.pi / 4.0 * (d_li**2 - d**2) * B
-    v_shaft = math.pi / 4.0 * d_s**2 * L_s
-    c_shaft = ring.density * ring.specific_heat * v_inner + hous.density * hous.specific_heat \
-        * v_shaft
+    v_shaft = math.pi / 4.0 * shaft.diameter**2 * shaft.length
+    c_shaft = ring.density * ring.specific_heat * v_inner \
+        + shaft.material.density * shaft.material.specific_heat * v_shaft
     rho_o, cp_o = _oil_properties(lubricant, oil_inlet_temperature)
     c_oil = oil_fill * cav["v_free"] * rho_o * cp_o
     if bearing.cage.material is not None:
@@ -229,7 +271,7 @@ def four_node_paper002(
     e = _element_node(bearing)
     net.add_node(p + e, c_balls, group=group, role="elements")
     net.add_node(p + "housing", c_house, group=group, role="outer_ring")
-    net.add_node(p + "shaft", c_shaft, group=group, role="inner_ring")
+    net.add_node(p + SHAFT_NODE, c_shaft, group=group, role="inner_ring")
     net.add_node(p + "oil", c_oil, group=group, role=("oil", "cage"))
 
     axes = _contact_axes(bearing, ball_load)
@@ -299,7 +341,7 @@ def seven_node(
     fit_conductance: float = 5000.0,
     oil_fill: float = 0.3,
     contact_model: str = "hertz_constriction",
-    housing_material: str = "STEEL_52100",
+    housing_material: str = HOUSING_MATERIAL_DEFAULT,
     group: str = "bearing",
     prefix: str = "",
     network: ThermalNetwork | None = None,
@@ -347,7 +389,7 @@ def seven_node(
     net.add_node(p + "outer_ring", c_outer, group=group, role="outer_ring")
     net.add_node(p + "housing", c_house, group=group)
     net.add_node(p + "inner_ring", c_inner, group=group, role="inner_ring")
-    net.add_node(p + "shaft", c_shaft, group=group)
+    net.add_node(p + SHAFT_NODE, c_shaft, group=group)
     e = _element_node(bearing)
     net.add_node(p + e, base.capacity(f"__tmp__{e}"), group=group, role="elements")
     net.add_node(p + "cage", max(c_cage, 0.0), group=group, role="cage")
