@@ -97,11 +97,12 @@ def axial_shaft_conductance(conductivity: float, diameter: float, spacing: float
     A = pi d_s^2 / 4 [m^2], L the distance between the sections [m], k [W/(m K)]: 1-D
     steady conduction, constant k (Incropera et al. 2007, eq. 3.6 with the rod's cross
     section). The shaft's surface between the sections is taken as adiabatic: with
-    convection h over the surface the end-to-end conductance of a rod is
-    k A m / sinh(m L), m = sqrt(4 h / (k d_s)) (the same fin equation, Incropera sec. 3.6),
-    which is 0.85 G at m L = 1 (steel, d_s = 220 mm, L = 0.5 m and h = 10 W/(m^2 K)) and
-    0.48 G at m L = 2.25 (h = 50 W/(m^2 K)); the heat the span loses on its way is not
-    in the network either.
+    convection h over the surface the coupling of the two end temperatures is
+    k A m / sinh(m L), m = sqrt(4 h / (k d_s)) (fin with prescribed end temperatures,
+    Incropera et al. 2007, sec. 3.6, Table 3.4 case C), i.e. (m L / sinh(m L)) G: 0.85 G at
+    m L = 0.98 (k = 47 W/(m K), d_s = 220 mm, L = 0.5 m, h = 10 W/(m^2 K)) and 0.49 G at
+    m L = 2.2 (h = 50 W/(m^2 K), a faster-turning shaft); the heat the span loses on its
+    way is not in the network either.
     """
     for name, v in (("conductivity", conductivity), ("diameter", diameter),
                     ("spacing", spacing)):
