@@ -321,3 +321,21 @@ def test_a_network_without_shaft_nodes_is_refused():
     assert err.value.field == "network.shaft_link"
     assert "a network template with a 'shaft' node per bearing" in str(err.value)
     assert "'custom'" in str(err.value)
+
+
+def test_coupled_run_of_an_unequal_pair_closes_its_books_and_evens_the_shafts():
+    # the non-drive end with a larger clearance (0.4 mm, preset 0.1 mm) runs slightly
+    # hotter at the shaft; the link narrows the difference, the run's audit closes
+    text = TWO.format(template="four_node_paper002", shaft_length="500 mm",
+                      duration="30 min").replace(
+        'name = "nde"\npreset = "QJ1044"\n',
+        'name = "nde"\npreset = "QJ1044"\noverrides = { diametral_clearance = "0.4 mm" }\n')
+    gaps = []
+    for link in ("", 'shaft_link = { spacing = "500 mm" }\n'):
+        res = Simulation(loads_scene(text + link), progress=False).run()
+        last = res.tables["temperatures"].iloc[-1]
+        gaps.append(last["nde.shaft [degC]"] - last["de.shaft [degC]"])
+        assert res.stats["relative_energy_imbalance"] < 1e-12
+    free, linked = gaps
+    assert free > 0.01
+    assert 0.0 < linked < free
