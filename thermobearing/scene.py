@@ -72,7 +72,7 @@ Layout (every table optional unless marked)::
     want = ["temperatures", "losses", "kinematics", "energy", "report"]
 
     [checks]                           # thresholds of the validity warnings (operating_checks)
-    skid_limit = "2 %"                 # |CSR/CSR_th - 1| [-]; default 5 %
+    skid_limit = "2 %"                 # |CSR/CSR_ref - 1| [-]; default 5 % (operating_checks)
     contact_stress_limit = "3500 MPa"  # or { ball = ..., self_aligning_ball = ..., roller = ... }
     min_film_parameter = 1.5           # Lambda [-]; default 1 (boundary lubrication)
 

@@ -141,3 +141,61 @@ def test_report_gives_the_oil_air_flow_in_the_scene_unit():
 
     text = supply_text(_spindle_scene(), None)
     assert "30 mm^3/h at 22 degC" in text
+
+
+# --- the skid check at spindle speeds ----------------------------------------------------
+_SPINDLE_BEARING = {
+    "name": "7014C", "kind": "angular_contact", "estimate_missing": True,
+    "source": "catalogue envelope 70 x 110 x 20 mm, 15 deg; ball set typical for the size",
+    "bore": "70 mm", "outer_diameter": "110 mm", "width": "20 mm",
+    "ball_diameter": "11.112 mm", "n_balls": 20, "contact_angle": "15 deg",
+}
+
+
+def _solve(model: str, rpm: float, axial: float, radial: float = 0.0):
+    from thermobearing import load_lubricant
+    from thermobearing.bearing_config import bearing_from_dict
+    from thermobearing.kinematic_models import KINEMATICS
+    from thermobearing.state import OilSupply, OperatingPoint
+
+    bearing = bearing_from_dict(_SPINDLE_BEARING)
+    op = OperatingPoint(inner_speed=rpm * math.pi / 30, radial_load=radial, axial_load=axial)
+    kin = KINEMATICS.get(model)(bearing, load_lubricant("ISO_VG32"), op,
+                                contact_temperature=300.0, oil_temperature=300.0,
+                                supply=OilSupply("oil_air", 30e-9 / 3600, 295.15))
+    return bearing, kin
+
+
+@pytest.mark.filterwarnings("ignore::thermobearing.errors.ValidityWarning")
+def test_race_control_at_spindle_speed_is_not_reported_as_over_skidding():
+    """Race control rolls by construction, yet at 24000 r/min under 300 N its cage speed
+    ratio is about 6 % above paper 002's zero-speed CSR_th (the outer contact angle falls
+    to a few degrees): the check said "over-skidding ... gross sliding" there."""
+    from thermobearing.operating_checks import CheckLog, check_state, composite_roughness
+
+    bearing, kin = _solve("race_control", 24000, 300.0)
+    assert kin.over_skid > 0.05                      # paper 002's measure includes the shift
+    check = check_state(bearing, kin)
+    assert check.slip == 0.0 and check.csr_roll == kin.cage_speed_ratio
+    inner, outer = (math.degrees(a) for a in check.contact_angles)
+    assert inner > 20.0 > 5.0 > outer                # 15 deg nominal, turned by speed
+    log = CheckLog("front", composite_roughness(bearing))
+    log.record(0, check)
+    lines = log.summary()
+    assert not any("gross sliding of the elements" in line for line in lines), lines
+    assert any("without gross sliding" in line and "outer" in line for line in lines), lines
+    assert log.flagged_steps()["skid"] == 0
+
+
+@pytest.mark.filterwarnings("ignore::thermobearing.errors.ValidityWarning")
+def test_skidding_slip_is_measured_from_rolling_at_the_solved_contact_angles():
+    """The skidding solver's cage at 20000 r/min, 300 N preload runs within a percent of
+    rolling at its own contact angles while CSR/CSR_th - 1 is above 5 %."""
+    from thermobearing.operating_checks import check_state
+
+    bearing, kin = _solve("skidding", 20000, 300.0)
+    check = check_state(bearing, kin)
+    assert kin.over_skid > 0.05
+    assert check.csr_roll is not None
+    assert check.slip == pytest.approx(kin.cage_speed_ratio / check.csr_roll - 1.0)
+    assert abs(check.slip) < 0.01
