@@ -10,7 +10,7 @@ Scene schema (``[network]``, SI after loading; bare numbers are SI)::
     shaft_link = { spacing = "500 mm" }      # every bearing of the scene, in the order
                                              # given, on one shaft, 500 mm between centres
     shaft_link = { bearings = ["a", "b", "c"], spacing = ["300 mm", "450 mm"],
-                   diameter = "80 mm", material = "STEEL_52100" }
+                   diameter = "80 mm", material = "STEEL_52100", h = "10 W/(m**2*K)" }
     # several shafts: an array of such tables ([[network.shaft_link]]), one per shaft
 
 - ``bearings``: the bearings on the shaft in their order along it (two or more scene bearing
@@ -21,7 +21,11 @@ Scene schema (``[network]``, SI after loading; bare numbers are SI)::
 - ``diameter``: the shaft diameter d_s (default the template's ``shaft_diameter``, else the
   smaller bore of the two bearings of a gap);
 - ``material``: a material preset (default the template's ``housing_material``, which the
-  templates also use for the shaft's capacity).
+  templates also use for the shaft's capacity);
+- ``h``: convection coefficient [W/(m^2 K)] on the shaft's surface between the bearings
+  (default none: the span is adiabatic). With h the span is a fin between the two shaft
+  nodes (:func:`fin_span_conductances`): a coupling edge k A m / sinh(m L) between them and
+  an edge k A m tanh(m L / 2) from each to the ambient.
 
 Lumped bodies: each bearing's ``shaft`` node stands for the shaft near its bearing -- the
 inner ring and a solid shaft piece of the template's ``shaft_length`` L_s (default the
@@ -41,12 +45,12 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError, UnknownNameError
-from .conductances import PlaneWall
+from .conductances import Fixed, PlaneWall
 from .graph import ThermalNetwork
 from .templates import SHAFT_NODE, ShaftSegment
 
 #: keys of one ``shaft_link`` table
-LINK_KEYS = ("bearings", "spacing", "diameter", "material")
+LINK_KEYS = ("bearings", "spacing", "diameter", "material", "h")
 
 
 @dataclass(frozen=True)
@@ -63,6 +67,7 @@ class ShaftSpec:
     spacings: tuple[float, ...]
     diameter: float | None
     material: str | None
+    h: float | None = None
 
 
 @dataclass(frozen=True)
@@ -70,7 +75,9 @@ class ShaftLink:
     """One gap of a shaft: the axial conduction edge between two bearings' shaft nodes.
 
     ``spacing`` L [m], ``diameter`` d_s [m], ``conductivity`` k [W/(m K)] of ``material``,
-    ``conductance`` G = k pi d_s^2 / 4 / L [W/K].
+    ``conductance`` [W/K] between the two nodes: G = k pi d_s^2 / 4 / L for an adiabatic
+    span, k A m / sinh(m L) with convection ``h`` [W/(m^2 K)] on it, which then also loses
+    ``end_conductance`` = k A m tanh(m L / 2) [W/K] from each node to the ambient.
     """
 
     bearing_a: str
@@ -82,13 +89,19 @@ class ShaftLink:
     material: str
     conductivity: float
     conductance: float
+    h: float | None = None
+    end_conductance: float = 0.0
 
     def describe(self) -> str:
         """One line for ``thermobearing check``: nodes, geometry and G."""
-        return (f"shaft link {self.node_a} -- {self.node_b}: axial conduction along "
+        text = (f"shaft link {self.node_a} -- {self.node_b}: axial conduction along "
                 f"{self.spacing * 1e3:.4g} mm of a {self.diameter * 1e3:.4g} mm solid "
                 f"{self.material} shaft (k = {self.conductivity:.3g} W/(m K)), "
                 f"G = {self.conductance:.4g} W/K")
+        if self.h is None:
+            return text + " (span adiabatic)"
+        return (text + f" (fin: h = {self.h:.4g} W/(m^2 K) on the span, which takes "
+                f"{self.end_conductance:.4g} W/K from each end to the ambient)")
 
 
 def axial_shaft_conductance(conductivity: float, diameter: float, spacing: float) -> float:
@@ -101,14 +114,40 @@ def axial_shaft_conductance(conductivity: float, diameter: float, spacing: float
     k A m / sinh(m L), m = sqrt(4 h / (k d_s)) (fin with prescribed end temperatures,
     Incropera et al. 2007, sec. 3.6, Table 3.4 case C), i.e. (m L / sinh(m L)) G: 0.85 G at
     m L = 0.98 (k = 47 W/(m K), d_s = 220 mm, L = 0.5 m, h = 10 W/(m^2 K)) and 0.49 G at
-    m L = 2.2 (h = 50 W/(m^2 K), a faster-turning shaft); the heat the span loses on its
-    way is not in the network either.
+    m L = 2.2 (h = 50 W/(m^2 K), a faster-turning shaft). A link given ``h`` uses that fin
+    solution, with the span's loss to the ambient (:func:`fin_span_conductances`).
     """
     for name, v in (("conductivity", conductivity), ("diameter", diameter),
                     ("spacing", spacing)):
         if not math.isfinite(float(v)) or float(v) <= 0.0:
             raise InputError(f"shaft link {name}", v, "a finite value > 0 (SI)")
     return conductivity * math.pi * diameter**2 / 4.0 / spacing
+
+
+def fin_span_conductances(conductivity: float, diameter: float, spacing: float, h: float
+                          ) -> tuple[float, float]:
+    """Two-port of a shaft span with convection to the ambient: (G_ab, G_end) [W/K].
+
+    A solid rod of diameter d_s [m] and length L [m] between two sections held at T_a and
+    T_b, convection h [W/(m^2 K)] on its surface to T_inf: the steady fin equation
+    theta'' = m^2 theta, m = sqrt(h P / (k A)) = sqrt(4 h / (k d_s)), with both end
+    temperatures prescribed (Incropera et al. 2007, sec. 3.6.2, Table 3.4 case C). The heat
+    leaving end a into the rod is q_a = k A m [cosh(mL) theta_a - theta_b] / sinh(mL),
+    which is exactly the heat of two conductances: G_ab = k A m / sinh(m L) between the
+    ends and G_end = k A m (cosh(m L) - 1) / sinh(m L) = k A m tanh(m L / 2) from each end
+    to the ambient. h -> 0 gives G_ab -> k A / L and G_end -> 0 (the adiabatic link);
+    h = 0 returns exactly (k A / L, 0).
+    """
+    g0 = axial_shaft_conductance(conductivity, diameter, spacing)
+    if not math.isfinite(float(h)) or float(h) < 0.0:
+        raise InputError("shaft link h", h, "a finite value >= 0 W/(m^2 K)")
+    if h == 0.0:
+        return g0, 0.0
+    area = math.pi * diameter**2 / 4.0
+    m = math.sqrt(4.0 * h / (conductivity * diameter))
+    ml = m * spacing
+    kam = conductivity * area * m
+    return kam / math.sinh(ml), kam * math.tanh(0.5 * ml)
 
 
 def kept_lengths(positions: Sequence[float], lengths: Sequence[float]) -> list[float]:
@@ -186,6 +225,14 @@ def parse_shaft_links(raw: Any) -> list[ShaftSpec]:
                              f"one length or {len(names) - 1} (one per gap between "
                              f"{len(names)} bearings)")
         diameter = _length(t["diameter"], f"{field}.diameter") if "diameter" in t else None
+        h = None
+        if "h" in t:
+            from ..scene_values import _quantity
+
+            h = _quantity(t["h"], "W/(m**2*K)", f"{field}.h")
+            if not math.isfinite(h) or h < 0.0:
+                raise InputError(f"{field}.h", t["h"],
+                                 "a convection coefficient >= 0 (e.g. \"10 W/(m**2*K)\")")
         material = t.get("material")
         if material is not None:
             if not isinstance(material, str):
@@ -195,7 +242,7 @@ def parse_shaft_links(raw: Any) -> list[ShaftSpec]:
             except UnknownNameError as exc:
                 raise UnknownNameError(f"{field}.material", material, exc.known) from None
         specs.append(ShaftSpec(field, None if names is None else tuple(names), spacings,
-                               diameter, material))
+                               diameter, material, h))
     return specs
 
 
@@ -272,10 +319,19 @@ def link_shafts(net: ThermalNetwork, specs: Sequence[ShaftSpec], bearing_names: 
             d = spec.diameter or min(segments[a].diameter, segments[b].diameter)
             mat = get_material(spec.material) if spec.material else segments[a].material
             k = float(mat.thermal_conductivity)
-            G = axial_shaft_conductance(k, d, s)
-            net.add_edge(nodes[j], nodes[j + 1], PlaneWall(k, math.pi * d**2 / 4.0, s),
-                         name=f"{nodes[j]}--{nodes[j + 1]} (shaft link)")
-            links.append(ShaftLink(a, b, nodes[j], nodes[j + 1], s, d, mat.name, k, G))
+            name = f"{nodes[j]}--{nodes[j + 1]} (shaft link)"
+            if spec.h is None:
+                G, G_end = axial_shaft_conductance(k, d, s), 0.0
+                net.add_edge(nodes[j], nodes[j + 1], PlaneWall(k, math.pi * d**2 / 4.0, s),
+                             name=name)
+            else:
+                G, G_end = fin_span_conductances(k, d, s, spec.h)
+                net.add_edge(nodes[j], nodes[j + 1], Fixed(G), name=name)
+                for node in (nodes[j], nodes[j + 1]):
+                    net.add_edge(node, "ambient", Fixed(G_end),
+                                 name=f"{node}--ambient (shaft span {a}-{b})")
+            links.append(ShaftLink(a, b, nodes[j], nodes[j + 1], s, d, mat.name, k, G,
+                                   spec.h, G_end))
     notes = [link.describe() for link in links] + notes
     return links, notes
 

@@ -19,6 +19,7 @@ from thermobearing.materials import get_material
 from thermobearing.network import ThermalNetwork, TransientStepper, solve_steady
 from thermobearing.network.shaft import (
     axial_shaft_conductance,
+    fin_span_conductances,
     kept_lengths,
     link_shafts,
     parse_shaft_links,
@@ -86,7 +87,8 @@ def test_conductance_by_hand_and_the_note_check_prints():
     assert link_edge(net).conductance(300.0, 350.0) == pytest.approx(G, rel=1e-14)
     line = [n for n in sim.notes if n.startswith("shaft link")]
     assert line == ["shaft link de.shaft -- nde.shaft: axial conduction along 500 mm of a "
-                    "220 mm solid STEEL_52100 shaft (k = 47 W/(m K)), G = 3.573 W/K"]
+                    "220 mm solid STEEL_52100 shaft (k = 47 W/(m K)), G = 3.573 W/K "
+                    "(span adiabatic)"]
     assert not any("thermally independent" in n for n in sim.notes)
     # a given diameter and material replace the template's: 100 mm of low-carbon steel
     sim = Simulation(scene('{ spacing = "0.4 m", diameter = "100 mm", '
@@ -339,3 +341,73 @@ def test_coupled_run_of_an_unequal_pair_closes_its_books_and_evens_the_shafts():
     free, linked = gaps
     assert free > 0.01
     assert 0.0 < linked < free
+
+
+def test_fin_span_two_port_by_hand_and_its_adiabatic_limit():
+    """k = 47 W/(m K), d = 0.22 m, L = 0.5 m, h = 10 W/(m^2 K): m = sqrt(4 h / (k d)),
+    G_ab = k A m / sinh(m L), G_end = k A m tanh(m L / 2); h -> 0 gives k A / L and 0."""
+    import math
+
+    k, d, L, h = 47.0, 0.22, 0.5, 10.0
+    m = math.sqrt(4 * h / (k * d))
+    assert m * L == pytest.approx(0.9834, rel=1e-3)
+    kam = k * math.pi * d**2 / 4 * m
+    g_ab, g_end = fin_span_conductances(k, d, L, h)
+    assert g_ab == pytest.approx(kam / math.sinh(m * L), rel=1e-14)
+    assert g_end == pytest.approx(kam * math.tanh(m * L / 2), rel=1e-14)
+    g0 = axial_shaft_conductance(k, d, L)
+    assert g_ab / g0 == pytest.approx(m * L / math.sinh(m * L), rel=1e-12)  # 0.85 here
+    assert fin_span_conductances(k, d, L, 0.0) == (g0, 0.0)
+    small = fin_span_conductances(k, d, L, 1e-9)
+    assert small[0] == pytest.approx(g0, rel=1e-9) and small[1] < 1e-9
+
+
+def test_fin_two_port_matches_the_fin_equation_solved_numerically():
+    """The two-port gives the end heats of the fin ODE theta'' = m^2 theta with both end
+    temperatures prescribed (solved here by scipy's BVP solver)."""
+    import math
+
+    import numpy as np
+    from scipy.integrate import solve_bvp
+
+    from thermobearing.network.shaft import fin_span_conductances
+
+    k, d, L, h = 47.0, 0.08, 0.4, 40.0
+    area = math.pi * d**2 / 4
+    m2 = 4 * h / (k * d)
+    th_a, th_b = 30.0, 5.0  # end excess temperatures over the ambient [K]
+    x = np.linspace(0.0, L, 50)
+    sol = solve_bvp(lambda x, y: np.vstack([y[1], m2 * y[0]]),
+                    lambda ya, yb: np.array([ya[0] - th_a, yb[0] - th_b]),
+                    x, np.vstack([np.linspace(th_a, th_b, x.size), np.zeros(x.size)]),
+                    tol=1e-10, max_nodes=100000)
+    assert sol.success
+    q_a = -k * area * sol.sol(0.0)[1]    # heat entering the rod at a [W]
+    q_b = k * area * sol.sol(L)[1]       # heat entering the rod at b [W]
+    g_ab, g_end = fin_span_conductances(k, d, L, h)
+    assert q_a == pytest.approx(g_ab * (th_a - th_b) + g_end * th_a, rel=1e-6)
+    assert q_b == pytest.approx(g_ab * (th_b - th_a) + g_end * th_b, rel=1e-6)
+
+
+def test_a_link_with_h_adds_the_span_loss_to_the_ambient_and_notes_it(tmp_path, capsys):
+    path = tmp_path / "s.toml"
+    path.write_text(plain_text() + 'shaft_link = { spacing = "500 mm", h = "10 W/(m**2*K)" }\n',
+                    encoding="utf-8")
+    assert cli.main(["check", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "fin: h = 10 W/(m^2 K) on the span" in out
+    net = build_network(Simulation(scene('{ spacing = "500 mm", h = "10 W/(m**2*K)" }'),
+                                   progress=False))
+    g_ab, g_end = fin_span_conductances(47.0, 0.22, 0.5, 10.0)
+    assert link_edge(net).conductance(300.0, 300.0) == pytest.approx(g_ab, rel=1e-14)
+    span = [m for a, b, _, m in net.edges() if "ambient" in (a, b)
+            and {a, b} & {"de.shaft", "nde.shaft"}]
+    # each shaft node: its template edge to the ambient plus the span's G_end
+    assert sum(m.conductance(300.0, 300.0) == pytest.approx(g_end, rel=1e-14)
+               for m in span) == 2
+
+
+@pytest.mark.parametrize("h", ['"-1 W/(m**2*K)"', '"10 W/m"'])
+def test_bad_h_is_refused_naming_the_field(h):
+    with pytest.raises(InputError, match=r"network\.shaft_link\.h"):
+        scene(f'{{ spacing = "500 mm", h = {h} }}')
