@@ -203,8 +203,14 @@ def infer_skf_series(envelope: BearingEnvelope) -> str:
         for series in known:
             if digits.startswith(series) and len(digits) - len(series) == 2:
                 return series
-    raise InputError(f"series of {envelope.name or kind}", envelope.name,
-                     f"a designation the series can be read from, or series= one of {known}")
+    read = (f"; {envelope.name!r} reads as series {digits[:-2]!r}, which has no constants "
+            "here" if len(digits) > 2 else "")
+    raise InputError(
+        f"SKF four-term series of {envelope.name or kind}", envelope.name,
+        f"a designation whose series the SKF constants cover for {kind} bearings "
+        f"({', '.join(sorted(known))}){read}: give the series (scene: [models] "
+        "heat_source_options = { global_friction = { series = \"...\" } }) or use "
+        "Palmgren (model = \"palmgren\")")
 
 
 @dataclass(frozen=True)

@@ -199,3 +199,56 @@ def test_skidding_slip_is_measured_from_rolling_at_the_solved_contact_angles():
     assert check.csr_roll is not None
     assert check.slip == pytest.approx(kin.cage_speed_ratio / check.csr_roll - 1.0)
     assert abs(check.slip) < 0.01
+
+
+# --- the catalogue model for a 70-series bearing ------------------------------------------
+_BEARING_TOML = """name = "7014C"
+kind = "angular_contact"
+source = "catalogue envelope 70 x 110 x 20 mm, 15 deg; ball set typical for the size"
+estimate_missing = true
+bore = "70 mm"
+outer_diameter = "110 mm"
+width = "20 mm"
+ball_diameter = "11.112 mm"
+n_balls = 20
+contact_angle = "15 deg"
+"""
+
+
+def _global_scene(tmp_path, options: str):
+    from thermobearing.scene import load_scene
+
+    (tmp_path / "b7014.toml").write_text(_BEARING_TOML, encoding="utf-8")
+    text = (_SCENE.format(extra="").replace('preset = "SKF6304"', 'path = "b7014.toml"')
+            .replace("[outputs]", '[models]\nkinematics = "none"\nheat_sources = '
+                     f'["global_friction"]\n{options}\n[outputs]'))
+    (tmp_path / "scene.toml").write_text(text, encoding="utf-8")
+    return load_scene(tmp_path / "scene.toml")
+
+
+def test_skf_model_for_a_series_without_constants_says_how_to_go_on(tmp_path):
+    """A 7014C (series 70: the SKF constants here cover 72 / 73 / 32 / 33) stopped the
+    run with "series of 7014C = '7014C' is not allowed ... series= one of [...]", naming
+    no place to give the series; the series is now an option of the source."""
+    from thermobearing.global_friction import BearingEnvelope, infer_skf_series
+    from thermobearing.simulation import Simulation
+
+    env = BearingEnvelope("angular_contact", 0.07, 0.11, 0.02, 0.011112, "7014C")
+    with pytest.raises(InputError) as err:
+        infer_skf_series(env)
+    text = str(err.value)
+    assert "reads as series '70'" in text and "72_ACCBM" in text
+    assert "global_friction = { series" in text and 'model = "palmgren"' in text
+    scene = _global_scene(tmp_path, 'heat_source_options = { global_friction = '
+                                    '{ series = "72_ACCBM" } }')
+    loss = Simulation(scene, progress=False).run().tables["losses"]["power [W]"].sum()
+    assert loss > 0.0 and math.isfinite(loss)
+
+
+def test_series_option_is_refused_with_palmgren(tmp_path):
+    from thermobearing.simulation import Simulation
+
+    scene = _global_scene(tmp_path, 'heat_source_options = { global_friction = '
+                                    '{ model = "palmgren", series = "72_ACCBM" } }')
+    with pytest.raises(InputError, match="SKF four-term only"):
+        Simulation(scene, progress=False).run()

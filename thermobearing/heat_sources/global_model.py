@@ -21,7 +21,7 @@ _LOAD_INDEPENDENT = frozenset({"drag", "seal", "M0"})
 @HEAT_SOURCES.register(
     "global_friction",
     references=["harris_kotzalas2007"],
-    parameters={"model": "-", "temperature_role": "-", "role": "-"},
+    parameters={"model": "-", "temperature_role": "-", "role": "-", "series": "-"},
     validity="as the chosen catalogue model (see `thermobearing models global_friction`)",
     summary="Whole-bearing loss from the SKF four-term or Palmgren model (no kinematics).",
 )
@@ -30,7 +30,8 @@ def global_friction_source(ctx: HeatContext) -> HeatResult:
     default ``skf_four_term``), with the kinematic viscosity at the temperature of
     ``temperature_role`` (default ``oil``), booked on ``role`` (default ``oil``); one
     component per term of the model (SKF rolling / sliding / seal / drag, Palmgren M0 / M1)
-    with its load class."""
+    with its load class. ``series``: the SKF series key (``72_ACCBM``, ...; default read
+    from the bearing's designation), for the SKF model only."""
     from ..errors import InputError, UnknownNameError
 
     name = "global_friction"
@@ -43,8 +44,15 @@ def global_friction_source(ctx: HeatContext) -> HeatResult:
         raise UnknownNameError(f"heat source {name!r} option role", role, ROLES)
     op = ctx.operating
     speed = abs(op.inner_speed - op.outer_speed)
+    series = ctx.option(name, "series", None)
+    extra = {}
+    if series is not None:
+        if model != "skf_four_term":
+            raise InputError(f"heat source {name!r} option series", series,
+                             "no series with model = \"palmgren\" (SKF four-term only)")
+        extra["series"] = str(series)
     res = global_friction(model, ctx.bearing, ctx.lubricant, ctx.temperature(t_role), speed,
-                          op.radial_load, op.axial_load, supply=ctx.supply)
+                          op.radial_load, op.axial_load, supply=ctx.supply, **extra)
     power = float(res.power)
     if not power >= 0.0:
         raise InputError(f"heat source {name!r} power", power, "a finite loss >= 0 W")
