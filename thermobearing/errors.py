@@ -42,10 +42,28 @@ class UnknownNameError(InputError, KeyError):
 
     def __init__(self, field: str, value: Any, known: Iterable[str]) -> None:
         self.known = sorted(known)
-        super().__init__(field, value, "known names are: " + ", ".join(self.known))
+        super().__init__(field, value, "known names are: " + ", ".join(self.known)
+                         + _did_you_mean(value, self.known))
 
     def __str__(self) -> str:  # KeyError would otherwise quote the message
         return self.args[0]
+
+
+def _did_you_mean(value: Any, known: list[str]) -> str:
+    """``" (did you mean 'oil_air'?)"`` for a name that differs from a known one only in
+    case, ``-`` / space for ``_``, or by a close spelling; else ``""``."""
+    import difflib
+
+    if not isinstance(value, str) or not known:
+        return ""
+    plain = {k.lower().replace("-", "_").replace(" ", "_"): k for k in known
+             if isinstance(k, str)}
+    key = value.strip().lower().replace("-", "_").replace(" ", "_")
+    squeezed = {k.replace("_", ""): v for k, v in plain.items()}
+    hit = plain.get(key) or squeezed.get(key.replace("_", "")) or next(
+        (plain[k] for k in difflib.get_close_matches(key, list(plain), n=1, cutoff=0.8)),
+        None)
+    return f" (did you mean {hit!r}?)" if hit and hit != value else ""
 
 
 class ConvergenceError(ThermobearingError, RuntimeError):

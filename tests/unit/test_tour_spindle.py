@@ -252,3 +252,23 @@ def test_series_option_is_refused_with_palmgren(tmp_path):
                                     '{ model = "palmgren", series = "72_ACCBM" } }')
     with pytest.raises(InputError, match="SKF four-term only"):
         Simulation(scene, progress=False).run()
+
+
+# --- a misspelt name ----------------------------------------------------------------------
+@pytest.mark.parametrize("typed, meant", [("oil-air", "oil_air"), ("Oil_Air", "oil_air"),
+                                          ("oilair", "oil_air"), ("circulating", "circulation")])
+def test_misspelt_supply_method_gets_the_nearest_name(typed, meant):
+    from thermobearing.scene import loads_scene
+
+    text = _SCENE.format(extra="").replace('method = "oil_air"', f'method = "{typed}"')
+    with pytest.raises(InputError) as err:
+        loads_scene(text)
+    assert "supply.method" in str(err.value)
+    assert str(err.value).endswith(f"(did you mean '{meant}'?)")
+
+
+def test_an_unrelated_name_gets_no_guess():
+    from thermobearing.errors import UnknownNameError
+
+    text = str(UnknownNameError("supply.method", "oil mist", ["jet", "oil_air", "oil_bath"]))
+    assert text.endswith("known names are: jet, oil_air, oil_bath")
