@@ -9,6 +9,13 @@ Registry ``kinematics`` (scenes choose with ``[models] kinematics = "..."``):
     the skidding / over-skidding solver (``skidding.solve``): cage and element speeds
     from the traction / drag balance, warm-started from the previous operating point.
 
+The contact temperature the kinematics are solved at (:func:`contact_temperature`) is the
+inlet oil temperature of the raceway contacts: the mean of the two contacts' inlet
+temperatures, each the mean of the element node and that contact's ring node, the same
+convention as the heat sources (``heat_sources.raceway``). The solvers take one temperature
+for both raceways (the roller model builds one viscosity and one pressure-viscosity
+coefficient per solve, the ball solver one traction law).
+
 A schedule step with both rings at rest (a stop in a rig protocol, when the bearing cools)
 needs no solver: every registered model returns :func:`standstill` there.
 
@@ -59,6 +66,33 @@ class KinematicsResult:
     def over_skid(self) -> float:
         """CSR / CSR_th - 1 [-] (positive: over-skidding, negative: skidding)."""
         return self.cage_speed_ratio / self.theoretical_cage_speed_ratio - 1.0
+
+
+def contact_temperature(temperatures: Mapping[str, float]) -> float:
+    """Temperature [K] of the oil entering the raceway contacts, at which the kinematics are
+    solved and their re-solve test reads the viscosity.
+
+    T_c = (T_inner_ring + T_outer_ring + 2 T_elements) / 4, the mean of the two contacts'
+    inlet temperatures (T_elements + T_ring) / 2: the oil entering a contact lies between
+    the two surfaces that drag it in, the element and its ring, so it takes the mean of
+    their node temperatures -- the convention of the heat sources
+    (``heat_sources.raceway._contact_temperature``), so that kinematics and heat see the
+    same oil. The rings alone would leave a hot element out: on a fast run-up the rollers
+    heat within seconds while the rings lag, and the contact oil would stay as viscous as
+    the rings' while the element node runs away.
+
+    ``temperatures``: node temperatures [K] by role (``"inner_ring"``, ``"outer_ring"``,
+    ``"elements"``, others ignored).
+    """
+    missing = [r for r in ("inner_ring", "outer_ring", "elements") if r not in temperatures]
+    if missing:
+        from .errors import InputError
+
+        raise InputError("temperatures", sorted(temperatures),
+                         "a temperature for every contact role (inner_ring, outer_ring, "
+                         f"elements); missing: {', '.join(missing)}")
+    return 0.25 * (float(temperatures["inner_ring"]) + float(temperatures["outer_ring"])
+                   + 2.0 * float(temperatures["elements"]))
 
 
 def default_traction(bearing: Any, lubricant: Any, temperature: float, params: Any = None

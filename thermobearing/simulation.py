@@ -26,8 +26,13 @@ J and H are recomputed at each load step and after each kinematics re-solve, and
 (skidding solver) are re-solved at a step change and whenever the oil viscosity at the
 contact temperature has moved by more than ``solver.kinematics_tolerance`` (relative)
 since the last solve: the losses scale with a power < 1 of the viscosity, so this bounds
-their change. Steady mode (``mode = "steady"``): for each step the coupled fixed point
-of network and heat sources by Newton (the same quadratic heat with its Jacobian), with the
+their change. The contact temperature (the one the kinematics are solved at and the
+re-solve test reads) is the inlet oil temperature of the raceway contacts,
+(T_inner_ring + T_outer_ring + 2 T_elements) / 4
+(:func:`~thermobearing.kinematic_models.contact_temperature`): each contact's inlet oil lies
+between the element and its ring, as the heat sources take it. Steady mode
+(``mode = "steady"``): for each step the coupled fixed point of network and heat sources by
+Newton (the same quadratic heat with its Jacobian), with the
 kinematics re-solved until the temperatures stop moving.
 
 The parts it wires live beside it: :mod:`thermobearing.simulation_chain` (the chain plan,
@@ -57,7 +62,7 @@ from .errors import (
     UnknownNameError,
     ValidityWarning,
 )
-from .kinematic_models import KINEMATICS, KinematicsResult
+from .kinematic_models import KINEMATICS, KinematicsResult, contact_temperature
 from .operating_checks import (
     CheckLimits,
     CheckLog,
@@ -232,8 +237,14 @@ class Simulation:
 
     def solve_kinematics(self, b: _Bearing, step_index: int, step: Step,
                     temps: Mapping[str, float]) -> KinematicsResult:
-        """Solve (or reuse) the kinematics of one bearing at the current temperatures."""
-        t_contact = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
+        """Solve (or reuse) the kinematics of one bearing at the current temperatures.
+
+        They are solved at the contacts' inlet oil temperature
+        (:func:`kinematic_models.contact_temperature`: (T_inner_ring + T_outer_ring +
+        2 T_elements) / 4 [K], the heat sources' convention), and re-solved when the
+        viscosity at that same temperature has moved by more than
+        ``solver.kinematics_tolerance`` (relative) since the last solve."""
+        t_contact = contact_temperature(temps)
         visc = float(self.lubricant.dynamic_viscosity(t_contact))
         tol = self.scene.solver.kinematics_tolerance
         if (b.last is not None and b.last_step == step_index

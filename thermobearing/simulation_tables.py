@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from .kinematic_models import KinematicsResult
+from .kinematic_models import KinematicsResult, contact_temperature
 from .operating_checks import check_state, composite_roughness
 from .scene import Step
 from .simulation_bearings import _Bearing
@@ -63,12 +63,14 @@ def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
 def film_table(b: _Bearing, lubricant: Any, step: Step,
                temps: Mapping[str, float]) -> tuple[list[dict[str, Any]], float]:
     """Contact and film of the most loaded element per raceway (film-only scenes): race
-    control. Returns the rows and the state's cage speed ratio [-]."""
+    control at the contacts' inlet oil temperature
+    (:func:`~thermobearing.kinematic_models.contact_temperature`, as the kinematics of a
+    run). Returns the rows and the state's cage speed ratio [-]."""
     from .state import race_control_state
 
     op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
                         axial_load=step.axial_load)
-    t_c = 0.5 * (temps["inner_ring"] + temps["outer_ring"])
+    t_c = contact_temperature(temps)
     state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
     rows = []
     numerical = _numerical_film_of(b, lubricant)
