@@ -272,3 +272,22 @@ def test_an_unrelated_name_gets_no_guess():
 
     text = str(UnknownNameError("supply.method", "oil mist", ["jet", "oil_air", "oil_bath"]))
     assert text.endswith("known names are: jet, oil_air, oil_bath")
+
+
+# --- the example files ----------------------------------------------------------------------
+def test_spindle_example_loads_with_its_estimates_and_units():
+    from pathlib import Path
+
+    from thermobearing.scene import load_scene
+    from thermobearing.simulation import Simulation
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "spindle_pair_oil_air.toml"
+    scene = load_scene(path)
+    assert [b.name for b in scene.bearings] == ["front", "rear"]
+    assert scene.supply.method == "oil_air"
+    assert scene.supply.flow == pytest.approx(30e-9 / 3600)
+    assert [s.speed * 30 / math.pi for s in scene.schedule.steps] == pytest.approx(
+        [4000, 8000, 12000, 16000])
+    assert scene.to_dict()["schedule"]["steps"][0]["axial_load"] == "500 N"
+    estimated = Simulation(scene, progress=False).estimated_inputs()
+    assert "pitch_diameter" in estimated["bearing front (7014C)"]
