@@ -291,3 +291,23 @@ def test_spindle_example_loads_with_its_estimates_and_units():
     assert scene.to_dict()["schedule"]["steps"][0]["axial_load"] == "500 N"
     estimated = Simulation(scene, progress=False).estimated_inputs()
     assert "pitch_diameter" in estimated["bearing front (7014C)"]
+
+
+# --- the sweep's terminal output --------------------------------------------------------
+def test_sweep_terminal_names_cases_the_checks_flag():
+    """A preload typed in the wrong unit (300 kN on a 7014) put every case over the ISO 76
+    stress; only summary.csv's count said so, the terminal table showed the losses."""
+    import pandas as pd
+
+    from thermobearing.commands.sweep import flagged_notes
+
+    df = pd.DataFrame({"case": ["a", "b", "c"],
+                       "schedule.axial_load": ["300 N", "300 kN", "800 kN"],
+                       "steps over skid limit [-]": [0.0, 0.0, 0.0],
+                       "steps over stress limit [-]": [0.0, 6.0, 6.0]})
+    lines = flagged_notes(df, ["schedule.axial_load"])
+    assert lines == [
+        "note: 2 of 3 cases have steps with contact pressure above the stress limit (ISO 76 "
+        "static-rating stress unless [checks] sets another) (summary.csv column 'steps over "
+        "stress limit [-]'; first: case b, schedule.axial_load = 300 kN)"]
+    assert flagged_notes(df.iloc[:1], ["schedule.axial_load"]) == []

@@ -86,11 +86,42 @@ def run(args: argparse.Namespace) -> int:
     print(df[shown].to_string(index=False, float_format=lambda v: f"{v:.4g}"))
     more = f" ({hidden} more result columns there)" if hidden else ""
     print(f"summary written to {out / 'summary.csv'}{more}")
+    for line in flagged_notes(df, [p.path for p in params]):
+        print(line, file=sys.stderr)
     swept = {p.path for p in params}
     if not warned and all(c == "case" or c in swept
                           or any(c.startswith(p + " [") for p in swept) for c in df.columns):
         print(f"note: the cases gave no results to tabulate: {empty_note}", file=sys.stderr)
     return 0
+
+
+#: the run checks' counts of the summary and what each flags
+_FLAG_COLUMNS = {
+    "steps over skid limit [-]": "cage skidding beyond the skid limit",
+    "steps over stress limit [-]": "contact pressure above the stress limit (ISO 76 "
+                                   "static-rating stress unless [checks] sets another)",
+    "steps under film limit [-]": "film parameter Lambda below its limit",
+}
+
+
+def flagged_notes(df, swept: list[str]) -> list[str]:
+    """One note per validity check that flags steps in some case (the summary's ``steps
+    over ... limit`` counts, which the terminal table does not show): how many cases, and
+    the swept values of the first one (a load typed in the wrong unit shows here)."""
+    lines = []
+    for col, what in _FLAG_COLUMNS.items():
+        if col not in df.columns:
+            continue
+        counts = pd.to_numeric(df[col], errors="coerce").fillna(0.0)
+        bad = df[counts > 0]
+        if bad.empty:
+            continue
+        first = bad.iloc[0]
+        values = ", ".join(f"{p} = {first[p]}" for p in swept if p in df.columns)
+        lines.append(f"note: {len(bad)} of {len(df)} cases have steps with {what} "
+                     f"(summary.csv column {col!r}; first: case {first['case']}"
+                     + (f", {values}" if values else "") + ")")
+    return lines
 
 
 #: results shown on the terminal when the runner gives them (summary.csv has all)
