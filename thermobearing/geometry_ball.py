@@ -127,6 +127,12 @@ class BallBearing(_ThermalClearance):
                         low_inclusive=False)
         check_range("bearing.contact_angle", self.contact_angle, 0.0, math.pi / 2,
                     high_inclusive=False, unit="rad")
+        if self.diametral_clearance < 0.0:  # the usual way to write a preload, not modelled
+            raise InputError("bearing.diametral_clearance", self.diametral_clearance,
+                             "a value >= 0 [m]: a negative clearance (preload by "
+                             "interference) is not modelled; give the preload as the "
+                             "schedule's axial load (the load each bearing of a preloaded "
+                             "pair carries)")
         check_positive("bearing.diametral_clearance", self.diametral_clearance, allow_zero=True)
         _check_roughness(self)
         if self.kind == "four_point":

@@ -311,3 +311,14 @@ def test_sweep_terminal_names_cases_the_checks_flag():
         "static-rating stress unless [checks] sets another) (summary.csv column 'steps over "
         "stress limit [-]'; first: case b, schedule.axial_load = 300 kN)"]
     assert flagged_notes(df.iloc[:1], ["schedule.axial_load"]) == []
+
+
+# --- a preload written as a negative clearance ------------------------------------------
+def test_negative_clearance_points_to_the_axial_load():
+    from thermobearing.bearing_config import bearing_from_dict
+
+    with pytest.raises(InputError) as err:
+        bearing_from_dict({**_SPINDLE_BEARING, "diametral_clearance": "-0.01 mm"})
+    text = str(err.value)
+    assert "bearing.diametral_clearance" in text and "-1e-05" in text
+    assert "preload" in text and "axial load" in text
