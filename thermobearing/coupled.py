@@ -231,6 +231,26 @@ class Coupler:
         for b in self.sim.bearings:
             self.sim.solve_kinematics(b, step_index, step, self.role_temperatures(b, T))
 
+    def viscosity_drift(self, T: np.ndarray) -> float:
+        """Largest relative change, over the bearings, of the contact viscosity between the
+        kinematic state in use and the temperatures ``T`` [-]: |eta(T_c(T)) / eta_kin - 1|,
+        T_c the kinematics' contact temperature (``kinematic_models.contact_temperature``)
+        and eta_kin the viscosity the state was solved at. Bearings whose heat does not hang
+        on a held kinematic state are left out: at rest (no contact heat) or with the global
+        friction model (kinematics "none": its viscosity follows the nodes)."""
+        from .kinematic_models import contact_temperature
+
+        worst = 0.0
+        for b in self.sim.bearings:
+            if (b.last is None or not math.isfinite(b.last_viscosity)
+                    or b.kinematics_name == "none"
+                    or getattr(b.last.state, "origin", "") == "standstill"):
+                continue
+            eta = float(self.sim.lubricant.dynamic_viscosity(
+                contact_temperature(self.role_temperatures(b, T))))
+            worst = max(worst, abs(eta / b.last_viscosity - 1.0))
+        return worst
+
     def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray
                       ) -> tuple[np.ndarray, frozenset[str]]:
         self.bearing_evaluations += 1
@@ -296,6 +316,9 @@ def _sample_times(t: float, h: float, interval: float | None) -> np.ndarray | No
     times = times[(times > t + tol) & (times < t + h - tol)]
     return times if times.size else None
 
+
+#: shortest coupling chunk [s] the viscosity-drift control halves down to
+MIN_CHUNK = 0.1
 
 #: node temperature [K] above which a run is stopped as a thermal runaway (300 degC: beyond
 #: the service range of bearing steels and lubricants)
@@ -369,6 +392,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     audits: list[EnergyAudit] = []
     cum = dict.fromkeys(("generated", "stored", "to_boundaries", "to_streams"), 0.0)
     relinearizations = 0
+    rejected_chunks = 0
     fallback_used = False
     lin: _Linear | None = None
     last_kin: tuple[int, ...] = ()
@@ -378,25 +402,33 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     try:
         for i, step in enumerate(steps):
             n_chunks = max(1, math.ceil(step.duration / chunk - 1e-9))
-            h = step.duration / n_chunks
-            for k in range(n_chunks):
-                coupler.kinematics(i, step, T)
-                if k == 0:
-                    for b in sim.bearings:
-                        row = {**step_columns(i, t, b.name, step),
-                               **kinematics_columns(b.last, b.bearing)}
-                        kin_rows.append(row)
-                        if writer:
-                            writer.append("kinematics", [row])
-                kin_id = tuple(id(b.last) for b in sim.bearings)
-                if lin is None or k == 0 or kin_id != last_kin:
-                    lin = coupler.linearize(step, T)
-                    relinearizations += 1
-                else:
-                    # same kinematic state: fresh heat at T, the last model's Jacobian
-                    # and curvature re-centred at T (they change only slowly)
-                    lin = lin.moved(coupler.heat(step, T), T)
-                last_kin = kin_id
+            h_nominal = step.duration / n_chunks
+            t_end = t + step.duration
+            h_try = h_nominal
+            k = 0
+            retry = False
+            while t_end - t > 1e-9 * h_nominal:
+                # the last chunk of the step ends on the step's end (no sliver left)
+                h = h_try if t_end - t - h_try > 1e-6 * h_nominal else t_end - t
+                if not retry:
+                    coupler.kinematics(i, step, T)
+                    if k == 0:
+                        for b in sim.bearings:
+                            row = {**step_columns(i, t, b.name, step),
+                                   **kinematics_columns(b.last, b.bearing)}
+                            kin_rows.append(row)
+                            if writer:
+                                writer.append("kinematics", [row])
+                    kin_id = tuple(id(b.last) for b in sim.bearings)
+                    if lin is None or k == 0 or kin_id != last_kin:
+                        lin = coupler.linearize(step, T)
+                        relinearizations += 1
+                    else:
+                        # same kinematic state: fresh heat at T, the last model's Jacobian
+                        # and curvature re-centred at T (they change only slowly)
+                        lin = lin.moved(coupler.heat(step, T), T)
+                    last_kin = kin_id
+                retry = False
                 samples = _sample_times(t, h, interval)
                 try:
                     out = stepper.advance(t, T, h, lin.heat, heat_time_dependent=False,
@@ -416,6 +448,26 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     out = stepper.advance(t, T, h, lin.heat, heat_time_dependent=False,
                                           heat_with_jacobian=lin.heat_and_jac,
                                           sample_times=samples)
+                drift = coupler.viscosity_drift(out.temperatures)
+                if drift > solver.chunk_viscosity_limit and h > MIN_CHUNK * (1.0 + 1e-9) \
+                        and np.all(np.isfinite(out.temperatures)):
+                    # the temperatures left the held kinematic state's viscosity by more
+                    # than the limit within the chunk: repeat it shorter (the kinematics
+                    # are re-solved at the new chunk ends as the tolerance asks)
+                    h_try = max(0.5 * h, MIN_CHUNK)
+                    rejected_chunks += 1
+                    retry = True
+                    continue
+                if drift > solver.chunk_viscosity_limit:
+                    note = (f"coupling chunks at their {MIN_CHUNK:g} s minimum still change "
+                            "the contact viscosity by more than "
+                            f"{solver.chunk_viscosity_limit:.0%} (step {i}, t = {t:.1f} s: "
+                            f"{drift:.0%}); the kinematic state lags the temperatures there")
+                    if not any(w.startswith("coupling chunks at their") for w in sim.warnings):
+                        sim.warnings.append(note)
+                k += 1
+                if h_try < h_nominal:
+                    h_try = min(h_nominal, 2.0 * h_try)
                 audits.append(out.audit)
                 if out.samples is not None:
                     rows_in = [_temperature_row(ts, names, Ts)
@@ -452,6 +504,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
         bar.close()
     audit = EnergyAudit.concatenate(audits)
     stats = {"steps": len(steps), "linearizations": relinearizations,
+             "rejected_chunks": rejected_chunks,
              "heat_evaluations": coupler.bearing_evaluations // max(1, len(sim.bearings)),
              "relative_energy_imbalance": audit.relative_imbalance(),
              **{f"stepper_{k}": v for k, v in stepper.stats.items()}}

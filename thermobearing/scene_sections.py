@@ -251,6 +251,14 @@ class Solver:
     reference of the same chain, the same CPU time; BM-E2E). TR-BDF2, second order, pays
     more for them: 756 instead of 145 steps on the default scene, +37 % CPU; on a large
     network where its steps dominate, rtol 1e-4 / atol 1e-3 K keep the old cost.
+
+    ``chunk`` [s]: the coupling interval (kinematic state and heat model held);
+    ``kinematics_tolerance``: relative change of the contact viscosity that re-solves the
+    kinematics at a chunk start; ``chunk_viscosity_limit``: the largest relative change of
+    that viscosity within one chunk -- a chunk that exceeds it is repeated at half the length
+    (down to ``MIN_CHUNK`` = 0.1 s), so a cold start straight to a high speed, where the
+    elements heat by tens of kelvin per second, does not run on a kinematic state the
+    temperatures left long ago (:func:`thermobearing.coupled._run_transient`).
     """
 
     stepper: str = "exprb43"
@@ -259,6 +267,7 @@ class Solver:
     kinematics_tolerance: float = 0.03
     max_step: float = 600.0
     chunk: float = 90.0
+    chunk_viscosity_limit: float = 0.25
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Solver:
@@ -271,7 +280,8 @@ class Solver:
             kw["stepper"] = data["stepper"]
         limits = {"rtol": ("a relative tolerance in (0, 1)", 1.0),
                   "atol": ("an absolute tolerance > 0 (K)", math.inf),
-                  "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0)}
+                  "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0),
+                  "chunk_viscosity_limit": ("a relative viscosity change > 0", math.inf)}
         for key, (allowed, high) in limits.items():
             if key in data:
                 raw = data[key]
@@ -291,6 +301,7 @@ class Solver:
     def to_dict(self) -> dict[str, Any]:
         return {"stepper": self.stepper, "rtol": self.rtol, "atol": self.atol,
                 "kinematics_tolerance": self.kinematics_tolerance,
+                "chunk_viscosity_limit": self.chunk_viscosity_limit,
                 "max_step": _fmt(self.max_step, "s"), "chunk": _fmt(self.chunk, "s")}
 
 
