@@ -60,7 +60,8 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
 
 
 def _supply_notes(scene: Scene) -> list[str]:
-    """What the scene sets that its oil supply does not use (said, not refused). An oil
+    """What the scene sets that its oil supply does not use (said, not refused), and what an
+    oil-air supply leaves out (its carrier air). An oil
     bath's inlet temperature defaults to the ambient one: only another value was set by the
     user and is worth a note (not every oil-bath run, as a warning). A level set for another
     method (a jet switched from an oil bath) is not used either."""
@@ -71,6 +72,11 @@ def _supply_notes(scene: Scene) -> list[str]:
         notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
                      "not used: an oil bath without flow has no inlet; the bath temperature "
                      "is the network's oil node")
+    if sup.method == "oil_air":
+        notes.append("supply oil_air: the churning sources take the oil fraction of Parker's "
+                     "jet correlation at the oil flow alone; the carrier air's flow, its "
+                     "cooling and its drag are not modelled (the network's oil stream carries "
+                     "the oil's heat only)")
     if sup.method != "oil_bath" and sup.level is not None:
         notes.append(f"supply.level ({sup.level * 1e3:g} mm) is not used by the "
                      f"{sup.method} supply: only an oil bath (supply.method = \"oil_bath\") "

@@ -322,3 +322,14 @@ def test_negative_clearance_points_to_the_axial_load():
     text = str(err.value)
     assert "bearing.diametral_clearance" in text and "-1e-05" in text
     assert "preload" in text and "axial load" in text
+
+
+# --- what an oil-air supply leaves out ----------------------------------------------------
+def test_oil_air_scene_says_the_carrier_air_is_not_modelled():
+    from thermobearing.simulation_bearings import _supply_notes
+
+    notes = _supply_notes(_spindle_scene())
+    assert any(n.startswith("supply oil_air:") and "carrier air" in n for n in notes), notes
+    jet = _spindle_scene(flow='"2 L/min"')
+    jet = type(jet).from_dict({**jet.to_dict(), "supply": {"method": "jet", "flow": "2 L/min"}})
+    assert not any("carrier air" in n for n in _supply_notes(jet))
