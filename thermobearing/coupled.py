@@ -97,7 +97,8 @@ def build_network(sim: Simulation) -> Any:
 def _link_shafts(sim: Simulation, net: Any, template: str, shafts: Any,
                  params: Mapping[str, Any]) -> None:
     """The scene's shaft links on ``net`` (``shafts``: the ``shaft_link`` value or None) and
-    their notes (each link; bearings left thermally independent) on ``sim.notes``."""
+    their notes (each link; bearings left thermally independent) on ``sim.notes`` and
+    ``sim.warnings`` (the run's report lists them with the scene's other notes)."""
     from .errors import InputError
     from .network.shaft import independence_note, link_shafts, parse_shaft_links
     from .network.templates import shaft_segment
@@ -115,9 +116,11 @@ def _link_shafts(sim: Simulation, net: Any, template: str, shafts: Any,
     alone = independence_note(names, links)
     if alone:
         notes.append(alone)
-    held = getattr(sim, "notes", None)
-    if held is not None:
-        held.extend(n for n in notes if n not in held)
+    # the run's notes and, like the scene's other notes, its report (Results.warnings)
+    for attr in ("notes", "warnings"):
+        held = getattr(sim, attr, None)
+        if held is not None:
+            held.extend(n for n in notes if n not in held)
 
 
 @dataclass

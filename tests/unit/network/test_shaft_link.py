@@ -411,3 +411,12 @@ def test_a_link_with_h_adds_the_span_loss_to_the_ambient_and_notes_it(tmp_path, 
 def test_bad_h_is_refused_naming_the_field(h):
     with pytest.raises(InputError, match=r"network\.shaft_link\.h"):
         scene(f'{{ spacing = "500 mm", h = {h} }}')
+
+
+def test_link_notes_reach_the_run_report():
+    """The notes build_network adds (each link's G) are in the run's Results.warnings, the
+    list the report prints with the scene's other notes."""
+    res = Simulation(scene('{ spacing = "500 mm" }', duration="1 min"), progress=False).run()
+    assert any(w.startswith("shaft link de.shaft -- nde.shaft") for w in res.warnings)
+    res = Simulation(scene(duration="1 min"), progress=False).run()
+    assert any("thermally independent" in w for w in res.warnings)
