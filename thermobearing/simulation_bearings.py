@@ -72,7 +72,8 @@ def _supply_notes(scene: Scene) -> list[str]:
         notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
                      "not used: an oil bath without flow has no inlet; the bath temperature "
                      "is the network's oil node")
-    if sup.method == "oil_air":
+    if sup.method == "oil_air" and set(scene.outputs.want) & {"losses", "temperatures",
+                                                               "energy"}:
         notes.append("supply oil_air: the churning sources take the oil fraction of Parker's "
                      "jet correlation at the oil flow alone; the carrier air's flow, its "
                      "cooling and its drag are not modelled (the network's oil stream carries "

@@ -333,3 +333,6 @@ def test_oil_air_scene_says_the_carrier_air_is_not_modelled():
     jet = _spindle_scene(flow='"2 L/min"')
     jet = type(jet).from_dict({**jet.to_dict(), "supply": {"method": "jet", "flow": "2 L/min"}})
     assert not any("carrier air" in n for n in _supply_notes(jet))
+    film_only = type(jet).from_dict({**_spindle_scene().to_dict(),
+                                     "outputs": {"mode": "steady", "want": ["film"]}})
+    assert not any("carrier air" in n for n in _supply_notes(film_only))  # no heat source
