@@ -58,6 +58,9 @@ SI_UNITS: dict[str, str] = {
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 #: a number written with a decimal comma ("0,5 kN")
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+")
+#: a number written in digit groups ("16 000 rpm", "16,000 rpm")
+_DIGIT_GROUPS = re.compile(r"^\s*([-+]?)([1-9]\d{0,2})((?:([ ,\u00a0\u202f])\d{3})+)(?![\d,])"
+                           r"(?:\.\d+)?\s*(.*?)\s*$")
 #: revolutions per minute / second as ISO 80000 and catalogues write them ("r/min",
 #: "rev/min"), which pint does not read
 _REV_PER = re.compile(r"(?<![A-Za-z_])(?:r|rev)\s*/\s*(min|s)(?![A-Za-z_])")
@@ -129,10 +132,7 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if match is None:
         raise InputError(field, value, f"'<number> <unit>' convertible to {target}")
     number, unit_text = match.groups()
-    if _DECIMAL_COMMA.match(value):
-        raise InputError(field, value, f"a number with a decimal point, not a comma "
-                         f"('{value.strip().replace(',', '.', 1)}'), in a unit convertible "
-                         f"to {target}")
+    _refuse_separators(value, field, target)
     unit_text = _usual_spellings(unit_text)
     if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
         unit_text = "delta_degC"
@@ -152,6 +152,27 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if target == "K" and out <= 0.0:
         raise InputError(field, value, "a temperature above absolute zero (> 0 K, > -273.15 degC)")
     return float(out)
+
+
+def _refuse_separators(value: str, field: str, target: str) -> None:
+    """A number in digit groups or with a decimal comma, refused with the reading(s) it
+    may have meant: ``"16 000 rpm"`` -> ``'16000 rpm'``; ``"16,000 rpm"`` -> ``'16000 rpm'``
+    or ``'16.000 rpm'``; ``"0,5 kN"`` -> ``'0.5 kN'``."""
+    groups = _DIGIT_GROUPS.match(value)
+    if groups is not None:
+        sign, head, rest, sep, unit = groups.groups()
+        joined = f"{sign}{head}{re.sub(r'[^0-9]', '', rest)}"
+        whole = value.strip()
+        if sep != "," or rest.count(",") > 1:
+            raise InputError(field, value, f"a number without digit-group separators "
+                             f"('{joined} {unit}'), in a unit convertible to {target}")
+        raise InputError(field, value, f"an unambiguous number: '{joined} {unit}' (a "
+                         f"thousands separator) or '{whole.replace(',', '.', 1)}' (a "
+                         f"decimal comma), in a unit convertible to {target}")
+    if _DECIMAL_COMMA.match(value):
+        raise InputError(field, value, f"a number with a decimal point, not a comma "
+                         f"('{value.strip().replace(',', '.', 1)}'), in a unit convertible "
+                         f"to {target}")
 
 
 def _usual_spellings(unit_text: str) -> str:

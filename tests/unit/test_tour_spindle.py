@@ -31,6 +31,19 @@ def test_usual_spellings_leave_pint_spellings_alone():
     assert to_si("2 min", "s") == 120.0
 
 
+@pytest.mark.parametrize("text, allowed", [
+    ("16 000 rpm", "a number without digit-group separators ('16000 rpm')"),
+    ("1,200,000 N", "a number without digit-group separators ('1200000 N')"),
+    ("16,000 rpm", "an unambiguous number: '16000 rpm' (a thousands separator) or "
+                   "'16.000 rpm' (a decimal comma)"),
+])
+def test_digit_groups_are_named_with_the_readings(text, allowed):
+    """"16 000 rpm" was refused as "a known unit convertible to rad/s" (the unit is fine)."""
+    with pytest.raises(InputError) as err:
+        to_si(text, "rad/s" if "rpm" in text else "N", field="schedule.speed")
+    assert err.value.allowed.startswith(allowed)
+
+
 def test_decimal_comma_is_named_with_the_corrected_value():
     with pytest.raises(InputError) as err:
         to_si("0,5 kN", "N", field="schedule.axial_load")
