@@ -141,8 +141,11 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     try:
         out = _convert(float(number), unit_text or "dimensionless", target)
     except pint.errors.DimensionalityError:
+        hint = ""
+        if target in ("K", "delta_degC") and unit_text in ("C", "F"):  # coulomb, farad
+            hint = f" (degrees Celsius / Fahrenheit are deg{unit_text} or \u00b0{unit_text})"
         raise InputError(
-            field, value, f"a quantity with units convertible to {target}"
+            field, value, f"a quantity with units convertible to {target}{hint}"
         ) from None
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, AssertionError):

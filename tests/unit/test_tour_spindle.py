@@ -44,6 +44,13 @@ def test_digit_groups_are_named_with_the_readings(text, allowed):
     assert err.value.allowed.startswith(allowed)
 
 
+def test_a_temperature_in_coulomb_gets_the_celsius_spelling():
+    with pytest.raises(InputError) as err:
+        to_si("22 C", "temperature", field="environment.ambient_temperature")
+    assert "degC" in str(err.value) and "environment.ambient_temperature" in str(err.value)
+    assert to_si("22 \u00b0C", "temperature") == pytest.approx(295.15)
+
+
 def test_decimal_comma_is_named_with_the_corrected_value():
     with pytest.raises(InputError) as err:
         to_si("0,5 kN", "N", field="schedule.axial_load")
