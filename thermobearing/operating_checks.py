@@ -410,18 +410,20 @@ class CheckLog:
                         lambda c: abs(c.csr / c.csr_th - 1.0))
         if flagged:
             where, i, c = flagged
-            angles = ("" if c.contact_angles is None else
-                      f" (inner {math.degrees(c.contact_angles[0]):.1f} deg, outer "
-                      f"{math.degrees(c.contact_angles[1]):.1f} deg)")
+            angles, why = "", ""
+            if c.contact_angles is not None:
+                inner, outer = (math.degrees(a) for a in c.contact_angles)
+                angles = f" (inner {inner:.1f} deg, outer {outer:.1f} deg)"
+                if inner - outer > 1.0:
+                    why = ("; the balls' centrifugal force turns the outer contact angle "
+                           f"{inner - outer:.1f} deg below the inner one")
             lines.append(
                 f"{self.bearing}: cage speed ratio more than {skid_text} from CSR_th "
                 f"{where}; largest {100 * (c.csr / c.csr_th - 1.0):+.1f} % at step {i} (the "
                 f"kinematics table's over-skidding [%]), without gross sliding: rolling "
-                f"at that step's contact "
-                f"angles{angles} gives a cage speed ratio of {c.csr_roll:.4f} and the cage "
-                f"runs {100 * c.slip:+.1f} % from it (CSR_th is paper 002's ratio at the "
-                f"zero-speed contact angles; at high speed the balls' centrifugal force "
-                f"turns the outer angle down)")
+                f"at that step's contact angles{angles} gives a cage speed ratio of "
+                f"{c.csr_roll:.4f} and the cage runs {100 * c.slip:+.1f} % from it (CSR_th "
+                f"is paper 002's ratio at the zero-speed contact angles{why})")
         stress = {i: max(c, key=lambda c: c.max_pressure) for i, c in self.steps.items()}
         flagged = _flag(stress, lambda c: c.max_pressure > c.stress_limit,
                         lambda c: c.max_pressure)
