@@ -61,10 +61,10 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
 
 def _supply_notes(scene: Scene) -> list[str]:
     """What the scene sets that its oil supply does not use (said, not refused), and what an
-    oil-air supply leaves out (its carrier air). An oil
-    bath's inlet temperature defaults to the ambient one: only another value was set by the
-    user and is worth a note (not every oil-bath run, as a warning). A level set for another
-    method (a jet switched from an oil bath) is not used either."""
+    oil-air supply (its carrier air) and a grease supply (the grease's churning) leave out.
+    An oil bath's inlet temperature defaults to the ambient one: only another value was set
+    by the user and is worth a note (not every oil-bath run, as a warning). A level set for
+    another method (a jet switched from an oil bath) is not used either."""
     sup = scene.supply
     notes = []
     if (sup.method == "oil_bath" and sup.flow == 0.0
@@ -72,8 +72,12 @@ def _supply_notes(scene: Scene) -> list[str]:
         notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
                      "not used: an oil bath without flow has no inlet; the bath temperature "
                      "is the network's oil node")
-    if sup.method == "oil_air" and set(scene.outputs.want) & {"losses", "temperatures",
-                                                               "energy"}:
+    heat = bool(set(scene.outputs.want) & {"losses", "temperatures", "energy"})
+    if sup.method == "grease" and heat:
+        notes.append("supply grease: the churning of grease is not modelled (oil fraction "
+                     "0: the churning sources book 0 W); the lubricant is read as the "
+                     "grease's base oil for the films and the traction")
+    if sup.method == "oil_air" and heat:
         notes.append("supply oil_air: the churning sources take the oil fraction of Parker's "
                      "jet correlation at the oil flow alone; the carrier air's flow, its "
                      "cooling and its drag are not modelled (the network's oil stream carries "

@@ -356,3 +356,15 @@ def test_oil_air_scene_says_the_carrier_air_is_not_modelled():
     film_only = type(jet).from_dict({**_spindle_scene().to_dict(),
                                      "outputs": {"mode": "steady", "want": ["film"]}})
     assert not any("carrier air" in n for n in _supply_notes(film_only))  # no heat source
+
+
+def test_grease_scene_says_its_churning_is_not_modelled():
+    """The skidding chain sets the grease's oil fraction to 0 itself, so the churning
+    source's own warning never ran: a grease-lubricated spindle booked 0 W of churning
+    without a word."""
+    from thermobearing.simulation_bearings import _supply_notes
+
+    base = _spindle_scene()
+    grease = type(base).from_dict({**base.to_dict(), "supply": {"method": "grease"}})
+    notes = _supply_notes(grease)
+    assert any(n.startswith("supply grease:") and "not modelled" in n for n in notes), notes
