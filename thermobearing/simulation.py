@@ -98,6 +98,7 @@ from .simulation_chain import (
 from .simulation_summary import summarize_scene
 from .simulation_tables import film_table, kinematics_columns, step_columns
 from .state import OilSupply, OperatingPoint
+from .warning_groups import WarningGroups
 
 __all__ = [
     "BALL_SOURCES", "MAX_SHOWN_WARNINGS", "MODEL_KEYS", "ROLLER_SOURCES", "ChainLink",
@@ -183,6 +184,7 @@ class Simulation:
         # kinematics-only scene runs no heat source: nothing to say)
         self.warnings: list[str] = list(self.notes) + (
             dropped if _needs(scene)["losses"] else [])
+        self._warning_groups = WarningGroups(self.warnings)
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         # identical bearings (same preset and overrides) at the same state share results
@@ -271,7 +273,7 @@ class Simulation:
                 res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
                          oil_temperature=temps["oil"], supply=self.supply, guess=None,
                          options=b.kin_options)
-        self._note(caught, f"{b.name}, step {step_index}")
+        self._note(caught, b.name, step_index)
         if not res.converged:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
                                    res.residual_norm, "at step", {"step": step_index})
@@ -281,11 +283,12 @@ class Simulation:
         self.checks[b.name].record(step_index, check_state(b.bearing, res, self.check_limits))
         return res
 
-    def _note(self, caught: Sequence[warnings.WarningMessage], where: str) -> None:
+    def _note(self, caught: Sequence[warnings.WarningMessage], bearing: str,
+              step: int | None = None) -> None:
+        """The caught warnings into the run's warnings, repeats merged into one line per
+        bearing and message shape (:class:`~thermobearing.warning_groups.WarningGroups`)."""
         for w in caught:
-            text = f"{where}: {w.message}"
-            if text not in self.warnings and len(self.warnings) < 200:
-                self.warnings.append(text)
+            self._warning_groups.add(str(w.message), bearing, step)
 
     def evaluate_heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
                       temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
