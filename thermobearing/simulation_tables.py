@@ -53,11 +53,38 @@ def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
     return {"cage speed ratio [-]": kin.cage_speed_ratio,
             "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
             "over-skidding [%]": 100.0 * kin.over_skid,
+            **contact_angle_columns(kin, bearing),
             "max contact pressure [MPa]": check.max_pressure / 1e6,
             "min film parameter [-]": (math.nan if check.film_parameter is None
                                        else check.film_parameter),
             "converged": kin.converged, "residual": kin.residual_norm,
             "iterations": kin.iterations}
+
+
+def contact_angle_columns(kin: KinematicsResult, bearing: Any) -> dict[str, float]:
+    """Load-weighted mean contact angle of the inner and of the outer raceway [deg] of a
+    ball bearing's state: sum(Q alpha) / sum(Q) over every loaded contact of the ring (both
+    arcs of a gothic-arch ring). At speed the balls' centrifugal force turns the outer
+    angle down and the inner one up, which is what lifts the rolling cage speed ratio
+    above CSR_th in angular-contact bearings. NaN for a ring with no loaded contact (a
+    state at rest, or race control without load on that ring); no columns for roller
+    bearings (their raceway contacts have no contact angle)."""
+    if not hasattr(bearing, "ball_diameter"):
+        return {}
+    out = {}
+    for ring in ("inner", "outer"):
+        q_sum = qa_sum = 0.0
+        for cs in kin.state.contacts:
+            if cs.race.split("_")[0] != ring or cs.contact_angle is None:
+                continue
+            q = np.asarray(cs.normal_load, float)
+            a = np.broadcast_to(np.asarray(cs.contact_angle, float), q.shape)
+            loaded = q > 0
+            q_sum += float(np.sum(q[loaded]))
+            qa_sum += float(np.sum(q[loaded] * np.abs(a[loaded])))
+        out[f"{ring} contact angle [deg]"] = (math.degrees(qa_sum / q_sum) if q_sum > 0
+                                              else math.nan)
+    return out
 
 
 def film_table(b: _Bearing, lubricant: Any, step: Step,

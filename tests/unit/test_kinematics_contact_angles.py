@@ -1,0 +1,90 @@
+"""Contact-angle columns of the kinematics table (simulation_tables.contact_angle_columns)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from thermobearing.scene import loads_scene
+from thermobearing.simulation import Simulation
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+SPINDLE = f"""
+title = "7014 C at speed, kinematics only"
+[[bearings]]
+name = "front"
+path = "{(EXAMPLES / 'spindle_7014C_catalogue.toml').as_posix()}"
+[lubricant]
+preset = "ISO_VG32"
+[supply]
+method = "oil_air"
+flow = "30 mm3/h"
+[environment]
+ambient_temperature = "22 degC"
+[schedule]
+radial_load = "200 N"
+axial_load = "500 N"
+steps = [{{ duration = "1 min", speed = "0 r/min" }},
+         {{ duration = "1 min", speed = "4000 r/min" }},
+         {{ duration = "1 min", speed = "16000 r/min" }}]
+[models]
+kinematics = "@KIN@"
+[outputs]
+want = ["kinematics"]
+"""
+
+
+def _table(kinematics: str):
+    sim = Simulation(loads_scene(SPINDLE.replace("@KIN@", kinematics)), progress=False)
+    return sim.run().tables["kinematics"], sim.bearings[0].bearing
+
+
+@pytest.mark.parametrize("kinematics", ["skidding", "race_control"])
+def test_angles_are_load_weighted_and_turn_apart_with_speed(kinematics):
+    """7014 C (15 deg nominal), 500 N axial + 200 N radial: at 4000 r/min both angles sit
+    near the mounted angle; at 16000 r/min the balls' centrifugal force turns the outer
+    angle down and the inner one up (measured with the skidding solver: 17.5 / 15.8 deg at
+    4000, 25.4 / 6.0 deg at 16000 r/min)."""
+    kin, bearing = _table(kinematics)
+    nominal = math.degrees(bearing.contact_angle)
+    at = kin.set_index("speed [rpm]")
+    i4, o4 = at.loc[4000.0, ["inner contact angle [deg]", "outer contact angle [deg]"]]
+    i16, o16 = at.loc[16000.0, ["inner contact angle [deg]", "outer contact angle [deg]"]]
+    assert abs(i4 - nominal) < 5 and abs(o4 - nominal) < 5
+    assert o16 < o4 < i4 < i16
+    assert i16 - o16 > 10.0
+
+
+def test_angles_at_rest_and_for_rollers():
+    """At rest the static contacts still give the angles; a roller bearing gets no
+    contact-angle columns."""
+    kin, _ = _table("skidding")
+    rest = kin[kin["speed [rpm]"] == 0.0].iloc[0]
+    assert 10.0 < rest["inner contact angle [deg]"] < 30.0
+    from thermobearing.simulation_tables import contact_angle_columns
+
+    roller = Simulation(loads_scene("""
+title = "NU 214"
+[[bearings]]
+name = "r"
+preset = "NU214"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+flow = "2 L/min"
+inlet_temperature = "40 degC"
+[schedule]
+speed = "3000 rpm"
+radial_load = "8 kN"
+axial_load = "0 kN"
+[models]
+kinematics = "race_control"
+[outputs]
+want = ["kinematics"]
+"""), progress=False)
+    res = roller.run()
+    assert not any("contact angle" in c for c in res.tables["kinematics"].columns)
+    assert contact_angle_columns(roller.bearings[0].last, roller.bearings[0].bearing) == {}
