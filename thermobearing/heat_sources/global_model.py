@@ -21,7 +21,9 @@ _LOAD_INDEPENDENT = frozenset({"drag", "seal", "M0"})
 @HEAT_SOURCES.register(
     "global_friction",
     references=["harris_kotzalas2007"],
-    parameters={"model": "-", "temperature_role": "-", "role": "-", "series": "-"},
+    parameters={"model": "-", "temperature_role": "-", "role": "-", "series": "-",
+                "static_load_rating": "N"},
+    limits={"static_load_rating": "(0, inf)"},
     validity="as the chosen catalogue model (see `thermobearing models global_friction`)",
     summary="Whole-bearing loss from the SKF four-term or Palmgren model (no kinematics).",
 )
@@ -31,7 +33,10 @@ def global_friction_source(ctx: HeatContext) -> HeatResult:
     ``temperature_role`` (default ``oil``), booked on ``role`` (default ``oil``); one
     component per term of the model (SKF rolling / sliding / seal / drag, Palmgren M0 / M1)
     with its load class. ``series``: the SKF series key (``72_ACCBM``, ...; default read
-    from the bearing's designation), for the SKF model only."""
+    from the bearing's designation), for the SKF model only. ``static_load_rating``: the
+    bearing's catalogue C0 [N], which the SKF model needs for a deep-groove bearing under
+    axial load (alpha_F = 24.6 (F_a/C0)^0.24 deg; SKF model only); without it such a
+    step is refused naming this option."""
     from ..errors import InputError, UnknownNameError
 
     name = "global_friction"
@@ -51,8 +56,27 @@ def global_friction_source(ctx: HeatContext) -> HeatResult:
             raise InputError(f"heat source {name!r} option series", series,
                              "no series with model = \"palmgren\" (SKF four-term only)")
         extra["series"] = str(series)
-    res = global_friction(model, ctx.bearing, ctx.lubricant, ctx.temperature(t_role), speed,
-                          op.radial_load, op.axial_load, supply=ctx.supply, **extra)
+    c0 = ctx.option(name, "static_load_rating", None)
+    if c0 is not None:
+        if model != "skf_four_term":
+            raise InputError(f"heat source {name!r} option static_load_rating", c0,
+                             "no static_load_rating with model = \"palmgren\" (SKF four-term "
+                             "only)")
+        extra["static_load_rating"] = float(c0)
+    try:
+        res = global_friction(model, ctx.bearing, ctx.lubricant, ctx.temperature(t_role),
+                              speed, op.radial_load, op.axial_load, supply=ctx.supply,
+                              **extra)
+    except InputError as exc:
+        if exc.field != "static_load_rating":
+            raise
+        # the bearing files carry no C0: name the scene field that gives it
+        raise InputError(
+            f"models.heat_source_options.{name}.static_load_rating", None,
+            f"the static load rating C0 of {ctx.bearing.name} from its catalogue, a force "
+            "with its unit: the SKF four-term model needs it for a deep-groove bearing under "
+            f"axial load ({op.axial_load:g} N here; alpha_F = 24.6 (F_a/C0)^0.24 deg), or "
+            "model = \"palmgren\"") from None
     power = float(res.power)
     if not power >= 0.0:
         raise InputError(f"heat source {name!r} power", power, "a finite loss >= 0 W")
