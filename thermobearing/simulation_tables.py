@@ -54,7 +54,10 @@ def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
             "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
             "over-skidding [%]": 100.0 * kin.over_skid,
             **contact_angle_columns(kin, bearing),
-            "max contact pressure [MPa]": check.max_pressure / 1e6,
+            # a state without contact sets (kinematics "none": the global friction model
+            # solves no contacts) has no contact pressure to report, not 0 MPa
+            "max contact pressure [MPa]": (check.max_pressure / 1e6 if kin.state.contacts
+                                           else math.nan),
             "min film parameter [-]": (math.nan if check.film_parameter is None
                                        else check.film_parameter),
             "converged": kin.converged, "residual": kin.residual_norm,

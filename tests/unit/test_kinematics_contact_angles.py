@@ -88,3 +88,19 @@ want = ["kinematics"]
     res = roller.run()
     assert not any("contact angle" in c for c in res.tables["kinematics"].columns)
     assert contact_angle_columns(roller.bearings[0].last, roller.bearings[0].bearing) == {}
+
+
+def test_global_friction_rows_have_no_contact_pressure():
+    """kinematics = "none" (SKF / Palmgren global model) solves no contacts at a turning
+    step: the pressure, film-parameter and angle columns are NaN there, not 0."""
+    text = SPINDLE.replace("@KIN@", "none").replace(
+        'want = ["kinematics"]', 'want = ["kinematics", "losses"]').replace(
+        'kinematics = "none"', 'kinematics = "none"\nheat_sources = ["global_friction"]\n'
+        'heat_source_options = { global_friction = { model = "palmgren" } }')
+    res = Simulation(loads_scene(text), progress=False).run()
+    kin = res.tables["kinematics"]
+    kin = kin[kin["speed [rpm]"] > 0]  # (at rest the static contacts are solved)
+    assert len(kin) == 2
+    for col in ("max contact pressure [MPa]", "min film parameter [-]",
+                "inner contact angle [deg]", "outer contact angle [deg]"):
+        assert kin[col].isna().all(), col
