@@ -202,7 +202,8 @@ class StateCheck:
 
     slip : CSR / CSR_roll - 1 [-] (negative: skidding; CSR / CSR_th - 1 when ``csr_roll``
     is None). csr, csr_th : the cage speed ratio and paper 002's CSR_th [-].
-    max_pressure : largest Hertz pressure of the loaded contacts [Pa]; stress_limit : the
+    max_pressure : largest Hertz pressure of the loaded contacts [Pa] (NaN when the state
+    has no contacts computed: kinematics ``"none"``, epicyclic speeds only); stress_limit : the
     contact-stress limit of the bearing's family it was checked against [Pa] (the ISO 76
     stress unless :class:`CheckLimits` sets another). film_parameter : smallest Lambda of the
     loaded contacts [-], None when the bearing gives no roughness or the state no film;
@@ -336,9 +337,13 @@ def check_film_rows(bearing: Any, rows: Any, cage_speed_ratio: float,
 def _check_contacts(bearing: Any, state: Any, slip: float, csr: float, csr_th: float,
                     limits: CheckLimits) -> StateCheck:
     """Largest Hertz pressure and smallest film parameter of the loaded contacts of a
-    ``state.KinematicState`` [Pa, -], with the given slip and cage speed ratios."""
+    ``state.KinematicState`` [Pa, -], with the given slip and cage speed ratios. A turning
+    state without contact sets (kinematics ``"none"``) has no pressure computed: NaN, not
+    0 Pa (a state at rest without contacts carries no load: 0)."""
     sigma = composite_roughness(bearing)
     p_max = 0.0
+    if not state.contacts and getattr(state, "origin", "") == "given":
+        p_max = math.nan
     lam_min, race_min = math.inf, ""
     for cs in state.contacts:
         q = np.atleast_1d(np.asarray(cs.normal_load, dtype=float))
@@ -429,6 +434,12 @@ class CheckLog:
                         lambda c: c.max_pressure)
         if flagged:
             lines.append(self._stress_line(*flagged))
+        if self.steps and all(math.isnan(c.max_pressure) for cs in self.steps.values()
+                              for c in cs):
+            lines.append(f"{self.bearing}: contact stress and film parameter Lambda not "
+                         "checked: the kinematics model computes no contacts (kinematics = "
+                         "\"none\")")
+            return lines
         if self.roughness is None:
             lines.append(f"{self.bearing}: film parameter Lambda not checked: the bearing "
                          "gives no raceway_roughness / element_roughness")

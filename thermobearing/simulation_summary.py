@@ -24,8 +24,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       table: negative where the cage lags, so a maximum below zero means every step
       skids), ``max contact pressure [MPa]`` and ``min film
       parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
-      gives its roughness), and ``steps over skid limit [-]``, ``steps over stress limit
-      [-]``, ``steps under film limit [-]`` (the scene's ``[checks]`` thresholds; summed over
+      gives its roughness; neither when the kinematics model computes no contacts), and
+      ``steps over skid limit [-]``, ``steps over stress limit [-]``, ``steps under film
+      limit [-]`` (the scene's ``[checks]`` thresholds; summed over
       bearings), so that a sweep of the thresholds shows what they flag;
     * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
       parameter [-]`` of the film table;
@@ -65,7 +66,10 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
         out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
     states = [c for log in sim.checks.values() for cs in log.steps.values() for c in cs]
     if states:
-        out["max contact pressure [MPa]"] = max(c.max_pressure for c in states) / 1e6
+        # NaN: a state whose model computes no contacts (kinematics "none")
+        pressures = [c.max_pressure for c in states if not np.isnan(c.max_pressure)]
+        if pressures:
+            out["max contact pressure [MPa]"] = max(pressures) / 1e6
         films = [c.film_parameter for c in states if c.film_parameter is not None]
         if films:
             out["min film parameter [-]"] = min(films)
