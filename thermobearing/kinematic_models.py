@@ -33,6 +33,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from .registry import Registry
 from .state import KinematicState, OilSupply, OperatingPoint
 
@@ -205,6 +207,8 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
                 guess=raw_guess, oil_temperature=oil_temperature, **opts)
     heat_options = (_ball_heat_options(bearing, supply, operating.inner_speed, params)
                     if hasattr(bearing, "ball_diameter") else {})
+    if hasattr(bearing, "ball_diameter") and res.converged:
+        _ball_film_range(bearing, lubricant, res.kinematic_state, contact_temperature)
     return KinematicsResult(
         state=res.kinematic_state,
         cage_speed_ratio=float(res.cage_speed_ratio),
@@ -216,6 +220,32 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
         traction=_solver_traction(res, bearing, lubricant, contact_temperature, params),
         raw=res,
     )
+
+
+def _ball_film_range(bearing: Any, lubricant: Any, state: Any, temperature: float) -> None:
+    """The fitted-range check of the ball solver's film (Hamrock-Dowson 1977 central film,
+    evaluated by the solver's compiled core without checks): the checked
+    :func:`thermobearing.film.hamrock_dowson_1977_central` on the loaded, rolling contacts
+    of the converged state, for its ValidityWarning only (the same warning race control
+    gives; a scene run merges the repeats)."""
+    from .film import hamrock_dowson_1977_central
+
+    eta = float(lubricant.dynamic_viscosity(temperature))
+    alpha = float(lubricant.pressure_viscosity_coefficient(temperature))
+    for cs in state.contacts:
+        if cs.film_thickness is None or cs.reduced_radius_x is None:
+            continue
+        q = np.asarray(cs.normal_load, float)
+        u = np.abs(np.asarray(cs.entrainment_speed, float))
+        use = (q > 0) & (u > 0)
+        if not np.any(use):
+            continue
+        ry = None if cs.reduced_radius_y is None else np.broadcast_to(
+            np.asarray(cs.reduced_radius_y, float), q.shape)[use]
+        hamrock_dowson_1977_central(
+            u[use], eta, alpha, q[use],
+            np.broadcast_to(np.asarray(cs.reduced_radius_x, float), q.shape)[use], ry,
+            effective_modulus=bearing.effective_modulus)
 
 
 def _solver_traction(res: Any, bearing: Any, lubricant: Any, temperature: float,

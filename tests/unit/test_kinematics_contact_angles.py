@@ -104,3 +104,16 @@ def test_global_friction_rows_have_no_contact_pressure():
     for col in ("max contact pressure [MPa]", "min film parameter [-]",
                 "inner contact angle [deg]", "outer contact angle [deg]"):
         assert kin[col].isna().all(), col
+
+
+def test_skidding_solver_states_report_the_film_formula_outside_its_range_once_per_shape():
+    """The ball solver's film (Hamrock-Dowson 1977, compiled without checks) is checked on
+    the converged state like race control's: the 7014 C at 4000-16000 r/min is beyond the
+    fitted U, W and k ranges, and the run lists it in merged lines (inner and outer
+    contacts: two shapes), not once per step and contact."""
+    sim = Simulation(loads_scene(SPINDLE.replace("@KIN@", "skidding")), progress=False)
+    res = sim.run()
+    film = [w for w in res.warnings if "hamrock_dowson_1977_central" in w]
+    assert 1 <= len(film) <= 2
+    assert all(w.startswith("front, steps 1-2: ") for w in film)
+    assert any("U in [" in w and "outside [1e-12, 1e-10]" in w for w in film)
