@@ -297,7 +297,7 @@ class Coupler:
         for b in self.sim.bearings:
             ev = self.sim.evaluate_heat(b, step, b.last, self.role_temperatures(b, T),
                                         with_rows=True)
-            base = step_columns(step_index, time_s, b.name, step)
+            base = step_columns(step_index, time_s, b.name, step, b)
             rows.extend({**base, **r} for r in ev.rows)
         return rows
 
@@ -417,7 +417,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     coupler.kinematics(i, step, T)
                     if k == 0:
                         for b in sim.bearings:
-                            row = {**step_columns(i, t, b.name, step),
+                            row = {**step_columns(i, t, b.name, step, b),
                                    **kinematics_columns(b.last, b.bearing)}
                             kin_rows.append(row)
                             if writer:
@@ -602,7 +602,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                                    "temperatures still move after 30 kinematics updates",
                                    {"step": i})
         for b in sim.bearings:
-            kin_rows.append({**step_columns(i, 0.0, b.name, step),
+            kin_rows.append({**step_columns(i, 0.0, b.name, step, b),
                              **kinematics_columns(b.last, b.bearing)})
         row = {"step": i, **_temperature_row(0.0, names, T)}
         temp_rows.append(row)

@@ -22,6 +22,8 @@ Layout (every table optional unless marked)::
     name = "drive_end"                 # unique; names the node group in the network
     preset = "QJ1044"                  # or path = "my_bearing.toml"
     overrides = { diametral_clearance = "0.1 mm" }
+    load_share = { radial = 0.6, axial = 0 }   # its fractions of the schedule's loads
+                                       # (default 1 each; axial = 0: a floating bearing)
 
     [lubricant]                        # required
     preset = "ISO_VG46"                # or path = "..."

@@ -31,25 +31,55 @@ CHECKS_SOURCE = "scene [checks]"
 
 @dataclass(frozen=True)
 class BearingSpec:
-    """One bearing of the scene: a preset or a TOML path, with overrides."""
+    """One bearing of the scene: a preset or a TOML path, with overrides.
+
+    ``load_share``: the fractions of the schedule's loads this bearing carries, ``{ radial =
+    0.6, axial = 0 }`` (default 1 each: every bearing carries the step's loads). On a shaft
+    with two bearings the radial load splits by the lever arms (statics of the shaft, not
+    computed here) and a locating / floating arrangement puts the axial load on the locating
+    bearing only (``axial = 0`` for the floating one, e.g. an NU cylindrical roller bearing,
+    which carries none); a negative axial share reverses the load's direction on that
+    bearing. Radial share >= 0.
+    """
 
     name: str
     preset: str | None = None
     path: str | None = None
     overrides: Mapping[str, Any] = field(default_factory=dict)
+    load_share: Mapping[str, float] = field(default_factory=dict)
+
+    @property
+    def radial_share(self) -> float:
+        return float(self.load_share.get("radial", 1.0))
+
+    @property
+    def axial_share(self) -> float:
+        return float(self.load_share.get("axial", 1.0))
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], index: int) -> BearingSpec:
         sec = f"bearings[{index}]"
-        _check_keys(sec, data, ("name", "preset", "path", "overrides"))
+        _check_keys(sec, data, ("name", "preset", "path", "overrides", "load_share"))
         preset, path = data.get("preset"), data.get("path")
         if (preset is None) == (path is None):
             raise InputError(f"{sec}.preset", preset, "exactly one of 'preset' or 'path'")
+        share = dict(_table(f"{sec}.load_share", data.get("load_share", {})))
+        _check_keys(f"{sec}.load_share", share, ("radial", "axial"))
+        for key, value in share.items():
+            where = f"{sec}.load_share.{key}"
+            if isinstance(value, bool) or not isinstance(value, int | float) \
+                    or not math.isfinite(value):
+                raise InputError(where, value, "a number: the fraction of the schedule's "
+                                 f"{key} load this bearing carries (1 = all of it)")
+            if key == "radial" and value < 0:
+                raise InputError(where, value, "a fraction >= 0 of the radial load")
+            share[key] = float(value)
         return cls(
             name=str(data.get("name", f"bearing{index + 1}")),
             preset=preset,
             path=path,
             overrides=dict(_table(f"{sec}.overrides", data.get("overrides", {}))),
+            load_share=share,
         )
 
     def to_dict(self) -> dict[str, Any]:
@@ -60,6 +90,8 @@ class BearingSpec:
             out["path"] = self.path
         if self.overrides:
             out["overrides"] = dict(self.overrides)
+        if self.load_share:
+            out["load_share"] = dict(self.load_share)
         return out
 
 

@@ -153,7 +153,8 @@ class Simulation:
                 opts["params"] = params
                 if note and note not in self.notes:
                     self.notes.append(note)
-            key = repr((spec.preset, spec.path, sorted(spec.overrides.items())))
+            key = repr((spec.preset, spec.path, sorted(spec.overrides.items()),
+                        spec.radial_share, spec.axial_share))
             sources = heat_source_names(scene, is_ball)
             why = ("rib_friction" in sources and "heat_sources" not in scene.models
                    and _rib_friction_unavailable(b))
@@ -166,11 +167,14 @@ class Simulation:
                              "end_face_crown_radius and rib_height")
                 dropped.append(f"{spec.name}: default heat source rib_friction left out "
                                f"({why}){hint}")
-            radial_load_contact(spec.name, b, scene.schedule.steps, kin_name)
-            no_path = axial_load_path(spec.name, b, scene.schedule.steps, kin_name, sources)
+            record = _Bearing(spec.name, key, b, is_ball, sources, kin_name, opts,
+                              radial_share=spec.radial_share, axial_share=spec.axial_share)
+            own_steps = record.steps(scene.schedule.steps)
+            radial_load_contact(spec.name, b, own_steps, kin_name)
+            no_path = axial_load_path(spec.name, b, own_steps, kin_name, sources)
             if no_path:
                 dropped.append(no_path)
-            self.bearings.append(_Bearing(spec.name, key, b, is_ball, sources, kin_name, opts))
+            self.bearings.append(record)
         from .heat_sources import HEAT_SOURCES
 
         HEAT_SOURCE_FAMILY = HEAT_SOURCES.family
@@ -233,9 +237,10 @@ class Simulation:
         return "\n".join(lines) if len(lines) > 1 else ""
 
     # ------------------------------------------------------------ evaluation
-    def _operating(self, step: Step) -> OperatingPoint:
-        return OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
-                              axial_load=step.axial_load)
+    def _operating(self, step: Step, b: _Bearing | None = None) -> OperatingPoint:
+        """The operating point of a step, with bearing ``b``'s share of the loads."""
+        radial, axial = (step.radial_load, step.axial_load) if b is None else b.loads(step)
+        return OperatingPoint(inner_speed=step.speed, radial_load=radial, axial_load=axial)
 
     def solve_kinematics(self, b: _Bearing, step_index: int, step: Step,
                     temps: Mapping[str, float]) -> KinematicsResult:
@@ -258,7 +263,7 @@ class Simulation:
             self.checks[b.name].record(step_index, check_state(b.bearing, shared[1],
                                                                self.check_limits))
             return shared[1]
-        op = self._operating(step)
+        op = self._operating(step, b)
         fn = KINEMATICS.get(b.kinematics_name)
         guess = b.last if b.last is not None else None
         with warnings.catch_warnings(record=True) as caught:
@@ -320,7 +325,7 @@ class Simulation:
         missing = [name for name in b.sources if name not in found]
         if missing:
             ctx = HeatContext(bearing=b.bearing, lubricant=self.lubricant, supply=self.supply,
-                              operating=self._operating(step), temperatures=temps,
+                              operating=self._operating(step, b), temperatures=temps,
                               kinematics=kin.state, traction=kin.traction,
                               options=self._heat_options(kin))
             with warnings.catch_warnings(record=True) as caught:
@@ -466,7 +471,7 @@ class Simulation:
         steps = self.scene.schedule.steps
         for i, step in enumerate(tqdm(steps, disable=not self.progress, desc="steps")):
             for b in self.bearings:
-                base = step_columns(i, 0.0, b.name, step)
+                base = step_columns(i, 0.0, b.name, step, b)
                 if self.needs["kinematics"]:
                     kin = self.solve_kinematics(b, i, step, temps)
                     row = {**base, **kinematics_columns(kin, b.bearing)}

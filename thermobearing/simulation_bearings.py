@@ -31,6 +31,24 @@ class _Bearing:
     last_viscosity: float = math.nan
     last_step: int = -1
     solves: int = 0
+    #: fractions of the schedule's radial / axial loads this bearing carries
+    #: (``[[bearings]] load_share``)
+    radial_share: float = 1.0
+    axial_share: float = 1.0
+
+    def loads(self, step: Any) -> tuple[float, float]:
+        """(radial, axial) load [N] of this bearing at a schedule step."""
+        return step.radial_load * self.radial_share, step.axial_load * self.axial_share
+
+    def steps(self, steps: Any) -> list[Any]:
+        """The schedule's steps with this bearing's loads (for the pre-run checks)."""
+        import dataclasses
+
+        if self.radial_share == 1.0 and self.axial_share == 1.0:
+            return list(steps)
+        return [dataclasses.replace(s, radial_load=s.radial_load * self.radial_share,
+                                    axial_load=s.axial_load * self.axial_share)
+                for s in steps]
 
 
 @dataclass

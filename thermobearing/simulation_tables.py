@@ -19,16 +19,20 @@ from .state import OperatingPoint
 from .units import from_si
 
 
-def step_columns(index: int, time_s: float, bearing: str, step: Step) -> dict[str, Any]:
-    """The columns that identify one operating step in the tables.
+def step_columns(index: int, time_s: float, bearing: str, step: Step,
+                 record: _Bearing | None = None) -> dict[str, Any]:
+    """The columns that identify one operating step in the tables (the loads are those of
+    the bearing ``record`` when given: its ``load_share`` of the schedule's).
 
     The speed is the step's set value converted from rad/s to r/min and rounded to
     :data:`SET_VALUE_DIGITS` significant digits: the conversion's round-off (1500 r/min
     read back as ``1500.0000000000002``) is not part of the value a user set."""
+    radial, axial = ((step.radial_load, step.axial_load) if record is None
+                     else record.loads(step))
     return {"step": index, "time [s]": time_s, "bearing": bearing,
             "speed [rpm]": set_value(from_si(step.speed, "rpm")),
-            "radial load [kN]": step.radial_load / 1e3,
-            "axial load [kN]": step.axial_load / 1e3}
+            "radial load [kN]": radial / 1e3,
+            "axial load [kN]": axial / 1e3}
 
 
 #: significant digits of a set value (speed) written to the tables: far more than any
@@ -98,8 +102,8 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
     run). Returns the rows and the state's cage speed ratio [-]."""
     from .state import race_control_state
 
-    op = OperatingPoint(inner_speed=step.speed, radial_load=step.radial_load,
-                        axial_load=step.axial_load)
+    radial, axial = b.loads(step)
+    op = OperatingPoint(inner_speed=step.speed, radial_load=radial, axial_load=axial)
     t_c = contact_temperature(temps)
     state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
     rows = []
