@@ -175,6 +175,10 @@ class Simulation:
             if no_path:
                 dropped.append(no_path)
             self.bearings.append(record)
+            if spec.load_share:
+                self.notes.append(
+                    f"{spec.name} carries {spec.radial_share:g} of the schedule's radial load "
+                    f"and {spec.axial_share:g} of its axial load ([[bearings]] load_share)")
         from .heat_sources import HEAT_SOURCES
 
         HEAT_SOURCE_FAMILY = HEAT_SOURCES.family

@@ -105,3 +105,12 @@ def test_load_share_round_trips_through_to_toml():
     again = loads_scene(sc.to_toml())
     assert [b.load_share for b in again.bearings] == [{"radial": 0.4},
                                                        {"radial": 0.6, "axial": 0.0}]
+
+
+def test_check_and_the_report_say_each_share():
+    sim = Simulation(loads_scene(PAIR.format(
+        locating="load_share = { radial = 0.4 }",
+        floating="load_share = { radial = 0.6, axial = 0 }")), progress=False)
+    assert ("floating carries 0.6 of the schedule's radial load and 0 of its axial load "
+            "([[bearings]] load_share)") in sim.describe_chain()
+    assert any(w.startswith("locating carries 0.4") for w in sim.warnings)
