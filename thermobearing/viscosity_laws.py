@@ -290,8 +290,26 @@ def barus_viscosity(eta0: ArrayLike, alpha: ArrayLike, p: ArrayLike) -> ArrayLik
     with np.errstate(over="ignore"):
         out = np.asarray(eta0, dtype=float) * np.exp(np.asarray(alpha) * np.asarray(p))
     if not np.all(np.isfinite(out)):
-        raise InputError("pressure", p, "a pressure for which exp(alpha p) stays finite")
+        p_bad, (e_bad, a_bad) = _first_overflow(out, p, eta0, alpha)
+        raise InputError("pressure", f"{p_bad:.6g} Pa",
+                         f"a pressure for which exp(alpha p) stays finite (eta0 = {e_bad:.4g} "
+                         f"Pa s, alpha = {a_bad:.4g} 1/Pa)")
     return _out(out)
+
+
+def _first_overflow(out: np.ndarray, p: ArrayLike, *params: ArrayLike
+                    ) -> tuple[float, tuple[float, ...]]:
+    """The first pressure [Pa] whose viscosity ``out`` is not finite, with the law's
+    parameters there: an error names one value, not the caller's whole pressure grid."""
+    out = np.asarray(out, dtype=float)
+    i = int(np.flatnonzero(~np.isfinite(out.ravel()))[0])
+    shape = out.shape
+
+    def at(x: ArrayLike) -> float:
+        return float(np.broadcast_to(np.asarray(x, dtype=float), shape).ravel()[i]) \
+            if shape else float(np.asarray(x, dtype=float))
+
+    return at(p), tuple(at(x) for x in params)
 
 
 @PRESSURE_VISCOSITY.register(
@@ -337,7 +355,10 @@ def roelands_viscosity(
     with np.errstate(over="ignore"):
         out = eta0a * np.exp(expo)
     if not np.all(np.isfinite(out)):
-        raise InputError("pressure", p, "a pressure for which the Roelands viscosity is finite")
+        p_bad, (e_bad, z_bad) = _first_overflow(out, pa, eta0a, z)
+        raise InputError("pressure", f"{p_bad:.6g} Pa",
+                         "a pressure for which the Roelands viscosity is finite (eta0 = "
+                         f"{e_bad:.4g} Pa s, z = {z_bad:.4g}: the viscosity overflows there)")
     return _out(out)
 
 
