@@ -264,10 +264,13 @@ class Lubricant:
             # far below the oil's pour point the law's double exponential overflows (ASTM
             # D341 at a few kelvin: OverflowError or inf, then NaN alpha), far above boiling
             # an exponential law underflows to 0; say so instead (property tests)
+            in_celsius = (f"; temperatures are in K: {T:g} K is {T - 273.15:g} degC"
+                          if isinstance(T, float) else "; temperatures are in K")
             raise InputError("temperature", T,
                              f"a temperature at which the {self.viscosity_law} viscosity law of "
                              f"{self.name} is finite and > 0 (it overflows or underflows here; "
-                             "the law is meant for the liquid range, cloud to boiling point)")
+                             "the law is meant for the liquid range, cloud to boiling point"
+                             f"{in_celsius})")
         if self.viscosity_law == "astm_d341" and np.any(np.asarray(v) > _D341_MAX_NU):
             # the law's stated range ends at 1e6 cSt (its registry entry; below 0.21 cSt the
             # law itself warns): colder than that it extrapolates

@@ -13,11 +13,27 @@ All inputs SI: ``speed`` inner-ring speed [rad/s], loads [N], ``temperature`` [K
 
 from __future__ import annotations
 
+import numbers
 from typing import Any
 
-from ..errors import InputError
+import numpy as np
+
+from ..errors import InputError, check_finite, check_temperature
 
 __all__ = ["solve"]
+
+
+def _operating_value(field: str, value: Any, unit: str) -> float:
+    """``value`` as a float: a Python or numpy real number or a 0-d array; anything else
+    (a unit string, a list, an array of several values) is an :class:`InputError` naming
+    ``field`` and its SI ``unit``."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        check_finite(field, float(value))
+        return float(value)
+    raise InputError(field, value, f"one real number in {unit} (unit strings belong to scene "
+                     "files; solve one operating point per call)")
 
 
 def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_load: float,
@@ -30,10 +46,12 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
     ----------
     bearing : BallBearing or RollerBearing.
     lubricant : Lubricant.
-    speed : inner-ring speed [rad/s] (outer ring fixed).
+    speed : inner-ring speed [rad/s] (outer ring fixed; 1800 r/min is 188.5 rad/s).
     radial_load, axial_load : [N].
-    temperature : contact / oil temperature [K].
-    supply : OilSupply (ball bearings: sets the oil fraction of the drag models).
+    temperature : contact / oil temperature [K] (40 degC is 313.15 K).
+    supply : :class:`thermobearing.state.OilSupply`; required for ball bearings (it sets the
+        oil fraction of the drag models) unless ``params.oil_fraction`` is given; not used
+        by the roller solver.
     params : ball bearings: :class:`thermobearing.skidding.ball_models.BallParameters`
         (e.g. the calibrated set of ``configs/bearings/QJ1044.calibration.toml``).
     models : ball bearings: ready-made :class:`~thermobearing.skidding.ball.BallModels`
@@ -49,7 +67,22 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
     ``theoretical_cage_speed_ratio``, ``converged``, ``residual_norm`` and per-element speeds.
     """
     from ..geometry import BallBearing, RollerBearing
+    from ..lubricant import Lubricant
+    from ..state import OilSupply
 
+    if not isinstance(lubricant, Lubricant):
+        raise InputError("lubricant", type(lubricant).__name__,
+                         "a Lubricant (thermobearing.lubricant.load_lubricant)")
+    if supply is not None and not isinstance(supply, OilSupply):
+        raise InputError("supply", supply, "an OilSupply (thermobearing.state.OilSupply) or None")
+    speed = _operating_value("speed", speed, "rad/s")
+    radial_load = _operating_value("radial_load", radial_load, "N")
+    axial_load = _operating_value("axial_load", axial_load, "N")
+    temperature = _operating_value("temperature", temperature, "K")
+    check_temperature("temperature", temperature)
+    if oil_temperature is not None:
+        oil_temperature = _operating_value("oil_temperature", oil_temperature, "K")
+        check_temperature("oil_temperature", oil_temperature)
     if isinstance(bearing, BallBearing) or getattr(bearing, "kind", None) in (
             "deep_groove", "angular_contact", "four_point"):
         from .ball import solve_ball

@@ -1,0 +1,81 @@
+"""A research engineer's tour of the Python API: the mistakes a notebook user makes with the
+public functions (a unit string or an array where one SI number is expected, a Celsius value
+passed as kelvin, a lubricant where a bearing is expected) are refused with the field, the
+value and what is allowed, and numpy scalars are accepted like floats."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing import skidding
+from thermobearing.errors import InputError
+from thermobearing.state import OilSupply
+
+SUPPLY = OilSupply("jet", 5.5e-4, 308.15)
+SPEED = 1800.0 * math.pi / 30.0  # 1800 r/min [rad/s]
+
+
+@pytest.fixture(scope="module")
+def qj1044():
+    from thermobearing.bearing_config import load_bearing
+
+    return load_bearing("QJ1044")
+
+
+@pytest.fixture(scope="module")
+def vg46():
+    from thermobearing.lubricant import load_lubricant
+
+    return load_lubricant("ISO_VG46")
+
+
+@pytest.mark.parametrize(("field", "value", "unit"), [
+    ("speed", "1800 rpm", "rad/s"),          # before: TypeError bad operand type for abs()
+    ("speed", np.array([SPEED]), "rad/s"),   # before: TypeError only 0-dimensional arrays
+    ("radial_load", [1000.0], "N"),
+    ("axial_load", "10 kN", "N"),
+    ("temperature", "40 degC", "K"),
+])
+def test_skidding_solve_refuses_what_is_not_one_number(qj1044, vg46, field, value, unit):
+    args = {"speed": SPEED, "radial_load": 1000.0, "axial_load": 10000.0,
+            "temperature": 313.15, field: value}
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, supply=SUPPLY, **args)
+    assert info.value.field == field and info.value.value is value
+    assert f"one real number in {unit}" in info.value.allowed
+
+
+def test_skidding_solve_names_the_speed_when_it_is_nan(qj1044, vg46):
+    # before: "parker.shaft_speed = nan", a name the caller never used
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, math.nan, 1000.0, 10000.0, 313.15, supply=SUPPLY)
+    assert info.value.field == "speed" and "finite" in info.value.allowed
+
+
+def test_skidding_solve_refuses_swapped_or_wrong_objects(qj1044, vg46):
+    # before: AttributeError from deep inside the solver
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, qj1044, SPEED, 1000.0, 10000.0, 313.15, supply=SUPPLY)
+    assert info.value.field == "lubricant" and info.value.value == "BallBearing"
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, 313.15, supply="jet")
+    assert info.value.field == "supply" and "OilSupply" in info.value.allowed
+
+
+def test_skidding_solve_takes_numpy_scalars_and_0d_arrays_as_floats(qj1044, vg46):
+    ref = skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, 313.15, supply=SUPPLY)
+    same = skidding.solve(qj1044, vg46, np.float32(SPEED).astype(np.float64), np.array(1000.0),
+                          np.int64(10000), np.array(313.15), supply=SUPPLY)
+    assert ref.converged and same.converged
+    assert same.cage_speed_ratio == pytest.approx(ref.cage_speed_ratio, rel=1e-9)
+
+
+def test_celsius_temperature_given_as_kelvin_says_the_unit(qj1044, vg46):
+    # 40 meant as degC: the viscosity law overflows; the message now says the unit
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, 40.0, supply=SUPPLY)
+    assert info.value.field == "temperature" and info.value.value == 40.0
+    assert "40 K is -233.15 degC" in info.value.allowed
