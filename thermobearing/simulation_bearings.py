@@ -201,7 +201,25 @@ def radial_load_contact(name: str, bearing: Any, steps: Any, kinematics: str) ->
     inner ring, so the solver has no traction to drive the cage and stops at that step
     ("the cage speed is undetermined", ``skidding.roller``). The error names the step and
     what to change (a radial load, as a rig's loading unit or the shaft weight applies, or
-    race control)."""
+    race control).
+
+    Likewise a turning step with neither radial nor axial load on a ball bearing under the
+    ball skidding solver: the centrifugal force holds the balls on the outer ring, none
+    touches the inner ring, and the solver stopped at that step with "no external load ...
+    (residual inf)", naming neither the step nor the bearing."""
+    if kinematics == "skidding" and hasattr(bearing, "ball_diameter"):
+        for i, s in enumerate(steps):
+            if s.speed != 0.0 and s.radial_load <= 0.0 and s.axial_load == 0.0:
+                raise InputError(
+                    f"schedule step {i} radial_load and axial_load (bearing {name!r}, "
+                    f"{bearing.name})", "0 kN and 0 kN",
+                    "a radial or axial load with kinematics = 'skidding': without load the "
+                    "centrifugal force holds the balls on the outer ring, none touches the "
+                    "inner ring, and the ball skidding solver has no traction to drive the "
+                    "cage (paper 002); give the load the rig or the mounting applies (a "
+                    "preload, at least the shaft's weight share) or set [models] kinematics "
+                    "= 'race_control'")
+        return
     if kinematics != "skidding" or getattr(bearing, "kind", None) != "cylindrical":
         return
     if not getattr(bearing, "diametral_clearance", 0.0) > 0.0:
