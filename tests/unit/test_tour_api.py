@@ -79,3 +79,20 @@ def test_celsius_temperature_given_as_kelvin_says_the_unit(qj1044, vg46):
         skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, 40.0, supply=SUPPLY)
     assert info.value.field == "temperature" and info.value.value == 40.0
     assert "40 K is -233.15 degC" in info.value.allowed
+
+
+def test_roller_result_counts_the_newton_steps_of_a_cold_start():
+    # before: ``iterations`` was the last load-distribution pass's count, 0 on most states
+    # (that pass started at the converged speeds), so the kinematics table said 0 for a cold
+    # start from 0.8 of the epicyclic cage speed
+    from thermobearing.bearing_config import load_bearing
+    from thermobearing.lubricant import load_lubricant
+
+    nu214, vg68 = load_bearing("NU214"), load_lubricant("ISO_VG68")
+    cold = skidding.solve(nu214, vg68, 1000.0 * math.pi / 30.0, 500.0, 0.0, 323.15)
+    assert cold.converged and cold.extras["start"].startswith("cold")
+    assert cold.iterations >= 1
+    again = skidding.solve(nu214, vg68, 1000.0 * math.pi / 30.0, 500.0, 0.0, 323.15,
+                           guess=cold)
+    assert again.iterations <= 1  # the warm start from the converged state needs none
+    assert again.cage_speed == pytest.approx(cold.cage_speed, rel=1e-8)

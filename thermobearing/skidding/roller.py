@@ -171,6 +171,7 @@ def solve_model(
     i_attempt = 0
     polished = False
     floor = math.inf  # round-off floor at the best iterate (0: Newton met tol)
+    steps = 0  # Newton steps of every pass and start (the result's ``iterations``)
     while i_attempt < len(attempts):
         start, fd_step, start_name = attempts[i_attempt]
         i_attempt += 1
@@ -191,6 +192,7 @@ def solve_model(
             x, e, norm, it, ok = _newton(_gapped(model, ld), omega, x, ld.inner_load, fb_whirl,
                                          psi, whirl_acceleration, tol=tol, max_iter=max_iter,
                                          fd_step=fd_step)
+            steps += it
             if not ok or float(np.max(np.abs(x - x_old))) <= 1e-8 * omega:
                 break
         if best is None or norm < best[2]:
@@ -214,12 +216,14 @@ def solve_model(
         x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, whirl_acceleration,
                                                 tol, max_iter, best[5], float(best[0][z]),
                                                 best[0][:z])
+        steps += it
         if ok:
             best = (x, e, norm, it, ok, ld)
             method = "bracketed"
             best_start = "bracketed"
         elif x is not None and e is not None and norm < best[2]:
             best = (x, e, norm, it, ok, ld)
+    best = (*best[:3], steps, *best[4:])
     x, e, norm, it, ok, ld = best
     if not ok:
         raise ConvergenceError(

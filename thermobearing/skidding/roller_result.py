@@ -36,7 +36,8 @@ class RollerSkiddingResult:
     inner, outer : LineContactForces of the two contacts.
     pocket_normal_force : (Z,) F_d [N] (positive: the roller pushes the cage forward).
     pocket_friction : (Z,) f_d [N].
-    converged : bool.  residual_norm : scaled residual norm [-].  iterations : Newton steps.
+    converged : bool.  residual_norm : scaled residual norm [-].  iterations : Newton steps taken
+        (every load-distribution pass and start).
     residual : (Z+1,) force residuals [N] at the solution.
     temperature [K], eta0 [Pa s] used.
     extras : ``method`` ("newton", "newton_round_off" or "bracketed"), ``start`` (the start
