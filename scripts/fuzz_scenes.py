@@ -228,9 +228,11 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
     outputs, what = _outputs(rng, kin)
     n_steps = int(rng.integers(1, 4)) if what == "transient" else int(rng.integers(1, 3))
     steps = []
+    # the roller skidding solver refuses a turning step without radial load (README)
+    radial_needed = roller and kin == "skidding"
     for _ in range(n_steps):
         step: dict[str, Any] = {"speed": _q(_speed(rng, limit_rpm), "rpm"),
-                                "radial_load": _q(_load(rng, c0), "N")}
+                                "radial_load": _q(_load(rng, c0, not radial_needed), "N")}
         # cylindrical roller bearings without a rib pair take no axial load
         step["axial_load"] = _q(0.0 if roller else _load(rng, c0), "N")
         step["duration"] = _q(_log_uniform(rng, 2.0, 600.0), "s")
