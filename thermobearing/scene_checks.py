@@ -1,18 +1,53 @@
 """Checks of a scene that run before anything is solved (``thermobearing check``, ``run``,
 ``sweep`` and ``Simulation.run`` call them): model names against their registries, the
-measured CSV's data, the ``[network]`` table against its template. Each error names the
-scene field, the value and what is allowed. Re-exported by :mod:`thermobearing.scene`.
+measured CSV's data, the ``[network]`` table against its template, the scene's temperatures
+against the lubricant's liquid range. Each error names the scene field, the value and what is
+allowed. Re-exported by :mod:`thermobearing.scene`.
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from .errors import InputError, UnknownNameError
+from .errors import InputError, UnknownNameError, ValidityWarning
 
 if TYPE_CHECKING:  # pragma: no cover
+    from .lubricant import Lubricant
     from .scene import Scene
+
+
+def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
+    """The scene's ambient, initial and oil-inlet temperatures [K] against the lubricant's
+    viscosity law: a temperature at which the law overflows, or (ASTM D341) gives more than
+    the 1e6 cSt that ends its stated range (the oil below its pour point), is an
+    :class:`InputError` naming the scene field. A bare number in a scene is kelvin, so
+    ``ambient_temperature = 35`` meant as degC lands here instead of failing later inside a
+    solver (a residual of 1e24, a Roelands overflow at some contact pressure)."""
+    from .lubricant import _D341_MAX_NU
+
+    fields = [("environment.ambient_temperature", scene.environment.ambient_temperature),
+              ("environment.initial_temperature", scene.environment.initial_temperature)]
+    if scene.supply.method != "oil_bath":  # a bath has no inlet (OilSupply)
+        fields.append(("supply.inlet_temperature", scene.supply.inlet_temperature))
+    for field, kelvin in fields:
+        t = float(kelvin)
+        shown = f"{t:g} K ({t - 273.15:g} degC)"
+        hint = "; a bare number in a scene is in K: write e.g. \"35 degC\""
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ValidityWarning)
+            try:
+                nu = float(lubricant.kinematic_viscosity(t))
+            except InputError:
+                raise InputError(field, shown, (
+                    f"a temperature at which the {lubricant.viscosity_law} viscosity law of "
+                    f"{lubricant.name} is finite (it overflows here){hint}")) from None
+        if lubricant.viscosity_law == "astm_d341" and nu > _D341_MAX_NU:
+            raise InputError(field, shown, (
+                f"a temperature at which {lubricant.name} is liquid: its ASTM D341 viscosity "
+                f"there is {nu * 1e6:.3g} cSt, beyond the law's 1e6 cSt range (the oil is "
+                f"below its pour point){hint}"))
 
 
 def check_model_names(scene: Scene) -> None:

@@ -122,7 +122,7 @@ class Simulation:
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
-        from .scene_checks import check_model_names
+        from .scene_checks import check_model_names, check_temperatures
 
         check_model_names(scene)  # the error names the scene field and the known names
         self.scene = scene
@@ -131,6 +131,7 @@ class Simulation:
         self.lubricant = load_lubricant(lub_spec.get("preset") or
                                         str(scene.resolve_path(lub_spec["path"])))
         self.supply = OilSupply.from_scene(scene.supply)
+        check_temperatures(scene, self.lubricant)  # a bare 35 in a scene is 35 K
         self.notes: list[str] = _supply_notes(scene)
         kin_name = scene.models.get("kinematics", "skidding")
         KINEMATICS.entry(kin_name)

@@ -96,3 +96,54 @@ def test_roller_result_counts_the_newton_steps_of_a_cold_start():
                            guess=cold)
     assert again.iterations <= 1  # the warm start from the converged state needs none
     assert again.cage_speed == pytest.approx(cold.cage_speed, rel=1e-8)
+
+
+_SCENE = """
+title = "tour"
+[[bearings]]
+name = "b1"
+preset = "QJ1044"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "33 L/min"
+inlet_temperature = {inlet}
+[environment]
+ambient_temperature = {ambient}
+[schedule]
+steps = [{{ duration = "3 min", speed = "1800 rpm", radial_load = "1 kN", axial_load = "10 kN" }}]
+[outputs]
+mode = "steady"
+want = ["losses"]
+"""
+
+
+@pytest.mark.parametrize(("inlet", "ambient", "field", "what"), [
+    # a bare number is SI: 35 meant as degC is 35 K (before: the run stopped inside the ball
+    # solver with ConvergenceError, residual 3.9e24, naming no scene field)
+    ('"35 degC"', "35", "environment.ambient_temperature", "overflows"),
+    ("35", '"35 degC"', "supply.inlet_temperature", "overflows"),
+    # ISO VG 46 at -73 degC: 5e8 cSt, beyond ASTM D341's 1e6 cSt (before: a Roelands
+    # overflow error at a contact pressure of 5.1e8 Pa)
+    ('"35 degC"', "200", "environment.ambient_temperature", "pour point"),
+])
+def test_scene_temperature_the_oil_cannot_take_names_the_field(inlet, ambient, field, what):
+    from thermobearing.scene import loads_scene
+    from thermobearing.simulation import Simulation
+
+    scene = loads_scene(_SCENE.format(inlet=inlet, ambient=ambient))
+    with pytest.raises(InputError) as info:
+        Simulation(scene)
+    assert info.value.field == field and info.value.value.endswith("degC)")
+    assert what in info.value.allowed and "a bare number in a scene is in K" in info.value.allowed
+
+
+def test_scene_at_a_cold_but_liquid_temperature_still_loads():
+    from thermobearing.scene import loads_scene
+    from thermobearing.simulation import Simulation
+
+    # -30 degC: ISO VG 46 is 1.7e4 cSt there, inside ASTM D341's range (up to 1e6 cSt)
+    scene = loads_scene(_SCENE.format(inlet='"35 degC"', ambient='"-30 degC"'))
+    nu = Simulation(scene).lubricant.kinematic_viscosity(243.15)
+    assert 1e-2 < nu < 1.0
