@@ -1,0 +1,29 @@
+"""Scene fuzzing (scripts/fuzz_scenes.py, seed 1 cases 32, 89, 135; seed 2 case 81): the
+default rib_friction source (coupled roller + cage dynamics of paper 003) on the
+CRB 50x75x16 with a viscous oil (ISO VG46 at 40 degC) diverges, and on the table path the
+runaway spins were tabulated on the fixed 50 rad/s spin step: at 5000 r/min the table
+asked for 3.9e6 spin nodes (10.9 GiB) and the run died of memory. A spin beyond
+SPIN_RUNAWAY x the inner raceway's drive now stops the table path first."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from thermobearing import load_lubricant
+from thermobearing.errors import ConvergenceError
+from thermobearing.geometry import load_bearing
+from thermobearing.skidding.roller_dynamics import build_model
+from thermobearing.skidding.roller_dynamics_coupled import SPIN_RUNAWAY, simulate_coupled
+
+
+def test_runaway_spin_stops_the_table_path():
+    bearing = load_bearing("CRB_50x75x16")
+    oil = load_lubricant("ISO_VG46")
+    m = build_model(bearing, oil, 5000.0 * math.pi / 30.0, 2865.92, 0.0,
+                    temperature=313.15, coupling="none")
+    with pytest.raises(ConvergenceError) as err:
+        simulate_coupled(m, bearing, oil, fallback=False)
+    assert "a roller spin ran to" in str(err.value)
+    assert f"beyond {SPIN_RUNAWAY:g} x the" in str(err.value)
