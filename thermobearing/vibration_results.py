@@ -40,8 +40,16 @@ def statistics(acceleration: Any) -> VibrationStatistics:
 
     PTP = max - min; RMS = sqrt(mean(a^2)) (about zero, as a vibration level);
     kurtosis = mean((a - mean)^4) / var^2 (Pearson's, 3 for a Gaussian signal).
+    ``acceleration``: a 1-D record of samples [m/s^2], e.g. a
+    :class:`~thermobearing.vibration.VibrationResult`'s ``acceleration_x`` (whose statistics
+    the result carries as ``statistics_x``).
     """
-    a = np.asarray(acceleration, dtype=float)
+    try:
+        a = np.asarray(acceleration, dtype=float)
+    except (TypeError, ValueError):  # a VibrationResult, a string...: say what is expected
+        raise InputError("acceleration", type(acceleration).__name__,
+                         "a 1-D record of samples [m/s^2] (of a VibrationResult: its "
+                         "acceleration_x; its statistics_x holds these statistics)") from None
     if a.ndim != 1 or a.size < 4 or not np.all(np.isfinite(a)):
         raise InputError("acceleration", f"shape {a.shape}", "a finite 1-D record")
     d = a - a.mean()

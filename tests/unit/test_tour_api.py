@@ -147,3 +147,19 @@ def test_scene_at_a_cold_but_liquid_temperature_still_loads():
     scene = loads_scene(_SCENE.format(inlet='"35 degC"', ambient='"-30 degC"'))
     nu = Simulation(scene).lubricant.kinematic_viscosity(243.15)
     assert 1e-2 < nu < 1.0
+
+
+def test_vibration_statistics_of_a_result_object_says_what_to_pass():
+    # passing the VibrationResult itself (before: TypeError from numpy's float conversion)
+    from thermobearing import vibration
+
+    class NotARecord:  # stands for a VibrationResult; the error depends only on the type
+        pass
+
+    with pytest.raises(InputError) as info:
+        vibration.statistics(NotARecord())
+    assert info.value.field == "acceleration" and info.value.value == "NotARecord"
+    assert "acceleration_x" in info.value.allowed and "statistics_x" in info.value.allowed
+    stats = vibration.statistics(np.sin(np.linspace(0.0, 20.0, 400)))
+    assert stats.ptp == pytest.approx(2.0, rel=1e-3) and stats.kurtosis == pytest.approx(1.5,
+                                                                                          rel=0.05)
