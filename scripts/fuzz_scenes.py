@@ -417,6 +417,19 @@ def _worker(conn: Any) -> None:
         conn.send((case.outcome, case.message, case.seconds, case.notes))
 
 
+def import_package() -> None:
+    """Import every module of the package in this process before the first worker is
+    forked: the workers share one snapshot of the code (a module imported lazily in a later
+    worker would be read from the working tree as it is then)."""
+    import importlib
+    import pkgutil
+
+    import thermobearing
+
+    for info in pkgutil.walk_packages(thermobearing.__path__, "thermobearing."):
+        importlib.import_module(info.name)
+
+
 class Runner:
     """One worker process (forked: it inherits the imported package) that runs the cases
     one at a time; a case over the time limit is killed with its worker (compiled loops do
@@ -507,6 +520,7 @@ def main(argv: list[str] | None = None) -> int:
     out_dir = args.out or Path(tempfile.mkdtemp(prefix="fuzz_scenes_"))
     out_dir.mkdir(parents=True, exist_ok=True)
     cases = []
+    import_package()
     runner = Runner()
     for i in range(args.n):
         doc, desc = make_scene(rng, catalogue, lubricants)
