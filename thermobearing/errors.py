@@ -116,9 +116,19 @@ def check_finite(field: str, value: Any) -> None:
         if not math.isfinite(value):
             raise InputError(field, value, "a finite number")
         return
-    arr = np.asarray(value, dtype=float)
+    arr = as_floats(field, value)
     if not np.all(np.isfinite(arr)):
         raise InputError(field, value, "a finite number")
+
+
+def as_floats(field: str, value: Any) -> np.ndarray:
+    """``np.asarray(value, dtype=float)``, or an :class:`InputError` naming ``field`` when
+    ``value`` is not numbers at all (a unit string such as ``"3 kN"``, None, an object)."""
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(field, value, "a number in SI units (unit strings such as '3 kN' "
+                         "are read only from scene and preset files)") from None
 
 
 def check_positive(field: str, value: Any, *, allow_zero: bool = False) -> None:

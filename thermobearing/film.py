@@ -32,7 +32,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from .errors import InputError, ValidityWarning, check_finite, check_positive
+from .errors import InputError, ValidityWarning, as_floats, check_finite, check_positive
 from .registry import Registry
 
 FILM: Registry[Callable[..., Any]] = Registry(
@@ -77,7 +77,7 @@ def _warn_range(model: str, **groups: tuple[Any, tuple[float, float]]) -> None:
 def _common(entrainment_speed: Any, dynamic_viscosity: Any, pressure_viscosity_coefficient: Any,
             load: Any, reduced_radius_x: Any, effective_modulus: Any
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    u = np.asarray(entrainment_speed, dtype=float)
+    u = as_floats("entrainment_speed", entrainment_speed)
     check_positive("entrainment_speed", np.abs(u), allow_zero=True)
     check_positive("dynamic_viscosity", dynamic_viscosity)
     check_positive("pressure_viscosity_coefficient", pressure_viscosity_coefficient,

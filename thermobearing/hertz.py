@@ -48,7 +48,7 @@ import numpy as np
 from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
-from .errors import ConvergenceError, InputError, ValidityWarning, check_positive
+from .errors import ConvergenceError, InputError, ValidityWarning, as_floats, check_positive
 
 POINT_METHODS = ("exact", "hamrock_brewe", "brewe_hamrock_1977")
 _Q = math.pi / 2.0 - 1.0
@@ -249,8 +249,8 @@ def _reduced_unchecked(rx: Any, ry: Any) -> tuple[Any, Any]:
 
 
 def _reduced(rx: Any, ry: Any) -> tuple[np.ndarray, np.ndarray]:
-    rx_a = np.asarray(rx, dtype=float)
-    ry_a = np.asarray(ry, dtype=float)
+    rx_a = as_floats("rx", rx)
+    ry_a = as_floats("ry", ry)
     check_positive("rx", rx_a)
     if np.any(np.isnan(ry_a)) or np.any(ry_a <= 0):
         raise InputError("ry", ry, "a value > 0 (inf for a cylinder)")
@@ -279,11 +279,10 @@ def point_contact(load: Any, rx: Any, ry: Any, effective_modulus: Any,
     ValidityWarning when the half-width along x exceeds :data:`HERTZ_SMALL_CONTACT` R_x.
     References: Hamrock & Brewe 1983 (``hamrock_brewe1983``); Harris & Kotzalas 2007.
     """
-    w = np.asarray(load, dtype=float)
+    w = as_floats("load", load)
     check_positive("load", w, allow_zero=True)
     check_positive("effective_modulus", effective_modulus)
-    if np.any(np.isinf(np.asarray(rx, dtype=float))) or np.any(
-            np.isinf(np.asarray(ry, dtype=float))):
+    if np.any(np.isinf(as_floats("rx", rx))) or np.any(np.isinf(as_floats("ry", ry))):
         raise InputError("ry", ry, "finite radii (use line_contact for a cylinder)")
     r, ratio = _reduced(rx, ry)
     k, big_k, big_e = ellipticity(ratio, method)
@@ -393,7 +392,7 @@ def line_contact(load: Any, length: Any, rx: Any, effective_modulus: Any, *,
     :func:`palmgren_approach`); the elastic approach of a 2-D line contact is not defined
     without the body sizes.
     """
-    q = np.asarray(load, dtype=float)
+    q = as_floats("load", load)
     check_positive("load", q, allow_zero=True)
     check_positive("length", length)
     check_positive("rx", rx)

@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from thermobearing import skidding
+from thermobearing import ehl, film, hertz, skidding
 from thermobearing.errors import InputError
 from thermobearing.state import OilSupply
 
@@ -163,3 +163,25 @@ def test_vibration_statistics_of_a_result_object_says_what_to_pass():
     stats = vibration.statistics(np.sin(np.linspace(0.0, 20.0, 400)))
     assert stats.ptp == pytest.approx(2.0, rel=1e-3) and stats.kurtosis == pytest.approx(1.5,
                                                                                           rel=0.05)
+
+
+E_STEEL = 2.235e11  # E' of the QJ1044's steel pair [Pa]
+
+
+@pytest.mark.parametrize(("function", "args", "field"), [
+    (hertz.point_contact, ("5 kN", 0.0158, 0.3085, E_STEEL), "load"),
+    (hertz.point_contact, (5e3, "16 mm", 0.3085, E_STEEL), "rx"),
+    (hertz.line_contact, ("3 kN", 0.013, 0.0137, E_STEEL), "load"),
+    (film.hamrock_dowson_1977_central, ("13 m/s", 0.04, 2.3e-8, 5e3, 0.0158, 0.3085),
+     "entrainment_speed"),
+    (film.hamrock_dowson_1977_central, (13.0, "40 cP", 2.3e-8, 5e3, 0.0158, 0.3085),
+     "dynamic_viscosity"),
+    (ehl.solve_line_contact, ("3 kN", 0.0137, E_STEEL, 5.0, 0.04), "load_per_length"),
+])
+def test_physics_functions_name_a_unit_string_argument(function, args, field):
+    # before: numpy's "ValueError: could not convert string to float: '5 kN'", no field
+    kwargs = {"effective_modulus": E_STEEL} if function is film.hamrock_dowson_1977_central \
+        else {"alpha": 2e-8} if function is ehl.solve_line_contact else {}
+    with pytest.raises(InputError) as info:
+        function(*args, **kwargs)
+    assert info.value.field == field and "a number in SI units" in info.value.allowed
