@@ -104,7 +104,7 @@ def envelope_of(bearing: Any) -> BearingEnvelope:
         kind = bearing.kind
         d, D, B = bearing.bore, bearing.outer_diameter, bearing.width
     except AttributeError:
-        raise InputError("bearing", bearing, "a BallBearing, RollerBearing or "
+        raise InputError("bearing", type(bearing).__name__, "a BallBearing, RollerBearing or "
                          "BearingEnvelope (kind, bore, outer_diameter, width)") from None
     element = getattr(bearing, "ball_diameter", None) or getattr(bearing, "roller_diameter", None)
     return BearingEnvelope(kind=kind, bore=d, outer_diameter=D, width=B,
@@ -547,7 +547,23 @@ def global_friction(
     (:class:`thermobearing.state.OilSupply`) sets the lubrication method and, for the SKF
     model, the oil-bath level.
     """
+    import inspect
+
+    from .lubricant import Lubricant
+    from .state import OilSupply
+
     func = GLOBAL_FRICTION.get(model)
+    if not isinstance(lubricant, Lubricant):
+        raise InputError("lubricant", type(lubricant).__name__,
+                         "a Lubricant (thermobearing.lubricant.load_lubricant)")
+    if supply is not None and not isinstance(supply, OilSupply):
+        raise InputError("supply", supply, "an OilSupply (thermobearing.state.OilSupply) or None")
+    known = [name for name, par in inspect.signature(func).parameters.items()
+             if par.kind is inspect.Parameter.KEYWORD_ONLY and name != "lubrication"]
+    unknown = sorted(set(options) - set(known))
+    if unknown:
+        raise InputError(f"{model} options", unknown, "the options of "
+                         f"{model}: {', '.join(known)}")
     if supply is not None:
         lubrication = supply.method
         if model == "skf_four_term" and getattr(supply, "level", None) is not None:

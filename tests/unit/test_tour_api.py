@@ -185,3 +185,25 @@ def test_physics_functions_name_a_unit_string_argument(function, args, field):
     with pytest.raises(InputError) as info:
         function(*args, **kwargs)
     assert info.value.field == field and "a number in SI units" in info.value.allowed
+
+
+def test_global_friction_names_wrong_objects_and_unknown_options(qj1044, vg46):
+    from thermobearing.global_friction import global_friction
+
+    # before: AttributeError ('BallBearing' has no kinematic_viscosity; 'str' has no method)
+    # and TypeError (palmgren() got an unexpected keyword argument 'f2')
+    with pytest.raises(InputError) as info:
+        global_friction("palmgren", qj1044, qj1044, 313.15, SPEED, 1e3, 1e4)
+    assert info.value.field == "lubricant" and info.value.value == "BallBearing"
+    with pytest.raises(InputError) as info:
+        global_friction("palmgren", qj1044, vg46, 313.15, SPEED, 1e3, 1e4, supply="jet")
+    assert info.value.field == "supply"
+    with pytest.raises(InputError) as info:
+        global_friction("palmgren", qj1044, vg46, 313.15, SPEED, 1e3, 1e4, f2=3.0)
+    assert info.value.field == "palmgren options" and info.value.value == ["f2"]
+    assert "f0, f1" in info.value.allowed
+    with pytest.raises(InputError) as info:  # the bearing's repr was the whole message
+        global_friction("palmgren", vg46, vg46, 313.15, SPEED, 1e3, 1e4)
+    assert info.value.field == "bearing" and info.value.value == "Lubricant"
+    res = global_friction("palmgren", qj1044, vg46, 313.15, SPEED, 1e3, 1e4, f0=2.0)
+    assert res.details["f0"] == 2.0 and res.power == pytest.approx(res.torque * SPEED)
