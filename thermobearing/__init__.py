@@ -4,9 +4,23 @@ Public entry points (stable):
 
 - :func:`load_bearing` -- a bearing preset name (``"QJ1044"``) or a TOML path.
 - :func:`load_lubricant` -- a lubricant preset name (``"ISO_VG46"``) or a TOML path.
+- :class:`OilSupply` (:mod:`thermobearing.state`) -- method, flow [m^3/s], inlet [K].
+- :func:`load_scene` / :func:`loads_scene` (:mod:`thermobearing.scene`) -- a scene from a
+  preset name, a TOML path or TOML text; :class:`Simulation`
+  (:mod:`thermobearing.simulation`) runs it: ``Simulation(scene).run()`` returns
+  :class:`~thermobearing.results.Results` (``tables``: DataFrames with units in the column
+  names; ``write(folder)``). ``scene.with_changes(supply=dataclasses.replace(scene.supply,
+  flow=2.5e-4))`` changes a field in code; :func:`thermobearing.sweep.run_sweep` with
+  :func:`thermobearing.sweep.parse_set` runs a sweep as ``thermobearing sweep`` does.
 
-Everything inside is SI (m, kg, s, K, N, Pa, W, rad); unit strings are accepted only in
-configs and on the command line (see :mod:`thermobearing.units`).
+The physics, one module each: :func:`thermobearing.skidding.solve` (cage and element speeds of
+one operating point), :mod:`thermobearing.hertz`, :mod:`thermobearing.film`,
+:mod:`thermobearing.traction`, :mod:`thermobearing.global_friction`,
+:mod:`thermobearing.ehl`, :mod:`thermobearing.vibration`, :mod:`thermobearing.signal`.
+
+Everything inside is SI (m, kg, s, K, N, Pa, W, rad: 1800 r/min is 188.5 rad/s, 40 degC is
+313.15 K); unit strings are accepted only in configs and on the command line (see
+:mod:`thermobearing.units`).
 """
 
 from __future__ import annotations
@@ -36,13 +50,21 @@ def load_lubricant(name_or_path: str) -> Lubricant:
     return _load(name_or_path)
 
 
+#: lazily imported public names -> their module (importing the package stays cheap)
+_LAZY = {"BallBearing": "geometry", "RollerBearing": "geometry", "Lubricant": "lubricant",
+         "OilSupply": "state", "Scene": "scene", "load_scene": "scene",
+         "loads_scene": "scene", "Simulation": "simulation", "Results": "results"}
+
+__all__ = ["__version__", "load_bearing", "load_lubricant", *_LAZY]
+
+
 def __getattr__(name: str) -> Any:  # lazy access to the main classes
-    if name in ("BallBearing", "RollerBearing"):
-        from . import geometry
+    if name in _LAZY:
+        import importlib
 
-        return getattr(geometry, name)
-    if name == "Lubricant":
-        from . import lubricant
+        return getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+    raise AttributeError(f"module 'thermobearing' has no attribute {name!r}")
 
-        return lubricant.Lubricant
-    raise AttributeError(name)
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

@@ -207,3 +207,22 @@ def test_global_friction_names_wrong_objects_and_unknown_options(qj1044, vg46):
     assert info.value.field == "bearing" and info.value.value == "Lubricant"
     res = global_friction("palmgren", qj1044, vg46, 313.15, SPEED, 1e3, 1e4, f0=2.0)
     assert res.details["f0"] == 2.0 and res.power == pytest.approx(res.torque * SPEED)
+
+
+def test_package_exports_the_python_api_its_docstring_names():
+    import dataclasses
+
+    import thermobearing
+
+    missing = [n for n in thermobearing.__all__ if not hasattr(thermobearing, n)]
+    assert not missing
+    assert thermobearing.Simulation.__module__ == "thermobearing.simulation"
+    # the docstring's way to change a scene field in code, then run both
+    scene = thermobearing.loads_scene(_SCENE.format(inlet='"35 degC"', ambient='"35 degC"'))
+    less_oil = scene.with_changes(supply=dataclasses.replace(scene.supply, flow=2.5e-4))
+    assert less_oil.supply.flow == 2.5e-4 and scene.supply.flow == pytest.approx(5.5e-4)
+    base, changed = (thermobearing.Simulation(s).run().tables["losses"]
+                     for s in (scene, less_oil))
+    assert "power [W]" in base.columns
+    # less oil in the bearing: less churning (paper 002's loss falls with the flow)
+    assert changed["power [W]"].sum() < base["power [W]"].sum()
