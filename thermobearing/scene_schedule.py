@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError
+from .errors import InputError, check_finite, check_positive
 from .scene_values import _check_keys, _fmt, _quantity, _require, _table, _unit_of
 
 
@@ -23,6 +23,19 @@ class Step:
     speed: float
     radial_load: float
     axial_load: float
+
+    def __post_init__(self) -> None:
+        # the rules of a scene's steps also for a Step built or replaced in code
+        # (dataclasses.replace(step, radial_load=-10.0) was reported as "0 kN" by a later
+        # check, a negative duration ran)
+        for key in _STEP_KEYS:
+            check_finite(f"step.{key}", getattr(self, key))
+            object.__setattr__(self, key, float(getattr(self, key)))
+        check_positive("step.duration", self.duration)
+        check_positive("step.speed", self.speed, allow_zero=True)
+        check_positive("step.radial_load", self.radial_load, allow_zero=True)
+        # axial: any sign here (a bearing's own steps carry a negative load_share's reversed
+        # load, simulation_bearings); a scene's steps are >= 0 (_make_step)
 
 
 _STEP_KEYS = ("duration", "speed", "radial_load", "axial_load")

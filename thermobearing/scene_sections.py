@@ -13,7 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from typing import Any
 
-from .errors import InputError, UnknownNameError
+from .errors import InputError, UnknownNameError, check_positive
 from .operating_checks import STRESS_FAMILIES, CheckLimits, check_limit_value
 from .scene_values import _check_keys, _fmt, _quantity, _require, _table, _unit_of
 from .units import to_si
@@ -352,6 +352,21 @@ class Outputs:
     want: tuple[str, ...] = ("temperatures", "losses", "kinematics", "energy", "report")
     interval: float | None = None
 
+    def __post_init__(self) -> None:
+        # here, not in from_dict only: an Outputs built or replaced in code
+        # (dataclasses.replace(scene.outputs, want=("lossess",))) ran a film-only scene
+        if self.mode not in OUTPUT_MODES:
+            raise UnknownNameError("outputs.mode", self.mode, OUTPUT_MODES)
+        if isinstance(self.want, str) or not isinstance(self.want, list | tuple):
+            raise InputError("outputs.want", self.want,
+                             "an array of output names, e.g. [\"temperatures\", \"losses\"]")
+        for w in self.want:
+            if w not in OUTPUT_KINDS:
+                raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
+        object.__setattr__(self, "want", tuple(self.want))
+        if self.interval is not None:
+            check_positive("outputs.interval", self.interval)
+
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Outputs:
         _check_keys("outputs", data, ("mode", "want", "interval"))
@@ -360,18 +375,8 @@ class Outputs:
             interval = _quantity(data["interval"], "time", "outputs.interval")
             if not interval > 0:
                 raise InputError("outputs.interval", data["interval"], "a time > 0")
-        mode = data.get("mode", "transient")
-        if mode not in OUTPUT_MODES:
-            raise UnknownNameError("outputs.mode", mode, OUTPUT_MODES)
-        raw_want = data.get("want", cls.want)
-        if isinstance(raw_want, str) or not isinstance(raw_want, list | tuple):
-            raise InputError("outputs.want", raw_want,
-                             "an array of output names, e.g. [\"temperatures\", \"losses\"]")
-        want = tuple(raw_want)
-        for w in want:
-            if w not in OUTPUT_KINDS:
-                raise UnknownNameError("outputs.want", w, OUTPUT_KINDS)
-        return cls(mode=mode, want=want, interval=interval)
+        return cls(mode=data.get("mode", "transient"), want=data.get("want", cls.want),
+                   interval=interval)
 
     def to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {"mode": self.mode, "want": list(self.want)}

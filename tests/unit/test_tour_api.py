@@ -226,3 +226,38 @@ def test_package_exports_the_python_api_its_docstring_names():
     assert "power [W]" in base.columns
     # less oil in the bearing: less churning (paper 002's loss falls with the flow)
     assert changed["power [W]"].sum() < base["power [W]"].sum()
+
+
+@pytest.mark.parametrize(("changes", "field"), [
+    ({"want": ("lossess",)}, "outputs.want"),       # before: ran a film-only scene
+    ({"want": "losses"}, "outputs.want"),           # before: read letter by letter
+    ({"mode": "stedy"}, "outputs.mode"),            # before: ran as steady
+    ({"interval": -10.0}, "outputs.interval"),
+])
+def test_outputs_changed_in_code_are_checked(changes, field):
+    import dataclasses
+
+    from thermobearing.scene import Outputs
+
+    with pytest.raises(InputError) as info:
+        dataclasses.replace(Outputs(), **changes)
+    assert info.value.field == field
+
+
+@pytest.mark.parametrize(("changes", "field"), [
+    ({"duration": -10.0}, "step.duration"),         # before: ran
+    ({"speed": -10.0}, "step.speed"),
+    ({"radial_load": -10.0}, "step.radial_load"),   # before: reported as "0 kN" by a check
+    ({"speed": "1800 rpm"}, "step.speed"),          # before: TypeError in the table rows
+])
+def test_steps_changed_in_code_are_checked(changes, field):
+    import dataclasses
+
+    from thermobearing.scene import Step
+
+    step = Step(duration=180.0, speed=SPEED, radial_load=1e3, axial_load=0.0)
+    with pytest.raises(InputError) as info:
+        dataclasses.replace(step, **changes)
+    assert info.value.field == field
+    # a bearing's own step may carry a reversed axial load (a negative load_share)
+    assert dataclasses.replace(step, axial_load=-5e3).axial_load == -5e3
