@@ -37,6 +37,9 @@ def _variant(base: Scene, *, speed: float | None = None, flow: float | None = No
         d["outputs"]["mode"] = mode
     if single_bearing:
         d["bearings"] = d["bearings"][:1]
+        # one bearing sits on no shaft link (a link joins two or more)
+        if isinstance(d.get("network"), dict):
+            d["network"].pop("shaft_link", None)
     if kinematics is not None:
         d.setdefault("models", {})["kinematics"] = kinematics
     return Scene.from_dict(d, Path(base.base_dir) if base.base_dir else None)
