@@ -301,6 +301,24 @@ class Solver:
     chunk: float = 90.0
     chunk_viscosity_limit: float = 0.25
 
+    #: field -> (what is allowed, exclusive upper bound); the lower bound is 0, exclusive
+    _LIMITS = {"rtol": ("a relative tolerance in (0, 1)", 1.0),
+               "atol": ("an absolute tolerance > 0 (K)", math.inf),
+               "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0),
+               "chunk_viscosity_limit": ("a relative viscosity change > 0", math.inf),
+               "max_step": ("a time > 0 [s]", math.inf), "chunk": ("a time > 0 [s]", math.inf)}
+
+    def __post_init__(self) -> None:
+        # the limits of from_dict also for a Solver built or replaced in code
+        if not isinstance(self.stepper, str):
+            raise InputError("solver.stepper", self.stepper, "a stepper name (a string)")
+        for key, (allowed, high) in self._LIMITS.items():
+            v = getattr(self, key)
+            if isinstance(v, bool) or not isinstance(v, int | float) or not (
+                    math.isfinite(v) and 0.0 < v < high):
+                raise InputError(f"solver.{key}", v, allowed)
+            object.__setattr__(self, key, float(v))
+
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Solver:
         names = [f.name for f in fields(cls)]
@@ -310,10 +328,7 @@ class Solver:
             if not isinstance(data["stepper"], str):
                 raise InputError("solver.stepper", data["stepper"], "a stepper name (a string)")
             kw["stepper"] = data["stepper"]
-        limits = {"rtol": ("a relative tolerance in (0, 1)", 1.0),
-                  "atol": ("an absolute tolerance > 0 (K)", math.inf),
-                  "kinematics_tolerance": ("a relative viscosity change in (0, 1)", 1.0),
-                  "chunk_viscosity_limit": ("a relative viscosity change > 0", math.inf)}
+        limits = {k: v for k, v in cls._LIMITS.items() if k not in ("max_step", "chunk")}
         for key, (allowed, high) in limits.items():
             if key in data:
                 raw = data[key]

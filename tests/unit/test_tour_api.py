@@ -261,3 +261,19 @@ def test_steps_changed_in_code_are_checked(changes, field):
     assert info.value.field == field
     # a bearing's own step may carry a reversed axial load (a negative load_share)
     assert dataclasses.replace(step, axial_load=-5e3).axial_load == -5e3
+
+
+@pytest.mark.parametrize(("changes", "field"), [
+    ({"rtol": -1.0}, "solver.rtol"),        # before: accepted (a scene file refuses it)
+    ({"chunk": 0.0}, "solver.chunk"),
+    ({"kinematics_tolerance": 1.5}, "solver.kinematics_tolerance"),
+    ({"stepper": 3}, "solver.stepper"),
+])
+def test_solver_settings_changed_in_code_are_checked(changes, field):
+    import dataclasses
+
+    from thermobearing.scene import Solver
+
+    with pytest.raises(InputError) as info:
+        dataclasses.replace(Solver(), **changes)
+    assert info.value.field == field
