@@ -59,10 +59,14 @@ __all__ = ["__version__", "load_bearing", "load_lubricant", *_LAZY]
 
 
 def __getattr__(name: str) -> Any:  # lazy access to the main classes
-    if name in _LAZY:
-        import importlib
+    import importlib
+    import importlib.util
 
+    if name in _LAZY:
         return getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+    if not name.startswith("_") and importlib.util.find_spec(f"{__name__}.{name}"):
+        # thermobearing.skidding.solve(...) after a bare `import thermobearing`
+        return importlib.import_module(f".{name}", __name__)
     raise AttributeError(f"module 'thermobearing' has no attribute {name!r}")
 
 

@@ -277,3 +277,17 @@ def test_solver_settings_changed_in_code_are_checked(changes, field):
     with pytest.raises(InputError) as info:
         dataclasses.replace(Solver(), **changes)
     assert info.value.field == field
+
+
+def test_physics_modules_resolve_after_a_bare_package_import():
+    # the README's thermobearing.skidding.solve(...) after `import thermobearing` (a fresh
+    # interpreter: in this one the test suite has imported the submodules already)
+    import subprocess
+    import sys
+
+    code = ("import thermobearing as tb; print(tb.skidding.solve.__name__, "
+            "tb.global_friction.global_friction.__name__); tb.no_such_module")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert out.stdout.split() == ["solve", "global_friction"]
+    assert "has no attribute 'no_such_module'" in out.stderr
