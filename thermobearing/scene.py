@@ -149,6 +149,13 @@ class Scene:
     _TOP = ("title", "source", "bearings", "lubricant", "supply", "environment", "schedule",
             "models", "network", "solver", "outputs", "measured", "checks")
 
+    def __post_init__(self) -> None:
+        # a scene changed in code (with_changes) keeps its bearings' names unique: they
+        # name the node groups of the network and the rows of every table
+        names = [b.name for b in self.bearings]
+        if len(set(names)) != len(names):
+            raise InputError("bearings[].name", names, "unique names")
+
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Scene:
         """Validate and convert a parsed TOML document."""

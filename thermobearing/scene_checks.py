@@ -35,6 +35,8 @@ def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
         t = float(kelvin)
         shown = f"{t:g} K ({t - 273.15:g} degC)"
         hint = "; a bare number in a scene is in K: write e.g. \"35 degC\""
+        if not t > 0.0:
+            raise InputError(field, shown, "a temperature above absolute zero" + hint)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ValidityWarning)
             try:

@@ -48,6 +48,22 @@ class BearingSpec:
     overrides: Mapping[str, Any] = field(default_factory=dict)
     load_share: Mapping[str, float] = field(default_factory=dict)
 
+    def __post_init__(self) -> None:
+        # the rules of a [[bearings]] table also for a BearingSpec built or replaced in code
+        # (a load_share of -0.5 or "0.5" reached the solvers)
+        sec = f"bearings[{self.name}]"
+        if (self.preset is None) == (self.path is None):
+            raise InputError(f"{sec}.preset", self.preset, "exactly one of 'preset' or 'path'")
+        _check_keys(f"{sec}.load_share", self.load_share, ("radial", "axial"))
+        for key, value in self.load_share.items():
+            where = f"{sec}.load_share.{key}"
+            if isinstance(value, bool) or not isinstance(value, int | float) \
+                    or not math.isfinite(value):
+                raise InputError(where, value, "a number: the fraction of the schedule's "
+                                 f"{key} load this bearing carries (1 = all of it)")
+            if key == "radial" and value < 0:
+                raise InputError(where, value, "a fraction >= 0 of the radial load")
+
     @property
     def radial_share(self) -> float:
         return float(self.load_share.get("radial", 1.0))

@@ -291,3 +291,29 @@ def test_physics_modules_resolve_after_a_bare_package_import():
                          timeout=300)
     assert out.stdout.split() == ["solve", "global_friction"]
     assert "has no attribute 'no_such_module'" in out.stderr
+
+
+def test_bearings_and_temperatures_changed_in_code_are_checked():
+    import dataclasses
+
+    from thermobearing.scene import BearingSpec, load_scene
+    from thermobearing.simulation import Simulation
+
+    spec = BearingSpec(name="de", preset="QJ1044")
+    for share, allowed in (({"radial": -0.5}, ">= 0"), ({"radial": "0.5"}, "a number"),
+                           ({"axal": 0.0}, "")):
+        with pytest.raises(InputError) as info:  # before: reached the solvers
+            dataclasses.replace(spec, load_share=share)
+        assert info.value.field.startswith("bearings[de].load_share") \
+            and allowed in info.value.allowed
+    assert dataclasses.replace(spec, load_share={"axial": -1.0}).axial_share == -1.0
+    scene = load_scene("qj1044_rig")
+    with pytest.raises(InputError) as info:  # duplicate names: accepted before
+        scene.with_changes(bearings=(scene.bearings[0], scene.bearings[0]))
+    assert info.value.field == "bearings[].name"
+    cold = scene.with_changes(environment=dataclasses.replace(
+        scene.environment, ambient_temperature=-5.0, initial_temperature=-5.0))
+    with pytest.raises(InputError) as info:
+        Simulation(cold)
+    assert info.value.field == "environment.ambient_temperature"
+    assert "above absolute zero" in info.value.allowed
