@@ -274,15 +274,23 @@ class Simulation:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ValidityWarning)
             try:
-                res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
-                         oil_temperature=temps["oil"], supply=self.supply, guess=guess,
-                         options=b.kin_options)
-            except ConvergenceError:
-                if guess is None:
-                    raise
-                res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
-                         oil_temperature=temps["oil"], supply=self.supply, guess=None,
-                         options=b.kin_options)
+                try:
+                    res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
+                             oil_temperature=temps["oil"], supply=self.supply, guess=guess,
+                             options=b.kin_options)
+                except ConvergenceError:
+                    if guess is None:
+                        raise
+                    res = fn(b.bearing, self.lubricant, op, contact_temperature=t_contact,
+                             oil_temperature=temps["oil"], supply=self.supply, guess=None,
+                             options=b.kin_options)
+            except ConvergenceError as exc:
+                # the solver's own error names neither the bearing nor the step
+                raise ConvergenceError(
+                    f"kinematics ({b.kinematics_name}) of {b.name}", exc.residual,
+                    f"at step {step_index} ({step.speed * 30.0 / np.pi:.6g} r/min, radial "
+                    f"{op.radial_load:.6g} N, axial {op.axial_load:.6g} N, contacts at "
+                    f"{t_contact - 273.15:.1f} degC): {exc}", {"step": step_index}) from exc
         self._note(caught, b.name, step_index)
         if not res.converged:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
