@@ -178,6 +178,9 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     for name, v in (("shaft_frequency", shaft_frequency), ("csr_theoretical", csr_theoretical)):
         if not (math.isfinite(float(v)) and float(v) > 0):
             raise InputError(name, v, "a finite value > 0")
+    if not csr_theoretical < 0.5:  # (1 - gamma)/2 with 0 < gamma < 1
+        raise InputError("csr_theoretical", csr_theoretical, "a ratio in (0, 0.5): "
+                         "(1 - D cos(alpha)/d_m)/2, not a percentage")
     if int(n_balls) != n_balls or n_balls < 1:
         raise InputError("n_balls", n_balls, "an integer >= 1")
     if len(search) != 2:
@@ -204,7 +207,8 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
                  if ball_pass_harmonics > 1 else "")
         raise InputError("sampling_rate", fs, f"a rate above {4 * f_top:g} Hz for lines up to "
                          f"{f_top:g} Hz (a demodulation band as wide as the lines must fit "
-                         f"above them){fewer}")
+                         f"above them){fewer}; the lines follow shaft_frequency = "
+                         f"{float(shaft_frequency):g} Hz (r/min / 60)")
     duration = arr.size / fs
     if duration * f_lo < 3:
         raise InputError("signal.duration", duration,

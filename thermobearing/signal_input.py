@@ -59,7 +59,12 @@ def check_signal(x, sampling_rate: float, field: str = "signal") -> np.ndarray:
     if not (isinstance(sampling_rate, int | float | np.floating | np.integer)
             and math.isfinite(float(sampling_rate)) and float(sampling_rate) > 0):
         raise InputError(f"{field}.sampling_rate", sampling_rate, "a finite rate > 0 Hz")
-    arr = np.asarray(x, dtype=float)
+    try:
+        arr = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):  # a VibrationResult, a file name...: say what is expected
+        raise InputError(field, type(x).__name__, "a one-dimensional record of samples (of a "
+                         "VibrationResult: its acceleration_x; a file: load_acceleration)"
+                         ) from None
     if arr.ndim != 1:
         raise InputError(f"{field}.shape", arr.shape, "a one-dimensional record")
     if arr.size < MIN_SAMPLES:

@@ -258,6 +258,10 @@ def simulate(params: VibrationParameters, shaft_speed: float, radial_load: float
     """
     if method not in METHODS:
         raise InputError("method", method, f"one of {METHODS}")
+    if not isinstance(params, VibrationParameters):  # e.g. the BallBearing itself
+        raise InputError("params", type(params).__name__,
+                         "a VibrationParameters (VibrationParameters.from_bearing(bearing, "
+                         "inner_ring_mass=..., support_damping=...) or paper004_parameters())")
     check_positive("shaft_speed", shaft_speed)
     check_positive("radial_load", radial_load)
     check_positive("duration", duration)

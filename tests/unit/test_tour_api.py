@@ -317,3 +317,26 @@ def test_bearings_and_temperatures_changed_in_code_are_checked():
         Simulation(cold)
     assert info.value.field == "environment.ambient_temperature"
     assert "above absolute zero" in info.value.allowed
+
+
+def test_vibration_and_signal_name_the_mistaken_argument():
+    from thermobearing import signal, vibration
+    from thermobearing.bearing_config import load_bearing
+
+    x = np.sin(np.linspace(0.0, 2000.0, 25600))
+    # a VibrationResult passed as the record (before: TypeError from numpy)
+    with pytest.raises(InputError) as info:
+        signal.estimate_cage_speed(object(), 25600.0, 30.0, 7, 0.37)
+    assert info.value.field == "signal" and "acceleration_x" in info.value.allowed
+    # the theoretical CSR as a percentage (before: an error about the sampling rate)
+    with pytest.raises(InputError) as info:
+        signal.estimate_cage_speed(x, 25600.0, 30.0, 7, 36.8)
+    assert info.value.field == "csr_theoretical" and "(0, 0.5)" in info.value.allowed
+    # r/min given as Hz: the sampling-rate error now names the shaft frequency it used
+    with pytest.raises(InputError) as info:
+        signal.estimate_cage_speed(x, 25600.0, 1800.0, 7, 0.37)
+    assert "shaft_frequency = 1800 Hz (r/min / 60)" in info.value.allowed
+    # the bearing where its vibration parameters are expected (before: AttributeError)
+    with pytest.raises(InputError) as info:
+        vibration.simulate(load_bearing("SKF6304"), 188.5, 500.0, traction=None)
+    assert info.value.field == "params" and "from_bearing" in info.value.allowed
