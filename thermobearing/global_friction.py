@@ -38,6 +38,13 @@ from scipy.interpolate import PchipInterpolator
 from .errors import InputError, UnknownNameError, check_positive, check_range
 from .registry import Registry
 
+__all__ = [
+    "GLOBAL_FRICTION", "KINDS", "LUBRICATION", "PALMGREN_FACTORS", "SKF_KL", "SKF_KZ", "SKF_RS",
+    "BearingEnvelope", "GlobalFrictionResult", "envelope_of", "global_friction",
+    "infer_skf_series", "palmgren", "palmgren_equivalent_load", "skf_drag_factor",
+    "skf_four_term", "skf_geometry_variables",
+]
+
 GLOBAL_FRICTION: Registry[Callable[..., Any]] = Registry(
     "global_friction",
     "whole-bearing frictional moment models (catalogue cross-checks of the local heat sources)",

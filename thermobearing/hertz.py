@@ -50,6 +50,12 @@ from scipy.special import ellipe, ellipk
 
 from .errors import ConvergenceError, InputError, ValidityWarning, as_floats, check_positive
 
+__all__ = [
+    "HERTZ_SMALL_CONTACT", "POINT_METHODS", "LineContact", "PointContact", "SlicedRollerContact",
+    "crown_drop", "ellipticity", "ellipticity_residual", "line_contact", "line_contact_stiffness",
+    "palmgren_approach", "point_contact", "point_contact_stiffness", "sliced_roller_contact",
+]
+
 POINT_METHODS = ("exact", "hamrock_brewe", "brewe_hamrock_1977")
 _Q = math.pi / 2.0 - 1.0
 _STEEL_E_PRIME = 2.28e11  # E' of a steel-steel pair [Pa]: E = 207.5 GPa, v = 0.3

@@ -300,6 +300,7 @@ DEFAULT_SCENE = "qj1044_rig"
 
 
 def scene_presets() -> list[str]:
+    """Names of the scene presets in ``configs/scenes`` (for :func:`load_scene`)."""
     folder = configs_dir() / "scenes"
     return sorted(p.stem for p in folder.glob("*.toml"))
 

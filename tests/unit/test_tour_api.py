@@ -340,3 +340,12 @@ def test_vibration_and_signal_name_the_mistaken_argument():
     with pytest.raises(InputError) as info:
         vibration.simulate(load_bearing("SKF6304"), 188.5, 500.0, traction=None)
     assert info.value.field == "params" and "from_bearing" in info.value.allowed
+
+
+@pytest.mark.parametrize("module", ["hertz", "film", "global_friction", "skidding", "vibration",
+                                    "signal", "ehl", "scene", "simulation", "sweep"])
+def test_public_modules_list_their_names(module):
+    import importlib
+
+    mod = importlib.import_module(f"thermobearing.{module}")
+    assert mod.__all__ and all(hasattr(mod, n) for n in mod.__all__)
