@@ -94,6 +94,10 @@ __all__ = [
 # ---------------------------------------------------------------------------
 #: upper end of ASTM D341's stated range, 1e6 cSt [m^2/s]
 _D341_MAX_NU = 1.0
+#: lower end of ASTM D341's stated range, 0.21 cSt [m^2/s]
+_D341_MIN_NU = 0.21e-6
+#: 15 degC densities of ASTM D1250 Table 54D (lubricating oils) [kg/m^3]
+_D1250_DENSITY_RANGE = (800.0, 1164.0)
 
 
 def _frozen(mapping: Mapping[str, Any]) -> tuple:
@@ -211,6 +215,15 @@ class Lubricant:
             raise InputError(f"{self.name}.density_reference_temperature",
                              self.density_reference_temperature,
                              "15 degC (288.15 K) with the astm_d1250_lube law")
+        lo, hi = _D1250_DENSITY_RANGE
+        if (self.density_temperature_law == "astm_d1250_lube"
+                and not lo <= self.density_reference <= hi):
+            # outside its tables the law's expansion coefficient 0.6278/rho15 runs away
+            # (0.876 given as kg/m^3: a dynamic viscosity of 2e-124 Pa s at 40 degC)
+            raise InputError(f"{self.name}.density", self.density_reference,
+                             f"a 15 degC density in kg/m^3 within ASTM D1250 Table 54D's "
+                             f"{lo:g}-{hi:g} kg/m^3 (0.876 g/cm^3 is 876 kg/m^3), or "
+                             "density_temperature_law = 'linear'")
         if self.density_pressure_law not in ("dowson_higginson", "incompressible"):
             raise UnknownNameError(f"{self.name}.density_pressure_law",
                                    self.density_pressure_law,
@@ -447,8 +460,15 @@ class Lubricant:
         nu40, nu100 [m^2/s] at T1 = 40 degC and T2 = 100 degC by default; density15
         [kg/m^3] at 15 degC; density vs temperature by ASTM D1250 for lubricating oils unless
         ``density_temperature_law="linear"``. Without alpha, z or alpha_correlation the mineral-oil
-        correlation ``asme1953_mineral_fit`` is used. nu100 >= nu40 raises InputError.
+        correlation ``asme1953_mineral_fit`` is used. nu100 >= nu40 raises InputError, as
+        does a viscosity outside ASTM D341's range, 0.21 cSt to 1e6 cSt (cSt given as m^2/s).
         """
+        for key, nu in (("nu40", nu40), ("nu100", nu100)):
+            check_positive(f"{name}.{key}", nu)
+            if not _D341_MIN_NU <= nu <= _D341_MAX_NU:
+                raise InputError(f"{name}.{key}", nu, "a kinematic viscosity in m^2/s within "
+                                 "ASTM D341's range, 2.1e-7 to 1 m^2/s (0.21 to 1e6 cSt; "
+                                 "46 cSt = 46 mm^2/s is 4.6e-5 m^2/s)")
         A, B = walther_constants(nu40, T1, nu100, T2)
         pp: dict[str, float] = {}
         if alpha is not None:

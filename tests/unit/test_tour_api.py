@@ -349,3 +349,22 @@ def test_public_modules_list_their_names(module):
 
     mod = importlib.import_module(f"thermobearing.{module}")
     assert mod.__all__ and all(hasattr(mod, n) for n in mod.__all__)
+
+
+def test_custom_lubricant_refuses_values_in_the_wrong_unit():
+    from thermobearing.lubricant import Lubricant
+
+    ok = Lubricant.from_viscosities(46e-6, 6.8e-6, 876.0)
+    assert ok.kinematic_viscosity(313.15) == pytest.approx(46e-6, rel=1e-9)
+    # cSt given as m^2/s (before: accepted, with a warning that the oil is below its pour
+    # point at 40 degC)
+    with pytest.raises(InputError) as info:
+        Lubricant.from_viscosities(46.0, 6.8, 876.0)
+    assert info.value.field == "custom.nu40" and "4.6e-5 m^2/s" in info.value.allowed
+    with pytest.raises(InputError) as info:  # before: "nu1 = '46 mm**2/s'"
+        Lubricant.from_viscosities("46 mm**2/s", 6.8e-6, 876.0)
+    assert info.value.field == "custom.nu40"
+    # g/cm^3 given as kg/m^3 (before: a dynamic viscosity of 2e-124 Pa s at 40 degC)
+    with pytest.raises(InputError) as info:
+        Lubricant.from_viscosities(46e-6, 6.8e-6, 0.876)
+    assert info.value.field == "custom.density" and "800-1164" in info.value.allowed
