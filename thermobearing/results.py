@@ -80,8 +80,7 @@ class Results:
         """Write every table as CSV (and Parquet when pyarrow is present), the loss
         breakdown per operating point (``loss_breakdown.csv``, one column per source), the
         resolved scene, the metadata and the figures to ``out_dir``; returns the folder."""
-        out = Path(out_dir)
-        out.mkdir(parents=True, exist_ok=True)
+        out = _results_folder(out_dir)
         try:
             import pyarrow  # noqa: F401
 
@@ -125,6 +124,19 @@ def _jsonable(obj: Any) -> Any:
     return obj
 
 
+def _results_folder(out_dir: Path | str) -> Path:
+    """``out_dir`` created as a folder; an existing file there is an :class:`InputError`
+    (was a bare FileExistsError)."""
+    from .errors import InputError
+
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise InputError("out_dir", str(out), "a results folder (new or existing); this is a "
+                         "file")
+    out.mkdir(parents=True, exist_ok=True)
+    return out
+
+
 class ResultsWriter:
     """Append-as-you-go CSV writer: each table's rows land on disk as soon as they exist.
 
@@ -134,8 +146,7 @@ class ResultsWriter:
     """
 
     def __init__(self, out_dir: Path | str) -> None:
-        self.out = Path(out_dir)
-        self.out.mkdir(parents=True, exist_ok=True)
+        self.out = _results_folder(out_dir)
         self._columns: dict[str, list[str]] = {}
         # the tables of an earlier run in the folder (and the breakdown derived from its
         # losses) must not pass for this run's

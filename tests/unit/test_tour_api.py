@@ -368,3 +368,14 @@ def test_custom_lubricant_refuses_values_in_the_wrong_unit():
     with pytest.raises(InputError) as info:
         Lubricant.from_viscosities(46e-6, 6.8e-6, 0.876)
     assert info.value.field == "custom.density" and "800-1164" in info.value.allowed
+
+
+def test_results_into_a_file_path_name_the_folder(tmp_path):
+    from thermobearing.results import Results, ResultsWriter
+
+    a_file = tmp_path / "run"
+    a_file.write_text("not a folder")
+    for write in (lambda: Results(tables={}).write(a_file), lambda: ResultsWriter(a_file)):
+        with pytest.raises(InputError) as info:  # before: FileExistsError
+            write()
+        assert info.value.field == "out_dir" and "this is a file" in info.value.allowed
