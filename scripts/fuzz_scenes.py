@@ -341,6 +341,8 @@ def _zero_pressure_under_load(df: Any) -> str | None:
 def check_results(results: Any, no_contacts_model: bool = False) -> list[str]:
     """The defects in a finished run's tables and warnings (``no_contacts_model``: the
     scene's kinematics model is "none", which solves no contacts)."""
+    from thermobearing.coupled import RUNAWAY_TEMPERATURE
+
     problems = []
     for name, df in results.tables.items():
         for col in df.columns:
@@ -360,6 +362,12 @@ def check_results(results: Any, no_contacts_model: bool = False) -> list[str]:
             if col.endswith("[degC]") and np.any(arr <= -273.15):
                 problems.append(f"{name}[{col}] at or below absolute zero: "
                                 f"{np.nanmin(arr):.6g} degC")
+            if col.endswith("[degC]") and np.any(arr > RUNAWAY_TEMPERATURE - 273.15):
+                # a transient stops there as a thermal runaway; a table beyond it is a
+                # result no run should give
+                problems.append(f"{name}[{col}] above the runaway limit "
+                                f"{RUNAWAY_TEMPERATURE - 273.15:.0f} degC: "
+                                f"{np.nanmax(arr):.6g} degC")
     zero = _zero_pressure_under_load(results.tables.get("kinematics"))
     if zero:
         problems.append(zero)
