@@ -374,7 +374,13 @@ def roelands_index_from_alpha(
     """
     eta0a = np.asarray(eta0, dtype=float)
     if np.any(eta0a <= ROELANDS_ETA_INF):
-        raise InputError("eta0", eta0, "a viscosity above Roelands' 6.31e-5 Pa s")
+        # the smallest value, not the caller's whole grid (a thermal EHL film's 512 x 11
+        # temperatures printed as an array)
+        shown = (f"{float(np.min(eta0a)):.4g} Pa s" + (
+            f" (the smallest of {eta0a.size} values)" if eta0a.size > 1 else ""))
+        raise InputError("eta0", shown, "a viscosity above Roelands' 6.31e-5 Pa s (the "
+                         "oil's viscosity at ambient pressure; below it the oil is too hot for "
+                         "the law)")
     return _out(np.asarray(alpha) * p0 / (np.log(eta0a) + ROELANDS_LN_ETA_INF))
 
 

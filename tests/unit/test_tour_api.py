@@ -379,3 +379,32 @@ def test_results_into_a_file_path_name_the_folder(tmp_path):
         with pytest.raises(InputError) as info:  # before: FileExistsError
             write()
         assert info.value.field == "out_dir" and "this is a file" in info.value.allowed
+
+
+def test_thermal_ehl_runaway_is_a_convergence_error_naming_the_remedy():
+    # NU214 inner contact, 3 kN, 5 m/s, 2 % slide, ISO VG 68 at 50 degC, Newtonian film:
+    # the first temperature sweep reaches ~3e4 K (before: an InputError "eta0 = array(...)"
+    # that printed a 512 x 11 grid, as if the caller's input were wrong)
+    from thermobearing.bearing_config import load_bearing
+    from thermobearing.errors import ConvergenceError
+    from thermobearing.lubricant import load_lubricant
+
+    nu214, vg68 = load_bearing("NU214"), load_lubricant("ISO_VG68")
+    rx, _ = nu214.curvature("inner")
+    steel = nu214.roller_material
+    solid = ehl.SolidThermal(steel.density, steel.specific_heat, steel.thermal_conductivity)
+    with pytest.raises(ConvergenceError) as info:
+        ehl.solve_thermal_line_contact(3000.0 / nu214.roller_effective_length, rx,
+                                       nu214.effective_modulus, 5.0, 0.02, vg68, 323.15,
+                                       solid1=solid)
+    err = info.value
+    assert err.residual > 1e3 and err.state["max_temperature"] > 1e3
+    assert "eyring_stress" in str(err) and "array(" not in str(err)
+
+
+def test_roelands_index_error_shows_one_value_not_the_grid():
+    from thermobearing.viscosity_laws import roelands_index_from_alpha
+
+    with pytest.raises(InputError) as info:
+        roelands_index_from_alpha(2e-8, np.full((512, 11), 1e-6))
+    assert info.value.value == "1e-06 Pa s (the smallest of 5632 values)"

@@ -422,8 +422,18 @@ def solve_thermal_line_contact(
         change = float(np.max(np.abs(T - T_old)))
         # ---- generalized Reynolds with the new temperatures ------------------
         Tf = T[:, ns - 1: ns - 1 + nz]
-        eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua, ub,
-                                                      eyring_stress)
+        try:
+            eta, rho, u, tau, roe, couette = _film_fields(lubricant, Tf, p, h, zeta, dpdx, ua,
+                                                          ub, eyring_stress)
+        except InputError as exc:  # the fixed point's own temperatures, not the caller's
+            hint = ("a Newtonian film sheared at Hertzian pressure heats without bound: give "
+                    "eyring_stress (Ree-Eyring, typically 2-10 MPa)" if eyring_stress is None
+                    else "use thermobearing.film with a thermal reduction factor instead")
+            raise ConvergenceError(
+                "ehl.thermal", change,
+                f"the film temperature ran away to {float(Tf.max()):.4g} K at outer iteration "
+                f"{outer}, beyond the lubricant's laws ({exc}); {hint}",
+                {"M": case.M, "L": case.L, "max_temperature": float(Tf.max())}) from None
         eta_iso, _ = rheo.viscosity(P)
         rho_iso, _ = rheo.density(P)
         f_e = (roe / (rho0 / eta0)) / (rho_iso / eta_iso)
