@@ -127,8 +127,8 @@ def as_floats(field: str, value: Any) -> np.ndarray:
     try:
         return np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise InputError(field, value, "a number in SI units (unit strings such as '3 kN' "
-                         "are read only from scene and preset files)") from None
+        raise InputError(field, value, "a number in SI units (a unit string converts with "
+                         "thermobearing.units.to_si('3 kN', 'force'))") from None
 
 
 def check_positive(field: str, value: Any, *, allow_zero: bool = False) -> None:

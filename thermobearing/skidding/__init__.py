@@ -32,8 +32,9 @@ def _operating_value(field: str, value: Any, unit: str) -> float:
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
         check_finite(field, float(value))
         return float(value)
-    raise InputError(field, value, f"one real number in {unit} (unit strings belong to scene "
-                     "files; solve one operating point per call)")
+    raise InputError(field, value, f"one real number in {unit} (a unit string converts with "
+                     f"thermobearing.units.to_si(value, {unit!r}); one operating point per "
+                     "call)")
 
 
 def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_load: float,
