@@ -27,3 +27,16 @@ def test_runaway_spin_stops_the_table_path():
         simulate_coupled(m, bearing, oil, fallback=False)
     assert "a roller spin ran to" in str(err.value)
     assert f"beyond {SPIN_RUNAWAY:g} x the" in str(err.value)
+
+
+def test_nan_state_on_the_reference_path_is_a_convergence_error():
+    """ISO VG46 at 80 degC, 3 kN, 20000 r/min, 1600 steps per spin period: the reference
+    (evaluate) path's state turned NaN between the integrator's finiteness checks and the
+    next traction refresh stopped on it with "load = array([nan, nan, ...]) is not
+    allowed: a finite number"."""
+    bearing = load_bearing("CRB_50x75x16")
+    oil = load_lubricant("ISO_VG46")
+    m = build_model(bearing, oil, 20000.0 * math.pi / 30.0, 3000.0, 0.0,
+                    temperature=353.15, coupling="none")
+    with pytest.raises(ConvergenceError, match="roller_dynamics.coupled did not converge"):
+        simulate_coupled(m, bearing, oil, steps_per_period=1600)

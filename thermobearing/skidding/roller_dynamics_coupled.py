@@ -543,6 +543,11 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     n_sampled = 0
     while step < n_total:
         if tab is None:
+            if not np.all(np.isfinite(y)):
+                # the integrator checks every 200 steps, a refresh may come first: its
+                # evaluation would stop on the NaN loads ("load = array([nan, ...])")
+                raise ConvergenceError("roller_dynamics.coupled", float("inf"),
+                                       "state not finite", {"t": t, "step": step})
             # reference path: the linearisation from three evaluate calls per refresh
             w0 = y[7::n][:z_n].copy()
             wc0 = float(y[z_n * n + 1])
