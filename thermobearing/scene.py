@@ -92,7 +92,7 @@ from __future__ import annotations
 import copy
 import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
@@ -244,7 +244,13 @@ class Scene:
         return dumps_toml(self.to_dict())
 
     def with_changes(self, **changes: Any) -> Scene:
-        """A copy with some top-level fields replaced."""
+        """A copy with some top-level fields replaced, e.g.
+        ``scene.with_changes(supply=dataclasses.replace(scene.supply, flow=2.5e-4))``; the
+        sections check their values as their TOML tables are checked."""
+        known = [f.name for f in fields(self)]
+        for name in changes:
+            if name not in known:  # was a TypeError from dataclasses.replace
+                raise UnknownNameError("Scene field", name, known)
         return replace(self, **changes)
 
     def resolve_path(self, name: str) -> Path:

@@ -408,3 +408,12 @@ def test_roelands_index_error_shows_one_value_not_the_grid():
     with pytest.raises(InputError) as info:
         roelands_index_from_alpha(2e-8, np.full((512, 11), 1e-6))
     assert info.value.value == "1e-06 Pa s (the smallest of 5632 values)"
+
+
+def test_scene_with_changes_names_an_unknown_field():
+    from thermobearing.errors import UnknownNameError
+    from thermobearing.scene import load_scene
+
+    with pytest.raises(UnknownNameError) as info:  # before: TypeError from replace()
+        load_scene("qj1044_rig").with_changes(suply=None)
+    assert info.value.value == "suply" and "did you mean 'supply'" in str(info.value)
