@@ -122,8 +122,12 @@ class Simulation:
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
+        from .scene import Scene
         from .scene_checks import check_model_names, check_temperatures
 
+        if not isinstance(scene, Scene):  # Simulation("qj1044_rig"): was an AttributeError
+            raise InputError("scene", type(scene).__name__, "a Scene: thermobearing.load_scene"
+                             "(preset name or TOML path) or loads_scene(TOML text)")
         check_model_names(scene)  # the error names the scene field and the known names
         self.scene = scene
         self.progress = sys.stderr.isatty() if progress is None else bool(progress)

@@ -417,3 +417,12 @@ def test_scene_with_changes_names_an_unknown_field():
     with pytest.raises(UnknownNameError) as info:  # before: TypeError from replace()
         load_scene("qj1044_rig").with_changes(suply=None)
     assert info.value.value == "suply" and "did you mean 'supply'" in str(info.value)
+
+
+@pytest.mark.parametrize("not_a_scene", ["qj1044_rig", {"title": "x"}])
+def test_simulation_of_something_else_than_a_scene_says_how_to_load_one(not_a_scene):
+    from thermobearing.simulation import Simulation
+
+    with pytest.raises(InputError) as info:  # before: AttributeError ... no attribute 'models'
+        Simulation(not_a_scene)
+    assert info.value.field == "scene" and "load_scene" in info.value.allowed
