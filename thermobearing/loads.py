@@ -218,6 +218,15 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     ConvergenceError
         with the residual norm and the last iterate when Newton fails.
     """
+    from .geometry_ball import BallBearing
+
+    if not isinstance(bearing, BallBearing):  # was an AttributeError (no ball_diameter)
+        raise InputError("bearing", type(bearing).__name__, "a BallBearing (roller bearings: "
+                         "thermobearing.loads_roller)")
+    for name, value in (("radial_load", radial_load), ("axial_load", axial_load),
+                        ("inner_speed", inner_speed)):
+        if np.ndim(value) != 0:  # an array was "truth value of an array is ambiguous"
+            raise InputError(name, value, "one number (one operating point per call)")
     check_positive("radial_load", radial_load, allow_zero=True)
     check_finite("axial_load", axial_load)
     check_finite("inner_speed", inner_speed)

@@ -426,3 +426,15 @@ def test_simulation_of_something_else_than_a_scene_says_how_to_load_one(not_a_sc
     with pytest.raises(InputError) as info:  # before: AttributeError ... no attribute 'models'
         Simulation(not_a_scene)
     assert info.value.field == "scene" and "load_scene" in info.value.allowed
+
+
+def test_ball_load_distribution_names_a_wrong_bearing_or_an_array_load(qj1044, vg46):
+    from thermobearing.loads import ball_load_distribution
+
+    with pytest.raises(InputError) as info:  # before: AttributeError (no ball_diameter)
+        ball_load_distribution(vg46, 1e3, 1e4)
+    assert info.value.field == "bearing" and info.value.value == "Lubricant"
+    with pytest.raises(InputError) as info:  # before: "truth value of an array is ambiguous"
+        ball_load_distribution(qj1044, np.array([1e3, 2e3]), 1e4)
+    assert info.value.field == "radial_load"
+    assert ball_load_distribution(qj1044, np.float64(1e3), np.array(1e4), SPEED).converged
