@@ -133,7 +133,18 @@ def rolling_speeds(gamma_prime: float, contact_angle_i: Any, contact_angle_o: An
     return csr[()], spin[()]
 
 
+def _require_bearing(bearing: Any) -> None:
+    """An :class:`InputError` unless ``bearing`` is a BallBearing or RollerBearing (a
+    lubricant passed in its place was an AttributeError)."""
+    from .geometry import BallBearing, RollerBearing
+
+    if not isinstance(bearing, BallBearing | RollerBearing):
+        raise InputError("bearing", type(bearing).__name__,
+                         "a BallBearing or RollerBearing (thermobearing.load_bearing)")
+
+
 def _geometry(bearing: Any) -> tuple[float, float, float]:
+    _require_bearing(bearing)
     d = float(bearing.element_diameter)
     dm = float(bearing.pitch_diameter)
     return d, dm, d / dm
@@ -265,6 +276,7 @@ def race_control_for_loads(bearing: Any, load_i: Any, load_o: Any, contact_angle
     """
     from .hertz import point_contact
 
+    _require_bearing(bearing)
     e_prime = bearing.effective_modulus
     rx_i, ry_i = bearing.curvature("inner", contact_angle_i)
     rx_o, ry_o = bearing.curvature("outer", contact_angle_o)

@@ -438,3 +438,13 @@ def test_ball_load_distribution_names_a_wrong_bearing_or_an_array_load(qj1044, v
         ball_load_distribution(qj1044, np.array([1e3, 2e3]), 1e4)
     assert info.value.field == "radial_load"
     assert ball_load_distribution(qj1044, np.float64(1e3), np.array(1e4), SPEED).converged
+
+
+def test_race_control_kinematics_name_a_wrong_bearing(vg46):
+    from thermobearing import kinematics
+
+    for call in (lambda: kinematics.pure_rolling(vg46, SPEED),
+                 lambda: kinematics.race_control_for_loads(vg46, 1e3, 1e3, 0.7, 0.7)):
+        with pytest.raises(InputError) as info:  # before: AttributeError
+            call()
+        assert info.value.field == "bearing" and info.value.value == "Lubricant"
