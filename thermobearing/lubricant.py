@@ -40,6 +40,9 @@ from .errors import (
     check_temperature,
 )
 from .lubricant_properties import (
+    _D341_MAX_NU,
+    _D341_MIN_NU,
+    _D1250_DENSITY_RANGE,
     LUBRICANT_THERMAL,
     PRESSURE_VISCOSITY_COEFFICIENT,
     AirProperties,
@@ -49,6 +52,7 @@ from .lubricant_properties import (
     alpha_gold_paraffinic,
     alpha_mineral_asme_fit,
     astm_d1250_lube_density,
+    check_liquid_temperature,
     constant_properties,
     coolprop_properties,
     cragoe_properties,
@@ -80,7 +84,8 @@ __all__ = [
     "LUBRICANT_THERMAL", "PRESSURE_VISCOSITY", "PRESSURE_VISCOSITY_COEFFICIENT",
     "VISCOSITY_TEMPERATURE", "AirProperties", "Lubricant", "air_properties",
     "alpha_from_roelands_index", "alpha_gold_paraffinic", "alpha_mineral_asme_fit",
-    "astm_d1250_lube_density", "barus_viscosity", "constant_properties",
+    "astm_d1250_lube_density", "barus_viscosity", "check_liquid_temperature",
+    "constant_properties",
     "coolprop_properties", "cragoe_properties", "d341_inverse_z", "d341_z",
     "dowson_higginson_density", "exponential_viscosity", "isothermal_viscosity",
     "linear_expansion_density", "load_lubricant", "lubricant_config_dir",
@@ -92,12 +97,6 @@ __all__ = [
 # ---------------------------------------------------------------------------
 # the Lubricant
 # ---------------------------------------------------------------------------
-#: upper end of ASTM D341's stated range, 1e6 cSt [m^2/s]
-_D341_MAX_NU = 1.0
-#: lower end of ASTM D341's stated range, 0.21 cSt [m^2/s]
-_D341_MIN_NU = 0.21e-6
-#: 15 degC densities of ASTM D1250 Table 54D (lubricating oils) [kg/m^3]
-_D1250_DENSITY_RANGE = (800.0, 1164.0)
 
 
 def _frozen(mapping: Mapping[str, Any]) -> tuple:

@@ -12,7 +12,7 @@ import math
 import warnings
 from collections.abc import Callable
 from pathlib import Path
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -26,6 +26,13 @@ from .errors import (
 from .registry import Registry
 
 ArrayLike = float | np.ndarray
+
+#: upper end of ASTM D341's stated range, 1e6 cSt [m^2/s]
+_D341_MAX_NU = 1.0
+#: lower end of ASTM D341's stated range, 0.21 cSt [m^2/s]
+_D341_MIN_NU = 0.21e-6
+#: 15 degC densities of ASTM D1250 Table 54D (lubricating oils) [kg/m^3]
+_D1250_DENSITY_RANGE = (800.0, 1164.0)
 
 PRESSURE_VISCOSITY_COEFFICIENT: Registry[Callable[..., ArrayLike]] = Registry(
     "pressure_viscosity_coefficient", "correlations for alpha from the atmospheric viscosity"
@@ -301,3 +308,29 @@ def air_properties(T: ArrayLike, p: ArrayLike = 101325.0) -> AirProperties:
         for k in ("D", "V", "L", "C", "Prandtl")
     ]
     return AirProperties(*(_out(v) for v in vals))
+
+
+def check_liquid_temperature(lubricant: Any, field: str, temperature: float,
+                             hint: str = "") -> None:
+    """An :class:`InputError` naming ``field`` unless ``lubricant`` is liquid at
+    ``temperature`` [K] as far as its viscosity law can say: above 0 K, the law finite there,
+    and for ASTM D341 within the 1e6 cSt that end its stated range (colder, the oil is below
+    its pour point and the solvers fail later with errors about contact pressures).
+    ``hint`` is appended to what is allowed; the value is shown in K and degC."""
+    t = float(temperature)
+    shown = f"{t:g} K ({t - 273.15:g} degC)"
+    if not t > 0.0:
+        raise InputError(field, shown, "a temperature above absolute zero" + hint)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        try:
+            nu = float(lubricant.kinematic_viscosity(t))
+        except InputError:
+            raise InputError(field, shown, (
+                f"a temperature at which the {lubricant.viscosity_law} viscosity law of "
+                f"{lubricant.name} is finite (it overflows here){hint}")) from None
+    if lubricant.viscosity_law == "astm_d341" and nu > _D341_MAX_NU:
+        raise InputError(field, shown, (
+            f"a temperature at which {lubricant.name} is liquid: its ASTM D341 viscosity "
+            f"there is {nu * 1e6:.3g} cSt, beyond the law's 1e6 cSt range (the oil is "
+            f"below its pour point){hint}"))

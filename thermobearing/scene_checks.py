@@ -7,11 +7,10 @@ allowed. Re-exported by :mod:`thermobearing.scene`.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from .errors import InputError, UnknownNameError, ValidityWarning
+from .errors import InputError, UnknownNameError
 
 if TYPE_CHECKING:  # pragma: no cover
     from .lubricant import Lubricant
@@ -25,31 +24,16 @@ def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
     :class:`InputError` naming the scene field. A bare number in a scene is kelvin, so
     ``ambient_temperature = 35`` meant as degC lands here instead of failing later inside a
     solver (a residual of 1e24, a Roelands overflow at some contact pressure)."""
-    from .lubricant import _D341_MAX_NU
+    from .lubricant import check_liquid_temperature
 
     fields = [("environment.ambient_temperature", scene.environment.ambient_temperature),
               ("environment.initial_temperature", scene.environment.initial_temperature)]
     if scene.supply.method != "oil_bath":  # a bath has no inlet (OilSupply)
         fields.append(("supply.inlet_temperature", scene.supply.inlet_temperature))
     for field, kelvin in fields:
-        t = float(kelvin)
-        shown = f"{t:g} K ({t - 273.15:g} degC)"
-        hint = "; a bare number in a scene is in K: write e.g. \"35 degC\""
-        if not t > 0.0:
-            raise InputError(field, shown, "a temperature above absolute zero" + hint)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", ValidityWarning)
-            try:
-                nu = float(lubricant.kinematic_viscosity(t))
-            except InputError:
-                raise InputError(field, shown, (
-                    f"a temperature at which the {lubricant.viscosity_law} viscosity law of "
-                    f"{lubricant.name} is finite (it overflows here){hint}")) from None
-        if lubricant.viscosity_law == "astm_d341" and nu > _D341_MAX_NU:
-            raise InputError(field, shown, (
-                f"a temperature at which {lubricant.name} is liquid: its ASTM D341 viscosity "
-                f"there is {nu * 1e6:.3g} cSt, beyond the law's 1e6 cSt range (the oil is "
-                f"below its pour point){hint}"))
+        check_liquid_temperature(lubricant, field, kelvin,
+                                 hint="; a bare number in a scene is in K: write e.g. "
+                                      "\"35 degC\"")
 
 
 def check_model_names(scene: Scene) -> None:

@@ -77,8 +77,23 @@ def test_celsius_temperature_given_as_kelvin_says_the_unit(qj1044, vg46):
     # 40 meant as degC: the viscosity law overflows; the message now says the unit
     with pytest.raises(InputError) as info:
         skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, 40.0, supply=SUPPLY)
-    assert info.value.field == "temperature" and info.value.value == 40.0
+    assert info.value.field == "temperature" and info.value.value == "40 K (-233.15 degC)"
+    # the viscosity law's own error says the unit too (lubricant called directly)
+    with pytest.raises(InputError) as info:
+        vg46.dynamic_viscosity(40.0)
     assert "40 K is -233.15 degC" in info.value.allowed
+
+
+@pytest.mark.parametrize(("kelvin", "field"), [(200.0, "temperature"),
+                                               (150.0, "oil_temperature")])
+def test_skidding_solve_refuses_an_oil_below_its_pour_point(qj1044, vg46, kelvin, field):
+    # ISO VG 46 at -73 degC: 5e8 cSt, beyond ASTM D341's 1e6 cSt (before: "pressure =
+    # 5.0875e+08 Pa is not allowed", a Roelands overflow at some contact pressure)
+    temps = {"temperature": 313.15, "oil_temperature": 313.15, field: kelvin}
+    with pytest.raises(InputError) as info:
+        skidding.solve(qj1044, vg46, SPEED, 1000.0, 10000.0, temps["temperature"],
+                       supply=SUPPLY, oil_temperature=temps["oil_temperature"])
+    assert info.value.field == field and "pour point" in info.value.allowed
 
 
 def test_roller_result_counts_the_newton_steps_of_a_cold_start():

@@ -84,6 +84,11 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
     if oil_temperature is not None:
         oil_temperature = _operating_value("oil_temperature", oil_temperature, "K")
         check_temperature("oil_temperature", oil_temperature)
+    from ..lubricant import check_liquid_temperature
+
+    for name, kelvin in (("temperature", temperature), ("oil_temperature", oil_temperature)):
+        if kelvin is not None:  # the oil below its pour point: was a Roelands overflow error
+            check_liquid_temperature(lubricant, name, kelvin)  # "at a contact pressure"
     if isinstance(bearing, BallBearing) or getattr(bearing, "kind", None) in (
             "deep_groove", "angular_contact", "four_point"):
         from .ball import solve_ball
