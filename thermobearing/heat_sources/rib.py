@@ -116,6 +116,19 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
             "sec. 3.2); its thrust share is booked as if an opposite rib carried it"),
             stacklevel=2)
     dyn = None
+    if float(op.radial_load) <= 0.0 and (model == "coupled" or unbalance > 0.0):
+        # no roller touches the inner ring: the roller dynamics (paper 003) have no loaded
+        # zone, and their quasi-static start, the roller skidding solver, stops there
+        # ("no roller touches the inner ring ... residual inf"); the thrust share and the
+        # lubricant drag at the kinematics' spins are what the reduced path books
+        warnings.warn(ValidityWarning(
+            f"rib_friction: no radial load on {getattr(b, 'name', 'the bearing')}, so no "
+            f"roller touches the inner ring and the {model} roller dynamics (paper 003) "
+            "have no loaded zone to run on: the rib heat is the thrust share and the "
+            "lubricant drag at the kinematics' roller spins"
+            + (" (the unbalance is not modelled there)" if unbalance > 0.0 else "")),
+            stacklevel=2)
+        model, unbalance = "reduced", 0.0
     if model == "coupled" or unbalance > 0.0:
         dyn = rib_dynamics_heat(b, ctx.lubricant, wi - float(kin.outer_speed),
                                 float(op.radial_load), temperature, unbalance, model=model,
