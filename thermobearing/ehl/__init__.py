@@ -1,4 +1,4 @@
-"""Numerical (thermal) EHL of line contacts (engineer D).
+"""Numerical (thermal) EHL of line contacts.
 
 Public API
 ----------

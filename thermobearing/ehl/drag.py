@@ -1,7 +1,7 @@
 """Numerical-EHL fluid forces of roller-raceway contacts for the roller skidding solver.
 
 Registers ``"numerical_ehl"`` in :data:`thermobearing.skidding.roller_fluid.ROLLER_DRAG` (the
-drag-model family of engineer G2; selected by ``solve_roller(..., drag_model="numerical_ehl")``).
+drag-model family; selected by ``solve_roller(..., drag_model="numerical_ehl")``).
 Paper 000 (seed ``000_3b5ca6eed61dd596.txt``, section 2.2) replaces the Dowson-Higginson
 closed-form drag by forces from the numerical EHL pressure and film: its eq. 5,
 

@@ -233,7 +233,7 @@ def rolling_force_rigid_isoviscous(sum_speed, viscosity, load, reduced_radius_x,
 
     h_0 = k_w eta0 U R / w,  Q_x = k_q eta0 U l sqrt(R / h_0), w = load / l, U = sum speed;
     k_w = 2.448 (Martin 1916) and k_q from the Reynolds equation with Reynolds outlet
-    conditions (``skidding.roller_fluid.martin_coefficients``, engineer G). Hamrock 2004.
+    conditions (``skidding.roller_fluid.martin_coefficients``). Hamrock 2004.
     """
     from ..skidding.roller_fluid import martin_coefficients
 

@@ -1,4 +1,4 @@
-"""Validation runners of the numerical EHL solver (engineer D).
+"""Validation runners of the numerical EHL solver.
 
 ``ehl_moes_line``: isothermal central film of the line-contact solver against the Moes (1992)
 formula over a grid of Moes parameters M, L.
@@ -6,8 +6,8 @@ formula over a grid of Moes parameters M, L.
 ``paper001_tehl_film``: paper 001 (Shi & Wang 2015) D1842926 at 13218 r/min and 8/12/18/24 kN:
 thermal EHL minimum film at the most loaded roller-inner race contact against the paper's
 0.514/0.490/0.471/0.445 um, with Hamrock-Dowson beside it. The roller loads come from the
-quasi-static roller load distribution of :mod:`thermobearing.loads_roller` (engineer G2:
-Harris & Kotzalas 2007 vol. 1 ch. 7 with the roller centrifugal force at the epicyclic cage
+quasi-static roller load distribution of :mod:`thermobearing.loads_roller`
+(Harris & Kotzalas 2007 vol. 1 ch. 7 with the roller centrifugal force at the epicyclic cage
 speed, vol. 2 ch. 2).
 """
 

@@ -1,4 +1,4 @@
-"""Validation runner for the closed-form film case of paper 001 (engineer B).
+"""Validation runner for the closed-form film case of paper 001.
 
 ``paper001_film_closed_form``: Hamrock-Dowson (1977) and Dowson-Higginson minimum films at the
 most loaded roller-inner race contact of the D1842926 preset, 8/12/18/24 kN, 13218 r/min, oil

@@ -1,4 +1,4 @@
-"""Validation runners for the kinematic and geometric cases (engineer B).
+"""Validation runners for the kinematic and geometric cases.
 
 Cases: ``paper004_bpfo`` (Luo et al. 2022 BPFO 85.5 Hz at 2000 r/min, no slip),
 ``paper000_cage_speed_theoretical`` (Li et al. 2018 eq. 40, n_m = 2166.7 r/min at 5000 r/min),

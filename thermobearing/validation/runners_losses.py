@@ -1,4 +1,4 @@
-"""Validation runners for the power-loss sources (engineer F).
+"""Validation runners for the power-loss sources.
 
 Cases
 -----
@@ -9,7 +9,7 @@ Cases
     churning 60-80 % of it).
 ``crosscheck_global_friction``
     Local heat-source total (race-control kinematics) beside the SKF four-term model and
-    Palmgren M0 + M1 (``global_friction.py``, engineer A) for the SKF 6304 of paper 004 and
+    Palmgren M0 + M1 (``global_friction.py``) for the SKF 6304 of paper 004 and
     the QJ1044 of paper 002 at three speeds each, with their ratios.
 """
 

@@ -1,4 +1,4 @@
-"""Validation runner of the ball skidding / over-skidding solver (engineer G1).
+"""Validation runner of the ball skidding / over-skidding solver.
 
 Case ``paper002_csr_vs_axial_load``: QJ1044 CSR against axial load at 600-1800 r/min and
 33 / 15 L/min (Gao et al. 2022, seed paper 002 section 4.1, Fig. 10). The parameters the paper

@@ -1,4 +1,4 @@
-"""Validation runners of the vibration model and the cage-speed analyser (engineer E).
+"""Validation runners of the vibration model and the cage-speed analyser.
 
 Cases: ``paper004_vibration_stats`` (Luo et al. 2022 Table 2 and Fig. 12 trends),
 ``paper004_bpfo_with_slip`` (the ball-pass line of the *simulated* acceleration falls as

@@ -1,4 +1,4 @@
-"""Unit tests of the EHL deformation kernel and the discrete Newton problem (engineer D)."""
+"""Unit tests of the EHL deformation kernel and the discrete Newton problem."""
 
 from __future__ import annotations
 

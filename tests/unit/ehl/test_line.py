@@ -1,4 +1,4 @@
-"""Isothermal line-contact EHL: convergence, formulas, errors, traction (engineer D)."""
+"""Isothermal line-contact EHL: convergence, formulas, errors, traction."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Thermal EHL, the cache table and the registry (engineer D)."""
+"""Thermal EHL, the cache table and the registry."""
 
 from __future__ import annotations
 

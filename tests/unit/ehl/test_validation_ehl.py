@@ -1,4 +1,4 @@
-"""Validation cases of the EHL solver run end to end (slow; engineer D)."""
+"""Validation cases of the EHL solver run end to end (slow)."""
 
 from __future__ import annotations
 
