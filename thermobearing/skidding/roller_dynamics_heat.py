@@ -45,13 +45,14 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from collections import OrderedDict
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 import numpy as np
 
-from ..errors import InputError, check_positive, check_range
+from ..errors import ConvergenceError, InputError, ValidityWarning, check_positive, check_range
 from ..rib import DEFAULT_RIB_FRICTION, rib_geometry, rib_sliding_speed
 
 #: models of the rib heat (see the module notes)
@@ -216,18 +217,25 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
     values = []
     cost = 0.0
     runs = 0
+    def run(node: int) -> RibDynamicsHeat:
+        out, _ = run_dynamics(bearing, lubricant, speed, radial_load, node * temperature_step,
+                              unbalance_mass, model=model,
+                              friction_coefficient=friction_coefficient,
+                              oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
+                              orbits=orbits)
+        return out
+
     for node, weight in nodes:
         key = (*base, node, float(temperature_step))
         found = _CACHE.get(key)
         if found is None:
-            found, _ = run_dynamics(bearing, lubricant, speed, radial_load,
-                                    node * temperature_step, unbalance_mass, model=model,
-                                    friction_coefficient=friction_coefficient,
-                                    oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
-                                    orbits=orbits)
+            try:
+                found = run(node)
+            except ConvergenceError as exc:
+                found = _neighbour_node(run, node, temperature_step, exc)
             _CACHE.put(key, found)
             cost += found.cost_s
-            runs += 1
+            runs += found.runs
         values.append((weight, found))
 
     def mix(i: int) -> float:
@@ -235,6 +243,33 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
 
     return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model,
                            sum(v.fallbacks for _, v in values))
+
+
+#: how many grid nodes to either side a failed node may borrow its value from
+NEIGHBOUR_NODES = 2
+
+
+def _neighbour_node(run: Any, node: int, step: float, exc: Exception) -> RibDynamicsHeat:
+    """The value of the nearest node (1, then 2 grid steps away, the cooler side first) whose
+    dynamics run, for a node whose run stopped with a ConvergenceError (e.g. the coupled
+    model's "unstable coupled motion": the cage runs out of its band at that temperature
+    while it settles at the neighbouring ones). The node values scatter by about +-4 %
+    between neighbours anyway (chaotic impacting motion, module notes); a ValidityWarning
+    names both temperatures. If no neighbour runs either, the first error is raised."""
+    runs = 1
+    for d in range(1, NEIGHBOUR_NODES + 1):
+        for other in (node - d, node + d):
+            try:
+                found = run(other)
+            except ConvergenceError:
+                runs += 1
+                continue
+            warnings.warn(ValidityWarning(
+                f"rib_friction: the roller dynamics at {node * step:.2f} K stopped ({exc}); "
+                f"the rib heat there is the value of the grid node at {other * step:.2f} K"),
+                stacklevel=3)
+            return found._replace(runs=runs + found.runs)
+    raise exc
 
 
 __all__ = ["CACHE_SIZE", "DEFAULT_TEMPERATURE_STEP", "MODELS", "RibDynamicsHeat",
