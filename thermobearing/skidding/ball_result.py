@@ -53,8 +53,16 @@ class BallSkiddingResult:
     normal_load, contact_angle : (Z, k) per raceway arc [N], [rad]; ring (k,) 0/1.
     sliding_speed, transverse_sliding_speed, spin_speed_contact, entrainment_speed : (Z, k).
     heat : dict of total heat by component [W]; shaft_torque [N m].
+    unknowns : (X, G), the solver's per-ball and global unknowns (warm starts).
+    extra : solver details (evaluations, fallback used, residual vector, operating contact
+        angles, the traction law, the system).
     kinematic_state : :class:`thermobearing.state.KinematicState` for the heat sources (built
         on first access: its validation costs more than a warm-started solve).
+
+    Properties: ``slip`` = 1 - CSR/CSR_th [-]; ``orbital_speed`` (Z,) [rad/s] (the balls
+    orbit with the cage in steady state); ``element_speeds`` (Z,) = ``spin_speed``, each
+    ball's angular speed about its own axis relative to the cage [rad/s] (the common
+    skidding-result name, as the roller result's alias of its roller speeds).
     """
 
     cage_speed_ratio: float
@@ -101,7 +109,14 @@ class BallSkiddingResult:
 
     @property
     def orbital_speed(self) -> np.ndarray:
+        """(Z,) orbital speed of the balls [rad/s]: the cage speed (steady state)."""
         return np.full(self.ball_x.shape, self.cage_speed)
+
+    @property
+    def element_speeds(self) -> np.ndarray:
+        """(Z,) angular speed of each ball about its own axis relative to the cage [rad/s]
+        (``spin_speed``; the common skidding-result name)."""
+        return self.spin_speed
 
 
 @functools.lru_cache(maxsize=16)

@@ -129,3 +129,22 @@ def test_energy_balance_with_registered_heat_sources():
                  "cage_guide", "pocket_friction"]
         total = sum(h.total for h in evaluate(names, ctx))
         assert math.isclose(r.shaft_torque * W1800, total, rel_tol=1e-8)
+
+
+def test_ball_result_has_the_common_element_speeds_name():
+    """skidding.solve promises per-element speeds on both result types: the ball result's
+    ``element_speeds`` is its spin speed about each ball's own axis (the roller result's
+    alias of its roller speeds)."""
+    import math
+
+    from thermobearing.bearing_config import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding import solve
+    from thermobearing.state import OilSupply
+
+    res = solve(load_bearing("SKF6304"), load_lubricant("ISO_VG68"), 2000 * math.pi / 30,
+                2000.0, 0.0, 323.15, supply=OilSupply("jet", 1e-5, 323.15))
+    assert res.element_speeds.shape == (res.spin_speed.size,)
+    assert np.array_equal(res.element_speeds, res.spin_speed)
+    assert np.all(res.element_speeds > 0)
+    assert np.all(res.orbital_speed == res.cage_speed)
