@@ -18,6 +18,21 @@ import numpy as np
 from .errors import InputError, UnknownNameError, check_positive, check_range
 
 
+class ReadOnlyTable(dict):
+    """A dict that refuses changes (TypeError) but copies and pickles as one: the
+    ``estimated`` table of a shared material preset."""
+
+    def _read_only(self, *args, **kwargs):
+        raise TypeError("a material's estimated table is read-only (the presets are shared); "
+                        "build a new Material with dataclasses.replace(..., estimated={...})")
+
+    __setitem__ = __delitem__ = __ior__ = _read_only
+    clear = pop = popitem = setdefault = update = _read_only
+
+    def __reduce__(self):
+        return (type(self), (dict(self),))
+
+
 @dataclass(frozen=True)
 class Material:
     """An isotropic solid.
@@ -44,6 +59,10 @@ class Material:
     estimated: Mapping[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
+        # a read-only copy: the presets are module-level objects shared by every bearing
+        # that names them, so a mutable mapping would let one caller's edit leak into the
+        # next load (no global mutable state)
+        object.__setattr__(self, "estimated", ReadOnlyTable(self.estimated))
         check_positive(f"{self.name}.youngs_modulus", self.youngs_modulus)
         check_range(f"{self.name}.poisson_ratio", self.poisson_ratio, -1.0, 0.5,
                     low_inclusive=False, high_inclusive=False)
@@ -51,7 +70,7 @@ class Material:
         check_positive(f"{self.name}.specific_heat", self.specific_heat)
         check_positive(f"{self.name}.thermal_conductivity", self.thermal_conductivity)
 
-    def __hash__(self) -> int:  # ``estimated`` is a dict; hash the numbers and the name
+    def __hash__(self) -> int:  # ``estimated`` is a mapping; hash the numbers and the name
         return hash((self.name, self.youngs_modulus, self.poisson_ratio, self.density,
                      self.specific_heat, self.thermal_conductivity, self.source))
 

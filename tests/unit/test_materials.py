@@ -83,3 +83,16 @@ def test_bad_material_values():
             Material(**kw)
     with pytest.raises(InputError):
         effective_modulus(STEEL_52100, "STEEL_52100")
+
+
+def test_preset_estimated_tables_are_read_only():
+    """The presets are module-level objects shared by every bearing that names them: their
+    ``estimated`` table is read-only, so one caller's edit cannot leak into later loads."""
+    import pytest as _pytest
+
+    from thermobearing.bearing_config import load_bearing
+
+    mat = load_bearing("QJ1044").ring_material
+    with _pytest.raises(TypeError):
+        mat.estimated["youngs_modulus"] = "edited"
+    assert load_bearing("QJ1044").ring_material.estimated.get("youngs_modulus") != "edited"
