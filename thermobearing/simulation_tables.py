@@ -73,12 +73,15 @@ def contact_angle_columns(kin: KinematicsResult, bearing: Any) -> dict[str, floa
     ball bearing's state: sum(Q alpha) / sum(Q) over every loaded contact of the ring (both
     arcs of a gothic-arch ring). At speed the balls' centrifugal force turns the outer
     angle down and the inner one up, which is what lifts the rolling cage speed ratio
-    above CSR_th in angular-contact bearings. NaN for a ring with no loaded contact (a
-    state at rest, or race control without load on that ring); no columns for roller
+    above CSR_th in angular-contact bearings. NaN for a ring with no loaded contact (above
+    1 uN; race control without load on that ring); no columns for roller
     bearings (their raceway contacts have no contact angle)."""
     if not hasattr(bearing, "ball_diameter"):
         return {}
     out = {}
+    # a contact counts as loaded above 1 uN: contacts of an unloaded state carry round-off
+    # loads (3e-10 N under race control without load), whose angles mean nothing
+    floor = 1e-6
     for ring in ("inner", "outer"):
         q_sum = qa_sum = 0.0
         for cs in kin.state.contacts:
@@ -86,7 +89,7 @@ def contact_angle_columns(kin: KinematicsResult, bearing: Any) -> dict[str, floa
                 continue
             q = np.asarray(cs.normal_load, float)
             a = np.broadcast_to(np.asarray(cs.contact_angle, float), q.shape)
-            loaded = q > 0
+            loaded = q > floor
             q_sum += float(np.sum(q[loaded]))
             qa_sum += float(np.sum(q[loaded] * np.abs(a[loaded])))
         out[f"{ring} contact angle [deg]"] = (math.degrees(qa_sum / q_sum) if q_sum > 0

@@ -117,3 +117,14 @@ def test_skidding_solver_states_report_the_film_formula_outside_its_range_once_p
     assert 1 <= len(film) <= 2
     assert all(w.startswith("front, steps 1-2: ") for w in film)
     assert any("U in [" in w and "outside [1e-12, 1e-10]" in w for w in film)
+
+
+def test_round_off_contacts_of_an_unloaded_state_give_no_angle():
+    """Race control without any load leaves contacts with round-off loads (~3e-10 N): no
+    angle is reported from them (was an inner angle of 23.8 deg for the 7014 C)."""
+    text = SPINDLE.replace("@KIN@", "race_control").replace(
+        'radial_load = "200 N"', 'radial_load = "0 N"').replace(
+        'axial_load = "500 N"', 'axial_load = "0 N"')
+    kin = Simulation(loads_scene(text), progress=False).run().tables["kinematics"]
+    turning = kin[kin["speed [rpm]"] > 0]
+    assert turning["inner contact angle [deg]"].isna().all()
