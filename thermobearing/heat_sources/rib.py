@@ -17,6 +17,9 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
   coupled model").
+  Where the coupled motion is unstable at a temperature node and its neighbours, or would
+  integrate more than :data:`MAX_COUPLED_TIME` of motion (slow cages: the cost grows as
+  1/speed), the reduced model below books the heat and a ValidityWarning says so.
 * ``"reduced"``: the drag F_G of both faces at the kinematic state's (quasi-static) spins;
   with ``unbalance_mass`` > 0 the one-roller reduced dynamics
   (:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, on the quasi-static
@@ -52,15 +55,25 @@ import warnings
 
 import numpy as np
 
-from ..errors import InputError, ValidityWarning, check_positive, check_range
+from ..errors import ConvergenceError, InputError, ValidityWarning, check_positive, check_range
 from ..hertz import point_contact
 from ..rib import DEFAULT_RIB_FRICTION, lubricant_drag, rib_geometry, rib_sliding_speed
-from ..skidding.roller_dynamics_heat import DEFAULT_TEMPERATURE_STEP, MODELS, rib_dynamics_heat
+from ..skidding.roller_dynamics_heat import (
+    DEFAULT_ORBITS,
+    DEFAULT_TEMPERATURE_STEP,
+    DEFAULT_WARMUP_ORBITS,
+    MODELS,
+    rib_dynamics_heat,
+)
 from . import HEAT_SOURCES, ForcePair, HeatContext, HeatResult
 from .raceway import blok_partition
 
 #: default model of the rib dynamics (module notes: fidelity vs cost, measured)
 DEFAULT_MODEL = "coupled"
+#: longest motion [s] the coupled model integrates per temperature node (its fixed cage
+#: orbits at this cage speed); beyond it the reduced model books the heat (~20-30 s CPU at
+#: the ~1.5 us steps the rib contact sets; paper 003's base case needs 0.027 s)
+MAX_COUPLED_TIME = 0.5
 
 
 @HEAT_SOURCES.register(
@@ -129,11 +142,42 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
             + (" (the unbalance is not modelled there)" if unbalance > 0.0 else "")),
             stacklevel=2)
         model, unbalance = "reduced", 0.0
+    if model == "coupled":
+        # the coupled integration's step is set by the rib contact (~1.5 us) and it runs a
+        # fixed number of cage orbits, so its cost grows as 1/speed (45 r/min: 265 s CPU
+        # per temperature node); beyond MAX_COUPLED_TIME of simulated motion the reduced
+        # model books the heat, said in a warning
+        orbit = 2.0 * math.pi / max(abs(wc), 1e-12)
+        simulated = (DEFAULT_WARMUP_ORBITS + DEFAULT_ORBITS) * orbit
+        if simulated > MAX_COUPLED_TIME:
+            warnings.warn(ValidityWarning(
+                f"rib_friction: the coupled roller dynamics would integrate "
+                f"{simulated:.3g} s of motion at this cage speed ({abs(wc):.3g} rad/s; "
+                f"limit {MAX_COUPLED_TIME:g} s, ~1.5 us steps): the reduced model (one "
+                "roller, quasi-static spins) books the rib heat here"), stacklevel=2)
+            model = "reduced"
     if model == "coupled" or unbalance > 0.0:
-        dyn = rib_dynamics_heat(b, ctx.lubricant, wi - float(kin.outer_speed),
-                                float(op.radial_load), temperature, unbalance, model=model,
-                                friction_coefficient=mu, oil_fraction=oil_fraction,
-                                temperature_step=t_step)
+        speed = wi - float(kin.outer_speed)
+        try:
+            dyn = rib_dynamics_heat(b, ctx.lubricant, speed, float(op.radial_load),
+                                    temperature, unbalance, model=model,
+                                    friction_coefficient=mu, oil_fraction=oil_fraction,
+                                    temperature_step=t_step)
+        except ConvergenceError as exc:
+            if model != "coupled":
+                raise
+            # the coupled motion is unstable at this state and at the neighbouring
+            # temperature nodes: the reduced model books the rib heat, said in a warning
+            warnings.warn(ValidityWarning(
+                f"rib_friction: the coupled roller dynamics stopped ({exc}); the reduced "
+                "model (one roller, quasi-static spins) books the rib heat here"),
+                stacklevel=2)
+            model = "reduced"
+            dyn = (rib_dynamics_heat(b, ctx.lubricant, speed, float(op.radial_load),
+                                     temperature, unbalance, model=model,
+                                     friction_coefficient=mu, oil_fraction=oil_fraction,
+                                     temperature_step=t_step)
+                   if unbalance > 0.0 else None)
     details: dict = {"thrust_normal_force": q, "friction_coefficient": mu, "model": model}
     if model == "coupled":
         # every face from the coupled integration (contacts and drag); the thrust share
