@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from .errors import ValidityWarning
 from .registry import Registry
 from .state import KinematicState, OilSupply, OperatingPoint
 
@@ -209,6 +211,17 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
                     if hasattr(bearing, "ball_diameter") else {})
     if hasattr(bearing, "ball_diameter") and res.converged:
         _ball_film_range(bearing, lubricant, res.kinematic_state, contact_temperature)
+        if res.extra.get("fallback") == "round_off":
+            heat = float(res.heat["total"])
+            gap = abs(res.shaft_torque * res.inner_speed - heat) / max(abs(heat), 1e-300)
+            warnings.warn(ValidityWarning(
+                f"skidding.ball: state accepted at the round-off floor of its residual "
+                f"({res.residual_norm:.2g} against a one-ulp floor of "
+                f"{res.extra['round_off_floor']:.2g}; tolerance 1e-9): the oil at "
+                f"{contact_temperature - 273.15:.1f} degC makes the contact traction so steep "
+                "that one ulp of a ball speed moves its force balance by more than the "
+                f"tolerance; the energy identity holds to {gap:.1g} (relative)"),
+                stacklevel=2)
     return KinematicsResult(
         state=res.kinematic_state,
         cage_speed_ratio=float(res.cage_speed_ratio),

@@ -60,6 +60,7 @@ from .ball_result import (  # noqa: F401  (private helpers re-exported)
     _result,
     theoretical_csr,
 )
+from .ball_round_off import accept_at_round_off
 
 __all__ = [
     "N_BALL",
@@ -286,10 +287,21 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                         max_iter, err)
                     fallback = "continuation"
                 except ConvergenceError as err_load:
-                    X, G, nrm, iters, system.last_jacobian = _speed_continuation(
-                        bearing, models, speed, radial_load, axial_load, n_balls, tol,
-                        max_iter, err_load)
-                    fallback = "speed_continuation"
+                    try:
+                        X, G, nrm, iters, system.last_jacobian = _speed_continuation(
+                            bearing, models, speed, radial_load, axial_load, n_balls, tol,
+                            max_iter, err_load)
+                        fallback = "speed_continuation"
+                    except ConvergenceError as err_speed:
+                        # every fallback stopped just above the tolerance: accept the best
+                        # iterate at the target if its residual is at the round-off floor
+                        # of its evaluation (ball_round_off), else the error as before
+                        found = accept_at_round_off(system, tol, (err, err_speed))
+                        if found is None:
+                            raise
+                        X, G, nrm, round_off, system.last_jacobian = found
+                        iters = int(err.state.get("iteration", max_iter))
+                        fallback = "round_off"
     own_reference = theoretical_reference is None
     if own_reference and guess is not None:
         # CSR_th depends on the loads and the geometry only (a zero-speed load
@@ -315,6 +327,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                       res.theoretical_cage_speed_ratio)
     if fallback is not None:
         res.extra["fallback"] = fallback
+    if fallback == "round_off":
+        res.extra["round_off_floor"] = round_off
     if own_reference:
         res.extra["theoretical_key"] = (bearing, float(radial_load), float(axial_load),
                                         system.Z)
