@@ -217,10 +217,11 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
             warnings.warn(ValidityWarning(
                 f"skidding.ball: state accepted at the round-off floor of its residual "
                 f"({res.residual_norm:.2g} against a one-ulp floor of "
-                f"{res.extra['round_off_floor']:.2g}; tolerance 1e-9): the oil at "
-                f"{contact_temperature - 273.15:.1f} degC makes the contact traction so steep "
-                "that one ulp of a ball speed moves its force balance by more than the "
-                f"tolerance; the energy identity holds to {gap:.1g} (relative)"),
+                f"{res.extra['round_off_floor']:.2g}; tolerance 1e-9; contacts at "
+                f"{contact_temperature - 273.15:.1f} degC): the contact traction is so steep "
+                "(viscous oil, high speed) that one ulp of a ball speed or position moves "
+                "the force balance by more than the tolerance; the energy identity holds to "
+                f"{gap:.1g} (relative)"),
                 stacklevel=2)
     return KinematicsResult(
         state=res.kinematic_state,
