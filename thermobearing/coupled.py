@@ -328,33 +328,25 @@ MIN_CHUNK = 0.1
 RUNAWAY_TEMPERATURE = 573.15
 
 
-def _check_runaway(names: list[str], T: np.ndarray, t: float, step: int, lin: _Linear) -> None:
-    """Stop with a clear error when a node runs away thermally (heat in >> heat out)."""
+def _check_runaway(names: list[str], T: np.ndarray, t: float | None, step: int,
+                   lin: _Linear) -> None:
+    """Stop with a clear error when a node runs away thermally (heat in >> heat out): a
+    transient state (time ``t`` [s]) or a steady solve's pass or fixed point (``t`` None)
+    with a node above :data:`RUNAWAY_TEMPERATURE`. A steady state at 1200 degC is no
+    answer either, and the passes on the way there leave the viscosity laws' range."""
     j = int(np.argmax(T))
     if T[j] > RUNAWAY_TEMPERATURE:
+        what, head, state = (
+            ("coupled transient", "thermal runaway", {"time": t, "step": step})
+            if t is not None else
+            ("coupled steady state", "no steady state below the runaway limit",
+             {"step": step}))
         raise ConvergenceError(
-            "coupled transient", float(T[j] - RUNAWAY_TEMPERATURE),
-            f"thermal runaway: node {names[j]!r} reached {T[j] - 273.15:.0f} degC "
+            what, float(T[j] - RUNAWAY_TEMPERATURE),
+            f"{head}: node {names[j]!r} reached {T[j] - 273.15:.0f} degC "
             f"(limit {RUNAWAY_TEMPERATURE - 273.15:.0f} degC) with {float(np.sum(lin.q0)):.0f} W "
             "of heat; the losses exceed what the network removes -- check the oil flow, the "
-            "cooling paths and the speed/load of the schedule",
-            {"time": t, "step": step})
-
-
-def _check_steady_runaway(names: list[str], T: np.ndarray, step: int, lin: _Linear) -> None:
-    """Stop a steady solve whose state (a pass's update, or the fixed point itself) puts a
-    node above :data:`RUNAWAY_TEMPERATURE`: no steady state exists below the service range
-    (the transient stops there as a thermal runaway); a fixed point at 1200 degC is not an
-    answer, and the passes on the way there leave the viscosity laws' range."""
-    j = int(np.argmax(T))
-    if T[j] > RUNAWAY_TEMPERATURE:
-        raise ConvergenceError(
-            "coupled steady state", float(T[j] - RUNAWAY_TEMPERATURE),
-            f"no steady state below the runaway limit: node {names[j]!r} at "
-            f"{T[j] - 273.15:.0f} degC (limit {RUNAWAY_TEMPERATURE - 273.15:.0f} degC) with "
-            f"{float(np.sum(lin.q0)):.0f} W of heat; the losses exceed what the network "
-            "removes -- check the oil flow, the cooling paths and the speed/load of the step",
-            {"step": step})
+            "cooling paths and the speed/load of the schedule", state)
 
 
 def _temperature_row(t: float, names: list[str], T: np.ndarray) -> dict[str, float]:
@@ -596,7 +588,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
             outer_iterations += 1
             if change < 1e-3:
                 T = T_new
-                _check_steady_runaway(names, T, i, lin)
+                _check_runaway(names, T, None, i, lin)
                 break
             # Aitken's dynamic relaxation of the outer update (Irons & Tuck): the pass
             # holds the kinematics, whose heat falls as the oil thins, so the plain
@@ -614,7 +606,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
             big = float(np.max(np.abs(step_T)))
             T = T + (step_T * (STEADY_MAX_PASS_CHANGE / big) if big > STEADY_MAX_PASS_CHANGE
                      else step_T)
-            _check_steady_runaway(names, T, i, lin)
+            _check_runaway(names, T, None, i, lin)
         else:
             raise ConvergenceError("coupled steady state", change,
                                    "temperatures still move after 30 kinematics updates",

@@ -29,6 +29,23 @@ CHECK_KEYS = ("skid_limit", "contact_stress_limit", "min_film_parameter")
 CHECKS_SOURCE = "scene [checks]"
 
 
+def _checked_load_share(sec: str, share: Mapping[str, Any]) -> dict[str, float]:
+    """A ``[[bearings]] load_share`` table checked (keys radial / axial, finite numbers,
+    radial >= 0; ``sec`` names the bearing in errors) and converted to floats."""
+    _check_keys(f"{sec}.load_share", share, ("radial", "axial"))
+    out = {}
+    for key, value in share.items():
+        where = f"{sec}.load_share.{key}"
+        if isinstance(value, bool) or not isinstance(value, int | float) \
+                or not math.isfinite(value):
+            raise InputError(where, value, "a number: the fraction of the schedule's "
+                             f"{key} load this bearing carries (1 = all of it)")
+        if key == "radial" and value < 0:
+            raise InputError(where, value, "a fraction >= 0 of the radial load")
+        out[key] = float(value)
+    return out
+
+
 @dataclass(frozen=True)
 class BearingSpec:
     """One bearing of the scene: a preset or a TOML path, with overrides.
@@ -54,15 +71,7 @@ class BearingSpec:
         sec = f"bearings[{self.name}]"
         if (self.preset is None) == (self.path is None):
             raise InputError(f"{sec}.preset", self.preset, "exactly one of 'preset' or 'path'")
-        _check_keys(f"{sec}.load_share", self.load_share, ("radial", "axial"))
-        for key, value in self.load_share.items():
-            where = f"{sec}.load_share.{key}"
-            if isinstance(value, bool) or not isinstance(value, int | float) \
-                    or not math.isfinite(value):
-                raise InputError(where, value, "a number: the fraction of the schedule's "
-                                 f"{key} load this bearing carries (1 = all of it)")
-            if key == "radial" and value < 0:
-                raise InputError(where, value, "a fraction >= 0 of the radial load")
+        _checked_load_share(sec, self.load_share)
 
     @property
     def radial_share(self) -> float:
@@ -79,17 +88,8 @@ class BearingSpec:
         preset, path = data.get("preset"), data.get("path")
         if (preset is None) == (path is None):
             raise InputError(f"{sec}.preset", preset, "exactly one of 'preset' or 'path'")
-        share = dict(_table(f"{sec}.load_share", data.get("load_share", {})))
-        _check_keys(f"{sec}.load_share", share, ("radial", "axial"))
-        for key, value in share.items():
-            where = f"{sec}.load_share.{key}"
-            if isinstance(value, bool) or not isinstance(value, int | float) \
-                    or not math.isfinite(value):
-                raise InputError(where, value, "a number: the fraction of the schedule's "
-                                 f"{key} load this bearing carries (1 = all of it)")
-            if key == "radial" and value < 0:
-                raise InputError(where, value, "a fraction >= 0 of the radial load")
-            share[key] = float(value)
+        share = _checked_load_share(sec, _table(f"{sec}.load_share",
+                                                 data.get("load_share", {})))
         return cls(
             name=str(data.get("name", f"bearing{index + 1}")),
             preset=preset,
