@@ -463,3 +463,23 @@ def test_race_control_kinematics_name_a_wrong_bearing(vg46):
         with pytest.raises(InputError) as info:  # before: AttributeError
             call()
         assert info.value.field == "bearing" and info.value.value == "Lubricant"
+
+
+def test_a_speed_in_rpm_passed_as_rad_per_s_gets_a_hint():
+    """1800 passed to skidding.solve means 1800 rad/s (17189 r/min): for the QJ1044 (d_m
+    280 mm) n d_m = 4.8e6 mm r/min, beyond any oil-lubricated bearing; the solver converges
+    there (CSR 29 % below CSR_th) and used to say nothing."""
+    import math
+    import warnings as _w
+
+    from thermobearing.bearing_config import load_bearing as _lb
+    from thermobearing.errors import ValidityWarning as _VW
+    from thermobearing.skidding import _speed_plausibility
+
+    qj = _lb("QJ1044")
+    with _w.catch_warnings(record=True) as caught:
+        _w.simplefilter("always", _VW)
+        _speed_plausibility(qj, 1800.0)
+        _speed_plausibility(qj, 1800 * math.pi / 30)
+    texts = [str(w.message) for w in caught]
+    assert len(texts) == 1 and "1800 r/min would be 188.5 rad/s" in texts[0]

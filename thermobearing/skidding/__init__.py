@@ -89,6 +89,7 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
     for name, kelvin in (("temperature", temperature), ("oil_temperature", oil_temperature)):
         if kelvin is not None:  # the oil below its pour point: was a Roelands overflow error
             check_liquid_temperature(lubricant, name, kelvin)  # "at a contact pressure"
+    _speed_plausibility(bearing, speed)
     if isinstance(bearing, BallBearing) or getattr(bearing, "kind", None) in (
             "deep_groove", "angular_contact", "four_point"):
         from .ball import solve_ball
@@ -108,3 +109,32 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
         return solve_roller(bearing, lubricant, speed, radial_load, axial_load, temperature,
                             **options)
     raise InputError("bearing", type(bearing).__name__, "a BallBearing or a RollerBearing")
+
+
+#: speed factor n d_m [mm r/min] above which no oil-lubricated rolling bearing runs (hybrid
+#: spindle bearings on oil-air reach about 2.5-3e6; recalled catalogue limits, not a model
+#: bound): a larger one is most likely a speed given in r/min where rad/s is asked
+NDM_PLAUSIBLE = 4.0e6
+
+
+def _speed_plausibility(bearing: Any, speed: float) -> None:
+    """A ValidityWarning when the inner-ring speed [rad/s] gives a speed factor n d_m above
+    :data:`NDM_PLAUSIBLE`: the solvers converge there (QJ1044 at 1800 rad/s: a cage speed
+    ratio 29 % below CSR_th) but the number is most likely r/min passed as rad/s."""
+    import math
+    import warnings
+
+    from ..errors import ValidityWarning
+
+    dm = getattr(bearing, "pitch_diameter", None)
+    if dm is None or not math.isfinite(speed):
+        return
+    n_rpm = abs(speed) * 30.0 / math.pi
+    ndm = n_rpm * dm * 1e3
+    if ndm > NDM_PLAUSIBLE:
+        warnings.warn(ValidityWarning(
+            f"skidding.solve: speed = {speed:g} rad/s ({n_rpm:.0f} r/min) gives n d_m = "
+            f"{ndm:.3g} mm r/min, beyond any oil-lubricated rolling bearing "
+            f"(~{NDM_PLAUSIBLE:.0e}); the speed is in rad/s: {speed:g} r/min would be "
+            f"{speed * math.pi / 30.0:.4g} rad/s"),
+            stacklevel=3)
