@@ -462,6 +462,13 @@ class Lubricant:
         correlation ``asme1953_mineral_fit`` is used. nu100 >= nu40 raises InputError, as
         does a viscosity outside ASTM D341's range, 0.21 cSt to 1e6 cSt (cSt given as m^2/s).
         """
+        for key, t_ref in (("T1", T1), ("T2", T2)):
+            # ASTM D341 describes liquid oils; the pour points of lubricants lie above about
+            # -70 degC, so a reference temperature below 200 K is a degC value read as kelvin
+            if isinstance(t_ref, int | float) and math.isfinite(t_ref) and t_ref < 200.0:
+                raise InputError(f"{name}.{key}", t_ref,
+                                 "a reference temperature in K of the liquid oil (>= 200 K; "
+                                 f"{t_ref:g} K is {t_ref - 273.15:g} degC; 40 degC is 313.15 K)")
         for key, nu in (("nu40", nu40), ("nu100", nu100)):
             check_positive(f"{name}.{key}", nu)
             if not _D341_MIN_NU <= nu <= _D341_MAX_NU:

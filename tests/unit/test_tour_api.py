@@ -483,3 +483,15 @@ def test_a_speed_in_rpm_passed_as_rad_per_s_gets_a_hint():
         _speed_plausibility(qj, 1800 * math.pi / 30)
     texts = [str(w.message) for w in caught]
     assert len(texts) == 1 and "1800 r/min would be 188.5 rad/s" in texts[0]
+
+
+def test_from_viscosities_refuses_reference_temperatures_in_degc():
+    """T1 = 40, T2 = 100 (degC read as kelvin) gave 1.76 cSt at 40 degC for an ISO VG 46 oil
+    without a word; a reference temperature below 200 K is refused naming it."""
+    from thermobearing.errors import InputError as _IE
+    from thermobearing.lubricant import Lubricant
+
+    with pytest.raises(_IE, match=r"custom\.T1 .*40 K is -233.15 degC"):
+        Lubricant.from_viscosities(46e-6, 6.8e-6, 870.0, T1=40, T2=100)
+    oil = Lubricant.from_viscosities(46e-6, 6.8e-6, 870.0)
+    assert float(oil.kinematic_viscosity(313.15)) == pytest.approx(46e-6, rel=1e-6)
