@@ -238,14 +238,17 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
 
 def _ball_film_range(bearing: Any, lubricant: Any, state: Any, temperature: float) -> None:
     """The fitted-range check of the ball solver's film (Hamrock-Dowson 1977 central film,
-    evaluated by the solver's compiled core without checks): the checked
-    :func:`thermobearing.film.hamrock_dowson_1977_central` on the loaded, rolling contacts
-    of the converged state, for its ValidityWarning only (the same warning race control
-    gives; a scene run merges the repeats)."""
-    from .film import hamrock_dowson_1977_central
+    evaluated by the solver's compiled core without checks), on the loaded, rolling contacts
+    of the converged state: the dimensionless groups U = eta u / (E' R_x), W = Q / (E' R_x^2),
+    G = alpha E' and the ellipticity k against :data:`thermobearing.film.HD1977_RANGE`, with
+    the same ValidityWarning as :func:`thermobearing.film.hamrock_dowson_1977_central` (race
+    control's check); a scene run merges the repeats. The groups only, not the checked film
+    function: this runs at every kinematics solve of a transient."""
+    from .film import HD1977_RANGE, _warn_range, hamrock_dowson_ellipticity
 
     eta = float(lubricant.dynamic_viscosity(temperature))
-    alpha = float(lubricant.pressure_viscosity_coefficient(temperature))
+    e_mod = float(bearing.effective_modulus)
+    big_g = float(lubricant.pressure_viscosity_coefficient(temperature)) * e_mod
     for cs in state.contacts:
         if cs.film_thickness is None or cs.reduced_radius_x is None:
             continue
@@ -254,12 +257,15 @@ def _ball_film_range(bearing: Any, lubricant: Any, state: Any, temperature: floa
         use = (q > 0) & (u > 0)
         if not np.any(use):
             continue
-        ry = None if cs.reduced_radius_y is None else np.broadcast_to(
-            np.asarray(cs.reduced_radius_y, float), q.shape)[use]
-        hamrock_dowson_1977_central(
-            u[use], eta, alpha, q[use],
-            np.broadcast_to(np.asarray(cs.reduced_radius_x, float), q.shape)[use], ry,
-            effective_modulus=bearing.effective_modulus)
+        rx = np.broadcast_to(np.asarray(cs.reduced_radius_x, float), q.shape)[use]
+        groups = {}
+        if cs.reduced_radius_y is not None:
+            ry = np.broadcast_to(np.asarray(cs.reduced_radius_y, float), q.shape)[use]
+            groups["k"] = (hamrock_dowson_ellipticity(rx, ry), HD1977_RANGE["k"])
+        groups["U"] = (eta * u[use] / (e_mod * rx), HD1977_RANGE["U"])
+        groups["W"] = (q[use] / (e_mod * rx**2), HD1977_RANGE["W"])
+        groups["G"] = (big_g, HD1977_RANGE["G"])
+        _warn_range("hamrock_dowson_1977_central", **groups)
 
 
 def _solver_traction(res: Any, bearing: Any, lubricant: Any, temperature: float,
