@@ -38,6 +38,9 @@ pocket face, isoviscous, Reynolds outlet condition. The garbled printed form
 the coefficient printed, and a friction force ``~ eta U sqrt(R/h0)``: the normal force
 ``F_d`` fixes the film ``h0`` and the friction follows, ``f_d ~ sqrt(eta U R F_d l)``.
 The film is capped by the pocket clearance ``c_p``: ``1/h0 = F_d/(k_w eta U R l) + 1/c_p``.
+The pocket laws are in :mod:`~thermobearing.skidding.roller_pocket_film` and the Martin
+coefficients in :mod:`~thermobearing.skidding.roller_fluid_coefficients`; both are
+re-exported here.
 
 All functions are vectorised over rollers; SI units throughout.
 """
@@ -45,19 +48,24 @@ All functions are vectorised over rollers; SI units throughout.
 from __future__ import annotations
 
 import functools
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import integrate as sint
-from scipy import optimize as sopt
 from scipy.special import roots_legendre
 
 from ..errors import UnknownNameError
 from ..hertz import line_contact
 from ..registry import Registry
+from .roller_fluid_coefficients import _pi_function as _pi_function
+from .roller_fluid_coefficients import martin_coefficients as martin_coefficients
+from .roller_fluid_coefficients import rigid_starved_film as rigid_starved_film
+from .roller_fluid_coefficients import starved_coefficients as starved_coefficients
+from .roller_pocket_film import POCKET_FILM_MODELS as POCKET_FILM_MODELS
+from .roller_pocket_film import PocketForces as PocketForces
+from .roller_pocket_film import pocket_forces as pocket_forces
+from .roller_pocket_film import pocket_forces_two_faces as pocket_forces_two_faces
 
 ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 
@@ -75,115 +83,6 @@ ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 #: ``solve_roller(..., drag_model="<name>")``.
 ROLLER_DRAG: Registry[Callable[..., Any]] = Registry(
     "roller_drag", "fluid forces of roller-raceway line contacts for the roller skidding solver")
-
-
-def _pi_function(x: float, xm: float, hs: float) -> float:
-    """Pi(X) = int_{X_m}^{X} (H - H*)/H^3 dX' in closed form (X = tan g)."""
-
-    def f2(g: float) -> float:
-        return 0.5 * g + 0.25 * math.sin(2 * g)
-
-    def f4(g: float) -> float:
-        return 3.0 / 8.0 * g + 0.25 * math.sin(2 * g) + math.sin(4 * g) / 32.0
-
-    gm = -math.pi / 2 if math.isinf(xm) else math.atan(xm)
-    g = math.atan(x)
-    return (f2(g) - f2(gm)) - hs * (f4(g) - f4(gm))
-
-
-@functools.lru_cache(maxsize=512)
-def starved_coefficients(inlet: float) -> tuple[float, float, float, float]:
-    """Rigid-isoviscous cylinder-on-plane coefficients with the inlet meniscus at X_m.
-
-    With X = x / sqrt(2 R h0), H = 1 + X^2 and the Reynolds equation
-    ``dp/dx = 6 eta U (h - h*)/h^3`` (U = u1 + u2), p = 0 at the inlet meniscus
-    X_m = ``inlet`` (< 0; ``-inf`` = fully flooded) and p = dp/dx = 0 at the outlet X*:
-
-    * load per unit length      ``w = k_w eta U R / h0``       (flooded k_w = 2.448, Martin)
-    * pressure force on the cylinder along the entrainment ``Q_x = k_q eta U sqrt(R/h0)``
-      per unit length (each surface gets the Poiseuille force ``Q_x/2`` against U)
-    * Couette integral ``int_fluid dx / h = k_c sqrt(R/h0)`` (full film from X_m to X*, then
-      the cavitated film of thickness h* spread over the gap: integrand h*/h^2).
-
-    Returns (k_w, k_q, k_c, X*). Reference: Martin 1916; Hamrock et al. 2004 (rigid
-    cylinder, Reynolds boundary condition); paper 000 eqs. 5, 37-38 (coefficient 2.447).
-    """
-    xm = float(inlet)
-    if not xm < 0.0:
-        raise ValueError("inlet meniscus X_m must be < 0")
-
-    def at_outlet(xs: float) -> float:
-        return _pi_function(xs, xm, 1.0 + xs * xs)
-
-    xs = sopt.brentq(at_outlet, 1e-12, 1.5, xtol=1e-14)
-    hs = 1.0 + xs * xs
-    lo = -np.inf if math.isinf(xm) else xm
-    int_pi = sint.quad(lambda x: _pi_function(x, xm, hs), lo, xs, limit=200)[0]
-    int_pix = sint.quad(lambda x: _pi_function(x, xm, hs) * x, lo, xs, limit=200)[0]
-    # p = 6 eta U sqrt(2R) h0^-1.5 Pi ; w = 12 eta U R/h0 int Pi
-    k_w = 12.0 * int_pi
-    # Q_x = -(1/R) int p x dx = -12 sqrt(2) eta U sqrt(R/h0) int Pi X dX
-    k_q = -12.0 * math.sqrt(2.0) * int_pix
-    couette = (sint.quad(lambda x: 1.0 / (1.0 + x * x), lo, xs)[0]
-               + sint.quad(lambda x: hs / (1.0 + x * x) ** 2, xs, np.inf)[0])
-    k_c = math.sqrt(2.0) * couette
-    return k_w, k_q, k_c, xs
-
-
-def martin_coefficients() -> tuple[float, float, float, float]:
-    """Fully flooded rigid-isoviscous coefficients (k_w, k_q, k_c, X*), see
-    :func:`starved_coefficients`; k_w = 2.448 is Martin's (1916) load coefficient."""
-    return starved_coefficients(-math.inf)
-
-
-@functools.lru_cache(maxsize=1)
-def _starved_table() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """ln(-X_m) grid and k_w, k_q on it (for vectorised interpolation)."""
-    lnx = np.linspace(math.log(1e-3), math.log(300.0), 120)
-    kw = np.empty_like(lnx)
-    kq = np.empty_like(lnx)
-    for i, v in enumerate(lnx):
-        kw[i], kq[i], _, _ = starved_coefficients(-math.exp(v))
-    return lnx, kw, kq
-
-
-def rigid_starved_film(load_per_length: Any, sum_speed: Any, radius: float, eta0: float,
-                       oil_layer: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Rigid-isoviscous film h0 [m], load and rolling-force coefficients with starvation.
-
-    The inlet meniscus sits where the gap equals the available oil layer ``oil_layer``
-    (total of both surfaces) [m]: ``h0 (1 + X_m^2) = h_oil``; the load balance
-    ``w = k_w(X_m) eta0 U R / h0`` is solved for h0 (bisection in ln h0, vectorised).
-    ``oil_layer=None``: fully flooded (Martin). Returns (h0, k_w, k_q).
-    """
-    w = np.asarray(load_per_length, dtype=float)
-    u = np.abs(np.asarray(sum_speed, dtype=float))
-    k_w0, k_q0, _, _ = martin_coefficients()
-    w_safe = np.where(w > 0, w, 1.0)
-    h_flood = k_w0 * eta0 * u * radius / w_safe
-    if oil_layer is None:
-        return h_flood, np.full(w.shape, k_w0), np.full(w.shape, k_q0)
-    lnx, kw_t, kq_t = _starved_table()
-
-    def coeffs(h0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        ratio = np.maximum(oil_layer / h0 - 1.0, 1e-300)
-        lx = 0.5 * np.log(ratio)
-        kw = np.where(lx > lnx[-1], k_w0, np.interp(lx, lnx, kw_t, left=0.0))
-        kq = np.where(lx > lnx[-1], k_q0, np.interp(lx, lnx, kq_t, left=0.0))
-        return kw, kq
-
-    lo = np.log(np.minimum(h_flood, oil_layer) * 1e-6)
-    hi = np.full(w.shape, math.log(oil_layer))
-    for _ in range(80):
-        mid = 0.5 * (lo + hi)
-        h0 = np.exp(mid)
-        kw, _ = coeffs(h0)
-        too_thin = kw * eta0 * u * radius / h0 > w_safe  # carries more than w: thicken
-        lo = np.where(too_thin, mid, lo)
-        hi = np.where(too_thin, hi, mid)
-    h0 = np.exp(0.5 * (lo + hi))
-    kw, kq = coeffs(h0)
-    return h0, kw, kq
 
 
 @dataclass(frozen=True)
@@ -494,57 +393,6 @@ def closed_form_contact_forces(
     )
 
 
-@dataclass(frozen=True)
-class PocketForces:
-    """Roller-cage pocket film (paper 000 eqs. 37-38, consistent form).
-
-    Attributes
-    ----------
-    friction : f_d, friction force on the roller surface against its rotation [N] (>= 0).
-    film_thickness : pocket film h0 [m].
-    """
-
-    friction: np.ndarray
-    film_thickness: np.ndarray
-
-
-def pocket_forces(
-    normal_force: Any,
-    roller_speed: Any,
-    roller_diameter: float,
-    length: float,
-    eta0: float,
-    pocket_clearance: float,
-    smoothing: float = 1e-4,
-) -> PocketForces:
-    """Friction of the roller-pocket film for a given pocket normal force.
-
-    ``h0`` from the Martin load ``|F_d| = k_w eta0 U R l / h0`` with U = |omega_r| D/2 and
-    R = D/2, capped smoothly by the pocket clearance, ``1/h0 = |F_d|/(k_w eta0 U R l) +
-    1/c_p``; then ``f_d = (k_c + k_q/2) eta0 U l sqrt(R/h0)`` (Couette + Poiseuille on the
-    roller surface, both against its motion).
-
-    Parameters
-    ----------
-    normal_force : (Z,) F_d [N] (either sign; the face it acts on does not matter here).
-    roller_speed : (Z,) roller angular speed omega_r [rad/s].
-    roller_diameter : D [m].  length : pocket contact length [m].
-    eta0 : ambient viscosity [Pa s].  pocket_clearance : c_p [m] (> 0).
-    smoothing : |F_d| is replaced by sqrt(F_d^2 + smoothing^2) [N] (differentiable at 0).
-
-    Reference: paper 000 eqs. 37-38; Martin 1916 and Hamrock et al. 2004 (rigid cylinder).
-    """
-    k_w, k_q, k_c, _ = martin_coefficients()
-    fn = np.sqrt(np.asarray(normal_force, dtype=float) ** 2 + smoothing**2)
-    r = 0.5 * roller_diameter
-    u = np.abs(np.asarray(roller_speed, dtype=float)) * r
-    u_safe = np.maximum(u, 1e-9)
-    inv_h = fn / (k_w * eta0 * u_safe * r * length) + 1.0 / pocket_clearance
-    h0 = 1.0 / inv_h
-    fric = (k_c + 0.5 * k_q) * eta0 * u * length * np.sqrt(r * inv_h)
-    return PocketForces(friction=fric, film_thickness=h0)
-
-
 def starved_film(film: Callable[[np.ndarray, np.ndarray], np.ndarray], radius: float,
                  eta0: float, oil_layer: float | None
                  ) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
@@ -573,77 +421,6 @@ def starved_film(film: Callable[[np.ndarray, np.ndarray], np.ndarray], radius: f
         return np.asarray(film(ue, w)) * np.minimum(1.0, h_r / h_r_flood)
 
     return h
-
-
-#: pocket film models of the roller skidding solver (``build_model(pocket_film=...)``)
-POCKET_FILM_MODELS = ("one_face", "two_faces")
-
-
-def pocket_forces_two_faces(
-    normal_force: Any,
-    roller_speed: Any,
-    roller_diameter: float,
-    length: float,
-    eta0: float,
-    pocket_clearance: float,
-) -> PocketForces:
-    """Friction of a roller between the two flooded faces of its cage pocket.
-
-    The roller sits in a pocket whose two faces (ahead of and behind it) are both wetted;
-    each face is a rigid cylinder against a plane with the Martin film of
-    :func:`pocket_forces` (paper 000 eqs. 37-38 read as Martin, load coefficient
-    k_w = 2.448). With the roller displaced by ``s`` from the pocket centre the films are
-    ``h_1 = c_p/2 - s`` (the face it is pressed on) and ``h_2 = c_p/2 + s`` and the net normal
-    force is
-
-        F_d = A (1/h_1 - 1/h_2),   A = k_w eta0 U R l,  U = |omega_r| D/2,  R = D/2   [N]
-
-    which gives, with g = F_d (c_p/2) / A [-],
-
-        s = (c_p/2) g / (1 + sqrt(1 + g^2))                                          [m]
-
-    (root of F s^2 + 2 A s - F (c_p/2)^2 = 0 in (-c_p/2, c_p/2)). Both films shear the roller
-    against its rotation, f_d = (k_c + k_q/2) eta0 U l sqrt(R) (h_1^-1/2 + h_2^-1/2) [N]
-    (Couette + Poiseuille of each face, the coefficients of :func:`pocket_forces`).
-
-    Compared with the one-face law of :func:`pocket_forces` (``1/h0 = |F_d|/A + 1/c_p``, a
-    single film capped by the whole clearance), f_d is a smooth, even function of F_d: at
-    F_d = 0 the roller is centred with two films of c_p/2 (friction 2 sqrt(2) times the
-    one-face value at F_d = 0) instead of a kink where the roller changes faces, and for
-    |F_d| >> A/c_p the loaded face tends to the one-face film A/|F_d| while the other face
-    adds its film of about c_p. The two-face form matters where the pocket forces are small
-    against their changes, e.g. a whirling bearing whose rollers nearly balance (paper 000,
-    film-supported ring: |F_d| ~ 0.1-0.2 N against a whirl inertia of 0.22 N).
-
-    Parameters
-    ----------
-    normal_force : (Z,) net pocket normal force F_d [N] (either sign).
-    roller_speed : (Z,) roller angular speed omega_r [rad/s].
-    roller_diameter : D [m].  length : pocket contact length l [m].
-    eta0 : ambient viscosity [Pa s].  pocket_clearance : c_p, pocket width minus D [m] (> 0).
-
-    Returns
-    -------
-    PocketForces (friction f_d [N] >= 0, film_thickness = the thinner film h_1 [m]).
-
-    Reference: paper 000 eqs. 37-38 [li2018_nu214_skidding]; Martin 1916
-    [martin1916_gear_lubrication] and Hamrock et al. 2004 [hamrock2004] (rigid cylinder).
-    Validity: rigid-isoviscous films (pocket loads far below the Hertz regime), flooded
-    pocket, roller parallel to the faces.
-    """
-    k_w, k_q, k_c, _ = martin_coefficients()
-    f = np.asarray(normal_force, dtype=float)
-    r = 0.5 * roller_diameter
-    u = np.abs(np.asarray(roller_speed, dtype=float)) * r
-    a = k_w * eta0 * np.maximum(u, 1e-9) * r * length
-    half = 0.5 * pocket_clearance
-    ag = np.abs(f) * half / a
-    q = np.sqrt(1.0 + ag * ag)
-    # h_1 = c/2 - |s| and h_2 = c/2 + |s| written without cancellation at large |g|
-    h1 = half * (1.0 + 1.0 / (q + ag)) / (1.0 + q)
-    h2 = half * (1.0 + q + ag) / (1.0 + q)
-    fric = (k_c + 0.5 * k_q) * eta0 * u * length * math.sqrt(r) * (h1**-0.5 + h2**-0.5)
-    return PocketForces(friction=fric, film_thickness=h1)
 
 
 @ROLLER_DRAG.register(
