@@ -176,6 +176,13 @@ class Schedule:
 
 def _read_schedule_file(name: str, defaults: Mapping[str, float],
                         base_dir: Path | None, seen_units: dict[str, str]) -> list[Step]:
+    """The steps of a CSV protocol file: a header of ``duration [s], speed [rpm],
+    radial_load [N], axial_load [N]`` (any of them may be left to the ``[schedule]``
+    defaults; the units in brackets, these by default), comma separated, or semicolon / tab
+    separated with decimal commas as spreadsheets export them; a UTF-8 BOM is skipped, rows
+    with every cell empty (a spreadsheet's trailing ``,,,``) are skipped, and so are empty
+    cells past the header's last column. A duplicated column or a row with more filled cells
+    than the header has columns is an error naming it."""
     path = Path(name)
     if not path.is_absolute() and base_dir is not None:
         path = base_dir / path
@@ -183,20 +190,42 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
         raise InputError("schedule.file", name, "an existing CSV file")
     units = {"duration": "s", "speed": "rpm", "radial_load": "N", "axial_load": "N"}
     steps = []
-    with path.open(newline="", encoding="utf-8") as fh:
-        reader = csv.DictReader(fh)
+    with path.open(newline="", encoding="utf-8-sig") as fh:
+        first = fh.readline()
+        fh.seek(0)
+        delim = "," if "," in first else next((d for d in (";", "\t") if d in first), ",")
+        reader = csv.DictReader(fh, delimiter=delim)
         colmap: dict[str, str] = {}
         for col in reader.fieldnames or []:
             key, _, unit = col.partition("[")
             key = key.strip()
             if key not in _STEP_KEYS:
                 raise InputError(f"schedule.file column {col!r}", col,
-                                 "columns named " + ", ".join(_STEP_KEYS) + " with [unit]")
+                                 "columns named " + ", ".join(_STEP_KEYS) + " with [unit], "
+                                 "separated by commas (or semicolons / tabs)")
+            if key in colmap.values():
+                raise InputError(f"schedule.file column {col!r}", col,
+                                 f"one column per quantity ({key} is given twice)")
             colmap[col] = key
             if unit:
                 units[key] = unit.rstrip("] ")
         for i, row in enumerate(reader):
-            values = {colmap[c]: f"{v} {units[colmap[c]]}" for c, v in row.items() if v}
+            if any((v or "").strip() for v in row.get(None, ())):
+                raise InputError(f"schedule.file row {i + 1}", delim.join(row[None]),
+                                 f"at most {len(colmap)} cells, one per header column "
+                                 "(extra cells)")
+            row.pop(None, None)
+            if not any((v or "").strip() for v in row.values()):
+                continue
+            values = {colmap[c]: f"{_decimal(v, delim)} {units[colmap[c]]}"
+                      for c, v in row.items() if v and v.strip()}
             steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
             _note_units(seen_units, values)
     return steps
+
+
+def _decimal(cell: str, delim: str) -> str:
+    """A cell's number as Python reads it: a decimal comma (in a file not separated by
+    commas) becomes a point."""
+    cell = cell.strip()
+    return cell.replace(",", ".") if delim != "," else cell
