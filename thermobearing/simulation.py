@@ -78,6 +78,7 @@ from .simulation_bearings import (
     _Evaluation,
     _load_scene_bearing,
     _supply_notes,
+    axial_direction,
     axial_load_path,
     level_notes,
     radial_load_contact,
@@ -174,6 +175,8 @@ class Simulation:
                                f"({why}){hint}")
             record = _Bearing(spec.name, key, b, is_ball, sources, kin_name, opts,
                               radial_share=spec.radial_share, axial_share=spec.axial_share)
+            axial_direction(f"bearings[{i_spec}].load_share.axial", b, spec.axial_share,
+                            scene.schedule.steps)
             own_steps = record.steps(scene.schedule.steps)
             radial_load_contact(spec.name, b, own_steps, kin_name)
             no_path = axial_load_path(spec.name, b, own_steps, kin_name, sources)
@@ -248,7 +251,8 @@ class Simulation:
     # ------------------------------------------------------------ evaluation
     def _operating(self, step: Step, b: _Bearing | None = None) -> OperatingPoint:
         """The operating point of a step, with bearing ``b``'s share of the loads."""
-        radial, axial = (step.radial_load, step.axial_load) if b is None else b.loads(step)
+        radial, axial = ((step.radial_load, step.axial_load) if b is None
+                         else b.operating_loads(step))
         return OperatingPoint(inner_speed=step.speed, radial_load=radial, axial_load=axial)
 
     def solve_kinematics(self, b: _Bearing, step_index: int, step: Step,

@@ -37,8 +37,19 @@ class _Bearing:
     axial_share: float = 1.0
 
     def loads(self, step: Any) -> tuple[float, float]:
-        """(radial, axial) load [N] of this bearing at a schedule step."""
+        """(radial, axial) load [N] of this bearing at a schedule step (the axial load
+        negative under a negative ``load_share.axial``: the tables show the direction)."""
         return step.radial_load * self.radial_share, step.axial_load * self.axial_share
+
+    def operating_loads(self, step: Any) -> tuple[float, float]:
+        """(radial, axial) load magnitudes [N] the models take at a schedule step. A
+        reversed thrust (negative axial share) loads a deep-groove or four-point bearing, and
+        a roller bearing with ribs on both rings, as the same thrust the other way: their
+        models are symmetric about the bearing's mid-plane, so only its magnitude enters
+        (an angular-contact bearing, which carries thrust one way only, refuses it before
+        the run: :func:`axial_direction`)."""
+        radial, axial = self.loads(step)
+        return radial, abs(axial)
 
     def steps(self, steps: Any) -> list[Any]:
         """The schedule's steps with this bearing's loads (for the pre-run checks)."""
@@ -193,6 +204,24 @@ def axial_load_path(name: str, bearing: Any, steps: Any, kinematics: str,
         return (f"{name}: the axial load of steps {steps_text} books no loss (the rib_friction "
                 "heat source, which carries it on the ribs, is not running)")
     return None
+
+
+def axial_direction(where: str, bearing: Any, share: float, steps: Any) -> None:
+    """Refuse a negative axial share (a reversed thrust) on an angular-contact bearing for a
+    schedule with an axial load: its balls take thrust in the direction of the contact angle
+    only, the other way the rings lift off the balls (a pair mounted back-to-back or
+    face-to-face gives each direction to one bearing). ``where`` names the scene field
+    (``bearings[1].load_share.axial``). The run stopped at the first solve with
+    ``operating.axial_load = -2302.95 is not allowed``, naming no scene field."""
+    if share >= 0.0 or getattr(bearing, "kind", None) != "angular_contact":
+        return
+    if not any(s.axial_load != 0.0 for s in steps):
+        return
+    raise InputError(
+        where, share,
+        f"a share >= 0 for the angular-contact bearing {bearing.name}: it carries thrust in "
+        "the direction of its contact angle only; give the reversed thrust to the bearing "
+        "mounted the other way (share 0 here, 1 there)")
 
 
 def radial_load_contact(name: str, bearing: Any, steps: Any, kinematics: str) -> None:

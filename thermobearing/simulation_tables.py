@@ -105,7 +105,7 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
     run). Returns the rows and the state's cage speed ratio [-]."""
     from .state import race_control_state
 
-    radial, axial = b.loads(step)
+    radial, axial = b.operating_loads(step)
     op = OperatingPoint(inner_speed=step.speed, radial_load=radial, axial_load=axial)
     t_c = contact_temperature(temps)
     state = race_control_state(b.bearing, op, lubricant=lubricant, temperature=t_c)
