@@ -32,7 +32,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       parameter [-]`` of the film table;
     * with a network: ``final <node> [degC]`` and ``rise <node> [K]`` (final minus the
       node's temperature at the start, the scene's initial temperature; a scene whose inlet
-      oil is warmer than that counts the difference in the rise too).
+      oil is warmer than that counts the difference in the rise too); a steady scene
+      (``mode = "steady"``) gives its last operating point's steady temperatures and their
+      rise above the ambient temperature (a steady state has no start).
     """
     from .simulation import Simulation
 
@@ -91,4 +93,13 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
                 out[f"final {c}"] = float(temps[c].iloc[-1])
                 out[f"rise {c.replace('[degC]', '[K]')}"] = float(temps[c].iloc[-1]
                                                                   - temps[c].iloc[0])
+    steady = res.tables.get("steady_temperatures")
+    if (temps is None or temps.empty) and steady is not None and not steady.empty:
+        # a steady scene: its last operating point's steady state, above the ambient
+        ambient = scene.environment.ambient_temperature - 273.15
+        for c in steady.columns:
+            if c.endswith("[degC]"):
+                out[f"final {c}"] = float(steady[c].iloc[-1])
+                out[f"rise {c.replace('[degC]', '[K]')}"] = float(steady[c].iloc[-1]
+                                                                  - ambient)
     return out
