@@ -2,12 +2,13 @@
 
 Each case is a scene built from the shipped presets (``configs/bearings/*.toml``,
 ``configs/lubricants/*.toml``) and the catalogue / spindle bearings under ``examples/``,
-with random speeds (0, very low, up to a plausible n d_m for the oil supply), radial and
-axial loads (0, tiny, typical, up to about the static rating C0; axial loads only where
-the bearing kind carries them), oil supplies (jet, circulation, oil bath with a level,
-oil-air; flows from tiny to large), inlet / ambient / initial temperatures in -20..120 degC,
-kinematics models (skidding, race control, none with the global_friction source), outputs
-(film only, kinematics, losses, short transients and steady temperatures) and network
+with random speeds (0, creeping, very low, up to a plausible n d_m for the oil supply and a
+few above it), radial and axial loads (0, tiny, typical, up to about the static rating C0;
+axial loads only where the bearing kind carries them), oil supplies (jet, circulation, oil
+bath with a level, oil-air; flows from tiny to large), inlet / ambient / initial
+temperatures in -20..120 degC (cold starts from -40 degC), kinematics models (skidding,
+race control, none with the global_friction source), outputs (film only, kinematics,
+losses, short transients and steady temperatures) and network
 templates with their required parameters. Each runs as ``Simulation(scene).run()`` under a
 per-case time limit (and every ``--cli-every``-th case also as ``thermobearing run SCENE
 --out DIR``, which exercises the writers and the report), and is classified:
@@ -29,6 +30,25 @@ The summary table lists every case; each defect's reproducer TOML is printed and
 (with those of the refusals and timeouts) to ``DIR/case_<n>.toml`` (``--out DIR``, else a temporary
 folder). ``--only 3,17`` reruns cases of the same seed and count. Each case runs in a
 worker process (one at a time), killed at the time limit and replaced.
+
+Widenings of the generator (a seed's cases change with each; the runs quoted in README
+are of the generator of their date):
+
+- 2026-11-23, later: up to three bearings, with per-bearing ``load_share`` tables
+  (locating / floating, lever-arm radial splits, reversed thrust); the rib_friction source
+  on cylindrical roller bearings with ribs on both rings (``ribbed_ring = "both"``
+  override, race control, an axial load up to 20 % of the radial, reduced or coupled model,
+  default or listed sources); creeping speeds (1e-3 to 0.05 r/min) and steps above the
+  supply's plausible n d_m (up to ``HIGH_SPEED_FACTOR``); cold starts (machine, air and oil
+  at -40 to -10 degC); ``[schedule] file`` CSV protocols (random column order and units, a
+  column left to the defaults, BOM, CRLF) and ``[measured]`` rig CSV files (comma or
+  semicolon with decimal commas, minutes or hh:mm:ss, empty / OVL / -999 dropouts), both
+  written beside the reproducers (``DIR/case_<n>_protocol.csv``, ``_measured.csv``);
+  diametral clearance overrides (0 to 4x the preset's), the race-control option
+  ``control``, ``churning_heat_to = "paper002"``, the network steppers tr_bdf2 /
+  backward_euler / crank_nicolson, ``[outputs] interval`` and ``[checks]`` thresholds.
+  The summary line of a case lists those drawn (``share``, ``rib``, ``cold``, ``file``,
+  ``meas``, ``clear``, ``ctrl``, ``p002``, ``stepper``, ``interval``, ``checks``).
 
 Usage::
 
@@ -71,6 +91,10 @@ H_OIL_RANGE = (50.0, 1500.0)
 H_AIR_RANGE = (5.0, 50.0)
 
 SUPPLIES = ("jet", "circulation", "oil_bath", "oil_air")
+#: a few steps run above the supply's plausible n d_m, up to this factor of it
+HIGH_SPEED_FACTOR = 1.6
+#: cold starts: ambient, initial and inlet temperatures drawn in this range [degC]
+COLD_RANGE = (-40.0, -10.0)
 TEMPLATES = ("four_node_paper002", "seven_node")
 GARBLED = (re.compile(r"\bnan\b", re.I), re.compile(r"\binf\b"), re.compile(r"np\.float"),
            re.compile(r"\{[a-z_]*\}"), re.compile(r"\bNone\b"), re.compile(r"[\x00-\x08]"),
@@ -90,6 +114,7 @@ class BearingEntry:
     pitch: float  # [m]
     c0: float  # [N], ISO 76 estimate (fuzz range only)
     ribbed_ring: str | None
+    clearance: float  # [m], the preset's diametral clearance
 
 
 def bearing_catalogue() -> list[BearingEntry]:
@@ -113,7 +138,8 @@ def bearing_catalogue() -> list[BearingEntry]:
             c0 = (K_ROLLER * (1 - d * cos_a / (b.pitch_diameter * 1e3)) * z
                   * b.roller_effective_length * 1e3 * d * cos_a)
         out.append(BearingEntry(spec, label, b.kind, b.bore, b.outer_diameter, b.width,
-                                b.pitch_diameter, c0, getattr(b, "ribbed_ring", None)))
+                                b.pitch_diameter, c0, getattr(b, "ribbed_ring", None),
+                                float(b.diametral_clearance)))
     return out
 
 
@@ -128,10 +154,14 @@ def _log_uniform(rng: np.random.Generator, lo: float, hi: float) -> float:
 
 def _speed(rng: np.random.Generator, limit_rpm: float) -> float:
     r = rng.random()
-    if r < 0.12:
+    if r < 0.1:
         return 0.0
+    if r < 0.15:
+        return _log_uniform(rng, 1e-3, 0.05)  # creeping: a turning gear, a hand turn
     if r < 0.25:
         return _log_uniform(rng, 0.05, 20.0)
+    if r < 0.3:
+        return _log_uniform(rng, limit_rpm, HIGH_SPEED_FACTOR * limit_rpm)
     return _log_uniform(rng, 20.0, limit_rpm)
 
 
@@ -214,12 +244,133 @@ def _network(rng: np.random.Generator, entries: list[BearingEntry]) -> dict[str,
     return net
 
 
+def _load_shares(rng: np.random.Generator, picks: list[BearingEntry], roller_skidding: bool
+                 ) -> list[dict[str, float] | None]:
+    """Per-bearing ``load_share`` tables of a multi-bearing scene: a locating / floating
+    arrangement (axial on one bearing), a lever-arm split of the radial load, a reversed
+    axial share; None keeps the default (all of each load)."""
+    out: list[dict[str, float] | None] = []
+    locating = int(rng.integers(0, len(picks)))
+    for i, e in enumerate(picks):
+        if rng.random() < 0.4:
+            out.append(None)
+            continue
+        share: dict[str, float] = {}
+        r = rng.random()
+        if r < 0.1 and not (roller_skidding and e.kind == "cylindrical"):
+            share["radial"] = 0.0
+        elif r < 0.8:
+            share["radial"] = round(float(rng.uniform(0.05, 1.0)), 3)
+        if e.kind != "cylindrical":
+            a = rng.random()
+            share["axial"] = (1.0 if i == locating else 0.0) if a < 0.6 else (
+                -1.0 if a < 0.75 else round(float(rng.uniform(-1.0, 1.0)), 3))
+        elif rng.random() < 0.7:
+            share["axial"] = 0.0
+        out.append(share or None)
+    return out
+
+
+def _rib_scene(rng: np.random.Generator, picks: list[BearingEntry]
+               ) -> tuple[dict[str, Any], list[dict[str, Any] | None]] | None:
+    """The rib_friction source on a cylindrical roller bearing with end-face geometry,
+    ribs on both rings (NUP-type) and an axial load (race control: the roller skidding
+    solver refuses axial loads): models and per-bearing overrides, or None."""
+    if not any(e.ribbed_ring is not None for e in picks) or rng.random() > 0.5:
+        return None
+    sources = ["raceway_traction", "churning_elements", "churning_cage",
+               "churning_inner_ring", "cage_guide", "pocket_friction", "rib_friction"]
+    opts: dict[str, Any] = {}
+    if rng.random() < 0.6:
+        opts["model"] = "reduced"  # the coupled dynamics cost ~2 s CPU per state
+    models: dict[str, Any] = {"kinematics": "race_control"}
+    if rng.random() < 0.3:  # else the default sources, which hold rib_friction for rollers
+        models["heat_sources"] = sources
+    if opts:
+        models["heat_source_options"] = {"rib_friction": opts}
+    overrides = [{"ribbed_ring": "both"} if e.ribbed_ring is not None and rng.random() < 0.8
+                 else None for e in picks]
+    return models, overrides
+
+
+def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: Path
+                   ) -> dict[str, Any]:
+    """Write the steps as a CSV protocol (``[schedule] file``): columns in random order and
+    units (s / min, rpm / r/min, N / kN), sometimes one column left to a ``[schedule]``
+    default, sometimes a UTF-8 BOM (a spreadsheet export) or CRLF line ends."""
+    cols = {"duration": [("s", 1.0), ("min", 1 / 60)],
+            "speed": [("rpm", 1.0), ("r/min", 1.0)],
+            "radial_load": [("N", 1.0), ("kN", 1e-3)],
+            "axial_load": [("N", 1.0), ("kN", 1e-3)]}
+    units = {"duration": "s", "speed": "rpm", "radial_load": "N", "axial_load": "N"}
+    values = [{k: float(st[k].split()[0]) for k in cols} for st in steps]
+    table: dict[str, Any] = {}
+    order = [str(k) for k in rng.permutation(list(cols))]
+    if rng.random() < 0.3:
+        # one column left out: its value comes from the [schedule] defaults
+        key = order.pop()
+        table[key if key != "duration" else "step_duration"] = _q(values[0][key], units[key])
+    head, rows = [], [[] for _ in values]
+    for key in order:
+        unit, f = cols[key][int(rng.integers(0, 2))]
+        head.append(f"{key} [{unit}]")
+        for row, v in zip(rows, values, strict=True):
+            row.append(f"{v[key] * f:.6g}")
+    nl = "\r\n" if rng.random() < 0.2 else "\n"
+    text = nl.join([",".join(head)] + [",".join(r) for r in rows]) + nl
+    bom = "\ufeff" if rng.random() < 0.2 else ""
+    path.write_text(bom + text, encoding="utf-8", newline="")
+    table["file"] = str(path)
+    return table
+
+
+def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
+                   t0: float, path: Path) -> dict[str, Any]:
+    """A synthetic rig CSV for ``[measured]`` (a smooth warm-up from ``t0`` [degC], not a
+    model result): comma or semicolon with decimal commas, time in min or ``hh:mm:ss``,
+    a few dropouts (empty, ``OVL``, ``-999`` listed in missing_values), mapped to the
+    bearings' housing nodes."""
+    n = int(rng.integers(3, 40))
+    t = np.linspace(0.0, duration, n)
+    sensors = {f"TC{i + 1} {nm}": f"{nm}.housing" for i, nm in enumerate(names)}
+    semicolon = rng.random() < 0.4
+    sep, dec = (";", ",") if semicolon else (",", ".")
+    clock = rng.random() < 0.3
+    head = ["Time" if clock else "time [min]", *sensors]
+    lines = [sep.join(head)]
+    for ti in t:
+        cells = [(f"{int(ti // 3600):02d}:{int(ti % 3600 // 60):02d}:{int(ti % 60):02d}"
+                  if clock else f"{ti / 60:.4f}".replace(".", dec))]
+        for _ in sensors:
+            r = rng.random()
+            if r < 0.04:
+                cells.append("")
+            elif r < 0.07:
+                cells.append("OVL")
+            elif r < 0.1:
+                cells.append("-999")
+            else:
+                v = t0 + 20.0 * (1 - math.exp(-ti / 600.0)) + rng.normal(0.0, 0.2)
+                cells.append(f"{v:.2f}".replace(".", dec))
+        lines.append(sep.join(cells))
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return {"file": str(path), "time_column": head[0], "unit": "degC",
+            "columns": sensors, "missing_values": [-999]}
+
+
 def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
-               lubricants: list[str]) -> tuple[dict[str, Any], dict[str, str]]:
-    """One random scene as a TOML document (a dict) and a short description of it."""
-    n_bear = 1 if rng.random() < 0.8 else 2
+               lubricants: list[str], files: Path | None = None
+               ) -> tuple[dict[str, Any], dict[str, str]]:
+    """One random scene as a TOML document (a dict) and a short description of it.
+    ``files``: the stem under which a case's CSV files (schedule, measured) are written
+    (``files.with_name(stem + "_protocol.csv")``); None: no file-based draws."""
+    u = rng.random()
+    n_bear = 1 if u < 0.7 else (2 if u < 0.92 else 3)
     picks = [catalogue[int(i)] for i in rng.integers(0, len(catalogue), n_bear)]
     kin = str(rng.choice(["skidding", "race_control", "none"], p=[0.5, 0.35, 0.15]))
+    rib = _rib_scene(rng, picks) if kin != "none" else None
+    if rib is not None:
+        kin = "race_control"
     supply = _supply(rng, picks[0])
     ndm = NDM_LIMIT[supply["method"]]
     limit_rpm = min(ndm / (e.pitch * 1e3) for e in picks)
@@ -233,33 +384,108 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
     for _ in range(n_steps):
         step: dict[str, Any] = {"speed": _q(_speed(rng, limit_rpm), "rpm"),
                                 "radial_load": _q(_load(rng, c0, not radial_needed), "N")}
-        # cylindrical roller bearings without a rib pair take no axial load
-        step["axial_load"] = _q(0.0 if roller else _load(rng, c0), "N")
+        # cylindrical roller bearings without a rib pair take no axial load; with the rib
+        # pair of a rib scene, a thrust up to ~20 % of the radial load
+        if rib is not None and roller:
+            step["axial_load"] = _q(float(step["radial_load"].split()[0])
+                                    * rng.uniform(0.0, 0.2), "N")
+        else:
+            step["axial_load"] = _q(0.0 if roller else _load(rng, c0), "N")
         step["duration"] = _q(_log_uniform(rng, 2.0, 600.0), "s")
         steps.append(step)
-    amb = float(rng.uniform(-20.0, 120.0))
+    cold = rng.random() < 0.12
+    if cold:
+        # a cold start: machine, oil and air below freezing, then the schedule's speeds
+        amb = float(rng.uniform(*COLD_RANGE))
+        supply["inlet_temperature"] = _q(amb + rng.uniform(0.0, 5.0), "degC", 4)
+    else:
+        amb = float(rng.uniform(-20.0, 120.0))
     env: dict[str, Any] = {"ambient_temperature": _q(amb, "degC", 4)}
-    if rng.random() < 0.6:
-        env["initial_temperature"] = _q(rng.uniform(-20.0, 120.0), "degC", 4)
-    names = ["a", "b"][:n_bear]
+    if cold or rng.random() < 0.6:
+        env["initial_temperature"] = _q(amb if cold else rng.uniform(-20.0, 120.0),
+                                        "degC", 4)
+    names = ["a", "b", "c"][:n_bear]
+    bearings = [{"name": n, **e.spec} for n, e in zip(names, picks, strict=True)]
+    if n_bear > 1:
+        for b, share in zip(bearings, _load_shares(rng, picks, radial_needed), strict=True):
+            if share is not None:
+                b["load_share"] = share
+    if rib is not None:
+        for b, over in zip(bearings, rib[1], strict=True):
+            if over is not None:
+                b["overrides"] = over
+    schedule: dict[str, Any] = {"steps": steps}
+    if files is not None and rng.random() < 0.15:
+        schedule = _schedule_file(rng, steps, files.with_name(files.name + "_protocol.csv"))
     doc: dict[str, Any] = {
         "title": "fuzz case",
-        "bearings": [{"name": n, **e.spec} for n, e in zip(names, picks, strict=True)],
+        "bearings": bearings,
         "lubricant": {"preset": str(rng.choice(lubricants))},
         "supply": supply,
         "environment": env,
-        "schedule": {"steps": steps},
-        "models": _models(rng, picks, kin),
+        "schedule": schedule,
+        "models": rib[0] if rib is not None else _models(rng, picks, kin),
         "outputs": outputs,
     }
     if what in ("transient", "steady_temperatures"):
         doc["network"] = _network(rng, picks)
         if what == "transient":
             doc["solver"] = {"chunk": _q(_log_uniform(rng, 5.0, 120.0), "s")}
+            if files is not None and rng.random() < 0.2:
+                total = sum(_duration_s(st) for st in steps)
+                t0 = float(env.get("initial_temperature", env["ambient_temperature"])
+                           .split()[0])
+                doc["measured"] = _measured_file(
+                    rng, names, total, t0, files.with_name(files.name + "_measured.csv"))
     desc = {"bearings": "+".join(e.label for e in picks), "kinematics": kin,
             "outputs": what, "supply": supply["method"],
             "speeds": ",".join(s["speed"].split()[0] for s in steps)}
+    extras = [k for k, on in (("share", any("load_share" in b for b in bearings)),
+                              ("rib", rib is not None), ("cold", cold),
+                              ("file", "file" in schedule), ("meas", "measured" in doc)) if on]
+    extras += _options(rng, doc, picks, kin)
+    desc["extras"] = ",".join(extras)
     return doc, desc
+
+
+def _options(rng: np.random.Generator, doc: dict[str, Any], picks: list[BearingEntry],
+             kin: str) -> list[str]:
+    """Options a scene rarely changes, each drawn now and then: a bearing's diametral
+    clearance (0 to 4x the preset's), the race that controls the spin under race control,
+    where the churning heat goes, the network stepper, the output interval and the
+    ``[checks]`` thresholds. Returns the short names of those drawn."""
+    drawn = []
+    for b, e in zip(doc["bearings"], picks, strict=True):
+        if rng.random() < 0.1:
+            over = b.setdefault("overrides", {})
+            over["diametral_clearance"] = _q(float(rng.uniform(0.0, 4.0)) * e.clearance * 1e3,
+                                             "mm")
+            drawn.append("clear")
+    models = doc["models"]
+    if kin == "race_control" and rng.random() < 0.4:
+        models["control"] = str(rng.choice(["outer_race", "inner_race", "pure_rolling"]))
+        drawn.append("ctrl")
+    if kin != "none" and rng.random() < 0.15:
+        models["churning_heat_to"] = "paper002"
+        drawn.append("p002")
+    if "solver" in doc and rng.random() < 0.25:
+        doc["solver"]["stepper"] = str(rng.choice(["tr_bdf2", "backward_euler",
+                                                   "crank_nicolson"]))
+        drawn.append("stepper")
+    if doc["outputs"]["mode"] == "transient" and rng.random() < 0.2:
+        doc["outputs"]["interval"] = _q(_log_uniform(rng, 1.0, 300.0), "s")
+        drawn.append("interval")
+    if rng.random() < 0.1:
+        doc["checks"] = {"skid_limit": _q(rng.uniform(0.5, 20.0), "%", 3),
+                         "contact_stress_limit": _q(rng.uniform(1500.0, 4500.0), "MPa", 4),
+                         "min_film_parameter": round(float(rng.uniform(0.5, 3.0)), 2)}
+        drawn.append("checks")
+    return drawn
+
+
+def _duration_s(step: dict[str, Any]) -> float:
+    value, unit = step["duration"].split()
+    return float(value) * {"s": 1.0, "min": 60.0}[unit]
 
 
 # ------------------------------------------------------------------------------ checks
@@ -531,7 +757,7 @@ def main(argv: list[str] | None = None) -> int:
     import_package()
     runner = Runner()
     for i in range(args.n):
-        doc, desc = make_scene(rng, catalogue, lubricants)
+        doc, desc = make_scene(rng, catalogue, lubricants, out_dir / f"case_{i:04d}")
         if only and i not in only:
             continue
         case = Case(i, desc, dumps_toml(doc))
@@ -541,7 +767,7 @@ def main(argv: list[str] | None = None) -> int:
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "
-              f"{desc['speeds']:>20s}  {case.message[:90]}", flush=True)
+              f"{desc['speeds']:>20s} {desc['extras']:>16s}  {case.message[:90]}", flush=True)
     runner.close()
     print_summary(cases, out_dir)
     return 1 if any(c.outcome == "DEFECT" for c in cases) else 0
