@@ -37,13 +37,23 @@
       heavy-load EHL result and exceeds the rigid-isoviscous force at light loads (e.g. the
       centrifugal-only outer contacts of unloaded rollers), where the contact is rigid.
 
+    - "harris" (ball contacts only): the point-contact rolling force of
+      :mod:`thermobearing.rolling_resistance` (Harris & Kotzalas' ball-race form) with its
+      option ``reduction`` ("none", "thermal", "skf", "thermal_starvation") and the
+      bearing-level factor ``supply_factor`` -- the function the ball skidding solver
+      balances (``BallParameters.rolling_resistance``), so its heat closes the solver's
+      energy identity. Without ``supply_factor`` the factor is the solver's (kinematic
+      state extras ``rolling_resistance``) or else computed from the supply at the oil
+      temperature.
+
     Eq. 35 is a line-contact formula; for ball contacts the length is the mean chord pi a / 2
-    of the ellipse (an extrapolation, flagged by a ValidityWarning). Both forms are
-    isothermal and fully flooded: at high speed inlet shear heating and starvation thin the
-    film, and since the inlet force scales with the film (F_P ~ h_c / alpha) the rolling force
-    too; option ``thermal_reduction`` multiplies Q_x by a film thermal-reduction factor phi_T
-    from ``film.THERMAL_FILM`` ("none" by default, "gupta_1992", "wilson_sheu_1983"). The
-    cross-check case shows the isothermal value against the SKF rolling term.
+    of the ellipse (an extrapolation, flagged by a ValidityWarning; "harris" avoids it).
+    Both line forms are isothermal and fully flooded: at high speed inlet shear heating and
+    starvation thin the film, and since the inlet force scales with the film (F_P ~ h_c /
+    alpha) the rolling force too; option ``thermal_reduction`` multiplies Q_x by a film
+    thermal-reduction factor phi_T from ``film.THERMAL_FILM`` ("none" by default,
+    "gupta_1992", "wilson_sheu_1983"). The cross-check case shows the isothermal value
+    against the SKF rolling term.
 """
 
 from __future__ import annotations
@@ -272,8 +282,10 @@ def _thermal_factor(model, ctx, cs, temp, eta):
 @HEAT_SOURCES.register(
     "ehl_rolling_resistance",
     references=["li2018_nu214_skidding", "blok1963_flash_temperature"],
-    parameters={"thermal_reduction": "-", "rolling_force": "-"},
-    validity="fully flooded EHL; line contacts (ball contacts by the mean-chord extension)",
+    parameters={"thermal_reduction": "-", "rolling_force": "-", "reduction": "-",
+                "supply_factor": "-"},
+    validity="fully flooded EHL unless reduced; line contacts, ball contacts by the "
+             "point-contact form (rolling_force = 'harris') or the mean-chord extension",
 )
 def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     """EHL rolling resistance (Poiseuille inlet force) of the raceway contacts, paper 000 eq. 5/35.
@@ -294,8 +306,10 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
 
     THERMAL_FILM.entry(thermal)  # unknown names raise, listing the known ones
     model = str(ctx.option(name, "rolling_force", "regime_min"))
-    if model not in ROLLING_FORCE_MODELS:
-        raise UnknownNameError(f"options[{name}].rolling_force", model, ROLLING_FORCE_MODELS)
+    if model not in ROLLING_FORCE_MODELS + ("harris",):
+        raise UnknownNameError(f"options[{name}].rolling_force", model,
+                               ROLLING_FORCE_MODELS + ("harris",))
+    point = _point_contact_forces(ctx, name, model, thermal)
     bearing = ctx.bearing
     elem_mat, ring_mat = _materials(bearing)
     e_mod = bearing.effective_modulus
@@ -313,7 +327,9 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             race = cs.race.split("_")[0]
             rx = np.asarray(bearing.curvature(race, cs.contact_angle)[0], float) * np.ones(
                 cs.n_elements)
-        if cs.kind == "line":
+        if point is not None:
+            length = None
+        elif cs.kind == "line":
             length = 2.0 * cs.semi_major
         else:
             if np.any(loaded):
@@ -327,13 +343,16 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
         u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
         usum = np.abs(u_e) + np.abs(u_r)
-        q_dh = rolling_force_paper000(usum, eta, alpha, e_mod, rx, length)
-        q_ri = rolling_force_rigid_isoviscous(usum, eta, cs.normal_load, rx, length)
-        q_x = {"regime_min": np.minimum(q_dh, q_ri), "dowson_higginson": q_dh,
-               "rigid_isoviscous": q_ri}[model]
-        fr = np.where(loaded, q_x, 0.0)
-        if thermal != "none":
-            fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
+        if point is not None:
+            fr = np.where(loaded, point(cs, temp, rx), 0.0)
+        else:
+            q_dh = rolling_force_paper000(usum, eta, alpha, e_mod, rx, length)
+            q_ri = rolling_force_rigid_isoviscous(usum, eta, cs.normal_load, rx, length)
+            q_x = {"regime_min": np.minimum(q_dh, q_ri), "dowson_higginson": q_dh,
+                   "rigid_isoviscous": q_ri}[model]
+            fr = np.where(loaded, q_x, 0.0)
+            if thermal != "none":
+                fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
         f_p = 0.5 * fr  # Poiseuille shear force on each surface
         heat_e = f_p * np.abs(u_e)
         heat_r = f_p * np.abs(u_r)
@@ -353,3 +372,62 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         source=name, power_by_role=roles, components=components,
         loss_class=dict.fromkeys(components, "load_independent"),
         forces=forces, force_pairs=tuple(pairs), component_roles=split)
+
+
+def _point_contact_forces(ctx: HeatContext, name: str, model: str, thermal: str):
+    """For ``rolling_force = "harris"``: a function (contact set, temperatures (Z,), R_x (Z,))
+    -> F_R (Z,) [N] by :func:`thermobearing.rolling_resistance.rolling_force_array` (the
+    ball solver's code path), its parameters built per distinct contact temperature by
+    ``rolling_resistance.lubricant_kernel_parameters``; None for the line-contact models."""
+    if model != "harris":
+        return None
+    from .. import rolling_resistance as rr
+
+    if thermal != "none":
+        raise InputError(f"options[{name}].thermal_reduction", thermal,
+                         "'none' with rolling_force = 'harris' (its option 'reduction' "
+                         f"takes one of {', '.join(rr.REDUCTIONS)})")
+    reduction = str(ctx.option(name, "reduction", "none"))
+    if reduction not in rr.REDUCTIONS:
+        raise UnknownNameError(f"options[{name}].reduction", reduction, rr.REDUCTIONS)
+    factor = ctx.option(name, "supply_factor", None)
+    if factor is None:
+        carried = ctx.kinematics.extras.get("rolling_resistance")
+        if carried is not None:
+            factor = float(carried[rr.K_FACTOR])
+        else:
+            t_oil = ctx.temperature("oil") if "oil" in ctx.temperatures else \
+                ctx.temperature("elements")
+            nu = float(ctx.lubricant.dynamic_viscosity(t_oil)) / float(
+                ctx.lubricant.density(t_oil))
+            factor = rr.supply_factor(reduction, ctx.bearing, abs(
+                ctx.operating.inner_speed - ctx.operating.outer_speed), nu,
+                ctx.supply.method)
+    factor = float(factor)
+    e_mod = ctx.bearing.effective_modulus
+    params: dict[float, np.ndarray] = {}
+
+    def forces(cs, temp, rx):
+        if cs.kind == "line":
+            raise InputError(f"options[{name}].rolling_force", model,
+                             "a line-contact model (regime_min, dowson_higginson, "
+                             "rigid_isoviscous) for the line contacts of a roller bearing")
+        if cs.reduced_radius_y is not None:
+            ry = np.asarray(cs.reduced_radius_y, float)
+        else:
+            race = cs.race.split("_")[0]
+            ry = np.asarray(ctx.bearing.curvature(race, cs.contact_angle)[1], float)
+        out = np.zeros(cs.n_elements)
+        temp = np.broadcast_to(np.asarray(temp, float), (cs.n_elements,))
+        for t in np.unique(temp):
+            kp = params.get(float(t))
+            if kp is None:
+                kp = params[float(t)] = rr.lubricant_kernel_parameters(
+                    model, reduction, ctx.lubricant, float(t), e_mod, factor)
+            sel = temp == t
+            out[sel] = rr.rolling_force_array(
+                cs.entrainment_speed, cs.sliding_speed, cs.normal_load, cs.max_pressure,
+                rx, ry * np.ones(cs.n_elements), kp)[sel]
+        return out
+
+    return forces

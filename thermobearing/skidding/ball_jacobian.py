@@ -51,6 +51,7 @@ import numba
 import numpy as np
 
 from ..contact_traction import _peak_pressure, _table_viscosity, refresh_stale_caches
+from ..rolling_resistance import K_ON, N_KERNEL, contact_rolling_force
 from ..traction import EYRING, _log_pos
 from .ball_residual import (
     A_INNER,
@@ -65,6 +66,7 @@ from .ball_residual import (
     C_M,
     C_MS,
     C_MUP,
+    C_RR,
     C_TS,
     C_VEPS,
     G_A,
@@ -78,6 +80,7 @@ from .ball_residual import (
     G_OMX,
     G_OMY,
     G_OMZ,
+    G_P0,
     G_PA,
     G_PR,
     G_Q,
@@ -377,10 +380,12 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
 @numba.njit(cache=True)
 def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
                   c: np.ndarray, film_params: np.ndarray, geo: np.ndarray,
-                  film: np.ndarray, dgeo: np.ndarray, dnorm: np.ndarray) -> None:
+                  film: np.ndarray, dgeo: np.ndarray, dnorm: np.ndarray,
+                  dext: np.ndarray) -> None:
     """Forward-mode derivatives of the contact inputs of one state X (Z, 6), G (3,):
     ``dgeo[n, i, d]`` = d in_i / d dir_d (in = Q, a, b, V_y, V_x, omega_z, omega_x,
-    omega_y, h; dir = b_a, b_r, Omega_a, Omega_r, Omega_t, delta_a, delta_r, omega_c, SI) and
+    omega_y, h; dir = b_a, b_r, Omega_a, Omega_r, Omega_t, delta_a, delta_r, omega_c, SI),
+    ``dext[n, i, d]`` for (u_e, R_x) (the rolling resistance's further inputs) and
     ``dnorm[n, i, d]`` for (n_a, n_r, p_a, p_r) (normal and lever arm of the contact), n =
     ball * k + arc. ``geo`` / ``film`` are this state's fields from :func:`_ball_geometry` and
     :func:`guarded_film` (computed here)."""
@@ -411,6 +416,8 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
                     dgeo[n, i, d] = 0.0
                 for i in range(4):
                     dnorm[n, i, d] = 0.0
+                dext[n, 0, d] = 0.0
+                dext[n, 1, d] = 0.0
                 dx_[d] = 0.0
                 dr_[d] = 0.0
             if geo[G_Q, n] <= 0.0:
@@ -504,6 +511,58 @@ def _geometry_jac(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarra
                 dnorm[n, 1, d] = dnr
                 dnorm[n, 2, d] = dpa
                 dnorm[n, 3, d] = dpr
+                dext[n, 0, d] = due
+                dext[n, 1, d] = drx
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _rolling_grad(ue: float, vy: float, q: float, p0: float, rx: float, ry: float,
+                  kp: np.ndarray, out: np.ndarray) -> float:
+    """F_R of :func:`thermobearing.rolling_resistance.contact_rolling_force` and its
+    partial derivatives in (u_e, V_y, Q, p0, R_x) into ``out`` by forward differences
+    (relative step ``_RX_STEP``, floored at the scale of each input: truncation ~1e-7
+    relative, as the R_x differences above)."""
+    f0 = contact_rolling_force(ue, vy, q, p0, rx, ry, kp)
+    args = np.array([ue, vy, q, p0, rx])
+    scale = np.array([abs(ue), abs(ue), q, p0, rx])
+    for i in range(5):
+        h = _RX_STEP * max(abs(args[i]), 1e-3 * scale[i], 1e-300)
+        a = args.copy()
+        a[i] += h
+        out[i] = (contact_rolling_force(a[0], a[1], a[2], a[3], a[4], ry, kp) - f0) / h
+    return f0
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _rolling_jac(geo: np.ndarray, ci: int, ry: float, br: float, kp: np.ndarray,
+                 dgeo: np.ndarray, dnorm: np.ndarray, dext: np.ndarray, dsum: np.ndarray,
+                 grad: np.ndarray) -> None:
+    """Derivatives of the EHL rolling-resistance terms of loaded contact ``ci``
+    (``ball_residual_kernels._rolling_terms``: f_b = -F_R/2 sgn(u_b) at the contact point,
+    P_b = F_R/2 (sgn(u_b) + sgn(u_r)) R_P / b_r at the ball centre) added to the ball
+    balances' derivatives ``dsum`` (rows sft, sma, smr) in the N_DIR directions; the signs
+    are piecewise constant (derivative 0 away from u = 0)."""
+    ue, vy = geo[G_UE, ci], geo[G_VY, ci]
+    q, p0, a_e, b_e = geo[G_Q, ci], geo[G_P0, ci], geo[G_A, ci], geo[G_B, ci]
+    pa, pr = geo[G_PA, ci], geo[G_PR, ci]
+    f0 = _rolling_grad(ue, vy, q, p0, geo[G_RX, ci], ry, kp, grad)
+    ub, ur = ue + 0.5 * vy, ue - 0.5 * vy
+    sb = 1.0 if ub > 0.0 else (-1.0 if ub < 0.0 else 0.0)
+    sr = 1.0 if ur > 0.0 else (-1.0 if ur < 0.0 else 0.0)
+    f_b = -0.5 * f0 * sb
+    rp = br + pr
+    for d in range(N_DIR):
+        dq = dgeo[ci, I_Q, d]
+        dp0 = p0 * (dq / q - dgeo[ci, I_A, d] / a_e - dgeo[ci, I_B, d] / b_e)
+        df = (grad[0] * dext[ci, 0, d] + grad[1] * dgeo[ci, I_VY, d] + grad[2] * dq
+              + grad[3] * dp0 + grad[4] * dext[ci, 1, d])
+        dbr = 1.0 if d == D_BR else 0.0
+        dpa, dpr = dnorm[ci, 2, d], dnorm[ci, 3, d]
+        df_b = -0.5 * df * sb
+        dp_b = 0.5 * (sb + sr) * (df * rp / br + f0 * ((dbr + dpr) / br - rp * dbr / (br * br)))
+        dsum[2, d] += df_b + dp_b
+        dsum[3, d] += dpr * f_b + pr * df_b
+        dsum[4, d] += -dpa * f_b - pa * df_b
 
 
 @numba.njit(cache=True)
@@ -526,11 +585,15 @@ def _jacobian_kernel(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.nda
     film = np.empty(n)
     dgeo = np.empty((n, N_IN, N_DIR))
     dnorm = np.empty((n, 4, N_DIR))
+    dext = np.empty((n, 2, N_DIR))
     A = np.zeros((nz, N_BALL, N_BALL))
     B = np.zeros((nz, N_BALL, N_GLOBAL))
     C = np.zeros((nz, N_GLOBAL, N_BALL))
     Dg = np.zeros((N_GLOBAL, N_GLOBAL))
-    _geometry_jac(X, G, cpsi, arc, c, film_params, geo, film, dgeo, dnorm)
+    _geometry_jac(X, G, cpsi, arc, c, film_params, geo, film, dgeo, dnorm, dext)
+    kp = c[C_RR:C_RR + N_KERNEL]
+    rolling = kp[K_ON] != 0.0
+    rgrad = np.empty(5)
     for i in range(n):
         if geo[G_Q, i] > 0.0 and 1.5 * geo[G_Q, i] / (math.pi * geo[G_A, i]
                                                       * geo[G_B, i]) > p_max:
@@ -585,6 +648,9 @@ def _jacobian_kernel(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.nda
                 dsum[5, d] += dpa * fr + pa * dfr - dpr * fa - pr * dfa + dtr[3]
                 dsum[6, d] += inner * dfa
                 dsum[7, d] += inner * dfr
+            if rolling:
+                _rolling_jac(geo, ci, arc[A_RY, k], X[j, 1], kp, dgeo, dnorm, dext, dsum,
+                             rgrad)
         # pocket friction f = mu Q_p w / sqrt(|w|^2 + v_eps^2), w = (D/2)(Omega_r, -Omega_a)
         br = X[j, 1]
         Qp = X[j, 5]
@@ -696,12 +762,14 @@ def analytic_blocks(system, X: np.ndarray, G: np.ndarray, *, wc_step: float = 1e
 
 
 def _refresh_caches() -> None:
-    from .. import contact_traction, film, hertz, traction
+    from .. import contact_traction, film, hertz, rolling_resistance, traction
     from . import ball_residual_kernels
 
     refresh_stale_caches("ball_jacobian", (_eyring_smooth_grad, _contact_traction_jac,
-                                           _jac_node_sums, _geometry_jac, _jacobian_kernel),
-                         (contact_traction, traction, hertz, film, ball_residual_kernels))
+                                           _jac_node_sums, _geometry_jac, _jacobian_kernel,
+                                           _rolling_grad, _rolling_jac),
+                         (contact_traction, traction, hertz, film, ball_residual_kernels,
+                          rolling_resistance))
 
 
 _refresh_caches()

@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from ..contact_traction import _table_viscosity_array
-from ..errors import InputError
+from ..errors import InputError, UnknownNameError
 from .ball import BallModels
 from .ball_residual import guarded_film_array
 
@@ -51,6 +51,12 @@ class BallParameters:
     oil_fraction : fixed oil volume fraction X [-] (overrides Parker when not None).
     n_major, n_minor : quadrature nodes of the contact integration.
     source : where the values come from ("default", "calibrated: ...").
+    rolling_resistance : EHL rolling resistance of the raceway contacts in the balance and
+        the heat, ``rolling_resistance.MODELS``: "none" (default) or "harris" (point-contact
+        hydrodynamic rolling force, :mod:`thermobearing.rolling_resistance`).
+    rolling_resistance_reduction : its reduction, ``rolling_resistance.REDUCTIONS``: "none"
+        (isothermal, fully flooded; default), "thermal" (Gupta 1992 inlet heating per
+        contact), "skf" (SKF phi_ish phi_rs), "thermal_starvation" (Gupta x SKF phi_rs).
     """
 
     limiting_shear_coefficient: float = 0.07
@@ -63,6 +69,18 @@ class BallParameters:
     n_minor: int = 4
     source: str = "default"
     extra: dict = field(default_factory=dict)
+    rolling_resistance: str = "none"
+    rolling_resistance_reduction: str = "none"
+
+    def __post_init__(self) -> None:
+        from ..rolling_resistance import MODELS, REDUCTIONS
+
+        if self.rolling_resistance not in MODELS:
+            raise UnknownNameError("BallParameters.rolling_resistance",
+                                   self.rolling_resistance, MODELS)
+        if self.rolling_resistance_reduction not in REDUCTIONS:
+            raise UnknownNameError("BallParameters.rolling_resistance_reduction",
+                                   self.rolling_resistance_reduction, REDUCTIONS)
 
     def with_(self, **changes: Any) -> BallParameters:
         return replace(self, **changes)
@@ -84,10 +102,35 @@ def _oil_fraction(bearing, supply, speed: float, params: BallParameters) -> floa
                                params.parker_constant)
 
 
-def heat_context_options(bearing, supply, speed: float, params: BallParameters) -> dict:
-    """``HeatContext.options`` matching the solver's force models (see module docstring)."""
+def rolling_supply_factor(bearing, supply, speed: float, params: BallParameters,
+                          lubricant, oil_temperature: float) -> float:
+    """The bearing-level factor of the rolling-resistance reduction (SKF phi_ish phi_rs or
+    phi_rs, :func:`thermobearing.rolling_resistance.supply_factor`) at the oil temperature's
+    kinematic viscosity [-]; 1 without a bearing-level factor."""
+    from ..rolling_resistance import supply_factor
+
+    red = params.rolling_resistance_reduction
+    if params.rolling_resistance == "none" or red in ("none", "thermal"):
+        return 1.0
+    if supply is None:
+        raise InputError("supply", None, "an OilSupply (the rolling-resistance reduction "
+                         f"{red!r} depends on the lubrication method)")
+    t = float(oil_temperature)
+    nu = float(lubricant.dynamic_viscosity(t)) / float(lubricant.density(t))
+    return supply_factor(red, bearing, speed, nu, supply.method)
+
+
+def heat_context_options(bearing, supply, speed: float, params: BallParameters,
+                         rolling_factor: float | None = None) -> dict:
+    """``HeatContext.options`` matching the solver's force models (see module docstring).
+
+    With ``params.rolling_resistance`` other than "none", the options of the
+    ``ehl_rolling_resistance`` source (its point-contact model, the reduction and the
+    bearing-level factor ``rolling_factor`` the solver used, ``rolling_supply_factor``;
+    None: the source takes it from the solver's kinematic state); that source must then be
+    among the scene's heat sources for the heat to close."""
     x = _oil_fraction(bearing, supply, speed, params)
-    return {
+    out = {
         "raceway_traction": {"n_major": params.n_major, "n_minor": params.n_minor},
         "churning_elements": {"form": "harris", "drag_coefficient": params.drag_coefficient,
                               "oil_fraction": x, "oil_swirl": 0.0},
@@ -96,6 +139,13 @@ def heat_context_options(bearing, supply, speed: float, params: BallParameters) 
         "cage_guide": {"form": "short_bearing", "cage_share": 0.0},
         "pocket_friction": {"friction_coefficient": params.pocket_friction},
     }
+    if params.rolling_resistance != "none":
+        out["ehl_rolling_resistance"] = {
+            "rolling_force": params.rolling_resistance,
+            "reduction": params.rolling_resistance_reduction}
+        if rolling_factor is not None:
+            out["ehl_rolling_resistance"]["supply_factor"] = float(rolling_factor)
+    return out
 
 
 class IsothermalViscosity:
@@ -277,6 +327,14 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
         q = float(ch.inner_ring_churning_power(rho_e, reg.mu_v, wi, arc, shoulder, d_in))
         return q / wi if wi != 0 else 0.0
 
+    rolling = None
+    if p.rolling_resistance != "none":
+        from ..rolling_resistance import lubricant_kernel_parameters
+
+        factor = rolling_supply_factor(bearing, supply, speed, p, lubricant, t_oil)
+        rolling = lubricant_kernel_parameters(p.rolling_resistance,
+                                              p.rolling_resistance_reduction, lubricant,
+                                              float(temperature), E, factor)
     return BallModels(traction_law=law, pocket_friction=p.pocket_friction,
                       ball_drag=ball_drag, cage_torque=cage_torque, cage_guide_torque=guide,
                       guide_on_inner_ring=cage.guidance == "inner_ring",
@@ -284,4 +342,5 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
                       temperature=float(temperature), n_major=p.n_major, n_minor=p.n_minor,
                       drag_radius=0.5 * dm,
                       parameters={"oil_fraction": x, "params": p,
-                                  "cage_guide_model": guide is not None})
+                                  "cage_guide_model": guide is not None},
+                      rolling_resistance=rolling)

@@ -65,6 +65,7 @@ from .ball_residual_kernels import (  # noqa: F401  (the compiled kernels, re-ex
     C_M,
     C_MS,
     C_MUP,
+    C_RR,
     C_TS,
     C_VEPS,
     G_A,
@@ -88,6 +89,7 @@ from .ball_residual_kernels import (  # noqa: F401  (the compiled kernels, re-ex
     G_VX,
     G_VY,
     N_BALL,
+    N_C,
     N_GEO,
     N_GLOBAL,
     N_POCKET,
@@ -111,6 +113,8 @@ from .ball_residual_kernels import (  # noqa: F401  (the compiled kernels, re-ex
     _refresh_caches,
     _residual_norm_nb,
     _residual_one,
+    _rolling_audit,
+    _rolling_terms,
     _same_state,
     guarded_film,
     guarded_film_array,
@@ -150,6 +154,9 @@ class BallModels:
         heat source uses the pitch radius d_m/2, so with ``drag_radius = d_m/2`` the drag force
         applied at the ball centre (radius b_r) is scaled by (d_m/2)/b_r so that its power is
         exactly the source's heat (an O(1e-5) correction). None: the ball-centre radius.
+    rolling_resistance : parameters of the EHL rolling resistance of the raceway contacts
+        (:func:`thermobearing.rolling_resistance.kernel_parameters`), or None (none: the
+        default). The force and where it acts: ``ball_residual_kernels._rolling_terms``.
     """
 
     traction_law: Any
@@ -166,6 +173,7 @@ class BallModels:
     oil_speed_ratio: float = 0.0
     drag_radius: float | None = None
     parameters: dict = field(default_factory=dict)
+    rolling_resistance: np.ndarray | None = None
 
 
 
@@ -249,8 +257,14 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             raise InputError("skidding.ball temperature", None,
                              "a contact temperature [K] for the film traction law")
         # constants of the compiled kernels
-        self._c = np.array([self.D, self.dm, self.Ep, self.m, self.J, self.F_s, self.M_s,
-                            self.T_s, self.veps, float(models.pocket_friction)])
+        self._c = np.zeros(N_C)
+        self._c[:C_RR] = (self.D, self.dm, self.Ep, self.m, self.J, self.F_s, self.M_s,
+                          self.T_s, self.veps, float(models.pocket_friction))
+        if models.rolling_resistance is not None:
+            from ..rolling_resistance import kernel_parameters_checked
+
+            self._c[C_RR:] = kernel_parameters_checked(models.rolling_resistance)
+        self.rolling = bool(self._c[C_RR] != 0.0)
         self._arc = np.ascontiguousarray(np.stack([
             self.cx0, self.cr0, self.free, self.inner_f, np.where(self.inner, 1.0, -1.0),
             np.broadcast_to(self.ry, self.cx0.shape), np.broadcast_to(self.curv,
@@ -525,13 +539,16 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         if md.guide_on_inner_ring:
             inner_torque += t_guide       # the land's reaction on the inner ring
         shaft += inner_torque
+        rr_force, rr_heat, rr_shaft = _rolling_audit(X, geo, self._arc, self._c)
+        shaft += rr_shaft
         det = dict(cf=cf, wc=wc, a=geo[G_A], b=geo[G_B], p0=geo[G_P0], rx=geo[G_RX], ry=ry,
                    film=film, Vx=geo[G_VX], Vy=geo[G_VY], Om_x=geo[G_OMX], Om_y=geo[G_OMY],
                    Om_z=geo[G_OMZ], ue=geo[G_UE], tr=ctr, Fd=Fd, u_ball=u_ball,
                    pocket_heat=pocket_heat, contact_heat=ctr.heat, drag_heat=drag_heat,
                    cage_heat=cage_heat, guide_heat=guide_heat,
                    inner_churn_heat=inner_torque * wi, shaft_torque=shaft,
-                   pocket_sliding=pocket[:, P_WN], Fc=pocket[:, P_FC])
+                   pocket_sliding=pocket[:, P_WN], Fc=pocket[:, P_FC],
+                   rolling_force=rr_force, rolling_heat=rr_heat)
         return det
 
     def _cage_torques(self, wc: float):

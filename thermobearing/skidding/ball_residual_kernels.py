@@ -42,6 +42,7 @@ import numpy as np
 
 from ..contact_traction import _integrate_contacts, refresh_stale_caches
 from ..hertz import _Q as _HB_Q
+from ..rolling_resistance import K_ON, N_KERNEL, contact_rolling_force
 from ..traction import _exp_fin, _log_pos
 
 __all__ = ["N_BALL", "N_GLOBAL", "guarded_film", "guarded_film_array"]
@@ -67,8 +68,12 @@ N_POCKET = 7
 _EMPTY_TR = np.zeros((0, 6))
 _NO_REUSE = np.zeros(1, dtype=np.int64)    # a single state copies nothing
 _TRUE, _FALSE = np.bool_(True), np.bool_(False)   # typed bool in compiled calls
-# float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p
+# float constants: D, d_m, E', m, J, F_s, M_s, T_s, v_eps, mu_p, then from C_RR the
+# N_KERNEL parameters of the EHL rolling resistance (rolling_resistance.kernel_parameters;
+# all zero: none)
 (C_D, C_DM, C_EP, C_M, C_J, C_FS, C_MS, C_TS, C_VEPS, C_MUP) = range(10)
+C_RR = 10
+N_C = C_RR + N_KERNEL
 # arc table rows: centre x, centre r, free distance, inner (1/0), sign (+1 inner / -1 outer),
 # R_y, deformed-surface curvature 1/R_d, race speed
 (A_CX, A_CR, A_FREE, A_INNER, A_SIGN, A_RY, A_CURV, A_WRACE) = range(8)
@@ -297,6 +302,66 @@ def _contact_angles(geo: np.ndarray) -> None:
         geo[G_ALPHA, n] = math.atan2(geo[G_NA, n], abs(geo[G_NR, n]))
 
 
+@numba.njit(cache=True, inline="always", error_model="numpy")
+def _rolling_terms(geo: np.ndarray, n: int, ry: float, br: float,
+                   kp: np.ndarray) -> tuple[float, float, float, float]:
+    """EHL rolling resistance of contact n (loaded): (f_b, P_b, f_r, F_R) [N] along e_t.
+
+    F_R = :func:`thermobearing.rolling_resistance.contact_rolling_force` (the heat
+    source's code path). The film's Poiseuille shear f_p = F_R/2 acts on each surface
+    against that surface's speed relative to the contact, u_b = u_e + V_y/2 (ball) and
+    u_r = u_e - V_y/2 (race): f_b = -f_p sgn(u_b) on the ball at the contact point, f_r =
+    -f_p sgn(u_r) on the race. The film pressure balances their sum (the film carries no
+    net tangential force); its rolling-direction resultant acts through each body's centre
+    (normals of a sphere / a ring pass through it; paper 000's roller share, see
+    ``skidding.roller_fluid``): on the ball P_b = -(f_b + f_r) R_P / b_r, R_P = b_r + p_r
+    the contact point's radius -- the share (1 - D cos(alpha)/d_m) at the inner race --
+    and the rest through the bearing axis on the ring (no torque). With that share the
+    film's forces do work f_b u_b + f_r u_r = -f_p (|u_b| + |u_r|) on the bodies in every
+    state, the heat the source books, so the energy identity holds."""
+    f_r_total = contact_rolling_force(geo[G_UE, n], geo[G_VY, n], geo[G_Q, n],
+                                      geo[G_P0, n], geo[G_RX, n], ry, kp)
+    fp = 0.5 * f_r_total
+    ub = geo[G_UE, n] + 0.5 * geo[G_VY, n]
+    ur = geo[G_UE, n] - 0.5 * geo[G_VY, n]
+    sb = 1.0 if ub > 0.0 else (-1.0 if ub < 0.0 else 0.0)
+    sr = 1.0 if ur > 0.0 else (-1.0 if ur < 0.0 else 0.0)
+    f_b = -fp * sb
+    f_r = -fp * sr
+    p_b = -(f_b + f_r) * (br + geo[G_PR, n]) / br
+    return f_b, p_b, f_r, f_r_total
+
+
+@numba.njit(cache=True)
+def _rolling_audit(X: np.ndarray, geo: np.ndarray, arc: np.ndarray,
+                   c: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+    """EHL rolling resistance of a state: force F_R per contact (Z, k) [N], heat per contact
+    f_p (|u_b| + |u_r|) (Z, k) [W] and the torque the shaft supplies against the Poiseuille
+    shear on the inner race, sum of R_P f_p sgn(u_r) [N m] (:func:`_rolling_terms`).
+    geo (N_GEO, Z, k)."""
+    nz, nk = X.shape[0], arc.shape[1]
+    kp = c[C_RR:C_RR + N_KERNEL]
+    force = np.zeros((nz, nk))
+    heat = np.zeros((nz, nk))
+    shaft = 0.0
+    flat = geo.reshape(geo.shape[0], nz * nk)
+    if kp[K_ON] == 0.0:
+        return force, heat, shaft
+    for j in range(nz):
+        for k in range(nk):
+            n = j * nk + k
+            if flat[G_Q, n] <= 0.0:
+                continue
+            f_b, _, f_r, f_tot = _rolling_terms(flat, n, arc[A_RY, k], X[j, 1], kp)
+            force[j, k] = f_tot
+            ub = flat[G_UE, n] + 0.5 * flat[G_VY, n]
+            ur = flat[G_UE, n] - 0.5 * flat[G_VY, n]
+            heat[j, k] = -(f_b * ub + f_r * ur)
+            if arc[A_INNER, k] == 1.0:
+                shaft += -(X[j, 1] + flat[G_PR, n]) * f_r
+    return force, heat, shaft
+
+
 @numba.njit(cache=True)
 def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray,
                  c: np.ndarray, geo: np.ndarray, film: np.ndarray, law_id: int,
@@ -336,6 +401,8 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
                             _FALSE, tr[lo:hi], e3, e2)
     D, m, J = c[C_D], c[C_M], c[C_J]
     F_s, M_s, T_s = c[C_FS], c[C_MS], c[C_TS]
+    kp = c[C_RR:C_RR + N_KERNEL]
+    rolling = kp[K_ON] != 0.0
     for i in range(nb):
         wc = G[i, 2]
         for j in range(nz):
@@ -356,6 +423,13 @@ def _ball_forces(X: np.ndarray, G: np.ndarray, cpsi: np.ndarray, arc: np.ndarray
                 sma += pr * ft + Mx * nr - Mz * na
                 smr += -pa * ft - Mx * na - Mz * nr
                 smt += pa * fr - pr * fa + My
+                if rolling and Q > 0.0:
+                    # EHL rolling resistance (_rolling_terms): Poiseuille shear on the ball
+                    # surface at the contact point, the film pressure's share at the centre
+                    f_b, p_b, _, _ = _rolling_terms(geo, n, arc[A_RY, k], X[i, j, 1], kp)
+                    sft += f_b + p_b
+                    sma += pr * f_b
+                    smr += -pa * f_b
                 inner = arc[A_INNER, k]
                 gfa += fa * inner
                 gfr += fr * inner
@@ -513,7 +587,7 @@ def _energy_audit(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
 
 
 def _refresh_caches() -> None:
-    from .. import contact_traction, film, hertz, traction
+    from .. import contact_traction, film, hertz, rolling_resistance, traction
 
     refresh_stale_caches("ball_residual_kernels", (guarded_film, guarded_film_array,
                                                    _ball_geometry, _ball_forces,
@@ -521,8 +595,9 @@ def _refresh_caches() -> None:
                                                    _same_state, _residual_norm_nb,
                                                    _energy_audit, _hd1977_central_vec,
                                                    _film_rows, _hertz_rows, _hb_point,
-                                                   _ellipse_vec, _contact_angles),
-                         (contact_traction, traction, hertz, film))
+                                                   _ellipse_vec, _contact_angles,
+                                                   _rolling_terms, _rolling_audit),
+                         (contact_traction, traction, hertz, film, rolling_resistance))
 
 
 _refresh_caches()

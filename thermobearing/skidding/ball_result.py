@@ -20,6 +20,7 @@ import numpy as np
 
 from ..loads import ball_arcs, ball_load_distribution
 from .ball_residual import (
+    C_RR,
     G_ALPHA,
     G_OMZ,
     G_Q,
@@ -27,6 +28,7 @@ from .ball_residual import (
     G_VX,
     G_VY,
     _energy_audit,
+    _rolling_audit,
     ball_residual_system,
 )
 
@@ -228,6 +230,17 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
             "cage_guide": t_guide * (wc - wg), "inner_ring_churning": inner_torque * wi}
     heat["total"] = (race + pocket_heat + drag_heat + heat["cage"] + heat["cage_guide"]
                      + heat["inner_ring_churning"])
+    if system.rolling:
+        # EHL rolling resistance (BallModels.rolling_resistance): the heat of the film's
+        # Poiseuille shear per arc and the torque the shaft supplies against it on the
+        # inner race (ball_residual_kernels._rolling_audit)
+        _, rr_heat, rr_shaft = _rolling_audit(X, geo, system._arc, system._c)
+        per_arc = rr_heat.sum(axis=0)
+        heat["rolling_resistance"] = float(per_arc.sum())
+        heat["rolling_resistance_inner"] = float(per_arc[system.inner].sum())
+        heat["rolling_resistance_outer"] = float(per_arc[~system.inner].sum())
+        heat["total"] += heat["rolling_resistance"]
+        shaft_balls += rr_shaft
     names = system.__dict__.get("_race_names")
     if names is None:
         names = system._race_names = _race_names(system.inner)
@@ -287,7 +300,17 @@ def _kinematic_state(system: ball_residual_system, X, det, names, heat):
         contacts=tuple(sets), attitude_angle=np.arctan2(X[:, 3], -X[:, 2]),
         azimuth=system.psi, pocket_normal_force=np.abs(X[:, 5]),
         pocket_sliding_speed=det["pocket_sliding"], element_drag_force=np.abs(det["Fd"]),
-        origin="skidding", extras={"solver_heat": heat, "shaft_torque": det["shaft_torque"]})
+        origin="skidding", extras=_state_extras(system, heat, det))
+
+
+def _state_extras(system: ball_residual_system, heat, det) -> dict:
+    """Extras of the kinematic state: the solver's heat and shaft torque, and with the EHL
+    rolling resistance on, its parameters (``rolling_resistance.kernel_parameters``: the
+    ``ehl_rolling_resistance`` source takes its bearing-level factor from them)."""
+    out = {"solver_heat": heat, "shaft_torque": det["shaft_torque"]}
+    if system.rolling:
+        out["rolling_resistance"] = system._c[C_RR:].copy()
+    return out
 
 
 def theoretical_csr(bearing, radial_load, axial_load, n_balls=None) -> float:
