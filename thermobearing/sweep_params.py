@@ -168,9 +168,11 @@ def _same_quantity_key(value: Any) -> Any:
     if isinstance(value, int | float) and not isinstance(value, bool):
         return ("", float(f"{float(value):.12g}"))
     try:
-        from .units import unit_registry
+        from .units import quantity_unit, unit_registry
 
-        q = unit_registry().Quantity(value).to_base_units()
+        # data-sheet spellings (r/min, m3/s) as the scene reads them
+        q = unit_registry().Quantity(float(str(value).split()[0]),
+                                     quantity_unit(value)).to_base_units()
         return (f"{q.units:~}", float(f"{float(q.magnitude):.12g}"))
     except Exception:  # noqa: BLE001 - not a quantity (a preset name ...): compare the text
         return ("text", str(value).strip())

@@ -81,9 +81,10 @@ def summary_frame(records: Iterable[Mapping[str, Any]]) -> pd.DataFrame:
 
 def _numeric_column(values: Sequence[Any]) -> tuple[str, list[float]] | None:
     """(unit, numbers) of swept values that are all quantities of one dimension, in the
-    unit of the first (``["15 L/min", "0.5 L/s"]`` -> ``("L/min", [15.0, 30.0])``); None
+    unit of the first (``["15 L/min", "0.5 L/s"]`` -> ``("L/min", [15.0, 30.0])``; units
+    as data sheets write them, ``m3/s`` or ``r/min``, are read as the scene reads them); None
     for bare numbers (already numeric), text, or mixed dimensions."""
-    from .units import unit_registry
+    from .units import quantity_unit, unit_registry
 
     if not values or not all(isinstance(v, str) for v in values):
         return None
@@ -93,10 +94,13 @@ def _numeric_column(values: Sequence[Any]) -> tuple[str, list[float]] | None:
         if len(first) != 2:
             return None
         unit = first[1]
+        # data-sheet spellings the scene reads (m3/s, mm3/h, r/min) in pint's spelling
+        target = quantity_unit(values[0])
         numbers = []
         for v in values:
-            num, _, u = v.strip().partition(" ")
-            numbers.append(float(ureg.Quantity(float(num), u.strip()).to(unit).magnitude))
+            num = v.strip().split(maxsplit=1)[0]
+            numbers.append(float(ureg.Quantity(float(num), quantity_unit(v)).to(target)
+                                 .magnitude))
     except Exception:  # noqa: BLE001 - text (a preset name) or mixed dimensions: no column
         return None
     return unit, numbers

@@ -11,7 +11,7 @@ import textwrap
 import pytest
 
 from thermobearing.network import oil_capacity_rate
-from thermobearing.scene import loads_scene
+from thermobearing.scene import load_scene, loads_scene
 from thermobearing.simulation import Simulation, summarize_scene
 
 #: one steady operating point of the default rig (one QJ1044, 1800 r/min, 20 kN axial)
@@ -66,3 +66,37 @@ def test_steady_scene_summary_has_the_steady_temperatures():
         * out["rise drive_end.oil [K]"]
     assert 0.0 < carried <= out["total loss [W]"]
 
+
+
+def capacity_runner(scene_toml: str) -> dict[str, float]:
+    """The oil flow [L/min] of a case: enough to see which case ran with which flow,
+    without the physics."""
+    return {"flow seen [L/min]": loads_scene(scene_toml).supply.flow * 60e3}
+
+
+# --- flows in m3/s (and other data-sheet spellings) lost their numeric column ------------
+@pytest.mark.parametrize("spec, column, numbers", [
+    ("supply.flow=2.5e-4,5.5e-4 m3/s", "supply.flow [m3/s]", [2.5e-4, 5.5e-4]),
+    ("supply.flow=900 L/h,5.5e-4 m3/s", "supply.flow [L/h]", [900.0, 1980.0]),
+    ("schedule.speed=1500,1800 r/min", "schedule.speed [r/min]", [1500.0, 1800.0]),
+])
+def test_summary_numeric_column_reads_data_sheet_units(tmp_path, spec, column, numbers):
+    # before: summary.csv had 'supply.flow' with "0.00025 m3/s" but no numeric
+    # 'supply.flow [m3/s]' column (the scene reads m3/s, the summary asked pint directly),
+    # so the table did not plot and the unit was nowhere in a column name
+    from thermobearing.sweep import parse_set, run_sweep
+
+    scene = load_scene()
+    df = run_sweep(scene, [parse_set(spec, scene.to_dict())], tmp_path, workers=1,
+                   runner=capacity_runner, progress=False, check=False)
+    assert column in df.columns
+    assert df[column].tolist() == pytest.approx(numbers, rel=1e-12)
+
+
+def test_same_speed_in_rpm_and_r_per_min_is_one_case():
+    # before: "1800 rpm" and "1800 r/min" were two values (two identical cases run)
+    from thermobearing.sweep import parse_set
+
+    p = parse_set("schedule.speed=1800 rpm,1800 r/min,1500 r/min", load_scene().to_dict())
+    assert p.values == ("1800 rpm", "1500 r/min")
+    assert len(p.dropped) == 1 and "1800 r/min" in p.dropped[0]
