@@ -17,9 +17,12 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
   coupled model").
-  Where the coupled motion is unstable at a temperature node and its neighbours, or would
+  Where the coupled motion stops at a temperature node and its neighbours, or would
   integrate more than :data:`MAX_COUPLED_TIME` of motion (slow cages: the cost grows as
-  1/speed), the reduced model below books the heat and a ValidityWarning says so.
+  1/speed), the reduced model below books the heat and a ValidityWarning says so. A mineral
+  oil's stiff roller spin (ISO VG46: h |lambda| ~ 60 for explicit steps) stopped the
+  coupled motion until 2026-11-23; it is integrated by ETDRK4 since
+  (:mod:`~thermobearing.skidding.roller_dynamics_coupled`, "Stiff spin") and runs coupled.
 * ``"reduced"``: the drag F_G of both faces at the kinematic state's (quasi-static) spins;
   with ``unbalance_mass`` > 0 the one-roller reduced dynamics
   (:func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, on the quasi-static
@@ -72,7 +75,10 @@ from .raceway import blok_partition
 DEFAULT_MODEL = "coupled"
 #: longest motion [s] the coupled model integrates per temperature node (its fixed cage
 #: orbits at this cage speed); beyond it the reduced model books the heat (~20-30 s CPU at
-#: the ~1.5 us steps the rib contact sets; paper 003's base case needs 0.027 s)
+#: the ~1.5 us steps the rib contact sets; paper 003's base case needs 0.027 s). The ETDRK4
+#: integrator (2026-11-23) lifts the spin's stability limit, not this step: at slow cages the
+#: step is 1/omega_rib (~1.5 us) either way (ISO VG46, 40 degC, 5000 r/min: 0.106 s of
+#: motion in 2.6 s CPU, ~25 s CPU per simulated second), so the limit is unchanged
 MAX_COUPLED_TIME = 0.5
 
 

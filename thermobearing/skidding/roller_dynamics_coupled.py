@@ -22,21 +22,50 @@ Here the spins and the cage speed are degrees of freedom:
   eq. 20 is not integrated.
 
 Integrator (ours): paper 000's traction evaluation costs ~4 ms per call (Python/numpy over Z
-rollers), the rib contact needs steps <= 1/omega_rib (~1.6 us): the raceway shear and orbital
-force are linearised in (omega_j, omega_c) -- value and forward-difference slopes -- and
-refreshed every ``refresh`` seconds (default 20 us, 1/5 of the loaded rollers' spin time
-constant J_p/k), the contact-resolved motion integrated by classical RK4 at the reduced
-model's step in between (a multirate, locally linearised scheme). The whole time loop is one
-jitted kernel (:func:`_integrate`). The linearisation comes from paper 000's model
-tabulated once per run over (omega_r, N_i, omega_c) and interpolated inside the kernel
-(``traction="table"``, default, :mod:`~thermobearing.skidding.roller_dynamics_table`) or,
-as a reference, from three ``evaluate`` calls per refresh made from Python between kernel
-calls (``traction="evaluate"``). Measured at the paper 003 base case (0.06 / 0.11 g,
-1.5 + 1.5 orbits, 2026-11-22): table 1.1 s CPU per point, evaluate 3.9-5.4 s, the previous
+rollers), the rib contact needs steps <= 1/omega_rib (~1.6 us): the raceway shear and
+orbital force are linearised in (omega_j, omega_c) -- value and forward-difference slopes --
+and refreshed every ``refresh`` seconds (default 20 us, 1/5 of the loaded rollers' spin time
+constant J_p/k), the contact-resolved motion integrated by classical RK4 (ETDRK4 since
+2026-11-23, "Stiff spin" below) at the reduced model's step in between (a multirate, locally
+linearised scheme). The whole time loop is one jitted kernel (:func:`_integrate`). The
+linearisation comes from paper 000's model tabulated once per run over (omega_r, N_i,
+omega_c) and interpolated inside the kernel (``traction="table"``, default,
+:mod:`~thermobearing.skidding.roller_dynamics_table`) or, as a reference, from three
+``evaluate`` calls per refresh made from Python between kernel calls
+(``traction="evaluate"``). Measured at the paper 003 base case (0.06 / 0.11 g, 1.5 + 1.5
+orbits, 2026-11-22): table 1.1 s CPU per point, evaluate 3.9-5.4 s, the previous
 Python-driven RK4 loop 7.6-11.8 s; slip 5.23 / 5.51 (table) vs 5.23 / 5.51 (evaluate) vs
 5.27 / 5.64 m/s (previous loop), PV 1231 / 1281 vs 1210 / 1246 vs 1206 / 1272 MPa m/s: the
 differences are those of the chaotic impacting motion under floating-point-level changes
 (validation case SOURCE.md). Refresh convergence is checked in the tests. Units: SI.
+
+Stiff spin (2026-11-23): the integrator is ETDRK4 (``integrator="etd"``, default;
+:mod:`~thermobearing.skidding.roller_dynamics_etd`): each roller's spin relaxation under the
+linearised raceway shear, lambda = (D/2) dS/d omega / J_p, and the pocket speed's raceway
+damping -c_z/m are integrated exactly (:func:`_stiff_rates`), everything else by the RK4
+stages (ETDRK4 is RK4 where lambda = 0). With a mineral oil the film's Newtonian shear gives
+|lambda| up to ~3e7 1/s (ISO VG46 at 80 degC, CRB 50x75x16, 20000 r/min, 3 kN: h |lambda|
+= 60 for the most loaded roller at the default step; RK4's bound is 2.8): explicit RK4 ran
+to a non-finite state there even at 6400 steps per spin period on the evaluate path; ETDRK4
+converges at the default step (tests). The shear also reaches its limit within ~1 rad/s of
+the equilibrium spin, far inside the table's 50 rad/s spin step: the table's interpolant
+smears it over ~2 spin cells, and a linearisation held for the 20 us refresh let a roller
+coasting on the saturated, flat part of the curve overshoot its equilibrium by ~1000 rad/s
+(the spins then reversed and left the table 21 times: the "unstable coupled motion" the
+rib heat source fell back from). On the table path each roller's linearisation is
+therefore renewed in the kernel as soon as its spin moved by more than
+:data:`SPIN_TRUST` x the table's spin step from its linearisation spin. Measured
+(2026-11-23; paper 003 base case, 30000 r/min, MIL-PRF-23699, 2 + 3 orbits, default step):
+0.11 g RK4 / ETDRK4 PV 629.1 / 632.1 (left), 634.5 / 630.8 (right) MPa m/s, slip 5.480 /
+5.471 m/s, rib heat 72.09 / 72.28 W per roller, CPU 1.22-1.41 / 1.13-1.27 s per point; at
+1600 steps per period RK4 / ETDRK4 633.4 / 630.0, 633.9 / 626.1 MPa m/s, 5.495 / 5.475 m/s,
+72.64 / 71.92 W (differences inside the chaotic motion's scatter); 0.06 g 596.4 / 597.0,
+592.9 / 597.3 MPa m/s, 5.042 / 5.192 m/s, 52.53 / 52.95 W. ISO VG46 at 80 degC, 20000
+r/min (no unbalance, previously "unstable coupled motion"): slip 1.7048 m/s, rib heat
+0.0585 W per roller at 400, 1600 and 3200 steps per period (0.66 s CPU); at 40 degC, 5000
+r/min (previously a spin runaway): slip 2.0123 / 2.0122 m/s at 400 / 1600.
+``integrator="rk4"`` keeps the previous explicit scheme (no in-kernel renewal) for
+comparison.
 
 Cage runaway and the fallback (2026-11-22). The example scene
 ``configs/scenes/crb_rib_example.toml`` with 0.06 g (paper 003's bearing as an NUP variant,
@@ -88,16 +117,20 @@ import numpy as np
 from numba import njit
 
 from ..errors import ConvergenceError, InputError, check_positive
+from .roller_dynamics_etd import set_coefficients
 from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_response import RollerResponse, _post, _response
-from .roller_dynamics_rhs import _params, _rhs_ring
+from .roller_dynamics_rhs import _MASS, _PDOF, _params, _rhs_ring
 from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
 
 #: band of the cage speed around the quasi-static one, as a fraction (simulate_coupled):
 #: evaluate-path runs stay within +11 % (20000 r/min, 420 K, 0.06 g: 886 -> <= 987 rad/s),
 #: +3 % at paper 003's base case; the table path's runaways reach +30 % and beyond
 DEFAULT_CAGE_BAND = 0.2
+#: time integrators of simulate_coupled (module notes, "Stiff spin"): "etd" (default,
+#: ETDRK4 with the spin relaxation exact) or "rk4" (classical RK4, explicit throughout)
+INTEGRATORS = ("etd", "rk4")
 #: table (re)builds after which the table path is given up (simulate_coupled)
 MAX_TABLE_BUILDS = 20
 
@@ -248,32 +281,76 @@ def _refresh_from_table(y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarra
     """The traction linearisation of every roller from the table (the same value and
     forward-difference slopes as the ``evaluate`` refresh of :func:`simulate_coupled`);
     returns (omega_c of the linearisation, table status: 0 ok, 1-3 outside the grid)."""
-    n = N_ROLLER_STATES
-    th = y[z_n * n]
-    wc0 = y[z_n * n + 1]
-    dc = 1e-4 * max(abs(wc0), 1.0)
-    two_pi = 2.0 * math.pi
+    wc0 = y[z_n * N_ROLLER_STATES + 1]
     for j in range(z_n):
-        w = y[j * n + 7]
-        phi = (phi0[j] + th) % two_pi
-        n_i = _interp_sorted(phi, az, load)
-        dw = 1e-4 * max(abs(w), 1.0)
-        s0, f0, q0, st0 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0)
-        s1, f1, _, st1 = table_eval(spin0, spin_step, loads, cage, values, w + dw, n_i, wc0)
-        s2, f2, _, st2 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0 + dc)
-        st = max(st0, max(st1, st2))
+        st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads, cage,
+                             values, lin, w0, wc0, q_o, c_z)
         if st != 0:
             return wc0, st
-        w0[j] = w
-        lin[j, 0] = s0
-        lin[j, 1] = (s1 - s0) / dw
-        lin[j, 2] = (s2 - s0) / dc
-        lin[j, 3] = f0
-        lin[j, 4] = (f1 - f0) / dw
-        lin[j, 5] = (f2 - f0) / dc
-        q_o[j] = q0
-        c_z[j] = max(-lin[j, 1], 0.0)
     return wc0, 0
+
+
+@njit(cache=True)
+def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
+                    load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
+                    cage: np.ndarray, values: np.ndarray, lin: np.ndarray, w0: np.ndarray,
+                    wc0: float, q_o: np.ndarray, c_z: np.ndarray) -> int:
+    """Roller ``j``'s row of :func:`_refresh_from_table` at its present spin and azimuth and
+    the cage speed ``wc0`` of the linearisation; returns the table status (0 ok)."""
+    n = N_ROLLER_STATES
+    th = y[z_n * n]
+    dc = 1e-4 * max(abs(wc0), 1.0)
+    w = y[j * n + 7]
+    phi = (phi0[j] + th) % (2.0 * math.pi)
+    n_i = _interp_sorted(phi, az, load)
+    dw = 1e-4 * max(abs(w), 1.0)
+    s0, f0, q0, st0 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0)
+    s1, f1, _, st1 = table_eval(spin0, spin_step, loads, cage, values, w + dw, n_i, wc0)
+    s2, f2, _, st2 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0 + dc)
+    st = max(st0, max(st1, st2))
+    if st != 0:
+        return st
+    w0[j] = w
+    lin[j, 0] = s0
+    lin[j, 1] = (s1 - s0) / dw
+    lin[j, 2] = (s2 - s0) / dc
+    lin[j, 3] = f0
+    lin[j, 4] = (f1 - f0) / dw
+    lin[j, 5] = (f2 - f0) / dc
+    q_o[j] = q0
+    c_z[j] = max(-lin[j, 1], 0.0)
+    return 0
+
+
+@njit(cache=True)
+def _stiff_rates(p: np.ndarray, lin: np.ndarray, w0: np.ndarray, c_z: np.ndarray,
+                 polar: float, half: float, z_n: int, h: float, lam: np.ndarray,
+                 y_ref: np.ndarray, coef: np.ndarray) -> None:
+    """The linear part the ETDRK4 step of :func:`_integrate` treats exactly (module notes,
+    "Stiff spin"): per roller the spin's relaxation under the linearised raceway shear,
+    lam = (D/2) dS/d omega / J_p about y_ref = w0 (the refresh's spin; a positive slope, a
+    shear that would drive the spin away, is left to the explicit stages), and the pocket
+    speed's raceway damping lam = -c_z / m about 0 (pocket DOF on). Fills ``lam`` [1/s],
+    ``y_ref`` and the (n, 6) ETDRK4 coefficients ``coef`` for step ``h`` [s]; every other
+    component gets lam = 0 (classical RK4)."""
+    for j in range(z_n):
+        _stiff_roller(j, p, lin, w0, c_z, polar, half, h, lam, y_ref, coef)
+    for q in range(coef.shape[0]):
+        if coef[q, 0] == 0.0 and lam[q] == 0.0:
+            set_coefficients(coef, q, 0.0, h)
+
+
+@njit(cache=True)
+def _stiff_roller(j: int, p: np.ndarray, lin: np.ndarray, w0: np.ndarray, c_z: np.ndarray,
+                  polar: float, half: float, h: float, lam: np.ndarray, y_ref: np.ndarray,
+                  coef: np.ndarray) -> None:
+    """Roller ``j``'s entries of :func:`_stiff_rates`."""
+    b = j * N_ROLLER_STATES
+    lam[b + 7] = min(half * lin[j, 1] / polar, 0.0)
+    y_ref[b + 7] = w0[j]
+    set_coefficients(coef, b + 7, lam[b + 7], h)
+    lam[b + 5] = -c_z[j] / p[_MASS] if p[_PDOF] > 0.5 else 0.0
+    set_coefficients(coef, b + 5, lam[b + 5], h)
 
 
 @njit(cache=True)
@@ -284,12 +361,17 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
                values: np.ndarray, n_warm: int, every: int, samples: np.ndarray,
                sample_t: np.ndarray, sample_wc: np.ndarray, sample_ring: np.ndarray,
-               n_sampled: int) -> tuple[int, int, float, int, float]:
-    """Classical RK4 steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y``
-    (in place) at step ``h`` [s], the traction linearisation refreshed from the table every
-    ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used throughout); samples
-    (state with X, X' relative to the inner ring, t, omega_c) every ``every`` steps from step
-    ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c, inner-ring mass (0: held),
+               n_sampled: int, etd: bool, spin_trust: float
+               ) -> tuple[int, int, float, int, float]:
+    """Steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y`` (in place) at
+    step ``h`` [s]: ETDRK4 (``etd``; :func:`_stiff_rates` the exact linear part, module
+    notes, "Stiff spin") or classical RK4; the traction linearisation refreshed from the
+    table every ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used
+    throughout) and, with ``spin_trust`` > 0 [rad/s], a roller's row as soon as its spin is
+    more than ``spin_trust`` from the spin of its linearisation (module notes, "Stiff
+    spin"); samples (state with X, X' relative to the inner ring, t, omega_c) every
+    ``every`` steps from step ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c,
+    inner-ring mass (0: held),
     cage-land drag coefficient [N m s] and guide ring speed [rad/s].
     Returns (status, steps done, t, samples written, omega_c of the linearisation); status
     0 done, 1-3 the table's grid left (the step was not taken; the caller rebuilds the
@@ -301,10 +383,16 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     k3 = np.zeros(m_y)
     k4 = np.zeros(m_y)
     yt = np.zeros(m_y)
+    ya = np.zeros(m_y)
+    lam = np.zeros(m_y)
+    y_ref = np.zeros(m_y)
+    coef = np.zeros((m_y, 6))
     polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
     ring_mass = consts[5]
     land = consts[6:8]
     ring = z_n * n + 2
+    if etd:
+        _stiff_rates(p, lin, w0, c_z, polar, half, z_n, h, lam, y_ref, coef)
     for s in range(n_steps):
         step = step0 + s
         if use_table and step % sub == 0:
@@ -312,22 +400,58 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                                           cage, values, lin, w0, q_o, c_z)
             if st != 0:
                 return st, s, t, n_sampled, wc0
-        _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass, land)
-        for q in range(m_y):
-            yt[q] = y[q] + 0.5 * h * k1[q]
-        _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass, land)
-        for q in range(m_y):
-            yt[q] = y[q] + 0.5 * h * k2[q]
-        _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass, land)
-        for q in range(m_y):
-            yt[q] = y[q] + h * k3[q]
-        _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar, cage_j,
-                    half, dm_half, t_c, film, ring_mass, land)
-        for q in range(m_y):
-            y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
+            if etd:
+                _stiff_rates(p, lin, w0, c_z, polar, half, z_n, h, lam, y_ref, coef)
+        elif use_table and spin_trust > 0.0:
+            for j in range(z_n):
+                if abs(y[j * n + 7] - w0[j]) > spin_trust:
+                    st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads,
+                                         cage, values, lin, w0, wc0, q_o, c_z)
+                    if st != 0:
+                        return st, s, t, n_sampled, wc0
+                    if etd:
+                        _stiff_roller(j, p, lin, w0, c_z, polar, half, h, lam, y_ref, coef)
+        if etd:
+            # ETDRK4 (roller_dynamics_etd): N = f - lam (y - y_ref), the linear part exact
+            _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                k1[q] -= lam[q] * (y[q] - y_ref[q])
+                ya[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k1[q]
+            _deriv_into(p, ya, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                k2[q] -= lam[q] * (ya[q] - y_ref[q])
+                yt[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k2[q]
+            _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                k3[q] -= lam[q] * (yt[q] - y_ref[q])
+                yt[q] = (y_ref[q] + coef[q, 1] * (ya[q] - y_ref[q])
+                         + coef[q, 2] * (2.0 * k3[q] - k1[q]))
+            _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                k4[q] -= lam[q] * (yt[q] - y_ref[q])
+                y[q] = (y_ref[q] + coef[q, 0] * (y[q] - y_ref[q]) + coef[q, 3] * k1[q]
+                        + 2.0 * coef[q, 4] * (k2[q] + k3[q]) + coef[q, 5] * k4[q])
+        else:
+            _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                yt[q] = y[q] + 0.5 * h * k1[q]
+            _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                yt[q] = y[q] + 0.5 * h * k2[q]
+            _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                yt[q] = y[q] + h * k3[q]
+            _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
+                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+            for q in range(m_y):
+                y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
         t += h
         if (step >= n_warm and (step - n_warm) % every == 0
                 and n_sampled < samples.shape[0]):
@@ -365,6 +489,12 @@ _HLI, _CPI, _KCI, _ETAI, _FLI = _indices()
 SPIN_RUNAWAY = 2.0
 
 
+#: on the table path of the "etd" integrator a roller's traction linearisation is renewed
+#: as soon as its spin moved by more than this fraction of the table's spin step from the
+#: spin it was linearised at (module notes, "Stiff spin")
+SPIN_TRUST = 0.25
+
+
 class _TableCannotFollow(Exception):
     """The table path's state left the cage band (or the table kept being left):
     :func:`simulate_coupled` re-runs the reference path."""
@@ -382,7 +512,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      traction: str = "table", table_options: dict[str, Any] | None = None,
                      ring_axial: bool = False, cage_land: bool = False,
                      cage_band: float | None = DEFAULT_CAGE_BAND,
-                     fallback: bool = True) -> RollerResponse:
+                     fallback: bool = True, integrator: str = "etd") -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -394,7 +524,11 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     :mod:`~thermobearing.skidding.roller_dynamics_table`; ``table_options`` its grid
     keywords) or "evaluate" (three calls of
     :func:`thermobearing.skidding.roller_residual.evaluate` per refresh from Python, the
-    reference the table is checked against; ~6x slower). Both run the same jitted RK4 loop.
+    reference the table is checked against; ~6x slower). Both run the same jitted loop.
+    ``integrator``: "etd" (default: ETDRK4 with the spin relaxation exact and, on the table
+    path, a roller's linearisation renewed when its spin moved by :data:`SPIN_TRUST` table
+    spin steps; module notes, "Stiff spin") or "rk4" (the previous explicit scheme, which
+    diverges with mineral oils).
     ``ring_axial``: the inner ring free to move axially under the rib and inner-raceway
     axial forces of all rollers (paper 003 eq. 20 line 1, no external axial load; mass
     :func:`inner_ring_mass`) instead of held by the shaft (default).
@@ -427,7 +561,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     kwargs = dict(n_orbits=n_orbits, warmup_orbits=warmup_orbits, refresh=refresh,
                   steps_per_period=steps_per_period, samples_per_period=samples_per_period,
                   phase_spread=phase_spread, table_options=table_options,
-                  ring_axial=ring_axial, cage_land=cage_land, cage_band=cage_band)
+                  ring_axial=ring_axial, cage_land=cage_land, cage_band=cage_band,
+                  integrator=integrator)
     t0 = time.process_time()
     try:
         return _simulate_coupled_path(m, bearing, lubricant, traction=traction, **kwargs)
@@ -451,7 +586,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                            steps_per_period: int, samples_per_period: int,
                            phase_spread: bool, traction: str,
                            table_options: dict[str, Any] | None, ring_axial: bool,
-                           cage_land: bool, cage_band: float | None) -> RollerResponse:
+                           cage_land: bool, cage_band: float | None,
+                           integrator: str) -> RollerResponse:
     """One run of :func:`simulate_coupled` on one traction path (arguments as there);
     raises :class:`_TableCannotFollow` on the table path, ConvergenceError on the
     evaluate path when the cage leaves ``cage_band``."""
@@ -462,6 +598,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     check_positive("refresh", refresh)
     if traction not in ("table", "evaluate"):
         raise InputError("traction", traction, ("table", "evaluate"))
+    if integrator not in INTEGRATORS:
+        raise InputError("integrator", integrator, INTEGRATORS)
     t0 = time.process_time()
     rm = race_model(bearing, lubricant, m.extras.get("temperature", 353.15))
     z_n = len(m.azimuth)
@@ -576,7 +714,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         status, done, t, n_sampled, wc0 = _integrate(
             c, y, t, step, block, h, sub, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z,
             consts, film, tab is not None, *grid, n_warm, every, samples, sample_t,
-            sample_wc, sample_ring, n_sampled)
+            sample_wc, sample_ring, n_sampled, integrator == "etd",
+            SPIN_TRUST * grid[1] if integrator == "etd" and tab is not None else 0.0)
         step += done
         if status == 4:
             raise ConvergenceError("roller_dynamics.coupled", float("inf"),
@@ -638,6 +777,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "table_builds": np.array([len(tables)]),
                                  "table_rebuild_status": np.array(reasons, dtype=int),
                                  "step": np.array([h]), "refresh_steps": np.array([sub]),
+                                 "integrator": np.array([integrator]),
                                  "traction_fallback": np.array([0])})
 
 
@@ -655,8 +795,9 @@ def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: i
             "mean_spin": float(np.mean(y[7:z_n * n:n]))}
 
 
-__all__ = ["DEFAULT_CAGE_BAND", "MAX_TABLE_BUILDS", "N_ROLLER_STATES", "cage_inertia",
-           "cage_land_coefficient", "inner_ring_mass", "simulate_coupled"]
+__all__ = ["DEFAULT_CAGE_BAND", "INTEGRATORS", "MAX_TABLE_BUILDS", "N_ROLLER_STATES",
+           "SPIN_TRUST", "cage_inertia", "cage_land_coefficient", "inner_ring_mass",
+           "simulate_coupled"]
 
 
 def _refresh_caches() -> None:
@@ -665,13 +806,19 @@ def _refresh_caches() -> None:
     roller_dynamics_table.py; :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
     from .. import rib
     from ..contact_traction import refresh_stale_caches
-    from . import roller_dynamics_pocket, roller_dynamics_rhs, roller_dynamics_table
+    from . import (
+        roller_dynamics_etd,
+        roller_dynamics_pocket,
+        roller_dynamics_rhs,
+        roller_dynamics_table,
+    )
 
     refresh_stale_caches("roller_dynamics_coupled",
                          (_pocket_film_friction, _interp_sorted, _deriv_into,
-                          _refresh_from_table, _integrate),
+                          _refresh_from_table, _refresh_roller, _stiff_rates,
+                          _stiff_roller, _integrate),
                          (roller_dynamics_rhs, rib, roller_dynamics_pocket,
-                          roller_dynamics_table))
+                          roller_dynamics_table, roller_dynamics_etd))
 
 
 _refresh_caches()
