@@ -148,3 +148,48 @@ def test_6206_magnitude_against_the_skf_rolling_term():
         g = skf_four_term(b, nu, w, 2000.0, 0.0, lubrication="oil_bath", oil_level=0.005)
         bare = g.components["rolling"] / (g.details["phi_ish"] * g.details["phi_rs"])
         assert 0.1 < power / w / bare < 0.45
+
+
+def test_heat_source_on_a_race_control_state_books_f_r_times_u():
+    # the ehl_rolling_resistance source with rolling_force = "harris" on a race-control
+    # state (no solver parameters carried): F_R of the module at the contact temperature
+    # times the entrainment speed (pure rolling), the SKF factor computed from the supply
+    from thermobearing.geometry import load_bearing
+    from thermobearing.heat_sources import HeatContext, evaluate
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.state import OilSupply, OperatingPoint, race_control_state
+
+    b = load_bearing("examples/catalogue_bearing_6206.toml")
+    lub = load_lubricant("ISO_VG68")
+    t, w = 333.15, 3000 * math.pi / 30
+    op = OperatingPoint(w, 0.0, 2000.0, 0.0)
+    ks = race_control_state(b, op)
+    supply = OilSupply("oil_bath", 0.0, t, level=0.005)
+    nu = float(lub.dynamic_viscosity(t)) / float(lub.density(t))
+    factor = rr.supply_factor("skf", b, w, nu, "oil_bath")
+    kp = rr.lubricant_kernel_parameters("harris", "skf", lub, t, b.effective_modulus, factor)
+    expected = sum(float(np.sum(rr.rolling_force_array(
+        cs.entrainment_speed, cs.sliding_speed, cs.normal_load, cs.max_pressure,
+        cs.reduced_radius_x, cs.reduced_radius_y, kp) * cs.entrainment_speed))
+        for cs in ks.contacts)
+    ctx = HeatContext.isothermal(t, bearing=b, lubricant=lub, supply=supply, operating=op,
+                                 kinematics=ks, options={"ehl_rolling_resistance": {
+                                     "rolling_force": "harris", "reduction": "skf"}})
+    got = evaluate(["ehl_rolling_resistance"], ctx)[0].total
+    assert expected > 0.0
+    assert got == pytest.approx(expected, rel=1e-12)
+    bad = HeatContext.isothermal(t, bearing=b, lubricant=lub, supply=supply, operating=op,
+                                 kinematics=ks, options={"ehl_rolling_resistance": {
+                                     "rolling_force": "harris",
+                                     "thermal_reduction": "gupta_1992"}})
+    with pytest.raises(InputError, match="thermal_reduction"):
+        evaluate(["ehl_rolling_resistance"], bad)
+    # line contacts keep the line-contact models
+    nu214 = load_bearing("NU214")
+    ks_r = race_control_state(nu214, OperatingPoint(w, 0.0, 5000.0, 0.0))
+    roller = HeatContext.isothermal(t, bearing=nu214, lubricant=lub, supply=supply,
+                                    operating=op, kinematics=ks_r,
+                                    options={"ehl_rolling_resistance": {
+                                        "rolling_force": "harris"}})
+    with pytest.raises(InputError, match="line-contact"):
+        evaluate(["ehl_rolling_resistance"], roller)
