@@ -297,21 +297,64 @@ def run_sweep(
                     _write_summary(out, cases, done)
                     bar.update(1)
             else:
+                def keep(case: Case, result: Mapping[str, float]) -> None:
+                    rec = _record(case, result)
+                    _append(out, rec)
+                    done[rec["case"]] = rec
+                    _write_summary(out, cases, done)
+                    bar.update(1)
+
                 with ProcessPoolExecutor(max_workers=workers) as pool:
                     futs = {pool.submit(runner, c.scene_toml): c for c in todo}
                     try:
-                        for fut in as_completed(futs):
-                            with _naming_case(futs[fut], out):
-                                result = fut.result()
-                            rec = _record(futs[fut], result)
-                            _append(out, rec)
-                            done[rec["case"]] = rec
-                            _write_summary(out, cases, done)
-                            bar.update(1)
+                        _run_pool(futs, keep, out)
                     except KeyboardInterrupt:
-                        # leaving the with-block would wait for every queued case: drop them
-                        pool.shutdown(wait=False, cancel_futures=True)
+                        # leaving the with-block would wait for the running and queued
+                        # cases (whose results nobody records): stop them
+                        _stop_pool(pool)
                         raise
     finally:
         bar.close()
     return _write_summary(out, cases, done)
+
+
+def _run_pool(futs: Mapping[Any, Case], keep: Callable[[Case, Mapping[str, float]], None],
+              out: Path) -> None:
+    """Keep each case of a process pool as it finishes. A case that fails starts no other
+    case: the cases already running are waited for and kept, then the failure is raised
+    naming its case (before, the pool ran every queued case on leaving and dropped their
+    results)."""
+    failed = None
+    kept = set()
+    for fut in as_completed(futs):
+        if fut.exception() is None:
+            keep(futs[fut], fut.result())
+            kept.add(fut)
+            continue
+        failed = fut
+        break
+    if failed is None:
+        return
+    if isinstance(failed.exception(), KeyboardInterrupt):
+        raise KeyboardInterrupt  # a worker got the Ctrl-C first
+    for fut in futs:
+        fut.cancel()  # the queued cases; a running one cannot be cancelled
+    rest = [f for f in futs if f is not failed and f not in kept and not f.cancelled()]
+    for fut in as_completed(rest):
+        if fut.exception() is None:
+            keep(futs[fut], fut.result())
+    with _naming_case(futs[failed], out):
+        failed.result()
+
+
+def _stop_pool(pool: ProcessPoolExecutor) -> None:
+    """Cancel a pool's queued cases and end its worker processes (Ctrl-C): the running
+    cases are lost anyway, and a worker that caught the Ctrl-C in its case would go on to
+    the next queued one while the command had already said it was interrupted."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in processes:
+        if proc.is_alive():
+            proc.terminate()
+    for proc in processes:
+        proc.join(timeout=5.0)

@@ -100,3 +100,105 @@ def test_same_speed_in_rpm_and_r_per_min_is_one_case():
     p = parse_set("schedule.speed=1800 rpm,1800 r/min,1500 r/min", load_scene().to_dict())
     assert p.values == ("1800 rpm", "1500 r/min")
     assert len(p.dropped) == 1 and "1800 r/min" in p.dropped[0]
+
+
+# --- -j / --jobs, as `thermobearing validate` spells it ---------------------------------
+def test_sweep_takes_jobs_like_validate(tmp_path, monkeypatch):
+    # before: `thermobearing sweep -j 2 ...` was "unrecognized arguments: -j" while
+    # `validate` takes -j N; --workers stays
+    import pandas as pd
+
+    from thermobearing import cli
+
+    seen = []
+
+    def fake_run_sweep(scene, params, out, *, workers=None, **kwargs):
+        seen.append(workers)
+        return pd.DataFrame({"case": ["a"], "supply.flow": ["15 L/min"],
+                             "flow seen [L/min]": [15.0]})
+
+    monkeypatch.setattr("thermobearing.commands.sweep.run_sweep", fake_run_sweep)
+    for flag in ("-j", "--jobs", "--workers"):
+        assert cli.main(["sweep", "--set", "supply.flow=15,33", "--out",
+                         str(tmp_path / flag.strip("-")), flag, "2", "--quiet"]) == 0
+    assert seen == [2, 2, 2]
+
+
+# --- a failing case in a process pool: the queued cases ran and their results were lost --
+def _marking_runner(scene_toml: str) -> dict[str, float]:
+    """The 10 L/min case fails at once; every other case takes 0.3 s and leaves a marker
+    file (in $TOUR_MARKS) when it finished, whether or not the sweep records it."""
+    import os
+    import time
+    from pathlib import Path
+
+    from thermobearing.errors import ConvergenceError
+
+    flow = round(loads_scene(scene_toml).supply.flow * 60e3, 6)
+    if flow == 10.0:
+        raise ConvergenceError("kinematics (skidding)", 6.7e-4, "no convergence", {})
+    time.sleep(0.3)
+    Path(os.environ["TOUR_MARKS"], f"{flow:g}").touch()
+    return {"flow seen [L/min]": flow}
+
+
+def test_failing_case_in_a_pool_keeps_the_running_ones_and_starts_no_other(tmp_path,
+                                                                           monkeypatch):
+    # before: the error left the pool's with-block, which ran every queued case to the
+    # end (6 here) and recorded none of those finished after the failure
+    from thermobearing.errors import ConvergenceError
+    from thermobearing.sweep import finished_cases, parse_set, run_sweep
+
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    monkeypatch.setenv("TOUR_MARKS", str(marks))
+    scene = load_scene()
+    p = parse_set("supply.flow=10,15,20,25,30,35,40", scene.to_dict())
+    with pytest.raises(ConvergenceError, match=r"supply.flow=10 L/min.*finished case"):
+        run_sweep(scene, [p], tmp_path / "sw", runner=_marking_runner, workers=2,
+                  progress=False, check=False)
+    ran = {f.name for f in marks.iterdir()}
+    kept = {f"{r['result']['flow seen [L/min]']:g}"
+            for r in finished_cases(tmp_path / "sw").values()}
+    assert ran == kept  # every case that finished is in the store
+    assert len(ran) < 6  # the queued cases were not started after the failure
+
+
+def _interrupting_runner(scene_toml: str) -> dict[str, float]:
+    """The 15 L/min case presses Ctrl-C (SIGINT to the sweep's process); every case writes
+    its process id to $TOUR_MARKS/pid-<flow> and then takes 20 s."""
+    import os
+    import signal
+    import time
+    from pathlib import Path
+
+    flow = round(loads_scene(scene_toml).supply.flow * 60e3, 6)
+    Path(os.environ["TOUR_MARKS"], f"pid-{flow:g}").write_text(str(os.getpid()))
+    if flow == 15.0:
+        time.sleep(0.2)
+        os.kill(os.getppid(), signal.SIGINT)
+    time.sleep(20.0)
+    return {"flow seen [L/min]": flow}
+
+
+def test_ctrl_c_in_a_pool_stops_the_running_cases(tmp_path, monkeypatch):
+    # before: after Ctrl-C the workers ran on (the command said "interrupted", then
+    # waited at its exit for the running and queued cases to end, about two minutes on
+    # the default rig with cold workers, and recorded none of them)
+    import os
+
+    from thermobearing.sweep import parse_set, run_sweep
+
+    marks = tmp_path / "marks"
+    marks.mkdir()
+    monkeypatch.setenv("TOUR_MARKS", str(marks))
+    scene = load_scene()
+    p = parse_set("supply.flow=15,20,25", scene.to_dict())
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(scene, [p], tmp_path / "sw", runner=_interrupting_runner, workers=2,
+                  progress=False, check=False)
+    pids = [int(f.read_text()) for f in marks.iterdir()]
+    assert pids  # the cases had started
+    for pid in pids:  # their workers are gone when the sweep returns
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)

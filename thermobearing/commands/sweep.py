@@ -38,7 +38,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "ISO_VG68, checks.skid_limit=2,5 (%%), "
                              "network.parameters.h_oil=200,400")
     parser.add_argument("--out", required=True, help="results folder")
-    parser.add_argument("--workers", type=int, default=None, help="local processes")
+    parser.add_argument("--workers", "--jobs", "-j", type=int, default=None, dest="workers",
+                        help="local processes (default: one per CPU; 1 = serial; -j N as "
+                             "for `validate`)")
     parser.add_argument("--scheduler", default=None, help="dask scheduler address")
     parser.add_argument("--fallback-local", action="store_true",
                         help="run locally if the scheduler cannot be reached")
