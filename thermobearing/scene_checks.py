@@ -60,6 +60,15 @@ def check_model_names(scene: Scene) -> None:
             raise UnknownNameError(where, name, HEAT_SOURCES.names())
     if stepper not in STEPPERS:
         raise UnknownNameError("solver.stepper", stepper, STEPPERS.names())
+    if scene.outputs.mode == "transient" and not getattr(STEPPERS.get(stepper), "adaptive",
+                                                          True):
+        # the comparison steppers need a fixed step size, which a scene cannot give (the
+        # transient stopped at its first chunk with "dt is missing", naming no scene field)
+        usable = [n for n in STEPPERS.names() if getattr(STEPPERS.get(n), "adaptive", True)]
+        raise InputError("solver.stepper", stepper,
+                         "a stepper with error control (" + ", ".join(usable) + f"); "
+                         f"{stepper!r} takes a fixed step size, for comparisons from Python "
+                         "(thermobearing.network.integrate(..., dt=...))")
     if "control" in models:
         from .state import RACE_CONTROLS
 
