@@ -166,8 +166,11 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
             where = "no case was run (every case is checked before the first one runs)"
         else:
             n = len(finished_cases(out))
-            where = (f"{n} finished case(s) are kept in {_store_path(out)} (rerun the same "
-                     "command to resume)")
+            # a rerun runs this case again first: with the same values it fails the same
+            # way, and in a serial sweep the cases after it never run
+            where = (f"{n} finished case(s) are kept in {_store_path(out)} (rerunning the "
+                     "same command resumes with this case, which fails again with these "
+                     "values: leave them out of --set to run the other cases)")
         exc.args = (f"sweep case {case.case_id} ({values}): {exc}; {where}", *exc.args[1:])
         raise
     except Exception as exc:

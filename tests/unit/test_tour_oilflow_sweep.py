@@ -202,3 +202,27 @@ def test_ctrl_c_in_a_pool_stops_the_running_cases(tmp_path, monkeypatch):
     for pid in pids:  # their workers are gone when the sweep returns
         with pytest.raises(ProcessLookupError):
             os.kill(pid, 0)
+
+
+# --- a case that does not converge: "rerun the same command to resume" -------------------
+def test_failed_case_message_says_a_rerun_fails_the_same_way(tmp_path, capsys, monkeypatch):
+    # before: "... are kept in DIR/cases.jsonl (rerun the same command to resume)": the
+    # rerun starts with the failed case and stops there again (40 L/min at 40 degC inlet
+    # on the default rig: the ball skidding solver stops at residual 6.7e-4 at 4 kN), so
+    # a serial sweep never reaches the cases after it
+    import thermobearing.simulation as simulation
+    from thermobearing import cli
+    from thermobearing.errors import ConvergenceError
+
+    def runner(text):
+        if loads_scene(text).supply.flow > 30e-3 / 60:
+            raise ConvergenceError("kinematics (skidding)", 6.7e-4, "no convergence", {})
+        return capacity_runner(text)
+
+    monkeypatch.setattr(simulation, "summarize_scene", runner)
+    args = ["sweep", "--set", "supply.flow=15,40", "--out", str(tmp_path / "sw"), "-j", "1",
+            "--quiet"]
+    assert cli.main(args) != 0
+    err = capsys.readouterr().err
+    assert "supply.flow=40 L/min" in err and "1 finished case(s) are kept" in err
+    assert "fails again" in err and "leave them out of --set" in err
