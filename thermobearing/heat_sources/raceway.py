@@ -281,7 +281,8 @@ def _thermal_factor(model, ctx, cs, temp, eta):
 
 @HEAT_SOURCES.register(
     "ehl_rolling_resistance",
-    references=["li2018_nu214_skidding", "blok1963_flash_temperature"],
+    references=["li2018_nu214_skidding", "blok1963_flash_temperature", "harris_kotzalas2007",
+                "gupta1992", "skf_catalogue_friction"],
     parameters={"thermal_reduction": "-", "rolling_force": "-", "reduction": "-",
                 "supply_factor": "-"},
     validity="fully flooded EHL unless reduced; line contacts, ball contacts by the "
