@@ -60,6 +60,13 @@ from .signal_envelope import (
 from .signal_input import check_signal
 from .signal_kurtogram import kurtogram_bands
 
+#: a sub-multiple f/m of the cage frequency whose own comb lines (those that are no line of
+#: the comb at f) all stand more than this many dB below the strongest line of f's comb is
+#: taken as a subharmonic of f's comb, not as the cage (a QJ1044 model record over-skidding
+#: at CSR 0.4527 carries a full comb at f_c / 2, 15 dB below the ball-pass line Z f_c in
+#: its pooled envelope spectrum; a real cage's own lines hold its ball-pass fundamental)
+SUBHARMONIC_DB = 10.0
+
 
 def cage_speed_ratio(cage_frequency, shaft_frequency):
     """Cage speed ratio ``CSR = f_cage / f_shaft`` (paper 002 section 4.2), both [Hz]."""
@@ -118,6 +125,11 @@ class CageSpeedEstimate:
         with fewer than two lines or with all strong lines on shaft harmonics);
         false_alarm_probability.
     lines : the comb lines; spectrum : the envelope spectrum analysed.
+    notes : what a detected result rests on beyond the comb: the given shaft frequency when
+        no envelope line within ``SHAFT_CONFIRM`` of it (plus 1/4 bin) and no pair of shaft
+        sidebands f_s -+ f_c confirms it (the CSR then scales with a speed given in the
+        wrong unit, at full confidence); a sub-multiple comb read as a subharmonic
+        (``SUBHARMONIC_DB``), with the CSR and slip it would give.
     """
 
     detected: bool
@@ -134,6 +146,7 @@ class CageSpeedEstimate:
     lines: tuple[DetectedLine, ...]
     spectrum: EnvelopeSpectrum = field(repr=False)
     reason: str = ""
+    notes: tuple[str, ...] = ()
 
 
 def _comb(n_balls: int, cage_h: int, bp_h: int, shaft_h: int) -> list[tuple[str, int, int]]:
@@ -286,28 +299,49 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         wv = valid * weights[None, :]
         return (vals * wv).sum(axis=1) / np.maximum(wv.sum(axis=1), 1e-300)
 
-    def specific_evidence(a: float, b: float) -> bool:
-        """A tooth of comb a, away from every tooth of comb b, stands above the noise."""
+    def own_power(a: float, b: float) -> float:
+        """Largest normalised power on a tooth of comb a away from every tooth of comb b
+        (0 when there is none)."""
         ta, tb = teeth(a), teeth(b)
         own = [f for f in ta if np.all(np.abs(tb - f) > df)]
-        return bool(own) and float(np.max(np.interp(own, es.frequency, rmax))) > strict
+        return float(np.max(np.interp(own, es.frequency, rmax))) if own else 0.0
+
+    def specific_evidence(a: float, b: float) -> bool:
+        """A tooth of comb a, away from every tooth of comb b, stands above the noise."""
+        return own_power(a, b) > strict
+
+    def dominated(a: float, b: float) -> bool:
+        """Every own line of the sub-multiple comb a (a tooth that is no tooth of comb b)
+        stands more than SUBHARMONIC_DB below the strongest line of comb b: a subharmonic
+        of b's comb (a period-doubled response), not a cage turning at a."""
+        tb = teeth(b)
+        top = float(np.max(np.interp(tb, es.frequency, rmax))) if tb.size else 0.0
+        return own_power(a, b) < 10.0 ** (-SUBHARMONIC_DB / 10.0) * top
 
     cand = np.arange(f_lo, f_hi, 0.5 * df / kmax)
     score = score_at(cand)
     f0 = float(cand[int(np.argmax(score))])
     # octave (and twelfth) errors: a multiple m f of the cage frequency has a comb that is a
     # subset of the true one, a sub-multiple f/m a superset. Move to m f when f's own teeth
-    # are empty; move to f/m when its own teeth hold a line and it scores comparably.
+    # are empty or a subharmonic of m f's comb; move to f/m when its own teeth hold a line
+    # that is no subharmonic and it scores comparably. A sub-multiple whose own lines are
+    # there but dominated is kept as an alternative (reported, not chosen).
+    alternative = None
     for _ in range(4):
         moved = False
         for m in (2, 3):
             up = f0 * m
-            if up < f_hi and not specific_evidence(f0, up):
+            if up < f_hi and (not specific_evidence(f0, up) or dominated(f0, up)):
+                if specific_evidence(f0, up):
+                    alternative = (f0, m)
                 f0, moved = up, True
                 break
             down = f0 / m
             if down > f_lo and specific_evidence(down, f0) and (
                     score_at(np.array([down]))[0] >= 0.7 * score_at(np.array([f0]))[0]):
+                if dominated(down, f0):
+                    alternative = (down, m)
+                    continue
                 f0, moved = down, True
                 break
         if not moved:
@@ -392,9 +426,60 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
                                  shaft_meas, float(csr_theoretical), float(max(confidence, 0)),
                                  p_fa, consistency, tuple(lines), es, reason)
     csr = cage_speed_ratio(fc, shaft_frequency)
+    notes = []
+    if alternative is not None:
+        alt, m = alternative
+        top = float(np.max(np.interp(teeth(fc), es.frequency, rmax)))
+        notes.append(_subharmonic_note(fc, alt, m, 10.0 * math.log10(
+            top / max(own_power(alt, fc), 1e-300)), float(shaft_frequency),
+            float(csr_theoretical)))
+    # the first shaft sidebands confirm the shaft frequency as a pair f_s -+ f_c (one line
+    # alone can be another component that happens to sit there), neither of them a harmonic
+    # of the cage frequency itself; the second pair does not (a model record's envelope is
+    # dense with lines: with f_s taken 2 pi too high, 2 f_s -+ f_c fell on two of them)
+    pairs = {(k, n) for k, n, fm, _, _ in used
+             if n == 1 and abs((fm - n * shaft_frequency) - k * fc) <= 0.5 * df
+             and abs(fm - fc * round(fm / fc)) > 0.5 * df}
+    sidebands = any((-k, n) in pairs for k, n in pairs)
+    notes += _shaft_notes(float(shaft_frequency), shaft_meas, sidebands, df, fc)
     return CageSpeedEstimate(True, fc, csr, cage_slip(csr, csr_theoretical), n_balls * fc,
                              float(shaft_frequency), shaft_meas, float(csr_theoretical),
-                             float(confidence), p_fa, consistency, tuple(lines), es, "")
+                             float(confidence), p_fa, consistency, tuple(lines), es, "",
+                             tuple(notes))
+
+
+#: a shaft line within this fraction (plus a quarter bin: the line is refined below a bin)
+#: of the given shaft frequency confirms it
+SHAFT_CONFIRM = 0.005
+
+
+def _subharmonic_note(fc: float, alt: float, m: int, db: float, fs_hz: float,
+                      csr_th: float) -> str:
+    """What the printout says about a sub-multiple comb taken as a subharmonic."""
+    csr_alt = alt / fs_hz
+    return (f"the record also holds lines at multiples of {alt:.4f} Hz (1/{m} of the cage "
+            f"frequency) that are no line of the cage comb; the strongest stands {db:.0f} dB "
+            f"below the comb's strongest line, so they are read as a subharmonic (a "
+            f"period-{m} response), not as a cage at {alt:.4f} Hz (that would be CSR "
+            f"{csr_alt:.4f}, slip {100 * (1 - csr_alt / csr_th):+.1f} %)")
+
+
+def _shaft_notes(fs_hz: float, measured: float | None, sidebands: bool, df: float,
+                 fc: float) -> list[str]:
+    """A note when nothing in the record confirms the given shaft frequency (CSR =
+    f_cage / f_shaft then rests on it alone: a speed in the wrong unit scales the CSR and
+    leaves the confidence of the cage comb untouched)."""
+    if sidebands or (measured is not None
+                     and abs(measured - fs_hz) <= SHAFT_CONFIRM * fs_hz + 0.25 * df):
+        return []
+    seen = ("no envelope line near it" if measured is None else
+            f"the envelope line nearest it is at {measured:.4f} Hz, "
+            f"{100 * (measured / fs_hz - 1):+.2f} %, more than {100 * SHAFT_CONFIRM:g} % off")
+    return [f"the record does not confirm the shaft frequency {fs_hz:.4g} Hz ({seen}; no "
+            f"pair of shaft sidebands f_s -+ f_cage): CSR = f_cage / f_shaft rests on the "
+            f"speed given alone, and the confidence is that of the cage comb at {fc:.4f} Hz. "
+            f"A speed in the wrong unit (Hz or rad/s taken as r/min) gives a wrong CSR at "
+            f"full confidence: check the speed"]
 
 
 def _kurtogram_rate(duration: float, f_min: float, bandwidth: float, fs: float) -> float:

@@ -138,6 +138,12 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         unit_text = "delta_degC"
     if target == "delta_degC" and unit_text in ("K", "kelvin"):
         return float(number)
+    if target == "rad/s" and unit_text and cycles_per_time(unit_text):
+        rev_s = _convert(float(number), unit_text, "1/s")
+        raise InputError(field, value, f"a speed whose unit names its angle: "
+                         f"'{60 * rev_s:.6g} rpm', '{rev_s:.6g} rev/s' or "
+                         f"'{2 * math.pi * rev_s:.6g} rad/s' for {rev_s:.6g} revolutions per "
+                         f"second ({value!r} would read as {rev_s:.6g} rad/s, 2 pi low)")
     try:
         out = _convert(float(number), unit_text or "dimensionless", target)
     except pint.errors.DimensionalityError:
@@ -199,6 +205,22 @@ def quantity_unit(value: Any) -> str | None:
 
 
 @functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=64)
+def cycles_per_time(unit_text: str) -> bool:
+    """True for a frequency without an angle in it (``Hz``, ``kHz``, ``1/s``, ``1/min``).
+    pint converts ``30 Hz`` to 30 rad/s (it takes the radian as 1), where a shaft turning
+    at 30 Hz makes 30 rev/s = 188.5 rad/s; ``rpm``, ``rps``, ``rad/s``, ``deg/s`` and
+    ``turn/s`` carry their angle and convert right."""
+    ureg = unit_registry()
+    try:
+        names = [name for name, _ in ureg.Quantity(1.0, unit_text).unit_items()]
+    except Exception:  # noqa: BLE001 - an unparsable unit is refused by the conversion
+        return False
+    return bool(names) and all(
+        name.endswith("hertz") or ureg.Quantity(1.0, name).dimensionality == {"[time]": 1}
+        for name in names)
+
+
 def _convert(number: float, unit_text: str, target: str) -> float:
     """``number unit_text`` in ``target`` (pint; memoised: configs repeat the same few
     quantities -- two bearings of one preset, a sweep's scenes -- and a conversion is a pure

@@ -35,8 +35,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
                         "(time column first, then channels; comma, semicolon or tab separated, "
                         "decimal commas, header and units rows), .wav, .npy or .npz")
-    parser.add_argument("--rpm", type=float, required=True,
-                        help="inner-ring (shaft) speed in r/min (tachometer)")
+    parser.add_argument("--rpm", required=True,
+                        help="inner-ring (shaft) speed (tachometer): a bare number is r/min; "
+                             "or with a unit: '30.2 Hz' (revolutions per second), "
+                             "'189.8 rad/s', '1812 rpm'")
     parser.add_argument("--bearing", required=True, help="bearing preset name or TOML path")
     parser.add_argument("--fs", default=None,
                         help="sampling rate (e.g. 25600 or '25.6 kHz'); needed unless the "
@@ -70,8 +72,7 @@ def run(args: argparse.Namespace) -> int:
     from .. import signal as S  # noqa: F811  (imported here: the parser stays light)
     from ..geometry import load_bearing
 
-    if not (math.isfinite(args.rpm) and args.rpm > 0):
-        raise InputError("--rpm", args.rpm, "a shaft speed > 0 r/min")
+    rpm = shaft_rpm(args.rpm)
     fs = None
     if args.fs is not None:
         try:
@@ -81,6 +82,8 @@ def run(args: argparse.Namespace) -> int:
     column = args.column
     if column is not None and column.isdigit():
         column = int(column)
+    if fs is not None and not (math.isfinite(fs) and fs > 0):
+        raise InputError("--fs", args.fs, "a sampling rate > 0 Hz (e.g. 25600 or '25.6 kHz')")
     record = S.load_acceleration(args.file, sampling_rate=fs, column=column,
                                  fill_gaps=args.fill_gaps)
     bearing = load_bearing(args.bearing)
@@ -88,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
              else _contact_angle(args.contact_angle))
     csr_th = float(bearing.theoretical_cage_speed_ratio(angle))
     n_elem = int(bearing.n_elements)
-    shaft_hz = args.rpm / 60.0
+    shaft_hz = rpm / 60.0
     # the comb holds 3 ball-pass harmonics; a fast bearing with many elements puts the third
     # above what the rate allows (D1842926 at 13218 r/min: 11.9 kHz, a 47.6 kHz rate): then
     # fewer, unless the user fixed the number
@@ -138,6 +141,30 @@ def clipped_fraction(x) -> float:
     return float(np.count_nonzero((a >= hi - tol) | (a <= lo + tol))) / a.size
 
 
+def shaft_rpm(text) -> float:
+    """--rpm [r/min]: a bare number is r/min; a unit string converts, a frequency without
+    an angle (``30.2 Hz``, ``1/s``) counting revolutions per second (pint alone reads
+    ``30.2 Hz`` as 30.2 rad/s)."""
+    from ..units import cycles_per_time, quantity_unit
+
+    allowed = ("a shaft speed > 0: r/min as a bare number, or with a unit: '1812 rpm', "
+               "'30.2 Hz' (revolutions per second), '189.8 rad/s'")
+    try:
+        rpm = float(text)
+    except ValueError:
+        unit = quantity_unit(text)
+        try:
+            if unit and cycles_per_time(unit):
+                rpm = 60.0 * to_si(text, "frequency", field="--rpm")
+            else:
+                rpm = to_si(text, "angular_speed", field="--rpm") * 30.0 / math.pi
+        except InputError:
+            raise InputError("--rpm", text, allowed) from None
+    if not (math.isfinite(rpm) and rpm > 0):
+        raise InputError("--rpm", text, allowed)
+    return rpm
+
+
 def _contact_angle(text: str) -> float:
     """--contact-angle [rad] from '40 deg' (a unit is required: a bare 40 would be 40 rad,
     which gave CSR_th 0.5416 instead of 0.4522 for the QJ1044); 0 <= angle < 90 deg."""
@@ -172,6 +199,7 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
                    "snr": ln.snr, "detected": ln.detected} for ln in est.lines],
         "plot": str(plot) if plot else None,
         "clipped_fraction": clipped_fraction(record.data),
+        "notes": list(est.notes),
     }
 
 
@@ -184,10 +212,11 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
             if record.n_channels > 1 else "")
     print(f"record      {record.source}{chan}: {record.data.size} samples at "
           f"{record.sampling_rate:g} Hz ({record.duration:.3g} s){more}")
+    meas = est.measured_shaft_frequency
     print(f"bearing     {name}: CSR_th = {est.csr_theoretical:.4f}; shaft "
-          f"{est.shaft_frequency:.4g} Hz" + (
-              f" (envelope line at {est.measured_shaft_frequency:.4f} Hz)"
-              if est.measured_shaft_frequency else ""))
+          f"{est.shaft_frequency:.4g} Hz = {60 * est.shaft_frequency:.5g} r/min" + (
+              f" (envelope line at {meas:.4f} Hz, "
+              f"{100 * (meas / est.shaft_frequency - 1):+.2f} %)" if meas else ""))
     print(f"bands       {bands}")
     if record.gaps_filled:
         print(f"note        {record.gaps_filled} missing sample(s) filled by linear "
@@ -201,10 +230,13 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
         print(f"cage        {est.cage_frequency:.4f} Hz   "
               f"({element} pass {est.ball_pass_frequency:.3f} Hz = BPFO)")
         print(f"CSR         {est.csr:.4f}")
-        kind = "over-skidding" if est.slip < 0 else "skidding"
-        print(f"slip        {100 * est.slip:+.2f} %  ({kind}; s = 1 - CSR/CSR_th)")
+        pct = 100 * est.slip if round(100 * est.slip, 2) != 0 else 0.0  # no "-0.00"
+        kind = "pure rolling" if pct == 0 else "over-skidding" if pct < 0 else "skidding"
+        print(f"slip        {pct:+.2f} %  ({kind}; s = 1 - CSR/CSR_th)")
         print(f"confidence  {est.confidence:.3f}  (false-alarm probability "
-              f"{est.false_alarm_probability:.2g})")
+              f"{est.false_alarm_probability:.2g}, of the cage comb)")
+        for note in est.notes:
+            print(f"note        {note}")
     else:
         print(f"cage        NOT DETECTED: {est.reason}")
     print("lines:")
