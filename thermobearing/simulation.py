@@ -162,8 +162,13 @@ class Simulation:
             key = repr((spec.preset, spec.path, sorted(spec.overrides.items()),
                         spec.radial_share, spec.axial_share))
             sources = heat_source_names(scene, is_ball)
-            why = ("rib_friction" in sources and "heat_sources" not in scene.models
-                   and _rib_friction_unavailable(b))
+            why = "rib_friction" in sources and _rib_friction_unavailable(b)
+            if why and "heat_sources" in scene.models:  # named: refused before the run
+                raise InputError(
+                    "models.heat_sources", "rib_friction",
+                    f"sources every bearing can host; {spec.name!r} ({b.name}) cannot run "
+                    f"rib_friction ({why}). Without heat_sources, roller bearings with rib "
+                    "geometry run rib_friction by default and the others leave it out")
             if why:  # a default source the bearing's geometry cannot host: left out, said
                 sources = tuple(n for n in sources if n != "rib_friction")
                 # the hint only where the bearing's data can fix it (earlier versions also
