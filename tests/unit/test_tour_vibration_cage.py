@@ -185,3 +185,24 @@ def test_fs_error_names_the_option_and_pure_rolling_has_no_sign(tmp_path, capsys
     assert "-0.00" not in slip
     if "+0.00 %" in slip:
         assert "pure rolling" in slip
+
+
+def test_analyser_errors_name_the_command_options_and_the_file(tmp_path, capsys, skf_30pct):
+    """The analyser's fields (band, sampling_rate, signal.duration) were printed as such
+    by the command: --band, --fs, the file's rate and the record's duration in s now."""
+    np.save(tmp_path / "skf.npy", skf_30pct)
+    base = ["cage-speed", str(tmp_path / "skf.npy"), "--rpm", "1800", "--bearing", "SKF6304",
+            "--no-plot"]
+    assert main(base + ["--fs", "25600", "--band", "100", "200"]) == 1
+    assert "--band = (100.0, 200.0) is not allowed" in capsys.readouterr().err
+    np.save(tmp_path / "short.npy", skf_30pct[:2560])
+    assert main(["cage-speed", str(tmp_path / "short.npy"), "--fs", "25600", "--rpm", "1800",
+                 "--bearing", "SKF6304", "--no-plot"]) == 1
+    err = capsys.readouterr().err
+    assert "duration of short.npy = '0.1 s'" in err and "at least 0.907 s" in err
+    # an .npz whose rate was stored in kHz (25.6): the error says the rate is the file's
+    np.savez(tmp_path / "khz.npz", acceleration=skf_30pct, fs=25.6)
+    assert main(["cage-speed", str(tmp_path / "khz.npz"), "--rpm", "1800", "--bearing",
+                 "SKF6304", "--no-plot"]) == 1
+    err = capsys.readouterr().err
+    assert "sampling rate of khz.npz = 25.6" in err and "'fs' array, in Hz" in err

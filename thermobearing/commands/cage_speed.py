@@ -106,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
             break
         except InputError as exc:
             if exc.field != "sampling_rate" or harmonics == tries[-1]:
-                raise
+                raise _as_option(exc, args, record) from None
     plot_path = None
     if not args.no_plot:
         plot_path = Path(args.plot) if args.plot else Path(args.file).with_name(
@@ -139,6 +139,23 @@ def clipped_fraction(x) -> float:
     lo, hi = float(a.min()), float(a.max())
     tol = 1e-9 * max(hi - lo, 1e-300)
     return float(np.count_nonzero((a >= hi - tol) | (a <= lo + tol))) / a.size
+
+
+def _as_option(exc: InputError, args: argparse.Namespace,
+               record: S.AccelerationRecord) -> InputError:
+    """The analyser's error named by the command's option (``band`` -> ``--band``); a rate
+    read from the file says so (an .npz rate in kHz, 25.6, is read as Hz)."""
+    if exc.field == "sampling_rate" and args.fs is None:
+        return InputError(f"sampling rate of {Path(record.source).name}", exc.value,
+                          f"{exc.allowed} (the rate is the file's: its time column, WAV "
+                          "header or .npz 'sampling_rate' / 'fs' array, in Hz)")
+    if exc.field == "signal.duration":
+        return InputError(f"duration of {Path(record.source).name}", f"{exc.value:.4g} s",
+                          f"{exc.allowed}; or a higher --search LOW (default 0.3: "
+                          "the cage searched from 0.3 CSR_th f_shaft up)")
+    option = {"sampling_rate": "--fs", "band": "--band", "search": "--search",
+              "ball_pass_harmonics": "--ball-pass-harmonics"}.get(exc.field)
+    return InputError(option, exc.value, exc.allowed) if option else exc
 
 
 def shaft_rpm(text) -> float:
