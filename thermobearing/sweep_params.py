@@ -11,7 +11,9 @@ with a scene written in rpm means rpm; a field the scene leaves out takes
 :data:`DISPLAY_UNITS` / :data:`PATH_UNITS`: L/min, degC, % for ``checks.skid_limit``, MPa
 for the contact-stress limits); a unit may be given after the list
 (``supply.flow=15,33 L/min``) or with each value. Text values are presets
-(``lubricant.preset=ISO_VG32,ISO_VG68``). A repeated value (the same quantity) is dropped
+(``lubricant.preset=ISO_VG32,ISO_VG68``); ``lubricant.path=my_oil.toml`` replaces the
+scene's preset, and a relative file is read from the current folder when it is there (else
+from the scene's folder). A repeated value (the same quantity) is dropped
 and reported in :attr:`SweepParameter.dropped`. ``schedule.<field>`` sets that field in
 every step; ``checks.<threshold>`` sets a validity-check threshold (no physics changes).
 """
@@ -140,8 +142,8 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         raise InputError(f"--set {path}", raw, "at least one value")
     split = [_split_unit(v) for v in items]
     numeric = [bool(re.fullmatch(r"[-+0-9.eE ]+", num)) for num, _ in split]
-    if not any(numeric):
-        return _unique(path, items, items)  # strings: lubricant presets etc.
+    if not any(numeric):  # strings: lubricant presets, files etc.
+        return _unique(path, _files_from_here(path, items), items)
     # each value may carry its own unit ("30 degC,50 degC"); a bare number takes the unit
     # written after the list ("15,33 L/min"), else the unit of the scene's current value.
     # A text among numbers ("15,abc") is passed on as written, so that the scene's check
@@ -293,8 +295,16 @@ def _did_you_mean(scene_dict: Mapping[str, Any], path: str) -> str:
     return f"; did you mean {' or '.join(hits)}?" if hits else ""
 
 
+#: keys of which a table (the lubricant, a bearing) takes exactly one: setting one drops
+#: the other
+_EITHER = {"preset": "path", "path": "preset"}
+
+
 def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
-    """Set a dotted path of a scene dict (``schedule.<field>``: in every step)."""
+    """Set a dotted path of a scene dict (``schedule.<field>``: in every step).
+
+    ``lubricant.path`` replaces the scene's ``lubricant.preset`` (and the other way
+    round; a bearing's ``preset`` / ``path`` likewise): a table takes one of the two."""
     parts = path.split(".")
     if parts[0] == "schedule" and len(parts) == 2:
         for step in d["schedule"]["steps"]:
@@ -310,3 +320,24 @@ def assign_path(d: dict[str, Any], path: str, value: Any) -> None:
         cur[int(parts[-1])] = value
     else:
         cur[parts[-1]] = value
+        if (parts[-1] in _EITHER and (parts[0] == "lubricant" and len(parts) == 2
+                                      or parts[0] == "bearings" and len(parts) == 3)):
+            cur.pop(_EITHER[parts[-1]], None)
+
+
+#: swept values that are file paths: a relative one is read from the current folder
+#: when a file is there (typed on the command line), else from the scene's folder
+_FILE_PATHS = re.compile(r"^(lubricant\.path|bearings\.\d+\.path|measured\.file)$")
+
+
+def _files_from_here(path: str, values: Sequence[Any]) -> tuple[Any, ...]:
+    """Relative file values of ``path`` made absolute against the current folder where
+    that file exists; others as given."""
+    if not _FILE_PATHS.match(path):
+        return tuple(values)
+    out = []
+    for v in values:
+        if isinstance(v, str) and not Path(v).is_absolute() and Path(v).is_file():
+            v = str(Path(v).resolve())
+        out.append(v)
+    return tuple(out)

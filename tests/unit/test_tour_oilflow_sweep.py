@@ -226,3 +226,28 @@ def test_failed_case_message_says_a_rerun_fails_the_same_way(tmp_path, capsys, m
     err = capsys.readouterr().err
     assert "supply.flow=40 L/min" in err and "1 finished case(s) are kept" in err
     assert "fails again" in err and "leave them out of --set" in err
+
+
+# --- an oil grade from the user's own lubricant file ----------------------------------
+def test_lubricant_file_sweep_replaces_the_preset_and_reads_from_here(tmp_path, monkeypatch):
+    # before: `--set lubricant.path=my_vg150.toml` failed with "lubricant = {'preset':
+    # 'ISO_VG46', 'path': '.../configs/scenes/my_vg150.toml'} is not allowed: exactly one of
+    # 'preset' or 'path'": the preset stayed, and the file typed on the command line was
+    # looked for in the scene's folder
+    from thermobearing.scene import configs_dir
+    from thermobearing.sweep import expand, parse_set
+
+    text = (configs_dir() / "lubricants" / "ISO_VG68.toml").read_text(encoding="utf-8")
+    (tmp_path / "my_vg68.toml").write_text(text.replace('"ISO_VG68"', '"MY_VG68"'),
+                                           encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    scene = load_scene()
+    p = parse_set("lubricant.path=my_vg68.toml", scene.to_dict())
+    assert p.values == (str(tmp_path / "my_vg68.toml"),)
+    (case,) = expand(scene, [p])
+    lub = loads_scene(case.scene_toml).lubricant
+    assert lub.get("path") == str(tmp_path / "my_vg68.toml") and "preset" not in lub
+    # and back: a preset swept on a scene that names a file drops the file
+    q = parse_set("lubricant.preset=ISO_VG32", loads_scene(case.scene_toml).to_dict())
+    (back,) = expand(loads_scene(case.scene_toml), [q])
+    assert loads_scene(back.scene_toml).lubricant == {"preset": "ISO_VG32"}
