@@ -371,7 +371,10 @@ def simulate_with_skidding(bearing: Any, lubricant: Any, shaft_speed: float,
     load 0: the planar model of paper 004 is for radial load) and runs :func:`simulate` with
     ``cage_speed = CSR * shaft_speed``. ``params`` defaults to
     :meth:`VibrationParameters.from_bearing` with paper 004 Table 1's ring mass (0.4 kg) and
-    damping (350 N s/m), which are estimates for any other bearing. Returns (vibration result,
+    damping (350 N s/m), which are estimates for any other bearing, and a 0 deg contact
+    angle: the result's ``cage_slip`` is then against (1 - D/d_m)/2, not against the
+    nominal-angle CSR_th that ``thermobearing cage-speed`` and the skidding result use (the
+    cage speed itself is the solver's). Returns (vibration result,
     skidding result); raises :class:`~thermobearing.errors.ConvergenceError` when the
     skidding solver did not converge.
     """

@@ -113,7 +113,13 @@ class VibrationParameters:
         K_i, K_o from :func:`thermobearing.hertz.point_contact_stiffness` with the reduced
         radii of ``bearing.curvature(race, contact_angle)`` and ``bearing.effective_modulus``
         (Harris & Kotzalas 2007 / Hamrock & Brewe 1983, as ref. [33] of paper 004 says).
-        ``radial_clearance`` defaults to half the diametral clearance.
+        ``radial_clearance`` defaults to half the diametral clearance. ``contact_angle``
+        defaults to 0 (paper 004's planar model), not to the bearing's nominal angle: for an
+        angular-contact bearing the model's pure-rolling ratio (1 - gamma)/2 and its
+        ``cage_slip`` then differ from those of ``thermobearing cage-speed``, which uses the
+        nominal angle (QJ1044: 0.4376 at 0 deg against 0.4522 at 40 deg, so a record
+        simulated at zero slip reads as +3.2 % slip there); pass
+        ``contact_angle=bearing.contact_angle`` to simulate on the analyser's terms.
         """
         from .hertz import point_contact_stiffness
 

@@ -206,3 +206,23 @@ def test_analyser_errors_name_the_command_options_and_the_file(tmp_path, capsys,
                  "SKF6304", "--no-plot"]) == 1
     err = capsys.readouterr().err
     assert "sampling rate of khz.npz = 25.6" in err and "'fs' array, in Hz" in err
+
+
+def test_from_bearing_default_angle_is_zero_and_the_analyser_uses_the_nominal_one():
+    """Documented (VibrationParameters.from_bearing): the model's pure rolling at 0 deg is
+    CSR 0.4376 for the QJ1044, the analyser's CSR_th at 40 deg 0.4522; a zero-slip record
+    of the default parameters reads as +3.2 % slip."""
+    b = load_bearing("QJ1044")
+    p = V.VibrationParameters.from_bearing(b, inner_ring_mass=20.0, support_damping=2000.0)
+    assert p.contact_angle == 0.0
+    assert p.theoretical_cage_speed_ratio == pytest.approx(0.4376, abs=1e-4)
+    csr_th = b.theoretical_cage_speed_ratio(b.contact_angle)
+    assert csr_th == pytest.approx(0.4522, abs=1e-4)  # paper 002: CSR_th = 0.452
+    ws = F_I * 2 * math.pi
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = V.simulate(p, ws, 10000.0, traction=_law(), cage_slip=0.0, duration=2.0,
+                       sampling_rate=FS, anti_alias=True)
+    est = S.estimate_cage_speed(r.acceleration_x, FS, F_I, 20, csr_th)
+    assert est.detected and est.csr == pytest.approx(p.theoretical_cage_speed_ratio, abs=1e-4)
+    assert est.slip == pytest.approx(1 - 0.4376 / 0.4522, abs=1e-3)  # +3.2 %
