@@ -30,9 +30,10 @@ Layout (every table optional unless marked)::
 
     [supply]
     method = "jet"                     # jet | circulation | oil_bath | oil_air | grease
-    flow = "33 L/min"
+    flow = "33 L/min"                  # through each bearing (every bearing of the scene
+                                       # gets this flow: its churning and its oil stream)
     inlet_temperature = "35 degC"
-    level = "20 mm"                    # oil bath only
+    level = "20 mm"                    # oil bath only (with a flow: a circulated bath)
 
     [environment]
     ambient_temperature = "35 degC"

@@ -28,7 +28,8 @@ def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
 
     fields = [("environment.ambient_temperature", scene.environment.ambient_temperature),
               ("environment.initial_temperature", scene.environment.initial_temperature)]
-    if scene.supply.method != "oil_bath":  # a bath has no inlet (OilSupply)
+    # a bath has no inlet (OilSupply) unless a flow circulates it
+    if scene.supply.method != "oil_bath" or scene.supply.flow > 0.0:
         fields.append(("supply.inlet_temperature", scene.supply.inlet_temperature))
     for field, kelvin in fields:
         check_liquid_temperature(lubricant, field, kelvin,

@@ -102,6 +102,12 @@ def _supply_notes(scene: Scene) -> list[str]:
                      "not used: an oil bath without flow has no inlet; the bath temperature "
                      "is the network's oil node")
     heat = bool(set(scene.outputs.want) & {"losses", "temperatures", "energy"})
+    if sup.method == "oil_bath" and sup.flow > 0.0 and heat:
+        notes.append(f"oil bath with supply.flow ({sup.flow * 6e4:g} L/min): the flow runs "
+                     "through each bearing's bath (a circulated bath): the network's oil "
+                     f"stream takes it in at {sup.inlet_temperature - 273.15:g} degC "
+                     "(supply.inlet_temperature, default the ambient); the churning follows "
+                     "supply.level, not the flow")
     if sup.method == "grease" and heat:
         notes.append("supply grease: the churning of grease is not modelled (oil fraction "
                      "0: the churning sources book 0 W); the lubricant is read as the "

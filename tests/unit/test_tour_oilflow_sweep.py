@@ -251,3 +251,35 @@ def test_lubricant_file_sweep_replaces_the_preset_and_reads_from_here(tmp_path, 
     q = parse_set("lubricant.preset=ISO_VG32", loads_scene(case.scene_toml).to_dict())
     (back,) = expand(loads_scene(case.scene_toml), [q])
     assert loads_scene(back.scene_toml).lubricant == {"preset": "ISO_VG32"}
+
+
+# --- a flow swept on an oil-bath scene changed the results without a word ----------------
+def test_oil_bath_with_a_flow_says_what_the_flow_does():
+    # before: `thermobearing sweep examples/catalogue_bearing_rig.toml --set
+    # supply.flow=1,5` ran (the 6206's housing 24.07 / 23.59 degC) and neither `check` nor
+    # the run said that the flow circulates the bath through the network's oil stream while
+    # the churning keeps following the level; nor was the inlet temperature checked
+    from pathlib import Path
+
+    from thermobearing.errors import InputError
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "catalogue_bearing_rig.toml"
+    scene = load_scene(example)
+    assert scene.supply.method == "oil_bath" and scene.supply.flow == 0.0
+    assert not any("circulated bath" in n for n in Simulation(scene, progress=False).notes)
+    d = scene.to_dict()
+    d["supply"]["flow"] = "2 L/min"
+    flowing = loads_scene(_toml(d), base_dir=example.parent)
+    notes = Simulation(flowing, progress=False).notes
+    (note,) = [n for n in notes if "circulated bath" in n]
+    assert "2 L/min" in note and "22 degC" in note and "supply.level" in note
+    # a circulated bath's inlet is checked like a jet's (a bare 40 is kelvin: not liquid)
+    d["supply"]["inlet_temperature"] = 40
+    with pytest.raises(InputError, match="supply.inlet_temperature"):
+        Simulation(loads_scene(_toml(d), base_dir=example.parent), progress=False)
+
+
+def _toml(d):
+    from thermobearing.scene import Scene
+
+    return Scene.from_dict(d).to_toml()
