@@ -12,7 +12,9 @@ Because the true cage speed is known, the file checks the analyser end to end::
 
     python examples/make_synthetic_vibration.py --slip 0.08 --out skf6304_synthetic.csv
     thermobearing cage-speed skf6304_synthetic.csv --rpm 1800 --bearing SKF6304
-    # prints CSR 0.3383 (= (1 - 0.08) x 0.3677) and slip +8.00 %
+    # prints CSR 0.3383 (= (1 - 0.08) x 0.3677) and slip +8.00 %, and a note that nothing
+    # in the record confirms the shaft frequency (the model's rings are round and balanced:
+    # no shaft line), so the CSR rests on --rpm
 
 Nothing here is data of paper 004's (or any) test rig.
 """

@@ -167,7 +167,15 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     filled = 0
     if fill_gaps:
         data, filled = _fill_gaps(np.asarray(data, dtype=float), p.name)
-    arr = check_signal(data, float(rate), field=p.name)
+    try:
+        arr = check_signal(data, float(rate), field=p.name)
+    except InputError as exc:
+        if n_channels < 2 or not channel:
+            raise
+        # a dead channel of several (a constant or NaN column): name it and the way out
+        raise InputError(f"{p.name} channel {channel!r}", exc.value,
+                         f"{exc.allowed}; the file has {n_channels} channels: pick another "
+                         "with column= (cage-speed --column)") from None
     return AccelerationRecord(arr, float(rate), str(p), channel, n_channels, filled)
 
 

@@ -132,7 +132,7 @@ def test_cli_sampling_rate_not_a_rate(tmp_path, capsys):
     code, _, err = cage_speed(capsys, tmp_path / "x.npy", "--fs", "fast")
     assert code == 1 and "--fs" in err and "'fast'" in err and "Hz" in err
     code, _, err = cage_speed(capsys, tmp_path / "x.npy")
-    assert code == 1 and "sampling_rate" in err and "no time column" in err
+    assert code == 1 and "--fs is missing" in err and "no time column" in err
 
 
 def test_cli_missing_file(tmp_path, capsys):

@@ -226,3 +226,23 @@ def test_from_bearing_default_angle_is_zero_and_the_analyser_uses_the_nominal_on
     est = S.estimate_cage_speed(r.acceleration_x, FS, F_I, 20, csr_th)
     assert est.detected and est.csr == pytest.approx(p.theoretical_cage_speed_ratio, abs=1e-4)
     assert est.slip == pytest.approx(1 - 0.4376 / 0.4522, abs=1e-3)  # +3.2 %
+
+
+def test_dead_channel_and_two_dimensional_npz_name_the_channel_option(tmp_path, capsys,
+                                                                     skf_30pct):
+    """A CSV whose first channel is a dead (constant) sensor said 'daq.csv = a constant
+    signal' only; a 2-D .npz without --column said 'column is missing'."""
+    x = skf_30pct[:int(FS)]
+    t = np.arange(x.size) / FS
+    rows = ["time,acc_dead,acc_ok"] + [f"{a:.7f},0.0,{b:.6f}" for a, b in zip(t, x,
+                                                                              strict=True)]
+    (tmp_path / "daq.csv").write_text("\n".join(rows) + "\n", encoding="utf-8")
+    with pytest.raises(InputError) as info:
+        S.load_acceleration(tmp_path / "daq.csv")
+    assert info.value.field == "daq.csv channel 'acc_dead'"
+    assert "pick another with column=" in info.value.allowed
+    assert S.load_acceleration(tmp_path / "daq.csv", column="acc_ok").channel == "acc_ok"
+    np.savez(tmp_path / "two.npz", acceleration=np.c_[x, 0.5 * x], sampling_rate=FS)
+    assert main(["cage-speed", str(tmp_path / "two.npz"), "--rpm", "1800", "--bearing",
+                 "SKF6304", "--no-plot"]) == 1
+    assert "--column is missing: a column index in [0, 1]" in capsys.readouterr().err

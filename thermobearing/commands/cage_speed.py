@@ -84,8 +84,14 @@ def run(args: argparse.Namespace) -> int:
         column = int(column)
     if fs is not None and not (math.isfinite(fs) and fs > 0):
         raise InputError("--fs", args.fs, "a sampling rate > 0 Hz (e.g. 25600 or '25.6 kHz')")
-    record = S.load_acceleration(args.file, sampling_rate=fs, column=column,
-                                 fill_gaps=args.fill_gaps)
+    try:
+        record = S.load_acceleration(args.file, sampling_rate=fs, column=column,
+                                     fill_gaps=args.fill_gaps)
+    except InputError as exc:
+        if exc.field in ("column", "sampling_rate"):
+            raise InputError("--column" if exc.field == "column" else "--fs", exc.value,
+                             exc.allowed) from None
+        raise
     bearing = load_bearing(args.bearing)
     angle = (bearing.contact_angle if args.contact_angle is None
              else _contact_angle(args.contact_angle))
