@@ -114,15 +114,23 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
-from numba import njit
 
 from ..errors import ConvergenceError, InputError, check_positive
-from .roller_dynamics_etd import set_coefficients
+from .roller_dynamics_coupled_kernels import (  # noqa: F401  (kernels re-exported)
+    N_ROLLER_STATES,
+    _deriv_into,
+    _integrate,
+    _interp_sorted,
+    _pocket_film_friction,
+    _refresh_from_table,
+    _refresh_roller,
+    _stiff_rates,
+    _stiff_roller,
+)
 from .roller_dynamics_model import DynamicsModel
-from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_response import RollerResponse, _post, _response
-from .roller_dynamics_rhs import _MASS, _PDOF, _params, _rhs_ring
-from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table, table_eval
+from .roller_dynamics_rhs import _params
+from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table
 
 #: band of the cage speed around the quasi-static one, as a fraction (simulate_coupled):
 #: evaluate-path runs stay within +11 % (20000 r/min, 420 K, 0.06 g: 886 -> <= 987 rad/s),
@@ -133,9 +141,6 @@ DEFAULT_CAGE_BAND = 0.2
 INTEGRATORS = ("etd", "rk4")
 #: table (re)builds after which the table path is given up (simulate_coupled)
 MAX_TABLE_BUILDS = 20
-
-#: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
-N_ROLLER_STATES = 8
 
 
 def cage_inertia(bearing: Any) -> tuple[float, float, dict[str, str]]:
@@ -190,297 +195,6 @@ def cage_land_coefficient(bearing: Any, m: DynamicsModel) -> tuple[float, float]
     return float(k), float(m.inner_speed if cage.guidance == "inner_ring" else 0.0)
 
 
-@njit(cache=True)
-def _pocket_film_friction(force: float, spin: float, radius: float, length: float,
-                          eta: float, clearance: float, k_w: float, k_cq: float,
-                          smoothing: float) -> float:
-    """Paper 000 eqs. 37-38 pocket-film friction [N], the formula of
-    :func:`thermobearing.skidding.roller_fluid.pocket_forces` (tested equal)."""
-    fn = math.sqrt(force * force + smoothing * smoothing)
-    u = abs(spin) * radius
-    inv_h = fn / (k_w * eta * max(u, 1e-9) * radius * length) + 1.0 / clearance
-    return k_cq * eta * u * length * math.sqrt(radius * inv_h)
-
-
-@njit(cache=True)
-def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
-    """np.interp(x, xp, fp) for ascending ``xp`` (binary search; numba's np.interp costs
-    ~0.5 us a call, this a few ns); clamped to the end values outside [xp[0], xp[-1]]."""
-    n = xp.shape[0]
-    if x <= xp[0]:
-        return fp[0]
-    if x >= xp[n - 1]:
-        return fp[n - 1]
-    lo = 0
-    hi = n - 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if xp[mid] <= x:
-            lo = mid
-        else:
-            hi = mid
-    return fp[lo] + (fp[hi] - fp[lo]) * (x - xp[lo]) / (xp[hi] - xp[lo])
-
-
-@njit(cache=True)
-def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np.ndarray,
-                az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
-                wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
-                half: float, dm_half: float, t_c: float, film: np.ndarray,
-                ring_mass: float, land: np.ndarray) -> None:
-    """dy[:] = time derivative of the coupled state (module notes). ``lin`` (Z, 6): S0,
-    dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh; ``film``: pocket length,
-    eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg] of the axially free
-    inner ring (0: held); ``land``: (viscous coefficient [N m s], guide ring speed [rad/s])
-    of the cage-land drag torque k (omega_g - omega_c) (zeros: none)."""
-    n = N_ROLLER_STATES
-    th = y[z_n * n]
-    wc = y[z_n * n + 1]
-    x_ring = y[z_n * n + 2]
-    xd_ring = y[z_n * n + 3]
-    torque = -t_c
-    f_ring = 0.0
-    two_pi = 2.0 * math.pi
-    for j in range(z_n):
-        b = j * n
-        w = y[b + 7]
-        phi = (phi0[j] + th) % two_pi
-        n_i = _interp_sorted(phi, az, load)
-        dw = w - w0[j]
-        dc = wc - wc0
-        s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc
-        f_d = lin[j, 3] + lin[j, 4] * dw + lin[j, 5] * dc
-        r = _rhs_ring(p, y[b] - x_ring, y[b + 1] - xd_ring, y[b + 2], y[b + 3], y[b + 4],
-                      y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
-        fz_bar, _, ff, fb = pocket_force_z(y[b + 4], y[b + 5], y[b + 2], p[_HLI], p[_CPI],
-                                           p[_KCI], p[_ETAI], half, p[_FLI])
-        f_bar = _pocket_film_friction(ff - fb, w, half, film[0], film[1], film[2], film[3],
-                                      film[4], film[5])
-        dy[b] = y[b + 1]
-        dy[b + 1] = r[1]
-        dy[b + 2] = r[2]
-        dy[b + 3] = r[3]
-        dy[b + 4] = r[4]
-        dy[b + 5] = r[5]
-        dy[b + 6] = w
-        dy[b + 7] = (half * (s - f_bar) + r[6]) / polar
-        torque += -fz_bar * dm_half - f_bar * half
-        f_ring += r[7]
-    dy[z_n * n] = wc
-    dy[z_n * n + 1] = (torque + land[0] * (land[1] - wc)) / cage_j
-    dy[z_n * n + 2] = xd_ring
-    dy[z_n * n + 3] = f_ring / ring_mass if ring_mass > 0.0 else 0.0
-
-
-@njit(cache=True)
-def _refresh_from_table(y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
-                        load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
-                        cage: np.ndarray, values: np.ndarray, lin: np.ndarray,
-                        w0: np.ndarray, q_o: np.ndarray, c_z: np.ndarray
-                        ) -> tuple[float, int]:
-    """The traction linearisation of every roller from the table (the same value and
-    forward-difference slopes as the ``evaluate`` refresh of :func:`simulate_coupled`);
-    returns (omega_c of the linearisation, table status: 0 ok, 1-3 outside the grid)."""
-    wc0 = y[z_n * N_ROLLER_STATES + 1]
-    for j in range(z_n):
-        st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads, cage,
-                             values, lin, w0, wc0, q_o, c_z)
-        if st != 0:
-            return wc0, st
-    return wc0, 0
-
-
-@njit(cache=True)
-def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
-                    load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
-                    cage: np.ndarray, values: np.ndarray, lin: np.ndarray, w0: np.ndarray,
-                    wc0: float, q_o: np.ndarray, c_z: np.ndarray) -> int:
-    """Roller ``j``'s row of :func:`_refresh_from_table` at its present spin and azimuth and
-    the cage speed ``wc0`` of the linearisation; returns the table status (0 ok)."""
-    n = N_ROLLER_STATES
-    th = y[z_n * n]
-    dc = 1e-4 * max(abs(wc0), 1.0)
-    w = y[j * n + 7]
-    phi = (phi0[j] + th) % (2.0 * math.pi)
-    n_i = _interp_sorted(phi, az, load)
-    dw = 1e-4 * max(abs(w), 1.0)
-    s0, f0, q0, st0 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0)
-    s1, f1, _, st1 = table_eval(spin0, spin_step, loads, cage, values, w + dw, n_i, wc0)
-    s2, f2, _, st2 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0 + dc)
-    st = max(st0, max(st1, st2))
-    if st != 0:
-        return st
-    w0[j] = w
-    lin[j, 0] = s0
-    lin[j, 1] = (s1 - s0) / dw
-    lin[j, 2] = (s2 - s0) / dc
-    lin[j, 3] = f0
-    lin[j, 4] = (f1 - f0) / dw
-    lin[j, 5] = (f2 - f0) / dc
-    q_o[j] = q0
-    c_z[j] = max(-lin[j, 1], 0.0)
-    return 0
-
-
-@njit(cache=True)
-def _stiff_rates(p: np.ndarray, lin: np.ndarray, w0: np.ndarray, c_z: np.ndarray,
-                 polar: float, half: float, z_n: int, h: float, lam: np.ndarray,
-                 y_ref: np.ndarray, coef: np.ndarray) -> None:
-    """The linear part the ETDRK4 step of :func:`_integrate` treats exactly (module notes,
-    "Stiff spin"): per roller the spin's relaxation under the linearised raceway shear,
-    lam = (D/2) dS/d omega / J_p about y_ref = w0 (the refresh's spin; a positive slope, a
-    shear that would drive the spin away, is left to the explicit stages), and the pocket
-    speed's raceway damping lam = -c_z / m about 0 (pocket DOF on). Fills ``lam`` [1/s],
-    ``y_ref`` and the (n, 6) ETDRK4 coefficients ``coef`` for step ``h`` [s]; every other
-    component gets lam = 0 (classical RK4)."""
-    for j in range(z_n):
-        _stiff_roller(j, p, lin, w0, c_z, polar, half, h, lam, y_ref, coef)
-    for q in range(coef.shape[0]):
-        if coef[q, 0] == 0.0 and lam[q] == 0.0:
-            set_coefficients(coef, q, 0.0, h)
-
-
-@njit(cache=True)
-def _stiff_roller(j: int, p: np.ndarray, lin: np.ndarray, w0: np.ndarray, c_z: np.ndarray,
-                  polar: float, half: float, h: float, lam: np.ndarray, y_ref: np.ndarray,
-                  coef: np.ndarray) -> None:
-    """Roller ``j``'s entries of :func:`_stiff_rates`."""
-    b = j * N_ROLLER_STATES
-    lam[b + 7] = min(half * lin[j, 1] / polar, 0.0)
-    y_ref[b + 7] = w0[j]
-    set_coefficients(coef, b + 7, lam[b + 7], h)
-    lam[b + 5] = -c_z[j] / p[_MASS] if p[_PDOF] > 0.5 else 0.0
-    set_coefficients(coef, b + 5, lam[b + 5], h)
-
-
-@njit(cache=True)
-def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int, h: float,
-               sub: int, z_n: int, phi0: np.ndarray, az: np.ndarray, load: np.ndarray,
-               lin: np.ndarray, w0: np.ndarray, wc0: float, q_o: np.ndarray,
-               c_z: np.ndarray, consts: np.ndarray, film: np.ndarray, use_table: bool,
-               spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
-               values: np.ndarray, n_warm: int, every: int, samples: np.ndarray,
-               sample_t: np.ndarray, sample_wc: np.ndarray, sample_ring: np.ndarray,
-               n_sampled: int, etd: bool, spin_trust: float
-               ) -> tuple[int, int, float, int, float]:
-    """Steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y`` (in place) at
-    step ``h`` [s]: ETDRK4 (``etd``; :func:`_stiff_rates` the exact linear part, module
-    notes, "Stiff spin") or classical RK4; the traction linearisation refreshed from the
-    table every ``sub`` steps if ``use_table`` (else the caller's ``lin`` is used
-    throughout) and, with ``spin_trust`` > 0 [rad/s], a roller's row as soon as its spin is
-    more than ``spin_trust`` from the spin of its linearisation (module notes, "Stiff
-    spin"); samples (state with X, X' relative to the inner ring, t, omega_c) every
-    ``every`` steps from step ``n_warm`` on. ``consts``: J_p, J_c, D/2, d_m/2, T_c,
-    inner-ring mass (0: held),
-    cage-land drag coefficient [N m s] and guide ring speed [rad/s].
-    Returns (status, steps done, t, samples written, omega_c of the linearisation); status
-    0 done, 1-3 the table's grid left (the step was not taken; the caller rebuilds the
-    table), 4 the state became non-finite or a spin reversed."""
-    n = N_ROLLER_STATES
-    m_y = y.shape[0]
-    k1 = np.zeros(m_y)
-    k2 = np.zeros(m_y)
-    k3 = np.zeros(m_y)
-    k4 = np.zeros(m_y)
-    yt = np.zeros(m_y)
-    ya = np.zeros(m_y)
-    lam = np.zeros(m_y)
-    y_ref = np.zeros(m_y)
-    coef = np.zeros((m_y, 6))
-    polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
-    ring_mass = consts[5]
-    land = consts[6:8]
-    ring = z_n * n + 2
-    if etd:
-        _stiff_rates(p, lin, w0, c_z, polar, half, z_n, h, lam, y_ref, coef)
-    for s in range(n_steps):
-        step = step0 + s
-        if use_table and step % sub == 0:
-            wc0, st = _refresh_from_table(y, z_n, phi0, az, load, spin0, spin_step, loads,
-                                          cage, values, lin, w0, q_o, c_z)
-            if st != 0:
-                return st, s, t, n_sampled, wc0
-            if etd:
-                _stiff_rates(p, lin, w0, c_z, polar, half, z_n, h, lam, y_ref, coef)
-        elif use_table and spin_trust > 0.0:
-            for j in range(z_n):
-                if abs(y[j * n + 7] - w0[j]) > spin_trust:
-                    st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads,
-                                         cage, values, lin, w0, wc0, q_o, c_z)
-                    if st != 0:
-                        return st, s, t, n_sampled, wc0
-                    if etd:
-                        _stiff_roller(j, p, lin, w0, c_z, polar, half, h, lam, y_ref, coef)
-        if etd:
-            # ETDRK4 (roller_dynamics_etd): N = f - lam (y - y_ref), the linear part exact
-            _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                k1[q] -= lam[q] * (y[q] - y_ref[q])
-                ya[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k1[q]
-            _deriv_into(p, ya, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                k2[q] -= lam[q] * (ya[q] - y_ref[q])
-                yt[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k2[q]
-            _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                k3[q] -= lam[q] * (yt[q] - y_ref[q])
-                yt[q] = (y_ref[q] + coef[q, 1] * (ya[q] - y_ref[q])
-                         + coef[q, 2] * (2.0 * k3[q] - k1[q]))
-            _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                k4[q] -= lam[q] * (yt[q] - y_ref[q])
-                y[q] = (y_ref[q] + coef[q, 0] * (y[q] - y_ref[q]) + coef[q, 3] * k1[q]
-                        + 2.0 * coef[q, 4] * (k2[q] + k3[q]) + coef[q, 5] * k4[q])
-        else:
-            _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                yt[q] = y[q] + 0.5 * h * k1[q]
-            _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                yt[q] = y[q] + 0.5 * h * k2[q]
-            _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                yt[q] = y[q] + h * k3[q]
-            _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
-            for q in range(m_y):
-                y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
-        t += h
-        if (step >= n_warm and (step - n_warm) % every == 0
-                and n_sampled < samples.shape[0]):
-            for q in range(z_n * n):
-                samples[n_sampled, q] = y[q]
-            for j in range(z_n):         # X, X' relative to the inner ring
-                samples[n_sampled, j * n] -= y[ring]
-                samples[n_sampled, j * n + 1] -= y[ring + 1]
-            sample_t[n_sampled] = t
-            sample_wc[n_sampled] = y[z_n * n + 1]
-            sample_ring[n_sampled] = y[ring]
-            n_sampled += 1
-        if step % 200 == 0:
-            for q in range(m_y):
-                if not math.isfinite(y[q]):
-                    return 4, s + 1, t, n_sampled, wc0
-            for j in range(z_n):
-                if y[j * n + 7] <= 0.0:
-                    return 4, s + 1, t, n_sampled, wc0
-    return 0, n_steps, t, n_sampled, wc0
-
-
-def _indices() -> tuple[int, int, int, int, int]:
-    from . import roller_dynamics as rd
-
-    return rd._HL, rd._CP, rd._KC, rd._ETA, rd._FLOOR
-
-
-_HLI, _CPI, _KCI, _ETAI, _FLI = _indices()
 
 
 #: a roller spin above this multiple of omega_i d_i / D (the spin of a roller rolling on the
@@ -798,27 +512,3 @@ def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: i
 __all__ = ["DEFAULT_CAGE_BAND", "INTEGRATORS", "MAX_TABLE_BUILDS", "N_ROLLER_STATES",
            "SPIN_TRUST", "cage_inertia", "cage_land_coefficient", "inner_ring_mass",
            "simulate_coupled"]
-
-
-def _refresh_caches() -> None:
-    """Flush the kernels' numba caches when a module whose compiled functions they inline
-    changed (roller_dynamics_rhs's ``_rhs_ring``, rib.py, roller_dynamics_pocket.py,
-    roller_dynamics_table.py; :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
-    from .. import rib
-    from ..contact_traction import refresh_stale_caches
-    from . import (
-        roller_dynamics_etd,
-        roller_dynamics_pocket,
-        roller_dynamics_rhs,
-        roller_dynamics_table,
-    )
-
-    refresh_stale_caches("roller_dynamics_coupled",
-                         (_pocket_film_friction, _interp_sorted, _deriv_into,
-                          _refresh_from_table, _refresh_roller, _stiff_rates,
-                          _stiff_roller, _integrate),
-                         (roller_dynamics_rhs, rib, roller_dynamics_pocket,
-                          roller_dynamics_table, roller_dynamics_etd))
-
-
-_refresh_caches()
