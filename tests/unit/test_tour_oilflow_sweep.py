@@ -283,3 +283,38 @@ def _toml(d):
     from thermobearing.scene import Scene
 
     return Scene.from_dict(d).to_toml()
+
+
+# --- the report's what-if curves left out the oil outlet temperature ---------------------
+def _temperature_runner(scene_toml: str) -> dict[str, float]:
+    """Made-up but monotonic results of the flow (what the report draws, not physics)."""
+    q = loads_scene(scene_toml).supply.flow * 60e3
+    return {"total loss [W]": 100.0 * q, "final drive_end.housing [degC]": 50.0 - 0.1 * q,
+            "rise drive_end.housing [K]": 15.0 - 0.1 * q,
+            "final drive_end.oil [degC]": 40.0 - 0.1 * q,
+            "rise drive_end.oil [K]": 5.0 - 0.1 * q}
+
+
+def test_whatif_curves_show_the_oil_outlet_temperature(tmp_path, monkeypatch):
+    # before: the what-if figure drew the total loss, the over-skidding and the housing's
+    # final temperature and rise; the oil outlet temperature, the first thing an oil-flow
+    # what-if asks (and m_dot c_p dT against the loss), was only in the table
+    import thermobearing.report as report
+    from thermobearing.commands.report import sweep_report
+    from thermobearing.sweep import parse_set, run_sweep
+
+    drawn = {}
+    real = report.fig_whatif
+
+    def spy(summary, x, ys, group=None):
+        drawn[x] = list(ys)
+        return real(summary, x, ys, group=group)
+
+    monkeypatch.setattr(report, "fig_whatif", spy)
+    scene = load_scene()
+    run_sweep(scene, [parse_set("supply.flow=10,20,33", scene.to_dict())], tmp_path,
+              runner=_temperature_runner, workers=1, progress=False, check=False)
+    sweep_report(tmp_path)
+    assert drawn["supply.flow [L/min]"] == [
+        "total loss [W]", "final drive_end.housing [degC]", "rise drive_end.housing [K]",
+        "final drive_end.oil [degC]"]

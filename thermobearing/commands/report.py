@@ -105,12 +105,16 @@ def sweep_report(folder: Path) -> Path:
     temps = [c for c in results if c.startswith("final") or c.startswith("rise")]
     # the housing node first: it is where a rig's thermocouple sits (paper 002 Fig. 19)
     temps.sort(key=lambda c: ".housing" not in c)
+    # the what-if curves: the first housing's final temperature and its rise, and the
+    # oil outlet (the first bearing's oil node), which a flow or inlet what-if is about
+    curves = temps[:2] + [c for c in results if c.startswith("final")
+                          and c.endswith(".oil [degC]")][:1]
     for x in pcols:
         if df[x].nunique() < 2:
             continue  # a parameter held at one value draws no curve
         # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
-        ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + temps[:2]
+        ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + curves
         if ys:
             figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)
     numeric = [c for c in pcols if pd.api.types.is_numeric_dtype(df[c])]
