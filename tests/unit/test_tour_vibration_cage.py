@@ -195,6 +195,9 @@ def test_analyser_errors_name_the_command_options_and_the_file(tmp_path, capsys,
             "--no-plot"]
     assert main(base + ["--fs", "25600", "--band", "100", "200"]) == 1
     assert "--band = (100.0, 200.0) is not allowed" in capsys.readouterr().err
+    assert main(base + ["--fs", "25.6"]) == 1  # kHz meant, Hz read
+    err = capsys.readouterr().err
+    assert "--fs = '25.6' is not allowed" in err and "--fs '25.6 kHz'" in err
     np.save(tmp_path / "short.npy", skf_30pct[:2560])
     assert main(["cage-speed", str(tmp_path / "short.npy"), "--fs", "25600", "--rpm", "1800",
                  "--bearing", "SKF6304", "--no-plot"]) == 1

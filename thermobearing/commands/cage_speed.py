@@ -161,6 +161,9 @@ def _as_option(exc: InputError, args: argparse.Namespace,
                           "the cage searched from 0.3 CSR_th f_shaft up)")
     option = {"sampling_rate": "--fs", "band": "--band", "search": "--search",
               "ball_pass_harmonics": "--ball-pass-harmonics"}.get(exc.field)
+    if option == "--fs":
+        return InputError(option, args.fs, f"{exc.allowed}; a bare --fs is in Hz (25.6 kHz: "
+                          "--fs 25600 or --fs '25.6 kHz')")
     return InputError(option, exc.value, exc.allowed) if option else exc
 
 
