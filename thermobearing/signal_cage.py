@@ -66,6 +66,10 @@ from .signal_kurtogram import kurtogram_bands
 #: at CSR 0.4527 carries a full comb at f_c / 2, 15 dB below the ball-pass line Z f_c in
 #: its pooled envelope spectrum; a real cage's own lines hold its ball-pass fundamental)
 SUBHARMONIC_DB = 10.0
+#: a cage comb whose own lines stand more than this many dB (but less than SUBHARMONIC_DB)
+#: below the comb at twice (three times) its frequency is kept with a note naming the other
+#: reading (the QJ1044 model skidding at CSR 0.44 puts its half-speed comb 8 dB below)
+AMBIGUOUS_DB = 3.0
 
 
 def cage_speed_ratio(cage_frequency, shaft_frequency):
@@ -427,12 +431,28 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
                                  p_fa, consistency, tuple(lines), es, reason)
     csr = cage_speed_ratio(fc, shaft_frequency)
     notes = []
-    if alternative is not None:
+    if alternative is not None and abs(alternative[0] * alternative[1] - fc) <= df:
         alt, m = alternative
         top = float(np.max(np.interp(teeth(fc), es.frequency, rmax)))
         notes.append(_subharmonic_note(fc, alt, m, 10.0 * math.log10(
             top / max(own_power(alt, fc), 1e-300)), float(shaft_frequency),
             float(csr_theoretical)))
+    for m in (2, 3):  # the other reading: fc's own lines a subharmonic of a cage at m fc
+        up = m * fc
+        tu = teeth(up)
+        if not up < f_hi or not tu.size:
+            continue
+        top = float(np.max(np.interp(tu, es.frequency, rmax)))
+        own = own_power(fc, up)
+        if top > strict and own > 0 and 10.0 * math.log10(top / own) > AMBIGUOUS_DB:
+            notes.append(
+                f"the lines that only a cage at {fc:.4f} Hz explains stand "
+                f"{10.0 * math.log10(top / own):.0f} dB below the strongest line of the comb "
+                f"at {m} x = {up:.4f} Hz: they may be a subharmonic (a period-{m} response) of "
+                f"a cage at {up:.4f} Hz (CSR {up / shaft_frequency:.4f}, slip "
+                f"{100 * (1 - up / shaft_frequency / csr_theoretical):+.1f} %); they are "
+                f"read as the cage below {SUBHARMONIC_DB:g} dB")
+            break
     # the first shaft sidebands confirm the shaft frequency as a pair f_s -+ f_c (one line
     # alone can be another component that happens to sit there), neither of them a harmonic
     # of the cage frequency itself; the second pair does not (a model record's envelope is
