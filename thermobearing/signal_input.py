@@ -179,6 +179,15 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     return AccelerationRecord(arr, float(rate), str(p), channel, n_channels, filled)
 
 
+def _uniform_ramp(t: np.ndarray) -> bool:
+    """A column that increases in steps within half a step of their mean (a time column)."""
+    dt = np.diff(t)
+    if dt.size < 2 or not np.all(dt > 0):
+        return False
+    mean = float(t[-1] - t[0]) / dt.size
+    return bool(np.max(np.abs(dt - mean)) <= 0.5 * mean)
+
+
 #: longest run of missing samples ``fill_gaps`` interpolates over
 MAX_GAP_SAMPLES = 5
 #: largest share of missing samples ``fill_gaps`` accepts
@@ -414,6 +423,10 @@ def _read_csv(p: Path, column: int | str | None
                                  f"(columns: {names})")
     else:
         idx = 0 if ncol == 1 else 1
+    if idx == 0 and ncol >= 2 and column is not None and (
+            _time_scale(layout, p) is not None or _uniform_ramp(table[:, 0])):
+        raise InputError("column", column, f"a channel, not the time column {names[0]!r} "
+                         f"(channels: {names[1:]})")
     samples = table[:, idx]
     rate = None
     why = None

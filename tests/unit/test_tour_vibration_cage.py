@@ -272,3 +272,19 @@ def test_an_ambiguous_half_speed_reading_names_the_other_cage_speed():
         assert est.csr == pytest.approx(0.22, abs=1e-3)
         other = [n for n in est.notes if "may be a subharmonic" in n]
         assert len(other) == 1 and "CSR 0.4400" in other[0]
+
+
+@pytest.mark.parametrize("header", [True, False])
+def test_column_zero_is_the_time_column_not_a_channel(tmp_path, header, skf_30pct):
+    """--column 0 of 'Time [s],Acc X' read the time as the samples: 'sampling rate is
+    missing (the file carries no time column)' with a header, a ramp analysed without."""
+    x = skf_30pct[:int(FS)]
+    t = np.arange(x.size) / FS
+    rows = (["Time [s],Acc X [g]"] if header else []) + [
+        f"{a:.7f},{b:.6f}" for a, b in zip(t, x, strict=True)]
+    (tmp_path / "daq.csv").write_text("\n".join(rows) + "\n", encoding="utf-8")
+    with pytest.raises(InputError) as info:
+        S.load_acceleration(tmp_path / "daq.csv", column=0, sampling_rate=FS)
+    assert info.value.field == "column" and "not the time column" in info.value.allowed
+    rec = S.load_acceleration(tmp_path / "daq.csv", column=1)
+    assert rec.sampling_rate == pytest.approx(FS, rel=1e-6)
