@@ -170,7 +170,8 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
             # way, and in a serial sweep the cases after it never run
             where = (f"{n} finished case(s) are kept in {_store_path(out)} (rerunning the "
                      "same command resumes with this case, which fails again with these "
-                     "values: leave them out of --set to run the other cases)")
+                     "values: run the other cases with --keep-going (keep_going=True), "
+                     "or leave these values out of --set)")
         exc.args = (f"sweep case {case.case_id} ({values}): {exc}; {where}", *exc.args[1:])
         raise
     except Exception as exc:
@@ -212,6 +213,7 @@ def run_sweep(
     progress: bool | None = None,
     connect_timeout: float = 5.0,
     check: bool = True,
+    keep_going: bool = False,
 ) -> pd.DataFrame:
     """Run every case not yet in ``out_dir``; returns the summary table of all cases.
 
@@ -230,6 +232,11 @@ def run_sweep(
         (a server that accepts the connection but does not answer as a scheduler: three
         times as long).
     check : check every case not yet run with :func:`check_cases` before the first runs.
+    keep_going : a case that fails with a package error (a solver that does not converge,
+        an input its run refuses) does not stop the sweep: the other cases run, the failed
+        ones stay out of the store (a rerun tries them again) and are listed, one line
+        each with the case's values and the error, in the returned table's
+        ``attrs["failed"]``. Default: the first failure stops the sweep.
     """
     from tqdm.auto import tqdm
 
@@ -259,6 +266,17 @@ def run_sweep(
     show = sys.stderr.isatty() if progress is None else progress
     bar = tqdm(total=len(cases), initial=len(cases) - len(todo), disable=not show,
                desc="sweep", unit="case")
+    failures: list[str] = []
+
+    def failed(case: Case, exc: BaseException) -> bool:
+        """Note a failed case when the sweep keeps going (True); False: stop on it."""
+        if not (keep_going and isinstance(exc, ThermobearingError)):
+            return False
+        values = ", ".join(f"{k}={v}" for k, v in case.assignments)
+        failures.append(f"case {case.case_id} ({values}): {exc}")
+        bar.update(1)
+        return True
+
     try:
         if todo:
             client = None
@@ -281,8 +299,13 @@ def run_sweep(
                         futures = {client.submit(runner, c.scene_toml, pure=False): c
                                    for c in todo}
                         for fut in dask_completed(list(futures)):
-                            with _naming_case(futures[fut], out):
+                            try:
                                 result = fut.result()
+                            except Exception as exc:
+                                if failed(futures[fut], exc):
+                                    continue
+                                with _naming_case(futures[fut], out):
+                                    raise
                             rec = _record(futures[fut], result)
                             _append(out, rec)
                             done[rec["case"]] = rec
@@ -292,8 +315,13 @@ def run_sweep(
                     client.close()
             elif workers == 1 or len(todo) == 1:
                 for c in todo:
-                    with _naming_case(c, out):
+                    try:
                         result = runner(c.scene_toml)
+                    except Exception as exc:
+                        if failed(c, exc):
+                            continue
+                        with _naming_case(c, out):
+                            raise
                     rec = _record(c, result)
                     _append(out, rec)
                     done[rec["case"]] = rec
@@ -310,7 +338,7 @@ def run_sweep(
                 with ProcessPoolExecutor(max_workers=workers) as pool:
                     futs = {pool.submit(runner, c.scene_toml): c for c in todo}
                     try:
-                        _run_pool(futs, keep, out)
+                        _run_pool(futs, keep, out, failed)
                     except KeyboardInterrupt:
                         # leaving the with-block would wait for the running and queued
                         # cases (whose results nobody records): stop them
@@ -318,21 +346,25 @@ def run_sweep(
                         raise
     finally:
         bar.close()
-    return _write_summary(out, cases, done)
+    df = _write_summary(out, cases, done)
+    df.attrs["failed"] = failures
+    return df
 
 
 def _run_pool(futs: Mapping[Any, Case], keep: Callable[[Case, Mapping[str, float]], None],
-              out: Path) -> None:
-    """Keep each case of a process pool as it finishes. A case that fails starts no other
-    case: the cases already running are waited for and kept, then the failure is raised
-    naming its case (before, the pool ran every queued case on leaving and dropped their
-    results)."""
+              out: Path, noted: Callable[[Case, BaseException], bool]) -> None:
+    """Keep each case of a process pool as it finishes. A case that fails and is not
+    ``noted`` (the sweep keeps going past it) starts no other case: the cases already
+    running are waited for and kept, then the failure is raised naming its case (before,
+    the pool ran every queued case on leaving and dropped their results)."""
     failed = None
     kept = set()
     for fut in as_completed(futs):
         if fut.exception() is None:
             keep(futs[fut], fut.result())
             kept.add(fut)
+            continue
+        if noted(futs[fut], fut.exception()):
             continue
         failed = fut
         break

@@ -225,7 +225,7 @@ def test_failed_case_message_says_a_rerun_fails_the_same_way(tmp_path, capsys, m
     assert cli.main(args) != 0
     err = capsys.readouterr().err
     assert "supply.flow=40 L/min" in err and "1 finished case(s) are kept" in err
-    assert "fails again" in err and "leave them out of --set" in err
+    assert "fails again" in err and "--keep-going" in err
 
 
 # --- an oil grade from the user's own lubricant file ----------------------------------
@@ -318,3 +318,54 @@ def test_whatif_curves_show_the_oil_outlet_temperature(tmp_path, monkeypatch):
     assert drawn["supply.flow [L/min]"] == [
         "total loss [W]", "final drive_end.housing [degC]", "rise drive_end.housing [K]",
         "final drive_end.oil [degC]"]
+
+
+# --- one case of a grid that does not converge blocked the rest of the grid ---------------
+def _failing_at_40(scene_toml: str) -> dict[str, float]:
+    """Stops like the ball solver at 40 L/min and 40 degC inlet on the default rig
+    (residual 6.7e-4 at 4 kN; 38 and 42 L/min converge); the flow otherwise."""
+    from thermobearing.errors import ConvergenceError
+
+    sc = loads_scene(scene_toml)
+    if round(sc.supply.flow * 60e3) == 40 and round(sc.supply.inlet_temperature) == 313:
+        raise ConvergenceError("kinematics (skidding)", 6.7e-4, "no convergence", {})
+    return capacity_runner(scene_toml)
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_keep_going_runs_the_rest_of_the_grid(tmp_path, workers):
+    # before: the 40 L/min x 40 degC case stopped the sweep, a rerun stopped there again,
+    # and leaving 40 L/min out of --set dropped the 30 degC case with it: the rest of the
+    # grid could not be run at all
+    from thermobearing.sweep import finished_cases, parse_set, run_sweep
+
+    scene = load_scene()
+    d = scene.to_dict()
+    params = [parse_set("supply.flow=30,40", d), parse_set("supply.inlet_temperature=30,40", d)]
+    df = run_sweep(scene, params, tmp_path, runner=_failing_at_40, workers=workers,
+                   progress=False, check=False, keep_going=True)
+    assert len(df) == 3 and len(finished_cases(tmp_path)) == 3
+    (line,) = df.attrs["failed"]
+    assert "supply.flow=40 L/min, supply.inlet_temperature=40 degC" in line
+    assert "6.7" in line and "finished case" not in line
+    # without keep_going the first failure still stops the sweep
+    from thermobearing.errors import ConvergenceError
+
+    with pytest.raises(ConvergenceError):
+        run_sweep(scene, params, tmp_path / "stop", runner=_failing_at_40, workers=1,
+                  progress=False, check=False)
+
+
+def test_keep_going_on_the_command_line(tmp_path, capsys, monkeypatch):
+    import thermobearing.simulation as simulation
+    from thermobearing import cli
+
+    monkeypatch.setattr(simulation, "summarize_scene", _failing_at_40)
+    out = tmp_path / "sw"
+    args = ["sweep", "--set", "supply.flow=30,40", "--set", "supply.inlet_temperature=30,40",
+            "--out", str(out), "-j", "1", "--quiet", "--keep-going"]
+    assert cli.main(args) == 1  # not every case ran
+    captured = capsys.readouterr()
+    assert "1 case(s) failed" in captured.err and "a rerun tries them again" in captured.err
+    assert "supply.flow=40 L/min, supply.inlet_temperature=40 degC" in captured.err
+    assert captured.out.count(" L/min ") == 3  # the three other cases in the table

@@ -44,6 +44,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--scheduler", default=None, help="dask scheduler address")
     parser.add_argument("--fallback-local", action="store_true",
                         help="run locally if the scheduler cannot be reached")
+    parser.add_argument("--keep-going", action="store_true",
+                        help="run the other cases when one fails (a solver that does not "
+                             "converge); the failed ones are listed and a rerun tries them "
+                             "again")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
@@ -73,7 +77,8 @@ def run(args: argparse.Namespace) -> int:
     try:
         df = run_sweep(scene, params, out, workers=args.workers, scheduler=args.scheduler,
                        fallback_local=args.fallback_local,
-                       progress=False if args.quiet else None)
+                       progress=False if args.quiet else None,
+                       keep_going=args.keep_going)
     except KeyboardInterrupt:
         done = len(finished_cases(out))
         if done:
@@ -90,11 +95,17 @@ def run(args: argparse.Namespace) -> int:
     print(f"summary written to {out / 'summary.csv'}{more}")
     for line in flagged_notes(df, [p.path for p in params]):
         print(line, file=sys.stderr)
+    failures = df.attrs.get("failed", [])
+    if failures:
+        print(f"{len(failures)} case(s) failed (not in {out / 'summary.csv'}; a rerun tries "
+              "them again):", file=sys.stderr)
+        for line in failures:
+            print(f"  {line}", file=sys.stderr)
     swept = {p.path for p in params}
     if not warned and all(c == "case" or c in swept
                           or any(c.startswith(p + " [") for p in swept) for c in df.columns):
         print(f"note: the cases gave no results to tabulate: {empty_note}", file=sys.stderr)
-    return 0
+    return 1 if failures else 0
 
 
 #: the run checks' counts of the summary and what each flags
