@@ -64,6 +64,16 @@ therefore renewed in the kernel as soon as its spin moved by more than
 r/min (no unbalance, previously "unstable coupled motion"): slip 1.7048 m/s, rib heat
 0.0585 W per roller at 400, 1600 and 3200 steps per period (0.66 s CPU); at 40 degC, 5000
 r/min (previously a spin runaway): slip 2.0123 / 2.0122 m/s at 400 / 1600.
+Over ISO VG32 / 46 / 68 / 100, OIL_4109 and PAPER000_OIL at 40 / 80 degC and 5000 / 20000
+r/min (3 kN, no unbalance) 16 of 20 states stopped on RK4 and all 20 run on ETDRK4 with one
+table. Limits measured on ISO VG46, 80 degC, 20000 r/min (2 + 2 orbits): the table's
+spin grid smears the shear's sharp knee, slip 1.7050 / 1.7079 / 1.7382 m/s at a 50 / 12.5 /
+3.125 rad/s spin step (rib heat 0.0585 -> 0.0587 W per roller); the evaluate path cannot
+renew inside the kernel and overshoots with its 20 us refresh, slip 1.875 (1.791 at 5 us),
+so a table-path run that falls back to it carries that error (renewing it in the kernel
+measured 6-10x its CPU, also at paper 003's base case: not done). OIL_4109 at 40 degC:
+ETDRK4 3.0328 m/s at 400 and 1600 steps per period, RK4 3.178 after 5 table rebuilds and
+divergent on a 12.5 rad/s spin grid (ETDRK4 there 2.999).
 ``integrator="rk4"`` keeps the previous explicit scheme (no in-kernel renewal) for
 comparison.
 
