@@ -203,6 +203,10 @@ def test_analyser_errors_name_the_command_options_and_the_file(tmp_path, capsys,
                  "--bearing", "SKF6304", "--no-plot"]) == 1
     err = capsys.readouterr().err
     assert "duration of short.npy = '0.1 s'" in err and "at least 0.907 s" in err
+    assert "Hz'" not in err  # 1800 r/min: no unit hint
+    assert main(base + ["--fs", "25600", "--rpm", "30"]) == 1  # 30 Hz meant
+    err = capsys.readouterr().err
+    assert "(0.5 Hz shaft): if 30 is in Hz, write --rpm '30 Hz'" in err
     # an .npz whose rate was stored in kHz (25.6): the error says the rate is the file's
     np.savez(tmp_path / "khz.npz", acceleration=skf_30pct, fs=25.6)
     assert main(["cage-speed", str(tmp_path / "khz.npz"), "--rpm", "1800", "--bearing",

@@ -156,9 +156,18 @@ def _as_option(exc: InputError, args: argparse.Namespace,
                           f"{exc.allowed} (the rate is the file's: its time column, WAV "
                           "header or .npz 'sampling_rate' / 'fs' array, in Hz)")
     if exc.field == "signal.duration":
+        hint = ""
+        try:
+            bare = float(args.rpm)
+        except ValueError:
+            pass
+        else:  # a short record refused for a slow shaft: the speed may be in Hz
+            if bare < 600.0:
+                hint = (f"; --rpm {args.rpm} is read as r/min ({bare / 60:.4g} Hz shaft): "
+                        f"if {args.rpm} is in Hz, write --rpm '{args.rpm} Hz'")
         return InputError(f"duration of {Path(record.source).name}", f"{exc.value:.4g} s",
                           f"{exc.allowed}; or a higher --search LOW (default 0.3: "
-                          "the cage searched from 0.3 CSR_th f_shaft up)")
+                          f"the cage searched from 0.3 CSR_th f_shaft up){hint}")
     option = {"sampling_rate": "--fs", "band": "--band", "search": "--search",
               "ball_pass_harmonics": "--ball-pass-harmonics"}.get(exc.field)
     if option == "--fs":
