@@ -29,8 +29,10 @@ EXIT_NOT_DETECTED = 3
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.epilog = ("exit status: 0 cage line detected (CSR, slip and confidence printed), "
-                     "3 not detected (the reason printed, no frequency), 1 bad input. "
+    parser.epilog = ("exit status: 0 cage line detected (CSR, slip and confidence printed; "
+                     "'note' lines say what the result rests on: a shaft frequency the record "
+                     "does not confirm, lines read as a subharmonic), 3 not detected (the "
+                     "reason printed, no frequency), 1 bad input. "
                      "Example: thermobearing cage-speed rig.csv --rpm 1800 --bearing QJ1044")
     parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
                         "(time column first, then channels; comma, semicolon or tab separated, "
@@ -44,8 +46,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="sampling rate (e.g. 25600 or '25.6 kHz'); needed unless the "
                              "file has a time column or a rate")
     parser.add_argument("--column", default=None,
-                        help="column of the samples (index or header name; default: the "
-                             "first after the time column); for a 2-D .npy the column index")
+                        help="column of the samples (header name, or 0-based index counting "
+                             "the time column; default: the first after the time column); "
+                             "for a 2-D .npy / .npz the column index")
     parser.add_argument("--contact-angle", default=None,
                         help="contact angle for the pure-rolling ratio (e.g. '40 deg'; "
                              "default: the bearing's nominal angle)")
