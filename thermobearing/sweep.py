@@ -37,7 +37,7 @@ import pandas as pd
 
 from .errors import InputError, ThermobearingError
 from .scene import Scene, loads_scene
-from .sweep_cases import Case, expand, scene_from_case
+from .sweep_cases import Case, expand, match_finished, scene_from_case
 from .sweep_params import (
     DISPLAY_UNITS,
     PATH_UNITS,
@@ -258,6 +258,7 @@ def run_sweep(
                          "is a file")
     cases = expand(scene, params)
     done = finished_cases(out)
+    cases = match_finished(scene, cases, done)  # the same quantities in other units
     todo = [c for c in cases if c.case_id not in done]
     if check:
         check_cases(todo)

@@ -18,7 +18,7 @@ from typing import Any
 
 from .errors import InputError
 from .scene import Scene, loads_scene
-from .sweep_params import SweepParameter, assign_path
+from .sweep_params import SweepParameter, _same_quantity_key, assign_path
 
 
 def _absolute_paths(d: dict[str, Any], base_dir: Path | None) -> None:
@@ -68,15 +68,49 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
             assign_path(d, path, value)
         _absolute_paths(d, base_dir)  # the runner gets only the TOML text, not the folder
         sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
-        # the id does not depend on the order of the --set options (distinct paths commute)
-        key = json.dumps([base_text, sorted([list(a) for a in assignments], key=str)],
-                         sort_keys=True)
-        cid = hashlib.sha1(key.encode()).hexdigest()[:12]
+        cid = _case_id(base_text, assignments)
         if cid in seen:
             continue
         seen.add(cid)
         cases.append(Case(cid, assignments, sc.to_toml()))
     return cases
+
+
+def _case_id(base_text: str, assignments: Sequence[Sequence[Any]],
+             same_quantity: bool = False) -> str:
+    """The id of a case: a hash of the base scene and the values set, independent of the
+    order of the --set options (distinct paths commute). ``same_quantity``: of the values
+    as quantities (``15 L/min`` and ``900 L/h`` alike) instead of as written."""
+    pairs = [[path, _same_quantity_key(v) if same_quantity else v]
+             for path, v in assignments]
+    key = json.dumps([base_text, sorted(pairs, key=str)], sort_keys=True)
+    return hashlib.sha1(key.encode()).hexdigest()[:12]
+
+
+def match_finished(scene: Scene, cases: Sequence[Case],
+                   done: dict[str, dict[str, Any]]) -> list[Case]:
+    """``cases`` with the id of a finished case of the store (``done``, id -> record)
+    that set the same quantities in other units (``--set supply.flow=900,1980 L/h`` after
+    ``supply.flow=15,33``): that case is not run again. A record counts only when its id
+    is the id of its values on this base scene (a record of another base scene in the
+    same folder does not)."""
+    base_text = scene.to_toml()
+    by_quantity: dict[str, str] = {}
+    for rec in done.values():
+        try:
+            assignments = list(rec["params"].items())
+        except (KeyError, AttributeError):
+            continue
+        if _case_id(base_text, assignments) == rec.get("case"):
+            by_quantity.setdefault(_case_id(base_text, assignments, True), rec["case"])
+    out = []
+    for case in cases:
+        if case.case_id not in done:
+            alias = by_quantity.get(_case_id(base_text, case.assignments, True))
+            if alias is not None:
+                case = Case(alias, case.assignments, case.scene_toml)
+        out.append(case)
+    return out
 
 
 def scene_from_case(case: Case) -> Scene:

@@ -369,3 +369,33 @@ def test_keep_going_on_the_command_line(tmp_path, capsys, monkeypatch):
     assert "1 case(s) failed" in captured.err and "a rerun tries them again" in captured.err
     assert "supply.flow=40 L/min, supply.inlet_temperature=40 degC" in captured.err
     assert captured.out.count(" L/min ") == 3  # the three other cases in the table
+
+
+# --- the same flows in another unit ran again -------------------------------------------
+def test_rerun_in_another_unit_does_not_recompute(tmp_path):
+    # before: `--set supply.flow=900,1980 L/h` after `supply.flow=15,33` on the same folder
+    # ran both cases again (the case id hashed the values' text) and the summary listed
+    # each flow twice
+    from thermobearing.sweep import expand, parse_set, run_sweep
+
+    scene = load_scene()
+    ran = []
+
+    def counting(text):
+        ran.append(round(loads_scene(text).supply.flow * 60e3, 9))
+        return capacity_runner(text)
+
+    first = parse_set("supply.flow=15,33", scene.to_dict())
+    assert expand(scene, [first])[0].case_id == "5352287b18e7"  # ids of existing stores
+    run_sweep(scene, [first], tmp_path, runner=counting, workers=1, progress=False,
+              check=False)
+    again = parse_set("supply.flow=900 L/h,1980 L/h,1200 L/h", scene.to_dict())
+    df = run_sweep(scene, [again], tmp_path, runner=counting, workers=1, progress=False,
+                   check=False)
+    assert ran == [15.0, 33.0, 20.0]  # only 1200 L/h was new
+    assert len(df) == 3 and df["supply.flow [L/min]"].tolist() == [15.0, 33.0, 20.0]
+    # a record of another base scene in the folder does not count for this one
+    other = scene.with_changes(title="another rig")
+    run_sweep(other, [first], tmp_path, runner=counting, workers=1, progress=False,
+              check=False)
+    assert ran[3:] == [15.0, 33.0]
