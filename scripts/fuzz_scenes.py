@@ -18,7 +18,9 @@ per-case time limit (and every ``--cli-every``-th case also as ``thermobearing r
     power, no temperature at or below 0 K, warnings readable.
 ``REFUSED``
     a clean refusal: ``InputError`` / ``UnknownNameError`` whose message names its field,
-    or ``ConvergenceError`` with a finite residual.
+    or ``ConvergenceError`` with a finite residual. A refusal whose field is no key of a
+    scene (``eta0``, ``dt``: the user cannot tell what to change) is marked ``(not a scene
+    field)`` in its message and worth a look.
 ``TIMEOUT``
     not finished within ``--time-limit`` seconds (not counted as a defect; listed).
 ``DEFECT``
@@ -93,6 +95,11 @@ H_OIL_RANGE = (50.0, 1500.0)
 H_AIR_RANGE = (5.0, 50.0)
 
 SUPPLIES = ("jet", "circulation", "oil_bath", "oil_air")
+#: first words of the fields a refusal may name: the scene's tables, the bearing and
+#: lubricant files' keys, and the checks' own wording ("schedule step 0 ...", "SKF ...")
+SCENE_FIELD_HEADS = {"title", "source", "bearings", "lubricant", "supply", "environment",
+                     "schedule", "models", "network", "solver", "outputs", "checks",
+                     "measured", "bearing", "SKF", "scene"}
 #: a few steps run above the supply's plausible n d_m, up to this factor of it
 HIGH_SPEED_FACTOR = 1.6
 #: cold starts: ambient, initial and inlet temperatures drawn in this range [degC]
@@ -529,6 +536,11 @@ def classify_error(exc: BaseException) -> tuple[str, str]:
             return "DEFECT", f"refusal does not name its field: {msg}"
         if "array(" in msg or "\n" in msg:
             return "DEFECT", f"refusal prints an internal array: {msg[:300]}"
+        head = re.split(r"[.\[ ]", str(exc.field), maxsplit=1)[0]
+        if head not in SCENE_FIELD_HEADS:
+            # clean, but the field is no key of the scene (``eta0``, ``operating.axial_load``,
+            # ``dt``): the user cannot tell what to change; listed in the summary
+            return "REFUSED", f"(not a scene field) {msg}"
         return "REFUSED", msg
     if isinstance(exc, ConvergenceError):
         if not math.isfinite(float(exc.residual)):
