@@ -335,9 +335,10 @@ def test_steady_pass_without_a_steady_state_is_retried_with_the_heat_held_near_t
     stopped ('network steady Newton did not converge ... line search failed'): heat to the
     oil 150.7 W at 338.3 K, slope -10.45 W/K, curvature -39.9 W/K^2 (a churning regime
     jump inside the difference stencil), continued linearly beyond 2 K. On one oil node
-    with 5 W/K to 300 K it has no steady state at all (the residual is negative
-    everywhere); held beyond 10 K of T0 it has one, which balances the held heat, and
-    where the model has a root near T0 the held model has the same one."""
+    with 5 W/K to 300 K it has no steady state where it gives heat (the heat floor of the
+    chunk model leaves only the heat-free state at the ambient); held beyond 10 K of T0 it
+    has one, which balances the held heat, and where the model has a root near T0 the held
+    model has the same one."""
     from thermobearing.coupled import STEADY_TRUST_REGION, _HeldBeyond, _Linear
     from thermobearing.errors import ConvergenceError
     from thermobearing.network import solve_steady
@@ -346,10 +347,20 @@ def test_steady_pass_without_a_steady_state_is_retried_with_the_heat_held_near_t
     lin = _Linear(q0=np.array([150.7]), J=np.array([[-10.45]]), T0=np.array([338.3]),
                   H=np.array([[-39.9]]))
     d = np.linspace(-200.0, 200.0, 4001)
-    f = [-5.0 * (338.3 + x - 300.0) + lin.heat(0.0, np.array([338.3 + x]))[0] for x in d]
-    assert max(f) < 0  # no root anywhere
-    with pytest.raises(ConvergenceError):
-        solve_steady(net, lin.heat, T_guess=np.array([338.3]), heat_jacobian=lin.jac)
+    q = np.array([lin.heat(0.0, np.array([338.3 + x]))[0] for x in d])
+    f = -5.0 * (338.3 + d - 300.0) + q
+    assert max(f[q > 0.0]) < 0  # no root where the model gives heat
+    # the model's heat is floored at min(q0, 0) = 0 (coupled._Linear), so its only steady
+    # state is the spurious one where the extrapolated heat has been floored away: the oil
+    # at the ambient with no heat at all, 38 K outside the region the model is trusted in
+    try:
+        spurious = solve_steady(net, lin.heat, T_guess=np.array([338.3]),
+                                heat_jacobian=lin.jac).temperatures["oil"]
+    except ConvergenceError:
+        spurious = None
+    if spurious is not None:
+        assert lin.heat(0.0, np.array([spurious]))[0] == 0.0
+        assert abs(spurious - 338.3) > STEADY_TRUST_REGION
     held = _HeldBeyond(lin, STEADY_TRUST_REGION)
     res = solve_steady(net, held.heat, T_guess=np.array([338.3]), heat_jacobian=held.jac)
     t_oil = res.temperatures["oil"]
