@@ -57,6 +57,9 @@ Layout (every table optional unless marked)::
     heat_source_options = { pocket_friction = { ... } }   # per-source parameters
     churning_heat_to = "oil"           # oil | paper002 (where the churning heat is booked)
     calibration = "preset"             # preset (<bearing>.calibration.toml if any) | none
+    ball_rolling_resistance = "none"   # none | harris | { model = "harris", reduction =
+                                       #   "thermal_starvation" } (EHL rolling force in the
+                                       #   ball balance; adds ehl_rolling_resistance)
 
     [network]
     template = "four_node_paper002"
@@ -275,6 +278,8 @@ def _check_model_types(models: Mapping[str, Any]) -> None:
                                  "a heat-source name or an array of names")
         elif key == "heat_source_options":
             _table("models.heat_source_options", value)
+        elif key == "ball_rolling_resistance" and isinstance(value, Mapping):
+            continue  # { model = ..., reduction = ... }: checked with the model names
         elif not isinstance(value, str):
             raise InputError(f"models.{key}", value, "a model name (a string)")
 

@@ -82,6 +82,16 @@ def check_model_names(scene: Scene) -> None:
     target = models.get("churning_heat_to", "oil")
     if target not in ("oil", "paper002"):
         raise UnknownNameError("models.churning_heat_to", target, ("oil", "paper002"))
+    from .simulation_chain import ball_rolling_resistance
+
+    if ball_rolling_resistance(scene)[0] != "none" and "heat_sources" in models:
+        named = [sources] if isinstance(sources, str) else list(sources)
+        if "ehl_rolling_resistance" not in named:
+            # the solver would balance a force whose heat no source books: the energy
+            # audit would miss it
+            raise InputError("models.heat_sources", named,
+                             "a list with ehl_rolling_resistance when ball_rolling_resistance "
+                             "is on (the source books the rolling force's heat)")
 
 
 def check_measured_file(scene: Scene) -> None:

@@ -44,6 +44,7 @@ public names are importable from here.
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 import time
 import warnings
@@ -90,6 +91,7 @@ from .simulation_chain import (
     ChainLink,
     _needs,
     _rib_friction_unavailable,
+    ball_rolling_resistance,
     check_film_model,
     film_kinematics_options,
     heat_source_names,
@@ -156,6 +158,10 @@ class Simulation:
                                                 is_ball))
             if is_ball:
                 params, b, note = _apply_calibration(b, spec, scene)
+                rr_model, rr_reduction = ball_rolling_resistance(scene)
+                if rr_model != "none":
+                    params = dataclasses.replace(params, rolling_resistance=rr_model,
+                                                 rolling_resistance_reduction=rr_reduction)
                 opts["params"] = params
                 if note and note not in self.notes:
                     self.notes.append(note)

@@ -19,7 +19,7 @@ from .scene import Scene
 
 #: The keys a scene's ``[models]`` table accepts.
 MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
-                        "churning_heat_to", "calibration"})
+                        "churning_heat_to", "calibration", "ball_rolling_resistance"})
 BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
                 "cage_guide", "pocket_friction")
 ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
@@ -47,12 +47,51 @@ def _needs(scene: Scene) -> dict[str, bool]:
             "transient": thermal and scene.outputs.mode == "transient"}
 
 
+def ball_rolling_resistance(scene: Scene) -> tuple[str, str]:
+    """``[models] ball_rolling_resistance`` as (model, reduction), checked.
+
+    A name of :data:`thermobearing.rolling_resistance.MODELS` (reduction "none") or a table
+    ``{ model = "harris", reduction = "thermal_starvation" }`` (reductions
+    :data:`thermobearing.rolling_resistance.REDUCTIONS`). Default ("none", "none"): ball
+    bearings run without EHL rolling resistance (the paper 002 force models). Errors name
+    the field, the value and the allowed names.
+    """
+    from .rolling_resistance import MODELS, REDUCTIONS
+
+    field = "models.ball_rolling_resistance"
+    raw = scene.models.get("ball_rolling_resistance", "none")
+    if isinstance(raw, str):
+        model, reduction = raw, "none"
+    elif isinstance(raw, Mapping):
+        unknown = sorted(set(raw) - {"model", "reduction"})
+        if unknown:
+            raise InputError(f"{field}.{unknown[0]}", raw[unknown[0]],
+                             "the keys 'model' and 'reduction'")
+        model = raw.get("model", "harris")
+        reduction = raw.get("reduction", "none")
+    else:
+        raise InputError(field, raw, "a model name (" + ", ".join(MODELS) + ") or a table "
+                         "{ model = ..., reduction = ... }")
+    if model not in MODELS:
+        raise UnknownNameError(f"{field}.model" if isinstance(raw, Mapping) else field,
+                               model, MODELS)
+    if reduction not in REDUCTIONS:
+        raise UnknownNameError(f"{field}.reduction", reduction, REDUCTIONS)
+    if model != "none" and scene.models.get("kinematics", "skidding") == "none":
+        raise InputError(field, model, "'none' with kinematics = \"none\" (the global "
+                         "friction model has no contacts to put a rolling force on)")
+    return str(model), str(reduction)
+
+
 def heat_source_names(scene: Scene, is_ball: bool) -> tuple[str, ...]:
-    """Heat sources of the scene (``[models] heat_sources``) or the defaults per type."""
+    """Heat sources of the scene (``[models] heat_sources``) or the defaults per type
+    (ball bearings add ``ehl_rolling_resistance`` when ``ball_rolling_resistance`` is on)."""
     names = scene.models.get("heat_sources")
     if names is None:
         if scene.models.get("kinematics") == "none":
             return ("global_friction",)
+        if is_ball and ball_rolling_resistance(scene)[0] != "none":
+            return (*BALL_SOURCES, "ehl_rolling_resistance")
         return BALL_SOURCES if is_ball else ROLLER_SOURCES
     if isinstance(names, str):
         names = [names]
