@@ -376,9 +376,12 @@ def skf_four_term(
     c0 = static_load_rating if static_load_rating is not None else env.static_load_rating
     g_rr, g_sl = skf_geometry_variables(env.kind, series, dm, radial_load, axial_load, n, c0)
 
-    phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
-    k_rs = 6e-8 if lubrication in ("grease", "oil_air") else 3e-8
-    phi_rs = math.exp(-k_rs * nu * n * (d + D) * math.sqrt(kz / (2.0 * (D - d))))
+    from .rolling_resistance import skf_inlet_shear_factor, skf_replenishment_factor
+
+    phi_ish = skf_inlet_shear_factor(speed, 0.5 * (env.bore + env.outer_diameter),
+                                     kinematic_viscosity)
+    phi_rs = skf_replenishment_factor(speed, kinematic_viscosity, env.bore,
+                                      env.outer_diameter, kz, lubrication)
     m_rr = phi_ish * phi_rs * g_rr * (nu * n) ** 0.6
 
     phi_bl = math.exp(-2.6e-8 * (n * nu) ** 1.4 * dm)
