@@ -259,6 +259,14 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
     if guess is not None and guess.ball_x.size == Z:
         bx, br = guess.ball_x.copy(), guess.ball_r.copy()
         u = np.array([guess.delta_a, guess.delta_r])
+    elif radial_load == 0.0 and axial_load == 0.0:
+        # no external load: the known solution, rings centred and every ball seated in the
+        # outer groove by its centrifugal force alone (:func:`centred_seat`). The rigid-pair
+        # start put the deep-groove ring at its axial touching position (the zero of
+        # delta_a), where round-off loads every ball pinched between both arcs with ~1e-20 N:
+        # the catalogue 6206 at 0.5-5 r/min then stopped at a residual of about the
+        # centrifugal force (5e-8 N at 0.5 r/min)
+        bx, br, u = centred_seat(arcs, Z, m * wm**2)
     else:
         bx, br, u = rigid_pair_guess(bearing, arcs, axial_load, radial_load, psi, m * wm**2)
     c = np.array([D, 2.0 * Rm, arcs.effective_modulus, m, J, gam0, alpha0,
@@ -374,6 +382,45 @@ def _load_continuation(bearing, radial_load: float, axial_load: float, inner_spe
             continue
         scale = nxt
     return guess if scale == 1.0 else None
+
+
+def centred_seat(arcs: ArcSet, n_balls: int, centrifugal_per_radius) -> tuple:
+    """The load distribution without external load: the inner ring centred on the outer
+    ring (its arc centres moved axially onto the mean axial position of the outer ones, no
+    radial displacement) and every ball in the groove bottom of the outer ring, pressed
+    into it by its centrifugal force ``F_c = m omega_m^2 r_b`` alone (Harris & Kotzalas 2007
+    vol. 2 eq. 3.4) through the Hertz law ``Q = K delta^1.5`` of the outer arcs (one arc:
+    Q = F_c at contact angle 0; a gothic arch: two symmetric arcs at the angle theta of the
+    seat, 2 Q cos(theta) = F_c). A radial clearance >= 0 keeps every ball off the inner ring
+    (its gap is P_d/2 plus the outer approach), so this is the equilibrium: the ring carries
+    nothing and each ball's radial balance is solved here by fixed-point iteration on
+    r_b (contracting: d F_c / d r_b = m omega_m^2 is ~1e-9 of the contact stiffness).
+
+    ``n_balls`` : Z; ``centrifugal_per_radius`` : m omega_m^2 [N/m], scalar or (Z,). Returns
+    (ball_x [m], ball_r [m], (delta_a, delta_r) [m]) as :func:`rigid_pair_guess`."""
+    tab = _arc_table(arcs)
+    inner = arcs.ring == INNER
+    outer = np.flatnonzero(~inner)
+    u = np.array([float(np.mean(arcs.centre_x[outer]) - np.mean(arcs.centre_x[inner])), 0.0])
+    D, dm, ep = arcs.ball_diameter, 2.0 * arcs.pitch_radius, arcs.effective_modulus
+    k0 = outer[0]
+    half = 0.5 * float(np.ptp(arcs.centre_x[outer]))     # 0 for one outer arc
+    lo0 = float(arcs.free_distance[k0])
+    theta = math.asin(min(half / lo0, 1.0))
+    K = float(_arc_stiffness_nb(theta, -1.0, tab[T_RY, k0], D, dm, ep))
+    n_arcs = outer.size
+    mw2 = np.broadcast_to(np.asarray(centrifugal_per_radius, float), (int(n_balls),))
+    cr = float(arcs.centre_r[k0])
+    bx = np.full(mw2.shape, float(np.mean(arcs.centre_x[outer])))
+    br = np.empty(mw2.shape)
+    for j, c in enumerate(mw2):
+        r = arcs.pitch_radius
+        for _ in range(4):
+            q = c * r / (n_arcs * math.cos(theta))   # load of each outer arc [N]
+            lo = lo0 + (q / K) ** (2.0 / 3.0)
+            r = cr + math.sqrt(max(lo * lo - half * half, 0.0))
+        br[j] = r
+    return bx, br, u
 
 
 def rigid_pair_guess(bearing, arcs: ArcSet, axial_load: float, radial_load: float,

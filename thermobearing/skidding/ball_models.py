@@ -148,6 +148,37 @@ def heat_context_options(bearing, supply, speed: float, params: BallParameters,
     return out
 
 
+def finite_pressure_limit(lubricant, temperature: float, p_max: float) -> float:
+    """``p_max`` [Pa] if the lubricant's eta(T, p) is finite up to it, else the largest
+    pressure below it where it is (bisection to 1e-9 of ``p_max``, on the finite side).
+    The pressure-viscosity laws refuse an overflowing pressure with an
+    :class:`~thermobearing.errors.InputError` naming it (Roelands at eta0 of a few hundred
+    Pa s: ``exp`` of more than 709); that pressure is not an operating state, only the end
+    of the range a table may cover. Units: Pa, K."""
+    def finite(p: float) -> bool:
+        try:
+            with np.errstate(over="ignore"):
+                v = float(lubricant.dynamic_viscosity(temperature, p))
+        except InputError:
+            return False
+        return math.isfinite(v)
+
+    if finite(p_max):
+        return float(p_max)
+    lo, hi = 0.0, float(p_max)
+    if not finite(lo):
+        raise InputError("temperature", f"{temperature:g} K",
+                         "a temperature at which the lubricant's viscosity is finite at "
+                         "atmospheric pressure")
+    while hi - lo > 1e-9 * p_max:
+        mid = 0.5 * (lo + hi)
+        if finite(mid):
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
 class IsothermalViscosity:
     """The lubricant's eta(T, p) at one temperature, tabulated in p for speed.
 
@@ -158,11 +189,19 @@ class IsothermalViscosity:
     grid fall back to the lubricant. The traction law evaluates eta at every quadrature
     node of every contact in every Newton residual, which otherwise dominates the solver's
     run time.
+
+    In cold oil the law overflows below 5 GPa (ISO VG100 at -37 degC, still liquid by
+    :func:`~thermobearing.lubricant_properties.check_liquid_temperature`: Roelands eta is
+    1e49 Pa s at 1 GPa and infinite from 4.46 GPa); the grid then ends at the largest
+    pressure where eta is finite (:func:`finite_pressure_limit`), so an operating point whose
+    contacts stay below it is solved, and a contact beyond it falls back to the lubricant,
+    which refuses naming the pressure.
     """
 
     def __init__(self, lubricant, temperature: float, p_max: float = 5.0e9, n: int = 4001):
         self.lubricant = lubricant
         self.temperature = float(temperature)
+        p_max = finite_pressure_limit(lubricant, self.temperature, p_max)
         self._p = np.linspace(0.0, p_max, n)
         self._ln = np.log(np.asarray(lubricant.dynamic_viscosity(self.temperature, self._p),
                                      float))

@@ -300,9 +300,11 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 break
             polished = True
         if give_up is not None and it >= give_up[0] and nrm > give_up[1] * nrm0:
-            raise ConvergenceError("skidding.ball", nrm, f"slow progress: residual still "
+            err = ConvergenceError("skidding.ball", nrm, f"slow progress: residual still "
                                    f"{nrm / nrm0:.2f} x its start after {it} iterations",
                                    {"iteration": it, "cage_speed": G[2]})
+            err.iterate = (X, G, nrm)     # for ball_seat.seated_newton (warm starts)
+            raise err
         it += 1
         stale = jac is not None
         if jac is None:
