@@ -20,7 +20,11 @@ The analysis lives in modules with one job each, re-exported here (the command-f
   (:func:`envelope_spectrum`, :func:`combine_envelope_spectra`, :func:`refine_peak`,
   :func:`spectral_peak`);
 * :mod:`thermobearing.signal_cage`: cage-speed estimation (:func:`estimate_cage_speed`, its
-  pipeline, :func:`cage_speed_ratio`, :func:`cage_slip`).
+  pipeline, :func:`cage_speed_ratio`, :func:`cage_slip`);
+* :mod:`thermobearing.signal_uncertainty`: standard uncertainty of a line frequency and of
+  the cage frequency combined from several lines;
+* :mod:`thermobearing.signal_checks`: the bearing's element count checked against the
+  spectrum.
 
 Conventions: frequencies in Hz; the cage speed ratio and the cage slip (paper 004 eq. 2) as
 defined in :mod:`thermobearing.signal_cage`.

@@ -26,8 +26,12 @@ Pipeline (:func:`estimate_cage_speed`)
    ball-pass line scores low).
 5. the best comb, corrected for octave errors (``2 f_c`` has a comb that is a subset of the
    true one, ``f_c / 2`` a superset: a move is made only when the teeth that one comb has
-   and the other lacks hold a line above the noise), is refined: each
-   line's frequency by Gaussian (log-parabolic) interpolation of the zero-padded Hann
+   and the other lacks hold a line above the noise, and a move to ``f / m`` is refused, a
+   move to ``m f`` made, when the harmonic family says so: the ball-pass fundamental Z f
+   more than ``BALL_PASS_FAMILY_DB`` below the line at m Z f while the cage line at m f is
+   there -- harmonics of equal impulses fall with order, so f is then a period-m response
+   of a cage at m f; a family leaning less than that is flagged ``ambiguous``), is refined:
+   each line's frequency by Gaussian (log-parabolic) interpolation of the zero-padded Hann
    spectrum (sub-bin), then ``f_c`` by weighted least squares over the detected lines.
 6. confidence: Fisher's combination of the per-line false-alarm probabilities, Bonferroni
    corrected for the number of independent candidates searched; ``detected`` only when
@@ -37,6 +41,10 @@ Pipeline (:func:`estimate_cage_speed`)
    is among them, and at least one strong line is away from every shaft harmonic ``m f_s``
    (a comb sitting only on shaft harmonics is a once-per-revolution signal). Otherwise the result is
    flagged not detected and carries no frequency (never a made-up one).
+7. standard uncertainty of f_c, CSR and slip (:mod:`thermobearing.signal_uncertainty`);
+   checks that say what the result rests on: the shaft frequency (an envelope line near
+   it that is no cage harmonic, or a pair of shaft sidebands), the element count Z
+   (:mod:`thermobearing.signal_checks`).
 
 Conventions: frequencies in Hz, cage speed ratio ``CSR = f_cage / f_shaft`` (outer ring
 fixed), cage slip ``s_c = 1 - CSR / CSR_th`` (paper 004 eq. 2; negative = over-skidding).
@@ -51,6 +59,7 @@ import numpy as np
 from scipy.special import chdtrc
 
 from .errors import InputError
+from .signal_checks import BallCountCheck, ball_count_check
 from .signal_envelope import (
     EnvelopeSpectrum,
     combine_envelope_spectra,
@@ -59,6 +68,7 @@ from .signal_envelope import (
 )
 from .signal_input import check_signal
 from .signal_kurtogram import kurtogram_bands
+from .signal_uncertainty import CombinedFrequency, combined_frequency_std, line_frequency_std
 
 #: a sub-multiple f/m of the cage frequency whose own comb lines (those that are no line of
 #: the comb at f) all stand more than this many dB below the strongest line of f's comb is
@@ -66,6 +76,17 @@ from .signal_kurtogram import kurtogram_bands
 #: at CSR 0.4527 carries a full comb at f_c / 2, 15 dB below the ball-pass line Z f_c in
 #: its pooled envelope spectrum; a real cage's own lines hold its ball-pass fundamental)
 SUBHARMONIC_DB = 10.0
+#: a cage reading f whose ball-pass fundamental Z f stands more than this many dB below the
+#: line at m Z f (m = 2, 3; the ball-pass fundamental of a cage at m f) is taken as a
+#: period-m response of a cage at m f. Harmonics of equal impulses fall with order: with
+#: the true reading, 2 Z f stood 0.6-8.8 dB below Z f on every QJ1044 model record (0-5 um
+#: oversize ball, CSR 0.18-0.51) and impulse train measured (line levels, ``level``); the
+#: half-speed readings of the model records lean 15-91 dB, those of an impulse train whose
+#: ball 0 strikes 4 times harder on every other revolution 5.4-6.5 dB
+BALL_PASS_FAMILY_DB = 3.0
+#: ... and when it stands above it by less than BALL_PASS_FAMILY_DB, the reading is kept and
+#: flagged ambiguous (the same train with ball 0 6 or 9 times stronger: 0.4-3.1 dB)
+BALL_PASS_LEAN_DB = 0.0
 #: a cage comb whose own lines stand more than this many dB (but less than SUBHARMONIC_DB)
 #: below the comb at twice (three times) its frequency is kept with a note naming the other
 #: reading (the QJ1044 model skidding at CSR 0.44 puts its half-speed comb 8 dB below)
@@ -133,7 +154,22 @@ class CageSpeedEstimate:
         no envelope line within ``SHAFT_CONFIRM`` of it (plus 1/4 bin) and no pair of shaft
         sidebands f_s -+ f_c confirms it (the CSR then scales with a speed given in the
         wrong unit, at full confidence); a sub-multiple comb read as a subharmonic
-        (``SUBHARMONIC_DB``), with the CSR and slip it would give.
+        (``SUBHARMONIC_DB``, ``BALL_PASS_FAMILY_DB``), with the CSR and slip it would give;
+        an ``AMBIGUOUS:`` note naming the other reading when the harmonic family does not
+        decide between f_c and 2 f_c / 3 f_c.
+    ambiguous : an AMBIGUOUS note was given.
+    cage_frequency_uncertainty [Hz], csr_uncertainty, slip_uncertainty [-]: standard
+        uncertainty of the frequency measurement (:mod:`thermobearing.signal_uncertainty`:
+        each line's error from its SNR and the record length, combined over the lines,
+        times their Birge ratio when above 1); the shaft speed's own error is not in it.
+        frequency_fit : the combination (lines used, Birge ratio).
+    shaft_confirmed : an envelope line within ``SHAFT_CONFIRM`` of the shaft frequency that
+        is no harmonic of the cage frequency, or a pair of shaft sidebands, confirms the
+        speed given (else a note says the CSR rests on it alone).
+    ball_count : the bearing's element count Z checked against the spectrum
+        (:func:`thermobearing.signal_checks.ball_count_check`: "consistent", "contradicted",
+        "doubtful" or "not checked"; a note unless consistent, "BEARING: ..." when the
+        spectrum contradicts or doubts Z).
     """
 
     detected: bool
@@ -151,6 +187,13 @@ class CageSpeedEstimate:
     spectrum: EnvelopeSpectrum = field(repr=False)
     reason: str = ""
     notes: tuple[str, ...] = ()
+    ambiguous: bool = False
+    cage_frequency_uncertainty: float | None = None
+    csr_uncertainty: float | None = None
+    slip_uncertainty: float | None = None
+    frequency_fit: CombinedFrequency | None = None
+    shaft_confirmed: bool = False
+    ball_count: BallCountCheck | None = None
 
 
 def _comb(n_balls: int, cage_h: int, bp_h: int, shaft_h: int) -> list[tuple[str, int, int]]:
@@ -262,12 +305,20 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
                                   e.band, e.resolution, e.padding, c.kurtosis)
                  for e, c in zip(parts, cells, strict=True)]
         es = combine_envelope_spectra(parts)
+    # line levels for comparisons between lines (harmonic family, element count): each
+    # band's power over one level per band (the median of its local noise floor), not over
+    # the local floor, which lines crowd at low frequency (an impulse train at CSR 0.18:
+    # the floor under Z f_c 3.8 times that under 2 Z f_c, turning a 0.4 dB fall in power
+    # into a 3.5 dB rise)
+    level = (np.mean([e.power / np.median(e.noise_floor) for e in parts], axis=0)
+             if band is None else es.power / np.median(es.noise_floor))
     df = es.resolution
     r = es.normalised
     step = es.frequency[1] - es.frequency[0]
     # max-filter of one native bin so that comb teeth tolerate the candidate grid step
     w = max(1, int(round(0.5 * df / step)))
     rmax = _max_filter(r, w)
+    lmax = _max_filter(level, w)
     kmax = max(abs(k) for _, k, _ in comb)
     ks = np.array([k for _, k, _ in comb], dtype=float)
     ns = np.array([n for _, _, n in comb], dtype=float)
@@ -322,6 +373,44 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         top = float(np.max(np.interp(tb, es.frequency, rmax))) if tb.size else 0.0
         return own_power(a, b) < 10.0 ** (-SUBHARMONIC_DB / 10.0) * top
 
+    def line_power(f: float) -> float:
+        """Normalised power of the line at ``f`` [Hz]: its significance (0 outside the
+        spectrum)."""
+        return float(np.interp(f, es.frequency, rmax)) if 2 * df < f < f_end else 0.0
+
+    def line_level(f: float) -> float:
+        """Level of the line at ``f`` [Hz] for comparisons with other lines (``level``;
+        1e-300 outside the spectrum)."""
+        return float(np.interp(f, es.frequency, lmax)) if 2 * df < f < f_end else 1e-300
+
+    def bp_power(fc: float) -> float:
+        """Normalised power at the ball-pass fundamental Z f of a cage at ``fc``."""
+        return line_power(n_balls * fc)
+
+    def bp_lean(a: float, m: int) -> float | None:
+        """How far [dB] the harmonic family leans from a cage at ``a`` to one at m a: the
+        line at m Z a (ball-pass fundamental of m a, m-th ball-pass harmonic of a) over the
+        line at Z a, when the first stands above the noise and the cage lines agree: the
+        line at m a (cage fundamental of m a) above the noise and not more than
+        ``AMBIGUOUS_DB`` below the one at a (a period-m response is not stronger than the
+        motion it divides; a big ball striking harder on every other revolution puts equal
+        lines at f_c / 2 and f_c). None
+        when the family does not lean that way. Without cage lines the ball pass alone
+        does not decide: a smooth modulation at the ball pass puts its strongest envelope
+        line at 2 Z f_c (the QJ1044 model without an off-size ball at CSR 0.28: 40 f_c
+        more than 6 dB above 20 f_c, no cage line)."""
+        if bp_power(m * a) <= strict or line_power(m * a) <= strict:
+            return None
+        if line_level(m * a) < line_level(a) * 10.0 ** (-AMBIGUOUS_DB / 10):
+            return None
+        return 10.0 * math.log10(line_level(m * n_balls * a) / line_level(n_balls * a))
+
+    def bp_says_up(a: float, m: int) -> float | None:
+        """The harmonic family contradicts a cage at ``a`` in favour of m a: it leans that
+        way (:func:`bp_lean`) by more than ``BALL_PASS_FAMILY_DB``. The dB or None."""
+        db = bp_lean(a, m)
+        return db if db is not None and db > BALL_PASS_FAMILY_DB else None
+
     cand = np.arange(f_lo, f_hi, 0.5 * df / kmax)
     score = score_at(cand)
     f0 = float(cand[int(np.argmax(score))])
@@ -330,12 +419,18 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     # are empty or a subharmonic of m f's comb; move to f/m when its own teeth hold a line
     # that is no subharmonic and it scores comparably. A sub-multiple whose own lines are
     # there but dominated is kept as an alternative (reported, not chosen).
+    # The ball-pass family decides first where it is visible: a cage at f has its ball pass
+    # at Z f, and the squared envelope of equal impulses has harmonics that fall with order
+    # (the spectrum of one impulse's squared envelope is low-pass), so a line at m Z f far
+    # above the one at Z f is the ball pass of a cage at m f (f's own lines a period-m
+    # response of it: the QJ1044 model with one ball 5 um oversize at CSR 0.44).
     alternative = None
     for _ in range(4):
         moved = False
         for m in (2, 3):
             up = f0 * m
-            if up < f_hi and (not specific_evidence(f0, up) or dominated(f0, up)):
+            if up < f_hi and (not specific_evidence(f0, up) or dominated(f0, up)
+                              or bp_says_up(f0, m) is not None):
                 if specific_evidence(f0, up):
                     alternative = (f0, m)
                 f0, moved = up, True
@@ -343,7 +438,7 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
             down = f0 / m
             if down > f_lo and specific_evidence(down, f0) and (
                     score_at(np.array([down]))[0] >= 0.7 * score_at(np.array([f0]))[0]):
-                if dominated(down, f0):
+                if dominated(down, f0) or bp_says_up(down, m) is not None:
                     alternative = (down, m)
                     continue
                 f0, moved = down, True
@@ -383,8 +478,17 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         keep = np.abs(kk * (est - fc)) <= 0.5 * df
         if keep.any() and not keep.all():
             fc = float(np.sum(wts[keep] * est[keep]) / np.sum(wts[keep]))
+        if not keep.any():
+            keep[:] = True
+        # standard uncertainty: each line's Cramer-Rao error over |k|, the scatter between
+        # the lines (Birge ratio) when larger (signal_uncertainty)
+        sig = np.array([line_frequency_std(1.0 + _line_snr(es, fm), duration) / abs(k)
+                        for k, _, fm, _, _ in used])
+        ok = keep & np.isfinite(sig)
+        unc = (combined_frequency_std(est[ok], sig[ok], wts[ok]) if ok.any() else None)
     else:
         fc = f0
+        unc = None
     # significance: Fisher's method over all comb lines, Bonferroni over candidates
     pvals = np.array([min(1.0, n_indep_line * math.exp(-min(snr, 700.0)))
                       for *_, snr in entries])
@@ -409,14 +513,21 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         lines.append(DetectedLine(kind, (k, n), k * fc + n * shaft_frequency,
                                   fm if snr > thresh else math.nan, snr, snr > thresh))
     # the shaft line itself (information only); a peak in its +-2 % window that a line of
-    # the cage comb explains (e.g. 2 f_c = 29.5 Hz beside f_s = 30.2 Hz at CSR 0.488) is
-    # that line, not the shaft
+    # the cage comb explains (e.g. 2 f_c = 29.5 Hz beside f_s = 30.2 Hz at CSR 0.488), or
+    # any harmonic k f_c of the cage frequency (an off-size ball puts all of them in the
+    # envelope: with f_s given as 48.1 Hz for a 30 Hz shaft, 4 f_c = 48.0 Hz 'confirmed'
+    # it), is that line, not the shaft
     shaft_meas = None
+    shaft_harmonic = None
     if shaft_frequency < es.frequency[-1] - df:
         fm, snr = refine_peak(es, shaft_frequency, 0.02 * shaft_frequency + df)
         comb_line = any(abs(fm - (k * fc + n * shaft_frequency)) <= df for k, n, *_ in used)
+        k_h = max(1, round(fm / fc)) if math.isfinite(fm) else 0
         if snr > math.log(n_indep_line / alpha) and not comb_line:
-            shaft_meas = fm
+            if k_h and abs(fm - k_h * fc) <= df:
+                shaft_harmonic = (fm, k_h)
+            else:
+                shaft_meas = fm
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
                                   fm if shaft_meas else math.nan, snr, shaft_meas is not None))
     detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary and off
@@ -436,22 +547,49 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
         top = float(np.max(np.interp(teeth(fc), es.frequency, rmax)))
         notes.append(_subharmonic_note(fc, alt, m, 10.0 * math.log10(
             top / max(own_power(alt, fc), 1e-300)), float(shaft_frequency),
-            float(csr_theoretical)))
+            float(csr_theoretical), bp_says_up(alt, m), int(n_balls)))
+    ambiguous = False
     for m in (2, 3):  # the other reading: fc's own lines a subharmonic of a cage at m fc
         up = m * fc
         tu = teeth(up)
+        bp_db = bp_says_up(fc, m)
+        if bp_db is not None and not up < f_hi:
+            ambiguous = True
+            notes.append(
+                f"AMBIGUOUS: the ball-pass line of a cage at {m} x {fc:.4f} Hz = "
+                f"{up:.4f} Hz ({m * n_balls} x {fc:.4f} Hz) stands {bp_db:.0f} dB above the "
+                f"ball-pass line {n_balls} x "
+                f"{fc:.4f} Hz of the reading: the cage may turn at {up:.4f} Hz (CSR "
+                f"{up / shaft_frequency:.4f}), outside the range searched (widen --search)")
+            break
         if not up < f_hi or not tu.size:
             continue
         top = float(np.max(np.interp(tu, es.frequency, rmax)))
         own = own_power(fc, up)
-        if top > strict and own > 0 and 10.0 * math.log10(top / own) > AMBIGUOUS_DB:
+        own_db = 10.0 * math.log10(top / own) if own > 0 else -math.inf
+        # the ball-pass family leans to m fc when Z fc is weaker than m Z fc (harmonics of
+        # equal impulses fall with order) without deciding (BALL_PASS_FAMILY_DB)
+        lean = bp_lean(fc, m)
+        lean_db = lean if lean is not None else -math.inf
+        if top > strict and own > 0 and (own_db > AMBIGUOUS_DB or lean_db > BALL_PASS_LEAN_DB):
+            why = []
+            if own_db > AMBIGUOUS_DB:
+                why.append(f"the lines that only a cage at {fc:.4f} Hz explains stand "
+                           f"{own_db:.0f} dB below the strongest line of the comb at {m} x = "
+                           f"{up:.4f} Hz")
+            if lean_db > BALL_PASS_LEAN_DB:
+                why.append(f"the ball-pass fundamental {n_balls} x {fc:.4f} Hz stands "
+                           f"{lean_db:.1f} dB below the line at {m * n_balls} x {fc:.4f} Hz "
+                           f"(the ball-pass line of a cage at {up:.4f} Hz)")
             notes.append(
-                f"the lines that only a cage at {fc:.4f} Hz explains stand "
-                f"{10.0 * math.log10(top / own):.0f} dB below the strongest line of the comb "
-                f"at {m} x = {up:.4f} Hz: they may be a subharmonic (a period-{m} response) of "
-                f"a cage at {up:.4f} Hz (CSR {up / shaft_frequency:.4f}, slip "
-                f"{100 * (1 - up / shaft_frequency / csr_theoretical):+.1f} %); they are "
-                f"read as the cage below {SUBHARMONIC_DB:g} dB")
+                f"AMBIGUOUS: {'; '.join(why)}: the lines at {fc:.4f} Hz may be a subharmonic "
+                f"(a period-{m} response) of a cage at {up:.4f} Hz (CSR "
+                f"{up / shaft_frequency:.4f}, slip "
+                f"{100 * (1 - up / shaft_frequency / csr_theoretical):+.1f} %); they are read "
+                f"as the cage while their own lines stand less than {SUBHARMONIC_DB:g} dB "
+                f"below and the ball-pass fundamental less than {BALL_PASS_FAMILY_DB:g} dB "
+                "below")
+            ambiguous = True
             break
     # the first shaft sidebands confirm the shaft frequency as a pair f_s -+ f_c (one line
     # alone can be another component that happens to sit there), neither of them a harmonic
@@ -461,11 +599,34 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
              if n == 1 and abs((fm - n * shaft_frequency) - k * fc) <= 0.5 * df
              and abs(fm - fc * round(fm / fc)) > 0.5 * df}
     sidebands = any((-k, n) in pairs for k, n in pairs)
-    notes += _shaft_notes(float(shaft_frequency), shaft_meas, sidebands, df, fc)
+    # the bearing's element count against the spectrum (signal_checks)
+    independent = any(kind in ("cage", "sideband") and snr > strict and math.isfinite(fm)
+                      and abs(fm - (k * fc + n * shaft_frequency)) <= 0.5 * df
+                      for kind, k, n, fm, snr in entries)
+    def peak_power(f: float) -> float:
+        """Normalised power of a line peaking within half a bin of ``f`` (0 without)."""
+        if not 2 * df < f < f_end:
+            return 0.0
+        fm, snr = refine_peak(es, f, 0.5 * df)
+        return snr if math.isfinite(fm) and abs(fm - f) <= 0.5 * df else 0.0
+
+    z_check = ball_count_check(peak_power, line_level, fc, int(n_balls),
+                               float(shaft_frequency), df, strict, f_end, (f_lo, f_hi),
+                               independent)
+    if z_check.status != "consistent":
+        notes.append(("BEARING: " if z_check.status in ("contradicted", "doubtful") else "")
+                     + z_check.message)
+    shaft_notes = _shaft_notes(float(shaft_frequency), shaft_meas, sidebands, df, fc,
+                               shaft_harmonic)
+    notes += shaft_notes
+    u_fc = unc.std if unc is not None else None
+    u_csr = u_fc / float(shaft_frequency) if u_fc is not None else None
     return CageSpeedEstimate(True, fc, csr, cage_slip(csr, csr_theoretical), n_balls * fc,
                              float(shaft_frequency), shaft_meas, float(csr_theoretical),
                              float(confidence), p_fa, consistency, tuple(lines), es, "",
-                             tuple(notes))
+                             tuple(notes), ambiguous, u_fc, u_csr,
+                             u_csr / float(csr_theoretical) if u_csr is not None else None,
+                             unc, not shaft_notes, z_check)
 
 
 #: a shaft line within this fraction (plus a quarter bin: the line is refined below a bin)
@@ -474,27 +635,42 @@ SHAFT_CONFIRM = 0.005
 
 
 def _subharmonic_note(fc: float, alt: float, m: int, db: float, fs_hz: float,
-                      csr_th: float) -> str:
-    """What the printout says about a sub-multiple comb taken as a subharmonic."""
+                      csr_th: float, bp_db: float | None = None, n_balls: int = 0) -> str:
+    """What the printout says about a sub-multiple comb taken as a subharmonic: why (its own
+    lines far below the comb, or its ball-pass fundamental far below the ball-pass line)."""
     csr_alt = alt / fs_hz
+    why = (f"the strongest stands {db:.0f} dB below the comb's strongest line"
+           if db > SUBHARMONIC_DB else "")
+    if bp_db is not None:
+        why += ("; " if why else "") + (
+            f"the ball-pass fundamental a cage at {alt:.4f} Hz would have ({n_balls} x "
+            f"{alt:.4f} = {n_balls * alt:.3f} Hz) stands {bp_db:.0f} dB below the ball-pass "
+            f"line {n_balls} x {fc:.4f} = {n_balls * fc:.3f} Hz")
     return (f"the record also holds lines at multiples of {alt:.4f} Hz (1/{m} of the cage "
-            f"frequency) that are no line of the cage comb; the strongest stands {db:.0f} dB "
-            f"below the comb's strongest line, so they are read as a subharmonic (a "
-            f"period-{m} response), not as a cage at {alt:.4f} Hz (that would be CSR "
-            f"{csr_alt:.4f}, slip {100 * (1 - csr_alt / csr_th):+.1f} %)")
+            f"frequency) that are no line of the cage comb; {why}, so they are read as a "
+            f"subharmonic (a period-{m} response), not as a cage at {alt:.4f} Hz (that would "
+            f"be CSR {csr_alt:.4f}, slip {100 * (1 - csr_alt / csr_th):+.1f} %)")
 
 
 def _shaft_notes(fs_hz: float, measured: float | None, sidebands: bool, df: float,
-                 fc: float) -> list[str]:
+                 fc: float, harmonic: tuple[float, int] | None = None) -> list[str]:
     """A note when nothing in the record confirms the given shaft frequency (CSR =
     f_cage / f_shaft then rests on it alone: a speed in the wrong unit scales the CSR and
-    leaves the confidence of the cage comb untouched)."""
+    leaves the confidence of the cage comb untouched). ``harmonic``: (frequency, k) of a
+    line near f_s that is the k-th cage harmonic (it confirms nothing)."""
     if sidebands or (measured is not None
                      and abs(measured - fs_hz) <= SHAFT_CONFIRM * fs_hz + 0.25 * df):
         return []
-    seen = ("no envelope line near it" if measured is None else
-            f"the envelope line nearest it is at {measured:.4f} Hz, "
-            f"{100 * (measured / fs_hz - 1):+.2f} %, more than {100 * SHAFT_CONFIRM:g} % off")
+    if harmonic is not None:
+        fh, k = harmonic
+        seen = (f"the envelope line near it, {fh:.4f} Hz, is the cage harmonic {k} x "
+                f"{fc:.4f} Hz (within a bin, {df:.3g} Hz), so it cannot tell the shaft")
+    elif measured is None:
+        seen = "no envelope line near it"
+    else:
+        seen = (f"the envelope line nearest it is at {measured:.4f} Hz, "
+                f"{100 * (measured / fs_hz - 1):+.2f} %, more than {100 * SHAFT_CONFIRM:g} % "
+                "off")
     return [f"the record does not confirm the shaft frequency {fs_hz:.4g} Hz ({seen}; no "
             f"pair of shaft sidebands f_s -+ f_cage): CSR = f_cage / f_shaft rests on the "
             f"speed given alone, and the confidence is that of the cage comb at {fc:.4f} Hz. "
@@ -519,6 +695,15 @@ def _kurtogram_rate(duration: float, f_min: float, bandwidth: float, fs: float) 
             if (k_lo + 1) * half <= rate / 2 and k_lo >= 1:
                 return rate
     return rate
+
+
+def _line_snr(es: EnvelopeSpectrum, frequency: float) -> float:
+    """Line power over the noise mean of the spectrum the line is read from, minus the
+    noise: ``R - 1`` of one band; for N pooled bands (``power`` = mean normalised power,
+    whose noise fluctuates N times less) ``N (mean - 1)``."""
+    p = float(np.interp(frequency, es.frequency, es.power if len(es.bands) > 1
+                        else es.normalised))
+    return max(len(es.bands), 1) * (p - 1.0)
 
 
 def _priority(kind: str, k: int) -> int:

@@ -258,8 +258,8 @@ def test_dead_channel_and_two_dimensional_npz_name_the_channel_option(tmp_path, 
 def test_an_ambiguous_half_speed_reading_names_the_other_cage_speed():
     """The QJ1044 model (one ball 5 um oversize) skidding at CSR 0.44: its comb at half the
     cage speed stands only 8-10 dB below the true one, inside what a real half-speed cage
-    could show, so the analyser reports CSR 0.22; the printout names the other reading
-    (CSR 0.4400) instead of leaving it unsaid. Measured limit, not a target."""
+    could show; the ball-pass family now decides for 0.44 (test_signal_family pins it). Were
+    the half-speed reading 0.22 kept, the printout must name the other one (CSR 0.4400)."""
     b = load_bearing("QJ1044")
     p = V.VibrationParameters.from_bearing(b, inner_ring_mass=20.0, support_damping=2000.0,
                                            contact_angle=b.contact_angle,

@@ -29,9 +29,12 @@ EXIT_NOT_DETECTED = 3
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.epilog = ("exit status: 0 cage line detected (CSR, slip and confidence printed; "
-                     "'note' lines say what the result rests on: a shaft frequency the record "
-                     "does not confirm, lines read as a subharmonic), 3 not detected (the "
+    parser.epilog = ("exit status: 0 cage line detected (CSR and slip with their standard "
+                     "uncertainty, confidence, the element count checked against the "
+                     "spectrum; 'note' lines say what the result rests on: a shaft frequency "
+                     "the record does not confirm, lines read as a subharmonic, an AMBIGUOUS "
+                     "reading, a BEARING whose element count the spectrum contradicts), "
+                     "3 not detected (the "
                      "reason printed, no frequency), 1 bad input. "
                      "Example: thermobearing cage-speed rig.csv --rpm 1800 --bearing QJ1044")
     parser.add_argument("file", help="acceleration record: .csv/.tsv/.txt as a DAQ exports it "
@@ -229,7 +232,16 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
         "measured_shaft_frequency_hz": est.measured_shaft_frequency,
         "csr_theoretical": est.csr_theoretical, "detected": est.detected,
         "cage_frequency_hz": est.cage_frequency, "csr": est.csr, "slip": est.slip,
-        "ball_pass_frequency_hz": est.ball_pass_frequency, "confidence": est.confidence,
+        "ball_pass_frequency_hz": est.ball_pass_frequency,
+        "cage_frequency_uncertainty_hz": est.cage_frequency_uncertainty,
+        "csr_uncertainty": est.csr_uncertainty, "slip_uncertainty": est.slip_uncertainty,
+        "uncertainty_birge_ratio": (est.frequency_fit.birge if est.frequency_fit is not None
+                                    else None),
+        "ambiguous": est.ambiguous, "shaft_confirmed": est.shaft_confirmed,
+        "ball_count_check": est.ball_count.status if est.ball_count else None,
+        "ball_count_in_spectrum": est.ball_count.spectrum_count if est.ball_count else None,
+        "ball_count_message": est.ball_count.message if est.ball_count else None,
+        "confidence": est.confidence,
         "false_alarm_probability": est.false_alarm_probability,
         "bands_hz": list(est.spectrum.bands or (est.spectrum.band,)), "reason": est.reason,
         "lines": [{"kind": ln.kind, "order": list(ln.order), "expected_hz": ln.expected,
@@ -265,14 +277,29 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
               "its extreme values (input range of the DAQ?); the frequencies are still "
               "measured, amplitudes are not")
     if est.detected:
-        print(f"cage        {est.cage_frequency:.4f} Hz   "
+        u_fc, u_csr, u_slip = (est.cage_frequency_uncertainty, est.csr_uncertainty,
+                               est.slip_uncertainty)
+        print(f"cage        {est.cage_frequency:.4f} Hz{_pm(u_fc, ' Hz')}   "
               f"({element} pass {est.ball_pass_frequency:.3f} Hz = BPFO)")
-        print(f"CSR         {est.csr:.4f}")
+        print(f"CSR         {est.csr:.4f}{_pm(u_csr)}" + (
+            "  (+- one standard uncertainty of the frequency measurement, from the lines' "
+            "SNR and the record length; the shaft speed's own error is not in it)"
+            if u_csr is not None else ""))
         pct = 100 * est.slip if round(100 * est.slip, 2) != 0 else 0.0  # no "-0.00"
         kind = "pure rolling" if pct == 0 else "over-skidding" if pct < 0 else "skidding"
-        print(f"slip        {pct:+.2f} %  ({kind}; s = 1 - CSR/CSR_th)")
+        print(f"slip        {pct:+.2f} %{_pm(None if u_slip is None else 100 * u_slip, ' %')}"
+              f"  ({kind}; s = 1 - CSR/CSR_th)")
         print(f"confidence  {est.confidence:.3f}  (false-alarm probability "
-              f"{est.false_alarm_probability:.2g}, of the cage comb)")
+              f"{est.false_alarm_probability:.2g}, of the cage comb)"
+              + ("; AMBIGUOUS: see the notes" if est.ambiguous else ""))
+        bc = est.ball_count
+        if bc is not None:
+            z = est.ball_pass_frequency / est.cage_frequency
+            print(f"elements    Z = {z:.0f}: " + (
+                f"consistent with the spectrum ({bc.message})" if bc.status == "consistent"
+                else f"{bc.status.upper()} by the spectrum (see the note)"
+                if bc.status in ("contradicted", "doubtful")
+                else "not checked (see the note)"))
         for note in est.notes:
             print(f"note        {note}")
     else:
@@ -285,6 +312,11 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
               f"{'  *' if ln.detected else ''}")
     if plot:
         print(f"plot        {plot}")
+
+
+def _pm(u: float | None, unit: str = "") -> str:
+    """`` +- u`` with two significant digits (empty without an uncertainty)."""
+    return "" if u is None else f" +- {u:.2g}{unit}"
 
 
 def _peak_hold(f, a, points: int = 6000):
@@ -337,7 +369,8 @@ def _plot(est: S.CageSpeedEstimate, record: S.AccelerationRecord, path: Path,
     uniq = dict(zip(labels, handles, strict=True))
     if uniq:
         ax1.legend(uniq.values(), uniq.keys(), loc="upper right", fontsize=8)
-    title = (f"CSR = {est.csr:.4f}, slip {100 * est.slip:+.2f} %, confidence "
+    title = (f"CSR = {est.csr:.4f}{_pm(est.csr_uncertainty)}, slip {100 * est.slip:+.2f} %, "
+             f"confidence "
              f"{est.confidence:.2f}" if est.detected else "cage line not detected")
     ax1.set_title("squared-envelope spectrum: " + title)
     path.parent.mkdir(parents=True, exist_ok=True)
