@@ -60,19 +60,41 @@ def test_coupled_run_without_unbalance():
 
 @pytest.mark.slow
 def test_coupled_refresh_convergence():
-    # the traction linearisation refreshed every 20 us vs 10 us: slip and PV agree
-    # (evaluate path, base case, 0.11 g; measured: slip 5.619 vs 5.604 m/s, PV
-    # 1263 vs 1255 MPa m/s). On the table path a different refresh is a different trajectory
-    # of the chaotic impacting motion, whose one-orbit slip scatters by about +-1.5 % (paper003
-    # SOURCE.md; measured 5.60 vs 5.44 m/s there), so the refresh itself is checked on the
-    # evaluate path; the table path against the evaluate path: test_table_path_reproduces_...
+    # evaluate path, base case, 0.11 g. (1) The refresh interval converges: from the
+    # quasi-static state over 0.05 orbit, before the impacting motion decorrelates the runs,
+    # the largest spin difference against a refresh at every step (h = period/400) falls
+    # about linearly with the refresh, measured 88 / 41 / 18 rad/s at 16 / 8 / 4 steps
+    # (15.8 / 7.9 / 3.9 us; the same to 1 % before the pocket damping's units were fixed,
+    # 2026-11-23). (2) Statistics: one-orbit slip and PV at 20 vs 10 us agree within the
+    # chaotic motion's scatter over the refresh, measured slip 5.60 / 5.45 / 5.70 / 5.63 /
+    # 5.68 m/s at 5 / 10 / 15 / 20 / 25 us (5.60 / 5.60 / 5.56 / 5.62 / 5.67 before that
+    # fix), PV 1305-1320 MPa m/s; on the table path a different refresh is a different
+    # trajectory too (paper003 SOURCE.md); the table path against the evaluate path:
+    # test_table_path_reproduces_...
     b = load_bearing("CRB_50x75x16")
     lub = load_lubricant("MIL_PRF_23699")
     m = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3)
+    h = 2.0 * math.pi / float(np.max(m.spin)) / 400
+
+    def short(sub):
+        return rc.simulate_coupled(m, b, lub, n_orbits=0.05, warmup_orbits=0.0,
+                                   refresh=sub * h, traction="evaluate",
+                                   samples_per_period=10**9, fallback=False,
+                                   cage_band=None).series
+
+    ref = short(1)
+    errs = []
+    for sub in (16, 8, 4):
+        s = short(sub)
+        n = min(len(s["t"]), len(ref["t"])) - 1
+        assert abs(s["t"][n] - ref["t"][n]) < 1e-12
+        errs.append(float(np.max(np.abs(s["spin"][n] - ref["spin"][n]))))
+    assert errs[0] / errs[1] > 1.6 and errs[1] / errs[2] > 1.6, errs
+    assert errs[2] < 1e-2 * float(np.max(m.spin)), errs
     r1 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5, traction="evaluate")
     r2 = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=1.5, refresh=10e-6,
                              traction="evaluate")
-    assert r2.slip_speed == pytest.approx(r1.slip_speed, rel=0.02)
+    assert r2.slip_speed == pytest.approx(r1.slip_speed, rel=0.05)
     assert r2.pv_left + r2.pv_right == pytest.approx(r1.pv_left + r1.pv_right, rel=0.1)
 
 
@@ -207,10 +229,13 @@ def test_table_path_stop_reruns_the_evaluate_path(monkeypatch):
 @pytest.mark.slow
 def test_failing_scene_state_runs():
     # the full run the scene needs (2 + 3 orbits, ~20 s CPU with the fallback): it now
-    # completes, on the evaluate path, with the cage inside the band
+    # completes with the cage inside the band. Which path finishes is the trajectory's
+    # (module notes, "Cage runaway"): until the pocket damping's units were fixed
+    # (2026-11-23) the table path ran away here and the evaluate path finished (cage within
+    # 11.5 %, rib heat 19.6 W per roller); since then the table path finishes (2 table
+    # builds, cage within 11.2 %, 18.8 W)
     b, lub, m = _failing_state()
     r = rc.simulate_coupled(m, b, lub, n_orbits=3.0, warmup_orbits=2.0)
     wc = r.series["cage_speed"]
-    assert r.series["traction_fallback"][0] == 1
     assert np.max(np.abs(wc / m.cage_speed - 1.0)) < rc.DEFAULT_CAGE_BAND
     assert r.rib_heat_left + r.rib_heat_right > 0

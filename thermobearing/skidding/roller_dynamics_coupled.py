@@ -77,6 +77,34 @@ divergent on a 12.5 rad/s spin grid (ETDRK4 there 2.999).
 ``integrator="rk4"`` keeps the previous explicit scheme (no in-kernel renewal) for
 comparison.
 
+Pocket damping units (2026-11-23). The pocket speed's raceway damping c_z (m z'' = ... -
+c_z z', :func:`~thermobearing.skidding.roller_dynamics_rhs._rhs_ring`, [N s/m]) was set to
+-dS/d omega of the linearisation [N s/rad]. Eq. 18 puts the same raceway tractions in the
+roller's circumferential translation and, times D/2, in its spin, so dF_d/dz' =
+(dS/d omega)/(D/2): now c_z = max(-(dS/d omega)/(D/2), 0) on both traction paths
+(:func:`~thermobearing.skidding.roller_dynamics_coupled_kernels.pocket_damping`, the
+reduced model's k_omega/(D/2)^2), 333x the previous value for the 6 mm roller. Paper 003
+base case: 6.45 N s/m for the most loaded roller (was 0.019), 0.057 unloaded; with
+MIL-PRF-23699 at 30000 r/min the traction is linear in z' to 0.03 % up to 1 m/s. Measured
+(2 + 3 orbits, ETDRK4, 400 steps per period) before -> after: no unbalance slip 4.876 ->
+5.148 m/s; 0.06 g PV 597.0 / 597.3 -> 668.0 / 665.7 MPa m/s (left / right), slip 5.192
+-> 5.192 m/s; 0.11 g PV 632.1 / 630.8 -> 663.9 / 663.4, slip 5.471 -> 5.475, rib heat
+72.3 -> 74.8 W per roller. Over 16 trajectories per mass (400 .. 3200 and 384 .. 417
+steps per period) without a runaway: PV 603 -> 668 (0.06 g) and 630 -> 656 MPa m/s
+(0.11 g; standard errors 1.3-1.8), slip 5.134 -> 5.145 and 5.458 -> 5.470 m/s: PV no longer
+grows from 0.06 to 0.11 g (ratio 1.045 -> 0.981). Trajectories entering the cage-runaway
+regime ("Cage runaway" below; |X| > 30 um): 2 -> 4 of 32; at 10000 r/min, 0.11 g, 7 of 7
+distinct trajectories (refresh 14-24 us) left the 20 % cage band within 5 orbits (2 of 7
+before; peaks 1.23-1.43 x quasi-static): an unloaded roller jammed on its rib (X = -30
+um, spin held near omega_i) drags ~100 N onto its front bar and drives the cage. Limits:
+c_z is the linearisation's slope; where the film is Newtonian near pure rolling (ISO
+VG46, 80 degC, 20000 r/min: 9.5e4 N s/m for the loaded rollers) the traction saturates
+at ~128 N within |z'| ~ 1e-3 m/s, so the linear damping overstates the resistance to a
+faster pocket motion (not followed here; slip there 1.7048 -> 2.1278 m/s, step-converged
+to 5e-4); that pocket speed is stiff (h c_z/m = 30), which ETDRK4 integrates exactly per
+component, but its coupling to the stiff spin goes through the explicit stages: the
+state error at the default step grew (tests/unit/test_roller_dynamics_etd.py).
+
 Cage runaway and the fallback (2026-11-22). The example scene
 ``configs/scenes/crb_rib_example.toml`` with 0.06 g (paper 003's bearing as an NUP variant,
 20000 r/min, 3 kN, MIL-PRF-23699) stopped with "the state keeps leaving the traction table":
@@ -136,6 +164,7 @@ from .roller_dynamics_coupled_kernels import (  # noqa: F401  (kernels re-export
     _refresh_roller,
     _stiff_rates,
     _stiff_roller,
+    pocket_damping,
 )
 from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_response import RollerResponse, _post, _response
@@ -429,7 +458,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             lin[:, 4] = (e1.pocket - e0.pocket) / dw
             lin[:, 5] = (e2.pocket - e0.pocket) / dc
             q_o = np.asarray(e0.q_o, float).copy()
-            c_z = np.maximum(-lin[:, 1], 0.0)
+            c_z = np.array([pocket_damping(float(k), half) for k in lin[:, 1]])
             block = min(sub, n_total - step)
             grid = (0.0, 1.0, empty, empty, np.zeros((1, 1, 1, 3)))
         else:

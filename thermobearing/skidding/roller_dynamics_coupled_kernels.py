@@ -35,6 +35,30 @@ def _pocket_film_friction(force: float, spin: float, radius: float, length: floa
 
 
 @njit(cache=True)
+def pocket_damping(shear_spin_slope: float, half: float) -> float:
+    """Raceway damping c_z [N s/m] of a roller's circumferential (pocket) speed z' from the
+    spin slope dS/d omega [N s/rad] of the raceway shear S [N] (S = S_i + S_o, paper 000
+    eqs. 22-31) and the roller radius ``half`` = D/2 [m]: c_z = max(-(dS/d omega)/(D/2), 0).
+
+    Paper 003 eq. 18 puts the same raceway tractions T^i, T^o [N] in the roller's
+    circumferential translation (lines 2-3) and, times D_w/2, in its spin (line 4). Each is
+    a function of its contact's sliding speed V = u_race - u_roller [m/s]: a spin change
+    d omega moves the roller surface by (D/2) d omega at both contacts, so dS/d omega =
+    (D/2) (dT^i/du + dT^o/du); a translation z' of the roller centre moves it by +z' along
+    the inner and -z' along the outer race velocity, so the net orbital force F_d = T^i -
+    T^o changes by dF_d/dz' = dT^i/du + dT^o/du = (dS/d omega)/(D/2) [N s/m]. The same
+    c_z as the reduced model's k_omega/(D/2)^2
+    (:meth:`~thermobearing.skidding.roller_dynamics_model.DynamicsModel.circumferential_damping`,
+    k_omega = -(D/2) dS/d omega). The rolling (film-pressure) share of F_d, whose slope
+    the shear's does not carry, is left out: measured at paper 003's base case it lowers
+    -dF_d/dz' by 0.8 / 1.0 / 2.7 % at N_i = 777 / 691 / 445 N and by 20 % for the unloaded
+    rollers (0.046 against 0.057 N s/m). A slope that would drive the motion
+    (dS/d omega > 0) gives 0. Before 2026-11-23 the coupled model used -dS/d omega itself
+    (N s/rad taken as N s/m, 1/333 of this for the 6 mm roller)."""
+    return max(-shear_spin_slope / half, 0.0)
+
+
+@njit(cache=True)
 def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
     """np.interp(x, xp, fp) for ascending ``xp`` (binary search; numba's np.interp costs
     ~0.5 us a call, this a few ns); clamped to the end values outside [xp[0], xp[-1]]."""
@@ -62,6 +86,8 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
                 ring_mass: float, land: np.ndarray) -> None:
     """dy[:] = time derivative of the coupled state (roller_dynamics_coupled module notes).
     ``lin`` (Z, 6): S0, dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh;
+    ``c_z`` (Z,): each roller's raceway damping of its pocket speed z' [N s/m]
+    (:func:`pocket_damping`);
     ``film``: pocket length, eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg]
     of the axially free inner ring (0: held); ``land``: (viscous coefficient [N m s], guide
     ring speed [rad/s]) of the cage-land drag torque k (omega_g - omega_c) (zeros: none)."""
@@ -108,15 +134,16 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
 def _refresh_from_table(y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
                         load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
                         cage: np.ndarray, values: np.ndarray, lin: np.ndarray,
-                        w0: np.ndarray, q_o: np.ndarray, c_z: np.ndarray
+                        w0: np.ndarray, q_o: np.ndarray, c_z: np.ndarray, half: float
                         ) -> tuple[float, int]:
     """The traction linearisation of every roller from the table (the same value and
-    forward-difference slopes as the ``evaluate`` refresh of :func:`simulate_coupled`);
+    forward-difference slopes as the ``evaluate`` refresh of :func:`simulate_coupled`) and
+    its pocket damping c_z [N s/m] (:func:`pocket_damping`, ``half`` = D/2 [m]);
     returns (omega_c of the linearisation, table status: 0 ok, 1-3 outside the grid)."""
     wc0 = y[z_n * N_ROLLER_STATES + 1]
     for j in range(z_n):
         st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads, cage,
-                             values, lin, w0, wc0, q_o, c_z)
+                             values, lin, w0, wc0, q_o, c_z, half)
         if st != 0:
             return wc0, st
     return wc0, 0
@@ -126,9 +153,10 @@ def _refresh_from_table(y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarra
 def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.ndarray,
                     load: np.ndarray, spin0: float, spin_step: float, loads: np.ndarray,
                     cage: np.ndarray, values: np.ndarray, lin: np.ndarray, w0: np.ndarray,
-                    wc0: float, q_o: np.ndarray, c_z: np.ndarray) -> int:
+                    wc0: float, q_o: np.ndarray, c_z: np.ndarray, half: float) -> int:
     """Roller ``j``'s row of :func:`_refresh_from_table` at its present spin and azimuth and
-    the cage speed ``wc0`` of the linearisation; returns the table status (0 ok)."""
+    the cage speed ``wc0`` of the linearisation (``half`` = D/2 [m] for its pocket damping
+    c_z [N s/m], :func:`pocket_damping`); returns the table status (0 ok)."""
     n = N_ROLLER_STATES
     th = y[z_n * n]
     dc = 1e-4 * max(abs(wc0), 1.0)
@@ -150,7 +178,7 @@ def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.nd
     lin[j, 4] = (f1 - f0) / dw
     lin[j, 5] = (f2 - f0) / dc
     q_o[j] = q0
-    c_z[j] = max(-lin[j, 1], 0.0)
+    c_z[j] = pocket_damping(lin[j, 1], half)
     return 0
 
 
@@ -228,7 +256,7 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
         step = step0 + s
         if use_table and step % sub == 0:
             wc0, st = _refresh_from_table(y, z_n, phi0, az, load, spin0, spin_step, loads,
-                                          cage, values, lin, w0, q_o, c_z)
+                                          cage, values, lin, w0, q_o, c_z, half)
             if st != 0:
                 return st, s, t, n_sampled, wc0
             if etd:
@@ -237,7 +265,7 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
             for j in range(z_n):
                 if abs(y[j * n + 7] - w0[j]) > spin_trust:
                     st = _refresh_roller(j, y, z_n, phi0, az, load, spin0, spin_step, loads,
-                                         cage, values, lin, w0, wc0, q_o, c_z)
+                                         cage, values, lin, w0, wc0, q_o, c_z, half)
                     if st != 0:
                         return st, s, t, n_sampled, wc0
                     if etd:
@@ -320,7 +348,8 @@ def _refresh_caches() -> None:
     )
 
     refresh_stale_caches("roller_dynamics_coupled_kernels",
-                         (_pocket_film_friction, _interp_sorted, _deriv_into,
+                         (pocket_damping, _pocket_film_friction, _interp_sorted,
+                          _deriv_into,
                           _refresh_from_table, _refresh_roller, _stiff_rates,
                           _stiff_roller, _integrate),
                          (roller_dynamics_rhs, rib, roller_dynamics_pocket,

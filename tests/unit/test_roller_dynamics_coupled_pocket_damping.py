@@ -1,0 +1,116 @@
+"""Units of the coupled roller dynamics' pocket damping c_z [N s/m] (paper 003 eq. 18): the
+raceway tractions' resistance to the roller centre's circumferential speed z', pinned
+against hand finite differences of paper 000's traction model and of the traction table."""
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.geometry import load_bearing
+from thermobearing.lubricant import load_lubricant
+from thermobearing.skidding import roller_dynamics as rd
+from thermobearing.skidding import roller_dynamics_coupled as rc
+from thermobearing.skidding.roller import build_model as race_model
+from thermobearing.skidding.roller_dynamics_coupling import _race_eval
+from thermobearing.skidding.roller_dynamics_table import build_traction_table, table_eval
+
+SPEED = 30000 * math.pi / 30
+
+
+@pytest.fixture(scope="module")
+def base():
+    """Paper 003 base case (30000 r/min, 3 kN, 0.11 g, MIL-PRF-23699 at 80 degC): the
+    quasi-static state the coupled integration starts from, and paper 000's model."""
+    b = load_bearing("CRB_50x75x16")
+    lub = load_lubricant("MIL_PRF_23699")
+    m = rd.build_model(b, lub, SPEED, 3000.0, 0.11e-3, coupling="none")
+    rm = race_model(b, lub, m.extras.get("temperature", 353.15))
+    return m, rm
+
+
+def _orbital_force(rm, m, dz):
+    """(net orbital force F_d, shear-only part S_i - S_o) [N] of every roller whose centre
+    moves at dz [m/s] along the orbit relative to the cage, by hand from the contact
+    forces: the roller surface speed along the inner race velocity becomes u_roll + dz,
+    along the outer race velocity (opposite in the cage frame) u_roll - dz; the inner and
+    outer loads as in paper 000's evaluate (which the dz = 0 case must reproduce)."""
+    half = 0.5 * rm.roller_diameter
+    w, wc = m.spin, m.cage_speed
+    e0 = _race_eval(rm, m, w, wc)
+    u_ri = np.full_like(w, 0.5 * (rm.pitch_diameter - rm.roller_diameter) * (m.inner_speed - wc))
+    u_ro = np.full_like(w, 0.5 * (rm.pitch_diameter + rm.roller_diameter) * wc)
+    common = dict(eta0=rm.eta0, alpha=rm.alpha, traction_law=rm.traction_law,
+                  temperature=rm.temperature, rolling_force=rm.rolling_force,
+                  oil_layer=rm.oil_layer)
+    fi = rm.contact_forces(m.inner_load, rm.length, rm.radius_inner, rm.effective_modulus,
+                           u_ri, half * w + dz, film=rm.film_inner, **common)
+    fo = rm.contact_forces(e0.q_o, rm.length, rm.radius_outer, rm.effective_modulus,
+                           u_ro, half * w - dz, film=rm.film_outer, **common)
+    f_d = fi.orbital_force(rm.radius_inner / half) - fo.orbital_force(rm.radius_outer / half)
+    return f_d, fi.shear_force - fo.shear_force, e0
+
+
+def test_pocket_damping_is_the_traction_slope_against_the_pocket_speed(base):
+    """c_z from the spin slope dS/d omega (what both refresh paths have) equals minus the
+    slope of the raceways' net orbital force against the pocket speed z' [N s/m], computed
+    by hand: 6.45 N s/m for the most loaded roller (not the 0.0194 of dS/d omega, N s/rad,
+    the coupled model used before 2026-11-23)."""
+    m, rm = base
+    half = 0.5 * rm.roller_diameter
+    w = m.spin
+    dw = 1e-4 * np.maximum(np.abs(w), 1.0)
+    e0 = _race_eval(rm, m, w, m.cage_speed)
+    e1 = _race_eval(rm, m, w + dw, m.cage_speed)
+    slope = (e1.roller_eq + e1.friction - e0.roller_eq - e0.friction) / dw   # N s/rad
+    c_z = np.array([rc.pocket_damping(float(k), half) for k in slope])
+    f0, s0, ev = _orbital_force(rm, m, 0.0)
+    assert np.array_equal(f0, ev.pocket)                  # the hand forces are evaluate's
+    dz = 1e-4                                             # m/s
+    f1, s1, _ = _orbital_force(rm, m, dz)
+    shear_hand = -(s1 - s0) / dz
+    full_hand = -(f1 - f0) / dz
+    loaded = m.inner_load > 600.0
+    assert np.sum(loaded) == 3
+    # the shear part: the same traction slope, only the finite-difference steps differ
+    assert c_z == pytest.approx(shear_hand, rel=1e-3)
+    # with the film-pressure (rolling) share of F_d, the part pocket_damping leaves out:
+    # measured -0.8 / -1.0 / -2.7 % at N_i = 777 / 691 / 445 N, -20 % unloaded (0.046
+    # against 0.057 N s/m)
+    assert c_z[loaded] == pytest.approx(full_hand[loaded], rel=0.02)
+    assert np.all(full_hand > 0.7 * c_z) and np.all(full_hand <= c_z)
+    j = int(np.argmax(m.inner_load))
+    assert 5.0 < c_z[j] < 8.0 and c_z[j] == pytest.approx(-slope[j] / half, rel=1e-12)
+    # a slope driving the motion gives no damping (never negative damping)
+    assert rc.pocket_damping(0.01, half) == 0.0
+
+
+def test_table_refresh_pocket_damping_units(base):
+    """The in-kernel table refresh (_refresh_roller) sets c_z [N s/m] to minus the table
+    shear's slope against a sliding-speed perturbation dV of the roller surface, dS/dV
+    (central difference here, forward difference of the spin there)."""
+    m, rm = base
+    half = 0.5 * rm.roller_diameter
+    j = int(np.argmax(m.inner_load))
+    w, n_i, wc = float(m.spin[j]), float(m.inner_load[j]), float(m.cage_speed)
+    tab = build_traction_table(rm, SPEED, lambda _: 0.0, (w - 400.0, w + 400.0),
+                               n_i, wc)
+    n = rc.N_ROLLER_STATES
+    y = np.zeros(n + 4)
+    y[7] = w
+    y[n + 1] = wc
+    lin = np.zeros((1, 6))
+    w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
+    st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
+                            np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
+                            tab.cage, tab.values, lin, w0, wc, q_o, c_z, half)
+    assert st == 0
+    dv = 3e-3                                             # m/s of surface speed
+    s_p = table_eval(tab.spin0, tab.spin_step, tab.loads, tab.cage, tab.values,
+                     w + dv / half, n_i, wc)
+    s_m = table_eval(tab.spin0, tab.spin_step, tab.loads, tab.cage, tab.values,
+                     w - dv / half, n_i, wc)
+    assert s_p[3] == 0 and s_m[3] == 0
+    ds_dv = (s_p[0] - s_m[0]) / (2.0 * dv)                # N s/m
+    assert c_z[0] == pytest.approx(-ds_dv, rel=1e-2)
+    assert 5.0 < c_z[0] < 8.0
