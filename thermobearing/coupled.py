@@ -602,6 +602,16 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
 STEADY_TRUST_REGION = 10.0
 #: largest node temperature change [K] of one outer pass of a steady run
 STEADY_MAX_PASS_CHANGE = 100.0
+#: outer passes (kinematics updates) of one steady operating point
+STEADY_MAX_PASSES = 30
+#: a steady operating point is converged when no node moves by more than this [K] in a pass
+STEADY_TOLERANCE = 1e-3
+#: halvings of an outer update whose state a model refuses, per operating point
+STEADY_MAX_BACKTRACKS = 8
+#: pseudo-time spans [s] of the relaxation of a steady pass (:func:`_steady_pass`): 10 s,
+#: then each twice the last, 31 spans (to ~1e10 s, beyond any bearing network's time
+#: constant); the state is checked against the runaway limit after each
+STEADY_RELAX_SPANS = tuple(10.0 * 2.0 ** k for k in range(31))
 
 
 @dataclass
@@ -621,16 +631,122 @@ class _HeldBeyond:
         return self.lin.heat(t, self._clip(T)[0])
 
     def jac(self, t: float, T: np.ndarray) -> np.ndarray:
+        return self.heat_and_jac(t, T)[1]
+
+    def heat_and_jac(self, t: float, T: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(q [W], dq/dT [W/K]) at T [K] (the transient stepper's heat_with_jacobian)."""
         Tc, held = self._clip(T)
-        out = np.array(self.lin.jac(t, Tc), dtype=float, copy=True)
+        q, jac = self.lin.heat_and_jac(t, Tc)
+        out = np.array(jac, dtype=float, copy=True)
         out[:, held] = 0.0
-        return out
+        return q, out
+
+
+def coldest_boundary(net: Any) -> float:
+    """The lowest boundary temperature [K] of the network (ambient, oil inlet): no steady
+    state of a network whose heat is a loss (>= 0) has a node below it (the discrete
+    maximum principle: conductances and stream capacity rates are >= 0)."""
+    return min(float(net.boundary_temperature(n)) for n in net.boundary_nodes)
+
+
+def _steady_pass(net: Any, lin: _Linear, T: np.ndarray, floor: float | None,
+                 ceiling: float) -> tuple[np.ndarray, Any, str]:
+    """Where one outer pass of a steady run goes under its chunk model ``lin``
+    (kinematics held at ``T`` [K]): (temperatures [K], the network's SteadyResult or None,
+    how), how one of ``"model"``, ``"held"``, ``"relaxed"`` (a steady state of the model)
+    or ``"runaway"`` (no steady state below ``ceiling`` [K]: the relaxation's first state
+    above it, which the caller's step limit and runaway check handle).
+
+    1. Newton on the chunk model (``network.solve_steady`` from ``T``).
+    2. Far from T0 the chunk model's straight-line heat can fall to its floor (a cold
+       start: the losses fall steeply as the oil thins) and leave the network without a
+       steady state, or Newton's steps probe states no model accepts: the heat held at its
+       value on the edge of a trust region of :data:`STEADY_TRUST_REGION` around T0
+       (:class:`_HeldBeyond`) always has one, and Newton is tried on it.
+    3. Newton on the held model can still step out of the conductance models' range: the
+       QJ1044 rig at 4500 r/min, 151 kN axial, on oil-air at 33 L/min from -16 degC puts
+       82 kW of outer-ring heat into each housing node, falling by 9.3 kW per kelvin of
+       oil; the first Newton step put the housings at -570 degC and the line search
+       stopped at -330 degC with the air film refusing 35 K. The held model's transient
+       (``TransientStepper``, TR-BDF2) from ``T`` over pseudo-time spans of 10 s, 20 s,
+       40 s, ... (:data:`STEADY_RELAX_SPANS`) only visits states between the coldest
+       boundary and the held heat's equilibrium; Newton from each span's end polishes the
+       steady state (0.02 s CPU in that case).
+
+    A steady state with a node below ``floor`` [K] (the coldest boundary; None where the
+    model's heat can be negative) is not taken. ConvergenceError when no way gives a
+    state, naming the residual and the pass's start."""
+    from .network import TransientStepper, solve_steady
+
+    def physical(res: Any) -> bool:
+        v = res.temperatures_vector
+        return bool(np.all(np.isfinite(v))) and (floor is None or float(v.min())
+                                                 >= floor - 1e-6 * max(1.0, floor))
+
+    why = []
+    try:
+        res = solve_steady(net, lin.heat, T_guess=T, heat_jacobian=lin.jac)
+        if physical(res):
+            return res.temperatures_vector, res, "model"
+        why.append("the chunk model's steady state lies below the coldest boundary")
+    except ConvergenceError as exc:
+        why.append(f"chunk model: {exc}")
+    held = _HeldBeyond(lin, STEADY_TRUST_REGION)
+    try:
+        res = solve_steady(net, held.heat, T_guess=T, heat_jacobian=held.jac)
+        if physical(res):
+            return res.temperatures_vector, res, "held"
+        why.append("the held model's steady state lies below the coldest boundary")
+    except ConvergenceError as exc:
+        why.append(f"held model: {exc}")
+    stepper = TransientStepper(net, method="tr_bdf2", rtol=1e-3, atol=1e-2)
+    y, t, residual = T.copy(), 0.0, math.inf
+    for span in STEADY_RELAX_SPANS:
+        try:
+            out = stepper.advance(t, y, span, held.heat, heat_time_dependent=False,
+                                  heat_with_jacobian=held.heat_and_jac)
+        except (ConvergenceError, InputError) as exc:
+            why.append(f"relaxation after {t:.3g} s: {exc}")
+            break
+        y, t = out.temperatures, t + span
+        if not np.all(np.isfinite(y)):
+            why.append(f"relaxation after {t:.3g} s: non-finite temperatures")
+            break
+        if float(np.max(y)) > ceiling:
+            return y, None, "runaway"
+        try:
+            res = solve_steady(net, held.heat, T_guess=y, heat_jacobian=held.jac)
+        except ConvergenceError as exc:
+            residual = min(residual, float(exc.residual))
+            continue
+        if physical(res):
+            return res.temperatures_vector, res, "relaxed"
+    raise ConvergenceError(
+        "coupled steady state", residual,
+        "no steady state of the network under the pass's heat model (residual: the "
+        "smallest network residual [W] reached; " + "; ".join(why) + ")",
+        {"pass start [degC]": np.round(T - 273.15, 3)})
+
+
+def _temperatures_state(names: list[str], T: np.ndarray) -> dict[str, float]:
+    """Node -> temperature [degC] (rounded to 1 mK) for a ConvergenceError's state."""
+    return {n: round(float(v) - 273.15, 3) for n, v in zip(names, T, strict=True)}
 
 
 def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                 ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
-    """Each schedule step as its own steady operating point (coupled fixed point)."""
-    from .network import solve_steady
+    """Each schedule step as its own steady operating point (coupled fixed point).
+
+    Outer passes: kinematics and the chunk model at the current temperatures T, the
+    network's steady state under that model (:func:`_steady_pass`; a Newton step of the
+    coupled problem, whose fixed point T = T_new is the same whatever the model's reach),
+    then a relaxed update towards it. Every accepted state lies between the coldest
+    boundary and the runaway limit: a pass's steady state is refused below the coldest
+    boundary, and the update is a convex combination of two such states. A state a model
+    refuses (the kinematics or the heat sources raise InputError or ConvergenceError there:
+    a viscosity law's range, a stalled skidding solve) is backtracked: the update is halved
+    towards the last state the models accepted, at most :data:`STEADY_MAX_BACKTRACKS` times
+    per operating point; each backtrack is noted in the run's warnings."""
     from .simulation import kinematics_columns, step_columns
 
     coupler = Coupler(sim, net)
@@ -638,28 +754,55 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     T = np.full(len(names), sim.scene.environment.initial_temperature)
     temp_rows, kin_rows, loss_rows = [], [], []
     outer_iterations = 0
+    backtracks = 0
+    passes_by = dict.fromkeys(("model", "held", "relaxed", "runaway"), 0)
+    imbalance = 0.0
+    floor_T = coldest_boundary(net)
     for i, step in enumerate(sim.scene.schedule.steps):
         omega, r_prev = 1.0, None
-        for _ in range(1, 31):
-            coupler.kinematics(i, step, T)
-            lin = coupler.linearize(step, T)
+        T_ok: np.ndarray | None = None  # the last state whose models answered
+        change, step_backtracks = math.inf, 0
+        for _ in range(STEADY_MAX_PASSES):
             try:
-                res = solve_steady(net, lin.heat, T_guess=T, heat_jacobian=lin.jac)
-            except ConvergenceError:
-                # far from T0 the chunk model's straight-line heat can fall below zero (a
-                # cold start: the losses fall steeply as the oil thins) and leave the
-                # network without a steady state; the heat held at its value on the edge
-                # of a trust region around T0 always has one, and the next pass
-                # re-linearises there (the fixed point, T = T0, is the same)
-                held = _HeldBeyond(lin, STEADY_TRUST_REGION)
-                res = solve_steady(net, held.heat, T_guess=T, heat_jacobian=held.jac)
-            T_new = np.array([res.temperatures[n] for n in names])
+                coupler.kinematics(i, step, T)
+                lin = coupler.linearize(step, T)
+            except (InputError, ConvergenceError) as exc:
+                if T_ok is None:
+                    raise  # the operating point's start itself: the model's own error
+                if step_backtracks >= STEADY_MAX_BACKTRACKS:
+                    raise ConvergenceError(
+                        "coupled steady state", change,
+                        f"the models refuse the updates of step {i} even after "
+                        f"{step_backtracks} halvings towards the last accepted state "
+                        f"(residual: that state's largest pass change [K]); last refusal: "
+                        f"{exc}", {"step": i, "refused [degC]": _temperatures_state(names, T),
+                                   "accepted [degC]": _temperatures_state(names, T_ok)}
+                    ) from exc
+                step_backtracks += 1
+                backtracks += 1
+                note = (f"steady step {i}: a model refused an update of the temperatures "
+                        f"({exc}); the update was halved towards the last accepted state")
+                if not any(w.startswith(f"steady step {i}: a model refused")
+                           for w in sim.warnings):
+                    sim.warnings.append(note)
+                T = T_ok + 0.5 * (T - T_ok)
+                r_prev = None
+                continue
+            T_ok = T.copy()
+            # a cold start may still be below the boundaries: the floor holds for the
+            # pass's steady state only where the model's heat is a loss
+            floor = floor_T if float(np.min(lin.q0)) >= 0.0 else None
+            T_new, res, how = _steady_pass(net, lin, T, floor, coupler.runaway_limit)
+            passes_by[how] += 1
             r = T_new - T
             change = float(np.max(np.abs(r)))
             outer_iterations += 1
-            if change < 1e-3:
+            if change < STEADY_TOLERANCE and res is not None:
                 T = T_new
                 _check_runaway(names, T, None, i, lin, coupler.runaway_limit)
+                if res.generated > 0.0:
+                    imbalance = max(imbalance, abs(res.generated - res.to_boundaries
+                                                   - res.to_streams) / res.generated)
                 break
             # Aitken's dynamic relaxation of the outer update (Irons & Tuck): the pass
             # holds the kinematics, whose heat falls as the oil thins, so the plain
@@ -679,9 +822,13 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                      else step_T)
             _check_runaway(names, T, None, i, lin, coupler.runaway_limit)
         else:
-            raise ConvergenceError("coupled steady state", change,
-                                   "temperatures still move after 30 kinematics updates",
-                                   {"step": i})
+            j = int(np.argmax(np.abs(T - T_ok))) if T_ok is not None else 0
+            raise ConvergenceError(
+                "coupled steady state", change,
+                f"temperatures still move after {STEADY_MAX_PASSES} kinematics updates "
+                f"(residual: the last pass's largest change [K], node {names[j]!r}; "
+                f"converged below {STEADY_TOLERANCE:g} K)",
+                {"step": i, "temperatures [degC]": _temperatures_state(names, T)})
         for b in sim.bearings:
             kin_rows.append({**step_columns(i, 0.0, b.name, step, b),
                              **kinematics_columns(b.last, b.bearing)})
@@ -700,7 +847,9 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     if _wants_loss_table(sim.scene):
         tables["losses"] = pd.DataFrame(loss_rows)
     return tables, {"steps": len(sim.scene.schedule.steps),
-                    "outer_iterations": outer_iterations}
+                    "outer_iterations": outer_iterations, "backtracks": backtracks,
+                    "held_passes": passes_by["held"], "relaxed_passes": passes_by["relaxed"],
+                    "relative_energy_imbalance": imbalance}
 
 
 def role_map(net: Any, group: str) -> Mapping[str, list[str]]:

@@ -1,13 +1,49 @@
 """The sweep runner: run a scene given as TOML text and reduce it to a few named numbers
-(:func:`summarize_scene`).
+(:func:`summarize_scene`), and the reading of result names of earlier versions
+(:func:`current_result_names`, for the stores of sweep folders written before a rename).
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from .scene import loads_scene
+
+#: the protocol mean of the scene's total loss (all bearings)
+MEAN_TOTAL_LOSS = "mean total loss [W]"
+
+
+def current_result_name(name: str, steady: bool = False) -> str:
+    """A summary result name as this version writes it, from the name an earlier version
+    wrote (unchanged when it is current). Earlier sweep folders (``cases.jsonl``,
+    ``summary.csv``) hold ``total loss [W]`` and ``total loss <bearing> [W]`` (the
+    protocol means, now ``mean total loss ...``) and ``rise <node> [K]``: final minus the
+    initial temperature in a transient scene (now ``rise over initial <node> [K]``), the
+    steady temperature minus the ambient in a steady scene (``steady``: now ``rise over
+    ambient <node> [K]``)."""
+    if name.startswith("total loss") and name.endswith("[W]"):
+        return "mean " + name
+    if name.startswith("rise ") and name.endswith(" [K]") and not name.startswith(
+            ("rise over initial ", "rise over ambient ")):
+        return ("rise over ambient " if steady else "rise over initial ") + name[5:]
+    return name
+
+
+def current_result_names(result: Mapping[str, Any], steady: bool = False
+                         ) -> dict[str, Any]:
+    """``result`` (one case's summary) with its names as this version writes them
+    (:func:`current_result_name`); a current name wins over an old one for the same
+    quantity."""
+    out: dict[str, Any] = {}
+    for key, value in result.items():
+        new = current_result_name(key, steady)
+        if new == key or new not in result:
+            out[new] = value
+    return out
 
 
 def summarize_scene(scene_toml: str) -> dict[str, float]:
@@ -15,11 +51,12 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
 
     Returns, with the unit in each name:
 
-    * ``total loss [W]``: the scene's power loss (all bearings) averaged over the protocol,
-      each step weighted by its duration; ``max total loss [W]`` the largest step; one
-      ``<source> [W]`` per heat source (all bearings, the same average); with more than one
-      bearing also ``total loss <bearing> [W]`` each. (Earlier versions gave plain
-      means over the steps of the first bearing only, which their names did not say.)
+    * ``mean total loss [W]``: the scene's power loss (all bearings) averaged over the
+      protocol, each step weighted by its duration; ``max total loss [W]`` the largest
+      step; one ``<source> [W]`` per heat source (all bearings, the same average); with
+      more than one bearing also ``mean total loss <bearing> [W]`` each. (Earlier versions
+      named the mean ``total loss [W]``, and before that gave plain means over the steps
+      of the first bearing only, which their names did not say.)
     * ``max / min over-skidding [%]`` (signed, 100 (CSR / CSR_th - 1) as in the kinematics
       table: negative where the cage lags, so a maximum below zero means every step
       skids), ``max contact pressure [MPa]`` and ``min film
@@ -30,10 +67,11 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       bearings), so that a sweep of the thresholds shows what they flag;
     * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
       parameter [-]`` of the film table;
-    * with a network: ``final <node> [degC]`` and ``rise <node> [K]`` (final minus the
-      node's temperature at the start, the scene's initial temperature; a scene whose inlet
-      oil is warmer than that counts the difference in the rise too); a steady scene
-      (``mode = "steady"``) gives its last operating point's steady temperatures and their
+    * with a network: ``final <node> [degC]`` and ``rise over initial <node> [K]`` (final
+      minus the node's temperature at the start, the scene's initial temperature, not the
+      largest rise on the way; a scene whose inlet oil is warmer than that counts the
+      difference in the rise too); a steady scene (``mode = "steady"``) gives its last
+      operating point's steady temperatures and ``rise over ambient <node> [K]``, their
       rise above the ambient temperature (a steady state has no start).
     """
     from .simulation import Simulation
@@ -53,7 +91,7 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
 
         per, w = averaged(losses)
         total = per.sum(axis=1)
-        out["total loss [W]"] = float((total * w).sum())
+        out[MEAN_TOTAL_LOSS] = float((total * w).sum())
         out["max total loss [W]"] = float(total.max())
         for src in per.columns:
             out[f"{src} [W]"] = float((per[src] * w).sum())
@@ -61,7 +99,7 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
         if len(names) > 1:
             for name in names:
                 per_b, w_b = averaged(losses[losses["bearing"] == name])
-                out[f"total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
+                out[f"mean total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
     kin = res.tables.get("kinematics")
     if kin is not None and not kin.empty:
         out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
@@ -91,8 +129,8 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
         for c in temps.columns:
             if c.endswith("[degC]"):
                 out[f"final {c}"] = float(temps[c].iloc[-1])
-                out[f"rise {c.replace('[degC]', '[K]')}"] = float(temps[c].iloc[-1]
-                                                                  - temps[c].iloc[0])
+                out[f"rise over initial {c.replace('[degC]', '[K]')}"] = float(
+                    temps[c].iloc[-1] - temps[c].iloc[0])
     steady = res.tables.get("steady_temperatures")
     if (temps is None or temps.empty) and steady is not None and not steady.empty:
         # a steady scene: its last operating point's steady state, above the ambient
@@ -100,6 +138,6 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
         for c in steady.columns:
             if c.endswith("[degC]"):
                 out[f"final {c}"] = float(steady[c].iloc[-1])
-                out[f"rise {c.replace('[degC]', '[K]')}"] = float(steady[c].iloc[-1]
-                                                                  - ambient)
+                out[f"rise over ambient {c.replace('[degC]', '[K]')}"] = float(
+                    steady[c].iloc[-1] - ambient)
     return out
