@@ -53,6 +53,21 @@ are of the generator of their date):
   ``meas``, ``clear``, ``ctrl``, ``p002``, ``stepper``, ``interval``, ``checks``).
   Rib scenes put the both-rib override and a listed rib_friction mostly on bearings with
   rib geometry (the CRB preset); an NU-type bearing beside it mostly floats (axial share 0).
+- 2026-11-23, later still: grease supplies (no flow, or ``flow = "0 L/min"``); the schedule
+  as ``[schedule]`` defaults only (``dflt``) or an ``axial_load_steps`` sweep (``asteps``);
+  hot machines (``hot``: ambient, initial and inlet at 120-180 degC); lubricant files of
+  ISO VG 2 to 1500 mineral oils beside the reproducers (``DIR/case_<n>_oil.toml``, the
+  grade in the summary, e.g. ``VG1000``); measured files in K or degF, tab separated, time
+  in seconds, with an unmapped column or a units row; the same scene in other units
+  (``units``: K / degF, kN / lbf, rad/s / rev/s / krpm, L/h, m / inch, min ...), whose SI
+  values must equal those of the plain scene (``si_mismatch``); the command line
+  ``check`` before and ``report`` after each ``--cli-every`` run, and every
+  ``--sweep-every``-th case (default 5) that ran OK a ``thermobearing sweep`` of one ``--set`` with
+  two values (flow, inlet temperature, speed, lubricant preset, skid limit or h_oil) and
+  its ``report``; ``[models] calibration = "none"`` (``nocal``), the ball EHL rolling
+  force ``ball_rolling_resistance`` with a reduction (``rr``), solver tolerances and
+  ``max_step`` (``tol``); ``[outputs] want`` mixes (film, report or kinematics beside the
+  others: a wanted film table must be there or the run must say why).
 
 Usage::
 
@@ -62,6 +77,7 @@ Usage::
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import math
 import multiprocessing
 import re
@@ -69,6 +85,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import tomllib
 import traceback
 import warnings
 from dataclasses import dataclass, field
@@ -83,7 +100,8 @@ ROOT = Path(__file__).resolve().parents[1]
 #: n d_m [mm r/min] up to which each supply is drawn: typical catalogue reference speeds of
 #: oil-bath, circulating-oil and jet / oil-air lubricated bearings (the spindle example runs
 #: 1.44e6, the paper 001 and 003 rollers 2.0e6 and 1.9e6)
-NDM_LIMIT = {"oil_bath": 0.5e6, "circulation": 0.8e6, "jet": 2.1e6, "oil_air": 2.1e6}
+NDM_LIMIT = {"oil_bath": 0.5e6, "circulation": 0.8e6, "jet": 2.1e6, "oil_air": 2.1e6,
+             "grease": 0.5e6}
 #: ISO 76 static-rating factor f0 of radial ball bearings lies between about 12 and 17
 #: (ISO 76 Table 1, by D cos(alpha) / d_m); the lower end sets the fuzz range of loads
 F0_BALL = 12.3
@@ -94,7 +112,15 @@ K_ROLLER = 44.0
 H_OIL_RANGE = (50.0, 1500.0)
 H_AIR_RANGE = (5.0, 50.0)
 
-SUPPLIES = ("jet", "circulation", "oil_bath", "oil_air")
+SUPPLIES = ("jet", "circulation", "oil_bath", "oil_air", "grease")
+SUPPLY_WEIGHTS = (0.24, 0.24, 0.24, 0.2, 0.08)
+#: mineral-oil ISO VG grades outside the presets (ISO 3448 nu40 [mm^2/s] = the grade) with
+#: a nu100 [mm^2/s] of about VI 95 (order of magnitude of paraffinic product data sheets;
+#: fuzz inputs of the right size, not lubricant data)
+EXTREME_GRADES = {2: 1.0, 5: 1.7, 10: 2.6, 15: 3.4, 150: 14.7, 220: 19.0, 320: 24.0,
+                  460: 30.5, 680: 39.0, 1000: 50.0, 1500: 63.0}
+#: hot machines: ambient, initial and inlet temperatures drawn in this range [degC]
+HOT_RANGE = (120.0, 180.0)
 #: first words of the fields a refusal may name: the scene's tables, the bearing and
 #: lubricant files' keys, and the checks' own wording ("schedule step 0 ...", "SKF ...")
 SCENE_FIELD_HEADS = {"title", "source", "bearings", "lubricant", "supply", "environment",
@@ -193,9 +219,12 @@ def _q(value: float, unit: str, digits: int = 6) -> str:
 
 
 def _supply(rng: np.random.Generator, b: BearingEntry) -> dict[str, Any]:
-    method = str(rng.choice(SUPPLIES))
+    method = str(rng.choice(SUPPLIES, p=SUPPLY_WEIGHTS))
     out: dict[str, Any] = {"method": method}
-    if method == "oil_air":
+    if method == "grease":
+        if rng.random() < 0.3:
+            out["flow"] = "0 L/min"  # a grease fill: no flow (written or left out)
+    elif method == "oil_air":
         out["flow"] = _q(_log_uniform(rng, 1.0, 3000.0), "mm**3/h")
     elif method == "oil_bath":
         # from dry (0) to above the bore: the level from the lowest point of the outer race
@@ -234,6 +263,12 @@ def _outputs(rng: np.random.Generator, kin: str) -> tuple[dict[str, Any], str]:
             "transient": ["temperatures", "losses", "energy"],
             "steady_temperatures": ["temperatures", "losses"]}[pick]
     mode = "transient" if pick == "transient" else "steady"
+    if rng.random() < 0.2:
+        # a mix as users write it: the film table (or the report) beside the others
+        extra = str(rng.choice(["film", "report"] + (["kinematics"] if kin != "none"
+                                                      else [])))
+        if extra not in want:
+            want = [*want, extra]
     return {"mode": mode, "want": want}, pick
 
 
@@ -314,7 +349,9 @@ def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: 
                    ) -> dict[str, Any]:
     """Write the steps as a CSV protocol (``[schedule] file``): columns in random order and
     units (s / min, rpm / r/min, N / kN), sometimes one column left to a ``[schedule]``
-    default, sometimes a UTF-8 BOM (a spreadsheet export) or CRLF line ends."""
+    default, sometimes a UTF-8 BOM (a spreadsheet export) or CRLF line ends, capitalised
+    headers, the units in the cells under bare headers, or semicolons with decimal commas
+    and points grouping thousands (``1.234,5``)."""
     cols = {"duration": [("s", 1.0), ("min", 1 / 60)],
             "speed": [("rpm", 1.0), ("r/min", 1.0)],
             "radial_load": [("N", 1.0), ("kN", 1e-3)],
@@ -328,13 +365,25 @@ def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: 
         key = order.pop()
         table[key if key != "duration" else "step_duration"] = _q(values[0][key], units[key])
     head, rows = [], [[] for _ in values]
+    in_cells = rng.random() < 0.15  # units in the cells, bare headers
+    semicolon = rng.random() < 0.25  # decimal commas, points grouping thousands
     for key in order:
         unit, f = cols[key][int(rng.integers(0, 2))]
-        head.append(f"{key} [{unit}]")
+        name = key.capitalize() if rng.random() < 0.2 else key
+        head.append(name if in_cells else f"{name} [{unit}]")
         for row, v in zip(rows, values, strict=True):
-            row.append(f"{v[key] * f:.6g}")
+            cell = f"{v[key] * f:.6g}"
+            if semicolon and "e" in cell:
+                cell = cell.replace(".", ",")
+            elif semicolon:
+                whole, _, frac = cell.partition(".")
+                sign = "-" if whole.startswith("-") else ""
+                whole = f"{int(whole.lstrip('-')):,}".replace(",", ".")
+                cell = sign + whole + ("," + frac if frac else "")
+            row.append(f"{cell} {unit}" if in_cells else cell)
+    sep = ";" if semicolon else ","
     nl = "\r\n" if rng.random() < 0.2 else "\n"
-    text = nl.join([",".join(head)] + [",".join(r) for r in rows]) + nl
+    text = nl.join([sep.join(head)] + [sep.join(r) for r in rows]) + nl
     bom = "\ufeff" if rng.random() < 0.2 else ""
     path.write_text(bom + text, encoding="utf-8", newline="")
     table["file"] = str(path)
@@ -350,14 +399,24 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
     n = int(rng.integers(3, 40))
     t = np.linspace(0.0, duration, n)
     sensors = {f"TC{i + 1} {nm}": f"{nm}.housing" for i, nm in enumerate(names)}
-    semicolon = rng.random() < 0.4
-    sep, dec = (";", ",") if semicolon else (",", ".")
+    r_sep = rng.random()
+    sep, dec = (";", ",") if r_sep < 0.35 else ("\t", ".") if r_sep < 0.5 else (",", ".")
     clock = rng.random() < 0.3
-    head = ["Time" if clock else "time [min]", *sensors]
+    seconds = not clock and rng.random() < 0.3
+    # the logger's unit (K, degF) and an unmapped column (the rig's speed) now and then
+    unit = str(rng.choice(["degC", "K", "degF"], p=[0.7, 0.15, 0.15]))
+    to_unit = {"degC": lambda v: v, "K": lambda v: v + 273.15,
+               "degF": lambda v: v * 1.8 + 32.0}[unit]
+    extra = rng.random() < 0.25
+    tname = "Time" if clock else ("time [s]" if seconds else "time [min]")
+    head = [tname, *sensors] + (["speed [rpm]"] if extra else [])
     lines = [sep.join(head)]
+    if rng.random() < 0.15:  # a units row under the header, as DAQ programs write it
+        lines.append(sep.join(["hh:mm:ss" if clock else ("s" if seconds else "min")]
+                              + [unit] * len(sensors) + (["rpm"] if extra else [])))
     for ti in t:
         cells = [(f"{int(ti // 3600):02d}:{int(ti % 3600 // 60):02d}:{int(ti % 60):02d}"
-                  if clock else f"{ti / 60:.4f}".replace(".", dec))]
+                  if clock else f"{ti if seconds else ti / 60:.4f}".replace(".", dec))]
         for _ in sensors:
             r = rng.random()
             if r < 0.04:
@@ -368,11 +427,123 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
                 cells.append("-999")
             else:
                 v = t0 + 20.0 * (1 - math.exp(-ti / 600.0)) + rng.normal(0.0, 0.2)
-                cells.append(f"{v:.2f}".replace(".", dec))
+                cells.append(f"{to_unit(v):.2f}".replace(".", dec))
+        if extra:
+            cells.append(f"{rng.uniform(0.0, 3000.0):.1f}".replace(".", dec))
         lines.append(sep.join(cells))
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    return {"file": str(path), "time_column": head[0], "unit": "degC",
+    return {"file": str(path), "time_column": head[0], "unit": unit,
             "columns": sensors, "missing_values": [-999]}
+
+
+def _axial_load_steps(rng: np.random.Generator, steps: list[dict[str, Any]], c0: float,
+                      rib_roller: bool) -> dict[str, Any]:
+    """The first step's speed, radial load and duration as ``[schedule]`` defaults and an
+    ``axial_load_steps`` sweep of 2 to 5 steps (up to ~20 % of the radial load on a
+    both-ribbed roller bearing)."""
+    first = steps[0]
+    if rib_roller:
+        top = float(first["radial_load"].split()[0]) * rng.uniform(0.0, 0.2)
+        a0 = 0.0
+    else:
+        top = _log_uniform(rng, 0.01 * c0, 0.5 * c0)
+        a0 = 0.0 if rng.random() < 0.5 else top * rng.uniform(0.0, 0.5)
+    n = int(rng.integers(2, 6))
+    da = max((top - a0) / (n - 1), 1e-3)
+    unit, f = ("kN", 1e-3) if rng.random() < 0.5 else ("N", 1.0)
+    return {"speed": first["speed"], "radial_load": first["radial_load"],
+            "step_duration": first["duration"],
+            "axial_load_steps": {"start": _q(a0 * f, unit), "stop": _q((a0 + (n - 1) * da) * f,
+                                                                      unit),
+                                 "step": _q(da * f, unit)}}
+
+
+def _oil_file(rng: np.random.Generator, path: Path) -> tuple[dict[str, Any], str]:
+    """A mineral-oil lubricant TOML of an ISO VG grade outside the presets (VG 2 to 1500),
+    laid out as ``configs/lubricants/ISO_VG100.toml``: the scene's ``[lubricant] path``."""
+    grade = int(rng.choice(sorted(EXTREME_GRADES)))
+    path.write_text(f'''name = "ISO_VG{grade}_fuzz"
+source = "fuzz input: ISO VG {grade} mineral oil of about VI 95"
+kind = "mineral"
+
+[viscosity]
+law = "astm_d341"
+nu40 = "{grade} mm**2/s"
+nu100 = "{EXTREME_GRADES[grade]} mm**2/s"
+
+[pressure_viscosity]
+law = "roelands"
+alpha_correlation = "asme1953_mineral_fit"
+
+[density]
+value = "{rng.uniform(840.0, 910.0):.0f} kg/m**3"
+reference_temperature = "15 degC"
+temperature_law = "astm_d1250_lube"
+pressure_law = "dowson_higginson"
+
+[thermal]
+model = "cragoe"
+''', encoding="utf-8")
+    return {"path": str(path)}, f"VG{grade}"
+
+
+#: other spellings of the generator's units: (unit, factor, offset) with value' = value *
+#: factor + offset
+RESPELL = {
+    "degC": [("K", 1.0, 273.15), ("degF", 1.8, 32.0)],
+    "N": [("kN", 1e-3, 0.0), ("lbf", 1 / 4.4482216152605, 0.0)],
+    "rpm": [("r/min", 1.0, 0.0), ("rad/s", math.pi / 30, 0.0), ("rev/s", 1 / 60, 0.0),
+            ("krpm", 1e-3, 0.0)],
+    "L/min": [("L/h", 60.0, 0.0), ("m**3/s", 1 / 60000, 0.0), ("mL/min", 1e3, 0.0)],
+    "mm": [("m", 1e-3, 0.0), ("cm", 0.1, 0.0), ("inch", 1 / 25.4, 0.0)],
+    "s": [("min", 1 / 60, 0.0), ("ms", 1e3, 0.0)],
+    "mm**3/h": [("mm3/h", 1.0, 0.0), ("mL/h", 1e-3, 0.0)],
+}
+_QTY = re.compile(r"^([-+]?[0-9.]+(?:e[-+]?\d+)?) (\S+)$")
+
+
+def respell(rng: np.random.Generator, doc: Any, share: float = 0.5) -> Any:
+    """A copy of the scene document with about ``share`` of its quantities written in
+    another unit (K / degF, kN / lbf, rad/s / rev/s / krpm, L/h, m, inch, min ...): the
+    same scene, which must load to the same SI values."""
+    if isinstance(doc, dict):
+        return {k: respell(rng, v, share) for k, v in doc.items()}
+    if isinstance(doc, list):
+        return [respell(rng, v, share) for v in doc]
+    if isinstance(doc, str):
+        m = _QTY.match(doc)
+        if m and m.group(2) in RESPELL and rng.random() < share:
+            opts = RESPELL[m.group(2)]
+            unit, f, off = opts[int(rng.integers(0, len(opts)))]
+            return f"{float(m.group(1)) * f + off:.12g} {unit}"
+    return doc
+
+
+def si_mismatch(plain: Any, spelled: Any) -> str | None:
+    """Where two loaded scenes (the same quantities in other units) differ in SI values:
+    the schedule's steps, supply, environment, output interval and solver chunk."""
+    pairs: list[tuple[str, Any, Any]] = [
+        ("supply.flow", plain.supply.flow, spelled.supply.flow),
+        ("supply.inlet_temperature", plain.supply.inlet_temperature,
+         spelled.supply.inlet_temperature),
+        ("supply.level", plain.supply.level, spelled.supply.level),
+        ("environment.ambient_temperature", plain.environment.ambient_temperature,
+         spelled.environment.ambient_temperature),
+        ("environment.initial_temperature", plain.environment.initial_temperature,
+         spelled.environment.initial_temperature),
+        ("outputs.interval", plain.outputs.interval, spelled.outputs.interval)]
+    if len(plain.schedule.steps) != len(spelled.schedule.steps):
+        return (f"schedule: {len(plain.schedule.steps)} steps, respelled "
+                f"{len(spelled.schedule.steps)}")
+    for i, (a, b) in enumerate(zip(plain.schedule.steps, spelled.schedule.steps,
+                                   strict=True)):
+        for key in ("duration", "speed", "radial_load", "axial_load"):
+            pairs.append((f"schedule step {i} {key}", getattr(a, key), getattr(b, key)))
+    for where, a, b in pairs:
+        if (a is None) != (b is None) or (
+                a is not None and not math.isclose(a, b, rel_tol=1e-7)):
+            return f"{where}: {a!r} SI, respelled {b!r}"
+    return None
 
 
 def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
@@ -411,16 +582,22 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
         step["duration"] = _q(_log_uniform(rng, 2.0, 600.0), "s")
         steps.append(step)
     cold = rng.random() < 0.12
+    hot = not cold and rng.random() < 0.07
     if cold:
         # a cold start: machine, oil and air below freezing, then the schedule's speeds
         amb = float(rng.uniform(*COLD_RANGE))
         supply["inlet_temperature"] = _q(amb + rng.uniform(0.0, 5.0), "degC", 4)
+    elif hot:
+        # a hot machine (a turbine or gearbox oil near its limit)
+        amb = float(rng.uniform(*HOT_RANGE))
+        supply["inlet_temperature"] = _q(float(rng.uniform(*HOT_RANGE)), "degC", 4)
     else:
         amb = float(rng.uniform(-20.0, 120.0))
     env: dict[str, Any] = {"ambient_temperature": _q(amb, "degC", 4)}
-    if cold or rng.random() < 0.6:
-        env["initial_temperature"] = _q(amb if cold else rng.uniform(-20.0, 120.0),
-                                        "degC", 4)
+    if cold or hot or rng.random() < 0.6:
+        env["initial_temperature"] = _q(
+            amb if cold else rng.uniform(*HOT_RANGE) if hot else rng.uniform(-20.0, 120.0),
+            "degC", 4)
     names = ["a", "b", "c"][:n_bear]
     bearings = [{"name": n, **e.spec} for n, e in zip(names, picks, strict=True)]
     if n_bear > 1:
@@ -435,12 +612,25 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
                 # an NU-type bearing beside the ribbed one floats: no thrust share
                 b["load_share"] = {**b.get("load_share", {}), "axial": 0.0}
     schedule: dict[str, Any] = {"steps": steps}
-    if files is not None and rng.random() < 0.15:
+    form = rng.random()
+    axial_ok = not roller or (rib is not None and kin == "race_control")
+    if files is not None and form < 0.15:
         schedule = _schedule_file(rng, steps, files.with_name(files.name + "_protocol.csv"))
+    elif form < 0.23 and len(steps) == 1:
+        # the step as the [schedule] defaults (no steps array)
+        st = steps[0]
+        schedule = {"speed": st["speed"], "radial_load": st["radial_load"],
+                    "axial_load": st["axial_load"], "step_duration": st["duration"]}
+    elif form < 0.33 and axial_ok:
+        schedule = _axial_load_steps(rng, steps, c0, roller)
+    lubricant: dict[str, Any] = {"preset": str(rng.choice(lubricants))}
+    oil = ""
+    if files is not None and rng.random() < 0.12:
+        lubricant, oil = _oil_file(rng, files.with_name(files.name + "_oil.toml"))
     doc: dict[str, Any] = {
         "title": "fuzz case",
         "bearings": bearings,
-        "lubricant": {"preset": str(rng.choice(lubricants))},
+        "lubricant": lubricant,
         "supply": supply,
         "environment": env,
         "schedule": schedule,
@@ -461,11 +651,48 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
             "outputs": what, "supply": supply["method"],
             "speeds": ",".join(s["speed"].split()[0] for s in steps)}
     extras = [k for k, on in (("share", any("load_share" in b for b in bearings)),
-                              ("rib", rib is not None), ("cold", cold),
-                              ("file", "file" in schedule), ("meas", "measured" in doc)) if on]
+                              ("rib", rib is not None), ("cold", cold), ("hot", hot),
+                              ("file", "file" in schedule),
+                              ("dflt", "step_duration" in schedule
+                               and "axial_load_steps" not in schedule),
+                              ("asteps", "axial_load_steps" in schedule),
+                              ("meas", "measured" in doc)) if on]
+    if oil:
+        extras.append(oil)
     extras += _options(rng, doc, picks, kin)
+    if rng.random() < 0.2:
+        # the same scene in other units: must load to the same SI values (si_mismatch)
+        from thermobearing.scene import dumps_toml
+
+        desc["plain"] = dumps_toml(doc)
+        doc = respell(rng, doc)
+        extras.append("units")
+    if "file" in schedule:
+        # the protocol's steps as written inline: the file must read to the same steps
+        from thermobearing.scene import dumps_toml
+
+        # (a column left to the [schedule] defaults takes the first step's value)
+        kept = {("duration" if k == "step_duration" else k): v for k, v in schedule.items()
+                if k != "file"}
+        desc["inline"] = dumps_toml({**doc, "schedule": {"steps": [{**st, **kept}
+                                                                   for st in steps]}})
     desc["extras"] = ",".join(extras)
     return doc, desc
+
+
+def steps_mismatch(inline: Any, scene: Any, rel: float = 2e-5) -> str | None:
+    """Where the scene's schedule steps (read from its protocol file) differ from those of
+    ``inline`` (the same steps written in the TOML) beyond ``rel`` (the file's cells have
+    six significant digits), or None."""
+    a, b = inline.schedule.steps, scene.schedule.steps
+    if len(a) != len(b):
+        return f"schedule file: {len(b)} steps, written {len(a)}"
+    for i, (x, y) in enumerate(zip(a, b, strict=True)):
+        for key in ("duration", "speed", "radial_load", "axial_load"):
+            u, v = getattr(x, key), getattr(y, key)
+            if not math.isclose(u, v, rel_tol=rel, abs_tol=1e-9):
+                return f"schedule file row {i + 1} {key}: read {v!r} SI, written {u!r}"
+    return None
 
 
 def _options(rng: np.random.Generator, doc: dict[str, Any], picks: list[BearingEntry],
@@ -496,6 +723,23 @@ def _options(rng: np.random.Generator, doc: dict[str, Any], picks: list[BearingE
     if doc["outputs"]["mode"] == "transient" and rng.random() < 0.2:
         doc["outputs"]["interval"] = _q(_log_uniform(rng, 1.0, 300.0), "s")
         drawn.append("interval")
+    if kin != "none" and rng.random() < 0.1:
+        models["calibration"] = "none"
+        drawn.append("nocal")
+    if (kin != "none" and all(e.kind != "cylindrical" for e in picks)
+            and rng.random() < 0.12):
+        # the EHL rolling force in the ball balance (a plain name or with a reduction)
+        red = str(rng.choice(["none", "thermal", "skf", "thermal_starvation"]))
+        models["ball_rolling_resistance"] = ("harris" if rng.random() < 0.4
+                                             else {"model": "harris", "reduction": red})
+        drawn.append("rr")
+    if "solver" in doc and rng.random() < 0.15:
+        doc["solver"].update({"rtol": float(f"{_log_uniform(rng, 1e-8, 1e-3):.2g}"),
+                              "atol": float(f"{_log_uniform(rng, 1e-7, 1e-2):.2g}"),
+                              "kinematics_tolerance": round(float(rng.uniform(0.005, 0.3)),
+                                                            3),
+                              "max_step": _q(_log_uniform(rng, 1.0, 600.0), "s")})
+        drawn.append("tol")
     if rng.random() < 0.1:
         doc["checks"] = {"skid_limit": _q(rng.uniform(0.5, 20.0), "%", 3),
                          "contact_stress_limit": _q(rng.uniform(1500.0, 4500.0), "MPa", 4),
@@ -639,6 +883,93 @@ class Case:
     message: str = ""
     seconds: float = 0.0
     notes: list[str] = field(default_factory=list)
+    plain: str = ""  # the scene before respell() (its SI values must be the same)
+    inline: str = ""  # a protocol file's steps written inline (they must read the same)
+
+
+def first_difference(a: Any, b: Any, where: str = "scene", rel: float = 1e-9) -> str | None:
+    """The first place where two scenes differ (dataclass fields, mappings, sequences;
+    floats beyond ``rel`` relative: a scene's TOML writes 12 significant digits), or None."""
+    if dataclasses.is_dataclass(a) and type(a) is type(b):
+        for f in dataclasses.fields(a):
+            if f.compare:
+                d = first_difference(getattr(a, f.name), getattr(b, f.name),
+                                     f"{where}.{f.name}", rel)
+                if d:
+                    return d
+        return None
+    if isinstance(a, dict) and isinstance(b, dict):
+        if set(a) != set(b):
+            return f"{where}: keys {sorted(a)} != {sorted(b)}"
+        for k in a:
+            d = first_difference(a[k], b[k], f"{where}[{k!r}]", rel)
+            if d:
+                return d
+        return None
+    if isinstance(a, list | tuple) and isinstance(b, list | tuple):
+        if len(a) != len(b):
+            return f"{where}: {len(a)} items != {len(b)}"
+        for i, (x, y) in enumerate(zip(a, b, strict=True)):
+            d = first_difference(x, y, f"{where}[{i}]", rel)
+            if d:
+                return d
+        return None
+    if (isinstance(a, float) and isinstance(b, float)
+            and (math.isclose(a, b, rel_tol=rel) or (math.isnan(a) and math.isnan(b)))):
+        return None
+    return None if a == b else f"{where}: {a!r} != {b!r}"
+
+
+def measured_mismatch(scene: Any) -> str | None:
+    """The generator's measured file read back (``read_scene_measured``: its separators,
+    decimal commas, time format, unit, dropouts) against the warm-up it was written from,
+    t0 + 20 K (1 - exp(-t / 600 s)) with 0.2 K noise (t0 the initial temperature):
+    where a reading is more than 1.5 K off, or a time runs backwards; None when it fits."""
+    from thermobearing.measured import read_scene_measured
+
+    df = read_scene_measured(scene)
+    if df is None:
+        return None
+    t = df["time [s]"].to_numpy(dtype=float)
+    if len(t) and (t[0] < -1.0 or np.any(np.diff(t) <= 0.0)):
+        return f"measured times {t[:4].tolist()}... (from 0 s, increasing)"
+    expect = scene.environment.initial_temperature - 273.15 + 20.0 * (1.0 - np.exp(-t / 600))
+    for col in df.columns:
+        if col == "time [s]":
+            continue
+        v = df[col].to_numpy(dtype=float)
+        ok = np.isfinite(v)
+        if ok.any() and np.max(np.abs(v[ok] - expect[ok])) > 1.5:
+            i = int(np.flatnonzero(ok)[np.argmax(np.abs(v[ok] - expect[ok]))])
+            return (f"measured column {col!r} reads {v[i]:.4g} at t = {t[i]:.4g} s, the file "
+                    f"holds {expect[i]:.4g} degC ({scene.measured.unit})")
+    return None
+
+
+def check_scene(scene: Any) -> str | None:
+    """What ``thermobearing check`` does with the scene (model names, preflight, the chain
+    with citations, the estimates, the measured file), in this process: None when it
+    passes, the refusal's text when it refuses (raised on; any other exception escapes as
+    the case's defect)."""
+    from thermobearing.commands._preflight import preflight
+    from thermobearing.commands.check import describe_measured
+    from thermobearing.errors import ConvergenceError, InputError
+    from thermobearing.scene_checks import check_model_names
+    from thermobearing.simulation import Simulation
+
+    try:
+        check_model_names(scene)
+        sim = Simulation(scene, progress=False)
+        preflight(sim)
+        text = sim.describe_chain(with_citations=True) + (sim.describe_estimates() or "")
+        if scene.measured is not None:
+            text += describe_measured(scene)
+    except (InputError, ConvergenceError) as exc:
+        return str(exc)
+    why = garbled(text)
+    if why:
+        return f"garbled check text ({why}): {text[:300]}"
+    return None
 
 
 def _run_here(case: Case) -> None:
@@ -651,8 +982,34 @@ def _run_here(case: Case) -> None:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             scene = loads_scene(case.toml, base_dir=ROOT)
+            mismatch = (si_mismatch(loads_scene(case.plain, base_dir=ROOT), scene)
+                        if case.plain else None)
+            if mismatch:
+                case.outcome, case.message = "DEFECT", f"units: {mismatch}"
+                return
+            misread = (steps_mismatch(loads_scene(case.inline, base_dir=ROOT), scene)
+                       if case.inline else None)
+            if misread:
+                case.outcome, case.message = "DEFECT", misread
+                return
+            differs = first_difference(scene, loads_scene(scene.to_toml(), base_dir=ROOT))
+            if differs:
+                case.outcome, case.message = "DEFECT", (
+                    f"round trip: loads_scene(scene.to_toml()) differs at {differs}")
+                return
+            refused = check_scene(scene)
+            misread = measured_mismatch(scene) if refused is None else None
+            if misread:
+                case.outcome, case.message = "DEFECT", misread
+                return
             results = Simulation(scene, progress=False).run()
+        if refused is not None:
+            case.outcome, case.message = "DEFECT", f"check refuses what runs: {refused}"
+            return
         problems = check_results(results, scene.models.get("kinematics") == "none")
+        if "film" in scene.outputs.want and "film" not in results.tables and not any(
+                str(w).startswith("outputs.want") for w in results.warnings):
+            problems.append("outputs.want holds film: no film table and no word why")
         leaked = sorted({f"{w.category.__name__}: {w.message}" for w in caught
                          if not issubclass(w.category, DeprecationWarning)})
         case.notes.extend(leaked)
@@ -731,30 +1088,162 @@ class Runner:
             self._proc.join(5)
 
 
+def _cli(args: list[str], timeout: float) -> subprocess.CompletedProcess[str] | None:
+    """``thermobearing ARGS`` in a subprocess (None: over the time limit)."""
+    try:
+        return subprocess.run([sys.executable, "-m", "thermobearing.cli", *args],
+                              capture_output=True, text=True, timeout=timeout, cwd=ROOT)
+    except subprocess.TimeoutExpired:
+        return None
+
+
+def _cli_failure(proc: subprocess.CompletedProcess[str]) -> str | None:
+    """A command's exit that is a defect: not 0 and not 1 with an ``error:`` line (a
+    traceback, a crash); None otherwise."""
+    err = proc.stderr.strip().splitlines()
+    if proc.returncode == 0 or (proc.returncode == 1 and any("error:" in ln for ln in err)):
+        return None
+    return f"exit {proc.returncode}: {' | '.join(err[-3:])}"
+
+
 def run_cli(case: Case, out_dir: Path, time_limit: float) -> None:
-    """``thermobearing run SCENE --out DIR --quiet``: exit 0 with a report, or 1 with an
-    error line; anything else (a traceback, a missing report) is a defect."""
+    """``thermobearing check SCENE``, ``thermobearing run SCENE --out DIR --quiet`` and
+    ``thermobearing report DIR``: exit 0 (a run with a report), or 1 with an error line;
+    anything else (a traceback, a missing report, a check that refuses what runs or a run
+    that refuses what the API ran) is a defect."""
     scene_path = out_dir / f"case_{case.index:04d}.toml"
     scene_path.write_text(case.toml, encoding="utf-8")
     target = out_dir / f"case_{case.index:04d}_run"
-    try:
-        proc = subprocess.run([sys.executable, "-m", "thermobearing.cli", "run",
-                               str(scene_path), "--out", str(target), "--quiet"],
-                              capture_output=True, text=True, timeout=time_limit + 30,
-                              cwd=ROOT)
-    except subprocess.TimeoutExpired:
+    check = _cli(["check", str(scene_path)], time_limit)
+    if check is not None and _cli_failure(check):
+        case.outcome, case.message = "DEFECT", f"cli check {_cli_failure(check)}"
+        return
+    proc = _cli(["run", str(scene_path), "--out", str(target), "--quiet"], time_limit + 30)
+    if proc is None:
         case.notes.append("cli: time limit")
         return
     err = proc.stderr.strip().splitlines()
     if proc.returncode == 0:
         if not (target / "report.html").is_file():
             case.outcome, case.message = "DEFECT", "cli: exit 0 without report.html"
+            return
+        if check is not None and check.returncode != 0:
+            case.outcome, case.message = "DEFECT", (
+                f"cli check refused what runs: {check.stderr.strip().splitlines()[-1]}")
+            return
+        (target / "report.html").unlink()
+        rep = _cli(["report", str(target)], time_limit)
+        if rep is not None and (rep.returncode != 0 or not (target / "report.html").is_file()):
+            case.outcome, case.message = "DEFECT", (
+                f"cli report of a finished run: {_cli_failure(rep) or rep.stderr[-300:]}")
     elif proc.returncode == 1 and any("error:" in line for line in err):
         if case.outcome == "OK":
             case.outcome, case.message = "DEFECT", f"cli refused what the API ran: {err[-1]}"
+        elif (target / "metadata.json").is_file():
+            # a stopped run's folder: its report must still be written (the CLI says so)
+            rep = _cli(["report", str(target)], time_limit)
+            if rep is not None and (rep.returncode != 0
+                                    or not (target / "report.html").is_file()):
+                case.outcome, case.message = "DEFECT", (
+                    f"cli report of a stopped run: {_cli_failure(rep) or rep.stderr[-300:]}")
     else:
         case.outcome = "DEFECT"
         case.message = f"cli exit {proc.returncode}: {' | '.join(err[-3:])}"
+
+
+def sweep_set(rng: np.random.Generator, doc: dict[str, Any]) -> str | None:
+    """One ``--set PATH=VALUES`` of two values for the scene (bare numbers in the scene's
+    own unit of the field, or presets), or None when none fits."""
+    options: list[str] = []
+    sup = doc.get("supply", {})
+
+    def num(text: str) -> float:
+        return float(text.split()[0])
+
+    if "flow" in sup and num(sup["flow"]) > 0:
+        f = num(sup["flow"])
+        options.append(f"supply.flow={f * 0.5:.6g},{f * 2.0:.6g}")
+    if "inlet_temperature" in sup:
+        t = num(sup["inlet_temperature"])
+        options.append(f"supply.inlet_temperature={t:.6g},{t + 10.0:.6g}")
+    sched = doc.get("schedule", {})
+    steps = sched.get("steps") or ([sched] if "speed" in sched else [])
+    if steps and "speed" in steps[0]:
+        v = num(steps[0]["speed"])
+        options.append(f"schedule.speed={v:.6g},{v * 1.5 + 1.0:.6g}")
+    two = [str(x) for x in rng.choice(lubricant_names(), 2, replace=False)]
+    if "preset" in doc.get("lubricant", {}):
+        options.append("lubricant.preset=" + ",".join(two))
+    # lubricant files in place of the scene's preset or file (a preset's own TOML)
+    options.append("lubricant.path=" + ",".join(
+        str(ROOT / "configs" / "lubricants" / f"{n}.toml") for n in two))
+    options.append(f"checks.skid_limit={rng.uniform(0.5, 5):.3g},{rng.uniform(5, 20):.3g}")
+    if "network" in doc:
+        options.append(f"network.parameters.h_oil={_log_uniform(rng, *H_OIL_RANGE):.4g},"
+                       f"{_log_uniform(rng, *H_OIL_RANGE):.4g}")
+    return str(rng.choice(options)) if options else None
+
+
+def _written_unit(doc: dict[str, Any], path: str) -> str | None:
+    """The unit the scene document writes the swept field in (the first step's for
+    ``schedule.*``), or None (a preset, a threshold the scene does not set)."""
+    node: Any = doc
+    if path.startswith("schedule."):
+        sched = doc.get("schedule", {})
+        node = (sched.get("steps") or [sched])[0]
+        path = path.split(".", 1)[1]
+    for key in path.split("."):
+        if not isinstance(node, dict) or key not in node:
+            return None
+        node = node[key]
+    m = _QTY.match(node) if isinstance(node, str) else None
+    return m.group(2) if m else None
+
+
+def run_sweep_cli(case: Case, out_dir: Path, time_limit: float, setting: str) -> None:
+    """``thermobearing sweep SCENE --set ... -j 1 --quiet --out DIR`` and ``thermobearing
+    report DIR``: a finished sweep has a summary.csv whose mean total loss is a finite
+    number >= 0 in every row; a refusal is exit 1 with an error line."""
+    import pandas as pd
+
+    scene_path = out_dir / f"case_{case.index:04d}.toml"
+    scene_path.write_text(case.toml, encoding="utf-8")
+    target = out_dir / f"case_{case.index:04d}_sweep"
+    proc = _cli(["sweep", str(scene_path), "--set", setting, "-j", "1", "--quiet",
+                 "--out", str(target)], 2 * time_limit + 60)
+    if proc is None:
+        case.notes.append(f"sweep {setting}: time limit")
+        return
+    if _cli_failure(proc):
+        case.outcome, case.message = "DEFECT", f"cli sweep {setting}: {_cli_failure(proc)}"
+        return
+    if proc.returncode != 0:
+        case.notes.append(f"sweep {setting}: {proc.stderr.strip().splitlines()[-1][:200]}")
+        return
+    summary = pd.read_csv(target / "summary.csv")
+    path = setting.split("=", 1)[0]
+    written = _written_unit(tomllib.loads(case.toml), path)
+    if written and path in summary:
+        from thermobearing.units import quantity_unit
+
+        got = {str(v).split(" ", 1)[-1] for v in summary[path]}
+        # the same unit in another spelling ("r/min" is rpm) is no defect
+        if {quantity_unit(f"1 {u}") for u in got} != {quantity_unit(f"1 {written}")}:
+            case.outcome, case.message = "DEFECT", (
+                f"cli sweep {setting}: bare numbers read in {sorted(got)}, the scene writes "
+                f"{path} in {written!r}")
+            return
+    col = next((c for c in ("mean total loss [W]", "total loss [W]") if c in summary), "")
+    if col and not (np.isfinite(summary[col]).all() and (summary[col] >= 0).all()):
+        case.outcome, case.message = "DEFECT", (
+            f"cli sweep {setting}: summary.csv {col} = {summary[col].tolist()}")
+        return
+    rep = _cli(["report", str(target)], time_limit)
+    if rep is not None and (rep.returncode != 0 or not (target / "report.html").is_file()):
+        case.outcome, case.message = "DEFECT", (
+            f"cli report of sweep {setting}: {_cli_failure(rep) or rep.stderr[-300:]}")
+    else:
+        case.notes.append(f"sweep {setting}: ok")
 
 
 # -------------------------------------------------------------------------------- main
@@ -769,6 +1258,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--cli-every", type=int, default=10,
                         help="also run every N-th case through `thermobearing run --out` "
                              "(0: never; default 10)")
+    parser.add_argument("--sweep-every", type=int, default=5,
+                        help="also sweep every N-th case (offset N/2) of those that ran OK "
+                             "within a third of the time limit: `thermobearing sweep` "
+                             "with one --set of two values, then `report` (0: never; "
+                             "default 5)")
     parser.add_argument("--only", type=str, default="",
                         help="comma list of case indices to run (reproduce a few)")
     args = parser.parse_args(argv)
@@ -777,19 +1271,24 @@ def main(argv: list[str] | None = None) -> int:
     rng = np.random.default_rng(args.seed)
     catalogue, lubricants = bearing_catalogue(), lubricant_names()
     only = {int(x) for x in args.only.split(",") if x.strip()}
-    out_dir = args.out or Path(tempfile.mkdtemp(prefix="fuzz_scenes_"))
+    out_dir = (args.out or Path(tempfile.mkdtemp(prefix="fuzz_scenes_"))).resolve()
     out_dir.mkdir(parents=True, exist_ok=True)
     cases = []
     import_package()
     runner = Runner()
     for i in range(args.n):
         doc, desc = make_scene(rng, catalogue, lubricants, out_dir / f"case_{i:04d}")
+        setting = sweep_set(rng, doc)  # drawn for every case: --only reruns the same
         if only and i not in only:
             continue
-        case = Case(i, desc, dumps_toml(doc))
+        case = Case(i, desc, dumps_toml(doc), plain=desc.get("plain", ""),
+                    inline=desc.get("inline", ""))
         runner.run(case, args.time_limit)
         if args.cli_every and i % args.cli_every == 0 and case.outcome != "TIMEOUT":
             run_cli(case, out_dir, args.time_limit)
+        if (args.sweep_every and i % args.sweep_every == args.sweep_every // 2
+                and case.outcome == "OK" and case.seconds < args.time_limit / 3 and setting):
+            run_sweep_cli(case, out_dir, args.time_limit, setting)
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "

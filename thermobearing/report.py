@@ -167,7 +167,12 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
     running) are left blank. ``ranges``: component -> (low, high) of its colour scale, so
     that the maps of several slices of a sweep (one per value of a third parameter) share
     one scale and can be compared by colour (default: each map its own range). ``titles``:
-    component -> panel title (default the column name), e.g. the loss in words."""
+    component -> panel title (default the column name), e.g. the loss in words.
+
+    The computed points are dotted (the contours between them are interpolated), a grid
+    point without a result (a failed case) is a red cross with a note under the panel, and
+    a component with one value everywhere (0 W of an absent cage land) is written, not
+    contoured."""
     n = len(components)
     cols = min(3, n)
     rows = math.ceil(n / cols)
@@ -193,16 +198,52 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
             continue
+        xs, ys = pv.columns.to_numpy(float), pv.index.to_numpy(float)
+        values = pv.to_numpy(float)
         lo, hi = (ranges or {}).get(comp, (math.nan, math.nan))
-        levels = np.linspace(lo, hi, 13) if hi > lo else 12
-        cs = ax.contourf(pv.columns.to_numpy(float), pv.index.to_numpy(float), pv.to_numpy(),
-                         levels=levels)
-        fig.colorbar(cs, ax=ax, label="W" if comp.endswith("[W]") else None)
         ax.set_xlabel(x, fontsize=8)
         ax.set_ylabel(y, fontsize=8)
+        if not hi > lo and _constant(values):
+            # one value everywhere (a cage guide land of an element-guided cage books 0 W):
+            # contourf would draw a colour bar of round-off levels (+-2e-14 W); say the value
+            ax.set_xlim(xs.min(), xs.max())
+            ax.set_ylim(ys.min(), ys.max())
+            unit = " W" if comp.endswith("[W]") else ""
+            ax.text(0.5, 0.5, f"{_fmt_value(float(np.nanmax(values)))}{unit} at every "
+                    "point", ha="center", va="center", transform=ax.transAxes, fontsize=9)
+        else:
+            levels = np.linspace(lo, hi, 13) if hi > lo else 12
+            cs = ax.contourf(xs, ys, values, levels=levels)
+            fig.colorbar(cs, ax=ax, label="W" if comp.endswith("[W]") else None)
+        _mark_points(ax, xs, ys, values)
     for ax in list(axes.flat)[n:]:
         ax.axis("off")
     return _png(fig)
+
+
+def _constant(values: np.ndarray) -> bool:
+    """True when the finite ``values`` of a map are one value (to 1e-9 of their size, or
+    within 1e-12 of zero)."""
+    finite = values[np.isfinite(values)]
+    if finite.size == 0:
+        return False
+    return float(np.ptp(finite)) <= max(1e-9 * float(np.abs(finite).max()), 1e-12)
+
+
+def _mark_points(ax: Any, xs: np.ndarray, ys: np.ndarray, values: np.ndarray) -> None:
+    """Mark on a loss map where it was computed (black dots: the contours between them are
+    interpolated) and the grid points without a result (red crosses: a failed case, or one
+    not run yet), with a note under the axes counting the latter."""
+    gx, gy = np.meshgrid(xs, ys)
+    ok = np.isfinite(values)
+    # on the frame at the grid's edges: not clipped, drawn over it
+    ax.plot(gx[ok], gy[ok], "o", color="black", markersize=3, clip_on=False, zorder=3)
+    if (~ok).any():
+        ax.plot(gx[~ok], gy[~ok], "x", color="red", markersize=8, markeredgewidth=1.8,
+                clip_on=False, zorder=3)
+        ax.text(0.0, -0.3, f"x: no result at {int((~ok).sum())} of {ok.size} grid points "
+                "(failed or not run)", transform=ax.transAxes, fontsize=7, color="red",
+                va="top")
 
 
 def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
@@ -324,8 +365,9 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     parts.append(html_table(chain_table(results.chain)))
     stats = {k: v for k, v in results.stats.items() if not isinstance(v, dict | list)}
     if stats:
+        none = _no_kinematics(results)
         parts.append("<p>solver statistics: " + ", ".join(
-            f"{esc(str(k))} = {esc(_fmt_stat(v))}" for k, v in stats.items()) + "</p>")
+            esc(_stat_text(k, v, none)) for k, v in stats.items()) + "</p>")
     parts.append("<h2 id='energy-audit'>Energy audit</h2>")
     energy = results.tables.get("energy")
     if energy is not None and not energy.empty:
@@ -394,6 +436,22 @@ def _caption(name: str) -> str | None:
     return FIGURE_CAPTIONS.get(name)
 
 
+#: run statistics (Results.stats keys) -> words and unit for the report
+_STAT_WORDS = {"wall_time_s": ("wall time", "s"), "kinematics_solves": ("kinematics solves", ""),
+               "steps": ("steps", ""), "rejected_chunks": ("rejected coupling chunks", ""),
+               "heat_evaluations": ("heat-source evaluations", "")}
+
+
+def _stat_text(key: str, value: Any, no_kinematics: bool = False) -> str:
+    """One run statistic in words with its unit (``wall time 0.6 s``); the kinematics
+    solves of a chain without kinematics (``kinematics = "none"``) are said to be none
+    (the count is of the pure-rolling states it set, no solve)."""
+    words, unit = _STAT_WORDS.get(key, (key.replace("_", " "), ""))
+    if key == "kinematics_solves" and no_kinematics:
+        return 'kinematics solves: none (kinematics = "none": pure rolling is assumed)'
+    return f"{words} {_fmt_stat(value)}" + (f" {unit}" if unit else "")
+
+
 def _fmt_stat(v: Any) -> str:
     if isinstance(v, float) and not isinstance(v, bool):
         return f"{v:.3g}"
@@ -433,8 +491,15 @@ def attach_figures(results: Results, scene: Any) -> None:
         if dest is not None:
             results.figures["heat_destinations"] = dest
     kin = results.tables.get("kinematics")
-    if kin is not None and not kin.empty and len(kin) > 1:
+    if kin is not None and not kin.empty and len(kin) > 1 and not _no_kinematics(results):
         results.figures["cage_speed_ratio"] = fig_csr(kin)
+
+
+def _no_kinematics(results: Results) -> bool:
+    """True when the chain solved no kinematics (``kinematics = "none"``, the global
+    friction rung L0): its kinematics table holds the theoretical cage speed ratio, not a
+    result, so a cage-speed figure would show a model's input as its prediction."""
+    return ("kinematics", "none") in [tuple(x) for x in results.chain]
 
 
 def _run_loss_maps(losses: pd.DataFrame) -> dict[str, bytes]:

@@ -12,6 +12,8 @@ loads and oil temperature. No physics of its own: the estimates are the package'
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -19,6 +21,9 @@ import pandas as pd
 
 from .errors import InputError
 from .units import from_si
+
+#: the run's total as the frictional moment of the catalogues, M = P / omega [N mm]
+TORQUE = "this run M = P / omega [N mm]"
 
 #: the global models set beside the run's total (registered names of GLOBAL_FRICTION) and
 #: their names in the report's columns
@@ -165,7 +170,8 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
     the difference of the run's total from each [%].
 
     Returns the table (columns ``step``, ``bearing``, ``speed [rpm]``, ``radial load
-    [kN]``, ``axial load [kN]``, ``oil [degC]``, ``this run [W]``, ``<model> [W]``,
+    [kN]``, ``axial load [kN]``, ``oil [degC]``, ``this run [W]``, ``this run M = P / omega
+    [N mm]`` (the moment a catalogue's friction calculator gives), ``<model> [W]``,
     ``this run vs <model> [%]``, the models named as in :data:`CATALOGUE_MODELS`) and one
     note per model a bearing cannot be estimated with (the model's error, e.g. a
     designation without a series). Steps at rest (0 r/min) are left out, with a note."""
@@ -193,7 +199,9 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
             continue
         row: dict[str, Any] = {"step": step, "bearing": name, "speed [rpm]": p["speed"],
                                "radial load [kN]": p["radial"], "axial load [kN]": p["axial"],
-                               "oil [degC]": p["T"] - _KELVIN, "this run [W]": p["total"]}
+                               "oil [degC]": p["T"] - _KELVIN, "this run [W]": p["total"],
+                               # the frictional moment a catalogue quotes, M = P / omega
+                               TORQUE: 1e3 * p["total"] / (float(p["speed"]) * math.pi / 30.0)}
         b = bearings.get(name)
         for model in CATALOGUE_MODELS:
             if b is None or (name, model) in refused:
@@ -210,10 +218,159 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
                 continue
             label = CATALOGUE_MODELS[model]
             row[f"{label} [W]"] = float(res.power)
-            row[f"this run vs {label} [%]"] = (100.0 * (p["total"] / res.power - 1.0)
+            row[f"this run vs {label} [%]"] = (_percent(p["total"], res.power)
                                                if res.power > 0 else math.nan)
         rows.append(row)
+    notes += _self_comparison_notes(losses)
     if at_rest:
         notes.append("steps at rest (0 r/min) left out: no loss in the run nor in the "
                      "models (steps " + ", ".join(str(s) for s in at_rest) + ")")
     return pd.DataFrame(rows), notes
+
+
+def _percent(value: float, reference: float) -> float:
+    """100 (value / reference - 1) [%], with the round-off of an identical pair
+    (|difference| below 1e-9 %) written as 0 rather than 2.2e-14."""
+    pct = 100.0 * (float(value) / float(reference) - 1.0)
+    return 0.0 if abs(pct) < 1e-9 else pct
+
+
+def _self_comparison_notes(losses: pd.DataFrame) -> list[str]:
+    """A note when the run's loss is itself a catalogue model (the ``global_friction``
+    source, the fidelity ladder's L0 rung): the cross-check then compares that model with
+    itself and with the other one, not a physics chain with the catalogue."""
+    if "source" not in losses or set(losses["source"]) != {"global_friction"}:
+        return []
+    models = sorted({str(c).split()[0] for c in losses.get("component", [])
+                     if str(c).split() and str(c).split()[0] in CATALOGUE_MODELS})
+    named = " and ".join(CATALOGUE_MODELS[m] for m in models) or "a catalogue model"
+    return [f"this run's loss is the global_friction source ({named}, kinematics "
+            f"\"none\", the L0 rung): its row beside {named} compares the model with "
+            f"itself (0 %); run the skidding or race-control chain for a comparison with "
+            f"the physics"]
+
+
+def _wants_network(scene: Any) -> bool:
+    """True when the scene's losses are evaluated at temperatures a thermal network
+    computes (a transient with temperatures, or a steady state), not at its initial one."""
+    out = scene.outputs
+    return out.mode == "steady" or "temperatures" in out.want
+
+
+def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
+                               total: str = "mean total loss [W]"
+                               ) -> tuple[pd.DataFrame, list[str]]:
+    """Each sweep case's total loss beside the SKF four-term and Palmgren estimates of its
+    bearings (:func:`thermobearing.global_friction.global_friction`) at its speeds, loads,
+    lubrication method and oil temperature, averaged over its protocol as the sweep's
+    ``total`` is (steps weighted by their duration, every bearing with its load share),
+    with the difference of the case's total from each [%].
+
+    ``base``: the sweep's base scene; ``records``: the case records of ``cases.jsonl``
+    (``case``, ``params`` as set, ``result``). The oil temperature is known for a case
+    whose losses were evaluated at the scene's initial temperature (no thermal network:
+    ``temperatures`` not in its outputs and not steady) and for a steady case with one
+    operating point (each bearing's steady oil node, :func:`_case_oil_temperatures`); for
+    the others the table is empty and a note says why. Returns the table (``case``, the swept values
+    as set, ``oil [degC]``, ``this run [W]``, ``<model> [W]``, ``this run vs <model>
+    [%]``) and the notes (a model a bearing cannot be estimated with, once each)."""
+    from .global_friction import global_friction
+    from .scene import Scene
+    from .sweep_params import assign_path
+
+    rows: list[dict[str, Any]] = []
+    notes: list[str] = []
+    refused: set[tuple[str, str]] = set()
+    cache: dict[str, tuple[dict[str, Any], Any]] = {}
+    base_dict = base.to_dict()
+    for rec in records:
+        d = _deep_copy(base_dict)
+        for path, value in rec.get("params", {}).items():
+            assign_path(d, path, value)
+        base_dir = getattr(base, "base_dir", None)
+        scene = Scene.from_dict(d, base_dir=Path(base_dir) if base_dir else None)
+        result = rec.get("result", {})
+        oil = _case_oil_temperatures(scene, result)
+        if oil is None:
+            return pd.DataFrame(), [
+                "no catalogue cross-check: the cases' losses are evaluated at the "
+                "temperatures of their thermal network, which the sweep summary does not "
+                "keep per step; a losses-only base scene (outputs without "
+                "\"temperatures\") is compared at its initial temperature, a steady one "
+                "with one operating point at its steady oil temperature"]
+        key = repr((d.get("bearings"), d.get("lubricant")))
+        if key not in cache:
+            bearings, bnotes = load_scene_bearings(scene)
+            notes += [n for n in bnotes if n not in notes]
+            cache[key] = (bearings, load_scene_lubricant(scene))
+        bearings, lubricant = cache[key]
+        level = scene.supply.level
+        sums = {m: 0.0 for m in CATALOGUE_MODELS}
+        ok = {m: True for m in CATALOGUE_MODELS}
+        duration = 0.0
+        for step in scene.schedule.steps:
+            duration += step.duration
+            if step.speed == 0.0:
+                continue  # at rest: no loss in the case nor in the models
+            for spec in scene.bearings:
+                b = bearings.get(spec.name)
+                for model in CATALOGUE_MODELS:
+                    if b is None or (spec.name, model) in refused:
+                        ok[model] = False
+                        continue
+                    opts = {"oil_level": level} if (model == "skf_four_term" and level) \
+                        else {}
+                    try:
+                        res = global_friction(model, b, lubricant, oil[spec.name],
+                                              step.speed,
+                                              step.radial_load * spec.radial_share,
+                                              abs(step.axial_load * spec.axial_share),
+                                              lubrication=scene.supply.method, **opts)
+                    except InputError as exc:
+                        refused.add((spec.name, model))
+                        ok[model] = False
+                        notes.append(f"{model} for bearing {spec.name}: not applicable "
+                                     f"({exc})")
+                        continue
+                    sums[model] += float(res.power) * step.duration
+        this = result.get(total)
+        temps = sorted({round(t - _KELVIN, 6) for t in oil.values()})
+        row: dict[str, Any] = {"case": rec.get("case"), **rec.get("params", {}),
+                               "oil [degC]": (temps[0] if len(temps) == 1 else
+                                              " / ".join(f"{t:.4g}" for t in temps)),
+                               "this run [W]": this}
+        for model, label in CATALOGUE_MODELS.items():
+            if not ok[model] or duration <= 0.0:
+                continue
+            est = sums[model] / duration
+            row[f"{label} [W]"] = est
+            row[f"this run vs {label} [%]"] = (
+                _percent(this, est)
+                if isinstance(this, (int, float)) and est > 0 else math.nan)
+        rows.append(row)
+    return pd.DataFrame(rows), notes
+
+
+def _case_oil_temperatures(scene: Any, result: Mapping[str, Any]) -> dict[str, float] | None:
+    """Bearing name -> the oil temperature [K] a sweep case's losses were evaluated at: the
+    initial temperature when no network ran; in a steady case with one operating point its
+    steady oil node (the summary's ``final <bearing>.oil [degC]``); None otherwise (a
+    transient, or several steady points: the summary keeps only the last)."""
+    names = [b.name for b in scene.bearings]
+    if not _wants_network(scene):
+        return {n: scene.environment.initial_temperature for n in names}
+    if scene.outputs.mode != "steady" or len(scene.schedule.steps) != 1:
+        return None
+    out = {}
+    for n in names:
+        value = result.get(f"final {n}.oil [degC]")
+        if not isinstance(value, (int, float)) or not math.isfinite(value):
+            return None
+        out[n] = float(value) + _KELVIN
+    return out
+
+
+def _deep_copy(d: Any) -> Any:
+    import copy
+
+    return copy.deepcopy(d)

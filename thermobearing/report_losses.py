@@ -265,6 +265,30 @@ def _operating_axis(df: pd.DataFrame) -> tuple[str, dict[Any, float], list[str],
     return operating_axis(df)
 
 
+#: width of a bar panel of :func:`_stacked_panels` left of the legend [pt] (9 in figure)
+_PANEL_WIDTH_PT = 430.0
+#: mean width of a character of the 7-pt tick labels [pt] (DejaVu Sans)
+_CHAR_PT = 4.3
+
+
+def tick_layout(labels: list[str], width_pt: float) -> tuple[list[str], int]:
+    """Tick labels of ``len(labels)`` evenly spaced bars over ``width_pt`` points, and their
+    rotation [deg], laid out so that neighbours do not overlap: as given when they fit,
+    else each ``a / b`` label on lines of its own (``1500 r/min`` over ``3 kN radial``),
+    else the one-line labels turned upright (90 deg)."""
+    if not labels:
+        return labels, 0
+    room = 0.9 * width_pt / len(labels)
+    if max(len(s) for s in labels) * _CHAR_PT <= room:
+        return labels, 0
+    stacked = [s.replace(" / ", "\n") for s in labels]
+    widest = max(len(line) for s in stacked for line in s.split("\n"))
+    lines = max(s.count("\n") + 1 for s in stacked)
+    if widest * _CHAR_PT <= room and lines <= 3:
+        return stacked, 0
+    return labels, 90
+
+
 def _stacked_panels(losses: pd.DataFrame, column: str, order: list[str],
                     colours: Mapping[str, Any], label_of: Any, ylabel: str,
                     legend_title: str) -> bytes:
@@ -288,8 +312,9 @@ def _stacked_panels(losses: pd.DataFrame, column: str, order: list[str],
                    label=label_of(value))
             bottom += pivot[value].to_numpy()
         every = max(1, math.ceil(len(labels) / 30))
-        ax.set_xticks(np.arange(0, len(labels), every), labels[::every],
-                      rotation=90 if len(labels) > 8 else 0, fontsize=7)
+        shown, rotation = tick_layout(labels[::every], _PANEL_WIDTH_PT)
+        ax.set_xticks(np.arange(0, len(labels), every), shown, rotation=rotation,
+                      fontsize=7)
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
         if name is not None:
@@ -330,10 +355,11 @@ def fig_destinations(losses: pd.DataFrame) -> bytes | None:
 
 def summary_sources(columns: Iterable[str]) -> list[str]:
     """The heat sources with a ``<source> [W]`` column in a sweep summary or a
-    :func:`breakdown_by_source` table, in :func:`source_order` (totals, maxima and the
-    loss classes are not sources)."""
+    :func:`breakdown_by_source` table, in :func:`source_order` (totals -- the sweep's
+    ``mean total loss [W]`` and ``mean total loss <bearing> [W]`` too --, maxima, minima
+    and the loss classes are not sources)."""
     names = [c[:-4] for c in columns if str(c).endswith(" [W]") and c not in _NOT_SOURCES
-             and not str(c).startswith(("total loss", "max "))]
+             and not str(c).startswith(("mean total loss", "total loss", "max ", "min "))]
     return source_order(names)
 
 
@@ -411,14 +437,97 @@ def _png(fig: plt.Figure) -> bytes:
 
 def glossary(losses: pd.DataFrame) -> pd.DataFrame:
     """The heat sources of a losses table: registered name (the CSV column), what it is,
-    and its loss class (load-dependent / load-independent, ``losses.py``) when known."""
+    its loss class (load-dependent / load-independent, ``losses.py``) when known, and,
+    when the run has points that differ in one load only, how much the source changed
+    with the load in this run (:func:`load_response`)."""
     order = source_order(losses["source"])
     out = pd.DataFrame({"in the CSV files": order,
-                        "loss": [source_label(s) for s in order]})
+                        "loss": [source_label(s) + _global_model_text(losses, s)
+                                 for s in order]})
     classes = loss_class_of(losses)
     if classes:
         out["class"] = [classes.get(s, "") for s in order]
+    response = load_response(losses)
+    if response:
+        out["change with the load in this run"] = [
+            _response_text(response[s]) if s in response else "" for s in order]
     return out
+
+
+#: registered global friction models -> their names in the report
+_GLOBAL_MODELS = {"skf_four_term": "SKF four-term", "palmgren": "Palmgren M0 + M1"}
+
+
+def _global_model_text(losses: pd.DataFrame, source: str) -> str:
+    """``: <model>`` for the ``global_friction`` source, the catalogue model(s) its
+    components name (``skf_four_term rolling``, ``palmgren M0``); empty otherwise."""
+    if source != "global_friction" or "component" not in losses:
+        return ""
+    comps = losses.loc[losses["source"] == source, "component"].astype(str)
+    models = [m for m in _GLOBAL_MODELS if comps.str.startswith(m + " ").any()
+              or (comps == m).any()]
+    return (": " + ", ".join(_GLOBAL_MODELS[m] for m in models)) if models else ""
+
+
+#: relative change with the load [-] beyond which a load-independent source is named in
+#: :func:`class_notes` (the class is a nominal one; a few per cent come from the
+#: kinematics a load moves)
+LOAD_CHANGE_NOTE = 0.10
+
+
+def load_response(losses: pd.DataFrame) -> dict[str, dict[str, Any]]:
+    """Per source, the largest relative change of its power [-] between two points of the
+    run that differ in one load only (same bearing, speed and other load): ``change``
+    (power at the higher load / power at the lower load - 1), ``load`` (the column),
+    ``low`` and ``high`` (its values [kN]) and ``speed`` [rpm]. Empty when no two points
+    differ in one load only; a source at 0 W at the lower load is left out there."""
+    wide = breakdown_by_source(losses)
+    sources = summary_sources(wide.columns)
+    loads = [c for c in ("radial load [kN]", "axial load [kN]") if c in wide]
+    out: dict[str, dict[str, Any]] = {}
+    for col in loads:
+        fixed = [c for c in ("bearing", "speed [rpm]", *loads) if c in wide and c != col]
+        for _key, g in wide.groupby(fixed, sort=False) if fixed else [((), wide)]:
+            if g[col].nunique() < 2 or ("speed [rpm]" in g and
+                                        float(g["speed [rpm]"].iloc[0]) == 0.0):
+                continue
+            lo, hi = g.loc[g[col].idxmin()], g.loc[g[col].idxmax()]
+            for src in sources:
+                a, b = float(lo[f"{src} [W]"]), float(hi[f"{src} [W]"])
+                if not (math.isfinite(a) and math.isfinite(b)) or a <= 0.0:
+                    continue
+                change = b / a - 1.0
+                if src not in out or abs(change) > abs(out[src]["change"]):
+                    out[src] = {"change": change, "load": col, "low": float(lo[col]),
+                                "high": float(hi[col]),
+                                "speed": float(lo.get("speed [rpm]", math.nan))}
+    return out
+
+
+def _response_text(r: Mapping[str, Any]) -> str:
+    kind = r["load"].split()[0]
+    where = f" at {r['speed']:g} r/min" if math.isfinite(r["speed"]) else ""
+    return (f"{100.0 * r['change']:+.0f} % from {r['low']:g} to {r['high']:g} kN "
+            f"{kind}{where}")
+
+
+def class_notes(losses: pd.DataFrame) -> list[str]:
+    """A note naming each source classed load-independent whose power changed by more than
+    :data:`LOAD_CHANGE_NOTE` with the load in this run: the class (the FVA M0 / M1 split,
+    ``losses.py``) is the source's nominal one, and the load-dependent / load-independent
+    columns follow it, not the run."""
+    classes = loss_class_of(losses)
+    response = load_response(losses)
+    moved = [s for s, c in classes.items() if c == "load-independent" and s in response
+             and abs(response[s]["change"]) > LOAD_CHANGE_NOTE]
+    if not moved:
+        return []
+    said = "; ".join(f"{source_label(s)}: {_response_text(response[s])}"
+                     for s in source_order(moved))
+    return [f"the load-dependent / load-independent split follows each source's nominal "
+            f"class (Palmgren's M1 / M0), not this run: sources classed load-independent "
+            f"changed with the load here ({said}), so the load-independent column holds "
+            f"load-driven loss too"]
 
 
 def loss_class_of(losses: pd.DataFrame) -> Mapping[str, str]:

@@ -102,7 +102,8 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
               html_table(rl.readable(by_source), csv_name="loss_breakdown.csv"),
               "<h3>share of the total by source [%]</h3>",
               html_table(rl.readable(rl.shares(by_source))),
-              "<h3>what the sources are</h3>", html_table(rl.glossary(losses))]
+              "<h3>what the sources are</h3>", html_table(rl.glossary(losses)),
+              *(f"<p class='note'>{esc(n)}</p>" for n in rl.class_notes(losses))]
     by_dest = rl.breakdown_by_destination(losses)
     parts.append("<h3>heat received by component [W]</h3>")
     if by_dest is None:
@@ -124,9 +125,10 @@ def _crosscheck_html(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], scen
             "estimates of the SKF four-term model and Palmgren's M0 + M1 at the same speed, "
             "loads, lubrication method and oil temperature (thermobearing.global_friction). "
             "Both are catalogue-level models of the whole bearing, fitted to catalogue "
-            "bearings in standard conditions: they see neither the cage, nor the oil jet's "
-            "flow, nor the skidding of this run, so they are an order-of-magnitude check, "
-            "not a reference</p>")
+            "bearings in standard conditions: they see neither the cage nor the skidding "
+            "of this run, and of the oil supply only the lubrication method (and, in the "
+            "SKF drag term, an oil bath's level; not a jet's or a circulation's flow), so "
+            "they are an order-of-magnitude check, not a reference</p>")
     if scene is None or lubricant is None or not bearings:
         return head + "<p>(not available: the scene's bearing or lubricant was not read)</p>"
     try:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -44,9 +45,14 @@ _STEP_KINDS = {"duration": "time", "speed": "angular_speed", "radial_load": "for
 _STEP_UNITS = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
 
 
-def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: str) -> Step:
+def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: str,
+               written: Mapping[str, Any] | None = None) -> Step:
+    """One step from its own ``values`` and the ``[schedule]`` ``defaults`` [SI];
+    ``written``: the defaults as the scene wrote them (``"-3 krpm"``), shown in an error
+    instead of the SI number (``-314.159``)."""
     _check_keys(where, values, _STEP_KEYS)
     out = dict(defaults)
+    values = {**(written or {}), **values} if written else values
     for key, raw in values.items():
         out[key] = _quantity(raw, _STEP_KINDS[key], f"{where}.{key}")
     for key in _STEP_KEYS:
@@ -120,6 +126,9 @@ class Schedule:
         dur_key = "step_duration" if "step_duration" in data else "duration"
         if dur_key in data:
             defaults["duration"] = _quantity(data[dur_key], "time", f"schedule.{dur_key}")
+        written = {k: data[k] for k in ("speed", "radial_load", "axial_load") if k in data}
+        if dur_key in data:
+            written["duration"] = data[dur_key]
         units: dict[str, str] = {}
         _note_units(units, {k: data[k] for k in ("speed", "radial_load", "axial_load")
                             if k in data})
@@ -132,7 +141,7 @@ class Schedule:
         if not forms:
             if "duration" not in defaults:
                 defaults["duration"] = 3600.0
-            steps.append(_make_step({}, defaults, "schedule"))
+            steps.append(_make_step({}, defaults, "schedule", written))
         elif forms[0] == "axial_load_steps":
             sweep = _table("schedule.axial_load_steps", data["axial_load_steps"])
             _check_keys("schedule.axial_load_steps", sweep, ("start", "stop", "step"))
@@ -149,7 +158,9 @@ class Schedule:
             n = int(math.floor((a1 - a0) / da + 1e-9)) + 1
             for i in range(n):
                 steps.append(_make_step({}, {**defaults, "axial_load": a0 + i * da},
-                                        f"schedule.axial_load_steps[{i}]"))
+                                        f"schedule.axial_load_steps[{i}]",
+                                        {k: v for k, v in written.items()
+                                         if k != "axial_load"}))
         elif forms[0] == "steps":
             items = data["steps"]
             if not isinstance(items, list):
@@ -157,7 +168,7 @@ class Schedule:
                                  "an array of tables, e.g. [{ duration = \"3 min\" }, ...]")
             for i, item in enumerate(items):
                 where = f"schedule.steps[{i}]"
-                steps.append(_make_step(_table(where, item), defaults, where))
+                steps.append(_make_step(_table(where, item), defaults, where, written))
                 _note_units(units, item)
         else:
             steps.extend(_read_schedule_file(data["file"], defaults, base_dir, units))
@@ -181,8 +192,10 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
     defaults; the units in brackets, these by default), comma separated, or semicolon / tab
     separated with decimal commas as spreadsheets export them; a UTF-8 BOM is skipped, rows
     with every cell empty (a spreadsheet's trailing ``,,,``) are skipped, and so are empty
-    cells past the header's last column. A duplicated column or a row with more filled cells
-    than the header has columns is an error naming it."""
+    cells past the header's last column. Headers are read case-insensitively; a column whose
+    header gives no unit may carry one in each cell (``10 s``); in a file with decimal
+    commas a point groups thousands (``1.000``). A duplicated column or a row with more
+    filled cells than the header has columns is an error naming it."""
     path = Path(name)
     if not path.is_absolute() and base_dir is not None:
         path = base_dir / path
@@ -196,9 +209,10 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
         delim = "," if "," in first else next((d for d in (";", "\t") if d in first), ",")
         reader = csv.DictReader(fh, delimiter=delim)
         colmap: dict[str, str] = {}
+        unit_given: dict[str, bool] = {}
         for col in reader.fieldnames or []:
             key, _, unit = col.partition("[")
-            key = key.strip()
+            key = key.strip().lower()  # "Duration [s]" as spreadsheets capitalise it
             if key not in _STEP_KEYS:
                 raise InputError(f"schedule.file column {col!r}", col,
                                  "columns named " + ", ".join(_STEP_KEYS) + " with [unit], "
@@ -207,9 +221,14 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
                 raise InputError(f"schedule.file column {col!r}", col,
                                  f"one column per quantity ({key} is given twice)")
             colmap[col] = key
+            unit_given[key] = bool(unit)
             if unit:
                 units[key] = unit.rstrip("] ")
-        for i, row in enumerate(reader):
+        rows = list(reader)
+        comma_decimals = delim != "," and any(
+            _DECIMAL_COMMA.match((v or "").strip()) for row in rows
+            for c, v in row.items() if c is not None)
+        for i, row in enumerate(rows):
             if any((v or "").strip() for v in row.get(None, ())):
                 raise InputError(f"schedule.file row {i + 1}", delim.join(row[None]),
                                  f"at most {len(colmap)} cells, one per header column "
@@ -217,15 +236,40 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
             row.pop(None, None)
             if not any((v or "").strip() for v in row.values()):
                 continue
-            values = {colmap[c]: f"{_decimal(v, delim)} {units[colmap[c]]}"
+            values = {colmap[c]: _cell(v, colmap[c], units[colmap[c]], unit_given[colmap[c]],
+                                       comma_decimals, f"schedule.file row {i + 1}")
                       for c, v in row.items() if v and v.strip()}
             steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
             _note_units(seen_units, values)
     return steps
 
 
-def _decimal(cell: str, delim: str) -> str:
-    """A cell's number as Python reads it: a decimal comma (in a file not separated by
-    commas) becomes a point."""
-    cell = cell.strip()
-    return cell.replace(",", ".") if delim != "," else cell
+#: a number with a decimal comma ("2,5", "-0,25")
+_DECIMAL_COMMA = re.compile(r"^[-+]?\d*,\d+")
+#: a number grouped in thousands with points, as decimal-comma locales write it ("1.000",
+#: "12.500,5")
+_THOUSANDS_POINTS = re.compile(r"^[-+]?\d{1,3}(\.\d{3})+(,\d*)?$")
+
+
+def _cell(cell: str, key: str, unit: str, unit_given: bool, comma_decimals: bool,
+          where: str) -> str:
+    """A protocol cell as a quantity string: its number in the column's unit (the header's
+    ``[unit]``, else the default), or the cell as written when the header gives no unit and
+    the cell carries one (``10 s``). In a file with decimal commas (separated by semicolons
+    or tabs) a point groups thousands (``1.000`` = 1000); a point elsewhere there is an
+    error, as is a unit in the cell of a column whose header gives one."""
+    text = cell.strip()
+    number, _, rest = text.partition(" ")
+    rest = rest.strip()
+    if rest and unit_given:
+        raise InputError(f"{where}.{key}", text, f"a bare number: the column header gives "
+                         f"the unit [{unit}]")
+    if comma_decimals:
+        if "." in number:
+            if not _THOUSANDS_POINTS.match(number):
+                raise InputError(f"{where}.{key}", text, "a number with a decimal comma, as "
+                                 "the other cells of this file write them (points group "
+                                 "thousands: 1.000,5)")
+            number = number.replace(".", "")
+        number = number.replace(",", ".")
+    return f"{number} {rest or unit}"

@@ -128,6 +128,11 @@ class Supply:
     #: the unit the scene wrote the flow in (``"mm**3/h"`` for oil-air), used to write it
     #: back, by a sweep's bare numbers and by the report
     flow_unit: str = field(default="L/min", compare=False, repr=False)
+    #: the units the scene wrote the inlet temperature (``"K"``, ``"degF"``) and the bath
+    #: level (``"cm"``) in, kept for the same reasons: a scene written in kelvin swept with
+    #: ``--set supply.inlet_temperature=300,350`` means kelvin, not 300 degC
+    temperature_unit: str = field(default="degC", compare=False, repr=False)
+    level_unit: str = field(default="mm", compare=False, repr=False)
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], ambient: float) -> Supply:
@@ -154,14 +159,17 @@ class Supply:
             raise InputError("supply.level", None, "an oil level for an oil bath")
         return cls(method=method, flow=flow, inlet_temperature=t_in, level=level_si,
                    inlet_given="inlet_temperature" in data,
-                   flow_unit=_unit_of(data.get("flow"), "volume_flow", "L/min"))
+                   flow_unit=_unit_of(data.get("flow"), "volume_flow", "L/min"),
+                   temperature_unit=_unit_of(data.get("inlet_temperature"), "temperature",
+                                             "degC"),
+                   level_unit=_unit_of(level, "length", "mm"))
 
     def to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {"method": self.method, "flow": _fmt(self.flow, self.flow_unit)}
         if self.inlet_given:
-            out["inlet_temperature"] = _fmt(self.inlet_temperature, "degC")
+            out["inlet_temperature"] = _fmt(self.inlet_temperature, self.temperature_unit)
         if self.level is not None:
-            out["level"] = _fmt(self.level, "mm")
+            out["level"] = _fmt(self.level, self.level_unit)
         return out
 
 
@@ -177,6 +185,10 @@ class Environment:
     ambient_temperature: float = 308.15
     initial_temperature: float = 308.15
     initial_given: bool = field(default=True, compare=False, repr=False)
+    #: the units the scene wrote the two temperatures in (``"K"``, ``"degF"``), used to
+    #: write them back and by a sweep's bare numbers
+    ambient_unit: str = field(default="degC", compare=False, repr=False)
+    initial_unit: str = field(default="degC", compare=False, repr=False)
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Environment:
@@ -190,12 +202,16 @@ class Environment:
                 raise InputError(f"environment.{name}", data.get(name, v),
                                  "a temperature above absolute zero (0 K = -273.15 degC)")
         return cls(ambient_temperature=amb, initial_temperature=ini,
-                   initial_given="initial_temperature" in data)
+                   initial_given="initial_temperature" in data,
+                   ambient_unit=_unit_of(data.get("ambient_temperature"), "temperature",
+                                         "degC"),
+                   initial_unit=_unit_of(data.get("initial_temperature"), "temperature",
+                                         "degC"))
 
     def to_dict(self) -> dict[str, Any]:
-        out = {"ambient_temperature": _fmt(self.ambient_temperature, "degC")}
+        out = {"ambient_temperature": _fmt(self.ambient_temperature, self.ambient_unit)}
         if self.initial_given:
-            out["initial_temperature"] = _fmt(self.initial_temperature, "degC")
+            out["initial_temperature"] = _fmt(self.initial_temperature, self.initial_unit)
         return out
 
 

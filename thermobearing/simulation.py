@@ -215,8 +215,17 @@ class Simulation:
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         # identical bearings (same preset and overrides) at the same state share results
-        self._kin_shared: dict[tuple[str, int], tuple[float, KinematicsResult]] = {}
+        # (bearing key, step) -> (viscosity, result, its validity warnings, bearing solved);
+        # an identical bearing in the same state takes the result and the warnings
+        self._kin_shared: dict[tuple[str, int],
+                               tuple[float, KinematicsResult, tuple[str, ...], str]] = {}
+        self._kin_replayed: set[tuple[int, str]] = set()
         self._heat_memo: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
+        # warnings of each batch of heat evaluations: batch -> (bearing evaluated, messages);
+        # (batch, bearing) pairs already replayed for an identical bearing
+        self._heat_batches: dict[int, tuple[str, tuple[str, ...]]] = {}
+        self._heat_replayed: set[tuple[int, str]] = set()
+        self._heat_batch_count = 0
         #: thresholds of the validity checks: the scene's [checks], else the defaults
         self.check_limits = scene.checks if scene.checks is not None else CheckLimits()
         #: validity checks of every solved kinematic state, per bearing (report warnings)
@@ -284,6 +293,10 @@ class Simulation:
         shared = self._kin_shared.get((b.key, step_index))
         if shared is not None and abs(visc / shared[0] - 1.0) <= tol:
             b.last, b.last_viscosity, b.last_step = shared[1], shared[0], step_index
+            if shared[3] != b.name and (id(shared[1]), b.name) not in self._kin_replayed:
+                self._kin_replayed.add((id(shared[1]), b.name))
+                for message in shared[2]:  # the twin's film ranges hold for this one too
+                    self._warning_groups.add(message, b.name, step_index)
             self.checks[b.name].record(step_index, check_state(b.bearing, shared[1],
                                                                self.check_limits))
             return shared[1]
@@ -319,7 +332,9 @@ class Simulation:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
                                    res.residual_norm, "at step", {"step": step_index})
         b.last, b.last_viscosity, b.last_step = res, visc, step_index
-        self._kin_shared[(b.key, step_index)] = (visc, res)
+        self._kin_shared[(b.key, step_index)] = (
+            visc, res, tuple(str(w.message) for w in caught
+                             if issubclass(w.category, ValidityWarning)), b.name)
         b.solves += 1
         self.checks[b.name].record(step_index, check_state(b.bearing, res, self.check_limits))
         return res
@@ -395,12 +410,16 @@ class Simulation:
         memo = self._heat_memo
         if len(memo) > 512:
             memo.clear()
+            self._heat_batches.clear()
+            self._heat_replayed.clear()
         found: dict[str, tuple[Any, frozenset[str]]] = {}
         for name in b.sources:
-            for entry_kin, entry_step, reads, values, result in memo.get((b.key, name), ()):
+            for entry_kin, entry_step, reads, values, result, batch in memo.get((b.key, name),
+                                                                                 ()):
                 if (entry_kin is kin and (entry_step is step or entry_step == step)
                         and all(temps.get(r) == values[r] for r in reads)):
                     found[name] = (result, reads)
+                    self._replay_heat_warnings(batch, b.name)
                     break
         missing = [name for name in b.sources if name not in found]
         if missing:
@@ -412,10 +431,14 @@ class Simulation:
                 warnings.simplefilter("always", ValidityWarning)
                 computed = evaluate_recorded(missing, ctx)
             self._note(caught, b.name)
+            batch = self._heat_batch_count = self._heat_batch_count + 1
+            self._heat_batches[batch] = (b.name, tuple(
+                str(w.message) for w in caught if issubclass(w.category, ValidityWarning)))
             for name, (result, reads) in zip(missing, computed, strict=True):
                 found[name] = (result, reads)
                 entries = memo.setdefault((b.key, name), [])
-                entries.insert(0, (kin, step, reads, {r: temps.get(r) for r in reads}, result))
+                entries.insert(0, (kin, step, reads, {r: temps.get(r) for r in reads}, result,
+                                   batch))
                 del entries[8:]
         by_role = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 0.0)
         rows = []
@@ -433,6 +456,16 @@ class Simulation:
                              "load dependence": r.loss_class.get(comp, "")}
                             for comp, role, p in r.split())
         return _Evaluation(by_role, rows, frozenset(reads_all))
+
+    def _replay_heat_warnings(self, batch: int, bearing: str) -> None:
+        """The validity warnings of a memoised heat evaluation of an identical bearing, once
+        under ``bearing``'s name (its own repeats were recorded when they were computed)."""
+        owner, messages = self._heat_batches[batch]
+        if owner == bearing or not messages or (batch, bearing) in self._heat_replayed:
+            return
+        self._heat_replayed.add((batch, bearing))
+        for message in messages:
+            self._warning_groups.add(message, bearing)
 
     def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:
         """Heat-source options: those matching the kinematics' force models, plus where
@@ -479,6 +512,12 @@ class Simulation:
         scene_toml = with_absolute_paths(self.scene).to_toml()
         if writer is not None:
             (Path(out_dir) / "scene.toml").write_text(scene_toml, encoding="utf-8")
+        if self.needs["network"] and "film" in self.scene.outputs.want:
+            note = ("outputs.want: no film table in a run with temperatures (the films "
+                    "change with them); the kinematics table gives each solved state's "
+                    "min film parameter")
+            if note not in self.warnings:
+                self.warnings.append(note)
         try:
             if self.needs["network"]:
                 from .coupled import run_coupled
@@ -549,6 +588,7 @@ class Simulation:
         loss_rows: list[dict[str, Any]] = []
         film_rows: list[dict[str, Any]] = []
         steps = self.scene.schedule.steps
+        want_film = "film" in self.scene.outputs.want
         for i, step in enumerate(tqdm(steps, disable=not self.progress, desc="steps")):
             for b in self.bearings:
                 base = step_columns(i, 0.0, b.name, step, b)
@@ -558,6 +598,15 @@ class Simulation:
                     kin_rows.append(row)
                     if writer:
                         writer.append("kinematics", [row])
+                    if want_film:
+                        # the film table asked beside kinematics / losses: the closed-form
+                        # films at the same (initial) temperatures; the checks are the
+                        # kinematic state's
+                        with warnings.catch_warnings(record=True) as caught:
+                            warnings.simplefilter("always", ValidityWarning)
+                            rows, _ = film_table(b, self.lubricant, step, temps)
+                        self._note(caught, b.name, i)
+                        film_rows.extend({**base, **r} for r in rows)
                     if self.needs["losses"]:
                         ev = self.evaluate_heat(b, step, kin, temps, with_rows=True)
                         rows = [{**base, **r} for r in ev.rows]

@@ -223,7 +223,8 @@ _SETTABLE_NEW = {  # optional fields a sweep may set although the scene leaves t
 #: what an unknown path error offers as examples
 _KNOWN_PATHS = ("supply.flow, supply.inlet_temperature, schedule.speed, "
                 "schedule.axial_load, environment.ambient_temperature, lubricant.preset, "
-                "checks.skid_limit, bearings.0.overrides.<field>, network.parameters.<name>")
+                "checks.skid_limit, bearings.0.overrides.<field>, bearings.0.preset, "
+                "bearings.0.path, network.parameters.<name>")
 
 
 def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") -> None:
@@ -262,6 +263,8 @@ def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") 
                              "bearings.0.overrides.diametral_clearance")
     if len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
         return
+    if len(parts) == 3 and parts[0] == "bearings" and parts[2] in _EITHER:
+        return  # a bearing's preset or file replaces the other (assign_path)
     raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"
                      + _did_you_mean(scene_dict, path))
 

@@ -29,18 +29,42 @@ def _store_path(out_dir: Path) -> Path:
 
 
 def finished_cases(out_dir: Path | str) -> dict[str, dict[str, Any]]:
-    """Cases already in the results store (id -> record); a torn last line is ignored."""
+    """Cases already in the results store (id -> record); a torn last line is ignored.
+    Result names written by earlier versions are read under their current names
+    (:func:`thermobearing.simulation_summary.current_result_names`: ``total loss [W]`` ->
+    ``mean total loss [W]``, ``rise <node> [K]`` -> ``rise over initial`` or, in a steady
+    scene, ``rise over ambient``), so a resumed folder's summary has one column each."""
+    from .simulation_summary import current_result_names
+
     path = _store_path(Path(out_dir))
     done: dict[str, dict[str, Any]] = {}
     if not path.is_file():
         return done
+    base_mode = base_scene_mode(Path(out_dir))
     for line in path.read_text(encoding="utf-8").splitlines():
         try:
             rec = json.loads(line)
         except json.JSONDecodeError:
             continue
+        mode = str(rec.get("params", {}).get("outputs.mode", base_mode))
+        if isinstance(rec.get("result"), dict):
+            rec["result"] = current_result_names(rec["result"], steady=mode == "steady")
         done[rec["case"]] = rec
     return done
+
+
+def base_scene_mode(out_dir: Path) -> str:
+    """``[outputs] mode`` of the folder's recorded base scene (``scene.toml``);
+    ``"transient"`` (the scene default) when there is none or it does not parse."""
+    import tomllib
+
+    try:
+        doc = tomllib.loads((out_dir / "scene.toml").read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return "transient"
+    outputs = doc.get("outputs")
+    mode = outputs.get("mode") if isinstance(outputs, dict) else None
+    return mode if isinstance(mode, str) else "transient"
 
 
 def _record(case: Case, result: Mapping[str, Any]) -> dict[str, Any]:

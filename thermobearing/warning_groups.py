@@ -5,8 +5,12 @@ every contact set, step and heat evaluation), each time with slightly different 
 spindle run-up listed 38 such lines for one bearing. :class:`WarningGroups` keeps one line per
 bearing and message *shape* (the message with its numbers masked): the first message, with
 every "in [lo, hi]" interval widened to the envelope of all repeats, the steps it came from
-and how many times it was raised. The lines live in the caller's list (the run's warnings),
-so other notes appended there keep their order.
+and how many times it was raised. A range warning of a model (``"name: X in [lo, hi] outside
+[a, b]; Y in ..."``, as :mod:`thermobearing.film` words them) is one line per bearing
+and model, whichever of its variables left the range at each call: each variable keeps its
+own envelope, in the order they first appeared (the default rig had listed three film-formula
+lines per bearing, for U and W together, W alone and U alone). The lines live in the caller's
+list (the run's warnings), so other notes appended there keep their order.
 """
 
 from __future__ import annotations
@@ -16,6 +20,8 @@ from dataclasses import dataclass, field
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
 _INTERVAL = re.compile(r"in \[([^,\]]+), ([^\]]+)\]")
+#: one variable of a model's range warning: name, its interval, the allowed interval
+_RANGE = re.compile(r"(\S+) in \[([^,\]]+), ([^\]]+)\] (outside \[[^\]]+\])")
 
 
 def _float(text: str) -> float | None:
@@ -34,11 +40,27 @@ class _Group:
     count: int = 1
     lows: list[float | None] = field(default_factory=list)
     highs: list[float | None] = field(default_factory=list)
+    #: a model's range warning: its name and, per variable, [lo, hi, "outside [a, b]",
+    #: lo and hi as written] (a bound written once keeps its text)
+    model: str | None = None
+    ranges: dict[str, list] = field(default_factory=dict)
 
     def merge(self, message: str, step: int | None) -> None:
         self.count += 1
         if step is not None:
             self.steps.add(step)
+        if self.model is not None:
+            parsed = _range_warning(message)
+            if parsed is None:
+                return
+            for (name, (lo, hi, allowed)), (lo_t, hi_t) in zip(
+                    parsed[1].items(), _interval_texts(message), strict=True):
+                cur = self.ranges.setdefault(name, [lo, hi, allowed, lo_t, hi_t])
+                if lo < cur[0]:
+                    cur[0], cur[3] = lo, lo_t
+                if hi > cur[1]:
+                    cur[1], cur[4] = hi, hi_t
+            return
         for i, m in enumerate(_INTERVAL.finditer(message)):
             if i >= len(self.lows):
                 break
@@ -49,6 +71,10 @@ class _Group:
                 self.highs[i] = max(self.highs[i], hi)
 
     def line(self) -> str:
+        if self.model is not None:
+            text = f"{self.model}: " + "; ".join(
+                f"{name} in [{r[3]}, {r[4]}] {r[2]}" for name, r in self.ranges.items())
+            return self._located(text, "; intervals are the envelope of all")
         k = iter(range(len(self.lows)))
 
         def widened(m: re.Match) -> str:
@@ -59,6 +85,10 @@ class _Group:
             return f"in [{lo:.3g}, {hi:.3g}]"
 
         text = _INTERVAL.sub(widened, self.message) if self.count > 1 else self.message
+        return self._located(text, "; intervals are the envelope of all" if self.lows else "")
+
+    def _located(self, text: str, envelope: str) -> str:
+        """``text`` after the bearing and steps, with the repeat count."""
         steps = sorted(self.steps)
         where = self.bearing
         if len(steps) == 1:
@@ -67,9 +97,29 @@ class _Group:
             where += f", steps {steps[0]}-{steps[-1]}"
         if self.count > 1:
             at = f" at {len(steps)} steps" if len(steps) > 1 else ""
-            envelope = "; intervals are the envelope of all" if self.lows else ""
             text += f" [raised {self.count} times{at}{envelope}]"
         return f"{where}: {text}"
+
+
+def _range_warning(message: str) -> tuple[str, dict[str, tuple[float, float, str]]] | None:
+    """``(model, {variable: (lo, hi, "outside [a, b]")})`` of a model's range warning
+    ``"model: X in [lo, hi] outside [a, b]; Y in ..."``; None for any other message."""
+    model, sep, rest = message.partition(": ")
+    if not sep or not rest:
+        return None
+    out: dict[str, tuple[float, float, str]] = {}
+    for part in rest.split("; "):
+        m = _RANGE.fullmatch(part)
+        lo, hi = (_float(m.group(2)), _float(m.group(3))) if m else (None, None)
+        if m is None or lo is None or hi is None or m.group(1) in out:
+            return None
+        out[m.group(1)] = (lo, hi, m.group(4))
+    return model, out
+
+
+def _interval_texts(message: str) -> list[tuple[str, str]]:
+    """The (lo, hi) texts of each variable of a range warning, as written."""
+    return [(m.group(2), m.group(3)) for m in _RANGE.finditer(message)]
 
 
 class WarningGroups:
@@ -82,7 +132,8 @@ class WarningGroups:
 
     def add(self, message: str, bearing: str, step: int | None = None) -> None:
         """Record one warning ``message`` of ``bearing`` (at schedule ``step`` if known)."""
-        key = (bearing, _NUMBER.sub("#", message))
+        parsed = _range_warning(message)
+        key = (bearing, "range: " + parsed[0] if parsed else _NUMBER.sub("#", message))
         group = self._groups.get(key)
         if group is not None:
             group.merge(message, step)
@@ -95,5 +146,9 @@ class WarningGroups:
         group = _Group(index=len(self.lines), bearing=bearing, message=message,
                        steps=set() if step is None else {step},
                        lows=[b[0] for b in bounds], highs=[b[1] for b in bounds])
+        if parsed:
+            group.model = parsed[0]
+            group.ranges = {k: [lo, hi, allowed, t[0], t[1]] for (k, (lo, hi, allowed)), t
+                            in zip(parsed[1].items(), _interval_texts(message), strict=True)}
         self._groups[key] = group
         self.lines.append(group.line())

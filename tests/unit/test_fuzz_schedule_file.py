@@ -1,7 +1,8 @@
 """CSV protocol files of ``[schedule] file`` as spreadsheets export them (found by the scene
 fuzzer): a UTF-8 BOM, semicolons with decimal commas, trailing empty rows and cells were
 refused with a garbled column name or a KeyError; a duplicated column silently replaced the
-first one."""
+first one. Later: units written in the cells of a column without one were refused as
+'10 s s', capitalised headers were refused, and '1.000' in a decimal-comma file read as 1."""
 
 from __future__ import annotations
 
@@ -53,3 +54,38 @@ def test_duplicated_column_is_an_error(tmp_path):
 def test_unknown_column_names_the_separators(tmp_path):
     with pytest.raises(InputError, match=r"column 'time \[s\]'.*separated by commas"):
         _steps(tmp_path, "time [s],speed [rpm]\n10,100\n")
+
+
+def test_units_in_the_cells_of_a_column_without_one(tmp_path):
+    """'10 s' under a bare 'duration' header was refused as '10 s s'."""
+    text = ("duration,speed,radial_load [lbf],axial_load\n10 s,1000 rpm,200,0\n"
+            "0.5 min,2 krpm,0,10 N\n")
+    first, second = _steps(tmp_path, text)
+    assert (first.duration, second.duration) == pytest.approx((10.0, 30.0))
+    assert (first.speed, second.speed) == pytest.approx((1000 * math.pi / 30, 2000 * math.pi / 30))
+    assert first.radial_load == pytest.approx(200 * 4.4482216152605)
+    assert second.axial_load == pytest.approx(10.0)
+
+
+def test_unit_in_a_cell_under_a_header_with_one_is_an_error(tmp_path):
+    with pytest.raises(InputError, match=r"row 1.duration = '10 s'.*bare number.*\[s\]"):
+        _steps(tmp_path, HEAD + "\n10 s,100,1000,0\n")
+
+
+def test_capitalised_header(tmp_path):
+    (step,) = _steps(tmp_path, "Duration [s],Speed [rpm],Radial_load [N],AXIAL_LOAD [N]\n"
+                               "10,100,1000,5\n")
+    assert (step.duration, step.radial_load, step.axial_load) == pytest.approx(
+        (10.0, 1000.0, 5.0))
+
+
+def test_points_group_thousands_in_a_decimal_comma_file(tmp_path):
+    """'1.000' beside '2,5' in a semicolon file is a thousand, not one."""
+    text = ("duration [s];speed [rpm];radial_load [N];axial_load [N]\n"
+            "2,5;1.000;12.500,5;0\n")
+    (step,) = _steps(tmp_path, text)
+    assert step.duration == pytest.approx(2.5)
+    assert step.speed == pytest.approx(1000 * math.pi / 30)
+    assert step.radial_load == pytest.approx(12500.5)
+    with pytest.raises(InputError, match=r"row 1.speed = '1.5'.*decimal comma"):
+        _steps(tmp_path, text.replace("1.000;", "1.5;"))

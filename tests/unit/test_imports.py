@@ -31,6 +31,10 @@ FIRST_IMPORTS = (
     "thermobearing.calibrate_model",
     "thermobearing.calibrate_result",
     "thermobearing.calibrate_synthetic",
+    "thermobearing.skidding.ball_seat",
+    "thermobearing.skidding.ball_coulomb",
+    "thermobearing.signal_uncertainty",
+    "thermobearing.signal_checks",
 )
 
 

@@ -120,7 +120,7 @@ def test_sweep_report_separates_every_swept_parameter(tmp_path):
     for i, (n, fa, q) in enumerate(itertools.product((600, 1200, 1800), (2, 10), (15, 33))):
         params = {"schedule.speed": f"{n} rpm", "schedule.axial_load": f"{fa} kN",
                   "supply.flow": f"{q} L/min"}
-        result = {"total loss [W]": n * (1 + fa / 100) * q / 33, "churning [W]": n * q / 66,
+        result = {"mean total loss [W]": n * (1 + fa / 100) * q / 33, "churning [W]": n * q / 66,
                   "pocket [W]": n * fa / 100, "max over-skidding [%]": fa / n}
         rows.append({"case": f"c{i}", **params, **result})
         store.append(json.dumps({"case": f"c{i}", "params": params, "result": result}))
@@ -148,7 +148,7 @@ def test_sweep_report_keeps_the_sweeps_numeric_columns():
     df = pd.DataFrame({"case": ["a", "b"], "supply.flow": ["15 L/min", "0.5 L/s"],
                        "supply.flow [L/min]": [15.0, 30.0],
                        "supply.inlet_temperature": ["35 degC", "40 degC"],
-                       "total loss [W]": [1.0, 2.0]})
+                       "mean total loss [W]": [1.0, 2.0]})
     out = _numeric_params(df, ["supply.flow", "supply.inlet_temperature"])
     assert list(out["supply.flow [L/min]"]) == [15.0, 30.0] and "supply.flow" not in out
     assert list(out["supply.inlet_temperature [degC]"]) == [35.0, 40.0]  # older summaries
@@ -188,7 +188,7 @@ def test_sweep_report_names_the_sources_in_words_and_says_what_it_does_not_recor
     rows, store = [], []
     for i, (n, fr) in enumerate(((600, 1), (600, 5), (1800, 1), (1800, 5))):
         params = {"schedule.speed": f"{n} rpm", "schedule.radial_load": f"{fr} kN"}
-        result = {"total loss [W]": n * 1.1, "raceway_traction [W]": n * 0.1 * fr,
+        result = {"mean total loss [W]": n * 1.1, "raceway_traction [W]": n * 0.1 * fr,
                   "churning_elements [W]": n * (1.1 - 0.1 * fr)}
         rows.append({"case": f"c{i}", **params, **result})
         store.append(json.dumps({"case": f"c{i}", "params": params, "result": result}))

@@ -157,12 +157,12 @@ def test_sweep_summary_carries_the_validity_extremes():
     # QJ1044 at 2 and 6 kN axial + 1 kN radial: about 0.8-1 GPa, Lambda well above 3
     assert 500.0 < out["max contact pressure [MPa]"] < 2000.0
     assert out["min film parameter [-]"] > 3.0
-    assert out["total loss [W]"] > 0.0
+    assert out["mean total loss [W]"] > 0.0
 
 
 def test_sweep_summary_weights_steps_by_duration_and_counts_flagged_steps():
-    """summarize_scene: ``total loss [W]`` is the scene's loss (every bearing) averaged over
-    the protocol with each step weighted by its duration, per-bearing totals beside it;
+    """summarize_scene: ``mean total loss [W]`` is the scene's loss (every bearing) averaged
+    over the protocol with each step weighted by its duration, per-bearing totals beside it;
     ``steps over ... limit [-]`` count the steps the [checks] thresholds flag (earlier versions:
     the loss was the plain step mean of the first bearing, and a sweep of the thresholds
     gave identical rows). Hand check: the step losses from the losses table."""
@@ -180,13 +180,13 @@ def test_sweep_summary_weights_steps_by_duration_and_counts_flagged_steps():
     res = Simulation(loads_scene(text), progress=False).run()
     per_step = res.tables["losses"].groupby("step")["power [W]"].sum()
     out = summarize_scene(loads_scene(text).to_toml())
-    assert out["total loss [W]"] == pytest.approx(0.25 * per_step[0] + 0.75 * per_step[1],
-                                                  rel=1e-12)
+    assert out["mean total loss [W]"] == pytest.approx(
+        0.25 * per_step[0] + 0.75 * per_step[1], rel=1e-12)
     assert out["max total loss [W]"] == pytest.approx(per_step.max(), rel=1e-12)
-    assert out["total loss de [W]"] + out["total loss nde [W]"] == pytest.approx(
-        out["total loss [W]"], rel=1e-12)
-    sources = [k for k in out if k.endswith("[W]") and not k.startswith(("total", "max"))]
-    assert sum(out[k] for k in sources) == pytest.approx(out["total loss [W]"], rel=1e-12)
+    assert out["mean total loss de [W]"] + out["mean total loss nde [W]"] == pytest.approx(
+        out["mean total loss [W]"], rel=1e-12)
+    sources = [k for k in out if k.endswith("[W]") and not k.startswith(("mean total", "max"))]
+    assert sum(out[k] for k in sources) == pytest.approx(out["mean total loss [W]"], rel=1e-12)
     assert out["steps over skid limit [-]"] == 0.0 and out["steps over stress limit [-]"] == 0
     strict = summarize_scene(loads_scene(
         text + '[checks]\nskid_limit = "0.01 %"\ncontact_stress_limit = "100 MPa"\n').to_toml())
@@ -194,7 +194,8 @@ def test_sweep_summary_weights_steps_by_duration_and_counts_flagged_steps():
     # skids under any limit (the count was 4, every step of both bearings)
     assert strict["steps over skid limit [-]"] == 0.0
     assert strict["steps over stress limit [-]"] == 4.0
-    assert strict["total loss [W]"] == out["total loss [W]"]  # thresholds change no physics
+    # thresholds change no physics
+    assert strict["mean total loss [W]"] == out["mean total loss [W]"]
     assert isinstance(pd.Series(out).sum(), float)
 
 
@@ -207,7 +208,7 @@ def test_sweep_summary_of_a_film_only_scene_gives_the_films():
     out = summarize_scene(scene(["film"]).to_toml())
     assert 1.0 < out["min central film [um]"] < 5.0
     assert out["min film parameter [-]"] > 3.0
-    assert "total loss [W]" not in out and "max over-skidding [%]" not in out
+    assert "mean total loss [W]" not in out and "max over-skidding [%]" not in out
 
 
 def test_global_friction_books_each_term_with_its_load_class():

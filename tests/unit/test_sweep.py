@@ -169,10 +169,10 @@ def test_terminal_columns_fill_with_the_largest_losses():
     from thermobearing.commands.sweep import terminal_columns
 
     df = pd.DataFrame({"case": ["a", "b"], "schedule.speed": ["1 rpm", "2 rpm"],
-                       "total loss [W]": [10.0, 20.0], "cage_guide [W]": [0.0, 0.0],
+                       "mean total loss [W]": [10.0, 20.0], "cage_guide [W]": [0.0, 0.0],
                        "churning_elements [W]": [5.0, 9.0], "raceway_traction [W]": [1.0, 2.0],
                        "steps over skid limit [-]": [0.0, 1.0]})
     shown, hidden = terminal_columns(df, ["schedule.speed"])
-    assert shown == ["case", "schedule.speed", "total loss [W]", "churning_elements [W]",
+    assert shown == ["case", "schedule.speed", "mean total loss [W]", "churning_elements [W]",
                      "raceway_traction [W]", "steps over skid limit [-]"]
     assert hidden == 1

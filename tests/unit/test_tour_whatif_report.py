@@ -17,7 +17,7 @@ from thermobearing.sweep import parse_set, run_sweep
 def loss_runner(scene_toml: str) -> dict[str, float]:
     """Made-up but deterministic 'losses' of a case: linear in flow and inlet temperature."""
     sc = loads_scene(scene_toml)
-    return {"total loss [W]": 1e6 * sc.supply.flow + sc.supply.inlet_temperature,
+    return {"mean total loss [W]": 1e6 * sc.supply.flow + sc.supply.inlet_temperature,
             "churning [W]": 5e5 * sc.supply.flow}
 
 
@@ -73,10 +73,10 @@ def test_whatif_legend_of_many_curves_is_outside_the_panels(monkeypatch):
     from thermobearing.report import fig_whatif
 
     seen = _captured_figure(monkeypatch)
-    rows = [{"flow [L/min]": f, "T_in [degC]": t, "oil": o, "total loss [W]": f * t}
+    rows = [{"flow [L/min]": f, "T_in [degC]": t, "oil": o, "mean total loss [W]": f * t}
             for f in (15, 20, 25, 33) for t in (30, 40, 50) for o in ("VG32", "VG46", "VG68")]
     df = pd.DataFrame(rows)
-    fig_whatif(df, "flow [L/min]", ["total loss [W]"], group=["T_in [degC]", "oil"])
+    fig_whatif(df, "flow [L/min]", ["mean total loss [W]"], group=["T_in [degC]", "oil"])
     fig = seen[-1]
     assert fig.axes[0].get_legend() is None and len(fig.legends) == 1
     legend = fig.legends[0]
@@ -85,12 +85,12 @@ def test_whatif_legend_of_many_curves_is_outside_the_panels(monkeypatch):
     assert len(labels) == 9 and labels[0] == "30, VG32"
     # two curves: the legend stays in the first panel, titled with the column
     fig_whatif(df[(df["T_in [degC]"] == 30) & (df["oil"] != "VG68")], "flow [L/min]",
-               ["total loss [W]"], group="oil")
+               ["mean total loss [W]"], group="oil")
     inside = seen[-1].axes[0].get_legend()
     assert inside is not None and inside.get_title().get_text() == "oil"
     # no group: no legend
     fig_whatif(df[(df["T_in [degC]"] == 30) & (df["oil"] == "VG32")], "flow [L/min]",
-               ["total loss [W]"])
+               ["mean total loss [W]"])
     assert seen[-1].axes[0].get_legend() is None and not seen[-1].legends
     import matplotlib.pyplot as plt
 
@@ -105,8 +105,8 @@ def test_whatif_over_oil_grades(monkeypatch):
     seen = _captured_figure(monkeypatch)
     df = pd.DataFrame({"lubricant.preset": ["ISO_VG32", "ISO_VG68", "ISO_VG32", "ISO_VG68"],
                        "supply.flow [L/min]": [15.0, 15.0, 33.0, 33.0],
-                       "total loss [W]": [1261.0, 1559.0, 1522.0, 1878.0]})
-    fig_whatif(df, "lubricant.preset", ["total loss [W]"], group="supply.flow [L/min]")
+                       "mean total loss [W]": [1261.0, 1559.0, 1522.0, 1878.0]})
+    fig_whatif(df, "lubricant.preset", ["mean total loss [W]"], group="supply.flow [L/min]")
     ax = seen[-1].axes[0]
     assert [t.get_text() for t in ax.get_xticklabels()] == ["ISO_VG32", "ISO_VG68"]
     lines = ax.get_lines()

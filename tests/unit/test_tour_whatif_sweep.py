@@ -35,8 +35,8 @@ def capacity_runner(scene_toml: str) -> dict[str, float]:
 
 
 def loss_runner(scene_toml: str) -> dict[str, float]:
-    """A 'total loss [W]' that grows with the flow (what the sweep report plots)."""
-    return {"total loss [W]": 1e6 * loads_scene(scene_toml).supply.flow}
+    """A 'mean total loss [W]' that grows with the flow (what the sweep report plots)."""
+    return {"mean total loss [W]": 1e6 * loads_scene(scene_toml).supply.flow}
 
 
 @pytest.fixture(scope="module")
@@ -175,7 +175,7 @@ def test_sweep_report_reads_the_new_summary(scene, tmp_path, capsys):
 def test_terminal_table_is_compact(tmp_path, capsys, monkeypatch):
     import thermobearing.simulation as simulation
 
-    many = {"total loss [W]": 1000.0, "max over-skidding [%]": 9.0,
+    many = {"mean total loss [W]": 1000.0, "max over-skidding [%]": 9.0,
             **{f"final n{i}.housing [degC]": 40.0 + i for i in range(12)},
             **{f"churning {i} [W]": float(i) for i in range(12)}}
     monkeypatch.setattr(simulation, "summarize_scene", lambda text: dict(many))
@@ -186,7 +186,7 @@ def test_terminal_table_is_compact(tmp_path, capsys, monkeypatch):
     text = capsys.readouterr().out
     assert code == 0
     header = text.splitlines()[0]
-    assert "supply.flow" in header and "total loss [W]" in header
+    assert "supply.flow" in header and "mean total loss [W]" in header
     assert "max over-skidding [%]" in header and "final n0.housing [degC]" in header
     assert "churning 5 [W]" not in header and len(header) < 160
     assert "more result columns there" in text
@@ -319,7 +319,7 @@ def test_a_sweep_whose_cases_give_no_results_says_so(tmp_path, capsys, monkeypat
     assert "gave no results" in err and "summarize_scene" in err
 
 
-def test_film_only_scene_is_noted_before_the_runs(tmp_path, capsys, monkeypatch):
+def test_untabulated_scene_is_noted_before_the_runs(tmp_path, capsys, monkeypatch):
     import thermobearing.simulation as simulation
 
     calls = []
@@ -329,11 +329,19 @@ def test_film_only_scene_is_noted_before_the_runs(tmp_path, capsys, monkeypatch)
         return {}
 
     monkeypatch.setattr(simulation, "summarize_scene", runner)
-    code = cli.main(["sweep", "paper001_tehl", "--set", "schedule.speed=1000,2000", "--out",
+    # figures alone give nothing summarize_scene tabulates (a film-only scene tabulates its
+    # smallest films: test_fuzz_sweep_film_note.py)
+    from thermobearing.scene import configs_dir
+
+    text = (configs_dir() / "scenes" / "paper001_tehl.toml").read_text(encoding="utf-8")
+    text = text.replace('want = ["film"]', 'want = ["figures"]')
+    scene_file = tmp_path / "figures_only.toml"
+    scene_file.write_text(text, encoding="utf-8")
+    code = cli.main(["sweep", str(scene_file), "--set", "schedule.speed=1000,2000", "--out",
                      str(tmp_path / "s"), "--workers", "1", "--quiet"])
     err = calls[0] + capsys.readouterr().err
     assert code == 0
-    assert "will give no results" in calls[0] and "film" in calls[0]
+    assert "will give no results" in calls[0] and "figures" in calls[0]
     assert err.count("no results") == 1
 
 

@@ -26,15 +26,36 @@ def test_different_shapes_and_bearings_stay_apart_and_a_single_warning_is_unchan
     g = WarningGroups(lines)
     g.add("pan_hamrock_central: U in [1e-09, 2e-09] outside [1e-12, 1e-09]", "de", 2)
     g.add("pan_hamrock_central: U in [1e-09, 2e-09] outside [1e-12, 1e-09]", "nde", 2)
-    g.add("pan_hamrock_central: G in [9000, 9000] outside [1000, 8000]", "de", 2)
+    g.add("hamrock_dowson_1977_central: G in [9000, 9000] outside [1000, 8000]", "de", 2)
     g.add("cage guide: Reynolds number 2.3e4 beyond laminar", "de")
     assert lines == [
         "de, step 2: pan_hamrock_central: U in [1e-09, 2e-09] outside [1e-12, 1e-09]",
         "nde, step 2: pan_hamrock_central: U in [1e-09, 2e-09] outside [1e-12, 1e-09]",
-        "de, step 2: pan_hamrock_central: G in [9000, 9000] outside [1000, 8000]",
+        "de, step 2: hamrock_dowson_1977_central: G in [9000, 9000] outside [1000, 8000]",
         "de: cage guide: Reynolds number 2.3e4 beyond laminar"]
     g.add("cage guide: Reynolds number 4.1e4 beyond laminar", "de")
     assert lines[3] == "de: cage guide: Reynolds number 2.3e4 beyond laminar [raised 2 times]"
+
+
+def test_a_models_range_warnings_are_one_line_whichever_variables_left_the_range():
+    # the default rig listed three film-formula lines per bearing: U and W, W alone, U alone
+    lines: list[str] = []
+    g = WarningGroups(lines)
+    g.add(MSG.format(u0="1.1e-10", u1="1.8e-10", w0="8.8e-10", w1="5.8e-05"), "de", 0)
+    g.add("hamrock_dowson_1977_central: W in [3.4e-08, 6.7e-06] outside [3.69e-07, 7.37e-06]",
+          "de", 1)
+    g.add("hamrock_dowson_1977_central: U in [9.8e-11, 1.35e-10] outside [1e-12, 1e-10]",
+          "de", 2)
+    g.add("hamrock_dowson_1977_central: G in [9000, 9000] outside [1000, 8000]", "de", 4)
+    assert lines == ["de, steps 0-4: hamrock_dowson_1977_central: "
+                     "U in [9.8e-11, 1.8e-10] outside [1e-12, 1e-10]; "
+                     "W in [8.8e-10, 5.8e-05] outside [3.69e-07, 7.37e-06]; "
+                     "G in [9000, 9000] outside [1000, 8000] "
+                     "[raised 4 times at 4 steps; intervals are the envelope of all]"]
+    # another model, or a message that only looks like one, keeps its own line
+    g.add("pan_hamrock_central: U in [1e-09, 2e-09] outside [1e-12, 1e-09]", "de", 2)
+    g.add("hamrock_dowson_1977_central: U in [1e-09, 2e-09] beyond the fit", "de", 2)
+    assert len(lines) == 3
 
 
 def test_the_cap_limits_new_lines_only():

@@ -11,6 +11,7 @@ component (the style of seed paper 002 Figs. 16-17).
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 from html import escape
 from pathlib import Path
@@ -82,24 +83,38 @@ def sweep_report(folder: Path) -> Path:
     from ..report import fig_loss_maps, fig_whatif, figure_html
     from ..report_losses import fig_sweep_breakdown, readable, source_label, summary_sources
     from ..report_sections import html_table
+    from ..simulation_summary import MEAN_TOTAL_LOSS, current_result_name
+    from ..sweep_store import base_scene_mode
 
     df = _read_table(folder / "summary.csv", ("case",))
+    # a folder written before the summary's rename (total loss [W], rise <node> [K])
+    steady = base_scene_mode(folder) == "steady"
+    df = df.rename(columns={c: current_result_name(c, steady) for c in df.columns
+                            if current_result_name(c, steady) not in df.columns})
     store = folder / "cases.jsonl"
     try:
-        first = json.loads(store.read_text(encoding="utf-8").splitlines()[0])
-        params = list(first["params"])
+        records = [json.loads(line) for line in
+                   store.read_text(encoding="utf-8").splitlines() if line.strip()]
+        params = list(records[0]["params"])
     except (IndexError, json.JSONDecodeError, KeyError, TypeError):
         raise InputError("cases.jsonl", str(store), "the case store of `thermobearing "
                          "sweep` (one JSON record with 'params' per line)") from None
     df = _numeric_params(df, params)
     pcols = [c for c in df.columns if any(c == p or c.startswith(p + " [") for p in params)]
     results = [c for c in df.columns if c not in pcols and c != "case"]
+    # the source columns in the order and words of every other loss table
+    front = [c for c in results if c not in {f"{s} [W]" for s in summary_sources(results)}
+             and c.endswith(" [W]")]
+    ordered = front + [f"{s} [W]" for s in summary_sources(results)]
+    df = df[["case", *pcols, *ordered, *(c for c in results if c not in ordered)]]
+    results = [c for c in df.columns if c not in pcols and c != "case"]
     figs: dict[str, bytes] = {}
-    bars = fig_sweep_breakdown(df, pcols)
+    totals = [c for c in results if c.startswith("mean total loss") and c.endswith("[W]")]
+    # the protocol means of the totals are no source (summary_sources knows the other sums)
+    bars = fig_sweep_breakdown(df.drop(columns=totals), pcols)
     if bars is not None:
         figs["loss by source [W] of every case (all bearings, protocol average)"] = bars
-    sources = summary_sources(results)
-    totals = [c for c in results if c.startswith("total loss") and c.endswith("[W]")]
+    sources = summary_sources([c for c in results if c not in totals])
     losses = totals + [f"{s} [W]" for s in sources]
     titles = {f"{s} [W]": f"{source_label(s)} [W]" for s in sources}
     temps = [c for c in results if c.startswith("final") or c.startswith("rise")]
@@ -114,7 +129,7 @@ def sweep_report(folder: Path) -> Path:
             continue  # a parameter held at one value draws no curve
         # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
-        ys = [c for c in ["total loss [W]", "max over-skidding [%]"] if c in df] + curves
+        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df] + curves
         if ys:
             figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)
     numeric = [c for c in pcols if pd.api.types.is_numeric_dtype(df[c])]
@@ -134,6 +149,7 @@ def sweep_report(folder: Path) -> Path:
         if len(slices) > MAX_MAP_SLICES:
             notes.append(f"loss maps drawn for the first {MAX_MAP_SLICES} of {len(slices)} "
                          f"combinations of {', '.join(rest)}; every case is in the summary")
+    notes += missing_combinations(df, pcols) + flagged_cases(df, pcols)
     html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
             "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
@@ -143,9 +159,10 @@ def sweep_report(folder: Path) -> Path:
             _base_scene_html(folder),
             f"<p>{len(df)} cases; swept: {escape(', '.join(params))}. Losses in W: each "
             "case's loss of all its bearings, averaged over its protocol (steps weighted by "
-            "their duration); <code>total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
+            "their duration); <code>mean total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
             *(f"<p>{escape(n)}</p>" for n in notes),
             "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
+            _crosscheck_html(folder, df, records),
             "<h2>Summary</h2>",
             "<p>the sources named in words; summary.csv has their registered names</p>",
             html_table(readable(df), max_rows=500, csv_name="summary.csv"),
@@ -153,6 +170,90 @@ def sweep_report(folder: Path) -> Path:
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
     return out
+
+
+def missing_combinations(df: pd.DataFrame, pcols: list[str]) -> list[str]:
+    """A note naming the combinations of the swept values that have no row in the summary
+    (a case that failed under ``--keep-going``, or one not run yet), when some do; empty
+    when the summary covers the product of its swept values. A value whose every case
+    failed does not appear in the summary at all, so it cannot be named here."""
+    if len(pcols) < 2 or df.empty:
+        return []
+    values = [list(dict.fromkeys(df[c].tolist())) for c in pcols]
+    have = set(map(tuple, df[pcols].itertuples(index=False, name=None)))
+    missing = [combo for combo in itertools.product(*values) if combo not in have]
+    if not missing:
+        return []
+    shown = "; ".join(", ".join(f"{c} = {_fmt(v)}" for c, v in zip(pcols, combo,
+                                                                     strict=True))
+                      for combo in missing[:10])
+    more = f" and {len(missing) - 10} more" if len(missing) > 10 else ""
+    return [f"{len(missing)} of {len(have) + len(missing)} combinations of the swept values "
+            f"have no result (a case that failed under --keep-going, or one not run yet: "
+            f"`thermobearing sweep` printed why; rerunning it tries them again); the loss "
+            f"maps mark them with a red cross: {shown}{more}"]
+
+
+#: the sweep summary's counts of flagged steps -> what they flag, in words
+_FLAGS = {"steps over skid limit [-]": "cage skidding or over-skidding beyond the skid limit",
+          "steps over stress limit [-]": "a Hertz pressure above the stress limit",
+          "steps under film limit [-]": "a film parameter Lambda below the film limit"}
+
+
+def flagged_cases(df: pd.DataFrame, pcols: list[str]) -> list[str]:
+    """One note per operating check that flags steps in some cases (the summary's
+    ``steps over skid limit [-]`` and its stress and film siblings), naming how many cases
+    and the first few by their swept values: the losses of those points are of a bearing
+    outside the check's limit (a skidding cage, an overloaded contact, a thin film)."""
+    notes = []
+    for col, what in _FLAGS.items():
+        if col not in df:
+            continue
+        hit = df[pd.to_numeric(df[col], errors="coerce").fillna(0) > 0]
+        if hit.empty:
+            continue
+        named = "; ".join(", ".join(f"{c} = {_fmt(v)}" for c, v in zip(
+            pcols, row, strict=True)) for row in hit[pcols].itertuples(index=False,
+                                                                       name=None))
+        if len(hit) > 6:
+            named = "; ".join(named.split("; ")[:6]) + f" and {len(hit) - 6} more"
+        notes.append(f"{len(hit)} of {len(df)} cases have steps with {what} (summary "
+                     f"column '{col}'; limits from the scene's [checks], else the defaults): "
+                     f"{named}")
+    return notes
+
+
+def _fmt(v: object) -> str:
+    return f"{v:g}" if isinstance(v, (int, float)) else str(v)
+
+
+def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str:
+    """The sweep's catalogue cross-check section (SKF four-term and Palmgren per case,
+    :func:`report_context.sweep_catalogue_crosscheck`); a note when the folder does not
+    allow it (no base scene, or losses at the network's temperatures)."""
+    from ..report_context import sweep_catalogue_crosscheck
+    from ..report_sections import html_table
+    from ..scene import loads_scene
+
+    head = ("<h2>Catalogue cross-check</h2><p>each case's total loss (all bearings, "
+            "protocol average) beside the whole-bearing estimates of the SKF four-term "
+            "model and Palmgren's M0 + M1 at the same speeds, loads, lubrication method "
+            "and oil temperature, averaged over the protocol in the same way "
+            "(thermobearing.global_friction). Both are catalogue-level models, fitted to "
+            "catalogue bearings in standard conditions: an order-of-magnitude check, not "
+            "a reference</p>")
+    path = folder / "scene.toml"
+    if not path.is_file():
+        return head + "<p class='note'>(not available: the folder has no scene.toml)</p>"
+    try:
+        base = loads_scene(path.read_text(encoding="utf-8"), base_dir=folder,
+                           source=str(path))
+        table, notes = sweep_catalogue_crosscheck(base, [
+            r for r in records if r.get("case") in set(df["case"])])
+    except InputError as exc:
+        return head + f"<p class='note'>(not available: {escape(str(exc))})</p>"
+    return (head + (html_table(table, max_rows=500) if not table.empty else "")
+            + "".join(f"<p class='note'>{escape(n)}</p>" for n in notes))
 
 
 def _base_scene_html(folder: Path) -> str:
@@ -204,11 +305,20 @@ def run_report(folder: Path) -> Path:
 
         breakdown_by_source(losses).to_csv(folder / "loss_breakdown.csv", index=False)
     attach_figures(results, scene)
+    # the folder's PNG files are the report's figures: rewritten with it (they kept the
+    # figures of the run's version while report.html had the new ones)
+    for name, png in results.figures.items():
+        (folder / f"{name}.png").write_bytes(png)
     return write_report(results, scene, folder / "report.html")
 
 
 def run(args: argparse.Namespace) -> int:
     folder = Path(args.folder)
+    if not folder.is_dir():
+        raise InputError("folder", str(folder),
+                         "an existing folder (no such folder here: give the --out folder of "
+                         "`thermobearing run` or `thermobearing sweep`; `run` without --out "
+                         "writes results/<scene file name>)")
     if (folder / "summary.csv").is_file() and (folder / "cases.jsonl").is_file():
         out = sweep_report(folder)
     elif (folder / "scene.toml").is_file():

@@ -66,10 +66,12 @@ def run(args: argparse.Namespace) -> int:
             print(f"sweep: {p.path}: repeated value(s) left out: {', '.join(p.dropped)}",
                   file=sys.stderr)
     out = Path(args.out)
-    tabulated = {"losses", "kinematics", "temperatures"}
-    empty_note = ("a sweep reduces each run to its losses, kinematics and temperatures "
-                  "(thermobearing.simulation.summarize_scene), and this scene's outputs are "
-                  f"{', '.join(scene.outputs.want)}")
+    # what summarize_scene reduces to columns: losses (also behind "report"), kinematics,
+    # temperatures (also behind "energy") and a film-only scene's smallest films
+    tabulated = {"losses", "kinematics", "temperatures", "energy", "report", "film"}
+    empty_note = ("a sweep reduces each run to its losses, kinematics, temperatures and "
+                  "films (thermobearing.simulation.summarize_scene), and this scene's outputs "
+                  f"are {', '.join(scene.outputs.want) or 'none'}")
     warned = not set(scene.outputs.want) & tabulated
     if warned:  # say it before the runs, not after
         print(f"note: the cases will give no results to tabulate: {empty_note}",
@@ -138,12 +140,12 @@ def flagged_notes(df, swept: list[str]) -> list[str]:
 
 
 #: results shown on the terminal when the runner gives them (summary.csv has all)
-_MAIN_RESULTS = ("total loss [W]", "max over-skidding [%]")
+_MAIN_RESULTS = ("mean total loss [W]", "max over-skidding [%]")
 
 
 def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
     """Columns printed on the terminal: the case, the swept values as set, and a few main
-    results (total loss, over-skidding, the first housing temperature and its rise, when
+    results (mean total loss, over-skidding, the first housing temperature and its rise, when
     present; else the largest loss columns, then the others); and how many result columns
     are left out."""
     params = [c for c in df.columns if c in swept

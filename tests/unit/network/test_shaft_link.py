@@ -149,7 +149,7 @@ def test_overlapping_shaft_pieces_move_capacity_explicitly():
         assert net.capacity(node) == pytest.approx(base.capacity(node) - 0.1 * per_length,
                                                    rel=1e-12)
     assert any("overlap" in n and "de.shaft -" in n for n in sim.notes)
-    # spacing = shaft_length: the pieces meet, nothing moves (the default rig)
+    # spacing = shaft_length: the pieces meet, nothing moves
     net = build_network(Simulation(scene('{ spacing = "500 mm" }'), progress=False))
     for node in ("de.shaft", "nde.shaft"):
         assert net.capacity(node) == base.capacity(node)
