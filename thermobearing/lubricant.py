@@ -43,6 +43,7 @@ from .lubricant_properties import (
     _D341_MAX_NU,
     _D341_MIN_NU,
     _D1250_DENSITY_RANGE,
+    ALPHA_FIT_LOWEST_VISCOSITY,
     LUBRICANT_THERMAL,
     PRESSURE_VISCOSITY_COEFFICIENT,
     AirProperties,
@@ -317,6 +318,17 @@ class Lubricant:
         ``reference_temperature`` (default 313.15 K) by z = alpha p0 / (ln eta0 + 9.67),
         Hamrock 2004 ch. 4; with an alpha correlation z follows alpha(T). For a Barus oil
         this is the Roelands index with the same initial slope.
+
+        An eta-based correlation is followed down to the lowest viscosity of its data
+        (``ALPHA_FIT_LOWEST_VISCOSITY``, the ASME 1953 fit: 2.4 mPa s); a thinner (hotter)
+        oil keeps the z of that viscosity. The fit's alpha falls as eta0^0.16 while
+        ln eta0 + 9.67 falls to 0, so its z rises without bound there, and with a z rising in
+        temperature the Roelands viscosity at a fixed pressure rises with temperature
+        (d ln eta / d ln eta0 = (1 + p/p0)^z [1 + ln(1 + p/p0) (ln eta0 + 9.67) dz/d ln eta0]):
+        an ISO VG 2 oil at 1 GPa had 85 Pa s at 80 degC and 422 Pa s at 200 degC. With z held
+        the viscosity falls with temperature at every pressure below the hold; above it the
+        fit's z keeps it falling up to about 4 GPa (the ISO 76 static-rating stresses). The
+        initial-slope alpha of the films stays the correlation's.
         """
         check_temperature("temperature", T)   # a constant z ignored T (0 K passed)
         pp = self.pressure_parameters
@@ -328,8 +340,13 @@ class Lubricant:
             tref = float(pp.get("reference_temperature", 313.15))
             z = float(roelands_index_from_alpha(pp["alpha"], self._eta_atm(tref), self._p0))
             return _out(np.full_like(np.asarray(T, dtype=float), z))
-        alpha = self._alpha_correlated(T)
-        return roelands_index_from_alpha(alpha, self._eta_atm(T), self._p0)
+        lowest = ALPHA_FIT_LOWEST_VISCOSITY.get(str(self.alpha_correlation))
+        if lowest is None:
+            return roelands_index_from_alpha(self._alpha_correlated(T), self._eta_atm(T),
+                                             self._p0)
+        eta = np.maximum(np.asarray(self._eta_atm(T), dtype=float), lowest)
+        entry = PRESSURE_VISCOSITY_COEFFICIENT.entry(str(self.alpha_correlation))
+        return roelands_index_from_alpha(entry.obj(eta), _out(eta), self._p0)
 
     def _alpha_correlated(self, T: ArrayLike) -> ArrayLike:
         assert self.alpha_correlation is not None

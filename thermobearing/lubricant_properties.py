@@ -51,6 +51,13 @@ def _out(x: np.ndarray) -> ArrayLike:
 # ---------------------------------------------------------------------------
 # pressure-viscosity coefficient correlations
 # ---------------------------------------------------------------------------
+#: lowest atmospheric viscosity [Pa s] of the data an eta-based alpha fit was fitted to (its
+#: registered validity). A Roelands oil whose z comes from such a fit keeps below it the z of
+#: this viscosity (:meth:`thermobearing.lubricant.Lubricant.roelands_index`): the fit's
+#: z = alpha p0 / (ln eta0 + 9.67) rises without bound as eta0 nears Roelands' 6.31e-5 Pa s
+#: and the viscosity at a fixed high pressure then rises with temperature.
+ALPHA_FIT_LOWEST_VISCOSITY = {"asme1953_mineral_fit": 2.4e-3}
+
 @PRESSURE_VISCOSITY_COEFFICIENT.register(
     "asme1953_mineral_fit",
     references=["stachowiak2005", "asme1953_pressure_viscosity"],
