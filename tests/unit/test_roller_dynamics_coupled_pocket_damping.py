@@ -99,7 +99,7 @@ def test_table_refresh_pocket_damping_units(base):
     y = np.zeros(n + 4)
     y[7] = w
     y[n + 1] = wc
-    lin = np.zeros((1, 6))
+    lin = np.zeros((1, 7))
     w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
     st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
                             np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
@@ -114,3 +114,77 @@ def test_table_refresh_pocket_damping_units(base):
     ds_dv = (s_p[0] - s_m[0]) / (2.0 * dv)                # N s/m
     assert c_z[0] == pytest.approx(-ds_dv, rel=1e-2)
     assert 5.0 < c_z[0] < 8.0
+
+
+def _raceway_shear(rm, m, dz):
+    """S = S_i + S_o [N] on every roller's surface (the spin equation's raceway shear) with
+    the roller centre moving at dz [m/s] along the orbit, by hand as in _orbital_force."""
+    half = 0.5 * rm.roller_diameter
+    w, wc = m.spin, m.cage_speed
+    e0 = _race_eval(rm, m, w, wc)
+    u_ri = np.full_like(w, 0.5 * (rm.pitch_diameter - rm.roller_diameter) * (m.inner_speed - wc))
+    u_ro = np.full_like(w, 0.5 * (rm.pitch_diameter + rm.roller_diameter) * wc)
+    common = dict(eta0=rm.eta0, alpha=rm.alpha, traction_law=rm.traction_law,
+                  temperature=rm.temperature, rolling_force=rm.rolling_force,
+                  oil_layer=rm.oil_layer)
+    fi = rm.contact_forces(m.inner_load, rm.length, rm.radius_inner, rm.effective_modulus,
+                           u_ri, half * w + dz, film=rm.film_inner, **common)
+    fo = rm.contact_forces(e0.q_o, rm.length, rm.radius_outer, rm.effective_modulus,
+                           u_ro, half * w - dz, film=rm.film_outer, **common)
+    return fi.shear_force + fo.shear_force, e0
+
+
+def test_spin_pocket_coupling_is_the_shear_slope_against_the_pocket_speed(base):
+    """dS/dz' of the spin equation (spin_pocket_coupling, from each contact's spin slope)
+    equals a central difference of paper 000's shear against the pocket speed by hand, for
+    every roller; the summed shear's slope alone cannot give it (the two contacts' slopes
+    enter with opposite signs): most loaded roller -0.30 N s/m against c_z = 6.45."""
+    m, rm = base
+    half = 0.5 * rm.roller_diameter
+    dv = 1e-3
+    s_p, e0 = _raceway_shear(rm, m, dv)
+    s_m, _ = _raceway_shear(rm, m, -dv)
+    s_0, _ = _raceway_shear(rm, m, 0.0)
+    assert np.allclose(s_0, e0.roller_eq + e0.friction, rtol=1e-9, atol=1e-12)
+    by_hand = (s_p - s_m) / (2.0 * dv)
+    dw = 1e-4 * m.spin
+    e1 = _race_eval(rm, m, m.spin + dw, m.cage_speed)
+    ds = (e1.roller_eq + e1.friction - e0.roller_eq - e0.friction) / dw
+    dso = (e1.outer.shear_force - e0.outer.shear_force) / dw
+    got = np.array([rc.spin_pocket_coupling(float(a), float(o), half)
+                    for a, o in zip(ds, dso, strict=True)])
+    scale = np.max(np.abs(by_hand))
+    assert np.max(np.abs(got - by_hand)) < 2e-3 * max(scale, 1.0)
+    j = int(np.argmax(m.inner_load))
+    assert -0.35 < got[j] < -0.25
+    assert abs(got[j]) < 0.1 * rc.pocket_damping(float(ds[j]), half)
+
+
+def test_table_refresh_spin_pocket_coupling(base):
+    """The in-kernel table refresh fills lin[:, 6] = dS/dz' from the table's outer-shear
+    column, equal to the hand slope (the spin on a table node here; measured -0.30237 against
+    -0.30237 N s/m; without the unbalance's 6.5 N body force in the table it was -0.359: the
+    value is the difference of two spin slopes of ~6.4 N s/m each, sensitive to 1 %
+    changes of either)."""
+    from thermobearing.skidding.roller_dynamics_coupling import unbalance_orbital_force
+
+    m, rm = base
+    half = 0.5 * rm.roller_diameter
+    j = int(np.argmax(m.inner_load))
+    w, n_i, wc = float(m.spin[j]), float(m.inner_load[j]), float(m.cage_speed)
+    tab = build_traction_table(rm, SPEED, lambda c: unbalance_orbital_force(m, c),
+                               (w - 400.0, w + 400.0), n_i, wc)
+    n = rc.N_ROLLER_STATES
+    y = np.zeros(n + 4)
+    y[7] = w
+    y[n + 1] = wc
+    lin = np.zeros((1, 7))
+    w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
+    st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
+                            np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
+                            tab.cage, tab.values, lin, w0, wc, q_o, c_z, half)
+    assert st == 0
+    s_p, _ = _raceway_shear(rm, m, 1e-3)
+    s_m, _ = _raceway_shear(rm, m, -1e-3)
+    hand = (s_p[j] - s_m[j]) / 2e-3
+    assert abs(lin[0, 6] - hand) < 2e-3 * c_z[0]

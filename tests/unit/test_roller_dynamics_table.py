@@ -30,7 +30,7 @@ def setup():
 
 def _direct(rm, w, n, wc):
     e = evaluate(rm, SPEED, w, wc, n, np.full(w.size, BODY), np.zeros(w.size), (0.0, 0.0))
-    return np.stack([e.roller_eq + e.friction, e.pocket, e.q_o], -1)
+    return np.stack([e.roller_eq + e.friction, e.pocket, e.q_o, e.outer.shear_force], -1)
 
 
 def test_table_nodes_reproduce_evaluate(setup):

@@ -165,6 +165,7 @@ from .roller_dynamics_coupled_kernels import (  # noqa: F401  (kernels re-export
     _stiff_rates,
     _stiff_roller,
     pocket_damping,
+    spin_pocket_coupling,
 )
 from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_response import RollerResponse, _post, _response
@@ -393,7 +394,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     sample_t = np.zeros(n_samples)
     sample_wc = np.zeros(n_samples)
     sample_ring = np.zeros(n_samples)
-    lin = np.zeros((z_n, 6))
+    lin = np.zeros((z_n, 7))
     w0 = np.zeros(z_n)
     q_o = np.zeros(z_n)
     c_z = np.zeros(z_n)
@@ -459,6 +460,9 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             lin[:, 5] = (e2.pocket - e0.pocket) / dc
             q_o = np.asarray(e0.q_o, float).copy()
             c_z = np.array([pocket_damping(float(k), half) for k in lin[:, 1]])
+            ko = (e1.outer.shear_force - e0.outer.shear_force) / dw
+            lin[:, 6] = [spin_pocket_coupling(float(k), float(o), half)
+                         for k, o in zip(lin[:, 1], ko, strict=True)]
             block = min(sub, n_total - step)
             grid = (0.0, 1.0, empty, empty, np.zeros((1, 1, 1, 3)))
         else:

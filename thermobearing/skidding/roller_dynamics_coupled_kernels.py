@@ -16,7 +16,7 @@ from numba import njit
 from .roller_dynamics_etd import set_coefficients
 from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_rhs import _CP, _ETA, _FLOOR, _HL, _KC, _MASS, _PDOF, _rhs_ring
-from .roller_dynamics_table import table_eval
+from .roller_dynamics_table import table_eval_contacts
 
 #: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
 N_ROLLER_STATES = 8
@@ -59,6 +59,34 @@ def pocket_damping(shear_spin_slope: float, half: float) -> float:
 
 
 @njit(cache=True)
+def spin_pocket_coupling(shear_spin_slope: float, outer_shear_spin_slope: float,
+                         half: float) -> float:
+    """dS/dz' [N s/m]: the change of the raceway shear S = S_i + S_o [N] on the roller
+    surface (paper 000 eqs. 22-31; paper 003 eq. 18 line 4, T^i + T^o) with the roller's
+    pocket speed z' [m/s], from the spin slopes dS/d omega and dS_o/d omega [N s/rad] and
+    the roller radius ``half`` = D/2 [m]:
+
+        dS/dz' = (dS_i/d omega - dS_o/d omega) / (D/2),  dS_i/d omega = dS/d omega - dS_o/d omega.
+
+    Each contact's shear is a function of its sliding speed V = u_race - u_roller. A spin
+    change d omega lowers both V_i and V_o by (D/2) d omega; a pocket speed z' (the roller
+    centre moving along +z, the inner race's direction relative to the cage) lowers V_i by
+    z' and raises V_o by z' (the reasoning of :func:`pocket_damping`). So the spin feels z'
+    through the *difference* of the two contacts' slopes (zero only where they are equal),
+    which the summed shear cannot give: the outer shear is a column of its own in the table
+    (:data:`~thermobearing.skidding.roller_dynamics_table.T_SHEAR_OUTER`). It is the
+    reciprocal of the orbital force's spin slope, dF_d/d omega = dS_i/d omega - dS_o/d omega
+    (F_d = T^i - T^o), up to F_d's film-pressure share (which the shear columns do not
+    carry: 2 % for the most loaded roller, 20 % for the unloaded ones at the base case,
+    so dF_d/d omega is not used for it). Measured at paper 003's base case
+    (MIL-PRF-23699, 80 degC, 3 kN): -0.30 N s/m for the most loaded roller at 30000 r/min
+    (the shear at z' = 0.5 m/s: paper 000's model 0.329 N, held 0.469 N, with this term
+    0.318 N), -1.91 N s/m at 10000 r/min (z' = 0.5 m/s: 0.128 -> -0.760 N; this term gives
+    -0.825 N). Before 2026-11-23 (evening) the spin equation held S at z' = 0."""
+    return (shear_spin_slope - 2.0 * outer_shear_spin_slope) / half
+
+
+@njit(cache=True)
 def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
     """np.interp(x, xp, fp) for ascending ``xp`` (binary search; numba's np.interp costs
     ~0.5 us a call, this a few ns); clamped to the end values outside [xp[0], xp[-1]]."""
@@ -85,7 +113,8 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
                 half: float, dm_half: float, t_c: float, film: np.ndarray,
                 ring_mass: float, land: np.ndarray) -> None:
     """dy[:] = time derivative of the coupled state (roller_dynamics_coupled module notes).
-    ``lin`` (Z, 6): S0, dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc of the last refresh;
+    ``lin`` (Z, 7): S0, dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc, dS/dz' of the last refresh
+    (:func:`spin_pocket_coupling`; z' the roller's pocket speed);
     ``c_z`` (Z,): each roller's raceway damping of its pocket speed z' [N s/m]
     (:func:`pocket_damping`);
     ``film``: pocket length, eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg]
@@ -106,7 +135,7 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         n_i = _interp_sorted(phi, az, load)
         dw = w - w0[j]
         dc = wc - wc0
-        s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc
+        s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc + lin[j, 6] * y[b + 5]
         f_d = lin[j, 3] + lin[j, 4] * dw + lin[j, 5] * dc
         r = _rhs_ring(p, y[b] - x_ring, y[b + 1] - xd_ring, y[b + 2], y[b + 3], y[b + 4],
                       y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
@@ -164,9 +193,12 @@ def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.nd
     phi = (phi0[j] + th) % (2.0 * math.pi)
     n_i = _interp_sorted(phi, az, load)
     dw = 1e-4 * max(abs(w), 1.0)
-    s0, f0, q0, st0 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0)
-    s1, f1, _, st1 = table_eval(spin0, spin_step, loads, cage, values, w + dw, n_i, wc0)
-    s2, f2, _, st2 = table_eval(spin0, spin_step, loads, cage, values, w, n_i, wc0 + dc)
+    s0, f0, q0, so0, st0 = table_eval_contacts(spin0, spin_step, loads, cage, values, w,
+                                               n_i, wc0)
+    s1, f1, _, so1, st1 = table_eval_contacts(spin0, spin_step, loads, cage, values, w + dw,
+                                              n_i, wc0)
+    s2, f2, _, _, st2 = table_eval_contacts(spin0, spin_step, loads, cage, values, w, n_i,
+                                            wc0 + dc)
     st = max(st0, max(st1, st2))
     if st != 0:
         return st
@@ -177,6 +209,7 @@ def _refresh_roller(j: int, y: np.ndarray, z_n: int, phi0: np.ndarray, az: np.nd
     lin[j, 3] = f0
     lin[j, 4] = (f1 - f0) / dw
     lin[j, 5] = (f2 - f0) / dc
+    lin[j, 6] = spin_pocket_coupling(lin[j, 1], (so1 - so0) / dw, half)
     q_o[j] = q0
     c_z[j] = pocket_damping(lin[j, 1], half)
     return 0
@@ -348,7 +381,8 @@ def _refresh_caches() -> None:
     )
 
     refresh_stale_caches("roller_dynamics_coupled_kernels",
-                         (pocket_damping, _pocket_film_friction, _interp_sorted,
+                         (pocket_damping, spin_pocket_coupling, _pocket_film_friction,
+                          _interp_sorted,
                           _deriv_into,
                           _refresh_from_table, _refresh_roller, _stiff_rates,
                           _stiff_roller, _integrate),

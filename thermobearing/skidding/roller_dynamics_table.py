@@ -52,8 +52,13 @@ from ..errors import InputError, check_positive
 
 _ONE = np.int64(1)   # int64 constant for compiled calls (a literal 1 compiles once more)
 
-#: output columns of the table: raceway shear S [N], orbital force F_d [N], outer load Q_o [N]
-T_SHEAR, T_POCKET, T_OUTER = 0, 1, 2
+#: output columns of the table: raceway shear S = S_i + S_o [N], orbital force F_d [N], outer
+#: load Q_o [N], outer-contact shear S_o [N] (its own column so that each contact's slope is
+#: known: a pocket speed z' changes the two contacts' sliding in opposite senses,
+#: :func:`thermobearing.skidding.roller_dynamics_coupled_kernels.spin_pocket_coupling`)
+T_SHEAR, T_POCKET, T_OUTER, T_SHEAR_OUTER = 0, 1, 2, 3
+#: number of columns of the table
+N_COLUMNS = 4
 
 #: default grid: spin spacing [rad/s], number of loaded N_i nodes, cage-speed layer step [-]
 DEFAULT_SPIN_STEP = 50.0
@@ -68,7 +73,7 @@ class TractionTable:
     spin0, spin_step : first node and spacing of the uniform omega_r grid [rad/s].
     loads : (n + 2,) N_i nodes N_max (k/n)^2 [N] (first 0; the last one beyond N_max, the
     cubic's end node).  cage : (n_c,) omega_c layers [rad/s], equally spaced (n_c >= 3).
-    values : (n_c, n_N, n_w, 3) S, F_d, Q_o [N] (columns ``T_*``).
+    values : (n_c, n_N, n_w, 4) S, F_d, Q_o, S_o [N] (columns ``T_*``).
     evaluations : grid points evaluated for this table (reused layers not counted).
     """
 
@@ -86,19 +91,20 @@ class TractionTable:
         return self.spin0 + self.spin_step, self.spin0 + (n_w - 2) * self.spin_step
 
     def __call__(self, spin: Any, load: Any, cage_speed: float) -> np.ndarray:
-        """Interpolated (S, F_d, Q_o) [N] at arrays ``spin`` [rad/s], ``load`` [N] and one
-        ``cage_speed`` [rad/s]: shape (..., 3). ValueError outside the grid."""
+        """Interpolated (S, F_d, Q_o, S_o) [N] at arrays ``spin`` [rad/s], ``load`` [N] and
+        one ``cage_speed`` [rad/s]: shape (..., 4) (columns ``T_*``). ValueError outside
+        the grid."""
         w = np.atleast_1d(np.asarray(spin, float))
         n = np.broadcast_to(np.asarray(load, float), w.shape)
-        out = np.empty(w.shape + (3,))
+        out = np.empty(w.shape + (N_COLUMNS,))
         for idx in np.ndindex(w.shape):
-            s, f, q, status = table_eval(self.spin0, self.spin_step, self.loads, self.cage,
-                                         self.values, float(w[idx]), float(n[idx]),
-                                         float(cage_speed))
+            s, f, q, so, status = table_eval_contacts(
+                self.spin0, self.spin_step, self.loads, self.cage, self.values,
+                float(w[idx]), float(n[idx]), float(cage_speed))
             if status:
                 raise ValueError(f"outside the traction table (status {status}): spin "
                                  f"{w[idx]}, load {n[idx]}, cage speed {cage_speed}")
-            out[idx] = (s, f, q)
+            out[idx] = (s, f, q, so)
         return out
 
 
@@ -147,7 +153,7 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
     w_all = np.tile(spins, loads.size)
     n_all = np.repeat(loads, n_w)
     zeros = np.zeros(w_all.size)
-    values = np.empty((cage.size, loads.size, n_w, 3))
+    values = np.empty((cage.size, loads.size, n_w, N_COLUMNS))
     reuse = (previous is not None and previous.values.shape[1:] == values.shape[1:]
              and previous.spin0 == spin0 and previous.spin_step == spin_step
              and np.array_equal(previous.loads, loads))
@@ -163,7 +169,7 @@ def build_traction_table(race_model: Any, inner_speed: float, body_force: Any,
         e = evaluate(race_model, float(inner_speed), w_all, float(wc), n_all, body, zeros,
                      (0.0, 0.0))
         for col, arr in ((T_SHEAR, e.roller_eq + e.friction), (T_POCKET, e.pocket),
-                         (T_OUTER, e.q_o)):
+                         (T_OUTER, e.q_o), (T_SHEAR_OUTER, e.outer.shear_force)):
             values[ic, :, :, col] = np.asarray(arr, float).reshape(loads.size, n_w)
     if not np.all(np.isfinite(values)):
         raise ValueError("traction model returned non-finite values on the table grid")
@@ -184,8 +190,8 @@ def _cubic(v: np.ndarray, i: int, t: float, col: int) -> float:
 
 @njit(cache=True)
 def _spin_cubic(v: np.ndarray, i: int, t: float, out: np.ndarray) -> None:
-    """out[:] = Catmull-Rom in the spin of the three columns of v (n_w, 3)."""
-    for col in range(3):
+    """out[:] = Catmull-Rom in the spin of every column of v (n_w, n_col)."""
+    for col in range(v.shape[1]):
         out[col] = _cubic(v, i, t, col)
 
 
@@ -196,16 +202,28 @@ def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarr
     """(S, F_d, Q_o [N], status) interpolated at spin ``w`` [rad/s], inner load ``n`` [N],
     cage speed ``wc`` [rad/s] (module notes). status 0 ok, 1 spin, 2 load, 3 cage speed
     outside the grid (values then 0)."""
+    s, f, q, _, status = table_eval_contacts(spin0, spin_step, loads, cage, values, w, n,
+                                             wc)
+    return s, f, q, status
+
+
+@njit(cache=True)
+def table_eval_contacts(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
+                        values: np.ndarray, w: float, n: float, wc: float
+                        ) -> tuple[float, float, float, float, int]:
+    """(S, F_d, Q_o, S_o [N], status): :func:`table_eval` with the outer contact's shear S_o
+    (column ``T_SHEAR_OUTER``; the inner one's is S - S_o)."""
     n_w = values.shape[2]
+    n_col = values.shape[3]
     x = (w - spin0) / spin_step
     i = int(math.floor(x))
     if i < 1 or i > n_w - 3:
-        return 0.0, 0.0, 0.0, 1
+        return 0.0, 0.0, 0.0, 0.0, 1
     t = x - i
     n_l = loads.shape[0] - 2          # loads[k] = N_max (k / n_l)^2, k = 0 .. n_l + 1
     n_max = loads[n_l]
     if n < 0.0 or n > n_max:
-        return 0.0, 0.0, 0.0, 2
+        return 0.0, 0.0, 0.0, 0.0, 2
     u = n_l * math.sqrt(n / n_max)
     il = min(int(math.floor(u)), n_l - 1)
     tl = u - il
@@ -214,32 +232,33 @@ def table_eval(spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarr
     xc = (wc - cage[0]) / dc
     jc = int(math.floor(xc))
     if jc < 1 or jc > n_c - 3:
-        return 0.0, 0.0, 0.0, 3
+        return 0.0, 0.0, 0.0, 0.0, 3
     tc = xc - jc
     # Catmull-Rom in the cage speed through layers jc-1 .. jc+2 (C1: value and slope
     # continuous across layers -- the refresh's forward-difference slopes need it)
-    layer = np.zeros((4, 3))
-    nodes = np.zeros((4, 3))
+    layer = np.zeros((4, n_col))
+    nodes = np.zeros((4, n_col))
     for ic in range(4):
         for k in range(4):
             kk = il - 1 + k
             if kk >= 0:
                 _spin_cubic(values[jc - 1 + ic, kk], i, t, nodes[k])
         if il == 0:
-            for col in range(3):
+            for col in range(n_col):
                 nodes[0, col] = nodes[2, col]
-        for col in range(3):
+        for col in range(n_col):
             p0 = nodes[0, col]
             p1 = nodes[1, col]
             p2 = nodes[2, col]
             p3 = nodes[3, col]
             layer[ic, col] = p1 + 0.5 * tl * (p2 - p0 + tl * (
                 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + tl * (3.0 * (p1 - p2) + p3 - p0)))
-    res = np.zeros(3)
-    for col in range(3):
+    res = np.zeros(n_col)
+    for col in range(n_col):
         res[col] = _cubic(layer, _ONE, tc, col)   # int64, not Literal[int](1): one compile
-    return res[0], res[1], res[2], 0
+    return res[0], res[1], res[2], res[3], 0
 
 
-__all__ = ["DEFAULT_CAGE_STEP", "DEFAULT_LOAD_NODES", "DEFAULT_SPIN_STEP", "T_OUTER",
-           "T_POCKET", "T_SHEAR", "TractionTable", "build_traction_table", "table_eval"]
+__all__ = ["DEFAULT_CAGE_STEP", "DEFAULT_LOAD_NODES", "DEFAULT_SPIN_STEP", "N_COLUMNS",
+           "T_OUTER", "T_POCKET", "T_SHEAR", "T_SHEAR_OUTER", "TractionTable",
+           "build_traction_table", "table_eval", "table_eval_contacts"]
