@@ -1,0 +1,77 @@
+"""Run-output hygiene: what a run reports and writes says what was computed, in one line,
+with units (defects found by the scene fuzzer and a loss-map tour)."""
+
+from __future__ import annotations
+
+import warnings
+
+import pytest
+
+from thermobearing.errors import ConvergenceError
+from thermobearing.scene import loads_scene
+from thermobearing.simulation import Simulation
+
+#: a fuzzed scene (seed 14): a QJ1044 on the global friction model at 5000 r/min with a
+#: 0.086 L/min jet of OIL_4109 started at -5.3 degC: 25 kW of heat, the oil node crosses
+#: the oil's 225.6 degC limit about 1.7 s in
+RUNAWAY = """
+title = "runaway inside a chunk"
+[[bearings]]
+name = "a"
+preset = "QJ1044"
+[lubricant]
+preset = "OIL_4109"
+[supply]
+method = "jet"
+flow = "0.0861299 L/min"
+inlet_temperature = "82.436 degF"
+[environment]
+ambient_temperature = "162.194 degF"
+initial_temperature = "22.4438 degF"
+[schedule]
+speed = "5000 rpm"
+radial_load = "2946.5 N"
+axial_load = "0 N"
+duration = "60 min"
+[models]
+kinematics = "none"
+heat_sources = ["global_friction"]
+heat_source_options = { global_friction = { model = "skf_four_term" } }
+[outputs]
+mode = "transient"
+want = ["temperatures"]
+[network]
+template = "seven_node"
+[network.parameters]
+housing_outer_diameter = "614.4 mm"
+housing_length = "103.0 mm"
+shaft_diameter = "220.0 mm"
+shaft_length = "770.0 mm"
+[solver]
+chunk = "CHUNK"
+"""
+
+
+def _runaway(chunk: str) -> ConvergenceError:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(ConvergenceError) as info:
+            Simulation(loads_scene(RUNAWAY.replace("CHUNK", chunk)), progress=False).run()
+    return info.value
+
+
+def test_runaway_inside_a_chunk_is_a_thermal_runaway_where_it_crosses_the_limit():
+    """With a 600 s chunk the network stepper stopped 115 s in with the oil node at
+    3.5e5 K (an air conductance out of its range) and the run ended with that stepper's
+    error; it is a thermal runaway naming the node, where the limit was crossed and the
+    remedy, at the same time as with a 114 s chunk whose end is past the limit (the same
+    chunk model: the crossing does not depend on where the chunk ends)."""
+    long, short = _runaway("600 s"), _runaway("114 s")
+    for err in (long, short):
+        text = str(err)
+        assert err.solver == "coupled transient"
+        assert "thermal runaway: node 'a.oil' reached the limit of 225.6 degC" in text
+        assert "check the oil flow" in text and "network stepper" not in text
+        assert 0.0 < err.residual < 2.0  # [K] above the limit: located, not the chunk end
+    assert 1.0 < long.state["time"] < 3.0
+    assert long.state["time"] == pytest.approx(short.state["time"], abs=0.05)
