@@ -32,6 +32,17 @@ Pocket forces that alternate in sign around the bearing (balls with different fr
 speeds) add to Q_bp without adding to P_drag; :func:`pocket_circulation` measures that.
 :func:`steady_pocket_drag_ratio` gives the factor; the ``details`` of the source carry both.
 
+Roller skidding states: the roller solver (paper 000, seed 000_3b5ca6eed61dd596.txt) balances
+the pocket film friction f_d of its eqs. 37-38 (``skidding.roller_pocket_film``), not mu F_bp;
+its kinematic state carries f_d (extras ``pocket_friction``) and the source books
+Q = sum_j f_d,j omega_r,j D / 2, the power of that force (the roller moment balance eq. 31 and
+the cage equation eq. 32 contain it, so the raceway, rolling and pocket heat add up to the
+solver's shaft power). Before, the source booked the boundary mu = 0.1 times F_d there:
+12.5 W against the solver's 9.0 W (NU 214, ISO VG 46 at 320 K, 5000 r/min, 200 N) and 7.6
+against 10.9 W (3000 r/min, 8 kN). Options that name a friction coefficient
+(``friction_coefficient``, ``mu_boundary``, ``mu_hydrodynamic``, ``pocket_film``,
+``roughness``) still ask for eq. 19 with mu.
+
 Not in paper 002 and not in the source's heat: the Couette shear of the oil in a flooded
 pocket by the spinning element, :func:`pocket_shear_damping` (a damping matrix the ball
 solver would need for a consistent spin-damping moment; used by the diagnosis of the
@@ -184,6 +195,9 @@ def pocket_friction(ctx: HeatContext) -> HeatResult:
     name = "pocket_friction"
     kin = ctx.kinematics
     d = ctx.bearing.element_diameter
+    solver = _solver_pocket_friction(ctx, name)
+    if solver is not None:
+        return _solver_pocket_heat(ctx, name, solver)
     mu_fixed = ctx.option(name, "friction_coefficient", None)
     if mu_fixed is not None:
         check_range(f"options[{name}].friction_coefficient", mu_fixed, 0.0, 1.0)
@@ -222,6 +236,63 @@ def pocket_friction(ctx: HeatContext) -> HeatResult:
         force_pairs=(ForcePair("pocket on element surface", -friction * np.sign(v), v),),
         details={"friction_coefficient": mu, "regime": regime,
                  "normal_force_sum": float(np.sum(np.abs(force))),
+                 "mean_sliding_speed": float(np.mean(np.abs(v))),
+                 "sliding_over_cage_speed": (float(np.mean(np.abs(v))) / abs(
+                     0.5 * ctx.bearing.pitch_diameter * kin.cage_speed)
+                     if kin.cage_speed != 0 else math.inf)})
+
+
+_MU_OPTIONS = ("friction_coefficient", "mu_boundary", "mu_hydrodynamic", "pocket_film",
+               "roughness")
+
+
+def _solver_pocket_friction(ctx: HeatContext, name: str):
+    """The pocket friction forces f_d (Z,) [N] the skidding solver balanced (kinematic state
+    extras ``pocket_friction``, the roller solver's pocket film of paper 000 eqs. 37-38), or
+    None: for a state without them (race control, balls) or when the source's options ask
+    for the paper 002 eq. 19 friction coefficient on purpose (``friction_coefficient``,
+    ``mu_boundary``, ``mu_hydrodynamic``, ``pocket_film``, ``roughness``)."""
+    f = ctx.kinematics.extras.get("pocket_friction")
+    if f is None:
+        return None
+    given = ctx.options.get(name) or {}
+    if any(k in given for k in _MU_OPTIONS):
+        return None
+    return np.abs(np.broadcast_to(np.asarray(f, float), np.shape(ctx.kinematics.element_spin)))
+
+
+def _solver_pocket_heat(ctx: HeatContext, name: str, friction: np.ndarray) -> HeatResult:
+    """Pocket heat of the solver's pocket film: Q = sum_j f_d,j |v_j| [W], v = omega_r D/2.
+
+    Paper 002 (seed 002_0add79adaca5495c.txt) eq. 19 with the film friction f_d of paper 000
+    (seed 000_3b5ca6eed61dd596.txt) eqs. 37-38 (the Martin film of a roller turning against
+    the pocket face, ``skidding.roller_pocket_film``) in place of mu F_bp: the force that the
+    roller moment balance (eq. 31) and the cage equation (eq. 32) contain, so the heat is
+    the power of that force across the sliding of the roller surface on the (cage-fixed)
+    pocket wall. Option ``element_share`` as for the friction-coefficient form.
+    """
+    kin = ctx.kinematics
+    d = ctx.bearing.element_diameter
+    share = float(ctx.option(name, "element_share", 0.5))
+    check_range(f"options[{name}].element_share", share, 0.0, 1.0)
+    if kin.pocket_sliding_speed is not None:
+        v = kin.pocket_sliding_speed
+    else:
+        v = 0.5 * d * np.abs(kin.element_spin)
+    heat_j = friction * np.abs(v)
+    q = float(np.sum(heat_j))
+    normal = np.abs(np.asarray(kin.pocket_normal_force, float))
+    comp = "ball pocket" if hasattr(ctx.bearing, "ball_diameter") else "roller pocket"
+    n_sum = float(np.sum(normal))
+    return HeatResult(
+        source=name, power_by_role={"elements": share * q, "cage": (1.0 - share) * q},
+        components={comp: q}, loss_class={comp: "load_independent"},
+        forces={"pocket_friction_force": friction},
+        force_pairs=(ForcePair("pocket film on element surface", -friction * np.sign(v), v),),
+        details={"friction_coefficient": (float(np.sum(friction)) / n_sum if n_sum > 0
+                                          else math.inf),
+                 "regime": "solver pocket film (paper 000 eqs. 37-38)",
+                 "normal_force_sum": n_sum,
                  "mean_sliding_speed": float(np.mean(np.abs(v))),
                  "sliding_over_cage_speed": (float(np.mean(np.abs(v))) / abs(
                      0.5 * ctx.bearing.pitch_diameter * kin.cage_speed)

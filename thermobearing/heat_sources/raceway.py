@@ -10,6 +10,12 @@
     literally at Hertzian pressure (Barus alpha = 2e-8 1/Pa at 1.5 GPa: e^30 ~ 1e13 times
     eta0) that integral is unbounded for any sliding, so here the shear stress comes from a
     traction law with a limiting shear stress (or a measured slip curve).
+    States from the roller skidding solver carry the solver's own Couette forces (marked
+    :class:`SolverContactForces`): paper 000 eq. 5's second term over the whole film (Hertz
+    zone by the traction law AND the Newtonian inlet/outlet, eqs. 33-34); they are booked as
+    they are (C V), since a Hertz-zone integral of the law leaves the inlet/outlet shear out
+    (54.3 of 272.0 W at 5000 r/min, 200 N; 27.5 of 513.6 W at 3000 r/min, 8 kN: NU 214,
+    ISO VG 46 at 320 K).
     Heat split between element and ring: Blok's partition for two surfaces moving through
     a flash-heated band at high Peclet number (Blok 1937/1963): each body takes a share
     proportional to e_k sqrt(|u_k|), e = sqrt(k rho c) the thermal effusivity and u_k the
@@ -46,6 +52,11 @@
       state extras ``rolling_resistance``) or else computed from the supply at the oil
       temperature.
 
+    A roller skidding state carries the rolling forces its solver balanced (kinematic state
+    extras ``raceway_rolling_force``, starved and clearance-film forms included); the source
+    books those, F_P = Q_x/2 on each surface against the entrainment (the sign of the sum of
+    the surface speeds), unless its options name a model.
+
     Eq. 35 is a line-contact formula; for ball contacts the length is the mean chord pi a / 2
     of the ellipse (an extrapolation, flagged by a ValidityWarning; "harris" avoids it).
     Both line forms are isothermal and fully flooded: at high speed inlet shear heating and
@@ -60,6 +71,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -121,6 +133,30 @@ _SET_FIELDS = ("normal_load", "semi_major", "semi_minor", "sliding_speed",
                "deformed_radius")
 
 
+@dataclass(frozen=True)
+class SolverContactForces:
+    """Marker ``law`` of a :class:`~thermobearing.state.PrecomputedTraction` that holds the
+    contact forces a skidding solver balanced, computed by its own force model rather than
+    by a quadrature of a traction law (its ``n_major``/``n_minor`` are 0 and mean nothing).
+
+    The roller solver (:attr:`thermobearing.skidding.roller_result.RollerSkiddingResult.
+    kinematic_state`, ``producer="roller_skidding"``) puts its Couette forces there: paper
+    000 (seed 000_3b5ca6eed61dd596.txt) eq. 5's second term over the whole film, the Hertz
+    zone by the traction law plus the Newtonian inlet and outlet (eqs. 33-34), which no
+    Hertz-zone integral of the law reproduces. ``raceway_traction`` books such forces as they
+    are (force x sliding speed), so its heat is the power of the forces that set the
+    kinematics whatever its quadrature options.
+    """
+
+    producer: str
+
+
+def _solver_forces(cs) -> bool:
+    """Whether the contact set carries a solver's own contact forces
+    (:class:`SolverContactForces`)."""
+    return cs.traction is not None and isinstance(cs.traction.law, SolverContactForces)
+
+
 def _integrate_sets(ctx: HeatContext, contacts, n_major: int, n_minor: int) -> list:
     """``integrate_contact_set`` of every contact set, at its own temperature (the
     solver's contact temperature where the set carries one, else the mean of the element
@@ -129,7 +165,12 @@ def _integrate_sets(ctx: HeatContext, contacts, n_major: int, n_minor: int) -> l
     integration is per contact, so the result is the same as set by set (bit for bit,
     tested), with one call's checks instead of one per raceway arc. Sets that carry the
     tractions their producer integrated with the same law and quadrature at a solver
-    temperature (``ContactSet.traction``) are not integrated again."""
+    temperature (``ContactSet.traction``) are not integrated again; sets that carry a
+    solver's own contact forces (:class:`SolverContactForces`) are taken as they are."""
+    if contacts and any(_solver_forces(cs) for cs in contacts):
+        others = [cs for cs in contacts if not _solver_forces(cs)]
+        done = iter(_integrate_sets(ctx, others, n_major, n_minor) if others else ())
+        return [cs.traction.result if _solver_forces(cs) else next(done) for cs in contacts]
     law = ctx.traction
     if contacts and all(cs.traction is not None and cs.temperature is not None
                         and cs.traction.matches(law, n_major, n_minor) for cs in contacts):
@@ -311,6 +352,7 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         raise UnknownNameError(f"options[{name}].rolling_force", model,
                                ROLLING_FORCE_MODELS + ("harris",))
     point = _point_contact_forces(ctx, name, model, thermal)
+    carried = _carried_rolling_forces(ctx, name)
     bearing = ctx.bearing
     elem_mat, ring_mat = _materials(bearing)
     e_mod = bearing.effective_modulus
@@ -320,6 +362,29 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     pairs = []
     forces = {}
     for cs in ctx.kinematics.contacts:
+        if carried is not None and cs.race in carried:
+            # the skidding solver's own rolling force of this raceway (paper 000 eq. 5
+            # Poiseuille term): F_P = Q_x/2 on each surface, against the entrainment (sign
+            # of the SUM of the surface speeds, the direction of the inlet pressure gradient)
+            fr = np.broadcast_to(np.asarray(carried[cs.race], float), (cs.n_elements,))
+            u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
+            u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
+            sign = np.where(cs.entrainment_speed >= 0.0, 1.0, -1.0)
+            f_p = 0.5 * fr
+            total = f_p * np.abs(u_e + u_r)
+            share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
+                                   elem_mat, ring_mat)
+            to_elem = float(np.sum(share * total))
+            to_ring = float(np.sum((1.0 - share) * total))
+            roles["elements"] += to_elem
+            roles[cs.ring_role] += to_ring
+            components[f"{cs.race} rolling resistance"] = float(np.sum(total))
+            split[f"{cs.race} rolling resistance"] = {"elements": to_elem,
+                                                      cs.ring_role: to_ring}
+            pairs.append(ForcePair(f"{cs.race} film on element", -f_p * sign, u_e))
+            pairs.append(ForcePair(f"{cs.race} film on race", -f_p * sign, u_r))
+            forces[f"{cs.race}_rolling_force"] = np.array(fr)
+            continue
         loaded = cs.normal_load > 0
         temp = _contact_temperature(ctx, cs)
         if cs.reduced_radius_x is not None:
@@ -373,6 +438,27 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         source=name, power_by_role=roles, components=components,
         loss_class=dict.fromkeys(components, "load_independent"),
         forces=forces, force_pairs=tuple(pairs), component_roles=split)
+
+
+def _carried_rolling_forces(ctx: HeatContext, name: str):
+    """The rolling forces Q_x [N] a skidding solver balanced (kinematic state extras
+    ``raceway_rolling_force``: race name -> (Z,)), or None.
+
+    Used unless the source's options name a model (``rolling_force``, ``thermal_reduction``,
+    ``reduction``, ``supply_factor``): the roller solver's Q_x is paper 000 eq. 35 or its
+    rigid-isoviscous form (the smaller, ``regime_min``), starved by the inlet oil layer when
+    one is given, with the clearance film's rolling force at unloaded rollers; re-computing
+    it here from the flooded formulas would book another force than the one the roller
+    moment and cage balances (eqs. 28/31, 32) contain. An option asks for a different
+    force on purpose: the heat then no longer adds up to the solver's shaft power."""
+    carried = ctx.kinematics.extras.get("raceway_rolling_force")
+    if carried is None:
+        return None
+    given = ctx.options.get(name) or {}
+    if any(k in given for k in ("rolling_force", "thermal_reduction", "reduction",
+                                "supply_factor")):
+        return None
+    return carried
 
 
 def _point_contact_forces(ctx: HeatContext, name: str, model: str, thermal: str):

@@ -139,27 +139,97 @@ class RollerSkiddingResult:
         Line contacts (``semi_major`` = l/2, ``semi_minor`` = Hertz b); sliding speeds in the
         state's convention (element minus race = -V here); pocket force as a magnitude;
         film thickness 0 where a contact carries no load; origin "skidding".
+
+        The state carries the forces this solve balanced, so that the heat sources book
+        exactly them (every watt a force times a sliding speed, and the booked heat of
+        ``raceway_traction`` + ``ehl_rolling_resistance`` + ``pocket_friction`` equals
+        ``shaft_torque * inner_speed`` to round-off, see :meth:`booked_power`):
+
+        * each contact set's ``traction`` is the solver's Couette force on the roller
+          (paper 000 eq. 5 second term, eqs. 33-34: the Hertz zone by the traction law AND
+          the Newtonian inlet/outlet shear, plus a clearance film where one is modelled) as a
+          :class:`~thermobearing.state.PrecomputedTraction` marked
+          :class:`~thermobearing.heat_sources.raceway.SolverContactForces`; its heat is
+          C V. Re-integrating the traction law over the Hertz zone (what the source does for a
+          state without these forces) leaves the inlet/outlet shear out: 16.8 + 37.5 W of
+          272 W at 5000 r/min, 200 N and 27.5 W of 514 W at 3000 r/min, 8 kN (NU 214,
+          ISO VG 46 at 320 K);
+        * ``extras["raceway_rolling_force"]``: the rolling force Q_x of each raceway
+          (paper 000 eq. 35 or its rigid-isoviscous / starved / clearance-film forms, as the
+          solve used them), race name -> (Z,) [N];
+        * ``extras["pocket_friction"]``: the pocket-film friction f_d (paper 000 eqs. 37-38)
+          [N], which the pocket source books as f_d |omega_r| D/2 instead of a boundary
+          friction coefficient times F_d.
         """
-        from ..state import ContactSet, KinematicState
+        from ..heat_sources.raceway import SolverContactForces
+        from ..state import ContactSet, KinematicState, PrecomputedTraction
 
         length = float(self.extras["contact_length"])
         sets = []
+        rolling = {}
+        marker = SolverContactForces("roller_skidding")
         for race, f, v, ue, q, rx in (
                 ("inner", self.inner, self.inner_sliding_speed, self.inner_entrainment_speed,
                  self.inner_load, self.extras["radius_inner"]),
                 ("outer", self.outer, self.outer_sliding_speed, self.outer_entrainment_speed,
                  self.outer_load, self.extras["radius_outer"])):
             loaded = q > 0
+            traction = PrecomputedTraction(law=marker, n_major=0, n_minor=0,
+                                           result=solver_contact_traction(f, v))
             sets.append(ContactSet(
                 race=race, kind="line", normal_load=q,
                 semi_major=np.where(loaded, 0.5 * length, 0.0), semi_minor=f.half_width,
                 max_pressure=f.max_pressure, entrainment_speed=ue, sliding_speed=-v,
                 film_thickness=np.where(loaded, f.film_thickness, 0.0),
-                temperature=np.full(q.shape, self.temperature), reduced_radius_x=rx))
+                temperature=np.full(q.shape, self.temperature), reduced_radius_x=rx,
+                traction=traction))
+            rolling[race] = np.asarray(f.rolling_force, float).copy()
         return KinematicState(
             inner_speed=self.inner_speed, outer_speed=0.0, cage_speed=self.cage_speed,
             orbital_speed=np.full(self.roller_speed.shape, self.cage_speed),
             element_spin=self.roller_speed, contacts=tuple(sets), attitude_angle=0.0,
             azimuth=self.azimuth, pocket_normal_force=np.abs(self.pocket_normal_force),
             origin="skidding",
-            extras={"pocket_friction": self.pocket_friction, "slip": self.slip})
+            extras={"pocket_friction": self.pocket_friction, "slip": self.slip,
+                    "raceway_rolling_force": rolling})
+
+    def booked_power(self) -> dict[str, float]:
+        """The solver's dissipation by heat source [W]: the heat-source bookkeeping of
+        :attr:`power_loss` (same products, grouped as the sources book them).
+
+        ``raceway_traction`` = sum C V over both raceways (paper 000 eq. 5 Couette term),
+        ``ehl_rolling_resistance`` = sum Q_x |u_e| (eq. 5 Poiseuille term, Q_x of eq. 35),
+        ``pocket_friction`` = sum f_d |omega_r| D/2 (eqs. 37-38), ``total``. In a converged
+        state ``total`` = ``shaft_torque * inner_speed`` (the roller moment balances,
+        eqs. 28/31, and the cage equation, eq. 32 with the pocket-friction term, make the
+        sum telescope to the inner-race torque; whirl inertia, eqs. 3-4, does no net work
+        for evenly spaced rollers: sum_j a_t,j = 0). The solve balances no oil churning or
+        drag of the rollers, cage or inner ring, no cage-guide drag (its ``cage_drag_torque``
+        is 0 in scenes) and no rib friction: the sources ``churning_*``, ``cage_guide`` and
+        ``rib_friction`` book drags this shaft torque does not contain.
+        """
+        loss = self.power_loss
+        out = {"raceway_traction": loss["inner_shear"] + loss["outer_shear"],
+               "ehl_rolling_resistance": loss["inner_rolling"] + loss["outer_rolling"],
+               "pocket_friction": loss["pocket"]}
+        out["total"] = sum(out.values())
+        return out
+
+
+def solver_contact_traction(forces: LineContactForces, sliding: np.ndarray) -> Any:
+    """The solver's Couette force of one raceway as a ``contact_traction.ContactTraction``.
+
+    ``forces.traction`` C is the shear force on the roller along the race velocity, sign of
+    V = u_race - u_roller (paper 000 eq. 5 second term: Hertz zone by the traction law,
+    Newtonian inlet and outlet, clearance film); in the contact frame of
+    :mod:`thermobearing.state` (element minus race = -V) it is the rolling-direction force
+    F_y = C on the element, and its power -F_y (-V) = C V [W] is the heat. No transverse
+    force or moments (straight rollers). ``sliding``: V (Z,) [m/s].
+    """
+    from ..contact_traction import ContactTraction
+
+    c = np.asarray(forces.traction, float)
+    zero = np.zeros_like(c)
+    return ContactTraction(transverse_force=zero, rolling_force=c.copy(),
+                           moment_transverse=zero, moment_rolling=zero, moment_normal=zero,
+                           heat=c * np.asarray(sliding, float))
