@@ -7,6 +7,7 @@ every solver failure carries its residual and the state it stopped at.
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Iterable
 from typing import Any
 
@@ -97,11 +98,30 @@ class ValidityWarning(UserWarning):
 
 
 def _short(v: Any) -> str:
+    """A state value of an error message, on one line (an error is one line of the CLI's
+    output and of a log): floats to 6 significant digits, arrays with 5 (first and last
+    three elements of an array over 8; a 2-D array's rows one after the other), dicts,
+    lists and tuples element by element, anything else its repr with line breaks turned
+    into spaces. numpy's default width broke a 7-node temperature vector over two lines in
+    the middle of a message."""
     if isinstance(v, float):
         return f"{v:.6g}"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k!r}: {_short(x)}" for k, x in v.items()) + "}"
+    if isinstance(v, list | tuple) and type(v) in (list, tuple):
+        inner = ", ".join(_short(x) for x in v)
+        return (f"[{inner}]" if isinstance(v, list)
+                else f"({inner}{',' if len(v) == 1 else ''})")
     if isinstance(v, np.ndarray):
-        return np.array2string(v, precision=4, threshold=8)
-    return repr(v)
+        text = np.array2string(v, threshold=8, edgeitems=3, max_line_width=sys.maxsize,
+                               separator=", ", formatter={"float_kind": _float5})
+    else:
+        text = repr(v)
+    return " ".join(text.split()) if "\n" in text or isinstance(v, np.ndarray) else text
+
+
+def _float5(x: float) -> str:
+    return f"{x:.5g}"
 
 
 # ---------------------------------------------------------------------------

@@ -75,3 +75,24 @@ def test_runaway_inside_a_chunk_is_a_thermal_runaway_where_it_crosses_the_limit(
         assert 0.0 < err.residual < 2.0  # [K] above the limit: located, not the chunk end
     assert 1.0 < long.state["time"] < 3.0
     assert long.state["time"] == pytest.approx(short.state["time"], abs=0.05)
+
+
+def test_error_state_is_one_line():
+    """numpy's default line width broke a 7-node temperature vector over two lines in the
+    middle of a network stepper's error; every state value is now on one line, arrays with
+    5 significant digits (longer ones by their ends), nested containers element-wise."""
+    import numpy as np
+
+    T = np.array([6616.088, 3654.52, 5415.9449, 965.3721, 42253.4256, 54513.1863,
+                  84334.2856])
+    err = ConvergenceError("network stepper tr_bdf2", float("inf"), "conductance out of range",
+                           {"time": 351.062, "temperatures": T, "long": np.arange(100.0),
+                            "grid": np.eye(2), "nested": {"a.oil": np.arange(30.0)},
+                            "pair": (0.1 + 0.2, "x")})
+    text = str(err)
+    assert "\n" not in text
+    assert "temperatures=[6616.1, 3654.5, 5415.9, 965.37, 42253, 54513, 84334]" in text
+    assert "long=[0, 1, 2, ..., 97, 98, 99]" in text
+    assert "grid=[[1, 0], [0, 1]]" in text
+    assert "nested={'a.oil': [0, 1, 2, ..., 27, 28, 29]}" in text
+    assert "pair=(0.3, 'x')" in text and "time=351.062" in text
