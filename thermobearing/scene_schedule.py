@@ -226,7 +226,7 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
                 units[key] = unit.rstrip("] ")
         rows = list(reader)
         comma_decimals = delim != "," and any(
-            _DECIMAL_COMMA.match((v or "").strip()) for row in rows
+            _comma_decimal((v or "").strip()) for row in rows
             for c, v in row.items() if c is not None)
         for i, row in enumerate(rows):
             if any((v or "").strip() for v in row.get(None, ())):
@@ -249,6 +249,15 @@ _DECIMAL_COMMA = re.compile(r"^[-+]?\d*,\d+")
 #: a number grouped in thousands with points, as decimal-comma locales write it ("1.000",
 #: "12.500,5")
 _THOUSANDS_POINTS = re.compile(r"^[-+]?\d{1,3}(\.\d{3})+(,\d*)?$")
+
+
+def _comma_decimal(cell: str) -> bool:
+    """Whether a cell writes a decimal comma: ``2,5``, or grouped thousands with one
+    (``1.031,5``, ``1.031,5 r/min``). A file whose only decimal-comma cells were grouped
+    read its commas as part of the unit (``'1.031,5 r/min'``: 'a known unit')."""
+    number = cell.partition(" ")[0]
+    return bool(_DECIMAL_COMMA.match(number)) or (
+        "," in number and bool(_THOUSANDS_POINTS.match(number)))
 
 
 def _cell(cell: str, key: str, unit: str, unit_given: bool, comma_decimals: bool,
