@@ -117,6 +117,20 @@ def _supply_notes(scene: Scene) -> list[str]:
                      "jet correlation at the oil flow alone; the carrier air's flow, its "
                      "cooling and its drag are not modelled (the network's oil stream carries "
                      "the oil's heat only)")
+    thermal = bool(set(scene.outputs.want) & {"temperatures", "energy"})
+    stream = sup.method in ("jet", "circulation", "oil_air") or (
+        sup.method == "oil_bath" and sup.flow > 0.0)
+    t_ini = scene.environment.initial_temperature
+    if not thermal and stream and sup.inlet_given and sup.inlet_temperature != t_ini:
+        # no network: the operating points are taken with every part and the oil at the
+        # initial temperature (Simulation._run_operating_points); a swept inlet changes
+        # nothing, which the user is told rather than left to find in identical rows
+        notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
+                     "not used: without 'temperatures' or 'energy' in [outputs] want no "
+                     "thermal network runs, and the films, kinematics and losses are taken "
+                     "with the rings, the elements and the oil at "
+                     f"environment.initial_temperature ({t_ini - 273.15:g} degC); set that to "
+                     "the temperature of the operating point")
     if sup.method != "oil_bath" and sup.level is not None:
         notes.append(f"supply.level ({sup.level * 1e3:g} mm) is not used by the "
                      f"{sup.method} supply: only an oil bath (supply.method = \"oil_bath\") "

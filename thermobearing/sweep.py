@@ -184,21 +184,35 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
         raise
 
 
-def check_cases(cases: Sequence[Case]) -> None:
+def check_cases(cases: Sequence[Case]) -> list[str]:
     """Check every case as a scene that can run, before the first one runs: what
     ``thermobearing check`` checks without solving (model, bearing and lubricant preset
     names, the network template's parameters and values, the measured CSV). A bad value
     (``lubricant.preset=ISO_VG99``) then fails in a second, naming the case, instead of
-    after the good cases have run. Costs a few milliseconds per case."""
+    after the good cases have run. Costs a few milliseconds per case.
+
+    Returns one line per swept path that a case's run says it does not use (the run's
+    ``"<path> (...) is not used"`` note, e.g. ``supply.inlet_temperature`` of a scene
+    without a thermal network): those cases give the same results whatever the value."""
     from .commands._preflight import preflight
     from .scene_checks import check_model_names
     from .simulation import Simulation
 
+    unused: dict[str, str] = {}
     for case in cases:
         with _naming_case(case, None):
             scene = loads_scene(case.scene_toml)
             check_model_names(scene)
-            preflight(Simulation(scene, progress=False), build=True)
+            sim = Simulation(scene, progress=False)
+            preflight(sim, build=True)
+        for path, _ in case.assignments:
+            note = next((n for n in sim.notes
+                         if n.startswith(f"{path} (") and " is not used" in n), None)
+            if note is not None and path not in unused:
+                unused[path] = (f"sweep: {path} is swept but not used by the runs (their "
+                                f"results do not change with it); case {case.case_id}: "
+                                f"{note}")
+    return list(unused.values())
 
 
 def run_sweep(
@@ -260,8 +274,9 @@ def run_sweep(
     done = finished_cases(out)
     cases = match_finished(scene, cases, done)  # the same quantities in other units
     todo = [c for c in cases if c.case_id not in done]
-    if check:
-        check_cases(todo)
+    unused = check_cases(todo) if check else []
+    for line in unused:  # before the runs, as the CLI's other notes
+        print(line, file=sys.stderr)
     out.mkdir(parents=True, exist_ok=True)
     record_base_scene(out, scene)
     show = sys.stderr.isatty() if progress is None else progress
@@ -349,6 +364,7 @@ def run_sweep(
         bar.close()
     df = _write_summary(out, cases, done)
     df.attrs["failed"] = failures
+    df.attrs["unused"] = unused
     return df
 
 
