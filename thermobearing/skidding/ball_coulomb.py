@@ -28,9 +28,12 @@ converges to 1e-10 although its contacts are in this regime, while the catalogue
 s_half ~ 1e-27 m/s against eps u_e = 6e-16 m/s, node jumps up to 0.27 N) stopped at 3.5e-2
 to 1.5e-1 from every start and fallback. The same bearing has s_half / (eps u_e) >= 1 at
 -10 and -20 degC and converges (at -20 degC accepted at its round-off floor,
-:mod:`~thermobearing.skidding.ball_round_off`); -30 degC is in the regime and was accepted at
-its round-off floor with a residual of 1.8e-3. So the note is only added to the error of a
-solve that failed, judged at the race-control start of that solve. Units: SI.
+:mod:`~thermobearing.skidding.ball_round_off`); -30 degC is in the regime and is accepted at
+its round-off floor with a residual of 1.8e-3 (a solution to the resolution of the traction:
+its ring and cage equations hold to < 1e-10 and its CSR is that of solves converged with
+other contact quadratures to 3e-5, :mod:`~thermobearing.skidding.ball_round_off`). So the
+note is only added to the error of a solve that failed, judged at the race-control start of
+that solve. Units: SI.
 """
 
 from __future__ import annotations

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import ConvergenceError, InputError
+from .ball_damped_step import regularised_step
 from .ball_jacobian import analytic_blocks, supports_analytic
 from .ball_newton_kernels import (  # noqa: F401  (the compiled kernels, re-exported)
     _PH_DONE,
@@ -53,6 +54,10 @@ __all__ = ["JacobianBlocks", "chord_polish", "newton_block", "trust_region"]
 _CAP_X = np.array([20.0, 20.0, 0.5, 0.5, 0.5, 5.0])
 _CAP_G = np.array([20.0, 20.0, 0.1])
 _NO_HIST = np.empty((0, 0))
+#: residual norm below which the fallbacks' Newton tries the regularised step where the cap
+#: would shorten a Newton step (``newton_block(near_root_below=...)``); the failed
+#: continuation steps of the 7014C at 0.005 N radial in -20 degC oil stood at 8e-7 to 2e-5
+NEAR_ROOT_BELOW = 1e-4
 
 
 # ---------------------------------------------------------------------------------------------
@@ -153,7 +158,7 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                  jacobian: JacobianBlocks | None = None, broyden_warm: bool = True,
                  polish_below: float = 0.2e-9, broyden_reuse_ratio: float = 0.5,
                  stall_after: int = 0, analytic: bool = True, warm_refresh: float = 0.0,
-                 compiled_chord: bool = True):
+                 compiled_chord: bool = True, near_root_below: float = 0.0):
     """Damped Newton on (X, G) with the structured finite-difference Jacobian.
 
     The Jacobian (6x6 ball blocks, ball-global couplings, 3x3 Schur complement) needs
@@ -212,6 +217,16 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
     more than off on the 20 x 20 map (1.24 / 1.02 against 1.11 / 0.93 ms) and 3-6 % more on the
     5 x 5 map: a refresh costs more than its 2-2.2 evaluations of kernel time (the Newton step
     after it and the torque models run outside the compiled chord loop).
+
+    ``near_root_below`` (0: off; the fallbacks of :func:`~thermobearing.skidding.ball.
+    solve_ball` use :data:`NEAR_ROOT_BELOW`): where the residual norm is below it and the
+    per-unknown cap (``_CAP_X``, ``_CAP_G``) would shorten a fresh-Jacobian Newton step, the
+    regularised step of :func:`~thermobearing.skidding.ball_damped_step.regularised_step` is
+    tried first and kept if it at least halves the norm (else the capped line search as
+    before). The cap protects cold starts from wild steps far from a root; close to one it
+    throttled every step when unknowns the residual barely depends on asked for a large move
+    (the spins of balls held by centrifugal contacts of ~1e-8 N when the cage nearly stops:
+    see that module).
 
     Returns (X, G, residual_norm, iterations). Raises ConvergenceError.
     """
@@ -358,6 +373,19 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
                 jac = None
                 it -= 1
             continue
+        if lam < 1.0 and nrm < near_root_below and system.last_jacobian is not None:
+            # close to a root: the regularised step if the cap is all that shortens it
+            try:
+                rX, rG = regularised_step(system.last_jacobian, R, Gc, Gk)
+                Xr, Gr = X + rX * xs, G + rG * gs
+                Rn, Gcn, Gkn, _ = system.evaluate(Xr, Gr)
+                nn = norm_of(Rn, Gcn, Gkn)
+            except (InputError, FloatingPointError, ValueError, np.linalg.LinAlgError):
+                nn = math.inf
+            if math.isfinite(nn) and nn <= 0.5 * nrm:
+                X, G, R, Gc, Gk, nrm, last_ratio = Xr, Gr, Rn, Gcn, Gkn, nn, nn / nrm
+                jac, crawl = None, 0
+                continue
         while True:
             Xn = X + lam * dX * xs
             Gn = G + lam * dG * gs
