@@ -629,10 +629,15 @@ class Simulation:
         return tables, {"steps": len(steps)}
 
     def summary_text(self, results: Results) -> str:
-        """A few lines for the terminal."""
+        """A few lines for the terminal: only what the run computed (a chain with
+        ``kinematics = "none"`` solves no kinematics: its table holds the theoretical cage
+        speed ratio and no over-skidding, which are not printed as results, nor its count
+        of pure-rolling states as kinematics solves; a film-only chain has no kinematics)."""
         lines = []
+        solved = any(tuple(x)[0] == "kinematics" and tuple(x)[1] != "none"
+                     for x in results.chain)
         kin = results.tables.get("kinematics")
-        if kin is not None and not kin.empty:
+        if kin is not None and not kin.empty and solved:
             lines.extend(_first_csr_lines(kin))
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
@@ -649,8 +654,9 @@ class Simulation:
             gen = last["generated [J]"]
             lines.append(f"energy audit: generated {gen / 1e6:.3f} MJ, imbalance "
                          f"{abs(last['imbalance [J]']) / max(abs(gen), 1e-300):.2e} (relative)")
-        lines.append(f"wall time {results.stats.get('wall_time_s', float('nan')):.2f} s, "
-                     f"{results.stats.get('kinematics_solves', 0)} kinematics solves")
+        lines.append(f"wall time {results.stats.get('wall_time_s', float('nan')):.2f} s"
+                     + (f", {results.stats.get('kinematics_solves', 0)} kinematics solves"
+                        if solved else ""))
         for key, value in results.stats.items():
             if key.endswith(": film table") and isinstance(value, dict):
                 lines.append(f"{key} (numerical film): {value['solves']} thermal EHL solves "

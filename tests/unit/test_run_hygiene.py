@@ -96,3 +96,62 @@ def test_error_state_is_one_line():
     assert "grid=[[1, 0], [0, 1]]" in text
     assert "nested={'a.oil': [0, 1, 2, ..., 27, 28, 29]}" in text
     assert "pair=(0.3, 'x')" in text and "time=351.062" in text
+
+
+#: one operating point of a QJ1044 (losses only, no network): ``KIN`` is the kinematics
+POINT = """
+title = "one point"
+[[bearings]]
+name = "a"
+preset = "QJ1044"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "33 L/min"
+inlet_temperature = "40 degC"
+[environment]
+initial_temperature = "40 degC"
+[schedule]
+speed = "1800 rpm"
+radial_load = "4 kN"
+axial_load = "0 kN"
+duration = "1 min"
+[models]
+kinematics = "KIN"
+[outputs]
+want = ["losses", "kinematics"]
+"""
+
+
+def _point(kinematics: str, extra: str = "") -> tuple[Simulation, object]:
+    text = POINT.replace("KIN", kinematics) + extra
+    if kinematics == "none":
+        text = text.replace('kinematics = "none"', 'kinematics = "none"\n'
+                            'heat_sources = ["global_friction"]')
+    sim = Simulation(loads_scene(text), progress=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return sim, sim.run()
+
+
+def test_summary_prints_only_what_was_computed():
+    """kinematics = "none" solves no kinematics: the summary printed the theoretical cage
+    speed ratio as 'CSR at first step', 'over-skidding: max +0.00 %' and '1 kinematics
+    solves' (the pure-rolling state it set); race control prints them; a film-only scene
+    printed '0 kinematics solves'."""
+    sim, res = _point("none")
+    text = sim.summary_text(res)
+    assert "total loss per bearing" in text and "wall time" in text
+    for word in ("CSR", "over-skidding", "kinematics solves"):
+        assert word not in text, text
+    sim, res = _point("race_control")
+    text = sim.summary_text(res)
+    assert "CSR at first step" in text and "over-skidding" in text
+    assert "1 kinematics solves" in text
+    text = POINT.replace("KIN", "race_control").replace('["losses", "kinematics"]', '["film"]')
+    sim = Simulation(loads_scene(text), progress=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = sim.run()
+    assert "film" in res.tables and "kinematics solves" not in sim.summary_text(res)
