@@ -535,6 +535,104 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
 
 
 @njit(cache=True)
+def _support_rate(gp: np.ndarray, side: int, a: float) -> float:
+    """d h / d alpha [m/rad]: rate of the support value h of :func:`_support` with the skew
+    (the approach of end face ``side`` to its rib per radian of skew at fixed X)."""
+    ct = gp[_G_CT]
+    mx = ct * math.cos(a)
+    my = -gp[_G_ST]
+    mz = side * ct * math.sin(a)
+    dmx = -ct * math.sin(a)
+    rs = gp[_G_RS]
+    hl = gp[_G_HL]
+    myz = math.sqrt(my * my + mz * mz)
+    if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
+        xt = hl - rs + gp[_G_XT]
+        return dmx * xt + gp[_G_RT] * ct * ct * math.sin(a) * math.cos(a) / myz
+    return (hl - rs) * dmx
+
+
+@njit(cache=True)
+def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: float,
+                 eta: float, floor: float) -> tuple[float, float, float, float]:
+    """Squeeze film of the lubricant between end face ``side`` and its rib (ours; paper 003
+    has the gap's lubricant only as the drag of eq. 14): (normal force F_s [N] on the roller,
+    its axial part [N], its skew moment [N m], dissipated power F_s v_n [W]).
+
+    The end face approaches the rib along the rib normal n = (side cos theta_f,
+    -sin theta_f, 0) at v_n = d delta/dt = side cos(theta_f) X' + (dh/d alpha) alpha'
+    (delta of eq. 1, :func:`_support_rate`; the roller's spin and the rib's rotation move
+    both surfaces within themselves -- bodies of revolution about their own axes -- so
+    they do not squeeze). A closing gap (v_n > 0) is opposed by the rigid-isoviscous
+    Reynolds squeeze force of a sphere on a plane, F_s = 6 pi eta R_x R_y v_n / h
+    (Hamrock, Schmid & Jacobson, Fundamentals of Fluid Film Lubrication, ch. 9: 6 pi eta R^2
+    v / h for R_x = R_y = R; the geometric mean for the nearly circular contact of paper
+    003's 300 mm crown on the conical rib, R_x/R_y = 0.95 at the base case), at the gap
+    h = max(-delta, floor) (in Hertz contact the film is at its floor); an opening gap
+    cavitates (no force), the rule of the cage-bar squeeze film
+    (:mod:`~thermobearing.skidding.roller_dynamics_pocket`), whose film floor the dynamics
+    passes here too. eta: viscosity of the rib gap
+    (eq. 14's oil/air mixture in the dynamics) [Pa s]; floor [m]. F_s acts along the Hertz
+    force's line (through the end face's sphere centre on the roller axis: no spin moment).
+    """
+    if eta <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    ct = gp[_G_CT]
+    v_n = side * ct * xd + _support_rate(gp, side, a) * ad
+    if v_n <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    h, px, py, pz, blend = _support(gp, side, a)
+    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
+    st = gp[_G_ST]
+    if blend > 0.5:
+        rho = math.sqrt(py * py + pz * pz)
+        mz = side * ct * math.sin(a)
+        rx = gp[_G_RCH]
+        ry = rho / math.sqrt(st * st + mz * mz)
+    else:
+        rx = 1.0 / (1.0 / gp[_G_RS] + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py))
+        ry = gp[_G_RS]
+    gap = max(-delta, floor)
+    f_s = 6.0 * math.pi * eta * rx * ry * v_n / gap
+    r_z = -px * math.sin(a) + pz * math.cos(a)
+    fx = -f_s * side * ct
+    return f_s, fx, r_z * fx, f_s * v_n
+
+
+@njit(cache=True)
+def _squeeze_series(gp: np.ndarray, a: np.ndarray, x: np.ndarray, ad: np.ndarray,
+                    xd: np.ndarray, eta: float, floor: float) -> np.ndarray:
+    """:func:`face_squeeze` of both faces over 1-D arrays -> (n, 2, 4)."""
+    n = a.shape[0]
+    out = np.zeros((n, 2, 4))
+    for i in range(n):
+        fl = face_squeeze(gp, -1, a[i], x[i], ad[i], xd[i], eta, floor)
+        fr = face_squeeze(gp, 1, a[i], x[i], ad[i], xd[i], eta, floor)
+        for q in range(4):
+            out[i, 0, q] = fl[q]
+            out[i, 1, q] = fr[q]
+    return out
+
+
+def squeeze_forces(geom: RibGeometry, skew: Any, axial_shift: Any, skew_rate: Any,
+                   axial_speed: Any, viscosity: float, floor: float
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(F_s left, F_s right [N], dissipated power left, right [W]) of the rib-gap squeeze
+    film of both faces (:func:`face_squeeze`) over arrays of skew [rad], X [m], skew rate
+    [rad/s] and X' [m/s]; viscosity [Pa s], film floor [m]."""
+    check_positive("viscosity", viscosity, allow_zero=True)
+    check_positive("floor", floor)
+    arrs = np.broadcast_arrays(*(np.asarray(v, float) for v in (
+        skew, axial_shift, skew_rate, axial_speed)))
+    shape = arrs[0].shape
+    flat = [np.ascontiguousarray(v.ravel()) for v in arrs]
+    res = _squeeze_series(geom.params(), flat[0], flat[1], flat[2], flat[3],
+                          float(viscosity), float(floor))
+    return (res[:, 0, 0].reshape(shape), res[:, 1, 0].reshape(shape),
+            res[:, 0, 3].reshape(shape), res[:, 1, 3].reshape(shape))
+
+
+@njit(cache=True)
 def _faces(gp: np.ndarray, a: np.ndarray, x: np.ndarray, ad: np.ndarray, wr: np.ndarray,
            om: float, xd: np.ndarray, mu: float, f_g: float, sreg: float) -> np.ndarray:
     """:func:`face_contact` of both faces over 1-D arrays -> (n, 2, F_N)."""

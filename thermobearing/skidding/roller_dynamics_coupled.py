@@ -105,6 +105,35 @@ to 5e-4); that pocket speed is stiff (h c_z/m = 30), which ETDRK4 integrates exa
 component, but its coupling to the stiff spin goes through the explicit stages: the
 state error at the default step grew (tests/unit/test_roller_dynamics_etd.py).
 
+Spin-pocket coupling (2026-11-23, evening). Each raceway contact's shear is a function of
+its own sliding speed; a pocket speed z' lowers the inner one's by z' and raises the outer
+one's by z', so the spin equation's shear changes by dS/dz' = (dS_i/d omega - dS_o/d
+omega)/(D/2) (:func:`~thermobearing.skidding.roller_dynamics_coupled_kernels.
+spin_pocket_coupling`; the table carries the outer shear as a column of its own). The
+pocket damping c_z needs no split: it is the *sum* of the two contacts' slopes, which the
+summed shear's spin slope gives exactly (measured at paper 003's base case: k_i + k_o =
+3.377 + 3.074 = 6.451 N s/m = c_z); the per-contact nonlinearity of F_d over the pocket
+speeds of the motion (rms 1.36 m/s at 30000 r/min, 0.40 at 10000) is <= 0.05 N at 1 m/s
+(0.10 N at 10000 r/min): ~1 % of c_z z' for the loaded rollers, 12-38 % of the <= 0.25 N
+of the lightly loaded and unloaded ones; not followed. Before, S was held at its
+z' = 0 value: at z' = 0.5 m/s the most loaded roller's shear is 0.329 N in paper 000's
+model, 0.469 N held, 0.318 N now (30000 r/min; 10000 r/min: -0.760 / 0.128 / -0.825 N).
+
+Runaway mechanism (2026-11-23, evening; validation case SOURCE.md): the cage runaways are
+a friction-driven axial/skew rattle of one *unloaded* roller wedged between its ribs. The
+300 mm end-face sphere meets both ribs at a skew of ~sqrt(C_a/(R_s - L_r/2)) = 10 mrad;
+there the roller rattles at ~44 kHz between X = +-30 um with rib forces of ~6000 N, its spin
+held near 1050 rad/s, pressed on its front bar with ~176 N, which drives the cage. The
+energy comes from the rib friction's work on the skew (0.9 J over 1 ms, checked along the
+trajectory) and nothing takes it out: the Hertz rib contact (paper 003 eq. 6) is elastic
+and an unloaded roller's only raceway damping is its outer contact under the centrifugal
+load (9.1 N at 10000 r/min against 77 N at 30000 r/min -- why this point). The single
+roller's equations integrated with an adaptive DOP853 (rtol 1e-8) show the same growth
+(kinetic energy 1.5e-3 -> 6e-2 J in 3 ms): not the step. Without the rib friction, or with
+10x the outer contact's axial damping, it decays. The model option ``rib_squeeze``
+(:func:`thermobearing.rib.face_squeeze`, the rib gap's squeeze film) removes it, but also
+keeps the rollers off the ribs at the base case (PV ~0): not the default.
+
 Cage runaway and the fallback (2026-11-22). The example scene
 ``configs/scenes/crb_rib_example.toml`` with 0.06 g (paper 003's bearing as an NUP variant,
 20000 r/min, 3 kN, MIL-PRF-23699) stopped with "the state keeps leaving the traction table":

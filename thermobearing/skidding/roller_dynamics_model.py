@@ -93,6 +93,9 @@ class DynamicsModel:
     pocket_dof: bool = True
     pocket_friction: np.ndarray | None = None
     raceway_traction: str = "componentwise"
+    #: squeeze film of the rib gaps (:func:`thermobearing.rib.face_squeeze`; an option,
+    #: not paper 003's model: it keeps the rollers off the ribs, validation case SOURCE.md)
+    rib_squeeze: bool = False
 
     def pocket_force_at(self, phi: float) -> float:
         """Quasi-static pocket force F_d [N] (positive: the roller pushes the cage

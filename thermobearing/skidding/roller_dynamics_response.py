@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from ..rib import SIGN_REGULARISATION, RibGeometry, rib_forces
+from ..rib import SIGN_REGULARISATION, RibGeometry, rib_forces, squeeze_forces
 from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_pocket import bar_forces, extra_pocket_friction
 
@@ -41,7 +41,8 @@ class RollerResponse:
     rib_heat_left, rib_heat_right : time-mean friction power per face [W]: the work rate
         of the rib forces the dynamics apply (Coulomb part mu Q v^2 / sqrt(v^2 + v_s^2)
         with the regularising speed v_s = ``SIGN_REGULARISATION`` of the integrator, i.e.
-        mu Q |v| within 0.1 % for |v| > 1 m/s, plus the drag F_G tanh(v_g/v_s) v_g).
+        mu Q |v| within 0.1 % for |v| > 1 m/s, plus the drag F_G tanh(v_g/v_s) v_g), plus
+        the rib-gap squeeze film's dissipation with the model's ``rib_squeeze`` option.
     max_skew : max |alpha| [rad].  rib_contact_fraction : share of time with a rib force.
     mean_spin_moment : time-mean rib moment about the roller axis [N m].
     model : "full" | "reduced".  cost_s : CPU time of this process [s] (shared machine).
@@ -115,13 +116,19 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
                     roller_spin=spin, skew_rate=ad, axial_speed=xd,
                     friction_coefficient=m.rib_friction,
                     mixture_viscosity=m.mixture_viscosity, smooth_sign=SIGN_REGULARISATION)
+    heat_l, heat_r = rf.heat_left, rf.heat_right
+    if getattr(m, "rib_squeeze", False):
+        # the rib-gap squeeze film's dissipation is heat of the rib gap too
+        _, _, sq_l, sq_r = squeeze_forces(g, a, x, ad, xd, m.mixture_viscosity,
+                                          m.squeeze_floor)
+        heat_l, heat_r = heat_l + sq_l, heat_r + sq_r
     wc = m.cage_speed
     u_i = (m.inner_speed - wc) * 0.5 * g.inner_raceway_diameter
     v_roll = u_i - spin * 0.5 * g.roller_diameter
     s_ax = -u_i * np.sin(a) - xd
     slip = np.sqrt(v_roll**2 + s_ax**2 + (ad * m.effective_length) ** 2 / 12.0)
-    return {"pv_left": rf.pv_left, "pv_right": rf.pv_right, "heat_left": rf.heat_left,
-            "heat_right": rf.heat_right, "slip": slip, "v_roll": np.abs(v_roll),
+    return {"pv_left": rf.pv_left, "pv_right": rf.pv_right, "heat_left": heat_l,
+            "heat_right": heat_r, "slip": slip, "v_roll": np.abs(v_roll),
             "contact": (rf.normal_left + rf.normal_right) > 0, "skew": a,
             "contact_left": (rf.normal_left > 0).astype(float),
             "contact_right": (rf.normal_right > 0).astype(float),

@@ -66,6 +66,7 @@ from ..rib import (
     F_MSKEW,
     F_MSPIN,
     SIGN_REGULARISATION,
+    face_squeeze,
     face_values,
     lubricant_drag,
 )
@@ -75,7 +76,7 @@ from .roller_dynamics_pocket import pocket_force_z
 # parameter vector of the jitted right-hand side: the rib geometry vector
 # (RibGeometry.params, _G_N entries) followed by these dynamics scalars (indices)
 (_FG, _SREG, _MU, _UI, _UO, _LARM, _OM, _WC, _HL, _MUT, _S0, _CP, _KC, _MUE, _XU, _MASS,
- _JT, _ETA, _RAD, _FLOOR, _PDOF, _VEC, _NP) = range(_G_N, _G_N + 23)
+ _JT, _ETA, _RAD, _FLOOR, _PDOF, _VEC, _ETR, _NP) = range(_G_N, _G_N + 24)
 
 
 def _params(m: DynamicsModel) -> np.ndarray:
@@ -110,6 +111,9 @@ def _params(m: DynamicsModel) -> np.ndarray:
     p[_FLOOR] = m.squeeze_floor
     p[_PDOF] = 1.0 if m.pocket_dof else 0.0
     p[_VEC] = 1.0 if m.raceway_traction == "isotropic" else 0.0
+    # rib-gap squeeze film (rib.face_squeeze): the gap's oil/air mixture of eq. 14, the
+    # cage-bar film's floor
+    p[_ETR] = m.mixture_viscosity if m.rib_squeeze else 0.0
     return p
 
 
@@ -156,7 +160,10 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     gp = p[:_G_N]
     fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
-    m_rib = fl[F_MSKEW] + fr[F_MSKEW]
+    sl = face_squeeze(gp, -1, a, x, ad, xd, p[_ETR], p[_FLOOR])
+    sr = face_squeeze(gp, 1, a, x, ad, xd, p[_ETR], p[_FLOOR])
+    m_rib = fl[F_MSKEW] + fr[F_MSKEW] + sl[2] + sr[2]
+    f_rib = fl[F_FX] + fr[F_FX] + sl[1] + sr[1]
     m_spin = fl[F_MSPIN] + fr[F_MSPIN]
     mu_t = p[_MUT]
     s0 = p[_S0]
@@ -181,12 +188,12 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     f_cv = p[_MUE] * (spin - p[_WC]) ** 2
     sp = math.sin(psi)
     m_unb = -p[_XU] * f_cv * sp
-    xdd = (fl[F_FX] + fr[F_FX] + f_race) / p[_MASS]
+    xdd = (f_rib + f_race) / p[_MASS]
     add = (m_rib + m_race + m_pocket + m_unb) / p[_JT]
     zdd = 0.0
     if p[_PDOF] > 0.5:
         zdd = (f_d + f_cv * sp + fl[F_FZ] + fr[F_FZ] - c_z * zd + fz_bar) / p[_MASS]
-    return xd, xdd, ad, add, zd, zdd, m_spin, -(fl[F_FX] + fr[F_FX] + f_inner)
+    return xd, xdd, ad, add, zd, zdd, m_spin, -(f_rib + f_inner)
 
 
 def _roller_rhs(m: DynamicsModel, c: np.ndarray, y: Any, n_i: float, n_o: float,

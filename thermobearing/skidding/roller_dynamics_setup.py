@@ -41,7 +41,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 quasi_static: Any = None, spin: str = "skidding",
                 coupling: str = "rib", pocket_dof: bool = True,
                 squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR,
-                raceway_traction: str = "componentwise") -> DynamicsModel:
+                raceway_traction: str = "componentwise",
+                rib_squeeze: bool = False) -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -69,6 +70,14 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     axial and rolling slides, directed along it ("isotropic": a film's shear stress is
     collinear with its sliding velocity [johnson_tevaarwerk1977_traction], so a skidding
     roller's axial traction is ~mu_t s/|V|; a sensitivity, see the validation case).
+    ``rib_squeeze``: False (default): the end face meets its rib through paper 003's
+    elastic Hertz contact (eq. 6) and Coulomb friction (eq. 12) alone, nothing damps the
+    approach; True: the squeeze film of the oil/air mixture in the rib gap opposes an end
+    face approaching its rib (:func:`thermobearing.rib.face_squeeze`, eq. 14's mixture
+    viscosity, ``squeeze_floor``). A sensitivity, not the paper's model: at paper 003's
+    base case it keeps the rollers off the ribs (PV ~0 instead of ~650 MPa m/s) and it
+    removes the friction-driven axial/skew rattle behind the 10000 r/min runaway
+    (validation case SOURCE.md, 2026-11-23 evening).
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
     """
@@ -120,6 +129,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_viscosity=float(lubricant.dynamic_viscosity(temperature)),
         pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
         pocket_dof=bool(pocket_dof), raceway_traction=raceway_traction,
+        rib_squeeze=bool(rib_squeeze),
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:
