@@ -223,8 +223,11 @@ class Coupler:
     def __init__(self, sim: Simulation, net: Any) -> None:
         self.sim = sim
         self.net = net
-        #: node temperature [K] at which the run stops as a thermal runaway
-        self.runaway_limit = lubricant_temperature_limit(sim.lubricant)
+        #: node temperature [K] at which the run stops as a thermal runaway (the
+        #: pressure-viscosity law's range counts where the chain computes contacts)
+        self.runaway_limit = lubricant_temperature_limit(
+            sim.lubricant, pressure=any(link.family == "pressure_viscosity"
+                                        for link in getattr(sim, "chain", ())))
         self.names = list(net.state_nodes)
         self.index = {n: i for i, n in enumerate(self.names)}
         self.role_nodes: dict[str, dict[str, list[int]]] = {}
@@ -359,14 +362,15 @@ MIN_CHUNK = 0.1
 RUNAWAY_TEMPERATURE = 573.15
 
 
-def lubricant_temperature_limit(lubricant: Any) -> float:
+def lubricant_temperature_limit(lubricant: Any, pressure: bool = True) -> float:
     """The runaway limit of a run with this lubricant [K]: :data:`RUNAWAY_TEMPERATURE`, or
-    lower where the lubricant's viscosity or pressure-viscosity law ends before it (to
-    0.5 K; Roelands' alpha needs eta > 6.31e-5 Pa s: OIL_4109 ends near 226 degC). A run
-    heading for a runaway with such an oil stopped at the next kinematics solve with
-    ``eta0 = 1.76e-05 is not allowed`` from the law, naming no scene field (fuzz case: a
-    D1842926 at 7118 r/min and 68 kN on a 0.003 L/min jet, steady passes at 86, 186 and
-    286 degC)."""
+    lower where the lubricant's viscosity or (``pressure``: the run computes contacts)
+    pressure-viscosity law ends before it (to 0.5 K; Roelands' alpha needs
+    eta > 6.31e-5 Pa s: OIL_4109 ends near 226 degC). A run heading for a runaway with such
+    an oil stopped at the next kinematics solve with ``eta0 = 1.76e-05 is not allowed``
+    from the law, naming no scene field (fuzz case: a D1842926 at 7118 r/min and 68 kN on a
+    0.003 L/min jet, steady passes at 86, 186 and 286 degC). A chain without contacts
+    (kinematics "none", global friction) uses no pressure-viscosity law."""
     import warnings
 
     def usable(T: float) -> bool:
@@ -374,7 +378,8 @@ def lubricant_temperature_limit(lubricant: Any) -> float:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 lubricant.dynamic_viscosity(T)
-                lubricant.pressure_viscosity_coefficient(T)
+                if pressure:
+                    lubricant.pressure_viscosity_coefficient(T)
         except InputError:
             return False
         return True

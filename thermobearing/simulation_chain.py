@@ -39,11 +39,17 @@ class ChainLink:
 
 
 def _needs(scene: Scene) -> dict[str, bool]:
+    """Which parts of the chain a scene runs. ``film``: something computes the contacts'
+    films -- the film table (``want`` has "film"), or kinematics that solve contacts
+    (every model but ``"none"``, whose global friction source computes no contact and no
+    film)."""
     want = set(scene.outputs.want)
     thermal = bool(want & {"temperatures", "energy"})
     losses = thermal or "losses" in want or "report" in want
     kin = losses or "kinematics" in want
-    return {"film": True, "kinematics": kin, "losses": losses, "network": thermal,
+    contacts = kin and scene.models.get("kinematics", "skidding") != "none"
+    return {"film": "film" in want or contacts or not kin, "kinematics": kin,
+            "losses": losses, "network": thermal,
             "transient": thermal and scene.outputs.mode == "transient"}
 
 
@@ -186,7 +192,8 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
 
     if lubricant is not None:
         add(VISCOSITY_TEMPERATURE, lubricant.viscosity_law, "oil viscosity at node temperatures")
-        add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
+        if need["film"]:  # the contacts' films and tractions use it, nothing else
+            add(PRESSURE_VISCOSITY, lubricant.pressure_law, "viscosity at contact pressure")
     kinds = tuple(dict.fromkeys([is_ball] if isinstance(is_ball, bool) else is_ball))
     films = {scene.models.get("film", "hamrock_dowson_1977_central" if ball
                               else "pan_hamrock_central"): ball for ball in kinds}
@@ -198,16 +205,20 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
 
             for ball in kinds:
                 check_film_model(film, ball)
-            add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line contacts "
-                "(numerical EHL, interpolation table over load, speed, sliding, temperature)")
+            if need["film"]:
+                add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line "
+                    "contacts (numerical EHL, interpolation table over load, speed, sliding, "
+                    "temperature)")
         else:
             if film not in FILM:
                 raise UnknownNameError("models.film", film,
                                        FILM.names() + _numerical_film_models())
-            add(FILM, film, "film thickness of the raceway contacts" + which)
+            if need["film"]:
+                add(FILM, film, "film thickness of the raceway contacts" + which)
     if need["kinematics"]:
-        add(KINEMATICS, scene.models.get("kinematics", "skidding"),
-            "cage and element speeds, sliding speeds")
+        kin = scene.models.get("kinematics", "skidding")
+        add(KINEMATICS, kin, "epicyclic cage speed (pure rolling, no contacts)"
+            if kin == "none" else "cage and element speeds, sliding speeds")
     if need["losses"]:
         from .heat_sources import HEAT_SOURCES
 

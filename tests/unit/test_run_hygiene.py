@@ -13,7 +13,8 @@ from thermobearing.simulation import Simulation
 
 #: a fuzzed scene (seed 14): a QJ1044 on the global friction model at 5000 r/min with a
 #: 0.086 L/min jet of OIL_4109 started at -5.3 degC: 25 kW of heat, the oil node crosses
-#: the oil's 225.6 degC limit about 1.7 s in
+#: the 300 degC runaway limit about 2.4 s in (the chain computes no contacts: the end of
+#: the oil's pressure-viscosity law at 225.6 degC does not limit it)
 RUNAWAY = """
 title = "runaway inside a chunk"
 [[bearings]]
@@ -70,7 +71,7 @@ def test_runaway_inside_a_chunk_is_a_thermal_runaway_where_it_crosses_the_limit(
     for err in (long, short):
         text = str(err)
         assert err.solver == "coupled transient"
-        assert "thermal runaway: node 'a.oil' reached the limit of 225.6 degC" in text
+        assert "thermal runaway: node 'a.oil' reached the limit of 300.0 degC" in text
         assert "check the oil flow" in text and "network stepper" not in text
         assert 0.0 < err.residual < 2.0  # [K] above the limit: located, not the chunk end
     assert 1.0 < long.state["time"] < 3.0
@@ -155,3 +156,28 @@ def test_summary_prints_only_what_was_computed():
         warnings.simplefilter("ignore")
         res = sim.run()
     assert "film" in res.tables and "kinematics solves" not in sim.summary_text(res)
+
+
+def test_chain_lists_the_film_only_where_something_computes_one():
+    """kinematics = "none" (global friction) computes no contact: `check` listed the film
+    model and the pressure-viscosity law in its chain, and the runaway limit stopped where
+    OIL_4109's Roelands law ends (225.6 degC); the film table or kinematics that solve
+    contacts list them."""
+    from thermobearing.coupled import RUNAWAY_TEMPERATURE, Coupler, build_network
+
+    def families(kin: str, want: str) -> list[str]:
+        text = POINT.replace("KIN", kin).replace('["losses", "kinematics"]', want)
+        if kin == "none":
+            text = text.replace('kinematics = "none"', 'kinematics = "none"\n'
+                                'heat_sources = ["global_friction"]')
+        return [link.family for link in Simulation(loads_scene(text), progress=False).chain]
+
+    none = families("none", '["temperatures", "losses"]')
+    assert "film" not in none and "pressure_viscosity" not in none
+    assert none[:3] == ["viscosity_temperature", "kinematics", "heat_source"]
+    for kin, want in (("none", '["film", "losses"]'), ("race_control", '["losses"]'),
+                      ("skidding", '["kinematics"]'), ("race_control", '["film"]')):
+        listed = families(kin, want)
+        assert "film" in listed and "pressure_viscosity" in listed, (kin, want, listed)
+    sim = Simulation(loads_scene(RUNAWAY.replace("CHUNK", "90 s")), progress=False)
+    assert Coupler(sim, build_network(sim)).runaway_limit == RUNAWAY_TEMPERATURE
