@@ -82,6 +82,8 @@ def check_model_names(scene: Scene) -> None:
     target = models.get("churning_heat_to", "oil")
     if target not in ("oil", "paper002"):
         raise UnknownNameError("models.churning_heat_to", target, ("oil", "paper002"))
+    if "film" in models:
+        check_closed_form_film(scene)
     from .simulation_chain import ball_rolling_resistance
 
     if ball_rolling_resistance(scene)[0] != "none" and "heat_sources" in models:
@@ -92,6 +94,54 @@ def check_model_names(scene: Scene) -> None:
             raise InputError("models.heat_sources", named,
                              "a list with ehl_rolling_resistance when ball_rolling_resistance "
                              "is on (the source books the rolling force's heat)")
+
+
+#: the closed-form raceway film of each contact kind: the one race control and the film
+#: table compute (:func:`thermobearing.state.race_control_state`); ``[models] film`` may
+#: name it, or a numerical line-contact model for roller bearings
+KIND_FILMS = {"ball": "hamrock_dowson_1977_central", "roller": "pan_hamrock_central"}
+
+
+def check_closed_form_film(scene: Scene) -> None:
+    """``[models] film`` naming a closed-form model must be the one the scene's bearings
+    use: race control and the film table take each contact kind's film
+    (:data:`KIND_FILMS`), whatever the scene names, and the skidding solvers their own.
+    Another name (``pan_hamrock_central`` on a ball bearing, ``hamrock_dowson_1977_minimum``,
+    ``moes_line_central``) ran without a word with the kind's film while the model chain
+    listed the name given (fuzz, session 17). Numerical models and unknown names are left
+    to the chain plan; a bearing that does not load is left to the Simulation, which names
+    its field."""
+    from .film import FILM
+    from .geometry import load_bearing
+
+    name = scene.models["film"]
+    if not isinstance(name, str) or name not in FILM:
+        return
+    kinds = set()
+    for spec in scene.bearings:
+        try:
+            b = load_bearing(spec.preset or str(scene.resolve_path(spec.path)),
+                             overrides=spec.overrides or None)
+        except Exception:  # noqa: BLE001 - reported with its field when the run loads it
+            return
+        kinds.add("ball" if hasattr(b, "ball_diameter") else "roller")
+    used = {KIND_FILMS[k] for k in kinds}
+    if used == {name}:
+        return
+    if len(used) > 1:
+        allowed = ("no film key in a scene with ball and roller bearings: ball bearings take "
+                   f"{KIND_FILMS['ball']}, roller bearings {KIND_FILMS['roller']} (race "
+                   "control and the film table compute those, whatever the scene names)")
+    else:
+        (kind,) = kinds
+        allowed = (f"{KIND_FILMS[kind]} for the {kind} bearings of this scene (race control and "
+                   "the film table compute it, whatever the scene names; the skidding "
+                   "solvers keep their own film)"
+                   + ("" if kind == "ball" else
+                      ", or a numerical line-contact model: numerical_ehl, numerical_tehl")
+                   + f"; {name} is for thermobearing.film from Python. Leave film out for "
+                   "the default")
+    raise InputError("models.film", name, allowed)
 
 
 def check_measured_file(scene: Scene) -> None:
