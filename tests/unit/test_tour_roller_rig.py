@@ -402,9 +402,12 @@ def test_steady_outer_passes_are_relaxed_and_never_visit_absurd_temperatures(mon
     (kinematics held, network solved) used to jump from 39 to 745 degC and oscillate for 20
     passes (745, 97, 312, 126, ... degC), and the 745 degC pass left a lubricant warning of
     a state the run never reached. Measured now: 6 passes at 3000 r/min, no pass above the
-    solution by more than 100 K, and the steady state within 0.1 K of a 90-min transient
-    (rollers 73.74 degC steady, 73.68 degC transient at 3000 r/min, 8 kN; the kinematics at
-    the contacts' inlet temperature, kinematic_models.contact_temperature)."""
+    solution by more than 100 K, and the steady state within 0.3 K of a 90-min transient
+    (rollers 66.85 degC steady, 67.06 degC transient at 3000 r/min, 8 kN; the kinematics at
+    the contacts' inlet temperature, kinematic_models.contact_temperature; the transient's
+    spread is its kinematics tolerance. 73.74 / 73.68 degC until 2026-11-23, when the roller
+    sources booked the solver's inlet/outlet shear and pocket film force and eq. 35 took the
+    mean speed)."""
     import thermobearing.network as network
 
     seen = []
@@ -424,7 +427,7 @@ def test_steady_outer_passes_are_relaxed_and_never_visit_absurd_temperatures(mon
     sim = Simulation(loads_scene(text), progress=False)
     res = sim.run()
     rollers = float(res.tables["steady_temperatures"]["test.rollers [degC]"].iloc[0])
-    assert abs(rollers - 73.74) < 0.5
+    assert abs(rollers - 66.85) < 0.5
     assert res.stats["outer_iterations"] <= 8
     assert max(seen) - 273.15 < rollers + 100.0
     assert not any("alpha fit used outside" in w for w in sim.warnings)

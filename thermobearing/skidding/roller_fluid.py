@@ -23,7 +23,12 @@ solution; here they come in closed form, per contact:
   against the entrainment. ``Q_x`` is the smaller of the rigid-isoviscous value (Martin
   cylinder with Reynolds outlet conditions, coefficients computed below from the Reynolds
   equation) and the piezoviscous-elastic value of paper 000 eq. 35 (Dowson-Higginson
-  ``Q_x = 18.4 G^-0.3 U^0.7 E' R l`` for both bodies together).
+  ``Q_x = 18.4 G^-0.3 U^0.7 E' R l`` for both bodies together, ``U = eta0 u_m / (E' R)``
+  with the mean speed ``u_m = (|u_1| + |u_2|)/2``, the Dowson-Higginson convention: the
+  paper's eqs. 14 and 18 print U from the sum of the speeds, 2^0.7 = 1.62 times the force,
+  and the project's numerical EHL solution of the same contact agrees with the mean reading,
+  see ``heat_sources.raceway.rolling_force_paper000``; Martin's rigid form below is written
+  for the sum).
   (The factor (1 - D/d_m) of eq. 35 is the roller's share of Q_x: the pressure acts normal to
   both surfaces, so the roller takes R_x/(D/2) of the rolling-direction resultant and the
   raceway the rest; see :meth:`LineContactForces.orbital_force`.) The
@@ -376,7 +381,7 @@ def closed_form_contact_forces(
     # --- rolling force Q_x: min(rigid-isoviscous, Dowson-Higginson eq. 35) --------------
     usum_abs = np.abs(usum)
     qx_rigid = k_qr * eta0 * usum_abs * length * np.sqrt(radius / h_r)
-    big_u = eta0 * usum_abs / (effective_modulus * radius)
+    big_u = eta0 * (0.5 * usum_abs) / (effective_modulus * radius)  # mean speed u_m
     g_mat = alpha * effective_modulus
     qx_dh = 18.4 * g_mat**-0.3 * big_u**0.7 * effective_modulus * radius * length
     if rolling_force == "regime_min":

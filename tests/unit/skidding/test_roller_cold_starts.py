@@ -62,19 +62,21 @@ def test_heavy_nu214_converges_by_newton_at_the_round_off_floor(nu214, oil):
     r = solve_roller(nu214, oil, 8000.0 * RPM, 45000.0, 0.0, 313.15)
     assert r.extras["method"] in AT_ROUND_OFF
     _every_equation_within_its_floor(r)
-    assert r.cage_speed == pytest.approx(363.0284844430538, rel=1e-12)
-    assert r.roller_speed[0] == pytest.approx(3085.742117037099, rel=1e-12)
-    assert r.roller_speed[5] == pytest.approx(1037.517661626765, rel=1e-12)
+    assert r.cage_speed == pytest.approx(363.0284843715619, rel=1e-12)
+    assert r.roller_speed[0] == pytest.approx(3085.74211751333, rel=1e-12)
+    assert r.roller_speed[5] == pytest.approx(1037.5176609347525, rel=1e-12)
 
 
-def test_hot_nu206_converges_by_newton_at_the_round_off_floor(nu206, vg68):
-    """Catalogue NU 206, 13 kN, 8000 r/min, oil at 140 degC: formerly bracketed (4.8 s)."""
+def test_hot_nu206_converges_by_newton(nu206, vg68):
+    """Catalogue NU 206, 13 kN, 8000 r/min, oil at 140 degC: formerly bracketed (4.8 s).
+    Since eq. 35 takes the mean speed (2026-11-23) Newton ends below the tolerance itself or
+    at the round-off floor (which one is round-off); the state is the bracketed one."""
     r = solve_roller(nu206, vg68, 8000.0 * RPM, 13000.0, 0.0, 413.15)
-    assert r.extras["method"] in AT_ROUND_OFF
-    _every_equation_within_its_floor(r)
-    assert r.cage_speed == pytest.approx(350.5835280411001, rel=1e-12)
-    assert r.roller_speed[0] == pytest.approx(2500.8291662766087, rel=1e-12)
-    assert r.roller_speed[5] == pytest.approx(385.2835367474362, rel=1e-12)
+    assert r.extras["method"] in ("newton", "newton_round_off")
+    assert r.residual_norm <= max(1e-9, 4.0 * r.extras.get("round_off_floor", 0.0))
+    assert r.cage_speed == pytest.approx(350.5835280083196, rel=1e-12)
+    assert r.roller_speed[0] == pytest.approx(2500.8291664445233, rel=1e-12)
+    assert r.roller_speed[5] == pytest.approx(385.2835366662159, rel=1e-12)
 
 
 def test_newton_iterate_with_wrong_unloaded_rollers_is_not_accepted(nu206, vg68):
