@@ -475,7 +475,9 @@ def _speed_continuation(bearing, models, speed, radial_load, axial_load, n_balls
                     # a step may stop at its round-off floor on the way, not at the
                     # target: there the caller picks the best iterate of all its attempts
                     # and says so (SKF6304 at 10012 r/min, -14 degC ISO VG46: a warm step
-                    # accepted 1.7e-5 where the cold start had reached 2.3e-9)
+                    # accepted 1.7e-5 where the cold start had reached 2.3e-9 when written;
+                    # the point is accepted at 3.4e-6 now, tests/unit/skidding/
+                    # test_ball_round_off.py)
                     e = ConvergenceError("skidding.ball", step.residual_norm,
                                          "the step at the target speed stopped at its "
                                          "round-off floor", {"speed": w})
