@@ -33,6 +33,7 @@ FIRST_IMPORTS = (
     "thermobearing.calibrate_synthetic",
     "thermobearing.skidding.ball_seat",
     "thermobearing.skidding.ball_coulomb",
+    "thermobearing.skidding.ball_damped_step",
     "thermobearing.signal_uncertainty",
     "thermobearing.signal_checks",
 )
