@@ -323,8 +323,10 @@ class Coupler:
                 H[:, j] += (qp - 2.0 * qb + qm) / (dT * dT)
         return _Linear(q0, J, T.copy(), H, reach=4.0 * dT)
 
-    def loss_rows(self, step_index: int, time_s: float, step: Step,
+    def loss_rows(self, step_index: int, time_s: float | None, step: Step,
                   T: np.ndarray) -> list[dict[str, Any]]:
+        """The loss table's rows of every bearing at temperatures ``T`` [K] (``time_s`` [s]
+        None: a steady operating point, no time column)."""
         from .simulation import step_columns
 
         rows = []
@@ -505,8 +507,11 @@ def _stop_runaway(net: Any, method: str, solver: Any, lin: _Linear, t0: float,
         _check_runaway(names, T1, t1, step, lin, limit)
 
 
-def _temperature_row(t: float, names: list[str], T: np.ndarray) -> dict[str, float]:
-    row = {"time [s]": t, "time [min]": t / 60.0}
+def _temperature_row(t: float | None, names: list[str], T: np.ndarray
+                     ) -> dict[str, float]:
+    """``time [s]``, ``time [min]`` (transient; none for ``t`` None, a steady state) and
+    ``<node> [degC]`` per node at temperatures ``T`` [K]."""
+    row = {} if t is None else {"time [s]": t, "time [min]": t / 60.0}
     for n, v in zip(names, T, strict=True):
         row[f"{n} [degC]"] = float(v) - 273.15
     return row
@@ -954,11 +959,12 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
                 f"converged below {STEADY_TOLERANCE:g} K)",
                 {"step": i, "temperatures [degC]": _temperatures_state(names, T)})
         for b in sim.bearings:
-            kin_rows.append({**step_columns(i, 0.0, b.name, step, b),
+            kin_rows.append({**step_columns(i, None, b.name, step, b),
                              **kinematics_columns(b.last, b.bearing)})
-        row = {"step": i, **_temperature_row(0.0, names, T)}
+        # a steady state has no time: step and node temperatures only
+        row = {"step": i, **_temperature_row(None, names, T)}
         temp_rows.append(row)
-        rows = (coupler.loss_rows(i, 0.0, step, T) if _wants_loss_table(sim.scene)
+        rows = (coupler.loss_rows(i, None, step, T) if _wants_loss_table(sim.scene)
                 else [])
         loss_rows.extend(rows)
         if writer:

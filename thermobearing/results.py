@@ -4,9 +4,12 @@ Tables (all optional; a scene fills only what its outputs need):
 
 ``temperatures``
     one row per output time: ``time [s]``, ``time [min]``, then ``<node> [degC]`` per node.
+``steady_temperatures``
+    one row per operating point of a steady run: ``step``, then ``<node> [degC]`` per node.
 ``losses``
     long form, one row per (step, bearing, source, component, role): ``step``,
-    ``time [s]``, ``bearing``, ``speed [rpm]``, ``radial load [kN]``, ``axial load [kN]``,
+    ``time [s]`` (transient runs only: a steady run's or an operating point's rows have no
+    time), ``bearing``, ``speed [rpm]``, ``radial load [kN]``, ``axial load [kN]``,
     ``source``, ``component``, ``role`` (where that part of the component's heat goes:
     inner_ring, outer_ring, elements, cage or oil), ``power [W]``, ``load dependence``.
     A component's rows add up to its power, a source's to its loss. Folders of earlier

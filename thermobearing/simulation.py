@@ -591,7 +591,7 @@ class Simulation:
         want_film = "film" in self.scene.outputs.want
         for i, step in enumerate(tqdm(steps, disable=not self.progress, desc="steps")):
             for b in self.bearings:
-                base = step_columns(i, 0.0, b.name, step, b)
+                base = step_columns(i, None, b.name, step, b)
                 if self.needs["kinematics"]:
                     kin = self.solve_kinematics(b, i, step, temps)
                     row = {**base, **kinematics_columns(kin, b.bearing)}

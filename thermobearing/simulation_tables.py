@@ -19,17 +19,22 @@ from .state import OperatingPoint
 from .units import from_si
 
 
-def step_columns(index: int, time_s: float, bearing: str, step: Step,
+def step_columns(index: int, time_s: float | None, bearing: str, step: Step,
                  record: _Bearing | None = None) -> dict[str, Any]:
     """The columns that identify one operating step in the tables (the loads are those of
     the bearing ``record`` when given: its ``load_share`` of the schedule's).
+
+    ``time_s`` [s]: the time of the row in a transient run; None for an operating point
+    that has no time (steady runs, losses / kinematics / film at the initial
+    temperature): no ``time [s]`` column then (it was written as 0 s).
 
     The speed is the step's set value converted from rad/s to r/min and rounded to
     :data:`SET_VALUE_DIGITS` significant digits: the conversion's round-off (1500 r/min
     read back as ``1500.0000000000002``) is not part of the value a user set."""
     radial, axial = ((step.radial_load, step.axial_load) if record is None
                      else record.loads(step))
-    return {"step": index, "time [s]": time_s, "bearing": bearing,
+    timed = {} if time_s is None else {"time [s]": time_s}
+    return {"step": index, **timed, "bearing": bearing,
             "speed [rpm]": set_value(from_si(step.speed, "rpm")),
             "radial load [kN]": radial / 1e3,
             "axial load [kN]": axial / 1e3}

@@ -181,3 +181,29 @@ def test_chain_lists_the_film_only_where_something_computes_one():
         assert "film" in listed and "pressure_viscosity" in listed, (kin, want, listed)
     sim = Simulation(loads_scene(RUNAWAY.replace("CHUNK", "90 s")), progress=False)
     assert Coupler(sim, build_network(sim)).runaway_limit == RUNAWAY_TEMPERATURE
+
+
+def test_untimed_tables_have_no_time_column(tmp_path):
+    """A losses-only run (no network) and a steady run wrote 'time [s]' = 0 (and the
+    steady temperatures 'time [min]' = 0) in every table: an operating point has no time.
+    Transient tables keep their times."""
+    import pandas as pd
+
+    sim, _ = _point("race_control")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = sim.run(tmp_path / "point")
+    for name in ("losses", "kinematics"):
+        assert "time [s]" not in res.tables[name]
+        written = pd.read_csv(tmp_path / "point" / f"{name}.csv")
+        assert list(written.columns[:2]) == ["step", "bearing"]
+    text = POINT.replace("KIN", "race_control").replace(
+        'want = ["losses", "kinematics"]', 'mode = "steady"\nwant = ["temperatures", "losses"]'
+    ) + '[network]\nparameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }\n'
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        steady = Simulation(loads_scene(text), progress=False).run()
+    table = steady.tables["steady_temperatures"]
+    assert table.columns[0] == "step" and all(c.endswith(" [degC]") for c in table.columns[1:])
+    assert "time [s]" not in steady.tables["losses"]
+    assert "time [s]" not in steady.tables["kinematics"]
