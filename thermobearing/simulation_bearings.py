@@ -135,7 +135,34 @@ def _supply_notes(scene: Scene) -> list[str]:
         notes.append(f"supply.level ({sup.level * 1e3:g} mm) is not used by the "
                      f"{sup.method} supply: only an oil bath (supply.method = \"oil_bath\") "
                      "has a level")
-    return notes
+    return notes + _thermal_setting_notes(scene, thermal)
+
+
+def _thermal_setting_notes(scene: Scene, thermal: bool) -> list[str]:
+    """Settings of the thermal run that the scene's outputs leave unused, said in one note:
+    without 'temperatures' or 'energy' no network runs, so ``[network]``, ``[solver]``
+    settings, ``[measured]``, ``outputs.interval`` and ``models.churning_heat_to`` change
+    nothing (a scene keeps them for other outputs: it loads and runs, but the user who set
+    them is told); ``outputs.interval`` of a steady run neither (one row per step)."""
+    from .scene_sections import Solver
+
+    if not thermal:
+        unused = [name for name, given in (
+            ("[network]", bool(scene.network)),
+            ("[solver]", scene.solver != Solver()),
+            ("[measured]", scene.measured is not None),
+            ("outputs.interval", scene.outputs.interval is not None),
+            ("models.churning_heat_to", "churning_heat_to" in scene.models)) if given]
+        if not unused:
+            return []
+        return [f"{', '.join(unused)} {'is' if len(unused) == 1 else 'are'} not used: "
+                f"the outputs ({', '.join(scene.outputs.want) or 'none'}) run no thermal "
+                "network (add 'temperatures' to [outputs] want for it)"]
+    if scene.outputs.mode == "steady" and scene.outputs.interval is not None:
+        return [f"outputs.interval ({scene.outputs.interval:g} s) is not used: a steady run "
+                "(outputs.mode = \"steady\") gives one row per step; the interval adds rows "
+                "between the chunk ends of a transient run"]
+    return []
 
 
 def level_notes(scene: Scene, name: str, bearing: Any) -> list[str]:

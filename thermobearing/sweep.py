@@ -206,13 +206,24 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
             sim = Simulation(scene, progress=False)
             preflight(sim, build=True)
         for path, _ in case.assignments:
-            note = next((n for n in sim.notes
-                         if n.startswith(f"{path} (") and " is not used" in n), None)
+            note = next((n for n in sim.notes if _says_unused(n, path)), None)
             if note is not None and path not in unused:
                 unused[path] = (f"sweep: {path} is swept but not used by the runs (their "
                                 f"results do not change with it); case {case.case_id}: "
                                 f"{note}")
     return list(unused.values())
+
+
+def _says_unused(note: str, path: str) -> bool:
+    """Whether a run's note says the swept ``path`` is not used: ``"<path> (...) is not
+    used"`` or a list of unused settings before ``"not used"`` naming the path or its table
+    (``"[network], [solver] are not used"`` for ``network.parameters.h_oil``)."""
+    head, sep, _ = note.partition(" not used")
+    if not sep:
+        return False
+    table = f"[{path.split('.', 1)[0]}]"
+    return note.startswith(f"{path} (") or table in head.split() or f"{table}," in head \
+        or path in head.replace(",", " ").split()
 
 
 def run_sweep(
