@@ -21,7 +21,10 @@ Tables (all optional; a scene fills only what its outputs need):
     sum of the sources): :func:`thermobearing.report_losses.breakdown_by_source`.
 ``kinematics``
     one row per (step, bearing): speeds, loads, ``cage speed ratio [-]``,
-    ``theoretical cage speed ratio [-]``, ``over-skidding [%]`` and solver statistics.
+    ``theoretical cage speed ratio [-]``, ``over-skidding [%]``, the contact angles of ball
+    bearings, checks, and solver statistics ``converged``, ``residual [-]``,
+    ``iterations [-]`` (:func:`thermobearing.simulation_tables.kinematics_columns`: values
+    below a stated noise floor around zero are written as 0).
 ``energy``
     one row per output time: cumulative ``generated [J]``, ``stored [J]``,
     ``to ambient [J]``, ``to oil [J]``, ``imbalance [J]``.

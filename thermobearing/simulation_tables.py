@@ -54,23 +54,51 @@ def set_value(x: float) -> float:
     return float(f"{x:.{SET_VALUE_DIGITS}g}")
 
 
+#: over-skidding [%] below which (in magnitude) the table writes 0: a cage speed ratio
+#: equal to its theoretical value to 1e-9, the skidding solvers' tolerance on their scaled
+#: residual. Race control on a deep-groove 6206 wrote -1.11e-14 % (the double round-off of
+#: CSR / CSR_th - 1 where the two are equal)
+OVER_SKID_FLOOR = 1e-7
+#: load-weighted contact angle [deg] below which the table writes 0: 1.7e-8 rad, an axial
+#: offset of the ball of ~1e-11 m between groove centres 0.4 mm apart. A 6206 without axial
+#: load (0 deg by symmetry) wrote 1.9e-15 deg (skidding solver) and 2e-10 to 8e-8 deg (race
+#: control: its load distribution's tolerance, 1 N to 20 kN radial); 1 mN of axial load
+#: against 2 kN radial gives 2.5e-5 deg, well above the floor
+CONTACT_ANGLE_FLOOR = 1e-6
+
+
+def zero_below(x: float, floor: float) -> float:
+    """``x``, or 0.0 where ``|x| < floor`` (solver noise around a value that is zero; NaN
+    unchanged)."""
+    return 0.0 if abs(x) < floor else x
+
+
 def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
     """Kinematics table columns of one result, with the largest Hertz pressure and the
     smallest film parameter of its loaded contacts (:mod:`.operating_checks`; NaN when
-    the bearing gives no roughness)."""
+    the bearing gives no roughness).
+
+    Over-skidding below :data:`OVER_SKID_FLOOR` and contact angles below
+    :data:`CONTACT_ANGLE_FLOOR` are written as 0 (solver noise around a value zero by
+    symmetry; every other value as computed). ``residual [-]``: the skidding solver's
+    residual norm, its force and moment balances over its force scale (dimensionless; 0
+    for race control and "none", which iterate on no balance); ``iterations [-]``: its
+    iteration count."""
     check = check_state(bearing, kin)
+    angles = {k: zero_below(v, CONTACT_ANGLE_FLOOR)
+              for k, v in contact_angle_columns(kin, bearing).items()}
     return {"cage speed ratio [-]": kin.cage_speed_ratio,
             "theoretical cage speed ratio [-]": kin.theoretical_cage_speed_ratio,
-            "over-skidding [%]": 100.0 * kin.over_skid,
-            **contact_angle_columns(kin, bearing),
+            "over-skidding [%]": zero_below(100.0 * kin.over_skid, OVER_SKID_FLOOR),
+            **angles,
             # a state without contact sets (kinematics "none": the global friction model
             # solves no contacts) has no contact pressure to report, not 0 MPa
             "max contact pressure [MPa]": (check.max_pressure / 1e6 if kin.state.contacts
                                            else math.nan),
             "min film parameter [-]": (math.nan if check.film_parameter is None
                                        else check.film_parameter),
-            "converged": kin.converged, "residual": kin.residual_norm,
-            "iterations": kin.iterations}
+            "converged": kin.converged, "residual [-]": kin.residual_norm,
+            "iterations [-]": kin.iterations}
 
 
 def contact_angle_columns(kin: KinematicsResult, bearing: Any) -> dict[str, float]:

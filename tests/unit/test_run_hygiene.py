@@ -207,3 +207,44 @@ def test_untimed_tables_have_no_time_column(tmp_path):
     assert table.columns[0] == "step" and all(c.endswith(" [degC]") for c in table.columns[1:])
     assert "time [s]" not in steady.tables["losses"]
     assert "time [s]" not in steady.tables["kinematics"]
+
+
+def test_kinematics_table_units_and_noise_floor(tmp_path):
+    """kinematics.csv wrote 1.9e-15 deg (skidding) and 2.1e-10 deg (race control) for the
+    contact angles of a deep-groove bearing without axial load (0 by symmetry), -1.1e-14 %
+    over-skidding under race control, and a 'residual' column without unit: the noise
+    below the stated floors is 0, every column that holds a quantity names its unit, and a
+    small real angle (1 N of axial load against 2 kN radial: about 0.025 deg) is written
+    as computed."""
+    import pandas as pd
+
+    from thermobearing.simulation_tables import (
+        CONTACT_ANGLE_FLOOR,
+        OVER_SKID_FLOOR,
+        contact_angle_columns,
+    )
+
+    def run(kin: str, axial: str, out: str) -> tuple[Simulation, pd.DataFrame]:
+        text = (POINT.replace("KIN", kin).replace('preset = "QJ1044"', 'preset = "SKF6304"')
+                .replace('radial_load = "4 kN"', 'radial_load = "2 kN"')
+                .replace('axial_load = "0 kN"', f'axial_load = "{axial}"'))
+        sim = Simulation(loads_scene(text), progress=False)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            sim.run(tmp_path / out)
+        return sim, pd.read_csv(tmp_path / out / "kinematics.csv")
+
+    angles = ["inner contact angle [deg]", "outer contact angle [deg]"]
+    tables = {kin: run(kin, "0 N", kin)[1] for kin in ("race_control", "skidding")}
+    for table in tables.values():
+        assert (table[angles].to_numpy() == 0.0).all(), table[angles]
+        labels = {"step", "bearing", "converged"}
+        assert all(c.endswith("]") for c in table.columns if c not in labels), table.columns
+        assert "residual [-]" in table and "iterations [-]" in table
+    assert tables["race_control"]["over-skidding [%]"].iloc[0] == 0.0
+    assert abs(tables["skidding"]["over-skidding [%]"].iloc[0]) > OVER_SKID_FLOOR  # real
+    sim, table = run("race_control", "1 N", "axial")
+    raw = contact_angle_columns(sim.bearings[0].last, sim.bearings[0].bearing)
+    for col in angles:
+        assert table[col].iloc[0] > 100.0 * CONTACT_ANGLE_FLOOR
+        assert table[col].iloc[0] == pytest.approx(raw[col], rel=1e-12)
