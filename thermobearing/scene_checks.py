@@ -86,6 +86,14 @@ def check_model_names(scene: Scene) -> None:
         check_closed_form_film(scene)
     from .simulation_chain import ball_rolling_resistance
 
+    if (ball_rolling_resistance(scene)[0] != "none"
+            and "ball" not in (_bearing_kinds(scene) or {"ball"})):
+        # it acts on ball bearings only: on a roller-only scene it changed nothing, silently
+        raise InputError("models.ball_rolling_resistance", models["ball_rolling_resistance"],
+                         "'none' or no key in a scene without ball bearings (the option puts "
+                         "the EHL rolling force into the ball skidding balance; roller "
+                         "bearings book theirs with the ehl_rolling_resistance source by "
+                         "default)")
     if ball_rolling_resistance(scene)[0] != "none" and "heat_sources" in models:
         named = [sources] if isinstance(sources, str) else list(sources)
         if "ehl_rolling_resistance" not in named:
@@ -94,6 +102,22 @@ def check_model_names(scene: Scene) -> None:
             raise InputError("models.heat_sources", named,
                              "a list with ehl_rolling_resistance when ball_rolling_resistance "
                              "is on (the source books the rolling force's heat)")
+
+
+def _bearing_kinds(scene: Scene) -> set[str] | None:
+    """``{"ball", "roller"}`` kinds of the scene's bearings, or None when one does not load
+    (the Simulation reports it with its field)."""
+    from .geometry import load_bearing
+
+    kinds = set()
+    for spec in scene.bearings:
+        try:
+            b = load_bearing(spec.preset or str(scene.resolve_path(spec.path)),
+                             overrides=spec.overrides or None)
+        except Exception:  # noqa: BLE001 - reported with its field when the run loads it
+            return None
+        kinds.add("ball" if hasattr(b, "ball_diameter") else "roller")
+    return kinds
 
 
 #: the closed-form raceway film of each contact kind: the one race control and the film
@@ -112,19 +136,13 @@ def check_closed_form_film(scene: Scene) -> None:
     to the chain plan; a bearing that does not load is left to the Simulation, which names
     its field."""
     from .film import FILM
-    from .geometry import load_bearing
 
     name = scene.models["film"]
     if not isinstance(name, str) or name not in FILM:
         return
-    kinds = set()
-    for spec in scene.bearings:
-        try:
-            b = load_bearing(spec.preset or str(scene.resolve_path(spec.path)),
-                             overrides=spec.overrides or None)
-        except Exception:  # noqa: BLE001 - reported with its field when the run loads it
-            return
-        kinds.add("ball" if hasattr(b, "ball_diameter") else "roller")
+    kinds = _bearing_kinds(scene)
+    if kinds is None:
+        return
     used = {KIND_FILMS[k] for k in kinds}
     if used == {name}:
         return

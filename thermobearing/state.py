@@ -86,6 +86,10 @@ class OilSupply:
                 "supply.flow_rate", self.flow_rate,
                 f"a flow > 0 m^3/s for method {self.method!r} (zero only for oil_bath or grease)",
             )
+        if self.method == "grease" and q > 0.0:
+            raise InputError("supply.flow_rate", self.flow_rate,
+                             "0 for a grease fill: grease stays in the bearing, no stream "
+                             "carries heat away (a circulating oil is method 'circulation')")
         check_temperature("supply.inlet_temperature", self.inlet_temperature)
         if self.method == "oil_bath":
             if self.level is None:
