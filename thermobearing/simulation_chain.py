@@ -217,7 +217,7 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
                 add(FILM, film, "film thickness of the raceway contacts" + which)
     if need["kinematics"]:
         kin = scene.models.get("kinematics", "skidding")
-        add(KINEMATICS, kin, "epicyclic cage speed (pure rolling, no contacts)"
+        add(KINEMATICS, kin, "epicyclic cage speed: pure rolling, no contacts"
             if kin == "none" else "cage and element speeds, sliding speeds")
     if need["losses"]:
         from .heat_sources import HEAT_SOURCES
