@@ -68,6 +68,18 @@ are of the generator of their date):
   force ``ball_rolling_resistance`` with a reduction (``rr``), solver tolerances and
   ``max_step`` (``tol``); ``[outputs] want`` mixes (film, report or kinematics beside the
   others: a wanted film table must be there or the run must say why).
+- 2026-11-23, session 17: fuzz oil files with other pressure laws (``VG5barus``: Barus with
+  a given alpha; ``VG5alpha``: Roelands from an alpha at a reference temperature, as
+  OIL_4109; ``VG5z``: a given Roelands z); ``[models] film`` (``film``: the closed-form
+  point or line film models, now and then the other contact kind's); ``[solver]
+  chunk_viscosity_limit`` (``cvl``); ``[checks]`` with a stress limit per bearing family
+  or only some thresholds; a sweep whose two cases give the same numbers in every result
+  column without the sweep calling the swept path unused is listed in the notes
+  (``identical``: a setting ignored without a word, or one these outputs do not depend on);
+  a documented numeric option of a default heat source (``srcopt``: cage_guide,
+  churning_*, pocket_friction, raceway_traction) inside its registry interval, one in
+  twelve outside it; table values that cannot be negative (films, film parameters,
+  contact pressures, cage speed ratios) or a cage speed ratio above 1 are defects.
 
 Usage::
 
@@ -131,6 +143,11 @@ HIGH_SPEED_FACTOR = 1.6
 #: cold starts: ambient, initial and inlet temperatures drawn in this range [degC]
 COLD_RANGE = (-40.0, -10.0)
 TEMPLATES = ("four_node_paper002", "seven_node")
+#: closed-form film models ([models] film) of point (ball) and line (roller) contacts; the
+#: numerical EHL models cost minutes of table building per case and are not drawn
+POINT_FILMS = ("hamrock_dowson_1977_central", "hamrock_dowson_1977_minimum")
+LINE_FILMS = ("pan_hamrock_central", "pan_hamrock_minimum", "moes_line_central",
+              "dowson_higginson_minimum")
 GARBLED = (re.compile(r"\bnan\b", re.I), re.compile(r"\binf\b"), re.compile(r"np\.float"),
            re.compile(r"\{[a-z_]*\}"), re.compile(r"\bNone\b"), re.compile(r"[\x00-\x08]"),
            re.compile(r"<[a-zA-Z_.]+ object at"), re.compile(r"\.\.\s*$"))
@@ -458,10 +475,29 @@ def _axial_load_steps(rng: np.random.Generator, steps: list[dict[str, Any]], c0:
                                  "step": _q(da * f, unit)}}
 
 
+def _pressure_law(rng: np.random.Generator) -> tuple[str, str]:
+    """The ``[pressure_viscosity]`` table of a fuzz oil file and its tag: mostly Roelands
+    with the ASME 1953 alpha fit (as the ISO VG presets), else a given alpha under Barus or
+    Roelands (converted at a reference temperature, as OIL_4109) or a given Roelands z
+    (alpha 1e-8 to 3.5e-8 1/Pa and z 0.4 to 0.9: the size of mineral oils and esters)."""
+    r = rng.random()
+    if r < 0.6:
+        return 'law = "roelands"\nalpha_correlation = "asme1953_mineral_fit"', ""
+    alpha = f'alpha = "{_log_uniform(rng, 1e-8, 3.5e-8):.3g} 1/Pa"'
+    if r < 0.75:
+        return f'law = "barus"\n{alpha}', "barus"
+    if r < 0.9:
+        ref = f'reference_temperature = "{rng.uniform(20.0, 100.0):.0f} degC"'
+        return f'law = "roelands"\n{alpha}\n{ref}', "alpha"
+    return f'law = "roelands"\nz = {rng.uniform(0.4, 0.9):.3f}', "z"
+
+
 def _oil_file(rng: np.random.Generator, path: Path) -> tuple[dict[str, Any], str]:
     """A mineral-oil lubricant TOML of an ISO VG grade outside the presets (VG 2 to 1500),
-    laid out as ``configs/lubricants/ISO_VG100.toml``: the scene's ``[lubricant] path``."""
+    laid out as ``configs/lubricants/ISO_VG100.toml``: the scene's ``[lubricant] path``;
+    its pressure law from :func:`_pressure_law` (tag after the grade: ``VG5z``)."""
     grade = int(rng.choice(sorted(EXTREME_GRADES)))
+    law, tag = _pressure_law(rng)
     path.write_text(f'''name = "ISO_VG{grade}_fuzz"
 source = "fuzz input: ISO VG {grade} mineral oil of about VI 95"
 kind = "mineral"
@@ -472,8 +508,7 @@ nu40 = "{grade} mm**2/s"
 nu100 = "{EXTREME_GRADES[grade]} mm**2/s"
 
 [pressure_viscosity]
-law = "roelands"
-alpha_correlation = "asme1953_mineral_fit"
+{law}
 
 [density]
 value = "{rng.uniform(840.0, 910.0):.0f} kg/m**3"
@@ -484,7 +519,7 @@ pressure_law = "dowson_higginson"
 [thermal]
 model = "cragoe"
 ''', encoding="utf-8")
-    return {"path": str(path)}, f"VG{grade}"
+    return {"path": str(path)}, f"VG{grade}{tag}"
 
 
 #: other spellings of the generator's units: (unit, factor, offset) with value' = value *
@@ -741,11 +776,81 @@ def _options(rng: np.random.Generator, doc: dict[str, Any], picks: list[BearingE
                               "max_step": _q(_log_uniform(rng, 1.0, 600.0), "s")})
         drawn.append("tol")
     if rng.random() < 0.1:
-        doc["checks"] = {"skid_limit": _q(rng.uniform(0.5, 20.0), "%", 3),
-                         "contact_stress_limit": _q(rng.uniform(1500.0, 4500.0), "MPa", 4),
-                         "min_film_parameter": round(float(rng.uniform(0.5, 3.0)), 2)}
+        checks = {"skid_limit": _q(rng.uniform(0.5, 20.0), "%", 3),
+                  "contact_stress_limit": _q(rng.uniform(1500.0, 4500.0), "MPa", 4),
+                  "min_film_parameter": round(float(rng.uniform(0.5, 3.0)), 2)}
+        if rng.random() < 0.4:
+            # a stress limit per bearing family (ISO 76: ball 4200, roller 4000 MPa)
+            checks["contact_stress_limit"] = {
+                fam: _q(rng.uniform(1500.0, 4500.0), "MPa", 4)
+                for fam in ("ball", "roller") if rng.random() < 0.7} or {
+                "ball": _q(4200.0, "MPa", 4)}
+        if rng.random() < 0.4:  # only some of the thresholds
+            for key in [str(k) for k in rng.permutation(list(checks))][:2]:
+                checks.pop(key)
+        doc["checks"] = checks
         drawn.append("checks")
+    if kin != "none" and rng.random() < 0.12:
+        # the bearings' own closed-form film named (the default written out), now and
+        # then another one, which a scene refuses (models.film: race control and the film
+        # table compute the kind's film whatever the scene names)
+        balls = {e.kind != "cylindrical" for e in picks}
+        own = {True: POINT_FILMS[0], False: LINE_FILMS[0]}
+        if len(balls) == 1 and rng.random() < 0.75:
+            models["film"] = own[balls.pop()]
+        else:
+            models["film"] = str(rng.choice(POINT_FILMS + LINE_FILMS))
+        drawn.append("film")
+    if kin != "none" and rng.random() < 0.12 and _source_option(rng, models):
+        drawn.append("srcopt")
+    if "solver" in doc and rng.random() < 0.1:
+        # the chunk repeat threshold, from eager (0.02) to hardly ever (3)
+        doc["solver"]["chunk_viscosity_limit"] = float(f"{_log_uniform(rng, 0.02, 3.0):.2g}")
+        drawn.append("cvl")
     return drawn
+
+
+#: heat sources every bearing kind runs by default, whose documented numeric options
+#: (registry ``limits``) :func:`_source_option` draws
+OPTION_SOURCES = ("cage_guide", "churning_cage", "churning_elements", "churning_inner_ring",
+                  "pocket_friction", "raceway_traction")
+
+
+def _source_option(rng: np.random.Generator, models: dict[str, Any]) -> bool:
+    """One documented numeric parameter of a default heat source in ``[models]
+    heat_source_options``, drawn inside its registry interval (an end now and then), one in
+    twelve outside it (for the refusal's message): a friction coefficient, a gap, an oil
+    fraction, a share, the traction grid. False when no source fits (a listed
+    heat_sources without any of them)."""
+    from thermobearing.heat_sources import HEAT_SOURCES
+
+    listed = models.get("heat_sources")
+    names = [n for n in OPTION_SOURCES if listed is None or n in listed]
+    if not names:
+        return False
+    src = str(rng.choice(names))
+    entry = HEAT_SOURCES.entry(src)
+    keys = sorted(k for k in entry.limits if entry.parameters.get(k) in ("-", "m", "N"))
+    if not keys:
+        return False
+    key = str(rng.choice(keys))
+    lim, unit = entry.limits[key], entry.parameters[key]
+    if rng.random() < 1 / 12:
+        value = lim.low - 0.5 if math.isfinite(lim.low) and lim.low > 0 else (
+            -0.1 if lim.low == 0 else lim.high + 1.0)
+    elif math.isfinite(lim.high):
+        r = rng.random()
+        value = lim.low if r < 0.1 and lim.low_closed else (
+            lim.high if r < 0.2 and lim.high_closed else float(rng.uniform(lim.low, lim.high)))
+        if key.startswith("n_"):
+            value = float(round(min(value, 64.0)))  # the traction grid: whole numbers
+    else:
+        value = _log_uniform(rng, 1e-7, 1e-3) if unit == "m" else _log_uniform(rng, 1e-2, 1e4)
+    text: Any = (_q(value * 1e6, "um") if unit == "m" else _q(value, "N") if unit == "N"
+                 else float(f"{value:.4g}"))
+    opts = models.setdefault("heat_source_options", {})
+    opts.setdefault(src, {})[key] = text
+    return True
 
 
 def _duration_s(step: dict[str, Any]) -> float:
@@ -864,6 +969,11 @@ def check_results(results: Any, no_contacts_model: bool = False) -> list[str]:
                 problems.append(f"{name}[{col}] above the runaway limit "
                                 f"{RUNAWAY_TEMPERATURE - 273.15:.0f} degC: "
                                 f"{np.nanmax(arr):.6g} degC")
+            if col in NONNEGATIVE_COLUMNS and np.any(arr < -1e-12):
+                problems.append(f"{name}[{col}] negative: {np.nanmin(arr):.6g}")
+            if col == "cage speed ratio [-]" and np.any(arr > 1.0 + 1e-9):
+                # the cage runs between a still outer ring (0) and the shaft (1)
+                problems.append(f"{name}[{col}] above 1: {np.nanmax(arr):.6g}")
     zero = _zero_pressure_under_load(results.tables.get("kinematics"))
     if zero:
         problems.append(zero)
@@ -872,6 +982,14 @@ def check_results(results: Any, no_contacts_model: bool = False) -> list[str]:
         if why:
             problems.append(f"garbled warning ({why}): {str(w)[:200]}")
     return problems
+
+
+#: table columns of quantities that cannot be negative (films, film parameters, contact
+#: pressures, the cage speed ratio: the cage turns with the shaft, never against it)
+NONNEGATIVE_COLUMNS = frozenset({
+    "min film parameter [-]", "max contact pressure [MPa]", "central film [um]",
+    "film parameter [-]", "closed-form central film [um]", "cage speed ratio [-]",
+    "theoretical cage speed ratio [-]", "minimum film [um]"})
 
 
 @dataclass
@@ -1200,6 +1318,23 @@ def _written_unit(doc: dict[str, Any], path: str) -> str | None:
     return m.group(2) if m else None
 
 
+def _unchanged_by_sweep(summary: Any, path: str, stderr: str) -> str | None:
+    """A swept setting whose cases gave the same numbers in every result column, and that
+    the sweep did not call unused (``"<path> is swept but not used"``): a setting ignored
+    without a word, or one with no effect on these outputs (a skid limit changes only the
+    flags; a flow or an inlet at rest changes nothing). Listed for a look, not a defect."""
+    if f"{path} is swept but not used" in stderr or len(summary) < 2:
+        return None
+    cols = [c for c in summary.columns if c != "case" and c != path
+            and not c.startswith(path + " [") and is_numeric_dtype(summary[c])
+            and not is_bool_dtype(summary[c])]
+    if not cols or not all(np.allclose(summary[c], summary[c].iloc[0], rtol=1e-12,
+                                       atol=0.0, equal_nan=True) for c in cols):
+        return None
+    return (f"identical: the {len(summary)} cases gave the same {len(cols)} result "
+            "columns, no note")
+
+
 def run_sweep_cli(case: Case, out_dir: Path, time_limit: float, setting: str) -> None:
     """``thermobearing sweep SCENE --set ... -j 1 --quiet --out DIR`` and ``thermobearing
     report DIR``: a finished sweep has a summary.csv whose mean total loss is a finite
@@ -1238,6 +1373,9 @@ def run_sweep_cli(case: Case, out_dir: Path, time_limit: float, setting: str) ->
         case.outcome, case.message = "DEFECT", (
             f"cli sweep {setting}: summary.csv {col} = {summary[col].tolist()}")
         return
+    same = _unchanged_by_sweep(summary, path, proc.stderr)
+    if same:
+        case.notes.append(f"sweep {setting}: {same}")
     rep = _cli(["report", str(target)], time_limit)
     if rep is not None and (rep.returncode != 0 or not (target / "report.html").is_file()):
         case.outcome, case.message = "DEFECT", (
