@@ -35,7 +35,10 @@ class InputError(ThermobearingError, ValueError):
         if value is None:  # nothing was given
             super().__init__(f"{field} is missing: {allowed}")
         else:
-            super().__init__(f"{field} = {value!r} is not allowed: {allowed}")
+            # an array on one line, by its ends (``_short``): its repr broke a 512 x 11
+            # viscosity grid over seven lines in the middle of a message
+            shown = _short(value) if isinstance(value, np.ndarray) else repr(value)
+            super().__init__(f"{field} = {shown} is not allowed: {allowed}")
 
 
 class UnknownNameError(InputError, KeyError):
@@ -100,10 +103,10 @@ class ValidityWarning(UserWarning):
 def _short(v: Any) -> str:
     """A state value of an error message, on one line (an error is one line of the CLI's
     output and of a log): floats to 6 significant digits, arrays with 5 (first and last
-    three elements of an array over 8; a 2-D array's rows one after the other), dicts,
-    lists and tuples element by element, anything else its repr with line breaks turned
-    into spaces. numpy's default width broke a 7-node temperature vector over two lines in
-    the middle of a message."""
+    three elements of an array over 8; a small 2-D array's rows one after the other, a
+    larger one by its shape and range), dicts, lists and tuples element by element,
+    anything else its repr with line breaks turned into spaces. numpy's default width
+    broke a 7-node temperature vector over two lines in the middle of a message."""
     if isinstance(v, float):
         return f"{v:.6g}"
     if isinstance(v, dict):
@@ -112,6 +115,15 @@ def _short(v: Any) -> str:
         inner = ", ".join(_short(x) for x in v)
         return (f"[{inner}]" if isinstance(v, list)
                 else f"({inner}{',' if len(v) == 1 else ''})")
+    if isinstance(v, np.ndarray) and v.ndim > 1 and v.size > 8 \
+            and np.issubdtype(v.dtype, np.number):
+        # a grid: its shape and range, not rows of elided numbers
+        finite = v[np.isfinite(v)]
+        span = (f" from {_float5(finite.min())} to {_float5(finite.max())}" if finite.size
+                else "")
+        bad = v.size - finite.size
+        return (f"({' x '.join(map(str, v.shape))} values{span}"
+                + (f", {bad} not finite" if bad else "") + ")")
     if isinstance(v, np.ndarray):
         text = np.array2string(v, threshold=8, edgeitems=3, max_line_width=sys.maxsize,
                                separator=", ", formatter={"float_kind": _float5})

@@ -99,6 +99,25 @@ def test_error_state_is_one_line():
     assert "pair=(0.3, 'x')" in text and "time=351.062" in text
 
 
+def test_input_error_shows_an_array_on_one_line():
+    """An InputError's value is its repr: a viscosity grid (512 x 11) went over seven lines
+    of a message (numpy's summary), inside a thermal-EHL ConvergenceError's text. Arrays
+    are shown on one line, a grid by its shape and range; the value itself is kept."""
+    import numpy as np
+
+    from thermobearing.errors import InputError
+
+    grid = np.full((512, 11), 3.6774e-2)
+    grid[0, 0] = np.nan
+    err = InputError("eta0", grid, "a viscosity > 6.31e-5 Pa s")
+    assert str(err) == ("eta0 = (512 x 11 values from 0.036774 to 0.036774, 1 not finite) "
+                        "is not allowed: a viscosity > 6.31e-5 Pa s")
+    assert err.value is grid
+    assert str(InputError("pressure", np.array([0.0, 1.5e9]), "finite")) == (
+        "pressure = [0, 1.5e+09] is not allowed: finite")
+    assert str(InputError("x", 3.0, "y")) == "x = 3.0 is not allowed: y"
+
+
 #: one operating point of a QJ1044 (losses only, no network): ``KIN`` is the kinematics
 POINT = """
 title = "one point"
