@@ -347,7 +347,10 @@ def roelands_viscosity(
     eta0a = np.asarray(eta0, dtype=float)
     check_finite("eta0", eta0a)
     if np.any(eta0a <= ROELANDS_ETA_INF):
-        raise InputError("eta0", eta0, "a viscosity above Roelands' 6.31e-5 Pa s")
+        # the smallest value, not a thermal EHL film's whole 512 x 11 grid
+        raise InputError("eta0", _smallest(eta0a), "a viscosity above Roelands' 6.31e-5 Pa s "
+                         "(the oil's viscosity at ambient pressure; below it the oil is too "
+                         "hot for the law)")
     pa = np.asarray(p, dtype=float)
     if np.any(pa <= -p0):
         raise InputError("pressure", p, f"a pressure above -p0 = {-p0:g} Pa")
@@ -360,6 +363,12 @@ def roelands_viscosity(
                          "a pressure for which the Roelands viscosity is finite (eta0 = "
                          f"{e_bad:.4g} Pa s, z = {z_bad:.4g}: the viscosity overflows there)")
     return _out(out)
+
+
+def _smallest(eta0: np.ndarray) -> str:
+    """An error's value of an ``eta0`` grid: its smallest entry, and how many it had."""
+    return (f"{float(np.min(eta0)):.4g} Pa s"
+            + (f" (the smallest of {eta0.size} values)" if eta0.size > 1 else ""))
 
 
 def roelands_index_from_alpha(
@@ -376,11 +385,9 @@ def roelands_index_from_alpha(
     if np.any(eta0a <= ROELANDS_ETA_INF):
         # the smallest value, not the caller's whole grid (a thermal EHL film's 512 x 11
         # temperatures printed as an array)
-        shown = (f"{float(np.min(eta0a)):.4g} Pa s" + (
-            f" (the smallest of {eta0a.size} values)" if eta0a.size > 1 else ""))
-        raise InputError("eta0", shown, "a viscosity above Roelands' 6.31e-5 Pa s (the "
-                         "oil's viscosity at ambient pressure; below it the oil is too hot for "
-                         "the law)")
+        raise InputError("eta0", _smallest(eta0a), "a viscosity above Roelands' 6.31e-5 Pa s "
+                         "(the oil's viscosity at ambient pressure; below it the oil is too "
+                         "hot for the law)")
     return _out(np.asarray(alpha) * p0 / (np.log(eta0a) + ROELANDS_LN_ETA_INF))
 
 
