@@ -427,11 +427,10 @@ def _stiffness_bh(rx: float, ry: float, ep: float) -> float:
 
 @njit(cache=True)
 def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
-                 om: float, xd: float, zd: float, mu: float, f_g: float,
-                 sreg: float) -> np.ndarray:
+                 om: float, xd: float, mu: float, f_g: float, sreg: float) -> np.ndarray:
     """:func:`face_values` as a vector indexed by the ``F_*`` constants (jitted)."""
     out = np.empty(F_N)
-    v = face_values(gp, side, a, x, ad, wr, om, xd, zd, mu, f_g, sreg)
+    v = face_values(gp, side, a, x, ad, wr, om, xd, mu, f_g, sreg)
     for i in range(F_N):
         out[i] = v[i]
     return out
@@ -439,7 +438,7 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
 
 @njit(cache=True)
 def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
-                om: float, xd: float, zd: float, mu: float, f_g: float, sreg: float
+                om: float, xd: float, mu: float, f_g: float, sreg: float
                 ) -> tuple[float, float, float, float, float, float, float, float, float,
                            float, float, float, float, float]:
     """One end face / rib contact (paper 003 eqs. 1-17, 24), jitted scalar kernel.
@@ -447,8 +446,6 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     gp : :meth:`RibGeometry.params`.  side : -1 left, +1 right.  a : skew alpha [rad].
     x : axial shift X [m].  ad : skew rate [rad/s].  wr : roller spin omega_r [rad/s]
     (rolling sense).  om : omega_i - omega_c [rad/s].  xd : axial speed X' [m/s].
-    zd : circumferential (pocket) speed z' of the roller centre in the cage frame [m/s]
-    (part of the roller's velocity at the contact point, eq. 24; 0 before 2026-11-23).
     mu : Coulomb coefficient [-].  f_g : lubricant drag force of eq. 14 [N] (>= 0).
     sreg : regularising speed [m/s] of the friction direction (0: exact).
 
@@ -493,7 +490,7 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     wz = wr * s
     vrx = wy * v_z - wz * r_y + xd
     vry = wz * r_x - wx * v_z
-    vrz = wx * r_y - wy * r_x + zd
+    vrz = wx * r_y - wy * r_x
     # rib: turns at om about the bearing axis, which lies rc0 below the roller axis
     sx = -vrx
     sy = -om * v_z - vry
@@ -523,7 +520,7 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     # lubricant drag (eqs. 14, 17): circumferential, at the rib mid-height of the face
     gx = side * gp[_G_HL] * c
     gy = -gp[_G_RG]
-    vg = om * (gy + gp[_G_RC0]) - (wx * gy - wy * gx) - zd
+    vg = om * (gy + gp[_G_RC0]) - (wx * gy - wy * gx)
     fd = 0.0
     if f_g > 0.0:
         if sreg > 0.0:
@@ -642,17 +639,15 @@ def squeeze_forces(geom: RibGeometry, skew: Any, axial_shift: Any, skew_rate: An
 
 @njit(cache=True)
 def _faces(gp: np.ndarray, a: np.ndarray, x: np.ndarray, ad: np.ndarray, wr: np.ndarray,
-           om: float, xd: np.ndarray, zd: np.ndarray, mu: float, f_g: float,
-           sreg: float) -> np.ndarray:
+           om: float, xd: np.ndarray, mu: float, f_g: float, sreg: float) -> np.ndarray:
     """:func:`face_contact` of both faces over 1-D arrays -> (n, 2, F_N)."""
     n = a.shape[0]
     out = np.zeros((n, 2, F_N))
     for i in range(n):
         # literal sides: face_values compiles once per face (as in the roller dynamics'
         # right-hand side), 2-4 % faster than with the side as a run-time int64 (measured)
-        fl = face_contact(gp, -1, a[i], x[i], ad[i], wr[i], om, xd[i], zd[i], mu, f_g,
-                          sreg)
-        fr = face_contact(gp, 1, a[i], x[i], ad[i], wr[i], om, xd[i], zd[i], mu, f_g, sreg)
+        fl = face_contact(gp, -1, a[i], x[i], ad[i], wr[i], om, xd[i], mu, f_g, sreg)
+        fr = face_contact(gp, 1, a[i], x[i], ad[i], wr[i], om, xd[i], mu, f_g, sreg)
         for q in range(F_N):    # element loop: a row assignment from an array compiles
             out[i, 0, q] = fl[q]  # numba's shape-mismatch message code (seconds)
             out[i, 1, q] = fr[q]
@@ -700,8 +695,7 @@ class RibForces(NamedTuple):
 
 def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: float,
                cage_speed: float, roller_spin: Any, skew_rate: Any = 0.0,
-               axial_speed: Any = 0.0, pocket_speed: Any = 0.0,
-               friction_coefficient: float = DEFAULT_RIB_FRICTION,
+               axial_speed: Any = 0.0, friction_coefficient: float = DEFAULT_RIB_FRICTION,
                mixture_viscosity: float = 0.0, smooth_sign: float | None = None,
                with_pressure: bool = True) -> RibForces:
     """Both end-face/rib contacts of a roller, paper 003 eqs. 1-17 and 21-24.
@@ -713,8 +707,6 @@ def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: f
     inner_speed, cage_speed : omega_i, omega_c [rad/s].
     roller_spin : omega_r [rad/s] (rolling sense, cage frame).
     skew_rate : alpha_dot [rad/s].  axial_speed : X' [m/s].
-    pocket_speed : z', the roller centre's circumferential speed in the cage frame [m/s]
-        (its pocket motion; part of the end face's velocity at the contact, eq. 24).
     friction_coefficient : mu of eq. 12 [-].
     mixture_viscosity : nu rho_e of eq. 14 [Pa s] (0: no drag term).
     smooth_sign : None -> the exact direction of eq. 13; a speed v_s [m/s] -> the
@@ -729,11 +721,10 @@ def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: f
     check_range("friction_coefficient", friction_coefficient, 0.0, 1.0)
     check_positive("mixture_viscosity", mixture_viscosity, allow_zero=True)
     arrs = np.broadcast_arrays(*(np.asarray(v, float) for v in (
-        skew, axial_shift, skew_rate, roller_spin, axial_speed, pocket_speed)))
+        skew, axial_shift, skew_rate, roller_spin, axial_speed)))
     shape = arrs[0].shape
     flat = [np.ascontiguousarray(v.ravel()) for v in arrs]
-    names = ("skew", "axial_shift", "skew_rate", "roller_spin", "axial_speed",
-             "pocket_speed")
+    names = ("skew", "axial_shift", "skew_rate", "roller_spin", "axial_speed")
     for name, v in zip(names, flat, strict=True):  # a NaN read as "no contact" before
         if not np.all(np.isfinite(v)):
             raise InputError(name, v if v.size > 1 else float(v[0]), "finite numbers")
@@ -744,8 +735,8 @@ def rib_forces(geom: RibGeometry, skew: Any, axial_shift: Any, *, inner_speed: f
         f_g = abs(float(lubricant_drag(geom, inner_speed, cage_speed, mixture_viscosity)[0]))
     sreg = 0.0 if smooth_sign is None else float(smooth_sign)
     res = _faces(geom.params(), flat[0], flat[1], flat[2], flat[3],
-                 float(inner_speed) - float(cage_speed), flat[4], flat[5],
-                 friction_coefficient, f_g, sreg)
+                 float(inner_speed) - float(cage_speed), flat[4], friction_coefficient, f_g,
+                 sreg)
 
     def col(side: int, j: int) -> Any:
         return res[:, side, j].reshape(shape)[()]

@@ -56,7 +56,7 @@ def test_approach_speed_is_the_rate_of_eq1_approach(end_face):
             # acting on the Hertz force's line: the skew moment per newton is the normal
             # force's (face_contact with mu = 0 in contact)
             fc = face_contact(gp, side, a0, side * 40e-6, 0.0, 1000.0, 500.0, 0.0, 0.0,
-                              0.0, 0.0, 0.0)
+                              0.0, 0.0)
             assert m_skew == pytest.approx(fc[F_Z] * fx, rel=1e-9)
 
 
@@ -66,7 +66,7 @@ def test_sphere_plane_value_and_film_floor():
     gp = g.params()
     side, a, xd = 1, 0.0, 0.2
     x_free = g.axial_clearance / 2 - 5e-6 / gp[_G_CT]       # 5 um gap at zero skew
-    fc = face_contact(gp, side, a, x_free, 0.0, 1000.0, 500.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    fc = face_contact(gp, side, a, x_free, 0.0, 1000.0, 500.0, 0.0, 0.0, 0.0, 0.0)
     gap = -_delta(gp, side, a, x_free)
     assert gap == pytest.approx(5e-6, rel=1e-6)
     v_n = xd * gp[_G_CT]

@@ -113,7 +113,7 @@ def _post(m: DynamicsModel, t: np.ndarray, x: np.ndarray, xd: np.ndarray, a: np.
                                         m.pocket_length, m.pocket_viscosity,
                                         m.pocket_clearance)
     rf = rib_forces(g, a, x, inner_speed=m.inner_speed, cage_speed=m.cage_speed,
-                    roller_spin=spin, skew_rate=ad, axial_speed=xd, pocket_speed=zd,
+                    roller_spin=spin, skew_rate=ad, axial_speed=xd,
                     friction_coefficient=m.rib_friction,
                     mixture_viscosity=m.mixture_viscosity, smooth_sign=SIGN_REGULARISATION)
     heat_l, heat_r = rf.heat_left, rf.heat_right

@@ -160,8 +160,8 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     raceway axial forces on the roller, i.e. their reaction on the inner ring (eq. 20
     line 1) [N]."""
     gp = p[:_G_N]
-    fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, zd, p[_MU], p[_FG], p[_SREG])
-    fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, zd, p[_MU], p[_FG], p[_SREG])
+    fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
+    fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
     sl = face_squeeze(gp, SIDE_LEFT, a, x, ad, xd, p[_ETR], p[_FLOOR])
     sr = face_squeeze(gp, SIDE_RIGHT, a, x, ad, xd, p[_ETR], p[_FLOOR])
     m_rib = fl[F_MSKEW] + fr[F_MSKEW] + sl[2] + sr[2]

@@ -4,7 +4,8 @@ The coupled all-roller + cage integration of paper 003 (Zhang et al. 2021, seed
 ``003_743e023ae6e45686.txt`` [zhang2021_abnormal_wear], eqs. 18-19;
 :mod:`~thermobearing.skidding.roller_dynamics_coupled`) needs, for every roller and every
 refresh of its traction linearisation, the raceway shear S (roller moment balance / (D/2)
-plus the pocket-film friction), the net orbital force F_d and the outer contact load Q_o of
+plus the pocket-film friction), the net orbital force F_d, the outer contact load Q_o and
+the outer contact's own shear S_o (since 2026-11-23: each contact's spin slope) of
 paper 000's closed-form traction model (Li et al. 2018, seed ``000_3b5ca6eed61dd596.txt``
 [li2018_nu214_skidding], eqs. 12-15, 20-38, evaluated by
 :func:`thermobearing.skidding.roller_residual.evaluate`). Those are per-roller functions of
