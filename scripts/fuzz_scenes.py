@@ -801,7 +801,8 @@ def _options(rng: np.random.Generator, doc: dict[str, Any], picks: list[BearingE
         else:
             models["film"] = str(rng.choice(POINT_FILMS + LINE_FILMS))
         drawn.append("film")
-    if kin != "none" and rng.random() < 0.12 and _source_option(rng, models):
+    if kin != "none" and rng.random() < 0.12 and _source_option(
+            rng, models, any(e.kind != "cylindrical" for e in picks)):
         drawn.append("srcopt")
     if "solver" in doc and rng.random() < 0.1:
         # the chunk repeat threshold, from eager (0.02) to hardly ever (3)
@@ -816,12 +817,22 @@ OPTION_SOURCES = ("cage_guide", "churning_cage", "churning_elements", "churning_
                   "pocket_friction", "raceway_traction")
 
 
-def _source_option(rng: np.random.Generator, models: dict[str, Any]) -> bool:
+#: heat-source options the ball kinematics set to match their force models
+#: (kinematic_models._ball_heat_options): a scene's own value for them is refused
+BALL_SET_OPTIONS = {"raceway_traction": ("n_major", "n_minor"),
+                    "churning_elements": ("drag_coefficient", "oil_fraction", "oil_swirl"),
+                    "churning_cage": ("oil_fraction",), "churning_inner_ring": ("oil_fraction",),
+                    "cage_guide": ("cage_share",), "pocket_friction": ("friction_coefficient",)}
+
+
+def _source_option(rng: np.random.Generator, models: dict[str, Any], ball: bool = False
+                   ) -> bool:
     """One documented numeric parameter of a default heat source in ``[models]
     heat_source_options``, drawn inside its registry interval (an end now and then), one in
     twelve outside it (for the refusal's message): a friction coefficient, a gap, an oil
-    fraction, a share, the traction grid. False when no source fits (a listed
-    heat_sources without any of them)."""
+    fraction, a share, the traction grid. With ball bearings (``ball``) mostly not one that
+    the ball kinematics set themselves (BALL_SET_OPTIONS: refused, as a clash, by the run).
+    False when no source fits (a listed heat_sources without any of them)."""
     from thermobearing.heat_sources import HEAT_SOURCES
 
     listed = models.get("heat_sources")
@@ -830,7 +841,9 @@ def _source_option(rng: np.random.Generator, models: dict[str, Any]) -> bool:
         return False
     src = str(rng.choice(names))
     entry = HEAT_SOURCES.entry(src)
-    keys = sorted(k for k in entry.limits if entry.parameters.get(k) in ("-", "m", "N"))
+    skip = BALL_SET_OPTIONS.get(src, ()) if ball and rng.random() < 0.9 else ()
+    keys = sorted(k for k in entry.limits if entry.parameters.get(k) in ("-", "m", "N")
+                  and k not in skip)
     if not keys:
         return False
     key = str(rng.choice(keys))
@@ -1323,8 +1336,11 @@ def _unchanged_by_sweep(summary: Any, path: str, stderr: str) -> str | None:
     the sweep did not call unused (``"<path> is swept but not used"``): a setting ignored
     without a word, or one with no effect on these outputs (a skid limit changes only the
     flags; a flow or an inlet at rest changes nothing). Listed for a look, not a defect."""
-    if f"{path} is swept but not used" in stderr or len(summary) < 2:
-        return None
+    if (f"{path} is swept but not used" in stderr or len(summary) < 2
+            or path.startswith("checks.")):
+        return None  # a threshold changes the flags only, which may well stay the same
+    if "mean total loss [W]" in summary and (summary["mean total loss [W]"] == 0.0).all():
+        return None  # nothing turns (steps at rest): no setting changes a loss
     cols = [c for c in summary.columns if c != "case" and c != path
             and not c.startswith(path + " [") and is_numeric_dtype(summary[c])
             and not is_bool_dtype(summary[c])]

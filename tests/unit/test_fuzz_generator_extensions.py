@@ -82,6 +82,11 @@ def test_unchanged_sweep_is_listed_unless_noted(fuzz):
     assert fuzz._unchanged_by_sweep(same, path, noted) is None
     moved = same.assign(**{"mean total loss [W]": [12.5, 13.0]})
     assert fuzz._unchanged_by_sweep(moved, path, "") is None
+    # a threshold (flags only) and steps at rest (no loss to change) are not listed
+    assert fuzz._unchanged_by_sweep(same.rename(columns={path: "checks.skid_limit"}),
+                                    "checks.skid_limit", "") is None
+    rest = same.assign(**{"mean total loss [W]": [0.0, 0.0]})
+    assert fuzz._unchanged_by_sweep(rest, path, "") is None
 
 
 def test_option_draws_stay_in_the_documented_interval(fuzz):
