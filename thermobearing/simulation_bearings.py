@@ -101,6 +101,10 @@ def _supply_notes(scene: Scene) -> list[str]:
         notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
                      "not used: an oil bath without flow has no inlet; the bath temperature "
                      "is the network's oil node")
+    if sup.method == "grease" and sup.inlet_given and (
+            sup.inlet_temperature != scene.environment.ambient_temperature):
+        notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
+                     "not used: a grease fill has no inlet (no stream enters the bearing)")
     heat = bool(set(scene.outputs.want) & {"losses", "temperatures", "energy"})
     if sup.method == "oil_bath" and sup.flow > 0.0 and heat:
         notes.append(f"oil bath with supply.flow ({sup.flow * 6e4:g} L/min): the flow runs "

@@ -2,7 +2,8 @@
 a word. A grease supply with a flow (``flow = "5 L/min"``) gave the network an oil stream
 through the bearing: an SKF 6304 at 3000 r/min settled at 21 degC instead of 42 degC with
 no flow. ``ball_rolling_resistance`` on a scene without ball bearings changed nothing.
-Both are refused naming the field."""
+Both are refused naming the field. A grease supply's inlet temperature (no stream enters)
+is noted as unused."""
 
 from __future__ import annotations
 
@@ -62,3 +63,12 @@ def test_ball_rolling_resistance_needs_a_ball_bearing():
     ball = loads_scene(_text(supply='method = "jet"\nflow = "1 L/min"',
                              models='ball_rolling_resistance = "harris"'))
     Simulation(ball, progress=False)  # a ball bearing: accepted
+
+
+def test_grease_inlet_temperature_is_noted_as_unused():
+    scene = loads_scene(_text(supply='method = "grease"\ninlet_temperature = "80 degC"'))
+    notes = [n for n in Simulation(scene, progress=False).notes
+             if n.startswith("supply.inlet_temperature (80 degC) is not used")]
+    assert len(notes) == 1 and "grease fill has no inlet" in notes[0]
+    plain = Simulation(loads_scene(_text()), progress=False)
+    assert not any(n.startswith("supply.inlet_temperature") for n in plain.notes)
