@@ -162,11 +162,16 @@ def _thermal_setting_notes(scene: Scene, thermal: bool) -> list[str]:
         return [f"{', '.join(unused)} {'is' if len(unused) == 1 else 'are'} not used: "
                 f"the outputs ({', '.join(scene.outputs.want) or 'none'}) run no thermal "
                 "network (add 'temperatures' to [outputs] want for it)"]
+    notes = []
     if scene.outputs.mode == "steady" and scene.outputs.interval is not None:
-        return [f"outputs.interval ({scene.outputs.interval:g} s) is not used: a steady run "
-                "(outputs.mode = \"steady\") gives one row per step; the interval adds rows "
-                "between the chunk ends of a transient run"]
-    return []
+        notes.append(f"outputs.interval ({scene.outputs.interval:g} s) is not used: a steady "
+                     "run (outputs.mode = \"steady\") gives one row per step; the interval "
+                     "adds rows between the chunk ends of a transient run")
+    if scene.outputs.mode == "steady" and "energy" in scene.outputs.want:
+        notes.append("outputs.want 'energy' gives no table in a steady run: the energy table "
+                     "books the heat generated, stored and carried away over the time of a "
+                     "transient (outputs.mode = \"transient\"); a steady state stores none")
+    return notes
 
 
 def level_notes(scene: Scene, name: str, bearing: Any) -> list[str]:

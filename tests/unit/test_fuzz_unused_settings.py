@@ -1,7 +1,8 @@
 """Scene fuzzing (session 17): settings of the thermal run that a scene's outputs leave
 unused ran without a word: ``[network]``, ``[solver]``, ``[measured]``, ``outputs.interval``
 and ``models.churning_heat_to`` of a scene without 'temperatures' / 'energy' (no network
-runs), and ``outputs.interval`` of a steady run. The run now says so in one note, and a
+runs), ``outputs.interval`` of a steady run, and 'energy' wanted from a steady run (no
+table). The run now says so in one note, and a
 sweep of such a setting names it before its cases run."""
 
 from __future__ import annotations
@@ -77,3 +78,12 @@ def test_sweep_of_an_unused_network_parameter_is_named(setting, unused):
     assert bool(lines) is unused
     if unused:
         assert lines[0].startswith(f"sweep: {path} is swept but not used")
+
+
+def test_energy_wanted_in_a_steady_run_is_noted():
+    text = BASE + NETWORK + ('\n[outputs]\nmode = "steady"\nwant = ["energy", "losses"]\n')
+    sim = Simulation(loads_scene(text), progress=False)
+    notes = [n for n in sim.notes if n.startswith("outputs.want 'energy'")]
+    assert len(notes) == 1 and "steady run" in notes[0]
+    res = sim.run()
+    assert "energy" not in res.tables and notes[0] in res.warnings
