@@ -79,7 +79,9 @@ are of the generator of their date):
   a documented numeric option of a default heat source (``srcopt``: cage_guide,
   churning_*, pocket_friction, raceway_traction) inside its registry interval, one in
   twelve outside it; table values that cannot be negative (films, film parameters,
-  contact pressures, cage speed ratios) or a cage speed ratio above 1 are defects.
+  contact pressures, cage speed ratios) or a cage speed ratio above 1 are defects, as is
+  any wanted output (not only the film) whose table is missing without an
+  ``outputs.want`` warning naming it.
 
 Usage::
 
@@ -1018,6 +1020,28 @@ class Case:
     inline: str = ""  # a protocol file's steps written inline (they must read the same)
 
 
+#: the table each wanted output gives, by outputs.mode ("report" gives none)
+WANTED_TABLES = {"film": ("film", "film"), "kinematics": ("kinematics", "kinematics"),
+                 "losses": ("losses", "losses"),
+                 "temperatures": ("temperatures", "steady_temperatures"),
+                 "energy": ("energy", None)}
+
+
+def missing_tables(scene: Any, results: Any) -> list[str]:
+    """Wanted outputs whose table is missing without a warning that starts
+    ``outputs.want`` and names it (a steady run's 'energy' says why it has none)."""
+    out = []
+    for want in scene.outputs.want:
+        transient, steady = WANTED_TABLES.get(want, (None, None))
+        table = transient if scene.outputs.mode == "transient" else steady
+        if want not in WANTED_TABLES or table in results.tables:
+            continue
+        if not any(str(w).startswith("outputs.want") and want in str(w)
+                   for w in results.warnings):
+            out.append(f"outputs.want holds {want}: no {table or want} table and no word why")
+    return out
+
+
 def first_difference(a: Any, b: Any, where: str = "scene", rel: float = 1e-9) -> str | None:
     """The first place where two scenes differ (dataclass fields, mappings, sequences;
     floats beyond ``rel`` relative: a scene's TOML writes 12 significant digits), or None."""
@@ -1138,9 +1162,7 @@ def _run_here(case: Case) -> None:
             case.outcome, case.message = "DEFECT", f"check refuses what runs: {refused}"
             return
         problems = check_results(results, scene.models.get("kinematics") == "none")
-        if "film" in scene.outputs.want and "film" not in results.tables and not any(
-                str(w).startswith("outputs.want") for w in results.warnings):
-            problems.append("outputs.want holds film: no film table and no word why")
+        problems += missing_tables(scene, results)
         leaked = sorted({f"{w.category.__name__}: {w.message}" for w in caught
                          if not issubclass(w.category, DeprecationWarning)})
         case.notes.extend(leaked)

@@ -123,3 +123,19 @@ def test_result_check_flags_negative_films_and_a_cage_faster_than_the_shaft(fuzz
     assert any("above 1" in p for p in fuzz.check_results(_Results({"kinematics": fast})))
     film = pd.DataFrame({"speed [rpm]": [1000.0], "central film [um]": [-0.01]})
     assert any("negative" in p for p in fuzz.check_results(_Results({"film": film})))
+
+
+def test_missing_wanted_tables_need_a_word(fuzz):
+    from types import SimpleNamespace
+
+    def scene(mode, *want):
+        return SimpleNamespace(outputs=SimpleNamespace(mode=mode, want=want))
+
+    got = _Results({"losses": pd.DataFrame(), "steady_temperatures": pd.DataFrame()})
+    assert fuzz.missing_tables(scene("steady", "temperatures", "losses", "report"), got) == []
+    (problem,) = fuzz.missing_tables(scene("steady", "energy", "losses"), got)
+    assert "energy" in problem
+    got.warnings = ["outputs.want 'energy' gives no table in a steady run: ..."]
+    assert fuzz.missing_tables(scene("steady", "energy", "losses"), got) == []
+    assert fuzz.missing_tables(scene("transient", "temperatures"), got) == [
+        "outputs.want holds temperatures: no temperatures table and no word why"]
