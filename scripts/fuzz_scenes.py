@@ -284,8 +284,11 @@ def _outputs(rng: np.random.Generator, kin: str) -> tuple[dict[str, Any], str]:
     mode = "transient" if pick == "transient" else "steady"
     if rng.random() < 0.2:
         # a mix as users write it: the film table (or the report) beside the others
+        # (energy beside a steady run's outputs: no table, the run must say why)
         extra = str(rng.choice(["film", "report"] + (["kinematics"] if kin != "none"
-                                                      else [])))
+                                                      else [])
+                               + (["energy"] if pick == "steady_temperatures"
+                                  else [])))
         if extra not in want:
             want = [*want, extra]
     return {"mode": mode, "want": want}, pick
