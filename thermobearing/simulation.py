@@ -214,6 +214,7 @@ class Simulation:
         self._warning_groups = WarningGroups(self.warnings)
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
+        self._check_option_clashes()
         # identical bearings (same preset and overrides) at the same state share results
         # (bearing key, step) -> (viscosity, result, its validity warnings, bearing solved);
         # an identical bearing in the same state takes the result and the warnings
@@ -466,6 +467,34 @@ class Simulation:
         self._heat_replayed.add((batch, bearing))
         for message in messages:
             self._warning_groups.add(message, bearing)
+
+    def _check_option_clashes(self) -> None:
+        """Refuse, before anything is solved, a ``[models] heat_source_options`` parameter
+        that a ball bearing's kinematics sets to match its own force models (the same rule
+        as :meth:`_heat_options`, which met it only at the first heat evaluation, after
+        ``thermobearing check`` had passed). Which parameters the ball kinematics set does
+        not depend on the speed (``skidding.ball_models.heat_context_options``)."""
+        from .kinematic_models import _ball_heat_options
+
+        if not self.source_options:
+            return
+        for b in self.bearings:
+            if not b.is_ball or b.kinematics_name not in ("race_control", "skidding"):
+                continue
+            speed = next((s.speed for s in self.scene.schedule.steps if s.speed > 0), 0.0)
+            if speed == 0.0:  # every step at rest: no heat evaluation takes the options
+                continue
+            owned = _ball_heat_options(b.bearing, self.supply, speed,
+                                       b.kin_options.get("params"))
+            for src, params in self.source_options.items():
+                clash = sorted(set(params) & set(owned.get(src, {})))
+                if clash:
+                    raise InputError(
+                        f"models.heat_source_options.{src}.{clash[0]}", params[clash[0]],
+                        f"a parameter the {b.kinematics_name} kinematics of bearing "
+                        f"'{b.name}' does not set: it sets "
+                        f"{', '.join(sorted(owned[src]))} to match its own force models "
+                        "(change those through the bearing's calibration instead)")
 
     def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:
         """Heat-source options: those matching the kinematics' force models, plus where

@@ -335,15 +335,15 @@ def test_bad_heat_source_options_name_the_field(models, field):
 def test_heat_source_option_set_by_the_kinematics_is_refused():
     """The solver's own force-model options (here the pocket friction of the QJ1044's
     skidding solver) cannot be overridden: the heat would no longer be the power of the
-    forces the solver balanced."""
+    forces the solver balanced. Refused when the scene is built (``thermobearing check``),
+    not at the first heat evaluation."""
     from thermobearing.scene import load_scene
 
     scene = load_scene()
     models = dict(scene.models)
     models["heat_source_options"] = {"pocket_friction": {"friction_coefficient": 0.1}}
-    sim = Simulation(dataclasses.replace(scene, models=models), progress=False)
     with pytest.raises(InputError, match="pocket_friction.friction_coefficient"):
-        sim.run()
+        Simulation(dataclasses.replace(scene, models=models), progress=False)
 
 
 def test_default_rib_friction_left_out_where_the_geometry_cannot_host_it():
