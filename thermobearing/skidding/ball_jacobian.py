@@ -284,17 +284,16 @@ def _rolling_jac(geo: np.ndarray, ci: int, ry: float, br: float, kp: np.ndarray,
                  dgeo: np.ndarray, dnorm: np.ndarray, dext: np.ndarray, dsum: np.ndarray,
                  grad: np.ndarray) -> None:
     """Derivatives of the EHL rolling-resistance terms of loaded contact ``ci``
-    (``ball_residual_kernels._rolling_terms``: f_b = -F_R/2 sgn(u_b) at the contact point,
-    P_b = F_R/2 (sgn(u_b) + sgn(u_r)) R_P / b_r at the ball centre) added to the ball
-    balances' derivatives ``dsum`` (rows sft, sma, smr) in the N_DIR directions; the signs
-    are piecewise constant (derivative 0 away from u = 0)."""
+    (``ball_residual_kernels._rolling_terms``: f_b = -F_R/2 sgn(u_e) at the contact point,
+    P_b = F_R sgn(u_e) R_P / b_r at the ball centre) added to the ball
+    balances' derivatives ``dsum`` (rows sft, sma, smr) in the N_DIR directions; the sign
+    is piecewise constant (derivative 0 away from u_e = 0, where F_R vanishes)."""
     ue, vy = geo[G_UE, ci], geo[G_VY, ci]
     q, p0, a_e, b_e = geo[G_Q, ci], geo[G_P0, ci], geo[G_A, ci], geo[G_B, ci]
     pa, pr = geo[G_PA, ci], geo[G_PR, ci]
     f0 = _rolling_grad(ue, vy, q, p0, geo[G_RX, ci], ry, kp, grad)
-    ub, ur = ue + 0.5 * vy, ue - 0.5 * vy
-    sb = 1.0 if ub > 0.0 else (-1.0 if ub < 0.0 else 0.0)
-    sr = 1.0 if ur > 0.0 else (-1.0 if ur < 0.0 else 0.0)
+    sb = 1.0 if ue > 0.0 else (-1.0 if ue < 0.0 else 0.0)
+    sr = sb
     f_b = -0.5 * f0 * sb
     rp = br + pr
     for d in range(N_DIR):

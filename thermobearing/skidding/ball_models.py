@@ -124,11 +124,15 @@ def heat_context_options(bearing, supply, speed: float, params: BallParameters,
                          rolling_factor: float | None = None) -> dict:
     """``HeatContext.options`` matching the solver's force models (see module docstring).
 
-    With ``params.rolling_resistance`` other than "none", the options of the
-    ``ehl_rolling_resistance`` source (its point-contact model, the reduction and the
-    bearing-level factor ``rolling_factor`` the solver used, ``rolling_supply_factor``;
-    None: the source takes it from the solver's kinematic state); that source must then be
-    among the scene's heat sources for the heat to close."""
+    With ``params.rolling_resistance`` other than "none", an ``ehl_rolling_resistance``
+    entry; that source must be among the scene's heat sources for the heat to close.
+    ``rolling_factor`` None (default): no model named, the source books the rolling forces
+    the solver balanced (the kinematic state's ``raceway_rolling_force``) against the
+    entrainment, F_R |u_e| per contact, the solver's power. Given (the bearing-level factor
+    the solver used, ``rolling_supply_factor``): the source re-evaluates the force from the
+    state's contact fields with the model, the reduction and that factor, and books it per
+    surface, f_p (|u_b| + |u_r|) -- the same heat unless a surface's speed has the other
+    sign than the entrainment (nearly stopped unloaded balls)."""
     x = _oil_fraction(bearing, supply, speed, params)
     out = {
         "raceway_traction": {"n_major": params.n_major, "n_minor": params.n_minor},
@@ -140,11 +144,17 @@ def heat_context_options(bearing, supply, speed: float, params: BallParameters,
         "pocket_friction": {"friction_coefficient": params.pocket_friction},
     }
     if params.rolling_resistance != "none":
-        out["ehl_rolling_resistance"] = {
-            "rolling_force": params.rolling_resistance,
-            "reduction": params.rolling_resistance_reduction}
+        # no model named: the source books the forces the solver balanced (kinematic state
+        # extras ``raceway_rolling_force``), against the entrainment as the solver applies
+        # them; naming the model here made it re-evaluate them and book f_p (|u_b| + |u_r|),
+        # more than the solver's F_R |u_e| where a nearly stopped ball's surface speed has
+        # the other sign (unloaded balls at low speed)
+        out["ehl_rolling_resistance"] = {}
         if rolling_factor is not None:
-            out["ehl_rolling_resistance"]["supply_factor"] = float(rolling_factor)
+            out["ehl_rolling_resistance"] = {
+                "rolling_force": params.rolling_resistance,
+                "reduction": params.rolling_resistance_reduction,
+                "supply_factor": float(rolling_factor)}
     return out
 
 

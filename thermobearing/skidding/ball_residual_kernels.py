@@ -308,26 +308,29 @@ def _rolling_terms(geo: np.ndarray, n: int, ry: float, br: float,
     """EHL rolling resistance of contact n (loaded): (f_b, P_b, f_r, F_R) [N] along e_t.
 
     F_R = :func:`thermobearing.rolling_resistance.contact_rolling_force` (the heat
-    source's code path). The film's Poiseuille shear f_p = F_R/2 acts on each surface
-    against that surface's speed relative to the contact, u_b = u_e + V_y/2 (ball) and
-    u_r = u_e - V_y/2 (race): f_b = -f_p sgn(u_b) on the ball at the contact point, f_r =
-    -f_p sgn(u_r) on the race. The film pressure balances their sum (the film carries no
-    net tangential force); its rolling-direction resultant acts through each body's centre
-    (normals of a sphere / a ring pass through it; paper 000's roller share, see
-    ``skidding.roller_fluid``): on the ball P_b = -(f_b + f_r) R_P / b_r, R_P = b_r + p_r
-    the contact point's radius -- the share (1 - D cos(alpha)/d_m) at the inner race --
-    and the rest through the bearing axis on the ring (no torque). With that share the
-    film's forces do work f_b u_b + f_r u_r = -f_p (|u_b| + |u_r|) on the bodies in every
-    state, the heat the source books, so the energy identity holds."""
+    source's code path). The film's Poiseuille shear f_p = F_R/2 acts on each surface in
+    the direction of the inlet pressure gradient, i.e. against the entrainment u_e (the
+    pressure-driven part -(h/2) dp/dx of the Reynolds shear is the same on both surfaces;
+    as the roller solver, paper 000 eq. 5, and the ``ehl_rolling_resistance`` source's
+    carried forces): f_b = f_r = -f_p sgn(u_e) on the ball and on the race at the contact
+    point. The film pressure balances their sum (the film carries no net tangential force);
+    its rolling-direction resultant acts through each body's centre (normals of a sphere /
+    a ring pass through it; paper 000's roller share, see ``skidding.roller_fluid``): on
+    the ball P_b = -(f_b + f_r) R_P / b_r, R_P = b_r + p_r the contact point's radius --
+    the share (1 - D cos(alpha)/d_m) at the inner race -- and the rest through the bearing
+    axis on the ring (no torque). The film's forces then do work f_b u_b + f_r u_r =
+    -f_p |u_b + u_r| = -F_R |u_e| on the bodies in every state, the heat booked, so the
+    energy identity holds. The force is continuous in the state: sgn(u_e) changes only
+    where F_R ~ |u_e|^0.66 vanishes. (It used the sign of each surface's own speed, u_b =
+    u_e + V_y/2 and u_r = u_e - V_y/2: a force jumping by F_R where a ball's surface speed
+    crosses 0 -- the nearly stopped unloaded balls of a radially loaded bearing at low
+    speed sit there, and Newton stalled at residuals of 1e-9..1e-4.)"""
     f_r_total = contact_rolling_force(geo[G_UE, n], geo[G_VY, n], geo[G_Q, n],
                                       geo[G_P0, n], geo[G_RX, n], ry, kp)
-    fp = 0.5 * f_r_total
-    ub = geo[G_UE, n] + 0.5 * geo[G_VY, n]
-    ur = geo[G_UE, n] - 0.5 * geo[G_VY, n]
-    sb = 1.0 if ub > 0.0 else (-1.0 if ub < 0.0 else 0.0)
-    sr = 1.0 if ur > 0.0 else (-1.0 if ur < 0.0 else 0.0)
-    f_b = -fp * sb
-    f_r = -fp * sr
+    ue = geo[G_UE, n]
+    se = 1.0 if ue > 0.0 else (-1.0 if ue < 0.0 else 0.0)
+    f_b = -0.5 * f_r_total * se
+    f_r = f_b
     p_b = -(f_b + f_r) * (br + geo[G_PR, n]) / br
     return f_b, p_b, f_r, f_r_total
 
@@ -336,8 +339,8 @@ def _rolling_terms(geo: np.ndarray, n: int, ry: float, br: float,
 def _rolling_audit(X: np.ndarray, geo: np.ndarray, arc: np.ndarray,
                    c: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
     """EHL rolling resistance of a state: force F_R per contact (Z, k) [N], heat per contact
-    f_p (|u_b| + |u_r|) (Z, k) [W] and the torque the shaft supplies against the Poiseuille
-    shear on the inner race, sum of R_P f_p sgn(u_r) [N m] (:func:`_rolling_terms`).
+    -(f_b u_b + f_r u_r) = F_R |u_e| (Z, k) [W] and the torque the shaft supplies against
+    the Poiseuille shear on the inner race, sum of -R_P f_r [N m] (:func:`_rolling_terms`).
     geo (N_GEO, Z, k)."""
     nz, nk = X.shape[0], arc.shape[1]
     kp = c[C_RR:C_RR + N_KERNEL]

@@ -300,16 +300,22 @@ def _kinematic_state(system: ball_residual_system, X, det, names, heat):
         contacts=tuple(sets), attitude_angle=np.arctan2(X[:, 3], -X[:, 2]),
         azimuth=system.psi, pocket_normal_force=np.abs(X[:, 5]),
         pocket_sliding_speed=det["pocket_sliding"], element_drag_force=np.abs(det["Fd"]),
-        origin="skidding", extras=_state_extras(system, heat, det))
+        origin="skidding", extras=_state_extras(system, heat, det, names))
 
 
-def _state_extras(system: ball_residual_system, heat, det) -> dict:
+def _state_extras(system: ball_residual_system, heat, det, names) -> dict:
     """Extras of the kinematic state: the solver's heat and shaft torque, and with the EHL
     rolling resistance on, its parameters (``rolling_resistance.kernel_parameters``: the
-    ``ehl_rolling_resistance`` source takes its bearing-level factor from them)."""
+    ``ehl_rolling_resistance`` source takes its bearing-level factor from them) and the
+    rolling force F_R the solver balanced per contact set (``raceway_rolling_force``: race
+    name -> (Z,) [N]; the source books F_R |u_e| of exactly these forces, against the
+    entrainment as the solver applies them, ``ball_residual_kernels._rolling_terms``)."""
     out = {"solver_heat": heat, "shaft_torque": det["shaft_torque"]}
     if system.rolling:
         out["rolling_resistance"] = system._c[C_RR:].copy()
+        force = det["rolling_force"]
+        out["raceway_rolling_force"] = {name: np.array(force[:, k], dtype=float)
+                                        for k, name in enumerate(names)}
     return out
 
 
