@@ -437,6 +437,23 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
 
 
 @njit(cache=True)
+def _contact_radii(gp: np.ndarray, side: int, a: float, py: float, pz: float,
+                   blend: float) -> tuple[float, float]:
+    """Principal radii (R_x, R_y) [m] of the end-face / rib contact at the support point of
+    :func:`_support` (paper 003 eqs. 1-13): on the chamfer blend (``blend`` > 0.5) the
+    chamfer's radius and the rib cone's radius of curvature in the skewed plane; on the
+    crowned end face the sphere's radius combined with the rib cone's."""
+    ct = gp[_G_CT]
+    st = gp[_G_ST]
+    if blend > 0.5:
+        rho = math.sqrt(py * py + pz * pz)
+        mz = side * ct * math.sin(a)
+        return gp[_G_RCH], rho / math.sqrt(st * st + mz * mz)
+    rs = gp[_G_RS]
+    return 1.0 / (1.0 / rs + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py)), rs
+
+
+@njit(cache=True)
 def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
                 om: float, xd: float, mu: float, f_g: float, sreg: float
                 ) -> tuple[float, float, float, float, float, float, float, float, float,
@@ -461,15 +478,7 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     ct = gp[_G_CT]
     st = gp[_G_ST]
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    rs = gp[_G_RS]
-    if blend > 0.5:
-        rho = math.sqrt(py * py + pz * pz)
-        mz = side * ct * math.sin(a)
-        rx = gp[_G_RCH]
-        ry = rho / math.sqrt(st * st + mz * mz)
-    else:
-        rx = 1.0 / (1.0 / rs + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py))
-        ry = rs
+    rx, ry = _contact_radii(gp, side, a, py, pz, blend)
     q = 0.0
     if delta > 0.0:
         q = _stiffness_bh(rx, ry, gp[_G_E]) * delta * math.sqrt(delta)
@@ -588,15 +597,7 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
         return 0.0, 0.0, 0.0, 0.0
     h, px, py, pz, blend = _support(gp, side, a)
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    st = gp[_G_ST]
-    if blend > 0.5:
-        rho = math.sqrt(py * py + pz * pz)
-        mz = side * ct * math.sin(a)
-        rx = gp[_G_RCH]
-        ry = rho / math.sqrt(st * st + mz * mz)
-    else:
-        rx = 1.0 / (1.0 / gp[_G_RS] + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py))
-        ry = gp[_G_RS]
+    rx, ry = _contact_radii(gp, side, a, py, pz, blend)
     gap = max(-delta, floor)
     f_s = 6.0 * math.pi * eta * rx * ry * v_n / gap
     r_z = -px * math.sin(a) + pz * math.cos(a)

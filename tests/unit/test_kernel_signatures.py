@@ -23,7 +23,7 @@ _CONTACT_INPUTS = range(7, 17)
 # specialised on purpose: the rib contact per face (side -1 / 1 literal: 2-4 % faster in
 # the roller dynamics' right-hand side than a run-time side, measured)
 _SPECIALISED = {"thermobearing.rib.face_values", "thermobearing.rib.face_contact",
-                "thermobearing.rib._support"}
+                "thermobearing.rib._support", "thermobearing.rib._contact_radii"}
 
 
 def _thermobearing_dispatchers() -> list[tuple[str, CPUDispatcher]]:
