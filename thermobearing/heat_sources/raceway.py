@@ -470,20 +470,23 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             fr = np.where(loaded, q_x, 0.0)
             if thermal != "none":
                 fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
-        f_p = 0.5 * fr  # Poiseuille shear force on each surface
-        heat_e = f_p * np.abs(u_e)
-        heat_r = f_p * np.abs(u_r)
+        # Poiseuille shear F_P = Q_x/2 on each surface against the entrainment (the
+        # direction of the inlet pressure gradient), as both skidding solvers balance it:
+        # its work is F_P |u_e + u_r| (equal to F_P (|u_e| + |u_r|) unless a surface runs
+        # backwards, where the per-surface reading jumped by Q_x)
+        f_p = 0.5 * fr
+        sign = np.where(cs.entrainment_speed >= 0.0, 1.0, -1.0)
         share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
                                elem_mat, ring_mat)
-        total = heat_e + heat_r
+        total = f_p * np.abs(u_e + u_r)
         to_elem = float(np.sum(share * total))
         to_ring = float(np.sum((1.0 - share) * total))
         roles["elements"] += to_elem
         roles[cs.ring_role] += to_ring
         components[f"{cs.race} rolling resistance"] = float(np.sum(total))
         split[f"{cs.race} rolling resistance"] = {"elements": to_elem, cs.ring_role: to_ring}
-        pairs.append(ForcePair(f"{cs.race} film on element", -f_p * np.sign(u_e), u_e))
-        pairs.append(ForcePair(f"{cs.race} film on race", -f_p * np.sign(u_r), u_r))
+        pairs.append(ForcePair(f"{cs.race} film on element", -f_p * sign, u_e))
+        pairs.append(ForcePair(f"{cs.race} film on race", -f_p * sign, u_r))
         forces[f"{cs.race}_rolling_force"] = fr
     return HeatResult(
         source=name, power_by_role=roles, components=components,

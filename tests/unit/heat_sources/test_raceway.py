@@ -235,3 +235,21 @@ def test_precomputed_tractions_are_used_only_when_they_match(qj1044, vg46, race_
     assert run(moved).total == pytest.approx(base, rel=1e-14)
     with pytest.raises(InputError, match="traction"):
         sets[0].with_(traction=marked[0])
+
+
+def test_rolling_resistance_with_a_surface_running_backwards(qj1044, vg46, race_control_state):
+    """Gross sliding (u_e = 22.5 m/s, u_r = -2.5 m/s): the Poiseuille shear Q_x/2 acts on
+    both surfaces against the entrainment, as the skidding solvers balance it, so its work
+    is Q_x |u_e + u_r| / 2 = Q_x u_m and the force pairs' power is the booked heat. Booked
+    surface by surface against each surface's own speed it was Q_x (|u_e| + |u_r|) / 2,
+    Q_x/2 x 5 m/s more, a jump of Q_x where a surface speed crosses zero."""
+    op, _ = race_control_state
+    z = qj1044.n_elements
+    ctx = make_context(qj1044, vg46, op, _sliding_state(z, slide=25.0))
+    with pytest.warns(ValidityWarning, match="line-contact"):
+        r = raceway.ehl_rolling_resistance(ctx)
+    qx = r.forces["inner_rolling_force"]
+    assert np.all(qx > 0)
+    assert r.components["inner rolling resistance"] == pytest.approx(
+        float(np.sum(qx * 10.0)), rel=1e-12)
+    assert sum(p.power for p in r.force_pairs) == pytest.approx(r.total, rel=1e-12)
