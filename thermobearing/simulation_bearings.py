@@ -212,6 +212,13 @@ def _apply_calibration(bearing: Any, spec: Any, scene: Scene) -> tuple[Any, Any,
     if "diametral_clearance" not in (spec.overrides or {}):
         bearing = with_clearance(bearing, cal["diametral_clearance"])
     cond = cal["condition"]
+    if scene.models.get("kinematics", "skidding") == "none":
+        # a global friction model runs no ball force model: only the clearance is used
+        used = ("" if "diametral_clearance" in (spec.overrides or {}) else
+                f"calibrated diametral clearance from {path.name}; ")
+        note = (f"{used}its ball force-model parameters are not used with kinematics = "
+                "\"none\"") if used else ""
+        return cal["params"], bearing, note
     note = (f"calibrated ball force-model parameters from {path.name} "
             f"(fitted at {cond.get('speed')}, {cond.get('flow')}; other conditions are "
             f"predictions)")

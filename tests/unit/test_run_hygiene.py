@@ -267,3 +267,21 @@ def test_kinematics_table_units_and_noise_floor(tmp_path):
     for col in angles:
         assert table[col].iloc[0] > 100.0 * CONTACT_ANGLE_FLOOR
         assert table[col].iloc[0] == pytest.approx(raw[col], rel=1e-12)
+
+
+def test_global_friction_run_names_only_the_calibrated_clearance():
+    """QJ1044 with kinematics = "none": the calibration file's ball force-model parameters
+    are not used (no ball force model runs), only its diametral clearance; the run said it
+    used the 'calibrated ball force-model parameters'."""
+    import dataclasses
+
+    from thermobearing.scene import load_scene
+
+    scene = load_scene()
+    models = dict(scene.models, kinematics="none", heat_sources=["global_friction"])
+    sim = Simulation(dataclasses.replace(scene, models=models), progress=False)
+    notes = [n for n in sim.notes if "calibrat" in n]
+    assert notes == ["calibrated diametral clearance from QJ1044.calibration.toml; its ball "
+                     "force-model parameters are not used with kinematics = \"none\""]
+    assert any("force-model parameters from" in n
+               for n in Simulation(scene, progress=False).notes)
