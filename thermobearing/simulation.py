@@ -189,7 +189,8 @@ class Simulation:
             axial_direction(f"bearings[{i_spec}].load_share.axial", b, spec.axial_share,
                             scene.schedule.steps)
             own_steps = record.steps(scene.schedule.steps)
-            radial_load_contact(spec.name, b, own_steps, kin_name)
+            if _needs(scene)["kinematics"]:  # a film-only scene runs no kinematics
+                radial_load_contact(spec.name, b, own_steps, kin_name)
             no_path = axial_load_path(spec.name, b, own_steps, kin_name, sources)
             if no_path:
                 dropped.append(no_path)

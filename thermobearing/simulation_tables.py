@@ -148,7 +148,11 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
         q = np.asarray(cs.normal_load)
         j = int(np.argmax(q))
         extra: dict[str, Any] = {}
-        if numerical is not None:
+        # no element touches this raceway (an unloaded inner ring: the centrifugal force
+        # holds the balls on the outer one): no contact, so no film -- left empty, not 0 um
+        # (Lambda 0 flagged boundary lubrication of a contact that does not exist)
+        touching = float(q[j]) > 0.0
+        if numerical is not None and touching:
             extra = numerical(cs.race, float(q[j]),
                               float(np.asarray(cs.entrainment_speed)[j]), t_c)
         rows.append({"race": cs.race, "max load [N]": float(q[j]),
@@ -158,7 +162,8 @@ def film_table(b: _Bearing, lubricant: Any, step: Step,
                      "contact angle [deg]": math.degrees(float(np.asarray(cs.contact_angle)[j])),
                      "entrainment speed [m/s]": float(np.asarray(cs.entrainment_speed)[j]),
                      "central film [um]": (float(np.asarray(cs.film_thickness)[j]) * 1e6
-                                           if cs.film_thickness is not None else math.nan)})
+                                           if cs.film_thickness is not None and touching
+                                           else math.nan)})
         if extra:
             row = rows[-1]
             row["closed-form central film [um]"] = row["central film [um]"]

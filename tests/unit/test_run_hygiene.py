@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import warnings
 
+import numpy as np
 import pytest
 
 from thermobearing.errors import ConvergenceError
@@ -285,3 +286,42 @@ def test_global_friction_run_names_only_the_calibrated_clearance():
                      "force-model parameters are not used with kinematics = \"none\""]
     assert any("force-model parameters from" in n
                for n in Simulation(scene, progress=False).notes)
+
+
+FILM_AT_ZERO_LOAD = """
+title = "film only at zero load"
+[[bearings]]
+name = "a"
+preset = "SKF6304"
+[lubricant]
+preset = "ISO_VG68"
+[supply]
+method = "jet"
+flow = "1 L/min"
+[schedule]
+steps = [{ duration = "1 min", speed = "3000 rpm", radial_load = "0 N", axial_load = "0 N" }]
+[models]
+kinematics = "skidding"
+[outputs]
+mode = "steady"
+want = ["film"]
+"""
+
+
+def test_film_only_scene_at_zero_load_runs_and_flags_no_missing_contact():
+    """A film-only scene runs no kinematics, so the skidding solver's refusal of a turning
+    step without load does not apply (it was raised, naming the skidding solver). The
+    unloaded inner raceway has no contact: its film is left empty, not 0 um (whose Lambda 0
+    flagged boundary lubrication of a contact that does not exist); the outer contact,
+    loaded by the centrifugal force, keeps its film."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sim = Simulation(loads_scene(FILM_AT_ZERO_LOAD), progress=False)
+        res = sim.run()
+    film = res.tables["film"].set_index("race")
+    assert film.loc["inner", "max load [N]"] == 0.0
+    assert np.isnan(film.loc["inner", "central film [um]"])
+    assert np.isnan(film.loc["inner", "film parameter [-]"])
+    assert film.loc["outer", "max load [N]"] > 0.0
+    assert film.loc["outer", "central film [um]"] > 0.0
+    assert not any("Lambda" in w for w in sim.warnings)
