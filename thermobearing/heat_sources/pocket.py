@@ -194,7 +194,6 @@ def pocket_friction(ctx: HeatContext) -> HeatResult:
     """Element-pocket friction heat, paper 002 eq. 19 (balls and rollers)."""
     name = "pocket_friction"
     kin = ctx.kinematics
-    d = ctx.bearing.element_diameter
     solver = _solver_pocket_friction(ctx, name)
     if solver is not None:
         return _solver_pocket_heat(ctx, name, solver)
@@ -218,12 +217,7 @@ def pocket_friction(ctx: HeatContext) -> HeatResult:
                                  "a composite rms roughness > 0 [m] with pocket_film")
             mu = float(pocket_friction_coefficient(float(film) / float(sigma), mu_b, mu_h))
             regime = f"Lambda = {float(film) / float(sigma):.3g}"
-    share = float(ctx.option(name, "element_share", 0.5))
-    check_range(f"options[{name}].element_share", share, 0.0, 1.0)
-    if kin.pocket_sliding_speed is not None:
-        v = kin.pocket_sliding_speed
-    else:
-        v = 0.5 * d * np.abs(kin.element_spin)
+    share, v = _share_and_sliding_speed(ctx, name)
     force = kin.pocket_normal_force
     heat_j = pocket_heat(force, mu, v)
     q = float(np.sum(heat_j))
@@ -272,13 +266,7 @@ def _solver_pocket_heat(ctx: HeatContext, name: str, friction: np.ndarray) -> He
     pocket wall. Option ``element_share`` as for the friction-coefficient form.
     """
     kin = ctx.kinematics
-    d = ctx.bearing.element_diameter
-    share = float(ctx.option(name, "element_share", 0.5))
-    check_range(f"options[{name}].element_share", share, 0.0, 1.0)
-    if kin.pocket_sliding_speed is not None:
-        v = kin.pocket_sliding_speed
-    else:
-        v = 0.5 * d * np.abs(kin.element_spin)
+    share, v = _share_and_sliding_speed(ctx, name)
     heat_j = friction * np.abs(v)
     q = float(np.sum(heat_j))
     normal = np.abs(np.asarray(kin.pocket_normal_force, float))
@@ -297,3 +285,15 @@ def _solver_pocket_heat(ctx: HeatContext, name: str, friction: np.ndarray) -> He
                  "sliding_over_cage_speed": (float(np.mean(np.abs(v))) / abs(
                      0.5 * ctx.bearing.pitch_diameter * kin.cage_speed)
                      if kin.cage_speed != 0 else math.inf)})
+
+
+def _share_and_sliding_speed(ctx: HeatContext, name: str) -> tuple[float, np.ndarray]:
+    """The pocket heat's element share [-] (option ``element_share``, default 0.5, in
+    [0, 1]) and the pocket sliding speed [m/s]: the kinematic state's own, else the
+    element's surface speed relative to the cage, (D/2) |omega_spin|."""
+    kin = ctx.kinematics
+    share = float(ctx.option(name, "element_share", 0.5))
+    check_range(f"options[{name}].element_share", share, 0.0, 1.0)
+    if kin.pocket_sliding_speed is not None:
+        return share, np.asarray(kin.pocket_sliding_speed)
+    return share, 0.5 * ctx.bearing.element_diameter * np.abs(kin.element_spin)
