@@ -57,6 +57,13 @@ class SweepParameter:
     dropped: tuple[str, ...] = ()
 
 
+#: a quantity as a scene writes it: a number, then its unit with or without a space
+_QUANTITY = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(.*?)\s*$")
+#: significant digits of a swept number written back into the scene (a double's 15, less
+#: the float noise of a range's start + i * step)
+_DIGITS = 12
+
+
 def _split_unit(text: str) -> tuple[str, str]:
     """``"15,33 L/min"`` -> ``("15,33", "L/min")``: the numbers (ending in a digit or a dot),
     then the unit (whatever follows, starting with a letter or ``%``). Text that does not
@@ -88,9 +95,10 @@ def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
     if value is None and len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
         value = bearing_file_value(scene_dict, parts[1], parts[3:])
     if isinstance(value, str):
-        words = value.split(maxsplit=1)
-        if len(words) == 2:
-            return words[1]
+        # the unit as the scene writes it, with or without a space ("95 degF", "95degF")
+        m = _QUANTITY.match(value)
+        if m and m.group(1):
+            return m.group(1)
     return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
 
 
@@ -135,7 +143,7 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
             raise InputError(f"--set {path}", raw, "start <= stop and step > 0")
         n = int(math.floor((b - a) / d + 1e-9)) + 1
         unit = unit or _existing_unit(scene_dict, path)
-        return SweepParameter(path, tuple(f"{a + i * d:g} {unit}" if unit else a + i * d
+        return SweepParameter(path, tuple(f"{a + i * d:.{_DIGITS}g} {unit}" if unit else a + i * d
                                           for i in range(n)))
     items = [v.strip() for v in raw.split(",") if v.strip()]
     if not items:
@@ -158,7 +166,7 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         x = _number(num.strip(), f"--set {path}")
         unit = unit or trailing
         if unit:
-            values.append(f"{x:g} {unit}")
+            values.append(f"{x:.{_DIGITS}g} {unit}")
         else:  # a count written as a whole number stays an integer (n_balls=18,20)
             values.append(int(num) if re.fullmatch(r"\s*[-+]?\d+\s*", num) else x)
     return _unique(path, values, items)

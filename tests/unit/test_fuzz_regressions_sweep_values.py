@@ -1,0 +1,34 @@
+"""Sweep ``--set`` values found by the scene fuzzer (scripts/fuzz_scenes.py, seeds 47 on):
+a bare number took six significant digits (``supply.flow=1.234567891`` ran 1.23457 L/min),
+and a scene that writes its quantity without a space before the unit (``"95degF"``, valid
+for the scene) had bare sweep numbers read in the default unit (degC) instead of its own."""
+
+from __future__ import annotations
+
+import pytest
+
+from thermobearing.sweep_params import parse_set
+from thermobearing.units import to_si
+
+
+def test_bare_numbers_keep_their_digits():
+    scene = {"supply": {"flow": "33 L/min"}}
+    p = parse_set("supply.flow=1.234567891,2.5", scene)
+    assert p.values == ("1.234567891 L/min", "2.5 L/min")
+    r = parse_set("supply.flow=0.1:0.3:0.1", scene)  # a range: no float noise in the text
+    assert r.values == ("0.1 L/min", "0.2 L/min", "0.3 L/min")
+
+
+@pytest.mark.parametrize(("written", "unit"), [("95degF", "degF"), ("+308.15kelvin", "kelvin"),
+                                               (".5e2°C", "°C")])
+def test_bare_numbers_take_a_unit_written_without_a_space(written, unit):
+    scene = {"supply": {"inlet_temperature": written}}
+    p = parse_set("supply.inlet_temperature=100,120", scene)
+    assert p.values == (f"100 {unit}", f"120 {unit}")
+    assert to_si(p.values[0], "temperature") == pytest.approx(to_si(f"100 {unit}", "K"))
+
+
+def test_speed_written_without_a_space_in_a_step():
+    scene = {"schedule": {"steps": [{"speed": "1.5E+03rad/min"}]}}
+    p = parse_set("schedule.speed=1000,2000", scene)
+    assert p.values == ("1000 rad/min", "2000 rad/min")
