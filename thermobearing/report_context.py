@@ -129,10 +129,14 @@ def loss_temperature_note(tables: dict[str, pd.DataFrame], scene: Any) -> str:
     if "steady_temperatures" in tables:
         return ("The losses of each step are evaluated at that step's steady-state "
                 "temperatures (table steady_temperatures).")
-    t0 = scene.environment.initial_temperature - _KELVIN
+    from .unheated import unheated_temperature
+
+    t0, source = unheated_temperature(scene)
+    what = ("the oil supply's inlet temperature (the scene sets no initial temperature)"
+            if source == "supply.inlet_temperature" else "the scene's initial temperature")
     return (f"No thermal network ran (the outputs ask for no temperatures): the losses "
-            f"are evaluated with every component and the oil at the scene's initial "
-            f"temperature, {t0:.4g} degC. Warmer oil has a lower viscosity and lower "
+            f"are evaluated with every component and the oil at {what}, "
+            f"{t0 - _KELVIN:.4g} degC. Warmer oil has a lower viscosity and lower "
             f"viscous losses; add \"temperatures\" to [outputs] want for the losses at the "
             f"operating temperature.")
 
@@ -141,8 +145,11 @@ def oil_temperatures(losses: pd.DataFrame, tables: dict[str, pd.DataFrame],
                      scene: Any) -> pd.Series:
     """The oil temperature [K] each row of ``losses`` was evaluated at: the bearing's oil
     node (``<bearing>.oil``) at the row's time (transient) or of the row's step (steady),
-    else the scene's initial temperature (no network ran)."""
-    t0 = scene.environment.initial_temperature
+    else the temperature of a run without a network (no network ran:
+    :func:`thermobearing.unheated.unheated_temperature`)."""
+    from .unheated import unheated_temperature
+
+    t0, _ = unheated_temperature(scene)
     out = pd.Series(t0, index=losses.index, dtype=float)
     temps, steady = tables.get("temperatures"), tables.get("steady_temperatures")
     for name, g in losses.groupby("bearing") if "bearing" in losses else [(None, losses)]:
@@ -252,9 +259,10 @@ def _self_comparison_notes(losses: pd.DataFrame) -> list[str]:
 
 def _wants_network(scene: Any) -> bool:
     """True when the scene's losses are evaluated at temperatures a thermal network
-    computes (a transient with temperatures, or a steady state), not at its initial one."""
-    out = scene.outputs
-    return out.mode == "steady" or "temperatures" in out.want
+    computes (``temperatures`` or ``energy`` asked: the chain's ``network`` link,
+    :func:`thermobearing.simulation_chain._needs`; a steady mode without them runs no
+    network either), not at the temperature of a run without one."""
+    return bool(set(scene.outputs.want) & {"temperatures", "energy"})
 
 
 def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
@@ -358,7 +366,9 @@ def _case_oil_temperatures(scene: Any, result: Mapping[str, Any]) -> dict[str, f
     transient, or several steady points: the summary keeps only the last)."""
     names = [b.name for b in scene.bearings]
     if not _wants_network(scene):
-        return {n: scene.environment.initial_temperature for n in names}
+        from .unheated import unheated_temperature
+
+        return dict.fromkeys(names, unheated_temperature(scene)[0])
     if scene.outputs.mode != "steady" or len(scene.schedule.steps) != 1:
         return None
     out = {}

@@ -609,10 +609,13 @@ class Simulation:
 
     def _run_operating_points(self, writer: ResultsWriter | None
                               ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
-        """Kinematics and/or losses per schedule step at the initial temperature."""
+        """Kinematics and/or losses per schedule step at the temperature of a run without a
+        network (:func:`thermobearing.unheated.unheated_temperature`)."""
         from tqdm.auto import tqdm
 
-        t0 = self.scene.environment.initial_temperature
+        from .unheated import unheated_temperature
+
+        t0, _ = unheated_temperature(self.scene)
         temps = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), t0)
         kin_rows: list[dict[str, Any]] = []
         loss_rows: list[dict[str, Any]] = []

@@ -14,6 +14,7 @@ from typing import Any
 from .errors import InputError
 from .kinematic_models import KinematicsResult
 from .scene import Scene
+from .unheated import fed_stream
 
 
 @dataclass
@@ -122,19 +123,19 @@ def _supply_notes(scene: Scene) -> list[str]:
                      "cooling and its drag are not modelled (the network's oil stream carries "
                      "the oil's heat only)")
     thermal = bool(set(scene.outputs.want) & {"temperatures", "energy"})
-    stream = sup.method in ("jet", "circulation", "oil_air") or (
-        sup.method == "oil_bath" and sup.flow > 0.0)
     t_ini = scene.environment.initial_temperature
-    if not thermal and stream and sup.inlet_given and sup.inlet_temperature != t_ini:
-        # no network: the operating points are taken with every part and the oil at the
-        # initial temperature (Simulation._run_operating_points); a swept inlet changes
-        # nothing, which the user is told rather than left to find in identical rows
+    if (not thermal and fed_stream(sup) and sup.inlet_given
+            and sup.inlet_temperature != t_ini and scene.environment.initial_given):
+        # no network: the operating points are taken with every part and the oil at one
+        # temperature (thermobearing.unheated): the initial one when the scene gives it,
+        # which then wins over the inlet; a swept inlet changes nothing, which the user is
+        # told rather than left to find in identical rows
         notes.append(f"supply.inlet_temperature ({sup.inlet_temperature - 273.15:g} degC) is "
                      "not used: without 'temperatures' or 'energy' in [outputs] want no "
                      "thermal network runs, and the films, kinematics and losses are taken "
-                     "with the rings, the elements and the oil at "
-                     f"environment.initial_temperature ({t_ini - 273.15:g} degC); set that to "
-                     "the temperature of the operating point")
+                     "with the rings, the elements and the oil at the scene's "
+                     f"environment.initial_temperature ({t_ini - 273.15:g} degC); leave that "
+                     "out to take them at the inlet temperature")
     if sup.method != "oil_bath" and sup.level is not None:
         notes.append(f"supply.level ({sup.level * 1e3:g} mm) is not used by the "
                      f"{sup.method} supply: only an oil bath (supply.method = \"oil_bath\") "

@@ -249,7 +249,7 @@ step_duration = "3 min"
     assert "2000 <= G <= 8000" in chain["rows"][0][3]
     # a steady breakdown (no transient): said, and the losses' temperature is named
     assert "no transient run: no energy audit of the thermal network" in text
-    assert "initial temperature, 35 degC" in text
+    assert "inlet temperature (the scene sets no initial temperature), 35 degC" in text
     assert page.table("catalogue cross-check")["head"][-1] == \
         "this run vs Palmgren M0 + M1 [%]"
 
