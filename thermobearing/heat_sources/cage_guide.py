@@ -31,6 +31,10 @@ e.g. the cage weight), eps is solved from |F(eps)| = load (Ocvirk), switching to
 contact regime when the film cannot carry it. Heat goes to the guiding ring (paper 002
 eq. 23 puts Q_cg into the housing/outer-ring node); ``cage_share`` moves part to the cage.
 Rolling-element-guided cages have no land: the source returns zero.
+
+A roller skidding state carries the land moment its cage equation balanced (extras
+``solver_drag``: eq. 5 for a centred cage at the oil temperature); the source books its
+power |M (omega_g - omega_c)| unless options other than ``cage_share`` are given.
 """
 
 from __future__ import annotations
@@ -148,6 +152,17 @@ def cage_guide(ctx: HeatContext) -> HeatResult:
                              "no value with form = 'short_bearing' (the default: its drag is "
                              "the Petroff torque of the land film); the coefficient mu_c is "
                              "used only with form = 'paper002_eq18'")
+    carried = _solver_guide_moment(ctx, name)
+    if carried is not None:
+        # the moment the roller skidding solver's cage equation balanced (centred cage)
+        heat = abs(carried * (omega_g - omega_c))
+        return HeatResult(
+            source=name, power_by_role={ring_role: (1.0 - share) * heat, "cage": share * heat},
+            components={"cage guide": heat}, loss_class={"cage guide": "load_independent"},
+            forces={"cage_guide_moment": carried},
+            force_pairs=(ForcePair("guide land on cage", carried, omega_c - omega_g),),
+            details={"eccentricity_ratio": 0.0, "regime": "solver drag (roller skidding "
+                     "balance, centred cage)", "guidance": guidance})
     eta = float(ctx.lubricant.dynamic_viscosity(ctx.temperature("oil")))
     material = getattr(cage, "material", None)
     e_mod = getattr(material, "youngs_modulus", None) or b.ring_material.youngs_modulus
@@ -198,3 +213,16 @@ def cage_guide(ctx: HeatContext) -> HeatResult:
         forces={"cage_guide_moment": moment},
         force_pairs=(ForcePair("guide land on cage", moment, omega_c - omega_g),),
         details=details)
+
+
+def _solver_guide_moment(ctx: HeatContext, name: str) -> float | None:
+    """The land moment on the cage [N m] the roller skidding solver balanced (kinematic
+    state extras ``solver_drag["cage_guide_moment"]``: paper 002 eq. 5 for a centred cage at
+    the oil temperature, :mod:`thermobearing.skidding.roller_drag`), or None: a state
+    without it, or options other than ``cage_share`` (they ask for the source's own model:
+    an eccentric or touching cage, eq. 18)."""
+    from .churning import solver_drag
+
+    drag = solver_drag(ctx, name, "cage_guide_moment", booking=("cage_share",),
+                       churning=False)
+    return None if drag is None else float(drag["cage_guide_moment"])

@@ -177,6 +177,22 @@ def oil_bath_fraction(level: float, outer_raceway_radius: float, radius: Any) ->
     return np.arccos(np.clip((outer_raceway_radius - level) / r, -1.0, 1.0)) / math.pi
 
 
+def supply_oil_fraction(supply: Any, bearing: Any, radius: Any, shaft_speed: float,
+                        parker_constant: float = 1.46e7) -> np.ndarray:
+    """Oil volume fraction X [-] at ``radius`` [m] by the supply method (module docstring):
+    the bath level model for ``oil_bath``, 0 for ``grease`` (not modelled), else Parker's
+    correlation at the relative ring speed ``shaft_speed`` [rad/s]. The rule of
+    :func:`oil_fraction` without its options and warning; the roller skidding solver's drag
+    (:mod:`thermobearing.skidding.roller_drag`) takes the same numbers."""
+    if supply.method == "oil_bath":
+        return oil_bath_fraction(supply.level, 0.5 * bearing.outer_raceway_diameter, radius)
+    if supply.method == "grease":
+        return np.zeros(np.shape(radius))
+    x = parker_oil_fraction(supply.flow_rate, shaft_speed, bearing.pitch_diameter,
+                            float(parker_constant))
+    return np.full(np.shape(radius), x)
+
+
 def oil_fraction(ctx: HeatContext, radius: Any, source: str) -> np.ndarray:
     """Oil volume fraction X for ``source`` at ``radius`` by the supply method (see module)."""
     override = ctx.option(source, "oil_fraction", None)
@@ -185,18 +201,72 @@ def oil_fraction(ctx: HeatContext, radius: Any, source: str) -> np.ndarray:
         if override > 1:
             raise InputError(f"options[{source}].oil_fraction", override, "a fraction in [0, 1]")
         return np.full(np.shape(radius), float(override))
-    s = ctx.supply
-    b = ctx.bearing
-    if s.method == "oil_bath":
-        return oil_bath_fraction(s.level, 0.5 * b.outer_raceway_diameter, radius)
-    if s.method == "grease":
-        warnings.warn(f"{source}: churning of grease is not modelled (oil fraction 0)",
-                      ValidityWarning, stacklevel=3)
-        return np.zeros(np.shape(radius))
+    if ctx.supply.method == "grease":
+        _warn_grease(source)
     speed = ctx.operating.inner_speed - ctx.operating.outer_speed
     k = float(ctx.option(source, "parker_constant", 1.46e7))
-    x = parker_oil_fraction(s.flow_rate, speed, b.pitch_diameter, k)
-    return np.full(np.shape(radius), x)
+    return supply_oil_fraction(ctx.supply, ctx.bearing, radius, speed, k)
+
+
+def _warn_grease(source: str) -> None:
+    warnings.warn(f"{source}: churning of grease is not modelled (oil fraction 0)",
+                  ValidityWarning, stacklevel=4)
+
+
+def cage_churning_geometry(bearing: Any) -> tuple[float, float]:
+    """(D_c, c) [m] of the cage churning (paper 002 eq. 15): the cage mean diameter and the
+    default gap, the mean radial gap between the cage and the lands (raceway diameters for
+    roller bearings), at least 0.1 mm (module docstring)."""
+    cage = bearing.cage
+    d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
+    d_in, d_out = _land_diameters(bearing)
+    gap = 0.25 * ((d_out - d_in) - (cage.outer_diameter - cage.inner_diameter))
+    return d_c, max(gap, 1e-4)
+
+
+def inner_ring_churning_geometry(bearing: Any) -> tuple[float, float, float, float]:
+    """(D_Li, B_arc, B_Li, c) [m] of the inner-ring churning (paper 002 eq. 17) by default:
+    the inner land diameter (raceway diameter for roller bearings), the wetted raceway arc
+    D (element diameter), the shoulder length (width - D)/2 and the gap between the inner
+    land and the cage bore, at least 0.1 mm."""
+    d_in, _ = _land_diameters(bearing)
+    d_elem = bearing.element_diameter
+    shoulder = max(0.5 * (bearing.width - d_elem), 0.0)
+    gap = max(0.5 * (bearing.cage.inner_diameter - d_in), 1e-4)
+    return d_in, float(d_elem), shoulder, gap
+
+
+def element_frontal_area(bearing: Any) -> float:
+    """Frontal area A of one rolling element in its orbital motion [m^2] (paper 002 eq. 10):
+    pi D^2 / 4 for a ball, D l for a roller (l the roller length)."""
+    d_elem = bearing.element_diameter
+    if hasattr(bearing, "ball_diameter"):
+        return 0.25 * math.pi * d_elem ** 2
+    return d_elem * bearing.roller_length
+
+
+#: the options of each churning source that only say where its heat goes; any other option
+#: asks the source to evaluate its own model instead of the drag a skidding solver balanced
+BOOKING_OPTIONS = ("role",)
+
+
+def solver_drag(ctx: HeatContext, source: str, key: str,
+                booking: tuple[str, ...] = BOOKING_OPTIONS, churning: bool = True) -> Any:
+    """The drag the roller skidding solver balanced for ``source`` (kinematic state extras
+    ``solver_drag[key]``, :mod:`thermobearing.skidding.roller_drag`), or None: a state
+    without it (race control, balls, the solver without an oil supply), or options of the
+    source that ask for its own model on purpose (any but ``booking``, default
+    :data:`BOOKING_OPTIONS`; the heat then departs from the solver's force balance).
+    ``churning``: warn, as :func:`oil_fraction` does, that a grease fill churns nothing."""
+    drag = ctx.kinematics.extras.get("solver_drag")
+    if not drag or key not in drag:
+        return None
+    given = ctx.options.get(source) or {}
+    if any(k not in booking for k in given):
+        return None
+    if churning and ctx.supply.method == "grease":
+        _warn_grease(source)
+    return drag
 
 
 def _oil(ctx: HeatContext):
@@ -228,21 +298,34 @@ def _role(ctx: HeatContext, source: str, default: str) -> str:
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_cage(ctx: HeatContext) -> HeatResult:
-    """Cage churning in the oil-air mixture, paper 002 eq. 15 (heat to the oil node)."""
+    """Cage churning in the oil-air mixture, paper 002 eq. 15 (heat to the oil node).
+
+    A roller skidding state carries the churning moment its cage equation balanced
+    (extras ``solver_drag``): the source books its power |M omega_c| (same eq. 15, oil
+    fraction and viscosity as the solver) unless options other than ``role`` are given."""
     name = "churning_cage"
+    omega = ctx.kinematics.cage_speed
+    role = _role(ctx, name, "oil")
+    carried = solver_drag(ctx, name, "cage_churning_moment")
+    if carried is not None:
+        moment = float(carried["cage_churning_moment"])
+        q = abs(moment * omega)
+        return HeatResult(
+            source=name, power_by_role={role: q}, components={"cage churning": q},
+            loss_class={"cage churning": "load_independent"},
+            forces={"cage_drag_moment": moment},
+            force_pairs=(ForcePair("oil on cage", moment, omega),),
+            details={"oil_fraction": float(carried["cage_oil_fraction"]),
+                     "regime": "solver drag (roller skidding balance)"})
     b = ctx.bearing
     cage = b.cage
     rho, nu = _oil(ctx)
-    d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
-    d_in, d_out = _land_diameters(b)
-    default_gap = 0.25 * ((d_out - d_in) - (cage.outer_diameter - cage.inner_diameter))
-    gap = float(ctx.option(name, "gap", max(default_gap, 1e-4)))
-    omega = ctx.kinematics.cage_speed
+    d_c, default_gap = cage_churning_geometry(b)
+    gap = float(ctx.option(name, "gap", default_gap))
     x = float(oil_fraction(ctx, 0.5 * d_c, name))
     reg = viscous_friction_coefficient(0.5 * d_c, omega, gap, nu)
     q = float(cage_churning_power(x * rho, reg.mu_v, omega, cage.width, d_c))
     moment = -q / omega if omega != 0 else 0.0  # on the cage, about the bearing axis
-    role = _role(ctx, name, "oil")
     return HeatResult(
         source=name, power_by_role={role: q}, components={"cage churning": q},
         loss_class={"cage churning": "load_independent"},
@@ -267,22 +350,34 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
 
     B_arc defaults to the groove arc wetted across the ball, D (raceway arc length over the
     ball diameter, an estimate), B_Li to the shoulder length (width - D)/2 on each side.
+    A roller skidding state carries the moment the solver's shaft torque contains (extras
+    ``solver_drag``): booked as |M omega_i| unless options other than ``role`` are given.
     """
     name = "churning_inner_ring"
+    omega = ctx.operating.inner_speed
+    role = _role(ctx, name, "inner_ring")
+    carried = solver_drag(ctx, name, "inner_ring_moment")
+    if carried is not None:
+        # the roller skidding solver's shaft torque contains this moment
+        moment = float(carried["inner_ring_moment"])
+        q = abs(moment * omega)
+        return HeatResult(
+            source=name, power_by_role={role: q}, components={"inner ring churning": q},
+            loss_class={"inner ring churning": "load_independent"},
+            forces={"inner_ring_drag_moment": moment},
+            force_pairs=(ForcePair("oil on inner ring", moment, omega),),
+            details={"oil_fraction": float(carried["inner_ring_oil_fraction"]),
+                     "regime": "solver drag (roller skidding balance)"})
     b = ctx.bearing
     rho, nu = _oil(ctx)
-    d_in, _ = _land_diameters(b)
-    d_elem = b.element_diameter
-    arc = float(ctx.option(name, "raceway_arc_length", d_elem))
-    shoulder = float(ctx.option(name, "shoulder_length", max(0.5 * (b.width - d_elem), 0.0)))
-    default_gap = 0.5 * (b.cage.inner_diameter - d_in)
-    gap = float(ctx.option(name, "gap", max(default_gap, 1e-4)))
-    omega = ctx.operating.inner_speed
+    d_in, arc0, shoulder0, gap0 = inner_ring_churning_geometry(b)
+    arc = float(ctx.option(name, "raceway_arc_length", arc0))
+    shoulder = float(ctx.option(name, "shoulder_length", shoulder0))
+    gap = float(ctx.option(name, "gap", gap0))
     x = float(oil_fraction(ctx, 0.5 * d_in, name))
     reg = viscous_friction_coefficient(0.5 * d_in, omega, gap, nu)
     q = float(inner_ring_churning_power(x * rho, reg.mu_v, omega, arc, shoulder, d_in))
     moment = -q / omega if omega != 0 else 0.0
-    role = _role(ctx, name, "inner_ring")
     return HeatResult(
         source=name, power_by_role={role: q}, components={"inner ring churning": q},
         loss_class={"inner ring churning": "load_independent"},
@@ -310,9 +405,17 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
     cylinder plateau); ``oil_swirl`` s: the mixture orbits at s * cage speed (default 0).
     Per-element drag force F_j (for the solver) with heat sum F_j |u_j|, u_j = (omega_m,j -
     s omega_c) D_m / 2. Heat to the elements (paper 002 eq. 22).
+
+    A roller skidding state carries the drag force its roller and cage equations balanced
+    (extras ``solver_drag``, eq. 10 with the solver's c_d, oil fraction and density, no
+    swirl): booked as sum F_j |u_j| unless options other than ``role`` are given.
     """
     name = "churning_elements"
     b = ctx.bearing
+    kin = ctx.kinematics
+    carried = solver_drag(ctx, name, "element_force")
+    if carried is not None:
+        return _solver_element_drag(ctx, name, carried)
     rho, nu = _oil(ctx)
     is_ball = hasattr(b, "ball_diameter")
     form = str(ctx.option(name, "form", "paper002" if is_ball else "harris"))
@@ -326,15 +429,11 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
     d_in, d_out = _land_diameters(b)
     gap = float(ctx.option(name, "gap", max(0.5 * (d_out - d_in), 1e-4)))
     swirl = float(ctx.option(name, "oil_swirl", 0.0))
-    kin = ctx.kinematics
     rel_omega = kin.orbital_speed - swirl * kin.cage_speed
     u = 0.5 * d_m * rel_omega
     x = oil_fraction(ctx, 0.5 * d_m, name)
     rho_e = x * rho
-    if is_ball:
-        area = 0.25 * math.pi * d_elem ** 2
-    else:
-        area = d_elem * b.roller_length
+    area = element_frontal_area(b)
     reg = viscous_friction_coefficient(0.5 * d_m, rel_omega, gap, nu)
     if form == "harris":
         force = drag_force(cd, rho_e, area, u)
@@ -355,3 +454,23 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
         force_pairs=(ForcePair("oil on elements", signed, u),),
         details={"oil_fraction": float(np.mean(x)), "form": form,
                  "mu_v": float(np.mean(reg.mu_v)), "reynolds": float(np.mean(reg.reynolds))})
+
+
+def _solver_element_drag(ctx: HeatContext, name: str, carried: Any) -> HeatResult:
+    """Element churning heat of the drag a roller skidding state carries: the force F_j
+    along each roller's orbit (negative: against it; paper 002 eq. 10,
+    :mod:`thermobearing.skidding.roller_drag`) at the orbital speed u_j = omega_m,j D_m/2,
+    Q = sum_j |F_j u_j| [W], the power the solver's roller and cage equations balance."""
+    kin = ctx.kinematics
+    u = 0.5 * ctx.bearing.pitch_diameter * np.asarray(kin.orbital_speed, float)
+    signed = np.broadcast_to(np.asarray(carried["element_force"], float), u.shape).copy()
+    q = float(np.sum(np.abs(signed * u)))
+    role = _role(ctx, name, "elements")
+    return HeatResult(
+        source=name, power_by_role={role: q}, components={"element churning": q},
+        loss_class={"element churning": "load_independent"},
+        forces={"element_drag_force": signed},
+        force_pairs=(ForcePair("oil on elements", signed, u),),
+        details={"oil_fraction": float(carried["element_oil_fraction"]), "form": "harris",
+                 "drag_coefficient": float(carried["drag_coefficient"]),
+                 "regime": "solver drag (roller skidding balance)"})

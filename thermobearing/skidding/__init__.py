@@ -51,10 +51,16 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
     radial_load, axial_load : [N].
     temperature : contact / oil temperature [K] (40 degC is 313.15 K).
     supply : :class:`thermobearing.state.OilSupply`; required for ball bearings (it sets the
-        oil fraction of the drag models) unless ``params.oil_fraction`` is given; not used
-        by the roller solver.
+        oil fraction of the drag models) unless ``params.oil_fraction`` is given. Roller
+        bearings: with a supply the balance contains the oil drag of paper 002 (roller drag
+        eq. 10, cage churning eq. 15, guide land eq. 5, inner-ring churning eq. 17 in the
+        shaft torque; :mod:`thermobearing.skidding.roller_drag`), as the scene's heat
+        sources book it; without one (paper 000's case) no oil drag. A ready
+        ``drag=RollerDrag`` option overrides it.
     params : ball bearings: :class:`thermobearing.skidding.ball_models.BallParameters`
-        (e.g. the calibrated set of ``configs/bearings/QJ1044.calibration.toml``).
+        (e.g. the calibrated set of ``configs/bearings/QJ1044.calibration.toml``). Roller
+        bearings: None or a mapping with ``drag_coefficient`` (c_d of the roller drag,
+        default 1.0) and ``parker_constant`` (default 1.46e7).
     models : ball bearings: ready-made :class:`~thermobearing.skidding.ball.BallModels`
         (overrides ``params``).
     guess : previous result of the same bearing (warm start).
@@ -106,9 +112,32 @@ def solve(bearing: Any, lubricant: Any, speed: float, radial_load: float, axial_
 
         if guess is not None:
             options.setdefault("x0", guess)
+        if supply is not None and "drag" not in options:
+            options["drag"] = _roller_drag(bearing, lubricant, supply, speed, temperature,
+                                           oil_temperature, params)
         return solve_roller(bearing, lubricant, speed, radial_load, axial_load, temperature,
                             **options)
     raise InputError("bearing", type(bearing).__name__, "a BallBearing or a RollerBearing")
+
+
+def _roller_drag(bearing: Any, lubricant: Any, supply: Any, speed: float, temperature: float,
+                 oil_temperature: float | None, params: Any) -> Any:
+    """The roller solver's oil drag (:func:`thermobearing.skidding.roller_drag.build_drag`)
+    at the oil temperature (default ``temperature``) [K]; ``params``: None or a mapping of
+    ``drag_coefficient`` and ``parker_constant``."""
+    from collections.abc import Mapping
+
+    from .roller_drag import build_drag
+
+    given: dict[str, Any] = {}
+    if params is not None:
+        allowed = ("drag_coefficient", "parker_constant")
+        if not isinstance(params, Mapping) or any(k not in allowed for k in params):
+            raise InputError("params", params, "None or a mapping of " + ", ".join(allowed)
+                             + " for a roller bearing")
+        given = {k: _operating_value(f"params.{k}", v, "-") for k, v in params.items()}
+    t_oil = temperature if oil_temperature is None else oil_temperature
+    return build_drag(bearing, lubricant, supply, speed, t_oil, **given)
 
 
 #: speed factor n d_m [mm r/min] above which no oil-lubricated rolling bearing runs (hybrid

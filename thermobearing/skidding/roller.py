@@ -296,7 +296,11 @@ def _result(model: RollerModel, omega: float, psi: np.ndarray, best: tuple[Any, 
                                  "radius_outer": model.radius_outer,
                                  "roller_diameter": model.roller_diameter,
                                  "raceway_radius_inner": 0.5 * (model.pitch_diameter
-                                                                - model.roller_diameter)},
+                                                                - model.roller_diameter),
+                                 "pitch_diameter": model.pitch_diameter,
+                                 "cage_drag_torque": model.cage_drag_torque,
+                                 "drag": (None if model.drag is None
+                                          else model.drag.state(omega, float(x[z])))},
     )
 
 
@@ -427,7 +431,9 @@ def solve_roller(
     **model_options : passed to :func:`build_model` (viscosity, eyring_stress,
         limiting_shear_coefficient, traction_law, film_model, drag_model, pocket_clearance,
         cage_drag_torque, ring_support, unloaded_zone, fluid_shear_modulus, film_pressure,
-        traction_curve, pocket_film).
+        traction_curve, pocket_film, drag). Without ``drag`` (the default) the balance has
+        no oil drag, as paper 000; ``skidding.solve`` with an oil supply builds one
+        (:mod:`~thermobearing.skidding.roller_drag`).
 
     Returns
     -------

@@ -51,6 +51,8 @@ class RollerModel:
     pocket_clearance [m], contact stiffnesses k_inner, k_outer [N/m^(10/9)].
     Fluid: eta0 [Pa s], alpha [1/Pa], temperature [K], film(u_e, w, race) -> h_c [m],
     traction_law, contact_forces (drag model callable), cage_drag_torque [N m].
+    Oil drag: ``drag`` (:class:`~thermobearing.skidding.roller_drag.RollerDrag`, or None:
+    none, paper 000).
     """
 
     pitch_diameter: float
@@ -84,6 +86,7 @@ class RollerModel:
     film_pressure: str = "hertz"
     traction_curve: Any = None
     pocket_film: str = "one_face"
+    drag: Any = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -151,6 +154,7 @@ def build_model(
     film_pressure: str = "hertz",
     traction_curve: Any = None,
     pocket_film: str = "one_face",
+    drag: Any = None,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -230,7 +234,19 @@ def build_model(
         normal force (:func:`~thermobearing.skidding.roller_fluid.pocket_forces_two_faces`;
         smooth and even in F_d). The difference matters where the pocket forces are as small
         as their changes (film-supported ring under whirl, paper 000).
+    drag : None (default, paper 000: no oil drag) or a
+        :class:`~thermobearing.skidding.roller_drag.RollerDrag`
+        (:func:`~thermobearing.skidding.roller_drag.build_drag`, what ``skidding.solve``
+        builds from the oil supply): the roller drag enters each roller's orbital balance
+        (pocket force), the cage churning and guide-land moments the cage equation, the
+        inner-ring churning the shaft torque.
     """
+    if drag is not None:
+        from .roller_drag import RollerDrag
+
+        if not isinstance(drag, RollerDrag):
+            raise InputError("drag", type(drag).__name__,
+                             "None or a RollerDrag (skidding.roller_drag.build_drag)")
     if pocket_film not in POCKET_FILM_MODELS:
         raise InputError("pocket_film", pocket_film, POCKET_FILM_MODELS)
     if unloaded_zone not in UNLOADED_ZONE_MODELS:
@@ -316,4 +332,5 @@ def build_model(
         unloaded_zone=unloaded_zone, ring_support=ring_support,
         fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
         film_pressure=film_pressure, traction_curve=traction_curve, pocket_film=pocket_film,
+        drag=drag,
     )

@@ -15,12 +15,16 @@ speed ``omega_c``. Equations (paper eqs. 12-15, 20-32):
 * roller force along the orbit (eqs. 21/24): the pocket normal force
   F_d = (S_i + (1 - D/d_m) Q_xi) - (S_o + (1 + D/d_m) Q_xo) - m_r a_t,j  (Q_x the rolling
   resultant of the film pressure, eq. 35, of which the roller takes the share R_x/(D/2);
-  a_t the tangential whirl acceleration, eqs. 3-4);
-* cage (eq. 32): sum_j F_d,j = (D/d_m) sum_j f_d,j + T_c / (d_m/2). Paper 000 writes
-  sum F_d = 0; the radial pocket friction f_d acts D/2 beside the roller centre and retards
-  the cage on either pocket face, and without it the energy balance (shaft power = the
-  dissipation, :attr:`RollerSkiddingResult.power_loss`) does not close. ``cage_drag_torque``
-  T_c [N m] is an optional extra drag (default 0, as the paper).
+  a_t the tangential whirl acceleration, eqs. 3-4), + F_oil with the oil drag of the model
+  (``model.drag``, :mod:`thermobearing.skidding.roller_drag`: paper 002 eq. 10 on the roller
+  centre against the orbit; none in paper 000);
+* cage (eq. 32): sum_j F_d,j = (D/d_m) sum_j f_d,j + (T_c - M_oil) / (d_m/2). Paper 000
+  writes sum F_d = 0; the radial pocket friction f_d acts D/2 beside the roller centre and
+  retards the cage on either pocket face, and without it the energy balance (shaft power =
+  the dissipation, :attr:`RollerSkiddingResult.power_loss`) does not close.
+  ``cage_drag_torque`` T_c [N m] is an optional constant drag (default 0, as the paper);
+  M_oil the oil moments on the cage with the model's drag (churning, paper 002 eq. 15, and
+  a guide land, eq. 5).
 
 Radial equilibrium (eqs. 20/23) with the centrifugal force and the whirl inertia gives the
 contact loads (:mod:`thermobearing.skidding.roller_loads`); the outer loads follow the cage
@@ -99,6 +103,8 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
                               u_ro, u_roll, film=model.film_outer, **common)
     ax, ay = whirl_acceleration
     a_t = -ax * np.sin(azimuth) + ay * np.cos(azimuth)
+    # oil drag on each roller centre along its orbit (paper 002 eq. 10), None without drag
+    f_drag = None if model.drag is None else model.drag.element_force(omega_c)
     share_i, share_o = model.radius_inner / half_d, model.radius_outer / half_d
     if free is not None and np.any(free):
         # eqs. 30-31 with a rigid rolling constraint at the outer race: the outer shear on
@@ -107,6 +113,8 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
         # (eqs. 37-38): a contraction (df_d/dF_d ~ 0.1), solved by fixed point
         base = (-share_o * fo.rolling_force * fo.entrainment_sign
                 - model.roller_mass * a_t)
+        if f_drag is not None:
+            base = base + f_drag
         s_o = np.zeros_like(base)
         for _ in range(8):
             s_o = pocket_law(base - s_o, omega_r, d, model.length, model.eta0,
@@ -114,6 +122,8 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
         fo = dataclasses.replace(fo, traction=np.where(
             free, s_o + fo.poiseuille * fo.entrainment_sign, fo.traction))
     pocket = fi.orbital_force(share_i) - fo.orbital_force(share_o) - model.roller_mass * a_t
+    if f_drag is not None:
+        pocket = pocket + f_drag
     fric = pocket_law(pocket, omega_r, d, model.length, model.eta0,
                          model.pocket_clearance).friction
     roller_eq = fi.shear_force + fo.shear_force - fric * np.sign(omega_r + 1e-300)
@@ -124,6 +134,9 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     # cage: pocket normal forces at d_m/2; the (radial) pocket friction acts at D/2 beside
     # the roller centre and retards the cage on either pocket face
     cage_terms = pocket - (d / d_m) * fric
-    cage_eq = float(np.sum(cage_terms)) - model.cage_drag_torque / (0.5 * d_m)
+    cage_moment = -model.cage_drag_torque
+    if model.drag is not None:
+        cage_moment += model.drag.cage_moment(omega, omega_c)
+    cage_eq = float(np.sum(cage_terms)) + cage_moment / (0.5 * d_m)
     return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, u_ri - u_roll, u_ro - u_roll,
                  0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o, cage_terms)

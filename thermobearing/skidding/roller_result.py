@@ -3,7 +3,9 @@
 One job: the :class:`RollerSkiddingResult` dataclass of the paper 000 Z + 1 equations (Li,
 Chen, Zhang, Wang 2018, seed ``000_3b5ca6eed61dd596.txt`` [li2018_nu214_skidding]) with its
 derived shaft torque, power balance and the :class:`thermobearing.state.KinematicState` the
-heat sources consume. Solved by :func:`thermobearing.skidding.roller.solve_model`.
+heat sources consume. Solved by :func:`thermobearing.skidding.roller.solve_model`; with the
+oil drag of :mod:`thermobearing.skidding.roller_drag` (scenes) the balance, the shaft torque
+and the booked heat contain the churning and cage-guide drags of paper 002 too.
 """
 
 from __future__ import annotations
@@ -62,6 +64,9 @@ class RollerSkiddingResult:
         116-480 N per ulp of a speed, and their moment balances (109-250 N) and the cage
         equation (413 N) are within that step; the state is the bracketed solve's to
         1.3e-15 (CSR and every roller speed, benchmarks/bm_roller_cold.py).
+        ``drag``: the oil drag the solve balanced (:attr:`drag`; None without one),
+        ``cage_drag_torque`` [N m] (the model's constant cage drag), ``pitch_diameter`` [m],
+        and the geometry the derived quantities use.
     """
 
     inner_speed: float
@@ -100,14 +105,32 @@ class RollerSkiddingResult:
         return self.roller_speed
 
     @property
+    def drag(self) -> dict[str, Any] | None:
+        """The oil drag the solve balanced (``extras["drag"]``,
+        :meth:`thermobearing.skidding.roller_drag.RollerDrag.state`): ``element_force`` on
+        each roller along its orbit [N], ``cage_churning_moment`` and ``cage_guide_moment``
+        on the cage, ``inner_ring_moment`` on the inner ring [N m], the oil fractions and
+        c_d; None without drag (paper 000's direct solve)."""
+        return self.extras.get("drag")
+
+    @property
     def shaft_torque(self) -> float:
         """Torque the shaft delivers to the inner ring [N m].
 
         T = (d_m - D)/2 * sum_j (S_ij + Q_xij): minus the tangential fluid force on the inner
-        raceway (shear plus pressure), at the raceway radius of paper 000 eq. 12.
+        raceway (shear plus pressure), at the raceway radius of paper 000 eq. 12; with the
+        oil drag (:attr:`drag`) also minus the inner ring's churning moment (paper 002
+        eq. 17) and, for an inner-ring-guided cage, the land moment the ring gives the cage
+        (eq. 5).
         """
         r_i = float(self.extras["raceway_radius_inner"])
-        return r_i * float(np.sum(self.inner.race_shear_force))
+        torque = r_i * float(np.sum(self.inner.race_shear_force))
+        drag = self.drag
+        if drag:
+            torque -= float(drag["inner_ring_moment"])
+            if drag["guidance"] == "inner_ring":
+                torque += float(drag["cage_guide_moment"])
+        return torque
 
     @property
     def power_loss(self) -> dict[str, float]:
@@ -118,7 +141,11 @@ class RollerSkiddingResult:
         u_e = (u_race + u_roller)/2, which is the Poiseuille shear Q_x/2 on each surface);
         in the pocket film ``f_d omega_r D/2``. Keys:
         ``inner_shear``, ``inner_rolling``, ``outer_shear``, ``outer_rolling``, ``pocket``,
-        ``total``. In a converged state ``total`` equals ``shaft_torque * inner_speed``
+        with the oil drag (:attr:`drag`) also ``element_drag`` (sum_j |F_j| omega_c d_m/2,
+        paper 002 eq. 10), ``cage_churning`` (|M_c omega_c|, eq. 15), ``cage_guide``
+        (|M_g (omega_g - omega_c)|, eq. 5) and ``inner_ring_churning`` (|M_i omega|,
+        eq. 17), with a constant ``cage_drag_torque`` T_c also ``cage_drag`` (T_c omega_c),
+        and ``total``. In a converged state ``total`` equals ``shaft_torque * inner_speed``
         (energy balance; it follows from the roller moment and cage equations).
         """
         d = float(self.extras["roller_diameter"])
@@ -129,8 +156,27 @@ class RollerSkiddingResult:
             out[f"{race}_shear"] = float(np.sum(f.traction * v))
             out[f"{race}_rolling"] = float(np.sum(f.rolling_force * np.abs(ue)))
         out["pocket"] = float(np.sum(self.pocket_friction * np.abs(self.roller_speed) * 0.5 * d))
+        out.update(self._drag_power())
+        t_c = float(self.extras.get("cage_drag_torque", 0.0))
+        if t_c != 0.0:
+            out["cage_drag"] = t_c * self.cage_speed
         out["total"] = sum(out.values())
         return out
+
+    def _drag_power(self) -> dict[str, float]:
+        """Power of the oil drag the solve balanced [W] (empty without drag): the products
+        the ``churning_*`` and ``cage_guide`` heat sources book from the kinematic state."""
+        drag = self.drag
+        if not drag:
+            return {}
+        wc, w = self.cage_speed, self.inner_speed
+        u = 0.5 * float(self.extras["pitch_diameter"]) * wc
+        n = self.roller_speed.size
+        omega_g = w if drag["guidance"] == "inner_ring" else 0.0
+        return {"element_drag": n * abs(float(drag["element_force"]) * u),
+                "cage_churning": abs(float(drag["cage_churning_moment"]) * wc),
+                "cage_guide": abs(float(drag["cage_guide_moment"]) * (omega_g - wc)),
+                "inner_ring_churning": abs(float(drag["inner_ring_moment"]) * w)}
 
     @property
     def kinematic_state(self) -> Any:
@@ -159,7 +205,13 @@ class RollerSkiddingResult:
           solve used them), race name -> (Z,) [N];
         * ``extras["pocket_friction"]``: the pocket-film friction f_d (paper 000 eqs. 37-38)
           [N], which the pocket source books as f_d |omega_r| D/2 instead of a boundary
-          friction coefficient times F_d.
+          friction coefficient times F_d;
+        * ``extras["solver_drag"]`` (a solve with oil drag, :attr:`drag`): the roller drag
+          force, the cage churning and guide-land moments and the inner ring's churning
+          moment the balance contains, which ``churning_elements``, ``churning_cage``,
+          ``cage_guide`` and ``churning_inner_ring`` book (their heat is then the
+          ``element_drag``, ``cage_churning``, ``cage_guide`` and ``inner_ring_churning``
+          of :attr:`power_loss`).
         """
         from ..heat_sources.raceway import SolverContactForces
         from ..state import ContactSet, KinematicState, PrecomputedTraction
@@ -184,14 +236,19 @@ class RollerSkiddingResult:
                 temperature=np.full(q.shape, self.temperature), reduced_radius_x=rx,
                 traction=traction))
             rolling[race] = np.asarray(f.rolling_force, float).copy()
+        extras = {"pocket_friction": self.pocket_friction, "slip": self.slip,
+                  "raceway_rolling_force": rolling}
+        drag = self.drag
+        element_drag = None
+        if drag:
+            extras["solver_drag"] = dict(drag)
+            element_drag = np.full(self.roller_speed.shape, abs(float(drag["element_force"])))
         return KinematicState(
             inner_speed=self.inner_speed, outer_speed=0.0, cage_speed=self.cage_speed,
             orbital_speed=np.full(self.roller_speed.shape, self.cage_speed),
             element_spin=self.roller_speed, contacts=tuple(sets), attitude_angle=0.0,
             azimuth=self.azimuth, pocket_normal_force=np.abs(self.pocket_normal_force),
-            origin="skidding",
-            extras={"pocket_friction": self.pocket_friction, "slip": self.slip,
-                    "raceway_rolling_force": rolling})
+            element_drag_force=element_drag, origin="skidding", extras=extras)
 
     def booked_power(self) -> dict[str, float]:
         """The solver's dissipation by heat source [W]: the heat-source bookkeeping of
@@ -199,19 +256,33 @@ class RollerSkiddingResult:
 
         ``raceway_traction`` = sum C V over both raceways (paper 000 eq. 5 Couette term),
         ``ehl_rolling_resistance`` = sum Q_x |u_e| (eq. 5 Poiseuille term, Q_x of eq. 35),
-        ``pocket_friction`` = sum f_d |omega_r| D/2 (eqs. 37-38), ``total``. In a converged
-        state ``total`` = ``shaft_torque * inner_speed`` (the roller moment balances,
-        eqs. 28/31, and the cage equation, eq. 32 with the pocket-friction term, make the
-        sum telescope to the inner-race torque; whirl inertia, eqs. 3-4, does no net work
-        for evenly spaced rollers: sum_j a_t,j = 0). The solve balances no oil churning or
-        drag of the rollers, cage or inner ring, no cage-guide drag (its ``cage_drag_torque``
-        is 0 in scenes) and no rib friction: the sources ``churning_*``, ``cage_guide`` and
-        ``rib_friction`` book drags this shaft torque does not contain.
+        ``pocket_friction`` = sum f_d |omega_r| D/2 (eqs. 37-38), and with the oil drag
+        (:attr:`drag`: every scene, ``skidding.solve`` with an oil supply)
+        ``churning_elements`` = sum_j |F_j| omega_c d_m/2 (paper 002 eq. 10 on each roller),
+        ``churning_cage`` = |M_c omega_c| (eqs. 12-15), ``cage_guide`` =
+        |M_g (omega_g - omega_c)| (eq. 5, centred cage; 0 for a rolling-element-guided cage)
+        and ``churning_inner_ring`` = |M_i omega| (eq. 17); ``total``. In a converged state
+        ``total`` = ``shaft_torque * inner_speed``: the roller moment balances (eqs. 28/31),
+        the roller orbital balances with the drag (eqs. 21/24) and the cage equation (eq. 32
+        with the pocket-friction term and the oil moments on the cage) make the sum
+        telescope to the inner-race torque, to which the shaft torque adds the inner ring's
+        churning moment and an inner land's moment; whirl inertia, eqs. 3-4, does no net
+        work for evenly spaced rollers: sum_j a_t,j = 0. The scene's sources book these
+        products from the kinematic state (extras ``solver_drag``), so their total equals
+        the shaft power. Not balanced: rib friction (the source ``rib_friction`` books a
+        drag this shaft torque does not contain) and a constant ``cage_drag_torque``
+        (0 in scenes; its power is ``power_loss["cage_drag"]``, no source books it).
+        Without the oil drag (paper 000's direct ``solve_roller``) only the first three.
         """
         loss = self.power_loss
         out = {"raceway_traction": loss["inner_shear"] + loss["outer_shear"],
                "ehl_rolling_resistance": loss["inner_rolling"] + loss["outer_rolling"],
                "pocket_friction": loss["pocket"]}
+        if self.drag:
+            out.update({"churning_elements": loss["element_drag"],
+                        "churning_cage": loss["cage_churning"],
+                        "cage_guide": loss["cage_guide"],
+                        "churning_inner_ring": loss["inner_ring_churning"]})
         out["total"] = sum(out.values())
         return out
 
