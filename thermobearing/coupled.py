@@ -257,13 +257,17 @@ class Coupler:
         for b in self.sim.bearings:
             self.sim.solve_kinematics(b, step_index, step, self.role_temperatures(b, T))
 
-    def viscosity_drift(self, T: np.ndarray) -> float:
+    def viscosity_drift(self, T: np.ndarray, start: np.ndarray | None = None) -> float:
         """Largest relative change, over the bearings, of the contact viscosity between the
         kinematic state in use and the temperatures ``T`` [-]: |eta(T_c(T)) / eta_kin - 1|,
         T_c the kinematics' contact temperature (``kinematic_models.contact_temperature``)
-        and eta_kin the viscosity the state was solved at. Bearings whose heat does not hang
-        on a held kinematic state are left out: at rest (no contact heat) or with the global
-        friction model (kinematics "none": its viscosity follows the nodes).
+        and eta_kin the viscosity the state was solved at. Bearings at rest (no contact
+        heat) are left out. A bearing with the global friction model (kinematics "none")
+        holds no kinematic state, its viscosity follows the nodes; what it holds over a
+        chunk is the chunk's heat model (:class:`_Linear`, a Taylor model about the chunk
+        start): with ``start`` (the chunk's initial temperatures [K]) its drift is
+        |eta(T_c(T)) / eta(T_c(start)) - 1|, so a chunk over which its viscosity moves
+        beyond the limit is repeated shorter as well (without ``start`` it is left out).
 
         Temperatures outside the viscosity law's range give ``inf`` (the chunk is rejected
         and repeated shorter): a chunk's heat model extrapolated far from its state -- a
@@ -276,16 +280,22 @@ class Coupler:
 
         worst = 0.0
         for b in self.sim.bearings:
-            if (b.last is None or not math.isfinite(b.last_viscosity)
-                    or b.kinematics_name == "none"
-                    or getattr(b.last.state, "origin", "") == "standstill"):
+            if b.last is None or getattr(b.last.state, "origin", "") == "standstill":
+                continue
+            global_model = b.kinematics_name == "none"
+            if global_model and start is None:
                 continue
             try:
                 eta = float(self.sim.lubricant.dynamic_viscosity(
                     contact_temperature(self.role_temperatures(b, T))))
+                ref = (float(self.sim.lubricant.dynamic_viscosity(
+                    contact_temperature(self.role_temperatures(b, start))))
+                    if global_model else b.last_viscosity)
             except InputError:  # outside the law's range (only its temperature is checked)
                 return math.inf
-            worst = max(worst, abs(eta / b.last_viscosity - 1.0))
+            if not math.isfinite(ref):
+                continue
+            worst = max(worst, abs(eta / ref - 1.0))
         return worst
 
     def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray
@@ -634,7 +644,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     if failed is None:
                         raise
                     if h > MIN_CHUNK * (1.0 + 1e-9) and coupler.viscosity_drift(
-                            failed[1]) > solver.chunk_viscosity_limit:
+                            failed[1], T) > solver.chunk_viscosity_limit:
                         # the held kinematic state's heat is what ran away: shorter chunks
                         # first, as for a chunk that ends too far from it
                         h_try = max(0.5 * h, MIN_CHUNK)
@@ -644,7 +654,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     _stop_runaway(net, method, solver, lin, t, T, failed, names, i,
                                   coupler.runaway_limit)
                     raise
-                drift = coupler.viscosity_drift(out.temperatures)
+                drift = coupler.viscosity_drift(out.temperatures, T)
                 if drift > solver.chunk_viscosity_limit and h > MIN_CHUNK * (1.0 + 1e-9) \
                         and np.all(np.isfinite(out.temperatures)):
                     # the temperatures left the held kinematic state's viscosity by more
