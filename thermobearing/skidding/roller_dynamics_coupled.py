@@ -183,6 +183,14 @@ from typing import Any
 import numpy as np
 
 from ..errors import ConvergenceError, InputError, check_positive
+from .roller_dynamics_convergence import (
+    BLOCKS_PER_ORBIT,
+    HEAT_FLOOR,
+    MIN_BLOCKS,
+    SLIDE_FLOOR,
+    block_heat_slide,
+    window_converged,
+)
 from .roller_dynamics_coupled_kernels import (  # noqa: F401  (kernels re-exported)
     N_ROLLER_STATES,
     _deriv_into,
@@ -295,7 +303,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      traction: str = "table", table_options: dict[str, Any] | None = None,
                      ring_axial: bool = False, cage_land: bool = False,
                      cage_band: float | None = DEFAULT_CAGE_BAND,
-                     fallback: bool = True, integrator: str = "etd") -> RollerResponse:
+                     fallback: bool = True, integrator: str = "etd",
+                     converge: float | None = None) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -318,6 +327,15 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     ``cage_land``: add the viscous drag torque of the cage's guide land (paper 003 eq. 19
     line 3, M'_cx; :func:`cage_land_coefficient`) to the cage equation (default off: the
     quasi-static start state, paper 000's model, has none).
+    ``converge``: None (default) -- the fixed window (``warmup_orbits`` discarded, then
+    ``n_orbits``); a relative tolerance (0, 1) -- stop as soon as the running means of the
+    roller-mean rib heat and rib slide speed have converged to it, the statistics window the
+    later half of the motion so far
+    (:mod:`~thermobearing.skidding.roller_dynamics_convergence`), at most the fixed window's
+    length; a run that never converges returns the fixed window's result exactly (same
+    trajectory and samples). ``series["converged"]`` = [1] / [0], ``series["window"]`` =
+    [start, end] of the statistics window [s], ``series["simulated_orbits"]`` the orbits
+    integrated (of the quasi-static cage speed).
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
@@ -345,7 +363,7 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                   steps_per_period=steps_per_period, samples_per_period=samples_per_period,
                   phase_spread=phase_spread, table_options=table_options,
                   ring_axial=ring_axial, cage_land=cage_land, cage_band=cage_band,
-                  integrator=integrator)
+                  integrator=integrator, converge=converge)
     t0 = time.process_time()
     try:
         return _simulate_coupled_path(m, bearing, lubricant, traction=traction, **kwargs)
@@ -370,7 +388,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                            phase_spread: bool, traction: str,
                            table_options: dict[str, Any] | None, ring_axial: bool,
                            cage_land: bool, cage_band: float | None,
-                           integrator: str) -> RollerResponse:
+                           integrator: str, converge: float | None = None) -> RollerResponse:
     """One run of :func:`simulate_coupled` on one traction path (arguments as there);
     raises :class:`_TableCannotFollow` on the table path, ConvergenceError on the
     evaluate path when the cage leaves ``cage_band``."""
@@ -383,6 +401,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         raise InputError("traction", traction, ("table", "evaluate"))
     if integrator not in INTEGRATORS:
         raise InputError("integrator", integrator, INTEGRATORS)
+    if converge is not None and not 0.0 < converge < 1.0:
+        raise InputError("converge", converge, "None or a relative tolerance in (0, 1)")
     t0 = time.process_time()
     rm = race_model(bearing, lubricant, m.extras.get("temperature", 353.15))
     z_n = len(m.azimuth)
@@ -418,7 +438,19 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     n_keep = int(math.ceil(n_orbits * orbit / h))
     n_total = n_warm + n_keep
     every = max(1, int(period / samples_per_period / h))
-    n_samples = (n_keep + every - 1) // every
+    # with ``converge`` the samples start at the first step of the fixed window's sample
+    # grid (n_warm mod every), so that the fixed window's samples are among them
+    s_first = n_warm if converge is None else n_warm % every
+    n_samples = (n_total - s_first + every - 1) // every
+    # test blocks of 1/BLOCKS_PER_ORBIT orbit, whole refresh intervals (the evaluate path
+    # refreshes at every kernel call: its trajectory is then that of the fixed window)
+    n_block = (sub * max(1, int(round(orbit / BLOCKS_PER_ORBIT / h / sub))) if converge
+               else n_total)
+    next_check = min(n_block, n_total)
+    blocks: list[tuple[float, float]] = []
+    checked = 0                        # samples already in a block
+    window0 = n_warm                   # first step of the statistics window
+    converged = False
     samples = np.zeros((n_samples, z_n * n))
     sample_t = np.zeros(n_samples)
     sample_wc = np.zeros(n_samples)
@@ -492,14 +524,14 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             ko = (e1.outer.shear_force - e0.outer.shear_force) / dw
             lin[:, 6] = [spin_pocket_coupling(float(k), float(o), half)
                          for k, o in zip(lin[:, 1], ko, strict=True)]
-            block = min(sub, n_total - step)
+            block = min(sub, next_check - step)
             grid = (0.0, 1.0, empty, empty, np.zeros((1, 1, 1, 3)))
         else:
-            block = n_total - step
+            block = next_check - step
             grid = (tab.spin0, tab.spin_step, tab.loads, tab.cage, tab.values)
         status, done, t, n_sampled, wc0 = _integrate(
             c, y, t, step, block, h, sub, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z,
-            consts, film, tab is not None, *grid, n_warm, every, samples, sample_t,
+            consts, film, tab is not None, *grid, s_first, every, samples, sample_t,
             sample_wc, sample_ring, n_sampled, integrator == "etd",
             SPIN_TRUST * grid[1] if integrator == "etd" and tab is not None else 0.0)
         step += done
@@ -539,9 +571,26 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                     f"{w_drive:.1f} rad/s the inner raceway drives with the cage at rest",
                     _unstable_state(m, y, z_n, t, step, wc_now, traction))
             tab = new_table(spins, wc_now)
-    traj = samples[:n_sampled].reshape(n_sampled, z_n, n)       # (time, Z, 8)
-    tt = sample_t[:n_sampled]
-    wc_t = sample_wc[:n_sampled]
+        if status == 0 and step == next_check and step < n_total:
+            # one more block of the running-mean test (converge)
+            blk = samples[checked:n_sampled].reshape(n_sampled - checked, z_n, n)
+            blocks.append(block_heat_slide(m, blk, sample_wc[checked:n_sampled])
+                          if n_sampled > checked else (math.nan, math.nan))
+            checked = n_sampled
+            nb = len(blocks)
+            win = np.array(blocks[nb // 2:])
+            if (nb >= MIN_BLOCKS and window_converged(win[:, 0], converge, HEAT_FLOOR)
+                    and window_converged(win[:, 1], converge, SLIDE_FLOOR)):
+                converged = True
+                window0 = (nb // 2) * n_block
+                break
+            next_check = min(next_check + n_block, n_total)
+    # the statistics window's samples (fixed window: from step n_warm on)
+    i0 = max(0, -(-(window0 - s_first) // every))
+    traj = samples[i0:n_sampled].reshape(n_sampled - i0, z_n, n)       # (time, Z, 8)
+    tt = sample_t[i0:n_sampled]
+    wc_t = sample_wc[i0:n_sampled]
+    n_sampled -= i0
     mm = replace(m, cage_speed=float(np.mean(wc_t)))
     weights = []
     for j in range(z_n):
@@ -550,21 +599,24 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         weights.append((1.0 / z_n, _post(mm, tt, r[:, 0], r[:, 1], r[:, 2], r[:, 3],
                                          r[:, 7], r[:, 4], r[:, 5], f_d)))
     cost = time.process_time() - t0
-    resp = _response(weights[0][1], "coupled", cost, 4 * n_total, m.geom, weights)
+    resp = _response(weights[0][1], "coupled", cost, 4 * step, m.geom, weights)
     n_table = sum(tb.evaluations for tb in tables)
     return replace(resp, series={"t": tt, "cage_speed": wc_t, "spin": traj[:, :, 7],
                                  "axial": traj[:, :, 0], "skew": traj[:, :, 2],
                                  "pocket": traj[:, :, 4],
                                  "axial_speed": traj[:, :, 1], "skew_rate": traj[:, :, 3],
                                  "pocket_speed": traj[:, :, 5],
-                                 "ring_axial": sample_ring[:n_sampled].copy(),
+                                 "ring_axial": sample_ring[i0:i0 + n_sampled].copy(),
                                  "traction_evaluations": np.array([n_eval]),
                                  "table_points": np.array([n_table]),
                                  "table_builds": np.array([len(tables)]),
                                  "table_rebuild_status": np.array(reasons, dtype=int),
                                  "step": np.array([h]), "refresh_steps": np.array([sub]),
                                  "integrator": np.array([integrator]),
-                                 "traction_fallback": np.array([0])})
+                                 "traction_fallback": np.array([0]),
+                                 "converged": np.array([int(converged)]),
+                                 "window": np.array([window0 * h, step * h]),
+                                 "simulated_orbits": np.array([step * h / orbit])})
 
 
 def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: int,

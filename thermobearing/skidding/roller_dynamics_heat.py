@@ -9,7 +9,8 @@ operating state (speed, radial load, temperature, unbalance). Two models:
 * ``"coupled"``: all Z rollers and the cage integrated together
   (:func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, started from the
   uncoupled quasi-static state, as the validation case ``paper003_pv_slip_trends`` runs it);
-  ~1.1-1.7 s CPU per state at paper 003's base case.
+  ~1.1-1.7 s CPU per state at paper 003's base case (0.11 g), ~0.6 s at 20000 r/min
+  without unbalance (the running-mean stop, "Where the integration stops" below).
 * ``"reduced"``: one roller at the orbit's frozen load states with the quasi-static coupled
   spins (:func:`~thermobearing.skidding.roller_dynamics.simulate_reduced`), ~0.1 s plus
   ~0.1-0.2 s of the quasi-static rib coupling; its time-mean PV is 29 % below the coupled
@@ -38,7 +39,27 @@ step sizes; the chaotic motion), after the traction table was made C1 in the cag
 (before, some runs entered a cage-overspeed excursion with twice the heat; SOURCE.md of
 the case, "Cage excursions"). The cache is bounded (:data:`CACHE_SIZE` states, least recently used
 dropped) and holds only results of deterministic runs; :func:`clear_cache` empties it,
-:func:`cache_info` counts hits and runs. Units: SI.
+:func:`cache_info` counts hits and runs.
+
+Where the integration stops (2026-11-23, issue 9 cost): the coupled model integrated a fixed
+2 warm-up + 3 statistics cage orbits per node; a scene fuzzer's coupled rib_friction
+scenes timed out (all 12 timeouts of a session). Measured
+(``benchmarks/bench_rib_friction.py``: CRB 50x75x16 in MIL-PRF-23699, steps 20000 r/min /
+3 kN, 5000 / 2 kN, 10000 / 6 kN of 10 s, 0.2 kN axial, no unbalance): 11 nodes in 25 s CPU
+of a 25 s scene run, the time loop kernel ~85 % of it (1.2 / 3.5 / 1.9 s per node at
+20000 / 5000 / 10000 r/min, the ~1.5 us step the rib contact sets), quasi-static set-up,
+traction table and post-processing ~0.2 s each per node, numba's cached kernels 0.6 s
+once per process. Without an unbalance the motion settles within ~1-1.5 orbits (the
+roller-mean heat of quarter orbits constant to 1e-4 after that). The coupled model now
+stops at the running-mean criterion of
+:mod:`~thermobearing.skidding.roller_dynamics_convergence` at ``convergence``
+(default :data:`DEFAULT_CONVERGENCE` = 0.5 % on the heat and on the rib slide speed; None
+or the source option ``convergence = 0``: the fixed window): 1.5-2.0 orbits per node
+there, scene CPU 25.1 -> 11.5 s (x 2.2, dynamics per node x 2.2), heat per node within
+0.21 %, rib slide within 0.10 %, booked rib_friction power at the step ends within 0.09 %
+(the heat is there mostly the thrust share mu Q |v|). With an unbalance (chaotic impacting
+motion, block scatter ~5 %) no window converges to 0.5 % before the fixed window's end,
+so those runs are the fixed window's, unchanged (test). Units: SI.
 """
 
 from __future__ import annotations
@@ -62,6 +83,9 @@ DEFAULT_TEMPERATURE_STEP = 5.0
 #: warm-up and statistics orbits of the coupled model (those of the validation case)
 DEFAULT_WARMUP_ORBITS = 2.0
 DEFAULT_ORBITS = 3.0
+#: relative tolerance of the coupled model's running-mean stop (module notes, "Where the
+#: integration stops"); None: the fixed window of DEFAULT_WARMUP_ORBITS + DEFAULT_ORBITS
+DEFAULT_CONVERGENCE = 0.005
 #: operating states kept in the cache
 CACHE_SIZE = 64
 
@@ -82,6 +106,8 @@ class RibDynamicsHeat(NamedTuple):
     fallbacks : coupled runs (of those this value rests on, cached ones included) whose
         table path left the cage band and were re-run on the ``"evaluate"`` traction path
         (:func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`).
+    orbits : cage orbits the coupled runs it rests on integrated (mean over its nodes; 0
+        for the reduced model).
     """
 
     heat_left: float
@@ -95,6 +121,7 @@ class RibDynamicsHeat(NamedTuple):
     runs: int
     model: str
     fallbacks: int = 0
+    orbits: float = 0.0
 
     @property
     def heat(self) -> float:
@@ -147,14 +174,18 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                  temperature: float, unbalance_mass: float = 0.0, *, model: str = "coupled",
                  friction_coefficient: float = DEFAULT_RIB_FRICTION,
                  oil_fraction: float = 0.05, warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
-                 orbits: float = DEFAULT_ORBITS) -> tuple[RibDynamicsHeat, Any]:
+                 orbits: float = DEFAULT_ORBITS,
+                 convergence: float | None = DEFAULT_CONVERGENCE
+                 ) -> tuple[RibDynamicsHeat, Any]:
     """One (uncached) run of the roller dynamics at an operating state.
 
     speed : inner-ring speed relative to the outer ring [rad/s].  radial_load [N].
     temperature [K] (oil viscosities).  unbalance_mass [kg] at the right chamfer (paper 003
     sec. 8).  model : "coupled" | "reduced".  friction_coefficient : mu of eq. 12 [-].
     oil_fraction : oil volume fraction of the rib-gap mixture (eq. 14) [-].
-    warmup_orbits, orbits : coupled model's discarded and averaged cage orbits.
+    warmup_orbits, orbits : coupled model's discarded and averaged cage orbits (the fixed
+    window; with ``convergence`` the most it integrates).  convergence : relative tolerance
+    of the coupled model's running-mean stop (module notes; None: the fixed window).
     Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``).
     """
     from .roller_dynamics import build_model, simulate_reduced
@@ -172,13 +203,14 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                         temperature=temperature, rib_friction=friction_coefficient,
                         oil_fraction=oil_fraction, coupling="none")
         resp = simulate_coupled(m, bearing, lubricant, n_orbits=orbits,
-                                warmup_orbits=warmup_orbits)
+                                warmup_orbits=warmup_orbits, converge=convergence)
         s = resp.series
+        n_orbits = float(s["simulated_orbits"][0])
         v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
         slide = float(np.mean(np.abs(v)))
         fallbacks = int(s.get("traction_fallback", np.zeros(1))[0])
     else:
-        fallbacks = 0
+        fallbacks, n_orbits = 0, 0.0
         m = build_model(bearing, lubricant, speed, radial_load, unbalance_mass,
                         temperature=temperature, rib_friction=friction_coefficient,
                         oil_fraction=oil_fraction)
@@ -187,7 +219,7 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     out = RibDynamicsHeat(float(resp.rib_heat_left), float(resp.rib_heat_right),
                           float(resp.pv_left), float(resp.pv_right), float(resp.slip_speed),
                           slide, float(temperature), time.process_time() - t0, 1, model,
-                          fallbacks)
+                          fallbacks, n_orbits)
     return out, resp
 
 
@@ -198,7 +230,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                       oil_fraction: float = 0.05,
                       temperature_step: float = DEFAULT_TEMPERATURE_STEP,
                       warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
-                      orbits: float = DEFAULT_ORBITS) -> RibDynamicsHeat:
+                      orbits: float = DEFAULT_ORBITS,
+                      convergence: float | None = DEFAULT_CONVERGENCE) -> RibDynamicsHeat:
     """:func:`run_dynamics` through the cache, linearly interpolated between the two
     temperature nodes k dT <= T < (k + 1) dT (dT = ``temperature_step`` [K]; one node if T
     lies on it). Arguments as :func:`run_dynamics`. ``cost_s`` / ``runs`` of the result
@@ -210,7 +243,7 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
     base = (repr(bearing), repr(lubricant), round(float(speed), 9),
             round(float(radial_load), 9), float(unbalance_mass), model,
             float(friction_coefficient), float(oil_fraction), float(warmup_orbits),
-            float(orbits))
+            float(orbits), None if convergence is None else float(convergence))
     k = math.floor(temperature / temperature_step + 1e-12)
     w = temperature / temperature_step - k
     nodes = [(k, 1.0 - w)] + ([(k + 1, w)] if w > 1e-9 else [])
@@ -222,7 +255,7 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                               unbalance_mass, model=model,
                               friction_coefficient=friction_coefficient,
                               oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
-                              orbits=orbits)
+                              orbits=orbits, convergence=convergence)
         return out
 
     for node, weight in nodes:
@@ -242,7 +275,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
         return float(sum(wt * v[i] for wt, v in values))
 
     return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model,
-                           sum(v.fallbacks for _, v in values))
+                           sum(v.fallbacks for _, v in values),
+                           float(np.mean([v.orbits for _, v in values])))
 
 
 #: how many grid nodes to either side a failed node may borrow its value from
@@ -272,5 +306,5 @@ def _neighbour_node(run: Any, node: int, step: float, exc: Exception) -> RibDyna
     raise exc
 
 
-__all__ = ["CACHE_SIZE", "DEFAULT_TEMPERATURE_STEP", "MODELS", "RibDynamicsHeat",
-           "cache_info", "clear_cache", "rib_dynamics_heat", "run_dynamics"]
+__all__ = ["CACHE_SIZE", "DEFAULT_CONVERGENCE", "DEFAULT_TEMPERATURE_STEP", "MODELS",
+           "RibDynamicsHeat", "cache_info", "clear_cache", "rib_dynamics_heat", "run_dynamics"]
