@@ -24,7 +24,9 @@ rolling-direction slip all come out of these balances.
 
 One job: drive the solve (:func:`solve_ball`): the race-control cold start
 (:func:`race_control_guess`), warm starts, continuation in axial load from a well-loaded state
-when a cold start fails (issue 5 item 4), the errors and the result. Failure raises
+when a cold start fails (issue 5 item 4; in the load magnitude for loads far below the
+centrifugal force, :mod:`~thermobearing.skidding.ball_load_continuation`), the errors and the
+result. Failure raises
 ConvergenceError with the residual norm and the state. The pieces live in their own modules,
 re-exported here so that ``from thermobearing.skidding.ball import X`` keeps working:
 
@@ -46,6 +48,7 @@ import numpy as np
 from ..errors import ConvergenceError, InputError, check_finite, check_positive
 from ..loads import ball_load_distribution
 from .ball_coulomb import coulomb_traction_note
+from .ball_load_continuation import load_magnitude_continuation, start_scale
 from .ball_newton import (  # noqa: F401
     _CAP_G,
     _CAP_X,
@@ -145,9 +148,12 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     continuation : (A cold start, or a warm one, that fails with balls touching nothing is
         first restarted from its last iterate with those balls seated on their arcs,
         :func:`~thermobearing.skidding.ball_seat.seated_newton`, ``extra["fallback"] =
-        "seat"``.) On a cold-start failure, continue from a higher axial load, and if that
-        fails, in speed from a slow state (:func:`_speed_continuation`, ``extra["fallback"]
-        = "speed_continuation"``). (A cold start
+        "seat"``.) On a cold-start failure under a load far below one ball's centrifugal
+        force (below F_s / sqrt(10)), continue in the load magnitude from F_s along the
+        same load direction (:mod:`~thermobearing.skidding.ball_load_continuation`,
+        ``"load_continuation"``); else, or if that fails, continue from a higher axial
+        load, and if that fails, in speed from a slow state (:func:`_speed_continuation`,
+        ``extra["fallback"] = "speed_continuation"``). (A cold start
         that reaches the iteration limit below a residual of 1e-2 first gets a second budget
         of Newton iterations from its last iterate, ``extra["fallback"] = "newton_restart"``;
         one whose damped Newton stalls there gets the trust-region fallback
@@ -355,8 +361,9 @@ def _warm_step_fallbacks(system, err, tol, max_iter):
 def _cold_fallbacks(bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
                     continuation, system, err):
     """The fallbacks of a failed cold start (``err``) of :func:`solve_ball`, in order: Newton
-    restarts / the trust region from its last iterate, the continuation in axial load, in
-    speed, the acceptance at the round-off floor. Returns (X, G, residual norm, iterations,
+    restarts / the trust region from its last iterate, the continuation in load magnitude
+    (light loads only, :mod:`~thermobearing.skidding.ball_load_continuation`), in axial load,
+    in speed, the acceptance at the round-off floor. Returns (X, G, residual norm, iterations,
     fallback name, round-off floor or None); raises the ConvergenceError of the last one that
     failed."""
     fallback = round_off = None
@@ -412,7 +419,25 @@ def _cold_fallbacks(bearing, models, speed, radial_load, axial_load, n_balls, to
                 raise err from None
             X, G, nrm, round_off, system.last_jacobian = found
             return X, G, nrm, int(err.state.get("iteration", max_iter)), "round_off", round_off
+        errors = [err]
         try:
+            try:
+                # a load far below one ball's centrifugal force (the solver's force scale
+                # F_s): from F_s along the same load direction (ball_load_continuation)
+                if start_scale(system.F_s, radial_load, axial_load) <= 1.0:
+                    raise err
+                path, iters = load_magnitude_continuation(
+                    solve_ball, bearing, models, speed, radial_load, axial_load, n_balls,
+                    tol, max_iter, system.F_s, err)
+                X, G = (u.copy() for u in path.unknowns)
+                nrm, system.last_jacobian = path.residual_norm, path.extra.get("jacobian")
+                fallback = "load_continuation"
+                if path.extra.get("fallback") == "round_off":
+                    fallback, round_off = "round_off", path.extra.get("round_off_floor")
+                return X, G, nrm, iters, fallback, round_off
+            except ConvergenceError as err_mag:
+                if err_mag is not err:
+                    errors.append(err_mag)
             X, G, nrm, iters, system.last_jacobian = _continuation(
                 bearing, models, speed, radial_load, axial_load, n_balls, tol,
                 max_iter, err)
@@ -427,7 +452,7 @@ def _cold_fallbacks(bearing, models, speed, radial_load, axial_load, n_balls, to
                 # every fallback stopped just above the tolerance: accept the best
                 # iterate at the target if its residual is at the round-off floor
                 # of its evaluation (ball_round_off), else the error as before
-                found = accept_at_round_off(system, tol, (err, err_speed))
+                found = accept_at_round_off(system, tol, (*errors, err_speed))
                 if found is None:
                     raise
                 X, G, nrm, round_off, system.last_jacobian = found
