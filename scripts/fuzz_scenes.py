@@ -367,6 +367,31 @@ def _rib_scene(rng: np.random.Generator, picks: list[BearingEntry]
     return models, overrides
 
 
+#: the boundary draws of :func:`_edge_step` a scene refuses (its summary tags)
+EDGE_REFUSED = frozenset({"dur0", "rev", "negload"})
+
+
+def _edge_step(rng: np.random.Generator, steps: list[dict[str, Any]]) -> str:
+    """A boundary value in one step (tag returned): a zero duration (``dur0``), a
+    reversed speed (``rev``: the shaft turning the other way, written as a negative
+    speed), a negative load (``negload``), or a step at rest without load between turning
+    ones (``rest0``, which runs). The first three are refused naming the step's field."""
+    i = int(rng.integers(0, len(steps)))
+    kind = str(rng.choice(["dur0", "rev", "negload", "rest0"]))
+    if kind == "dur0":
+        steps[i]["duration"] = str(rng.choice(["0 s", "0 min", "0.0 s"]))
+    elif kind == "rev":
+        v = float(steps[i]["speed"].split()[0]) or 100.0
+        steps[i]["speed"] = _q(-v, "rpm")
+    elif kind == "negload":
+        key = str(rng.choice(["radial_load", "axial_load"]))
+        steps[i][key] = _q(-_log_uniform(rng, 1.0, 1000.0), "N")
+    else:
+        steps.insert(i, {"speed": "0 rpm", "radial_load": "0 N", "axial_load": "0 N",
+                         "duration": _q(_log_uniform(rng, 1.0, 60.0), "s")})
+    return kind
+
+
 def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: Path
                    ) -> dict[str, Any]:
     """Write the steps as a CSV protocol (``[schedule] file``): columns in random order and
@@ -412,33 +437,106 @@ def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: 
     return table
 
 
+#: time layouts of a measured file's time column: (tag, weight)
+TIME_LAYOUTS = (("min", 0.3), ("s", 0.12), ("clock", 0.14), ("iso", 0.1), ("dotted", 0.07),
+                ("split", 0.07), ("excel", 0.08), ("unix", 0.06), ("pattern", 0.06))
+
+
+def _time_cells(rng: np.random.Generator, layout: str, t: np.ndarray
+                ) -> tuple[list[str], list[list[str]], list[str], dict[str, Any]]:
+    """The time column(s) of a measured file in ``layout`` (see TIME_LAYOUTS): header
+    name(s), one list of cells per row, the units-row cell(s) and the ``[measured]`` keys
+    (time_column, time_format, time_zero) that read them back as seconds from t[0] = 0.
+    Numbers in min or s may start at an offset (a logger started before the test) given
+    as ``time_zero``; timestamps start at a random clock time (now and then just before
+    midnight, so the file passes it) and read from their first row."""
+    from datetime import datetime, timedelta
+
+    start = datetime(2026, int(rng.integers(1, 13)), int(rng.integers(1, 29)),
+                     23 if rng.random() < 0.2 else int(rng.integers(0, 23)),
+                     int(rng.integers(0, 60)), int(rng.integers(0, 60)))
+    stamps = [start + timedelta(seconds=float(ti)) for ti in t]
+    keys: dict[str, Any] = {}
+    if layout in ("min", "s"):
+        f = 1 / 60 if layout == "min" else 1.0
+        off = float(rng.uniform(1.0, 300.0)) if rng.random() < 0.25 else 0.0
+        if off:
+            keys["time_zero"] = f"{off * f:.4f}"
+        name = "time [min]" if layout == "min" else "time [s]"
+        return [name], [[f"{(ti + off) * f:.4f}"] for ti in t], [layout], {
+            "time_column": name, **keys}
+    if layout == "clock":
+        cells = [[f"{int(ti // 3600):02d}:{int(ti % 3600 // 60):02d}:{int(ti % 60):02d}"]
+                 for ti in t]
+        return ["Time"], cells, ["hh:mm:ss"], {"time_column": "Time"}
+    if rng.random() < 0.3:
+        keys["time_zero"] = "first"
+    if layout == "iso":
+        sep = "T" if rng.random() < 0.4 else " "
+        cells = [[d.isoformat(sep=sep, timespec="seconds")] for d in stamps]
+        return ["Timestamp"], cells, [""], {"time_column": "Timestamp", **keys}
+    if layout == "dotted":
+        cells = [[d.strftime("%d.%m.%Y %H:%M:%S")] for d in stamps]
+        return ["Datum/Uhrzeit"], cells, [""], {"time_column": "Datum/Uhrzeit", **keys}
+    if layout == "split":
+        cells = [[d.strftime("%Y-%m-%d"), d.strftime("%H:%M:%S")] for d in stamps]
+        return ["Date", "Time"], cells, ["", ""], {"time_column": ["Date", "Time"], **keys}
+    if layout == "excel":
+        # serial day numbers: a date-named column is read as such without time_format
+        days = [(d - datetime(1899, 12, 30)).total_seconds() / 86400.0 for d in stamps]
+        cells = [[f"{x:.8f}"] for x in days]
+        if rng.random() < 0.5:
+            return ["Date"], cells, [""], {"time_column": "Date", **keys}
+        return ["Stamp"], cells, [""], {"time_column": "Stamp", "time_format": "excel",
+                                        **keys}
+    if layout == "unix":
+        secs = [(d - datetime(1970, 1, 1)).total_seconds() for d in stamps]
+        return ["epoch"], [[f"{x:.1f}"] for x in secs], [""], {
+            "time_column": "epoch", "time_format": "unix", **keys}
+    cells = [[d.strftime("%Y%m%d-%H%M%S")] for d in stamps]
+    return ["stamp"], cells, [""], {"time_column": "stamp", "time_format": "%Y%m%d-%H%M%S",
+                                    **keys}
+
+
 def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
                    t0: float, path: Path) -> dict[str, Any]:
     """A synthetic rig CSV for ``[measured]`` (a smooth warm-up from ``t0`` [degC], not a
-    model result): comma or semicolon with decimal commas, time in min or ``hh:mm:ss``,
-    a few dropouts (empty, ``OVL``, ``-999`` listed in missing_values), mapped to the
-    bearings' housing nodes."""
-    n = int(rng.integers(3, 40))
+    model result), 1 to 39 rows: comma, tab or semicolon with decimal commas; the time in
+    min or s (from an offset given as ``time_zero`` now and then), elapsed ``hh:mm:ss``,
+    ISO or dotted timestamps, separate date and time columns, Excel day numbers, Unix seconds or a
+    strptime pattern (:func:`_time_cells`); sensors in degC, K or degF (now and then the
+    unit in each sensor's header brackets as loggers write it, ``[°C]``, ``(K)``); a few
+    dropouts (empty, ``OVL``, ``-999`` or a text code listed in ``missing_values``), an
+    unmapped column, a units row; mapped to the bearings' housing nodes."""
+    n = int(rng.integers(3, 40)) if rng.random() < 0.9 else int(rng.integers(1, 3))
     t = np.linspace(0.0, duration, n)
-    sensors = {f"TC{i + 1} {nm}": f"{nm}.housing" for i, nm in enumerate(names)}
+    layout = str(rng.choice([k for k, _ in TIME_LAYOUTS],
+                            p=np.array([w for _, w in TIME_LAYOUTS])
+                            / sum(w for _, w in TIME_LAYOUTS)))
     r_sep = rng.random()
     sep, dec = (";", ",") if r_sep < 0.35 else ("\t", ".") if r_sep < 0.5 else (",", ".")
-    clock = rng.random() < 0.3
-    seconds = not clock and rng.random() < 0.3
+    if sep == "," and layout == "split" and rng.random() < 0.5:
+        sep = ";"  # dates beside decimal points: any separator
     # the logger's unit (K, degF) and an unmapped column (the rig's speed) now and then
     unit = str(rng.choice(["degC", "K", "degF"], p=[0.7, 0.15, 0.15]))
     to_unit = {"degC": lambda v: v, "K": lambda v: v + 273.15,
                "degF": lambda v: v * 1.8 + 32.0}[unit]
+    in_header = rng.random() < 0.15
+    head_unit = {"degC": str(rng.choice(["[°C]", "[degC]", "(°C)"])),
+                 "K": str(rng.choice(["[K]", "(K)"])),
+                 "degF": str(rng.choice(["[°F]", "[degF]"]))}[unit]
+    sensors = {(f"TC{i + 1} {nm} {head_unit}" if in_header else f"TC{i + 1} {nm}"):
+               f"{nm}.housing" for i, nm in enumerate(names)}
+    text_code = str(rng.choice(["TC-BREAK", "9999.9", "----"])) if rng.random() < 0.2 else ""
     extra = rng.random() < 0.25
-    tname = "Time" if clock else ("time [s]" if seconds else "time [min]")
-    head = [tname, *sensors] + (["speed [rpm]"] if extra else [])
+    tnames, tcells, tunits, keys = _time_cells(rng, layout, t)
+    head = [*tnames, *sensors] + (["speed [rpm]"] if extra else [])
     lines = [sep.join(head)]
     if rng.random() < 0.15:  # a units row under the header, as DAQ programs write it
-        lines.append(sep.join(["hh:mm:ss" if clock else ("s" if seconds else "min")]
-                              + [unit] * len(sensors) + (["rpm"] if extra else [])))
-    for ti in t:
-        cells = [(f"{int(ti // 3600):02d}:{int(ti % 3600 // 60):02d}:{int(ti % 60):02d}"
-                  if clock else f"{ti if seconds else ti / 60:.4f}".replace(".", dec))]
+        lines.append(sep.join(tunits + [unit] * len(sensors) + (["rpm"] if extra else [])))
+    for ti, tc in zip(t, tcells, strict=True):
+        cells = [c.replace(".", dec) if layout in ("min", "s", "excel", "unix") else c
+                 for c in tc]
         for _ in sensors:
             r = rng.random()
             if r < 0.04:
@@ -446,7 +544,7 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
             elif r < 0.07:
                 cells.append("OVL")
             elif r < 0.1:
-                cells.append("-999")
+                cells.append(text_code.replace(".", dec) if text_code else "-999")
             else:
                 v = t0 + 20.0 * (1 - math.exp(-ti / 600.0)) + rng.normal(0.0, 0.2)
                 cells.append(f"{to_unit(v):.2f}".replace(".", dec))
@@ -454,8 +552,10 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
             cells.append(f"{rng.uniform(0.0, 3000.0):.1f}".replace(".", dec))
         lines.append(sep.join(cells))
     path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    return {"file": str(path), "time_column": head[0], "unit": unit,
-            "columns": sensors, "missing_values": [-999]}
+    missing: list[Any] = [-999] + ([float(text_code)] if text_code == "9999.9" else
+                                   [text_code] if text_code else [])
+    return {"file": str(path), **keys, "unit": unit, "columns": sensors,
+            "missing_values": missing}
 
 
 def _axial_load_steps(rng: np.random.Generator, steps: list[dict[str, Any]], c0: float,
@@ -539,23 +639,74 @@ RESPELL = {
     "s": [("min", 1 / 60, 0.0), ("ms", 1e3, 0.0)],
     "mm**3/h": [("mm3/h", 1.0, 0.0), ("mL/h", 1e-3, 0.0)],
 }
+#: valid but unusual spellings of the same units (pint names, symbols, exponents written
+#: with ^ or as a product with a negative power, another case of the prefix word): (unit,
+#: factor, offset) as in RESPELL
+ODD_SPELLINGS = {
+    "degC": [("°C", 1.0, 0.0), ("celsius", 1.0, 0.0), ("degree_Celsius", 1.0, 0.0),
+             ("kelvin", 1.0, 273.15), ("°F", 1.8, 32.0), ("fahrenheit", 1.8, 32.0)],
+    "N": [("newton", 1.0, 0.0), ("kilonewton", 1e-3, 0.0), ("MN", 1e-6, 0.0),
+          ("kgf", 1 / 9.80665, 0.0), ("daN", 0.1, 0.0)],
+    "rpm": [("rev/min", 1.0, 0.0), ("revolution/minute", 1.0, 0.0), ("turn/min", 1.0, 0.0),
+            ("rps", 1 / 60, 0.0), ("r/s", 1 / 60, 0.0), ("deg/s", 6.0, 0.0),
+            ("rad/min", 2 * math.pi, 0.0)],
+    "L/min": [("l/min", 1.0, 0.0), ("dm^3/min", 1.0, 0.0), ("liter/minute", 1.0, 0.0),
+              ("L min^-1", 1.0, 0.0), ("cm**3/s", 1000 / 60, 0.0), ("litre/hour", 60.0, 0.0),
+              ("m^3/h", 0.06, 0.0)],
+    "mm": [("µm", 1e3, 0.0), ("μm", 1e3, 0.0), ("micrometer", 1e3, 0.0),
+           ("millimeter", 1.0, 0.0), ("in", 1 / 25.4, 0.0), ("dm", 0.01, 0.0)],
+    "s": [("sec", 1.0, 0.0), ("second", 1.0, 0.0), ("minutes", 1 / 60, 0.0),
+          ("hr", 1 / 3600, 0.0), ("h", 1 / 3600, 0.0)],
+    "mm**3/h": [("mm^3/h", 1.0, 0.0), ("mm³/h", 1.0, 0.0), ("µL/h", 1.0, 0.0),
+                ("mm**3/min", 1 / 60, 0.0)],
+    "W/(m**2*K)": [("W/m^2/K", 1.0, 0.0), ("W m^-2 K^-1", 1.0, 0.0),
+                   ("W/(m²·K)", 1.0, 0.0), ("kW/(m**2*K)", 1e-3, 0.0)],
+    "MPa": [("GPa", 1e-3, 0.0), ("N/mm**2", 1.0, 0.0), ("N/mm^2", 1.0, 0.0)],
+}
 _QTY = re.compile(r"^([-+]?[0-9.]+(?:e[-+]?\d+)?) (\S+)$")
 
 
-def respell(rng: np.random.Generator, doc: Any, share: float = 0.5) -> Any:
+def _number_text(rng: np.random.Generator, value: float) -> tuple[str, str]:
+    """``value`` in one of the number forms a scene may write, and the separator to put
+    before the unit: ``1500``, ``1.5e3`` / ``1.5E+03``, ``+1500``, ``.5`` (no leading
+    zero), ``1500.`` (a trailing point), or no space before the unit (``1500rpm``)."""
+    text = f"{value:.12g}"
+    r = rng.random()
+    if r < 0.15:
+        text = f"{value:.9e}" if rng.random() < 0.5 else f"{value:.9E}"
+    elif r < 0.25 and value > 0:
+        text = "+" + text
+    elif r < 0.35 and 0 < abs(value) < 1 and text.startswith(("0.", "-0.")):
+        text = text.replace("0.", ".", 1)
+    elif r < 0.42 and "." not in text and "e" not in text:
+        text += "."
+    return text, ("" if rng.random() < 0.15 else " ")
+
+
+def respell(rng: np.random.Generator, doc: Any, share: float = 0.5, odd: float = 0.0) -> Any:
     """A copy of the scene document with about ``share`` of its quantities written in
     another unit (K / degF, kN / lbf, rad/s / rev/s / krpm, L/h, m, inch, min ...): the
-    same scene, which must load to the same SI values."""
+    same scene, which must load to the same SI values. ``odd``: the share of those written
+    in an unusual but valid spelling (ODD_SPELLINGS: ``°C``, ``kilonewton``, ``rev/min``,
+    ``dm^3/min``, ``µm``, ``hr``, ``W m^-2 K^-1``...) and number form (``1.5E+03``,
+    ``+1500``, ``.5``, ``1500.``, ``1500rpm``)."""
     if isinstance(doc, dict):
-        return {k: respell(rng, v, share) for k, v in doc.items()}
+        return {k: respell(rng, v, share, odd) for k, v in doc.items()}
     if isinstance(doc, list):
-        return [respell(rng, v, share) for v in doc]
+        return [respell(rng, v, share, odd) for v in doc]
     if isinstance(doc, str):
         m = _QTY.match(doc)
-        if m and m.group(2) in RESPELL and rng.random() < share:
-            opts = RESPELL[m.group(2)]
-            unit, f, off = opts[int(rng.integers(0, len(opts)))]
-            return f"{float(m.group(1)) * f + off:.12g} {unit}"
+        unit = m.group(2) if m else ""
+        if m and (unit in RESPELL or unit in ODD_SPELLINGS) and rng.random() < share:
+            if unit in ODD_SPELLINGS and rng.random() < odd:
+                opts = ODD_SPELLINGS[unit]
+                new, f, off = opts[int(rng.integers(0, len(opts)))]
+                text, gap = _number_text(rng, float(m.group(1)) * f + off)
+                return f"{text}{gap}{new}"
+            if unit in RESPELL:
+                opts = RESPELL[unit]
+                new, f, off = opts[int(rng.integers(0, len(opts)))]
+                return f"{float(m.group(1)) * f + off:.12g} {new}"
     return doc
 
 
@@ -621,6 +772,7 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
             step["axial_load"] = _q(0.0 if roller else _load(rng, c0), "N")
         step["duration"] = _q(_log_uniform(rng, 2.0, 600.0), "s")
         steps.append(step)
+    edge = _edge_step(rng, steps) if rng.random() < 0.05 else ""
     cold = rng.random() < 0.12
     hot = not cold and rng.random() < 0.07
     if cold:
@@ -697,6 +849,8 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
                                and "axial_load_steps" not in schedule),
                               ("asteps", "axial_load_steps" in schedule),
                               ("meas", "measured" in doc)) if on]
+    if edge:
+        extras.append(edge)
     if oil:
         extras.append(oil)
     extras += _options(rng, doc, picks, kin)
@@ -705,8 +859,9 @@ def make_scene(rng: np.random.Generator, catalogue: list[BearingEntry],
         from thermobearing.scene import dumps_toml
 
         desc["plain"] = dumps_toml(doc)
-        doc = respell(rng, doc)
-        extras.append("units")
+        odd = rng.random() < 0.5
+        doc = respell(rng, doc, odd=0.7 if odd else 0.0)
+        extras.append("oddunits" if odd else "units")
     if "file" in schedule:
         # the protocol's steps as written inline: the file must read to the same steps
         from thermobearing.scene import dumps_toml
@@ -871,6 +1026,16 @@ def _source_option(rng: np.random.Generator, models: dict[str, Any], ball: bool 
     return True
 
 
+def _rpm_of(text: Any) -> float:
+    """A step's speed [r/min] from its text (0 when it is none or not positive)."""
+    from thermobearing.units import to_si
+
+    try:
+        return max(to_si(text, "angular_speed") * 30.0 / math.pi, 0.0)
+    except Exception:  # noqa: BLE001 -- a malformed speed (an edge draw): no rpm
+        return 0.0
+
+
 def _duration_s(step: dict[str, Any]) -> float:
     value, unit = step["duration"].split()
     return float(value) * {"s": 1.0, "min": 60.0}[unit]
@@ -936,9 +1101,10 @@ def _nan_allowed(table: str, column: str, row: Any, no_contacts_model: bool) -> 
     if table == "kinematics" and at_rest and column in (
             "cage speed ratio [-]", "over-skidding [%]"):
         return True  # README: at rest the cage speed ratio is left empty
-    if table == "film" and at_rest and column in ("central film [um]", "film parameter [-]",
-                                                  "closed-form central film [um]"):
-        return True
+    untouched = float(row.get("max load [N]", 1.0)) == 0.0
+    if table == "film" and (at_rest or untouched) and column in (
+            "central film [um]", "film parameter [-]", "closed-form central film [um]"):
+        return True  # no film at rest, none on a raceway no element touches (0 N)
     return False
 
 
@@ -1307,26 +1473,44 @@ def run_cli(case: Case, out_dir: Path, time_limit: float) -> None:
         case.message = f"cli exit {proc.returncode}: {' | '.join(err[-3:])}"
 
 
-def sweep_set(rng: np.random.Generator, doc: dict[str, Any]) -> str | None:
-    """One ``--set PATH=VALUES`` of two values for the scene (bare numbers in the scene's
-    own unit of the field, or presets), or None when none fits."""
+def sweep_options(rng: np.random.Generator, doc: dict[str, Any]) -> list[str]:
+    """The ``--set PATH=VALUES`` candidates for the scene, two values each: bare numbers
+    in the scene's own unit of the field (now and then with ten significant digits, which
+    the sweep must keep), a range ``start:stop:step``, values with their unit, or presets
+    and lubricant files."""
     options: list[str] = []
     sup = doc.get("supply", {})
 
     def num(text: str) -> float:
-        return float(text.split()[0])
+        m = _NUM_UNIT.match(text)
+        return float(m.group(1)) if m else float(text.split()[0])
+
+    def fmt(x: float) -> str:
+        return f"{x:.10g}" if rng.random() < 0.3 else f"{x:.6g}"
 
     if "flow" in sup and num(sup["flow"]) > 0:
-        f = num(sup["flow"])
-        options.append(f"supply.flow={f * 0.5:.6g},{f * 2.0:.6g}")
+        f = num(sup["flow"]) * float(rng.uniform(0.9, 1.1))
+        options.append(f"supply.flow={fmt(f * 0.5)},{fmt(f * 2.0)}")
     if "inlet_temperature" in sup:
         t = num(sup["inlet_temperature"])
-        options.append(f"supply.inlet_temperature={t:.6g},{t + 10.0:.6g}")
+        options.append(f"supply.inlet_temperature={fmt(t)},{fmt(t + 10.0)}"
+                       if rng.random() < 0.7 else
+                       f"supply.inlet_temperature={fmt(t)}:{fmt(t + 10.0)}:10")
+    if "level" in sup:
+        options.append(f"supply.level={fmt(num(sup['level']) * 0.5)},{fmt(num(sup['level']))}")
     sched = doc.get("schedule", {})
     steps = sched.get("steps") or ([sched] if "speed" in sched else [])
     if steps and "speed" in steps[0]:
         v = num(steps[0]["speed"])
-        options.append(f"schedule.speed={v:.6g},{v * 1.5 + 1.0:.6g}")
+        options.append(f"schedule.speed={fmt(v)},{fmt(v * 1.5 + 1.0)}")
+    if steps and "radial_load" in steps[0]:
+        options.append(f"schedule.radial_load={fmt(num(steps[0]['radial_load']))},"
+                       f"{fmt(num(steps[0]['radial_load']) * 1.3 + 1.0)}")
+    amb = doc.get("environment", {}).get("ambient_temperature")
+    if amb is not None:
+        options.append(f"environment.ambient_temperature={fmt(num(amb))} degC,"
+                       f"{fmt(num(amb) + 15.0)} degC" if "degC" in amb else
+                       f"environment.ambient_temperature={fmt(num(amb))},{fmt(num(amb) + 15)}")
     two = [str(x) for x in rng.choice(lubricant_names(), 2, replace=False)]
     if "preset" in doc.get("lubricant", {}):
         options.append("lubricant.preset=" + ",".join(two))
@@ -1337,7 +1521,33 @@ def sweep_set(rng: np.random.Generator, doc: dict[str, Any]) -> str | None:
     if "network" in doc:
         options.append(f"network.parameters.h_oil={_log_uniform(rng, *H_OIL_RANGE):.4g},"
                        f"{_log_uniform(rng, *H_OIL_RANGE):.4g}")
-    return str(rng.choice(options)) if options else None
+        options.append(f"network.parameters.h_air={_log_uniform(rng, *H_AIR_RANGE):.4g},"
+                       f"{_log_uniform(rng, *H_AIR_RANGE):.4g} W/(m**2*K)")
+    return options
+
+
+def sweep_sets(rng: np.random.Generator, doc: dict[str, Any]) -> list[str]:
+    """One to three ``--set`` of different paths (a cartesian product of up to 8 cases;
+    never both lubricant.preset and lubricant.path), or [] when none fits."""
+    options = sweep_options(rng, doc)
+    if not options:
+        return []
+    k = min(len(options), int(rng.choice([1, 2, 3], p=[0.6, 0.3, 0.1])))
+    out: list[str] = []
+    for i in rng.permutation(len(options)):
+        path = options[int(i)].split("=", 1)[0]
+        if any(o.split("=", 1)[0] == path or (o.startswith("lubricant.")
+                                              and path.startswith("lubricant."))
+               for o in out):
+            continue
+        out.append(options[int(i)])
+        if len(out) == k:
+            break
+    return out
+
+
+#: a quantity's number and unit, with or without a space between ("1500rpm", "+.5 kN")
+_NUM_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
 
 def _written_unit(doc: dict[str, Any], path: str) -> str | None:
@@ -1352,8 +1562,24 @@ def _written_unit(doc: dict[str, Any], path: str) -> str | None:
         if not isinstance(node, dict) or key not in node:
             return None
         node = node[key]
-    m = _QTY.match(node) if isinstance(node, str) else None
-    return m.group(2) if m else None
+    m = _NUM_UNIT.match(node) if isinstance(node, str) else None
+    return m.group(2) if m and m.group(2) else None
+
+
+def swept_values_kept(setting: str, column: Any) -> str | None:
+    """Where the sweep's summary column of ``setting`` (bare numbers, a comma list) holds
+    a value other than the one given (rounded: ``1.234567891`` read as ``1.23457``), or
+    None. Ranges and texts are not compared."""
+    path, raw = setting.split("=", 1)
+    numbers = raw.split()[0] if raw.split() else raw
+    if ":" in raw or not re.fullmatch(r"[-+0-9.eE,]+", numbers):
+        return None
+    given = sorted(float(x) for x in numbers.split(","))
+    got = sorted(float(_NUM_UNIT.match(str(v)).group(1)) for v in column)
+    if len(given) == len(got) and not all(math.isclose(a, b, rel_tol=1e-9)
+                                          for a, b in zip(given, got, strict=True)):
+        return f"{path} swept as {given}, the cases ran {got}"
+    return None
 
 
 def _unchanged_by_sweep(summary: Any, path: str, stderr: str) -> str | None:
@@ -1376,53 +1602,300 @@ def _unchanged_by_sweep(summary: Any, path: str, stderr: str) -> str | None:
             "columns, no note")
 
 
-def run_sweep_cli(case: Case, out_dir: Path, time_limit: float, setting: str) -> None:
-    """``thermobearing sweep SCENE --set ... -j 1 --quiet --out DIR`` and ``thermobearing
-    report DIR``: a finished sweep has a summary.csv whose mean total loss is a finite
-    number >= 0 in every row; a refusal is exit 1 with an error line."""
+def run_sweep_cli(case: Case, out_dir: Path, time_limit: float, settings: list[str]
+                  ) -> None:
+    """``thermobearing sweep SCENE --set ... [--set ...] -j 1 --quiet --out DIR`` and
+    ``thermobearing report DIR``: a finished sweep has a summary.csv whose mean total loss
+    is a finite number >= 0 in every row, each swept field in the scene's unit with the
+    values given; a refusal is exit 1 with an error line."""
     import pandas as pd
 
     scene_path = out_dir / f"case_{case.index:04d}.toml"
     scene_path.write_text(case.toml, encoding="utf-8")
     target = out_dir / f"case_{case.index:04d}_sweep"
-    proc = _cli(["sweep", str(scene_path), "--set", setting, "-j", "1", "--quiet",
-                 "--out", str(target)], 2 * time_limit + 60)
+    shown = " ".join(settings)
+    args = ["sweep", str(scene_path)]
+    for setting in settings:
+        args += ["--set", setting]
+    proc = _cli([*args, "-j", "1", "--quiet", "--out", str(target)],
+                len(settings) * 2 * time_limit + 60)
     if proc is None:
-        case.notes.append(f"sweep {setting}: time limit")
+        case.notes.append(f"sweep {shown}: time limit")
         return
     if _cli_failure(proc):
-        case.outcome, case.message = "DEFECT", f"cli sweep {setting}: {_cli_failure(proc)}"
+        case.outcome, case.message = "DEFECT", f"cli sweep {shown}: {_cli_failure(proc)}"
         return
     if proc.returncode != 0:
-        case.notes.append(f"sweep {setting}: {proc.stderr.strip().splitlines()[-1][:200]}")
+        case.notes.append(f"sweep {shown}: {proc.stderr.strip().splitlines()[-1][:200]}")
         return
     summary = pd.read_csv(target / "summary.csv")
-    path = setting.split("=", 1)[0]
-    written = _written_unit(tomllib.loads(case.toml), path)
-    if written and path in summary:
-        from thermobearing.units import quantity_unit
+    doc = tomllib.loads(case.toml)
+    for setting in settings:
+        path = setting.split("=", 1)[0]
+        written = _written_unit(doc, path)
+        if written and path in summary:
+            from thermobearing.units import quantity_unit
 
-        got = {str(v).split(" ", 1)[-1] for v in summary[path]}
-        # the same unit in another spelling ("r/min" is rpm) is no defect
-        if {quantity_unit(f"1 {u}") for u in got} != {quantity_unit(f"1 {written}")}:
-            case.outcome, case.message = "DEFECT", (
-                f"cli sweep {setting}: bare numbers read in {sorted(got)}, the scene writes "
-                f"{path} in {written!r}")
+            got = {_NUM_UNIT.match(str(v)).group(2) for v in summary[path]}
+            # the same unit in another spelling ("r/min" is rpm) is no defect
+            if {quantity_unit(f"1 {u}") for u in got} != {quantity_unit(f"1 {written}")}:
+                case.outcome, case.message = "DEFECT", (
+                    f"cli sweep {shown}: bare numbers of {path} read in {sorted(got)}, the "
+                    f"scene writes it in {written!r}")
+                return
+        lost = swept_values_kept(setting, summary[path]) if path in summary else None
+        if lost:
+            case.outcome, case.message = "DEFECT", f"cli sweep {shown}: {lost}"
             return
     col = next((c for c in ("mean total loss [W]", "total loss [W]") if c in summary), "")
     if col and not (np.isfinite(summary[col]).all() and (summary[col] >= 0).all()):
         case.outcome, case.message = "DEFECT", (
-            f"cli sweep {setting}: summary.csv {col} = {summary[col].tolist()}")
+            f"cli sweep {shown}: summary.csv {col} = {summary[col].tolist()}")
         return
-    same = _unchanged_by_sweep(summary, path, proc.stderr)
+    same = (_unchanged_by_sweep(summary, settings[0].split("=", 1)[0], proc.stderr)
+            if len(settings) == 1 else None)
     if same:
-        case.notes.append(f"sweep {setting}: {same}")
+        case.notes.append(f"sweep {shown}: {same}")
     rep = _cli(["report", str(target)], time_limit)
     if rep is not None and (rep.returncode != 0 or not (target / "report.html").is_file()):
         case.outcome, case.message = "DEFECT", (
-            f"cli report of sweep {setting}: {_cli_failure(rep) or rep.stderr[-300:]}")
+            f"cli report of sweep {shown}: {_cli_failure(rep) or rep.stderr[-300:]}")
     else:
-        case.notes.append(f"sweep {setting}: ok")
+        case.notes.append(f"sweep {len(settings)} set(s): ok")
+
+
+#: sampling rates of the generated vibration records [Hz] (DAQ cards and sound cards)
+RATES = (5120.0, 10240.0, 12800.0, 20000.0, 25600.0, 48000.0, 51200.0)
+#: kinds of generated vibration record: (tag, weight); "clean" has a cage-modulated
+#: ball-pass impulse train well above the noise, the others are what rigs also record
+SIGNAL_KINDS = (("clean", 0.35), ("weak", 0.15), ("noise", 0.1), ("const", 0.04),
+                ("clipped", 0.08), ("short", 0.06), ("gaps", 0.1), ("slow", 0.06),
+                ("aliased", 0.06))
+
+
+def vibration_record(rng: np.random.Generator, spec: dict[str, Any], rpm: float,
+                     path_stem: Path) -> tuple[Path, list[str], dict[str, Any]]:
+    """A synthetic acceleration record for ``thermobearing cage-speed`` (a fuzz input, not
+    a rig's: an outer-race ball-pass impulse train at Z f_cage, each impulse ringing at a
+    resonance, its amplitude modulated at the cage frequency, in Gaussian noise), with the
+    cage turning at (1 - slip) of the pure-rolling ratio 0.5 (1 - D cos(alpha) / d_m)
+    (Harris and Kotzalas, Rolling Bearing Analysis, 5th ed., Vol. 1, Eq. 7.12). Kinds
+    (SIGNAL_KINDS): also pure noise, a constant, a clipped, short, slow or aliased record,
+    NaN dropouts. Written as CSV (time column, comma / semicolon with decimal commas / tab
+    with a units row, or samples only), .npy, .npz or .wav. Returns the file, the extra
+    arguments (``--rpm`` in some spelling, ``--fs`` where the file has no rate, ``--band``,
+    ``--search``, ``--fill-gaps``) and what was generated (kind, csr, rate)."""
+    from thermobearing.geometry import load_bearing
+
+    b = load_bearing(spec.get("preset") or spec["path"])
+    d = float(getattr(b, "ball_diameter", getattr(b, "roller_diameter", 0.0)))
+    cos_a = math.cos(float(getattr(b, "contact_angle", 0.0) or 0.0))
+    csr_th = 0.5 * (1.0 - d * cos_a / float(b.pitch_diameter))
+    kind = str(rng.choice([k for k, _ in SIGNAL_KINDS],
+                          p=np.array([w for _, w in SIGNAL_KINDS])
+                          / sum(w for _, w in SIGNAL_KINDS)))
+    if kind == "slow":
+        rpm = _log_uniform(rng, 1.0, 60.0)
+    fs = float(rng.choice(RATES))
+    slip = float(rng.uniform(0.0, 0.15))
+    fr = rpm / 60.0
+    f_cage = csr_th * (1.0 - slip) * fr
+    bpfo = int(b.n_elements) * f_cage
+    if kind == "aliased":
+        fs = max(200.0, float(round(bpfo * rng.uniform(0.8, 2.5))))
+    # long enough for 3.5 to 8 revolutions of a cage at 0.3 of the pure-rolling ratio (the
+    # analyser's lowest search, which asks for 3), up to 4e5 samples; "short" and "slow"
+    # records fall short of it
+    seconds = (_log_uniform(rng, 0.005, 0.05) if kind == "short"
+               else float(rng.uniform(0.5, 4.0)) if kind == "slow"
+               else min(max(float(rng.uniform(0.5, 4.0)),
+                            float(rng.uniform(3.5, 8.0)) / (0.3 * csr_th * fr)), 4.0e5 / fs))
+    n = max(int(seconds * fs), 8)
+    t = np.arange(n) / fs
+    x = rng.normal(0.0, 1.0, n)
+    if kind not in ("noise", "const"):
+        amp = (8.0 if kind != "weak" else 0.8) * float(rng.uniform(0.5, 2.0))
+        hits = np.zeros(n)
+        times = np.arange(0.0, n / fs, 1.0 / bpfo) if bpfo > 0 else np.zeros(0)
+        idx = np.minimum((times * fs).astype(int), n - 1)
+        np.add.at(hits, idx, amp * (1.0 + 0.6 * np.cos(2 * math.pi * f_cage * times)))
+        f_res = float(rng.uniform(0.12, 0.35)) * fs
+        k = np.arange(min(400, n))
+        ring = np.exp(-k / (fs / f_res * rng.uniform(3.0, 15.0))) * np.sin(
+            2 * math.pi * f_res * k / fs)
+        x += np.convolve(hits, ring)[:n]
+        x += 0.5 * np.sin(2 * math.pi * fr * t)  # the shaft's own line (unbalance)
+    if kind == "const":
+        x = np.full(n, float(rng.uniform(-1.0, 1.0)))
+    if kind == "clipped":
+        x = np.clip(x, -0.3 * np.max(np.abs(x)), 0.3 * np.max(np.abs(x)))
+    x += float(rng.uniform(-2.0, 2.0))  # a DC offset (an ICP channel's bias)
+    args: list[str] = []
+    if kind == "gaps":
+        for _ in range(int(rng.integers(1, 4))):
+            i0 = int(rng.integers(0, n))
+            x[i0:i0 + int(rng.integers(1, 8))] = np.nan
+        if rng.random() < 0.6:
+            args.append("--fill-gaps")
+    fmt = str(rng.choice(["csv", "csv_semicolon", "tsv_units", "csv_bare", "npy", "npz",
+                          "wav"], p=[0.25, 0.15, 0.1, 0.1, 0.15, 0.1, 0.15]))
+    if fmt == "wav" and kind == "gaps":
+        fmt = "npy"
+    if fmt.startswith(("csv", "tsv")):
+        path = path_stem.with_name(path_stem.name + ("_vib.tsv" if fmt == "tsv_units"
+                                                      else "_vib.csv"))
+        sep, dec = {"csv": (",", "."), "csv_semicolon": (";", ","), "tsv_units": ("\t", "."),
+                    "csv_bare": (",", ".")}[fmt]
+        cells = ["" if not np.isfinite(v) else f"{v:.6g}".replace(".", dec) for v in x]
+        if fmt == "csv_bare":
+            lines = ["acc [g]"] + cells
+            args += ["--fs", str(rng.choice([f"{fs:g}", f"{fs / 1000:g} kHz"]))]
+        else:
+            lines = [sep.join(["time [s]", "acc [g]"])]
+            if fmt == "tsv_units":
+                lines.append(sep.join(["s", "g"]))
+            lines += [sep.join([f"{ti:.9f}".replace(".", dec), c]) for ti, c in
+                      zip(t, cells, strict=True)]
+        path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    elif fmt == "npy":
+        path = path_stem.with_name(path_stem.name + "_vib.npy")
+        np.save(path, x)
+        args += ["--fs", f"{fs:g}"]
+    elif fmt == "npz":
+        path = path_stem.with_name(path_stem.name + "_vib.npz")
+        np.savez(path, data=x, sampling_rate=np.float64(fs))
+    else:
+        from scipy.io import wavfile
+
+        path = path_stem.with_name(path_stem.name + "_vib.wav")
+        peak = float(np.max(np.abs(x))) or 1.0
+        wavfile.write(path, int(fs), (x / peak * 30000).astype(np.int16))
+    r = rng.random()
+    args += ["--rpm", (f"{rpm:.6g}" if r < 0.4 else f"{rpm:.6g} rpm" if r < 0.6
+                       else f"{rpm / 60:.6g} Hz" if r < 0.8 else f"{rpm * math.pi / 30:.6g} rad/s")]
+    if rng.random() < 0.1:
+        lo = float(rng.uniform(0.05, 0.3)) * fs
+        args += ["--band", f"{lo:.0f}", f"{lo + float(rng.uniform(0.05, 0.2)) * fs:.0f}"]
+    if rng.random() < 0.1:
+        args += ["--search", f"{rng.uniform(0.5, 0.9):.2f}", f"{rng.uniform(1.0, 1.2):.2f}"]
+    return path, args, {"kind": kind, "csr": csr_th * (1.0 - slip), "fs": fs, "rpm": rpm}
+
+
+def _finite_numbers(rec: Any, where: str = "") -> str | None:
+    """The first NaN / inf number in a JSON record (where), or None."""
+    if isinstance(rec, dict):
+        for k, v in rec.items():
+            bad = _finite_numbers(v, f"{where}.{k}" if where else str(k))
+            if bad:
+                return bad
+    elif isinstance(rec, list):
+        for i, v in enumerate(rec):
+            bad = _finite_numbers(v, f"{where}[{i}]")
+            if bad:
+                return bad
+    elif isinstance(rec, float) and not math.isfinite(rec):
+        return f"{where} = {rec}"
+    return None
+
+
+def run_cage_cli(case: Case, rng: np.random.Generator, spec: dict[str, Any], rpm: float,
+                 out_dir: Path, time_limit: float) -> None:
+    """``thermobearing cage-speed FILE --bearing B --rpm ... --json`` on a generated record
+    (:func:`vibration_record`): exit 0 with a JSON record of finite numbers, 3 (not
+    detected) or 1 with an error line; anything else, or a NaN in the record, is a
+    defect. A clean record read more than 3 % off the generated ratio is noted."""
+    import json
+
+    stem = out_dir / f"case_{case.index:04d}"
+    path, args, made = vibration_record(rng, spec, rpm, stem)
+    bearing = spec.get("preset") or spec["path"]
+    plot = ["--plot", str(stem.with_name(stem.name + "_vib.png"))] if rng.random() < 0.2 \
+        else ["--no-plot"]
+    cmd = ["cage-speed", str(path), "--bearing", bearing, *args, *plot, "--json"]
+    shown = " ".join(repr(a) if " " in a else a for a in cmd)
+    proc = _cli(cmd, time_limit)
+    if proc is None:
+        case.notes.append(f"cage-speed ({made['kind']}): time limit")
+        return
+    err = proc.stderr.strip().splitlines()
+    if proc.returncode == 3 or (proc.returncode == 1 and any("error:" in ln for ln in err)):
+        case.notes.append(f"cage-speed {made['kind']}: exit {proc.returncode}"
+                          + (f" {err[-1][:120]}" if proc.returncode == 1 else ""))
+        return
+    if proc.returncode != 0:
+        case.outcome, case.message = "DEFECT", (
+            f"cli {shown}: exit {proc.returncode}: {' | '.join(err[-3:])}")
+        return
+    try:
+        rec = json.loads(proc.stdout)
+    except ValueError:
+        case.outcome, case.message = "DEFECT", f"cli {shown}: no JSON record: {proc.stdout[:200]}"
+        return
+    bad = _finite_numbers(rec)
+    if bad:
+        case.outcome, case.message = "DEFECT", f"cli {shown}: {bad}"
+        return
+    csr = next((rec[k] for k in ("csr", "cage_speed_ratio") if k in rec), None)
+    if (made["kind"] == "clean" and isinstance(csr, float)
+            and abs(csr / made["csr"] - 1.0) > 0.03):
+        case.notes.append(f"cage-speed clean: CSR {csr:.4g}, generated {made['csr']:.4g}")
+    else:
+        case.notes.append(f"cage-speed {made['kind']}: exit 0")
+
+
+#: calibration fits drawn for a scene with a [measured] table: --fit paths, and --x0 /
+#: --bounds now and then (bare numbers are in the parameter's unit)
+CALIBRATE_FITS = (("network.parameters.h_oil", "50:3000", "200"),
+                  ("network.parameters.h_air", "2:100", "'15 W/(m**2*K)'"),
+                  ("supply.inlet_temperature", "0:150", "40"),
+                  ("network.parameters.h_oil,network.parameters.h_air", "", ""))
+
+
+def run_calibrate_cli(case: Case, rng: np.random.Generator, out_dir: Path,
+                      time_limit: float) -> None:
+    """``thermobearing calibrate SCENE --fit ... --max-runs 2 --quiet --out DIR`` on a scene
+    with a (small, generated) measured file: exit 0 with a calibrated scene that loads and
+    ``check`` passes, or 1 with an error line; anything else is a defect."""
+    from thermobearing.scene import load_scene
+
+    scene_path = out_dir / f"case_{case.index:04d}.toml"
+    scene_path.write_text(case.toml, encoding="utf-8")
+    target = out_dir / f"case_{case.index:04d}_calib"
+    fit, bounds, x0 = CALIBRATE_FITS[int(rng.integers(0, len(CALIBRATE_FITS)))]
+    args = ["calibrate", str(scene_path), "--fit", fit, "--max-runs", "2", "--quiet",
+            "--out", str(target)]
+    if bounds and rng.random() < 0.5:
+        args += ["--bounds", f"{fit}={bounds}"]
+    if x0 and rng.random() < 0.3:
+        args += ["--x0", f"{fit}={x0.strip(chr(39))}"]
+    proc = _cli(args, 8 * time_limit + 60)
+    shown = " ".join(args[2:])
+    if proc is None:
+        case.notes.append(f"calibrate {shown}: time limit")
+        return
+    if _cli_failure(proc):
+        case.outcome, case.message = "DEFECT", f"cli calibrate {shown}: {_cli_failure(proc)}"
+        return
+    if proc.returncode != 0:
+        case.notes.append(f"calibrate: {proc.stderr.strip().splitlines()[-1][:160]}")
+        return
+    calibrated = target / f"{scene_path.stem}_calibrated.toml"
+    if not calibrated.is_file():
+        case.outcome, case.message = "DEFECT", f"cli calibrate {shown}: exit 0, no {calibrated}"
+        return
+    try:
+        load_scene(str(calibrated))
+    except Exception as exc:  # noqa: BLE001 -- any failure of the written scene
+        case.outcome, case.message = "DEFECT", (
+            f"cli calibrate {shown}: the calibrated scene does not load: {exc}")
+        return
+    check = _cli(["check", str(calibrated)], time_limit)
+    if check is not None and check.returncode != 0:
+        case.outcome, case.message = "DEFECT", (
+            f"cli calibrate {shown}: check refuses the calibrated scene: "
+            f"{check.stderr.strip()[-200:]}")
+        return
+    case.notes.append(f"calibrate {fit}: ok")
 
 
 # -------------------------------------------------------------------------------- main
@@ -1442,6 +1915,13 @@ def main(argv: list[str] | None = None) -> int:
                              "within a third of the time limit: `thermobearing sweep` "
                              "with one --set of two values, then `report` (0: never; "
                              "default 5)")
+    parser.add_argument("--cage-every", type=int, default=4,
+                        help="also run `thermobearing cage-speed` on a generated vibration "
+                             "record of every N-th case's first bearing (0: never; default 4)")
+    parser.add_argument("--calibrate", type=int, default=1,
+                        help="also run `thermobearing calibrate --max-runs 2` on every case "
+                             "with a measured file that ran OK within a quarter of the time "
+                             "limit (0: never; default 1)")
     parser.add_argument("--only", type=str, default="",
                         help="comma list of case indices to run (reproduce a few)")
     args = parser.parse_args(argv)
@@ -1457,7 +1937,7 @@ def main(argv: list[str] | None = None) -> int:
     runner = Runner()
     for i in range(args.n):
         doc, desc = make_scene(rng, catalogue, lubricants, out_dir / f"case_{i:04d}")
-        setting = sweep_set(rng, doc)  # drawn for every case: --only reruns the same
+        settings = sweep_sets(rng, doc)  # drawn for every case: --only reruns the same
         if only and i not in only:
             continue
         case = Case(i, desc, dumps_toml(doc), plain=desc.get("plain", ""),
@@ -1466,8 +1946,17 @@ def main(argv: list[str] | None = None) -> int:
         if args.cli_every and i % args.cli_every == 0 and case.outcome != "TIMEOUT":
             run_cli(case, out_dir, args.time_limit)
         if (args.sweep_every and i % args.sweep_every == args.sweep_every // 2
-                and case.outcome == "OK" and case.seconds < args.time_limit / 3 and setting):
-            run_sweep_cli(case, out_dir, args.time_limit, setting)
+                and case.outcome == "OK" and case.seconds < args.time_limit / 3 and settings):
+            run_sweep_cli(case, out_dir, args.time_limit, settings)
+        extra_rng = np.random.default_rng([args.seed, i, 7])  # apart from the scene draws
+        if args.cage_every and i % args.cage_every == 1 and case.outcome != "DEFECT":
+            spec = doc["bearings"][0]
+            step = (doc["schedule"].get("steps") or [doc["schedule"]])[0]
+            rpm = _rpm_of(step.get("speed", "")) or _log_uniform(extra_rng, 300.0, 6000.0)
+            run_cage_cli(case, extra_rng, spec, rpm, out_dir, args.time_limit)
+        if (args.calibrate and "measured" in doc and case.outcome == "OK"
+                and case.seconds < args.time_limit / 4):
+            run_calibrate_cli(case, extra_rng, out_dir, args.time_limit)
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "
