@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from thermobearing import skidding
+from thermobearing.errors import InputError, ValidityWarning
 from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate
 from thermobearing.lubricant import load_lubricant
@@ -170,10 +171,36 @@ def test_roller_drag_by_hand(nu214, oil):
         kinematics=res.kinematic_state, traction=default_traction_law(oil))
     heat = evaluate(["churning_elements"], ctx)[0]
     assert heat.total == pytest.approx(18 * force * u, rel=1e-12)
-    # options beyond where the heat goes ask for the source's own model on purpose
-    own = evaluate(["churning_elements"], HeatContext.isothermal(
-        T_OIL, bearing=nu214, lubricant=oil, supply=sup,
-        operating=OperatingPoint(inner_speed=OMEGA, radial_load=1000.0),
-        kinematics=res.kinematic_state, traction=default_traction_law(oil),
-        options={"churning_elements": {"drag_coefficient": 0.5}}))[0]
+    # options beyond where the heat goes ask for the source's own model on purpose, said
+    with pytest.warns(ValidityWarning, match="not the drag the roller skidding solver"):
+        own = evaluate(["churning_elements"], HeatContext.isothermal(
+            T_OIL, bearing=nu214, lubricant=oil, supply=sup,
+            operating=OperatingPoint(inner_speed=OMEGA, radial_load=1000.0),
+            kinematics=res.kinematic_state, traction=default_traction_law(oil),
+            options={"churning_elements": {"drag_coefficient": 0.5}}))[0]
     assert own.total == pytest.approx(0.5 * heat.total, rel=1e-12)
+
+
+def test_roller_drag_parameters_and_bad_input(nu214, oil):
+    sup = OilSupply("jet", 1e-3 / 60.0, T_OIL)
+    base = skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL, supply=sup)
+    half = skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL, supply=sup,
+                          params={"drag_coefficient": 0.5})
+    assert half.drag["drag_coefficient"] == 0.5
+    assert half.cage_speed_ratio > base.cage_speed_ratio  # less drag, faster cage
+    with pytest.raises(InputError, match="params"):
+        skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL, supply=sup,
+                       params={"oil_fraction": 0.1})
+    with pytest.raises(InputError, match="drag_coefficient"):
+        skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL, supply=sup,
+                       params={"drag_coefficient": -1.0})
+    with pytest.raises(InputError, match="drag"):
+        solve_roller(nu214, oil, OMEGA, 1000.0, drag="churning")
+
+
+def test_grease_fill_has_no_churning_drag(nu214, oil):
+    sup = OilSupply("grease", 0.0, T_OIL)
+    res = skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL, supply=sup)
+    dry = skidding.solve(nu214, oil, OMEGA, 1000.0, 0.0, T_OIL)
+    assert res.drag["element_force"] == 0.0 and res.drag["inner_ring_moment"] == 0.0
+    assert res.cage_speed_ratio == pytest.approx(dry.cage_speed_ratio, rel=1e-9)

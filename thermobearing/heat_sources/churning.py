@@ -256,13 +256,19 @@ def solver_drag(ctx: HeatContext, source: str, key: str,
     ``solver_drag[key]``, :mod:`thermobearing.skidding.roller_drag`), or None: a state
     without it (race control, balls, the solver without an oil supply), or options of the
     source that ask for its own model on purpose (any but ``booking``, default
-    :data:`BOOKING_OPTIONS`; the heat then departs from the solver's force balance).
+    :data:`BOOKING_OPTIONS`; the heat then departs from the solver's force balance, which a
+    ValidityWarning says).
     ``churning``: warn, as :func:`oil_fraction` does, that a grease fill churns nothing."""
     drag = ctx.kinematics.extras.get("solver_drag")
     if not drag or key not in drag:
         return None
     given = ctx.options.get(source) or {}
-    if any(k not in booking for k in given):
+    own = sorted(k for k in given if k not in booking)
+    if own:
+        warnings.warn(
+            f"{source}: options {', '.join(own)} ask for the source's own model: its heat is "
+            "not the drag the roller skidding solver balanced, so the booked heat and the "
+            "solver's shaft power differ by the difference", ValidityWarning, stacklevel=3)
         return None
     if churning and ctx.supply.method == "grease":
         _warn_grease(source)
