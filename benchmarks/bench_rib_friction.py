@@ -22,12 +22,12 @@ loads its cached kernels then: timed separately as ``first_call_s``):
 
 Printed per path: CPU of the scene run, dynamics runs (cache misses) and hits, per run the
 operating state, node temperature, CPU, orbits integrated, step size, heat and rib slide
-speed; the cProfile split of the fixed path (time loop kernel, traction table, quasi-static
-set-up, post-processing, the rest). Then the ratio fixed / converged of the CPU times and
-the change in the rib heat: per dynamics node present in both runs (|heat / heat_fixed -
-1| and the same for the rib slide speed, which sets the thrust share's heat) and the
-booked rib_friction power of the scene at the end of every step (both transients follow
-their own temperatures, so this also holds the feedback of the small heat change).
+speed; the cProfile split (process CPU time) of the path: time loop kernel, traction table,
+quasi-static set-up, post-processing. Then the ratio fixed / converged of the CPU times and
+the change in the rib heat: per dynamics node present in both runs, |heat / heat_fixed - 1|
+and the same for the rib slide speed (which sets the thrust share's heat), and the booked
+rib_friction power of the scene at the end of every step (both transients follow their own
+temperatures, so this also holds the feedback of the small heat change).
 
 Usage: python benchmarks/bench_rib_friction.py [--quick] [--duration S] [--unbalance G]
        [--json] [--out FILE]
@@ -52,7 +52,7 @@ RPM = math.pi / 30.0
 #: (r/min, radial load N) of the schedule's steps
 STEPS = ((20000.0, 3000.0), (5000.0, 2000.0), (10000.0, 6000.0))
 SCENE = "configs/scenes/crb_rib_example.toml"
-#: function names of the cProfile split (cumulative time, fixed path)
+#: function names of the cProfile split (cumulative process CPU time)
 SPLIT = {"time loop kernel (_integrate)": "_integrate",
          "traction table (build_traction_table)": "build_traction_table",
          "quasi-static set-up (build_model)": "build_model",
@@ -105,7 +105,7 @@ def run_path(name: str, scene: Any) -> dict[str, Any]:
         return out, resp
 
     rdh.run_dynamics = logged
-    prof = cProfile.Profile()
+    prof = cProfile.Profile(time.process_time)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")

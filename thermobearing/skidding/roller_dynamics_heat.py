@@ -45,18 +45,19 @@ Where the integration stops (2026-11-23, issue 9 cost): the coupled model integr
 2 warm-up + 3 statistics cage orbits per node; a scene fuzzer's coupled rib_friction
 scenes timed out (all 12 timeouts of a session). Measured
 (``benchmarks/bench_rib_friction.py``: CRB 50x75x16 in MIL-PRF-23699, steps 20000 r/min /
-3 kN, 5000 / 2 kN, 10000 / 6 kN of 10 s, 0.2 kN axial, no unbalance): 11 nodes in 25 s CPU
-of a 25 s scene run, the time loop kernel ~85 % of it (1.2 / 3.5 / 1.9 s per node at
-20000 / 5000 / 10000 r/min, the ~1.5 us step the rib contact sets), quasi-static set-up,
-traction table and post-processing ~0.2 s each per node, numba's cached kernels 0.6 s
-once per process. Without an unbalance the motion settles within ~1-1.5 orbits (the
-roller-mean heat of quarter orbits constant to 1e-4 after that). The coupled model now
-stops at the running-mean criterion of
+3 kN, 5000 / 2 kN, 10000 / 6 kN of 10 s, 0.2 kN axial, no unbalance): 11 nodes in a
+21-26 s CPU scene run, the time loop kernel 78 % of it (1.0-1.2 / 3.0-3.5 / 1.6-1.9 s per
+node at 20000 / 5000 / 10000 r/min: ~1.5 us steps, the rib contact's 1/omega_rib), the
+quasi-static set-up ~0.19 s, the traction table ~0.09 s and the post-processing ~0.11 s
+per node, numba's cached kernels 0.5-0.6 s once per process. Without an unbalance the
+motion settles within ~1-1.5 orbits (the roller-mean heat of quarter orbits constant to
+1e-4 after that). The coupled model now stops at the running-mean criterion of
 :mod:`~thermobearing.skidding.roller_dynamics_convergence` at ``convergence``
 (default :data:`DEFAULT_CONVERGENCE` = 0.5 % on the heat and on the rib slide speed; None
 or the source option ``convergence = 0``: the fixed window): 1.5-2.0 orbits per node
-there, scene CPU 25.1 -> 11.5 s (x 2.2, dynamics per node x 2.2), heat per node within
-0.21 %, rib slide within 0.10 %, booked rib_friction power at the step ends within 0.09 %
+there, scene CPU x 2.2-2.6 lower over three runs of the benchmark (25.5 -> 10.8 s; the
+kernel 19.8 -> 6.6 s), heat per node within 0.21 %, rib slide within 0.10 %, booked
+rib_friction power at the step ends within 0.09 %, final roller temperature -0.004 K
 (the heat is there mostly the thrust share mu Q |v|). With an unbalance (chaotic impacting
 motion, block scatter ~5 %) no window converges to 0.5 % before the fixed window's end,
 so those runs are the fixed window's, unchanged (test). Units: SI.
