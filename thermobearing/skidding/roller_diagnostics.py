@@ -29,7 +29,9 @@ class CageForceBalance:
     cage_speed : the prescribed omega_c [rad/s].
     drive : sum of the cage-equation terms of the rollers with an inner contact [N].
     drag : minus the sum over the rollers without one [N] (positive: they hold the cage back).
-    residual : the cage equation, drive - drag - T_c/(d_m/2) [N] (> 0: the cage would speed up).
+    residual : the cage equation, drive - drag + (M_oil - T_c)/(d_m/2) [N] (> 0: the cage
+        would speed up; M_oil the oil moments on the cage of a model with ``drag``,
+        whose roller drag is inside each roller's term).
     n_loaded : rollers with an inner contact.  roller_speed : (Z,) [rad/s].
     """
 
