@@ -5,7 +5,8 @@ only place that knows about pint: a config value such as ``"1800 rpm"``, ``"33 L
 ``"35 degC"``, ``"2 kN"`` or ``"0.08 Pa*s"`` is converted once, at load time, to a float in
 the SI unit declared for that field. A bare number is taken to be SI already. Spellings of
 data sheets that pint does not read are accepted too: ``"16000 r/min"`` (``rev/min``),
-a bare exponent digit after a length unit (``"30 mm3/h"``, ``"32 mm2/s"``); a decimal
+a bare exponent digit after a length unit (``"30 mm3/h"``, ``"32 mm2/s"``), the
+one-character degree signs ``"35 \u2103"`` / ``"95 \u2109"``; a decimal
 comma (``"0,5 kN"``) is an error that shows the value with a point.
 """
 
@@ -155,7 +156,8 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         ) from None
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, AssertionError):
-        raise InputError(field, value, f"a known unit convertible to {target}") from None
+        raise InputError(field, value, f"a known unit convertible to {target}"
+                         f"{_case_hint(unit_text, target)}") from None
     if not math.isfinite(out):
         raise InputError(field, value, f"a finite quantity convertible to {target}")
     if target == "K" and out <= 0.0:
@@ -186,10 +188,26 @@ def _refuse_separators(value: str, field: str, target: str) -> None:
 
 def _usual_spellings(unit_text: str) -> str:
     """Unit spellings of data sheets in pint's: ``r/min`` and ``rev/min`` -> ``rpm``
-    (``r/s`` -> ``rps``), a bare exponent digit after a length unit -> ``**``
+    (``r/s`` -> ``rps``), ``\u2103`` / ``\u2109`` -> ``degC`` / ``degF``, a bare exponent digit
+    after a length unit -> ``**``
     (``mm3/h`` -> ``mm**3/h``, ``mm2/s`` -> ``mm**2/s``, ``kg/m3`` -> ``kg/m**3``)."""
     unit_text = _REV_PER.sub(lambda m: "rpm" if m.group(1) == "min" else "rps", unit_text)
+    # the one-character degree signs (U+2103, U+2109) that keyboards and data sheets give
+    unit_text = unit_text.replace("\u2103", "degC").replace("\u2109", "degF")
     return _BARE_EXPONENT.sub(r"\1**\2", unit_text)
+
+
+def _case_hint(unit_text: str, target: str) -> str:
+    """`` (units are case-sensitive: 'rpm')`` when ``unit_text`` in lower case is a unit
+    convertible to ``target`` ("RPM", "Rpm"), else empty."""
+    lower = unit_text.lower()
+    if not unit_text or lower == unit_text:
+        return ""
+    try:
+        _convert(1.0, lower, target)
+    except Exception:  # noqa: BLE001 -- no such unit in lower case either: no hint
+        return ""
+    return f" (units are case-sensitive: '{lower}')"
 
 
 def quantity_unit(value: Any) -> str | None:
