@@ -51,4 +51,4 @@ def test_run_writes_and_names_the_breakdown_and_report_rerenders_it(tmp_path, ca
     for text in (first, again):
         assert "<h3>power loss by source [W]</h3>" in text
         assert "Bearing and operating points" in text
-        assert "initial temperature, 35 degC" in text
+        assert "inlet temperature (the scene sets no initial temperature), 35 degC" in text
