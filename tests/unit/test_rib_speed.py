@@ -92,3 +92,41 @@ def test_cache_keys_the_convergence_and_the_option_is_checked(crb):
     m = build_model(b, lub, 20000 * RPM, 3000.0, 0.0, coupling="none")
     with pytest.raises(InputError, match="converge"):
         simulate_coupled(m, b, lub, converge=0.0)
+
+
+def test_heat_source_books_within_one_percent_of_the_fixed_window(crb):
+    """rib_friction (coupled, no unbalance, 20000 r/min, 3 kN, 480 N axial, 362 K: the
+    nodes 360 and 365 K): the default running-mean stop against ``convergence = 0`` (the
+    fixed window), the booked total (drag of the dynamics + thrust share mu Q |v| at the
+    coupled rib slide) within the stated 1 %; an option outside [0, 0.1] is refused."""
+    from thermobearing.errors import ValidityWarning
+    from thermobearing.heat_sources import HEAT_SOURCES, HeatContext
+    from thermobearing.skidding.roller import solve_roller
+    from thermobearing.state import OilSupply, OperatingPoint
+
+    b, lub = crb
+    w = 20000 * RPM
+    kin = solve_roller(b, lub, w, 3000.0, 0.0, 362.0).kinematic_state
+
+    def ctx(options):
+        return HeatContext.isothermal(
+            362.0, bearing=b, lubricant=lub,
+            supply=OilSupply(method="jet", flow_rate=1e-5, inlet_temperature=353.15,
+                             level=None),
+            operating=OperatingPoint(inner_speed=w, radial_load=3000.0, axial_load=480.0),
+            kinematics=kin, options={"rib_friction": options})
+
+    src = HEAT_SOURCES.get("rib_friction")
+    rdh.clear_cache()
+    with pytest.warns(ValidityWarning, match="no path"):
+        fixed = src(ctx({"convergence": 0.0}))
+        conv = src(ctx({}))
+    assert fixed.details["model"] == conv.details["model"] == "coupled"
+    assert fixed.details["dynamics_orbits"] == pytest.approx(5.0, rel=1e-3)
+    assert conv.details["dynamics_orbits"] < 4.0
+    assert conv.total == pytest.approx(fixed.total, rel=0.01)
+    assert conv.details["thrust_heat"] > 0.5 * conv.total      # the thrust share books most
+    assert conv.details["dynamic_heat"] == pytest.approx(fixed.details["dynamic_heat"],
+                                                         rel=0.01)
+    with pytest.raises(InputError, match="convergence"):
+        src(ctx({"convergence": 0.5}))
