@@ -48,7 +48,11 @@ import numpy as np
 from ..errors import ConvergenceError, InputError, check_finite, check_positive
 from ..loads import ball_load_distribution
 from .ball_coulomb import coulomb_traction_note
-from .ball_load_continuation import load_magnitude_continuation, start_scale
+from .ball_load_continuation import (
+    check_resolved_load,
+    load_magnitude_continuation,
+    start_scale,
+)
 from .ball_newton import (  # noqa: F401
     _CAP_G,
     _CAP_X,
@@ -174,6 +178,10 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     Returns
     -------
     BallSkiddingResult
+
+    Raises ConvergenceError (residual inf) without solving when there is no external load, or
+    when the load is nonzero but below 10 x tol x F_s, the force resolution of the solve
+    (:func:`~thermobearing.skidding.ball_load_continuation.check_resolved_load`).
     """
     if not (math.isfinite(speed) and speed > 0.0 and math.isfinite(radial_load)
             and radial_load >= 0.0 and math.isfinite(axial_load)):
@@ -210,6 +218,7 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         system = prev.reloaded(radial_load, axial_load)
     else:
         system = ball_residual_system(bearing, models, speed, radial_load, axial_load, n_balls)
+    check_resolved_load(system.F_s, tol, radial_load, axial_load, speed)
     iters = 0
     fallback = None
     if guess is not None and guess.ball_x.size == system.Z:
@@ -252,14 +261,16 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
     if guess is None:
         X0, G0, ld0 = race_control_guess(bearing, speed, radial_load, axial_load, n_balls)
         if not np.any(ld0.inner_load > 0.0):
-            # e.g. no external load at speed: centrifugal force seats every ball in the outer
-            # groove, no ball touches the inner ring and nothing in this model drives the
-            # balls or the cage (no inner-ring oil drag): the steady state is undefined.
-            raise ConvergenceError(
-                "skidding.ball", float("inf"),
-                "no ball touches the inner ring (centrifugal force holds every ball in the "
-                "outer groove): nothing drives the cage, CSR undefined in this model",
-                {"radial_load": radial_load, "axial_load": axial_load, "speed": speed})
+            # a load below the load distribution's force tolerance (a few uN) under the
+            # centrifugal force: the at-speed distribution leaves the inner ring untouched
+            # (with a nonzero load it rests on some ball in equilibrium): the continuation in
+            # load magnitude from F_s, else the error
+            X, G, nrm, iters, fallback, round_off = _unsupported_ring(
+                bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
+                continuation, system)
+        else:
+            X = None
+    if guess is None and X is None:
         try:
             X, G, nrm, iters = newton_block(system, X0, G0, tol=tol, max_iter=max_iter,
                                             stall_after=25)
@@ -319,6 +330,36 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         res.extra["theoretical_key"] = (bearing, float(radial_load), float(axial_load),
                                         system.Z)
     return res
+
+
+def _unsupported_ring(bearing, models, speed, radial_load, axial_load, n_balls, tol, max_iter,
+                      continuation, system):
+    """The cold start of :func:`solve_ball` when the at-speed load distribution puts no ball
+    on the inner ring under a nonzero load (below its force tolerance, ~5e-6 N, against the
+    centrifugal force): the continuation in load magnitude from F_s
+    (:mod:`~thermobearing.skidding.ball_load_continuation`). Returns (X, G, residual norm,
+    iterations, fallback name, round-off floor or None); raises ConvergenceError saying so."""
+    err = ConvergenceError(
+        "skidding.ball", float("inf"),
+        "no ball touches the inner ring in the load distribution at speed (centrifugal force "
+        "holds every ball in the outer groove and the load is below that distribution's "
+        "force tolerance): no start for the cage's drive",
+        {"radial_load": radial_load, "axial_load": axial_load, "speed": speed})
+    if not (continuation and start_scale(system.F_s, radial_load, axial_load) > 1.0):
+        raise err
+    try:
+        path, iters = load_magnitude_continuation(
+            solve_ball, bearing, models, speed, radial_load, axial_load, n_balls, tol,
+            max_iter, system.F_s, err)
+    except ConvergenceError as failed:
+        raise ConvergenceError("skidding.ball", failed.residual, str(failed),
+                               dict(failed.state)) from None
+    system.last_jacobian = path.extra.get("jacobian")
+    fallback, round_off = "load_continuation", None
+    if path.extra.get("fallback") == "round_off":
+        fallback, round_off = "round_off", path.extra.get("round_off_floor")
+    X, G = (u.copy() for u in path.unknowns)
+    return X, G, path.residual_norm, iters, fallback, round_off
 
 
 def _warm_step_fallbacks(system, err, tol, max_iter):
