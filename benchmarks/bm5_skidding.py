@@ -188,7 +188,10 @@ def run_robustness(Z, temperature):
     cases = [("Fa=0, Fr=1 kN, 300 r/min", 300.0, 1000.0, 0.0),
              ("Fa=0, Fr=1 kN, 3000 r/min", 3000.0, 1000.0, 0.0),
              ("Fa=0, Fr=0, 1800 r/min", 1800.0, 0.0, 0.0),
-             ("Fa=300 N, Fr=0, 3000 r/min (centrifugal > inner load)", 3000.0, 0.0, 300.0)]
+             ("Fa=300 N, Fr=0, 3000 r/min (centrifugal > inner load)", 3000.0, 0.0, 300.0),
+             # the cage nearly stops: continuation in load magnitude (ball_load_continuation)
+             ("Fa=0, Fr=1.8 mN, 1871 r/min (fuzzed scene point)", 1871.0, 1.8e-3, 0.0),
+             ("Fa=0, Fr=1 nN, 1871 r/min (below the force resolution)", 1871.0, 1e-9, 0.0)]
     out = []
     for name, n, fr, fa in cases:
         w = n * RPM
@@ -196,7 +199,7 @@ def run_robustness(Z, temperature):
         try:
             r = solve_ball(b, models, w, fr, fa, n_balls=Z, theoretical_reference=0.45)
             finite = bool(np.all(np.isfinite(r.spin)) and np.isfinite(r.cage_speed_ratio))
-            out.append((name, "converged" if finite else "NaN", f"CSR {r.cage_speed_ratio:.4f}"))
+            out.append((name, "converged" if finite else "NaN", f"CSR {r.cage_speed_ratio:.4g}"))
         except ConvergenceError as err:
             out.append((name, "ConvergenceError", str(err)[:90]))
     return out
