@@ -30,6 +30,7 @@ from pathlib import Path
 
 from .errors import InputError
 from .signal_input import guess_separator, is_units_row
+from .text_files import text_encoding
 
 __all__ = ["Layout", "TEMPERATURE_UNITS", "bracket_unit", "closest_name", "file_encoding",
            "find_layout", "is_time_format", "looks_like_units", "slash_unit", "stated_units"]
@@ -126,13 +127,10 @@ def split_delimited(line: str, sep: str) -> list[str]:
 
 
 def file_encoding(p: Path) -> str:
-    """UTF-8 (BOM or not) when the file decodes as UTF-8, else Windows-1252: loggers on
-    Windows write ``°C`` and umlauts in the ANSI code page."""
-    try:
-        p.read_bytes().decode("utf-8")
-    except UnicodeDecodeError:
-        return "cp1252"
-    return "utf-8-sig"
+    """UTF-8 (BOM or not) when the file decodes as UTF-8, UTF-16 after its byte-order mark
+    (Excel's "Unicode text"), else Windows-1252: loggers on Windows write ``°C`` and
+    umlauts in the ANSI code page (:func:`thermobearing.text_files.text_encoding`)."""
+    return text_encoding(p)
 
 
 def _has(cells: Sequence[str], name: str) -> bool:

@@ -337,8 +337,13 @@ def load_scene(name_or_path: str | Path | None = None) -> Scene:
         if not preset.is_file():
             raise UnknownNameError("scene", str(name_or_path), scene_presets())
         path = preset
-    return loads_scene(path.read_text(encoding="utf-8"), base_dir=path.parent,
-                       source=str(path))
+    from .text_files import toml_text
+
+    try:
+        text = toml_text(path)  # a byte-order mark skipped; not UTF-8: said where
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError("scene", str(path), f"valid TOML ({exc})") from None
+    return loads_scene(text, base_dir=path.parent, source=str(path))
 
 
 # the pre-run checks live in scene_checks (one job per module); re-exported here, where

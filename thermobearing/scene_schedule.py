@@ -14,6 +14,7 @@ from typing import Any
 
 from .errors import InputError, check_finite, check_positive
 from .scene_values import _check_keys, _fmt, _quantity, _require, _table, _unit_of
+from .text_files import text_encoding
 
 
 @dataclass(frozen=True)
@@ -203,7 +204,9 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
         raise InputError("schedule.file", name, "an existing CSV file")
     units = {"duration": "s", "speed": "rpm", "radial_load": "N", "axial_load": "N"}
     steps = []
-    with path.open(newline="", encoding="utf-8-sig") as fh:
+    # UTF-8 (a BOM skipped), UTF-16 after its mark (Excel's "Unicode text"), else the
+    # Windows ANSI code page; undecodable bytes replaced (the header check then names them)
+    with path.open(newline="", encoding=text_encoding(path), errors="replace") as fh:
         first = fh.readline()
         fh.seek(0)
         delim = "," if "," in first else next((d for d in (";", "\t") if d in first), ",")

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import InputError
+from .text_files import text_encoding
 
 #: minimum number of samples an analysis accepts.
 MIN_SAMPLES = 256
@@ -290,7 +291,7 @@ def _is_number(cell: str, decimal: str) -> bool:
 
 def _sniff(p: Path) -> _CsvLayout:
     """Delimiter, decimal mark, header/units rows of a DAQ export (first lines only)."""
-    raw = read_text_lines(p, _SNIFF_LINES)
+    raw = read_text_lines(p, _SNIFF_LINES, encoding=text_encoding(p))
     if not raw:
         raise InputError("file", str(p), "a CSV with at least one row of numbers")
     body = [ln for _, ln in raw]
@@ -380,8 +381,9 @@ def _read_csv(p: Path, column: int | str | None
     layout = _sniff(p)
     try:
         df = pd.read_csv(p, sep=layout.sep, decimal=layout.decimal, skiprows=layout.skip,
-                         header=None, comment="#", skip_blank_lines=True, encoding="utf-8-sig",
-                         engine="c", skipinitialspace=True, na_values=["", "nan", "NaN"],
+                         header=None, comment="#", skip_blank_lines=True,
+                         encoding=text_encoding(p), encoding_errors="replace", engine="c",
+                         skipinitialspace=True, na_values=["", "nan", "NaN"],
                          keep_default_na=True)
     except (ValueError, pd.errors.ParserError) as exc:
         raise InputError("file", str(p), f"rows of {layout.ncol} values separated by "
