@@ -16,7 +16,8 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   the temperature enters a new 5 K cell (~1.1-1.7 s CPU per node at paper 003's base case).
   Option ``convergence`` (default 0.005): the integration stops when the running means
   of the rib heat and the rib slide speed have converged to it (settled motion without
-  unbalance: 1.5-2 orbits instead of the fixed 5, ~2.2x cheaper, rib heat within 0.2 %;
+  unbalance: 1.5-2 orbits instead of the fixed 5 at 5000-20000 r/min, ~2.2-2.8x cheaper,
+  rib heat within 0.2 %; a slowly creeping cage, e.g. at 30000 r/min, runs all 5;
   :mod:`thermobearing.skidding.roller_dynamics_heat`, "Where the integration stops");
   0 runs the fixed 2 + 3 orbit window.
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting

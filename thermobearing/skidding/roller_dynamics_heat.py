@@ -58,7 +58,13 @@ or the source option ``convergence = 0``: the fixed window): 1.5-2.0 orbits per 
 there, scene CPU x 2.2-2.6 lower over three runs of the benchmark (25.5 -> 10.8 s; the
 kernel 19.8 -> 6.6 s), heat per node within 0.21 %, rib slide within 0.10 %, booked
 rib_friction power at the step ends within 0.09 %, final roller temperature -0.004 K
-(the heat is there mostly the thrust share mu Q |v|). With an unbalance (chaotic impacting
+(the heat is there mostly the thrust share mu Q |v|); the fuzzer's CRB scene at 2545 r/min,
+18.9 kN (PAPER000_OIL) 29.4 -> 10.5 s CPU (4 nodes). Not every settled run stops early:
+at 30000 r/min, 3 kN, 400 K (no unbalance) the cage speed still creeps after 6 orbits
+(1311 -> 1342 rad/s, e-folding ~2 orbits; the fixed window itself averages over +0.8 % of
+it) and the rib slide with it, so the test runs the whole fixed window there
+(``configs/scenes/crb_rib_example.toml``: 15 nodes, 0.6-0.7 s each at 20000 r/min,
+1.1-1.3 s at 30000; 15.3 s CPU for the scene). With an unbalance (chaotic impacting
 motion, block scatter ~5 %) no window converges to 0.5 % before the fixed window's end,
 so those runs are the fixed window's, unchanged (test). Units: SI.
 """
