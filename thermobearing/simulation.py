@@ -216,6 +216,12 @@ class Simulation:
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         self._check_option_clashes()
+        drag_params = _roller_drag_params(self.source_options)
+        for b in self.bearings:
+            if drag_params and not b.is_ball and b.kinematics_name == "skidding":
+                # the roller solver balances the drag the churning sources book: the same
+                # c_d and Parker constant (skidding.roller_drag)
+                b.kin_options["params"] = dict(drag_params)
         # identical bearings (same preset and overrides) at the same state share results
         # (bearing key, step) -> (viscosity, result, its validity warnings, bearing solved);
         # an identical bearing in the same state takes the result and the warnings
@@ -474,12 +480,18 @@ class Simulation:
         that a ball bearing's kinematics sets to match its own force models (the same rule
         as :meth:`_heat_options`, which met it only at the first heat evaluation, after
         ``thermobearing check`` had passed). Which parameters the ball kinematics set does
-        not depend on the speed (``skidding.ball_models.heat_context_options``)."""
+        not depend on the speed (``skidding.ball_models.heat_context_options``). A roller
+        bearing's skidding solver balances the oil drag the churning and cage-guide sources
+        book (``skidding.roller_drag``): their options other than where the heat goes are
+        refused unless the solver takes them too (:func:`_roller_drag_clash`)."""
         from .kinematic_models import _ball_heat_options
 
         if not self.source_options:
             return
         for b in self.bearings:
+            if not b.is_ball and b.kinematics_name == "skidding":
+                _roller_drag_clash(b.name, self.source_options)
+                continue
             if not b.is_ball or b.kinematics_name not in ("race_control", "skidding"):
                 continue
             speed = next((s.speed for s in self.scene.schedule.steps if s.speed > 0), 0.0)
@@ -488,7 +500,10 @@ class Simulation:
             owned = _ball_heat_options(b.bearing, self.supply, speed,
                                        b.kin_options.get("params"))
             for src, params in self.source_options.items():
-                clash = sorted(set(params) & set(owned.get(src, {})))
+                mine = set(owned.get(src, {}))
+                if "oil_fraction" in mine:  # a Parker constant would go unused
+                    mine.add("parker_constant")
+                clash = sorted(set(params) & mine)
                 if clash:
                     raise InputError(
                         f"models.heat_source_options.{src}.{clash[0]}", params[clash[0]],
@@ -730,3 +745,51 @@ def check_known(name: str, known: Sequence[str], field_name: str) -> None:
     """UnknownNameError naming ``field_name`` when ``name`` is not one of ``known``."""
     if name not in known:
         raise UnknownNameError(field_name, name, known)
+
+
+#: options of the churning / cage-guide sources that only say where their heat goes
+_ROLLER_BOOKING = {"churning_elements": ("role",), "churning_cage": ("role",),
+                   "churning_inner_ring": ("role",), "cage_guide": ("cage_share",)}
+
+
+def _roller_drag_params(source_options: Mapping[str, Mapping[str, Any]]) -> dict[str, float]:
+    """The drag parameters of ``[models] heat_source_options`` that the roller skidding
+    solver takes (``skidding.solve(..., params=...)``, :mod:`thermobearing.skidding.
+    roller_drag`): ``churning_elements.drag_coefficient`` and the Parker constant of the
+    churning sources (one value: :func:`_roller_drag_clash` refuses different ones)."""
+    from .heat_sources.churning import SOLVER_DRAG_OPTIONS
+
+    out: dict[str, float] = {}
+    for src, keys in SOLVER_DRAG_OPTIONS.items():
+        for key in keys:
+            if key in source_options.get(src, {}):
+                out[key] = float(source_options[src][key])
+    return out
+
+
+def _roller_drag_clash(name: str, source_options: Mapping[str, Mapping[str, Any]]) -> None:
+    """Refuse a churning / cage-guide option the roller skidding solver of bearing ``name``
+    cannot balance (the source would book another drag than the shaft torque holds), and
+    Parker constants that differ between the churning sources (the solver has one)."""
+    from .heat_sources.churning import SOLVER_DRAG_OPTIONS
+
+    parker = {src: float(opts["parker_constant"]) for src, opts in source_options.items()
+              if src in SOLVER_DRAG_OPTIONS and "parker_constant" in opts}
+    if len(set(parker.values())) > 1:
+        src = sorted(parker)[1]
+        raise InputError(
+            f"models.heat_source_options.{src}.parker_constant", parker[src],
+            f"one Parker constant for every churning source of bearing '{name}' (the roller "
+            f"skidding solver balances their drag with one oil fraction): "
+            + ", ".join(f"{k} = {v:g}" for k, v in sorted(parker.items())))
+    for src, booking in _ROLLER_BOOKING.items():
+        given = source_options.get(src, {})
+        taken = (*booking, *SOLVER_DRAG_OPTIONS.get(src, ()))
+        other = sorted(k for k in given if k not in taken)
+        if other:
+            raise InputError(
+                f"models.heat_source_options.{src}.{other[0]}", given[other[0]],
+                f"an option the roller skidding solver of bearing '{name}' balances as well "
+                f"({', '.join(taken)}): it balances the oil drag this source books, so a "
+                "source's own drag model would book heat the shaft torque does not hold; "
+                "use kinematics = \"race_control\" to evaluate the source's own model")

@@ -96,11 +96,11 @@ def test_scene_value_outside_its_interval_is_refused_at_check(option, field, int
 
 
 def test_values_inside_their_interval_are_converted_and_kept():
-    # (oil_fraction is the ball kinematics' own: refused, test_option_clash_at_build.py)
-    sim = simulation('churning_cage = { gap = "0.5 mm", parker_constant = 0.2 }, '
+    # (oil_fraction is the ball kinematics' own, and with it parker_constant, which it would
+    # leave unused: refused, test_option_clash_at_build.py, test_lead18_roller_drag_options)
+    sim = simulation('churning_cage = { gap = "0.5 mm" }, '
                      'pocket_friction = { element_share = "50 %" }')
-    assert sim.source_options["churning_cage"] == {"gap": pytest.approx(5e-4),
-                                                   "parker_constant": 0.2}
+    assert sim.source_options["churning_cage"] == {"gap": pytest.approx(5e-4)}
     assert sim.source_options["pocket_friction"]["element_share"] == pytest.approx(0.5)
 
 

@@ -249,6 +249,15 @@ def element_frontal_area(bearing: Any) -> float:
 #: asks the source to evaluate its own model instead of the drag a skidding solver balanced
 BOOKING_OPTIONS = ("role",)
 
+#: source -> the options of its drag model that the roller skidding solver takes as well
+#: (a scene's ``[models] heat_source_options`` hands them to it,
+#: :meth:`thermobearing.simulation.Simulation`): the solver balances the same drag
+SOLVER_DRAG_OPTIONS: dict[str, tuple[str, ...]] = {
+    "churning_elements": ("drag_coefficient", "parker_constant"),
+    "churning_cage": ("parker_constant",),
+    "churning_inner_ring": ("parker_constant",),
+}
+
 
 def solver_drag(ctx: HeatContext, source: str, key: str,
                 booking: tuple[str, ...] = BOOKING_OPTIONS, churning: bool = True) -> Any:
@@ -263,7 +272,11 @@ def solver_drag(ctx: HeatContext, source: str, key: str,
     if not drag or key not in drag:
         return None
     given = ctx.options.get(source) or {}
-    own = sorted(k for k in given if k not in booking)
+    # the drag parameters a scene hands the solver too (Simulation: models.
+    # heat_source_options routed to the roller solver): the same model, not an own one
+    shared = {k for k in SOLVER_DRAG_OPTIONS.get(source, ())
+              if k in given and k in drag and float(given[k]) == float(drag[k])}
+    own = sorted(k for k in given if k not in booking and k not in shared)
     if own:
         warnings.warn(
             f"{source}: options {', '.join(own)} ask for the source's own model: its heat is "
@@ -346,9 +359,9 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     "churning_inner_ring",
     references=["gao2022_overskidding", "parker1984_tp2275"],
     parameters={"oil_fraction": "-", "gap": "m", "raceway_arc_length": "m",
-                "shoulder_length": "m"},
+                "shoulder_length": "m", "parker_constant": "-"},
     limits={"oil_fraction": "[0, 1]", "gap": "(0, inf)", "raceway_arc_length": "[0, inf)",
-            "shoulder_length": "[0, inf)"},
+            "shoulder_length": "[0, inf)", "parker_constant": "(0, inf)"},
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_inner_ring(ctx: HeatContext) -> HeatResult:
@@ -397,9 +410,10 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
 @HEAT_SOURCES.register(
     "churning_elements",
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
-    parameters={"drag_coefficient": "-", "oil_fraction": "-", "gap": "m", "oil_swirl": "-"},
+    parameters={"drag_coefficient": "-", "oil_fraction": "-", "gap": "m", "oil_swirl": "-",
+                "parker_constant": "-"},
     limits={"drag_coefficient": "(0, 10)", "oil_fraction": "[0, 1]", "gap": "(0, inf)",
-            "oil_swirl": "[0, 1]"},
+            "oil_swirl": "[0, 1]", "parker_constant": "(0, inf)"},
     validity="sphere/cylinder drag plateau (1e3 < Re < 2e5 for c_d = 0.45)",
 )
 def churning_elements(ctx: HeatContext) -> HeatResult:

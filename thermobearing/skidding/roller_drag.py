@@ -80,6 +80,8 @@ class RollerDrag:
     guide_width: float
     guide_clearance: float
     oil_fractions: tuple[float, float, float]
+    #: K of Parker's correlation the oil fractions were taken with [-]
+    parker_constant: float = DEFAULT_PARKER_CONSTANT
 
     def element_force(self, cage_speed: float) -> float:
         """Drag on each roller along its orbit [N] (negative: against the motion), paper 002
@@ -152,7 +154,7 @@ class RollerDrag:
                 "inner_ring_moment": self.inner_ring_moment(inner_speed),
                 "guidance": self.guidance, "drag_coefficient": self.drag_coefficient,
                 "element_oil_fraction": x_e, "cage_oil_fraction": x_c,
-                "inner_ring_oil_fraction": x_i}
+                "inner_ring_oil_fraction": x_i, "parker_constant": self.parker_constant}
 
 
 def build_drag(bearing: Any, lubricant: Any, supply: Any, inner_speed: float,
@@ -202,4 +204,4 @@ def build_drag(bearing: Any, lubricant: Any, supply: Any, inner_speed: float,
         cage_density=x_c * rho, inner_diameter=float(d_in), inner_arc=arc,
         inner_shoulder=float(shoulder), inner_gap=float(gap_i), inner_density=x_i * rho,
         guidance=guidance, guide_diameter=d_g, guide_width=b_g, guide_clearance=c_g,
-        oil_fractions=(x_e, x_c, x_i))
+        oil_fractions=(x_e, x_c, x_i), parker_constant=float(parker_constant))
