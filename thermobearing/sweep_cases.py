@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,7 +19,7 @@ from typing import Any
 
 from .errors import InputError
 from .scene import Scene, loads_scene
-from .sweep_params import SweepParameter, _same_quantity_key, assign_path
+from .sweep_params import MAX_SWEEP_CASES, SweepParameter, _same_quantity_key, assign_path
 
 
 def _absolute_paths(d: dict[str, Any], base_dir: Path | None) -> None:
@@ -56,6 +57,11 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
         if paths.count(path) > 1:
             raise InputError("--set", path, "each path once (give all its values in one "
                              "--set, e.g. supply.flow=15,20,33)")
+    total = math.prod(len(p.values) for p in params)
+    if total > MAX_SWEEP_CASES:
+        raise InputError("--set", " x ".join(f"{p.path} ({len(p.values)})" for p in params),
+                         f"at most {MAX_SWEEP_CASES} cases in one sweep (these give {total}: "
+                         "fewer values, or several sweeps)")
     base = scene.to_dict()
     base_text = scene.to_toml()
     cases: list[Case] = []

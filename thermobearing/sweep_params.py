@@ -44,6 +44,12 @@ PATH_UNITS = {
 }
 
 
+#: most cases one sweep builds: each is a whole scene run (seconds to minutes), so that
+#: many are days of computing; a range of more values (``1:1e9:1``) is refused before its
+#: values are made, and so is a cartesian product of more cases (sweep_cases.expand)
+MAX_SWEEP_CASES = 10_000
+
+
 @dataclass(frozen=True)
 class SweepParameter:
     """One swept field: dotted path and its values (TOML-ready strings or numbers).
@@ -141,6 +147,10 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         a, b, d = (_number(p, f"--set {path}") for p in parts)
         if d <= 0 or b < a:
             raise InputError(f"--set {path}", raw, "start <= stop and step > 0")
+        count = (b - a) / d + 1.0
+        if not count <= MAX_SWEEP_CASES:  # (1:1e9:1 built a billion values, then hung)
+            raise InputError(f"--set {path}", raw, f"a range of at most {MAX_SWEEP_CASES} "
+                             f"values (this one gives {count:.3g}: a larger step?)")
         n = int(math.floor((b - a) / d + 1e-9)) + 1
         unit = unit or _existing_unit(scene_dict, path)
         return SweepParameter(path, tuple(f"{a + i * d:.{_DIGITS}g} {unit}" if unit else a + i * d
