@@ -41,6 +41,10 @@ class Step:
 
 
 _STEP_KEYS = ("duration", "speed", "radial_load", "axial_load")
+#: most steps an ``axial_load_steps`` table makes: each step is a solve of its own (a
+#: second to minutes), so more are days of computing; a typo in the step (1 mN for 1 kN)
+#: is refused before a billion steps are built
+MAX_LOAD_STEPS = 10_000
 _STEP_KINDS = {"duration": "time", "speed": "angular_speed", "radial_load": "force",
                "axial_load": "force"}
 _STEP_UNITS = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
@@ -156,6 +160,11 @@ class Schedule:
             if da <= 0 or a1 < a0:
                 raise InputError("schedule.axial_load_steps", dict(sweep),
                                  "start <= stop and step > 0")
+            count = (a1 - a0) / da + 1.0
+            if not count <= MAX_LOAD_STEPS:  # (0 N to 1 MN by 1 mN: 1e9 steps, hung)
+                raise InputError("schedule.axial_load_steps", dict(sweep),
+                                 f"at most {MAX_LOAD_STEPS} steps (these give {count:.3g}: "
+                                 "a larger step?)")
             n = int(math.floor((a1 - a0) / da + 1e-9)) + 1
             for i in range(n):
                 steps.append(_make_step({}, {**defaults, "axial_load": a0 + i * da},
