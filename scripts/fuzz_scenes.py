@@ -432,7 +432,9 @@ def _schedule_file(rng: np.random.Generator, steps: list[dict[str, Any]], path: 
     nl = "\r\n" if rng.random() < 0.2 else "\n"
     text = nl.join([sep.join(head)] + [sep.join(r) for r in rows]) + nl
     bom = "\ufeff" if rng.random() < 0.2 else ""
-    path.write_text(bom + text, encoding="utf-8", newline="")
+    # now and then saved as Excel's "Unicode text" (UTF-16 with its mark)
+    enc = "utf-16" if rng.random() < 0.08 else "utf-8"
+    path.write_text((bom if enc == "utf-8" else "") + text, encoding=enc, newline="")
     table["file"] = str(path)
     return table
 
@@ -551,7 +553,9 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
         if extra:
             cells.append(f"{rng.uniform(0.0, 3000.0):.1f}".replace(".", dec))
         lines.append(sep.join(cells))
-    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    # a logger on Windows (ANSI code page: °C is one byte) or Excel's "Unicode text"
+    enc = str(rng.choice(["utf-8", "cp1252", "utf-16"], p=[0.8, 0.12, 0.08]))
+    path.write_text("\n".join(lines) + "\n", encoding=enc)
     missing: list[Any] = [-999] + ([float(text_code)] if text_code == "9999.9" else
                                    [text_code] if text_code else [])
     return {"file": str(path), **keys, "unit": unit, "columns": sensors,
@@ -572,6 +576,8 @@ def _axial_load_steps(rng: np.random.Generator, steps: list[dict[str, Any]], c0:
         a0 = 0.0 if rng.random() < 0.5 else top * rng.uniform(0.0, 0.5)
     n = int(rng.integers(2, 6))
     da = max((top - a0) / (n - 1), 1e-3)
+    if rng.random() < 0.04 and top > a0:
+        da = (top - a0) * 1e-6  # a step typed in the wrong unit: a million steps, refused
     unit, f = ("kN", 1e-3) if rng.random() < 0.5 else ("N", 1.0)
     return {"speed": first["speed"], "radial_load": first["radial_load"],
             "step_duration": first["duration"],
@@ -1434,7 +1440,10 @@ def run_cli(case: Case, out_dir: Path, time_limit: float) -> None:
     anything else (a traceback, a missing report, a check that refuses what runs or a run
     that refuses what the API ran) is a defect."""
     scene_path = out_dir / f"case_{case.index:04d}.toml"
-    scene_path.write_text(case.toml, encoding="utf-8")
+    # the scene as editors save it: UTF-8, now and then with a byte-order mark or UTF-16
+    r = (case.index * 7919 % 100) / 100.0
+    scene_path.write_text(("\ufeff" if 0.6 <= r < 0.8 else "") + case.toml,
+                          encoding="utf-16" if r >= 0.95 else "utf-8")
     target = out_dir / f"case_{case.index:04d}_run"
     check = _cli(["check", str(scene_path)], time_limit)
     if check is not None and _cli_failure(check):
