@@ -14,6 +14,7 @@ import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -123,7 +124,7 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
     channel, n_channels = "", 1
     if suffix in (".npy", ".npz", ".wav"):
         if suffix == ".npy":
-            data = np.load(p, allow_pickle=False)
+            data = _np_load(p)
         elif suffix == ".wav":
             from scipy.io import wavfile
 
@@ -133,13 +134,16 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
                 raise InputError("file", str(p), f"a PCM or float WAV file ({exc})") from None
             file_rate = float(wav_rate)
         else:
-            with np.load(p, allow_pickle=False) as z:
+            with _np_load(p) as z:
                 key = next((k for k in ("acceleration", "data", "x") if k in z), None)
                 if key is None:
                     raise InputError("file", str(p), "an .npz with an 'acceleration' array")
-                data = z[key]
+                data = _np_array(z, key, p)
                 rk = next((k for k in ("sampling_rate", "fs") if k in z), None)
-                file_rate = float(z[rk]) if rk else None
+                file_rate = _npz_rate(_np_array(z, rk, p), p, rk) if rk else None
+        if np.iscomplexobj(data):
+            raise InputError("file", str(p), f"real samples (the array is {data.dtype}: "
+                             "save its real part, or its magnitude)")
         if np.ndim(data) == 2 and 1 in np.shape(data):
             data = np.ravel(data)
         elif np.ndim(data) == 2:
@@ -178,6 +182,35 @@ def load_acceleration(path: str | Path, sampling_rate: float | None = None,
                          f"{exc.allowed}; the file has {n_channels} channels: pick another "
                          "with column= (cage-speed --column)") from None
     return AccelerationRecord(arr, float(rate), str(p), channel, n_channels, filled)
+
+
+def _np_load(p: Path) -> Any:
+    """``np.load`` without pickles; a file NumPy cannot read (not .npy / .npz, cut short,
+    an object array that needs pickle) is an InputError naming it."""
+    import zipfile
+
+    try:
+        return np.load(p, allow_pickle=False)
+    except (ValueError, OSError, EOFError, zipfile.BadZipFile) as exc:
+        raise InputError("file", str(p), f"a NumPy {p.suffix} file of numbers ({exc})"
+                         ) from None
+
+
+def _np_array(z: Any, key: str, p: Path) -> np.ndarray:
+    """Array ``key`` of an .npz (an object array, which needs pickle: an InputError)."""
+    try:
+        return z[key]
+    except ValueError as exc:
+        raise InputError(f"{p.name}[{key!r}]", "an object array", f"numbers ({exc})") from None
+
+
+def _npz_rate(value: np.ndarray, p: Path, key: str) -> float:
+    """The sampling rate [Hz] an .npz gives: one real number."""
+    arr = np.asarray(value)
+    if arr.size != 1 or not np.issubdtype(arr.dtype, np.number) or np.iscomplexobj(arr):
+        raise InputError(f"{p.name}[{key!r}]", f"{arr.dtype} array of shape {arr.shape}",
+                         "one number: the sampling rate in Hz")
+    return float(arr.reshape(()))
 
 
 def _uniform_ramp(t: np.ndarray) -> bool:
