@@ -115,11 +115,23 @@ def solve_model(
     (0.8 of the epicyclic cage speed) -- the robust path the solver took before the
     round-off acceptance, slow (seconds per point) but with no start to depend on; the
     reference of ``benchmarks/bm_roller_cold.py``. It ignores ``x0``.
-    ``fallback=False`` skips the (slow, robust) bracketed solve when Newton fails and raises
-    the ConvergenceError at once. ``radial_acceleration`` (Z,) [m/s^2]: the whirl
-    acceleration in each roller's radial balance (eqs. 20/23) when it is not the projection
-    of ``whirl_acceleration`` (see :class:`~thermobearing.skidding.whirl.Whirl`); the
-    tangential balance (eqs. 21/24) always uses the projection.
+    ``fallback=False`` skips the (slow, robust) slide-variable and bracketed solves when
+    Newton fails and raises the ConvergenceError at once.
+
+    A state beyond ``tol`` (round-off or bracketed) is accepted only when its shaft power and
+    dissipation agree to ``ENERGY_TOLERANCE`` (1e-6 relative, :func:`_state_energy_gap`):
+    under heavy load in cold oil the film is so viscous that one ulp of a sliding speed
+    carries hundreds of N of traction; the speeds are then right to round-off but the
+    tractions balance nothing (CRB 50x75x16, 20 kN, ISO VG 46 at 20 degC, 5000 r/min:
+    residual 0.21 of the roller load, shaft power 12.2 kW against 1.3 kW booked). Such a
+    state goes to the slide-variable solve (:mod:`~thermobearing.skidding.roller_slides`,
+    method "slides": the sliding speeds as unknowns, resolved far below the speeds'
+    round-off; there 1.2 kW = 1.2 kW to 2e-16, residual 1e-17).
+
+    ``radial_acceleration`` (Z,) [m/s^2]: the whirl acceleration in each roller's radial
+    balance (eqs. 20/23) when it is not the projection of ``whirl_acceleration`` (see
+    :class:`~thermobearing.skidding.whirl.Whirl`); the tangential balance (eqs. 21/24)
+    always uses the projection.
     """
     if method not in SOLVE_METHODS:
         raise UnknownNameError("roller skidding method", method, SOLVE_METHODS)
@@ -171,6 +183,7 @@ def solve_model(
     i_attempt = 0
     polished = False
     floor = math.inf  # round-off floor at the best iterate (0: Newton met tol)
+    rejected: list[tuple[str, float, float]] = []  # (method, norm, energy gap) refused
     steps = 0  # Newton steps of every pass and start (the result's ``iterations``)
     while i_attempt < len(attempts):
         start, fd_step, start_name = attempts[i_attempt]
@@ -205,7 +218,15 @@ def solve_model(
             state, floor = _round_off_state(model, omega, best, loads, psi, whirl_acceleration,
                                             tol)
             if state is not None:
-                best, method = state, "newton_round_off"
+                gap = _state_energy_gap(model, omega, psi, state, whirl_acceleration, tol)
+                if gap <= ENERGY_TOLERANCE:
+                    best, method = state, "newton_round_off"
+                    break
+                rejected.append(("newton_round_off", state[2], gap))
+            state = (_slide_state(model, omega, loads, psi, whirl_acceleration, tol, best)
+                     if fallback else None)
+            if state is not None:
+                best, method, best_start, floor = state, "slides", "slides", 0.0
                 break
             attempts.append((best[0], 1e-10, "best_iterate"))
     if best[4] and method == "newton":
@@ -217,6 +238,12 @@ def solve_model(
                                                 tol, max_iter, best[5], float(best[0][z]),
                                                 best[0][:z])
         steps += it
+        if ok and floor > 0.0:
+            gap = _state_energy_gap(model, omega, psi, (x, e, norm, it, ok, ld),
+                                    whirl_acceleration, tol)
+            if gap > ENERGY_TOLERANCE:
+                ok = False
+                rejected.append(("bracketed", norm, gap))
         if ok:
             best = (x, e, norm, it, ok, ld)
             method = "bracketed"
@@ -226,9 +253,14 @@ def solve_model(
     best = (*best[:3], steps, *best[4:])
     x, e, norm, it, ok, ld = best
     if not ok:
+        refused = "".join(
+            f"; the {name} state (residual {r_norm:.3g}) was refused: shaft power and "
+            f"dissipation differ by {r_gap:.3g} of the larger (allowed "
+            f"{ENERGY_TOLERANCE:g}), its tractions balance nothing"
+            for name, r_norm, r_gap in rejected)
         raise ConvergenceError(
-            "roller_skidding", norm, "Newton with line search stalled and the bracketed "
-            "fallback failed",
+            "roller_skidding", norm, "Newton with line search stalled, the slide-variable "
+            "solve and the bracketed fallback failed" + refused,
             {"cage_speed": x[z], "cage_speed_ratio": x[z] / omega, "radial_load": radial_load,
              "inner_speed": omega, "roller_speed_mean": float(np.mean(x[:z])),
              "iterations": it, "round_off_floor": floor})
@@ -251,6 +283,12 @@ def _bracketed_only(model: RollerModel, omega: float, radial_load: float, loads:
             " the cage speed is undetermined", {"radial_load": radial_load, "inner_speed": omega})
     x, e, norm, it, ok, ld, floor = _nested(model, omega, loads, psi, acc, tol, max_iter, ld0,
                                             wc_loads=float(cold[z]))
+    if ok and floor > 0.0 and _state_energy_gap(model, omega, psi, (x, e, norm, it, ok, ld),
+                                                acc, tol) > ENERGY_TOLERANCE:
+        state = _slide_state(model, omega, loads, psi, acc, tol, (x, e, norm, it, ok, ld))
+        if state is not None:
+            return _result(model, omega, psi, state, "slides", "slides", 0, 0.0, tol)
+        ok = False
     if not ok:
         raise ConvergenceError(
             "roller_skidding", norm, "the bracketed solve (method='bracketed') failed: no sign "
@@ -363,6 +401,51 @@ def _round_off_state(model: RollerModel, omega: float, best: tuple[Any, ...],
                 and (accepted is None or norm < accepted[2])):
             accepted = (np.append(wr, wc), e, norm, best[3], True, ld)
     return accepted, floor
+
+
+#: largest relative difference of shaft power and dissipation an accepted state beyond
+#: ``tol`` may have (:func:`_state_energy_gap`)
+ENERGY_TOLERANCE = 1e-6
+
+
+def _state_energy_gap(model: RollerModel, omega: float, psi: np.ndarray,
+                      state: tuple[Any, ...], acc: tuple[float, float], tol: float) -> float:
+    """Relative gap |P_shaft - P_loss| / max(|P_shaft|, |P_loss|) of a state (x, eval, norm,
+    iterations, ok, load distribution): ``shaft_torque * omega`` against
+    ``power_loss["total"]`` of its :class:`RollerSkiddingResult`, which are equal when the
+    Z + 1 equations hold (see :meth:`RollerSkiddingResult.booked_power`). 0 when the whirl
+    accelerations of the rollers do not sum to zero (uneven azimuths under whirl: the
+    inertia then does work the identity leaves out) or when both powers are 0."""
+    a_t = -acc[0] * np.sin(psi) + acc[1] * np.cos(psi)
+    if abs(float(np.sum(a_t))) > 1e-9 * max(float(np.sum(np.abs(a_t))), 1e-300):
+        return 0.0
+    res = _result(model, omega, psi, state, "check", "check", 0, 0.0, tol)
+    shaft = res.shaft_torque * omega
+    loss = res.power_loss["total"]
+    big = max(abs(shaft), abs(loss))
+    return abs(shaft - loss) / big if big > 0.0 else 0.0
+
+
+def _slide_state(model: RollerModel, omega: float, loads: Any, psi: np.ndarray,
+                 acc: tuple[float, float], tol: float, best: tuple[Any, ...]
+                 ) -> tuple[Any, ...] | None:
+    """The slide-variable solve (:func:`~thermobearing.skidding.roller_slides.solve_slides`)
+    from the load distribution of ``best`` (x, eval, norm, iterations, ok, load
+    distribution) as a state tuple, when the model's drag takes exact slides, the speeds
+    are finite and the solve meets ``tol``; else None."""
+    from .roller_residual import exact_slides_supported
+    from .roller_slides import solve_slides
+
+    x, ld = best[0], best[5]
+    if not exact_slides_supported(model) or ld is None or not np.all(np.isfinite(x)):
+        return None
+    z = model.n_rollers
+    out = solve_slides(model, omega, loads, psi, acc, ld, float(x[z]),
+                       lambda q: _force_scale(model, omega, q))
+    if out is None or not out[2] <= tol:
+        return None
+    xs, e, norm, ld_s = out
+    return (xs, e, norm, best[3], True, ld_s)
 
 
 def _check_option_names(options: dict[str, Any]) -> None:

@@ -166,7 +166,7 @@ class LineContactForces:
 
 
 def clearance_film_forces(gap: Any, length: float, radius: float, u_race: Any, u_roller: Any,
-                          eta0: float, floor: float = 1e-6
+                          eta0: float, floor: float = 1e-6, slide: Any = None
                           ) -> tuple[LineContactForces, np.ndarray]:
     """Hydrodynamic forces of the oil film across the radial gap of an unloaded roller.
 
@@ -194,6 +194,8 @@ def clearance_film_forces(gap: Any, length: float, radius: float, u_race: Any, u
     length : l [m].  radius : reduced radius R_x [m].
     u_race, u_roller : (Z,) surface speeds along the contact axis [m/s] (cage frame).
     eta0 : dynamic viscosity [Pa s].
+    slide : (Z,) V = u_race - u_roller [m/s] when known more exactly than the difference
+        of the two speeds (None: that difference; see :func:`closed_form_contact_forces`).
 
     Returns
     -------
@@ -209,7 +211,7 @@ def clearance_film_forces(gap: Any, length: float, radius: float, u_race: Any, u
     h0 = np.where(active, np.maximum(g, floor), 1.0)
     k_w, k_q, k_c, _ = martin_coefficients()
     root = np.where(active, length * np.sqrt(radius / h0), 0.0)
-    slide = ur - uro
+    slide = ur - uro if slide is None else np.broadcast_to(np.asarray(slide, float), ur.shape)
     usum = ur + uro
     c = k_c * eta0 * root
     qx = k_q * eta0 * root * np.abs(usum)
@@ -259,6 +261,7 @@ def closed_form_contact_forces(
     temperature: float,
     rolling_force: str = "regime_min",
     oil_layer: float | None = None,
+    slide: Any = None,
 ) -> LineContactForces:
     """Fluid forces of roller-raceway line contacts, closed form (module docstring).
 
@@ -283,6 +286,12 @@ def closed_form_contact_forces(
         closed-form film h_c is scaled by the rigid starved/flooded film ratio (an
         approximation for elastic contacts, where that ratio is close to 1 unless the oil
         layer is comparable with the film).
+    slide : (Z,) sliding speed V = u_race - u_roller [m/s] given exactly (None: that
+        difference of the two speeds). Near pure rolling the difference of two surface
+        speeds is a multiple of one ulp of them (1.8e-15 m/s at 8 m/s) while a cold film
+        under load shears stiffly enough to carry hundreds of N within one such ulp; the
+        slide-variable solve (:mod:`~thermobearing.skidding.roller_slides`) passes V
+        itself, so that the traction resolves slides far below the speeds' round-off.
 
     Returns
     -------
@@ -292,13 +301,14 @@ def closed_form_contact_forces(
         raise UnknownNameError("rolling_force", rolling_force, ROLLING_FORCE_MODELS)
     q, ur, uro = np.broadcast_arrays(*(np.asarray(v, dtype=float)
                                        for v in (load, u_race, u_roller)))
+    slide = ur - uro if slide is None else np.broadcast_to(np.asarray(slide, float), ur.shape)
     if q.ndim == 1 and 0 < np.count_nonzero(q > 0.0) < q.size:
         # evaluate the loaded contacts only, zeros elsewhere
         idx = np.nonzero(q > 0.0)[0]
         sub = closed_form_contact_forces(
             q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0,
             alpha=alpha, film=film, traction_law=traction_law, temperature=temperature,
-            rolling_force=rolling_force, oil_layer=oil_layer)
+            rolling_force=rolling_force, oil_layer=oil_layer, slide=slide[idx])
 
         def full(a: np.ndarray, fill: float) -> np.ndarray:
             out = np.full(q.shape, fill)
@@ -312,7 +322,6 @@ def closed_form_contact_forces(
             film_thickness=full(sub.film_thickness, np.inf),
             half_width=full(sub.half_width, 0.0), max_pressure=full(sub.max_pressure, 0.0),
             hertz_traction=full(sub.hertz_traction, 0.0))
-    slide = ur - uro
     usum = ur + uro
     sign = np.where(usum >= 0.0, 1.0, -1.0)
     loaded = q > 0.0
@@ -441,6 +450,10 @@ def closed_form_drag_model() -> Callable[..., LineContactForces]:
     return closed_form_contact_forces
 
 
+#: the drag model takes an exact ``slide`` keyword (the slide-variable solve may pass it)
+closed_form_contact_forces.exact_slide = True  # type: ignore[attr-defined]
+
+
 def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
                          ) -> Callable[..., LineContactForces]:
     """A drag model whose Hertz-zone traction is a traction-coefficient curve times the load.
@@ -461,19 +474,22 @@ def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
     @functools.wraps(base)
     def forces(load: Any, length: float, radius: float, effective_modulus: float,
                u_race: Any, u_roller: Any, *, traction_law: Any, temperature: float,
-               **kw: Any) -> LineContactForces:
+               slide: Any = None, **kw: Any) -> LineContactForces:
+        if slide is not None:
+            kw["slide"] = slide
         side = base(load, length, radius, effective_modulus, u_race, u_roller,
                     traction_law=null_law, temperature=temperature, **kw)
         q = np.asarray(load, dtype=float)
         ur = np.asarray(u_race, dtype=float)
         uro = np.asarray(u_roller, dtype=float)
         q, ur, uro = np.broadcast_arrays(q, ur, uro)
+        v = ur - uro if slide is None else np.broadcast_to(np.asarray(slide, float), ur.shape)
         ue = np.maximum(0.5 * np.abs(ur + uro), 1e-6)
         loaded = q > 0.0
         f_hz = np.zeros(q.shape)
         df_hz = np.zeros(q.shape)
         if np.any(loaded):
-            s = (ur[loaded] - uro[loaded]) / ue[loaded]
+            s = v[loaded] / ue[loaded]
             mu, dmu = curve.traction(s, q[loaded], ue[loaded], radius, effective_modulus,
                                      temperature)
             f_hz[loaded] = mu * q[loaded]
@@ -484,4 +500,5 @@ def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
             entrainment_sign=side.entrainment_sign, film_thickness=side.film_thickness,
             half_width=side.half_width, max_pressure=side.max_pressure, hertz_traction=f_hz)
 
+    forces.exact_slide = getattr(base, "exact_slide", False)  # type: ignore[attr-defined]
     return forces

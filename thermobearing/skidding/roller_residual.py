@@ -66,12 +66,20 @@ class _Eval:
 
 def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: float,
              inner_load: np.ndarray, body_force_const: np.ndarray, azimuth: np.ndarray,
-             whirl_acceleration: tuple[float, float]) -> _Eval:
+             whirl_acceleration: tuple[float, float],
+             slides: tuple[np.ndarray, np.ndarray] | None = None) -> _Eval:
     """Residuals of the Z + 1 equations (module docstring) at (omega_r, omega_c).
 
     ``body_force_const`` is the outward body force without the centrifugal term (whirl
     inertia) [N]; the centrifugal force m (d_m/2) omega_c^2 is added here so that the outer
     loads follow omega_c exactly.
+
+    ``slides``: the sliding speeds (V_i, V_o) (Z,) [m/s] of the inner and outer contacts
+    given exactly, consistent with (omega_r, omega_c) to the round-off of the speeds; the
+    contact forces then take them instead of the differences u_race - u_roller, which are
+    multiples of one ulp of the surface speeds (the slide-variable solve,
+    :mod:`~thermobearing.skidding.roller_slides`; only for a drag model that accepts them,
+    :func:`exact_slides_supported`). None: the differences.
     """
     d_m, d = model.pitch_diameter, model.roller_diameter
     half_d = 0.5 * d
@@ -90,17 +98,29 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     common = dict(eta0=model.eta0, alpha=model.alpha, traction_law=model.traction_law,
                   temperature=model.temperature, rolling_force=model.rolling_force,
                   oil_layer=model.oil_layer)
+    v_i, v_o = u_ri - u_roll, u_ro - u_roll
+    exact_i: dict[str, np.ndarray] = {}
+    exact_o: dict[str, np.ndarray] = {}
+    if slides is not None:
+        v_i = np.asarray(slides[0], dtype=float) * np.ones_like(omega_r)
+        v_o = np.asarray(slides[1], dtype=float) * np.ones_like(omega_r)
+        if free is not None:
+            # rolling on the outer race: V_o = 0 and V_i = V_i - V_o (= -d_m (omega_c -
+            # omega_c,th), exact in the given slides)
+            v_i, v_o = np.where(free, v_i - v_o, v_i), np.where(free, 0.0, v_o)
+        exact_i, exact_o = {"slide": v_i}, {"slide": v_o}
     fi = model.contact_forces(inner_load, model.length, model.radius_inner,
                               model.effective_modulus, u_ri, u_roll, film=model.film_inner,
-                              **common)
+                              **common, **exact_i)
     if model.clearance_film and model.inner_gap is not None:
         cf, w_h = clearance_film_forces(
             np.where(inner_load > 0.0, np.inf, model.inner_gap), model.length,
-            model.radius_inner, u_ri, u_roll, model.eta0, model.clearance_film_floor)
+            model.radius_inner, u_ri, u_roll, model.eta0, model.clearance_film_floor,
+            **exact_i)
         fi = fi.combined(cf)
         q_o = q_o + w_h
     fo = model.contact_forces(q_o, model.length, model.radius_outer, model.effective_modulus,
-                              u_ro, u_roll, film=model.film_outer, **common)
+                              u_ro, u_roll, film=model.film_outer, **common, **exact_o)
     ax, ay = whirl_acceleration
     a_t = -ax * np.sin(azimuth) + ay * np.cos(azimuth)
     # oil drag on each roller centre along its orbit (paper 002 eq. 10), None without drag
@@ -138,5 +158,13 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     if model.drag is not None:
         cage_moment += model.drag.cage_moment(omega, omega_c)
     cage_eq = float(np.sum(cage_terms)) + cage_moment / (0.5 * d_m)
-    return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, u_ri - u_roll, u_ro - u_roll,
+    return _Eval(roller_eq, pocket, cage_eq, fi, fo, fric, v_i, v_o,
                  0.5 * (u_ri + u_roll), 0.5 * (u_ro + u_roll), q_o, cage_terms)
+
+
+def exact_slides_supported(model: RollerModel) -> bool:
+    """Whether :func:`evaluate` can pass exact slides to the model's contact forces: the
+    closed-form drag model (with or without a traction curve), without the Maxwell /
+    film-pressure options (their Hertz-zone integral takes the speeds' difference)."""
+    return (bool(getattr(model.contact_forces, "exact_slide", False))
+            and model.fluid_shear_modulus is None and model.film_pressure == "hertz")

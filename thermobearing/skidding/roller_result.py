@@ -42,9 +42,9 @@ class RollerSkiddingResult:
         (every load-distribution pass and start).
     residual : (Z+1,) force residuals [N] at the solution.
     temperature [K], eta0 [Pa s] used.
-    extras : ``method`` ("newton", "newton_round_off" or "bracketed"), ``start`` (the start
-        whose Newton converged: "warm", "cold_0.8", "cold_0.4", "pure_rolling",
-        "best_iterate", or "bracketed"), ``attempts`` (Newton attempts made),
+    extras : ``method`` ("newton", "newton_round_off", "slides" or "bracketed"), ``start``
+        (the start whose Newton converged: "warm", "cold_0.8", "cold_0.4", "pure_rolling",
+        "best_iterate", or "bracketed" / "slides"), ``attempts`` (Newton attempts made),
         ``round_off_floor`` [-]: for a bracketed or round-off state the scaled residual norm
         that one-ulp changes of the speeds make there (0 for Newton within ``tol``;
         "newton_round_off": a stalled Newton iterate whose every equation is within 4 times
@@ -53,7 +53,14 @@ class RollerSkiddingResult:
         double precision: such a state is converged when ``residual_norm`` <= 4 x the floor
         (measured at 1000 r/min, 40 degC: 100 kN -> norm 3.6e-6; 200 kN -> 3.3e-2, the
         tractions change by kN per ulp of the cage speed there), and ``residual_norm`` says
-        how far it is from ``tol``. ``round_off_equations``: the indices of the equations
+        how far it is from ``tol``. Such a state is accepted only when
+        ``shaft_torque * inner_speed`` equals ``power_loss["total"]`` to 1e-6 relative; one
+        that does not (cold viscous oil under heavy load: hundreds of N of traction within
+        one ulp of a sliding speed, the tractions of the stalled state balancing nothing) is
+        solved again with the sliding speeds as unknowns (method "slides",
+        :mod:`~thermobearing.skidding.roller_slides`: ``round_off_floor`` 0, the residual
+        within ``tol``, the slides resolved below the ulp of the surface speeds).
+        ``round_off_equations``: the indices of the equations
         (0..Z-1 the roller moment balances, Z the cage) whose residual is beyond ``tol`` of
         the force scale (empty within ``tol``), and ``residual_note``: what the norm means,
         in words. At such a state the norm is the step the equations make between
