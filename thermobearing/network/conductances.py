@@ -60,6 +60,12 @@ def _register(name: str, **kw: Any):
     return deco
 
 
+#: largest convection coefficient a Convection takes [W/(m^2 K)]: ten times the top of the
+#: range Incropera et al. (2007) Table 1.1 give for any convection (boiling and
+#: condensation, 2500-1e5; forced convection of liquids 100-20000)
+H_CONVECTION_MAX = 1e6
+
+
 def _pos(field: str, v: float, allow_zero: bool = False) -> None:
     if not math.isfinite(float(v)) or float(v) < 0 or (float(v) == 0 and not allow_zero):
         raise InputError(field, v, "a finite value " + (">= 0" if allow_zero else "> 0"))
@@ -151,6 +157,12 @@ class Convection(ConductanceModel):
 
     def __post_init__(self) -> None:
         _pos("convection.h", self.h, allow_zero=True)
+        if self.h > H_CONVECTION_MAX:
+            # (a calibration started at h = 1e300 stopped on a singular stepper matrix,
+            # "residual inf"; no convection comes near it)
+            raise InputError("convection.h", self.h, f"a coefficient <= {H_CONVECTION_MAX:g} "
+                             "W/(m^2 K) (boiling and condensation reach 1e5; Incropera et "
+                             "al. 2007, Table 1.1)")
         _pos("convection.area", self.area)
 
     def conductance(self, Ta: float, Tb: float) -> float:
