@@ -14,11 +14,15 @@ rib_friction option ``unbalance_mass``: the chaotic impacting motion).
 Paths, each from an empty dynamics cache, the process warmed by a tiny run first (numba
 loads its cached kernels then: timed separately as ``first_call_s``):
 
-- ``fixed``: rib_friction option ``convergence = 0``, the previous path (2 warm-up + 3
-  statistics cage orbits per node);
-- ``converged``: the default, the running-mean stop at
+- ``fixed``: rib_friction options ``convergence = 0`` and ``table_retries = 0``, the
+  previous path (2 warm-up + 3 statistics cage orbits per node; a run that enters the cage
+  runaway re-run whole on the evaluate traction path);
+- ``converged``: the defaults, the running-mean stop at
   :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_CONVERGENCE`
-  (:mod:`~thermobearing.skidding.roller_dynamics_convergence`).
+  (:mod:`~thermobearing.skidding.roller_dynamics_convergence`) and up to
+  :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_TABLE_RETRIES` other
+  table-path trajectories before the evaluate path (unbalanced runs only: without an
+  unbalance no run met the runaway).
 
 Printed per path: CPU of the scene run, dynamics runs (cache misses) and hits, per run the
 operating state, node temperature, CPU, orbits integrated, step size, heat and rib slide
@@ -59,7 +63,8 @@ SPLIT = {"time loop kernel (_integrate)": "_integrate",
          "post-processing (_post)": "_post"}
 
 
-def make_scene(duration: float, quick: bool, unbalance_g: float, convergence: float) -> Any:
+def make_scene(duration: float, quick: bool, unbalance_g: float, convergence: float,
+               retries: int) -> Any:
     """The benchmark scene (module notes) with the rib_friction options set."""
     from thermobearing.scene import Schedule, load_scene
     from thermobearing.scene_schedule import Step
@@ -67,7 +72,7 @@ def make_scene(duration: float, quick: bool, unbalance_g: float, convergence: fl
     scene = load_scene(SCENE)
     steps = [Step(duration=duration, speed=rpm * RPM, radial_load=load, axial_load=200.0)
              for rpm, load in (STEPS[:2] if quick else STEPS)]
-    opts = {"convergence": convergence}
+    opts: dict[str, Any] = {"convergence": convergence, "table_retries": retries}
     if unbalance_g > 0:
         opts["unbalance_mass"] = unbalance_g * 1e-3
     models = dict(scene.models)
@@ -88,6 +93,7 @@ def _profile_split(prof: cProfile.Profile, total: float) -> dict[str, float]:
 
 def run_path(name: str, scene: Any) -> dict[str, Any]:
     """One scene run from an empty dynamics cache, with every dynamics run logged."""
+    from thermobearing.errors import ConvergenceError
     from thermobearing.simulation import Simulation
     from thermobearing.skidding import roller_dynamics_heat as rdh
 
@@ -96,12 +102,23 @@ def run_path(name: str, scene: Any) -> dict[str, Any]:
     original = rdh.run_dynamics
 
     def logged(*args: Any, **kwargs: Any) -> Any:
-        out, resp = original(*args, **kwargs)
-        log.append({"speed_rpm": args[2] / RPM, "radial_load": args[3],
-                    "temperature": args[4], "cpu_s": out.cost_s, "orbits": out.orbits,
+        state = {"speed_rpm": args[2] / RPM, "radial_load": args[3], "temperature": args[4]}
+        t0 = time.process_time()
+        try:
+            out, resp = original(*args, **kwargs)
+        except ConvergenceError:
+            # a node whose motion ran away on every path (its neighbour's value is booked)
+            log.append({**state, "cpu_s": time.process_time() - t0, "orbits": math.nan,
+                        "step_s": math.nan, "heat": math.nan, "slide": math.nan,
+                        "fallback": 1, "retries": -1, "finished_on": "", "failed": True})
+            raise
+        log.append({**state, "cpu_s": out.cost_s, "orbits": out.orbits,
                     "step_s": float(resp.series.get("step", [math.nan])[0]),
                     "heat": out.heat, "slide": out.rib_slide_speed,
-                    "fallback": out.fallbacks})
+                    "fallback": out.fallbacks,
+                    "retries": int(resp.series.get("table_retries", [0])[0]),
+                    "finished_on": str(resp.series.get("fallback_traction", ["table"])[0]),
+                    "failed": False})
         return out, resp
 
     rdh.run_dynamics = logged
@@ -148,10 +165,10 @@ def compare(fixed: dict[str, Any], conv: dict[str, Any]) -> dict[str, Any]:
         return (round(r["speed_rpm"], 6), round(r["radial_load"], 6),
                 round(r["temperature"], 6))
 
-    ref = {key(r): r for r in fixed["nodes"]}
+    ref = {key(r): r for r in fixed["nodes"] if not r["failed"]}
     d_heat, d_slide = [], []
     for r in conv["nodes"]:
-        f = ref.get(key(r))
+        f = None if r["failed"] else ref.get(key(r))
         if f is not None:
             d_heat.append(abs(r["heat"] / f["heat"] - 1.0) if f["heat"] else 0.0)
             d_slide.append(abs(r["slide"] / f["slide"] - 1.0) if f["slide"] else 0.0)
@@ -177,8 +194,10 @@ def _print_path(r: dict[str, Any]) -> None:
     for n in r["nodes"]:
         print(f"  {n['speed_rpm']:7.0f} {n['radial_load']:8.0f} {n['temperature']:8.2f} "
               f"{n['cpu_s']:7.2f} {n['orbits']:7.2f} {1e6 * n['step_s']:8.3f} "
-              f"{n['heat']:14.5g} {n['slide']:10.5g}" + ("  (fallback)" if n["fallback"]
-                                                         else ""))
+              f"{n['heat']:14.5g} {n['slide']:10.5g}"
+              + ("  (ran away on every path)" if n["failed"] else
+                 f"  (runaway met: {n['retries']} table retries, finished on the "
+                 f"{n['finished_on']} path)" if n["fallback"] else ""))
     print("  booked rib_friction at step ends [W]: "
           + ", ".join(f"{v:.3f}" for v in r["booked_rib_W"]))
     print("  profile (cumulative CPU s): " + "; ".join(
@@ -194,14 +213,18 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--json", action="store_true", help="records on stdout")
     parser.add_argument("--out", type=str, default=None, help="records to this file too")
     args = parser.parse_args(argv)
-    from thermobearing.skidding.roller_dynamics_heat import DEFAULT_CONVERGENCE
+    from thermobearing.skidding.roller_dynamics_heat import (
+        DEFAULT_CONVERGENCE,
+        DEFAULT_TABLE_RETRIES,
+    )
 
     warm = first_call()
-    fixed = run_path("fixed", make_scene(args.duration, args.quick, args.unbalance, 0.0))
+    fixed = run_path("fixed", make_scene(args.duration, args.quick, args.unbalance, 0.0, 0))
     conv = run_path("converged", make_scene(args.duration, args.quick, args.unbalance,
-                                            DEFAULT_CONVERGENCE))
+                                            DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES))
     summary = compare(fixed, conv)
     summary.update(first_call_s=warm, convergence=DEFAULT_CONVERGENCE,
+                   table_retries=DEFAULT_TABLE_RETRIES,
                    duration_s=args.duration, unbalance_g=args.unbalance, quick=args.quick)
     records = [fixed, conv, summary]
     if args.out:

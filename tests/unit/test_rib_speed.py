@@ -130,3 +130,48 @@ def test_heat_source_books_within_one_percent_of_the_fixed_window(crb):
                                                          rel=0.01)
     with pytest.raises(InputError, match="convergence"):
         src(ctx({"convergence": 0.5}))
+
+
+def test_runaway_retries_other_table_trajectories_before_the_evaluate_path(crb, monkeypatch):
+    """A table-path run that enters the cage runaway is re-run on other trajectories of the
+    table path (the start's cage speed perturbed by k x 1e-9) before the evaluate path:
+    the result is that trajectory's, flagged; if every retry runs away too, the evaluate
+    path finishes as before."""
+    from thermobearing.skidding import roller_dynamics_coupled as rc
+    from thermobearing.skidding.roller_dynamics import build_model
+
+    b, lub = crb
+    m = build_model(b, lub, 20000 * RPM, 3000.0, 0.6e-4, temperature=420.0, coupling="none")
+    kw = dict(n_orbits=0.03, warmup_orbits=0.0)
+    real = rc._simulate_coupled_path
+    calls = []
+
+    def stop_first(*args, traction, trajectory=0, **kwargs):
+        calls.append((traction, trajectory))
+        if traction == "table" and trajectory < 2:
+            raise rc._TableCannotFollow("test", {"t": 1e-3, "cage_speed": 1234.0})
+        return real(*args, traction=traction, trajectory=trajectory, **kwargs)
+
+    monkeypatch.setattr(rc, "_simulate_coupled_path", stop_first)
+    got = rc.simulate_coupled(m, b, lub, table_retries=3, **kw)
+    assert calls == [("table", 0), ("table", 1), ("table", 2)]
+    assert got.series["traction_fallback"][0] == 1 and got.series["table_retries"][0] == 2
+    assert got.series["fallback_traction"][0] == "table"
+    ref = real(m, b, lub, traction="table", trajectory=2, refresh=20e-6,
+               steps_per_period=400, samples_per_period=100, phase_spread=True,
+               table_options=None, ring_axial=False, cage_land=False,
+               cage_band=rc.DEFAULT_CAGE_BAND, integrator="etd", **kw)
+    assert got.pv_left == ref.pv_left and got.rib_heat == ref.rib_heat
+    # the perturbed start is another trajectory, not the same one
+    assert ref.series["cage_speed"][0] != real(
+        m, b, lub, traction="table", trajectory=0, refresh=20e-6, steps_per_period=400,
+        samples_per_period=100, phase_spread=True, table_options=None, ring_axial=False,
+        cage_land=False, cage_band=rc.DEFAULT_CAGE_BAND, integrator="etd",
+        **kw).series["cage_speed"][0]
+    calls.clear()
+    got = rc.simulate_coupled(m, b, lub, table_retries=1, **kw)
+    assert calls == [("table", 0), ("table", 1), ("evaluate", 0)]
+    assert got.series["fallback_traction"][0] == "evaluate"
+    assert got.series["table_retries"][0] == 1
+    with pytest.raises(InputError, match="table_retries"):
+        rc.simulate_coupled(m, b, lub, table_retries=-1, **kw)

@@ -70,6 +70,7 @@ from ..rib import DEFAULT_RIB_FRICTION, lubricant_drag, rib_geometry, rib_slidin
 from ..skidding.roller_dynamics_heat import (
     DEFAULT_CONVERGENCE,
     DEFAULT_ORBITS,
+    DEFAULT_TABLE_RETRIES,
     DEFAULT_TEMPERATURE_STEP,
     DEFAULT_WARMUP_ORBITS,
     MODELS,
@@ -95,10 +96,11 @@ MAX_COUPLED_TIME = 0.5
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
                 "element_share": "-", "temperature_step": "K", "model": "-",
-                "convergence": "-"},
+                "convergence": "-", "table_retries": "-"},
     limits={"friction_coefficient": "[0, 1]", "oil_fraction": "[0, 1]",
             "unbalance_mass": "[0, inf)", "element_share": "[0, 1]",
-            "temperature_step": "(0, inf)", "convergence": "[0, 0.1]"},
+            "temperature_step": "(0, inf)", "convergence": "[0, 0.1]",
+            "table_retries": "[0, 10]"},
     validity="cylindrical roller bearings with ribs (end_face_crown_radius, rib_height set)",
 )
 def rib_friction(ctx: HeatContext) -> HeatResult:
@@ -127,6 +129,12 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     conv = float(ctx.option(name, "convergence", DEFAULT_CONVERGENCE))
     check_range(f"options[{name}].convergence", conv, 0.0, 0.1)
     convergence = conv if conv > 0.0 else None     # 0: the fixed window
+    retries_opt = ctx.option(name, "table_retries", DEFAULT_TABLE_RETRIES)
+    check_range(f"options[{name}].table_retries", float(retries_opt), 0.0, 10.0)
+    if float(retries_opt) != int(float(retries_opt)):
+        raise InputError(f"options[{name}].table_retries", retries_opt,
+                         "a whole number of retries in [0, 10]")
+    retries = int(float(retries_opt))
     kin = ctx.kinematics
     op = ctx.operating
     temperature = ctx.temperature("elements")
@@ -179,7 +187,8 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
             dyn = rib_dynamics_heat(b, ctx.lubricant, speed, float(op.radial_load),
                                     temperature, unbalance, model=model,
                                     friction_coefficient=mu, oil_fraction=oil_fraction,
-                                    temperature_step=t_step, convergence=convergence)
+                                    temperature_step=t_step, convergence=convergence,
+                                    table_retries=retries)
         except ConvergenceError as exc:
             if model != "coupled":
                 raise
@@ -193,7 +202,8 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
             dyn = (rib_dynamics_heat(b, ctx.lubricant, speed, float(op.radial_load),
                                      temperature, unbalance, model=model,
                                      friction_coefficient=mu, oil_fraction=oil_fraction,
-                                     temperature_step=t_step, convergence=convergence)
+                                     temperature_step=t_step, convergence=convergence,
+                                     table_retries=retries)
                    if unbalance > 0.0 else None)
     details: dict = {"thrust_normal_force": q, "friction_coefficient": mu, "model": model}
     if model == "coupled":

@@ -171,6 +171,24 @@ the re-run follows another trajectory, so its statistics are those of a run that
 enter the runaway, and the flag says one was met;
 an evaluate-path run leaving it raises ConvergenceError "unstable coupled motion" with the
 state (no silent result). Test: ``tests/unit/test_roller_dynamics_coupled.py``.
+
+Retries on the table path (2026-11-23, late; issue 9 cost). The evaluate-path re-run costs
+6-25x a table run (3 ``evaluate`` calls from Python per 20 us refresh) and follows just
+another trajectory of the same dynamics (above). ``table_retries`` = k first tries up to
+k other trajectories on the table path -- the start's cage speed times 1 + j
+:data:`TRAJECTORY_PERTURBATION` (1e-9; the motion decorrelates with an e-folding time of
+~0.07 ms, so within ~1.5 ms of a 2-orbit warm-up) -- and only then the evaluate path. Same
+conditioning as the evaluate re-run (a trajectory that did not enter the runaway), same
+population, measured (2 + 3 orbits, MIL-PRF-23699, 3 kN, 0.06 g, both ribs):
+20000 r/min at 420 K (the state above), table trajectories j = 0..9: 2 of 10 ran away
+(within 0.6 s CPU), the other 8 rib heat 18.83-21.49 W per roller (mean 19.56, standard
+error 0.31), slide 17.93-18.13 m/s, 1.1-1.2 s CPU each; evaluate path j = 0..2: 1 of 3 ran
+away, 19.87 / 19.90 W, slide 18.04 / 18.06 m/s, 6.9-7.6 s CPU. 5000 r/min at 380 K: table
+3 of 10 ran away, the other 7 0.362-0.472 W (mean 0.405), slide 4.938-4.960 m/s, 3.3-3.5 s
+CPU; evaluate 1 of 2 ran away, 0.410 W, 4.955 m/s, 21.5 s CPU. The table path is also the
+more accurate of the two where the spin is stiff ("Stiff spin": the evaluate path cannot
+renew its linearisation inside the kernel). Default 0 here (callers keep their path); the
+rib heat source uses 3 (:mod:`~thermobearing.skidding.roller_dynamics_heat`).
 """
 
 from __future__ import annotations
@@ -286,6 +304,10 @@ SPIN_RUNAWAY = 2.0
 SPIN_TRUST = 0.25
 
 
+#: relative perturbation of the start's cage speed per table retry (simulate_coupled)
+TRAJECTORY_PERTURBATION = 1e-9
+
+
 class _TableCannotFollow(Exception):
     """The table path's state left the cage band (or the table kept being left):
     :func:`simulate_coupled` re-runs the reference path."""
@@ -304,7 +326,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                      ring_axial: bool = False, cage_land: bool = False,
                      cage_band: float | None = DEFAULT_CAGE_BAND,
                      fallback: bool = True, integrator: str = "etd",
-                     converge: float | None = None) -> RollerResponse:
+                     converge: float | None = None, table_retries: int = 0
+                     ) -> RollerResponse:
     """Integrate all Z rollers and the cage together (module notes) from the coupled
     quasi-static state of ``m`` (:func:`~thermobearing.skidding.roller_dynamics.build_model`),
     ``warmup_orbits`` discarded, statistics over the next ``n_orbits`` cage orbits.
@@ -336,6 +359,11 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     trajectory and samples). ``series["converged"]`` = [1] / [0], ``series["window"]`` =
     [start, end] of the statistics window [s], ``series["simulated_orbits"]`` the orbits
     integrated (of the quasi-static cage speed).
+    ``table_retries``: before the evaluate-path re-run below, up to this many other
+    trajectories on the table path (the start's cage speed times 1 + k
+    :data:`TRAJECTORY_PERTURBATION`, k = 1, 2, ...; module notes, "Retries on the table
+    path"); ``series["table_retries"]`` the retries a result needed (default 0: none),
+    ``series["fallback_traction"]`` the path that finished ("table" / "evaluate").
     Returns a :class:`~thermobearing.skidding.roller_dynamics.RollerResponse` (``model`` =
     "coupled", means over all rollers and the time) whose ``series`` holds ``t`` [s],
     ``cage_speed`` [rad/s] and, as (time x Z) arrays, ``spin`` [rad/s], ``axial`` X [m],
@@ -359,6 +387,8 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     outside the band raises ConvergenceError "unstable coupled motion" with the state
     (time, cage speed, the roller deepest in its ribs).
     """
+    if table_retries < 0:
+        raise InputError("table_retries", table_retries, "a count >= 0")
     kwargs = dict(n_orbits=n_orbits, warmup_orbits=warmup_orbits, refresh=refresh,
                   steps_per_period=steps_per_period, samples_per_period=samples_per_period,
                   phase_spread=phase_spread, table_options=table_options,
@@ -374,8 +404,23 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                 f"unstable coupled motion on the table path ({stop.reason}; a cage runaway "
                 f"of the motion, module notes) and fallback=False",
                 stop.state) from None
-        resp = _simulate_coupled_path(m, bearing, lubricant, traction="evaluate", **kwargs)
+        resp, retries, finished = None, 0, "table"
+        if traction == "table":
+            for k in range(1, table_retries + 1):
+                retries = k
+                try:
+                    resp = _simulate_coupled_path(m, bearing, lubricant, traction="table",
+                                                  trajectory=k, **kwargs)
+                    break
+                except _TableCannotFollow:
+                    continue
+        if resp is None:
+            finished = "evaluate"
+            resp = _simulate_coupled_path(m, bearing, lubricant, traction="evaluate",
+                                          **kwargs)
         series = dict(resp.series)
+        series["table_retries"] = np.array([retries])
+        series["fallback_traction"] = np.array([finished])
         series["traction_fallback"] = np.array([1])
         series["fallback_cage_speed"] = np.array([stop.state["cage_speed"]])
         series["fallback_time"] = np.array([stop.state["t"]])
@@ -388,7 +433,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                            phase_spread: bool, traction: str,
                            table_options: dict[str, Any] | None, ring_axial: bool,
                            cage_land: bool, cage_band: float | None,
-                           integrator: str, converge: float | None = None) -> RollerResponse:
+                           integrator: str, converge: float | None = None,
+                           trajectory: int = 0) -> RollerResponse:
     """One run of :func:`simulate_coupled` on one traction path (arguments as there);
     raises :class:`_TableCannotFollow` on the table path, ConvergenceError on the
     evaluate path when the cage leaves ``cage_band``."""
@@ -428,7 +474,9 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         y[b + 4] = math.copysign(0.5 * m.pocket_clearance, f_d) if m.pocket_dof else 0.0
         y[b + 6] = golden * j if phase_spread else 0.0
         y[b + 7] = m.spin[j]
-    y[z_n * n + 1] = m.cage_speed
+    # another trajectory of the chaotic motion (table retries): the start's cage speed
+    # perturbed at the 1e-9 level, decorrelated within ~1.5 ms (e-folding ~0.07 ms)
+    y[z_n * n + 1] = m.cage_speed * (1.0 + TRAJECTORY_PERTURBATION * trajectory)
     omega_rib = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
     period = 2.0 * math.pi / max(float(np.max(m.spin)), 1.0)
     h = min(period / steps_per_period, 1.0 / omega_rib)
@@ -614,6 +662,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "step": np.array([h]), "refresh_steps": np.array([sub]),
                                  "integrator": np.array([integrator]),
                                  "traction_fallback": np.array([0]),
+                                 "table_retries": np.array([0]),
                                  "converged": np.array([int(converged)]),
                                  "window": np.array([window0 * h, step * h]),
                                  "simulated_orbits": np.array([step * h / orbit])})
@@ -634,5 +683,5 @@ def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: i
 
 
 __all__ = ["DEFAULT_CAGE_BAND", "INTEGRATORS", "MAX_TABLE_BUILDS", "N_ROLLER_STATES",
-           "SPIN_TRUST", "cage_inertia", "cage_land_coefficient", "inner_ring_mass",
-           "simulate_coupled"]
+           "SPIN_TRUST", "TRAJECTORY_PERTURBATION", "cage_inertia", "cage_land_coefficient",
+           "inner_ring_mass", "simulate_coupled"]

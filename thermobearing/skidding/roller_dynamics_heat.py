@@ -93,6 +93,9 @@ DEFAULT_ORBITS = 3.0
 #: relative tolerance of the coupled model's running-mean stop (module notes, "Where the
 #: integration stops"); None: the fixed window of DEFAULT_WARMUP_ORBITS + DEFAULT_ORBITS
 DEFAULT_CONVERGENCE = 0.005
+#: other table-path trajectories the coupled model tries before its evaluate-path re-run
+#: when a run enters the cage runaway (module notes, "Where the integration stops")
+DEFAULT_TABLE_RETRIES = 3
 #: operating states kept in the cache
 CACHE_SIZE = 64
 
@@ -111,8 +114,9 @@ class RibDynamicsHeat(NamedTuple):
         runs it needed [s] (0 if all were cached).  runs : dynamics runs it needed.
     model : "coupled" | "reduced".
     fallbacks : coupled runs (of those this value rests on, cached ones included) whose
-        table path left the cage band and were re-run on the ``"evaluate"`` traction path
-        (:func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`).
+        table path left the cage band and were re-run (other table-path trajectories,
+        then the ``"evaluate"`` traction path;
+        :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`).
     orbits : cage orbits the coupled runs it rests on integrated (mean over its nodes; 0
         for the reduced model).
     """
@@ -182,7 +186,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                  friction_coefficient: float = DEFAULT_RIB_FRICTION,
                  oil_fraction: float = 0.05, warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
                  orbits: float = DEFAULT_ORBITS,
-                 convergence: float | None = DEFAULT_CONVERGENCE
+                 convergence: float | None = DEFAULT_CONVERGENCE,
+                 table_retries: int = DEFAULT_TABLE_RETRIES
                  ) -> tuple[RibDynamicsHeat, Any]:
     """One (uncached) run of the roller dynamics at an operating state.
 
@@ -193,6 +198,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     warmup_orbits, orbits : coupled model's discarded and averaged cage orbits (the fixed
     window; with ``convergence`` the most it integrates).  convergence : relative tolerance
     of the coupled model's running-mean stop (module notes; None: the fixed window).
+    table_retries : other table-path trajectories before the evaluate-path re-run of a run
+    that entered the cage runaway (0: straight to the evaluate path, as before 2026-11-23).
     Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``).
     """
     from .roller_dynamics import build_model, simulate_reduced
@@ -210,7 +217,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                         temperature=temperature, rib_friction=friction_coefficient,
                         oil_fraction=oil_fraction, coupling="none")
         resp = simulate_coupled(m, bearing, lubricant, n_orbits=orbits,
-                                warmup_orbits=warmup_orbits, converge=convergence)
+                                warmup_orbits=warmup_orbits, converge=convergence,
+                                table_retries=table_retries)
         s = resp.series
         n_orbits = float(s["simulated_orbits"][0])
         v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
@@ -238,7 +246,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                       temperature_step: float = DEFAULT_TEMPERATURE_STEP,
                       warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
                       orbits: float = DEFAULT_ORBITS,
-                      convergence: float | None = DEFAULT_CONVERGENCE) -> RibDynamicsHeat:
+                      convergence: float | None = DEFAULT_CONVERGENCE,
+                      table_retries: int = DEFAULT_TABLE_RETRIES) -> RibDynamicsHeat:
     """:func:`run_dynamics` through the cache, linearly interpolated between the two
     temperature nodes k dT <= T < (k + 1) dT (dT = ``temperature_step`` [K]; one node if T
     lies on it). Arguments as :func:`run_dynamics`. ``cost_s`` / ``runs`` of the result
@@ -250,7 +259,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
     base = (repr(bearing), repr(lubricant), round(float(speed), 9),
             round(float(radial_load), 9), float(unbalance_mass), model,
             float(friction_coefficient), float(oil_fraction), float(warmup_orbits),
-            float(orbits), None if convergence is None else float(convergence))
+            float(orbits), None if convergence is None else float(convergence),
+            int(table_retries))
     k = math.floor(temperature / temperature_step + 1e-12)
     w = temperature / temperature_step - k
     nodes = [(k, 1.0 - w)] + ([(k + 1, w)] if w > 1e-9 else [])
@@ -262,8 +272,20 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                               unbalance_mass, model=model,
                               friction_coefficient=friction_coefficient,
                               oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
-                              orbits=orbits, convergence=convergence)
+                              orbits=orbits, convergence=convergence,
+                              table_retries=table_retries)
         return out
+
+    def neighbour(node: int) -> RibDynamicsHeat:
+        # a neighbour node's value from the cache (no run: runs and cost 0) or its run,
+        # cached under its own key as well
+        key = (*base, node, float(temperature_step))
+        found = _CACHE.get(key)
+        if found is not None:
+            return found._replace(runs=0, cost_s=0.0)
+        found = run(node)
+        _CACHE.put(key, found)
+        return found
 
     for node, weight in nodes:
         key = (*base, node, float(temperature_step))
@@ -272,7 +294,7 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
             try:
                 found = run(node)
             except ConvergenceError as exc:
-                found = _neighbour_node(run, node, temperature_step, exc)
+                found = _neighbour_node(neighbour, node, temperature_step, exc)
             _CACHE.put(key, found)
             cost += found.cost_s
             runs += found.runs
@@ -313,5 +335,6 @@ def _neighbour_node(run: Any, node: int, step: float, exc: Exception) -> RibDyna
     raise exc
 
 
-__all__ = ["CACHE_SIZE", "DEFAULT_CONVERGENCE", "DEFAULT_TEMPERATURE_STEP", "MODELS",
+__all__ = ["CACHE_SIZE", "DEFAULT_CONVERGENCE", "DEFAULT_TABLE_RETRIES",
+           "DEFAULT_TEMPERATURE_STEP", "MODELS",
            "RibDynamicsHeat", "cache_info", "clear_cache", "rib_dynamics_heat", "run_dynamics"]
