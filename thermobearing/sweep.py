@@ -207,11 +207,32 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
             preflight(sim, build=True)
         for path, _ in case.assignments:
             note = next((n for n in sim.notes if _says_unused(n, path)), None)
+            if note is None and path == "environment.ambient_temperature":
+                note = _ambient_unused(scene)
             if note is not None and path not in unused:
                 unused[path] = (f"sweep: {path} is swept but not used by the runs (their "
                                 f"results do not change with it); case {case.case_id}: "
                                 f"{note}")
     return list(unused.values())
+
+
+def _ambient_unused(scene: Scene) -> str | None:
+    """Why the scene's ambient temperature changes nothing, or None: without 'temperatures'
+    or 'energy' in [outputs] want no thermal network runs, and the operating points are
+    taken at the initial temperature the scene gives, or at a fed supply's inlet
+    (:func:`thermobearing.unheated.unheated_temperature`); only an initial temperature left
+    to its default (the ambient) follows it. (A sweep of the ambient of a losses-only jet
+    scene gave identical rows without a word.)"""
+    from .unheated import unheated_temperature
+
+    if set(scene.outputs.want) & {"temperatures", "energy"}:
+        return None
+    t, source = unheated_temperature(scene)
+    if source == "environment.initial_temperature" and not scene.environment.initial_given:
+        return None
+    return (f"environment.ambient_temperature is not used: without 'temperatures' or 'energy' "
+            f"in [outputs] want no thermal network runs, and the films, kinematics and "
+            f"losses are taken at {source} ({t - 273.15:g} degC)")
 
 
 def _says_unused(note: str, path: str) -> bool:
