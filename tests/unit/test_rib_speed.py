@@ -175,3 +175,37 @@ def test_runaway_retries_other_table_trajectories_before_the_evaluate_path(crb, 
     assert got.series["table_retries"][0] == 1
     with pytest.raises(InputError, match="table_retries"):
         rc.simulate_coupled(m, b, lub, table_retries=-1, **kw)
+
+
+def test_a_failed_node_takes_a_cached_neighbour_without_running_it(monkeypatch):
+    """The neighbour a failed node borrows from is taken from the cache when it is there
+    (it was run again before), and a neighbour run is cached under its own node."""
+    from thermobearing.errors import ConvergenceError, ValidityWarning
+
+    calls = []
+
+    def run(bearing, lubricant, speed, radial_load, temperature, unbalance_mass=0.0, **kw):
+        calls.append(temperature)
+        if round(temperature, 6) == 350.0:
+            raise ConvergenceError("roller_dynamics.coupled", 0.2, "unstable coupled motion",
+                                   {})
+        return rdh.RibDynamicsHeat(temperature / 10, temperature / 20, 1.0, 2.0, 0.5, 3.0,
+                                   temperature, 0.25, 1, "coupled", 0), None
+
+    monkeypatch.setattr(rdh, "run_dynamics", run)
+    rdh.clear_cache()
+    try:
+        rdh.rib_dynamics_heat("bearing", "oil", 100.0, 3000.0, 345.0)     # node 345 cached
+        assert calls == [345.0]
+        with pytest.warns(ValidityWarning, match="grid node at 345.00 K"):
+            out = rdh.rib_dynamics_heat("bearing", "oil", 100.0, 3000.0, 350.0)
+        assert calls == [345.0, 350.0]            # the failed node only: 345 K from the cache
+        assert out.heat_left == pytest.approx(34.5) and out.runs == 1
+        rdh.clear_cache()
+        calls.clear()
+        with pytest.warns(ValidityWarning):
+            rdh.rib_dynamics_heat("bearing", "oil", 100.0, 3000.0, 350.0)
+        rdh.rib_dynamics_heat("bearing", "oil", 100.0, 3000.0, 345.0)     # cached by then
+        assert calls == [350.0, 345.0]
+    finally:
+        rdh.clear_cache()
