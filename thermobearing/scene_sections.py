@@ -271,9 +271,18 @@ class Measured:
                                  "a list of the logger's dropout codes: numbers in the "
                                  "file's unit or texts, e.g. [-999, 9999.9, \"OPEN\"]")
             missing = tuple(missing)
+        from .measured_layout import TEMPERATURE_UNITS
+
         unit = data.get("unit", "degC")
-        if unit not in ("degC", "K", "degF"):
-            raise InputError("measured.unit", unit, "degC, K or degF")
+        # the spellings a logger's header may use ("°C", "celsius", "℉"), not a bare C / F
+        # (coulomb, farad to the unit reader)
+        spelled = (TEMPERATURE_UNITS.get(unit.strip().lower())
+                   if isinstance(unit, str) and unit.strip().lower() not in ("c", "f")
+                   else None)
+        if unit not in ("degC", "K", "degF") and spelled is None:
+            raise InputError("measured.unit", unit, "degC, K or degF (or °C, °F, kelvin, "
+                             "celsius, fahrenheit)")
+        unit = spelled or unit
         cols = data.get("columns")
         if not isinstance(cols, Mapping) or not cols:
             raise InputError("measured.columns", cols, "a table of CSV column -> node name")
@@ -293,8 +302,12 @@ class Measured:
                                  "of a date column and a time-of-day column [\"date\", "
                                  "\"time\"]")
             tcol = (tcol[0], tcol[1])
-        else:
-            tcol = str(tcol)
+        elif not isinstance(tcol, str) or not tcol.strip():
+            # (a number was looked for as a header cell and found in a data row: "a
+            # column of the file: 5, 30")
+            raise InputError("measured.time_column", tcol, "a column name (a text such as "
+                             "\"time [min]\"), or the names of a date column and a "
+                             "time-of-day column [\"date\", \"time\"]")
         return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
                    time_column=tcol, unit=unit,
                    time_zero=None if zero is None else str(zero).strip(),
