@@ -558,7 +558,10 @@ def _measured_file(rng: np.random.Generator, names: list[str], duration: float,
     path.write_text("\n".join(lines) + "\n", encoding=enc)
     missing: list[Any] = [-999] + ([float(text_code)] if text_code == "9999.9" else
                                    [text_code] if text_code else [])
-    return {"file": str(path), **keys, "unit": unit, "columns": sensors,
+    # the unit as a header would spell it, now and then
+    spelled = {"degC": ["°C", "celsius"], "K": ["kelvin"], "degF": ["°F", "fahrenheit"]}
+    written = str(rng.choice(spelled[unit])) if rng.random() < 0.2 else unit
+    return {"file": str(path), **keys, "unit": written, "columns": sensors,
             "missing_values": missing}
 
 
@@ -1772,7 +1775,10 @@ def vibration_record(rng: np.random.Generator, spec: dict[str, Any], rpm: float,
         args += ["--fs", f"{fs:g}"]
     elif fmt == "npz":
         path = path_stem.with_name(path_stem.name + "_vib.npz")
-        np.savez(path, data=x, sampling_rate=np.float64(fs))
+        # the rate under either name, as a scalar or a one-element array
+        rate = np.float64(fs) if rng.random() < 0.7 else np.array([fs])
+        np.savez(path, **{"data" if rng.random() < 0.7 else "acceleration": x,
+                          "sampling_rate" if rng.random() < 0.6 else "fs": rate})
     else:
         from scipy.io import wavfile
 
