@@ -138,3 +138,35 @@ def test_heavy_cold_grid_converges_with_the_energy_identity(bearing, oil, load, 
     before or after; 47 of the 144 were accepted with shaft power and dissipation apart by
     3e-6 to 0.99 of the larger, now 0 points beyond 1e-6)."""
     _check_state(_solve(bearing, oil, rpm, load, t_c))
+
+
+def test_rollers_stuck_on_the_outer_race_are_solved_in_their_outer_slide():
+    """D1842926, 20 kN, ISO VG 46 at 0 degC, 15000 r/min, jet: the oil drag holds the cage
+    2.4 % below the epicyclic speed, the inner contacts slide at 2.7 m/s while the loaded
+    rollers stick on the outer race (V_o of 3e-12 to 1.5e-9 m/s, up to 167 N of traction).
+    In V_i alone the outer slide d_m delta + V_i cancels to the ulp of V_i (4e-16 m/s) and
+    the moment balances stay at ~2e-3 N; bisected in V_o they close to round-off. (Before:
+    the bracketed state was accepted at residual 2.9e-5 with shaft power and dissipation
+    4.5e-5 apart.)"""
+    from thermobearing.skidding.roller_drag import build_drag
+    from thermobearing.skidding.roller_loads import _gapped
+    from thermobearing.skidding.roller_slides import _roller_slides
+
+    b, oil = load_bearing("D1842926"), load_lubricant("ISO_VG46")
+    omega, t = 15000.0 * RPM, 273.15
+    m = build_model(b, oil, t, drag=build_drag(b, oil, OilSupply("jet", 1e-3 / 60.0, t),
+                                               omega, t))
+    z = m.n_rollers
+    psi = 2.0 * math.pi * np.arange(z) / z
+    wc = 0.4503022278 * omega
+    ld, fb = _load_distribution(m, omega, 20e3, wc, None, psi, (0.0, 0.0))
+    mg = _gapped(m, ld)
+    delta = wc - m.theoretical_cage_speed_ratio * omega
+    v_i, v_o = _roller_slides(mg, omega, delta, ld.inner_load, fb, psi, (0.0, 0.0))
+    e, _x = evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, (0.0, 0.0), v_o)
+    stuck = (ld.inner_load > 1000.0)
+    assert np.all(np.abs(v_o[stuck]) < 1e-8) and np.all(v_i[stuck] > 1.0)
+    assert np.max(np.abs(e.roller_eq)) <= 1e-9 * float(np.max(ld.inner_load))
+    # the same rollers in V_i only (the outer slide from the sum): off by far more
+    e_sum, _ = evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, (0.0, 0.0))
+    assert np.max(np.abs(e_sum.roller_eq)) > 1e3 * np.max(np.abs(e.roller_eq))

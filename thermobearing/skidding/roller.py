@@ -124,7 +124,8 @@ def solve_model(
     carries hundreds of N of traction; the speeds are then right to round-off but the
     tractions balance nothing (CRB 50x75x16, 20 kN, ISO VG 46 at 20 degC, 5000 r/min:
     residual 0.21 of the roller load, shaft power 12.2 kW against 1.3 kW booked). Such a
-    state goes to the slide-variable solve (:mod:`~thermobearing.skidding.roller_slides`,
+    state (and a bracketed root that fails or is refused so) goes to the slide-variable
+    solve (:mod:`~thermobearing.skidding.roller_slides`,
     method "slides": the sliding speeds as unknowns, resolved far below the speeds'
     round-off; there 1.2 kW = 1.2 kW to 2e-16, residual 1e-17).
 
@@ -184,6 +185,7 @@ def solve_model(
     polished = False
     floor = math.inf  # round-off floor at the best iterate (0: Newton met tol)
     rejected: list[tuple[str, float, float]] = []  # (method, norm, energy gap) refused
+    slid = False  # the slide-variable solve was tried
     steps = 0  # Newton steps of every pass and start (the result's ``iterations``)
     while i_attempt < len(attempts):
         start, fd_step, start_name = attempts[i_attempt]
@@ -223,11 +225,13 @@ def solve_model(
                     best, method = state, "newton_round_off"
                     break
                 rejected.append(("newton_round_off", state[2], gap))
-            state = (_slide_state(model, omega, loads, psi, whirl_acceleration, tol, best)
-                     if fallback else None)
-            if state is not None:
-                best, method, best_start, floor = state, "slides", "slides", 0.0
-                break
+                # a stuck film (module roller_slides): solve in the slides at once
+                slid = True
+                state = (_slide_state(model, omega, loads, psi, whirl_acceleration, tol, best)
+                         if fallback else None)
+                if state is not None:
+                    best, method, best_start, floor = state, "slides", "slides", 0.0
+                    break
             attempts.append((best[0], 1e-10, "best_iterate"))
     if best[4] and method == "newton":
         floor = 0.0  # Newton met tol
@@ -250,6 +254,11 @@ def solve_model(
             best_start = "bracketed"
         elif x is not None and e is not None and norm < best[2]:
             best = (x, e, norm, it, ok, ld)
+        if not ok and not slid:
+            # the bracketed root failed or was refused: the slides as unknowns
+            state = _slide_state(model, omega, loads, psi, whirl_acceleration, tol, best)
+            if state is not None:
+                best, method, best_start, floor = state, "slides", "slides", 0.0
     best = (*best[:3], steps, *best[4:])
     x, e, norm, it, ok, ld = best
     if not ok:

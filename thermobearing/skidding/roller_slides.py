@@ -55,37 +55,100 @@ def slide_speeds(model: RollerModel, omega: float, v_i: np.ndarray, delta: float
 
 def evaluate_slides(model: RollerModel, omega: float, v_i: np.ndarray, delta: float,
                     inner_load: np.ndarray, fb: np.ndarray, psi: np.ndarray,
-                    acc: tuple[float, float]) -> tuple[_Eval, np.ndarray]:
+                    acc: tuple[float, float], v_o: np.ndarray | None = None
+                    ) -> tuple[_Eval, np.ndarray]:
     """:func:`~thermobearing.skidding.roller_residual.evaluate` at the slides (eval, x)
-    with x = (omega_r, omega_c)."""
-    wr, wc, v_o = slide_speeds(model, omega, v_i, delta)
+    with x = (omega_r, omega_c). ``v_o`` (Z,) [m/s]: the outer slides where they are known
+    more exactly than d_m delta + v_i (rollers stuck on the outer race while the inner
+    contact slides); None: that sum."""
+    wr, wc, v_sum = slide_speeds(model, omega, v_i, delta)
+    v_o = v_sum if v_o is None else np.asarray(v_o, dtype=float)
     e = evaluate(model, omega, wr, wc, inner_load, fb, psi, acc, slides=(v_i, v_o))
     return e, np.append(wr, wc)
 
 
+def _bisect(eq: Callable[[np.ndarray], np.ndarray], lo: np.ndarray, hi: np.ndarray,
+            active: np.ndarray) -> np.ndarray:
+    """Roots (Z,) of the rising ``eq(y)`` bracketed by [lo, hi] (eq(lo) <= 0 < eq(hi)) for
+    the ``active`` entries, all at once: bisection in t = asinh(y / v_0) to adjacent floats
+    of t, then in y itself inside that bracket (t resolves y only to spacing(t) relative,
+    1.4e-14 at |t| ~ 92) to adjacent floats of y."""
+    v0 = SLIDE_SCALE
+    t_lo, t_hi = np.arcsinh(lo / v0), np.arcsinh(hi / v0)
+    for _ in range(200):
+        if np.all(~active | (t_hi - t_lo <= np.spacing(np.maximum(np.abs(t_lo),
+                                                                   np.abs(t_hi))))):
+            break
+        mid = 0.5 * (t_lo + t_hi)
+        up = eq(v0 * np.sinh(mid)) > 0.0
+        t_hi, t_lo = np.where(up, mid, t_hi), np.where(up, t_lo, mid)
+    a = np.maximum(v0 * np.sinh(t_lo), lo)
+    b = np.minimum(v0 * np.sinh(t_hi), hi)
+    for _ in range(80):
+        if np.all(~active | (b - a <= np.spacing(np.maximum(np.abs(a), np.abs(b))))):
+            break
+        mid = 0.5 * (a + b)
+        up = eq(mid) > 0.0
+        b, a = np.where(up, mid, b), np.where(up, a, mid)
+    return 0.5 * (a + b)
+
+
 def _roller_slides(model: RollerModel, omega: float, delta: float, inner_load: np.ndarray,
-                   fb: np.ndarray, psi: np.ndarray, acc: tuple[float, float]) -> np.ndarray:
-    """Inner slides (Z,) [m/s] solving every roller's moment balance at the cage offset
-    ``delta``: bisection of all rollers at once in t = asinh(V_i / v_0) over the slides of
-    spins from 1e-12 omega to twice the larger rolling spin, down to adjacent floats of t."""
+                   fb: np.ndarray, psi: np.ndarray, acc: tuple[float, float]
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """Inner and outer slides (V_i, V_o) (Z,) [m/s] solving every roller's moment balance at
+    the cage offset ``delta`` (:func:`_bisect`, which the balance rises with): first in V_i
+    over the slides of spins from 1e-12 omega to twice the larger rolling spin; then, for
+    the rollers whose outer slide is the smaller (stuck on the outer race while the inner
+    contact slides, where V_o = d_m delta + V_i cancels to the ulp of V_i), again in V_o
+    around that root."""
     d_m, d = model.pitch_diameter, model.roller_diameter
     half_d = 0.5 * d
+    z = model.n_rollers
     _, wc, _ = slide_speeds(model, omega, np.zeros(1), delta)
     u_ri = 0.5 * (d_m - d) * (omega - wc)
     top = 2.0 * max((d_m - d) / d * (omega - wc), (d_m + d) / d * wc) + 1e-9 * omega
-    v0 = SLIDE_SCALE
-    lo = np.full(model.n_rollers, math.asinh((u_ri - top * half_d) / v0))
-    hi = np.full(model.n_rollers, math.asinh((u_ri - 1e-12 * omega * half_d) / v0))
-    for _ in range(200):
-        if np.all(hi - lo <= np.spacing(np.maximum(np.abs(lo), np.abs(hi)))):
-            break
-        mid = 0.5 * (lo + hi)
-        r = evaluate_slides(model, omega, v0 * np.sinh(mid), delta, inner_load, fb, psi,
-                            acc)[0].roller_eq
-        # the balance rises with V_i: a positive residual puts the root below mid
-        hi = np.where(r > 0.0, mid, hi)
-        lo = np.where(r > 0.0, lo, mid)
-    return v0 * np.sinh(0.5 * (lo + hi))
+    shift = d_m * delta  # V_o - V_i
+
+    def eq_i(v_i: np.ndarray) -> np.ndarray:
+        return evaluate_slides(model, omega, v_i, delta, inner_load, fb, psi,
+                               acc)[0].roller_eq
+
+    v_i = _bisect(eq_i, np.full(z, u_ri - top * half_d),
+                  np.full(z, u_ri - 1e-12 * omega * half_d), np.ones(z, dtype=bool))
+    v_o = shift + v_i
+    outer = np.abs(v_o) < np.abs(v_i)
+    if not np.any(outer):
+        return v_i, v_o
+    pad = 8.0 * np.spacing(np.abs(v_i)) + 8.0 * np.spacing(abs(shift))
+    lo_o, hi_o = v_o - pad, v_o + pad
+
+    def eq_o(y: np.ndarray) -> np.ndarray:
+        return evaluate_slides(model, omega, np.where(outer, y - shift, v_i), delta,
+                               inner_load, fb, psi, acc, np.where(outer, y, v_o))[0].roller_eq
+
+    ok = outer & (eq_o(lo_o) <= 0.0) & (eq_o(hi_o) > 0.0)
+    if np.any(ok):
+        y = _bisect(eq_o, lo_o, hi_o, ok)
+        v_o = np.where(ok, y, v_o)
+        v_i = np.where(ok, y - shift, v_i)
+    return v_i, v_o
+
+
+def _refine_offset(cage: Callable[[float], float], tau: float, d0: float) -> float:
+    """The cage offset [rad/s] of Brent's root ``tau`` in asinh(delta / d0), refined by Brent
+    in delta itself (``cage(delta)``) between d0 sinh(tau -+ 4 spacings) when they bracket
+    the root on one side of pure rolling (tau resolves delta only to spacing(tau) relative,
+    1.4e-14 for |tau| ~ 92, i.e. a cage far from the epicyclic speed); else d0 sinh(tau)."""
+    from scipy.optimize import brentq
+
+    step = 4.0 * np.spacing(abs(tau))
+    a, b = d0 * math.sinh(tau - step), d0 * math.sinh(tau + step)
+    if a * b <= 0.0 or not (cage(a) > 0.0 > cage(b)):
+        return d0 * math.sinh(tau)
+    root, info = brentq(cage, a, b, xtol=1e-300, rtol=4.0 * np.finfo(float).eps,
+                        maxiter=200, full_output=True, disp=False)
+    return float(root) if info.converged else d0 * math.sinh(tau)
 
 
 def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], psi: np.ndarray,
@@ -118,11 +181,14 @@ def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], ps
         ld, fb = loads(wc_guess, tuple(ld.ring_displacement))
         mg = _gapped(model, ld)
 
-        def cage(tau: float, mg: RollerModel = mg, ld: Any = ld, fb: np.ndarray = fb) -> float:
-            delta = d0 * math.sinh(tau)
-            v_i = _roller_slides(mg, omega, delta, ld.inner_load, fb, psi, acc)
-            return evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi,
-                                   acc)[0].cage_eq
+        def cage_at(delta: float, mg: RollerModel = mg, ld: Any = ld,
+                    fb: np.ndarray = fb) -> float:
+            v_i, v_o = _roller_slides(mg, omega, delta, ld.inner_load, fb, psi, acc)
+            return evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, acc,
+                                   v_o)[0].cage_eq
+
+        def cage(tau: float, cage_at: Callable[[float], float] = cage_at) -> float:
+            return cage_at(d0 * math.sinh(tau))
 
         if not (cage(tau_lo) > 0.0 > cage(tau_hi)):
             return None
@@ -130,9 +196,9 @@ def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], ps
                            maxiter=400, full_output=True, disp=False)
         if not info.converged:
             return None
-        delta = d0 * math.sinh(tau)
-        v_i = _roller_slides(mg, omega, delta, ld.inner_load, fb, psi, acc)
-        e, x = evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, acc)
+        delta = _refine_offset(cage_at, tau, d0)
+        v_i, v_o = _roller_slides(mg, omega, delta, ld.inner_load, fb, psi, acc)
+        e, x = evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, acc, v_o)
         found = (x, e, ld)
         done = abs(x[-1] - wc_guess) <= 1e-8 * omega
         wc_guess = float(x[-1])
