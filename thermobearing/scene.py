@@ -180,6 +180,12 @@ class Scene:
         _check_keys("lubricant", lub, ("preset", "path"))
         if ("preset" in lub) == ("path" in lub):
             raise InputError("lubricant", lub, "exactly one of 'preset' or 'path'")
+        for key in ("preset", "path"):
+            if key in lub and (not isinstance(lub[key], str) or not lub[key].strip()):
+                # (preset = 0 stopped with a KeyError, preset = -1 with a TypeError)
+                raise InputError(f"lubricant.{key}", lub[key],
+                                 "a preset name, e.g. ISO_VG32 (the files of configs/lubricants)"
+                                 if key == "preset" else "a lubricant TOML file path")
         for name in ("supply", "environment", "schedule", "models", "network", "solver",
                      "outputs", "measured", "checks"):
             if name in data:

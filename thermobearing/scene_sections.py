@@ -88,6 +88,10 @@ class BearingSpec:
         preset, path = data.get("preset"), data.get("path")
         if (preset is None) == (path is None):
             raise InputError(f"{sec}.preset", preset, "exactly one of 'preset' or 'path'")
+        for key, value in (("preset", preset), ("path", path)):
+            if value is not None and (not isinstance(value, str) or not value.strip()):
+                raise InputError(f"{sec}.{key}", value, "a bearing preset name" if key ==
+                                 "preset" else "a bearing TOML file path")
         share = _checked_load_share(sec, _table(f"{sec}.load_share",
                                                  data.get("load_share", {})))
         return cls(
