@@ -206,6 +206,8 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
     header gives no unit may carry one in each cell (``10 s``); in a file with decimal
     commas a point groups thousands (``1.000``). A duplicated column or a row with more
     filled cells than the header has columns is an error naming it."""
+    if not isinstance(name, str) or not name.strip():  # ({a = 1} stopped in pathlib)
+        raise InputError("schedule.file", name, "a CSV file path (a text)")
     path = Path(name)
     if not path.is_absolute() and base_dir is not None:
         path = base_dir / path

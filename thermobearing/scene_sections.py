@@ -312,7 +312,10 @@ class Measured:
             raise InputError("measured.time_column", tcol, "a column name (a text such as "
                              "\"time [min]\"), or the names of a date column and a "
                              "time-of-day column [\"date\", \"time\"]")
-        return cls(file=str(_require("measured", data, "file")), columns=dict(cols),
+        file = _require("measured", data, "file")
+        if not isinstance(file, str) or not file.strip():
+            raise InputError("measured.file", file, "a data file path (a text)")
+        return cls(file=file, columns=dict(cols),
                    time_column=tcol, unit=unit,
                    time_zero=None if zero is None else str(zero).strip(),
                    time_format=time_format, missing_values=missing)

@@ -41,3 +41,23 @@ def test_lubricant_preset_or_path_of_another_type(key, value):
 def test_bearing_preset_or_path_of_another_type(key, value):
     with pytest.raises(InputError, match=rf"bearings\[0\].{key} = "):
         loads_scene(SCENE.format(bearing=f"{key} = {value}", lubricant='preset = "ISO_VG32"'))
+
+
+@pytest.mark.parametrize("value", ["{ a = 1 }", "5", '""', "[]"])
+def test_schedule_file_of_another_type(value):
+    text = SCENE.format(bearing='preset = "SKF6304"', lubricant='preset = "ISO_VG32"')
+    text = text.replace('speed = "1500 rpm"\nradial_load = "1 kN"\naxial_load = "0 N"',
+                        f"file = {value}")
+    with pytest.raises(InputError, match=r"schedule.file = .*a CSV file path"):
+        loads_scene(text)
+
+
+@pytest.mark.parametrize("value", [{"a": 1}, 5, "", None])
+def test_measured_file_of_another_type(value):
+    from thermobearing.scene_sections import Measured
+
+    data = {"columns": {"TC1": "a.housing"}}
+    if value is not None:
+        data["file"] = value
+    with pytest.raises(InputError, match=r"measured.file"):
+        Measured.from_dict(data)
