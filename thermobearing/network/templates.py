@@ -144,6 +144,10 @@ def _check_dims(**dims: float) -> None:
             continue
         if not math.isfinite(float(v)) or float(v) <= 0:
             raise InputError(k, v, "a finite value > 0 (SI)")
+        if not math.isfinite(float(v) * float(v) * float(v) * 1e12):
+            # a length whose volume overflows (housing_outer_diameter = 1e308 m stopped
+            # with OverflowError in the housing volume)
+            raise InputError(k, v, "a value whose cube (a volume) is a finite number (SI)")
 
 
 def _cavity(bearing) -> dict[str, float]:
