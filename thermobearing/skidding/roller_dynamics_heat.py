@@ -66,7 +66,21 @@ it) and the rib slide with it, so the test runs the whole fixed window there
 (``configs/scenes/crb_rib_example.toml``: 15 nodes, 0.6-0.7 s each at 20000 r/min,
 1.1-1.3 s at 30000; 15.3 s CPU for the scene). With an unbalance (chaotic impacting
 motion, block scatter ~5 %) no window converges to 0.5 % before the fixed window's end,
-so those runs are the fixed window's, unchanged (test). Units: SI.
+so those runs are the fixed window's, unchanged (test). There the cost was the cage
+runaway's evaluate-path re-run (6-25x a table run): the benchmark with ``--unbalance 0.06
+--quick --duration 5`` (20000 r/min / 3 kN and 5000 / 2 kN, 19 nodes) spent 240 of its
+284 s CPU outside the table-path kernel, 6 nodes re-run on the evaluate path (19-23 s
+each at 20000 r/min, 72-75 s at 5000) and 2 that ran away on both paths and borrowed a
+neighbour. With ``table_retries`` (default :data:`DEFAULT_TABLE_RETRIES`; other
+trajectories on the table path first, roller_dynamics_coupled "Retries on the table
+path"): 79 s CPU (x 3.6), 7 of 8 such nodes finished on a table retry (1-2 retries,
+2.0-5.9 s), 1 on the evaluate path after 3 retries, none borrowed a neighbour. Nodes
+without a runaway are identical; the re-run nodes are other trajectories of the chaotic
+motion (their heat moved by up to 10.4 %, inside the 19.8-22.7 W per roller the other
+nodes of that step scatter over; same population: module notes of
+roller_dynamics_coupled), the booked rib_friction at the step ends by -3.0 % (20000
+r/min, 681 -> 661 W) and -0.03 % (5000 r/min), the final roller temperature by -0.09 K.
+Units: SI.
 """
 
 from __future__ import annotations
