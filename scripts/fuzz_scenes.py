@@ -82,6 +82,24 @@ are of the generator of their date):
   contact pressures, cage speed ratios) or a cage speed ratio above 1 are defects, as is
   any wanted output (not only the film) whose table is missing without an
   ``outputs.want`` warning naming it.
+- 2026-11-23, session 18: boundary steps (``dur0``, ``rev``: a reversed speed, ``negload``,
+  all refused naming the step's field; ``rest0``: a step at rest between turning ones);
+  unit strings in unusual but valid spellings and number forms (``oddunits``: ``°C``,
+  ``kilonewton``, ``rev/min``, ``dm^3/min``, ``µm``, ``W m^-2 K^-1``, ``1.5E+03``, ``+5``,
+  ``.5``, ``1500rpm``), whose SI values must equal the plain scene's; measured files with
+  ISO / dotted timestamps, separate date and time columns, Excel day numbers, Unix seconds
+  or a strptime pattern, a ``time_zero`` offset, 1-2 rows, text dropout codes, the unit in
+  each header or spelled as a logger does, in Windows-1252 or UTF-16; schedule CSV files
+  in UTF-16; ``axial_load_steps`` with a step a million times too small (refused); one to
+  three ``--set`` per sweep, each swept field's values checked as given; every
+  ``--cage-every``-th case (default 4) ``thermobearing cage-speed`` on a generated
+  vibration record of its first bearing (:func:`vibration_record`: CSV / TSV / npy / npz /
+  wav, clean, weak, noise, constant, clipped, short, slow, aliased or with gaps), which must
+  exit 0 with finite numbers, 3 or 1 with an error line; ``thermobearing calibrate
+  --max-runs 2`` on each scene with a measured file that ran OK (``--calibrate``), whose
+  calibrated scene must load and pass ``check``; ``--mutations`` (default 3) copies of
+  each scene with one value replaced by another type, size or unit, or deleted, loaded and
+  checked without a solve: anything but a refusal naming its field is a defect.
 
 Usage::
 
@@ -1913,6 +1931,68 @@ def run_calibrate_cli(case: Case, rng: np.random.Generator, out_dir: Path,
     case.notes.append(f"calibrate {fit}: ok")
 
 
+#: values a mutated scene puts in place of one of its values (another type, empty, a
+#: sign, a size or a unit that does not fit)
+MUTATIONS = (0, -1, 1.5, True, "", "abc", [], {}, [1, 2], {"a": 1}, "1e999 m", "-5 degC",
+             "nan", 1e308, -1e308, "1 kg", "0", "  ")
+
+
+def _leaves(doc: Any, path: tuple = ()) -> list[tuple]:
+    if isinstance(doc, dict):
+        return [p for k, v in doc.items() for p in _leaves(v, (*path, k))]
+    if isinstance(doc, list):
+        return [p for i, v in enumerate(doc) for p in _leaves(v, (*path, i))]
+    return [path]
+
+
+def mutate(rng: np.random.Generator, doc: dict[str, Any]) -> tuple[dict[str, Any], str]:
+    """A copy of the scene document with one value (now and then its table) replaced by
+    one of MUTATIONS or deleted, and where and what (``"supply/flow = -1"``)."""
+    import copy
+
+    out = copy.deepcopy(doc)
+    leaves = _leaves(out)
+    path = leaves[int(rng.integers(0, len(leaves)))]
+    if len(path) > 1 and rng.random() < 0.15:
+        path = path[:-1]
+    parent: Any = out
+    for key in path[:-1]:
+        parent = parent[key]
+    if rng.random() < 0.1:
+        del parent[path[-1]]
+        return out, "/".join(map(str, path)) + " deleted"
+    value = MUTATIONS[int(rng.integers(0, len(MUTATIONS)))]
+    parent[path[-1]] = value
+    return out, f"{'/'.join(map(str, path))} = {value!r}"
+
+
+def run_mutations(rng: np.random.Generator, doc: dict[str, Any], n: int) -> list[str]:
+    """Load and check (``thermobearing check``'s steps, no solve) ``n`` mutated copies of
+    the scene: a refusal must be an InputError naming its field; anything else (a
+    traceback) is returned as a defect line with its mutation."""
+    from thermobearing.errors import ConvergenceError, InputError
+    from thermobearing.scene import dumps_toml, loads_scene
+
+    defects = []
+    for _ in range(n):
+        mutated, what = mutate(rng, doc)
+        try:
+            text = dumps_toml(mutated)
+        except Exception:  # noqa: BLE001 -- a value TOML cannot write: no scene to try
+            continue
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                check_scene(loads_scene(text, base_dir=ROOT))
+        except (InputError, ConvergenceError) as exc:
+            outcome, msg = classify_error(exc)
+            if outcome == "DEFECT":
+                defects.append(f"mutation {what}: {msg}")
+        except Exception as exc:  # noqa: BLE001 -- every other failure is the defect
+            defects.append(f"mutation {what}: {classify_error(exc)[1]}")
+    return defects
+
+
 # -------------------------------------------------------------------------------- main
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
@@ -1937,6 +2017,10 @@ def main(argv: list[str] | None = None) -> int:
                         help="also run `thermobearing calibrate --max-runs 2` on every case "
                              "with a measured file that ran OK within a quarter of the time "
                              "limit (0: never; default 1)")
+    parser.add_argument("--mutations", type=int, default=3,
+                        help="also load and check (no solve) N copies of each scene with one "
+                             "value replaced by another type, size or unit, or deleted "
+                             "(0: none; default 3)")
     parser.add_argument("--only", type=str, default="",
                         help="comma list of case indices to run (reproduce a few)")
     args = parser.parse_args(argv)
@@ -1972,6 +2056,10 @@ def main(argv: list[str] | None = None) -> int:
         if (args.calibrate and "measured" in doc and case.outcome == "OK"
                 and case.seconds < args.time_limit / 4):
             run_calibrate_cli(case, extra_rng, out_dir, args.time_limit)
+        if args.mutations:
+            bad = run_mutations(extra_rng, doc, args.mutations)
+            if bad and case.outcome != "DEFECT":
+                case.outcome, case.message = "DEFECT", "; ".join(bad)[:600]
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "

@@ -183,3 +183,20 @@ def _hz(text):
 def test_finite_numbers_finds_a_nan(fuzz):
     assert fuzz._finite_numbers({"a": 1.0, "b": [0.5, {"c": math.nan}]}) == "b[1].c = nan"
     assert fuzz._finite_numbers({"a": None, "b": [1.0]}) is None
+
+
+def test_mutations_change_one_value_and_known_crashes_are_refused(fuzz, tmp_path):
+    doc = {"title": "m", "bearings": [{"name": "a", "preset": "SKF6304"}],
+           "lubricant": {"preset": "ISO_VG32"},
+           "supply": {"method": "jet", "flow": "1 L/min"},
+           "schedule": {"speed": "1500 rpm", "radial_load": "1 kN", "axial_load": "0 N"},
+           "outputs": {"mode": "steady", "want": ["film"]}}
+    whats = set()
+    for i in range(40):
+        mutated, what = fuzz.mutate(np.random.default_rng([24, i]), doc)
+        whats.add(what.split(" ")[0])
+        assert mutated != doc and doc["supply"]["flow"] == "1 L/min"
+    assert len(whats) >= 5
+    # the mutations session 18 found crashing (lubricant preset 0 / -1, schedule file {a=1},
+    # a housing of 1e308 m) are refusals now: no defect from a run of mutations
+    assert fuzz.run_mutations(np.random.default_rng(25), doc, 30) == []
