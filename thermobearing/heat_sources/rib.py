@@ -19,7 +19,10 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   unbalance: 1.5-2 orbits instead of the fixed 5 at 5000-20000 r/min, ~2.2-2.8x cheaper,
   rib heat within 0.2 %; a slowly creeping cage, e.g. at 30000 r/min, runs all 5;
   :mod:`thermobearing.skidding.roller_dynamics_heat`, "Where the integration stops");
-  0 runs the fixed 2 + 3 orbit window.
+  0 runs the fixed 2 + 3 orbit window. Option ``table_retries`` (default 3): a run that
+  enters the cage runaway first tries that many other trajectories on the table path,
+  then the evaluate path (0: the evaluate path at once, as before; with 0.06 g x 3.6
+  cheaper in bench_rib_friction, re-run nodes within the chaotic node scatter).
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
   coupled model").
