@@ -46,7 +46,7 @@ def test_converged_heat_within_half_a_percent_of_the_fixed_window(crb):
     running-mean stop ends before the fixed 5 orbits and its rib heat and rib slide speed
     (which sets the thrust share's heat) agree with the fixed window's (2 warm-up + 3
     statistics orbits) within the stated 1 % (measured 0.02-0.2 %, benchmarks/
-    bench_rib_friction.py)."""
+    bm_rib_friction.py)."""
     b, lub = crb
     fixed, _ = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0, convergence=None)
     conv, resp = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0,

@@ -22,7 +22,7 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   0 runs the fixed 2 + 3 orbit window. Option ``table_retries`` (default 3): a run that
   enters the cage runaway first tries that many other trajectories on the table path,
   then the evaluate path (0: the evaluate path at once, as before; with 0.06 g x 3.6
-  cheaper in bench_rib_friction, re-run nodes within the chaotic node scatter).
+  cheaper in bm_rib_friction, re-run nodes within the chaotic node scatter).
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
   coupled model").

@@ -44,7 +44,7 @@ dropped) and holds only results of deterministic runs; :func:`clear_cache` empti
 Where the integration stops (2026-11-23, issue 9 cost): the coupled model integrated a fixed
 2 warm-up + 3 statistics cage orbits per node; a scene fuzzer's coupled rib_friction
 scenes timed out (all 12 timeouts of a session). Measured
-(``benchmarks/bench_rib_friction.py``: CRB 50x75x16 in MIL-PRF-23699, steps 20000 r/min /
+(``benchmarks/bm_rib_friction.py``: CRB 50x75x16 in MIL-PRF-23699, steps 20000 r/min /
 3 kN, 5000 / 2 kN, 10000 / 6 kN of 10 s, 0.2 kN axial, no unbalance): 11 nodes in a
 21-26 s CPU scene run, the time loop kernel 78 % of it (1.0-1.2 / 3.0-3.5 / 1.6-1.9 s per
 node at 20000 / 5000 / 10000 r/min: ~1.5 us steps, the rib contact's 1/omega_rib), the

@@ -33,7 +33,7 @@ and the same for the rib slide speed (which sets the thrust share's heat), and t
 rib_friction power of the scene at the end of every step (both transients follow their own
 temperatures, so this also holds the feedback of the small heat change).
 
-Usage: python benchmarks/bench_rib_friction.py [--quick] [--duration S] [--unbalance G]
+Usage: python benchmarks/bm_rib_friction.py [--quick] [--duration S] [--unbalance G]
        [--json] [--out FILE]
 (``--json``: the records on stdout, one per path plus a summary record; ``--out FILE``:
 the records written to FILE as well.)
@@ -226,6 +226,12 @@ def main(argv: list[str] | None = None) -> int:
     summary.update(first_call_s=warm, convergence=DEFAULT_CONVERGENCE,
                    table_retries=DEFAULT_TABLE_RETRIES,
                    duration_s=args.duration, unbalance_g=args.unbalance, quick=args.quick)
+    case = f"CRB 50x75x16 {'2' if args.quick else '3'} steps, {args.unbalance:g} g"
+    for r in (fixed, conv):  # the fields `thermobearing bench` tabulates
+        r.update(benchmark="rib_friction", case=case, method=r["path"],
+                 setting=f"{args.duration:g} s steps", time_s=r["cpu_s"],
+                 ratio_vs_anchor=fixed["cpu_s"] / r["cpu_s"])
+    conv["error"] = summary["max_node_heat_change"]  # relative, against the fixed path
     records = [fixed, conv, summary]
     if args.out:
         with open(args.out, "w", encoding="utf-8") as fh:
