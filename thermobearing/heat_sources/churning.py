@@ -288,6 +288,18 @@ def solver_drag(ctx: HeatContext, source: str, key: str,
     return drag
 
 
+def _carried_moment(source: str, role: str, component: str, force: str, pair: str,
+                    moment: float, omega: float, fraction: float) -> HeatResult:
+    """The heat of a churning moment M [N m] the roller skidding solver balanced on a body
+    turning at omega [rad/s] (extras ``solver_drag``): |M omega| [W] to ``role``."""
+    q = abs(moment * omega)
+    return HeatResult(
+        source=source, power_by_role={role: q}, components={component: q},
+        loss_class={component: "load_independent"}, forces={force: moment},
+        force_pairs=(ForcePair(pair, moment, omega),),
+        details={"oil_fraction": fraction, "regime": "solver drag (roller skidding balance)"})
+
+
 def _oil(ctx: HeatContext):
     t = ctx.temperature("oil")
     rho = float(ctx.lubricant.density(t))
@@ -327,15 +339,9 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     role = _role(ctx, name, "oil")
     carried = solver_drag(ctx, name, "cage_churning_moment")
     if carried is not None:
-        moment = float(carried["cage_churning_moment"])
-        q = abs(moment * omega)
-        return HeatResult(
-            source=name, power_by_role={role: q}, components={"cage churning": q},
-            loss_class={"cage churning": "load_independent"},
-            forces={"cage_drag_moment": moment},
-            force_pairs=(ForcePair("oil on cage", moment, omega),),
-            details={"oil_fraction": float(carried["cage_oil_fraction"]),
-                     "regime": "solver drag (roller skidding balance)"})
+        return _carried_moment(name, role, "cage churning", "cage_drag_moment", "oil on cage",
+                               float(carried["cage_churning_moment"]), omega,
+                               float(carried["cage_oil_fraction"]))
     b = ctx.bearing
     cage = b.cage
     rho, nu = _oil(ctx)
@@ -376,17 +382,10 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
     omega = ctx.operating.inner_speed
     role = _role(ctx, name, "inner_ring")
     carried = solver_drag(ctx, name, "inner_ring_moment")
-    if carried is not None:
-        # the roller skidding solver's shaft torque contains this moment
-        moment = float(carried["inner_ring_moment"])
-        q = abs(moment * omega)
-        return HeatResult(
-            source=name, power_by_role={role: q}, components={"inner ring churning": q},
-            loss_class={"inner ring churning": "load_independent"},
-            forces={"inner_ring_drag_moment": moment},
-            force_pairs=(ForcePair("oil on inner ring", moment, omega),),
-            details={"oil_fraction": float(carried["inner_ring_oil_fraction"]),
-                     "regime": "solver drag (roller skidding balance)"})
+    if carried is not None:  # the roller skidding solver's shaft torque contains it
+        return _carried_moment(name, role, "inner ring churning", "inner_ring_drag_moment",
+                               "oil on inner ring", float(carried["inner_ring_moment"]),
+                               omega, float(carried["inner_ring_oil_fraction"]))
     b = ctx.bearing
     rho, nu = _oil(ctx)
     d_in, arc0, shoulder0, gap0 = inner_ring_churning_geometry(b)
