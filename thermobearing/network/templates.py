@@ -361,6 +361,11 @@ def seven_node(
     (pi D_Lo L_h as in paper 002) and both cage cylinders (pi (d_c,in + d_c,out) w_c); cage
     heat capacity from its mass. Roles: outer_ring, inner_ring, elements, cage, oil.
     """
+    if h_oil == 0.0:
+        # the cage node's one edge is its oil convection: without it the cage has no path
+        # to a fixed temperature (the network check named node 'a.cage', no parameter)
+        raise InputError("h_oil", h_oil, "a coefficient > 0 in the seven-node template: "
+                         "the cage exchanges heat only with the oil, by this convection")
     net = network if network is not None else ThermalNetwork(f"{bearing.name} seven-node")
     base = four_node_paper002(
         bearing, lubricant, housing_outer_diameter=housing_outer_diameter,
