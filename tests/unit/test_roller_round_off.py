@@ -13,7 +13,9 @@ ConvergenceError names the residual and the refused state.
 
 The invariants pinned: every returned state is converged, its residual within ``tol`` (or
 within 4 round-off floors) and ``shaft_torque * inner_speed`` = ``power_loss["total"]`` (=
-``booked_power()["total"]`` with the oil drag) to ENERGY_REL = 1e-6 relative.
+``booked_power()["total"]`` with the oil drag) to ENERGY_REL = 1e-6 relative for a state
+beyond ``tol`` (enforced by the solver), to 1e-5 for one within it (what a residual of
+1e-9 of the force scale leaves; measured at most 1.0e-6).
 """
 
 from __future__ import annotations
@@ -58,7 +60,10 @@ def _check_state(r, tol: float = 1e-9) -> float:
     loss = r.power_loss["total"]
     assert r.booked_power()["total"] == pytest.approx(loss, rel=1e-12)
     gap = abs(shaft - loss) / max(abs(shaft), abs(loss))
-    assert gap <= ENERGY_REL
+    # beyond tol the solver enforces ENERGY_REL; within tol the gap is what the residual
+    # leaves (measured: <= 3e-8 on the grid below, 1.0e-6 for a catalogue NU 206 at 13 kN,
+    # 8000 r/min, 140 degC, whose 57.6 W are small against its 13 kN force scale)
+    assert gap <= (ENERGY_REL if r.residual_norm > tol else 1e-5)
     return gap
 
 
@@ -170,3 +175,48 @@ def test_rollers_stuck_on_the_outer_race_are_solved_in_their_outer_slide():
     # the same rollers in V_i only (the outer slide from the sum): off by far more
     e_sum, _ = evaluate_slides(mg, omega, v_i, delta, ld.inner_load, fb, psi, (0.0, 0.0))
     assert np.max(np.abs(e_sum.roller_eq)) > 1e3 * np.max(np.abs(e.roller_eq))
+
+
+SCENE = """
+title = "CRB 50x75x16 heavy cold"
+[[bearings]]
+name = "crb"
+preset = "CRB_50x75x16"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "1 L/min"
+inlet_temperature = "20 degC"
+[schedule]
+speed = "5000 rpm"
+radial_load = "20 kN"
+axial_load = "0 kN"
+[models]
+kinematics = "skidding"
+heat_sources = ["raceway_traction", "ehl_rolling_resistance", "churning_elements",
+                "churning_cage", "churning_inner_ring", "cage_guide", "pocket_friction"]
+[outputs]
+mode = "steady"
+want = ["losses"]
+"""
+
+
+def test_scene_heat_equals_the_shaft_power_at_the_reported_point():
+    """The scene's heat sources at the reported point (20 kN, 20 degC, 5000 r/min) book the
+    shaft power (before: 1.34 kW booked against 12.2 kW of shaft power)."""
+    from thermobearing.scene import loads_scene
+    from thermobearing.simulation import Simulation
+
+    temps = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 293.15)
+    sim = Simulation(loads_scene(SCENE), progress=False)
+    b = sim.bearings[0]
+    step = sim.scene.schedule.steps[0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kin = sim.solve_kinematics(b, 0, step, temps)
+        ev = sim.evaluate_heat(b, step, kin, temps, with_rows=True)
+    total = sum(row["power [W]"] for row in ev.rows)
+    res = kin.raw
+    _check_state(res)
+    assert total == pytest.approx(res.shaft_torque * step.speed, rel=ENERGY_REL)
