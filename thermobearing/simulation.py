@@ -45,6 +45,7 @@ public names are importable from here.
 from __future__ import annotations
 
 import dataclasses
+import math
 import sys
 import time
 import warnings
@@ -226,7 +227,7 @@ class Simulation:
         # (bearing key, step) -> (viscosity, result, its validity warnings, bearing solved);
         # an identical bearing in the same state takes the result and the warnings
         self._kin_shared: dict[tuple[str, int],
-                               tuple[float, KinematicsResult, tuple[str, ...], str]] = {}
+                               tuple[float, KinematicsResult, tuple[str, ...], str, float]] = {}
         self._kin_replayed: set[tuple[int, str]] = set()
         self._heat_memo: dict[tuple[str, str], list[tuple[Any, ...]]] = {}
         # warnings of each batch of heat evaluations: batch -> (bearing evaluated, messages);
@@ -291,16 +292,26 @@ class Simulation:
         (:func:`kinematic_models.contact_temperature`: (T_inner_ring + T_outer_ring +
         2 T_elements) / 4 [K], the heat sources' convention), and re-solved when the
         viscosity at that same temperature has moved by more than
-        ``solver.kinematics_tolerance`` (relative) since the last solve."""
+        ``solver.kinematics_tolerance`` (relative) since the last solve. The skidding
+        solvers also balance the oil drag at the oil node's temperature (the roller solver's
+        churning and guide moments are what the sources then book): for them the oil's
+        viscosity moving by more than the tolerance re-solves as well."""
         t_contact = contact_temperature(temps)
         visc = float(self.lubricant.dynamic_viscosity(t_contact))
+        visc_oil = (float(self.lubricant.dynamic_viscosity(temps["oil"]))
+                    if b.kinematics_name == "skidding" else math.nan)
         tol = self.scene.solver.kinematics_tolerance
+
+        def near(v: float, ref: float) -> bool:
+            return math.isnan(v) or abs(v / ref - 1.0) <= tol
+
         if (b.last is not None and b.last_step == step_index
-                and abs(visc / b.last_viscosity - 1.0) <= tol):
+                and near(visc, b.last_viscosity) and near(visc_oil, b.last_oil_viscosity)):
             return b.last
         shared = self._kin_shared.get((b.key, step_index))
-        if shared is not None and abs(visc / shared[0] - 1.0) <= tol:
+        if shared is not None and near(visc, shared[0]) and near(visc_oil, shared[4]):
             b.last, b.last_viscosity, b.last_step = shared[1], shared[0], step_index
+            b.last_oil_viscosity = shared[4]
             if shared[3] != b.name and (id(shared[1]), b.name) not in self._kin_replayed:
                 self._kin_replayed.add((id(shared[1]), b.name))
                 for message in shared[2]:  # the twin's film ranges hold for this one too
@@ -340,9 +351,10 @@ class Simulation:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
                                    res.residual_norm, "at step", {"step": step_index})
         b.last, b.last_viscosity, b.last_step = res, visc, step_index
+        b.last_oil_viscosity = visc_oil
         self._kin_shared[(b.key, step_index)] = (
             visc, res, tuple(str(w.message) for w in caught
-                             if issubclass(w.category, ValidityWarning)), b.name)
+                             if issubclass(w.category, ValidityWarning)), b.name, visc_oil)
         b.solves += 1
         self.checks[b.name].record(step_index, check_state(b.bearing, res, self.check_limits))
         return res

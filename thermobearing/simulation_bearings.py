@@ -30,6 +30,8 @@ class _Bearing:
     kin_options: dict[str, Any]
     last: KinematicsResult | None = None
     last_viscosity: float = math.nan
+    #: the oil node's viscosity at the last skidding solve (its drag's) [Pa s]
+    last_oil_viscosity: float = math.nan
     last_step: int = -1
     solves: int = 0
     #: fractions of the schedule's radial / axial loads this bearing carries
