@@ -1622,6 +1622,9 @@ def _unchanged_by_sweep(summary: Any, path: str, stderr: str) -> str | None:
         return None  # a threshold changes the flags only, which may well stay the same
     if "mean total loss [W]" in summary and (summary["mean total loss [W]"] == 0.0).all():
         return None  # nothing turns (steps at rest): no setting changes a loss
+    if ("mean total loss [W]" not in summary and "max over-skidding [%]" in summary
+            and summary["max over-skidding [%]"].isna().all()):
+        return None  # kinematics at rest (no skidding to give): the lubricant cannot tell
     cols = [c for c in summary.columns if c != "case" and c != path
             and not c.startswith(path + " [") and is_numeric_dtype(summary[c])
             and not is_bool_dtype(summary[c])]

@@ -200,3 +200,13 @@ def test_mutations_change_one_value_and_known_crashes_are_refused(fuzz, tmp_path
     # the mutations session 18 found crashing (lubricant preset 0 / -1, schedule file {a=1},
     # a housing of 1e308 m) are refusals now: no defect from a run of mutations
     assert fuzz.run_mutations(np.random.default_rng(25), doc, 30) == []
+
+
+def test_identical_sweep_at_rest_is_not_listed(fuzz):
+    path = "lubricant.preset"
+    rest = pd.DataFrame({"case": ["a", "b"], path: ["ISO_VG100", "OIL_4109"],
+                         "max over-skidding [%]": [math.nan, math.nan],
+                         "max contact pressure [MPa]": [3344.4, 3344.4]})
+    assert fuzz._unchanged_by_sweep(rest, path, "") is None
+    turning = rest.assign(**{"max over-skidding [%]": [1.0, 1.0]})
+    assert fuzz._unchanged_by_sweep(turning, path, "").startswith("identical")
