@@ -151,6 +151,8 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         hint = ""
         if target in ("K", "delta_degC") and unit_text in ("C", "F"):  # coulomb, farad
             hint = f" (degrees Celsius / Fahrenheit are deg{unit_text} or \u00b0{unit_text})"
+        if not unit_text:  # a number in a text without its unit ("-1" for a pressure)
+            hint = f" (a number written as text needs its unit: '{number} {target}')"
         raise InputError(
             field, value, f"a quantity with units convertible to {target}{hint}"
         ) from None

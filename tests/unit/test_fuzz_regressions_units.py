@@ -56,3 +56,11 @@ def test_upper_case_unit_names_the_lower_case_one():
     with pytest.raises(InputError) as err:  # no lower-case unit of that kind: no hint
         to_si("2 KN", "force")
     assert "case-sensitive" not in str(err.value)
+
+
+def test_a_number_in_a_text_without_its_unit_is_told_to_add_one():
+    """``thermobearing lubricant --pressure -1`` said only 'a quantity with units
+    convertible to Pa', which reads as a wrong unit."""
+    with pytest.raises(InputError, match=r"'-1' .*needs its unit: '-1 Pa'"):
+        to_si("-1", "Pa", field="--pressure")
+    assert to_si("0.5", "dimensionless") == 0.5
