@@ -165,7 +165,7 @@ def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], ps
 
     Returns (x = (omega_r, omega_c), eval with the exact slides, scaled residual norm, load
     distribution), or None when the cage equation has no sign change over the cage-speed
-    range or Brent fails.
+    range, Brent fails or the loads do not settle within the 4 passes.
     """
     from scipy.optimize import brentq
 
@@ -177,6 +177,7 @@ def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], ps
     ld = ld0
     wc_guess = wc_th if wc0 is None else float(wc0)
     found = None
+    done = False
     for _outer in range(4):
         ld, fb = loads(wc_guess, tuple(ld.ring_displacement))
         mg = _gapped(model, ld)
@@ -204,6 +205,8 @@ def solve_slides(model: RollerModel, omega: float, loads: Callable[..., Any], ps
         wc_guess = float(x[-1])
         if done:
             break
+    if not done:
+        return None  # the loads did not settle at the cage speed within 4 passes
     x, e, ld = found
     res = np.append(e.roller_eq, e.cage_eq)
     scale = (force_scale(ld.inner_load) if force_scale is not None

@@ -11,7 +11,9 @@ search, warm starts (:func:`initial_guess`). When Newton stalls (heavy loads: th
 saturate within a tiny slip and the cage equation jumps across pure rolling) a bracketed
 fallback solves each roller's moment balance by bisection inside a Brent solve of the cage
 equation (:func:`_nested`), started around the best Newton iterate; a stalled iterate within
-the round-off floor of every equation (:func:`_newton_floor`) needs no fallback. The outer
+the round-off floor of every equation (:func:`_newton_floor`) needs no fallback, provided
+its shaft power equals its dissipation to 1e-6 (else the film is stuck below one ulp of the
+slides and :mod:`~thermobearing.skidding.roller_slides` solves in the slides). The outer
 fixed point for the centrifugal loads and the errors
 are in :func:`thermobearing.skidding.roller.solve_model`.
 """
