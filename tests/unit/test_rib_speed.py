@@ -46,14 +46,16 @@ def test_converged_heat_within_half_a_percent_of_the_fixed_window(crb):
     running-mean stop ends before the fixed 5 orbits and its rib heat and rib slide speed
     (which sets the thrust share's heat) agree with the fixed window's (2 warm-up + 3
     statistics orbits) within the stated 1 % (measured 0.02-0.2 %, benchmarks/
-    bm_rib_friction.py)."""
+    bm_rib_friction.py). The default settling warm-up (roller_dynamics_coupled "Cage
+    settling") comes first: 3 orbits here, the stop after ~4 instead of ~2."""
     b, lub = crb
-    fixed, _ = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0, convergence=None)
+    fixed, _ = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0, convergence=None,
+                                settle=None)
     conv, resp = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0,
                                   convergence=rdh.DEFAULT_CONVERGENCE)
     assert resp.series["converged"][0] == 1
     assert fixed.orbits == pytest.approx(5.0, rel=1e-3)
-    assert conv.orbits < 4.0
+    assert conv.orbits < 5.0
     assert conv.heat == pytest.approx(fixed.heat, rel=0.01)
     assert conv.rib_slide_speed == pytest.approx(fixed.rib_slide_speed, rel=0.005)
     assert conv.slip_speed == pytest.approx(fixed.slip_speed, rel=0.03)
@@ -98,7 +100,9 @@ def test_heat_source_books_within_one_percent_of_the_fixed_window(crb):
     """rib_friction (coupled, no unbalance, 20000 r/min, 3 kN, 480 N axial, 362 K: the
     nodes 360 and 365 K): the default running-mean stop against ``convergence = 0`` (the
     fixed window), the booked total (drag of the dynamics + thrust share mu Q |v| at the
-    coupled rib slide) within the stated 1 %; an option outside [0, 0.1] is refused."""
+    coupled rib slide) within the stated 1 %; an option outside [0, 0.1] is refused. Both
+    warm up until the cage settles first (default ``settle``): the fixed window then spans
+    its settled warm-up + 3 orbits (>= 5)."""
     from thermobearing.errors import ValidityWarning
     from thermobearing.heat_sources import HEAT_SOURCES, HeatContext
     from thermobearing.skidding.roller import solve_roller
@@ -122,8 +126,8 @@ def test_heat_source_books_within_one_percent_of_the_fixed_window(crb):
         fixed = src(ctx({"convergence": 0.0}))
         conv = src(ctx({}))
     assert fixed.details["model"] == conv.details["model"] == "coupled"
-    assert fixed.details["dynamics_orbits"] == pytest.approx(5.0, rel=1e-3)
-    assert conv.details["dynamics_orbits"] < 4.0
+    assert fixed.details["dynamics_orbits"] >= 5.0 - 1e-3
+    assert conv.details["dynamics_orbits"] < fixed.details["dynamics_orbits"] - 1.0
     assert conv.total == pytest.approx(fixed.total, rel=0.01)
     assert conv.details["thrust_heat"] > 0.5 * conv.total      # the thrust share books most
     assert conv.details["dynamic_heat"] == pytest.approx(fixed.details["dynamic_heat"],

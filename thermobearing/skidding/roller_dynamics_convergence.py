@@ -37,6 +37,12 @@ import numpy as np
 from ..errors import check_range
 from ..rib import SIGN_REGULARISATION, rib_forces, rib_sliding_speed, squeeze_forces
 
+#: warm-up settling test of simulate_coupled (roller_dynamics_coupled notes, "Cage
+#: settling"): largest relative change of the orbit-mean cage speed from one warm-up orbit
+#: to the next
+DEFAULT_SETTLE = 1e-3
+#: most warm-up orbits the settling test may run (then the window starts unsettled)
+SETTLE_MAX_ORBITS = 12.0
 #: blocks per cage orbit of the convergence test
 BLOCKS_PER_ORBIT = 4
 #: fewest blocks before the test is tried (one orbit; the window is then its later half)
@@ -88,5 +94,5 @@ def block_heat_slide(m: Any, samples: np.ndarray, cage_speed: np.ndarray
     return float(np.mean(heat)), float(np.mean(slide))
 
 
-__all__ = ["BLOCKS_PER_ORBIT", "HEAT_FLOOR", "MIN_BLOCKS", "SLIDE_FLOOR", "block_heat_slide",
-           "window_converged"]
+__all__ = ["BLOCKS_PER_ORBIT", "DEFAULT_SETTLE", "HEAT_FLOOR", "MIN_BLOCKS",
+           "SETTLE_MAX_ORBITS", "SLIDE_FLOOR", "block_heat_slide", "window_converged"]

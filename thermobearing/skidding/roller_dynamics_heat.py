@@ -64,9 +64,18 @@ at 30000 r/min, 3 kN, 400 K (no unbalance) the cage speed still creeps after 6 o
 (1311 -> 1342 rad/s, e-folding ~2 orbits; the fixed window itself averages over +0.8 % of
 it) and the rib slide with it, so the test runs the whole fixed window there
 (``configs/scenes/crb_rib_example.toml``: 15 nodes, 0.6-0.7 s each at 20000 r/min,
-1.1-1.3 s at 30000; 15.3 s CPU for the scene). With an unbalance (chaotic impacting
-motion, block scatter ~5 %) no window converges to 0.5 % before the fixed window's end,
-so those runs are the fixed window's, unchanged (test). There the cost was the cage
+1.1-1.3 s at 30000; 15.3 s CPU for the scene). Since 2026-11-23 (night) the coupled runs
+first warm up until the orbit-mean cage speed changes by <= ``settle`` (default
+:data:`~thermobearing.skidding.roller_dynamics_convergence.DEFAULT_SETTLE` = 0.1 %) per
+orbit (roller_dynamics_coupled notes, "Cage settling"), then the running-mean test runs:
+at that 400 K state rib heat 0.05923 -> 0.05823 W per roller (settled fixed window
+0.05822; the 20-orbit slip 5.952 m/s), slip 6.236 -> 5.966 m/s, 1.51 -> 2.04 s CPU;
+3000 N, 80 degC: 0.1254 -> 0.1244 W (the test had stopped after 2 orbits, slip 4.707 ->
+4.591 m/s), 0.71 -> 1.44 s; 1000 N, 80 degC: 0.2521 -> 0.2379 W, 1.57 -> 2.68 s.
+With an unbalance (chaotic impacting motion, block scatter ~5 %) no window converges to
+0.5 % before the fixed window's end, so those runs are the fixed window's (after the
+settling warm-up, which passes there after 2-3 orbits on a chance agreement or runs to its
+cap), unchanged by the test (test). There the cost was the cage
 runaway's evaluate-path re-run (6-25x a table run): the benchmark with ``--unbalance 0.06
 --quick --duration 5`` (20000 r/min / 3 kN and 5000 / 2 kN, 19 nodes) spent 240 of its
 284 s CPU outside the table-path kernel, 6 nodes re-run on the evaluate path (19-23 s
@@ -96,6 +105,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, InputError, ValidityWarning, check_positive, check_range
 from ..rib import DEFAULT_RIB_FRICTION, rib_geometry, rib_sliding_speed
+from .roller_dynamics_convergence import DEFAULT_SETTLE
 
 #: models of the rib heat (see the module notes)
 MODELS = ("coupled", "reduced")
@@ -201,7 +211,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                  oil_fraction: float = 0.05, warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
                  orbits: float = DEFAULT_ORBITS,
                  convergence: float | None = DEFAULT_CONVERGENCE,
-                 table_retries: int = DEFAULT_TABLE_RETRIES
+                 table_retries: int = DEFAULT_TABLE_RETRIES,
+                 settle: float | None = DEFAULT_SETTLE
                  ) -> tuple[RibDynamicsHeat, Any]:
     """One (uncached) run of the roller dynamics at an operating state.
 
@@ -214,6 +225,9 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     of the coupled model's running-mean stop (module notes; None: the fixed window).
     table_retries : other table-path trajectories before the evaluate-path re-run of a run
     that entered the cage runaway (0: straight to the evaluate path, as before 2026-11-23).
+    settle : the coupled model's warm-up settling tolerance (orbit-to-orbit change of the
+    orbit-mean cage speed, before the running-mean test; module notes, "Cage settling";
+    None: no settling warm-up, as before 2026-11-23 evening).
     Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``).
     """
     from .roller_dynamics import build_model, simulate_reduced
@@ -232,7 +246,7 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                         oil_fraction=oil_fraction, coupling="none")
         resp = simulate_coupled(m, bearing, lubricant, n_orbits=orbits,
                                 warmup_orbits=warmup_orbits, converge=convergence,
-                                table_retries=table_retries)
+                                table_retries=table_retries, settle=settle)
         s = resp.series
         n_orbits = float(s["simulated_orbits"][0])
         v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
@@ -261,7 +275,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                       warmup_orbits: float = DEFAULT_WARMUP_ORBITS,
                       orbits: float = DEFAULT_ORBITS,
                       convergence: float | None = DEFAULT_CONVERGENCE,
-                      table_retries: int = DEFAULT_TABLE_RETRIES) -> RibDynamicsHeat:
+                      table_retries: int = DEFAULT_TABLE_RETRIES,
+                      settle: float | None = DEFAULT_SETTLE) -> RibDynamicsHeat:
     """:func:`run_dynamics` through the cache, linearly interpolated between the two
     temperature nodes k dT <= T < (k + 1) dT (dT = ``temperature_step`` [K]; one node if T
     lies on it). Arguments as :func:`run_dynamics`. ``cost_s`` / ``runs`` of the result
@@ -274,7 +289,7 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
             round(float(radial_load), 9), float(unbalance_mass), model,
             float(friction_coefficient), float(oil_fraction), float(warmup_orbits),
             float(orbits), None if convergence is None else float(convergence),
-            int(table_retries))
+            int(table_retries), None if settle is None else float(settle))
     k = math.floor(temperature / temperature_step + 1e-12)
     w = temperature / temperature_step - k
     nodes = [(k, 1.0 - w)] + ([(k + 1, w)] if w > 1e-9 else [])
@@ -287,7 +302,7 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                               friction_coefficient=friction_coefficient,
                               oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
                               orbits=orbits, convergence=convergence,
-                              table_retries=table_retries)
+                              table_retries=table_retries, settle=settle)
         return out
 
     def neighbour(node: int) -> RibDynamicsHeat:
