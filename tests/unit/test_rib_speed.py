@@ -47,7 +47,7 @@ def test_converged_heat_within_half_a_percent_of_the_fixed_window(crb):
     (which sets the thrust share's heat) agree with the fixed window's (2 warm-up + 3
     statistics orbits) within the stated 1 % (measured 0.02-0.2 %, benchmarks/
     bm_rib_friction.py). The default settling warm-up (roller_dynamics_coupled "Cage
-    settling") comes first: 3 orbits here, the stop after ~4 instead of ~2."""
+    settling") comes first: 3 orbits here, the stop after ~3 instead of ~2."""
     b, lub = crb
     fixed, _ = rdh.run_dynamics(b, lub, 20000 * RPM, 3000.0, 375.0, 0.0, convergence=None,
                                 settle=None)

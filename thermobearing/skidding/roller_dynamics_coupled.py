@@ -150,7 +150,8 @@ angle over time) changes by <= ``settle`` from one orbit to the next, at most
 ``settle_max_orbits`` (:data:`SETTLE_MAX_ORBITS` = 12); for a geometric creep of ratio r
 per orbit the error left is ~ settle r/(1 - r) (0.22 % at r = 0.69). The window then keeps
 its length. With ``converge`` the settling warm-up (at least 2 orbits) comes first and
-the running-mean test starts after it. Measured with 1e-3: 1000 N slip 19.965 -> 18.506
+the running-mean test starts with its last orbit (the one the test passed on, sampled
+already: the earliest stop is then 2 orbits). Measured with 1e-3: 1000 N slip 19.965 -> 18.506
 m/s (40-orbit value 18.47), 11 warm-up orbits, CPU 1.3 -> 3.7 s; 400 K 6.236 -> 5.962
 (5.952), 7 orbits. With an unbalance the motion is chaotic (orbit-to-orbit cage scatter
 0.1-0.5 %, excursions of +1-2 % for 1-2 orbits at 0.06 g): the test passes there by a
@@ -257,8 +258,6 @@ from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table
 #: evaluate-path runs stay within +11 % (20000 r/min, 420 K, 0.06 g: 886 -> <= 987 rad/s),
 #: +3 % at paper 003's base case; the table path's runaways reach +30 % and beyond
 DEFAULT_CAGE_BAND = 0.2
-#: a sample start no run reaches (no samples while the warm-up settles)
-NO_SAMPLES = 2**62
 #: time integrators of simulate_coupled (module notes, "Stiff spin"): "etd" (default,
 #: ETDRK4 with the spin relaxation exact) or "rk4" (classical RK4, explicit throughout)
 INTEGRATORS = ("etd", "rk4")
@@ -390,10 +389,11 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     integrated (of the quasi-static cage speed).
     ``settle``: None (default) -- the fixed warm-up; a relative tolerance (0, 1) -- warm up
     in whole cage orbits (at least max(2, ceil(``warmup_orbits``)); 2 with ``converge``,
-    whose running-mean test then starts) until the orbit-mean cage speed changes by at
-    most ``settle`` from one orbit to the next, at most ``settle_max_orbits`` warm-up
-    orbits (module notes, "Cage settling"). ``series["settled"]`` = [1] if the test
-    passed (else [0]), ``series["warmup_orbits"]`` the orbits before the statistics window.
+    whose running-mean test then starts with the last warm-up orbit) until the orbit-mean
+    cage speed changes by at most ``settle`` from one orbit to the next, at most
+    ``settle_max_orbits`` warm-up orbits (module notes, "Cage settling").
+    ``series["settled"]`` = [1] if the test passed (else [0]), ``series["warmup_orbits"]``
+    the orbits before the statistics window.
     ``table_retries``: before the evaluate-path re-run below, up to this many other
     trajectories on the table path (the start's cage speed times 1 + k
     :data:`TRAJECTORY_PERTURBATION`, k = 1, 2, ...; module notes, "Retries on the table
@@ -537,7 +537,11 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     # with ``converge`` the samples start at the first step of the fixed window's sample
     # grid (n_warm mod every), so that the fixed window's samples are among them
     s_first = n_warm if converge is None else n_warm % every
-    n_samples = (n_total - s_first + every - 1) // every
+    n_alloc = n_total
+    if settle is not None and converge is not None:
+        # the settling warm-up is sampled too (its last orbit opens the running-mean test)
+        n_alloc = int(math.ceil((settle_max_orbits + 1.0) * orbit / h)) + n_keep
+    n_samples = (n_alloc - s_first + every - 1) // every
     # test blocks of 1/BLOCKS_PER_ORBIT orbit, whole refresh intervals (the evaluate path
     # refreshes at every kernel call: its trajectory is then that of the fixed window)
     n_block = (sub * max(1, int(round(orbit / BLOCKS_PER_ORBIT / h / sub))) if converge
@@ -554,8 +558,6 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     base = 0                           # first step of the running-mean test's blocks
     if settling:
         next_check = min(int(math.ceil(orbit / h)), n_total)
-        if converge is not None:
-            s_first = NO_SAMPLES       # no samples while settling
     samples = np.zeros((n_samples, z_n * n))
     sample_t = np.zeros(n_samples)
     sample_wc = np.zeros(n_samples)
@@ -701,10 +703,25 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             elif converge is None:
                 next_check = n_total
             else:
-                # the running-mean test from here on, at most the statistics orbits
-                base = s_first = window0 = step
-                n_total = step + n_keep
-                next_check = min(step + n_block, n_total)
+                # the running-mean test from the last warm-up orbit on (the one the settling
+                # test passed on), at most the statistics orbits from there; its blocks
+                # over that orbit are taken from the samples already there
+                base = window0 = int(math.ceil((k - 1) * orbit / h))
+                n_total = max(base + n_keep, step)
+                checked = _samples_before(base, s_first, every, n_sampled)
+                nxt = base + n_block
+                while nxt <= step:
+                    i1 = _samples_before(nxt, s_first, every, n_sampled)
+                    blocks.append(block_heat_slide(
+                        m, samples[checked:i1].reshape(i1 - checked, z_n, n),
+                        sample_wc[checked:i1]) if i1 > checked else (math.nan, math.nan))
+                    checked = i1
+                    nxt += n_block
+                next_check = min(nxt, n_total)
+                if _blocks_converged(blocks, converge):
+                    converged = True
+                    window0 = base + (len(blocks) // 2) * n_block
+                    break
             continue
         if status == 0 and step == next_check and step < n_total:
             # one more block of the running-mean test (converge)
@@ -712,12 +729,9 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             blocks.append(block_heat_slide(m, blk, sample_wc[checked:n_sampled])
                           if n_sampled > checked else (math.nan, math.nan))
             checked = n_sampled
-            nb = len(blocks)
-            win = np.array(blocks[nb // 2:])
-            if (nb >= MIN_BLOCKS and window_converged(win[:, 0], converge, HEAT_FLOOR)
-                    and window_converged(win[:, 1], converge, SLIDE_FLOOR)):
+            if _blocks_converged(blocks, converge):
                 converged = True
-                window0 = base + (nb // 2) * n_block
+                window0 = base + (len(blocks) // 2) * n_block
                 break
             next_check = min(next_check + n_block, n_total)
     # the statistics window's samples (fixed window: from step n_warm on)
@@ -755,6 +769,23 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "warmup_orbits": np.array([window0 * h / orbit]),
                                  "window": np.array([window0 * h, step * h]),
                                  "simulated_orbits": np.array([step * h / orbit])})
+
+
+def _samples_before(step: int, s_first: int, every: int, n_sampled: int) -> int:
+    """Samples taken at the steps before ``step`` (one every ``every`` steps from step
+    ``s_first`` on, ``n_sampled`` so far)."""
+    return min(n_sampled, max(0, -(-(step - s_first) // every)))
+
+
+def _blocks_converged(blocks: list[tuple[float, float]], tol: float) -> bool:
+    """The running-mean test (roller_dynamics_convergence) on the (heat, slide) block means
+    so far: at least MIN_BLOCKS blocks, the later half of them converged to ``tol``."""
+    nb = len(blocks)
+    if nb < MIN_BLOCKS:
+        return False
+    win = np.array(blocks[nb // 2:])
+    return (window_converged(win[:, 0], tol, HEAT_FLOOR)
+            and window_converged(win[:, 1], tol, SLIDE_FLOOR))
 
 
 def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: int,

@@ -67,11 +67,14 @@ it) and the rib slide with it, so the test runs the whole fixed window there
 1.1-1.3 s at 30000; 15.3 s CPU for the scene). Since 2026-11-23 (night) the coupled runs
 first warm up until the orbit-mean cage speed changes by <= ``settle`` (default
 :data:`~thermobearing.skidding.roller_dynamics_convergence.DEFAULT_SETTLE` = 0.1 %) per
-orbit (roller_dynamics_coupled notes, "Cage settling"), then the running-mean test runs:
-at that 400 K state rib heat 0.05923 -> 0.05823 W per roller (settled fixed window
-0.05822; the 20-orbit slip 5.952 m/s), slip 6.236 -> 5.966 m/s, 1.51 -> 2.04 s CPU;
-3000 N, 80 degC: 0.1254 -> 0.1244 W (the test had stopped after 2 orbits, slip 4.707 ->
-4.591 m/s), 0.71 -> 1.44 s; 1000 N, 80 degC: 0.2521 -> 0.2379 W, 1.57 -> 2.68 s.
+orbit (roller_dynamics_coupled notes, "Cage settling"), then the running-mean test runs
+from the last warm-up orbit on: at that 400 K state rib heat 0.05923 -> 0.05828 W per
+roller (settled fixed window 0.05822; the 20-orbit slip 5.952 m/s), slip 6.236 -> 5.976
+m/s, 7 orbits, 1.51 -> 1.34 s CPU; 3000 N, 80 degC: 0.1254 -> 0.1244 W (the test had
+stopped after 2 orbits, slip 4.707 -> 4.593 m/s), 4 orbits, 0.56 -> 0.95 s; 1000 N,
+80 degC: 0.2521 -> 0.2381 W (settled 0.2378), 11 orbits, 1.32 -> 2.40 s; 20000 r/min,
+3 kN, 375 K (settled within 2 orbits): 2.0 -> 3.0 orbits, 0.50 -> 0.66 s, heat 0.03515
+-> 0.035132 W (fixed window 0.035133).
 With an unbalance (chaotic impacting motion, block scatter ~5 %) no window converges to
 0.5 % before the fixed window's end, so those runs are the fixed window's (after the
 settling warm-up, which passes there after 2-3 orbits on a chance agreement or runs to its

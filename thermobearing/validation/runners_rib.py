@@ -8,7 +8,9 @@ face crown radius (550 mm). The unbalance, axial-clearance, pocket-clearance, ri
 crown-radius trends use the coupled integration of all rollers and the cage (spins and cage
 speed as degrees of freedom,
 :func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's eqs.
-18-19; ``coupled_warmup_orbits`` and ``coupled_orbits`` warm-up and statistics orbits), as
+18-19; ``coupled_warmup_orbits`` and ``coupled_orbits`` warm-up and statistics orbits;
+``coupled_settle``: the points without unbalance warm up until the orbit-mean cage speed
+changes by at most that fraction per orbit, case SOURCE.md "Cage settling"), as
 do the load and speed trends, with the reduced model's values beside them (``reduced_*``,
 :func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). PV
 statistics: time mean (gated), mean over the time in contact (``pv_contact_*``) and peak
