@@ -170,6 +170,8 @@ axial_load = "0.2 kN"
 duration = "3 min"
 [models]
 kinematics = "race_control"
+# the rib source's coupled dynamics would run at every 5 K node of the runaway (~50 s CPU)
+heat_source_options = { rib_friction = { model = "reduced" } }
 [network]
 parameters = { housing_outer_diameter = "110 mm", housing_length = "30 mm" }
 [outputs]
