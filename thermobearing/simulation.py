@@ -500,6 +500,13 @@ class Simulation:
 
         if not self.source_options:
             return
+        mu_c = self.source_options.get("cage_guide", {}).get("friction_coefficient")
+        if mu_c is not None:  # it stopped the run at the first heat evaluation
+            raise InputError(
+                "models.heat_source_options.cage_guide.friction_coefficient", mu_c,
+                "no value in a scene: the cage_guide source's drag is the Petroff torque of "
+                "the land film (form 'short_bearing'); the coefficient mu_c belongs to paper "
+                "002's eq. 18 bookkeeping only (thermobearing.losses.paper002_bookkeeping)")
         for b in self.bearings:
             if not b.is_ball and b.kinematics_name == "skidding":
                 _roller_drag_clash(b.name, self.source_options)

@@ -84,8 +84,8 @@ def test_drag_options_reach_the_solver_and_the_balance_holds():
      "models.heat_source_options.churning_elements.oil_fraction"),
     ('heat_source_options = { churning_cage = { gap = "1 mm" } }',
      "models.heat_source_options.churning_cage.gap"),
-    ('heat_source_options = { cage_guide = { friction_coefficient = 0.1 } }',
-     "models.heat_source_options.cage_guide.friction_coefficient"),
+    ('heat_source_options = { cage_guide = { boundary_friction = 0.2 } }',
+     "models.heat_source_options.cage_guide.boundary_friction"),
     ('heat_source_options = { churning_cage = { parker_constant = 2e7 }, '
      'churning_inner_ring = { parker_constant = 3e7 } }',
      "models.heat_source_options.churning_inner_ring.parker_constant"),
@@ -116,3 +116,15 @@ def test_a_parker_constant_the_ball_kinematics_would_not_use_is_refused():
             options='heat_source_options = { churning_cage = { parker_constant = 2e7 } }')),
             progress=False)
     assert info.value.field == "models.heat_source_options.churning_cage.parker_constant"
+
+
+def test_cage_guide_friction_coefficient_is_refused_at_build_for_any_bearing():
+    """Scene fuzzing (seeds 50/51): a race-control CRB scene with cage_guide
+    friction_coefficient stopped mid-run naming options[cage_guide], no scene key."""
+    text = SCENE.format(sources=", ".join(f'"{s}"' for s in SOURCES),
+                        options='heat_source_options = { cage_guide = '
+                                '{ friction_coefficient = 0.1603 } }').replace(
+        'kinematics = "skidding"', 'kinematics = "race_control"')
+    with pytest.raises(InputError) as info:
+        Simulation(loads_scene(text), progress=False)
+    assert info.value.field == "models.heat_source_options.cage_guide.friction_coefficient"
