@@ -15,6 +15,7 @@ import itertools
 import json
 from html import escape
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -233,7 +234,6 @@ def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str
     allow it (no base scene, or losses at the network's temperatures)."""
     from ..report_context import sweep_catalogue_crosscheck
     from ..report_sections import html_table
-    from ..scene import loads_scene
 
     head = ("<h2>Catalogue cross-check</h2><p>each case's total loss (all bearings, "
             "protocol average) beside the whole-bearing estimates of the SKF four-term "
@@ -246,8 +246,7 @@ def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str
     if not path.is_file():
         return head + "<p class='note'>(not available: the folder has no scene.toml)</p>"
     try:
-        base = loads_scene(path.read_text(encoding="utf-8"), base_dir=folder,
-                           source=str(path))
+        base = _folder_scene(path)
         table, notes = sweep_catalogue_crosscheck(base, [
             r for r in records if r.get("case") in set(df["case"])])
     except InputError as exc:
@@ -265,9 +264,8 @@ def _base_scene_html(folder: Path) -> str:
                 "bearing and the conditions not swept, are not recorded here)</p>")
     from ..report_context import bearing_table, load_scene_bearings, supply_text
     from ..report_sections import html_table
-    from ..scene import loads_scene
 
-    scene = loads_scene(path.read_text(encoding="utf-8"), base_dir=folder, source=str(path))
+    scene = _folder_scene(path)
     bearings, notes = load_scene_bearings(scene)
     parts = [f"<h2>Base scene: {escape(scene.title)}</h2>",
              html_table(bearing_table(scene, bearings)),
@@ -277,13 +275,26 @@ def _base_scene_html(folder: Path) -> str:
     return "\n".join(parts)
 
 
+def _folder_scene(path: Path, text: str | None = None) -> Any:
+    """The scene a results folder records (``path``: its ``scene.toml``); a refusal names the
+    file, so that a damaged folder is not mistaken for a scene the user wrote."""
+    from ..scene import loads_scene
+
+    try:
+        return loads_scene(path.read_text(encoding="utf-8") if text is None else text,
+                           base_dir=path.parent, source=str(path))
+    except InputError as exc:
+        if type(exc) is not InputError:
+            raise
+        raise InputError(f"{path}: {exc.field}", exc.value, exc.allowed) from None
+
+
 def run_report(folder: Path) -> Path:
     from ..report import attach_figures, write_report
     from ..results import TABLES, Results
-    from ..scene import loads_scene
 
     scene_toml = (folder / "scene.toml").read_text(encoding="utf-8")
-    scene = loads_scene(scene_toml, base_dir=folder, source=str(folder / "scene.toml"))
+    scene = _folder_scene(folder / "scene.toml", scene_toml)
     try:
         meta = json.loads((folder / "metadata.json").read_text()) \
             if (folder / "metadata.json").is_file() else {}
