@@ -90,7 +90,19 @@ def build_network(sim: Simulation) -> Any:
                              f"{', '.join(sorted(raw)) or '(none)'} or the template's "
                              "defaults") from None
     _link_shafts(sim, net, name, shafts, params)
-    net.validate()
+    try:
+        net.validate()
+    except InputError as exc:
+        if type(exc) is not InputError:
+            raise
+        # an isolated node names no scene field: say which settings built it (a zero
+        # conductance set by [network] parameters, or the template's defaults)
+        zero = sorted(k for k, v in params.items()
+                      if isinstance(v, (int, float)) and not isinstance(v, bool) and v == 0)
+        raise InputError(f"network (template {name!r}): {exc.field}", exc.value,
+                         f"{exc.allowed}; the network is built from [network] parameters "
+                         f"{', '.join(sorted(raw)) or '(none)'} and the template's defaults"
+                         + (f" (set to 0: {', '.join(zero)})" if zero else "")) from None
     return net
 
 
