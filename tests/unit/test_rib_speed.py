@@ -134,6 +134,14 @@ def test_heat_source_books_within_one_percent_of_the_fixed_window(crb):
                                                          rel=0.01)
     with pytest.raises(InputError, match="convergence"):
         src(ctx({"convergence": 0.5}))
+    # the settling warm-up: an option outside [0, 0.1] is refused; 0 keeps the fixed
+    # warm-up (2 orbits before the fixed 3: exactly 5)
+    with pytest.raises(InputError, match=r"options\[rib_friction\]\.settle"):
+        src(ctx({"settle": 0.5}))
+    with pytest.warns(ValidityWarning, match="no path"):
+        unsettled = src(ctx({"convergence": 0.0, "settle": 0.0}))
+    assert unsettled.details["dynamics_orbits"] == pytest.approx(5.0, abs=1e-3)
+    assert unsettled.total == pytest.approx(fixed.total, rel=0.01)
 
 
 def test_runaway_retries_other_table_trajectories_before_the_evaluate_path(crb, monkeypatch):

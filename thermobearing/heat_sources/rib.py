@@ -23,6 +23,10 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   enters the cage runaway first tries that many other trajectories on the table path,
   then the evaluate path (0: the evaluate path at once, as before; with 0.06 g x 3.6
   cheaper in bm_rib_friction, re-run nodes within the chaotic node scatter).
+  Option ``settle`` (default :data:`~thermobearing.skidding.roller_dynamics_convergence.
+  DEFAULT_SETTLE`): without unbalance the warm-up runs whole orbits until the orbit-mean
+  cage speed changes by at most this per orbit (cap 12 orbits; a creeping cage at 1000 N
+  left the fixed window's slip 8 % high); 0 keeps the fixed warm-up.
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
   coupled model").
@@ -73,6 +77,7 @@ from ..rib import DEFAULT_RIB_FRICTION, lubricant_drag, rib_geometry, rib_slidin
 from ..skidding.roller_dynamics_heat import (
     DEFAULT_CONVERGENCE,
     DEFAULT_ORBITS,
+    DEFAULT_SETTLE,
     DEFAULT_TABLE_RETRIES,
     DEFAULT_TEMPERATURE_STEP,
     DEFAULT_WARMUP_ORBITS,
@@ -99,11 +104,11 @@ MAX_COUPLED_TIME = 0.5
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
                 "element_share": "-", "temperature_step": "K", "model": "-",
-                "convergence": "-", "table_retries": "-"},
+                "convergence": "-", "table_retries": "-", "settle": "-"},
     limits={"friction_coefficient": "[0, 1]", "oil_fraction": "[0, 1]",
             "unbalance_mass": "[0, inf)", "element_share": "[0, 1]",
             "temperature_step": "(0, inf)", "convergence": "[0, 0.1]",
-            "table_retries": "[0, 10]"},
+            "table_retries": "[0, 10]", "settle": "[0, 0.1]"},
     validity="cylindrical roller bearings with ribs (end_face_crown_radius, rib_height set)",
 )
 def rib_friction(ctx: HeatContext) -> HeatResult:
@@ -138,6 +143,10 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         raise InputError(f"options[{name}].table_retries", retries_opt,
                          "a whole number of retries in [0, 10]")
     retries = int(float(retries_opt))
+    settle_opt = float(ctx.option(name, "settle",
+                                  0.0 if DEFAULT_SETTLE is None else DEFAULT_SETTLE))
+    check_range(f"options[{name}].settle", settle_opt, 0.0, 0.1)
+    settle = settle_opt if settle_opt > 0.0 else None   # 0: the fixed warm-up
     kin = ctx.kinematics
     op = ctx.operating
     temperature = ctx.temperature("elements")
@@ -191,7 +200,7 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                                     temperature, unbalance, model=model,
                                     friction_coefficient=mu, oil_fraction=oil_fraction,
                                     temperature_step=t_step, convergence=convergence,
-                                    table_retries=retries)
+                                    table_retries=retries, settle=settle)
         except ConvergenceError as exc:
             if model != "coupled":
                 raise
@@ -206,7 +215,7 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                                      temperature, unbalance, model=model,
                                      friction_coefficient=mu, oil_fraction=oil_fraction,
                                      temperature_step=t_step, convergence=convergence,
-                                     table_retries=retries)
+                                     table_retries=retries, settle=settle)
                    if unbalance > 0.0 else None)
     details: dict = {"thrust_normal_force": q, "friction_coefficient": mu, "model": model}
     if model == "coupled":
