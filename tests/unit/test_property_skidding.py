@@ -310,9 +310,15 @@ def test_roller_heavy_load_bracketed_to_round_off(rpm):
     r = _roller_solve("NU214", rpm, 1e5, 40.0)
     check_roller_invariants(r, 1e5, "NU214")
     # bracketed, or Newton accepted at the same per-equation round-off floor (which of the
-    # two depends on round-off in the compiled kernels)
-    assert r.extras["method"] in ("bracketed", "newton_round_off")
-    assert r.residual_norm <= 4.0 * r.extras["round_off_floor"] and r.residual_norm < 1e-5
+    # two depends on round-off in the compiled kernels), or -- since a state beyond tol is
+    # accepted only when shaft power = dissipation to 1e-6 -- the solve in the sliding
+    # speeds (skidding/roller_slides.py), whose residual is at round-off
+    assert r.extras["method"] in ("bracketed", "newton_round_off", "slides")
+    if r.extras["method"] != "slides":
+        assert r.residual_norm <= 4.0 * r.extras["round_off_floor"]
+    assert r.residual_norm < 1e-5
+    shaft = r.shaft_torque * r.inner_speed
+    assert shaft == pytest.approx(r.power_loss["total"], rel=1e-6)
 
 
 def test_warm_start_from_another_bearing_is_handled():
