@@ -217,6 +217,11 @@ class Simulation:
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         self._check_option_clashes()
+        if self.needs["losses"]:
+            for note in _unbooked_drag_notes(self.bearings, self.supply):
+                if note not in self.warnings:
+                    self.warnings.append(note)
+                    self.notes.append(note)
         drag_params = _roller_drag_params(self.source_options)
         for b in self.bearings:
             if drag_params and not b.is_ball and b.kinematics_name == "skidding":
@@ -812,3 +817,30 @@ def _roller_drag_clash(name: str, source_options: Mapping[str, Mapping[str, Any]
                 f"({', '.join(taken)}): it balances the oil drag this source books, so a "
                 "source's own drag model would book heat the shaft torque does not hold; "
                 "use kinematics = \"race_control\" to evaluate the source's own model")
+
+
+#: the heat sources that book the oil drag the skidding solvers balance (ball: paper 002
+#: eqs. 9-10 and the cage torque; roller: ``skidding.roller_drag``)
+_DRAG_SOURCES = ("churning_elements", "churning_cage", "churning_inner_ring", "cage_guide")
+
+
+def _unbooked_drag_notes(bearings: Sequence[Any], supply: Any) -> list[str]:
+    """A note per skidding bearing whose scene leaves out a source of the oil drag its
+    solver balances anyway (the drag is physics of the kinematics, not a choice of what to
+    book): the heat booked is then below the shaft power by that drag's work."""
+    if supply.method == "grease":  # no churning drag is balanced
+        return []
+    notes = []
+    for b in bearings:
+        if b.kinematics_name != "skidding":
+            continue
+        cage = getattr(b.bearing, "cage", None)
+        guided = str(getattr(cage, "guidance", "")) in ("inner_ring", "outer_ring")
+        left = [n for n in _DRAG_SOURCES if n not in b.sources
+                and (n != "cage_guide" or guided)]
+        if left:
+            notes.append(
+                f"{b.name}: the skidding solver balances the oil drag of "
+                f"{', '.join(left)}, which [models] heat_sources leaves out: the heat "
+                "booked is below the shaft power by that drag's work")
+    return notes

@@ -128,3 +128,15 @@ def test_cage_guide_friction_coefficient_is_refused_at_build_for_any_bearing():
     with pytest.raises(InputError) as info:
         Simulation(loads_scene(text), progress=False)
     assert info.value.field == "models.heat_source_options.cage_guide.friction_coefficient"
+
+
+def test_drag_sources_left_out_are_noted():
+    """The skidding solver balances the oil drag whatever the scene books: a scene that
+    lists only some of its sources is told that the booked heat falls short of the shaft
+    power by the rest."""
+    text = SCENE.format(sources='"raceway_traction", "ehl_rolling_resistance", '
+                                '"churning_elements", "pocket_friction"', options="")
+    sim = Simulation(loads_scene(text), progress=False)
+    (note,) = [w for w in sim.warnings if "balances the oil drag" in w]
+    assert "churning_cage, churning_inner_ring" in note
+    assert _sim().warnings == [w for w in _sim().warnings if "balances the oil drag" not in w]
