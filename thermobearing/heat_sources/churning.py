@@ -462,17 +462,23 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
                              "'harris' for roller bearings (eq. 16 is a ball formula)")
         # per-ball share of eq. 16 divided by the ball speed: c_d pi rho mu_v w^2 Dm^2 Db^2/128
         force = cd * math.pi * rho_e * reg.mu_v * rel_omega ** 2 * d_m ** 2 * d_elem ** 2 / 128.0
-    heat_j = force * np.abs(u)
-    q = float(np.sum(heat_j))
-    signed = -force * np.sign(u)
-    role = _role(ctx, name, "elements")
+    return _element_result(ctx, name, -force * np.sign(u), u,
+                           {"oil_fraction": float(np.mean(x)), "form": form,
+                            "mu_v": float(np.mean(reg.mu_v)),
+                            "reynolds": float(np.mean(reg.reynolds))})
+
+
+def _element_result(ctx: HeatContext, name: str, signed: np.ndarray, u: np.ndarray,
+                    details: dict) -> HeatResult:
+    """Element churning heat of the drag forces F_j [N] (negative: against the orbit) at
+    the orbital speeds u_j [m/s]: Q = sum_j |F_j u_j| [W] to the "elements" role."""
+    q = float(np.sum(np.abs(signed * u)))
     return HeatResult(
-        source=name, power_by_role={role: q}, components={"element churning": q},
+        source=name, power_by_role={_role(ctx, name, "elements"): q},
+        components={"element churning": q},
         loss_class={"element churning": "load_independent"},
         forces={"element_drag_force": signed},
-        force_pairs=(ForcePair("oil on elements", signed, u),),
-        details={"oil_fraction": float(np.mean(x)), "form": form,
-                 "mu_v": float(np.mean(reg.mu_v)), "reynolds": float(np.mean(reg.reynolds))})
+        force_pairs=(ForcePair("oil on elements", signed, u),), details=details)
 
 
 def _solver_element_drag(ctx: HeatContext, name: str, carried: Any) -> HeatResult:
@@ -483,13 +489,8 @@ def _solver_element_drag(ctx: HeatContext, name: str, carried: Any) -> HeatResul
     kin = ctx.kinematics
     u = 0.5 * ctx.bearing.pitch_diameter * np.asarray(kin.orbital_speed, float)
     signed = np.broadcast_to(np.asarray(carried["element_force"], float), u.shape).copy()
-    q = float(np.sum(np.abs(signed * u)))
-    role = _role(ctx, name, "elements")
-    return HeatResult(
-        source=name, power_by_role={role: q}, components={"element churning": q},
-        loss_class={"element churning": "load_independent"},
-        forces={"element_drag_force": signed},
-        force_pairs=(ForcePair("oil on elements", signed, u),),
-        details={"oil_fraction": float(carried["element_oil_fraction"]), "form": "harris",
-                 "drag_coefficient": float(carried["drag_coefficient"]),
-                 "regime": "solver drag (roller skidding balance)"})
+    return _element_result(ctx, name, signed, u,
+                           {"oil_fraction": float(carried["element_oil_fraction"]),
+                            "form": "harris",
+                            "drag_coefficient": float(carried["drag_coefficient"]),
+                            "regime": "solver drag (roller skidding balance)"})
