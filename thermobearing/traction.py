@@ -485,21 +485,29 @@ def fit_four_parameter(mu_zero: float, mu_max: float, slip_speed_at_max: float,
     um = slip_speed_at_max
     if a == 0.0:
         return 0.0, math.e * target / um, 1.0 / um, d
+    # solved for t = |1 - s| (not s): near s = 1 (|A| << mu_max - mu_inf) B = C A / (1 - s)
+    # needs 1 - s to full relative precision; an absolute tolerance on s lost it (A = 1e-14
+    # put the peak 2.4 % off mu_max)
+    ln_ratio = math.log(abs(a)) - math.log(target)
     if a > 0:
-        # a e^-s/(1-s) rises from a (s=0) to inf (s->1); target > a since mu_max > mu_zero
-        def g(s: float) -> float:
-            return math.log(a) - s - math.log1p(-s) - math.log(target)
-        s = brentq(g, 0.0, 1.0 - 1e-15, xtol=1e-15, rtol=1e-14)
+        # s = 1 - t in (0, 1): a e^-s/(1-s) = target  <=>  ln t - t = ln(a/target) - 1,
+        # ln t - t rises from -inf (t -> 0) to -1 (t = 1); the root has ln(a/target) < 0
+        def g(t: float) -> float:
+            return math.log(t) - t - ln_ratio + 1.0
+        t = brentq(g, 1e-300, 1.0, xtol=1e-300, rtol=1e-15)
+        s = 1.0 - t
     else:
-        # |a| e^-s/(s-1) falls from inf (s->1+) to 0 (s->inf)
-        def g(s: float) -> float:
-            return math.log(-a) - s - math.log(s - 1.0) - math.log(target)
-        hi = 2.0
-        while g(hi) > 0:
+        # s = 1 + t, t > 0: |a| e^-s/(s-1) = target  <=>  ln t + t = ln(|a|/target) - 1,
+        # ln t + t rises from -inf to +inf
+        def g(t: float) -> float:
+            return math.log(t) + t - ln_ratio + 1.0
+        hi = 1.0
+        while g(hi) < 0:
             hi *= 2.0
-        s = brentq(g, 1.0 + 1e-15, hi, xtol=1e-15, rtol=1e-14)
+        t = brentq(g, 1e-300, hi, xtol=1e-300, rtol=1e-15)
+        s = 1.0 + t
     c = s / um
-    b = c * a / (1.0 - s)
+    b = c * a / t if a > 0 else -c * a / t
     return a, b, c, d
 
 
