@@ -9,8 +9,14 @@ Seed paper 002 (002_0add79adaca5495c.txt), eqs. 10 and 12-17, in consistent SI:
   1.3 mu_l (N_Ta/41)^0.539474 (eq. 13); Couette-turbulent (N_Re > 2500)
   3.0 mu_l (N_Re/2500)^0.85596 (eq. 14). The paper's regime conditions overlap
   ("N_Re < 2500 or N_Ta < 41" for laminar); we use the usual order laminar -> Taylor
-  vortices -> turbulence. The coefficient jumps by 1.3x at N_Ta = 41 and at N_Re = 2500
-  as in the paper.
+  vortices -> turbulence. The printed formulas are discontinuous at the regime boundaries
+  and so is mu_v (tests/unit/test_prop19_churning.py): x1.3 at N_Ta = 41 (eq. 13 starts at
+  1.3 mu_l); at N_Re = 2500 by eq. 14 / eq. 13 = 3.0 / (1.3 (2500 sqrt(c/R) / 41)^0.539474),
+  a function of the gap ratio only, > 1 below c/R = 0.00597 and < 1 above (0.34-0.87 for
+  the default cage, ring and element gaps of configs/bearings, e.g. QJ1044 cage 0.87: the
+  churning power then falls as the speed crosses N_Re = 2500); for c/R < (41/2500)^2 the
+  laminar coefficient runs up to N_Ta = 41 above N_Re = 2500 and jumps to eq. 14 by
+  3.0 (N_Re/2500)^0.85596 > 3.
 - cage (eq. 15)    Q = pi rho mu_v omega_c^3 B_c D_c^4 / 64
 - inner ring (eq. 17) Q = pi rho mu_v omega_i^3 (B_arc + 2 B_Li) D_Li^4 / 64
 - balls (eq. 16)   printed as c_d pi rho mu_v omega_b^3 D_m^3 D_b N_b / (256 g). The g belongs
