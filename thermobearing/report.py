@@ -157,10 +157,17 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
     return _png(fig)
 
 
+#: the loss-map note on a grid point without a result: a sweep's case that failed or has
+#: not run yet, or a speed x load combination that no step of a run ran
+NOT_RUN = "failed or not run"
+NOT_A_STEP = "no step of this run"
+
+
 def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                   components: Sequence[str],
                   ranges: Mapping[str, tuple[float, float]] | None = None,
-                  titles: Mapping[str, str] | None = None) -> bytes:
+                  titles: Mapping[str, str] | None = None,
+                  missing: str = NOT_RUN) -> bytes:
     """Contour maps of each loss component over two swept quantities (paper 002 Fig. 17);
     a component whose table has one value of ``x`` or ``y`` is drawn as a curve over the
     other (a contour needs at least 2 x 2 points); missing combinations (a sweep still
@@ -168,6 +175,8 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
     that the maps of several slices of a sweep (one per value of a third parameter) share
     one scale and can be compared by colour (default: each map its own range). ``titles``:
     component -> panel title (default the column name), e.g. the loss in words.
+    ``missing``: why a grid point has no result, in the note under a panel with crosses
+    (:data:`NOT_RUN` in a sweep, :data:`NOT_A_STEP` in a run's maps).
 
     The computed points are dotted (the contours between them are interpolated), a grid
     point without a result (a failed case) is a red cross with a note under the panel, and
@@ -210,12 +219,14 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
             ax.set_ylim(ys.min(), ys.max())
             unit = " W" if comp.endswith("[W]") else ""
             ax.text(0.5, 0.5, f"{_fmt_value(float(np.nanmax(values)))}{unit} at every "
-                    "point", ha="center", va="center", transform=ax.transAxes, fontsize=9)
+                    "point", ha="center", va="center", transform=ax.transAxes, fontsize=9,
+                    zorder=4, bbox={"facecolor": "white", "edgecolor": "none", "pad": 2})
+            # (boxed over the computed points: a 3 x 3 grid's middle dot crossed the text)
         else:
             levels = np.linspace(lo, hi, 13) if hi > lo else 12
             cs = ax.contourf(xs, ys, values, levels=levels)
             fig.colorbar(cs, ax=ax, label="W" if comp.endswith("[W]") else None)
-        _mark_points(ax, xs, ys, values)
+        _mark_points(ax, xs, ys, values, missing)
     for ax in list(axes.flat)[n:]:
         ax.axis("off")
     return _png(fig)
@@ -230,10 +241,12 @@ def _constant(values: np.ndarray) -> bool:
     return float(np.ptp(finite)) <= max(1e-9 * float(np.abs(finite).max()), 1e-12)
 
 
-def _mark_points(ax: Any, xs: np.ndarray, ys: np.ndarray, values: np.ndarray) -> None:
+def _mark_points(ax: Any, xs: np.ndarray, ys: np.ndarray, values: np.ndarray,
+                 missing: str = NOT_RUN) -> None:
     """Mark on a loss map where it was computed (black dots: the contours between them are
     interpolated) and the grid points without a result (red crosses: a failed case, or one
-    not run yet), with a note under the axes counting the latter."""
+    not run yet; in a run's maps a combination no step ran), with a note under the axes
+    counting the latter and saying ``missing``."""
     gx, gy = np.meshgrid(xs, ys)
     ok = np.isfinite(values)
     # on the frame at the grid's edges: not clipped, drawn over it
@@ -242,8 +255,7 @@ def _mark_points(ax: Any, xs: np.ndarray, ys: np.ndarray, values: np.ndarray) ->
         ax.plot(gx[~ok], gy[~ok], "x", color="red", markersize=8, markeredgewidth=1.8,
                 clip_on=False, zorder=3)
         ax.text(0.0, -0.3, f"x: no result at {int((~ok).sum())} of {ok.size} grid points "
-                "(failed or not run)", transform=ax.transAxes, fontsize=7, color="red",
-                va="top")
+                f"({missing})", transform=ax.transAxes, fontsize=7, color="red", va="top")
 
 
 def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
@@ -504,11 +516,20 @@ def _no_kinematics(results: Results) -> bool:
 
 def _run_loss_maps(losses: pd.DataFrame) -> dict[str, bytes]:
     """Loss maps over speed x load of a run whose steps cover such a grid
-    (:func:`report_losses.map_axes`): one figure per bearing (up to four), the total and
-    each source, named ``loss_maps_<bearing>``."""
-    from .report_losses import breakdown_by_source, map_axes, source_label, summary_sources
+    (:func:`report_losses.map_axes`; steps at rest left out, :func:`report_losses.
+    turning_points`): one figure per bearing (up to four), the total and each source,
+    named ``loss_maps_<bearing>``. A combination of the grid that no step ran is crossed
+    as "no step of this run" (a rig protocol of a speed ramp and load steps had its
+    combinations never run marked "failed or not run", as in a sweep)."""
+    from .report_losses import (
+        breakdown_by_source,
+        map_axes,
+        source_label,
+        summary_sources,
+        turning_points,
+    )
 
-    wide = breakdown_by_source(losses)
+    wide = turning_points(breakdown_by_source(losses))
     axes = map_axes(wide)
     if axes is None:
         return {}
@@ -518,7 +539,7 @@ def _run_loss_maps(losses: pd.DataFrame) -> dict[str, bytes]:
     names = list(dict.fromkeys(wide["bearing"]))[:4] if "bearing" in wide else [None]
     return {f"loss_maps_{name}" if name else "loss_maps":
             fig_loss_maps(wide if name is None else wide[wide["bearing"] == name],
-                          axes[0], axes[1], comps, titles=titles)
+                          axes[0], axes[1], comps, titles=titles, missing=NOT_A_STEP)
             for name in names}
 
 

@@ -125,7 +125,8 @@ def loss_temperature_note(tables: dict[str, pd.DataFrame], scene: Any) -> str:
     """At which temperatures the losses of the run were evaluated, in words."""
     if "temperatures" in tables:
         return ("The losses of each step are evaluated at the node temperatures the "
-                "thermal network reached at the end of that step (the time column).")
+                "thermal network reached at the end of that step (the time [s] column of "
+                "losses.csv).")
     if "steady_temperatures" in tables:
         return ("The losses of each step are evaluated at that step's steady-state "
                 "temperatures (table steady_temperatures).")

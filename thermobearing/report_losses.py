@@ -198,6 +198,14 @@ def map_axes(breakdown: pd.DataFrame) -> tuple[str, str] | None:
     return varying[0], varying[1]
 
 
+def turning_points(breakdown: pd.DataFrame) -> pd.DataFrame:
+    """The rows of a breakdown at a speed other than 0 (a step at rest, a stop in a rig
+    protocol, books 0 W and is no point of a speed map)."""
+    if "speed [rpm]" not in breakdown:
+        return breakdown
+    return breakdown[breakdown["speed [rpm]"].to_numpy(float) != 0.0]
+
+
 def summary_lines(breakdown: pd.DataFrame) -> list[str]:
     """One sentence per bearing of a :func:`breakdown_by_source` table: the range of its
     total loss over the operating points (naming the points) and the largest source at the

@@ -1,7 +1,8 @@
 """Measured temperatures beside the prediction of a run.
 
-- :func:`temperature_errors`: per-sensor RMSE and max |error| of the predicted node
-  temperature at the measured times; a sensor that cannot be compared keeps its row with
+- :func:`temperature_errors`: per-sensor RMSE, max |error| and mean error (predicted -
+  measured: negative, the model runs cold) of the predicted node temperature at the
+  measured times; a sensor that cannot be compared keeps its row with
   the reason (no sample inside the run, a node the run does not have);
 - :func:`comparison_notes`: what the reader left out or decided
   (:func:`thermobearing.measured.measured_notes`: gaps per sensor and cause, averaged
@@ -51,9 +52,11 @@ def _inside(measured: pd.DataFrame, sensor: str, t0: float, t1: float) -> np.nda
 
 def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
                        column_map: Mapping[str, str]) -> pd.DataFrame:
-    """Per-sensor RMSE and max |error| [K] of the predicted node temperature at the
-    measured times (linear interpolation in time; measured gaps -- NaN -- and samples
-    outside the run are left out, ``points`` counts the samples used).
+    """Per-sensor RMSE, max |error| and mean error [K] of the predicted node temperature
+    at the measured times (linear interpolation in time; measured gaps -- NaN -- and
+    samples outside the run are left out, ``points`` counts the samples used). The mean
+    error is predicted - measured (the sign of ``thermobearing calibrate``'s residuals):
+    an offset the RMSE cannot tell from scatter, negative when the model runs cold.
 
     ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
     and one column per sensor in degC; ``column_map`` maps sensor -> node. A sensor that
@@ -69,7 +72,7 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
         if sensor not in measured:
             continue  # the reader refuses a mapped column the file lacks
         row = {"sensor": sensor, "node": node, "RMSE [K]": math.nan,
-               "max error [K]": math.nan, "points": 0}
+               "max error [K]": math.nan, "mean error [K]": math.nan, "points": 0}
         if col not in temps:
             row["note"] = f"the run has no node {node!r}"
             rows.append(row)
@@ -83,7 +86,8 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
         pred = np.interp(t, t_model, temps[col].to_numpy(float))
         err = pred - measured[sensor].to_numpy(float)[inside]
         row.update({"RMSE [K]": float(np.sqrt(np.mean(err**2))),
-                    "max error [K]": float(np.max(np.abs(err))), "points": int(err.size)})
+                    "max error [K]": float(np.max(np.abs(err))),
+                    "mean error [K]": float(np.mean(err)), "points": int(err.size)})
         rows.append(row)
     out = pd.DataFrame(rows)
     if "note" in out:
@@ -120,7 +124,8 @@ def short_notes(notes: Sequence[str], limit: int = 6, width: int = 160) -> list[
 
 def terminal_lines(measured: pd.DataFrame, temps: pd.DataFrame,
                    column_map: Mapping[str, str], limit: int = 6) -> list[str]:
-    """A few lines for ``thermobearing run``: each sensor's RMSE (or why it has none) and
+    """A few lines for ``thermobearing run``: each sensor's RMSE and mean error (predicted
+    - measured; or why it has none) and
     the :func:`comparison_notes`, shortened by :func:`short_notes` (the report lists them
     all)."""
     err = temperature_errors(temps, measured, column_map)
@@ -129,7 +134,11 @@ def terminal_lines(measured: pd.DataFrame, temps: pd.DataFrame,
         note = row.get("note", "") if "note" in err else ""
         parts.append(f"{row['sensor']} {note}" if note else
                      f"{row['sensor']} RMSE {row['RMSE [K]']:.2f} K ({row['points']} samples)")
-    lines = ["measured vs predicted: " + ", ".join(parts)] if parts else []
+    means = [f"{row['sensor']} {row['mean error [K]']:+.2f} K" for _, row in err.iterrows()
+             if math.isfinite(row["mean error [K]"])]
+    lines = ["measured vs predicted: " + ", ".join(parts)
+             + (f"; mean error (predicted - measured): {', '.join(means)}" if means else "")
+             ] if parts else []
     notes = comparison_notes(measured, temps, column_map)
     if notes:
         lines.append(f"measured data notes ({len(notes)}):")
