@@ -277,6 +277,13 @@ def _air_table() -> tuple[np.ndarray, ...]:
     return tuple(np.ascontiguousarray(data[:, j]) for j in range(5))
 
 
+#: temperatures [K] of :func:`air_properties` (air is liquid below ~79 K at 1 atm; CoolProp's
+#: air model starts at 60 K, its pseudo-pure model has no two-phase states) and what an error
+#: outside them allows
+AIR_T_RANGE = (100.0, 2000.0)
+AIR_T_ALLOWED = "100 K to 2000 K for air (a gas at 1 atm; the range of its CoolProp model)"
+
+
 def air_properties(T: ArrayLike, p: ArrayLike = 101325.0) -> AirProperties:
     """Dry-air properties (Lemmon et al. 2000 pseudo-pure air, CoolProp), vectorised.
 
@@ -299,9 +306,8 @@ def air_properties(T: ArrayLike, p: ArrayLike = 101325.0) -> AirProperties:
     check_temperature("temperature", T)
     check_positive("pressure", p)
     t, pp = np.broadcast_arrays(np.asarray(T, dtype=float), np.asarray(p, dtype=float))
-    if np.any(t < 100.0) or np.any(t > 2000.0):
-        raise InputError("temperature", T, "100 K to 2000 K for air (a gas at 1 atm; the "
-                         "range of its CoolProp model)")
+    if np.any(t < AIR_T_RANGE[0]) or np.any(t > AIR_T_RANGE[1]):
+        raise InputError("temperature", T, AIR_T_ALLOWED)
     tab = _air_table()
     if np.all(pp == AIR_TABLE_PRESSURE) and np.all(t <= tab[0][-1]):
         rho, mu, k, cp = (np.interp(t, tab[0], col) for col in tab[1:])
@@ -341,3 +347,13 @@ def check_liquid_temperature(lubricant: Any, field: str, temperature: float,
             f"a temperature at which {lubricant.name} is liquid: its ASTM D341 viscosity "
             f"there is {nu * 1e6:.3g} cSt, beyond the law's 1e6 cSt range (the oil is "
             f"below its pour point){hint}"))
+    for prop in (lubricant.density, lubricant.specific_heat):
+        # the oil's density and thermal laws (c_p, k) where the network evaluates them: an
+        # inlet at 5000 degC (Cragoe's k < 0 above ~1850 degC) was refused later by the
+        # network build, as "set by [network] parameters", naming no [supply] field
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", ValidityWarning)
+                prop(t)
+        except InputError as exc:
+            raise InputError(field, shown, f"{exc.allowed}{hint}") from None

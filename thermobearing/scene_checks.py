@@ -20,10 +20,13 @@ if TYPE_CHECKING:  # pragma: no cover
 def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
     """The scene's ambient, initial and oil-inlet temperatures [K] against the lubricant's
     viscosity law: a temperature at which the law overflows, or (ASTM D341) gives more than
-    the 1e6 cSt that ends its stated range (the oil below its pour point), is an
-    :class:`InputError` naming the scene field. A bare number in a scene is kelvin, so
-    ``ambient_temperature = 35`` meant as degC lands here instead of failing later inside a
-    solver (a residual of 1e24, a Roelands overflow at some contact pressure)."""
+    the 1e6 cSt that ends its stated range (the oil below its pour point), or at which its
+    density or thermal laws (c_p, k) leave their positive range, is an
+    :class:`InputError` naming the scene field; the ambient temperature also against the air
+    model's range (:data:`~thermobearing.lubricant_properties.AIR_T_RANGE`). A bare number in
+    a scene is kelvin, so ``ambient_temperature = 35`` meant as degC lands here instead of
+    failing later inside a solver (a residual of 1e24, a Roelands overflow at some contact
+    pressure)."""
     from .lubricant import check_liquid_temperature
 
     fields = [("environment.ambient_temperature", scene.environment.ambient_temperature),
@@ -31,10 +34,17 @@ def check_temperatures(scene: Scene, lubricant: Lubricant) -> None:
     # a bath has no inlet (OilSupply) unless a flow circulates it
     if scene.supply.method != "oil_bath" or scene.supply.flow > 0.0:
         fields.append(("supply.inlet_temperature", scene.supply.inlet_temperature))
+    hint = "; a bare number in a scene is in K: write e.g. \"35 degC\""
     for field, kelvin in fields:
-        check_liquid_temperature(lubricant, field, kelvin,
-                                 hint="; a bare number in a scene is in K: write e.g. "
-                                      "\"35 degC\"")
+        check_liquid_temperature(lubricant, field, kelvin, hint=hint)
+    # the air around the machine (convection to ambient): 1e4 degC stopped the run inside
+    # the network build as "temperature = 5286.575", naming no scene field
+    from .lubricant_properties import AIR_T_ALLOWED, AIR_T_RANGE
+
+    kelvin = scene.environment.ambient_temperature
+    if not AIR_T_RANGE[0] <= kelvin <= AIR_T_RANGE[1]:
+        raise InputError("environment.ambient_temperature",
+                         f"{kelvin:g} K ({kelvin - 273.15:g} degC)", AIR_T_ALLOWED + hint)
 
 
 def check_model_names(scene: Scene) -> None:
