@@ -609,11 +609,71 @@ def lubricant_from_dict(data: Mapping[str, Any], where: str = "lubricant") -> Lu
         if not {"nu40", "nu100"} <= set(vis):
             raise InputError(f"{where}.viscosity", vis, "both nu40 and nu100")
         T1, T2 = vis.get("T1", 313.15), vis.get("T2", 373.15)
-        A, B = walther_constants(vis["nu40"], T1, vis["nu100"], T2)
+        try:
+            A, B = walther_constants(vis["nu40"], T1, vis["nu100"], T2)
+        except InputError as exc:
+            raise _file_error(exc, where, data, {
+                "nu1": "viscosity.nu40", "nu2": "viscosity.nu100", "T1": "viscosity.T1",
+                "T2": "viscosity.T2",
+                # "viscosity at 373.15 K": the one at the higher temperature
+                "viscosity at": "viscosity.nu100" if T2 > T1 else "viscosity.nu40"}) from None
         params: dict[str, float] = {"A": A, "B": B}
+    elif law == "astm_d341" and not {"A", "B"} <= set(vis):
+        # an empty [viscosity] table was refused as "exactly the parameters ['A', 'B']"
+        raise InputError(f"{where}.viscosity", data.get("viscosity"),
+                         "nu40 and nu100 (or the chart constants A and B) for the default law "
+                         "astm_d341, e.g. { nu40 = \"46 mm**2/s\", nu100 = \"6.8 mm**2/s\" }")
     else:
         params = {k: float(v) for k, v in vis.items()}
-    return Lubricant(viscosity_law=law, viscosity_parameters=params, **common)
+    name = common["name"]
+    try:
+        return Lubricant(viscosity_law=law, viscosity_parameters=params, **common)
+    except InputError as exc:
+        # the dataclass names its attributes ("ISO_VG46.density_reference_temperature");
+        # the file's keys are what the user can change
+        fields = {f"{name}.{attr}": key for attr, key in _ATTRIBUTE_KEYS.items()}
+        fields.update({f"{name}.viscosity.": "viscosity.",
+                       f"{name}.pressure_viscosity.": "pressure_viscosity.",
+                       "lubricant_thermal model": "thermal.model"})
+        raise _file_error(exc, where, data, fields) from None
+
+
+#: the :class:`Lubricant` attribute each lubricant-file key sets
+_ATTRIBUTE_KEYS = {
+    "viscosity_parameters": "viscosity", "viscosity_law": "viscosity.law",
+    "density_reference_temperature": "density.reference_temperature",
+    "density_temperature_law": "density.temperature_law",
+    "density_pressure_law": "density.pressure_law", "thermal_expansion": "density.expansion",
+    "density": "density.value", "pressure_viscosity": "pressure_viscosity",
+    "pressure_law": "pressure_viscosity.law", "thermal_model": "thermal.model",
+    "thermal_parameters": "thermal",
+}
+
+
+def _file_error(exc: InputError, where: str, data: Mapping[str, Any],
+                fields: Mapping[str, str]) -> InputError:
+    """``exc`` renamed to the lubricant file's key (``where`` + ``.`` + the key ``fields``
+    maps the error's field, or its longest matching prefix, to), with the value as the file
+    wrote it; ``exc`` itself when no entry matches. A bare number the file gave for a
+    quantity out of range gets a note that bare numbers are SI (``nu40 = 46`` is 46 m^2/s)."""
+    field = str(exc.field)
+    match = max((k for k in fields if field == k or (k.endswith((".", " at"))
+                                                      and field.startswith(k))),
+                key=len, default=None)
+    if match is None:
+        return exc
+    key = fields[match] + (field[len(match):] if match.endswith(".") else "")
+    raw: Any = data
+    for part in key.split("."):
+        raw = raw.get(part) if isinstance(raw, Mapping) else None
+    value = exc.value if raw is None else raw
+    allowed = exc.allowed
+    if isinstance(raw, int | float) and not isinstance(raw, bool):
+        allowed += ("; a bare number in a lubricant file is SI: write the unit, e.g. "
+                    "nu40 = \"46 mm**2/s\", value = \"876 kg/m**3\"")
+    if isinstance(exc, UnknownNameError):
+        return UnknownNameError(f"{where}.{key}", value, exc.known)
+    return InputError(f"{where}.{key}", value, allowed)
 
 
 def load_lubricant(name_or_path: str | Path) -> Lubricant:

@@ -28,7 +28,7 @@ from .errors import (
     check_positive,
     check_temperature,
 )
-from .lubricant_properties import ArrayLike, _out
+from .lubricant_properties import _D341_MAX_NU, _D341_MIN_NU, ArrayLike, _out
 from .registry import Registry
 
 VISCOSITY_TEMPERATURE: Registry[Callable[..., ArrayLike]] = Registry(
@@ -160,8 +160,9 @@ def walther_constants(
     """Constants (A, B) of ASTM D341 through two (T [K], nu [m^2/s]) points.
 
     Solves log10 log10 Z_i = A - B log10 T_i for i = 1, 2 (two linear equations).
-    Raises :class:`InputError` unless both viscosities are > 0, T1 != T2 and the oil
-    thins with temperature (nu at the higher temperature is the lower one).
+    Raises :class:`InputError` unless both viscosities are within the law's range
+    (0.21 to 1e6 cSt), T1 != T2 and the oil thins with temperature (nu at the higher
+    temperature is the lower one).
     """
     check_positive("nu1", nu1)
     check_positive("nu2", nu2)
@@ -169,6 +170,12 @@ def walther_constants(
     check_temperature("T2", T2)
     if T1 == T2:
         raise InputError("T2", T2, f"a temperature different from T1 = {T1} K")
+    for name, nu in (("nu1", nu1), ("nu2", nu2)):
+        # log10 log10 Z needs Z > 1: below ~0.3 cSt Z < 1 and math.log10 raised a bare
+        # "math domain error" (a lubricant file with nu100 = "1e-9 mm**2/s")
+        if not _D341_MIN_NU <= nu <= _D341_MAX_NU:
+            raise InputError(name, nu, "a kinematic viscosity within ASTM D341's range, "
+                             "0.21 to 1e6 cSt (2.1e-7 to 1 m^2/s)")
     (tl, nl), (th, nh) = sorted([(T1, nu1), (T2, nu2)])
     if not nh < nl:
         raise InputError(
