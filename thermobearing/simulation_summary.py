@@ -12,6 +12,7 @@ import numpy as np
 import pandas as pd
 
 from .scene import loads_scene
+from .simulation_tables import over_skidding_range
 
 #: the protocol mean of the scene's total loss (all bearings)
 MEAN_TOTAL_LOSS = "mean total loss [W]"
@@ -59,7 +60,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       of the first bearing only, which their names did not say.)
     * ``max / min over-skidding [%]`` (signed, 100 (CSR / CSR_th - 1) as in the kinematics
       table: negative where the cage lags, so a maximum below zero means every step
-      skids), ``max contact pressure [MPa]`` and ``min film
+      skids; over every solved state, also those re-solved within a step, which the
+      table's one row per step does not show:
+      :func:`.simulation_tables.over_skidding_range`), ``max contact pressure [MPa]`` and ``min film
       parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
       gives its roughness; neither when the kinematics model computes no contacts), and
       ``steps over skid limit [-]``, ``steps over stress limit [-]``, ``steps under film
@@ -101,9 +104,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
                 per_b, w_b = averaged(losses[losses["bearing"] == name])
                 out[f"mean total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
     kin = res.tables.get("kinematics")
-    if kin is not None and not kin.empty:
-        out["max over-skidding [%]"] = float(kin["over-skidding [%]"].max())
-        out["min over-skidding [%]"] = float(kin["over-skidding [%]"].min())
+    span = None if kin is None or kin.empty else over_skidding_range(kin, sim.checks)
+    if span is not None:
+        out["max over-skidding [%]"], out["min over-skidding [%]"] = span
     states = [c for log in sim.checks.values() for cs in log.steps.values() for c in cs]
     if states:
         # NaN: a state whose model computes no contacts (kinematics "none")

@@ -10,6 +10,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
+import pandas as pd
 
 from .kinematic_models import KinematicsResult, contact_temperature
 from .operating_checks import check_state, composite_roughness
@@ -71,6 +72,28 @@ def zero_below(x: float, floor: float) -> float:
     """``x``, or 0.0 where ``|x| < floor`` (solver noise around a value that is zero; NaN
     unchanged)."""
     return 0.0 if abs(x) < floor else x
+
+
+def over_skidding_range(kin: pd.DataFrame, checks: Mapping[str, Any]
+                        ) -> tuple[float, float] | None:
+    """Largest and smallest over-skidding [%], 100 (CSR / CSR_th - 1), of every solved
+    state of a run: the kinematics table's rows (each step's first state) and the states
+    re-solved within a step as the temperatures moved, which the run's operating checks
+    record (``checks``: bearing -> :class:`.operating_checks.CheckLog`) and whose worst
+    their warnings name. None when the table has no over-skidding (kinematics ``"none"``,
+    every step at rest). The default rig's step 2 starts at +8.72 % and reaches +8.78 %;
+    an NU 214 at 8000 r/min starts at -37.8 % and skids to -44.7 % as its oil warms."""
+    table = kin["over-skidding [%]"].to_numpy(dtype=float) if "over-skidding [%]" in kin \
+        else np.array([])
+    table = table[np.isfinite(table)]
+    if table.size == 0:
+        return None
+    states = [zero_below(100.0 * (c.csr / c.csr_th - 1.0), OVER_SKID_FLOOR)
+              for log in checks.values() for cs in log.steps.values() for c in cs
+              if math.isfinite(c.csr) and c.csr_th > 0.0]
+    values = np.concatenate([table, np.asarray(states, dtype=float)])
+    values = values[np.isfinite(values)]
+    return float(values.max()), float(values.min())
 
 
 def kinematics_columns(kin: KinematicsResult, bearing: Any) -> dict[str, Any]:
