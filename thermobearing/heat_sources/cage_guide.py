@@ -24,6 +24,9 @@ Metallic contact (c - e <= h_c): eqs. 1-3, Palmgren-type line contact of the lan
 penetration must grow as the gap closes), friction f = mu_cg F_cg (eq. 2) and the friction
 torque M = f D_g / 2 (eq. 3 prints F_cg where the friction force is meant).
 Heat = f (D_g/2) |omega_g - omega_c|.
+The two regimes do not meet (as printed): at c - e = h_c the film torque of eq. 5 is finite
+and the contact force of eq. 1 zero, so the heat falls there from the Petroff value to zero
+(QJ1044, 1800 r/min, h_c = 1 um: from 1.8 kW; tests/unit/test_prop19_cage_pocket.py).
 
 The eccentricity comes from the kinematic state (``cage_eccentricity``, skidding solver);
 if that is 0 and ``cage_guide_force`` is given (or ``options["cage_guide"]["load"]``,
