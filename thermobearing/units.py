@@ -59,8 +59,10 @@ SI_UNITS: dict[str, str] = {
 _NUMBER_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 #: a number written with a decimal comma ("0,5 kN")
 _DECIMAL_COMMA = re.compile(r"^\s*[-+]?\d+,\d+")
-#: a number written in digit groups ("16 000 rpm", "16,000 rpm")
-_DIGIT_GROUPS = re.compile(r"^\s*([-+]?)([1-9]\d{0,2})((?:([ ,\u00a0\u202f])\d{3})+)(?![\d,])"
+#: a number written in digit groups ("16 000 rpm", "16,000 rpm"; also with a thin space,
+#: an apostrophe as in Switzerland or an underscore as in Python and TOML numbers)
+_DIGIT_GROUPS = re.compile(r"^\s*([-+]?)([1-9]\d{0,2})"
+                           r"((?:([ ,_'\u00a0\u2009\u202f\u2019])\d{3})+)(?![\d,])"
                            r"(?:\.\d+)?\s*(.*?)\s*$")
 #: revolutions per minute / second as ISO 80000 and catalogues write them ("r/min",
 #: "rev/min"), which pint does not read
@@ -129,11 +131,14 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         return float(value)
     if not isinstance(value, str):
         raise InputError(field, value, f"a number or a quantity string convertible to {target}")
-    match = _NUMBER_UNIT.match(value)
+    # the minus sign of word processors and spreadsheets (U+2212), which no unit contains:
+    # "\u22125 degC" was refused as "'<number> <unit>' convertible to K"
+    text = value.replace("\u2212", "-")
+    match = _NUMBER_UNIT.match(text)
     if match is None:
         raise InputError(field, value, f"'<number> <unit>' convertible to {target}")
     number, unit_text = match.groups()
-    _refuse_separators(value, field, target)
+    _refuse_separators(text, field, target)
     unit_text = _usual_spellings(unit_text)
     if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
         unit_text = "delta_degC"
