@@ -441,6 +441,15 @@ def solve_dimensionless(
         err_est = abs(diff / 3.0) / abs(hc_ex)
     else:
         hc_ex, err_est = hc_levels[-1], math.nan
+    if len(hc_levels) < 2:
+        # one grid only (n at most the start grid, e.g. 512 nodes for M >= 300): there is no
+        # Richardson pair to estimate the error with (the message said "error nan%")
+        raise GridResolutionError(
+            "ehl.line", math.inf,
+            f"grid too coarse: n={n} is the only grid solved for M={M:.4g}, L={L:.4g} (the "
+            f"start grid is {levels[0]} nodes), so the central-film error cannot be "
+            f"estimated; n >= {2 * levels[0]} gives the Richardson pair; {_POINTER}", state,
+        )
     if not (math.isfinite(err_est) and err_est <= max_grid_error):
         raise GridResolutionError(
             "ehl.line", err_est,
