@@ -14,10 +14,16 @@ rib_friction option ``unbalance_mass``: the chaotic impacting motion).
 Paths, each from an empty dynamics cache, the process warmed by a tiny run first (numba
 loads its cached kernels then: timed separately as ``first_call_s``):
 
-- ``fixed``: rib_friction options ``convergence = 0`` and ``table_retries = 0``, the
-  previous path (2 warm-up + 3 statistics cage orbits per node; a run that enters the cage
-  runaway re-run whole on the evaluate traction path);
-- ``converged``: the defaults, the running-mean stop at
+- ``fixed``: rib_friction options ``convergence = 0``, ``table_retries = 0`` and
+  ``warm_start_nodes = 0``, the previous path (2 warm-up + 3 statistics cage orbits per
+  node from the quasi-static state; a run that enters the cage runaway re-run whole on the
+  evaluate traction path);
+- ``cold``: the defaults but ``warm_start_nodes = 0`` (every node from the quasi-static
+  state, the default before 2026-11-24);
+- ``converged``: the defaults, every node without unbalance from the end state of the
+  nearest node of its operating state already run (``warm_start_nodes``,
+  :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_WARM_START_NODES`), the
+  running-mean stop at
   :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_CONVERGENCE`
   (:mod:`~thermobearing.skidding.roller_dynamics_convergence`) and up to
   :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_TABLE_RETRIES` other
@@ -27,8 +33,10 @@ loads its cached kernels then: timed separately as ``first_call_s``):
 Printed per path: CPU of the scene run, dynamics runs (cache misses) and hits, per run the
 operating state, node temperature, CPU, orbits integrated, step size, heat and rib slide
 speed; the cProfile split (process CPU time) of the path: time loop kernel, traction table,
-quasi-static set-up, post-processing. Then the ratio fixed / converged of the CPU times and
-the change in the rib heat: per dynamics node present in both runs, |heat / heat_fixed - 1|
+quasi-static solve, dynamics set-up, post-processing (the profiler inflates the
+Python-heavy parts, the quasi-static solve ~4x: roller_dynamics_heat notes). Then the
+ratios fixed / converged and cold / converged of the CPU times and the change in the rib
+heat: per dynamics node present in both runs, |heat / heat_fixed - 1|
 and the same for the rib slide speed (which sets the thrust share's heat), and the booked
 rib_friction power of the scene at the end of every step (both transients follow their own
 temperatures, so this also holds the feedback of the small heat change).
@@ -59,12 +67,13 @@ SCENE = "configs/scenes/crb_rib_example.toml"
 #: function names of the cProfile split (cumulative process CPU time)
 SPLIT = {"time loop kernel (_integrate)": "_integrate",
          "traction table (build_traction_table)": "build_traction_table",
-         "quasi-static set-up (build_model)": "build_model",
+         "quasi-static solve (solve_roller)": "solve_roller",
+         "dynamics set-up (build_model)": "build_model",
          "post-processing (_post)": "_post"}
 
 
 def make_scene(duration: float, quick: bool, unbalance_g: float, convergence: float,
-               retries: int) -> Any:
+               retries: int, warm_nodes: int) -> Any:
     """The benchmark scene (module notes) with the rib_friction options set."""
     from thermobearing.scene import Schedule, load_scene
     from thermobearing.scene_schedule import Step
@@ -72,7 +81,8 @@ def make_scene(duration: float, quick: bool, unbalance_g: float, convergence: fl
     scene = load_scene(SCENE)
     steps = [Step(duration=duration, speed=rpm * RPM, radial_load=load, axial_load=200.0)
              for rpm, load in (STEPS[:2] if quick else STEPS)]
-    opts: dict[str, Any] = {"convergence": convergence, "table_retries": retries}
+    opts: dict[str, Any] = {"convergence": convergence, "table_retries": retries,
+                            "warm_start_nodes": warm_nodes}
     if unbalance_g > 0:
         opts["unbalance_mass"] = unbalance_g * 1e-3
     models = dict(scene.models)
@@ -110,9 +120,11 @@ def run_path(name: str, scene: Any) -> dict[str, Any]:
             # a node whose motion ran away on every path (its neighbour's value is booked)
             log.append({**state, "cpu_s": time.process_time() - t0, "orbits": math.nan,
                         "step_s": math.nan, "heat": math.nan, "slide": math.nan,
-                        "fallback": 1, "retries": -1, "finished_on": "", "failed": True})
+                        "fallback": 1, "retries": -1, "finished_on": "", "failed": True,
+                        "warm": 0})
             raise
         log.append({**state, "cpu_s": out.cost_s, "orbits": out.orbits,
+                    "warm": out.warm_starts,
                     "step_s": float(resp.series.get("step", [math.nan])[0]),
                     "heat": out.heat, "slide": out.rib_slide_speed,
                     "fallback": out.fallbacks,
@@ -190,11 +202,12 @@ def compare(fixed: dict[str, Any], conv: dict[str, Any]) -> dict[str, Any]:
 def _print_path(r: dict[str, Any]) -> None:
     print(f"\n[{r['path']}] scene CPU {r['cpu_s']:.2f} s, dynamics runs {r['runs']}, "
           f"cache hits {r['hits']}, final rollers {r['final_rollers_degC']:.2f} degC")
-    print("   r/min    load N   node K   CPU s  orbits  step us   heat W/roller  slide m/s")
+    print("   r/min    load N   node K   CPU s  orbits  step us   heat W/roller  slide m/s"
+          "  start")
     for n in r["nodes"]:
         print(f"  {n['speed_rpm']:7.0f} {n['radial_load']:8.0f} {n['temperature']:8.2f} "
               f"{n['cpu_s']:7.2f} {n['orbits']:7.2f} {1e6 * n['step_s']:8.3f} "
-              f"{n['heat']:14.5g} {n['slide']:10.5g}"
+              f"{n['heat']:14.5g} {n['slide']:10.5g}  {'warm' if n.get('warm') else 'cold'}"
               + ("  (ran away on every path)" if n["failed"] else
                  f"  (runaway met: {n['retries']} table retries, finished on the "
                  f"{n['finished_on']} path)" if n["fallback"] else ""))
@@ -216,23 +229,32 @@ def main(argv: list[str] | None = None) -> int:
     from thermobearing.skidding.roller_dynamics_heat import (
         DEFAULT_CONVERGENCE,
         DEFAULT_TABLE_RETRIES,
+        DEFAULT_WARM_START_NODES,
     )
 
     warm = first_call()
-    fixed = run_path("fixed", make_scene(args.duration, args.quick, args.unbalance, 0.0, 0))
+    fixed = run_path("fixed", make_scene(args.duration, args.quick, args.unbalance, 0.0, 0,
+                                         0))
+    cold = run_path("cold", make_scene(args.duration, args.quick, args.unbalance,
+                                       DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES, 0))
     conv = run_path("converged", make_scene(args.duration, args.quick, args.unbalance,
-                                            DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES))
+                                            DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES,
+                                            DEFAULT_WARM_START_NODES))
     summary = compare(fixed, conv)
+    vs_cold = compare(cold, conv)
+    summary.update({f"cold_{k}": v for k, v in vs_cold.items() if k != "path"})
     summary.update(first_call_s=warm, convergence=DEFAULT_CONVERGENCE,
                    table_retries=DEFAULT_TABLE_RETRIES,
+                   warm_start_nodes=DEFAULT_WARM_START_NODES,
                    duration_s=args.duration, unbalance_g=args.unbalance, quick=args.quick)
     case = f"CRB 50x75x16 {'2' if args.quick else '3'} steps, {args.unbalance:g} g"
-    for r in (fixed, conv):  # the fields `thermobearing bench` tabulates
+    for r in (fixed, cold, conv):  # the fields `thermobearing bench` tabulates
         r.update(benchmark="rib_friction", case=case, method=r["path"],
                  setting=f"{args.duration:g} s steps", time_s=r["cpu_s"],
                  ratio_vs_anchor=fixed["cpu_s"] / r["cpu_s"])
     conv["error"] = summary["max_node_heat_change"]  # relative, against the fixed path
-    records = [fixed, conv, summary]
+    cold["error"] = compare(fixed, cold)["max_node_heat_change"]
+    records = [fixed, cold, conv, summary]
     if args.out:
         with open(args.out, "w", encoding="utf-8") as fh:
             for r in records:
@@ -243,6 +265,7 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     print(f"first call (imports, numba cache loads, tiny run): {warm:.2f} s CPU")
     _print_path(fixed)
+    _print_path(cold)
     _print_path(conv)
     s = summary
     print(f"\nconverged (tol {DEFAULT_CONVERGENCE}) vs fixed window, same run: scene CPU "
@@ -253,6 +276,13 @@ def main(argv: list[str] | None = None) -> int:
           f"{100 * s['max_node_slide_change']:.3f} %; booked rib_friction at step ends max "
           f"{100 * s['max_booked_rib_change']:.3f} %; final roller temperature "
           f"{s['final_rollers_change_K']:+.4f} K")
+    print(f"warm starts (nearest node <= {DEFAULT_WARM_START_NODES} steps) vs cold starts, "
+          f"same run: scene CPU ratio {s['cold_ratio_scene_cpu']:.2f}, dynamics CPU ratio "
+          f"{s['cold_ratio_dynamics_cpu']:.2f}; nodes in both {s['cold_common_nodes']}, max "
+          f"|dheat| {100 * s['cold_max_node_heat_change']:.3f} %, max |dslide| "
+          f"{100 * s['cold_max_node_slide_change']:.3f} %, booked rib_friction at step ends "
+          f"max {100 * s['cold_max_booked_rib_change']:.3f} %, final roller temperature "
+          f"{s['cold_final_rollers_change_K']:+.4f} K")
     return 0
 
 

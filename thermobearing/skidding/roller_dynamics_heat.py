@@ -97,6 +97,53 @@ motion (their heat moved by up to 10.4 %, inside the 19.8-22.7 W per roller the 
 nodes of that step scatter over; same population: module notes of
 roller_dynamics_coupled), the booked rib_friction at the step ends by -3.0 % (20000
 r/min, 681 -> 661 W) and -0.03 % (5000 r/min), the final roller temperature by -0.09 K.
+
+Warm start (2026-11-24, issue 9 cost). Without an unbalance (deterministic motion that
+settles to one steady state) a coupled node starts from the end state of the nearest node
+of its operating state already run (``warm_start_nodes``, default
+:data:`DEFAULT_WARM_START_NODES` grid steps at most, the cooler of two equally near; the
+state of every roller, the cage angle and speed: :class:`CoupledStart`,
+``simulate_coupled(start=...)``), and its quasi-static solve (still needed: the cage band,
+the load states and the table are centred on it) starts its Newton from that node's
+quasi-static state. With an unbalance every node keeps its cold start (the chaotic motion's
+value would depend on which node ran first). A warm-started run that stops with a
+ConvergenceError is run again cold. Measured (MIL-PRF-23699, 3 kN, no unbalance, the
+defaults, against a 20 + 10-orbit reference at the node):
+
+* 30000 r/min, 400 K (the slow cage creep): cold 7.0 orbits, 1.28-1.42 s CPU, rib heat
+  +0.19 %, slip +0.40 %, cage -0.07 %; from the 395 K node's end state 2.0 orbits, 0.46 s,
+  heat -0.28 %, slip -0.70 %, cage +0.08 %; from 405 K 3.0 orbits, 0.62 s, heat +0.23 %.
+  Both starts leave the settling test's creep residue (settle r/(1 - r), r ~ 0.56 per
+  orbit here), of opposite signs; a tighter ``settle`` cuts both (3e-4: cold 9 orbits,
+  +0.058 %; warm 4-5 orbits, -0.073 / +0.070 %; 1e-4: cold 11, warm 6-7 orbits, <=
+  0.023 %).
+* 20000 r/min, 375 K: cold 3.0 orbits, heat -0.013 %; warm from 370 / 380 K 2.0 orbits,
+  -0.028 / +0.033 %. 5000 r/min, 2 kN, 375 K: 3.0 -> 2.0 orbits, heat within 2e-6.
+
+Why the cage creeps at 30000 r/min in hot oil (roller_dynamics_coupled notes, "Cage
+settling"): the cage's orbital mode (the cage and the rollers it carries) is damped only by
+the loaded rollers' raceway traction, through the slope of their net orbital force with the
+cage speed, dF_d/d omega_c, which the Newtonian film sets (~ oil viscosity). At the settled
+state (from the traction model, the table's linearisation at each roller): 400 K (eta 2.96
+mPa s) sum dF_d/d omega_c = -0.187 N s/rad, damping D = 5.8e-3 N m s against the cage +
+carried rollers' inertia I = 8.2e-5 kg m^2 (J_c 5.0e-5, Z m (d_m/2)^2 3.1e-5): I/D = 14 ms,
+3 orbits; at 353 K (eta 7.56 mPa s) -0.63 N s/rad, I/D = 4.2 ms, under one 4.6 ms orbit.
+The creep measured from the cold start falls by ~0.56 per orbit at 400 K (e-folding 8 ms,
+the unloaded rollers' drag adds damping the estimate leaves out). And the start is far
+from where it settles: the quasi-static cage speed is 2.4 % below the settled one at 400 K
+(1311.3 against 1343.7 rad/s; 0.8 % at 353 K), with the spins first coming up over ~3
+orbits. So both apply: a 3.4x weaker damping and a 3x larger start offset. A better cage
+speed alone does not help (the spins' transient first drags the cage down, case SOURCE.md
+"Cage settling"); the whole settled state of a neighbouring node does.
+
+Cost of the quasi-static start (2026-11-24): cProfile put the quasi-static set-up
+(``build_model``: :func:`~thermobearing.skidding.roller.solve_roller`) at ~0.17-0.21 s of a
+~0.8 s node at 20000 r/min, but the profiler inflates that Python-heavy code (~86000 calls)
+about 4x. Timed without it (``time.process_time`` around the calls): 0.046-0.055 s of
+0.63-0.67 s per node (7-8 %; the table 0.07-0.08 s, the kernel 0.47-0.51 s); at 5000 r/min
+0.04-0.08 s of 1.8-1.9 s. Its Newton from the neighbouring node's quasi-static state takes
+3-4 iterations instead of 9-11 (0.026-0.044 s instead of 0.057-0.127 s), to the same state
+within 2e-8 of the roller speeds.
 Units: SI.
 """
 
@@ -106,7 +153,7 @@ import math
 import time
 import warnings
 from collections import OrderedDict
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -130,6 +177,26 @@ DEFAULT_CONVERGENCE = 0.005
 DEFAULT_TABLE_RETRIES = 3
 #: operating states kept in the cache
 CACHE_SIZE = 64
+#: a coupled run without unbalance starts from the end state of the nearest temperature node
+#: of its operating state already run, at most this many grid steps away (module notes,
+#: "Warm start"); 0: every node from the quasi-static state
+DEFAULT_WARM_START_NODES = 4
+
+
+class CoupledStart(NamedTuple):
+    """Where a coupled run may start (module notes, "Warm start"), from a run of the same
+    bearing, lubricant, speed and load at a nearby temperature.
+
+    quasi_static : that run's quasi-static state, (omega_r (Z,), omega_c) [rad/s] in the
+        skidding solver's order (the Newton start of this run's quasi-static solve).
+    state : that run's end state (``series["end_state"]`` of
+        :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`).
+    temperature : its temperature [K].
+    """
+
+    quasi_static: np.ndarray
+    state: np.ndarray
+    temperature: float
 
 
 class RibDynamicsHeat(NamedTuple):
@@ -145,6 +212,8 @@ class RibDynamicsHeat(NamedTuple):
     temperature : where it was evaluated (interpolated) [K].  cost_s : CPU time of the
         runs it needed [s] (0 if all were cached).  runs : dynamics runs it needed.
     model : "coupled" | "reduced".
+    warm_starts : coupled runs (of those this value rests on) started from a neighbouring
+        node's end state (module notes, "Warm start").
     fallbacks : coupled runs (of those this value rests on, cached ones included) whose
         table path left the cage band and were re-run (other table-path trajectories,
         then the ``"evaluate"`` traction path;
@@ -165,6 +234,7 @@ class RibDynamicsHeat(NamedTuple):
     model: str
     fallbacks: int = 0
     orbits: float = 0.0
+    warm_starts: int = 0
 
     @property
     def heat(self) -> float:
@@ -182,6 +252,23 @@ class _Cache:
 
     def __post_init__(self) -> None:
         self.store: OrderedDict[tuple, RibDynamicsHeat] = OrderedDict()
+        # coupled runs' end states per operating state (the key without its node) and node
+        self.starts: OrderedDict[tuple, dict[int, CoupledStart]] = OrderedDict()
+
+    def start_near(self, base: tuple, node: int, reach: int) -> CoupledStart | None:
+        """The stored end state of the nearest other node of ``base`` at most ``reach``
+        nodes away (the cooler one of two equally near), or None."""
+        nodes = self.starts.get(base)
+        if not nodes or reach <= 0:
+            return None
+        near = [(abs(k - node), k) for k in nodes if k != node and abs(k - node) <= reach]
+        return nodes[min(near)[1]] if near else None
+
+    def keep_start(self, base: tuple, node: int, start: CoupledStart) -> None:
+        self.starts.setdefault(base, {})[node] = start
+        self.starts.move_to_end(base)
+        while len(self.starts) > self.size:
+            self.starts.popitem(last=False)
 
     def get(self, key: tuple) -> RibDynamicsHeat | None:
         found = self.store.get(key)
@@ -209,6 +296,7 @@ def cache_info() -> dict[str, int]:
 def clear_cache() -> None:
     """Empty the cache and reset its counters."""
     _CACHE.store.clear()
+    _CACHE.starts.clear()
     _CACHE.hits = 0
     _CACHE.runs = 0
 
@@ -220,7 +308,8 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                  orbits: float = DEFAULT_ORBITS,
                  convergence: float | None = DEFAULT_CONVERGENCE,
                  table_retries: int = DEFAULT_TABLE_RETRIES,
-                 settle: float | None = DEFAULT_SETTLE
+                 settle: float | None = DEFAULT_SETTLE,
+                 start: CoupledStart | None = None
                  ) -> tuple[RibDynamicsHeat, Any]:
     """One (uncached) run of the roller dynamics at an operating state.
 
@@ -237,7 +326,12 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     orbit-mean cage speed, before the running-mean test; module notes, "Cage settling";
     None: no settling warm-up, as before 2026-11-23 evening); used without unbalance only
     (the chaotic motion with one has no steady cage speed to settle to).
-    Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``).
+    start : the coupled model's warm start (:class:`CoupledStart`, module notes "Warm
+    start"): its quasi-static state starts the quasi-static solve's Newton, its end state
+    the integration (None: the quasi-static state, cold).
+    Returns (:class:`RibDynamicsHeat`, the model's ``RollerResponse``; a coupled run's
+    ``series["quasi_static_state"]`` holds its quasi-static (omega_r, omega_c), the
+    :class:`CoupledStart` of a later run with ``series["end_state"]``).
     """
     from .roller_dynamics import build_model, simulate_reduced
 
@@ -248,16 +342,23 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     t0 = time.process_time()
     geom = rib_geometry(bearing)
     if model == "coupled":
+        from .roller import solve_roller
         from .roller_dynamics_coupled import simulate_coupled
 
+        qs = solve_roller(bearing, lubricant, speed, radial_load, 0.0, temperature,
+                          x0=None if start is None else start.quasi_static)
         m = build_model(bearing, lubricant, speed, radial_load, unbalance_mass,
                         temperature=temperature, rib_friction=friction_coefficient,
-                        oil_fraction=oil_fraction, coupling="none")
+                        oil_fraction=oil_fraction, coupling="none", quasi_static=qs)
         resp = simulate_coupled(m, bearing, lubricant, n_orbits=orbits,
                                 warmup_orbits=warmup_orbits, converge=convergence,
                                 table_retries=table_retries,
-                                settle=settle if unbalance_mass == 0.0 else None)
-        s = resp.series
+                                settle=settle if unbalance_mass == 0.0 else None,
+                                start=None if start is None else start.state)
+        s = dict(resp.series)
+        s["quasi_static_state"] = np.append(np.asarray(qs.roller_speed, float),
+                                            float(qs.cage_speed))
+        resp = replace(resp, series=s)
         n_orbits = float(s["simulated_orbits"][0])
         v = rib_sliding_speed(geom, speed, s["cage_speed"][:, None], s["spin"])
         slide = float(np.mean(np.abs(v)))
@@ -272,7 +373,7 @@ def run_dynamics(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     out = RibDynamicsHeat(float(resp.rib_heat_left), float(resp.rib_heat_right),
                           float(resp.pv_left), float(resp.pv_right), float(resp.slip_speed),
                           slide, float(temperature), time.process_time() - t0, 1, model,
-                          fallbacks, n_orbits)
+                          fallbacks, n_orbits, int(start is not None))
     return out, resp
 
 
@@ -286,20 +387,31 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
                       orbits: float = DEFAULT_ORBITS,
                       convergence: float | None = DEFAULT_CONVERGENCE,
                       table_retries: int = DEFAULT_TABLE_RETRIES,
-                      settle: float | None = DEFAULT_SETTLE) -> RibDynamicsHeat:
+                      settle: float | None = DEFAULT_SETTLE,
+                      warm_start_nodes: int = DEFAULT_WARM_START_NODES) -> RibDynamicsHeat:
     """:func:`run_dynamics` through the cache, linearly interpolated between the two
     temperature nodes k dT <= T < (k + 1) dT (dT = ``temperature_step`` [K]; one node if T
-    lies on it). Arguments as :func:`run_dynamics`. ``cost_s`` / ``runs`` of the result
-    count only the runs this call made."""
+    lies on it). Arguments as :func:`run_dynamics`. ``warm_start_nodes``: a coupled run
+    without unbalance starts from the end state of the nearest node of the same operating
+    state already run at most this many nodes away (module notes, "Warm start"; 0: from the
+    quasi-static state). ``cost_s`` / ``runs`` of the result count only the runs this call
+    made."""
     if model not in MODELS:
         raise InputError("model", model, MODELS)
     check_positive("temperature_step", temperature_step)
     check_range("temperature", temperature, 150.0, 700.0, unit="K")
+    if (isinstance(warm_start_nodes, bool) or not isinstance(warm_start_nodes, int | np.integer)
+            or warm_start_nodes < 0):
+        raise InputError("warm_start_nodes", warm_start_nodes, "a whole number of nodes >= 0")
     base = (repr(bearing), repr(lubricant), round(float(speed), 9),
             round(float(radial_load), 9), float(unbalance_mass), model,
             float(friction_coefficient), float(oil_fraction), float(warmup_orbits),
             float(orbits), None if convergence is None else float(convergence),
-            int(table_retries), None if settle is None else float(settle))
+            int(table_retries), None if settle is None else float(settle),
+            int(warm_start_nodes))
+    # warm starts only for the deterministic motion (the chaotic one with an unbalance keeps
+    # its cold start: its value would depend on which node ran first)
+    reach = int(warm_start_nodes) if model == "coupled" and unbalance_mass == 0.0 else 0
     k = math.floor(temperature / temperature_step + 1e-12)
     w = temperature / temperature_step - k
     nodes = [(k, 1.0 - w)] + ([(k + 1, w)] if w > 1e-9 else [])
@@ -307,12 +419,28 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
     cost = 0.0
     runs = 0
     def run(node: int) -> RibDynamicsHeat:
-        out, _ = run_dynamics(bearing, lubricant, speed, radial_load, node * temperature_step,
-                              unbalance_mass, model=model,
-                              friction_coefficient=friction_coefficient,
-                              oil_fraction=oil_fraction, warmup_orbits=warmup_orbits,
-                              orbits=orbits, convergence=convergence,
-                              table_retries=table_retries, settle=settle)
+        start = _CACHE.start_near(base, node, reach)
+        t_try = time.process_time()
+        kwargs = dict(model=model, friction_coefficient=friction_coefficient,
+                      oil_fraction=oil_fraction, warmup_orbits=warmup_orbits, orbits=orbits,
+                      convergence=convergence, table_retries=table_retries, settle=settle)
+        try:
+            out, resp = run_dynamics(bearing, lubricant, speed, radial_load,
+                                     node * temperature_step, unbalance_mass, start=start,
+                                     **kwargs)
+        except ConvergenceError:
+            if start is None:
+                raise
+            # the neighbour's state did not carry over: this node from its quasi-static state
+            spent = time.process_time() - t_try
+            out, resp = run_dynamics(bearing, lubricant, speed, radial_load,
+                                     node * temperature_step, unbalance_mass, **kwargs)
+            out = out._replace(cost_s=out.cost_s + spent)
+        s = getattr(resp, "series", None) or {}
+        if reach > 0 and "end_state" in s and "quasi_static_state" in s:
+            _CACHE.keep_start(base, node, CoupledStart(s["quasi_static_state"],
+                                                       s["end_state"],
+                                                       node * temperature_step))
         return out
 
     def neighbour(node: int) -> RibDynamicsHeat:
@@ -344,7 +472,8 @@ def rib_dynamics_heat(bearing: Any, lubricant: Any, speed: float, radial_load: f
 
     return RibDynamicsHeat(*(mix(i) for i in range(6)), float(temperature), cost, runs, model,
                            sum(v.fallbacks for _, v in values),
-                           float(np.mean([v.orbits for _, v in values])))
+                           float(np.mean([v.orbits for _, v in values])),
+                           sum(v.warm_starts for _, v in values))
 
 
 #: how many grid nodes to either side a failed node may borrow its value from
@@ -375,5 +504,5 @@ def _neighbour_node(run: Any, node: int, step: float, exc: Exception) -> RibDyna
 
 
 __all__ = ["CACHE_SIZE", "DEFAULT_CONVERGENCE", "DEFAULT_TABLE_RETRIES",
-           "DEFAULT_TEMPERATURE_STEP", "MODELS",
+           "DEFAULT_TEMPERATURE_STEP", "DEFAULT_WARM_START_NODES", "MODELS", "CoupledStart",
            "RibDynamicsHeat", "cache_info", "clear_cache", "rib_dynamics_heat", "run_dynamics"]
