@@ -733,6 +733,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 loss_rows.extend(rows)
                 if writer:
                     writer.append("losses", rows)
+            sim.log_step(i, t)
     finally:
         bar.close()
     audit = EnergyAudit.concatenate(audits)
@@ -994,6 +995,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
             writer.append("kinematics", kin_rows[-len(sim.bearings):])
             if rows:
                 writer.append("losses", rows)
+        sim.log_step(i)
     tables = {"steady_temperatures": pd.DataFrame(temp_rows),
               "kinematics": pd.DataFrame(kin_rows)}
     if _wants_loss_table(sim.scene):

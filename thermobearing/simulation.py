@@ -49,7 +49,7 @@ import math
 import sys
 import time
 import warnings
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -122,7 +122,14 @@ class Simulation:
     ----------
     scene : the configured study (:func:`thermobearing.scene.load_scene`).
     progress : show a progress bar (default: when stderr is a terminal).
+
+    ``step_log``: a callable given one line per finished schedule step (step i of n, the
+    simulated time, the wall time; :meth:`log_step`), or None (the default). ``thermobearing
+    run`` sets it to print to stderr when stderr is no terminal (no progress bar: a run
+    into a log file said nothing until its end, 30-75 s for the CRB rib example).
     """
+
+    step_log: Callable[[str], None] | None = None
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
@@ -577,6 +584,7 @@ class Simulation:
         check_measured_file(self.scene)
         writer = ResultsWriter(out_dir) if out_dir is not None else None
         t_wall = time.perf_counter()
+        self._t_wall = t_wall
         # absolute file paths: the results folder's scene.toml still finds its files
         scene_toml = with_absolute_paths(self.scene).to_toml()
         if writer is not None:
@@ -626,6 +634,18 @@ class Simulation:
             results.write(out_dir)
             write_report(results, self.scene, Path(out_dir) / "report.html")
         return results
+
+    def log_step(self, i: int, t: float | None = None) -> None:
+        """Give :attr:`step_log` the line of finished step ``i``: ``step 3/6 done (t = 1800
+        of 4200 s simulated), 12.3 s wall`` (``t``: the simulated time at its end [s], None
+        for a run of operating points without time)."""
+        if self.step_log is None:
+            return
+        n = len(self.scene.schedule.steps)
+        when = ("" if t is None else
+                f" (t = {t:.0f} of {self.scene.schedule.duration:.0f} s simulated)")
+        wall = time.perf_counter() - getattr(self, "_t_wall", time.perf_counter())
+        self.step_log(f"step {i + 1}/{n} done{when}, {wall:.1f} s wall")
 
     def _write_stopped(self, out: Path, scene_toml: str, exc: BaseException,
                        wall: float) -> None:
@@ -691,6 +711,7 @@ class Simulation:
                     # the stress and Lambda checks apply to the film rows too
                     self.checks[b.name].record(i, check_film_rows(b.bearing, rows, csr,
                                                                   self.check_limits))
+            self.log_step(i)
         tables = {}
         if kin_rows:
             tables["kinematics"] = pd.DataFrame(kin_rows)

@@ -39,10 +39,14 @@ def run(args: argparse.Namespace) -> int:
     out = Path(args.out) if args.out else Path("results") / name
     progress = None if not args.quiet else False
     sim = Simulation(scene, progress=progress)
+    if not args.quiet and not sys.stderr.isatty():
+        # no progress bar into a file or pipe: one line per finished step instead
+        sim.step_log = _print_step
     preflight(sim, build=False)  # run_coupled checks the node map when it builds the network
     if not args.quiet:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())
+        print(f"writing results to {out}/ as they are computed", flush=True)
     try:
         results = sim.run(out_dir=out)
     except KeyboardInterrupt:
@@ -62,6 +66,10 @@ def run(args: argparse.Namespace) -> int:
     if (out / "loss_breakdown.csv").is_file():
         print(f"loss breakdown, one column per source [W]: {out / 'loss_breakdown.csv'}")
     return 0
+
+
+def _print_step(line: str) -> None:
+    print(line, file=sys.stderr, flush=True)
 
 
 def _print_measured(scene: Any, results: Any) -> None:
