@@ -10,7 +10,11 @@ speed as degrees of freedom,
 :func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's eqs.
 18-19; ``coupled_warmup_orbits`` and ``coupled_orbits`` warm-up and statistics orbits;
 ``coupled_settle``: the points without unbalance warm up until the orbit-mean cage speed
-changes by at most that fraction per orbit, case SOURCE.md "Cage settling"), as
+changes by at most that fraction per orbit, case SOURCE.md "Cage settling";
+``coupled_table_retries``: a table-path run that enters the cage runaway first tries that
+many other table-path trajectories, then the evaluate path, as the rib heat source does,
+default :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_TABLE_RETRIES`; case
+SOURCE.md "Table retries in the runner"), as
 do the load and speed trends, with the reduced model's values beside them (``reduced_*``,
 :func:`thermobearing.skidding.roller_dynamics.simulate_reduced`, quasi-static spins). PV
 statistics: time mean (gated), mean over the time in contact (``pv_contact_*``) and peak
@@ -113,6 +117,13 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     if settle is not None and not (isinstance(settle, (int, float)) and 0.0 < settle < 1.0):
         raise InputError("inputs.coupled_settle", settle, "a relative tolerance in (0, 1)")
 
+    from ..skidding.roller_dynamics_heat import DEFAULT_TABLE_RETRIES
+
+    retries = inputs.get("coupled_table_retries", DEFAULT_TABLE_RETRIES)
+    if (isinstance(retries, bool) or not isinstance(retries, int) or not 0 <= retries <= 10):
+        raise InputError("inputs.coupled_table_retries", retries,
+                         "a whole number of table-path retries in [0, 10]")
+
     def settle_for(mass: float) -> float | None:
         """The warm-up settling tolerance of a point: ``coupled_settle`` without unbalance;
         None (fixed warm-up) with one, whose chaotic motion has no steady cage speed to
@@ -141,7 +152,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                            pocket_dof=pocket_dof, coupling="none")
         try:
             r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
-                                 settle=settle_for(mass))
+                                 settle=settle_for(mass), table_retries=retries)
         except ConvergenceError as exc:
             return failed(f"coupled base point, unbalance {mass * 1e3:g} g, {rib}", exc)
         return {"pv_left": r.pv_left, "pv_right": r.pv_right,
@@ -160,7 +171,8 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                         cache=cache, slide=slide, pocket_dof=pocket_dof, model="coupled",
                         coupling="none",
                         coupled_options={"n_orbits": orbits, "warmup_orbits": warm,
-                                         "settle": settle_for(mass)}))
+                                         "settle": settle_for(mass),
+                                         "table_retries": retries}))
                 except ConvergenceError as exc:
                     rows.append(failed(f"coupled {parameter} = {value:g} (SI), unbalance "
                                        f"{mass * 1e3:g} g", exc))
@@ -243,7 +255,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
                             pocket_dof=pocket_dof, coupling="none")
         try:
             r = simulate_coupled(mr, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
-                                 ring_axial=True)
+                                 ring_axial=True, table_retries=retries)
             ring_rows.append({"pv_left": r.pv_left, "pv_right": r.pv_right,
                               "slip_speed": r.slip_speed})
         except ConvergenceError as exc:
