@@ -76,3 +76,17 @@ def test_operating_points_have_no_time_and_quiet_prints_no_step(tmp_path, capsys
     assert re.search(r"^step 2/2 done, [0-9.]+ s wall$", err, re.M), err
     assert main(["run", str(scene), "--out", str(tmp_path / "b"), "--quiet"]) == 0
     assert "step " not in capsys.readouterr().err
+
+
+def test_a_sweep_into_a_file_prints_a_line_per_case(tmp_path, capsys):
+    scene = _scene(tmp_path, network=False)
+    out = tmp_path / "sweep"
+    assert main(["sweep", str(scene), "--set", "schedule.radial_load=1,2", "-j", "1",
+                 "--out", str(out)]) == 0
+    err = capsys.readouterr().err
+    lines = [x for x in err.splitlines() if x.startswith("sweep: ")]
+    assert [x.split(",")[0] for x in lines] == ["sweep: 1/2 cases done",
+                                                "sweep: 2/2 cases done"], err
+    assert main(["sweep", str(scene), "--set", "schedule.radial_load=1,2,3", "-j", "1",
+                 "--out", str(out), "--quiet"]) == 0  # resumes: one case to run, quiet
+    assert "cases done" not in capsys.readouterr().err
