@@ -189,16 +189,26 @@ def finite_pressure_limit(lubricant, temperature: float, p_max: float) -> float:
     return lo
 
 
+#: upper end of the tabulated pressure range [Pa] (docstring of IsothermalViscosity; the
+#: SKF6304's most loaded ball reaches p_0 = 6.6 GPa at 30 kN radial, 1.8 C)
+EXTENDED_PRESSURE = 8.0e9
+
+
 class IsothermalViscosity:
     """The lubricant's eta(T, p) at one temperature, tabulated in p for speed.
 
     ``ln eta(T0, p)`` of the lubricant's own pressure-viscosity law (owner A) is tabulated on
-    a uniform grid of 4001 points over 0-5 GPa and interpolated linearly (relative error
-    measured 6e-6 for the Roelands law of ISO VG46 at 330 K, tests/unit/skidding/
-    test_ball_fast_path.py; exact for Barus); other temperatures or pressures beyond the
-    grid fall back to the lubricant. The traction law evaluates eta at every quadrature
-    node of every contact in every Newton residual, which otherwise dominates the solver's
-    run time.
+    a uniform grid of step 1.25 MPa (4001 points over 0-5 GPa, continued with the same step
+    to :data:`EXTENDED_PRESSURE`) and interpolated linearly (relative error measured 6e-6 for
+    the Roelands law of ISO VG46 at 330 K, tests/unit/skidding/test_ball_fast_path.py; exact
+    for Barus); other temperatures or pressures beyond the grid fall back to the lubricant.
+    The grid ended at 5 GPa before: contacts above it (SKF6304 beyond about 1.1 C radial,
+    p_0 = 5.7 GPa at 20 kN) fell back to the lubricant, without the analytic Jacobian and its
+    round-off acceptance, and 20 and 22 kN at 50-300 r/min in 20 degC ISO VG46 failed after
+    up to 80 s of fallbacks while 18, 21 and 24 kN converged (tests/unit/
+    test_prop19_ball_energy.py); they converge at the first Newton solve now. The traction
+    law evaluates eta at every quadrature node of every contact in every Newton residual,
+    which otherwise dominates the solver's run time.
 
     In cold oil the law overflows below 5 GPa (ISO VG100 at -37 degC, still liquid by
     :func:`~thermobearing.lubricant_properties.check_liquid_temperature`: Roelands eta is
@@ -208,10 +218,18 @@ class IsothermalViscosity:
     which refuses naming the pressure.
     """
 
-    def __init__(self, lubricant, temperature: float, p_max: float = 5.0e9, n: int = 4001):
+    def __init__(self, lubricant, temperature: float, p_max: float = 5.0e9, n: int = 4001,
+                 extend_to: float = EXTENDED_PRESSURE):
         self.lubricant = lubricant
         self.temperature = float(temperature)
         p_max = finite_pressure_limit(lubricant, self.temperature, p_max)
+        if p_max < extend_to and p_max == 5.0e9 and n == 4001:
+            # the same 1.25 MPa step on to extend_to (or the law's finite limit): the grid
+            # points and so every table value below 5 GPa are those of the 0-5 GPa table
+            step = 5.0e9 / 4000
+            top = finite_pressure_limit(lubricant, self.temperature, extend_to)
+            n = int(math.floor(top / step + 1e-9)) + 1
+            p_max = (n - 1) * step
         self._p = np.linspace(0.0, p_max, n)
         self._ln = np.log(np.asarray(lubricant.dynamic_viscosity(self.temperature, self._p),
                                      float))
