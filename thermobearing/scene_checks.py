@@ -64,11 +64,17 @@ def check_model_names(scene: Scene) -> None:
     if kinematics not in KINEMATICS:
         raise UnknownNameError("models.kinematics", kinematics, KINEMATICS.names())
     sources = models.get("heat_sources", [])
-    for i, name in enumerate([sources] if isinstance(sources, str) else sources):
+    listed = [sources] if isinstance(sources, str) else list(sources)
+    for i, name in enumerate(listed):
+        where = "models.heat_sources" if isinstance(sources, str) else \
+            f"models.heat_sources[{i}]"
         if name not in HEAT_SOURCES:
-            where = "models.heat_sources" if isinstance(sources, str) else \
-                f"models.heat_sources[{i}]"
             raise UnknownNameError(where, name, HEAT_SOURCES.names())
+        if name in listed[:i]:
+            # each listed source ran once per listing: ["churning_cage", "churning_cage"]
+            # booked the cage's churning twice (two loss rows, twice the heat)
+            raise InputError(where, name, f"each heat source once ({name!r} is also "
+                             f"models.heat_sources[{listed.index(name)}])")
     if stepper not in STEPPERS:
         raise UnknownNameError("solver.stepper", stepper, STEPPERS.names())
     if scene.outputs.mode == "transient" and not getattr(STEPPERS.get(stepper), "adaptive",

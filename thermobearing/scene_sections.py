@@ -94,8 +94,14 @@ class BearingSpec:
                                  "preset" else "a bearing TOML file path")
         share = _checked_load_share(sec, _table(f"{sec}.load_share",
                                                  data.get("load_share", {})))
+        name = data.get("name", f"bearing{index + 1}")
+        if isinstance(name, bool) or not isinstance(name, str | int) or not str(name).strip():
+            # name = "" or {} loaded: the bearing's nodes were ".oil", "{}.oil" and its
+            # table rows named by an empty or garbled string
+            raise InputError(f"{sec}.name", name, "a name (text with a visible character: "
+                             "it names the bearing's network nodes and table rows)")
         return cls(
-            name=str(data.get("name", f"bearing{index + 1}")),
+            name=str(name),
             preset=preset,
             path=path,
             overrides=dict(_table(f"{sec}.overrides", data.get("overrides", {}))),

@@ -1,0 +1,64 @@
+"""Scene mistakes a user makes (session-19 fuzz, user-made mutations): a heat source listed
+twice ran twice (two ``churning_cage`` loss rows, twice the cage's churning heat) without a
+word; a bearing named ``""`` or ``{}`` loaded, its nodes then ``.oil`` / ``{}.oil``."""
+
+from __future__ import annotations
+
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.scene import loads_scene
+from thermobearing.scene_checks import check_model_names
+
+SCENE = """
+title = "probe"
+[[bearings]]
+{name}
+preset = "SKF6304"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "1 L/min"
+[schedule]
+speed = "3000 rpm"
+radial_load = "1 kN"
+axial_load = "0 kN"
+step_duration = "1 min"
+steps = [{{}}]
+[models]
+kinematics = "race_control"
+heat_sources = {sources}
+"""
+
+
+def _scene(name: str = 'name = "a"', sources: str = '["raceway_traction"]') -> str:
+    return SCENE.format(name=name, sources=sources)
+
+
+def test_a_heat_source_listed_twice_is_refused_naming_the_second() -> None:
+    scene = loads_scene(_scene(sources='["churning_cage", "raceway_traction", '
+                                       '"churning_cage"]'))
+    with pytest.raises(InputError) as info:
+        check_model_names(scene)
+    assert info.value.field == "models.heat_sources[2]"
+    assert "models.heat_sources[0]" in info.value.allowed
+
+
+def test_distinct_heat_sources_pass() -> None:
+    check_model_names(loads_scene(_scene(sources='["churning_cage", "raceway_traction"]')))
+
+
+@pytest.mark.parametrize("name", ['name = ""', 'name = "   "', "name = {}", "name = []",
+                                  "name = true"])
+def test_a_bearing_without_a_usable_name_is_refused(name: str) -> None:
+    with pytest.raises(InputError) as info:
+        loads_scene(_scene(name=name))
+    assert info.value.field == "bearings[0].name"
+
+
+@pytest.mark.parametrize(("name", "read"), [('name = "Lager-\u00dc \u8ef8\u53d7"',
+                                             "Lager-\u00dc \u8ef8\u53d7"),
+                                            ("name = 3", "3"), ("", "bearing1")])
+def test_names_in_other_scripts_numbers_and_the_default_load(name: str, read: str) -> None:
+    assert loads_scene(_scene(name=name)).bearings[0].name == read
