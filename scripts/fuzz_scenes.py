@@ -1297,11 +1297,11 @@ def measured_mismatch(scene: Any) -> str | None:
     return None
 
 
-def check_scene(scene: Any) -> str | None:
+def check_scene(scene: Any, raises: bool = False) -> str | None:
     """What ``thermobearing check`` does with the scene (model names, preflight, the chain
     with citations, the estimates, the measured file), in this process: None when it
-    passes, the refusal's text when it refuses (raised on; any other exception escapes as
-    the case's defect)."""
+    passes, the refusal's text when it refuses (with ``raises``: the refusal itself, for
+    the caller to classify; any other exception escapes as the case's defect)."""
     from thermobearing.commands._preflight import preflight
     from thermobearing.commands.check import describe_measured
     from thermobearing.errors import ConvergenceError, InputError
@@ -1316,6 +1316,8 @@ def check_scene(scene: Any) -> str | None:
         if scene.measured is not None:
             text += describe_measured(scene)
     except (InputError, ConvergenceError) as exc:
+        if raises:
+            raise
         return str(exc)
     why = garbled(text)
     if why:
@@ -1969,16 +1971,247 @@ def mutate(rng: np.random.Generator, doc: dict[str, Any]) -> tuple[dict[str, Any
     return out, f"{'/'.join(map(str, path))} = {value!r}"
 
 
-def run_mutations(rng: np.random.Generator, doc: dict[str, Any], n: int) -> list[str]:
+#: unit typos a user writes for the generator's units, each meant as the unit it replaces:
+#: accepted, the scene must read the value the unit meant; else a refusal naming its field
+UNIT_TYPOS = {
+    "degC": ("C", "\u00b0C", "\u00baC", "degc", "deg C", "Celsius", "DegC", "\u00b0 C", "deg_C",
+             "degC."),
+    "K": ("k", "\u00b0K", "Kelvin", "kelvins"),
+    "degF": ("F", "\u00b0F", "degf", "deg F"),
+    "rpm": ("RPM", "Rpm", "1/min", "min-1", "min^-1", "U/min", "rpm.", "r.p.m.", "rev/mn"),
+    "r/min": ("R/min", "r/mn", "r / min"),
+    "krpm": ("kRPM", "k rpm", "Krpm", "krev/min"),
+    "rad/s": ("rad/sec", "1/s", "rad s^-1"),
+    "rev/s": ("rps", "Hz", "rev/sec", "1/s"),
+    "N": ("n", "Newton", "N."),
+    "kN": ("KN", "kn", "Kn", "k N", "kN.", "kilo N"),
+    "lbf": ("lb", "lbs", "LBF", "lb-f"),
+    "L/min": ("l/min", "lpm", "LPM", "L/mn", "l/m", "L / min", "ltr/min", "Liter/min"),
+    "L/h": ("l/h", "lph", "L/hr", "l/hour"),
+    "mL/min": ("ml/min", "ccm", "cc/min"),
+    "m**3/s": ("m3/s", "m^3/s", "cbm/s"),
+    "mm": ("MM", "mm.", "mm2", "milimeter", "mm "),
+    "cm": ("CM", "cm."),
+    "m": ("M", "meter", "metre", "mtr"),
+    "inch": ("\"", "in.", "inches", "Inch"),
+    "s": ("sec", "secs", "S", "sek", "Sec"),
+    "min": ("mins", "Min", "minute", "m", "mn", "MIN"),
+    "ms": ("msec", "MS"),
+    "mm**3/h": ("mm3/h", "mm^3/h", "mm\u00b3/hr"),
+    "MPa": ("Mpa", "MPA", "N/mm2", "N/mm\u00b2"),
+}
+#: what goes between the number and its unit instead of one space
+SEPARATOR_TYPOS = ("", "  ", "\u00a0", "\t", "_")
+
+
+def _number_typos(num: str) -> list[str]:
+    """The number ``num`` (as the scene wrote it) as a user might mistype it: a decimal
+    comma, digit groups (comma, space, apostrophe, thin space), the minus sign U+2212, a
+    doubled or trailing point, the letter O for a zero, an exponent with a space."""
+    value = float(num)
+    out = []
+    if "." in num and "e" not in num.lower():
+        out += [num.replace(".", ",", 1), num + ".", num.replace(".", "..", 1)]
+    if abs(value) >= 1000 and value == int(value):
+        digits = str(abs(int(value)))
+        head, rest = digits[:len(digits) % 3 or 3], digits[len(digits) % 3 or 3:]
+        groups = [rest[i:i + 3] for i in range(0, len(rest), 3)]
+        for sep in (",", " ", "'", "\u2009"):
+            out.append(("-" if value < 0 else "") + sep.join([head, *groups]))
+    if value < 0:
+        out.append("\u2212" + num.lstrip("-"))
+    if "0" in num:
+        out.append(num.replace("0", "O", 1))
+    if "e" in num.lower():
+        out.append(num.lower().replace("e", " e", 1))
+    return out
+
+
+def typo_mutate(rng: np.random.Generator, doc: dict[str, Any]
+                ) -> tuple[dict[str, Any], str, tuple | None, str, str] | None:
+    """A copy of the scene document with one quantity string (``"33 L/min"``) mistyped as
+    a user would (:data:`UNIT_TYPOS`, :func:`_number_typos`, :data:`SEPARATOR_TYPOS`) but
+    meant as written: the copy, what changed, the path, the original and the typo; None
+    when the scene has no quantity in a known unit."""
+    import copy
+
+    leaves = []
+    for path in _leaves(doc):
+        value: Any = doc
+        for key in path:
+            value = value[key]
+        m = _QTY.match(value) if isinstance(value, str) else None
+        if m and m.group(2) in UNIT_TYPOS:
+            leaves.append((path, value, m.group(1), m.group(2)))
+    if not leaves:
+        return None
+    path, original, num, unit = leaves[int(rng.integers(0, len(leaves)))]
+    r = rng.random()
+    numbers = _number_typos(num)
+    if r < 0.55:
+        opts = UNIT_TYPOS[unit]
+        typo = f"{num} {opts[int(rng.integers(0, len(opts)))]}"
+    elif r < 0.85 and numbers:
+        typo = f"{numbers[int(rng.integers(0, len(numbers)))]} {unit}"
+    else:
+        typo = f"{num}{SEPARATOR_TYPOS[int(rng.integers(0, len(SEPARATOR_TYPOS)))]}{unit}"
+    out = copy.deepcopy(doc)
+    parent: Any = out
+    for key in path[:-1]:
+        parent = parent[key]
+    parent[path[-1]] = typo
+    return out, f"{'/'.join(map(str, path))} = {typo!r} (meant {original!r})", path, \
+        original, typo
+
+
+#: user-made changes of a scene's structure (``structure_mutate``)
+STRUCTURE_KINDS = ("duplicate", "empty", "swap", "reverse", "unicode", "scale")
+UNICODE_NAMES = ("Lager-\u00dc 1", "\u8ef8\u53d7", "pr\u00fcfstand \u2713", "caf\u00e9 ",
+                 "\u0394T-bearing", "A\u0301ngstr\u00f6m", "name with spaces")
+
+
+def structure_mutate(rng: np.random.Generator, doc: dict[str, Any]
+                     ) -> tuple[dict[str, Any], str] | None:
+    """A copy of the scene document changed as a user might by mistake: a list element
+    duplicated (a step, a heat source, a bearing), a table or list emptied, two quantities
+    of one table swapped (start / stop, ambient / initial, two diameters), a list reversed,
+    a name or title in other scripts, or one number scaled by 1e-6 .. 1e6 in its unit (mm
+    written as m, kN as N). None when the drawn kind finds nothing to change."""
+    import copy
+
+    out = copy.deepcopy(doc)
+    kind = STRUCTURE_KINDS[int(rng.integers(0, len(STRUCTURE_KINDS)))]
+    containers: list[tuple[tuple, Any]] = []
+
+    def walk(node: Any, path: tuple) -> None:
+        if isinstance(node, dict | list):
+            containers.append((path, node))
+            for k, v in (node.items() if isinstance(node, dict) else enumerate(node)):
+                walk(v, (*path, k))
+
+    walk(out, ())
+
+    def pick(items: list) -> Any:
+        return items[int(rng.integers(0, len(items)))] if items else None
+
+    where = lambda path: "/".join(map(str, path)) or "scene"  # noqa: E731
+    if kind == "duplicate":
+        hit = pick([(p, c) for p, c in containers if isinstance(c, list) and c])
+        if hit is None:
+            return None
+        path, lst = hit
+        lst.append(copy.deepcopy(pick(lst)))
+        return out, f"{where(path)}: an element duplicated"
+    if kind == "empty":
+        hit = pick([(p, c) for p, c in containers if p and c])
+        if hit is None:
+            return None
+        path, node = hit
+        node.clear()
+        return out, f"{where(path)} emptied"
+    if kind == "reverse":
+        hit = pick([(p, c) for p, c in containers if isinstance(c, list) and len(c) > 1])
+        if hit is None:
+            return None
+        hit[1].reverse()
+        return out, f"{where(hit[0])} reversed"
+    if kind == "swap":
+        pairs = []
+        for path, node in containers:
+            if not isinstance(node, dict):
+                continue
+            qty = [(k, _QTY.match(v).group(2)) for k, v in node.items()
+                   if isinstance(v, str) and _QTY.match(v)]
+            pairs += [(path, a, b) for i, (a, ua) in enumerate(qty) for b, ub in qty[i + 1:]
+                      if ua == ub and node[a] != node[b]]
+        hit = pick(pairs)
+        if hit is None:
+            return None
+        path, a, b = hit
+        node = out
+        for key in path:
+            node = node[key]
+        node[a], node[b] = node[b], node[a]
+        return out, f"{where(path)}: {a} and {b} swapped"
+    if kind == "unicode":
+        spots = [(p, "name") for p, c in containers if isinstance(c, dict) and "name" in c]
+        spots.append(((), "title"))
+        path, key = pick(spots)
+        node = out
+        for k in path:
+            node = node[k]
+        node[key] = pick(list(UNICODE_NAMES))
+        return out, f"{where((*path, key))} = {node[key]!r}"
+    # scale
+    hits = []
+    for path, node in containers:
+        for k, v in (node.items() if isinstance(node, dict) else enumerate(node)):
+            if isinstance(v, str) and _QTY.match(v) and float(_QTY.match(v).group(1)) != 0:
+                hits.append((path, k))
+    hit = pick(hits)
+    if hit is None:
+        return None
+    path, key = hit
+    node = out
+    for k in path:
+        node = node[k]
+    m = _QTY.match(node[key])
+    factor = float(pick([1e-6, 1e-3, 1e3, 1e6]))
+    node[key] = f"{float(m.group(1)) * factor:.6g} {m.group(2)}"
+    return out, f"{where((*path, key))} = {node[key]!r} (x{factor:g})"
+
+
+def _typo_misread(doc: dict[str, Any], mutated: Any, path: tuple, original: str,
+                  typo: str) -> str | None:
+    """For a typo the scene accepted: where it reads another value than the one meant --
+    the scene's SI values against those of the original (:func:`si_mismatch`) and the typo
+    in the original's unit against its number."""
+    from thermobearing.errors import InputError
+    from thermobearing.scene import dumps_toml, loads_scene
+    from thermobearing.units import to_si
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        plain = loads_scene(dumps_toml(doc), base_dir=ROOT)
+    mismatch = si_mismatch(plain, mutated)
+    if mismatch:
+        return f"accepted typo read as another value: {mismatch}"
+    m = _QTY.match(original)
+    try:
+        read = to_si(typo, m.group(2))
+    except InputError:
+        return None  # a field that does not read through to_si (kept as text)
+    if not math.isclose(read, float(m.group(1)), rel_tol=1e-9):
+        return f"accepted typo {typo!r} read as {read:g} {m.group(2)}, meant {original!r}"
+    return None
+
+
+def run_mutations(rng: np.random.Generator, doc: dict[str, Any], n: int,
+                  notes: list[str] | None = None,
+                  accepted: list[tuple[str, str]] | None = None) -> list[str]:
     """Load and check (``thermobearing check``'s steps, no solve) ``n`` mutated copies of
-    the scene: a refusal must be an InputError naming its field; anything else (a
-    traceback) is returned as a defect line with its mutation."""
+    the scene (:func:`mutate`; user-made typos, :func:`typo_mutate`, and structural
+    mistakes, :func:`structure_mutate`): a refusal must be an InputError naming its field,
+    an accepted typo must read the value meant; anything else (a traceback, garbled check
+    text) is returned as a defect line with its mutation. A refusal whose field is no key
+    of a scene goes to ``notes``; a user-made mutant the check accepted (a typo, a
+    structural mistake) to ``accepted`` as (what, TOML text), for a solve."""
     from thermobearing.errors import ConvergenceError, InputError
     from thermobearing.scene import dumps_toml, loads_scene
 
     defects = []
     for _ in range(n):
-        mutated, what = mutate(rng, doc)
+        typo = None
+        r = rng.random()
+        if r < 0.35:
+            typo = typo_mutate(rng, doc)
+        drawn = structure_mutate(rng, doc) if typo is None and r < 0.6 else None
+        if typo is not None:
+            mutated, what = typo[0], typo[1]
+        elif drawn is not None:
+            mutated, what = drawn
+        else:
+            mutated, what = mutate(rng, doc)
         try:
             text = dumps_toml(mutated)
         except Exception:  # noqa: BLE001 -- a value TOML cannot write: no scene to try
@@ -1986,11 +2219,24 @@ def run_mutations(rng: np.random.Generator, doc: dict[str, Any], n: int) -> list
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                check_scene(loads_scene(text, base_dir=ROOT))
+                scene = loads_scene(text, base_dir=ROOT)
+                garbled_text = check_scene(scene, raises=True)
+            if garbled_text is not None:
+                defects.append(f"mutation {what}: {garbled_text}")
+            elif typo is not None:
+                misread = _typo_misread(doc, scene, *typo[2:])
+                if misread:
+                    defects.append(f"mutation {what}: {misread}")
+                elif accepted is not None:
+                    accepted.append((what, text))
+            elif drawn is not None and accepted is not None:
+                accepted.append((what, text))
         except (InputError, ConvergenceError) as exc:
             outcome, msg = classify_error(exc)
             if outcome == "DEFECT":
                 defects.append(f"mutation {what}: {msg}")
+            elif msg.startswith("(not a scene field)") and notes is not None:
+                notes.append(f"mutation {what}: {msg}")
         except Exception as exc:  # noqa: BLE001 -- every other failure is the defect
             defects.append(f"mutation {what}: {classify_error(exc)[1]}")
     return defects
@@ -2024,6 +2270,12 @@ def main(argv: list[str] | None = None) -> int:
                         help="also load and check (no solve) N copies of each scene with one "
                              "value replaced by another type, size or unit, or deleted "
                              "(0: none; default 3)")
+    parser.add_argument("--mutant-runs", type=int, default=1,
+                        help="also solve up to N of each case's mutants that the check "
+                             "accepted (user-made typos and structural mistakes: a value "
+                             "scaled by 1e-6..1e6, two values swapped, a list element "
+                             "duplicated, a table emptied), classified like a case "
+                             "(0: none; default 1)")
     parser.add_argument("--only", type=str, default="",
                         help="comma list of case indices to run (reproduce a few)")
     args = parser.parse_args(argv)
@@ -2060,9 +2312,12 @@ def main(argv: list[str] | None = None) -> int:
                 and case.seconds < args.time_limit / 4):
             run_calibrate_cli(case, extra_rng, out_dir, args.time_limit)
         if args.mutations:
-            bad = run_mutations(extra_rng, doc, args.mutations)
+            mutants: list[tuple[str, str]] = []
+            bad = run_mutations(extra_rng, doc, args.mutations, case.notes, mutants)
             if bad and case.outcome != "DEFECT":
                 case.outcome, case.message = "DEFECT", "; ".join(bad)[:600]
+            for what, text in mutants[:args.mutant_runs]:
+                run_mutant(runner, case, what, text, args.time_limit)
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "
@@ -2070,6 +2325,20 @@ def main(argv: list[str] | None = None) -> int:
     runner.close()
     print_summary(cases, out_dir)
     return 1 if any(c.outcome == "DEFECT" for c in cases) else 0
+
+
+def run_mutant(runner: Runner, case: Case, what: str, text: str, time_limit: float) -> None:
+    """Solve one accepted mutant of ``case`` (``what`` changed; ``text`` its TOML) like a
+    case: a defect makes the case's defect (its TOML replaced by the mutant's, the
+    reproducer), a refusal or a timeout is a note."""
+    mutant = Case(case.index, case.desc, text)
+    runner.run(mutant, time_limit)
+    case.notes.append(f"mutant solved: {mutant.outcome}")
+    if mutant.outcome == "DEFECT" and case.outcome != "DEFECT":
+        case.outcome, case.message = "DEFECT", f"mutant {what}: {mutant.message}"[:600]
+        case.toml = text
+    elif mutant.outcome in ("REFUSED", "TIMEOUT"):
+        case.notes.append(f"mutant {what}: {mutant.outcome} {mutant.message}"[:300])
 
 
 def print_summary(cases: list[Case], out_dir: Path) -> None:
