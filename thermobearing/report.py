@@ -157,6 +157,10 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
     return _png(fig)
 
 
+#: the sign of the measured-vs-predicted table's mean error, said under the table
+MEAN_ERROR_NOTE = ("errors are predicted - measured at the measured times: a negative mean "
+                   "error is a model that runs colder than the sensor")
+
 #: the loss-map note on a grid point without a result: a sweep's case that failed or has
 #: not run yet, or a speed x load combination that no step of a run ran
 NOT_RUN = "failed or not run"
@@ -556,7 +560,8 @@ def write_report(results: Results, scene: Any, path: Path | str) -> Path:
         measured = read_measured(scene)
         name = "measured vs predicted"
         extra[name] = temperature_errors(temps, measured, scene.measured.columns)
-        notes[name] = comparison_notes(measured, temps, scene.measured.columns)
+        notes[name] = [MEAN_ERROR_NOTE,
+                       *comparison_notes(measured, temps, scene.measured.columns)]
     text = html_report(results, scene.title, extra, scene=scene, table_notes=notes)
     out = Path(path)
     out.write_text(text, encoding="utf-8")

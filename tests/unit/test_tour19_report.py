@@ -111,3 +111,18 @@ def test_the_loss_temperature_note_names_the_column_it_refers_to():
 
     note = loss_temperature_note({"temperatures": pd.DataFrame()}, scene=None)
     assert "time [s]" in note and "losses.csv" in note
+
+
+def test_the_report_says_the_sign_of_the_mean_error(tmp_path):
+    from thermobearing.report import MEAN_ERROR_NOTE, write_report
+    from thermobearing.results import Results
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_synthetic_measured")
+    t = np.arange(0.0, 3601.0, 60.0)
+    temps = pd.DataFrame({"time [s]": t, "drive_end.housing [degC]": 35.0 + t / 600.0,
+                          "non_drive_end.housing [degC]": 35.0 + t / 600.0})
+    path = write_report(Results(tables={"temperatures": temps}), scene,
+                        tmp_path / "report.html")
+    text = path.read_text(encoding="utf-8")
+    assert "mean error [K]" in text and MEAN_ERROR_NOTE in text

@@ -23,7 +23,7 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError
-from ..scene import load_scene
+from ._preflight import load_scene_argument
 
 NAME = "calibrate"
 HELP = "fit scene parameters (e.g. network.parameters.h_oil) to the measured temperatures"
@@ -66,7 +66,7 @@ def _pairs(items: list[str], option: str) -> dict[str, str]:
 def run(args: argparse.Namespace) -> int:
     from ..calibrate import calibrate
 
-    scene = load_scene(args.scene)
+    scene = load_scene_argument(args.scene)
     fit = [p.strip() for group in args.fit for p in group.split(",") if p.strip()]
     x0 = _pairs(args.x0, "--x0")
     bounds = {}

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from ..scene import load_scene
 from ..scene_checks import check_model_names
+from ._preflight import load_scene_argument
 
 NAME = "check"
 HELP = "validate a scene and print the model chain that will run, with citations"
@@ -19,7 +19,7 @@ def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
     from ._preflight import preflight
 
-    scene = load_scene(args.scene)
+    scene = load_scene_argument(args.scene)
     check_model_names(scene)
     sim = Simulation(scene, progress=False)
     preflight(sim)

@@ -14,9 +14,9 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ThermobearingError
-from ..scene import load_scene, with_absolute_paths
+from ..scene import with_absolute_paths
 from ..scene_checks import check_model_names
-from ._preflight import preflight
+from ._preflight import load_scene_argument, preflight
 
 NAME = "run"
 HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and write results"
@@ -33,7 +33,7 @@ def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
 
     # absolute file paths: the results folder's scene.toml (read by `report`) must find them
-    scene = with_absolute_paths(load_scene(args.scene))
+    scene = with_absolute_paths(load_scene_argument(args.scene))
     check_model_names(scene)
     name = Path(args.scene).stem if args.scene else "qj1044_rig"
     out = Path(args.out) if args.out else Path("results") / name

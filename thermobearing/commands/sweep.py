@@ -17,9 +17,9 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..scene import load_scene
 from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
+from ._preflight import load_scene_argument
 
 NAME = "sweep"
 HELP = "sweep scene parameters (cartesian product), locally or on dask, resumable"
@@ -52,7 +52,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    scene = load_scene(args.scene)
+    scene = load_scene_argument(args.scene)
     check_model_names(scene)
     # what `run` checks before solving anything, once for the base scene (a case only
     # changes values, which expand() validates)
