@@ -126,3 +126,19 @@ def test_the_report_says_the_sign_of_the_mean_error(tmp_path):
                         tmp_path / "report.html")
     text = path.read_text(encoding="utf-8")
     assert "mean error [K]" in text and MEAN_ERROR_NOTE in text
+
+
+def test_a_sweep_whose_every_case_is_flagged_says_so_instead_of_listing_six():
+    """A flow x speed sweep of the default rig: its first steps skid at every flow and
+    speed, and the report named the first six of 20 cases 'and 14 more'."""
+    from thermobearing.commands.report import flagged_cases
+
+    df = pd.DataFrame({"flow [L/min]": [15.0, 15.0, 33.0, 33.0],
+                       "n [rpm]": [600.0, 1800.0, 600.0, 1800.0],
+                       "steps over skid limit [-]": [2, 5, 2, 4]})
+    (note,) = flagged_cases(df, ["flow [L/min]", "n [rpm]"])
+    assert note.startswith("4 of 4 cases have steps with cage skidding")
+    assert note.endswith(": every case, 2 to 5 steps each")
+    (same,) = flagged_cases(df.assign(**{"steps over skid limit [-]": 3}),
+                            ["flow [L/min]", "n [rpm]"])
+    assert same.endswith(": every case, 3 steps each")

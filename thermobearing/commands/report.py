@@ -204,8 +204,10 @@ _FLAGS = {"steps over skid limit [-]": "cage skidding or over-skidding beyond th
 def flagged_cases(df: pd.DataFrame, pcols: list[str]) -> list[str]:
     """One note per operating check that flags steps in some cases (the summary's
     ``steps over skid limit [-]`` and its stress and film siblings), naming how many cases
-    and the first few by their swept values: the losses of those points are of a bearing
-    outside the check's limit (a skidding cage, an overloaded contact, a thin film)."""
+    and the first few by their swept values (when every case is flagged, how many steps
+    each: a list of the first six of 20 flagged cases said nothing): the losses of those
+    points are of a bearing outside the check's limit (a skidding cage, an overloaded
+    contact, a thin film)."""
     notes = []
     for col, what in _FLAGS.items():
         if col not in df:
@@ -216,7 +218,13 @@ def flagged_cases(df: pd.DataFrame, pcols: list[str]) -> list[str]:
         named = "; ".join(", ".join(f"{c} = {_fmt(v)}" for c, v in zip(
             pcols, row, strict=True)) for row in hit[pcols].itertuples(index=False,
                                                                        name=None))
-        if len(hit) > 6:
+        if len(hit) == len(df) > 1:
+            # every case: naming the first six of them says nothing
+            counts = pd.to_numeric(hit[col], errors="coerce")
+            named = (f"every case, {_fmt(counts.min())} to {_fmt(counts.max())} steps each"
+                     if counts.min() != counts.max() else
+                     f"every case, {_fmt(counts.min())} steps each")
+        elif len(hit) > 6:
             named = "; ".join(named.split("; ")[:6]) + f" and {len(hit) - 6} more"
         notes.append(f"{len(hit)} of {len(df)} cases have steps with {what} (summary "
                      f"column '{col}'; limits from the scene's [checks], else the defaults): "
