@@ -159,7 +159,15 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
     def fill_clearance(table: str, matters: str) -> None:
         """The mid-range of the ISO 5753-1 Normal group of the bore (when not given)."""
         if "diametral_clearance" not in out:
-            lo, hi = normal_clearance(table, d)
+            try:
+                lo, hi = normal_clearance(table, d)
+            except InputError as exc:
+                # named as the config's key (the message named "diametral_clearance" alone,
+                # no key of the scene or the file); a bare bore is metres: bore = 30 is 30 m
+                bare = isinstance(data["bore"], int | float)
+                raise InputError(f"{origin}.diametral_clearance", None, exc.allowed + (
+                    f"; bore = {data['bore']!r} is a bare number, read in m: write e.g. "
+                    f"\"{data['bore']} mm\"" if bare else "")) from None
             fill("diametral_clearance", 0.5 * (lo + hi),
                  f"mid-range of the ISO 5753-1 Normal (CN) group for a {d * 1e3:g} mm bore, "
                  f"{lo * 1e6:g}-{hi * 1e6:g} um; give the measured or the C3/C4 value where "
@@ -168,6 +176,10 @@ def complete_from_catalogue(data: Mapping[str, Any], *, origin: str = "bearing"
     d = _si(data, "bore", "length", origin)
     D_out = _si(data, "outer_diameter", "length", origin)
     B = _si(data, "width", "length", origin)
+    for key, value in (("bore", d), ("outer_diameter", D_out), ("width", B)):
+        if not value > 0.0:
+            # width = "0 mm" was refused as "cage.width = 0.0" (the estimated cage's)
+            raise InputError(f"{origin}.{key}", data[key], "a length > 0")
     dm = 0.5 * (d + D_out)
     fill("pitch_diameter", dm, f"d_m = (d + D)/2 = {dm * 1e3:.4g} mm, the mean diameter of "
          "the SKF friction model; a series' true pitch diameter differs by a few percent")
