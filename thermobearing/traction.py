@@ -483,29 +483,30 @@ def fit_four_parameter(mu_zero: float, mu_max: float, slip_speed_at_max: float,
     d = mu_infinity
     target = mu_max - mu_infinity
     um = slip_speed_at_max
-    if a == 0.0:
-        return 0.0, math.e * target / um, 1.0 / um, d
-    # solved for t = |1 - s| (not s): near s = 1 (|A| << mu_max - mu_inf) B = C A / (1 - s)
-    # needs 1 - s to full relative precision; an absolute tolerance on s lost it (A = 1e-14
-    # put the peak 2.4 % off mu_max)
+    if abs(a) <= 1e-200 * target:
+        # A = 0 (or so small against the peak that 1 - s underflows): s = 1, B = e target / u_m;
+        # A is kept, so mu(0) = mu_zero exactly and mu(u_m) = mu_max to A / e
+        return a, math.e * target / um, 1.0 / um, d
+    # solved for y = ln t, t = |1 - s| (not for s): near s = 1 (|A| << mu_max - mu_inf)
+    # B = C A / (1 - s) needs 1 - s to full relative precision; an absolute tolerance on s
+    # lost it (A = 1e-14 put the peak 2.4 % off mu_max), and bisection in t itself does not
+    # reach t ~ 1e-38 in brentq's 100 iterations
     ln_ratio = math.log(abs(a)) - math.log(target)
     if a > 0:
-        # s = 1 - t in (0, 1): a e^-s/(1-s) = target  <=>  ln t - t = ln(a/target) - 1,
-        # ln t - t rises from -inf (t -> 0) to -1 (t = 1); the root has ln(a/target) < 0
-        def g(t: float) -> float:
-            return math.log(t) - t - ln_ratio + 1.0
-        t = brentq(g, 1e-300, 1.0, xtol=1e-300, rtol=1e-15)
-        s = 1.0 - t
+        # s = 1 - t in (0, 1): a e^-s/(1-s) = target  <=>  y - e^y = ln(a/target) - 1,
+        # rising on y < 0 from -inf to -1; ln(a/target) < 0, so the root has y < 0
+        def g(y: float) -> float:
+            return y - math.exp(y) - ln_ratio + 1.0
+        y = brentq(g, ln_ratio - 2.0, 0.0, xtol=1e-15, rtol=1e-15)
     else:
-        # s = 1 + t, t > 0: |a| e^-s/(s-1) = target  <=>  ln t + t = ln(|a|/target) - 1,
-        # ln t + t rises from -inf to +inf
-        def g(t: float) -> float:
-            return math.log(t) + t - ln_ratio + 1.0
-        hi = 1.0
-        while g(hi) < 0:
-            hi *= 2.0
-        t = brentq(g, 1e-300, hi, xtol=1e-300, rtol=1e-15)
-        s = 1.0 + t
+        # s = 1 + t, t > 0: |a| e^-s/(s-1) = target  <=>  y + e^y = ln(|a|/target) - 1,
+        # rising from -inf to +inf
+        def g(y: float) -> float:
+            return y + math.exp(y) - ln_ratio + 1.0
+        lo = min(ln_ratio - 2.0, -1.0)
+        y = brentq(g, lo, max(ln_ratio, lo + 1.0), xtol=1e-15, rtol=1e-15)
+    t = math.exp(y)
+    s = 1.0 - t if a > 0 else 1.0 + t
     c = s / um
     b = c * a / t if a > 0 else -c * a / t
     return a, b, c, d
