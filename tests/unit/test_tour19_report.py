@@ -142,3 +142,25 @@ def test_a_sweep_whose_every_case_is_flagged_says_so_instead_of_listing_six():
     (same,) = flagged_cases(df.assign(**{"steps over skid limit [-]": 3}),
                             ["flow [L/min]", "n [rpm]"])
     assert same.endswith(": every case, 3 steps each")
+
+
+def test_the_cage_speed_caption_says_which_state_it_draws():
+    from thermobearing.report import _caption
+
+    text = _caption("cage_speed_ratio")
+    assert "each step's first solved state" in text and "skid warnings" in text
+
+
+def test_a_transient_kinematics_table_says_its_rows_are_each_steps_first_state():
+    from thermobearing.report import KINEMATICS_ROWS_NOTE, html_report
+    from thermobearing.results import Results
+
+    kin = pd.DataFrame({"step": [0], "time [s]": [0.0], "bearing": ["b"],
+                        "cage speed ratio [-]": [0.4]})
+    temps = pd.DataFrame({"time [s]": [0.0, 60.0], "b.oil [degC]": [35.0, 36.0]})
+    text = html_report(Results(tables={"kinematics": kin, "temperatures": temps}), "t")
+    import html
+
+    note = html.escape(KINEMATICS_ROWS_NOTE)
+    assert note in text
+    assert note not in html_report(Results(tables={"kinematics": kin}), "t")
