@@ -55,10 +55,48 @@ HOUSING_MATERIAL_DEFAULT = "STEEL_52100"
 SHAFT_NODE = "shaft"
 
 
-def _material(m):
+def _material(m, field: str = "housing_material"):
+    """The material preset ``m`` (or a Material); errors name the template's ``field``
+    (they named ``material``, which the scene's [network] table does not have)."""
+    from ..errors import UnknownNameError
     from ..materials import get_material
 
-    return get_material(m)
+    try:
+        return get_material(m)
+    except UnknownNameError as exc:
+        raise UnknownNameError(field, m, exc.known) from None
+    except InputError as exc:
+        if type(exc) is not InputError:
+            raise
+        raise InputError(field, m, exc.allowed) from None
+
+
+def _fraction(field: str, value: Any) -> float:
+    """A fraction in [0, 1] given as a number or a dimensionless quantity (``"30 %"``:
+    a string reached the comparison as a TypeError)."""
+    from ..units import to_si
+
+    f = to_si(value, "dimensionless", field=field)
+    if not 0.0 <= f <= 1.0:
+        raise InputError(field, value, "a fraction in [0, 1]")
+    return f
+
+
+def _check_coefficients(**coefficients: float | None) -> None:
+    """Heat transfer coefficients [W/(m^2 K)] against the limits of their conductance
+    (:class:`Convection`; ``fit_conductance``: :class:`ContactFit`), named as the template's
+    parameter: ``fit_conductance = 0`` was refused as ``contact_fit.contact_conductance``."""
+    from .conductances import ContactFit
+
+    for name, h in coefficients.items():
+        if h is None:
+            continue
+        try:
+            (ContactFit if name == "fit_conductance" else Convection)(h, 1.0)
+        except InputError as exc:
+            if type(exc) is not InputError:
+                raise
+            raise InputError(name, h, exc.allowed) from None
 
 
 def _contact_axes(bearing, ball_load: float) -> dict[str, tuple[float, float]]:
@@ -237,8 +275,7 @@ def four_node_paper002(
                 shaft_diameter=shaft_diameter, shaft_length=shaft_length, ball_load=ball_load)
     if oil_flow < 0 or not math.isfinite(oil_flow):
         raise InputError("oil_flow", oil_flow, "a flow >= 0 m^3/s")
-    if not 0.0 <= oil_fill <= 1.0:
-        raise InputError("oil_fill", oil_fill, "a fraction in [0, 1]")
+    oil_fill = _fraction("oil_fill", oil_fill)
     if housing_outer_diameter <= bearing.outer_diameter:
         raise InputError("housing_outer_diameter", housing_outer_diameter,
                          f"a diameter > the bearing outer diameter {bearing.outer_diameter} m")
@@ -361,6 +398,7 @@ def seven_node(
     (pi D_Lo L_h as in paper 002) and both cage cylinders (pi (d_c,in + d_c,out) w_c); cage
     heat capacity from its mass. Roles: outer_ring, inner_ring, elements, cage, oil.
     """
+    _check_coefficients(fit_conductance=fit_conductance)
     if h_oil == 0.0:
         # the cage node's one edge is its oil convection: without it the cage has no path
         # to a fixed temperature (the network check named node 'a.cage', no parameter)
