@@ -100,6 +100,23 @@ are of the generator of their date):
   calibrated scene must load and pass ``check``; ``--mutations`` (default 3) copies of
   each scene with one value replaced by another type, size or unit, or deleted, loaded and
   checked without a solve: anything but a refusal naming its field is a defect.
+- 2026-11-24, session 19: the mutations also make a user's mistakes (:func:`typo_mutate`,
+  :func:`structure_mutate`): unit typos meant as the unit they replace (``35 C``, ``°C``,
+  ``degc``, ``1.8 kRPM``, ``1/min``, ``KN``, ``lbs``, ``l/min``, ``lpm``, ``mins``, ``m``
+  for min ...), number typos (decimal comma, digit groups with comma / space / apostrophe /
+  thin space, the minus sign U+2212, a doubled point, the letter O for a zero) and other
+  separators (none, two spaces, no-break space, tab, underscore): a typo the scene accepts
+  must read the value meant (:func:`_typo_misread`), else it must be refused naming its
+  field; structural mistakes: a list element duplicated (a step, a heat source, a
+  bearing), a table or list emptied, two quantities of one table swapped (start / stop,
+  ambient / initial, two diameters), a list reversed, names and titles in other scripts, a
+  number scaled by 1e-6 .. 1e6 in its unit. ``thermobearing check``'s own refusals are
+  classified too (a field that is no scene key goes to the notes). ``--mutant-runs N``
+  (default 1) solves up to N accepted user-made mutants of each case like a case (a defect
+  is the case's, with the mutant as reproducer; refusals and timeouts are notes, their TOML
+  written as ``DIR/case_<n>_mutant<k>.toml``); a mutant that keeps the physics (bearings,
+  sources or outputs reversed, a bearing renamed) must keep the case's outcome (else a
+  note).
 
 Usage::
 
@@ -2316,8 +2333,8 @@ def main(argv: list[str] | None = None) -> int:
             bad = run_mutations(extra_rng, doc, args.mutations, case.notes, mutants)
             if bad and case.outcome != "DEFECT":
                 case.outcome, case.message = "DEFECT", "; ".join(bad)[:600]
-            for what, text in mutants[:args.mutant_runs]:
-                run_mutant(runner, case, what, text, args.time_limit)
+            for k, (what, text) in enumerate(mutants[:args.mutant_runs]):
+                run_mutant(runner, case, what, text, args.time_limit, out_dir, k)
         cases.append(case)
         print(f"{i:4d} {case.outcome:8s} {case.seconds:6.1f}s {desc['bearings']:>22s} "
               f"{desc['kinematics']:12s} {desc['outputs']:19s} {desc['supply']:11s} "
@@ -2327,13 +2344,25 @@ def main(argv: list[str] | None = None) -> int:
     return 1 if any(c.outcome == "DEFECT" for c in cases) else 0
 
 
-def run_mutant(runner: Runner, case: Case, what: str, text: str, time_limit: float) -> None:
+def run_mutant(runner: Runner, case: Case, what: str, text: str, time_limit: float,
+               out_dir: Path | None = None, k: int = 0) -> None:
     """Solve one accepted mutant of ``case`` (``what`` changed; ``text`` its TOML) like a
     case: a defect makes the case's defect (its TOML replaced by the mutant's, the
-    reproducer), a refusal or a timeout is a note."""
+    reproducer), a refusal or a timeout is a note, its TOML written to
+    ``out_dir/case_<n>_mutant<k>.toml``."""
     mutant = Case(case.index, case.desc, text)
     runner.run(mutant, time_limit)
+    if out_dir is not None and mutant.outcome != "OK":
+        (out_dir / f"case_{case.index:04d}_mutant{k}.toml").write_text(
+            f"# mutant of case {case.index}: {what}\n{text}", encoding="utf-8")
     case.notes.append(f"mutant solved: {mutant.outcome}")
+    # a change that keeps the physics (the order of bearings, sources or outputs, a
+    # bearing's name) must keep the outcome
+    same_physics = ("reversed" in what and "steps" not in what) or "/name = " in what
+    if same_physics and "TIMEOUT" not in (mutant.outcome, case.outcome) \
+            and mutant.outcome != case.outcome:
+        case.notes.append(f"mutant {what}: outcome {mutant.outcome}, the scene's "
+                          f"{case.outcome} ({mutant.message[:150]})")
     if mutant.outcome == "DEFECT" and case.outcome != "DEFECT":
         case.outcome, case.message = "DEFECT", f"mutant {what}: {mutant.message}"[:600]
         case.toml = text
