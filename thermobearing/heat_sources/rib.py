@@ -31,7 +31,8 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   end state of the nearest node of its operating state already run, at most that many
   grid steps away (0: every node from the quasi-static state): 2 orbits instead of 3 at
   5000-20000 r/min (heat within 0.02 %), 2-3 instead of 7 at 30000 r/min in hot oil (400 K,
-  where the weakly damped cage creeps; heat within the settling test's 0.2-0.3 %)
+  where the weakly damped cage creeps; cold and warm both within the settling test's
+  residue of a long run's heat, 0.2-0.75 % at 400-440 K, on opposite sides)
   (:mod:`thermobearing.skidding.roller_dynamics_heat`, "Warm start").
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
