@@ -163,3 +163,21 @@ def test_warm_start_shortens_the_hot_oil_cage_creep(crb):
     # both windows hold the settled cage (20-orbit value 1343.7 rad/s) within 0.2 %
     for resp in (resp_cold, resp_warm):
         assert float(np.mean(resp.series["cage_speed"])) == pytest.approx(1343.7, rel=2e-3)
+
+
+@pytest.mark.parametrize("bad", [1.5, -1, 11])
+def test_heat_source_refuses_a_bad_warm_start_option(crb, bad):
+    from thermobearing.heat_sources import HEAT_SOURCES, HeatContext
+    from thermobearing.skidding.roller import solve_roller
+    from thermobearing.state import OilSupply, OperatingPoint
+
+    b, lub = crb
+    w = 20000 * RPM
+    kin = solve_roller(b, lub, w, 3000.0, 0.0, 362.0).kinematic_state
+    ctx = HeatContext.isothermal(
+        362.0, bearing=b, lubricant=lub,
+        supply=OilSupply(method="jet", flow_rate=1e-5, inlet_temperature=353.15, level=None),
+        operating=OperatingPoint(inner_speed=w, radial_load=3000.0, axial_load=0.0),
+        kinematics=kin, options={"rib_friction": {"warm_start_nodes": bad}})
+    with pytest.raises(InputError, match=r"options\[rib_friction\]\.warm_start_nodes"):
+        HEAT_SOURCES.get("rib_friction")(ctx)
