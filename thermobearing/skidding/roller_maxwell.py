@@ -189,7 +189,10 @@ def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus
     computed here: the Maxwell film of :func:`maxwell_hertz_traction` (G [Pa]; None: viscous)
     under the Hertz-zone pressure ``film_pressure`` ("hertz" or "regime_min",
     :func:`thermobearing.skidding.roller_pressure.hertz_zone_pressure`); everything else
-    (film, inlet/outlet Newtonian shear, Poiseuille and rolling forces) comes from ``base``."""
+    (film, inlet/outlet Newtonian shear, Poiseuille and rolling forces) comes from ``base``.
+    An exact sliding speed ``slide`` (keyword of ``base``, the slide-variable solve of
+    :mod:`~thermobearing.skidding.roller_slides`) shears the Hertz zone too; the model takes
+    it when ``base`` does (``exact_slide``)."""
     from .roller_pressure import FILM_PRESSURE_MODELS, hertz_zone_pressure
 
     if shear_modulus is not None:
@@ -215,8 +218,13 @@ def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus
             pres = hertz_zone_pressure(film_pressure, xb, side.max_pressure, side.half_width,
                                        np.asarray(load, dtype=float) / length, 2.0 * ue,
                                        radius, kw["eta0"])
+        # the sliding speed given exactly (the slide-variable solve, ``slide`` of the base
+        # model) or the difference of the surface speeds
+        slide = kw.get("slide")
+        v = ur - uro if slide is None else np.broadcast_to(np.asarray(slide, dtype=float),
+                                                           np.broadcast(ur, uro).shape)
         f_hz, df_hz = maxwell_hertz_traction(
-            ur - uro, ue, side.max_pressure, side.half_width, side.film_thickness, length,
+            v, ue, side.max_pressure, side.half_width, side.film_thickness, length,
             traction_law, temperature, shear_modulus, pressure=pres)
         return LineContactForces(
             traction=side.traction + f_hz, dtraction_dslide=side.dtraction_dslide + df_hz,
@@ -224,4 +232,5 @@ def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus
             entrainment_sign=side.entrainment_sign, film_thickness=side.film_thickness,
             half_width=side.half_width, max_pressure=side.max_pressure, hertz_traction=f_hz)
 
+    forces.exact_slide = getattr(base, "exact_slide", False)  # type: ignore[attr-defined]
     return forces

@@ -164,7 +164,7 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
 
 def exact_slides_supported(model: RollerModel) -> bool:
     """Whether :func:`evaluate` can pass exact slides to the model's contact forces: the
-    closed-form drag model (with or without a traction curve), without the Maxwell /
-    film-pressure options (their Hertz-zone integral takes the speeds' difference)."""
-    return (bool(getattr(model.contact_forces, "exact_slide", False))
-            and model.fluid_shear_modulus is None and model.film_pressure == "hertz")
+    closed-form drag model, with or without a traction curve, the Maxwell film
+    (``fluid_shear_modulus``) or the ``film_pressure`` option (their Hertz-zone integral,
+    :mod:`~thermobearing.skidding.roller_maxwell`, takes the exact slide too)."""
+    return bool(getattr(model.contact_forces, "exact_slide", False))
