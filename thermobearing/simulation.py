@@ -733,16 +733,28 @@ class Simulation:
         if kin is not None and not kin.empty and solved:
             lines.extend(_first_csr_lines(kin, self.checks,
                                           ("kinematics", "race_control") in
-                                          [tuple(x)[:2] for x in results.chain]))
+                                          [tuple(x)[:2] for x in results.chain],
+                                          steady="steady_temperatures" in results.tables))
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
             per_step = losses.groupby(["step", "bearing"])["power [W]"].sum()
             lines.append(f"total loss per bearing: {per_step.min():.0f} - {per_step.max():.0f} W")
         temps = results.tables.get("temperatures")
+        steady = results.tables.get("steady_temperatures")
         if temps is not None and not temps.empty:
             cols = [c for c in temps.columns if c.endswith("[degC]")]
             lines.append("final temperatures: " + ", ".join(
                 f"{c.replace(' [degC]', '')} {temps[c].iloc[-1]:.1f} degC" for c in cols))
+        elif steady is not None and not steady.empty:
+            # a steady run printed no temperature at all; its hottest step and its last
+            cols = [c for c in steady.columns if c.endswith("[degC]")]
+            hot = int(steady[cols].max(axis=1).to_numpy(dtype=float).argmax())
+            for what, k in (("hottest steady state", hot), ("last steady state", -1)):
+                row = steady.iloc[k]
+                lines.append(f"{what} (step {int(row['step'])}): " + ", ".join(
+                    f"{c.replace(' [degC]', '')} {row[c]:.1f} degC" for c in cols))
+                if hot == len(steady) - 1:
+                    break
         energy = results.tables.get("energy")
         if energy is not None and not energy.empty:
             last = energy.iloc[-1]
@@ -766,14 +778,15 @@ class Simulation:
 
 
 def _first_csr_lines(kin: pd.DataFrame, checks: Mapping[str, Any] | None = None,
-                     race_control: bool = False) -> list[str]:
+                     race_control: bool = False, steady: bool = False) -> list[str]:
     """The cage speed ratio at each bearing's first turning step and the over-skidding
     range: a step at rest has no ratio (NaN), so it is skipped, not printed as ``nan``.
     The range is over every solved state (``checks``, the run's operating-check logs:
     :func:`.simulation_tables.over_skidding_range`), so that it agrees with the skid
     warnings; it gave the kinematics table's range, each step's first state (NU 214 at
     8000 r/min: min -37.8 % beside a warning of -44.7 % at the same step). Race control
-    rolls by construction, which the line says."""
+    rolls by construction, which the line says. A steady run's rows are its steady states
+    (``steady``), each step's one state."""
     csr, theo = "cage speed ratio [-]", "theoretical cage speed ratio [-]"
     parts, later = [], False
     for name, rows in kin.groupby("bearing", sort=False):
@@ -795,6 +808,9 @@ def _first_csr_lines(kin: pd.DataFrame, checks: Mapping[str, Any] | None = None,
     elif race_control:
         skid = (f"over-skidding: max {span[0]:+.2f} %, min {span[1]:+.2f} % (race control: "
                 "the cage rolls by construction)")
+    elif steady:
+        skid = (f"over-skidding at the steady states: max {span[0]:+.2f} %, min "
+                f"{span[1]:+.2f} %")
     else:
         skid = (f"over-skidding over every solved state: max {span[0]:+.2f} %, min "
                 f"{span[1]:+.2f} % (kinematics.csv: each step's first state)")

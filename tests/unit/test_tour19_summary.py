@@ -94,3 +94,30 @@ def test_terminal_and_sweep_summaries_agree_with_the_skid_warning():
     assert got < first - 1.0  # the step's first state skids less than its worst
     summary = summarize_scene(NU214)
     assert summary["min over-skidding [%]"] == pytest.approx(got, abs=0.006)
+
+
+def test_a_steady_run_checks_its_steady_states_and_prints_its_temperatures():
+    """A steady run's skid warning took the fixed-point iterates' CSR (not states the
+    bearing runs in), the terminal called its rows "each step's first state" and printed
+    no temperature."""
+    text = NU214.replace('want = ["temperatures", "losses", "kinematics"]',
+                         'mode = "steady"\nwant = ["temperatures", "losses", "kinematics"]')
+    text = text.replace('steps = [{ speed = "8000 rpm" }]',
+                        'steps = [{ speed = "8000 rpm" }, { speed = "2000 rpm" }]')
+    sim = Simulation(loads_scene(text), progress=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = sim.run()
+    kin = res.tables["kinematics"]
+    for i, states in sim.checks["nu"].steps.items():
+        (state,) = states  # the steady state only
+        assert state.csr == pytest.approx(float(kin["cage speed ratio [-]"].iloc[i]),
+                                          rel=1e-12)
+    out = sim.summary_text(res)
+    lo = float(kin["over-skidding [%]"].min())
+    assert "over-skidding at the steady states: max " in out and f"min {lo:+.2f} %" in out
+    assert "each step's first state" not in out
+    steady = res.tables["steady_temperatures"]
+    hot = int(steady["nu.rollers [degC]"].to_numpy().argmax())
+    assert f"hottest steady state (step {hot}): nu.rollers " in out
+    assert "last steady state (step 1)" in out or hot == 1
