@@ -79,3 +79,25 @@ def test_most_loaded_ball_rises_with_radial_load(name, frac, more):
     q1 = float(np.max(ball_load_distribution(b, fr, 0.0).inner_load))
     q2 = float(np.max(ball_load_distribution(b, fr * more, 0.0).inner_load))
     assert q2 > q1
+
+
+@settings(max_examples=60, deadline=None)
+@given(z=st.integers(8, 40), clearance=st.one_of(st.just(0.0), st.floats(1e-7, 2e-4)),
+       load=st.floats(1.0, 5e5), body=st.one_of(st.just(0.0), st.floats(0.1, 2000.0)),
+       more=st.floats(1.1, 3.0))
+def test_roller_loads_mirror_symmetric_and_rising(z, clearance, load, body, more):
+    """Roller bearing under F_r along azimuth 0 (roller 0 under the load): Q(psi) = Q(-psi),
+    no sideways ring displacement, and the most loaded roller carries more under more load."""
+    from thermobearing.hertz import line_contact_stiffness
+    from thermobearing.loads_roller import roller_load_distribution
+
+    k = float(line_contact_stiffness(0.013))
+    ld = roller_load_distribution(z, clearance, load, k, k, body_force=body)
+    j = _mirror_index(ld.azimuth)
+    slack = 1e-9 * max(load, float(np.max(ld.outer_load))) + 1e-9
+    np.testing.assert_allclose(ld.inner_load[j], ld.inner_load, rtol=0, atol=slack)
+    np.testing.assert_allclose(ld.outer_load[j], ld.outer_load, rtol=0, atol=slack)
+    assert abs(float(ld.ring_displacement[1])) <= 1e-9 * abs(float(ld.ring_displacement[0])) \
+        + 1e-15
+    ld2 = roller_load_distribution(z, clearance, load * more, k, k, body_force=body)
+    assert np.max(ld2.inner_load) > np.max(ld.inner_load)
