@@ -357,6 +357,13 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
         ".warn{color:#a40}.note{color:#555;font-size:12px}</style></head><body>",
         f"<h1>{esc(title)}</h1>",
     ]
+    stopped = results.stats.get("stopped")
+    if stopped:
+        # said at the top: it was only the first of the validity warnings, below the
+        # breakdown and the figures of a run that reads as finished until there
+        parts.append(f"<p class='warn' id='stopped'><b>This run did not finish:</b> "
+                     f"{esc(str(stopped))}. The tables and figures cover the steps "
+                     "computed before it.</p>")
     bearings: dict[str, Any] = {}
     lubricant = None
     if scene is not None:

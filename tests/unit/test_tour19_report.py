@@ -164,3 +164,16 @@ def test_a_transient_kinematics_table_says_its_rows_are_each_steps_first_state()
     note = html.escape(KINEMATICS_ROWS_NOTE)
     assert note in text
     assert note not in html_report(Results(tables={"kinematics": kin}), "t")
+
+
+def test_a_stopped_runs_report_says_so_at_the_top():
+    """A run stopped by a thermal runaway: its report read as a finished run down to the
+    first validity warning, below the breakdown and the figures."""
+    from thermobearing.report import html_report
+    from thermobearing.results import Results
+
+    why = "stopped by an error: thermal runaway: node 'test.balls' reached 300 degC"
+    text = html_report(Results(stats={"stopped": why}), "rig")
+    banner = text.index("This run did not finish:")
+    assert text.index("<h1>rig</h1>") < banner < text.index("<h2")  # before every section
+    assert "did not finish" not in html_report(Results(stats={"wall_time_s": 1.0}), "rig")
