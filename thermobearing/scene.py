@@ -130,6 +130,12 @@ __all__ = [
 ]
 
 
+#: most temperature rows ``[outputs] interval`` may ask of a transient (each is a dense-output
+#: evaluation and a table row; a week at 1 s is 6e5), and most coupling chunks
+#: (``[solver] chunk``, each a row too and a re-linearised heat model, 10-20 ms)
+MAX_OUTPUT_ROWS = 1_000_000
+
+
 @dataclass(frozen=True)
 class Scene:
     """One configured study (see the module docstring for the TOML layout)."""
@@ -159,6 +165,23 @@ class Scene:
         names = [b.name for b in self.bearings]
         if len(set(names)) != len(names):
             raise InputError("bearings[].name", names, "unique names")
+        total = sum(step.duration for step in self.schedule.steps)
+        if self.outputs.mode == "transient" and total / self.solver.chunk > MAX_OUTPUT_ROWS:
+            # each chunk ends in a row and re-linearises the heat (10-20 ms): chunk = "1 us"
+            # over two 1-min steps was 1.2e8 chunks, weeks of computing
+            raise InputError("solver.chunk", f"{self.solver.chunk:g} s",
+                             f"at most {MAX_OUTPUT_ROWS:.0e} coupling chunks over the "
+                             f"schedule's {total:g} s: a chunk >= "
+                             f"{total / MAX_OUTPUT_ROWS:.3g} s")
+        interval = self.outputs.interval
+        if interval is not None and self.outputs.mode == "transient":
+            if total / interval > MAX_OUTPUT_ROWS:
+                # interval = "1 us" over two 1-min steps asked for 1.2e8 rows: the first
+                # chunk built a 9e7-element time array and the run never came back
+                raise InputError("outputs.interval", f"{interval:g} s",
+                                 f"at most {MAX_OUTPUT_ROWS:.0e} temperature rows over the "
+                                 f"schedule's {total:g} s: an interval >= "
+                                 f"{total / MAX_OUTPUT_ROWS:.3g} s")
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], base_dir: Path | None = None) -> Scene:

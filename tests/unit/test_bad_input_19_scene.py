@@ -62,3 +62,24 @@ def test_a_bearing_without_a_usable_name_is_refused(name: str) -> None:
                                             ("name = 3", "3"), ("", "bearing1")])
 def test_names_in_other_scripts_numbers_and_the_default_load(name: str, read: str) -> None:
     assert loads_scene(_scene(name=name)).bearings[0].name == read
+
+
+def test_an_output_interval_asking_for_more_than_a_million_rows_is_refused() -> None:
+    # two 1-min steps at interval = "1 us": 1.2e8 rows; the run built a 9e7-element time
+    # array in its first chunk and did not come back
+    base = _scene() + '[outputs]\nmode = "transient"\n'
+    with pytest.raises(InputError) as info:
+        loads_scene(base + 'interval = "1 us"\n')
+    assert info.value.field == "outputs.interval"
+    assert "6e-05 s" in info.value.allowed  # 60 s / 1e6 rows
+    assert loads_scene(base + 'interval = "1 ms"\n').outputs.interval == pytest.approx(1e-3)
+    # a steady run has no rows in time: the interval is not counted there
+    loads_scene(_scene() + '[outputs]\nmode = "steady"\ninterval = "1 us"\n')
+
+
+def test_a_chunk_asking_for_more_than_a_million_chunks_is_refused() -> None:
+    base = _scene() + '[outputs]\nmode = "transient"\n[solver]\n'
+    with pytest.raises(InputError) as info:
+        loads_scene(base + 'chunk = "1 us"\n')
+    assert info.value.field == "solver.chunk"
+    assert loads_scene(base + 'chunk = "0.1 s"\n').solver.chunk == pytest.approx(0.1)
