@@ -1348,6 +1348,7 @@ def _run_here(case: Case) -> None:
     from thermobearing.simulation import Simulation
 
     t0 = time.process_time()
+    refused: str | None = "not checked"
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -1387,6 +1388,13 @@ def _run_here(case: Case) -> None:
             case.outcome = "OK"
     except Exception as exc:  # noqa: BLE001 -- every failure is classified
         case.outcome, case.message = classify_error(exc)
+        from thermobearing.errors import InputError
+
+        if (case.outcome == "REFUSED" and isinstance(exc, InputError)
+                and refused is None):
+            # `thermobearing check` passed a scene whose run refuses its input: a check gap
+            # when the input is known before any solve (a missing model option)
+            case.notes.append(f"check passed, run refused: {case.message[:140]}")
     finally:
         case.seconds = time.process_time() - t0
 
