@@ -583,6 +583,8 @@ class Simulation:
         check_network(self.scene.network, require=bool(self.needs.get("network")))
         check_measured_file(self.scene)
         writer = ResultsWriter(out_dir) if out_dir is not None else None
+        if out_dir is not None:
+            _clear_earlier_outputs(Path(out_dir))
         t_wall = time.perf_counter()
         self._t_wall = t_wall
         # absolute file paths: the results folder's scene.toml still finds its files
@@ -817,6 +819,21 @@ def _first_csr_lines(kin: pd.DataFrame, checks: Mapping[str, Any] | None = None,
     return [("CSR at first step: " if len(parts) == 1 and not later
              else "CSR at first turning step: ")
             + ", ".join(parts), skid]
+
+
+def _clear_earlier_outputs(out: Path) -> None:
+    """Remove the report and the figures an earlier run left in the results folder ``out``
+    (its tables the results writer removes): rerun into the same folder, a steady scene
+    after a transient one left the transient's ``temperatures.png`` and loss maps beside
+    its own, and a run stopped by an error left the earlier run's ``report.html``, which
+    read as this one. Only the files a run writes under these names go; others stay."""
+    from .report import FIGURE_CAPTIONS
+
+    names = {f"{n}.png" for n in FIGURE_CAPTIONS} | {"report.html", "loss_maps.png"}
+    for path in out.glob("*"):
+        if path.is_file() and (path.name in names or (path.name.startswith("loss_maps_")
+                                                      and path.suffix == ".png")):
+            path.unlink()
 
 
 def check_known(name: str, known: Sequence[str], field_name: str) -> None:

@@ -90,3 +90,26 @@ def test_a_sweep_into_a_file_prints_a_line_per_case(tmp_path, capsys):
     assert main(["sweep", str(scene), "--set", "schedule.radial_load=1,2,3", "-j", "1",
                  "--out", str(out), "--quiet"]) == 0  # resumes: one case to run, quiet
     assert "cases done" not in capsys.readouterr().err
+
+
+def test_a_rerun_into_a_folder_leaves_no_figure_or_report_of_the_earlier_run(tmp_path):
+    """A steady scene run into the folder of a transient one kept the transient's
+    temperatures.png and loss maps beside its own; a run stopped by an error kept the
+    earlier run's report.html, which read as this one's."""
+    out = tmp_path / "out"
+    out.mkdir()
+    stale = ["temperatures.png", "loss_maps_nu.png", "report.html", "cage_speed_ratio.png"]
+    for name in stale:
+        (out / name).write_text("earlier run", encoding="utf-8")
+    (out / "my_notes.txt").write_text("mine", encoding="utf-8")
+    (out / "loss_maps_nu.txt").write_text("mine too", encoding="utf-8")
+    assert main(["run", str(_scene(tmp_path, network=False)), "--out", str(out),
+                 "--quiet"]) == 0
+    for name in stale:
+        path = out / name
+        assert not path.exists() or path.read_bytes() != b"earlier run", name
+    assert not (out / "temperatures.png").exists()  # a run without a network draws none
+    assert not (out / "loss_maps_nu.png").exists()
+    assert (out / "report.html").read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    assert (out / "my_notes.txt").read_text(encoding="utf-8") == "mine"
+    assert (out / "loss_maps_nu.txt").is_file()
