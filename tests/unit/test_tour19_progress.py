@@ -113,3 +113,12 @@ def test_a_rerun_into_a_folder_leaves_no_figure_or_report_of_the_earlier_run(tmp
     assert (out / "report.html").read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
     assert (out / "my_notes.txt").read_text(encoding="utf-8") == "mine"
     assert (out / "loss_maps_nu.txt").is_file()
+
+
+def test_an_out_that_is_a_file_is_refused_without_saying_it_writes_there(tmp_path, capsys):
+    target = tmp_path / "afile"
+    target.write_text("x", encoding="utf-8")
+    assert main(["run", str(_scene(tmp_path, network=False)), "--out", str(target)]) == 1
+    captured = capsys.readouterr()
+    assert "writing results to" not in captured.out
+    assert "this is a file" in captured.err

@@ -46,7 +46,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())
-        print(f"writing results to {out}/ as they are computed", flush=True)
+        if not out.is_file():  # (a file there is refused by the run, naming it)
+            print(f"writing results to {out}/ as they are computed", flush=True)
     try:
         results = sim.run(out_dir=out)
     except KeyboardInterrupt:
