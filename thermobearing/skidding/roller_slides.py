@@ -227,9 +227,10 @@ def _roller_slides(model: RollerModel, omega: float, delta: float, inner_load: n
         return evaluate_slides(model, omega, np.where(outer, y - shift, v_i), delta,
                                inner_load, fb, psi, acc, np.where(outer, y, v_o))[0].roller_eq
 
-    ok = outer & (eq_o(lo_o) <= 0.0) & (eq_o(hi_o) > 0.0)
+    f_lo, f_hi = eq_o(lo_o), eq_o(hi_o)
+    ok = outer & (f_lo <= 0.0) & (f_hi > 0.0)
     if np.any(ok):
-        y = _bracketed_roots(eq_o, lo_o, hi_o, ok)
+        y = _bracketed_roots(eq_o, lo_o, hi_o, ok, ends=(f_lo, f_hi))
         v_o = np.where(ok, y, v_o)
         v_i = np.where(ok, y - shift, v_i)
     return v_i, v_o
