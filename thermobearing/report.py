@@ -528,8 +528,25 @@ def attach_figures(results: Results, scene: Any) -> None:
         if dest is not None:
             results.figures["heat_destinations"] = dest
     kin = results.tables.get("kinematics")
-    if kin is not None and not kin.empty and len(kin) > 1 and not _no_kinematics(results):
+    if kin is not None and not kin.empty and len(kin) > 1 and not _no_kinematics(results) \
+            and not (("kinematics", "race_control") in [tuple(x)[:2] for x in results.chain]
+                     and _rolls_by_construction(kin)):
         results.figures["cage_speed_ratio"] = fig_csr(kin)
+
+
+def _rolls_by_construction(kin: pd.DataFrame) -> bool:
+    """True when every cage speed ratio of the table is its theoretical ratio (to 1e-9);
+    checked for race control: on a roller bearing its figure drew the model's input as its
+    result
+    (the CRB rib example: two identical lines); a ball bearing's race control moves its
+    ratio with the contact angles and keeps its figure."""
+    cols = ("cage speed ratio [-]", "theoretical cage speed ratio [-]")
+    if not all(c in kin for c in cols):
+        return False
+    csr, theo = (kin[c].to_numpy(dtype=float) for c in cols)
+    turning = np.isfinite(csr)
+    return bool(turning.any()) and bool(np.all(np.abs(csr[turning] - theo[turning])
+                                               <= 1e-9 * np.abs(theo[turning])))
 
 
 def _no_kinematics(results: Results) -> bool:

@@ -177,3 +177,27 @@ def test_a_stopped_runs_report_says_so_at_the_top():
     banner = text.index("This run did not finish:")
     assert text.index("<h1>rig</h1>") < banner < text.index("<h2")  # before every section
     assert "did not finish" not in html_report(Results(stats={"wall_time_s": 1.0}), "rig")
+
+
+def test_no_cage_speed_figure_when_every_ratio_is_the_theoretical_one():
+    """Race control of a roller bearing: CSR = CSR_th by construction; the figure drew the
+    model's input as its result. A ball bearing's race-control ratio moves with its
+    contact angles and keeps the figure."""
+    from thermobearing.report import attach_figures
+    from thermobearing.results import Results
+
+    def kin(csr):
+        return pd.DataFrame({"step": [0, 1], "bearing": ["crb", "crb"],
+                             "speed [rpm]": [20000.0, 30000.0],
+                             "radial load [kN]": [3.0, 3.0], "axial load [kN]": [0.2, 0.2],
+                             "cage speed ratio [-]": csr,
+                             "theoretical cage speed ratio [-]": [0.452, 0.452]})
+
+    rolled = Results(tables={"kinematics": kin([0.452, 0.452])},
+                     chain=[("kinematics", "race_control")])
+    attach_figures(rolled, None)
+    assert "cage_speed_ratio" not in rolled.figures
+    moved = Results(tables={"kinematics": kin([0.452, 0.4571])},
+                    chain=[("kinematics", "race_control")])
+    attach_figures(moved, None)
+    assert moved.figures["cage_speed_ratio"][:4] == b"\x89PNG"
