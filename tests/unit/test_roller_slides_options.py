@@ -57,9 +57,9 @@ def test_slide_evaluation_is_the_speed_evaluation_away_from_pure_rolling(opts):
 def test_hertz_traction_takes_a_slide_below_the_speeds_ulp(opts):
     """CRB 50x75x16, 20 kN, ISO VG 46 at 20 degC, 5000 r/min, at the epicyclic cage speed:
     loaded rollers given inner slides of +-1e-17 m/s (far below the 1e-15 m/s ulp of the
-    surface speeds) carry opposite Hertz-zone tractions (of up to hundreds of N: the cold
-    film is at its limiting stress there); from the speeds, whose difference cannot hold
-    such a slide, both signs gave the same force."""
+    surface speeds) carry opposite Hertz-zone tractions (the viscous cold film: hundreds of
+    N, at its limiting stress there; the Maxwell film: elastic, ~1e-13 N); from the speeds,
+    whose difference cannot hold such a slide, both signs gave the same force."""
     m = build_model(load_bearing("CRB_50x75x16"), load_lubricant("ISO_VG46"), 293.15,
                     **opts)
     omega = 5000.0 * RPM
@@ -76,7 +76,32 @@ def test_hertz_traction_takes_a_slide_below_the_speeds_ulp(opts):
     up, down = hertz(1e-17), hertz(-1e-17)
     assert np.all(up[loaded] > 0.0)
     np.testing.assert_allclose(down[loaded], -up[loaded], rtol=1e-12)
-    assert float(np.max(up)) > 1.0  # N
+    if "fluid_shear_modulus" not in opts:
+        assert float(np.max(up)) > 1.0  # N
+
+
+@pytest.mark.parametrize("pressure", ["hertz", "regime_min"])
+def test_maxwell_traction_is_elastic_and_linear_at_tiny_slides(pressure):
+    """Defect found with the slide solve: below 1e-12 m/s the Maxwell cell took the flow
+    curve's slope for its secant; a cold film under load is at its limiting stress there
+    (slope ~0), so the cell turned viscous and the Hertz-zone traction jumped to 276 N at
+    1e-12 m/s against 2.9e-8 N at 2e-12 (CRB 50x75x16, 20 kN, ISO VG 46 at 20 degC,
+    G = 1 GPa). In the elastic regime (Johnson & Tevaarwerk 1977) the traction is linear in
+    the slide: the same slope from 1e-18 to 1e-6 m/s, rising with it."""
+    m = build_model(load_bearing("CRB_50x75x16"), load_lubricant("ISO_VG46"), 293.15,
+                    fluid_shear_modulus=1e9, film_pressure=pressure)
+    omega = 5000.0 * RPM
+    z = m.n_rollers
+    psi = 2.0 * math.pi * np.arange(z) / z
+    ld, fb = _load_distribution(m, omega, 20e3, m.theoretical_cage_speed_ratio * omega, None,
+                                psi, (0.0, 0.0))
+    loaded = ld.inner_load > 0.0
+    slides = np.array([1e-18, 1e-17, 2e-17, 1e-15, 1e-12, 2e-12, 1e-9, 1e-6])
+    slope = np.array([evaluate_slides(m, omega, np.full(z, v), 0.0, ld.inner_load, fb, psi,
+                                      (0.0, 0.0))[0].inner.hertz_traction[loaded] / v
+                      for v in slides])
+    np.testing.assert_allclose(slope, np.broadcast_to(slope[-1], slope.shape), rtol=1e-3)
+    assert np.all(slope > 0.0)
 
 
 @pytest.mark.parametrize("rpm", [5000.0, 30000.0])
