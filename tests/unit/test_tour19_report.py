@@ -201,3 +201,19 @@ def test_no_cage_speed_figure_when_every_ratio_is_the_theoretical_one():
                     chain=[("kinematics", "race_control")])
     attach_figures(moved, None)
     assert moved.figures["cage_speed_ratio"][:4] == b"\x89PNG"
+
+
+def test_a_race_control_roller_run_says_why_its_raceway_contacts_book_nothing():
+    from types import SimpleNamespace
+
+    from thermobearing.report_sections import _rolling_notes
+
+    wide = pd.DataFrame({"step": [0, 1], "raceway_traction [W]": [0.0, 0.0],
+                         "total [W]": [1599.0, 3290.0]})
+    rc = SimpleNamespace(models={"kinematics": "race_control"})
+    (note,) = _rolling_notes(wide, rc)
+    assert note.startswith("raceway contacts (rolling and sliding shear): 0 W at every step")
+    # a ball bearing's race control books spin and differential sliding: no note
+    assert _rolling_notes(wide.assign(**{"raceway_traction [W]": [1.5, 53.4]}), rc) == []
+    assert _rolling_notes(wide, SimpleNamespace(models={"kinematics": "skidding"})) == []
+    assert _rolling_notes(wide, None) == []
