@@ -42,7 +42,11 @@ from ..rib import SIGN_REGULARISATION, rib_forces, rib_sliding_speed, squeeze_fo
 #: to the next
 DEFAULT_SETTLE = 1e-3
 #: most warm-up orbits the settling test may run (then the window starts unsettled)
-SETTLE_MAX_ORBITS = 12.0
+SETTLE_MAX_ORBITS = 16.0
+#: settling test (:func:`creep_settled`): a cage speed that turned (the two half-orbit-lag
+#: changes of opposite signs) passes only if both together are at most this fraction of the
+#: tolerance (the settled motion's orbit-mean jitter; a turning point of the creep is larger)
+SETTLE_JITTER = 0.1
 #: blocks per cage orbit of the convergence test
 BLOCKS_PER_ORBIT = 4
 #: fewest blocks before the test is tried (one orbit; the window is then its later half)
@@ -66,6 +70,66 @@ def window_converged(blocks: np.ndarray, tol: float, floor: float = 0.0) -> bool
     drift = abs(float(np.mean(b[n // 2:])) - float(np.mean(b[:n // 2])))
     se = float(np.std(b, ddof=1)) / math.sqrt(n)
     return drift <= bound and 2.0 * se <= bound
+
+
+def cage_mode_ratio(force_slope: float, cage_inertia: float, roller_mass: float,
+                    n_rollers: int, pitch_radius: float, lag: float) -> float:
+    """Decay ratio over ``lag`` [s] of the cage's orbital mode (roller_dynamics_heat notes,
+    "Why the cage creeps"; ours): exp(-lag D / I) with the damping D = -r sum_j dF_d,j /
+    d omega_c [N m s] of the raceways' net orbital forces' slope with the cage speed
+    ``force_slope`` = sum_j dF_d,j / d omega_c [N s/rad] at pitch radius r =
+    ``pitch_radius`` [m], and the inertia of the cage and the rollers it carries, I = J_c +
+    Z m_r r^2 (``cage_inertia`` J_c [kg m^2], ``roller_mass`` m_r [kg], ``n_rollers`` Z).
+    0 where D <= 0 (no damping from the raceways: no estimate). The unloaded rollers' drag
+    is left out, so the mode decays faster than this (paper 003 base case, 400 K: estimated
+    I/D = 14 ms, measured e-folding 8 ms): a floor of the creep's measured ratio that can
+    only lengthen the warm-up."""
+    inertia = cage_inertia + n_rollers * roller_mass * pitch_radius**2
+    damping = -pitch_radius * force_slope
+    if not (damping > 0.0 and inertia > 0.0 and lag >= 0.0):
+        return 0.0
+    return math.exp(-lag * damping / inertia)
+
+
+def creep_settled(w_a: float, w_b: float, w_c: float, tol: float,
+                  ratio_floor: float = 0.0) -> bool:
+    """Warm-up settling test of the coupled dynamics' cage (roller_dynamics_coupled notes,
+    "Cage settling"; ours, no paper equation). ``w_a``, ``w_b``, ``w_c`` [rad/s]: mean cage
+    speeds over three one-orbit windows, each starting half an orbit after the previous one
+    (``w_a`` and ``w_c`` two consecutive orbits); ``tol`` [-] relative. With d1 = w_b - w_a,
+    d2 = w_c - w_b (the changes over half an orbit's lag) the cage has settled when
+
+    * |w_c - w_a| <= tol |w_c| (the orbit-to-orbit change), and
+    * the creep is geometric and decaying, d1 d2 >= 0 and |d2| < |d1|, with its remaining
+      change beyond ``w_c``, |d2| q / (1 - q), q = max(d2 / d1, ``ratio_floor``) (sum of
+      the geometric series of the half-orbit-lag changes; the floor a slowest decay the
+      creep can have, :func:`cage_mode_ratio` over half an orbit: a slow mode under a
+      faster decay does not show in three windows), at most tol |w_c|; or, the two changes
+      of opposite signs
+      (a turning point of the cage speed, or the settled motion's jitter), |d1| + |d2| <=
+      :data:`SETTLE_JITTER` tol |w_c|.
+
+    The orbit-to-orbit change alone passes falsely at a turning point (the orbit means on
+    either side of a minimum agree) and, for a slow creep (q near 1), leaves up to tol q /
+    (1 - q) of it; a change that grows (|d2| >= |d1|, same sign) never passes.
+    """
+    check_range("tol", tol, 0.0, 1.0)
+    check_range("ratio_floor", ratio_floor, 0.0, 1.0)
+    vals = (w_a, w_b, w_c)
+    if not all(math.isfinite(v) for v in vals):
+        return False
+    bound = tol * abs(w_c)
+    d1, d2 = w_b - w_a, w_c - w_b
+    if abs(w_c - w_a) > bound:
+        return False
+    if d1 * d2 >= 0.0 and abs(d2) < abs(d1):
+        q = max(d2 / d1, ratio_floor)
+        if q >= 1.0:
+            return False
+        return abs(d2) * q / (1.0 - q) <= bound
+    if d1 * d2 < 0.0 or (d1 == 0.0 and d2 == 0.0):
+        return abs(d1) + abs(d2) <= SETTLE_JITTER * bound
+    return False
 
 
 def block_heat_slide(m: Any, samples: np.ndarray, cage_speed: np.ndarray
@@ -95,4 +159,5 @@ def block_heat_slide(m: Any, samples: np.ndarray, cage_speed: np.ndarray
 
 
 __all__ = ["BLOCKS_PER_ORBIT", "DEFAULT_SETTLE", "HEAT_FLOOR", "MIN_BLOCKS",
-           "SETTLE_MAX_ORBITS", "SLIDE_FLOOR", "block_heat_slide", "window_converged"]
+           "SETTLE_JITTER", "SETTLE_MAX_ORBITS", "SLIDE_FLOOR", "block_heat_slide",
+           "cage_mode_ratio", "creep_settled", "window_converged"]
