@@ -10,7 +10,8 @@ speed as degrees of freedom,
 :func:`thermobearing.skidding.roller_dynamics_coupled.simulate_coupled`, the paper's eqs.
 18-19; ``coupled_warmup_orbits`` and ``coupled_orbits`` warm-up and statistics orbits;
 ``coupled_settle``: the points without unbalance warm up until the orbit-mean cage speed
-changes by at most that fraction per orbit, case SOURCE.md "Cage settling";
+has settled to that fraction (its orbit-to-orbit change and its creep's extrapolated
+remainder, no turning point; simulate_coupled ``settle``), case SOURCE.md "Cage settling";
 ``coupled_table_retries``: a table-path run that enters the cage runaway first tries that
 many other table-path trajectories, then the evaluate path, as the rib heat source does,
 default :data:`~thermobearing.skidding.roller_dynamics_heat.DEFAULT_TABLE_RETRIES`; case
