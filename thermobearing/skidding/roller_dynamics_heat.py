@@ -134,7 +134,12 @@ defaults, against a 20 + 10-orbit reference at the node):
   (roller_dynamics_coupled notes, "Settling test"), against the same references: 400 K
   cold 8.0 orbits +0.11 %, warm 4.0 orbits -0.085 %; 440 K cold 15.0 orbits +0.17 %, warm
   4.0 orbits -0.29 % (the heat moves ~3x the cage speed's remainder, which the test bounds
-  to ``settle``); 20000 r/min, 353 K unchanged (3.0 / 2.0 orbits, <= 0.002 %).
+  to ``settle``); 20000 r/min, 353 K unchanged (3.0 / 2.0 orbits, <= 0.002 %). The
+  example scene (as above): scene CPU cold 19.2 -> 23.9 s, warm-started (default) 11.5 ->
+  14.9 s; 425 / 440 K nodes cold +0.16 / +0.17 %, warm -0.16 / -0.20 % of the references
+  (were +0.48 / +0.74 and -0.51 / -0.72 %); booked rib_friction at the 30000 r/min step end
+  cold 634.2 -> 632.4 W, warm 629.6 -> 631.3 W (cold - warm 0.73 -> 0.18 %), final roller
+  temperature cold - warm 0.25 -> 0.07 K.
 
 Why the cage creeps at 30000 r/min in hot oil (roller_dynamics_coupled notes, "Cage
 settling"): the cage's orbital mode (the cage and the rollers it carries) is damped only by
