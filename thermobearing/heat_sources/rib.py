@@ -25,14 +25,15 @@ the contact point, from :mod:`thermobearing.rib`. Option ``model`` (default
   cheaper in bm_rib_friction, re-run nodes within the chaotic node scatter).
   Option ``settle`` (default :data:`~thermobearing.skidding.roller_dynamics_convergence.
   DEFAULT_SETTLE`): without unbalance the warm-up runs whole orbits until the orbit-mean
-  cage speed changes by at most this per orbit (cap 12 orbits; a creeping cage at 1000 N
-  left the fixed window's slip 8 % high); 0 keeps the fixed warm-up. Option
+  cage speed has settled to this (orbit-to-orbit change, no turning point, the creep's
+  extrapolated remainder; cap 16 orbits; a creeping cage at 1000 N left the fixed window's
+  slip 8 % high); 0 keeps the fixed warm-up. Option
   ``warm_start_nodes`` (default 4): without unbalance a temperature node starts from the
   end state of the nearest node of its operating state already run, at most that many
   grid steps away (0: every node from the quasi-static state): 2 orbits instead of 3 at
-  5000-20000 r/min (heat within 0.02 %), 2-3 instead of 7 at 30000 r/min in hot oil (400 K,
+  5000-20000 r/min (heat within 0.02 %), 4 instead of 8 at 30000 r/min in hot oil (400 K,
   where the weakly damped cage creeps; cold and warm both within the settling test's
-  residue of a long run's heat, 0.2-0.75 % at 400-440 K, on opposite sides)
+  residue of a long run's heat, 0.1-0.3 % at 400-440 K, on opposite sides)
   (:mod:`thermobearing.skidding.roller_dynamics_heat`, "Warm start").
   Scatter: with an unbalance the node values scatter by about +-4 % (the chaotic impacting
   motion; validation case ``paper003_pv_slip_trends``, section "Rib heat source on the
