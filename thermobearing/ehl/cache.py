@@ -139,6 +139,9 @@ class FilmTable:
     load_step, speed_step : ratio between neighbouring grid values of load and speed (> 1).
     srr_step : grid spacing of the slide-to-roll ratio [-]; temperature_step [K].
     mode : ``"linear"`` (multilinear, up to 16 solves for a new cell) or ``"nearest"``.
+    temperature_origin : a temperature node [K]; the nodes are ``origin + k temperature_step``
+        (a steady solve at the origin's temperature then needs one temperature node per
+        corner, not two: half the solves of a cell).
     **solver_kwargs : passed to the solver (``n``, ...).
 
     The instance is a mutable memo (it is not global state: its owner decides its lifetime).
@@ -148,7 +151,8 @@ class FilmTable:
     def __init__(self, model: str, reduced_radius_x: float, effective_modulus: float, *,
                  lubricant, load_step: float = 1.25, speed_step: float = 1.25,
                  srr_step: float = 0.02, temperature_step: float = 5.0,
-                 mode: str = "linear", **solver_kwargs) -> None:
+                 mode: str = "linear", temperature_origin: float = 0.0,
+                 **solver_kwargs) -> None:
         self.solver = EHL_SOLVERS.get(model)
         self.solver_name = model
         check_positive("reduced_radius_x", reduced_radius_x)
@@ -166,6 +170,8 @@ class FilmTable:
         self.steps = (math.log(load_step), math.log(speed_step), float(srr_step),
                       float(temperature_step))
         self.mode = mode
+        check_finite("temperature_origin", temperature_origin)
+        self.t_origin = float(temperature_origin)
         self.kwargs = solver_kwargs
         self._nodes: dict[tuple[int, int, int, int], FilmPoint] = {}
         self._failed: dict[tuple[int, int, int, int], Exception] = {}
@@ -174,7 +180,31 @@ class FilmTable:
         self.solve_time = 0.0  # CPU seconds spent in node solves
 
     def _coords(self, w: float, u: float, srr: float, T: float) -> np.ndarray:
-        return np.array([math.log(w), math.log(u), srr, T]) / np.array(self.steps)
+        return np.array([math.log(w), math.log(u), srr, T - self.t_origin]) / np.array(self.steps)
+
+    def corners(self, w: float, u: float, srr: float, T: float) -> list[tuple[int, ...]]:
+        """Nodes (index tuples) an answer at this point is built from (nonzero weights)."""
+        c = self._coords(w, u, srr, T)
+        if self.mode == "nearest":
+            return [tuple(int(v) for v in np.rint(c))]
+        lo = np.floor(c).astype(int)
+        frac = c - lo
+        return [tuple(int(v) for v in lo + np.array(corner))
+                for corner in itertools.product((0, 1), repeat=4)
+                if all(f > 0.0 or not b for f, b in zip(frac, corner, strict=True))]
+
+    def known(self, idx: tuple[int, ...]) -> bool:
+        """Whether node ``idx`` was solved (or failed) already: answering needs no solve."""
+        return idx in self._nodes or idx in self._failed
+
+    def node_point(self, idx: tuple[int, ...]) -> tuple[float, float, float, float]:
+        """(w', u, SRR, T) of node ``idx`` (SI)."""
+        lw, lu, s, t = (i * st for i, st in zip(idx, self.steps, strict=True))
+        return math.exp(lw), math.exp(lu), s, t + self.t_origin
+
+    def solved_nodes(self) -> dict[tuple[int, ...], FilmPoint]:
+        """The solved nodes (a copy)."""
+        return dict(self._nodes)
 
     def _node(self, idx: tuple[int, int, int, int]) -> FilmPoint:
         got = self._nodes.get(idx)
@@ -182,11 +212,12 @@ class FilmTable:
             failed = self._failed.get(idx)
             if failed is not None:  # a node that failed once fails again: do not re-solve
                 raise failed
-            lw, lu, s, t = (i * st for i, st in zip(idx, self.steps, strict=True))
+            w_n, u_n, s, t = self.node_point(idx)
+            lw, lu = math.log(w_n), math.log(u_n)
             self.solves += 1
             t0 = time.process_time()
             try:
-                got = self.solver(math.exp(lw), self.rx, self.ep, math.exp(lu), s, t,
+                got = self.solver(w_n, self.rx, self.ep, u_n, s, t,
                                   lubricant=self.lubricant, **self.kwargs)
             except (InputError, ConvergenceError) as err:
                 self._failed[idx] = err

@@ -59,8 +59,21 @@ a ValidityWarning names the state (the Simulation collects it among the scene's 
 The cage-speed search of the roller solver passes through such states (e.g. outer-race
 entrainment near 100 m/s); a failure at the converged state shows in the warnings.
 
-Cost: the first skidding solve fills the table along the solver's search (tens of thermal
-solves of 2-10 s CPU each at n = 512); see benchmarks/README.md, section BM-6.
+Cost: a plain skidding solve (``thermobearing.skidding.solve(..., drag_model=
+"numerical_tehl")``) fills the table at every near-rolling state its Newton iterates pass
+through, including the abandoned cold starts: D1842926, OIL_4109 at 30 degC, 13218 r/min,
+24 kN, clearance 40 um asked for 342 nodes (5-20 s CPU each; 246 of them from the two cold
+starts, outer-race entrainment 11-55 m/s). Two things bound it:
+
+* each table's temperature nodes sit at ``T_first + k temperature_step`` (``T_first`` the
+  first inlet temperature it is asked for): a solve at a fixed inlet temperature needs one
+  temperature node per cell corner, not two (342 -> 171 nodes);
+* :func:`solve_roller_tehl` solves in passes that admit only the nodes of the previous
+  pass's converged contacts (:attr:`TehlFilmModel.admitted`); other iterates get a
+  provisional film (171 -> 48 nodes, counted with a closed-form stand-in for the thermal
+  solve, tests/unit/test_tehl_cost19.py). Its returned state's films are all the table's.
+
+See benchmarks/README.md, section BM-6.
 
 Units: SI (m, N/m, m/s, K, Pa).
 """
@@ -152,15 +165,26 @@ class TehlFilmModel:
         self.tables: dict[tuple[float, float], FilmTable] = {}
         self.failures = 0
         self._warned: set[tuple[float, ...]] = set()
+        #: None: every query solves the nodes it needs. A set (see :func:`solve_roller_tehl`):
+        #: only nodes of these cells ``(table key, node)`` are solved; a query needing another
+        #: unsolved node gets a provisional film (:meth:`_provisional`) and counts in
+        #: :attr:`provisional`.
+        self.admitted: set[tuple[Any, ...]] | None = None
+        self.provisional = 0
 
     # ----------------------------------------------------------------- tables
-    def table(self, radius: float, effective_modulus: float) -> FilmTable:
-        """The table of one contact geometry (created on first use)."""
+    def table(self, radius: float, effective_modulus: float,
+              temperature: float | None = None) -> FilmTable:
+        """The table of one contact geometry (created on first use, with a temperature node
+        at ``temperature`` [K], the first inlet temperature it is asked for: a solve at a
+        fixed inlet temperature then needs one temperature node, not two)."""
         key = (float(radius), float(effective_modulus))
         tab = self.tables.get(key)
         if tab is None:
+            origin = 0.0 if temperature is None else float(temperature)
             tab = FilmTable("numerical_tehl", key[0], key[1], lubricant=self.lubricant,
                             solid=self.solids[0], solid2=self.solids[1], n=self.n,
+                            temperature_origin=origin,
                             **self.table_options, **self.solver_kwargs)
             self.tables[key] = tab
         return tab
@@ -238,8 +262,8 @@ class TehlFilmModel:
         ue = np.maximum(np.broadcast_to(np.asarray(entrainment_speed, dtype=float), w.shape),
                         1e-6)
         srr_raw = np.broadcast_to(np.asarray(slide_to_roll, dtype=float), w.shape)
-        tab = self.table(radius, effective_modulus)
         T = float(temperature)
+        tab = self.table(radius, effective_modulus, T)
         eta0 = float(self.lubricant.dynamic_viscosity(T))
         alpha = float(self.lubricant.pressure_viscosity_coefficient(T))
         h_cf = np.asarray(moes_line_central(ue, eta0, alpha, w, 1.0, radius,
@@ -264,6 +288,12 @@ class TehlFilmModel:
             w_min = self._w_min(uj, radius, effective_modulus, eta0)
             numerical = wj >= w_min
             w_q = wj if numerical else w_min
+            if self.admitted is not None and not self._may_solve(tab, w_q, uj, sj, T):
+                self.provisional += 1
+                out[0, j] = out[1, j] = h_cf[j] * ((1.0 - weight[j])
+                                                   * self._provisional(tab, eta0, alpha)
+                                                   + weight[j])
+                continue
             p = self._query(tab, w_q, uj, sj, T)
             if p is None:
                 continue
@@ -276,6 +306,59 @@ class TehlFilmModel:
             out[3, j] = p.max_temperature_rise
             out[4, j] = 1.0 if (numerical and weight[j] == 0.0) else 0.0
         return TehlFilms(out[0], out[1], out[2], out[3], out[4].astype(bool))
+
+    def _may_solve(self, tab: FilmTable, w: float, u: float, srr: float, T: float) -> bool:
+        """Whether the table may answer at this point: every node it needs is known or in
+        :attr:`admitted`."""
+        key = (tab.rx, tab.ep)
+        return all(tab.known(c) or (key, c) in self.admitted
+                   for c in tab.corners(w, u, srr, T))
+
+    def _provisional(self, tab: FilmTable, eta0: float, alpha: float) -> float:
+        """Thermal reduction ``h_TEHL/h_Moes`` for a point whose nodes are not solved (a
+        Newton iterate away from the states :func:`solve_roller_tehl` admitted): the mean
+        reduction of the table's solved nodes at this inlet temperature's viscosity, 1 (the
+        isothermal film) while it has none. Never the film of a returned state."""
+        from ..film import moes_line_central
+
+        ratios = []
+        for idx, p in tab.solved_nodes().items():
+            w_n, u_n, _s, _t = tab.node_point(idx)
+            h_n = float(moes_line_central(u_n, eta0, alpha, w_n, 1.0, tab.rx,
+                                          effective_modulus=tab.ep))
+            ratios.append(p.central_film / h_n)
+        return float(np.exp(np.mean(np.log(ratios)))) if ratios else 1.0
+
+    def state_cells(self, load_per_length: Any, entrainment_speed: Any, slide_to_roll: Any,
+                    temperature: float, radius: float, effective_modulus: float
+                    ) -> set[tuple[Any, ...]]:
+        """Table nodes ``(table key, node)`` the film of these contacts is built from (the
+        same queries as :meth:`films`), for both signs of each slide-to-roll ratio: near
+        rolling the Newton polish crosses SRR = 0, and a provisional film on the other side
+        (a different film than the table's) stalled it (stand-in test, D1842926 24 kN)."""
+        from .line import L_RANGE, M_RANGE
+
+        T = float(temperature)
+        tab = self.table(radius, effective_modulus, T)
+        eta0 = float(self.lubricant.dynamic_viscosity(T))
+        alpha = float(self.lubricant.pressure_viscosity_coefficient(T))
+        out: set[tuple[Any, ...]] = set()
+        for wj, uj, sj in zip(*(np.atleast_1d(np.asarray(v, dtype=float)) for v in
+                                (load_per_length, entrainment_speed, slide_to_roll)),
+                              strict=True):
+            uj = max(float(uj), 1e-6)
+            gross = abs(sj) >= 2.0 * self.max_srr if self.max_srr > 0.0 else sj != 0.0
+            if wj <= 0.0 or gross:
+                continue
+            two_u = 2.0 * eta0 * uj / (effective_modulus * radius)
+            if (wj / (effective_modulus * radius) / math.sqrt(two_u) > M_RANGE[1]
+                    or alpha * effective_modulus * two_u**0.25 > L_RANGE[1]):
+                continue
+            w_q = max(float(wj), self._w_min(uj, radius, effective_modulus, eta0))
+            s = min(abs(float(sj)), self.max_srr)
+            for sgn in (s, -s):
+                out.update(((tab.rx, tab.ep), c) for c in tab.corners(w_q, uj, sgn, T))
+        return out
 
     # --------------------------------------------------- film_model protocol
     def __call__(self, entrainment_speed: Any, load_per_length: Any, radius: float,
@@ -376,6 +459,76 @@ def roller_film_model(bearing: Any, lubricant: Any, **options: Any) -> TehlFilmM
         raise InputError("bearing", getattr(bearing, "name", bearing),
                          "a cylindrical roller bearing (numerical_tehl is a line-contact model)")
     return TehlFilmModel(lubricant, bearing.ring_material, bearing.roller_material, **options)
+
+
+def solve_roller_tehl(bearing: Any, lubricant: Any, speed: float, radial_load: float,
+                      axial_load: float, temperature: float, *,
+                      film_model: TehlFilmModel | None = None, max_passes: int = 6,
+                      **options: Any) -> Any:
+    """Roller skidding solve with the thermal-EHL film, solving table nodes only near the
+    converged state (:func:`thermobearing.skidding.solve` with ``drag_model="numerical_tehl"``).
+
+    Why: the plain solve fills the table at every near-rolling contact state its Newton
+    iterates pass through. D1842926, OIL_4109 at 30 degC, 13218 r/min, 24 kN, clearance
+    40 um: the cold starts (cage at 0.8 and 0.4 of the epicyclic speed, 2 iterations each,
+    both abandoned) asked for 246 of the 342 nodes the solve requested (outer-race
+    entrainment 11-55 m/s, loads 25-430 kN/m), at 5-20 s CPU each.
+
+    Passes: the first solve admits no node (every film is the closed form times the
+    table's mean thermal reduction, :meth:`TehlFilmModel._provisional`); each next pass
+    admits the nodes of the previous converged state's loaded contacts
+    (:meth:`TehlFilmModel.state_cells`) and re-solves from that state. It stops when the
+    converged state's nodes were all admitted: every film of the returned state is then
+    the table's (same accuracy as the plain solve); else after ``max_passes`` a
+    ConvergenceError. ``options`` go to :func:`thermobearing.skidding.solve`. The film
+    model keeps its nodes (pass it again for the next operating point).
+    """
+    from ..skidding import solve
+
+    if isinstance(max_passes, bool) or not isinstance(max_passes, int) or max_passes < 2:
+        raise InputError("max_passes", max_passes, "a whole number >= 2")
+    fm = film_model if film_model is not None else roller_film_model(bearing, lubricant)
+    saved = fm.admitted
+    fm.admitted = set()
+    missing: set[tuple[Any, ...]] = set()
+    try:
+        res = None
+        for _ in range(max_passes):
+            opts = dict(options)
+            if res is not None:
+                opts["guess"] = res
+            res = solve(bearing, lubricant, speed, radial_load, axial_load, temperature,
+                        drag_model="numerical_tehl", film_model=fm, **opts)
+            missing = _result_cells(fm, res) - fm.admitted
+            if not missing and fm.admitted:
+                return res
+            fm.admitted |= missing
+            if not fm.admitted:  # no contact of the state needs the table (all sliding)
+                return res
+    finally:
+        fm.admitted = saved
+    raise ConvergenceError(
+        "numerical_tehl", float(len(missing)),
+        f"the converged state still needed {len(missing)} table nodes that its solve had "
+        f"not admitted after {max_passes} passes", {"max_passes": max_passes})
+
+
+def _result_cells(fm: TehlFilmModel, res: Any) -> set[tuple[Any, ...]]:
+    """Table nodes of a roller skidding result's loaded contacts (both races)."""
+    ex = res.extras
+    length = float(ex["contact_length"])
+    cells: set[tuple[Any, ...]] = set()
+    for radius, q, ue, v in ((ex["radius_inner"], res.inner_load, res.inner_entrainment_speed,
+                              res.inner_sliding_speed),
+                             (ex["radius_outer"], res.outer_load, res.outer_entrainment_speed,
+                              res.outer_sliding_speed)):
+        keys = [k for k in fm.tables if math.isclose(k[0], float(radius), rel_tol=1e-12)]
+        q, ue, v = (np.atleast_1d(np.asarray(a, dtype=float)) for a in (q, ue, v))
+        ue_abs = np.maximum(np.abs(ue), 1e-6)
+        for key in keys:
+            cells |= fm.state_cells(q / length, ue_abs, v / ue_abs, float(res.temperature),
+                                    key[0], key[1])
+    return cells
 
 
 def _register() -> None:

@@ -1,0 +1,127 @@
+"""Cost of the thermal-EHL film in the roller quasi-dynamics (issue 7): table nodes solved.
+
+The thermal solve (seconds per node) is replaced here by a closed-form stand-in (the Moes film
+times 0.2) so that the tests count the nodes the table asks for; the stand-in changes the
+physics, not which cells the solver visits. Pinned: the temperature origin of a table puts a
+fixed inlet temperature on a node (half the corners of a cell), and
+:func:`~thermobearing.ehl.coupling.solve_roller_tehl` solves only nodes around its converged
+state, reaching the state the plain solve reaches with the same table.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from thermobearing.ehl import cache, coupling
+from thermobearing.film import moes_line_central
+from thermobearing.geometry import load_bearing
+from thermobearing.lubricant import load_lubricant
+from thermobearing.skidding import solve
+
+LUB = load_lubricant("OIL_4109")
+
+
+def _stand_in(w, rx, ep, u, s, T, *, lubricant, **_kw):
+    eta0 = float(lubricant.dynamic_viscosity(T))
+    alpha = float(lubricant.pressure_viscosity_coefficient(T))
+    h = 0.2 * float(moes_line_central(u, eta0, alpha, w, 1.0, rx, effective_modulus=ep))
+    return cache.FilmPoint(h, 0.8 * h, 1.0e9, 0.0, 1.0e-4 * w, 10.0)
+
+
+class _CheapTable(cache.FilmTable):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.solver = _stand_in
+
+
+def test_temperature_origin_puts_the_inlet_temperature_on_a_node():
+    kw = {"lubricant": LUB, "load_step": 1.5, "speed_step": 1.25, "srr_step": 0.05}
+    plain = _CheapTable("numerical_tehl", 6.0e-3, 2.3e11, **kw)
+    anchored = _CheapTable("numerical_tehl", 6.0e-3, 2.3e11, temperature_origin=303.15, **kw)
+    a = plain(2.0e5, 40.0, 0.0, 303.15)
+    b = anchored(2.0e5, 40.0, 0.0, 303.15)
+    # 2 loads x 2 speeds x 1 SRR (0 is a node) x 2 temperatures (300, 305 K) against 1
+    assert plain.solves == 8 and anchored.solves == 4
+    assert set(anchored.solved_nodes()) == set(anchored.corners(2.0e5, 40.0, 0.0, 303.15))
+    assert all(anchored.node_point(i)[3] == pytest.approx(303.15) for i in
+               anchored.solved_nodes())
+    # both interpolate the same film (the anchored table without the temperature step)
+    exact = _stand_in(2.0e5, 6.0e-3, 2.3e11, 40.0, 0.0, 303.15, lubricant=LUB)
+    assert b.central_film == pytest.approx(exact.central_film, rel=0.01)
+    assert a.central_film == pytest.approx(exact.central_film, rel=0.01)
+    with pytest.raises(Exception, match="temperature_origin"):
+        cache.FilmTable("numerical_tehl", 6.0e-3, 2.3e11, lubricant=LUB,
+                        temperature_origin=math.nan)
+
+
+def _d1842926(monkeypatch):
+    monkeypatch.setattr(coupling, "FilmTable", _CheapTable)
+    bearing = load_bearing("D1842926", overrides={"diametral_clearance": 40e-6})
+    return bearing, 13218.0 * math.pi / 30.0, 303.15
+
+
+def _driver_nodes_near_state(fm, res):
+    """Every film of the returned state comes from solved nodes, and every solved node is
+    within one table step (speed ratio 1.25) of the state's entrainment speeds."""
+    assert coupling._result_cells(fm, res)
+    fm.admitted = set()  # answer from solved nodes only, count the rest
+    try:
+        provisional, solves = fm.provisional, fm.solves
+        for key in fm.tables:
+            inner = math.isclose(key[0], res.extras["radius_inner"])
+            q = np.asarray(res.inner_load if inner else res.outer_load)
+            ue = np.abs(res.inner_entrainment_speed if inner else res.outer_entrainment_speed)
+            v = np.asarray(res.inner_sliding_speed if inner else res.outer_sliding_speed)
+            m = q > 0.0
+            fm.films(q[m] / res.extras["contact_length"], ue[m], v[m] / ue[m],
+                     res.temperature, key[0], key[1])
+        assert (fm.provisional, fm.solves) == (provisional, solves)
+    finally:
+        fm.admitted = None
+    for key, tab in fm.tables.items():
+        is_inner = math.isclose(key[0], res.extras["radius_inner"])
+        ue = np.abs(res.inner_entrainment_speed if is_inner else res.outer_entrainment_speed)
+        for idx in tab.solved_nodes():
+            u = tab.node_point(idx)[1]
+            assert ue.min() / 1.25 <= u <= ue.max() * 1.25
+
+
+def test_driver_solves_only_nodes_near_the_converged_state(monkeypatch):
+    bearing, omega, T = _d1842926(monkeypatch)
+    fm = coupling.roller_film_model(bearing, LUB)
+    res = coupling.solve_roller_tehl(bearing, LUB, omega, 24e3, 0.0, T, film_model=fm)
+    assert res.converged
+    assert fm.admitted is None  # restored: later plain queries solve what they need
+    assert fm.provisional > 0  # the first pass's iterates did not solve nodes
+    _driver_nodes_near_state(fm, res)
+    # a second call at the same point (warm, as a transient step): no new node
+    solves = fm.solves
+    again = coupling.solve_roller_tehl(bearing, LUB, omega, 24e3, 0.0, T, film_model=fm,
+                                       guess=res)
+    assert fm.solves == solves
+    assert again.cage_speed_ratio == pytest.approx(res.cage_speed_ratio, rel=1e-9)
+
+
+@pytest.mark.slow
+def test_driver_reaches_the_plain_solves_state_with_fewer_nodes(monkeypatch):
+    bearing, omega, T = _d1842926(monkeypatch)
+    plain_fm = coupling.roller_film_model(bearing, LUB)
+    plain = solve(bearing, LUB, omega, 24e3, 0.0, T, drag_model="numerical_tehl",
+                  film_model=plain_fm)
+    fm = coupling.roller_film_model(bearing, LUB)
+    res = coupling.solve_roller_tehl(bearing, LUB, omega, 24e3, 0.0, T, film_model=fm)
+    assert res.cage_speed_ratio == pytest.approx(plain.cage_speed_ratio, rel=1e-9)
+    np.testing.assert_allclose(res.roller_speed, plain.roller_speed, rtol=1e-7)
+    # the plain solve filled the table along its cold starts (outer-race entrainment down to
+    # ~12 m/s, 171 nodes with the stand-in); the driver around its state only (48)
+    assert fm.solves < 0.5 * plain_fm.solves
+    _driver_nodes_near_state(fm, res)
+
+
+def test_driver_rejects_bad_pass_count(monkeypatch):
+    bearing, omega, T = _d1842926(monkeypatch)
+    with pytest.raises(Exception, match="max_passes"):
+        coupling.solve_roller_tehl(bearing, LUB, omega, 24e3, 0.0, T, max_passes=1)
