@@ -92,3 +92,20 @@ def test_a_misread_typo_is_reported(fuzz):
     found = fuzz._typo_misread(DOC, loads_scene(text), ("supply", "flow"), "1.5 L/min",
                                "1.5 L/h")
     assert found and "supply.flow" in found
+
+
+def test_zero_raceway_pressure_of_a_roller_bearing_under_axial_load_alone(fuzz):
+    # seed 63 case 4: a CRB with ribs on both rings at rest under 1 mN axial and no radial
+    # load carries the axial load on its ribs; its raceways' 0 MPa is no defect. A ball
+    # bearing's is.
+    import pandas as pd
+
+    df = pd.DataFrame({"bearing": ["crb", "ball"], "radial load [kN]": [0.0, 0.0],
+                       "axial load [kN]": [1e-6, 1e-6],
+                       "max contact pressure [MPa]": [0.0, 0.0]})
+    found = fuzz._zero_pressure_under_load(df, frozenset({"crb"}))
+    assert found and "bearing ball" in found
+    assert fuzz._zero_pressure_under_load(df.iloc[:1], frozenset({"crb"})) is None
+    assert fuzz._zero_pressure_under_load(df.iloc[:1]) is not None
+    radial = df.iloc[:1].assign(**{"radial load [kN]": [1.0]})
+    assert fuzz._zero_pressure_under_load(radial, frozenset({"crb"})) is not None
