@@ -358,6 +358,7 @@ def solve_thermal_line_contact(
     nc = 2 * ns + nz - 2
     T = np.full((n, nc), T_in)
     dTdT = 0.05
+    memo: dict = {}  # the Newton preconditioner, kept across outer iterations
     change = math.inf
     outer = 0
     for outer in range(1, max_outer + 1):  # noqa: B007 - used after the loop
@@ -442,7 +443,8 @@ def solve_thermal_line_contact(
         prob.f_e = np.exp(np.log(prob.f_e) + relax * (np.log(f_e) - np.log(prob.f_e)))
         prob.f_r = prob.f_r + relax * (f_r - prob.f_r)
         try:
-            P, H0, _rep = newton_solve(prob, P, H0, linear="krylov", tol=1e-8)
+            P, H0, _rep = newton_solve(prob, P, H0, linear="krylov", tol=1e-8,
+                                       preconditioner_memo=memo)
         except ConvergenceError:
             P, H0, _rep = time_march(prob, P, H0, linear="krylov", dt0=0.5)
         if change < tol_temperature:
