@@ -157,3 +157,25 @@ def test_thermal_solve_keeps_its_newton_preconditioner_across_outer_iterations(m
     assert kept.minimum_film == pytest.approx(fresh.minimum_film, rel=1e-6)
     assert kept.rolling_force == pytest.approx(fresh.rolling_force, rel=1e-5)
     assert kept.max_temperature == pytest.approx(fresh.max_temperature, abs=1e-3)
+
+
+def test_failed_corner_with_small_weight_does_not_discard_the_solved_ones():
+    # the SRR = 0.05 node of D1842926's heaviest inner contacts at 55 m/s does not converge
+    # (the film runs away); a rolling contact (SRR 5e-6) put weight 1e-4 on it and fell
+    # back to the isothermal closed-form film
+    def sliding_fails(w, rx, ep, u, s, T, *, lubricant, **kw):
+        if s > 0.04:
+            raise coupling.ConvergenceError("ehl.thermal", 200.0, "film temperature ran away")
+        return _stand_in(w, rx, ep, u, s, T, lubricant=lubricant, **kw)
+
+    table = _CheapTable("numerical_tehl", 6.0e-3, 2.3e11, lubricant=LUB, srr_step=0.05,
+                        temperature_origin=303.15)
+    table.solver = sliding_fails
+    rolling = table(2.0e5, 40.0, 0.0, 303.15)
+    near = table(2.0e5, 40.0, 5.0e-6, 303.15)
+    assert table.partial_answers == 1
+    assert near.central_film == pytest.approx(rolling.central_film, rel=1e-12)
+    with pytest.raises(coupling.ConvergenceError):
+        table(2.0e5, 40.0, 0.03, 303.15)  # weight 0.6 on the failed corners
+    with pytest.raises(Exception, match="max_failed_weight"):
+        cache.FilmTable("numerical_tehl", 6.0e-3, 2.3e11, lubricant=LUB, max_failed_weight=1.0)
