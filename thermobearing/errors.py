@@ -55,7 +55,8 @@ class UnknownNameError(InputError, KeyError):
 
 def _did_you_mean(value: Any, known: list[str]) -> str:
     """``" (did you mean 'oil_air'?)"`` for a name that differs from a known one only in
-    case, ``-`` / space for ``_``, or by a close spelling; else ``""``."""
+    case, ``-`` / space for ``_``, or by a close spelling, or that starts one to three known
+    names; else ``""``."""
     import difflib
 
     if not isinstance(value, str) or not known:
@@ -64,9 +65,13 @@ def _did_you_mean(value: Any, known: list[str]) -> str:
              if isinstance(k, str)}
     key = value.strip().lower().replace("-", "_").replace(" ", "_")
     squeezed = {k.replace("_", ""): v for k, v in plain.items()}
+    # a unique known name the value starts (``qj1044`` -> ``qj1044_rig``)
+    prefixed = [v for k, v in plain.items() if len(key) >= 3 and k.startswith(key)]
     hit = plain.get(key) or squeezed.get(key.replace("_", "")) or next(
         (plain[k] for k in difflib.get_close_matches(key, list(plain), n=1, cutoff=0.8)),
         None)
+    if hit is None and 1 <= len(prefixed) <= 3:
+        return " (did you mean " + " or ".join(repr(v) for v in sorted(prefixed)) + "?)"
     return f" (did you mean {hit!r}?)" if hit and hit != value else ""
 
 

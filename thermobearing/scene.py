@@ -357,11 +357,19 @@ def loads_scene(text: str, base_dir: Path | None = None, source: str | None = No
 
 def load_scene(name_or_path: str | Path | None = None) -> Scene:
     """Load a scene from a TOML path or a preset name in ``configs/scenes`` (default scene
-    when ``None``)."""
+    when ``None``). A ``.toml`` name or a path with a folder in it that is not a file is
+    refused naming where it was looked for (not as a misspelt preset)."""
     if name_or_path is None:
         name_or_path = DEFAULT_SCENE
     path = Path(name_or_path)
     if not path.is_file():
+        looks_like_file = (path.suffix.lower() == ".toml" or len(path.parts) > 1
+                           or path.is_dir())
+        if looks_like_file:  # a path, not a misspelt preset name: say where it was looked for
+            where = "a folder" if path.is_dir() else "no such file"
+            raise InputError("scene", str(name_or_path),
+                             f"a scene TOML file ({where}: {path.absolute()}) or a preset "
+                             "name: " + ", ".join(scene_presets()))
         preset = configs_dir() / "scenes" / f"{name_or_path}.toml"
         if not preset.is_file():
             raise UnknownNameError("scene", str(name_or_path), scene_presets())

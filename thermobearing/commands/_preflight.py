@@ -16,23 +16,10 @@ from ..scene_checks import check_measured_file, check_network
 
 
 def load_scene_argument(name: str | None) -> Any:
-    """The scene of a command's SCENE argument (:func:`thermobearing.scene.load_scene`); a
-    path to a file that is not there (a ``.toml`` name or one with a folder in it) is
-    refused naming the file where it was looked for (``thermobearing run nosuch.toml``
-    said "scene = 'nosuch.toml' is not allowed: known names are: crb_rib_example, ...", as
-    if a preset had been misspelt)."""
-    from pathlib import Path
+    """The scene of a command's SCENE argument (:func:`thermobearing.scene.load_scene`, which
+    refuses a path to a file that is not there naming the file where it was looked for)."""
+    from ..scene import load_scene
 
-    from ..scene import load_scene, scene_presets
-
-    if name is not None:
-        path = Path(name)
-        looks_like_file = (path.suffix.lower() == ".toml" or len(path.parts) > 1
-                           or path.is_dir())
-        if looks_like_file and not path.is_file():
-            where = "a folder" if path.is_dir() else "no such file"
-            raise InputError("scene", name, f"a scene TOML file ({where}: {path.absolute()}) "
-                             "or a preset name: " + ", ".join(scene_presets()))
     return load_scene(name)
 
 
