@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pandas as pd
 
-from .errors import ConvergenceError, InputError
+from .errors import ConvergenceError, InputError, UnknownNameError
 from .operating_checks import check_state
 from .results import ResultsWriter
 from .scene import Step
@@ -82,6 +82,9 @@ def build_network(sim: Simulation) -> Any:
             # name the scene field: the parameter itself where the template's field ends in
             # its name (value as written), else the template's own field under [network]
             key = str(exc.field).rsplit(".", 1)[-1]
+            if key in raw and isinstance(exc, UnknownNameError):  # a misspelt material ...
+                raise UnknownNameError(f"network.parameters.{key}", raw[key],
+                                       exc.known) from None
             if key in raw and type(exc) is InputError:
                 raise InputError(f"network.parameters.{key}", raw[key],
                                  f"{exc.allowed} (template {name!r}, checked in SI: "

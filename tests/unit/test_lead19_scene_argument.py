@@ -32,3 +32,44 @@ def test_preset_prefix_is_suggested():
 def test_misspelt_preset_still_unknown_name():
     with pytest.raises(UnknownNameError, match="known names are"):
         load_scene("qj1044_rgi_x")
+
+
+def test_misspelt_network_material_names_the_scene_parameter():
+    """A template's UnknownNameError (a misspelt ``housing_material``) is reported under the
+    scene's [network] parameters with the presets listed, as other template errors are."""
+    from thermobearing import Simulation
+    from thermobearing.coupled import build_network
+    from thermobearing.scene import loads_scene
+
+    text = """
+title = "probe"
+[[bearings]]
+name = "a"
+preset = "SKF6304"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "1 L/min"
+[schedule]
+speed = "3000 rpm"
+radial_load = "1 kN"
+axial_load = "0 kN"
+step_duration = "1 min"
+steps = [{}]
+[models]
+kinematics = "race_control"
+heat_sources = ["raceway_traction"]
+[network]
+template = "four_node_paper002"
+[network.parameters]
+housing_outer_diameter = "100 mm"
+housing_length = "30 mm"
+housing_material = "steel"
+"""
+    sim = Simulation(loads_scene(text))
+    with pytest.raises(UnknownNameError) as info:
+        build_network(sim)
+    assert info.value.field == "network.parameters.housing_material"
+    assert info.value.value == "steel"
+    assert "STEEL_52100" in info.value.known
