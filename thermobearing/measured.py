@@ -262,7 +262,11 @@ def measured_notes(measured: pd.DataFrame) -> list[str]:
         if total:
             parts = ", ".join(f"{k} {c[:-1] if k == 1 and c.endswith('s') else c}"
                               for c, k in causes.items() if k)
-            out.append(f"{col}: {total} of {n} readings are gaps ({parts})")
+            if total >= n:  # nothing left to compare with
+                out.append(f"{col}: every reading ({n}) is a gap ({parts}); this sensor is "
+                           "not compared with the model")
+            else:
+                out.append(f"{col}: {total} of {n} readings are gaps ({parts})")
     return out
 
 

@@ -73,3 +73,14 @@ housing_material = "steel"
     assert info.value.field == "network.parameters.housing_material"
     assert info.value.value == "steel"
     assert "STEEL_52100" in info.value.known
+
+
+def test_a_sensor_column_of_only_gaps_says_it_is_not_compared(tmp_path):
+    from thermobearing.measured import measured_notes, read_measured_file
+
+    path = tmp_path / "log.csv"
+    path.write_text("time [s],TC1,TC2\n0,20.0,OVL\n60,21.0,OVL\n120,22.0,\n")
+    got = read_measured_file(path, "time [s]", ["TC1", "TC2"])
+    notes = measured_notes(got)
+    assert notes == ["TC2: every reading (3) is a gap (1 empty cell, 2 dropout flags); "
+                     "this sensor is not compared with the model"]
