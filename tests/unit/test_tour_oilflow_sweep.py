@@ -165,8 +165,8 @@ def test_failing_case_in_a_pool_keeps_the_running_ones_and_starts_no_other(tmp_p
 
 
 def _interrupting_runner(scene_toml: str) -> dict[str, float]:
-    """The 15 L/min case presses Ctrl-C (SIGINT to the sweep's process); every case writes
-    its process id to $TOUR_MARKS/pid-<flow> and then takes 20 s."""
+    """The 15 L/min case presses Ctrl-C (SIGINT to the sweep's process, $TOUR_MAIN_PID);
+    every case writes its process id to $TOUR_MARKS/pid-<flow> and then takes 20 s."""
     import os
     import signal
     import time
@@ -176,7 +176,9 @@ def _interrupting_runner(scene_toml: str) -> dict[str, float]:
     Path(os.environ["TOUR_MARKS"], f"pid-{flow:g}").write_text(str(os.getpid()))
     if flow == 15.0:
         time.sleep(0.2)
-        os.kill(os.getppid(), signal.SIGINT)
+        # the sweep's own process (named by the test: a worker's parent is not it under
+        # every start method of multiprocessing)
+        os.kill(int(os.environ["TOUR_MAIN_PID"]), signal.SIGINT)
     time.sleep(20.0)
     return {"flow seen [L/min]": flow}
 
@@ -192,6 +194,7 @@ def test_ctrl_c_in_a_pool_stops_the_running_cases(tmp_path, monkeypatch):
     marks = tmp_path / "marks"
     marks.mkdir()
     monkeypatch.setenv("TOUR_MARKS", str(marks))
+    monkeypatch.setenv("TOUR_MAIN_PID", str(os.getpid()))
     scene = load_scene()
     p = parse_set("supply.flow=15,20,25", scene.to_dict())
     with pytest.raises(KeyboardInterrupt):
