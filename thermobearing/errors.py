@@ -65,7 +65,7 @@ def _did_you_mean(value: Any, known: list[str]) -> str:
              if isinstance(k, str)}
     key = value.strip().lower().replace("-", "_").replace(" ", "_")
     squeezed = {k.replace("_", ""): v for k, v in plain.items()}
-    # a unique known name the value starts (``qj1044`` -> ``qj1044_rig``)
+    # known names the value starts (``qj1044`` -> ``qj1044_rig``, ``qj1044_synthetic_...``)
     prefixed = [v for k, v in plain.items() if len(key) >= 3 and k.startswith(key)]
     hit = plain.get(key) or squeezed.get(key.replace("_", "")) or next(
         (plain[k] for k in difflib.get_close_matches(key, list(plain), n=1, cutoff=0.8)),

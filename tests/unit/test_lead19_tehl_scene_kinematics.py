@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import math
 
-from thermobearing.ehl import cache, coupling
-from thermobearing.film import moes_line_central
+from tehl_stand_in import CheapTable as _CheapTable
+
+from thermobearing.ehl import coupling
 from thermobearing.geometry import load_bearing
 from thermobearing.kinematic_models import skidding
 from thermobearing.lubricant import load_lubricant
@@ -16,19 +17,6 @@ from thermobearing.simulation_chain import film_kinematics_options
 from thermobearing.state import OilSupply, OperatingPoint
 
 LUB = load_lubricant("OIL_4109")
-
-
-def _stand_in(w, rx, ep, u, s, T, *, lubricant, **_kw):
-    eta0 = float(lubricant.dynamic_viscosity(T))
-    alpha = float(lubricant.pressure_viscosity_coefficient(T))
-    h = 0.2 * float(moes_line_central(u, eta0, alpha, w, 1.0, rx, effective_modulus=ep))
-    return cache.FilmPoint(h, 0.8 * h, 1.0e9, 0.0, 1.0e-4 * w, 10.0)
-
-
-class _CheapTable(cache.FilmTable):
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        self.solver = _stand_in
 
 
 def test_scene_kinematics_uses_the_tehl_driver(monkeypatch):

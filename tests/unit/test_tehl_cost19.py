@@ -14,27 +14,15 @@ import math
 
 import numpy as np
 import pytest
+from tehl_stand_in import CheapTable as _CheapTable
+from tehl_stand_in import stand_in_film as _stand_in
 
 from thermobearing.ehl import cache, coupling
-from thermobearing.film import moes_line_central
 from thermobearing.geometry import load_bearing
 from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding import solve
 
 LUB = load_lubricant("OIL_4109")
-
-
-def _stand_in(w, rx, ep, u, s, T, *, lubricant, **_kw):
-    eta0 = float(lubricant.dynamic_viscosity(T))
-    alpha = float(lubricant.pressure_viscosity_coefficient(T))
-    h = 0.2 * float(moes_line_central(u, eta0, alpha, w, 1.0, rx, effective_modulus=ep))
-    return cache.FilmPoint(h, 0.8 * h, 1.0e9, 0.0, 1.0e-4 * w, 10.0)
-
-
-class _CheapTable(cache.FilmTable):
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        self.solver = _stand_in
 
 
 def test_temperature_origin_puts_the_inlet_temperature_on_a_node():
