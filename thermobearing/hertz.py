@@ -507,12 +507,20 @@ def sliced_roller_contact(load: Any, total_length: float, straight_length: float
     def total(delta: float) -> float:
         return float(np.sum(k_slice * np.maximum(delta - c[finite], 0.0) ** (10.0 / 9.0)))
 
+    if not np.any(finite):
+        raise InputError("straight_length", straight_length,
+                         f"a value that puts at least one of the {n_slices} slice centres "
+                         f"(spacing {w:.6g} m) on the straight part of an uncrowned roller, "
+                         "or an odd n_slices (its middle slice is at x = 0)")
+    c_min = float(np.min(c[finite]))
+    n_min = int(np.count_nonzero(c == c_min))
     flat = q.ravel()
     deltas = np.zeros_like(flat)
     for i, qi in enumerate(flat):
         if qi <= 0.0:
             continue
-        hi = (qi / (k_slice * np.count_nonzero(c == 0.0))) ** 0.9  # straight-part estimate
+        # the slices at the smallest drop alone carry qi at this approach: total(hi) >= qi
+        hi = c_min + (qi / (k_slice * n_min)) ** 0.9
         while total(hi) < qi:
             hi *= 2.0
         deltas[i] = brentq(lambda d, qi=qi: total(d) - qi, 0.0, hi, xtol=1e-300,
