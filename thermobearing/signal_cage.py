@@ -149,7 +149,8 @@ class CageSpeedEstimate:
         fraction of detected lines consistent with the estimate (0 without a fundamental line,
         with fewer than two lines or with all strong lines on shaft harmonics);
         false_alarm_probability.
-    lines : the comb lines; spectrum : the envelope spectrum analysed.
+    lines : the comb lines; spectrum : the envelope spectrum analysed (of the record divided
+        by its largest magnitude: the analysis is scale-free; ``normalised`` is unaffected).
     notes : what a detected result rests on beyond the comb: the given shaft frequency when
         no envelope line within ``SHAFT_CONFIRM`` of it (plus 1/4 bin) and no pair of shaft
         sidebands f_s -+ f_c confirms it (the CSR then scales with a speed given in the
@@ -235,6 +236,12 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
     """
     fs = float(sampling_rate)
     arr = check_signal(x, fs)
+    # the analysis is scale-free (every decision uses power ratios), but the squared
+    # envelope's spectrum and the kurtogram's fourth moments hold x^4: a record whose peak
+    # is beyond about 1e+-75 over/underflowed and was reported "no significant cage comb"
+    # (an impulse train at 1e80 or 1e-80 m/s^2); the record is analysed at unit peak, so the
+    # returned spectrum's power is that of x / max|x|
+    arr = arr / float(np.max(np.abs(arr)))
     for name, v in (("shaft_frequency", shaft_frequency), ("csr_theoretical", csr_theoretical)):
         if not (math.isfinite(float(v)) and float(v) > 0):
             raise InputError(name, v, "a finite value > 0")
