@@ -50,6 +50,53 @@ inner ring R = D_Li/2, c = gap between inner land and cage bore. Options overrid
 
 Each source returns the drag moment/force for the skidding solver (``forces``), the heat,
 and the force pairs (moment x angular speed, force x orbital speed) whose power equals it.
+
+High-speed roller bearing: why element churning dominates (checked 2026-11-24)
+-------------------------------------------------------------------------------
+The CRB 50x75x16 of seed paper 003 (configs/scenes/crb_rib_example.toml: jet 2 L/min,
+MIL-PRF-23699, 3 kN, race control) at 30000 r/min books about three quarters of its loss
+as element churning, and its total lies 50-130 % above Palmgren's M0 + M1. Term by term
+(eq. 10 per roller, tests/unit/test_losses20_churning.py):
+
+- X = 1.46e7 * 2000^0.37 / (30000 * 62.5^1.7) % = 7.17 % (Parker; K unverified, above),
+  rho_e = X rho_oil = 68.7 kg/m^3 at 80 degC;
+- u = omega_m D_m / 2 = 1420 rad/s * 31.25 mm = 44.4 m/s, the oil at rest (``oil_swirl``
+  0: eq. 10's relative speed is the orbital speed, an upper bound);
+- A = D l = 6 mm x 6 mm (a cylinder broadside to its path: right); c_d = 1.0 (a
+  cylinder's plateau at Re = u D / nu = 3.4e4; a free L/D = 1 cylinder is nearer 0.65,
+  but the roller ends run against the ribs and the cage, which suppresses end flow, and
+  the leading roller's wake lowers it: no in-bearing roller c_d was found to replace it);
+- F = 0.5 c_d rho_e u^2 A = 2.43 N, P = 24 F u = 2592 W, as the source gives.
+
+Against the catalogue models at the same point (global_friction, SKF series "10" given
+by hand since "CRB_50x75x16" names no series; W):
+
+====================  =====================  =================  ===============
+r/min, oil [degC]      this (fluid / total*)  SKF drag / total   Palmgren M0+M1
+====================  =====================  =================  ===============
+30000, 80              2824 / 2972            2392 / 3061        1939
+30000, 120             2717 / 2782            2385 / 2971        1215
+10000, 80              322 / 338              90 / 296           341
+====================  =====================  =================  ===============
+
+(* fluid = elements + inner ring + cage churning; total adds the cage land, without EHL
+rolling resistance, which that scene does not list.) So at 30000 r/min the fluid drag is
+physics, not a slip: SKF's own drag term is 78 % of its total there and the element drag
+is 1.05-1.08 x SKF's drag; the totals agree within 6 %. Palmgren's M0 = f0 (nu n)^(2/3)
+d_m^3 has no inertial (n^2 moment) drag term and falls with the viscosity as the bearing
+warms (1939 -> 1215 W from 80 to 120 degC), while drag does not depend on the viscosity:
+hence the 50-130 % (more in hot transient steps). What does differ is the speed law:
+with Parker's X ~ 1/n the element drag power goes as n^2 at a given flow, SKF's drag power
+as n^3 (its moment ~ n^2, oil-jet rule recalled, not checked), so at 10000 r/min the
+element drag is 3.2 x SKF's drag (288 against 90 W) though the totals are within 14 %.
+Neither the Parker constant nor SKF's jet rule could be checked against its original, so
+the difference is a model uncertainty, not a defect: ``parker_constant``,
+``drag_coefficient`` and ``oil_swirl`` are the levers when measurements exist.
+
+Fixed on that check: with an inner-ring-guided cage the inner-ring churning took the
+guide clearance (0.1 mm) as its gap over the whole ring width, booking the guide film
+that ``cage_guide`` books again (486 W of the 3264 W above; now 194 W, see
+:func:`inner_ring_churning_geometry`).
 """
 
 from __future__ import annotations
@@ -234,11 +281,25 @@ def inner_ring_churning_geometry(bearing: Any) -> tuple[float, float, float, flo
     """(D_Li, B_arc, B_Li, c) [m] of the inner-ring churning (paper 002 eq. 17) by default:
     the inner land diameter (raceway diameter for roller bearings), the wetted raceway arc
     D (element diameter), the shoulder length (width - D)/2 and the gap between the inner
-    land and the cage bore, at least 0.1 mm."""
-    d_in, _ = _land_diameters(bearing)
+    land and the cage bore, at least 0.1 mm.
+
+    A cage guided on the inner ring runs on the inner land: the gap between that land and
+    the cage bore is the guide film, whose shear the ``cage_guide`` source books (paper 002
+    eq. 5 over the land width, full oil). Eq. 17 there would book the same film a second
+    time (in its laminar branch eq. 17 is twice Petroff's torque of that annulus), over the
+    whole ring width. So for an inner-ring-guided cage the shoulder length leaves out the
+    land width (half on each side) and the gap is the radial height of the cavity between
+    the inner and outer lands, (D_outer land - D_Li)/2, the space the rest of the ring
+    surface churns (an estimate; paper 002's bearing is outer-ring guided)."""
+    d_in, d_out = _land_diameters(bearing)
     d_elem = bearing.element_diameter
     shoulder = max(0.5 * (bearing.width - d_elem), 0.0)
-    gap = max(0.5 * (bearing.cage.inner_diameter - d_in), 1e-4)
+    cage = bearing.cage
+    if getattr(cage, "guidance", None) == "inner_ring":
+        land = cage.land_width if cage.land_width is not None else cage.width
+        shoulder = max(shoulder - 0.5 * land, 0.0)
+        return d_in, float(d_elem), shoulder, max(0.5 * (d_out - d_in), 1e-4)
+    gap = max(0.5 * (cage.inner_diameter - d_in), 1e-4)
     return d_in, float(d_elem), shoulder, gap
 
 
