@@ -120,6 +120,7 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
               fd_step: Mapping[str, float] | None = None, max_runs: int = 60,
               xtol: float = 1e-4, ftol: float = 1e-6, confidence: float = 0.95,
               callback: Callable[[int, dict[str, float], float], None] | None = None,
+              on_parameters: Callable[[Sequence[FitParameter]], None] | None = None,
               ) -> CalibrationResult:
     """Fit scene parameters to the scene's measured temperatures (least squares).
 
@@ -145,6 +146,9 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     confidence : level of the reported intervals (default 0.95).
     callback : called after every model run with (run number, {path: value in display
         unit}, RMSE [K]).
+    on_parameters : called once, before the first model run, with the fitted
+        :class:`FitParameter` objects (their ``display_unit`` is the unit of the callback's
+        values).
 
     Returns
     -------
@@ -191,6 +195,8 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
                                   Path(scene.base_dir) if scene.base_dir else None))
     measured = measured_table(scene, nodes)
     column_map = dict(scene.measured.columns)
+    if on_parameters is not None:
+        on_parameters(params)
     model = _Model(scene, params, measured, column_map, callback)
     m = model.n_points
     if m < len(params) + 1:

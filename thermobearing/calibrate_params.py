@@ -206,9 +206,14 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
     if path in x0:
         value = given(x0[path], f"x0[{path}]")
     if value is None:
-        raise InputError(f"x0[{path}]", None, "a starting value (--x0 PATH=VALUE): the scene "
+        shown = display if display not in _DIMENSIONLESS else ""
+        syntax = (f"--x0 {path}=VALUE, a bare VALUE in {shown}" if shown
+                  else f"--x0 {path}=VALUE")
+        replaces = (f" (the fitted constant then replaces what template {tname!r} computes "
+                    "there)" if parts[0] == "network" else "")
+        raise InputError(f"x0[{path}]", None, f"a starting value ({syntax}): the scene "
                          "does not set this field and its default is not a number (a "
-                         "correlation, or a value the models choose)")
+                         "correlation, or a value the models choose)" + replaces)
     is_temp = unit == "K"
     lo, hi = (0.0, math.inf) if (not is_temp and value > 0) else (-math.inf, math.inf)
     if path in bounds:

@@ -124,13 +124,17 @@ class CalibrationResult:
         """The calibrated scene as TOML with a comment header naming the fit and the data.
 
         Relative paths in the scene (measured file, bearing or lubricant files) are
-        rewritten relative to ``out_dir`` when given, so the file works from there.
+        rewritten relative to ``out_dir`` when given, so the file works from there;
+        absolute paths stay as written (a path climbing out of ``out_dir`` to the root
+        would break when the calibrated scene is moved).
         """
         data = self.scene.to_dict()
         shown_file = self.measured_file
         if out_dir is not None:
             _rebase_paths(data, self.scene, Path(out_dir))
-            shown_file = data["measured"]["file"] + " (relative to this file's folder)"
+            shown_file = data["measured"]["file"]
+            if not Path(shown_file).is_absolute():
+                shown_file += " (relative to this file's folder)"
         stamp = _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%d %H:%M UTC")
         head = [
             f"# Calibrated scene written by thermobearing.calibrate on {stamp}.",
@@ -176,6 +180,8 @@ class CalibrationResult:
 
 def _rebase_paths(data: dict[str, Any], scene: Scene, out_dir: Path) -> None:
     def rel(name: str) -> str:
+        if Path(name).is_absolute():  # the user's absolute path: kept
+            return name
         p = scene.resolve_path(name).resolve()
         try:
             return os.path.relpath(p, out_dir.resolve())

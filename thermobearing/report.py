@@ -44,7 +44,9 @@ from .report_losses import (  # noqa: E402
     network_heat_check,
 )
 from .report_measured import (  # noqa: E402  (re-exported: the report's public names)
+    COMPARISON_CSV,
     comparison_notes,
+    comparison_table,
     fig_temperatures,
     temperature_errors,
 )
@@ -598,7 +600,10 @@ def write_report(results: Results, scene: Any, path: Path | str) -> Path:
         measured = read_measured(scene)
         name = "measured vs predicted"
         extra[name] = temperature_errors(temps, measured, scene.measured.columns)
-        notes[name] = [MEAN_ERROR_NOTE,
+        # every compared reading beside its prediction, for the user's own plots and stats
+        pairs = comparison_table(temps, measured, scene.measured.columns)
+        pairs.to_csv(Path(path).parent / COMPARISON_CSV, index=False)
+        notes[name] = [MEAN_ERROR_NOTE + f"; every compared reading is in {COMPARISON_CSV}",
                        *comparison_notes(measured, temps, scene.measured.columns)]
     text = html_report(results, scene.title, extra, scene=scene, table_notes=notes)
     out = Path(path)

@@ -4,6 +4,8 @@
   measured: negative, the model runs cold) of the predicted node temperature at the
   measured times; a sensor that cannot be compared keeps its row with
   the reason (no sample inside the run, a node the run does not have);
+- :func:`comparison_table`: every compared reading beside its prediction, one row per
+  sensor and measured time (``measured_vs_predicted.csv`` of a run folder);
 - :func:`comparison_notes`: what the reader left out or decided
   (:func:`thermobearing.measured.measured_notes`: gaps per sensor and cause, averaged
   rows, mixed units) and how the file covers the run
@@ -32,6 +34,9 @@ import pandas as pd  # noqa: E402
 
 #: the errors-table note of a sensor with no finite reading inside the run
 NO_SAMPLE = "no sample inside the run"
+
+#: file name of :func:`comparison_table` in a run folder
+COMPARISON_CSV = "measured_vs_predicted.csv"
 
 #: markers of the measured sensors, one per sensor in the order of the column map
 _MARKERS = ("o", "s", "^", "D", "v", "P", "X", "<", ">", "h", "*", "p")
@@ -93,6 +98,38 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
     if "note" in out:
         out["note"] = out["note"].fillna("")
     return out
+
+
+def comparison_table(temps: pd.DataFrame, measured: pd.DataFrame,
+                     column_map: Mapping[str, str]) -> pd.DataFrame:
+    """Every reading compared by :func:`temperature_errors`, beside its prediction: one
+    row per sensor and measured time inside the run, ``time [s]``, ``time [min]``,
+    ``sensor``, ``node``, ``measured [degC]``, ``predicted [degC]`` (the node's
+    temperature linearly interpolated to the measured time) and ``error [K]`` (predicted -
+    measured). Gaps (NaN readings), samples outside the run and sensors whose node the run
+    lacks are left out, so the RMSE of a sensor's ``error [K]`` is its RMSE in the
+    errors table. Empty (with these columns) when nothing can be compared."""
+    cols = ["time [s]", "time [min]", "sensor", "node", "measured [degC]",
+            "predicted [degC]", "error [K]"]
+    t_model = temps["time [s]"].to_numpy(float)
+    t0, t1 = _run_span(temps)
+    parts = []
+    for sensor, node in column_map.items():
+        col = f"{node} [degC]"
+        if sensor not in measured or col not in temps:
+            continue
+        inside = _inside(measured, sensor, t0, t1)
+        if not inside.any():
+            continue
+        t = measured["time [s]"].to_numpy(float)[inside]
+        value = measured[sensor].to_numpy(float)[inside]
+        pred = np.interp(t, t_model, temps[col].to_numpy(float))
+        parts.append(pd.DataFrame({"time [s]": t, "time [min]": t / 60.0, "sensor": sensor,
+                                   "node": node, "measured [degC]": value,
+                                   "predicted [degC]": pred, "error [K]": pred - value}))
+    if not parts:
+        return pd.DataFrame(columns=cols)
+    return pd.concat(parts, ignore_index=True)[cols]
 
 
 def comparison_notes(measured: pd.DataFrame, temps: pd.DataFrame,

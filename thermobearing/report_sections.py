@@ -33,6 +33,15 @@ def fmt_number(v: float) -> str:
     return f"{v:.4g}"
 
 
+def fmt_grouped(v: float) -> str:
+    """:func:`fmt_number` with the thousands grouped from 1000 on: the format of a column
+    that reaches 1e4, so that its 8000 and 12000 r/min read ``8,000`` and ``12,000`` (not
+    ``8000`` beside ``12,000``)."""
+    if math.isfinite(v) and 1e3 <= abs(v) < 1e12:
+        return f"{v:,.0f}"
+    return fmt_number(v)
+
+
 def _formatters(df: pd.DataFrame) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for c in df.columns:
@@ -42,6 +51,11 @@ def _formatters(df: pd.DataFrame) -> dict[str, Any]:
             out[c] = rl.fmt_power
         elif str(c).endswith("[%]"):
             out[c] = lambda v: f"{v:.3g}"
+        else:
+            finite = df[c].to_numpy(float)
+            finite = np.abs(finite[np.isfinite(finite)])
+            if finite.size and 1e4 <= finite.max() < 1e12:
+                out[c] = fmt_grouped
     return out
 
 

@@ -28,6 +28,10 @@ Tables (all optional; a scene fills only what its outputs need):
 ``energy``
     one row per output time: cumulative ``generated [J]``, ``stored [J]``,
     ``to ambient [J]``, ``to oil [J]``, ``imbalance [J]``.
+``measured_vs_predicted`` (written with the report of a scene with ``[measured]``)
+    one row per sensor and measured time inside the run: the reading, the predicted node
+    temperature there and their difference (:func:`thermobearing.report_measured.
+    comparison_table`).
 
 :class:`ResultsWriter` appends rows to the CSV files as they are computed, so an
 interrupted run keeps everything finished so far.
@@ -156,7 +160,7 @@ class ResultsWriter:
         self._columns: dict[str, list[str]] = {}
         # the tables of an earlier run in the folder (and the breakdown derived from its
         # losses) must not pass for this run's
-        for name in (*TABLES, "loss_breakdown"):
+        for name in (*TABLES, "loss_breakdown", "measured_vs_predicted"):
             path = self.out / f"{name}.csv"
             if path.exists():
                 path.unlink()

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import subprocess
 import sys
 from pathlib import Path
@@ -88,5 +89,22 @@ def run(args: argparse.Namespace) -> int:
                       + (f"  error {float(err):.3g}" if err is not None else "")
                       + (f"  ratio {float(ratio):.3g}" if ratio is not None else ""))
     if args.json:
-        print(json.dumps(all_records, indent=1))
+        print(json.dumps(json_ready(all_records), indent=1, allow_nan=False))
     return 1 if failed else 0
+
+
+def json_ready(records: list[dict]) -> list[dict]:
+    """The records with NaN and infinite numbers as ``null`` (as ``validate --json`` writes
+    them): the scripts' own JSON carries ``NaN`` for a setting with no time or error, which
+    is not JSON (RFC 8259) and which strict readers (JavaScript's ``JSON.parse``, Python's
+    ``json.loads(..., parse_constant=...)``) refuse."""
+    def clean(v: object) -> object:
+        if isinstance(v, float) and not math.isfinite(v):
+            return None
+        if isinstance(v, dict):
+            return {k: clean(x) for k, x in v.items()}
+        if isinstance(v, list):
+            return [clean(x) for x in v]
+        return v
+
+    return [clean(r) for r in records]

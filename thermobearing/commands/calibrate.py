@@ -83,6 +83,11 @@ def run(args: argparse.Namespace) -> int:
     runs_csv = out / "calibration_runs.csv"
     runs_csv.unlink(missing_ok=True)
     best: dict[str, object] = {"rmse": math.inf}
+    units: dict[str, str] = {}  # path -> display unit of the values the runs report
+
+    def record_units(params: list) -> None:
+        units.update({p.path: p.display_unit for p in params
+                      if p.unit and p.display_unit not in ("", "-", "dimensionless")})
 
     def progress(run_no: int, values: dict[str, float], rmse: float) -> None:
         # the folder is made with the first finished run: a fit refused before any run
@@ -91,14 +96,16 @@ def run(args: argparse.Namespace) -> int:
         new = not runs_csv.exists()
         with runs_csv.open("a", newline="", encoding="utf-8") as fh:
             writer = csv.writer(fh)
-            if new:
-                writer.writerow(["run", *values, "rmse [K]"])
+            if new:  # units in the column names, as in every table of a run
+                writer.writerow(["run", *(f"{k} [{units[k]}]" if k in units else k
+                                          for k in values), "rmse [K]"])
             writer.writerow([run_no, *values.values(), rmse])
         if rmse < float(best["rmse"]):
             best.update(rmse=rmse, run=run_no, values=dict(values))
         if args.quiet:
             return
-        shown = ", ".join(f"{k.rsplit('.', 1)[-1]}={v:.5g}" for k, v in values.items())
+        shown = ", ".join(f"{k.rsplit('.', 1)[-1]}={v:.5g}"
+                          + (f" {units[k]}" if k in units else "") for k, v in values.items())
         print(f"  run {run_no:3d}: {shown}  RMSE {rmse:.4g} K", file=sys.stderr, flush=True)
 
     if scene.measured is None:  # before the header, which names the data file
@@ -112,7 +119,7 @@ def run(args: argparse.Namespace) -> int:
               flush=True)
     try:
         result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
-                           callback=progress)
+                           callback=progress, on_parameters=record_units)
     except KeyboardInterrupt:
         if "run" in best:
             shown = ", ".join(f"{k}={v:.6g}" for k, v in best["values"].items())

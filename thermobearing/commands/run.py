@@ -66,6 +66,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"results written to {out}/ (report: {out / 'report.html'})")
     if (out / "loss_breakdown.csv").is_file():
         print(f"loss breakdown, one column per source [W]: {out / 'loss_breakdown.csv'}")
+    from ..report_measured import COMPARISON_CSV
+
+    if (out / COMPARISON_CSV).is_file():
+        print(f"measured vs predicted, every compared reading: {out / COMPARISON_CSV}")
     return 0
 
 

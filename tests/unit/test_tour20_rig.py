@@ -1,0 +1,183 @@
+"""Session-20 user tour, the test-rig engineer: the measured-vs-predicted readings as a CSV,
+the calibrated scene's data path, the calibration's start-value error and the units of its
+run log."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from thermobearing import cli
+from thermobearing.errors import InputError
+
+
+def _synthetic_temps() -> pd.DataFrame:
+    t = np.arange(0.0, 1801.0, 90.0)  # a 30-min run of the 60-min synthetic file
+    return pd.DataFrame({"time [s]": t, "time [min]": t / 60.0,
+                         "drive_end.housing [degC]": 35.0 + t / 600.0,
+                         "non_drive_end.housing [degC]": 35.0 + t / 900.0})
+
+
+def test_a_run_with_measured_data_writes_every_compared_reading_beside_its_prediction(
+        tmp_path):
+    """The report had only the per-sensor RMSE / max / mean: the readings against the
+    prediction, for the engineer's own plots and statistics, were nowhere in the folder."""
+    from thermobearing.measured import read_scene_measured
+    from thermobearing.report import COMPARISON_CSV, write_report
+    from thermobearing.report_measured import temperature_errors
+    from thermobearing.results import Results, ResultsWriter
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_synthetic_measured")
+    temps = _synthetic_temps()
+    text = write_report(Results(tables={"temperatures": temps}), scene,
+                        tmp_path / "report.html").read_text(encoding="utf-8")
+    assert COMPARISON_CSV == "measured_vs_predicted.csv" and COMPARISON_CSV in text
+    pairs = pd.read_csv(tmp_path / COMPARISON_CSV)
+    assert list(pairs.columns) == ["time [s]", "time [min]", "sensor", "node",
+                                   "measured [degC]", "predicted [degC]", "error [K]"]
+    # the readings inside the 30-min run only: 31 one-minute samples per sensor
+    assert pairs.groupby("sensor").size().to_dict() == {"TC_DE_synthetic": 31,
+                                                        "TC_NDE_synthetic": 31}
+    assert pairs["time [s]"].max() == pytest.approx(1800.0)
+    de = pairs[pairs["sensor"] == "TC_DE_synthetic"]
+    np.testing.assert_allclose(de["predicted [degC]"], 35.0 + de["time [s]"] / 600.0,
+                               rtol=0, atol=1e-12)
+    np.testing.assert_allclose(pairs["error [K]"],
+                               pairs["predicted [degC]"] - pairs["measured [degC]"],
+                               rtol=0, atol=1e-12)
+    # its errors are the report table's
+    measured = read_scene_measured(scene)
+    table = temperature_errors(temps, measured, scene.measured.columns).set_index("sensor")
+    for sensor, group in pairs.groupby("sensor"):
+        rmse = math.sqrt(float(np.mean(group["error [K]"] ** 2)))
+        assert rmse == pytest.approx(table.loc[sensor, "RMSE [K]"], rel=1e-12)
+    # a later run into the folder does not keep it as its own
+    ResultsWriter(tmp_path)
+    assert not (tmp_path / COMPARISON_CSV).exists()
+
+
+def test_a_comparison_without_any_reading_inside_the_run_has_its_columns_and_no_row():
+    from thermobearing.report_measured import comparison_table
+
+    temps = _synthetic_temps()
+    measured = pd.DataFrame({"time [s]": [4000.0, 5000.0], "TC1": [40.0, np.nan]})
+    table = comparison_table(temps, measured, {"TC1": "drive_end.housing",
+                                               "TC2": "drive_end.housing"})
+    assert table.empty and "error [K]" in table.columns
+
+
+def _rebased(tmp_path: Path, measured_file: str) -> str:
+    from thermobearing.calibrate_result import _rebase_paths
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_synthetic_measured")
+    data = scene.to_dict()
+    data["measured"]["file"] = measured_file
+    scene = scene.from_dict(data, scene.base_dir)
+    _rebase_paths(data, scene, tmp_path / "calibration")
+    return data["measured"]["file"]
+
+
+def test_the_calibrated_scene_keeps_an_absolute_data_path_absolute(tmp_path):
+    """A scene whose [measured] file was /work/.../rig.csv got
+    "../../../../work/.../rig.csv" in its calibrated copy: a path up to the root that
+    breaks as soon as the calibrated scene is moved."""
+    csv = tmp_path / "logger" / "rig.csv"
+    assert _rebased(tmp_path, str(csv)) == str(csv)
+    # a relative path is still rewritten relative to the calibrated scene's folder
+    rel = _rebased(tmp_path, "../../examples/synthetic_rig_temperatures.csv")
+    assert not Path(rel).is_absolute()
+    assert ((tmp_path / "calibration" / rel).resolve()
+            == (Path(cli.__file__).parents[1] / "examples"
+                / "synthetic_rig_temperatures.csv").resolve())
+
+
+def test_fitting_a_coefficient_the_template_computes_says_how_to_start_it():
+    """`calibrate rig.toml --fit network.parameters.h_air` on a copy of the default rig
+    (which leaves h_air to the housing's free-convection correlation) said only "a starting
+    value (--x0 PATH=VALUE)": now the option is spelt out with the unit of a bare value,
+    and the message says the fitted constant replaces the template's own value."""
+    from thermobearing.calibrate_params import _make_parameter
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_rig")
+    with pytest.raises(InputError) as info:
+        _make_parameter(scene, scene.to_dict(), "network.parameters.h_air", {}, {}, {})
+    text = str(info.value)
+    assert "--x0 network.parameters.h_air=VALUE" in text and "W/(m**2*K)" in text
+    assert "replaces" in text and "four_node_paper002" in text
+    # with the start given, the parameter is made (a bare number in the unit named)
+    p = _make_parameter(scene, scene.to_dict(), "network.parameters.h_air",
+                        {"network.parameters.h_air": "10"}, {}, {})
+    assert p.initial == pytest.approx(10.0) and p.display_unit == "W/(m**2*K)"
+
+
+def test_the_calibration_run_log_has_units_in_its_columns_and_progress_lines(
+        tmp_path, capsys, monkeypatch):
+    """calibration_runs.csv had "network.parameters.h_air" and "supply.inlet_temperature"
+    columns without units, and the progress lines "h_air=10" (W/(m^2 K)? degC?)."""
+    import thermobearing.calibrate as calibrate
+    from thermobearing.calibrate_params import FitParameter
+
+    params = [FitParameter("network.parameters.h_air", "kg/s**3/K", "W/(m**2*K)", "log",
+                           10.0, 0.0, math.inf, 0.01),
+              FitParameter("supply.inlet_temperature", "K", "degC", "linear", 308.15,
+                           -math.inf, math.inf, 0.1),
+              FitParameter("bearings.0.overrides.ratio", "", "", "linear", 1.0,
+                           -math.inf, math.inf, 0.01)]
+
+    def fake_calibrate(scene, fit, *, callback=None, on_parameters=None, **kwargs):
+        on_parameters(params)
+        callback(1, {"network.parameters.h_air": 10.0, "supply.inlet_temperature": 35.0,
+                     "bearings.0.overrides.ratio": 1.0}, 0.41)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(calibrate, "calibrate", fake_calibrate)
+    csv = tmp_path / "rig.csv"
+    csv.write_text("time [min],TC1\n0,35.0\n5,36.1\n10,37.0\n", encoding="utf-8")
+    src = (Path(cli.__file__).parents[1] / "configs" / "scenes"
+           / "qj1044_synthetic_measured.toml").read_text(encoding="utf-8")
+    src = src.replace('file = "../../examples/synthetic_rig_temperatures.csv"',
+                      f'file = "{csv.as_posix()}"')
+    scene = tmp_path / "rig.toml"
+    scene.write_text(src, encoding="utf-8")
+    out = tmp_path / "cal"
+    code = cli.main(["calibrate", str(scene), "--fit", "network.parameters.h_air",
+                     "--out", str(out)])
+    err = capsys.readouterr().err
+    assert code == 130
+    assert "h_air=10 W/(m**2*K), inlet_temperature=35 degC, ratio=1  RMSE 0.41 K" in err
+    header = (out / "calibration_runs.csv").read_text(encoding="utf-8").splitlines()[0]
+    assert header == ("run,network.parameters.h_air [W/(m**2*K)],"
+                      "supply.inlet_temperature [degC],bearings.0.overrides.ratio,rmse [K]")
+
+
+def test_bench_json_writes_null_where_a_benchmark_has_no_number():
+    """`bench --json` printed NaN (no time within the error target), which is not JSON;
+    `validate --json` writes null there."""
+    import json
+
+    from thermobearing.commands.bench import json_ready
+
+    records = [{"case": "equal_accuracy", "time_s": float("nan"), "error": 1e-4,
+                "ratio_vs_anchor": float("inf"), "nested": {"x": [float("nan"), 2.0]}}]
+    text = json.dumps(json_ready(records), allow_nan=False)
+    assert json.loads(text) == [{"case": "equal_accuracy", "time_s": None, "error": 1e-4,
+                                 "ratio_vs_anchor": None, "nested": {"x": [None, 2.0]}}]
+
+
+def test_a_report_column_reaching_ten_thousand_groups_the_thousands_of_every_value():
+    """The 7014 C map's schedule read "8000" above "12,000" in the same speed column."""
+    from thermobearing.report_sections import html_table
+
+    text = html_table(pd.DataFrame({"speed [rpm]": [4000.0, 8000.0, 12000.0],
+                                    "axial load [kN]": [0.3, 0.3, 0.8],
+                                    "time [s]": [900.0, 1800.0, 2700.0]}))
+    assert ">4,000<" in text and ">8,000<" in text and ">12,000<" in text
+    # a column below 1e4 keeps its plain digits (1800 r/min, 2700 s)
+    assert ">2700<" in text and ">0.8<" in text
