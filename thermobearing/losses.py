@@ -4,22 +4,27 @@ One row per (operating point, source, component, role) with the power [W], the n
 role maps to (if a role -> node map is given) and the FVA loss class:
 
 - ``load_dependent``: friction caused by the load in the rolling contacts (raceway sliding
-  and spinning, rib/roller-end friction) -- Palmgren's M1 part;
-- ``load_independent``: hydrodynamic and fluid losses (EHL rolling resistance, churning and
-  drag, cage-land shear, pocket friction) -- Palmgren's M0 part.
+  and spinning, rib/roller-end friction, the share of the EHL rolling resistance that the
+  load adds) -- Palmgren's M1 part;
+- ``load_independent``: hydrodynamic and fluid losses (churning and drag, cage-land shear,
+  pocket friction, the EHL rolling resistance of the contacts the centrifugal force alone
+  seats on the outer race) -- Palmgren's M0 part, the loss without external load.
 
 (FVA/Schaeffler convention of splitting the frictional moment into M0 and M1; Harris &
-Kotzalas 2007 ch. on friction; the SKF model's M_rr is load-dependent through G_rr, but its
-EHL (Poiseuille) part does not depend on load in paper 000 eq. 35, so we class it with M0.)
+Kotzalas 2007 ch. on friction. The SKF model's M_rr is load-dependent through G_rr
+(F_r^0.31 for a cylindrical roller bearing). Per contact the EHL force of paper 000 eq. 35
+carries no load, but the set of loaded contacts does: ``ehl_rolling_resistance`` books
+each outer race's no-load share load-independent and the rest load-dependent (its
+components "<race> rolling resistance, no load" / ", load"; heat_sources/raceway.py).
+Measured on the CRB 50x75x16 at 10000 r/min, race control: the source grows 47 % from
+0.5 to 3 kN, its no-load share 127.0 W at both.)
 
-The class is each source's nominal one (``HeatResult.loss_class``), not a property of a
-run: a source classed load-independent can still move with the load through the
-kinematic state it reads. Measured: the pocket friction (boundary mu = 0.1 times the
+The class is otherwise each source's nominal one (``HeatResult.loss_class``), not a
+property of a run: a source classed load-independent can still move with the load through
+the kinematic state it reads. Measured: the pocket friction (boundary mu = 0.1 times the
 pocket normal force the solver gives) of the catalogue 6206 in an oil bath rises 274 %
-from 1 to 3 kN radial at 6000 r/min; the EHL rolling resistance of the NU 214 (jet,
-50 degC) 36 % from 5 to 15 kN at 2000 r/min (eq. 35's U^0.7 G^-0.3 E' R_x l carries no
-load, but the loaded zone does). The report's glossary gives each source's change with the
-load in the run and names such sources (``report_losses.class_notes``).
+from 1 to 3 kN radial at 6000 r/min. The report's glossary gives each source's change
+with the load in the run and names such sources (``report_losses.class_notes``).
 
 Functions
 ---------

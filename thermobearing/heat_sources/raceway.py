@@ -84,6 +84,25 @@
     Gupta phi_T brings 1214 to 883 W at 6000 r/min) and starvation, and the fully flooded
     rigid-isoviscous film of the centrifugally loaded rollers (4.6 / 70.9 / 401.3 W of the
     totals above), which SKF's G_rr ~ F_r^0.31 does not have. Nothing is tuned to SKF.
+
+    Loss class (load-dependent / load-independent, :mod:`thermobearing.losses`): Palmgren's
+    split M = M0 + M1 takes M0 as the moment without external load and M1 as what the load
+    adds. Per contact the EHL force of eq. 35 carries no load (W^0), but which contacts
+    carry it does: the source was classed load-independent as a whole and grew 47 % from
+    0.5 to 3 kN (CRB 50x75x16, 10000 r/min, jet, 80 degC, race control: 215.5 -> 317.0 W;
+    the inner race, whose loaded zone widens, 52.9 -> 110.3 W). Each raceway is therefore
+    split by :func:`no_load_contact_loads`: without external load only the centrifugal
+    force seats the elements on the outer race, so "<race> rolling resistance, no load"
+    (load-independent) is the force model at that load (same speeds, temperature, R_x, l;
+    for an ellipse the chord scaled by (Q0/Q)^(1/3), for "harris" the pressure too; for a
+    solver-carried force the regime_min line model), capped at the actual force, and
+    "<race> rolling resistance, load" (load-dependent) the rest. Inner races have only the
+    load share. Measured on that CRB: no-load 127.0 W at both loads (10000 r/min), 1979.5 W
+    (30000 r/min); the load shares 88.5 -> 190.1 W and 382.5 -> 851.4 W
+    (tests/unit/test_losses20_rolling_class.py). The sum, the forces and the force pairs
+    are unchanged. Under a skidding state the no-load share still moves with the load
+    through the orbital speed it reads (NU 214, 3000 r/min, roller solver: 10.9 W at
+    2 kN, where the rollers slip, 26.1 W at 8 kN): the kinematics, not the contact load.
 """
 
 from __future__ import annotations
@@ -391,6 +410,11 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     ``bearing.curvature(race, contact_angle)``. Option ``thermal_reduction``: a
     ``film.THERMAL_FILM`` name (default "none"); the temperature-viscosity coefficient it needs
     is -d ln(eta)/dT of the lubricant by a central difference (+-0.5 K).
+
+    Each raceway's power is split into its no-load part (load-independent, Palmgren's M0
+    sense) and the rest (load-dependent, M1) by :func:`no_load_contact_loads` (module
+    docstring): components "<race> rolling resistance, no load" and "<race> rolling
+    resistance, load"; the sum is the raceway's rolling-resistance power.
     """
     name = "ehl_rolling_resistance"
     thermal = str(ctx.option(name, "thermal_reduction", "none"))
@@ -408,33 +432,12 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     e_mod = bearing.effective_modulus
     roles = {"elements": 0.0, "inner_ring": 0.0, "outer_ring": 0.0}
     components: dict[str, float] = {}
+    classes: dict[str, str] = {}
     split: dict[str, dict[str, float]] = {}
     pairs = []
     forces = {}
-    for cs in ctx.kinematics.contacts:
-        if carried is not None and cs.race in carried:
-            # the skidding solver's own rolling force of this raceway (paper 000 eq. 5
-            # Poiseuille term): F_P = Q_x/2 on each surface, against the entrainment (sign
-            # of the SUM of the surface speeds, the direction of the inlet pressure gradient)
-            fr = np.broadcast_to(np.asarray(carried[cs.race], float), (cs.n_elements,))
-            u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
-            u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
-            sign = np.where(cs.entrainment_speed >= 0.0, 1.0, -1.0)
-            f_p = 0.5 * fr
-            total = f_p * np.abs(u_e + u_r)
-            share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
-                                   elem_mat, ring_mat)
-            to_elem = float(np.sum(share * total))
-            to_ring = float(np.sum((1.0 - share) * total))
-            roles["elements"] += to_elem
-            roles[cs.ring_role] += to_ring
-            components[f"{cs.race} rolling resistance"] = float(np.sum(total))
-            split[f"{cs.race} rolling resistance"] = {"elements": to_elem,
-                                                      cs.ring_role: to_ring}
-            pairs.append(ForcePair(f"{cs.race} film on element", -f_p * sign, u_e))
-            pairs.append(ForcePair(f"{cs.race} film on race", -f_p * sign, u_r))
-            forces[f"{cs.race}_rolling_force"] = np.array(fr)
-            continue
+    no_load_q = no_load_contact_loads(bearing, ctx.kinematics)
+    for cs, q0 in zip(ctx.kinematics.contacts, no_load_q, strict=True):
         loaded = cs.normal_load > 0
         temp = _contact_temperature(ctx, cs)
         if cs.reduced_radius_x is not None:
@@ -443,6 +446,12 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             race = cs.race.split("_")[0]
             rx = np.asarray(bearing.curvature(race, cs.contact_angle)[0], float) * np.ones(
                 cs.n_elements)
+        eta = np.asarray(ctx.lubricant.dynamic_viscosity(temp), float)
+        alpha = np.asarray(ctx.lubricant.pressure_viscosity_coefficient(temp), float)
+        u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
+        u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
+        usum = np.abs(u_e) + np.abs(u_r)
+        q = np.asarray(cs.normal_load, float)
         if point is not None:
             length = None
         elif cs.kind == "line":
@@ -454,22 +463,38 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
                     "ball contacts use the ellipse's mean chord pi*a/2 as length",
                     ValidityWarning, stacklevel=2)
             length = 0.5 * math.pi * cs.semi_major
-        eta = np.asarray(ctx.lubricant.dynamic_viscosity(temp), float)
-        alpha = np.asarray(ctx.lubricant.pressure_viscosity_coefficient(temp), float)
-        u_e = cs.entrainment_speed + 0.5 * cs.sliding_speed
-        u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
-        usum = np.abs(u_e) + np.abs(u_r)
-        if point is not None:
-            fr = np.where(loaded, point(cs, temp, rx), 0.0)
-        else:
+
+        def line_force(load, chord, _m=model, _u=usum, _eta=eta, _alpha=alpha, _rx=rx):
             # Dowson-Higginson with the mean speed, Martin with the sum (their conventions)
-            q_dh = rolling_force_paper000(0.5 * usum, eta, alpha, e_mod, rx, length)
-            q_ri = rolling_force_rigid_isoviscous(usum, eta, cs.normal_load, rx, length)
-            q_x = {"regime_min": np.minimum(q_dh, q_ri), "dowson_higginson": q_dh,
-                   "rigid_isoviscous": q_ri}[model]
-            fr = np.where(loaded, q_x, 0.0)
+            q_dh = rolling_force_paper000(0.5 * _u, _eta, _alpha, e_mod, _rx, chord)
+            if _m == "dowson_higginson":
+                return q_dh
+            q_ri = rolling_force_rigid_isoviscous(_u, _eta, load, _rx, chord)
+            return q_ri if _m == "rigid_isoviscous" else np.minimum(q_dh, q_ri)
+
+        if carried is not None and cs.race in carried:
+            # the skidding solver's own rolling force of this raceway (paper 000 eq. 5
+            # Poiseuille term), starved and clearance-film forms included
+            fr = np.array(np.broadcast_to(np.asarray(carried[cs.race], float),
+                                          (cs.n_elements,)))
+            chord = 2.0 * cs.semi_major if cs.kind == "line" else 0.5 * math.pi * cs.semi_major
+            fr0 = np.where(q0 > 0, line_force(q0, chord, _m="regime_min"), 0.0)
+        elif point is not None:
+            fr = np.where(loaded, point(cs, temp, rx), 0.0)
+            ratio = np.divide(q0, q, out=np.zeros_like(q), where=q > 0)
+            fr0 = np.where(q0 > 0, point(cs.with_(
+                normal_load=q0, max_pressure=np.asarray(cs.max_pressure, float)
+                * np.cbrt(ratio)), temp, rx), 0.0)
+        else:
+            fr = np.where(loaded, line_force(q, length), 0.0)
+            ratio = np.divide(q0, q, out=np.zeros_like(q), where=q > 0)
+            # a line contact's length is the roller's; an ellipse's chord goes as Q^(1/3)
+            chord0 = length if cs.kind == "line" else length * np.cbrt(ratio)
+            fr0 = np.where(q0 > 0, line_force(q0, chord0), 0.0)
             if thermal != "none":
-                fr = fr * _thermal_factor(thermal, ctx, cs, temp, eta)
+                phi = _thermal_factor(thermal, ctx, cs, temp, eta)
+                fr, fr0 = fr * phi, fr0 * phi
+        fr0 = np.minimum(fr0, fr)
         # Poiseuille shear F_P = Q_x/2 on each surface against the entrainment (the
         # direction of the inlet pressure gradient), as both skidding solvers balance it:
         # its work is F_P |u_e + u_r| (equal to F_P (|u_e| + |u_r|) unless a surface runs
@@ -478,20 +503,52 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         sign = np.where(cs.entrainment_speed >= 0.0, 1.0, -1.0)
         share = blok_partition(cs.entrainment_speed, cs.sliding_speed, cs.semi_minor,
                                elem_mat, ring_mat)
-        total = f_p * np.abs(u_e + u_r)
-        to_elem = float(np.sum(share * total))
-        to_ring = float(np.sum((1.0 - share) * total))
-        roles["elements"] += to_elem
-        roles[cs.ring_role] += to_ring
-        components[f"{cs.race} rolling resistance"] = float(np.sum(total))
-        split[f"{cs.race} rolling resistance"] = {"elements": to_elem, cs.ring_role: to_ring}
+        speed = np.abs(u_e + u_r)
+        total = f_p * speed
+        base = 0.5 * fr0 * speed
+        shares = (("no load", base, "load_independent"), ("load", total - base, "load_dependent"))
+        # an inner race carries nothing without external load: no no-load component
+        for label, part, cls in shares[0 if cs.race.split("_")[0] == "outer" else 1:]:
+            comp = f"{cs.race} rolling resistance, {label}"
+            to_elem = float(np.sum(share * part))
+            to_ring = float(np.sum((1.0 - share) * part))
+            roles["elements"] += to_elem
+            roles[cs.ring_role] += to_ring
+            components[comp] = float(np.sum(part))
+            classes[comp] = cls
+            split[comp] = {"elements": to_elem, cs.ring_role: to_ring}
         pairs.append(ForcePair(f"{cs.race} film on element", -f_p * sign, u_e))
         pairs.append(ForcePair(f"{cs.race} film on race", -f_p * sign, u_r))
         forces[f"{cs.race}_rolling_force"] = fr
     return HeatResult(
-        source=name, power_by_role=roles, components=components,
-        loss_class=dict.fromkeys(components, "load_independent"),
+        source=name, power_by_role=roles, components=components, loss_class=classes,
         forces=forces, force_pairs=tuple(pairs), component_roles=split)
+
+
+def no_load_contact_loads(bearing, kinematics) -> list[np.ndarray]:
+    """Per contact set, the normal load [N] its contacts would carry without external
+    load (the reference of the no-load share of the rolling resistance, module docstring).
+
+    Without external load the rings still press nothing on the elements, but the
+    centrifugal force F_c = m (d_m/2) omega_m^2 seats each element on the outer race
+    (Harris & Kotzalas 2007, the unloaded elements of a radial bearing): an outer contact
+    set takes F_c shared among the element's outer sets (two for a four-point ball), an
+    inner one 0. Capped at the contact's actual load. m the ball or roller mass, omega_m
+    each element's orbital speed [rad/s] from the kinematic state.
+    """
+    mass = getattr(bearing, "ball_mass", None) or getattr(bearing, "roller_mass", None)
+    contacts = kinematics.contacts
+    n_outer = sum(1 for cs in contacts if cs.race.split("_")[0] == "outer")
+    out = []
+    for cs in contacts:
+        q = np.asarray(cs.normal_load, float) * np.ones(cs.n_elements)
+        if cs.race.split("_")[0] != "outer" or not mass or n_outer == 0:
+            out.append(np.zeros(cs.n_elements))
+            continue
+        omega = np.broadcast_to(np.asarray(kinematics.orbital_speed, float), (cs.n_elements,))
+        f_c = float(mass) * 0.5 * bearing.pitch_diameter * omega ** 2 / n_outer
+        out.append(np.minimum(np.where(q > 0, f_c, 0.0), q))
+    return out
 
 
 def _carried_rolling_forces(ctx: HeatContext, name: str):

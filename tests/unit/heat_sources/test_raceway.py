@@ -122,7 +122,7 @@ def test_rolling_resistance_heat_is_qx_u(qj1044, vg46, race_control_state):
     cs = ks.contact("inner")
     qx = r.forces["inner_rolling_force"]
     # no sliding under race control: heat = Q_x u (module docstring)
-    assert r.components["inner rolling resistance"] == pytest.approx(
+    assert r.components["inner rolling resistance, load"] == pytest.approx(
         float(np.sum(qx * cs.entrainment_speed)), rel=1e-12)
     assert sum(p.power for p in r.force_pairs) == pytest.approx(r.total, rel=1e-12)
     # Dowson-Higginson (eq. 35) takes the mean speed in U, Martin's rigid film the sum (2u
@@ -250,6 +250,6 @@ def test_rolling_resistance_with_a_surface_running_backwards(qj1044, vg46, race_
         r = raceway.ehl_rolling_resistance(ctx)
     qx = r.forces["inner_rolling_force"]
     assert np.all(qx > 0)
-    assert r.components["inner rolling resistance"] == pytest.approx(
+    assert r.components["inner rolling resistance, load"] == pytest.approx(
         float(np.sum(qx * 10.0)), rel=1e-12)
     assert sum(p.power for p in r.force_pairs) == pytest.approx(r.total, rel=1e-12)
