@@ -132,7 +132,8 @@ __all__ = [
 
 #: most temperature rows ``[outputs] interval`` may ask of a transient (each is a dense-output
 #: evaluation and a table row; a week at 1 s is 6e5), and most coupling chunks
-#: (``[solver] chunk``, each a row too and a re-linearised heat model, 10-20 ms)
+#: (``[solver] chunk``, each a row too and a re-linearised heat model, 10-20 ms), and the
+#: fewest network steps ``[solver] max_step`` may force (schedule / max_step)
 MAX_OUTPUT_ROWS = 1_000_000
 
 
@@ -173,6 +174,15 @@ class Scene:
                              f"at most {MAX_OUTPUT_ROWS:.0e} coupling chunks over the "
                              f"schedule's {total:g} s: a chunk >= "
                              f"{total / MAX_OUTPUT_ROWS:.3g} s")
+        if self.outputs.mode == "transient" and total / self.solver.max_step > MAX_OUTPUT_ROWS:
+            # the stepper takes at least one step per max_step (0.5-1 ms each on the four-node
+            # network: max_step = "1 ms" over 2 min was 95 s of wall time, "1e-9 s" would
+            # have been 1.2e11 steps, years)
+            raise InputError("solver.max_step", f"{self.solver.max_step:g} s",
+                             f"at most {MAX_OUTPUT_ROWS:.0e} network steps over the schedule's "
+                             f"{total:g} s: a max_step >= {total / MAX_OUTPUT_ROWS:.3g} s (the "
+                             "stepper's error control chooses smaller steps where it needs "
+                             "them; max_step only caps them)")
         interval = self.outputs.interval
         if interval is not None and self.outputs.mode == "transient":
             if total / interval > MAX_OUTPUT_ROWS:

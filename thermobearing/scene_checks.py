@@ -7,6 +7,7 @@ allowed. Re-exported by :mod:`thermobearing.scene`.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -249,3 +250,48 @@ def check_network(network: Mapping[str, Any], require: bool = True,
         raise InputError("network.parameters", dict(params),
                          f"values for the parameters template {name!r} requires: "
                          + ", ".join(required))
+
+
+def check_global_friction(sim: Any) -> None:
+    """The ``global_friction`` heat source's inputs, at every distinct operating point of
+    each bearing that runs it, before anything is solved: the source itself is evaluated
+    (no kinematics: it needs only speeds, loads and the oil viscosity, at the run's
+    unheated temperature), so a refusal is the one ``run`` gives at its first step, with
+    the same text -- an SKF series the designation does not give (the D1842926 preset,
+    the 7014C spindle bearing), the C0 the SKF model needs for a deep-groove bearing under
+    axial load, an option of the wrong model. ``thermobearing check`` passed such scenes,
+    which ``run`` then refused (session-20 issue 6). Only :class:`InputError` /
+    :class:`UnknownNameError` are raised; the source's other failures are the run's."""
+    from .heat_sources import HEAT_SOURCES, ROLES, HeatContext
+    from .kinematic_models import no_kinematics
+    from .state import OperatingPoint
+    from .unheated import unheated_temperature
+
+    users = [b for b in getattr(sim, "bearings", ()) if "global_friction" in b.sources]
+    if not users:
+        return
+    source = HEAT_SOURCES.get("global_friction")
+    temperature, _ = unheated_temperature(sim.scene)
+    options = {"global_friction": dict(sim.source_options.get("global_friction", {}))}
+    for b in users:
+        seen = set()
+        for step in sim.scene.schedule.steps:
+            radial, axial = b.operating_loads(step)
+            key = (step.speed, radial, axial)
+            if key in seen:
+                continue
+            seen.add(key)
+            op = OperatingPoint(inner_speed=step.speed, radial_load=radial, axial_load=axial)
+            kin = no_kinematics(b.bearing, sim.lubricant, op, contact_temperature=temperature,
+                                oil_temperature=temperature, supply=sim.supply)
+            ctx = HeatContext(bearing=b.bearing, lubricant=sim.lubricant, supply=sim.supply,
+                              operating=op, temperatures=dict.fromkeys(ROLES, temperature),
+                              kinematics=kin.state, options=options)
+            try:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")  # validity notes are the run's to give
+                    source(ctx)
+            except InputError:  # (UnknownNameError is one)
+                raise
+            except Exception:  # noqa: BLE001 - not an input error: the run reports it
+                return

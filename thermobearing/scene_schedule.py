@@ -36,6 +36,7 @@ class Step:
         check_positive("step.duration", self.duration)
         check_positive("step.speed", self.speed, allow_zero=True)
         check_positive("step.radial_load", self.radial_load, allow_zero=True)
+        _check_bounds({k: getattr(self, k) for k in _STEP_KEYS}, {}, "step")
         # axial: any sign here (a bearing's own steps carry a negative load_share's reversed
         # load, simulation_bearings); a scene's steps are >= 0 (_make_step)
 
@@ -48,6 +49,15 @@ MAX_LOAD_STEPS = 10_000
 _STEP_KINDS = {"duration": "time", "speed": "angular_speed", "radial_load": "force",
                "axial_load": "force"}
 _STEP_UNITS = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
+#: highest step speed [rad/s]: 1e6 r/min, twice the ~5e5 r/min of dental-turbine bearings,
+#: the fastest rolling bearings in service (spindles and turbochargers run at n d_m up to
+#: ~4e6 mm r/min, far below it for any bearing of a few mm bore). 1e300 r/min stopped the
+#: skidding solver with a bare OverflowError (the balls' centrifugal force)
+MAX_SPEED = 1e6 * 2.0 * math.pi / 60.0
+#: highest step load [N]: 1 GN, ten times the static load rating of the largest rolling
+#: bearings built (slewing and tunnel-boring-machine main bearings of several metres, C0
+#: of order 1e8 N). 1e300 N stopped the load distribution with "residual nan"
+MAX_LOAD = 1e9
 
 
 def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: str,
@@ -71,7 +81,23 @@ def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: 
             raise InputError(f"{where}.{key}", values.get(key, out[key]), "a load >= 0")
     if out["speed"] < 0:
         raise InputError(f"{where}.speed", values.get("speed", out["speed"]), "a speed >= 0")
+    _check_bounds(out, values, where)
     return Step(**{k: float(out[k]) for k in _STEP_KEYS})
+
+
+def _check_bounds(out: Mapping[str, float], values: Mapping[str, Any], where: str) -> None:
+    """A step's speed and loads [SI] within :data:`MAX_SPEED` / :data:`MAX_LOAD`, the
+    refusal naming the field and the value as written."""
+    if out["speed"] > MAX_SPEED:
+        raise InputError(f"{where}.speed", values.get("speed", out["speed"]),
+                         "a speed from 0 to 1e6 rpm (1.047e5 rad/s): faster than any rolling "
+                         "bearing runs (dental-turbine bearings, the fastest in service, run "
+                         "at about 5e5 rpm)")
+    for key in ("radial_load", "axial_load"):
+        if abs(out[key]) > MAX_LOAD:
+            raise InputError(f"{where}.{key}", values.get(key, out[key]),
+                             "a load from 0 to 1e9 N (1 GN, ten times the static load rating "
+                             "of the largest rolling bearings built)")
 
 
 def _note_units(units: dict[str, str], values: Mapping[str, Any]) -> None:

@@ -121,6 +121,17 @@ class BearingSpec:
         return out
 
 
+#: largest oil flow of a scene's supply [m^3/s]: 1e4 L/min. Jet and circulating supplies give
+#: a bearing of order 0.1-100 L/min (the largest bearings a few hundred), so 1e4 L/min is
+#: beyond any bearing; the oil's heat capacity rate is then ~2.8e5 W/K (ISO VG 68 at 40 degC),
+#: which holds the oil node at its inlet temperature as well as any larger flow would (an
+#: SKF 6304 at 3000 r/min: the same final temperatures at 100 and 1e8 L/min). 1e150 L/min
+#: stopped the transient in the network stepper with "temperature = nan"
+MAX_FLOW = 1e4 / 60_000.0
+MAX_FLOW_ALLOWED = ("a flow from 0 to 1e4 L/min (0.167 m^3/s): jet and circulating supplies "
+                    "give a bearing of order 0.1-100 L/min; above 1e4 L/min the oil node "
+                    "sits at its inlet temperature whatever the flow")
+
 #: what a grease supply allows as its flow
 GREASE_FLOW = ("0 or no flow for a grease fill: grease stays in the bearing, no stream carries "
                "heat away (a circulating or sprayed oil is method = \"circulation\" / "
@@ -162,6 +173,9 @@ class Supply:
                 "supply.flow", data.get("flow"),
                 "a flow > 0 (zero only for an oil bath or grease)",
             )
+        if flow > MAX_FLOW:
+            # 1e150 L/min stopped the transient inside the stepper as "temperature = nan"
+            raise InputError("supply.flow", data.get("flow"), MAX_FLOW_ALLOWED)
         if method == "grease" and flow > 0:
             # the network took it as an oil stream through the bearing: a 5 L/min "grease"
             # cooled an SKF 6304 from 42 to 21 degC

@@ -38,6 +38,7 @@ import pandas as pd
 
 from .errors import InputError, ThermobearingError
 from .scene import Scene, loads_scene
+from .scene_checks import check_global_friction
 from .sweep_cases import Case, expand, match_finished, scene_from_case
 from .sweep_params import (
     DISPLAY_UNITS,
@@ -200,13 +201,20 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
     from .simulation import Simulation
 
     unused: dict[str, str] = {}
+    #: supply.flow: said only when no case's run reads it (a capped oil fraction is a
+    #: property of the value, not of the scene)
+    flow_notes: list[str | None] = []
     for case in cases:
         with _naming_case(case, None):
             scene = loads_scene(case.scene_toml)
             check_model_names(scene)
             sim = Simulation(scene, progress=False)
             preflight(sim, build=True)
+            check_global_friction(sim)
         for path, _ in case.assignments:
+            if path == "supply.flow":
+                flow_notes.append(flow_unused(sim))
+                continue
             note = next((n for n in sim.notes if _says_unused(n, path)), None)
             if note is None and path == "environment.ambient_temperature":
                 note = _ambient_unused(scene)
@@ -214,7 +222,69 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
                 unused[path] = (f"sweep: {path} is swept but not used by the runs (their "
                                 f"results do not change with it); case {case.case_id}: "
                                 f"{note}")
+    if flow_notes and all(flow_notes):
+        first = next(c for c in cases if any(p == "supply.flow" for p, _ in c.assignments))
+        unused["supply.flow"] = (f"sweep: supply.flow is swept but not used by the runs (their "
+                                 f"results do not change with it); case {first.case_id}: "
+                                 f"{flow_notes[0]}")
     return list(unused.values())
+
+
+#: heat sources that read the supply's flow (the churning sources' oil fraction, Parker's
+#: correlation for a jet, circulation or oil-air supply)
+_FLOW_SOURCES = ("churning_cage", "churning_inner_ring", "churning_elements")
+
+
+def flow_unused(sim: Any) -> str | None:
+    """Why the scene's ``supply.flow`` changes none of the requested results, or None.
+
+    The flow enters a run in two places only: the thermal network's oil stream (m_dot c_p,
+    with 'temperatures' or 'energy' in ``[outputs] want``) and, for a jet, circulation or
+    oil-air supply, the oil volume fraction X = K Q^0.37 / (n d_m^1.7) of Parker's
+    correlation (:func:`thermobearing.heat_sources.churning.parker_oil_fraction`), capped at
+    1, that the churning sources and the skidding solvers' drag take. So it is unused
+    without a network when the supply is an oil bath (the level sets X) or grease, when no
+    churning source runs and the kinematics are not the skidding solvers, or when X is at
+    its cap of 1 at every step of every bearing (a flow that floods the bearing: more changes
+    nothing). (A sweep of supply.flow = 2, 20 L/min on a losses-only SKF 6304 jet scene at
+    3000 r/min gave two identical rows without a word: X = 1 at both.)"""
+    from .heat_sources.churning import parker_oil_fraction
+
+    scene = sim.scene
+    sup = scene.supply
+    if sim.needs.get("network"):
+        return None
+    head = ("supply.flow is not used: without 'temperatures' or 'energy' in [outputs] want no "
+            "thermal network (whose oil stream takes the flow) runs, and ")
+    if sup.method in ("oil_bath", "grease"):
+        what = ("an oil bath's churning follows supply.level" if sup.method == "oil_bath"
+                else "a grease fill churns nothing here")
+        return head + what
+    if not (sim.needs.get("losses") or sim.needs.get("kinematics")):
+        return head + "the films are taken at the run's temperature, whatever the flow"
+    skidding = scene.models.get("kinematics", "skidding") == "skidding"
+    readers = [b for b in sim.bearings
+               if skidding or any(n in _FLOW_SOURCES for n in b.sources)]
+    if not readers:
+        return head + ("no heat source of this run reads it (the churning sources take it "
+                       "through Parker's oil fraction, the skidding solvers for their drag)")
+    constants = [1.46e7]
+    for name in _FLOW_SOURCES:
+        k = sim.source_options.get(name, {}).get("parker_constant")
+        if isinstance(k, int | float) and k > 0:
+            constants.append(float(k))
+    for b in readers:
+        k = getattr(b.kin_options.get("params"), "parker_constant", None)
+        if isinstance(k, int | float) and k > 0:
+            constants.append(float(k))
+    steps = scene.schedule.steps
+    if all(parker_oil_fraction(sup.flow, step.speed, b.bearing.pitch_diameter, k) >= 1.0
+           for b in readers for step in steps for k in constants):
+        return head + (f"Parker's oil fraction X = K Q^0.37 / (n d_m^1.7), which the churning "
+                       f"and the skidding drag take, is at its cap of 1 at every step at "
+                       f"{sup.flow * 6e4:g} L/min (a flooded bearing: more flow changes "
+                       "nothing)")
+    return None
 
 
 def _ambient_unused(scene: Scene) -> str | None:
@@ -418,7 +488,47 @@ def run_sweep(
     df = _write_summary(out, cases, done)
     df.attrs["failed"] = failures
     df.attrs["unused"] = unused
+    said = {line.split(" ", 2)[1] for line in unused}
+    df.attrs["identical"] = [line for path, line in identical_results(cases, done).items()
+                             if path not in said]
     return df
+
+
+def _same(a: Any, b: Any) -> bool:
+    """Two result values equal (floats to 1e-12 relative; NaN equals NaN)."""
+    if isinstance(a, float) and isinstance(b, float):
+        return (math.isnan(a) and math.isnan(b)) or math.isclose(a, b, rel_tol=1e-12,
+                                                                 abs_tol=0.0)
+    return bool(a == b)
+
+
+def identical_results(cases: Sequence[Case],
+                      done: Mapping[str, Mapping[str, Any]]) -> dict[str, str]:
+    """Swept path -> a note, for each path whose values changed no result: every set of
+    finished cases that differ only in that path (the other paths at the same values) gave
+    the same number in every result column. Such a parameter does not affect the requested
+    outputs (a flow that floods the bearing, a check threshold no step reaches); the sweep
+    says so instead of leaving identical rows to be noticed. Paths with fewer than two
+    finished values are not judged."""
+    recs = [(c, done[c.case_id]) for c in cases if c.case_id in done]
+    paths = list(dict.fromkeys(p for c, _ in recs for p, _ in c.assignments))
+    notes: dict[str, str] = {}
+    for path in paths:
+        groups: dict[str, list[tuple[Any, Mapping[str, Any]]]] = {}
+        for case, rec in recs:
+            others = repr(sorted((p, repr(v)) for p, v in case.assignments if p != path))
+            value = dict(case.assignments).get(path)
+            groups.setdefault(others, []).append((value, rec.get("result", {})))
+        judged = [g for g in groups.values() if len({repr(v) for v, _ in g}) > 1]
+        if not judged:
+            continue
+        if all(set(r) == set(g[0][1]) and all(_same(r[k], g[0][1][k]) for k in r)
+               for g in judged for _, r in g[1:]):
+            values = ", ".join(dict.fromkeys(str(v) for v, _ in judged[0]))
+            notes[path] = (f"note: {path} changed no result: the cases that differ only in "
+                           f"it ({values}) gave the same numbers in every result column of "
+                           "summary.csv; the requested outputs do not depend on it here")
+    return notes
 
 
 def _run_pool(futs: Mapping[Any, Case], keep: Callable[[Case, Mapping[str, float]], None],

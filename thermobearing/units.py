@@ -68,6 +68,8 @@ _DIGIT_GROUPS = re.compile(r"^\s*([-+]?)([1-9]\d{0,2})"
 #: "rev/min"), which pint does not read
 _REV_PER = re.compile(r"(?<![A-Za-z_])(?:r|rev)\s*/\s*(min|s)(?![A-Za-z_])")
 #: a length unit with its exponent written as a bare digit ("mm3/h", "mm2/s", "kg/m3")
+#: the megametre as a unit or a factor of one ("Mm", "Mm**2/s", "kg/Mm**3")
+_MEGAMETRE = re.compile(r"(?<![A-Za-z_\u00b5\u03bc])Mm(?![A-Za-z_])")
 _BARE_EXPONENT = re.compile(r"(?<![A-Za-z_\u00b5\u03bc])(km|dm|cm|mm|um|\u00b5m|\u03bcm|m|in|ft)"
                             r"([23])(?![\d.])")
 
@@ -140,6 +142,7 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     number, unit_text = match.groups()
     _refuse_separators(text, field, target)
     unit_text = _usual_spellings(unit_text)
+    _refuse_megametre(value, number, unit_text, field, target)
     if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
         unit_text = "delta_degC"
     if target == "delta_degC" and unit_text in ("K", "kelvin"):
@@ -191,6 +194,21 @@ def _refuse_separators(value: str, field: str, target: str) -> None:
         raise InputError(field, value, f"a number with a decimal point, not a comma "
                          f"('{value.strip().replace(',', '.', 1)}'), in a unit convertible "
                          f"to {target}")
+
+
+def _refuse_megametre(value: str, number: str, unit_text: str, field: str,
+                      target: str) -> None:
+    """A unit with ``Mm`` in it (pint: the megametre, 1000 km) is refused with the ``mm``
+    reading: no length of a bearing, its oil or its housing is in megametres, and a capital
+    M for mm is a usual slip ("3 Mm" read as 3000 km; "68 Mm2/s" as 6.8e13 m^2/s for a
+    viscosity meant in cSt). Refused rather than read as mm: the value may be a slip of
+    another kind, and a silent reinterpretation would hide it."""
+    if _MEGAMETRE.search(unit_text) is None:
+        return
+    meant = _MEGAMETRE.sub("mm", unit_text)
+    raise InputError(field, value, f"a unit convertible to {target} without 'Mm' (the "
+                     f"megametre, 1000 km; units are case-sensitive): did you mean "
+                     f"'{number} {meant}'?")
 
 
 def _usual_spellings(unit_text: str) -> str:

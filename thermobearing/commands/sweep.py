@@ -97,6 +97,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"summary written to {out / 'summary.csv'}{more}")
     for line in flagged_notes(df, [p.path for p in params]):
         print(line, file=sys.stderr)
+    for line in df.attrs.get("identical", []):
+        print(line, file=sys.stderr)
     failures = df.attrs.get("failed", [])
     if failures:
         print(f"{len(failures)} case(s) failed (not in {out / 'summary.csv'}; a rerun tries "

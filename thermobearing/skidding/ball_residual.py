@@ -206,7 +206,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         self.inner = self.arcs.ring == INNER
         self.rd = 2.0 * self.arcs.conformity * self.D / (2.0 * self.arcs.conformity + 1.0)
         w = abs(self.speed)
-        fc = self.m * (0.5 * w) ** 2 * self.Rm
+        fc = self.m * (0.5 * w) * (0.5 * w) * self.Rm   # (inf, not OverflowError, past 1e154)
+        if not math.isfinite(fc):   # 1e300 r/min stopped here with a bare OverflowError
+            raise InputError("speed", self.speed, "a finite speed [rad/s] at which the balls' "
+                             "centrifugal force m (w/2)^2 R_m is a finite number")
         self.F_s = max(abs(self.Fa) / self.Z, self.Fr / self.Z, fc, 10.0)
         self.M_s = self.F_s * 0.5 * self.D
         self.T_s = self.F_s * self.Rm
