@@ -235,13 +235,22 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
                     zorder=4, bbox={"facecolor": "white", "edgecolor": "none", "pad": 2})
             # (boxed over the computed points: a 3 x 3 grid's middle dot crossed the text)
         else:
-            levels = np.linspace(lo, hi, 13) if hi > lo else 12
+            levels = map_levels(lo, hi) if hi > lo else 12
             cs = ax.contourf(xs, ys, values, levels=levels)
             fig.colorbar(cs, ax=ax, label="W" if comp.endswith("[W]") else None)
         _mark_points(ax, xs, ys, values, missing)
     for ax in list(axes.flat)[n:]:
         ax.axis("off")
     return _png(fig)
+
+
+def map_levels(lo: float, hi: float, bins: int = 12) -> np.ndarray:
+    """Contour levels of a loss map whose colour scale is shared over figures (a sweep's
+    maps per value of a third swept field): round steps covering [lo, hi], so the colour
+    bar reads 800, 880, 960 ... W (``linspace`` levels read 866.9, 940.1, 1013.4 ...)."""
+    from matplotlib.ticker import MaxNLocator
+
+    return MaxNLocator(nbins=bins).tick_values(lo, hi)
 
 
 def _constant(values: np.ndarray) -> bool:

@@ -181,3 +181,42 @@ def test_a_report_column_reaching_ten_thousand_groups_the_thousands_of_every_val
     assert ">4,000<" in text and ">8,000<" in text and ">12,000<" in text
     # a column below 1e4 keeps its plain digits (1800 r/min, 2700 s)
     assert ">2700<" in text and ">0.8<" in text
+
+
+@pytest.mark.parametrize("lo, hi", [(866.9, 1745.7), (1734.0, 3491.0), (76.43, 88.91),
+                                    (0.0, 2100.0), (-3e-3, 5e-2)])
+def test_a_shared_loss_map_colour_scale_has_round_levels_covering_its_range(lo, hi):
+    """The oil what-if sweep's maps (one figure per oil grade, one colour scale) had colour
+    bars reading 866.9, 1013.4, 1159.8, 1306.3, 1452.8, 1599.2 W."""
+    from thermobearing.report import map_levels
+
+    levels = map_levels(lo, hi)
+    assert levels[0] <= lo and levels[-1] >= hi and 8 <= len(levels) <= 14
+    step = float(np.diff(levels)[0])
+    np.testing.assert_allclose(np.diff(levels), step, rtol=1e-9)
+    # the step has at most two significant digits, the levels are its multiples
+    mantissa = step / 10 ** math.floor(math.log10(step))
+    assert abs(mantissa - round(mantissa, 1)) < 1e-9
+    np.testing.assert_allclose(levels / step, np.round(levels / step), atol=1e-9)
+
+
+def test_the_sweep_cross_check_lists_the_cases_in_the_summary_order(tmp_path, monkeypatch):
+    """A speed x load sweep of the NU 214 with -j 2: the catalogue cross-check listed its
+    cases in the order they finished (2000 r/min 1 kN, 2000/5, 5000/1, 2000/10, ...), the
+    summary below it in the swept values' order."""
+    import thermobearing.report_context as report_context
+    from thermobearing.commands.report import _crosscheck_html
+
+    scene = Path(cli.__file__).parents[1] / "configs" / "scenes" / "qj1044_rig.toml"
+    (tmp_path / "scene.toml").write_text(scene.read_text(encoding="utf-8"), encoding="utf-8")
+    seen = []
+
+    def spy(base, records):
+        seen.extend(r["case"] for r in records)
+        return pd.DataFrame({"case": [r["case"] for r in records]}), []
+
+    monkeypatch.setattr(report_context, "sweep_catalogue_crosscheck", spy)
+    df = pd.DataFrame({"case": ["a", "b", "c", "d"], "speed [rpm]": [2000, 2000, 5000, 5000]})
+    finished = [{"case": c, "params": {}} for c in ("b", "c", "x", "a", "d")]
+    html = _crosscheck_html(tmp_path, df, finished)
+    assert seen == ["a", "b", "c", "d"] and "Catalogue cross-check" in html

@@ -255,8 +255,11 @@ def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str
         return head + "<p class='note'>(not available: the folder has no scene.toml)</p>"
     try:
         base = _folder_scene(path)
-        table, notes = sweep_catalogue_crosscheck(base, [
-            r for r in records if r.get("case") in set(df["case"])])
+        # in the summary's order (cases.jsonl has them in the order they finished: a
+        # parallel sweep's cross-check rows read 2000/1, 2000/5, 5000/1, 2000/10 ...)
+        order = {case: i for i, case in enumerate(df["case"])}
+        table, notes = sweep_catalogue_crosscheck(base, sorted(
+            (r for r in records if r.get("case") in order), key=lambda r: order[r["case"]]))
     except InputError as exc:
         return head + f"<p class='note'>(not available: {escape(str(exc))})</p>"
     return (head + (html_table(table, max_rows=500) if not table.empty else "")
