@@ -117,6 +117,11 @@ are of the generator of their date):
   written as ``DIR/case_<n>_mutant<k>.toml``); a mutant that keeps the physics (bearings,
   sources or outputs reversed, a bearing renamed) must keep the case's outcome (else a
   note).
+- 2026-11-24, session 20: structural mutations of the kind ``extreme``: one number scaled by
+  1e-300 .. 1e300 in its unit (:data:`EXTREME_FACTORS`; issue 6: 1e300 rpm was a bare
+  OverflowError, 1e150 L/min a NaN in the stepper), refused naming its field or, accepted,
+  solved like a case; the check step also evaluates the global_friction source
+  (:func:`thermobearing.scene_checks.check_global_friction`, as ``thermobearing check``).
 
 Usage::
 
@@ -1329,13 +1334,14 @@ def check_scene(scene: Any, raises: bool = False) -> str | None:
     from thermobearing.commands._preflight import preflight
     from thermobearing.commands.check import describe_measured
     from thermobearing.errors import ConvergenceError, InputError
-    from thermobearing.scene_checks import check_model_names
+    from thermobearing.scene_checks import check_global_friction, check_model_names
     from thermobearing.simulation import Simulation
 
     try:
         check_model_names(scene)
         sim = Simulation(scene, progress=False)
         preflight(sim)
+        check_global_friction(sim)
         text = sim.describe_chain(with_citations=True) + (sim.describe_estimates() or "")
         if scene.measured is not None:
             text += describe_measured(scene)
@@ -2112,7 +2118,10 @@ def typo_mutate(rng: np.random.Generator, doc: dict[str, Any]
 
 
 #: user-made changes of a scene's structure (``structure_mutate``)
-STRUCTURE_KINDS = ("duplicate", "empty", "swap", "reverse", "unicode", "scale")
+STRUCTURE_KINDS = ("duplicate", "empty", "swap", "reverse", "unicode", "scale", "extreme")
+#: factors of the ``extreme`` kind: a number far outside physical sense in its own unit
+#: (session-20 issue 6: 1e300 rpm stopped in an OverflowError, 1e150 L/min in a NaN)
+EXTREME_FACTORS = (1e-300, 1e-150, 1e-30, 1e30, 1e150, 1e300)
 UNICODE_NAMES = ("Lager-\u00dc 1", "\u8ef8\u53d7", "pr\u00fcfstand \u2713", "caf\u00e9 ",
                  "\u0394T-bearing", "A\u0301ngstr\u00f6m", "name with spaces")
 
@@ -2123,7 +2132,9 @@ def structure_mutate(rng: np.random.Generator, doc: dict[str, Any]
     duplicated (a step, a heat source, a bearing), a table or list emptied, two quantities
     of one table swapped (start / stop, ambient / initial, two diameters), a list reversed,
     a name or title in other scripts, or one number scaled by 1e-6 .. 1e6 in its unit (mm
-    written as m, kN as N). None when the drawn kind finds nothing to change."""
+    written as m, kN as N), or (``extreme``) by 1e-300 .. 1e300 (:data:`EXTREME_FACTORS`:
+    a value no bearing sees, which must be refused naming its field or run to finite
+    numbers). None when the drawn kind finds nothing to change."""
     import copy
 
     out = copy.deepcopy(doc)
@@ -2203,7 +2214,8 @@ def structure_mutate(rng: np.random.Generator, doc: dict[str, Any]
     for k in path:
         node = node[k]
     m = _QTY.match(node[key])
-    factor = float(pick([1e-6, 1e-3, 1e3, 1e6]))
+    factor = float(pick(list(EXTREME_FACTORS) if kind == "extreme"
+                        else [1e-6, 1e-3, 1e3, 1e6]))
     node[key] = f"{float(m.group(1)) * factor:.6g} {m.group(2)}"
     return out, f"{where((*path, key))} = {node[key]!r} (x{factor:g})"
 
