@@ -23,3 +23,25 @@ class CheapTable(cache.FilmTable):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.solver = stand_in_film
+
+
+def graded_film(w, rx, ep, u, s, T, *, lubricant, **_kw):
+    """FilmPoint of a stand-in whose thermal reduction falls with load and speed as the
+    thermal solve's does for D1842926 with OIL_4109 at 30 degC (0.24 at 57 kN/m and 44 m/s,
+    0.12 at 650 kN/m and 56 m/s: ``0.24 (w/57 kN/m)^-0.18 (u/44 m/s)^-1.15``), and whose
+    rolling traction is the thermal solve's 220 N/m (negative on surface 1). Unlike
+    :func:`stand_in_film`, the mean reduction of a set of nodes then differs from the
+    reduction at most nodes."""
+    eta0 = float(lubricant.dynamic_viscosity(T))
+    alpha = float(lubricant.pressure_viscosity_coefficient(T))
+    red = 0.24 * (w / 5.7e4) ** -0.18 * (u / 44.0) ** -1.15
+    h = red * float(moes_line_central(u, eta0, alpha, w, 1.0, rx, effective_modulus=ep))
+    return cache.FilmPoint(h, 0.99 * h, 1.0e9, -220.0, -220.0, 100.0)
+
+
+class GradedTable(cache.FilmTable):
+    """A FilmTable whose node solves are :func:`graded_film`."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.solver = graded_film

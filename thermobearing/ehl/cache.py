@@ -246,16 +246,33 @@ class FilmTable:
         return got
 
     def __call__(self, load_per_length: float, entrainment_speed: float,
-                 slide_to_roll: float, inlet_temperature: float) -> FilmPoint:
-        """Film and traction at one operating point (SI), from the table."""
+                 slide_to_roll: float, inlet_temperature: float, *,
+                 stand_in: Callable[[tuple[int, ...]], FilmPoint | None] | None = None
+                 ) -> FilmPoint:
+        """Film and traction at one operating point (SI), from the table.
+
+        ``stand_in(node)``: for a node not solved yet, a value to use instead of solving it
+        (None: solve it). The answer is then the same interpolation over the nodes' values,
+        with the stand-in values at those nodes, so that it stays continuous across cell
+        boundaries as long as each node has one value (solved or stand-in); see
+        :meth:`thermobearing.ehl.coupling.TehlFilmModel.films`.
+        """
         check_positive("load_per_length", load_per_length)
         check_positive("entrainment_speed", entrainment_speed)
         check_finite("slide_to_roll", slide_to_roll)  # NaN became a garbage table index
         check_temperature("inlet_temperature", inlet_temperature)
         self.queries += 1
         c = self._coords(load_per_length, entrainment_speed, slide_to_roll, inlet_temperature)
+
+        def node(idx: tuple[int, ...]) -> FilmPoint:
+            if stand_in is not None and not self.known(idx):
+                got = stand_in(idx)
+                if got is not None:
+                    return got
+            return self._node(idx)
+
         if self.mode == "nearest":
-            return self._node(tuple(int(v) for v in np.rint(c)))
+            return node(tuple(int(v) for v in np.rint(c)))
         lo = np.floor(c).astype(int)
         frac = c - lo
         acc = np.zeros(6)
@@ -266,7 +283,7 @@ class FilmTable:
             if wgt == 0.0:
                 continue
             try:
-                p = self._node(tuple(int(v) for v in lo + np.array(corner)))
+                p = node(tuple(int(v) for v in lo + np.array(corner)))
             except (InputError, ConvergenceError) as err:
                 failed_weight += wgt
                 first_error = first_error or err

@@ -69,9 +69,11 @@ starts, outer-race entrainment 11-55 m/s). Two things bound it:
   first inlet temperature it is asked for): a solve at a fixed inlet temperature needs one
   temperature node per cell corner, not two (342 -> 171 nodes);
 * :func:`solve_roller_tehl` solves in passes that admit only the nodes of the previous
-  pass's converged contacts (:attr:`TehlFilmModel.admitted`); other iterates get a
-  provisional film (171 -> 48 nodes, counted with a closed-form stand-in for the thermal
-  solve, tests/unit/test_tehl_cost19.py). Its returned state's films are all the table's.
+  pass's converged contacts (:attr:`TehlFilmModel.admitted`); the other unsolved nodes
+  take stand-in values (the closed form times the table's mean thermal corrections, fixed
+  for the pass) in the same interpolation, so the film stays continuous (171 -> 48 nodes,
+  counted with a closed-form stand-in for the thermal solve, tests/unit/test_tehl_cost19.py).
+  Its returned state's films are all the table's.
 
 See benchmarks/README.md, section BM-6.
 
@@ -99,14 +101,17 @@ _CALL: ContextVar[dict[str, Any] | None] = ContextVar("tehl_contact_call", defau
 @dataclass(frozen=True)
 class TehlFilms:
     """Table answers for a set of contacts (arrays, SI): central_film, minimum_film [m],
-    rolling_traction [N/m] (Poiseuille force per length, >= 0), max_temperature_rise [K],
-    numerical (bool: from the TEHL table, False: closed form x thermal reduction)."""
+    rolling_traction [N/m] (Poiseuille force per length, >= 0; NaN where ``table_share``
+    is 0), max_temperature_rise [K], numerical (bool: from the TEHL table alone, False:
+    closed form x thermal reduction, or blended with it), table_share (0..1: weight of the
+    table's rolling traction against the closed form's, :func:`tehl_contact_forces`)."""
 
     central_film: np.ndarray
     minimum_film: np.ndarray
     rolling_traction: np.ndarray
     max_temperature_rise: np.ndarray
     numerical: np.ndarray
+    table_share: np.ndarray
 
 
 class TehlFilmModel:
@@ -165,11 +170,10 @@ class TehlFilmModel:
         self.tables: dict[tuple[float, float], FilmTable] = {}
         self.failures = 0
         self._warned: set[tuple[float, ...]] = set()
-        #: None: every query solves the nodes it needs. A set (see :func:`solve_roller_tehl`):
-        #: only nodes of these cells ``(table key, node)`` are solved; a query needing another
-        #: unsolved node gets a provisional film (:meth:`_provisional`) and counts in
-        #: :attr:`provisional`.
-        self.admitted: set[tuple[Any, ...]] | None = None
+        #: per table key, the stand-in scales of this pass (:meth:`_stand_in_scales`)
+        self._frozen: dict[tuple[float, float], tuple[float, float, float, float, float]] = {}
+        self._admitted: set[tuple[Any, ...]] | None = None
+        #: answers that used a stand-in node (see :attr:`admitted`)
         self.provisional = 0
 
     # ----------------------------------------------------------------- tables
@@ -225,12 +229,14 @@ class TehlFilmModel:
         two_u = 2.0 * eta0 * ue / (e_prime * radius)
         return self.min_moes_m * math.sqrt(two_u) * e_prime * radius
 
-    def _query(self, tab: FilmTable, w: float, u: float, srr: float, T: float) -> Any:
-        """One table query, or None where a table node's thermal solve failed (the contact
-        then gets the closed-form film; a ValidityWarning names the state, once per node
-        set, and :attr:`failures` counts them)."""
+    def _query(self, tab: FilmTable, w: float, u: float, srr: float, T: float,
+               stand_in: Any = None) -> Any:
+        """One table query (``stand_in``: see :meth:`FilmTable.__call__`), or None where a
+        table node's thermal solve failed (the contact then gets the closed-form film; a
+        ValidityWarning names the state, once per node set, and :attr:`failures` counts
+        them)."""
         try:
-            return tab(w, u, srr, T)
+            return tab(w, u, srr, T, stand_in=stand_in)
         except (InputError, ConvergenceError) as err:
             self.failures += 1
             key = (round(math.log(w), 1), round(math.log(u), 1), round(srr, 2), round(T))
@@ -254,6 +260,10 @@ class TehlFilmModel:
         solver's range (``M > 3000`` or ``L > 40``). Grossly sliding contacts (which the
         Newton iterates of the quasi-dynamics visit on their way) thus get the isothermal
         closed-form film without a thermal solve; near-rolling contacts the thermal one.
+        ``table_share`` is ``1 - s`` where the contact is solved numerically (M >=
+        ``min_moes_m``), else 0. In a pass of :func:`solve_roller_tehl` (:attr:`admitted`
+        set) unsolved nodes outside the admitted cells take stand-in values
+        (:meth:`_stand_in`) in the same interpolation.
         """
         from ..film import moes_line_central
         from .line import L_RANGE, M_RANGE
@@ -278,9 +288,11 @@ class TehlFilmModel:
         moes_l = alpha * effective_modulus * two_u**0.25
         weight = np.where((moes_m > M_RANGE[1]) | (moes_l > L_RANGE[1]), 1.0, weight)
         srr = np.clip(srr_raw, -self.max_srr, self.max_srr)
-        out = np.zeros((5, w.size))
+        out = np.zeros((6, w.size))
         out[0] = out[1] = h_cf
         out[2] = math.nan
+        used = [False]
+        stand_in = None if self.admitted is None else self._stand_in(tab, used)
         for j in range(w.size):
             if weight[j] >= 1.0:
                 continue
@@ -288,13 +300,9 @@ class TehlFilmModel:
             w_min = self._w_min(uj, radius, effective_modulus, eta0)
             numerical = wj >= w_min
             w_q = wj if numerical else w_min
-            if self.admitted is not None and not self._may_solve(tab, w_q, uj, sj, T):
-                self.provisional += 1
-                out[0, j] = out[1, j] = h_cf[j] * ((1.0 - weight[j])
-                                                   * self._provisional(tab, eta0, alpha)
-                                                   + weight[j])
-                continue
-            p = self._query(tab, w_q, uj, sj, T)
+            used[0] = False
+            p = self._query(tab, w_q, uj, sj, T, stand_in)
+            self.provisional += int(used[0])
             if p is None:
                 continue
             h_q = h_cf[j] if numerical else float(moes_line_central(
@@ -305,36 +313,118 @@ class TehlFilmModel:
             out[2, j] = abs(p.rolling_traction) if numerical else math.nan
             out[3, j] = p.max_temperature_rise
             out[4, j] = 1.0 if (numerical and weight[j] == 0.0) else 0.0
-        return TehlFilms(out[0], out[1], out[2], out[3], out[4].astype(bool))
+            out[5, j] = 1.0 - weight[j] if numerical else 0.0
+        return TehlFilms(out[0], out[1], out[2], out[3], out[4].astype(bool), out[5])
 
-    def _may_solve(self, tab: FilmTable, w: float, u: float, srr: float, T: float) -> bool:
-        """Whether the table may answer at this point: every node it needs is known or in
-        :attr:`admitted`."""
+    @property
+    def admitted(self) -> set[tuple[Any, ...]] | None:
+        """None: every query solves the nodes it needs. A set (see :func:`solve_roller_tehl`):
+        only nodes of these cells ``(table key, node)`` are solved; any other unsolved node a
+        query needs gets a stand-in value (:meth:`_stand_in`) and the query counts in
+        :attr:`provisional`. Setting it starts a new pass: the stand-in values are fixed
+        again from the nodes solved by then."""
+        return self._admitted
+
+    @admitted.setter
+    def admitted(self, value: set[tuple[Any, ...]] | None) -> None:
+        self._admitted = value
+        self._frozen = {}
+
+    def _stand_in(self, tab: FilmTable, used: list[bool]) -> Any:
+        """``stand_in(node)`` for :meth:`FilmTable.__call__` in a pass of
+        :func:`solve_roller_tehl`: None for a node that is solved or admitted (the table
+        solves it), else the node's stand-in :class:`~thermobearing.ehl.cache.FilmPoint`
+        (:meth:`_stand_in_point`; ``used[0]`` is set).
+
+        Why node values and not a film for the whole contact: before, a contact whose cell
+        had one unadmitted, unsolved corner got the closed-form film times the table's mean
+        thermal reduction, every other contact the table's film. The film then jumped where
+        a contact crossed into such a cell. D1842926, 13218 r/min, 8 kN after 24 kN with one
+        table: the outer race's most loaded cell had its SRR 0 and +0.05 nodes solved (from
+        24 kN) but not -0.05, and the outer film jumped by 22 % where the outer slide-to-roll
+        ratio crossed 0, at the root (-5e-5): Newton, the bracketed and the slide solves all
+        failed (residual 3e-4, energy gaps 0.025). With one value per node the film is the
+        same multilinear interpolation everywhere, continuous across cells."""
         key = (tab.rx, tab.ep)
-        return all(tab.known(c) or (key, c) in self.admitted
-                   for c in tab.corners(w, u, srr, T))
+        admitted = self._admitted if self._admitted is not None else set()
 
-    def _provisional(self, tab: FilmTable, eta0: float, alpha: float) -> float:
-        """Thermal reduction ``h_TEHL/h_Moes`` for a point whose nodes are not solved (a
-        Newton iterate away from the states :func:`solve_roller_tehl` admitted): the mean
-        reduction of the table's solved nodes at this inlet temperature's viscosity, 1 (the
-        isothermal film) while it has none. Never the film of a returned state."""
+        def stand_in(idx: tuple[int, ...]) -> Any:
+            if (key, idx) in admitted:
+                return None
+            used[0] = True
+            return self._stand_in_point(tab, idx)
+
+        return stand_in
+
+    def _stand_in_scales(self, tab: FilmTable) -> tuple[float, float, float, float, float]:
+        """(thermal reduction ``h_c / h_Moes``, ``h_min / h_c``, ``|F_R| / F_R,DH``, sign of
+        the rolling traction, temperature rise [K]) of the stand-in values: the geometric
+        means (the arithmetic mean of the rise) over the table's solved nodes, fixed for the
+        pass at the first stand-in the table gives in it (so that every node keeps one value
+        during a pass); (1, 1, 1, -1, 0) while it has none (the isothermal closed form; the
+        thermal solver's rolling traction on surface 1 opposes the entrainment: negative).
+        ``F_R,DH``: Dowson-Higginson's Poiseuille force per length and surface (paper 000
+        eq. 35 halved, :func:`~thermobearing.skidding.roller_fluid.
+        dowson_higginson_rolling_force`). Measured on D1842926's nodes (OIL_4109, 30 degC,
+        44-56 m/s, 57-650 kN/m): reductions 0.12-0.24, rolling tractions 180-245 N/m."""
+        key = (tab.rx, tab.ep)
+        got = self._frozen.get(key)
+        if got is not None:
+            return got
         from ..film import moes_line_central
+        from ..skidding.roller_fluid import dowson_higginson_rolling_force
 
-        ratios = []
+        red, ratio, roll, rise, sign = [], [], [], [], 0.0
         for idx, p in tab.solved_nodes().items():
-            w_n, u_n, _s, _t = tab.node_point(idx)
-            h_n = float(moes_line_central(u_n, eta0, alpha, w_n, 1.0, tab.rx,
-                                          effective_modulus=tab.ep))
-            ratios.append(p.central_film / h_n)
-        return float(np.exp(np.mean(np.log(ratios)))) if ratios else 1.0
+            w_n, u_n, _s, t_n = tab.node_point(idx)
+            eta = float(self.lubricant.dynamic_viscosity(t_n))
+            alpha = float(self.lubricant.pressure_viscosity_coefficient(t_n))
+            red.append(p.central_film / float(moes_line_central(
+                u_n, eta, alpha, w_n, 1.0, tab.rx, effective_modulus=tab.ep)))
+            ratio.append(p.minimum_film / p.central_film)
+            f_dh = 0.5 * float(dowson_higginson_rolling_force(u_n, eta, alpha, tab.ep, tab.rx))
+            if p.rolling_traction != 0.0:
+                roll.append(abs(p.rolling_traction) / f_dh)
+            rise.append(p.max_temperature_rise)
+            sign += p.rolling_traction
+
+        def gmean(v: list[float]) -> float:
+            return float(np.exp(np.mean(np.log(v)))) if v else 1.0
+
+        got = (gmean(red), gmean(ratio), gmean(roll), 1.0 if sign > 0.0 else -1.0,
+               float(np.mean(rise)) if rise else 0.0)
+        self._frozen[key] = got
+        return got
+
+    def _stand_in_point(self, tab: FilmTable, idx: tuple[int, ...]) -> Any:
+        """Stand-in :class:`~thermobearing.ehl.cache.FilmPoint` of an unsolved node: the
+        isothermal closed form at the node (Moes central film, Dowson-Higginson rolling
+        traction, Hertz pressure) times the pass's scales (:meth:`_stand_in_scales`). Its
+        ``traction`` is the rolling traction (the Couette part is not estimated; the
+        quasi-dynamics take the Hertz-zone shear from their traction law). Never the film of
+        a state :func:`solve_roller_tehl` returns."""
+        from ..film import moes_line_central
+        from ..hertz import line_contact
+        from ..skidding.roller_fluid import dowson_higginson_rolling_force
+        from .cache import FilmPoint
+
+        red, ratio, roll, sign, rise = self._stand_in_scales(tab)
+        w_n, u_n, _s, t_n = tab.node_point(idx)
+        eta = float(self.lubricant.dynamic_viscosity(t_n))
+        alpha = float(self.lubricant.pressure_viscosity_coefficient(t_n))
+        h_c = red * float(moes_line_central(u_n, eta, alpha, w_n, 1.0, tab.rx,
+                                            effective_modulus=tab.ep))
+        f_r = sign * roll * 0.5 * float(dowson_higginson_rolling_force(u_n, eta, alpha,
+                                                                       tab.ep, tab.rx))
+        p_h = float(line_contact(w_n, 1.0, tab.rx, tab.ep).max_pressure)
+        return FilmPoint(h_c, ratio * h_c, p_h, f_r, f_r, rise)
 
     def state_cells(self, load_per_length: Any, entrainment_speed: Any, slide_to_roll: Any,
                     temperature: float, radius: float, effective_modulus: float
                     ) -> set[tuple[Any, ...]]:
         """Table nodes ``(table key, node)`` the film of these contacts is built from (the
         same queries as :meth:`films`), for both signs of each slide-to-roll ratio: near
-        rolling the Newton polish crosses SRR = 0, and a provisional film on the other side
+        rolling the Newton polish crosses SRR = 0, and a stand-in film on the other side
         (a different film than the table's) stalled it (stand-in test, D1842926 24 kN)."""
         from .line import L_RANGE, M_RANGE
 
@@ -436,8 +526,12 @@ def tehl_contact_forces(load: Any, length: float, radius: float, effective_modul
         q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0, alpha=alpha,
         film=lambda _ue, _w: h, traction_law=traction_law, temperature=temperature,
         rolling_force=rolling_force, oil_layer=oil_layer)
-    poise = np.where(res.numerical, res.rolling_traction * length, sub.poiseuille)
-    roll = np.where(res.numerical, 2.0 * res.rolling_traction * length, sub.rolling_force)
+    # the table's rolling traction blended into the closed form's by the sliding weight
+    # (it switched at |SRR| = max_slide_to_roll before: a jump in the roller balances)
+    share = res.table_share
+    table_poise = np.where(share > 0.0, res.rolling_traction, 0.0) * length
+    poise = share * table_poise + (1.0 - share) * sub.poiseuille
+    roll = share * 2.0 * table_poise + (1.0 - share) * sub.rolling_force
 
     def full(a: np.ndarray, fill: float) -> np.ndarray:
         o = np.full(z, fill)
@@ -474,8 +568,10 @@ def solve_roller_tehl(bearing: Any, lubricant: Any, speed: float, radial_load: f
     both abandoned) asked for 246 of the 342 nodes the solve requested (outer-race
     entrainment 11-55 m/s, loads 25-430 kN/m), at 5-20 s CPU each.
 
-    Passes: the first solve admits no node (every film is the closed form times the
-    table's mean thermal reduction, :meth:`TehlFilmModel._provisional`); each next pass
+    Passes: the first solve admits no node (unsolved nodes take stand-in values: the
+    closed form times the table's mean thermal corrections, :meth:`TehlFilmModel._stand_in`,
+    so that a table shared with earlier operating points gives a continuous film); each
+    next pass
     admits the nodes of the previous converged state's loaded contacts
     (:meth:`TehlFilmModel.state_cells`) and re-solves from that state. It stops when the
     converged state's nodes were all admitted: every film of the returned state is then

@@ -246,6 +246,18 @@ def _nodes(n: int) -> tuple[np.ndarray, np.ndarray]:
     return x, w
 
 
+def dowson_higginson_rolling_force(entrainment_speed: Any, eta0: float, alpha: float,
+                                   effective_modulus: float, radius: float) -> Any:
+    """Rolling-direction resultant of the film pressure per unit length, both bodies
+    together [N/m]: paper 000 eq. 35 (Dowson & Higginson),
+    ``Q_x / l = 18.4 G^-0.3 U^0.7 E' R`` with ``G = alpha E'`` and
+    ``U = eta0 u_m / (E' R)``, ``u_m`` the entrainment (mean rolling) speed [m/s];
+    eta0 [Pa s], alpha [1/Pa], E' [Pa], R = R_x [m]. Each surface takes the Poiseuille
+    shear ``Q_x / 2``."""
+    big_u = eta0 * np.asarray(entrainment_speed, dtype=float) / (effective_modulus * radius)
+    return 18.4 * (alpha * effective_modulus)**-0.3 * big_u**0.7 * effective_modulus * radius
+
+
 def closed_form_contact_forces(
     load: Any,
     length: float,
@@ -390,9 +402,8 @@ def closed_form_contact_forces(
     # --- rolling force Q_x: min(rigid-isoviscous, Dowson-Higginson eq. 35) --------------
     usum_abs = np.abs(usum)
     qx_rigid = k_qr * eta0 * usum_abs * length * np.sqrt(radius / h_r)
-    big_u = eta0 * (0.5 * usum_abs) / (effective_modulus * radius)  # mean speed u_m
-    g_mat = alpha * effective_modulus
-    qx_dh = 18.4 * g_mat**-0.3 * big_u**0.7 * effective_modulus * radius * length
+    qx_dh = dowson_higginson_rolling_force(0.5 * usum_abs, eta0, alpha, effective_modulus,
+                                           radius) * length
     if rolling_force == "regime_min":
         qx = np.minimum(qx_rigid, qx_dh)
     elif rolling_force == "dowson_higginson":
