@@ -76,3 +76,26 @@ def test_free_angle_rises_with_clearance_and_with_clearance_round_trips(name, c1
     if name == "QJ1044":
         assert moved.gothic_arch_offset == b.gothic_arch_offset
         assert moved.contact_angle == pytest.approx(moved.free_contact_angle, rel=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(fi=st.floats(0.515, 0.56), fo=st.floats(0.515, 0.56), pd=st.floats(0.0, 300e-6))
+def test_qj1044_with_clearance_keeps_the_free_angle(fi, fo, pd):
+    """skidding.qj1044.with_clearance (the calibrated clearance of a four-point bearing, same
+    free angle). Defect found by this test: with unequal conformities the closed-form
+    offset (exact only for f_i = f_o) gave a bearing whose free angle was 26.3 deg instead of
+    40 deg (f_i = 0.52, f_o = 0.545, 20 um), refused by the bearing's own consistency check
+    (InputError on gothic_arch_offset); now the bearing's general solve."""
+    from thermobearing.errors import InputError
+    from thermobearing.skidding.qj1044 import with_clearance
+
+    b = dataclasses.replace(BEARINGS["QJ1044"], inner_conformity=fi, outer_conformity=fo,
+                            gothic_arch_offset=None)
+    try:
+        moved = with_clearance(b, pd)
+    except InputError as err:   # a clearance the conformities cannot take at this angle
+        assert err.field in ("diametral_clearance", "bearing.diametral_clearance",
+                             "bearing.contact_angle")
+        return
+    assert moved.free_contact_angle == pytest.approx(b.free_contact_angle, abs=1e-10)
+    assert moved.diametral_clearance == pd

@@ -48,12 +48,22 @@ PROTOCOL_LOADS = np.concatenate([[0.0, 500.0, 1000.0], np.arange(2000.0, 42001.0
 def with_clearance(bearing, diametral_clearance: float):
     """A copy of a four-point bearing with another diametral clearance, same free angle.
 
-    The gothic-arch offset is recomputed from cos(theta_s) = cos(alpha_f) + P_d/(2A),
-    A = (f_i + f_o - 1) D (the relation of ``geometry.BallBearing.free_contact_angle_for``),
-    so the unloaded diagonal contact angle stays at the bearing's free angle.
+    The gothic-arch offset is recomputed so that the unloaded diagonal contact angle stays at
+    the bearing's free angle: for equal conformities from cos(theta_s) = cos(alpha_f) +
+    P_d/(2A), A = (f_i + f_o - 1) D (the relation of
+    ``geometry.BallBearing.free_contact_angle_for``); for unequal ones by the bearing's own
+    solve of that relation (``BallBearing._derive_offset``: the closed form holds for
+    f_i = f_o only and gave an offset the bearing refused, e.g. f_i = 0.52, f_o = 0.545:
+    free angle 26.3 deg instead of 40 deg at 20 um).
     """
     if bearing.kind != "four_point":
         return dataclasses.replace(bearing, diametral_clearance=diametral_clearance)
+    if bearing.inner_conformity != bearing.outer_conformity:
+        derived = dataclasses.replace(bearing, diametral_clearance=diametral_clearance,
+                                      contact_angle=bearing.free_contact_angle,
+                                      gothic_arch_offset=None)
+        return dataclasses.replace(bearing, diametral_clearance=diametral_clearance,
+                                   gothic_arch_offset=derived.gothic_arch_offset)
     big_a = (bearing.inner_conformity + bearing.outer_conformity - 1.0) * bearing.ball_diameter
     c = math.cos(bearing.free_contact_angle) + diametral_clearance / (2.0 * big_a)
     if not 0.0 < c < 1.0:
