@@ -97,12 +97,46 @@ class LineContact(NamedTuple):
 # ---------------------------------------------------------------------------
 # ellipticity
 # ---------------------------------------------------------------------------
+#: below this parameter m = 1 - 1/k^2 the ellipticity equation is evaluated by its series
+_SERIES_M = 0.05
+
+
+def _radius_ratio_series(m: float) -> float:
+    """alpha_r(k) = (k^2 E - K)/(K - E) for small m = 1 - 1/k^2, cancellation-free.
+
+    With K = (pi/2) sum c_n^2 m^n, E = (pi/2) sum c_n^2 m^n / (1 - 2n), c_n = (2n)!/(4^n n!^2)
+    (Abramowitz & Stegun 17.3.11-12): k^2 E - K = (E - (1 - m) K)/(1 - m) and K - E have
+    vanishing m^0 terms, which the series drops exactly:
+    alpha_r = sum_{n>=1} (c_n^2 (1/(1-2n) - 1) + c_{n-1}^2) m^(n-1)
+              / ((1 - m) sum_{n>=1} c_n^2 (2n/(2n-1)) m^(n-1)) -> 1 + 3m/4 as m -> 0.
+    """
+    num = 0.0
+    den = 0.0
+    c_prev2 = 1.0          # c_0^2
+    power = 1.0            # m^(n-1)
+    for n in range(1, 80):
+        c2 = c_prev2 * ((2.0 * n - 1.0) / (2.0 * n)) ** 2
+        num += (c2 * (1.0 / (1.0 - 2.0 * n) - 1.0) + c_prev2) * power
+        den += c2 * (2.0 * n / (2.0 * n - 1.0)) * power
+        c_prev2 = c2
+        power *= m
+        if power < 1e-18:
+            break
+    return num / ((1.0 - m) * den)
+
+
 def ellipticity_residual(k: float, radius_ratio: float) -> float:
     """Residual of the exact ellipticity equation, (k^2 E - K) - alpha_r (K - E) (scaled).
 
-    Divided by (K - E) so that the residual is alpha_r(k) - alpha_r [-].
+    Divided by (K - E) so that the residual is alpha_r(k) - alpha_r [-]. Near a circle
+    (m = 1 - 1/k^2 < 0.05) by the series of :func:`_radius_ratio_series`: the closed form
+    divides two differences that vanish with m (relative round-off eps/m), which put a
+    noise of 1.4e-7 on alpha_r at k = 1 + 1e-9 and made radius ratios 1 + 1.4e-7 .. 1 + 3.3e-6
+    fail their 1e-10 residual check (ConvergenceError).
     """
     m = 1.0 - 1.0 / k**2
+    if m < _SERIES_M:
+        return _radius_ratio_series(m) - radius_ratio
     big_k, big_e = float(ellipk(m)), float(ellipe(m))
     return (k**2 * big_e - big_k) / (big_k - big_e) - radius_ratio
 
@@ -112,8 +146,8 @@ def _exact_k(radius_ratio: float) -> float:
     if radius_ratio - 1.0 < 1e-12:
         return 1.0
     # alpha_r(k) is monotonic increasing with alpha_r(1+) = 1; bracket k in (1, ~alpha_r]
-    lo = 1.0 + 1e-9
-    if ellipticity_residual(lo, radius_ratio) >= 0.0:  # ratio within ~1e-9 of a circle
+    lo = 1.0 + 1e-13
+    if ellipticity_residual(lo, radius_ratio) >= 0.0:  # ratio within 1.5e-13 of a circle
         return 1.0
     hi = max(2.0, radius_ratio ** (2.0 / math.pi) * 1.5)
     while ellipticity_residual(hi, radius_ratio) < 0.0:

@@ -60,6 +60,29 @@ def test_point_contact_of_a_sphere_on_a_plane(q, r, ep, method):
     assert math.isclose(float(pc.approach), a * a / r, rel_tol=1e-12)
 
 
+@settings(max_examples=80, deadline=None)
+@given(log_excess=st.floats(-14.0, -1.0), more=st.floats(1.001, 3.0))
+def test_nearly_circular_contacts_have_an_ellipticity(log_excess, more):
+    """Defect found by this test: radius ratios 1 + 1.4e-7 .. 1 + 3.3e-6 raised
+    ConvergenceError (residual 8.4e-10 against 1e-10): alpha_r(k) = (k^2 E - K)/(K - E) divides
+    two differences that vanish at k = 1 (round-off eps/m, m = 1 - 1/k^2). Now a series near
+    the circle. Near it alpha_r = 1 + 3m/4 + O(m^2), so k - 1 = (2/3)(alpha_r - 1) to first
+    order (measured second-order deviation -(alpha_r - 1)/6 relative)."""
+    e = (1.0 + 10.0**log_excess) - 1.0     # the excess the float 1 + e holds
+    k = float(hertz.ellipticity(1.0 + e)[0])
+    assert abs(hertz.ellipticity_residual(k, 1.0 + e)) <= 1e-10 * (1.0 + e) or k == 1.0
+    if 1.0 + e <= 1.0 + 1e-12:   # the module's circle: k = 1 within 1e-12 of it
+        assert k == 1.0
+    elif e <= 1e-4:
+        # brentq's xtol 1e-15 and the spacing of floats near 1
+        assert abs(k - 1.0 - 2.0 * e / 3.0) <= 2.0 * e / 3.0 * e + 4e-15
+    assert float(hertz.ellipticity(1.0 + e * more)[0]) >= k
+    kv = float(hertz.ellipticity(np.array([1.0 + e, 2.0]))[0][0])
+    assert math.isclose(kv, k, rel_tol=1e-12)
+    pc = hertz.point_contact(10.0, 0.01, 0.01 * (1.0 + e), E_PRIME)
+    assert 1.0 <= float(pc.a) / float(pc.b) < 1.0 + e
+
+
 @settings(max_examples=40, deadline=None)
 @given(q=st.floats(1.0, 1e4), rx=st.floats(1e-3, 5e-2), log_ratio=st.floats(1.5, 8.0))
 def test_long_ellipse_tends_to_the_line_contact(q, rx, log_ratio):
