@@ -51,6 +51,7 @@ from .report_measured import (  # noqa: E402  (re-exported: the report's public 
     temperature_errors,
 )
 from .results import Results  # noqa: E402
+from .warning_groups import merge_twin_bearings  # noqa: E402
 
 #: the sections every report has (with a scene also "Bearing and operating points")
 SECTIONS = ("Loss breakdown", "Figures", "Validity warnings", "Model chain", "Energy audit",
@@ -244,6 +245,15 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
     return _png(fig)
 
 
+def _bearing_names(results: Results, scene: Any) -> list[str]:
+    """The bearings of a run: the scene's, else those its tables name."""
+    names = [b.name for b in getattr(scene, "bearings", None) or [] if getattr(b, "name", "")]
+    for table in results.tables.values():
+        if "bearing" in table:
+            names += [str(n) for n in table["bearing"].dropna().unique()]
+    return list(dict.fromkeys(names))
+
+
 def map_levels(lo: float, hi: float, bins: int = 12) -> np.ndarray:
     """Contour levels of a loss map whose colour scale is shared over figures (a sweep's
     maps per value of a third swept field): round steps covering [lo, hi], so the colour
@@ -395,8 +405,10 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
         limits = CheckLimits.from_dict(results.check_limits)
         parts.append(f"<p>thresholds of the operating checks: {esc(limits.describe())}</p>")
     if results.warnings:
+        # identical bearings' identical lines once (metadata.json keeps one per bearing)
+        merged = merge_twin_bearings(list(results.warnings), _bearing_names(results, scene))
         parts.append("<ul>" + "".join(f"<li class='warn'>{esc(w)}</li>"
-                                      for w in results.warnings) + "</ul>")
+                                      for w in merged) + "</ul>")
     else:
         parts.append("<p>none</p>")
     parts.append("<h2 id='model-chain'>Model chain</h2>")

@@ -102,7 +102,7 @@ from .simulation_chain import (
 from .simulation_summary import summarize_scene
 from .simulation_tables import film_table, kinematics_columns, over_skidding_range, step_columns
 from .state import OilSupply, OperatingPoint
-from .warning_groups import WarningGroups
+from .warning_groups import WarningGroups, merge_twin_bearings
 
 __all__ = [
     "BALL_SOURCES", "MAX_SHOWN_WARNINGS", "MODEL_KEYS", "ROLLER_SOURCES", "ChainLink",
@@ -771,11 +771,14 @@ class Simulation:
                 lines.append(f"{key} (numerical film): {value['solves']} thermal EHL solves "
                              f"({value['solve_cpu_s']:.1f} s CPU), {value['queries']} queries")
         if results.warnings:
-            shown = results.warnings[:MAX_SHOWN_WARNINGS]
-            lines.append(f"validity warnings ({len(results.warnings)}; all in the report):")
+            # identical bearings' identical lines once (the default rig listed each twice)
+            merged = merge_twin_bearings(list(results.warnings),
+                                         [b.name for b in self.bearings])
+            shown = merged[:MAX_SHOWN_WARNINGS]
+            lines.append(f"validity warnings ({len(merged)}; all in the report):")
             lines.extend(f"  - {w}" for w in shown)
-            if len(results.warnings) > len(shown):
-                lines.append(f"  ... {len(results.warnings) - len(shown)} more")
+            if len(merged) > len(shown):
+                lines.append(f"  ... {len(merged) - len(shown)} more")
         return "\n".join(lines)
 
 

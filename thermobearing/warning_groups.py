@@ -152,3 +152,40 @@ class WarningGroups:
                             in zip(parsed[1].items(), _interval_texts(message), strict=True)}
         self._groups[key] = group
         self.lines.append(group.line())
+
+
+def merge_twin_bearings(lines: list[str], bearings: list[str]) -> list[str]:
+    """The warning ``lines`` of a run with the lines that differ only in their bearing
+    merged into one, for a reader: ``"drive_end, steps 0-21: <text>"`` and
+    ``"non_drive_end, steps 0-21: <text>"`` (two identical, identically loaded bearings,
+    as on the default rig: every film-range and skid line twice) become ``"drive_end and
+    non_drive_end (each), steps 0-21: <text>"`` at the first one's place (its counts are
+    each bearing's). A line is a bearing's
+    when it starts with one of ``bearings`` followed by ``", "`` or ``": "``; other lines
+    and bearings whose text differs are kept as they are. The run's own list
+    (``Results.warnings``, ``metadata.json``) keeps one line per bearing."""
+    names = sorted((b for b in bearings if b), key=len, reverse=True)
+    owners: dict[str, list[str]] = {}  # the text after the bearing -> its bearings
+    keyed: list[tuple[str | None, str]] = []
+    for line in lines:
+        name = next((b for b in names if line.startswith(b + ", ")
+                     or line.startswith(b + ": ")), None)
+        if name is None:
+            keyed.append((None, line))
+            continue
+        rest = line[len(name):]
+        if name not in owners.setdefault(rest, []):
+            owners[rest].append(name)
+        keyed.append((rest, line))
+    out: list[str] = []
+    done: set[str] = set()
+    for rest, line in keyed:
+        if rest is None:
+            out.append(line)
+        elif rest not in done:
+            done.add(rest)
+            who = owners[rest]
+            joined = who[0] if len(who) == 1 else (", ".join(who[:-1]) + " and " + who[-1]
+                                                   + " (each)")
+            out.append(joined + rest)
+    return out

@@ -1,0 +1,61 @@
+"""Session-20 user tour: the default rig's two identical bearings printed every film-range
+and skid warning twice (8 lines, 5 different); the reader gets each once."""
+
+from __future__ import annotations
+
+import pandas as pd
+
+from thermobearing.warning_groups import merge_twin_bearings
+
+FILM = ("hamrock_dowson_1977_central: U in [9.79e-11, 1.82e-10] outside [1e-12, 1e-10] "
+        "[raised 68 times at 22 steps; intervals are the envelope of all]")
+SKID = ("cage skidding (cage slower than epicyclic) by more than 5% at 2 of 22 steps "
+        "(steps 0-1); largest -51.9 % at step 0")
+
+
+def test_lines_that_differ_only_in_their_bearing_are_one_line_at_the_first_place():
+    lines = ["calibrated ball force-model parameters from QJ1044.calibration.toml",
+             "shaft link drive_end.shaft -- non_drive_end.shaft: G = 3.573 W/K",
+             f"drive_end, steps 0-21: {FILM}", f"non_drive_end, steps 0-21: {FILM}",
+             f"drive_end: {SKID}", f"non_drive_end: {SKID.replace('-51.9', '-40.2')}"]
+    merged = merge_twin_bearings(lines, ["drive_end", "non_drive_end"])
+    assert merged == [lines[0], lines[1],
+                      f"drive_end and non_drive_end (each), steps 0-21: {FILM}",
+                      lines[4], lines[5]]  # the skid lines differ: both kept
+    # three bearings, a name that is the start of another, no bearing at all
+    three = [f"a: {SKID}", f"a_2: {SKID}", f"b: {SKID}", "a_2, step 3: other"]
+    assert merge_twin_bearings(three, ["a", "a_2", "b"]) == [
+        f"a, a_2 and b (each): {SKID}", "a_2, step 3: other"]
+    assert merge_twin_bearings(lines[:2], []) == lines[:2]
+
+
+def test_the_run_summary_and_the_report_list_a_twin_line_once(tmp_path):
+    from thermobearing.report import html_report
+    from thermobearing.results import Results
+
+    warnings = [f"drive_end, steps 0-21: {FILM}", f"non_drive_end, steps 0-21: {FILM}"]
+    kin = pd.DataFrame({"step": [0, 0], "bearing": ["drive_end", "non_drive_end"],
+                        "cage speed ratio [-]": [0.45, 0.45]})
+    res = Results(tables={"kinematics": kin}, warnings=warnings)
+    text = html_report(res, "twins")
+    assert text.count("hamrock_dowson_1977_central") == 1
+    assert "drive_end and non_drive_end (each), steps 0-21" in text
+    # the run's own list keeps one line per bearing
+    assert res.warnings == warnings
+
+
+def test_the_default_rig_summary_prints_its_film_range_warning_once():
+    from thermobearing.scene import load_scene, loads_scene
+    from thermobearing.simulation import Simulation
+    from thermobearing.toml_writer import dumps_toml
+
+    d = load_scene().to_dict()
+    d["schedule"] = {"steps": [{"duration": "1 min", "speed": "1800 rpm",
+                                "radial_load": "1 kN", "axial_load": "4 kN"}]}
+    sim = Simulation(loads_scene(dumps_toml(d)), progress=False)
+    res = sim.run()
+    film = [w for w in res.warnings if "hamrock_dowson_1977_central:" in w]
+    assert [w.split(",")[0] for w in film] == ["drive_end", "non_drive_end"]
+    text = sim.summary_text(res)
+    assert text.count("hamrock_dowson_1977_central:") == 1
+    assert "  - drive_end and non_drive_end (each), step 0: hamrock_dowson" in text
