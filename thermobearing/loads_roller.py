@@ -448,6 +448,14 @@ def roller_film_load_distribution(
     dx, dy = (0.0, 0.0) if x0 is None else (float(x0[0]), float(x0[1]))
     q, res = residual(dx, dy)
     norm = float(np.hypot(*res))
+    # elastic approach of a roller carrying about 4 F_r / Z (Stribeck) through both
+    # contacts in series, plus the outer approach under the body force (it widens the inner
+    # gaps): the displacement scale of the soft spring below when the clearance is smaller
+    # (else F / (P_d/2) took steps of 1e-9 m for a ring that had to move 1e-4 m: 60
+    # iterations did not reach the load at P_d = 1e-9 m with films thinner than the gap)
+    k_series = (k_inner ** -inv_n + k_outer ** -inv_n) ** -exponent
+    approach = ((4.0 * radial_load / (z * k_series)) ** inv_n
+                + (max(float(np.max(fb)), 0.0) / k_outer) ** inv_n)
     it = 0
     while norm > rtol * max(radial_load, 1e-3 * float(np.sum(q)), 1e-9):
         if it >= max_iter:
@@ -462,7 +470,7 @@ def roller_film_load_distribution(
         # singular Jacobian where the films leave gaps open (starved films: the ring rests
         # on one roller, or on none yet): add a soft spring F / (P_d/2) so that the step
         # moves the ring towards the load, and accept a step over a flat residual
-        k_ref = max(radial_load, 1e-3 * float(np.sum(q)), 1e-9) / max(half, 1e-9)
+        k_ref = max(radial_load, 1e-3 * float(np.sum(q)), 1e-9) / max(half, approach, 1e-9)
         flat = abs(float(np.linalg.det(jac))) <= 1e-10 * max(float(np.max(np.abs(jac))),
                                                               k_ref) ** 2
         step = -np.linalg.solve(jac + k_ref * np.eye(2) if flat else jac, res)

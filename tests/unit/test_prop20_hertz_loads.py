@@ -33,7 +33,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from thermobearing import hertz
@@ -202,3 +202,34 @@ def test_roller_load_zone_follows_the_clearance(z, load, c1, c2):
         assert np.array_equal(ld.loaded[sure], reach[sure] > 0)
         zones.append(ld.n_loaded)
     assert zones[1] <= zones[0]
+
+
+@settings(max_examples=60, deadline=None)
+@given(z=st.integers(6, 30), log_pd=st.floats(-10.0, -4.0), load=st.floats(1.0, 3e5),
+       fi=st.floats(0.0, 0.25), fo=st.floats(0.0, 0.25),
+       body=st.one_of(st.just(0.0), st.floats(0.1, 800.0)), ratio=st.floats(0.5, 2.0))
+@example(z=16, log_pd=math.log10(1.1469611078165806e-09), load=130164.14804240191, fi=0.0,
+         fo=0.0, body=0.0, ratio=1.0)
+@example(z=26, log_pd=math.log10(1.1500624627381048e-09), load=11.690171461160872, fi=0.0,
+         fo=0.0, body=795.3917538886001, ratio=1.0)
+def test_constant_films_are_a_smaller_clearance(z, log_pd, load, fi, fo, body, ratio):
+    """roller_film_load_distribution with films of constant thickness h_i, h_o is the dry
+    distribution with the clearance P_d - 2 (h_i + h_o) (its gap equation (3) then reads
+    delta_i + delta_o = delta_r . e_j - (P_d/2 - h_i - h_o)). Defect found by this test: with
+    a clearance below about 4e-8 m the soft spring of its Newton step, F / (P_d/2), was so
+    stiff that the ring crept by P_d/2 per iteration (Z = 16, P_d = 1.1e-9 m, 130 kN: 8e-9 m
+    of the 1.2e-4 m needed after 60 iterations, ConvergenceError); it now spans the elastic
+    approach of the most loaded roller and the outer approach under the body force."""
+    from thermobearing.loads_roller import roller_film_load_distribution
+
+    pd = 10.0**log_pd
+    hi, ho = fi * pd, fo * pd
+    film = roller_film_load_distribution(
+        z, pd, load, lambda q: np.full_like(q, hi), lambda q: np.full_like(q, ho), K_LINE,
+        K_LINE * ratio, body_force=body)
+    dry = roller_load_distribution(z, pd - 2.0 * (hi + ho), load, K_LINE, K_LINE * ratio,
+                                   body_force=body)
+    scale = max(load, float(np.max(dry.inner_load)))
+    np.testing.assert_allclose(film.inner_load, dry.inner_load, rtol=0, atol=1e-8 * scale)
+    np.testing.assert_allclose(film.outer_load, dry.outer_load, rtol=0,
+                               atol=1e-8 * scale + 1e-12 * body)
