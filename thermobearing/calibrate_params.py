@@ -120,6 +120,15 @@ def _template_entry(scene: Scene) -> tuple[str, Any]:
     return name, TEMPLATES.entry(name)
 
 
+def _did_you_mean_parameter(name: str, known: Sequence[str]) -> str:
+    """``"; did you mean network.parameters.h_oil?"`` for a misspelt template parameter
+    (``h_oill``), else ``""``."""
+    import difflib
+
+    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.75)
+    return f"; did you mean network.parameters.{close[0]}?" if close else ""
+
+
 def _parse_existing(raw: Any, field_name: str) -> tuple[float, str, str]:
     """(SI value, SI unit, unit as written) of a scene value: a unit string or a number."""
     if isinstance(raw, bool) or not isinstance(raw, int | float | str):
@@ -144,9 +153,11 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
     parts = path.split(".")
     if parts[0] == "network":
         tname, entry = _template_entry(scene)
+        fittable = sorted(k for k in entry.parameters if k not in _SET_ELSEWHERE)
         if len(parts) != 3 or parts[1] != "parameters":
             raise InputError("fit", path, "network.parameters.<name>, a parameter of template "
-                             f"{tname!r}: " + ", ".join(sorted(entry.parameters)))
+                             f"{tname!r}: " + ", ".join(fittable)
+                             + _did_you_mean_parameter(parts[-1], fittable))
         name = parts[2]
         if name in _SET_ELSEWHERE:
             raise InputError("fit", path, f"{_SET_ELSEWHERE[name]} (set there, not in the "
@@ -154,8 +165,7 @@ def _make_parameter(scene: Scene, scene_dict: Mapping[str, Any], path: str,
         unit = entry.parameters.get(name)
         if unit is None:
             raise InputError("fit", path, f"a parameter of template {tname!r}: "
-                             + ", ".join(sorted(k for k in entry.parameters
-                                                if k not in _SET_ELSEWHERE)))
+                             + ", ".join(fittable) + _did_you_mean_parameter(name, fittable))
         unit = "" if unit in _DIMENSIONLESS else unit
         raw = scene.network.get("parameters", {}).get(name)
         display = unit

@@ -220,3 +220,22 @@ def test_the_sweep_cross_check_lists_the_cases_in_the_summary_order(tmp_path, mo
     finished = [{"case": c, "params": {}} for c in ("b", "c", "x", "a", "d")]
     html = _crosscheck_html(tmp_path, df, finished)
     assert seen == ["a", "b", "c", "d"] and "Catalogue cross-check" in html
+
+
+@pytest.mark.parametrize("path, meant", [
+    ("network.parameters.h_oill", "network.parameters.h_oil"),
+    ("network.h_oil", "network.parameters.h_oil"),
+    ("network.parameters.housing_lenght", "network.parameters.housing_length")])
+def test_a_misspelt_network_parameter_to_fit_gets_the_nearest_name(path, meant):
+    """`--fit network.parameters.h_oill` listed the template's parameters without pointing
+    at h_oil (a misspelt scene path, `--fit h_air`, got "did you mean")."""
+    from thermobearing.calibrate_params import _make_parameter
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_rig")
+    with pytest.raises(InputError) as info:
+        _make_parameter(scene, scene.to_dict(), path, {}, {}, {})
+    text = str(info.value)
+    assert text.endswith(f"did you mean {meant}?")
+    # the fields set elsewhere (the supply, the environment) are not offered
+    assert "oil_flow" not in text and "ambient_temperature" not in text
