@@ -66,6 +66,9 @@ def test_element_churning_is_eq10_per_roller_by_hand(crb30k):
     assert ch.element_frontal_area(crb30k.bearing) == pytest.approx(3.6e-5, rel=1e-12)
     r = _by_source(crb30k, ["churning_elements"])["churning_elements"]
     assert r.details["form"] == "harris"
+    # the roller's own Reynolds number u D / nu = 44.375 * 0.006 / 7.896e-6 = 3.37e4: inside
+    # the cylinder drag plateau that c_d = 1.0 stands for
+    assert r.details["element_reynolds"] == pytest.approx(3.372e4, rel=2e-3)
     assert r.components["element churning"] == pytest.approx(2591.0, rel=2e-3)
     force = r.forces["element_drag_force"]
     assert float(force[0]) == pytest.approx(-2.433, rel=2e-3)  # against the orbit

@@ -532,7 +532,10 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
     return _element_result(ctx, name, -force * np.sign(u), u,
                            {"oil_fraction": float(np.mean(x)), "form": form,
                             "mu_v": float(np.mean(reg.mu_v)),
-                            "reynolds": float(np.mean(reg.reynolds))})
+                            "reynolds": float(np.mean(reg.reynolds)),
+                            # the element's own Re = |u| D / nu, which sets c_d (the drag
+                            # plateau of the validity range); "reynolds" is eq. 16's annulus
+                            "element_reynolds": float(np.mean(np.abs(u))) * d_elem / nu})
 
 
 def _element_result(ctx: HeatContext, name: str, signed: np.ndarray, u: np.ndarray,
