@@ -82,13 +82,13 @@ r/min, oil [degC]      this (fluid / total*)  SKF drag / total   Palmgren M0+M1
 (* fluid = elements + inner ring + cage churning; total adds the cage land, without EHL
 rolling resistance, which that scene does not list.) So at 30000 r/min the fluid drag is
 physics, not a slip: SKF's own drag term is 78 % of its total there and the element drag
-is 1.05-1.08 x SKF's drag; the totals agree within 6 %. Palmgren's M0 = f0 (nu n)^(2/3)
+is 1.05-1.08 x SKF's drag; the totals agree within 7 %. Palmgren's M0 = f0 (nu n)^(2/3)
 d_m^3 has no inertial (n^2 moment) drag term and falls with the viscosity as the bearing
 warms (1939 -> 1215 W from 80 to 120 degC), while drag does not depend on the viscosity:
 hence the 50-130 % (more in hot transient steps). What does differ is the speed law:
 with Parker's X ~ 1/n the element drag power goes as n^2 at a given flow, SKF's drag power
 as n^3 (its moment ~ n^2, oil-jet rule recalled, not checked), so at 10000 r/min the
-element drag is 3.2 x SKF's drag (288 against 90 W) though the totals are within 14 %.
+element drag is 3.2 x SKF's drag (288 against 90 W) though the totals are within 15 %.
 Neither the Parker constant nor SKF's jet rule could be checked against its original, so
 the difference is a model uncertainty, not a defect: ``parker_constant``,
 ``drag_coefficient`` and ``oil_swirl`` are the levers when measurements exist.
