@@ -303,10 +303,17 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
 
 def _stamped(calibrated: Scene, fitted: Sequence[FittedParameter], original: Scene) -> Scene:
     """The calibrated scene with a line in ``source`` saying what was fitted to what (the
-    TOML header comments do not survive a load/save round trip; ``source`` does)."""
+    TOML header comments do not survive a load/save round trip; ``source`` does) and the
+    fitted values after its ``title`` (the heading of its run's report)."""
     data = original.measured.file if original.measured is not None else "measured data"
     what = ", ".join(f"{p.path} = {p.value:.6g} {p.unit}".rstrip() for p in fitted)
     line = (f"Calibrated with thermobearing.calibrate against {data}: "
             f"{what}.")
     text = f"{original.source}\n{line}" if original.source else line
-    return calibrated.with_changes(source=text)
+    # the title too: the report of a rerun with the calibrated scene had the same heading
+    # as the uncalibrated run's, so two reports side by side could not be told apart
+    short = ", ".join(f"{p.path.rsplit('.', 1)[-1]} = {p.value:.4g} {p.unit}".rstrip()
+                      for p in fitted)
+    base = original.title.split(" (calibrated: ")[0]  # a calibrated scene fitted again
+    title = f"{base} (calibrated: {short})" if short else original.title
+    return calibrated.with_changes(source=text, title=title)

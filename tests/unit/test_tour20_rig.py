@@ -239,3 +239,24 @@ def test_a_misspelt_network_parameter_to_fit_gets_the_nearest_name(path, meant):
     assert text.endswith(f"did you mean {meant}?")
     # the fields set elsewhere (the supply, the environment) are not offered
     assert "oil_flow" not in text and "ambient_temperature" not in text
+
+
+def test_the_calibrated_scene_says_so_in_its_title():
+    """The rerun with the calibrated scene wrote a report headed exactly as the
+    uncalibrated run's; the title now carries the fitted values (once, also when a
+    calibrated scene is fitted again)."""
+    from thermobearing.calibrate import _stamped
+    from thermobearing.calibrate_result import FittedParameter
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("qj1044_synthetic_measured")
+    fitted = [FittedParameter("network.parameters.h_oil", "W/(m**2*K)", "log", 270.0,
+                              374.8123, 339.3, 414.1, 0.05),
+              FittedParameter("network.parameters.h_air", "W/(m**2*K)", "log", 10.0,
+                              17.8312, 13.8, 23.1, 0.13)]
+    once = _stamped(scene, fitted, scene)
+    assert once.title == (f"{scene.title} (calibrated: h_oil = 374.8 W/(m**2*K), "
+                          "h_air = 17.83 W/(m**2*K))")
+    again = _stamped(once, fitted[:1], once)
+    assert again.title == f"{scene.title} (calibrated: h_oil = 374.8 W/(m**2*K))"
+    assert "Calibrated with thermobearing.calibrate" in again.source
