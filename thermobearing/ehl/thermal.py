@@ -76,6 +76,13 @@ from .solver import LineProblem, newton_solve, time_march
 #: 4 D1842926 nodes (n = 512-2048, tolerance 0.03 K): 40 / 80 / 120 K take 24-34 / 26-30 /
 #: 25-28 outer iterations, films within 1e-3 of each other.
 MAX_FIRST_TEMPERATURE_STEP = 80.0
+#: The column scan of an outer iteration stops when a sweep changes the temperatures by less
+#: than this fraction of the previous outer iteration's change (at most 1 K, at least 1e-4 K):
+#: early outer iterations, which move the field by tens of kelvin, need no 1e-4 K inner
+#: solve. 8 D1842926 nodes: scan CPU 2.5x smaller, the same outer iterations (+-1), films
+#: and forces within 1.1e-3 of the fixed point as with 1e-4 K throughout (0.05: 4x smaller,
+#: still within 1e-3).
+INNER_TOLERANCE_FRACTION = 0.01
 
 
 @dataclass(frozen=True)
@@ -445,7 +452,8 @@ def solve_thermal_line_contact(
         g[:, ns - 1: ns - 2 + nz] = k_f / dzf[:, None]
         g[:, ns - 2 + nz:] = solid2.thermal_conductivity / dsb[None, :]
         T_old = T.copy()
-        _column_scan(T, ucol, adv, g, src, lin, dx, T_in, 50, 1e-4)
+        _column_scan(T, ucol, adv, g, src, lin, dx, T_in, 50,
+                     max(1e-4, INNER_TOLERANCE_FRACTION * min(change, 100.0)))
         step = relax * (T - T_old)
         change = float(np.max(np.abs(step)))
         if outer == 1 and change > MAX_FIRST_TEMPERATURE_STEP:
