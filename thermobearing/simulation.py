@@ -740,7 +740,11 @@ class Simulation:
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
             per_step = losses.groupby(["step", "bearing"])["power [W]"].sum()
-            lines.append(f"total loss per bearing: {per_step.min():.0f} - {per_step.max():.0f} W")
+            lo, hi = _watts(per_step.min()), _watts(per_step.max())
+            # a small bearing's watts keep their digits (the 6206 map read "1 - 23 W" for
+            # 0.962 - 22.9 W); one operating point gives one number
+            lines.append(f"total loss per bearing: {lo} W" if lo == hi else
+                         f"total loss per bearing: {lo} - {hi} W")
         temps = results.tables.get("temperatures")
         steady = results.tables.get("steady_temperatures")
         if temps is not None and not temps.empty:
@@ -780,6 +784,12 @@ class Simulation:
             if len(merged) > len(shown):
                 lines.append(f"  ... {len(merged) - len(shown)} more")
         return "\n".join(lines)
+
+
+def _watts(p: float) -> str:
+    """A loss for the run summary: three significant digits below 100 W, whole watts
+    above (``0.962``, ``22.9``, ``1318``)."""
+    return f"{p:.3g}" if abs(p) < 100.0 else f"{p:.0f}"
 
 
 def _first_csr_lines(kin: pd.DataFrame, checks: Mapping[str, Any] | None = None,

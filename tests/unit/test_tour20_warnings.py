@@ -59,3 +59,24 @@ def test_the_default_rig_summary_prints_its_film_range_warning_once():
     text = sim.summary_text(res)
     assert text.count("hamrock_dowson_1977_central:") == 1
     assert "  - drive_end and non_drive_end (each), step 0: hamrock_dowson" in text
+
+
+def test_the_run_summary_gives_a_small_bearing_s_loss_with_its_digits():
+    """The 6206 loss map printed "total loss per bearing: 1 - 23 W" for 0.962 - 22.9 W,
+    and a one-point run "1486 - 1486 W"."""
+    from thermobearing.results import Results
+    from thermobearing.scene import load_scene
+    from thermobearing.simulation import Simulation
+
+    sim = Simulation(load_scene("qj1044_rig"), progress=False)
+
+    def losses(powers):
+        return pd.DataFrame({"step": list(range(len(powers))), "bearing": "test",
+                             "power [W]": powers})
+
+    text = sim.summary_text(Results(tables={"losses": losses([0.96215, 22.946])}))
+    assert "total loss per bearing: 0.962 - 22.9 W" in text
+    text = sim.summary_text(Results(tables={"losses": losses([1318.12, 1517.9])}))
+    assert "total loss per bearing: 1318 - 1518 W" in text
+    text = sim.summary_text(Results(tables={"losses": losses([1486.2])}))
+    assert "total loss per bearing: 1486 W" in text

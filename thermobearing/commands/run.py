@@ -23,7 +23,10 @@ HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and wri
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("scene", nargs="?", help="scene TOML path or preset name")
+    parser.add_argument("scene", nargs="?",
+                        help="scene TOML path or preset name (default: the embedded QJ1044 "
+                             "rig of seed paper 002, preset qj1044_rig; copy "
+                             "configs/scenes/qj1044_rig.toml to edit it)")
     parser.add_argument("--out", default=None,
                         help="results folder (default: results/<scene file name>)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar, less output")
