@@ -182,6 +182,22 @@ def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Be
                 kw["ball_diameter"], kw["inner_conformity"], kw["outer_conformity"],
                 kw["gothic_arch_offset"], kw.get("diametral_clearance", 0.0),
                 field=f"{origin}.diametral_clearance")
+    if kind == "deep_groove" and "diametral_clearance" in kw and all(
+            k in kw for k in ("ball_diameter", "inner_conformity", "outer_conformity")):
+        # the balls must stay in their grooves at this clearance, checked before the rings
+        # are built: an override of 15 mm on the SKF 6304 was refused as
+        # 'bearing.pitch_diameter ... raceway diameter <= bore', 1.5 mm only at the first
+        # load distribution as 'diametral_clearance' (neither the scene's key)
+        # cos(alpha_f) = 1 - P_d / (2 A) > 0, A = (f_i + f_o - 1) D (Harris & Kotzalas 2007,
+        # vol. 1 ch. 2): P_d < 2 A
+        limit = 2.0 * (kw["inner_conformity"] + kw["outer_conformity"] - 1.0) * kw[
+            "ball_diameter"]
+        if limit > 0.0 and not kw["diametral_clearance"] < limit:
+            raise InputError(f"{origin}.diametral_clearance", kw["diametral_clearance"],
+                             f"a clearance below 2 (f_i + f_o - 1) D = {limit * 1e3:.4g} mm, "
+                             "at which the balls leave their grooves (a free contact angle "
+                             "of 90 deg); the ISO 5753-1 groups give micrometres to a few "
+                             "tenths of a mm")
     cls = BallBearing if ball else RollerBearing
     names = {f.name for f in fields(cls)}
     wrong = sorted(set(kw) - names)

@@ -246,6 +246,9 @@ class Lubricant:
         for key in ("alpha", "z", "p0"):
             if key in pp:
                 check_positive(f"{self.name}.pressure_viscosity.{key}", pp[key])
+        for key, (high, allowed) in _PRESSURE_LIMITS.items():
+            if key in pp and not pp[key] <= high:
+                raise InputError(f"{self.name}.pressure_viscosity.{key}", pp[key], allowed)
         if "reference_temperature" in pp:
             check_temperature(f"{self.name}.pressure_viscosity.reference_temperature",
                               pp["reference_temperature"])
@@ -568,6 +571,20 @@ def _section(data: dict, name: str, where: str) -> dict[str, Any]:
         else:
             out[key] = val
     return out
+
+
+#: upper bounds of a given pressure-viscosity parameter, with what is allowed. Measured
+#: oils have alpha of about 1-4e-8 1/Pa (mineral, synthetic, traction fluids) and Roelands
+#: z of about 0.4-1.1; far above, the viscosity overflows double precision inside the
+#: contacts (Barus exp(alpha p) at alpha p > 709: 2e-5 1/Pa at 35 MPa; Roelands z = 1.8 of an
+#: ISO VG 68 oil at 2.5 GPa, z = 1.5 at 4.2 GPa) and the ball solver's pressure table
+#: stopped with a ZeroDivisionError (alpha = 2e22 1/Pa, z = 6e29)
+_PRESSURE_LIMITS = {
+    "alpha": (1e-7, "a pressure-viscosity coefficient up to 1e-7 1/Pa (measured oils: about "
+                    "1-4e-8 1/Pa, i.e. 10-40 1/GPa; a bare number is in 1/Pa)"),
+    "z": (1.5, "a Roelands index z up to 1.5 (oils: about 0.4-1.1; above, the viscosity "
+               "overflows below the 2-4 GPa of loaded rolling contacts)"),
+}
 
 
 def lubricant_from_dict(data: Mapping[str, Any], where: str = "lubricant") -> Lubricant:
