@@ -172,6 +172,8 @@ class TehlFilmModel:
         self._warned: set[tuple[float, ...]] = set()
         #: per table key, the stand-in scales of this pass (:meth:`_stand_in_scales`)
         self._frozen: dict[tuple[float, float], tuple[float, float, float, float, float]] = {}
+        #: per table key, the stand-in values of this pass by node
+        self._stand_in_memo: dict[tuple[float, float], dict[tuple[int, ...], Any]] = {}
         self._admitted: set[tuple[Any, ...]] | None = None
         #: answers that used a stand-in node (see :attr:`admitted`)
         self.provisional = 0
@@ -329,6 +331,7 @@ class TehlFilmModel:
     def admitted(self, value: set[tuple[Any, ...]] | None) -> None:
         self._admitted = value
         self._frozen = {}
+        self._stand_in_memo = {}
 
     def _stand_in(self, tab: FilmTable, used: list[bool]) -> Any:
         """``stand_in(node)`` for :meth:`FilmTable.__call__` in a pass of
@@ -348,11 +351,16 @@ class TehlFilmModel:
         key = (tab.rx, tab.ep)
         admitted = self._admitted if self._admitted is not None else set()
 
+        memo = self._stand_in_memo.setdefault(key, {})
+
         def stand_in(idx: tuple[int, ...]) -> Any:
             if (key, idx) in admitted:
                 return None
             used[0] = True
-            return self._stand_in_point(tab, idx)
+            got = memo.get(idx)
+            if got is None:
+                got = memo[idx] = self._stand_in_point(tab, idx)
+            return got
 
         return stand_in
 
