@@ -80,3 +80,23 @@ def test_the_run_summary_gives_a_small_bearing_s_loss_with_its_digits():
     assert "total loss per bearing: 1318 - 1518 W" in text
     text = sim.summary_text(Results(tables={"losses": losses([1486.2])}))
     assert "total loss per bearing: 1486 W" in text
+
+
+def test_ctrl_c_in_a_run_names_the_command_that_reports_the_finished_steps(
+        tmp_path, capsys, monkeypatch):
+    """An error said "`thermobearing report DIR` writes their report"; Ctrl-C said only
+    where the tables are."""
+    from thermobearing import cli
+    from thermobearing.simulation import Simulation
+
+    def interrupted(self, out_dir=None):
+        (out_dir / "metadata.json").parent.mkdir(parents=True, exist_ok=True)
+        (out_dir / "metadata.json").write_text("{}", encoding="utf-8")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(Simulation, "run", interrupted)
+    out = tmp_path / "rig"
+    assert cli.main(["run", "--out", str(out), "--quiet"]) == 130
+    err = capsys.readouterr().err
+    assert f"interrupted: everything computed so far is in {out}/" in err
+    assert f"`thermobearing report {out}` writes their report" in err

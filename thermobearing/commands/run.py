@@ -54,7 +54,10 @@ def run(args: argparse.Namespace) -> int:
     try:
         results = sim.run(out_dir=out)
     except KeyboardInterrupt:
-        print(f"\ninterrupted: everything computed so far is in {out}/", file=sys.stderr)
+        hint = (f" (`thermobearing report {out}` writes their report)"
+                if (out / "metadata.json").is_file() else "")
+        print(f"\ninterrupted: everything computed so far is in {out}/{hint}",
+              file=sys.stderr)
         return 130
     except ThermobearingError as exc:
         # the error as the command line prints it, then where the steps before it are
