@@ -2,7 +2,8 @@
 
 Both benchmarks run the default scene (``configs/scenes/qj1044_rig.toml``: two QJ1044
 bearings, 1800 r/min, 33 L/min, 22 axial-load steps of 3 min) or a shortened copy of it
-(``--quick``: every 6th load step), and compare runs on a common grid:
+(``--quick``: every 6th load step); BM-7 also runs a roller-bearing problem
+(:data:`ROLLER_SCENE`, :func:`roller_scene`). Runs are compared on a common grid:
 
 - temperatures of every network node at the end of every load step (a grid every chunk
   size used here divides, so no interpolation is involved), error = max |T - T_ref| [K];
@@ -29,6 +30,8 @@ from typing import Any
 import numpy as np
 
 QUICK_STRIDE = 6
+#: BM-7's roller-bearing problem: D1842926 (paper 001), OIL_4109, three 2-min steps
+ROLLER_SCENE = "paper001_ladder"
 
 
 def default_scene(quick: bool = False, stride: int | None = None) -> Any:
@@ -40,6 +43,21 @@ def default_scene(quick: bool = False, stride: int | None = None) -> Any:
     step = stride if stride is not None else (QUICK_STRIDE if quick else 1)
     if step > 1:
         scene = replace(scene, schedule=Schedule(steps=scene.schedule.steps[::step]))
+    return scene
+
+
+def roller_scene(steps: int | None = None) -> Any:
+    """BM-7's roller-bearing problem (``configs/scenes/paper001_ladder.toml``), with only its
+    first ``steps`` load steps when given."""
+    from thermobearing.errors import InputError
+    from thermobearing.scene import Schedule, load_scene
+
+    scene = load_scene(ROLLER_SCENE)
+    if steps is not None:
+        if not 1 <= steps <= len(scene.schedule.steps):
+            raise InputError("steps", steps,
+                             f"1 to {len(scene.schedule.steps)} (the scene's load steps)")
+        scene = replace(scene, schedule=Schedule(steps=scene.schedule.steps[:steps]))
     return scene
 
 
@@ -108,10 +126,12 @@ def reduce_results(label: str, scene: Any, results: Any, time_s: float) -> Proto
     bearings = [b.name for b in scene.bearings]
     P = per[bearings].sort_index().to_numpy(dtype=float)
     stats = dict(results.stats)
+    extra = {"energy_imbalance": stats.get("relative_energy_imbalance", math.nan),
+             "linearizations": stats.get("linearizations", 0)}
+    # numerical_tehl: the film table's node solves, queries and CPU per bearing
+    extra.update({k: v for k, v in stats.items() if k.endswith(": film table")})
     return ProtocolRun(label, time_s, nodes, np.array(rows), P,
-                       int(stats.get("kinematics_solves", 0)),
-                       {"energy_imbalance": stats.get("relative_energy_imbalance", math.nan),
-                        "linearizations": stats.get("linearizations", 0)})
+                       int(stats.get("kinematics_solves", 0)), extra)
 
 
 def run_l1(label: str, scene: Any) -> ProtocolRun:
@@ -126,12 +146,13 @@ def run_l1(label: str, scene: Any) -> ProtocolRun:
     return run
 
 
-def run_l0(label: str, scene: Any, model: str = "skf_four_term") -> ProtocolRun:
+def run_l0(label: str, scene: Any, model: str = "skf_four_term", **options: Any) -> ProtocolRun:
     """Level L0: global friction model, no kinematics, heat on the oil node.
 
     Per bearing the loss is P(T_oil) = M(nu(T_oil), n, F_r, F_a) * omega from
     :func:`thermobearing.global_friction.global_friction` (``model`` = ``skf_four_term``
-    or ``palmgren``; lubrication method from the scene's supply), with the lubricant's
+    or ``palmgren``, ``options`` passed to it, e.g. the SKF ``series``; lubrication
+    method from the scene's supply), with the lubricant's
     kinematic viscosity at the bearing's oil-node temperature, all of it on that node.
     The heat is the exact nonlinear function of the node temperatures (cheap: no
     linearisation per chunk is needed), integrated by the scene's stepper with its
@@ -153,7 +174,8 @@ def run_l0(label: str, scene: Any, model: str = "skf_four_term") -> ProtocolRun:
     def loss(b: Any, step: Any, T: np.ndarray) -> float:
         t_oil = float(np.mean(T[oil[b.name]]))
         return global_friction(model, b.bearing, sim.lubricant, t_oil, step.speed,
-                               step.radial_load, step.axial_load, supply=sim.supply).power
+                               step.radial_load, step.axial_load, supply=sim.supply,
+                               **options).power
 
     def heat_for(step: Any):
         def heat(t: float, T: np.ndarray) -> np.ndarray:

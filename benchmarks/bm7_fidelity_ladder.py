@@ -14,11 +14,10 @@ Levels (all on the same network, stepper and schedule):
 - L1 race control: quasi-static loads with race-control kinematics
   (``[models] kinematics = "race_control"``) + closed-form film + the local heat sources;
 - L1 skidding: the scene's default (skidding solver + closed-form film + heat sources);
-- L2 (numerical EHL in the contacts): not run. The scene is a ball bearing and the
+- L2 (numerical EHL in the contacts): not run on this scene. It is a ball bearing and the
   package's numerical EHL (``thermobearing.ehl``, registry ``EHL_SOLVERS``) solves line
-  contacts only; the scene chain's ``[models] film`` takes closed-form films only, and no
-  roller scene with numerical EHL exists in ``configs/scenes``. Printed as skipped, with
-  the reasons found at run time.
+  contacts only (the scene chain refuses ``[models] film = "numerical_tehl"`` for balls);
+  printed as skipped, with the reasons found at run time. The roller problem below runs it.
 
 Reference ("the highest level run", tightest settings): L1 skidding with
 ``kinematics_tolerance`` 0.003, ``chunk`` 15 s, stepper rtol 1e-8, atol 1e-6 K.
@@ -40,7 +39,24 @@ CPU time (``cpu_s``); the ratios, the plot and the "cheapest" choice use CPU tim
 on the shared 2-core machine the wall time was up to 10x the CPU time and varied between
 identical runs.
 
+Roller problem (``--problem roller``; ``all``, the default, runs both):
+``configs/scenes/paper001_ladder.toml``, paper 001's D1842926 cylindrical roller bearing
+with OIL_4109 (6 L/min jet at 80 degC, starting at 80 degC), three 2-min steps (6000 r/min
+8 kN, 6000 r/min 16 kN, 4000 r/min 16 kN), four-node network; ``--quick``: its first step.
+Levels: L0 SKF four-term (the 10 series' constants: the SKF table has no 19 series,
+D1842926's; an estimate) and Palmgren, by ``_protocol.run_l0``; L1 the scene (skidding +
+closed-form film); L2 the scene with ``[models] film = "numerical_tehl"`` (the skidding
+solver with the tabulated numerical thermal EHL film and drag,
+``ehl.coupling.solve_roller_tehl``; the film table is built during the run and kept for its
+later kinematics solves: its node solves are the L2 cost, counted in ``film_table_solves``
+and ``film_table_cpu_s``). Errors as above, against L2 (the highest level run) at the
+scene's solver settings; with ``--no-l2`` (or if L2 stops with a ConvergenceError, printed
+with its operating point) against L1 at the tight settings ``REFERENCE``. Sweep: L1's
+``kinematics_tolerance`` 0.3 ... 0.01 against the same reference. Prints the cheapest
+level within the budget for the roller problem; plot ``bm7_fidelity_ladder_roller.png``.
+
 Usage: python benchmarks/bm7_fidelity_ladder.py [--quick] [--json] [--out DIR]
+[--problem ball|roller|all] [--no-l2] [--no-sweeps]
 """
 
 from __future__ import annotations
@@ -54,8 +70,10 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from _protocol import (  # noqa: E402
+    ROLLER_SCENE,
     default_scene,
     errors,
+    roller_scene,
     run_l0,
     run_l1,
     with_models,
@@ -66,6 +84,11 @@ KIN_TOLERANCES = (0.3, 0.1, 0.03, 0.01, 0.003)
 CHUNKS = (180.0, 90.0, 60.0, 30.0, 15.0)
 REFERENCE = {"kinematics_tolerance": 0.003, "chunk": 15.0, "rtol": 1e-8, "atol": 1e-6}
 L0_MODELS = ("skf_four_term", "palmgren")
+#: roller problem: L0 models and options (the SKF constants have no 19 series, D1842926's:
+#: the 10 series' constants are used, an estimate), the L1 tolerance sweep, --quick steps
+ROLLER_L0 = (("skf_four_term", {"series": "10"}), ("palmgren", {}))
+ROLLER_TOLERANCES = (0.3, 0.1, 0.03, 0.01)
+ROLLER_QUICK_STEPS = 1
 
 
 def _setting(scene) -> str:
@@ -76,7 +99,6 @@ def _setting(scene) -> str:
 
 def l2_status(scene) -> str:
     """Why L2 (numerical EHL) is not run on this scene (or '' if it could be)."""
-    from thermobearing.film import FILM
     from thermobearing.geometry import load_bearing
 
     try:
@@ -88,34 +110,16 @@ def l2_status(scene) -> str:
     balls = [b for b in scene.bearings
              if hasattr(load_bearing(b.preset or str(scene.resolve_path(b.path))),
                         "ball_diameter")]
-    in_chain = [n for n in FILM.names() if "ehl" in n or "numerical" in n]
-    reasons = []
-    if balls:
-        reasons.append("the scene's bearings are ball bearings and the numerical EHL "
-                       "(thermobearing.ehl" + (f": {', '.join(solvers)}" if solvers else "")
-                       + ") solves line contacts only")
-    if not in_chain:
-        reasons.append("the scene chain has no numerical-EHL film model ([models] film takes "
-                       "the closed-form film registry: " + ", ".join(FILM.names()) + ")")
-    if not reasons:
+    if not balls:
         return ""
-    return ("L2 skipped: " + "; ".join(reasons)
-            + "; no roller scene with numerical EHL exists in configs/scenes")
+    return ("L2 skipped: the scene's bearings are ball bearings and the numerical EHL "
+            "(thermobearing.ehl" + (f": {', '.join(solvers)}" if solvers else "")
+            + ") solves line contacts only; the roller problem (--problem roller, "
+            f"configs/scenes/{ROLLER_SCENE}.toml) runs L2")
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="4 load steps instead of 22")
-    ap.add_argument("--json", action="store_true")
-    ap.add_argument("--out", default="benchmarks/out")
-    ap.add_argument("--budget-K", type=float, default=1.0, help="temperature budget [K]")
-    ap.add_argument("--budget-loss", type=float, default=0.05,
-                    help="relative total-loss budget [-]")
-    ap.add_argument("--no-sweeps", action="store_true", help="ladder only")
-    ap.add_argument("--stride", type=int, default=None,
-                    help="keep every N-th load step (overrides --quick; for checks)")
-    args = ap.parse_args(argv)
-
+def ball_ladder(args: argparse.Namespace) -> list[dict]:
+    """The ball-bearing ladder (the default scene): runs, prints, plots; its records."""
     base = default_scene(quick=args.quick, stride=args.stride)
     case = ("qj1044_rig" + ("_quick" if args.quick else "")
             + (f"_stride{args.stride}" if args.stride else ""))
@@ -206,10 +210,158 @@ def main(argv=None) -> int:
     print(f"reference: {ref_rec['setting']}, {ref.cpu_s:.2f} s CPU; energy imbalance of the "
           f"default run {default.extra.get('energy_imbalance', math.nan):.1e}")
     _plot(records, Path(args.out), case, args.budget_K, args.budget_loss)
+    return records
+
+
+def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True,
+                  log=None, warm_up: bool = True) -> tuple[list[dict], dict]:
+    """The roller-bearing ladder (:data:`_protocol.ROLLER_SCENE`): its records and notes.
+
+    ``steps``: only the first ``steps`` load steps; ``l2``: run L2 (skidding + numerical
+    thermal EHL) and measure every level against it, else the reference is L1 at the tight
+    settings :data:`REFERENCE`; ``sweeps``: the L1 kinematics-tolerance sweep
+    :data:`ROLLER_TOLERANCES`. ``log``: a print-like callable for progress (None: quiet);
+    ``warm_up``: a 1-step run first, so that no record pays first-call costs.
+    Returns (records, notes): notes has ``case``, ``reference`` (its method), ``l2_error``
+    (the ConvergenceError text if L2 stopped, else ''), ``energy_imbalance`` (of the
+    reference run) and ``film_table`` (L2's table work, per bearing).
+    """
+    from thermobearing.errors import ConvergenceError
+
+    say = log or (lambda *a, **k: None)
+    base = roller_scene(steps)
+    case = ROLLER_SCENE + (f"_{steps}step" if steps is not None else "")
+    say(f"== BM-7 {case}: {len(base.schedule.steps)} load steps, "
+        f"{base.schedule.duration / 60:.0f} min")
+    if warm_up:
+        run_l1("warm-up", with_solver(roller_scene(1), kinematics_tolerance=0.3))
+
+    def show(r, setting: str) -> None:
+        say(f"  {r.label:>34} {setting:>40} {r.time_s:8.2f} s ({r.cpu_s:.2f} s CPU), "
+            f"{r.kinematics_solves} kinematics solves")
+
+    ladder = []  # (level, method, run, setting, sweep)
+    for model, opts in ROLLER_L0:
+        note = "".join(f", {k} {v}" for k, v in opts.items())
+        r = run_l0(f"L0 {model}{note}", base, model, **opts)
+        show(r, "")
+        ladder.append(("L0", r.label[3:], r, _setting(base), "ladder"))
+    default = run_l1("L1 skidding + closed-form film", base)
+    show(default, _setting(base))
+    ladder.append(("L1", "skidding + closed-form film (default)", default, _setting(base),
+                   "ladder"))
+    l2_error = ""
+    ref = None
+    if l2:
+        try:
+            ref = run_l1("L2 skidding + numerical_tehl", with_models(base, film="numerical_tehl"))
+            show(ref, _setting(base))
+            ladder.append(("L2", "skidding + numerical_tehl", ref, _setting(base), "ladder"))
+        except ConvergenceError as err:
+            l2_error = str(err)
+            say(f"  L2 stopped: {l2_error}")
+    if ref is None:
+        tight = with_solver(base, **REFERENCE)
+        ref = run_l1("L1 skidding (tight settings)", tight)
+        show(ref, _setting(tight))
+        ladder.append(("L1", "skidding, tight settings (reference)", ref, _setting(tight),
+                       "reference"))
+    if sweeps:
+        for tol in ROLLER_TOLERANCES:
+            sc = with_solver(base, kinematics_tolerance=tol)
+            r = default if math.isclose(tol, base.solver.kinematics_tolerance) else (
+                run_l1("L1 skidding + closed-form film", sc))
+            if r is not default:
+                show(r, _setting(sc))
+            ladder.append(("L1", "skidding + closed-form film", r, _setting(sc),
+                           "kinematics_tolerance"))
+    records = []
+    for level, method, run, setting, sweep in ladder:
+        dT, dP = errors(run, ref)
+        table = [v for k, v in run.extra.items() if k.endswith(": film table")]
+        records.append({
+            "benchmark": "BM-7", "case": case, "method": f"{level} {method}", "level": level,
+            "setting": setting, "sweep": sweep, "reference": ref.label,
+            "time_s": run.time_s, "cpu_s": run.cpu_s, "max_error_K": dT, "error": dP,
+            "kinematics_solves": run.kinematics_solves,
+            "film_table_solves": sum(t["solves"] for t in table),
+            "film_table_cpu_s": sum(t["solve_cpu_s"] for t in table),
+            "ratio_vs_anchor": default.cpu_s / run.cpu_s})
+    notes = {"case": case, "reference": ref.label, "l2_error": l2_error,
+             "energy_imbalance": ref.extra.get("energy_imbalance", math.nan),
+             "film_table": {k: v for k, v in ref.extra.items() if k.endswith(": film table")},
+             "temperatures": ref.temperatures, "nodes": ref.nodes, "losses": ref.losses}
+    return records, notes
+
+
+def roller_main(args: argparse.Namespace) -> list[dict]:
+    """The roller ladder from the command line: runs, prints the table, plots."""
+    records, notes = roller_ladder(ROLLER_QUICK_STEPS if args.quick else None,
+                                   l2=not args.no_l2, sweeps=not args.no_sweeps,
+                                   log=lambda *a: print(*a, file=sys.stderr))
+    case = notes["case"]
+    if args.json:
+        for r in records:
+            print(json.dumps(r))
+    print(f"{'sweep':>20} {'method':>44} {'setting':>36} {'time [s]':>9} {'cpu [s]':>8} "
+          f"{'kin':>4} {'EHL':>4} {'dT max [K]':>11} {'dP/P max':>9} {'default/x':>9}")
+    for r in records:
+        print(f"{r['sweep']:>20} {r['method']:>44} {r['setting']:>36} {r['time_s']:9.2f} "
+              f"{r['cpu_s']:8.2f} {r['kinematics_solves']:4d} {r['film_table_solves']:4d} "
+              f"{r['max_error_K']:11.3g} {r['error']:9.3g} {r['ratio_vs_anchor']:9.2f}")
+    if notes["l2_error"]:
+        print(f"L2 did not finish: {notes['l2_error']}")
+    elif args.no_l2:
+        print("L2 not run (--no-l2)")
+    for k, v in notes["film_table"].items():
+        print(f"L2 {k}: {v['solves']} thermal-EHL node solves ({v['solve_cpu_s']:.1f} s CPU), "
+              f"{v['queries']} table queries")
+    T = notes["temperatures"] - 273.15
+    print(f"reference {notes['reference']}: step-end temperatures [degC] "
+          + "; ".join(f"{n} " + "/".join(f"{x:.1f}" for x in T[:, j])
+                      for j, n in enumerate(notes["nodes"]))
+          + "; total loss [W] " + "/".join(f"{x:.0f}" for x in notes["losses"].sum(axis=1))
+          + f"; energy imbalance {notes['energy_imbalance']:.1e}")
+    budget = f"{args.budget_K:g} K on temperature, {100 * args.budget_loss:g} % on total loss"
+    inside = [r for r in records if r["sweep"] in ("ladder", "reference")
+              and r["max_error_K"] <= args.budget_K and r["error"] <= args.budget_loss]
+    best = min(inside, key=lambda r: r["cpu_s"])
+    print(f"roller problem: cheapest level within the budget ({budget}) against "
+          f"{notes['reference']}: {best['method']} ({best['cpu_s']:.2f} s CPU, "
+          f"dT {best['max_error_K']:.3g} K, dP/P {100 * best['error']:.2g} %)")
+    _plot(records, Path(args.out), case, args.budget_K, args.budget_loss,
+          reference=notes["reference"], name="bm7_fidelity_ladder_roller.png")
+    return records
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true",
+                    help="ball: 4 load steps instead of 22; roller: its first step only")
+    ap.add_argument("--json", action="store_true")
+    ap.add_argument("--out", default="benchmarks/out")
+    ap.add_argument("--budget-K", type=float, default=1.0, help="temperature budget [K]")
+    ap.add_argument("--budget-loss", type=float, default=0.05,
+                    help="relative total-loss budget [-]")
+    ap.add_argument("--no-sweeps", action="store_true", help="ladder only")
+    ap.add_argument("--stride", type=int, default=None,
+                    help="ball: keep every N-th load step (overrides --quick; for checks)")
+    ap.add_argument("--problem", choices=("ball", "roller", "all"), default="all",
+                    help="which ladder problem(s) to run")
+    ap.add_argument("--no-l2", action="store_true",
+                    help="roller: skip L2 (minutes of CPU); reference then L1 at tight "
+                         "settings")
+    args = ap.parse_args(argv)
+    if args.problem in ("ball", "all"):
+        ball_ladder(args)
+    if args.problem in ("roller", "all"):
+        roller_main(args)
     return 0
 
 
-def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float) -> None:
+def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float,
+          reference: str = "L1 skidding at tight settings",
+          name: str = "bm7_fidelity_ladder.png") -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -223,7 +375,7 @@ def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float) ->
                                    (axes[1], "error", "max relative total-loss error [-]",
                                     budget_loss)):
         for r in records:
-            if r["sweep"] == "ladder":
+            if r["sweep"] in ("ladder", "reference"):
                 ax.loglog(max(r[key], floor), r["cpu_s"], "o", ms=8, label=r["method"])
         for sweep, marker in (("kinematics_tolerance", "s-"), ("chunk", "^-")):
             pts = [r for r in records if r["sweep"] == sweep]
@@ -239,9 +391,9 @@ def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float) ->
         ax.set_ylabel("CPU time [s]")
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=7)
-    fig.suptitle(f"BM-7 fidelity ladder, {case}: errors vs L1 skidding at tight settings")
+    fig.suptitle(f"BM-7 fidelity ladder, {case}: errors vs {reference}")
     fig.tight_layout()
-    path = out / "bm7_fidelity_ladder.png"
+    path = out / name
     fig.savefig(path, dpi=120)
     plt.close(fig)
     print(f"plot: {path}", file=sys.stderr)
