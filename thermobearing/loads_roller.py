@@ -193,7 +193,10 @@ def roller_load_distribution(
     azimuth : (Z,) roller azimuths [rad]; default 2 pi j / Z (a roller under the load).
     exponent : n [-] (10/9, Palmgren).
     x0 : initial ring displacement (delta_x, delta_y) [m] (warm start).
-    rtol : tolerance on the force residual relative to max(F_r, K (P_d/2)^n * 1e-6) [-].
+    rtol : tolerance on the force residual relative to max(F_r, K (P_d/2)^n * 1e-6) [-];
+        the iteration also stops at the force resolution of the per-roller split (its
+        approach tolerance times the contact stiffness plus the round-off of
+        Q_i = Q_o - F_j, which sub-micronewton loads reach).
 
     Returns
     -------
@@ -239,7 +242,18 @@ def roller_load_distribution(
         # inner closed, outer open (roller pulled onto the inner ring): Q_i = -F, no stiffness
         jac = np.array([[np.sum(kser * cos * cos), np.sum(kser * cos * sin)],
                         [np.sum(kser * sin * cos), np.sum(kser * sin * sin)]])
-        return interf, di, do, qi, qo, res, jac
+        return interf, di, do, qi, qo, res, jac, kser
+
+    def resolution(cand) -> float:
+        """Force resolution [N] of the ring balance at an evaluation: the split's approach
+        tolerance (1e-13 |delta_j| + 1e-22 m, :func:`split_roller_interference`) times
+        the contact stiffness, and the round-off of Q_i = Q_o - F_j, summed over the
+        rollers (x 4). Loads of micronewtons on many rollers reach it (Z = 44 without
+        clearance at 1e-7 N: 1e-15 N, above rtol F_r)."""
+        interf, qi, qo, kser = cand[0], cand[3], cand[4], cand[7]
+        eps = np.finfo(float).eps
+        return 4.0 * float(np.sum(kser * (1e-13 * np.abs(interf) + 1e-22)
+                                  + eps * (qi + qo + np.abs(fb)) * (qi > 0.0)))
 
     scale = max(radial_load, 1e-6 * k_inner * max(half, 1e-9) ** n, 1e-9)
     if radial_load == 0.0 and x0 is None:
@@ -253,9 +267,9 @@ def roller_load_distribution(
         dser = (qmax / k_inner) ** (1 / n) + (qmax / k_outer) ** (1 / n)
         dx, dy = half + dser, 0.0
     it = 0
-    interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+    interf, di, do, qi, qo, res, jac, kser = evaluate(dx, dy)
     norm = float(np.hypot(*res))
-    while norm > rtol * scale:
+    while norm > rtol * scale + resolution((interf, di, do, qi, qo, res, jac, kser)):
         if it >= max_iter:
             raise ConvergenceError("roller_load_distribution", norm, "Newton did not converge",
                                    {"delta_x": dx, "delta_y": dy, "iterations": it})
@@ -269,7 +283,7 @@ def roller_load_distribution(
             c_safe = np.where(cos > 1e-3, cos, 1.0)
             need = np.where(cos > 1e-3, (half + close_at - dy * sin) / c_safe, np.inf)
             dx = max(float(np.min(need)), dx) * (1.0 + 1e-9) + 1e-13
-            interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+            interf, di, do, qi, qo, res, jac, kser = evaluate(dx, dy)
             norm = float(np.hypot(*res))
             continue
         if n_closed == 1 or abs(np.linalg.det(jac)) <= 1e-12 * float(np.trace(jac)) ** 2:
@@ -284,7 +298,7 @@ def roller_load_distribution(
                 jac = kjj * np.outer(evec, evec) + np.outer(nvec, nvec) * kjj
                 dx, dy, cand, norm = _backtrack(evaluate, dx, dy, -np.linalg.solve(jac, res),
                                                 norm)
-                interf, di, do, qi, qo, res, jac = cand
+                interf, di, do, qi, qo, res, jac, kser = cand
                 continue
             direction = nvec * (1.0 if float(-res @ nvec) >= 0.0 else -1.0)
             along = cos * direction[0] + sin * direction[1]
@@ -295,12 +309,12 @@ def roller_load_distribution(
             if np.isfinite(tmin) and tmin > 0.0:
                 tmin = tmin * (1.0 + 1e-9) + 1e-13
                 dx, dy = dx + tmin * direction[0], dy + tmin * direction[1]
-                interf, di, do, qi, qo, res, jac = evaluate(dx, dy)
+                interf, di, do, qi, qo, res, jac, kser = evaluate(dx, dy)
                 norm = float(np.hypot(*res))
                 continue
             jac = jac + np.eye(2) * 1e-9 * float(np.trace(jac))
         dx, dy, cand, norm = _backtrack(evaluate, dx, dy, -np.linalg.solve(jac, res), norm)
-        interf, di, do, qi, qo, res, jac = cand
+        interf, di, do, qi, qo, res, jac, kser = cand
     return RollerLoadDistribution(
         azimuth=psi, inner_load=qi, outer_load=qo, inner_deflection=di, outer_deflection=do,
         interference=interf, body_force=fb, ring_displacement=np.array([dx, dy]),
