@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 import numba
 import numpy as np
 
-from .errors import check_positive
+from .errors import InputError, check_positive
 
 if TYPE_CHECKING:
     from .vibration import VibrationParameters
@@ -82,6 +82,14 @@ def simulate_sunnersjo(params: VibrationParameters, shaft_speed: float, radial_l
     """
     check_positive("shaft_speed", shaft_speed)
     check_positive("radial_load", radial_load)
+    # as vibration.simulate (a negative settle time ran silently, a zero duration returned
+    # an empty record, a zero rate or step raised ZeroDivisionError)
+    check_positive("duration", duration)
+    check_positive("settle_time", settle_time, allow_zero=True)
+    check_positive("sampling_rate", sampling_rate)
+    check_positive("max_step", max_step)
+    if int(round(duration * sampling_rate)) < 4:
+        raise InputError("duration", duration, f"at least 4 samples at {sampling_rate:g} Hz")
     k = (params.inner_stiffness ** (-2 / 3) + params.outer_stiffness ** (-2 / 3)) ** -1.5
     dt_out = 1.0 / sampling_rate
     sub = max(1, math.ceil(dt_out / max_step * (1 - 1e-12)))

@@ -26,12 +26,13 @@ import math
 import warnings
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from thermobearing import vibration as V
-from thermobearing.errors import ValidityWarning
+from thermobearing.errors import InputError, ValidityWarning
 from thermobearing.traction import make_traction_law
 
 BASE = V.paper004_parameters()
@@ -79,3 +80,16 @@ def test_ring_force_balance_and_quasi_static_mean(load, slip, speed, clearance, 
         lo, hi = _static_range(p, load)
         assert lo <= float(np.mean(r.displacement_x[keep])) <= hi
         assert abs(float(np.mean(r.displacement_y[keep]))) < 0.01 * (hi - p.radial_clearance)
+
+
+@pytest.mark.parametrize("field, value", [("duration", -1.0), ("duration", 0.0),
+                                          ("duration", math.inf), ("duration", 1e-5),
+                                          ("sampling_rate", 0.0), ("sampling_rate", math.nan),
+                                          ("max_step", 0.0), ("settle_time", -0.1)])
+def test_sunnersjo_refuses_bad_record_settings(field, value):
+    """Defect found with this file: simulate_sunnersjo had no checks of its record settings
+    (a negative settle time ran, a zero duration returned an empty record, a zero rate or
+    step raised ZeroDivisionError, NaN / inf a ValueError / OverflowError); now InputError
+    naming the field, as vibration.simulate."""
+    with pytest.raises(InputError, match=field):
+        V.simulate_sunnersjo(BASE, 188.5, 2000.0, **{field: value})
