@@ -260,3 +260,38 @@ def test_the_calibrated_scene_says_so_in_its_title():
     again = _stamped(once, fitted[:1], once)
     assert again.title == f"{scene.title} (calibrated: h_oil = 374.8 W/(m**2*K))"
     assert "Calibrated with thermobearing.calibrate" in again.source
+
+
+@pytest.mark.parametrize("protocol, drawn", [(True, True), (False, False)])
+def test_the_sweep_what_if_draws_the_skidding_of_a_roller_bearing(tmp_path, monkeypatch,
+                                                                protocol, drawn):
+    """An NU 214 speed x load sweep whose cases skid (cage slower than epicyclic) at light
+    load: the what-if curves drew only the largest over-skidding, which stays near 0 in a
+    protocol whose other steps roll; the smallest is drawn when it is negative and differs
+    from the largest (a one-step case has them equal: its max panel shows it)."""
+    import json
+
+    import thermobearing.report as report
+    from thermobearing.commands.report import sweep_report
+
+    drawn_ys = []
+    real = report.fig_whatif
+
+    def spy(df, x, ys, **kw):
+        drawn_ys.append(list(ys))
+        return real(df, x, ys, **kw)
+
+    monkeypatch.setattr(report, "fig_whatif", spy)
+    rows, store = [], []
+    for i, (n, fr) in enumerate(((2000, 1), (2000, 10), (8000, 1), (8000, 10))):
+        params = {"schedule.speed": f"{n} rpm", "schedule.radial_load": f"{fr} kN"}
+        skid = -8.9 * n / 8000 if fr == 1 else -0.01
+        result = {"mean total loss [W]": n * 0.3, "max over-skidding [%]":
+                  (0.0 if protocol else skid), "min over-skidding [%]": skid}
+        rows.append({"case": f"c{i}", **params, **result})
+        store.append(json.dumps({"case": f"c{i}", "params": params, "result": result}))
+    pd.DataFrame(rows).to_csv(tmp_path / "summary.csv", index=False)
+    (tmp_path / "cases.jsonl").write_text("\n".join(store) + "\n", encoding="utf-8")
+    sweep_report(tmp_path)
+    assert drawn_ys and all("max over-skidding [%]" in ys for ys in drawn_ys)
+    assert all(("min over-skidding [%]" in ys) == drawn for ys in drawn_ys)

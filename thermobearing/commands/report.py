@@ -17,6 +17,7 @@ from html import escape
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pandas as pd
 
 from ..errors import InputError
@@ -130,7 +131,18 @@ def sweep_report(folder: Path) -> Path:
             continue  # a parameter held at one value draws no curve
         # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
-        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df] + curves
+        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df]
+        # a cage slower than epicyclic (skidding: a lightly loaded roller bearing) shows in
+        # the smallest over-skidding, not in the largest, which stays near 0
+        # (one-step cases have min = max: the max panel shows it already)
+        low, high = "min over-skidding [%]", "max over-skidding [%]"
+        if low in df and high in df:
+            lo = pd.to_numeric(df[low], errors="coerce").to_numpy(float)
+            hi = pd.to_numeric(df[high], errors="coerce").to_numpy(float)
+            if (lo < 0.0).any() and not np.allclose(lo, hi, rtol=0.0, atol=1e-9,
+                                                    equal_nan=True):
+                ys.append(low)
+        ys += curves
         if ys:
             figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)
     numeric = [c for c in pcols if pd.api.types.is_numeric_dtype(df[c])]
