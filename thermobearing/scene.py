@@ -102,7 +102,7 @@ from typing import Any
 
 from .errors import InputError, UnknownNameError
 from .operating_checks import CheckLimits
-from .scene_schedule import Schedule, Step
+from .scene_schedule import MAX_LOAD, Schedule, Step
 from .scene_sections import (
     CHECK_KEYS,
     CHECKS_SOURCE,
@@ -166,6 +166,15 @@ class Scene:
         names = [b.name for b in self.bearings]
         if len(set(names)) != len(names):
             raise InputError("bearings[].name", names, "unique names")
+        for i, spec in enumerate(self.bearings):
+            # a bearing's share of the loads within the step bounds, named as the share
+            # (else a later Step refused 'step.radial_load', no key of the scene)
+            for key, share in spec.load_share.items():
+                top = max(abs(getattr(s, f"{key}_load")) for s in self.schedule.steps)
+                if top * abs(share) > MAX_LOAD:
+                    raise InputError(f"bearings[{i}].load_share.{key}", share,
+                                     f"a share that keeps this bearing's {key} load within "
+                                     f"{MAX_LOAD:g} N (the schedule's largest is {top:g} N)")
         total = sum(step.duration for step in self.schedule.steps)
         if self.outputs.mode == "transient" and total / self.solver.chunk > MAX_OUTPUT_ROWS:
             # each chunk ends in a row and re-linearises the heat (10-20 ms): chunk = "1 us"

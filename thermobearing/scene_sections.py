@@ -29,6 +29,10 @@ CHECK_KEYS = ("skid_limit", "contact_stress_limit", "min_film_parameter")
 CHECKS_SOURCE = "scene [checks]"
 
 
+#: largest magnitude of a ``load_share`` fraction
+MAX_LOAD_SHARE = 100.0
+
+
 def _checked_load_share(sec: str, share: Mapping[str, Any]) -> dict[str, float]:
     """A ``[[bearings]] load_share`` table checked (keys radial / axial, finite numbers,
     radial >= 0; ``sec`` names the bearing in errors) and converted to floats."""
@@ -42,6 +46,12 @@ def _checked_load_share(sec: str, share: Mapping[str, Any]) -> dict[str, float]:
                              f"{key} load this bearing carries (1 = all of it)")
         if key == "radial" and value < 0:
             raise InputError(where, value, "a fraction >= 0 of the radial load")
+        if abs(value) > MAX_LOAD_SHARE:
+            # 5e29 was refused as 'step.radial_load = 5e32', no key of the scene
+            raise InputError(where, value, f"a share of magnitude up to {MAX_LOAD_SHARE:g} "
+                             "(a lever-arm split gives an overhung load's bearing (a + L) / "
+                             f"L, {MAX_LOAD_SHARE:g} only for an overhang 99 times the "
+                             "bearing span)")
         out[key] = float(value)
     return out
 

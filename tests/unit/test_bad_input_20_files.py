@@ -86,3 +86,42 @@ def test_pressure_viscosity_far_above_any_oil_is_refused(pressure, key, words) -
 def test_pressure_viscosity_of_real_oils_loads(pressure) -> None:
     oil = lubricant_from_dict(_oil(pressure))
     assert float(oil.dynamic_viscosity(313.15)) > 0.0
+
+
+SHARED = """
+title = "share probe"
+[[bearings]]
+name = "a"
+preset = "SKF6304"
+load_share = {{ radial = {share} }}
+[lubricant]
+preset = "ISO_VG68"
+[supply]
+method = "jet"
+flow = "2 L/min"
+[schedule]
+speed = "3000 rpm"
+radial_load = "{radial}"
+axial_load = "0 N"
+step_duration = "1 min"
+[outputs]
+mode = "steady"
+want = ["losses"]
+"""
+
+
+@pytest.mark.parametrize(("share", "radial", "words"), [
+    ("5e29", "1 kN", "up to 100"),
+    ("-200.0", "1 kN", "fraction >= 0"),
+    ("50", "0.1 GN", "within 1e+09 N"),
+])
+def test_a_load_share_beyond_sense_is_refused_as_the_share(share, radial, words) -> None:
+    with pytest.raises(InputError) as info:
+        loads_scene(SHARED.format(share=share, radial=radial))
+    assert info.value.field == "bearings[0].load_share.radial"
+    assert words in info.value.allowed
+
+
+def test_a_lever_arm_share_above_one_loads() -> None:
+    scene = loads_scene(SHARED.format(share="1.5", radial="1 kN"))
+    assert scene.bearings[0].radial_share == 1.5
