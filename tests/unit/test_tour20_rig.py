@@ -295,3 +295,20 @@ def test_the_sweep_what_if_draws_the_skidding_of_a_roller_bearing(tmp_path, monk
     sweep_report(tmp_path)
     assert drawn_ys and all("max over-skidding [%]" in ys for ys in drawn_ys)
     assert all(("min over-skidding [%]" in ys) == drawn for ys in drawn_ys)
+
+
+def test_the_bench_table_says_why_a_setting_has_no_time():
+    """`thermobearing bench bm8_vibration` printed "time nan s  error 0.0001  ratio nan"
+    for an accuracy no setting reached, without the record's note that says so."""
+    from thermobearing.commands.bench import record_line
+
+    line = record_line({"case": "equal_accuracy_steep", "method": "split vs rk4",
+                        "setting": "error <= 0.0001", "time_s": float("nan"),
+                        "error": 1e-4, "ratio_vs_anchor": float("nan"),
+                        "note": "rk4: none within target; split: none within target"})
+    assert "nan" not in line
+    assert "time - s  error 0.0001  ratio -" in line
+    assert line.endswith("(rk4: none within target; split: none within target)")
+    plain = record_line({"case": "c", "method": "m", "setting": "s", "time_s": 0.0109,
+                         "error": 7.37e-05, "ratio_vs_anchor": 4.08})
+    assert plain.endswith("time 0.0109 s  error 7.37e-05  ratio 4.08")

@@ -82,15 +82,33 @@ def run(args: argparse.Namespace) -> int:
         all_records.extend(recs)
         if not args.json:
             for r in recs:
-                ratio = r.get("ratio_vs_anchor")
-                err = r.get("max_error_K", r.get("error"))
-                print(f"  {r.get('case', '')!s:28} {r.get('method', '')!s:22} "
-                      f"{r.get('setting', '')!s:14} time {float(r.get('time_s', 'nan')):.4g} s"
-                      + (f"  error {float(err):.3g}" if err is not None else "")
-                      + (f"  ratio {float(ratio):.3g}" if ratio is not None else ""))
+                print(record_line(r))
     if args.json:
         print(json.dumps(json_ready(all_records), indent=1, allow_nan=False))
     return 1 if failed else 0
+
+
+def _number(v: object, fmt: str) -> str:
+    """A record's number as text, ``-`` where it has none (None, NaN, not a number)."""
+    try:
+        x = float(v)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return "-"
+    return "-" if math.isnan(x) else format(x, fmt)
+
+
+def record_line(r: dict) -> str:
+    """One benchmark record of the table: case, method, setting, time, error, ratio, and
+    the record's note, which says why a setting has no time or ratio ("none within
+    target") -- the table printed ``time nan s ... ratio nan`` without it."""
+    err = r.get("max_error_K", r.get("error"))
+    ratio = r.get("ratio_vs_anchor")
+    line = (f"  {r.get('case', '')!s:28} {r.get('method', '')!s:22} "
+            f"{r.get('setting', '')!s:14} time {_number(r.get('time_s'), '.4g')} s"
+            + (f"  error {_number(err, '.3g')}" if err is not None else "")
+            + (f"  ratio {_number(ratio, '.3g')}" if ratio is not None else ""))
+    note = r.get("note")
+    return line + (f"  ({note})" if note else "")
 
 
 def json_ready(records: list[dict]) -> list[dict]:
