@@ -174,6 +174,21 @@ def test_axially_loaded_ball_bearing_at_rest(name, frac, more, clearance):
     assert angles[1] > angles[0]
 
 
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(log_load=st.floats(1.0, 4.3), c1=st.floats(0.0, 50e-6), c2=st.floats(1e-7, 10e-6))
+def test_ball_load_zone_shrinks_with_clearance(log_load, c1, c2):
+    """SKF6304 at rest under pure radial load: a larger clearance never loads more balls and
+    never unloads the most loaded one (Harris & Kotzalas vol. 1, load-zone factor)."""
+    b = BALLS["SKF6304"]
+    out = []
+    for pd in (c1, c1 + c2):
+        ld = ball_load_distribution(b.with_clearance(pd), 10.0**log_load, 0.0)
+        q = ld.inner_load
+        out.append((int(np.sum(q > 1e-9 * np.max(q))), float(np.max(q))))
+    assert out[1][0] <= out[0][0]
+    assert out[1][1] >= out[0][1] * (1 - 1e-9)
+
+
 # --------------------------------------------------------------------------- roller loads
 K_LINE = float(hertz.line_contact_stiffness(0.013))
 
