@@ -281,6 +281,9 @@ def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") 
                              "bearings.0.overrides.diametral_clearance")
     if len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
         return
+    if len(parts) == 4 and parts[0] == "bearings" and parts[2] == "load_share" \
+            and parts[3] in ("radial", "axial"):
+        return  # a share the scene leaves at its default 1 (the lever-arm split)
     if len(parts) == 3 and parts[0] == "bearings" and parts[2] in _EITHER:
         return  # a bearing's preset or file replaces the other (assign_path)
     raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"

@@ -125,3 +125,17 @@ def test_a_load_share_beyond_sense_is_refused_as_the_share(share, radial, words)
 def test_a_lever_arm_share_above_one_loads() -> None:
     scene = loads_scene(SHARED.format(share="1.5", radial="1 kN"))
     assert scene.bearings[0].radial_share == 1.5
+
+
+def test_a_sweep_may_set_a_load_share_the_scene_leaves_out(tmp_path) -> None:
+    from thermobearing.sweep import expand, parse_set
+
+    scene = loads_scene(SHARED.format(share="1", radial="1 kN").replace(
+        "load_share = { radial = 1 }\n", ""))
+    assert scene.bearings[0].load_share == {}
+    (param,) = [parse_set("bearings.0.load_share.radial=0.5,1.5", scene.to_dict())]
+    cases = expand(scene, [param])
+    shares = sorted(loads_scene(c.scene_toml).bearings[0].radial_share for c in cases)
+    assert shares == [0.5, 1.5]
+    with pytest.raises(InputError, match="load_share"):
+        expand(scene, [parse_set("bearings.0.load_share.radial=1e300", scene.to_dict())])
