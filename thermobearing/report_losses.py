@@ -515,8 +515,16 @@ def load_response(losses: pd.DataFrame) -> dict[str, dict[str, Any]]:
 def _response_text(r: Mapping[str, Any]) -> str:
     kind = r["load"].split()[0]
     where = f" at {r['speed']:g} r/min" if math.isfinite(r["speed"]) else ""
-    return (f"{100.0 * r['change']:+.0f} % from {r['low']:g} to {r['high']:g} kN "
-            f"{kind}{where}")
+    return (f"{_percent_change(100.0 * r['change'])} % from {r['low']:g} to {r['high']:g} "
+            f"kN {kind}{where}")
+
+
+def _percent_change(pct: float) -> str:
+    """A change in per cent with its sign: whole per cent from 1 %, two significant digits
+    below (``-0.11``; ``"-0"`` read as a sign without a change), ``0`` for none."""
+    if pct == 0.0:
+        return "0"
+    return f"{pct:+.0f}" if abs(pct) >= 1.0 else f"{pct:+.2g}"
 
 
 def class_notes(losses: pd.DataFrame) -> list[str]:

@@ -100,3 +100,18 @@ def test_ctrl_c_in_a_run_names_the_command_that_reports_the_finished_steps(
     err = capsys.readouterr().err
     assert f"interrupted: everything computed so far is in {out}/" in err
     assert f"`thermobearing report {out}` writes their report" in err
+
+
+def test_a_source_that_hardly_moved_with_the_load_reads_its_small_change():
+    """The rig's 'what the sources are' table read "-0 % from 0 to 42 kN axial" for the
+    element churning (720.8 -> 720.0 W)."""
+    from thermobearing.report_losses import _response_text
+
+    def text(change):
+        return _response_text({"change": change, "load": "axial load [kN]", "low": 0.0,
+                               "high": 42.0, "speed": 1800.0})
+
+    assert text(720.0 / 720.756 - 1.0) == "-0.1 % from 0 to 42 kN axial at 1800 r/min"
+    assert text(0.0).startswith("0 % from 0 to 42 kN")
+    assert text(1.35).startswith("+135 % from")
+    assert text(-0.02).startswith("-2 % from")
