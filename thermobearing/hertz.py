@@ -46,7 +46,7 @@ from typing import Any, NamedTuple
 import numba
 import numpy as np
 from scipy.optimize import brentq
-from scipy.special import ellipe, ellipk
+from scipy.special import ellipe, ellipk, ellipkm1
 
 from .errors import ConvergenceError, InputError, ValidityWarning, as_floats, check_positive
 
@@ -125,6 +125,18 @@ def _radius_ratio_series(m: float) -> float:
     return num / ((1.0 - m) * den)
 
 
+#: above this ellipticity K(m) is evaluated from the complementary parameter 1/k^2
+_LONG_K = 1e4
+
+
+def _first_kind(k: Any) -> Any:
+    """K(m) at m = 1 - 1/k^2 [-]; from p = 1/k^2 by scipy's ellipkm1 for k > 1e4, where m
+    rounds towards 1 (k > 1e8: m == 1, K = inf, and radius ratios above 1e13 gave NaN)."""
+    k = np.asarray(k, dtype=float)
+    p = 1.0 / k**2
+    return np.where(k > _LONG_K, ellipkm1(p), ellipk(1.0 - p))[()]
+
+
 def ellipticity_residual(k: float, radius_ratio: float) -> float:
     """Residual of the exact ellipticity equation, (k^2 E - K) - alpha_r (K - E) (scaled).
 
@@ -137,7 +149,7 @@ def ellipticity_residual(k: float, radius_ratio: float) -> float:
     m = 1.0 - 1.0 / k**2
     if m < _SERIES_M:
         return _radius_ratio_series(m) - radius_ratio
-    big_k, big_e = float(ellipk(m)), float(ellipe(m))
+    big_k, big_e = float(_first_kind(k)), float(ellipe(m))
     return (k**2 * big_e - big_k) / (big_k - big_e) - radius_ratio
 
 
@@ -177,22 +189,10 @@ def _exact_k_vectorised(ratio: np.ndarray) -> np.ndarray:
     if np.any(work):
         r = ratio[work]
         k = np.maximum(1.0339 * r**0.636, 1.0 + 1e-6)
-        for _ in range(30):
-            m = 1.0 - 1.0 / k**2
-            big_k, big_e = ellipk(m), ellipe(m)
-            diff = big_k - big_e
-            alpha = (k**2 * big_e - big_k) / diff
-            res = alpha - r
-            if np.all(np.abs(res) <= 1e-12 * r):
-                break
-            dk_dm = (big_e - (1.0 - m) * big_k) / (2.0 * m * (1.0 - m))
-            de_dm = (big_e - big_k) / (2.0 * m)
-            dm_dk = 2.0 / k**3
-            num_d = 2.0 * k * big_e + k**2 * de_dm * dm_dk - dk_dm * dm_dk
-            den_d = (dk_dm - de_dm) * dm_dk
-            dalpha = (num_d * diff - (k**2 * big_e - big_k) * den_d) / diff**2
-            step = res / dalpha
-            k = np.maximum(k - step, 0.5 * (k + 1.0))  # never step below the circle
+        # iterates of very long ellipses may overflow (k^3 beyond 1e308): those entries
+        # end non-finite and go to the bracketed solve below
+        with np.errstate(over="ignore", invalid="ignore"):
+            k, res = _newton_k(k, r)
         sub = out[work]
         sub[:] = k
         bad = ~(np.abs(res) <= 1e-10 * r)
@@ -205,6 +205,30 @@ def _exact_k_vectorised(ratio: np.ndarray) -> np.ndarray:
     return out
 
 
+def _newton_k(k: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Newton iterations of :func:`_exact_k_vectorised` from ``k``: (k, residual)."""
+    res = np.full_like(r, np.inf)
+    for _ in range(30):
+        m = 1.0 - 1.0 / k**2
+        # 1 - m from 1/k^2 where m rounds towards 1 (long ellipses, _first_kind)
+        one_m = np.where(k > _LONG_K, 1.0 / k**2, 1.0 - m)
+        big_k, big_e = _first_kind(k), ellipe(m)
+        diff = big_k - big_e
+        alpha = (k**2 * big_e - big_k) / diff
+        res = alpha - r
+        if np.all(np.abs(res) <= 1e-12 * r):
+            break
+        dk_dm = (big_e - one_m * big_k) / (2.0 * m * one_m)
+        de_dm = (big_e - big_k) / (2.0 * m)
+        dm_dk = 2.0 / k**3
+        num_d = 2.0 * k * big_e + k**2 * de_dm * dm_dk - dk_dm * dm_dk
+        den_d = (dk_dm - de_dm) * dm_dk
+        dalpha = (num_d * diff - (k**2 * big_e - big_k) * den_d) / diff**2
+        step = res / dalpha
+        k = np.maximum(k - step, 0.5 * (k + 1.0))  # never step below the circle
+    return k, res
+
+
 def ellipticity(radius_ratio: Any, method: str = "exact") -> tuple[Any, Any, Any]:
     """(k, K, E) for a radius ratio alpha_r = R_big/R_small >= 1 (vectorised).
 
@@ -215,10 +239,13 @@ def ellipticity(radius_ratio: Any, method: str = "exact") -> tuple[Any, Any, Any
     if np.any(~np.isfinite(ratio)) or np.any(ratio < 1.0 - 1e-12):
         raise InputError("radius_ratio", radius_ratio, "finite values >= 1 (R_big/R_small)")
     ratio = np.maximum(ratio, 1.0)
+    if np.any(ratio > 1e200):  # k^2 overflows beyond (k ~ 1e101 at 1e200)
+        raise InputError("radius_ratio", float(np.max(ratio)),
+                         "a ratio <= 1e200 (a longer contact is a line contact: line_contact)")
     if method == "exact":
         ks = _exact_k_vectorised(ratio.ravel()).reshape(ratio.shape)
         m = 1.0 - 1.0 / ks**2
-        return ks[()], ellipk(m)[()], ellipe(m)[()]
+        return ks[()], np.asarray(_first_kind(ks))[()], ellipe(m)[()]
     if method == "hamrock_brewe":
         k, big_k, big_e = _hamrock_brewe_kke(ratio)
         return k[()], big_k[()], big_e[()]
