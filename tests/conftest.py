@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import os
 
-import matplotlib
+# One BLAS thread, as the command line sets it (thermobearing/cli.py): the solvers factor many
+# small matrices, and a threaded BLAS on a busy 2-core machine made a 129 x 129 dgesv of the
+# EHL preconditioner take 240-340 ms instead of 0.4-0.7 ms. Must precede the numpy import.
+for _var in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 os.environ.setdefault("MPLBACKEND", "Agg")
