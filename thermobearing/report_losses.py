@@ -521,9 +521,9 @@ def _response_text(r: Mapping[str, Any]) -> str:
 
 def _percent_change(pct: float) -> str:
     """A change in per cent with its sign: whole per cent from 1 %, two significant digits
-    below (``-0.11``; ``"-0"`` read as a sign without a change), ``0`` for none."""
+    below (``-0.11``; ``"-0"`` read as a sign without a change), ``+0`` for none."""
     if pct == 0.0:
-        return "0"
+        return "+0"
     return f"{pct:+.0f}" if abs(pct) >= 1.0 else f"{pct:+.2g}"
 
 

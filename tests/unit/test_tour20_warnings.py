@@ -112,6 +112,6 @@ def test_a_source_that_hardly_moved_with_the_load_reads_its_small_change():
                                "high": 42.0, "speed": 1800.0})
 
     assert text(720.0 / 720.756 - 1.0) == "-0.1 % from 0 to 42 kN axial at 1800 r/min"
-    assert text(0.0).startswith("0 % from 0 to 42 kN")
+    assert text(0.0).startswith("+0 % from 0 to 42 kN")
     assert text(1.35).startswith("+135 % from")
     assert text(-0.02).startswith("-2 % from")
