@@ -67,6 +67,8 @@ import math
 import sys
 from pathlib import Path
 
+import numpy as np
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from _protocol import (  # noqa: E402
@@ -278,11 +280,14 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
     records = []
     for level, method, run, setting, sweep in ladder:
         dT, dP = errors(run, ref)
+        diff = np.abs(run.temperatures - ref.temperatures)
+        step, node = np.unravel_index(int(np.argmax(diff)), diff.shape)
         table = [v for k, v in run.extra.items() if k.endswith(": film table")]
         records.append({
             "benchmark": "BM-7", "case": case, "method": f"{level} {method}", "level": level,
             "setting": setting, "sweep": sweep, "reference": ref.label,
             "time_s": run.time_s, "cpu_s": run.cpu_s, "max_error_K": dT, "error": dP,
+            "worst": f"{run.nodes[node]}, step {step + 1}" if dT > 0.0 else "",
             "kinematics_solves": run.kinematics_solves,
             "film_table_solves": sum(t["solves"] for t in table),
             "film_table_cpu_s": sum(t["solve_cpu_s"] for t in table),
@@ -304,11 +309,13 @@ def roller_main(args: argparse.Namespace) -> list[dict]:
         for r in records:
             print(json.dumps(r))
     print(f"{'sweep':>20} {'method':>44} {'setting':>36} {'time [s]':>9} {'cpu [s]':>8} "
-          f"{'kin':>4} {'EHL':>4} {'dT max [K]':>11} {'dP/P max':>9} {'default/x':>9}")
+          f"{'kin':>4} {'EHL':>4} {'dT max [K]':>11} {'dP/P max':>9} {'default/x':>9}  "
+          "dT max at")
     for r in records:
         print(f"{r['sweep']:>20} {r['method']:>44} {r['setting']:>36} {r['time_s']:9.2f} "
               f"{r['cpu_s']:8.2f} {r['kinematics_solves']:4d} {r['film_table_solves']:4d} "
-              f"{r['max_error_K']:11.3g} {r['error']:9.3g} {r['ratio_vs_anchor']:9.2f}")
+              f"{r['max_error_K']:11.3g} {r['error']:9.3g} {r['ratio_vs_anchor']:9.2f}  "
+              f"{r['worst']}")
     if notes["l2_error"]:
         print(f"L2 did not finish: {notes['l2_error']}")
     elif args.no_l2:

@@ -13,7 +13,7 @@ import pytest
 
 BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 FIELDS = {"benchmark", "case", "method", "level", "setting", "sweep", "reference", "time_s",
-          "cpu_s", "max_error_K", "error", "kinematics_solves", "film_table_solves",
+          "cpu_s", "max_error_K", "error", "worst", "kinematics_solves", "film_table_solves",
           "film_table_cpu_s", "ratio_vs_anchor"}
 
 
@@ -44,6 +44,10 @@ def test_records_have_the_fields_and_the_reference_is_exact(no_l2):
     refs = [r for r in records if r["sweep"] == "reference"]
     assert len(refs) == 1  # without L2 the reference is L1 at the tight settings
     assert refs[0]["max_error_K"] == 0.0 and refs[0]["error"] == 0.0
+    assert refs[0]["worst"] == ""
+    for r in records:
+        if r["max_error_K"] > 0.0:  # where the largest difference is: a node, a step
+            assert r["worst"].split(",")[0] in notes["nodes"] and "step 1" in r["worst"]
     assert notes["l2_error"] == ""
     assert not any(r["level"] == "L2" for r in records)
     assert all(r["film_table_solves"] == 0 for r in records)  # no numerical film ran
