@@ -198,6 +198,18 @@ def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Be
                              "at which the balls leave their grooves (a free contact angle "
                              "of 90 deg); the ISO 5753-1 groups give micrometres to a few "
                              "tenths of a mm")
+    if not ball and all(k in kw for k in ("diametral_clearance", "roller_diameter",
+                                          "pitch_diameter", "bore", "outer_diameter")):
+        # d_i = d_m - D_w - P_d/2 > d and d_o = d_m + D_w + P_d/2 < D: checked here so that
+        # the refusal names the clearance (3e28 mm on the NU214 was refused as
+        # 'bearing.pitch_diameter ... leaving an inner ring', no key of the scene)
+        room = 2.0 * min(kw["pitch_diameter"] - kw["roller_diameter"] - kw["bore"],
+                         kw["outer_diameter"] - kw["pitch_diameter"] - kw["roller_diameter"])
+        if room > 0.0 and not kw["diametral_clearance"] < room:
+            raise InputError(f"{origin}.diametral_clearance", kw["diametral_clearance"],
+                             f"a clearance below {room * 1e3:.4g} mm, which keeps both "
+                             "raceways inside their rings (d_i = d_m - D_w - P_d/2 > bore, "
+                             "d_o = d_m + D_w + P_d/2 < outer diameter)")
     cls = BallBearing if ball else RollerBearing
     names = {f.name for f in fields(cls)}
     wrong = sorted(set(kw) - names)

@@ -139,3 +139,15 @@ def test_a_sweep_may_set_a_load_share_the_scene_leaves_out(tmp_path) -> None:
     assert shares == [0.5, 1.5]
     with pytest.raises(InputError, match="load_share"):
         expand(scene, [parse_set("bearings.0.load_share.radial=1e300", scene.to_dict())])
+
+
+def test_a_roller_clearance_that_leaves_no_ring_names_the_override() -> None:
+    text = SCENE.format(clearance="30 mm").replace('preset = "SKF6304"', 'preset = "NU214"') \
+        .replace('axial_load = "100 N"', 'axial_load = "0 N"')
+    with pytest.raises(InputError) as info:
+        Simulation(loads_scene(text), progress=False)
+    assert info.value.field == "bearings[0].overrides.diametral_clearance"
+    b = load_bearing("NU214")
+    room = 2 * min(b.pitch_diameter - b.roller_diameter - b.bore,
+                   b.outer_diameter - b.pitch_diameter - b.roller_diameter)
+    assert f"{room * 1e3:.4g} mm" in info.value.allowed
