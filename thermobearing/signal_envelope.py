@@ -92,7 +92,11 @@ def envelope_spectrum(x, sampling_rate: float, band: tuple[float, float] | None 
     if hi > nyq:
         raise InputError("band", band, f"a band below the Nyquist frequency {nyq:g} Hz")
     n = arr.size
-    spec = np.fft.rfft(arr - arr.mean())
+    # the squared envelope's spectrum holds x^4: computed at unit peak and scaled back (a
+    # record peaking beyond about 1e+-75 overflowed to inf / underflowed to 0, and its
+    # normalised spectrum was NaN without a word)
+    peak = float(np.max(np.abs(arr)))
+    spec = np.fft.rfft((arr - arr.mean()) / peak)
     df = fs / n
     k_lo = int(math.ceil(lo / df))
     k_hi = int(math.floor(hi / df))
@@ -115,6 +119,16 @@ def envelope_spectrum(x, sampling_rate: float, band: tuple[float, float] | None 
         keep = freq <= max_frequency
         freq, p = freq[keep], p[keep]
     floor = _noise_floor(p, block=max(16, 32 * padding))
+    if peak != 1.0:
+        with np.errstate(over="ignore", under="ignore"):
+            gain = float(np.float64(peak) ** 4)
+            p, floor = p * gain, floor * gain
+        if not (math.isfinite(gain) and gain > 0.0 and np.all(np.isfinite(floor))
+                and np.all(floor > 0.0)):
+            raise InputError("signal", f"a record peaking at {peak:.3g}",
+                             "a record whose fourth power is representable (peak within "
+                             "about 1e-75 .. 1e75 in its unit): the envelope power is in "
+                             "unit^4; rescale the record (estimate_cage_speed does so itself)")
     return EnvelopeSpectrum(freq, p, floor, (lo, hi), df, padding, sk)
 
 

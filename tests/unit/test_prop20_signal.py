@@ -19,6 +19,7 @@ import functools
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -111,3 +112,23 @@ def test_time_reversal_keeps_the_cage_line(seed):
     assert est.detected
     assert est.spectrum.bands == base.spectrum.bands
     assert abs(est.csr - base.csr) <= 0.1 * (est.csr_uncertainty + base.csr_uncertainty)
+
+
+@settings(max_examples=15, deadline=None)
+@given(exponent=st.floats(-70.0, 70.0))
+def test_envelope_spectrum_scales_with_the_fourth_power(exponent):
+    """envelope_spectrum's power is in unit^4: c x gives c^4 times the power and the same
+    normalised spectrum; a record whose fourth power is not representable (beyond about
+    1e+-75) is an InputError (its normalised spectrum was NaN without a word)."""
+    from thermobearing.errors import InputError
+    from thermobearing.signal_envelope import envelope_spectrum
+
+    x = _record()
+    c = 10.0**exponent
+    a = envelope_spectrum(x, FS, (1500.0, 4500.0), max_frequency=500.0)
+    b = envelope_spectrum(c * x, FS, (1500.0, 4500.0), max_frequency=500.0)
+    np.testing.assert_allclose(b.normalised, a.normalised, rtol=1e-9)
+    np.testing.assert_allclose(b.power, a.power * c**4, rtol=1e-9)
+    for huge in (1e80, 1e-80):
+        with pytest.raises(InputError, match="signal"):
+            envelope_spectrum(huge * x, FS, (1500.0, 4500.0))
