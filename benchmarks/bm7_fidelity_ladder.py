@@ -52,11 +52,12 @@ later kinematics solves: its node solves are the L2 cost, counted in ``film_tabl
 and ``film_table_cpu_s``). Errors as above, against L2 (the highest level run) at the
 scene's solver settings; with ``--no-l2`` (or if L2 stops with a ConvergenceError, printed
 with its operating point) against L1 at the tight settings ``REFERENCE``. Sweep: L1's
-``kinematics_tolerance`` 0.3 ... 0.01 against the same reference. Prints the cheapest
+``kinematics_tolerance`` 0.3 ... 0.01 against the same reference; ``--l2-sweep``: L2 at
+0.3 and 0.1 as well (each a new film table: minutes of CPU). Prints the cheapest
 level within the budget for the roller problem; plot ``bm7_fidelity_ladder_roller.png``.
 
 Usage: python benchmarks/bm7_fidelity_ladder.py [--quick] [--json] [--out DIR]
-[--problem ball|roller|all] [--no-l2] [--no-sweeps]
+[--problem ball|roller|all] [--no-l2] [--l2-sweep] [--no-sweeps]
 """
 
 from __future__ import annotations
@@ -90,6 +91,8 @@ L0_MODELS = ("skf_four_term", "palmgren")
 #: the 10 series' constants are used, an estimate), the L1 tolerance sweep, --quick steps
 ROLLER_L0 = (("skf_four_term", {"series": "10"}), ("palmgren", {}))
 ROLLER_TOLERANCES = (0.3, 0.1, 0.03, 0.01)
+#: --l2-sweep: L2 at looser re-solve tolerances than the scene's 0.03 (a few CPU minutes each)
+ROLLER_L2_TOLERANCES = (0.3, 0.1)
 ROLLER_QUICK_STEPS = 1
 
 
@@ -216,14 +219,17 @@ def ball_ladder(args: argparse.Namespace) -> list[dict]:
 
 
 def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True,
-                  log=None, warm_up: bool = True) -> tuple[list[dict], dict]:
+                  log=None, warm_up: bool = True, l2_sweep: bool = False
+                  ) -> tuple[list[dict], dict]:
     """The roller-bearing ladder (:data:`_protocol.ROLLER_SCENE`): its records and notes.
 
     ``steps``: only the first ``steps`` load steps; ``l2``: run L2 (skidding + numerical
     thermal EHL) and measure every level against it, else the reference is L1 at the tight
     settings :data:`REFERENCE`; ``sweeps``: the L1 kinematics-tolerance sweep
     :data:`ROLLER_TOLERANCES`. ``log``: a print-like callable for progress (None: quiet);
-    ``warm_up``: a 1-step run first, so that no record pays first-call costs.
+    ``warm_up``: a 1-step run first, so that no record pays first-call costs;
+    ``l2_sweep``: also L2 at the looser tolerances :data:`ROLLER_L2_TOLERANCES` (each with
+    its own, new film table), against L2 at the scene's tolerance.
     Returns (records, notes): notes has ``case``, ``reference`` (its method), ``l2_error``
     (the ConvergenceError text if L2 stopped, else ''), ``energy_imbalance`` (of the
     reference run) and ``film_table`` (L2's table work, per bearing).
@@ -277,6 +283,17 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
                 show(r, _setting(sc))
             ladder.append(("L1", "skidding + closed-form film", r, _setting(sc),
                            "kinematics_tolerance"))
+    if l2_sweep and ref.label.startswith("L2"):
+        for tol in ROLLER_L2_TOLERANCES:
+            sc = with_solver(base, kinematics_tolerance=tol)
+            try:
+                r = run_l1("L2 skidding + numerical_tehl", with_models(sc, film="numerical_tehl"))
+            except ConvergenceError as err:
+                say(f"  L2 at {_setting(sc)} stopped: {err}")
+                continue
+            show(r, _setting(sc))
+            ladder.append(("L2", "skidding + numerical_tehl", r, _setting(sc),
+                           "l2_kinematics_tolerance"))
     records = []
     for level, method, run, setting, sweep in ladder:
         dT, dP = errors(run, ref)
@@ -303,6 +320,7 @@ def roller_main(args: argparse.Namespace) -> list[dict]:
     """The roller ladder from the command line: runs, prints the table, plots."""
     records, notes = roller_ladder(ROLLER_QUICK_STEPS if args.quick else None,
                                    l2=not args.no_l2, sweeps=not args.no_sweeps,
+                                   l2_sweep=args.l2_sweep,
                                    log=lambda *a: print(*a, file=sys.stderr))
     case = notes["case"]
     if args.json:
@@ -355,6 +373,8 @@ def main(argv=None) -> int:
                     help="ball: keep every N-th load step (overrides --quick; for checks)")
     ap.add_argument("--problem", choices=("ball", "roller", "all"), default="all",
                     help="which ladder problem(s) to run")
+    ap.add_argument("--l2-sweep", action="store_true",
+                    help="roller: also L2 at kinematics_tolerance 0.3 and 0.1 (minutes each)")
     ap.add_argument("--no-l2", action="store_true",
                     help="roller: skip L2 (minutes of CPU); reference then L1 at tight "
                          "settings")
@@ -384,13 +404,15 @@ def _plot(records, out: Path, case: str, budget_K: float, budget_loss: float,
         for r in records:
             if r["sweep"] in ("ladder", "reference"):
                 ax.loglog(max(r[key], floor), r["cpu_s"], "o", ms=8, label=r["method"])
-        for sweep, marker in (("kinematics_tolerance", "s-"), ("chunk", "^-")):
+        for sweep, marker in (("kinematics_tolerance", "s-"), ("chunk", "^-"),
+                              ("l2_kinematics_tolerance", "d-")):
             pts = [r for r in records if r["sweep"] == sweep]
             if pts:
                 ax.loglog([max(r[key], floor) for r in pts], [r["cpu_s"] for r in pts],
-                          marker, alpha=0.7, label=f"L1 skidding, {sweep} sweep")
+                          marker, alpha=0.7,
+                          label=f"{pts[0]['method'].split(' (')[0]}, {sweep} sweep")
                 for r in pts:
-                    tag = r["setting"].split(",")[0 if sweep == "kinematics_tolerance" else 1]
+                    tag = r["setting"].split(",")[1 if sweep == "chunk" else 0]
                     ax.annotate(tag.split("=")[1], (max(r[key], floor), r["cpu_s"]),
                                 fontsize=6)
         ax.axvline(budget, color="k", ls=":", lw=1)
