@@ -267,3 +267,16 @@ def test_identical_results_judges_only_paths_with_two_values() -> None:
     cases = expand(scene, [parse_set("checks.skid_limit=2", scene.to_dict())])
     done = {c.case_id: {"result": {"x": 1.0}} for c in cases}
     assert identical_results(cases, done) == {}
+
+
+def test_check_passes_a_global_friction_scene_at_rest_as_run_does() -> None:
+    """At rest the run books 0 W without calling any source, so a bearing whose SKF
+    series is unknown runs (fuzz seed 72 case 23: CRB_50x75x16 at 0 rpm); check agrees."""
+    text = _toml(bearing='preset = "CRB_50x75x16"', speed="0 rpm", models=GLOBAL)
+    sim = Simulation(loads_scene(text), progress=False)
+    check_global_friction(sim)
+    assert float(sim.run().tables["losses"]["power [W]"].sum()) == 0.0
+    moving = Simulation(loads_scene(_toml(bearing='preset = "CRB_50x75x16"', models=GLOBAL)),
+                        progress=False)
+    with pytest.raises(InputError, match="series"):
+        check_global_friction(moving)
