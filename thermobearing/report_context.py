@@ -57,7 +57,8 @@ def load_scene_lubricant(scene: Any) -> Any:
 
 def bearing_table(scene: Any, bearings: dict[str, Any]) -> pd.DataFrame:
     """One row per bearing of the scene: designation, type, d x D x B [mm], pitch
-    diameter [mm], rolling elements (number x diameter [mm]), nominal contact angle [deg]
+    diameter [mm], rolling elements (number x diameter [mm], rollers also their length),
+    nominal contact angle [deg]
     (ball bearings) and cage guidance."""
     rows = []
     for spec in scene.bearings:
@@ -70,9 +71,14 @@ def bearing_table(scene: Any, bearings: dict[str, Any]) -> pd.DataFrame:
             row["d x D x B [mm]"] = " x ".join(
                 f"{1e3 * getattr(b, a):g}" for a in ("bore", "outer_diameter", "width"))
             row["pitch diameter [mm]"] = round(1e3 * b.pitch_diameter, 3)
-            row["rolling elements"] = (f"{b.n_elements} x {1e3 * b.element_diameter:.4g} mm"
+            length = getattr(b, "roller_length", None)
+            # a roller's length beside its diameter (a designer compares both; the NU 214
+            # read "18 x 13 mm rollers")
+            size = (f"{1e3 * b.element_diameter:.4g} mm" if length is None else
+                    f"{1e3 * b.element_diameter:.4g} x {1e3 * length:.4g} mm")
+            row["rolling elements"] = (f"{b.n_elements} x {size}"
                                        + (" balls" if hasattr(b, "ball_diameter")
-                                          else " rollers"))
+                                          else " rollers (diameter x length)"))
             angle = getattr(b, "contact_angle", None)
             if angle is not None and hasattr(b, "ball_diameter"):
                 row["contact angle [deg]"] = round(math.degrees(angle), 2)

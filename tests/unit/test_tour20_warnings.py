@@ -115,3 +115,20 @@ def test_a_source_that_hardly_moved_with_the_load_reads_its_small_change():
     assert text(0.0).startswith("+0 % from 0 to 42 kN")
     assert text(1.35).startswith("+135 % from")
     assert text(-0.02).startswith("-2 % from")
+
+
+def test_the_report_gives_a_roller_s_length_beside_its_diameter():
+    """The NU 214 loss map's bearing table read "18 x 13 mm rollers"."""
+    from thermobearing.geometry import load_bearing
+    from thermobearing.report_context import bearing_table
+    from thermobearing.scene import load_scene
+
+    scene = load_scene("crb_rib_example")
+    table = bearing_table(scene, {"crb": load_bearing("CRB_50x75x16")})
+    crb = load_bearing("CRB_50x75x16")
+    expected = (f"{crb.n_elements} x {1e3 * crb.roller_diameter:.4g} x "
+                f"{1e3 * crb.roller_length:.4g} mm rollers (diameter x length)")
+    assert table["rolling elements"].tolist() == [expected]
+    rig = load_scene("qj1044_rig")
+    balls = bearing_table(rig, {"drive_end": load_bearing("QJ1044")})
+    assert balls["rolling elements"].iloc[0] == "20 x 34.92 mm balls"
