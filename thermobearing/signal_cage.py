@@ -122,7 +122,9 @@ class DetectedLine:
         "sideband" (n f_s + k f_c) or "shaft".
     order : (k, n): multiple of the cage and of the shaft frequency in the line.
     expected : [Hz] from the final estimate; measured : [Hz] sub-bin peak (NaN if weak).
-    snr : normalised power (power / local noise mean); detected : snr above threshold.
+    snr : normalised power (power / local noise mean); detected : snr above threshold. The
+        shaft line's snr is NaN when the peak in its +-2 % window is a line of the cage comb
+        or a cage harmonic (that line's snr is on its own entry).
     """
 
     kind: str
@@ -535,8 +537,13 @@ def estimate_cage_speed(x, sampling_rate: float, shaft_frequency: float, n_balls
                 shaft_harmonic = (fm, k_h)
             else:
                 shaft_meas = fm
+        # a peak the comb or a cage harmonic explains is not the shaft's: its SNR is not
+        # reported on the shaft line (it printed 'measured -' beside the 3rd cage harmonic's
+        # 'snr 236.9' at 30.45 Hz for a 30.2 Hz shaft)
+        own = shaft_meas is not None or not (comb_line or shaft_harmonic is not None)
         lines.append(DetectedLine("shaft", (0, 1), shaft_frequency,
-                                  fm if shaft_meas else math.nan, snr, shaft_meas is not None))
+                                  fm if shaft_meas else math.nan, snr if own else math.nan,
+                                  shaft_meas is not None))
     detected = p_fa < alpha and len(used) >= 2 and consistency >= 0.5 and primary and off
     strong = any(snr > strict for _, _, _, snr, _ in used)
     if not detected:

@@ -57,3 +57,16 @@ def test_a_real_shaft_line_still_confirms_and_a_wrong_speed_still_does_not():
     assert not [n for n in est.notes if "shaft" in n] and est.shaft_confirmed
     wrong = S.estimate_cage_speed(x, FS, 48.1, 9, 0.45)
     assert [n for n in wrong.notes if "does not confirm the shaft frequency 48.1" in n]
+
+
+def test_the_shaft_line_does_not_carry_the_snr_of_a_cage_harmonic_in_its_window():
+    # 48.1 Hz given: the 4th cage harmonic at 48.0 Hz is the peak of the shaft's +-2 %
+    # window; the shaft entry printed 'measured -' beside that harmonic's SNR
+    x = big_ball_train(0.4)
+    est = S.estimate_cage_speed(x, FS, 48.1, 9, 0.45)
+    shaft = [ln for ln in est.lines if ln.kind == "shaft"]
+    assert len(shaft) == 1 and math.isnan(shaft[0].measured)
+    assert math.isnan(shaft[0].snr) and not shaft[0].detected
+    real = S.estimate_cage_speed(big_ball_train(0.4, runout=0.3, seed=3), FS, 30.0, 9, 0.45)
+    own = [ln for ln in real.lines if ln.kind == "shaft"][0]
+    assert own.detected and own.snr > 10.0

@@ -246,7 +246,8 @@ def _record(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
         "bands_hz": list(est.spectrum.bands or (est.spectrum.band,)), "reason": est.reason,
         "lines": [{"kind": ln.kind, "order": list(ln.order), "expected_hz": ln.expected,
                    "measured_hz": None if math.isnan(ln.measured) else ln.measured,
-                   "snr": ln.snr, "detected": ln.detected} for ln in est.lines],
+                   "snr": None if math.isnan(ln.snr) else ln.snr,
+                   "detected": ln.detected} for ln in est.lines],
         "plot": str(plot) if plot else None,
         "clipped_fraction": clipped_fraction(record.data),
         "notes": list(est.notes),
@@ -307,8 +308,9 @@ def _print(est: S.CageSpeedEstimate, record: S.AccelerationRecord, name: str,
     print("lines:")
     for ln in est.lines:
         meas = "-" if math.isnan(ln.measured) else f"{ln.measured:.4f}"
+        snr = "-" if math.isnan(ln.snr) else f"{ln.snr:.1f}"
         print(f"  {ln.kind:<19} k={ln.order[0]:<3} n={ln.order[1]}  expected "
-              f"{ln.expected:9.4f} Hz  measured {meas:>10}  snr {ln.snr:8.1f}"
+              f"{ln.expected:9.4f} Hz  measured {meas:>10}  snr {snr:>8}"
               f"{'  *' if ln.detected else ''}")
     if plot:
         print(f"plot        {plot}")
