@@ -45,8 +45,11 @@ X (volume fraction) from
 - ``options[...]["oil_fraction"]`` overrides X for any method.
 
 Gaps and radii (the paper gives none): cage R = D_c/2 (cage mean diameter), c = mean radial
-gap between cage and lands; balls R = D_m/2, c = radial cavity height between the lands;
-inner ring R = D_Li/2, c = gap between inner land and cage bore. Options override them.
+gap between the cage and its radial neighbours (the guide land of the guiding ring, the land
+or raceway of the other, :func:`cage_neighbour_diameters`); balls R = D_m/2, c = radial
+cavity height between the lands; inner ring R = D_Li/2, c = gap between inner land and cage
+bore (:func:`inner_ring_churning_geometry`). Options override them. The skidding solvers'
+drag models take the same geometry functions.
 
 Each source returns the drag moment/force for the skidding solver (``forces``), the heat,
 and the force pairs (moment x angular speed, force x orbital speed) whose power equals it.
@@ -266,13 +269,49 @@ def _warn_grease(source: str) -> None:
                   ValidityWarning, stacklevel=4)
 
 
+def cage_neighbour_diameters(bearing: Any) -> tuple[float, float]:
+    """(D_in, D_out) [m]: the ring surfaces radially next to the cage body, the bore of the
+    cage facing D_in and its outside diameter facing D_out.
+
+    The guiding ring's neighbour is its guide land (``cage.guide_land_diameter``), on which
+    the cage is centred; the other ring's is its land (rib or shoulder) or, where the cage
+    reaches past that land, the raceway beyond it (the cavity between the ribs): of the
+    ring's land and raceway diameters the nearest one not inside the cage body. A side
+    with no ring surface outside the cage body (a cage drawn through the raceway) takes
+    the cage's own diameter there (no gap on that side)."""
+    cage = bearing.cage
+    c_in, c_out = float(cage.inner_diameter), float(cage.outer_diameter)
+    land_in, land_out = _land_diameters(bearing)
+    race_in = float(bearing.inner_raceway_diameter)
+    race_out = float(bearing.outer_raceway_diameter)
+    guidance = getattr(cage, "guidance", None)
+    guide = getattr(cage, "guide_land_diameter", None)
+    if guidance == "inner_ring" and guide is not None:
+        d_in = float(guide)
+    else:
+        d_in = max((d for d in (land_in, race_in) if d <= c_in), default=c_in)
+    if guidance == "outer_ring" and guide is not None:
+        d_out = float(guide)
+    else:
+        d_out = min((d for d in (land_out, race_out) if d >= c_out), default=c_out)
+    return d_in, d_out
+
+
 def cage_churning_geometry(bearing: Any) -> tuple[float, float]:
     """(D_c, c) [m] of the cage churning (paper 002 eq. 15): the cage mean diameter and the
-    default gap, the mean radial gap between the cage and the lands (raceway diameters for
-    roller bearings), at least 0.1 mm (module docstring)."""
+    default gap, the mean radial gap between the cage body and its neighbours
+    (:func:`cage_neighbour_diameters`), c = ((D_out - D_o,c) + (D_i,c - D_in)) / 4, at
+    least 0.1 mm (module docstring). The roller skidding solver's drag
+    (:mod:`thermobearing.skidding.roller_drag`) and the ball solver's
+    (:mod:`thermobearing.skidding.ball_models`) take the same numbers.
+
+    The neighbours, not the two lands: an outer-ring-guided cage may run on a guide land
+    outside the rib (D1842926: cage 150/169.6 mm on a 170 mm land, rib 162.23 mm), where
+    the land-to-land gap (162.23 - 142.97 - 19.6)/4 < 0 fell to the 0.1 mm floor; its gaps
+    are 0.2 mm (guide) and 3.515 mm (bore to inner raceway), mean 1.8575 mm."""
     cage = bearing.cage
     d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
-    d_in, d_out = _land_diameters(bearing)
+    d_in, d_out = cage_neighbour_diameters(bearing)
     gap = 0.25 * ((d_out - d_in) - (cage.outer_diameter - cage.inner_diameter))
     return d_c, max(gap, 1e-4)
 
@@ -377,7 +416,7 @@ def _oil(ctx: HeatContext):
 def _land_diameters(b):
     inner = getattr(b, "inner_land_diameter", None)
     outer = getattr(b, "outer_land_diameter", None)
-    if inner is None:  # roller bearings: raceway diameters bound the cavity
+    if inner is None:  # bearings without lands: raceway diameters bound the cavity
         inner = b.inner_raceway_diameter
     if outer is None:
         outer = b.outer_raceway_diameter

@@ -358,9 +358,11 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
         return ch.drag_force(p.drag_coefficient, rho_e, area, u)
 
     cage = bearing.cage
-    d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
-    d_in, d_out = bearing.inner_land_diameter, bearing.outer_land_diameter
-    gap_c = max(0.25 * ((d_out - d_in) - (cage.outer_diameter - cage.inner_diameter)), 1e-4)
+    # the heat sources' geometry (paper 002 eqs. 15 and 17): one code path, so the drag the
+    # solver balances is the churning the heat sources book (an inner-ring-guided cage's
+    # guide film is cage_guide's, not the inner ring churning's)
+    d_c, gap_c = ch.cage_churning_geometry(bearing)
+    d_in, arc, shoulder, gap_i = ch.inner_ring_churning_geometry(bearing)
     guide = None
     if cage.guidance in ("outer_ring", "inner_ring"):
         from ..heat_sources.cage_guide import land_drag_torque
@@ -384,10 +386,6 @@ def default_ball_models(bearing, lubricant, *, temperature: float, speed: float,
         mu_v = ch._mu_v_regime(re, re * gap_root)[0]
         q = float(ch.cage_churning_power(rho_e, mu_v, wc, cage.width, d_c))
         return q / wc if wc != 0 else 0.0
-
-    arc = D
-    shoulder = max(0.5 * (bearing.width - D), 0.0)
-    gap_i = max(0.5 * (cage.inner_diameter - d_in), 1e-4)
 
     def inner_torque(wi):
         reg = ch.viscous_friction_coefficient(0.5 * d_in, wi, gap_i, nu)
