@@ -56,8 +56,10 @@ and the force pairs (moment x angular speed, force x orbital speed) whose power 
 
 High-speed roller bearing: why element churning dominates (checked 2026-11-24)
 -------------------------------------------------------------------------------
-The CRB 50x75x16 of seed paper 003 (configs/scenes/crb_rib_example.toml: jet 2 L/min,
-MIL-PRF-23699, 3 kN, race control) at 30000 r/min books about three quarters of its loss
+The CRB_50x75x16 preset of seed paper 003 (inner rib only; the operating point of
+configs/scenes/crb_rib_example.toml: jet 2 L/min, MIL-PRF-23699, 3 kN, race control; that
+scene's ``ribbed_ring = "both"`` override gives other ring and cage churning: inner ring
+205.6 W, cage 38.0 W at 30000 r/min, 80 degC) at 30000 r/min books about three quarters of its loss
 as element churning, and its total lies 50-130 % above Palmgren's M0 + M1. Term by term
 (eq. 10 per roller, tests/unit/test_losses20_churning.py):
 
