@@ -38,7 +38,6 @@ import pandas as pd
 
 from .errors import InputError, ThermobearingError
 from .scene import Scene, loads_scene
-from .scene_checks import check_global_friction
 from .sweep_cases import Case, expand, match_finished, scene_from_case
 from .sweep_params import (
     DISPLAY_UNITS,
@@ -209,8 +208,7 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
             scene = loads_scene(case.scene_toml)
             check_model_names(scene)
             sim = Simulation(scene, progress=False)
-            preflight(sim, build=True)
-            check_global_friction(sim)
+            preflight(sim, build=True)  # includes check_global_friction
         for path, _ in case.assignments:
             if path == "supply.flow":
                 flow_notes.append(flow_unused(sim))

@@ -3,8 +3,10 @@
 Everything that can be known wrong without solving a model fails here, in seconds, with the
 field named, instead of after the first operating points of a long run: the network
 template's required parameters and (``check``) their values, the ``[measured]`` CSV
-(columns, numbers, increasing times) and, when the scene builds a network, the column ->
-node map of ``[measured]``.
+(columns, numbers, increasing times), the ``global_friction`` source's inputs at every
+distinct operating point (an SKF series the designation does not give, a missing C0: ``run``
+computed the steps before the first refused one) and, when the scene builds a network, the
+column -> node map of ``[measured]``.
 """
 
 from __future__ import annotations
@@ -12,7 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import InputError
-from ..scene_checks import check_measured_file, check_network
+from ..scene_checks import check_global_friction, check_measured_file, check_network
 
 
 def load_scene_argument(name: str | None) -> Any:
@@ -34,6 +36,7 @@ def preflight(sim: Any, build: bool = True) -> None:
     thermal = bool(sim.needs.get("network"))
     check_network(scene.network, require=thermal)
     check_measured_file(scene)
+    check_global_friction(sim)
     if not (build and thermal):
         return
     from ..coupled import build_network

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..scene_checks import check_global_friction, check_model_names
+from ..scene_checks import check_model_names
 from ._preflight import load_scene_argument
 
 NAME = "check"
@@ -22,8 +22,7 @@ def run(args: argparse.Namespace) -> int:
     scene = load_scene_argument(args.scene)
     check_model_names(scene)
     sim = Simulation(scene, progress=False)
-    preflight(sim)
-    check_global_friction(sim)  # what run refuses at its first step, before any solve
+    preflight(sim)  # with what run refuses at its first step, before any solve
     print(f"scene: {scene.title}")
     print(f"schedule: {len(scene.schedule.steps)} steps, {scene.schedule.duration / 60:g} min")
     print(sim.describe_chain(with_citations=True))
