@@ -396,6 +396,10 @@ def run_sweep(
     unused = check_cases(todo) if check else []
     for line in unused:  # before the runs, as the CLI's other notes
         print(line, file=sys.stderr)
+    resumed = len(cases) - len(todo)
+    if resumed and progress is not False:  # a rerun says what it resumed, before the bar
+        print(f"sweep: resuming: {resumed} of {len(cases)} case(s) already in "
+              f"{_store_path(out)}; {len(todo)} to run", file=sys.stderr)
     out.mkdir(parents=True, exist_ok=True)
     record_base_scene(out, scene)
     show = sys.stderr.isatty() if progress is None else progress

@@ -176,3 +176,25 @@ def test_terminal_columns_fill_with_the_largest_losses():
     assert shown == ["case", "schedule.speed", "mean total loss [W]", "churning_elements [W]",
                      "raceway_traction [W]", "steps over skid limit [-]"]
     assert hidden == 1
+
+
+def test_a_resumed_sweep_says_what_it_resumed(tmp_path, capsys):
+    scene = load_scene()
+    params = [parse_set("supply.flow=10,20,30,40", scene.to_dict())]
+    calls = []
+
+    def dying_runner(text):
+        if len(calls) == 3:
+            raise Interrupt
+        calls.append(text)
+        return flow_speed_runner(text)
+
+    with pytest.raises(Interrupt):
+        run_sweep(scene, params, tmp_path, runner=dying_runner, workers=1, progress=None)
+    first = capsys.readouterr().err
+    assert "resuming" not in first
+    run_sweep(scene, params, tmp_path, runner=flow_speed_runner, workers=1, progress=None)
+    err = capsys.readouterr().err
+    assert "sweep: resuming: 3 of 4 case(s) already in" in err and "1 to run" in err
+    run_sweep(scene, params, tmp_path, runner=flow_speed_runner, workers=1, progress=False)
+    assert "resuming" not in capsys.readouterr().err  # progress=False: nothing printed
