@@ -55,8 +55,8 @@ class UnknownNameError(InputError, KeyError):
 
 def _did_you_mean(value: Any, known: list[str]) -> str:
     """``" (did you mean 'oil_air'?)"`` for a name that differs from a known one only in
-    case, ``-`` / space for ``_``, or by a close spelling, or that starts one to three known
-    names; else ``""``."""
+    case, ``-`` / space for ``_``, or by a close spelling, or that starts or ends one to
+    three known names after a ``_`` (``VG46`` -> ``ISO_VG46``); else ``""``."""
     import difflib
 
     if not isinstance(value, str) or not known:
@@ -70,6 +70,8 @@ def _did_you_mean(value: Any, known: list[str]) -> str:
     hit = plain.get(key) or squeezed.get(key.replace("_", "")) or next(
         (plain[k] for k in difflib.get_close_matches(key, list(plain), n=1, cutoff=0.8)),
         None)
+    if hit is None and not prefixed:  # the value is a known name's last part(s)
+        prefixed = [v for k, v in plain.items() if len(key) >= 3 and k.endswith("_" + key)]
     if hit is None and 1 <= len(prefixed) <= 3:
         return " (did you mean " + " or ".join(repr(v) for v in sorted(prefixed)) + "?)"
     return f" (did you mean {hit!r}?)" if hit and hit != value else ""
