@@ -55,7 +55,7 @@ with its operating point) against L1 at the tight settings ``REFERENCE``. Sweep:
 ``kinematics_tolerance`` 0.3 ... 0.01 against the same reference; ``--l2-sweep``: L2 at
 0.3 and 0.1 as well (each a new film table: minutes of CPU). Prints the cheapest
 level within the budget for the roller problem; plot ``bm7_fidelity_ladder_roller.png``.
-Cost (2026-11-24, shared 2-core machine): L2 78-86 s CPU (3-3.7 min wall), 480 film-table
+Cost (2026-11-24, shared 2-core machine): L2 75-86 s CPU (1-3.7 min wall), 480 film-table
 node solves at n = 512 (0.1-0.5 s CPU each); ``--quick`` L2 65-75 s CPU (288 nodes: the
 first step, where the rollers warm ~60 K across the table's 5-K temperature layers, builds
 most of the table); L0 and L1 under 1 s CPU; ``--no-l2`` seconds. Result: L1 is 4.2 % from
