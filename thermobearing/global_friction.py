@@ -210,11 +210,13 @@ def infer_skf_series(envelope: BearingEnvelope) -> str:
         for series in known:
             if digits.startswith(series) and len(digits) - len(series) == 2:
                 return series
-    read = (f"; {envelope.name!r} reads as series {digits[:-2]!r}, which has no constants "
-            "here" if len(digits) > 2 else "")
+    read = (f"; it reads as series {digits[:-2]!r}, which has no constants here"
+            if len(digits) > 2 else "")
+    name = repr(envelope.name) if envelope.name else f"of this {kind} bearing (none given)"
     raise InputError(
-        f"SKF four-term series of {envelope.name or kind}", envelope.name,
-        f"a designation whose series the SKF constants cover for {kind} bearings "
+        "models.heat_source_options.global_friction.series", None,
+        f"the SKF four-term model needs the bearing's series, and the designation {name} "
+        f"names none the SKF constants cover for {kind} bearings "
         f"({', '.join(sorted(known))}){read}: give the series (scene: [models] "
         "heat_source_options = { global_friction = { series = \"...\" } }) or use "
         "Palmgren (model = \"palmgren\")")
