@@ -55,6 +55,7 @@ Layout (every table optional unless marked)::
     heat_sources = ["raceway_traction", "churning_elements", "churning_cage",
                     "churning_inner_ring", "cage_guide", "pocket_friction"]
     heat_source_options = { pocket_friction = { ... } }   # per-source parameters
+    film_options = { grid_points = 256 }   # numerical_tehl settings (scene_film.py)
     churning_heat_to = "oil"           # oil | paper002 (where the churning heat is booked)
     calibration = "preset"             # preset (<bearing>.calibration.toml if any) | none
     ball_rolling_resistance = "none"   # none | harris | { model = "harris", reduction =
@@ -326,6 +327,8 @@ def _check_model_types(models: Mapping[str, Any]) -> None:
                                  "a heat-source name or an array of names")
         elif key == "heat_source_options":
             _table("models.heat_source_options", value)
+        elif key == "film_options":  # keys, units and ranges: scene_film (chain planning)
+            _table("models.film_options", value)
         elif key == "ball_rolling_resistance" and isinstance(value, Mapping):
             continue  # { model = ..., reduction = ... }: checked with the model names
         elif not isinstance(value, str):

@@ -16,10 +16,12 @@ from typing import Any
 from .errors import InputError, UnknownNameError
 from .kinematic_models import KINEMATICS
 from .scene import Scene
+from .scene_film import describe_film_options, film_options_from_models
 
 #: The keys a scene's ``[models]`` table accepts.
-MODEL_KEYS = frozenset({"kinematics", "film", "heat_sources", "heat_source_options", "control",
-                        "churning_heat_to", "calibration", "ball_rolling_resistance"})
+MODEL_KEYS = frozenset({"kinematics", "film", "film_options", "heat_sources",
+                        "heat_source_options", "control", "churning_heat_to", "calibration",
+                        "ball_rolling_resistance"})
 BALL_SOURCES = ("raceway_traction", "churning_elements", "churning_cage", "churning_inner_ring",
                 "cage_guide", "pocket_friction")
 ROLLER_SOURCES = ("raceway_traction", "ehl_rolling_resistance", "churning_elements",
@@ -183,6 +185,7 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
         if key not in MODEL_KEYS:
             raise InputError(f"models.{key}", scene.models[key],
                              "a known model family: " + ", ".join(sorted(MODEL_KEYS)))
+    film_options_from_models(scene.models)  # refused here (check) before anything runs
     need = _needs(scene)
     links: list[ChainLink] = []
 
@@ -208,7 +211,7 @@ def plan_chain(scene: Scene, lubricant: Any | None = None,
             if need["film"]:
                 add(EHL_SOLVERS, film, "film thickness and drag of the roller-race line "
                     "contacts (numerical EHL, interpolation table over load, speed, sliding, "
-                    "temperature)")
+                    "temperature)" + describe_film_options(scene.models))
         else:
             if film not in FILM:
                 raise UnknownNameError("models.film", film,
@@ -255,22 +258,36 @@ def check_film_model(film: str, is_ball: bool) -> None:
 
 
 def film_kinematics_options(film: str | None, bearing: Any, lubricant: Any,
-                            is_ball: bool) -> dict[str, Any]:
+                            is_ball: bool, film_options: Mapping[str, Any] | None = None
+                            ) -> dict[str, Any]:
     """Roller-solver options that put a numerical film model in the quasi-dynamics.
 
     ``numerical_tehl``: a :class:`thermobearing.ehl.coupling.TehlFilmModel` (one per bearing,
     its interpolation table lives as long as the Simulation) as ``film_model`` and the
     ``numerical_tehl`` drag model; ``numerical_ehl``: the isothermal numerical drag model.
     Closed-form names: no options (the roller solver keeps its own default film).
+
+    ``film_options``: the film model's keywords, as :func:`scene_film_options` returns them
+    (``{"n": 256, "temperature_step": 5.0}``); given for any other film, InputError.
     """
     from .film import FILM
 
+    if film_options and film != "numerical_tehl":
+        raise InputError("models.film_options", dict(film_options),
+                         f"film_options only with [models] film = \"numerical_tehl\" (the "
+                         f"film here is {film!r})")
     if film is None or film in FILM or film not in _numerical_film_models():
         return {}
     check_film_model(film, is_ball)
     if film == "numerical_tehl":
         from .ehl.coupling import roller_film_model
 
-        return {"film_model": roller_film_model(bearing, lubricant),
+        return {"film_model": roller_film_model(bearing, lubricant, **(film_options or {})),
                 "drag_model": "numerical_tehl"}
     return {"drag_model": film}
+
+
+def scene_film_options(scene: Scene) -> dict[str, Any]:
+    """``[models] film_options`` of the scene, checked, as film-model keywords in SI
+    (:func:`thermobearing.scene_film.film_options_from_models`); {} without the key."""
+    return film_options_from_models(scene.models)
