@@ -429,6 +429,50 @@ def _role(ctx: HeatContext, source: str, default: str) -> str:
     return str(ctx.option(source, "role", default))
 
 
+#: Smallest radial gap [m] the churning options ``gap`` take (:func:`_gap`). Eqs. 12-14
+#: describe the oil annulus between two smooth cylinders (Couette flow, Taylor vortices);
+#: at 1 um the gap is of the order of the roughness of turned or ground cage and land
+#: surfaces (Ra 0.2-1.6 um, recalled) and of an EHL film, where the surfaces touch through
+#: a film and the annulus model no longer applies; below it the laminar mu_v = 16 / N_Re
+#: makes the power grow as 1 / c without bound (1e-300 mm gave an infinite cage power,
+#: 1e-30 mm a transient the stepper could not converge, residual 1.2e15).
+MIN_GAP = 1.0e-6
+
+
+def _gap(ctx: HeatContext, source: str, default: float) -> float:
+    """The radial gap c [m] of ``source``: option ``gap`` (>= :data:`MIN_GAP`, else an
+    InputError naming it and why) or ``default``."""
+    gap = float(ctx.option(source, "gap", default))
+    if gap < MIN_GAP:
+        raise InputError(f"options[{source}].gap", f"{gap:g} m",
+                         f"a gap >= {MIN_GAP * 1e6:g} um: a thinner gap is of the order of the "
+                         "roughness of turned or ground surfaces and of a lubricant film, not "
+                         "the oil annulus of paper 002 eqs. 12-14, whose power grows as 1/gap")
+    return gap
+
+
+def _check_length(source: str, key: str, value: float, bound: float, why: str) -> float:
+    """``value`` [m] of option ``key`` of ``source`` within [0, ``bound``] [m], else an
+    InputError naming the option, the bound and ``why`` (the bearing dimension it comes
+    from)."""
+    if not 0.0 <= value <= bound:
+        raise InputError(f"options[{source}].{key}", f"{value:g} m",
+                         f"a length in [0, {bound * 1e3:.6g} mm]: {why}")
+    return value
+
+
+def _finite_power(ctx: HeatContext, source: str, power: float) -> float:
+    """``power`` [W] if finite; else an InputError naming the options of ``source`` the
+    scene gave (a power that overflows comes from them; without options the heat result
+    refuses it naming the source)."""
+    given = dict(ctx.options.get(source) or {})
+    if not math.isfinite(power) and given:
+        shown = ", ".join(f"{k} = {v!r}" for k, v in sorted(given.items()))
+        raise InputError(f"options[{source}]", shown,
+                         f"options that give a finite churning power (they give {power} W)")
+    return power
+
+
 @HEAT_SOURCES.register(
     "churning_cage",
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
@@ -454,10 +498,11 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     cage = b.cage
     rho, nu = _oil(ctx)
     d_c, default_gap = cage_churning_geometry(b)
-    gap = float(ctx.option(name, "gap", default_gap))
+    gap = _gap(ctx, name, default_gap)
     x = float(oil_fraction(ctx, 0.5 * d_c, name))
     reg = viscous_friction_coefficient(0.5 * d_c, omega, gap, nu)
-    q = float(cage_churning_power(x * rho, reg.mu_v, omega, cage.width, d_c))
+    q = _finite_power(ctx, name, float(cage_churning_power(x * rho, reg.mu_v, omega,
+                                                          cage.width, d_c)))
     moment = -q / omega if omega != 0 else 0.0  # on the cage, about the bearing axis
     return HeatResult(
         source=name, power_by_role={role: q}, components={"cage churning": q},
@@ -497,12 +542,23 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
     b = ctx.bearing
     rho, nu = _oil(ctx)
     d_in, arc0, shoulder0, gap0 = inner_ring_churning_geometry(b)
-    arc = float(ctx.option(name, "raceway_arc_length", arc0))
-    shoulder = float(ctx.option(name, "shoulder_length", shoulder0))
-    gap = float(ctx.option(name, "gap", gap0))
+    # B_arc: a groove arc whose chord is at most the ring width w and which is no deeper
+    # than a semicircle is at most pi w / 2 long; the two shoulders lie beside it within w
+    arc = _check_length(name, "raceway_arc_length",
+                        float(ctx.option(name, "raceway_arc_length", arc0)),
+                        0.5 * math.pi * b.width,
+                        f"at most pi w / 2, the semicircle on the ring width w = "
+                        f"{b.width * 1e3:.6g} mm (a groove arc spans at most the width)")
+    shoulder = _check_length(name, "shoulder_length",
+                             float(ctx.option(name, "shoulder_length", shoulder0)),
+                             0.5 * b.width,
+                             f"at most w / 2 of the ring width w = {b.width * 1e3:.6g} mm "
+                             "(one of the two shoulders beside the raceway)")
+    gap = _gap(ctx, name, gap0)
     x = float(oil_fraction(ctx, 0.5 * d_in, name))
     reg = viscous_friction_coefficient(0.5 * d_in, omega, gap, nu)
-    q = float(inner_ring_churning_power(x * rho, reg.mu_v, omega, arc, shoulder, d_in))
+    q = _finite_power(ctx, name, float(inner_ring_churning_power(x * rho, reg.mu_v, omega,
+                                                                 arc, shoulder, d_in)))
     moment = -q / omega if omega != 0 else 0.0
     return HeatResult(
         source=name, power_by_role={role: q}, components={"inner ring churning": q},
@@ -554,7 +610,7 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
     d_elem = b.element_diameter
     d_m = b.pitch_diameter
     d_in, d_out = _land_diameters(b)
-    gap = float(ctx.option(name, "gap", max(0.5 * (d_out - d_in), 1e-4)))
+    gap = _gap(ctx, name, max(0.5 * (d_out - d_in), 1e-4))
     swirl = float(ctx.option(name, "oil_swirl", 0.0))
     rel_omega = kin.orbital_speed - swirl * kin.cage_speed
     u = 0.5 * d_m * rel_omega
@@ -583,7 +639,7 @@ def _element_result(ctx: HeatContext, name: str, signed: np.ndarray, u: np.ndarr
                     details: dict) -> HeatResult:
     """Element churning heat of the drag forces F_j [N] (negative: against the orbit) at
     the orbital speeds u_j [m/s]: Q = sum_j |F_j u_j| [W] to the "elements" role."""
-    q = float(np.sum(np.abs(signed * u)))
+    q = _finite_power(ctx, name, float(np.sum(np.abs(signed * u))))
     return HeatResult(
         source=name, power_by_role={_role(ctx, name, "elements"): q},
         components={"element churning": q},

@@ -222,6 +222,11 @@ class IsothermalViscosity:
                  extend_to: float = EXTENDED_PRESSURE):
         self.lubricant = lubricant
         self.temperature = float(temperature)
+        if not (math.isfinite(float(p_max)) and p_max >= 0.0):
+            raise InputError("IsothermalViscosity.p_max", p_max,
+                             "a finite pressure >= 0 Pa (the top of the table)")
+        if int(n) != n or n < 2:
+            raise InputError("IsothermalViscosity.n", n, "an integer >= 2 (grid points)")
         p_max = finite_pressure_limit(lubricant, self.temperature, p_max)
         if p_max < extend_to and p_max == 5.0e9 and n == 4001:
             # the same 1.25 MPa step on to extend_to (or the law's finite limit): the grid
@@ -230,11 +235,17 @@ class IsothermalViscosity:
             top = finite_pressure_limit(lubricant, self.temperature, extend_to)
             n = int(math.floor(top / step + 1e-9)) + 1
             p_max = (n - 1) * step
+        if p_max <= 0.0:
+            # an empty range (p_max = 0 asked for, or a law finite only at p = 0, below
+            # 1e-9 of the asked top): the table is the one point p = 0; any p > 0 is beyond
+            # it and goes to the lubricant (which refuses an overflowing pressure naming it).
+            # 1/step is 0 there: the compiled interpolation then reads ln eta(T, 0) at p = 0
+            p_max, n = 0.0, 1
         self._p = np.linspace(0.0, p_max, n)
         self._ln = np.log(np.asarray(lubricant.dynamic_viscosity(self.temperature, self._p),
                                      float))
         self._slope = np.append(np.diff(self._ln), 0.0)   # per grid step
-        self._inv_dp = (n - 1) / p_max
+        self._inv_dp = (n - 1) / p_max if p_max > 0.0 else 0.0
         self.p_max = p_max
 
     def viscosity_table(self, T, p_max: float):
