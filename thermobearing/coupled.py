@@ -918,74 +918,80 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
         omega, r_prev = 1.0, None
         T_ok: np.ndarray | None = None  # the last state whose models answered
         change, step_backtracks = math.inf, 0
-        for _ in range(STEADY_MAX_PASSES):
-            try:
-                coupler.kinematics(i, step, T)
-                lin = coupler.linearize(step, T)
-            except (InputError, ConvergenceError) as exc:
-                if T_ok is None:
-                    raise  # the operating point's start itself: the model's own error
-                if step_backtracks >= STEADY_MAX_BACKTRACKS:
-                    raise ConvergenceError(
-                        "coupled steady state", change,
-                        f"the models refuse the updates of step {i} even after "
-                        f"{step_backtracks} halvings towards the last accepted state "
-                        f"(residual: that state's largest pass change [K]); last refusal: "
-                        f"{exc}", {"step": i, "refused [degC]": _temperatures_state(names, T),
-                                   "accepted [degC]": _temperatures_state(names, T_ok)}
-                    ) from exc
-                step_backtracks += 1
-                backtracks += 1
-                note = (f"steady step {i}: a model refused an update of the temperatures "
-                        f"({exc}); the update was halved towards the last accepted state")
-                if not any(w.startswith(f"steady step {i}: a model refused")
-                           for w in sim.warnings):
-                    sim.warnings.append(note)
-                T = T_ok + 0.5 * (T - T_ok)
-                r_prev = None
-                continue
-            T_ok = T.copy()
-            # a cold start may still be below the boundaries: the floor holds for the
-            # pass's steady state only where the model's heat is a loss
-            floor = floor_T if float(np.min(lin.q0)) >= 0.0 else None
-            T_new, res, how = _steady_pass(net, lin, T, floor, coupler.runaway_limit)
-            passes_by[how] += 1
-            r = T_new - T
-            change = float(np.max(np.abs(r)))
-            outer_iterations += 1
-            if change < STEADY_TOLERANCE and res is not None:
-                T = T_new
+        # the validity warnings of the iterates are held back: the step reports its
+        # steady state's (sim.record_state_warnings below)
+        with sim.held_warnings():
+            for _ in range(STEADY_MAX_PASSES):
+                try:
+                    coupler.kinematics(i, step, T)
+                    lin = coupler.linearize(step, T)
+                except (InputError, ConvergenceError) as exc:
+                    if T_ok is None:
+                        raise  # the operating point's start itself: the model's own error
+                    if step_backtracks >= STEADY_MAX_BACKTRACKS:
+                        raise ConvergenceError(
+                            "coupled steady state", change,
+                            f"the models refuse the updates of step {i} even after "
+                            f"{step_backtracks} halvings towards the last accepted state "
+                            f"(residual: that state's largest pass change [K]); last refusal: "
+                            f"{exc}", {"step": i, "refused [degC]": _temperatures_state(names, T),
+                                       "accepted [degC]": _temperatures_state(names, T_ok)}
+                        ) from exc
+                    step_backtracks += 1
+                    backtracks += 1
+                    note = (f"steady step {i}: a model refused an update of the temperatures "
+                            f"({exc}); the update was halved towards the last accepted state")
+                    if not any(w.startswith(f"steady step {i}: a model refused")
+                               for w in sim.warnings):
+                        sim.warnings.append(note)
+                    T = T_ok + 0.5 * (T - T_ok)
+                    r_prev = None
+                    continue
+                T_ok = T.copy()
+                # a cold start may still be below the boundaries: the floor holds for the
+                # pass's steady state only where the model's heat is a loss
+                floor = floor_T if float(np.min(lin.q0)) >= 0.0 else None
+                T_new, res, how = _steady_pass(net, lin, T, floor, coupler.runaway_limit)
+                passes_by[how] += 1
+                r = T_new - T
+                change = float(np.max(np.abs(r)))
+                outer_iterations += 1
+                if change < STEADY_TOLERANCE and res is not None:
+                    T = T_new
+                    _check_runaway(names, T, None, i, lin, coupler.runaway_limit)
+                    if res.generated > 0.0:
+                        imbalance = max(imbalance, abs(res.generated - res.to_boundaries
+                                                       - res.to_streams) / res.generated)
+                    break
+                # Aitken's dynamic relaxation of the outer update (Irons & Tuck): the pass
+                # holds the kinematics, whose heat falls as the oil thins, so the plain
+                # update overshoots and oscillates (NU 214 at 10000 r/min from 39 degC: 745,
+                # 97, 312, 126 ... degC, 20 passes); the relaxation factor from the last two
+                # updates damps it, capped to (0.1, 1], and no pass moves a node by more than
+                # STEADY_MAX_PASS_CHANGE
+                if r_prev is not None:
+                    dr = r - r_prev
+                    den = float(dr @ dr)
+                    if den > 0.0:
+                        omega = min(max(-omega * float(r_prev @ dr) / den, 0.1), 1.0)
+                r_prev = r
+                step_T = omega * r
+                big = float(np.max(np.abs(step_T)))
+                T = T + (step_T * (STEADY_MAX_PASS_CHANGE / big) if big > STEADY_MAX_PASS_CHANGE
+                         else step_T)
                 _check_runaway(names, T, None, i, lin, coupler.runaway_limit)
-                if res.generated > 0.0:
-                    imbalance = max(imbalance, abs(res.generated - res.to_boundaries
-                                                   - res.to_streams) / res.generated)
-                break
-            # Aitken's dynamic relaxation of the outer update (Irons & Tuck): the pass
-            # holds the kinematics, whose heat falls as the oil thins, so the plain
-            # update overshoots and oscillates (NU 214 at 10000 r/min from 39 degC: 745,
-            # 97, 312, 126 ... degC, 20 passes); the relaxation factor from the last two
-            # updates damps it, capped to (0.1, 1], and no pass moves a node by more than
-            # STEADY_MAX_PASS_CHANGE
-            if r_prev is not None:
-                dr = r - r_prev
-                den = float(dr @ dr)
-                if den > 0.0:
-                    omega = min(max(-omega * float(r_prev @ dr) / den, 0.1), 1.0)
-            r_prev = r
-            step_T = omega * r
-            big = float(np.max(np.abs(step_T)))
-            T = T + (step_T * (STEADY_MAX_PASS_CHANGE / big) if big > STEADY_MAX_PASS_CHANGE
-                     else step_T)
-            _check_runaway(names, T, None, i, lin, coupler.runaway_limit)
-        else:
-            j = int(np.argmax(np.abs(T - T_ok))) if T_ok is not None else 0
-            raise ConvergenceError(
-                "coupled steady state", change,
-                f"temperatures still move after {STEADY_MAX_PASSES} kinematics updates "
-                f"(residual: the last pass's largest change [K], node {names[j]!r}; "
-                f"converged below {STEADY_TOLERANCE:g} K)",
-                {"step": i, "temperatures [degC]": _temperatures_state(names, T)})
+            else:
+                j = int(np.argmax(np.abs(T - T_ok))) if T_ok is not None else 0
+                raise ConvergenceError(
+                    "coupled steady state", change,
+                    f"temperatures still move after {STEADY_MAX_PASSES} kinematics updates "
+                    f"(residual: the last pass's largest change [K], node {names[j]!r}; "
+                    f"converged below {STEADY_TOLERANCE:g} K)",
+                    {"step": i, "temperatures [degC]": _temperatures_state(names, T)})
         for b in sim.bearings:
+            # the step's validity warnings are its steady state's: its kinematic solve's
+            # and its heat sources' at the converged temperatures
+            sim.record_state_warnings(b, i, step, coupler.role_temperatures(b, T))
             kin_rows.append({**step_columns(i, None, b.name, step, b),
                              **kinematics_columns(b.last, b.bearing)})
             # the step's checks are its steady state's: the passes before it were iterates

@@ -49,7 +49,8 @@ import math
 import sys
 import time
 import warnings
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -221,6 +222,9 @@ class Simulation:
         self.warnings: list[str] = list(self.notes) + (
             dropped if _needs(scene)["losses"] else [])
         self._warning_groups = WarningGroups(self.warnings)
+        #: while not None, the validity warnings raised go here, not into the run's list
+        #: (:meth:`held_warnings`: the iterates of a steady run's fixed point)
+        self._held: list[tuple[str, str, int | None]] | None = None
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         self._check_option_clashes()
@@ -324,16 +328,18 @@ class Simulation:
         if shared is not None and near(visc, shared[0]) and near(visc_oil, shared[4]):
             b.last, b.last_viscosity, b.last_step = shared[1], shared[0], step_index
             b.last_oil_viscosity = shared[4]
+            b.last_warnings = shared[2]
             if shared[3] != b.name and (id(shared[1]), b.name) not in self._kin_replayed:
                 self._kin_replayed.add((id(shared[1]), b.name))
                 for message in shared[2]:  # the twin's film ranges hold for this one too
-                    self._warning_groups.add(message, b.name, step_index)
+                    self._warn(message, b.name, step_index)
             self.checks[b.name].record(step_index, check_state(b.bearing, shared[1],
                                                                self.check_limits))
             return shared[1]
         op = self._operating(step, b)
         fn = KINEMATICS.get(b.kinematics_name)
         guess = b.last if b.last is not None else None
+        nearby: list[str] = []  # the note of a solve at a shifted temperature
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", ValidityWarning)
             try:
@@ -350,7 +356,7 @@ class Simulation:
                                  options=b.kin_options)
                     except ConvergenceError:
                         res, visc = self._solve_nearby(b, fn, op, t_contact, temps, guess,
-                                                       step_index, first)
+                                                       first, nearby)
             except ConvergenceError as exc:
                 # the solver's own error names neither the bearing nor the step
                 raise ConvergenceError(
@@ -358,22 +364,27 @@ class Simulation:
                     f"at step {step_index} ({step.speed * 30.0 / np.pi:.6g} r/min, radial "
                     f"{op.radial_load:.6g} N, axial {op.axial_load:.6g} N, contacts at "
                     f"{t_contact - 273.15:.1f} degC): {exc}", {"step": step_index}) from exc
+        for note in nearby:
+            self._warn(note, b.name, step_index)
         self._note(caught, b.name, step_index)
         if not res.converged:
             raise ConvergenceError(f"kinematics ({b.kinematics_name}) of {b.name}",
                                    res.residual_norm, "at step", {"step": step_index})
         b.last, b.last_viscosity, b.last_step = res, visc, step_index
         b.last_oil_viscosity = visc_oil
+        b.last_warnings = tuple(str(w.message) for w in caught
+                                if issubclass(w.category, ValidityWarning))
         self._kin_shared[(b.key, step_index)] = (
-            visc, res, tuple(str(w.message) for w in caught
-                             if issubclass(w.category, ValidityWarning)), b.name, visc_oil)
+            visc, res, b.last_warnings, b.name, visc_oil)
+        b.last_warnings += tuple(nearby)  # this bearing's solve, not a twin's
         b.solves += 1
         self.checks[b.name].record(step_index, check_state(b.bearing, res, self.check_limits))
         return res
 
     def _solve_nearby(self, b: _Bearing, fn: Any, op: OperatingPoint, t_contact: float,
                       temps: Mapping[str, float], guess: KinematicsResult | None,
-                      step_index: int, exc: ConvergenceError) -> tuple[KinematicsResult, float]:
+                      exc: ConvergenceError, notes: list[str]
+                      ) -> tuple[KinematicsResult, float]:
         """The kinematics at contact and oil temperatures a little off the current ones,
         where the solver stalled (-> (result, contact viscosity there)).
 
@@ -384,8 +395,9 @@ class Simulation:
         6.7e-4 in a window narrower than 0.02 K of oil temperature (the drag's viscosity)
         and converged 0.01 K on either side of it. Both temperatures are moved by the same
         delta, tried at +delta, then -delta, warm-started from the last state and then
-        cold; the error of the exact temperature is raised if both fail. The shift goes
-        into the run's warnings with the stalled residual.
+        cold; the error of the exact temperature is raised if both fail. The shift, with
+        the stalled residual, is appended to ``notes`` (the caller puts it into the run's
+        warnings).
         """
         tol = self.scene.solver.kinematics_tolerance
         lub = self.lubricant
@@ -405,13 +417,12 @@ class Simulation:
                     continue
                 if res.converged:
                     visc = float(lub.dynamic_viscosity(t_try))
-                    self._warning_groups.add(
+                    notes.append(
                         f"kinematics solved at contact and oil temperatures {shift:+.3g} K off "
                         f"(contacts {t_contact - 273.15:.2f} degC; viscosity "
                         f"{visc / float(lub.dynamic_viscosity(t_contact)) - 1.0:+.2%}, inside "
                         f"solver.kinematics_tolerance = {tol:g}): the solver stalled at "
-                        f"residual {exc.residual:.3g} at the exact temperature",
-                        b.name, step_index)
+                        f"residual {exc.residual:.3g} at the exact temperature")
                     return res, visc
         raise exc
 
@@ -420,10 +431,52 @@ class Simulation:
         """The caught warnings into the run's warnings, repeats merged into one line per
         bearing and message shape (:class:`~thermobearing.warning_groups.WarningGroups`)."""
         for w in caught:
-            self._warning_groups.add(str(w.message), bearing, step)
+            self._warn(str(w.message), bearing, step)
+
+    def _warn(self, message: str, bearing: str, step: int | None = None) -> None:
+        """One validity warning of ``bearing`` (at schedule ``step`` if known) into the
+        run's warnings, or into the held list while :meth:`held_warnings` is open."""
+        if self._held is not None:
+            self._held.append((message, bearing, step))
+        else:
+            self._warning_groups.add(message, bearing, step)
+
+    @contextmanager
+    def held_warnings(self) -> Iterator[list[tuple[str, str, int | None]]]:
+        """Inside, the validity warnings of the kinematics and heat evaluations go to the
+        yielded list of (message, bearing, step), not into the run's warnings: a steady
+        run's fixed-point iterates are no states the bearing runs in (a QJ1044 pair from
+        -10 degC: the film formula's G range warned at the cold iterates only). The
+        converged state's warnings are then recorded by :meth:`record_state_warnings`. An
+        error inside records the held warnings as they came (a run stopped there)."""
+        outer, held = self._held, []
+        self._held = held
+        try:
+            yield held
+        except BaseException:
+            # a run stopped inside: the iterates' warnings are all it has of that step
+            self._held = outer
+            for message, bearing, step in held:
+                self._warn(message, bearing, step)
+            raise
+        finally:
+            self._held = outer
+
+    def record_state_warnings(self, b: _Bearing, step_index: int, step: Step,
+                              temps: Mapping[str, float]) -> None:
+        """The validity warnings of bearing ``b``'s state at schedule step ``step_index``
+        into the run's warnings: those of the kinematic solve that gave its state
+        (``b.last``) and those of its heat sources evaluated afresh at the role
+        temperatures ``temps`` [K] (the memo bypassed: a memoised evaluation warns no
+        more). A steady run calls it once per step at its steady state."""
+        for message in b.last_warnings:
+            self._warn(message, b.name, step_index)
+        if b.last is not None and b.sources:
+            self.evaluate_heat(b, step, b.last, temps, fresh=True, step_index=step_index)
 
     def evaluate_heat(self, b: _Bearing, step: Step, kin: KinematicsResult,
-                      temps: Mapping[str, float], with_rows: bool = False) -> _Evaluation:
+                      temps: Mapping[str, float], with_rows: bool = False,
+                      fresh: bool = False, step_index: int | None = None) -> _Evaluation:
         """Heat of the bearing's sources at the given role temperatures.
 
         Memoised per source: a source's result is reused while the kinematic state is the
@@ -434,7 +487,9 @@ class Simulation:
         ``reads`` of the evaluation is the union of the roles the sources read.
         ``with_rows``: also the loss-table rows, one per source, component and role (the
         component where the heat goes, :meth:`heat_sources.HeatResult.split`) with its
-        power [W]; a component's rows add up to its power.
+        power [W]; a component's rows add up to its power. ``fresh``: every source is
+        evaluated, none taken from the memo (its validity warnings are raised again), and
+        its warnings are the schedule step ``step_index``'s.
         """
         from .heat_sources import HeatContext, evaluate_recorded
 
@@ -445,7 +500,7 @@ class Simulation:
             self._heat_batches.clear()
             self._heat_replayed.clear()
         found: dict[str, tuple[Any, frozenset[str]]] = {}
-        for name in b.sources:
+        for name in () if fresh else b.sources:
             for entry_kin, entry_step, reads, values, result, batch in memo.get((b.key, name),
                                                                                  ()):
                 if (entry_kin is kin and (entry_step is step or entry_step == step)
@@ -462,7 +517,7 @@ class Simulation:
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always", ValidityWarning)
                 computed = evaluate_recorded(missing, ctx)
-            self._note(caught, b.name)
+            self._note(caught, b.name, step_index)
             batch = self._heat_batch_count = self._heat_batch_count + 1
             self._heat_batches[batch] = (b.name, tuple(
                 str(w.message) for w in caught if issubclass(w.category, ValidityWarning)))
@@ -497,7 +552,7 @@ class Simulation:
             return
         self._heat_replayed.add((batch, bearing))
         for message in messages:
-            self._warning_groups.add(message, bearing)
+            self._warn(message, bearing)
 
     def _check_option_clashes(self) -> None:
         """Refuse, before anything is solved, a ``[models] heat_source_options`` parameter

@@ -33,6 +33,9 @@ class _Bearing:
     #: the oil node's viscosity at the last skidding solve (its drag's) [Pa s]
     last_oil_viscosity: float = math.nan
     last_step: int = -1
+    #: the validity warnings of the solve that gave ``last`` (a steady run reports its
+    #: steady state's kinematic warnings only, :meth:`Simulation.record_state_warnings`)
+    last_warnings: tuple[str, ...] = ()
     solves: int = 0
     #: fractions of the schedule's radial / axial loads this bearing carries
     #: (``[[bearings]] load_share``)
