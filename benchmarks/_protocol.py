@@ -139,10 +139,16 @@ def run_l1(label: str, scene: Any) -> ProtocolRun:
     from thermobearing.simulation import Simulation
 
     t0, c0 = time.perf_counter(), time.process_time()
-    res = Simulation(scene, progress=False).run()
+    sim = Simulation(scene, progress=False)
+    res = sim.run()
     dt, cpu = time.perf_counter() - t0, time.process_time() - c0
     run = reduce_results(label, scene, res, dt)
     run.cpu_s = cpu
+    # numerical_tehl: the grid its film model solves on ([models] film_options.grid_points)
+    grids = {b.name: b.kin_options["film_model"].n for b in sim.bearings
+             if hasattr(b.kin_options.get("film_model"), "n")}
+    if grids:
+        run.extra["film grid points"] = grids
     return run
 
 

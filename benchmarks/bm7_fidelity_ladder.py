@@ -58,8 +58,14 @@ level within the budget for the roller problem; plot ``bm7_fidelity_ladder_rolle
 Cost (2026-11-24, shared 2-core machine): L2 75-86 s CPU (1-3.7 min wall), 480 film-table
 node solves at n = 512 (0.1-0.5 s CPU each); ``--quick`` L2 65-75 s CPU (288 nodes: the
 first step, where the rollers warm ~60 K across the table's 5-K temperature layers, builds
-most of the table); L0 and L1 under 1 s CPU; ``--no-l2`` seconds. Result: L1 is 4.2 % from
-L2 on the total loss but 10 K on the rollers node, so within 1 K / 5 % only L2 itself.
+most of the table); L0 and L1 under 1 s CPU; ``--no-l2`` seconds. ``--quick`` runs L2 with
+``film_options`` :data:`ROLLER_QUICK_FILM_OPTIONS` (grid_points 256, temperature_step 10 K);
+measured on its step alone (2026-11-24, one thread per run, NUMBA_NUM_THREADS=1, two runs
+at a time): defaults (n = 512, 5 K) 33.1 and 34.3 s CPU, 288 node solves; n = 256 28.7 s
+(dT 0.009 K, total loss 0.05 % from the defaults); 10 K 21.2 s, 180 solves (0.0025 K,
+0.016 %); both 18.4 s, 180 solves (0.007 K, 0.036 %); n = 256 and 20 K 11.3 s, 106 solves,
+but 0.20 K, 0.13 %. Result: L1 is 4.2 % from L2 on the total loss but 10 K on the rollers
+node, so within 1 K / 5 % only L2 itself.
 
 Usage: python benchmarks/bm7_fidelity_ladder.py [--quick] [--json] [--out DIR]
 [--problem ball|roller|all] [--no-l2] [--l2-sweep] [--no-sweeps]
@@ -99,6 +105,9 @@ ROLLER_TOLERANCES = (0.3, 0.1, 0.03, 0.01)
 #: --l2-sweep: L2 at looser re-solve tolerances than the scene's 0.03 (a few CPU minutes each)
 ROLLER_L2_TOLERANCES = (0.3, 0.1)
 ROLLER_QUICK_STEPS = 1
+#: --quick: L2's film settings ([models] film_options): a coarser thermal-EHL grid and
+#: temperature layer (measured against the defaults n = 512, 5 K in the module docstring)
+ROLLER_QUICK_FILM_OPTIONS = {"grid_points": 256, "temperature_step": "10 K"}
 
 
 def _setting(scene) -> str:
@@ -224,8 +233,8 @@ def ball_ladder(args: argparse.Namespace) -> list[dict]:
 
 
 def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True,
-                  log=None, warm_up: bool = True, l2_sweep: bool = False
-                  ) -> tuple[list[dict], dict]:
+                  log=None, warm_up: bool = True, l2_sweep: bool = False,
+                  film_options: dict | None = None) -> tuple[list[dict], dict]:
     """The roller-bearing ladder (:data:`_protocol.ROLLER_SCENE`): its records and notes.
 
     ``steps``: only the first ``steps`` load steps; ``l2``: run L2 (skidding + numerical
@@ -234,7 +243,8 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
     :data:`ROLLER_TOLERANCES`. ``log``: a print-like callable for progress (None: quiet);
     ``warm_up``: a 1-step run first, so that no record pays first-call costs;
     ``l2_sweep``: also L2 at the looser tolerances :data:`ROLLER_L2_TOLERANCES` (each with
-    its own, new film table), against L2 at the scene's tolerance.
+    its own, new film table), against L2 at the scene's tolerance. ``film_options``: L2's
+    ``[models] film_options`` (None: the film model's defaults).
     Returns (records, notes): notes has ``case``, ``reference`` (its method), ``l2_error``
     (the ConvergenceError text if L2 stopped, else ''), ``energy_imbalance`` (of the
     reference run) and ``film_table`` (L2's table work, per bearing).
@@ -253,6 +263,14 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
         say(f"  {r.label:>34} {setting:>40} {r.time_s:8.2f} s ({r.cpu_s:.2f} s CPU), "
             f"{r.kinematics_solves} kinematics solves")
 
+    def l2_scene(scene):
+        extra = {"film_options": dict(film_options)} if film_options else {}
+        return with_models(scene, film="numerical_tehl", **extra)
+
+    def l2_setting(scene, run) -> str:
+        grids = run.extra.get("film grid points", {})
+        return _setting(scene) + "".join(f",n={g}" for g in sorted(set(grids.values())))
+
     ladder = []  # (level, method, run, setting, sweep)
     for model, opts in ROLLER_L0:
         note = "".join(f", {k} {v}" for k, v in opts.items())
@@ -267,9 +285,15 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
     ref = None
     if l2:
         try:
-            ref = run_l1("L2 skidding + numerical_tehl", with_models(base, film="numerical_tehl"))
-            show(ref, _setting(base))
-            ladder.append(("L2", "skidding + numerical_tehl", ref, _setting(base), "ladder"))
+            ref = run_l1("L2 skidding + numerical_tehl", l2_scene(base))
+            show(ref, l2_setting(base, ref))
+            asked = (film_options or {}).get("grid_points")
+            grids = ref.extra.get("film grid points", {})
+            if asked is not None and any(g != asked for g in grids.values()):
+                say(f"  note: film_options grid_points = {asked} did not reach the film "
+                    f"model (grid {grids}): L2 ran at that grid")
+            ladder.append(("L2", "skidding + numerical_tehl", ref, l2_setting(base, ref),
+                           "ladder"))
         except ConvergenceError as err:
             l2_error = str(err)
             say(f"  L2 stopped: {l2_error}")
@@ -292,12 +316,12 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
         for tol in ROLLER_L2_TOLERANCES:
             sc = with_solver(base, kinematics_tolerance=tol)
             try:
-                r = run_l1("L2 skidding + numerical_tehl", with_models(sc, film="numerical_tehl"))
+                r = run_l1("L2 skidding + numerical_tehl", l2_scene(sc))
             except ConvergenceError as err:
                 say(f"  L2 at {_setting(sc)} stopped: {err}")
                 continue
-            show(r, _setting(sc))
-            ladder.append(("L2", "skidding + numerical_tehl", r, _setting(sc),
+            show(r, l2_setting(sc, r))
+            ladder.append(("L2", "skidding + numerical_tehl", r, l2_setting(sc, r),
                            "l2_kinematics_tolerance"))
     records = []
     for level, method, run, setting, sweep in ladder:
@@ -317,6 +341,7 @@ def roller_ladder(steps: int | None = None, l2: bool = True, sweeps: bool = True
     notes = {"case": case, "reference": ref.label, "l2_error": l2_error,
              "energy_imbalance": ref.extra.get("energy_imbalance", math.nan),
              "film_table": {k: v for k, v in ref.extra.items() if k.endswith(": film table")},
+             "film_grid_points": ref.extra.get("film grid points", {}),
              "temperatures": ref.temperatures, "nodes": ref.nodes, "losses": ref.losses}
     return records, notes
 
@@ -326,6 +351,8 @@ def roller_main(args: argparse.Namespace) -> list[dict]:
     records, notes = roller_ladder(ROLLER_QUICK_STEPS if args.quick else None,
                                    l2=not args.no_l2, sweeps=not args.no_sweeps,
                                    l2_sweep=args.l2_sweep,
+                                   film_options=ROLLER_QUICK_FILM_OPTIONS if args.quick
+                                   else None,
                                    log=lambda *a: print(*a, file=sys.stderr))
     case = notes["case"]
     if args.json:
@@ -343,9 +370,11 @@ def roller_main(args: argparse.Namespace) -> list[dict]:
         print(f"L2 did not finish: {notes['l2_error']}")
     elif args.no_l2:
         print("L2 not run (--no-l2)")
+    grids = notes["film_grid_points"]
     for k, v in notes["film_table"].items():
+        grid = grids.get(k.removesuffix(": film table"))
         print(f"L2 {k}: {v['solves']} thermal-EHL node solves ({v['solve_cpu_s']:.1f} s CPU), "
-              f"{v['queries']} table queries")
+              f"{v['queries']} table queries" + (f", grid n = {grid}" if grid else ""))
     T = notes["temperatures"] - 273.15
     print(f"reference {notes['reference']}: step-end temperatures [degC] "
           + "; ".join(f"{n} " + "/".join(f"{x:.1f}" for x in T[:, j])
