@@ -166,6 +166,11 @@ KINEMATICS_ROWS_NOTE = ("one row per step and bearing: the state solved at the s
                         "temperatures move, and the skid warnings take the worst of those "
                         "states")
 
+#: above the validity warnings of a steady run: which states they are
+STEADY_WARNINGS_NOTE = ("a steady run: the warnings and operating checks are those of each "
+                        "step's steady state; the fixed-point iterates on the way to it are "
+                        "no states the bearing runs in and are not reported")
+
 #: the sign of the measured-vs-predicted table's mean error, said under the table
 MEAN_ERROR_NOTE = ("errors are predicted - measured at the measured times: a negative mean "
                    "error is a model that runs colder than the sensor")
@@ -404,6 +409,8 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     if results.check_limits:
         limits = CheckLimits.from_dict(results.check_limits)
         parts.append(f"<p>thresholds of the operating checks: {esc(limits.describe())}</p>")
+    if "steady_temperatures" in results.tables:
+        parts.append(f"<p>{STEADY_WARNINGS_NOTE}</p>")
     if results.warnings:
         # identical bearings' identical lines once (metadata.json keeps one per bearing)
         merged = merge_twin_bearings(list(results.warnings), _bearing_names(results, scene))

@@ -118,3 +118,21 @@ def test_record_state_warnings_gives_the_state_kinematics_and_fresh_heat():
     ranges = _film_ranges(sim.warnings, b.name)
     assert "G" in ranges  # the cold state's own warnings
     assert all(w.startswith(b.name + ", step 0:") for w in sim.warnings[n:])
+
+
+def test_report_says_the_steady_warnings_are_the_steady_states(steady_cold, tmp_path):
+    """The report's validity section of a steady run says whose warnings they are; a
+    transient's does not."""
+    from thermobearing.report import STEADY_WARNINGS_NOTE, write_report
+
+    sim = _rig("steady", "-10 degC")
+    html = write_report(steady_cold, sim.scene, tmp_path / "steady.html").read_text(
+        encoding="utf-8")
+    section = html.split("id='validity-warnings'", 1)[1].split("id='model-chain'", 1)[0]
+    assert STEADY_WARNINGS_NOTE in section
+    assert "hamrock_dowson_1977_central" in section
+    transient = _rig("transient", "-10 degC", step_duration="20 s")
+    res = transient.run()
+    html = write_report(res, transient.scene, tmp_path / "transient.html").read_text(
+        encoding="utf-8")
+    assert STEADY_WARNINGS_NOTE not in html
