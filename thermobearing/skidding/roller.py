@@ -34,6 +34,7 @@ Slip (paper eqs. 39-40): s_f = 1 - n / n_m, n_m = n_i (1 - D/d_m)/2.
 from __future__ import annotations
 
 import math
+from inspect import signature
 from typing import Any
 
 import numpy as np
@@ -46,6 +47,7 @@ from ..errors import (
     check_positive,
     check_range,
 )
+from ..loads_roller import LINE_CONTACT_EXPONENT, roller_load_distribution
 from .roller_diagnostics import CageForceBalance, cage_force_balance
 from .roller_loads import _gapped, _load_distribution
 from .roller_model import (
@@ -71,6 +73,47 @@ from .roller_solvers import (  # noqa: F401
 #: ``method`` values of :func:`solve_model`
 SOLVE_METHODS = ("newton", "bracketed")
 
+#: relative force tolerance of the dry ring balance the solver calls (the ``rtol`` default of
+#: :func:`thermobearing.loads_roller.roller_load_distribution`, which
+#: :func:`~thermobearing.skidding.roller_loads._load_distribution` leaves at its default)
+RING_BALANCE_RTOL = float(signature(roller_load_distribution).parameters["rtol"].default)
+
+
+def smallest_radial_load(model: RollerModel) -> float:
+    """Smallest radial load F_min [N] the dry ring balance (``ring_support="contacts"``)
+    resolves for a bearing with clearance; 0 without clearance or on films.
+
+    :func:`~thermobearing.loads_roller.roller_load_distribution` stops when its force
+    residual is within rtol * max(F_r, 1e-6 K (P_d/2)^n, 1e-9) N (rtol =
+    :data:`RING_BALANCE_RTOL`, K the inner line-contact stiffness [N/m^n], n = 10/9). For
+    F_r <= F_min = rtol * max(1e-6 K (P_d/2)^n, 1e-9) the load itself is within that
+    tolerance: the balance returns at its start, unresolved (without body forces one roller
+    carries half the load, residual 0.5 F_r; with the centrifugal force of the rollers, which
+    holds them off the inner ring by more than the start's approach, no roller closes and
+    the cage speed is undetermined). At 1.5 F_min it iterates to a loaded roller (NU214,
+    P_d = 25 um: F_min = 6.1e-13 N, 1.5 F_min solves; 5e-27 N ended as 'did not converge
+    (residual inf): no roller touches the inner ring'). Units: N."""
+    half = 0.5 * model.diametral_clearance
+    if model.ring_support != "contacts" or half <= 0.0:
+        return 0.0
+    scale = max(1e-6 * model.k_inner * max(half, 1e-9) ** LINE_CONTACT_EXPONENT, 1e-9)
+    return RING_BALANCE_RTOL * scale
+
+
+def _check_radial_load(model: RollerModel, radial_load: float) -> None:
+    """InputError naming ``radial_load`` when it is positive and at or below
+    :func:`smallest_radial_load`: an input the model cannot take, not a solver failure.
+    A zero load keeps the solve's ConvergenceError (residual inf, 'no roller touches the
+    inner ring ... the cage speed is undetermined'), which says the same in its words."""
+    f_min = smallest_radial_load(model)
+    if 0.0 < radial_load <= f_min:  # F_r = 0: the solve's own 'no roller touches' error
+        raise InputError(
+            "radial_load", f"{radial_load:g} N",
+            f"a radial load above {f_min:.3g} N, the force resolution of the dry ring "
+            f"balance with P_d = {model.diametral_clearance * 1e6:.4g} um of clearance "
+            f"({RING_BALANCE_RTOL:g} of 1e-6 K (P_d/2)^(10/9)): below it no roller closes on "
+            "the inner ring and the cage speed is undetermined")
+
 __all__ = [
     "DEFAULT_POCKET_CLEARANCE_FRACTION",
     "RING_SUPPORT_MODELS",
@@ -85,6 +128,7 @@ __all__ = [
     "default_traction_law",
     "evaluate",
     "initial_guess",
+    "smallest_radial_load",
     "solve_model",
     "solve_roller",
 ]
@@ -136,6 +180,7 @@ def solve_model(
     """
     if method not in SOLVE_METHODS:
         raise UnknownNameError("roller skidding method", method, SOLVE_METHODS)
+    _check_radial_load(model, radial_load)
     z = model.n_rollers
     psi = (2.0 * math.pi * np.arange(z) / z) if azimuth is None else np.asarray(azimuth, float)
     if x0 is not None and np.size(x0) != z + 1:
