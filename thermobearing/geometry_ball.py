@@ -31,6 +31,7 @@ from .geometry_common import (
     ROLLER_KINDS,
     CharacteristicFrequencies,
     _cage_ratio,
+    _check_cage_between_rings,
     _check_envelope,
     _check_rings,
     _check_roughness,
@@ -164,6 +165,7 @@ class BallBearing(_ThermalClearance):
                              "0 for a deep-groove bearing (the free angle follows from the "
                              "clearance)")
         _check_rings(self)
+        _check_cage_between_rings(self)
 
     def _derive_offset(self) -> float:
         """Arc-centre offset s [m] giving the nominal free diagonal contact angle.

@@ -79,6 +79,53 @@ def _check_rings(bearing: Any) -> None:
                          f"{bearing.outer_diameter:.6g} m")
 
 
+def _cage_land(bearing: Any, side: str) -> tuple[float, str]:
+    """The diameter [m] the cage must clear on the ``side`` ("inner" | "outer") ring, and
+    what it is (for the error of :func:`_check_cage_between_rings`).
+
+    The guiding ring: the land the cage runs on (``cage.guide_land_diameter``). The other:
+    its land where the bearing gives it (a roller bearing's rib, d_i + 2 h_f or
+    d_o - 2 h_f, with ``rib_height`` given; a ball bearing's given shoulder diameter), else
+    its raceway diameter, which any land lies beyond (an estimated rib height or shoulder is
+    no ground to refuse a bearing)."""
+    cage = bearing.cage
+    if cage.guidance == f"{side}_ring":
+        return float(cage.guide_land_diameter), "cage.guide_land_diameter, the land it runs on"
+    ribbed = getattr(bearing, "ribbed_ring", None)
+    if ribbed is not None:
+        if ribbed in (side, "both") and getattr(bearing, "rib_height", None) is not None:
+            land = bearing.inner_land_diameter if side == "inner" else bearing.outer_land_diameter
+            form = "d_i + 2 h_f" if side == "inner" else "d_o - 2 h_f"
+            return float(land), (f"the {side} ribs' {'diameter' if side == 'inner' else 'bore'}"
+                                 f" {form} (bearing.ribbed_ring = {ribbed!r}, rib_height = "
+                                 f"{bearing.rib_height * 1e3:.6g} mm)")
+    else:
+        given = getattr(bearing, f"{side}_shoulder_diameter", None)
+        if given is not None:
+            return float(given), f"bearing.{side}_shoulder_diameter"
+    race = bearing.inner_raceway_diameter if side == "inner" else bearing.outer_raceway_diameter
+    return float(race), f"the {side} raceway diameter"
+
+
+def _check_cage_between_rings(bearing: Any) -> None:
+    """The cage runs between the rings clear of their lands (ribs, shoulders): its bore
+    above the inner ring's land and its outside diameter below the outer ring's
+    (:func:`_cage_land`); else an InputError naming the cage field and both diameters.
+    A cage across a land is a part that cannot be assembled (CRB_50x75x16 with
+    ``ribbed_ring = "both"``: the 66 mm cage across the 65.515 mm bore of the outer ribs)."""
+    cage = bearing.cage
+    inner, what_i = _cage_land(bearing, "inner")
+    if not cage.inner_diameter > inner:
+        raise InputError("cage.inner_diameter", f"{cage.inner_diameter * 1e3:.6g} mm",
+                         f"a bore above {inner * 1e3:.6g} mm, {what_i}: the cage would cross "
+                         "the inner ring")
+    outer, what_o = _cage_land(bearing, "outer")
+    if not cage.outer_diameter < outer:
+        raise InputError("cage.outer_diameter", f"{cage.outer_diameter * 1e3:.6g} mm",
+                         f"an outside diameter below {outer * 1e3:.6g} mm, {what_o}: the cage "
+                         "would cross the outer ring")
+
+
 def _cage_ratio(gamma: Any) -> Any:
     """Epicyclic cage/inner-ring speed ratio (1 - gamma)/2 (outer ring fixed)."""
     return 0.5 * (1.0 - gamma)

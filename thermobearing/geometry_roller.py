@@ -19,6 +19,7 @@ from .geometry_common import (
     ROLLER_KINDS,
     CharacteristicFrequencies,
     _cage_ratio,
+    _check_cage_between_rings,
     _check_envelope,
     _check_rings,
     _check_roughness,
@@ -103,6 +104,7 @@ class RollerBearing(_ThermalClearance):
             raise UnknownNameError("bearing.ribbed_ring", self.ribbed_ring,
                                    ("inner", "outer", "both"))
         _check_rings(self)
+        _check_cage_between_rings(self)
 
     contact_angle = 0.0
 

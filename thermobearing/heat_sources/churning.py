@@ -58,10 +58,12 @@ High-speed roller bearing: why element churning dominates (checked 2026-11-24)
 -------------------------------------------------------------------------------
 The CRB_50x75x16 preset of seed paper 003 (inner rib only; the operating point of
 configs/scenes/crb_rib_example.toml: jet 2 L/min, MIL-PRF-23699, 3 kN, race control; that
-scene's ``ribbed_ring = "both"`` override gives other ring and cage churning: inner ring
-205.6 W, cage 38.0 W at 30000 r/min, 80 degC) at 30000 r/min books about three quarters of its loss
-as element churning, and its total lies 50-130 % above Palmgren's M0 + M1. Term by term
-(eq. 10 per roller, tests/unit/test_losses20_churning.py):
+scene's ``ribbed_ring = "both"`` override, with the 65 mm cage that clears the outer ribs,
+gives other ring and cage churning: inner ring 205.6 W, cage 59.0 W at 30000 r/min, 80 degC;
+the 66 mm cage it had before sat across the ribs, its gap at the 0.1 mm floor, 38.0 W)
+at 30000 r/min books about three quarters of its loss as element churning, and its total
+lies 50-130 % above Palmgren's M0 + M1. Term by term (eq. 10 per roller,
+tests/unit/test_losses20_churning.py):
 
 - X = 1.46e7 * 2000^0.37 / (30000 * 62.5^1.7) % = 7.17 % (Parker; K unverified, above),
   rho_e = X rho_oil = 68.7 kg/m^3 at 80 degC;
