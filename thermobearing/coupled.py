@@ -556,9 +556,25 @@ def run_coupled(sim: Simulation, writer: ResultsWriter | None
 
                 raise InputError(f"measured.columns[{column!r}]", node,
                                  "a node of the network: " + ", ".join(net.state_nodes))
-    if sim.scene.outputs.mode == "steady":
-        return _run_steady(sim, net, writer)
-    return _run_transient(sim, net, writer)
+    import warnings
+
+    from .errors import ValidityWarning
+
+    # the network's own correlations (Churchill-Chu's Rayleigh range, Whitaker's Re / Pr
+    # range in conductances.py) warn outside the kinematics and heat evaluations, whose
+    # warnings are caught there: without this they reached Python's warning stream only,
+    # never the run's warnings and report
+    with warnings.catch_warnings(record=True) as caught:
+        try:
+            if sim.scene.outputs.mode == "steady":
+                return _run_steady(sim, net, writer)
+            return _run_transient(sim, net, writer)
+        finally:
+            for w in caught:
+                if issubclass(w.category, ValidityWarning):
+                    sim._warn(str(w.message), "network")
+                else:  # anything else goes on as it came
+                    warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
 def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
