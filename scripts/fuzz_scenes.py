@@ -380,6 +380,22 @@ def _load_shares(rng: np.random.Generator, picks: list[BearingEntry], roller_ski
     return out
 
 
+def both_ribs_override(spec: dict[str, Any]) -> dict[str, Any]:
+    """``ribbed_ring = "both"`` (NUP-type), with a cage that clears the outer ribs when the
+    preset's does not: the bearing check refuses a cage across them (CRB_50x75x16's 66 mm
+    cage across the 65.515 mm bore d_o - 2 h_f); 0.5 mm below the rib bore."""
+    from thermobearing.geometry import load_bearing
+
+    b = load_bearing(spec.get("preset") or spec["path"])
+    over: dict[str, Any] = {"ribbed_ring": "both"}
+    h = getattr(b, "rib_height", None)
+    if h is not None:
+        bore = float(b.outer_raceway_diameter) - 2.0 * float(h)
+        if b.cage.outer_diameter >= bore:
+            over["cage"] = {"outer_diameter": f"{(bore - 5e-4) * 1e3:.6g} mm"}
+    return over
+
+
 def _rib_scene(rng: np.random.Generator, picks: list[BearingEntry]
                ) -> tuple[dict[str, Any], list[dict[str, Any] | None]] | None:
     """The rib_friction source on a cylindrical roller bearing with end-face geometry,
@@ -401,7 +417,7 @@ def _rib_scene(rng: np.random.Generator, picks: list[BearingEntry]
         models["heat_source_options"] = {"rib_friction": opts}
     # the both-rib override on bearings with rib geometry; on one without it (NU214,
     # D1842926: rib_friction left out, the thrust refused or booked nowhere) rarely
-    overrides = [{"ribbed_ring": "both"} if e.ribbed_ring is not None
+    overrides = [both_ribs_override(e.spec) if e.ribbed_ring is not None
                  and rng.random() < (0.85 if e.rib_geometry else 0.15) else None
                  for e in picks]
     return models, overrides

@@ -235,7 +235,10 @@ def test_rib_heat_source_unbalance_option():
     import dataclasses
 
     ctx = _ctx(0.0)
-    nu = dataclasses.replace(ctx, bearing=dataclasses.replace(ctx.bearing, ribbed_ring="outer"))
+    # (with a cage that clears the outer ribs, as the geometry check asks)
+    outer = dataclasses.replace(ctx.bearing, ribbed_ring="outer",
+                                cage=dataclasses.replace(ctx.bearing.cage, outer_diameter=0.065))
+    nu = dataclasses.replace(ctx, bearing=outer)
     with pytest.raises(InputError, match="ribbed_ring"):
         HEAT_SOURCES.get("rib_friction")(nu)
 

@@ -176,7 +176,8 @@ FAIL_SPEED = 20000 * math.pi / 30
 
 
 def _failing_state():
-    b = load_bearing("CRB_50x75x16", {"ribbed_ring": "both"})
+    b = load_bearing("CRB_50x75x16", {"ribbed_ring": "both",
+                                     "cage": {"outer_diameter": "65 mm"}})
     lub = load_lubricant("MIL_PRF_23699")
     m = rd.build_model(b, lub, FAIL_SPEED, 3000.0, 0.06e-3, temperature=420.0,
                        coupling="none")

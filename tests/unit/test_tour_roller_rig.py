@@ -12,6 +12,9 @@ from thermobearing.report_losses import glossary, loss_class_of
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
+# both rings ribbed: the cage must then clear the outer ribs (65.515 mm bore)
+BOTH = 'overrides = { ribbed_ring = "both", cage = { outer_diameter = "65 mm" } }'
+
 
 def _losses_with_a_stop() -> pd.DataFrame:
     """A losses table as a run writes it: step 0 turning (each component classed), step 1 at
@@ -101,7 +104,7 @@ def test_an_axial_load_on_an_nu_bearing_is_refused_before_the_solve(kinematics):
 
 
 def test_an_axial_load_under_the_roller_skidding_solver_says_to_use_race_control():
-    scene = _crb_scene("CRB_50x75x16", "skidding", overrides='overrides = { ribbed_ring = "both" }')
+    scene = _crb_scene("CRB_50x75x16", "skidding", overrides=BOTH)
     with pytest.raises(InputError, match="kinematics = 'race_control'") as err:
         Simulation(loads_scene(scene), progress=False)
     assert "= '2 kN'" in str(err.value)
@@ -109,13 +112,13 @@ def test_an_axial_load_under_the_roller_skidding_solver_says_to_use_race_control
 
 def test_race_control_axial_load_without_the_rib_source_is_warned():
     scene = _crb_scene("CRB_50x75x16", "race_control",
-                       overrides='overrides = { ribbed_ring = "both" }',
+                       overrides=BOTH,
                        extra_models='heat_sources = ["raceway_traction", "churning_elements"]')
     sim = Simulation(loads_scene(scene), progress=False)
     assert any("axial load of steps 1 books no loss" in w for w in sim.warnings)
     # with the rib source named (the default set includes it) nothing is said
     ok = Simulation(loads_scene(_crb_scene("CRB_50x75x16", "race_control",
-                                           overrides='overrides = { ribbed_ring = "both" }')),
+                                           overrides=BOTH)),
                     progress=False)
     assert not any("books no loss" in w for w in ok.warnings)
     # no axial load anywhere: no check at all (NU 214, the usual radial rig)
