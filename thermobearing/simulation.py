@@ -98,6 +98,7 @@ from .simulation_chain import (
     film_kinematics_options,
     heat_source_names,
     plan_chain,
+    scene_film_options,
     scene_heat_source_options,
 )
 from .simulation_summary import summarize_scene
@@ -164,7 +165,7 @@ class Simulation:
                               if n not in self.notes)
             opts = dict(kin_options)
             opts.update(film_kinematics_options(scene.models.get("film"), b, self.lubricant,
-                                                is_ball))
+                                                is_ball, scene_film_options(scene)))
             if is_ball:
                 params, b, note = _apply_calibration(b, spec, scene)
                 rr_model, rr_reduction = ball_rolling_resistance(scene)

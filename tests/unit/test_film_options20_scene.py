@@ -158,3 +158,14 @@ def test_grid_reaches_the_table_of_the_scene_kinematics(monkeypatch):
                    supply=supply, options=opts)
     assert res.raw.converged and opts["film_model"].solves > 0
     assert made and all(kw["n"] == 256 for kw in made)
+
+
+def test_a_simulation_hands_the_scene_options_to_its_film_model():
+    from thermobearing.simulation import Simulation
+
+    sim = Simulation(_scene(film_options={"grid_points": 256, "temperature_step": "10 K"}),
+                     progress=False)
+    fm = sim.bearings[0].kin_options["film_model"]
+    assert fm.n == 256 and fm.table_options["temperature_step"] == pytest.approx(10.0)
+    default = Simulation(_scene(), progress=False).bearings[0].kin_options["film_model"]
+    assert default.n == 512 and default.table_options["temperature_step"] == pytest.approx(5.0)
