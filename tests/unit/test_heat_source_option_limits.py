@@ -76,7 +76,8 @@ def test_limits_must_name_documented_parameters():
 
 
 @pytest.mark.parametrize("option, field, interval", [
-    ('churning_cage = { gap = "-1 mm" }', "churning_cage.gap", "(0, inf)"),
+    ('churning_cage = { gap = "-1 mm" }', "churning_cage.gap", "[1e-06, inf)"),
+    ('churning_cage = { gap = "1e-30 mm" }', "churning_cage.gap", "[1e-06, inf)"),
     ('churning_inner_ring = { shoulder_length = "-5 mm" }',
      "churning_inner_ring.shoulder_length", "[0, inf)"),
     ('churning_elements = { oil_fraction = 1.5 }', "churning_elements.oil_fraction", "[0, 1]"),

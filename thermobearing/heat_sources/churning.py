@@ -479,7 +479,7 @@ def _finite_power(ctx: HeatContext, source: str, power: float) -> float:
     "churning_cage",
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
     parameters={"oil_fraction": "-", "gap": "m", "parker_constant": "-"},
-    limits={"oil_fraction": "[0, 1]", "gap": "(0, inf)", "parker_constant": "(0, inf)"},
+    limits={"oil_fraction": "[0, 1]", "gap": "[1e-06, inf)", "parker_constant": "(0, inf)"},
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_cage(ctx: HeatContext) -> HeatResult:
@@ -521,7 +521,7 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     references=["gao2022_overskidding", "parker1984_tp2275"],
     parameters={"oil_fraction": "-", "gap": "m", "raceway_arc_length": "m",
                 "shoulder_length": "m", "parker_constant": "-"},
-    limits={"oil_fraction": "[0, 1]", "gap": "(0, inf)", "raceway_arc_length": "[0, inf)",
+    limits={"oil_fraction": "[0, 1]", "gap": "[1e-06, inf)", "raceway_arc_length": "[0, inf)",
             "shoulder_length": "[0, inf)", "parker_constant": "(0, inf)"},
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
@@ -577,7 +577,7 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
     references=["gao2022_overskidding", "parker1984_tp2275", "harris_kotzalas2007"],
     parameters={"drag_coefficient": "-", "oil_fraction": "-", "gap": "m", "oil_swirl": "-",
                 "parker_constant": "-"},
-    limits={"drag_coefficient": "(0, 10)", "oil_fraction": "[0, 1]", "gap": "(0, inf)",
+    limits={"drag_coefficient": "(0, 10)", "oil_fraction": "[0, 1]", "gap": "[1e-06, inf)",
             "oil_swirl": "[0, 1]", "parker_constant": "(0, inf)"},
     validity="sphere/cylinder drag plateau (1e3 < Re < 2e5 for c_d = 0.45)",
 )
