@@ -1,6 +1,11 @@
-"""Fixtures shared by the unit tests: the paper 000 NU214 bearing and its oil."""
+"""Fixtures shared by the unit tests: the paper 000 NU214 bearing and its oil, and the
+scene fuzzer's generator (``scripts/fuzz_scenes.py``) as a module."""
 
 from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
 
 import pytest
 
@@ -18,3 +23,15 @@ def nu214():
 def oil():
     """PAPER000_OIL preset (paper 000 Table 1)."""
     return load_lubricant("PAPER000_OIL")
+
+
+@pytest.fixture(scope="session")
+def fuzz():
+    """``scripts/fuzz_scenes.py`` loaded as the module ``fuzz_scenes`` (registered before it
+    runs: its dataclasses look their module up)."""
+    path = Path(__file__).resolve().parents[2] / "scripts" / "fuzz_scenes.py"
+    spec = importlib.util.spec_from_file_location("fuzz_scenes", path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules.setdefault("fuzz_scenes", module)
+    spec.loader.exec_module(module)
+    return module

@@ -1,7 +1,7 @@
 """Churning options beyond physical sense (session 20 fuzzer): the inner-ring source's
 ``raceway_arc_length`` and ``shoulder_length`` are bounded by the ring width (5e300 mm
-gave 'total loss per bearing: inf W' with no error), the ``gap`` options have a 1 um floor
-that the sources check at their first evaluation, naming the option (1e-300 mm was refused
+gave 'total loss per bearing: inf W' with no error), the ``gap`` options have a 1 um floor,
+refused when the scene is built (and by the source itself), naming the option (1e-300 mm was refused
 only as 'power_by_role[oil] = inf', which named no option; 1e-30 mm ended in a transient as
 a stepper non-convergence), and a churning power that overflows is refused naming the
 options given."""
@@ -12,42 +12,19 @@ import math
 from types import SimpleNamespace
 
 import pytest
+from probe_scene import probe_scene
 
 from thermobearing.errors import InputError
 from thermobearing.heat_sources import churning
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "bounds 20 churning probe"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG68"
-[supply]
-method = "jet"
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "30 degC"
-[schedule]
-speed = "3000 rpm"
-radial_load = "1000 N"
-axial_load = "200 N"
-step_duration = "2 min"
-[models]
-kinematics = "race_control"
-heat_sources = ["{source}"]
-heat_source_options = {{ {source} = {{ {options} }} }}
-[outputs]
-mode = "{mode}"
-want = ["losses"]
-"""
-
 
 def _run(source: str, options: str, mode: str = "steady"):
-    return Simulation(loads_scene(SCENE.format(source=source, options=options, mode=mode)),
+    models = (f'kinematics = "race_control"\nheat_sources = ["{source}"]\n'
+              f'heat_source_options = {{ {source} = {{ {options} }} }}')
+    return Simulation(loads_scene(probe_scene(title="bounds 20 churning probe",
+                                              models=models, mode=mode)),
                       progress=False).run()
 
 

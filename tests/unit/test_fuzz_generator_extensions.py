@@ -8,11 +8,8 @@ result check. No model is solved."""
 from __future__ import annotations
 
 import collections
-import importlib.util
-import sys
 import tomllib
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -20,18 +17,6 @@ import pytest
 
 from thermobearing.lubricant import load_lubricant
 from thermobearing.scene import dumps_toml, loads_scene
-
-ROOT = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(scope="module")
-def fuzz():
-    spec = importlib.util.spec_from_file_location("fuzz_scenes",
-                                                  ROOT / "scripts" / "fuzz_scenes.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("fuzz_scenes", module)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_new_draws_appear_and_load(fuzz, tmp_path):

@@ -7,9 +7,7 @@ No model is solved."""
 from __future__ import annotations
 
 import collections
-import importlib.util
 import math
-import sys
 import warnings
 from pathlib import Path
 
@@ -22,16 +20,6 @@ from thermobearing.scene import dumps_toml, loads_scene
 from thermobearing.signal_input import load_acceleration
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(scope="module")
-def fuzz():
-    spec = importlib.util.spec_from_file_location("fuzz_scenes",
-                                                  ROOT / "scripts" / "fuzz_scenes.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("fuzz_scenes", module)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_edge_steps_are_refused_naming_the_step_field(fuzz):

@@ -7,14 +7,8 @@ scaled by 1e-6..1e6). No model is solved."""
 from __future__ import annotations
 
 import collections
-import importlib.util
-import sys
-from pathlib import Path
 
 import numpy as np
-import pytest
-
-ROOT = Path(__file__).resolve().parents[2]
 
 DOC = {"title": "t", "bearings": [{"name": "a", "preset": "SKF6304"}],
        "lubricant": {"preset": "ISO_VG32"},
@@ -25,16 +19,6 @@ DOC = {"title": "t", "bearings": [{"name": "a", "preset": "SKF6304"}],
        "models": {"kinematics": "race_control",
                   "heat_sources": ["raceway_traction", "churning_cage"]},
        "outputs": {"mode": "steady", "want": ["losses"]}}
-
-
-@pytest.fixture(scope="module")
-def fuzz():
-    spec = importlib.util.spec_from_file_location("fuzz_scenes",
-                                                  ROOT / "scripts" / "fuzz_scenes.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("fuzz_scenes", module)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_number_typos(fuzz):

@@ -5,17 +5,11 @@ is solved beyond the checks."""
 
 from __future__ import annotations
 
-import importlib.util
 import re
-import sys
-from pathlib import Path
 
 import numpy as np
-import pytest
 
 from thermobearing.scene import dumps_toml, loads_scene
-
-ROOT = Path(__file__).resolve().parents[2]
 
 DOC = {"title": "t", "bearings": [{"name": "a", "preset": "SKF6304"}],
        "lubricant": {"preset": "ISO_VG32"},
@@ -26,16 +20,6 @@ DOC = {"title": "t", "bearings": [{"name": "a", "preset": "SKF6304"}],
        "models": {"kinematics": "race_control",
                   "heat_sources": ["raceway_traction", "churning_cage"]},
        "outputs": {"mode": "steady", "want": ["losses"]}}
-
-
-@pytest.fixture(scope="module")
-def fuzz():
-    spec = importlib.util.spec_from_file_location("fuzz_scenes",
-                                                  ROOT / "scripts" / "fuzz_scenes.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("fuzz_scenes", module)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_extreme_mutations_scale_by_the_extreme_factors(fuzz):

@@ -5,26 +5,13 @@ the same scene (``Scene.to_toml``). No model is solved."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from thermobearing.scene import dumps_toml, loads_scene
 
 ROOT = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(scope="module")
-def fuzz():
-    spec = importlib.util.spec_from_file_location("fuzz_scenes",
-                                                  ROOT / "scripts" / "fuzz_scenes.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules.setdefault("fuzz_scenes", module)
-    spec.loader.exec_module(module)
-    return module
 
 
 def _scenes(fuzz, tmp_path, seed: int, n: int):

@@ -5,52 +5,32 @@ Churchill-Chu's 1e12."""
 from __future__ import annotations
 
 import pytest
+from probe_scene import probe_scene
 
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "network warning probe"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG68"
-[supply]
-method = "jet"
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "20 degC"
-initial_temperature = "90 degC"
-[schedule]
-speed = "3000 rpm"
-radial_load = "1000 N"
-axial_load = "0 N"
-step_duration = "2 min"
-[models]
-kinematics = "race_control"
-[network]
-template = "four_node_paper002"
-parameters = {{ housing_outer_diameter = "{diameter}", housing_length = "140 mm" }}
-[outputs]
-mode = "{mode}"
-want = ["temperatures", "losses"]
-"""
+
+def _scene(diameter: str, mode: str, ambient: str = "20 degC") -> str:
+    return probe_scene(
+        title="network warning probe",
+        environment=f'ambient_temperature = "{ambient}"\ninitial_temperature = "90 degC"',
+        axial='axial_load = "0 N"',
+        network=('[network]\ntemplate = "four_node_paper002"\nparameters = { '
+                 f'housing_outer_diameter = "{diameter}", housing_length = "140 mm" }}'),
+        mode=mode, want='["temperatures", "losses"]')
 
 
 @pytest.mark.parametrize("mode", ["transient", "steady"])
 def test_a_network_correlation_out_of_range_is_a_run_warning(mode: str) -> None:
-    text = SCENE.format(diameter="8 m", mode=mode)
-    if mode == "steady":  # steady runs start from the ambient: keep the housing hot enough
-        text = text.replace('ambient_temperature = "20 degC"',
-                            'ambient_temperature = "-40 degC"')
+    # steady runs start from the ambient: a cold ambient keeps the housing hot enough
+    text = _scene("8 m", mode, "-40 degC" if mode == "steady" else "20 degC")
     results = Simulation(loads_scene(text), progress=False).run()
     lines = [w for w in results.warnings if "Churchill-Chu" in w]
     assert len(lines) == 1 and lines[0].startswith("network: Ra = ")
 
 
 def test_no_network_warning_inside_the_range() -> None:
-    results = Simulation(loads_scene(SCENE.format(diameter="510 mm", mode="transient")),
+    results = Simulation(loads_scene(_scene("510 mm", "transient")),
                          progress=False).run()
     assert not [w for w in results.warnings if w.startswith("network:")]

@@ -4,37 +4,17 @@ solves the first one (preflight), with the source's own error text."""
 from __future__ import annotations
 
 import pytest
+from probe_scene import probe_scene
 
 from thermobearing.commands._preflight import preflight
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "preflight probe"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG68"
-[supply]
-method = "jet"
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "30 degC"
-[schedule]
-speed = "3000 rpm"
-radial_load = "1000 N"
-axial_load_steps = { start = "0 N", stop = "200 N", step = "100 N" }
-step_duration = "2 min"
-[models]
-kinematics = "none"
-heat_sources = ["global_friction"]
-[outputs]
-mode = "steady"
-want = ["losses"]
-"""
+SCENE = probe_scene(
+    title="preflight probe",
+    axial='axial_load_steps = { start = "0 N", stop = "200 N", step = "100 N" }',
+    models='kinematics = "none"\nheat_sources = ["global_friction"]')
 
 
 def test_preflight_refuses_c0_missing_at_a_later_step_with_the_runs_text() -> None:
