@@ -1,5 +1,6 @@
 """Fixtures shared by the unit tests: the paper 000 NU214 bearing and its oil, and the
-scene fuzzer's generator (``scripts/fuzz_scenes.py``) as a module."""
+scene fuzzer's generator (``scripts/fuzz_scenes.py``) and the BM-7 benchmark script as
+modules."""
 
 from __future__ import annotations
 
@@ -33,5 +34,19 @@ def fuzz():
     spec = importlib.util.spec_from_file_location("fuzz_scenes", path)
     module = importlib.util.module_from_spec(spec)
     sys.modules.setdefault("fuzz_scenes", module)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="session")
+def bm7():
+    """``benchmarks/bm7_fidelity_ladder.py`` loaded as a module; ``benchmarks/`` goes on
+    ``sys.path`` first (the script, and tests, import its sibling ``_protocol``)."""
+    bench = Path(__file__).resolve().parents[2] / "benchmarks"
+    if str(bench) not in sys.path:
+        sys.path.insert(0, str(bench))
+    spec = importlib.util.spec_from_file_location("bm7_fidelity_ladder",
+                                                  bench / "bm7_fidelity_ladder.py")
+    module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

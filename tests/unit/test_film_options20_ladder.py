@@ -4,31 +4,14 @@ thermal solve is the closed-form stand-in of ``tehl_stand_in``: plumbing, not ph
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 from tehl_stand_in import CheapTable
 
 from thermobearing.ehl import coupling
 from thermobearing.lubricant import load_lubricant
 from thermobearing.simulation_chain import plan_chain, scene_film_options
 
-BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 
-
-def _bm7():
-    if str(BENCH) not in sys.path:
-        sys.path.insert(0, str(BENCH))  # the script imports its sibling _protocol
-    spec = importlib.util.spec_from_file_location("bm7_fidelity_ladder",
-                                                  BENCH / "bm7_fidelity_ladder.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def test_quick_film_options_are_a_valid_scene_table():
-    bm7 = _bm7()
+def test_quick_film_options_are_a_valid_scene_table(bm7):
     from _protocol import roller_scene, with_models
 
     scene = with_models(roller_scene(1), film="numerical_tehl",
@@ -39,9 +22,8 @@ def test_quick_film_options_are_a_valid_scene_table():
     assert scene_film_options(scene) == {"n": 256, "temperature_step": 10.0}
 
 
-def test_protocol_records_the_film_grid_of_l2(monkeypatch):
+def test_protocol_records_the_film_grid_of_l2(monkeypatch, bm7):
     monkeypatch.setattr(coupling, "FilmTable", CheapTable)
-    _bm7()
     from _protocol import roller_scene, run_l1, with_models
 
     scene = with_models(roller_scene(1), film="numerical_tehl")

@@ -4,32 +4,18 @@ numerical-EHL level (L2, minutes of CPU; the slow test runs it on one step)."""
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import pytest
 
-BENCH = Path(__file__).resolve().parents[2] / "benchmarks"
 FIELDS = {"benchmark", "case", "method", "level", "setting", "sweep", "reference", "time_s",
           "cpu_s", "max_error_K", "error", "worst", "kinematics_solves", "film_table_solves",
           "film_table_cpu_s", "ratio_vs_anchor"}
 
 
-def _bm7():
-    if str(BENCH) not in sys.path:
-        sys.path.insert(0, str(BENCH))  # the script imports its sibling _protocol
-    spec = importlib.util.spec_from_file_location("bm7_fidelity_ladder",
-                                                  BENCH / "bm7_fidelity_ladder.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
 @pytest.fixture(scope="module")
-def no_l2():
-    return _bm7().roller_ladder(steps=1, l2=False, sweeps=False, warm_up=False)
+def no_l2(bm7):
+    return bm7.roller_ladder(steps=1, l2=False, sweeps=False, warm_up=False)
 
 
 def test_records_have_the_fields_and_the_reference_is_exact(no_l2):
@@ -72,11 +58,10 @@ def test_levels_differ_and_only_l1_solves_kinematics(no_l2):
     assert (notes["losses"] > 0.0).all()
 
 
-def test_roller_scene_steps_are_checked():
-    from thermobearing.errors import InputError
-
-    sys.path.insert(0, str(BENCH))
+def test_roller_scene_steps_are_checked(bm7):
     from _protocol import roller_scene
+
+    from thermobearing.errors import InputError
 
     assert len(roller_scene(2).schedule.steps) == 2
     with pytest.raises(InputError, match="steps"):
@@ -84,8 +69,8 @@ def test_roller_scene_steps_are_checked():
 
 
 @pytest.mark.slow
-def test_l2_is_the_reference_and_fills_its_film_table():
-    records, notes = _bm7().roller_ladder(steps=1, l2=True, sweeps=False)
+def test_l2_is_the_reference_and_fills_its_film_table(bm7):
+    records, notes = bm7.roller_ladder(steps=1, l2=True, sweeps=False)
     assert notes["l2_error"] == ""
     l2 = [r for r in records if r["level"] == "L2"]
     assert len(l2) == 1
