@@ -95,11 +95,12 @@ def test_roller_solver_bad_operating_point(nu214, oil, speed, radial, temperatur
     assert info.value.field == field
 
 
-def test_roller_no_load_fails_with_residual_not_nan(nu214, oil):
-    with pytest.raises(ConvergenceError) as info:
+def test_roller_no_load_is_refused_naming_the_loads(nu214, oil):
+    # before: ConvergenceError 'no roller touches the inner ring' (residual inf) from the solve
+    with pytest.raises(InputError) as info:
         skidding.solve(nu214, oil, 500.0, 0.0, 0.0, 330.0)
-    assert info.value.residual == math.inf and "no roller touches" in str(info.value)
-    assert info.value.state == {"radial_load": 0.0, "inner_speed": 500.0}
+    assert info.value.field == "radial_load and axial_load"
+    assert "radial load > 0 N" in str(info.value) and "ribbed bearing" in str(info.value)
 
 
 @pytest.mark.parametrize(("options", "field"), [

@@ -293,10 +293,12 @@ def test_roller_solve_grid_and_warm_start(name, rpm, fr, t_c):
 
 
 @pytest.mark.parametrize("name", sorted(ROLLER))
-def test_roller_zero_load_is_a_clear_convergence_error(name):
-    with pytest.raises(ConvergenceError, match="no roller touches the inner ring") as info:
+def test_roller_zero_load_is_a_clear_input_error(name):
+    from thermobearing.errors import InputError
+
+    with pytest.raises(InputError, match="none touches the inner ring") as info:
         _roller_solve(name, 1000.0, 0.0, 40.0)
-    assert info.value.residual == math.inf
+    assert info.value.field == "radial_load and axial_load"
 
 
 @pytest.mark.slow

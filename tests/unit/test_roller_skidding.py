@@ -273,9 +273,10 @@ def test_starvation_reduces_drag_and_slip(nu214, oil, state150):
 
 def test_no_inner_contact_is_a_clear_error(nu214, oil):
     # F_r = 0 with clearance: every roller rides on the outer race only; paper 000's model
-    # then has no drive at all -> a ConvergenceError that says so, never NaN
-    with pytest.raises(ConvergenceError, match="no roller touches the inner ring"):
+    # then has no drive at all -> an InputError naming the loads before any solve, never NaN
+    with pytest.raises(InputError, match="none touches the inner ring") as info:
         solve_roller(nu214, oil, OMEGA, 0.0, 0.0, T)
+    assert info.value.field == "radial_load and axial_load"
 
 
 @pytest.mark.slow

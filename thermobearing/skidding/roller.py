@@ -101,12 +101,27 @@ def smallest_radial_load(model: RollerModel) -> float:
 
 
 def _check_radial_load(model: RollerModel, radial_load: float) -> None:
-    """InputError naming ``radial_load`` when it is positive and at or below
-    :func:`smallest_radial_load`: an input the model cannot take, not a solver failure.
-    A zero load keeps the solve's ConvergenceError (residual inf, 'no roller touches the
-    inner ring ... the cage speed is undetermined'), which says the same in its words."""
+    """InputError naming the load before any solve when the dry ring balance
+    (``ring_support="contacts"``) cannot put a roller on the inner ring: an input the model
+    cannot take, not a solver failure.
+
+    - F_r = 0 (this solver takes no axial load, so the bearing is unloaded): the centrifugal
+      force holds every roller on the outer ring, none touches the inner ring, the model has
+      no traction to drive the cage and the cage speed is undetermined (before: the solve's
+      ConvergenceError 'no roller touches the inner ring', residual inf, with or without
+      clearance). The film-supported ring (``ring_support="films"``) carries the rollers on
+      its clearance films and solves at 0 N, so it is left alone.
+    - 0 < F_r <= :func:`smallest_radial_load`: below the force resolution of the balance."""
+    if radial_load == 0.0 and model.ring_support == "contacts":
+        raise InputError(
+            "radial_load and axial_load", "0 N and 0 N",
+            "a radial load > 0 N: unloaded, the centrifugal force holds every roller on the "
+            "outer ring, none touches the inner ring and the roller skidding solver (paper "
+            "000, ring_support 'contacts') has no traction to drive the cage; an axial load "
+            "is carried by the ribs of a ribbed bearing, which this solver does not model "
+            "(axial_load = 0 only; thermobearing.rib books the rib contact)")
     f_min = smallest_radial_load(model)
-    if 0.0 < radial_load <= f_min:  # F_r = 0: the solve's own 'no roller touches' error
+    if 0.0 < radial_load <= f_min:
         raise InputError(
             "radial_load", f"{radial_load:g} N",
             f"a radial load above {f_min:.3g} N, the force resolution of the dry ring "
