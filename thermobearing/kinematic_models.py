@@ -30,7 +30,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -157,6 +157,41 @@ def standstill(bearing: Any, operating: OperatingPoint) -> KinematicsResult:
 KINEMATICS: Registry[Any] = Registry(
     "kinematics", "element and cage speeds: race control or the skidding solver")
 
+#: Drag models whose film is an interpolation table filled as the solve asks for nodes
+#: (``"numerical_tehl"``, registered by :mod:`thermobearing.ehl.coupling`): each registers
+#: here, under its ``ROLLER_DRAG`` name, the driver that runs the skidding solve with it.
+#: A driver has the signature of :func:`thermobearing.skidding.solve` without
+#: ``drag_model`` (it sets its own); the ``skidding`` kinematics hands the solve to it
+#: whenever the options name its drag model, so that a new table-backed film needs no
+#: edit here.
+TABLE_FILM_DRIVERS: Registry[Callable[..., Any]] = Registry(
+    "table_film_driver", "skidding solves of the drag models on a tabulated numerical film")
+
+
+#: packages whose import registers numerical drag models (and their table-film drivers):
+#: imported when a drag model is named that no imported module has registered yet
+DRAG_MODEL_PROVIDERS = ("thermobearing.ehl",)
+
+
+def table_film_driver(drag_model: Any) -> Callable[..., Any] | None:
+    """The driver registered in :data:`TABLE_FILM_DRIVERS` for ``drag_model``, or None
+    (no drag model named, or one that the plain :func:`thermobearing.skidding.solve`
+    runs). A name no roller drag model has registered yet imports
+    :data:`DRAG_MODEL_PROVIDERS` first (a scene imports them when it names its film; a
+    direct call may not have)."""
+    if not isinstance(drag_model, str):
+        return None
+    from .skidding.roller_fluid import ROLLER_DRAG
+
+    if drag_model not in ROLLER_DRAG:
+        import importlib
+
+        for module in DRAG_MODEL_PROVIDERS:
+            importlib.import_module(module)
+    if drag_model in TABLE_FILM_DRIVERS:
+        return TABLE_FILM_DRIVERS.get(drag_model)
+    return None
+
 
 @KINEMATICS.register(
     "race_control",
@@ -196,7 +231,9 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
              contact_temperature: float, oil_temperature: float, supply: OilSupply,
              guess: KinematicsResult | None = None, options: Mapping[str, Any] | None = None
              ) -> KinematicsResult:
-    """The skidding solver (``skidding.solve``), warm-started from ``guess``."""
+    """The skidding solver (``skidding.solve``), warm-started from ``guess``; with a
+    table-backed drag model in ``options`` (:data:`TABLE_FILM_DRIVERS`) that model's
+    driver runs the solve instead."""
     if at_rest(operating):
         return standstill(bearing, operating)
     from .skidding import solve
@@ -204,21 +241,14 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
     opts = dict(options or {})
     params = opts.pop("params", None)
     raw_guess = guess.raw if guess is not None else None
-    if opts.get("drag_model") == "numerical_tehl":
-        # the thermal-EHL table is filled only around the converged state (the plain solve
-        # asks for the nodes of every Newton iterate: 342 against 48 on D1842926 at 24 kN)
-        from .ehl.coupling import solve_roller_tehl
-
+    run = solve
+    driver = table_film_driver(opts.get("drag_model"))
+    if driver is not None:  # a table-backed film: its driver solves (it sets the drag model)
         opts.pop("drag_model")
-        res = solve_roller_tehl(bearing, lubricant, operating.inner_speed,
-                                operating.radial_load, operating.axial_load,
-                                contact_temperature, film_model=opts.pop("film_model", None),
-                                supply=supply, params=params, guess=raw_guess,
-                                oil_temperature=oil_temperature, **opts)
-    else:
-        res = solve(bearing, lubricant, operating.inner_speed, operating.radial_load,
-                    operating.axial_load, contact_temperature, supply=supply, params=params,
-                    guess=raw_guess, oil_temperature=oil_temperature, **opts)
+        run = driver
+    res = run(bearing, lubricant, operating.inner_speed, operating.radial_load,
+              operating.axial_load, contact_temperature, supply=supply, params=params,
+              guess=raw_guess, oil_temperature=oil_temperature, **opts)
     heat_options = (_ball_heat_options(bearing, supply, operating.inner_speed, params)
                     if hasattr(bearing, "ball_diameter") else {})
     if hasattr(bearing, "ball_diameter") and res.converged:
