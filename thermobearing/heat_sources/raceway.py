@@ -67,10 +67,34 @@
     of the ellipse (an extrapolation, flagged by a ValidityWarning; "harris" avoids it).
     Both line forms are isothermal and fully flooded: at high speed inlet shear heating and
     starvation thin the film, and since the inlet force scales with the film (F_P ~ h_c /
-    alpha) the rolling force too; option ``thermal_reduction`` multiplies Q_x by a film
-    thermal-reduction factor phi_T from ``film.THERMAL_FILM`` ("none" by default,
-    "gupta_1992", "wilson_sheu_1983"). The cross-check case shows the isothermal value
-    against the SKF rolling term.
+    alpha) the rolling force too (SKF: the inlet's reverse flow "lowers the oil viscosity
+    and reduces the film thickness and rolling friction", its phi_ish; Goksem & Hargreaves
+    1978 computed the same fall of the rolling traction of a thermal EHL line contact --
+    recalled, their numbers not re-read here). Option ``thermal_reduction`` (a
+    ``film.THERMAL_FILM`` name: "none", the default ``DEFAULT_THERMAL_REDUCTION``,
+    "gupta_1992", "wilson_sheu_1983") takes the film factor phi_T as an effective inlet
+    viscosity: Dowson-Higginson's film and eq. 35's force both go as (eta0 u)^0.7, so
+    h(eta_T) = phi_T h(eta0) gives eta_T = eta0 phi_T^(1/0.7); both closed forms are
+    evaluated at eta_T, which multiplies eq. 35 by phi_T and Martin's rigid-isoviscous force
+    (~ eta0^0.5) by phi_T^(5/7) (until 2026-11-24 both were multiplied by phi_T; the
+    ball-contact module :mod:`thermobearing.rolling_resistance` reads phi_T the same way with
+    Hamrock-Dowson's exponent 0.67). The inlet viscosity reading is this module's
+    assumption: Gupta's fit is for the film of an EHL contact, and it is applied to the
+    rigid (centrifugally seated) contacts through the same effective viscosity. phi_T of the
+    no-load reference contact is taken at its own Hertz pressure. Not applied to the forces
+    a skidding state carries (the solver balanced the isothermal ones).
+
+    Thermal reduction against the SKF model (measured 2026-11-24; NU 214, ISO VG 46 at
+    50 degC, 10 kN, jet, race control, validation case crosscheck_global_friction): Gupta
+    phi_T takes the rolling power from 49.7 / 167.9 / 591.6 / 1268.3 / 2206.0 / 3397.7 W to
+    47.7 / 153.5 / 488.6 / 947.5 / 1496.7 / 2101.1 W at 1000 / 2000 / 4000 / 6000 / 8000 /
+    10000 r/min, i.e. by 0.959 / 0.914 / 0.826 / 0.747 / 0.678 / 0.618, beside SKF's own
+    inlet-shear factor phi_ish 0.962 / 0.913 / 0.811 / 0.719 / 0.639 / 0.571 (thermal loading
+    L = beta eta0 u^2 / k_f of the inner contact 0.05-5.0, inside Gupta's range). What stays
+    above SKF's rolling term (788 W at 8000 r/min) is mostly the no-load share, the
+    centrifugally seated rollers' fully flooded rigid film (1141 -> 864 W at 8000 r/min),
+    and SKF's replenishment factor phi_rs (0.74 there), which no local source models for a
+    race-control roller state.
 
     Gap to the SKF model (measured, session 17; NU 214, ISO VG 46 at 50 degC, 8 kN, race
     control, per contact and per raceway: the inner race's loaded rollers, the outer race's
@@ -81,12 +105,14 @@
     1.30 / 1.92 / 3.06). Against SKF's term without its inlet-shear and replenishment factors
     (55.8 / 323.9 / 981.7 W) the ratios are 0.77 / 0.99 / 1.24: the gap that remains at speed
     is what this source leaves out by default, inlet shear heating (``thermal_reduction``:
-    Gupta phi_T brings 1214 to 883 W at 6000 r/min) and starvation, and the fully flooded
+    Gupta phi_T brings 1214 to 908 W at 6000 r/min; 883 W when it multiplied both
+    closed forms) and starvation, and the fully flooded
     rigid-isoviscous film of the centrifugally loaded rollers (4.6 / 70.9 / 401.3 W of the
     totals above), which SKF's G_rr ~ F_r^0.31 does not have. Nothing is tuned to SKF.
     At high speed the gap widens: CRB 50x75x16, 30000 r/min, 3 kN, MIL-PRF-23699 at
     80 degC, race control (session 20): 2831 W, of which 1980 W at the 24 outer contacts
-    the centrifugal force alone seats (F_c = 83.7 N each), 1835 W with Gupta's phi_T,
+    the centrifugal force alone seats (F_c = 83.7 N each), 1963 W with Gupta's phi_T
+    (1484 W of it at those 24 contacts; 1835 W when phi_T multiplied both closed forms),
     against SKF's rolling term 651 W (1503 W without phi_ish phi_rs = 0.575 x 0.753).
 
     Loss class (load-dependent / load-independent, :mod:`thermobearing.losses`): Palmgren's
@@ -375,10 +401,16 @@ def rolling_force_rigid_isoviscous(sum_speed, viscosity, load, reduced_radius_x,
 
 
 ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
+#: exponent of eta0 u in Dowson-Higginson's film and in eq. 35's force (h, Q_x ~ (eta0 u)^0.7):
+#: a film factor phi_T is the inlet viscosity factor phi_T^(1/0.7) (module docstring)
+DH_VISCOSITY_EXPONENT = 0.7
+#: ``thermal_reduction`` of the line-contact models when the options name none
+DEFAULT_THERMAL_REDUCTION = "none"
 
 
-def _thermal_factor(model, ctx, cs, temp, eta):
-    """Film thermal-reduction factor phi_T of ``film.THERMAL_FILM[model]`` per contact [-]."""
+def _thermal_factor(model, ctx, cs, temp, eta, max_pressure):
+    """Film thermal-reduction factor phi_T of ``film.THERMAL_FILM[model]`` per contact [-]
+    at the Hertz pressure ``max_pressure`` [Pa] (the contact's, or its no-load contact's)."""
     from ..film import THERMAL_FILM
 
     lub = ctx.lubricant
@@ -388,7 +420,7 @@ def _thermal_factor(model, ctx, cs, temp, eta):
     phi = THERMAL_FILM.get(model)(
         entrainment_speed=cs.entrainment_speed, dynamic_viscosity=eta,
         temperature_viscosity_coefficient=beta, thermal_conductivity=k_oil,
-        slide_to_roll=cs.slide_to_roll, max_pressure=cs.max_pressure,
+        slide_to_roll=cs.slide_to_roll, max_pressure=max_pressure,
         effective_modulus=ctx.bearing.effective_modulus)
     return np.asarray(phi, float)
 
@@ -412,8 +444,10 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     temperature (contact set's, else the mean of element and ring nodes). Loaded contacts
     only (Q > 0). Needs ``reduced_radius_x`` in the contact sets, else it is computed from
     ``bearing.curvature(race, contact_angle)``. Option ``thermal_reduction``: a
-    ``film.THERMAL_FILM`` name (default "none"); the temperature-viscosity coefficient it needs
-    is -d ln(eta)/dT of the lubricant by a central difference (+-0.5 K).
+    ``film.THERMAL_FILM`` name (default ``DEFAULT_THERMAL_REDUCTION`` for the line models,
+    "none" for "harris", which reduces through its option ``reduction``), applied as the
+    inlet viscosity eta0 phi_T^(1/0.7) (module docstring); the temperature-viscosity
+    coefficient it needs is -d ln(eta)/dT of the lubricant by a central difference (+-0.5 K).
 
     Each raceway's power is split into its no-load part (load-independent, Palmgren's M0
     sense) and the rest (load-dependent, M1) by :func:`no_load_contact_loads` (module
@@ -421,14 +455,16 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     resistance, load"; the sum is the raceway's rolling-resistance power.
     """
     name = "ehl_rolling_resistance"
-    thermal = str(ctx.option(name, "thermal_reduction", "none"))
     from ..film import THERMAL_FILM
 
-    THERMAL_FILM.entry(thermal)  # unknown names raise, listing the known ones
     model = str(ctx.option(name, "rolling_force", "regime_min"))
     if model not in ROLLING_FORCE_MODELS + ("harris",):
         raise UnknownNameError(f"options[{name}].rolling_force", model,
                                ROLLING_FORCE_MODELS + ("harris",))
+    # "harris" takes its reductions through the option ``reduction``
+    thermal = str(ctx.option(name, "thermal_reduction",
+                             "none" if model == "harris" else DEFAULT_THERMAL_REDUCTION))
+    THERMAL_FILM.entry(thermal)  # unknown names raise, listing the known ones
     point = _point_contact_forces(ctx, name, model, thermal)
     carried = _carried_rolling_forces(ctx, name)
     bearing = ctx.bearing
@@ -456,6 +492,18 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
         u_r = cs.entrainment_speed - 0.5 * cs.sliding_speed
         usum = np.abs(u_e) + np.abs(u_r)
         q = np.asarray(cs.normal_load, float)
+        own_force = carried is not None and cs.race in carried
+        ratio = np.divide(q0, q, out=np.zeros_like(q), where=q > 0)
+        eta_load = eta_no_load = eta
+        if thermal != "none" and point is None and not own_force:
+            # inlet shear heating as an effective inlet viscosity eta0 phi_T^(1/0.7) (module
+            # docstring); the no-load contact's phi_T at its own Hertz pressure (line contact
+            # p_h ~ Q^(1/2), ellipse Q^(1/3)), so the no-load share does not move with the load
+            p_h = np.asarray(cs.max_pressure, float) * np.ones(cs.n_elements)
+            p_h0 = p_h * (np.sqrt(ratio) if cs.kind == "line" else np.cbrt(ratio))
+            inv = 1.0 / DH_VISCOSITY_EXPONENT
+            eta_load = eta * _thermal_factor(thermal, ctx, cs, temp, eta, p_h) ** inv
+            eta_no_load = eta * _thermal_factor(thermal, ctx, cs, temp, eta, p_h0) ** inv
         if point is not None:
             length = None
         elif cs.kind == "line":
@@ -476,7 +524,7 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             q_ri = rolling_force_rigid_isoviscous(_u, _eta, load, _rx, chord)
             return q_ri if _m == "rigid_isoviscous" else np.minimum(q_dh, q_ri)
 
-        if carried is not None and cs.race in carried:
+        if own_force:
             # the skidding solver's own rolling force of this raceway (paper 000 eq. 5
             # Poiseuille term), starved and clearance-film forms included
             fr = np.array(np.broadcast_to(np.asarray(carried[cs.race], float),
@@ -485,19 +533,14 @@ def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
             fr0 = np.where(q0 > 0, line_force(q0, chord, _m="regime_min"), 0.0)
         elif point is not None:
             fr = np.where(loaded, point(cs, temp, rx), 0.0)
-            ratio = np.divide(q0, q, out=np.zeros_like(q), where=q > 0)
             fr0 = np.where(q0 > 0, point(cs.with_(
                 normal_load=q0, max_pressure=np.asarray(cs.max_pressure, float)
                 * np.cbrt(ratio)), temp, rx), 0.0)
         else:
-            fr = np.where(loaded, line_force(q, length), 0.0)
-            ratio = np.divide(q0, q, out=np.zeros_like(q), where=q > 0)
+            fr = np.where(loaded, line_force(q, length, _eta=eta_load), 0.0)
             # a line contact's length is the roller's; an ellipse's chord goes as Q^(1/3)
             chord0 = length if cs.kind == "line" else length * np.cbrt(ratio)
-            fr0 = np.where(q0 > 0, line_force(q0, chord0), 0.0)
-            if thermal != "none":
-                phi = _thermal_factor(thermal, ctx, cs, temp, eta)
-                fr, fr0 = fr * phi, fr0 * phi
+            fr0 = np.where(q0 > 0, line_force(q0, chord0, _eta=eta_no_load), 0.0)
         fr0 = np.minimum(fr0, fr)
         # Poiseuille shear F_P = Q_x/2 on each surface against the entrainment (the
         # direction of the inlet pressure gradient), as both skidding solvers balance it:
