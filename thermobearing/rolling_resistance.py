@@ -29,8 +29,9 @@ Reduction factors (multiply F_R; ``REDUCTIONS``):
   L = beta eta0 u^2 / k_f, slide-to-roll S = |V|/u and p_h/E'. phi_T is a *film* factor; read
   as an effective inlet viscosity eta_T with h(eta_T) = phi_T h(eta0), i.e. eta_T/eta0 =
   phi_T^(1/0.67) (h ~ eta0^0.67), the force scales by phi_T^(0.66/0.67) (F_R ~ eta0^0.66).
-  This mapping is this module's assumption (the roller source multiplies its rolling force
-  by phi_T itself; the two differ by phi_T^-0.015, < 5 % for phi_T > 0.05).
+  This mapping is this module's assumption; the line-contact models of the heat source
+  (:mod:`thermobearing.heat_sources.raceway`, ``thermal_reduction``) read phi_T the same way
+  with Dowson-Higginson's exponent 0.7: eq. 35 x phi_T, Martin's rigid film x phi_T^(5/7).
 - ``"skf"``: the SKF 2004 model's bearing-level factors phi_ish phi_rs (SKF catalogue
   "The SKF model for calculating the frictional moment", as implemented in
   :func:`thermobearing.global_friction.skf_four_term`): phi_ish = 1/(1 + 1.84e-9 (n d_m)^1.28
