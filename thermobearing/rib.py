@@ -19,11 +19,10 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   crowned end face (a sphere of radius R_s centred on the roller axis at ``x = +-(L_r/2 -
   R_s)``) in the direction of the rib normal ``n_K = (+-cos theta_f, -sin theta_f, 0)``,
   ``delta_K = h_K(alpha) - h_K(0) + (X_K - C_a/2 - C_af) cos(theta_f)``; for the sphere
-  ``h_K(alpha) - h_K(0) = (R_s - L_r/2)(1 - cos alpha) cos(theta_f)``, the paper's term. We
-  evaluate it in this general form (:func:`face_contact`), which also gives *where* the
-  contact is: the point of the sphere whose normal is ``n_K``, i.e. ``c_K + R_s m`` with
-  ``m = R(alpha)^T n_K`` in roller axes. Its height above the inner raceway is eq. 11
-  (independent of skew), but it moves **circumferentially** by
+  ``h_K(alpha) - h_K(0) = (R_s - L_r/2)(1 - cos alpha) cos(theta_f)``, the paper's term.
+  It also gives *where* the contact is: the point of the sphere whose normal is ``n_K``,
+  i.e. ``c_K + R_s m`` with ``m = R(alpha)^T n_K`` in roller axes. Its height above the
+  inner raceway is eq. 11, but it moves **circumferentially** by about
   ``z_K = (R_s - L_r/2) sin(alpha)`` -- about 3 mm at the 0.6 deg skew at which a centred
   roller of the base case reaches the rib: a contact point that far from the roller axis
   slides radially at about ``omega_r R_s sin(alpha)`` over the rib (eq. 24 below). Larger
@@ -34,6 +33,25 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   a toroidal blend of radius = chamfer between the sphere and the roller's cylinder;
   beyond its edge the contact moves onto the blend (smaller curvature radius, point
   closer to the roller axis height).
+* Contact normal (ours, 2026-11-24; improves eq. 1): the rib is a cone of revolution about
+  the bearing axis (eq. 10 takes its circumferential curvature tan(theta_f)/(d_i/2 +
+  H_contact)), so off the roller's radial plane its normal is ``n_K`` turned about the
+  bearing axis by the point's angle phi = atan(z / (d_i/2 + D_w/2 + y)):
+  ``n = (+-cos theta_f, -sin theta_f cos phi, -sin theta_f sin phi)``. Eq. 1's planar
+  ``n_K`` at the offset point is not normal to the rib there: the rib's velocity has a
+  part ``(omega_i - omega_c) sin(theta_f) z_K`` along it, so the normal force would work
+  on the rib's rotation -- 0.5 % of the face's heat at 0.01 rad skew went unbooked and the
+  contact's energy balance did not close. The model takes the approach as the depth of
+  the face's deepest point past the cone (:func:`_support`): where the face's normal is the
+  cone's normal. For the sphere that point lies in the meridional plane of the sphere's
+  centre (phi = atan(z_c / (d_i/2 + D_w/2)), z_c = (R_s - L_r/2) sin alpha), at
+  ``z_K = z_c - R_s sin(theta_f) sin(phi)`` and ``H_contact = D_w/2 - R_s sin(theta_f)
+  cos(phi)``, and eq. 1 loses the cone's rise there,
+  ``delta_K = eq. 1 - sin(theta_f)(sqrt((d_i/2 + D_w/2)^2 + z_c^2) - (d_i/2 + D_w/2))``
+  (1.06 um of eq. 1's 6.4 um at 0.012 rad, base case: contact 2.6 % later in skew). The rib's
+  rotation and the roller's spin (bodies of revolution about their own axes) then slide
+  the surfaces within themselves: the normal force works only on the approach,
+  Q d delta/dt, and power in = heat closes to round-off (tests/unit/test_prop20_rib.py).
 * eq. 6 is the Hertz point-contact law Q = K delta^1.5 with the Brewe-Hamrock 1977 fits of
   eqs. 7-9. As printed, eq. 6 has the two elliptic integrals swapped: with the paper's own
   eq. 9 (Gamma = 1.0003 + 0.5968 R_x/R_y is the *second* kind E, Pi = 1.5277 + 0.6023
@@ -49,11 +67,12 @@ Readings of the paper (it is garbled or under-specified in places; each is a cho
   rib and end-face velocities at the contact point, tangential to the rib (the paper gives
   no formula). In the cage frame the rib turns at ``omega_i - omega_c`` about the bearing
   axis; the roller spins at ``omega_r`` about its skewed axis and skews at ``alpha_dot``.
-  At the contact point of eq. 11 (``rho = R_s sin(theta_f)`` below the roller axis) and
-  offset ``z_K`` this gives a circumferential part
+  At the contact point of eq. 11 (``rho = R_s sin(theta_f)`` below the roller axis; cos phi
+  times that with the cone's normal) and offset ``z_K`` this gives a circumferential part
   ``(omega_i - omega_c)(d_i/2 + H_contact) - omega_r rho + alpha_dot x_K`` (the only part
   for ``alpha = 0``) and a radial part
-  ``-(omega_i - omega_c) z_K - omega_r R_s cos(theta_f) sin(alpha)``. The
+  ``-(omega_i - omega_c) z_K - omega_r R_s cos(theta_f) sin(alpha)`` (at phi = 0), less
+  the slide's part along the contact normal (the approach rate). The
   friction of eq. 12 acts along this sliding direction, so its radial part brakes the
   roller spin with the arm ``z_K`` (M_e_theta_x of eq. 16 generalised) -- the "drag of the
   rib on the roller end face" that the paper's discussion of Figs. 9, 11, 12 invokes.
@@ -259,7 +278,7 @@ class RibGeometry:
         gp = self.params()
 
         def one(aa: float) -> tuple[float, float, float]:
-            _, px, py, pz, blend = _support(gp, side, aa)
+            _, px, py, pz, blend, _, _, _ = _support(gp, side, aa)
             c, s = math.cos(aa), math.sin(aa)
             return 0.5 * self.roller_diameter + py, -px * s + pz * c, blend
 
@@ -392,25 +411,81 @@ def rib_sliding_speed(geom: RibGeometry, inner_speed: Any, cage_speed: Any, roll
 
 
 @njit(cache=True)
-def _support(gp: np.ndarray, side: int, a: float) -> tuple[float, float, float, float, float]:
-    """(h, p_x, p_y, p_z, on_blend): support value of end face ``side`` along its rib normal
-    n = (side cos theta_f, -sin theta_f, 0) at skew ``a`` [rad], and the contact point in
-    roller axes [m] (module notes; for the sphere h changes as paper 003 eq. 1)."""
+def _support(gp: np.ndarray, side: int, a: float
+             ) -> tuple[float, float, float, float, float, float, float, float]:
+    """(h, p_x, p_y, p_z, on_blend, sin phi, cos phi, |m_yz|) of end face ``side`` at skew
+    ``a`` [rad]: the depth h [m] of its deepest point in the rib cone, that point in roller
+    axes [m] (x times ``side``), and the rib normal there.
+
+    The rib is a cone of revolution about the bearing axis (paper 003 eq. 10 takes its
+    circumferential curvature tan(theta_f)/(d_i/2 + H_contact)); in a meridional half-plane
+    its generator has the unit normal (side cos theta_f, -sin theta_f) in (x, r), r the
+    distance from the bearing axis (rc0 = d_i/2 + D_w/2 below the roller axis). The signed
+    distance of a point P (cage axes, from the roller centre) past the cone is
+    ``g(P) = side cos(theta_f) P_x - sin(theta_f) (r(P) - rc0)`` plus a constant; the face's
+    approach is the largest g over the face, reached where the face's outward normal is the
+    cone's normal at that point, ``n = (side ct, -st cos phi, -st sin phi)``,
+    phi = atan2(P_z, rc0 + P_y) the meridional angle of P. Paper 003 eq. 1 takes n in the
+    roller's radial plane (phi = 0); at a skew the contact point lies z_K off that plane,
+    where the rib's velocity has a part om st z_K along the planar normal, so the normal
+    force would do work on the rib's rotation. With the cone's own normal the rib's rotation
+    (and the roller's spin, the face being a body of revolution about its axis) slide the
+    surfaces within themselves: the normal force works only on the approach,
+    Q d delta/dt (module notes, "Contact normal"). For the sphere the normal passes through
+    its centre, so P lies in the centre's meridional plane (phi in closed form); on the
+    chamfer blend phi is iterated (contraction ~ rho/rc0 per pass, to 1e-15 rad).
+    ``h - h(0)`` reduces to paper 003 eq. 1's (R_s - L_r/2)(1 - cos alpha) cos(theta_f)
+    minus st (sqrt(rc0^2 + z_c^2) - rc0), z_c = (R_s - L_r/2) sin(alpha) the sphere
+    centre's offset."""
     ct = gp[_G_CT]
-    mx = ct * math.cos(a)
-    my = -gp[_G_ST]
-    mz = side * ct * math.sin(a)
+    st = gp[_G_ST]
+    rc0 = gp[_G_RC0]
     rs = gp[_G_RS]
     hl = gp[_G_HL]
-    myz = math.sqrt(my * my + mz * mz)
-    if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
-        rt = gp[_G_RT]
-        rc = gp[_G_RCH]
-        xt = hl - rs + gp[_G_XT]
-        h = mx * xt + rt * myz + rc
-        return (h, side * (xt + rc * mx), rt * my / myz + rc * my, rt * mz / myz + rc * mz,
-                1.0)
-    return (hl - rs) * mx + rs, side * (hl - rs + rs * mx), rs * my, rs * mz, 0.0
+    c = math.cos(a)
+    s = math.sin(a)
+    # sphere centre's offset: its meridional plane is the contact's on the sphere
+    phi = math.atan2(-(hl - rs) * side * s, rc0)
+    px = py = pz = myz = 0.0
+    blend = 0.0
+    first = True
+    for _ in range(60):
+        sf = math.sin(phi)
+        cf = math.cos(phi)
+        # rib normal in roller axes (x times side)
+        mx = ct * c + side * st * sf * s
+        my = -st * cf
+        mz = side * ct * s - st * sf * c
+        myz = math.sqrt(my * my + mz * mz)
+        if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
+            rt = gp[_G_RT]
+            rc = gp[_G_RCH]
+            xt = hl - rs + gp[_G_XT]
+            px = side * (xt + rc * mx)
+            py = rt * my / myz + rc * my
+            pz = rt * mz / myz + rc * mz
+            blend = 1.0
+        else:
+            px = side * (hl - rs + rs * mx)
+            py = rs * my
+            pz = rs * mz
+            blend = 0.0
+            if first:
+                break       # the sphere centre's plane: exact
+        new = math.atan2(-px * s + pz * c, rc0 + py)
+        done = abs(new - phi) <= 1e-15
+        phi = new
+        first = False
+        if done:
+            break
+    sf = math.sin(phi)
+    cf = math.cos(phi)
+    r_x = px * c + pz * s
+    r_z = -px * s + pz * c
+    # r(P) - rc0 without cancellation
+    dr = (py * (2.0 * rc0 + py) + r_z * r_z) / (math.sqrt((rc0 + py) ** 2 + r_z * r_z) + rc0)
+    h = side * ct * r_x - st * dr
+    return h, px, py, pz, blend, sf, cf, myz
 
 
 @njit(cache=True)
@@ -437,20 +512,21 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
 
 
 @njit(cache=True)
-def _contact_radii(gp: np.ndarray, side: int, a: float, py: float, pz: float,
-                   blend: float) -> tuple[float, float]:
-    """Principal radii (R_x, R_y) [m] of the end-face / rib contact at the support point of
-    :func:`_support` (paper 003 eqs. 1-13): on the chamfer blend (``blend`` > 0.5) the
-    chamfer's radius and the rib cone's radius of curvature in the skewed plane; on the
-    crowned end face the sphere's radius combined with the rib cone's."""
-    ct = gp[_G_CT]
-    st = gp[_G_ST]
+def _contact_radii(gp: np.ndarray, a: float, px: float, py: float, pz: float, blend: float,
+                   myz: float) -> tuple[float, float]:
+    """Principal radii (R_x, R_y) [m] of the end-face / rib contact at the point
+    (px, py, pz) [m, roller axes] of :func:`_support` (paper 003 eqs. 1-13): on the chamfer
+    blend (``blend`` > 0.5) the chamfer's radius and the blend's second principal radius
+    rho/|m_yz| (the normal's run to the roller axis); on the crowned end face the sphere's
+    radius combined with the rib cone's circumferential curvature, eq. 10, at the contact
+    point's own distance r_P from the bearing axis (d_i/2 + H_contact in the radial plane,
+    sqrt((rc0 + p_y)^2 + z_K^2) off it)."""
     if blend > 0.5:
-        rho = math.sqrt(py * py + pz * pz)
-        mz = side * ct * math.sin(a)
-        return gp[_G_RCH], rho / math.sqrt(st * st + mz * mz)
+        return gp[_G_RCH], math.sqrt(py * py + pz * pz) / myz
     rs = gp[_G_RS]
-    return 1.0 / (1.0 / rs + (st / ct) / (gp[_G_DI2] + gp[_G_R] + py)), rs
+    r_z = -px * math.sin(a) + pz * math.cos(a)
+    r_p = math.sqrt((gp[_G_RC0] + py) ** 2 + r_z * r_z)
+    return 1.0 / (1.0 / rs + (gp[_G_ST] / gp[_G_CT]) / r_p), rs
 
 
 @njit(cache=True)
@@ -474,11 +550,11 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     H_contact [m]; circumferential offset z_K [m]; friction heat mu Q |v| + F_G |v_g| [W];
     circumferential friction (Coulomb + drag) on the roller [N].
     """
-    h, px, py, pz, blend = _support(gp, side, a)
+    h, px, py, pz, blend, sf, cf, myz = _support(gp, side, a)
     ct = gp[_G_CT]
     st = gp[_G_ST]
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    rx, ry = _contact_radii(gp, side, a, py, pz, blend)
+    rx, ry = _contact_radii(gp, a, px, py, pz, blend, myz)
     q = 0.0
     if delta > 0.0:
         q = _stiffness_bh(rx, ry, gp[_G_E]) * delta * math.sqrt(delta)
@@ -504,25 +580,30 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     sx = -vrx
     sy = -om * v_z - vry
     sz = om * (r_y + gp[_G_RC0]) - vrz
+    # the rib cone's normal at the contact point (:func:`_support`)
+    nx = side * ct
+    ny = -st * cf
+    nz = -st * sf
     if plane:
         tx = 0.0
         ty = 0.0
+        tz = sz
     else:
-        sn = sx * side * ct - sy * st
-        tx = sx - sn * side * ct
-        ty = sy + sn * st
-    tz = sz
+        sn = sx * nx + sy * ny + sz * nz
+        tx = sx - sn * nx
+        ty = sy - sn * ny
+        tz = sz - sn * nz
     vt = math.sqrt(tx * tx + ty * ty + tz * tz)
     if sreg > 0.0:
         ff = mu * q / math.sqrt(vt * vt + sreg * sreg)
     else:
         ff = mu * q / vt if vt > 0.0 else 0.0
-    # normal force at the contact point, friction at (r_x, r_y, v_z)
-    qx = -q * side * ct
-    qy = q * st
+    # normal force -Q n at the contact point, friction at (r_x, r_y, v_z)
+    qx = -q * nx
+    qy = -q * ny
     fx = qx + ff * tx
     fy = qy + ff * ty
-    fz = ff * tz
+    fz = ff * tz - q * nz
     mxm = r_y * fz - v_z * ff * ty - r_z * qy
     mym = v_z * ff * tx + r_z * qx - r_x * fz
     mzm = r_x * fy - r_y * fx
@@ -549,35 +630,19 @@ SIDE_RIGHT = np.int64(1)
 
 
 @njit(cache=True)
-def _support_rate(gp: np.ndarray, side: int, a: float) -> float:
-    """d h / d alpha [m/rad]: rate of the support value h of :func:`_support` with the skew
-    (the approach of end face ``side`` to its rib per radian of skew at fixed X)."""
-    ct = gp[_G_CT]
-    mx = ct * math.cos(a)
-    my = -gp[_G_ST]
-    mz = side * ct * math.sin(a)
-    dmx = -ct * math.sin(a)
-    rs = gp[_G_RS]
-    hl = gp[_G_HL]
-    myz = math.sqrt(my * my + mz * mz)
-    if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
-        xt = hl - rs + gp[_G_XT]
-        return dmx * xt + gp[_G_RT] * ct * ct * math.sin(a) * math.cos(a) / myz
-    return (hl - rs) * dmx
-
-
-@njit(cache=True)
 def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: float,
                  eta: float, floor: float) -> tuple[float, float, float, float]:
     """Squeeze film of the lubricant between end face ``side`` and its rib (ours; paper 003
     has the gap's lubricant only as the drag of eq. 14): (normal force F_s [N] on the roller,
     its axial part [N], its skew moment [N m], dissipated power F_s v_n [W]).
 
-    The end face approaches the rib along the rib normal n = (side cos theta_f,
-    -sin theta_f, 0) at v_n = d delta/dt = side cos(theta_f) X' + (dh/d alpha) alpha'
-    (delta of eq. 1, :func:`_support_rate`; the roller's spin and the rib's rotation move
-    both surfaces within themselves -- bodies of revolution about their own axes -- so
-    they do not squeeze). A closing gap (v_n > 0) is opposed by the rigid-isoviscous
+    The end face approaches the rib along the rib cone's normal at the contact point,
+    n = (side cos theta_f, -sin theta_f cos phi, -sin theta_f sin phi) (:func:`_support`),
+    at v_n = d delta/dt = side cos(theta_f) X' + (n_x P_z - n_z P_x) alpha' (the rate of the
+    depth of :func:`_support`, envelope theorem; the roller's spin and the rib's rotation
+    move both surfaces within themselves -- bodies of revolution about their own axes --
+    so they do not squeeze).
+    A closing gap (v_n > 0) is opposed by the rigid-isoviscous
     Reynolds squeeze force of a sphere on a plane, F_s = 6 pi eta R_x R_y v_n / h
     (Hamrock, Schmid & Jacobson, Fundamentals of Fluid Film Lubrication, ch. 9: 6 pi eta R^2
     v / h for R_x = R_y = R; the geometric mean for the nearly circular contact of paper
@@ -587,22 +652,30 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
     (:mod:`~thermobearing.skidding.roller_dynamics_pocket`), whose film floor the dynamics
     passes here too. eta: viscosity of the rib gap
     (eq. 14's oil/air mixture in the dynamics) [Pa s]; floor [m]. F_s acts along the Hertz
-    force's line (through the end face's sphere centre on the roller axis: no spin moment).
+    force's line (-n at the contact point; n meets the roller axis, the face being a body of
+    revolution: no spin moment); its circumferential part F_s sin(theta_f) sin(phi) (~5e-4
+    F_s at 0.6 deg skew) enters the skew moment, not the pocket motion z (whose speed the rib
+    kinematics leave out).
     """
     if eta <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
     ct = gp[_G_CT]
-    v_n = side * ct * xd + _support_rate(gp, side, a) * ad
+    h, px, py, pz, blend, sf, _, myz = _support(gp, side, a)
+    c = math.cos(a)
+    s = math.sin(a)
+    r_x = px * c + pz * s
+    r_z = -px * s + pz * c
+    v_n = side * ct * xd + (side * ct * r_z + gp[_G_ST] * sf * r_x) * ad
     if v_n <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
-    h, px, py, pz, blend = _support(gp, side, a)
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    rx, ry = _contact_radii(gp, side, a, py, pz, blend)
+    rx, ry = _contact_radii(gp, a, px, py, pz, blend, myz)
     gap = max(-delta, floor)
     f_s = 6.0 * math.pi * eta * rx * ry * v_n / gap
-    r_z = -px * math.sin(a) + pz * math.cos(a)
+    # along -n at the contact point: n_z = -st sin(phi) gives a circumferential part
     fx = -f_s * side * ct
-    return f_s, fx, r_z * fx, f_s * v_n
+    fz = f_s * gp[_G_ST] * sf
+    return f_s, fx, r_z * fx - r_x * fz, f_s * v_n
 
 
 @njit(cache=True)

@@ -28,11 +28,25 @@ def test_contact_height_eq11(geom):
     assert geom.contact_height() == pytest.approx(1.42921e-3, rel=1e-5)
 
 
+def _cone_offset(geom, a):
+    """(phi, rise) of the sphere end face at skew a on the conical rib (rib.py module notes,
+    "Contact normal"): its centre sits z_c = 0.297 sin(a) off the roller's radial plane, at
+    the meridional angle phi = atan(z_c / rc0) about the bearing axis (rc0 = d_i/2 + D_w/2);
+    the rib cone lies rise = sin(theta_f)(sqrt(rc0^2 + z_c^2) - rc0) further off there."""
+    rc0 = 0.5 * geom.inner_raceway_diameter + 0.5 * geom.roller_diameter
+    z_c = 0.297 * math.sin(a)
+    return (math.atan2(z_c, rc0),
+            math.sin(geom.rib_angle) * (math.hypot(rc0, z_c) - rc0))
+
+
 def test_approach_eq1_hand_value(geom):
     # eq. 1 with R_p - L_p/2 = R_s - L_r/2 = 297 mm, C_a/2 = 15 um, C_af = 0, X = 0:
-    # alpha = 0.012 rad -> (1 - cos 0.012) * 0.297 - 15e-6 = 6.3838e-6 m, times cos(0.3 deg)
+    # alpha = 0.012 rad -> (1 - cos 0.012) * 0.297 - 15e-6 = 6.3838e-6 m, times cos(0.3 deg),
+    # less the rib cone's rise at the offset sphere centre, 1.061 um (z_c = 3.56 mm)
     dl, dr = geom.approach(0.012, 0.0)
-    expect = ((1 - math.cos(0.012)) * 0.297 - 15e-6) * math.cos(math.radians(0.3))
+    eq1 = ((1 - math.cos(0.012)) * 0.297 - 15e-6) * math.cos(math.radians(0.3))
+    expect = eq1 - _cone_offset(geom, 0.012)[1]
+    assert _cone_offset(geom, 0.012)[1] == pytest.approx(1.061e-6, rel=1e-3)
     assert dl == pytest.approx(expect) and dr == pytest.approx(expect)
     # an axial shift opens the left side and closes the right (eq. 5)
     dl, dr = geom.approach(0.0, 5e-6)
@@ -88,8 +102,13 @@ def test_forces_balance_and_signs(geom):
         0.05 * f.normal_left * f.sliding_left / f.slide_speed_left)
     assert f.heat_right == pytest.approx(0.05 * f.normal_right * f.slide_speed_right)
     assert f.pv_right == pytest.approx(f.pressure_right * f.slide_speed_right)
-    pc = point_contact(f.normal_right, *geom.curvature(), geom.effective_modulus,
-                       method="brewe_hamrock_1977")
+    # eq. 10's cone radius d_i/2 + H at the contact point's own distance from the bearing
+    # axis (it lies z_K off the radial plane)
+    r_p = math.hypot(0.5 * geom.inner_raceway_diameter + f.contact_height_right,
+                     f.contact_offset_right)
+    pc = point_contact(f.normal_right,
+                       *geom.curvature(r_p - 0.5 * geom.inner_raceway_diameter),
+                       geom.effective_modulus, method="brewe_hamrock_1977")
     assert f.pressure_right == pytest.approx(3 * f.normal_right / (2 * math.pi * pc.a * pc.b))
     # the radial sliding of the offset contact point brakes the spin (rolling sense < 0)
     assert f.spin_moment < 0
@@ -99,25 +118,33 @@ def test_forces_balance_and_signs(geom):
 
 
 def test_contact_point_moves_with_skew(geom):
-    # sphere end face: the contact point stays at the eq. 11 height but moves
-    # circumferentially by (R_s - L_r/2) sin(alpha) (hand value 297 mm x sin 0.0101)
+    # sphere end face: the contact point moves circumferentially with the sphere centre,
+    # (R_s - L_r/2) sin(alpha) (hand value 297 mm x sin 0.0101), and lies R_s along the rib
+    # cone's normal there, turned by phi about the bearing axis: z_K = z_c - R_s
+    # sin(theta_f) sin(phi), H = D_w/2 - R_s sin(theta_f) cos(phi) (eq. 11 at phi = 0)
     h, z, blend = geom.contact_point(0.0101, side=1)
-    assert h == pytest.approx(geom.contact_height())
-    assert z == pytest.approx(0.297 * math.sin(0.0101), rel=1e-9)
+    phi = _cone_offset(geom, 0.0101)[0]
+    rho = 0.3 * math.sin(geom.rib_angle) * math.cos(phi)
+    assert h == pytest.approx(0.5 * geom.roller_diameter - rho, rel=1e-9)
+    assert h - geom.contact_height() == pytest.approx(7.19e-6, rel=1e-3)
+    assert z == pytest.approx(0.297 * math.sin(0.0101)
+                              - 0.3 * math.sin(geom.rib_angle) * math.sin(phi), rel=1e-9)
     assert not blend
     _, z_left, _ = geom.contact_point(0.0101, side=-1)
     assert z_left == pytest.approx(-z)
     # sliding speed at skew (rigid-body velocities, hand formulas): circumferential part
     # (w_i - w_c)(d_i/2 + H) - w_r rho cos(alpha); radial part (w_i - w_c) z + w_r p_z, with
-    # p_z = R_s cos(theta_f) sin(alpha) the point's offset from the (skewed) spin axis
+    # p_z = R_s (cos(theta_f) sin(alpha) - sin(theta_f) sin(phi) cos(alpha)) the point's
+    # offset from the (skewed) spin axis
     wi, wc, wr = 3141.6, 1400.0, 16000.0
     f = rib_forces(geom, 0.0101, 1e-5, inner_speed=wi, cage_speed=wc, roller_spin=wr)
-    rho = 0.5 * geom.roller_diameter - h
     vz = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - wr * rho * math.cos(0.0101)
-    vy = (wi - wc) * z + wr * 0.3 * math.cos(geom.rib_angle) * math.sin(0.0101)
-    assert f.sliding_right == pytest.approx(vz, rel=1e-6)
-    # (the kernel removes the slide's component along the rib normal, (v_y sin theta_f)^2:
+    p_z = 0.3 * (math.cos(geom.rib_angle) * math.sin(0.0101)
+                 - math.sin(geom.rib_angle) * math.sin(phi) * math.cos(0.0101))
+    vy = (wi - wc) * z + wr * p_z
+    # (the kernel removes the slide's component along the rib normal, ~ v_y sin theta_f:
     # 1e-5 relative here)
+    assert f.sliding_right == pytest.approx(vz, rel=1e-4)
     assert f.slide_speed_right == pytest.approx(math.hypot(vz, vy), rel=1e-4)
     assert f.contact_offset_right == pytest.approx(z)
 
@@ -255,8 +282,13 @@ def test_contact_skew_and_sliding_grow_with_axial_clearance(geom):
     for ca in (0.01e-3, 0.05e-3, 0.09e-3):
         g = with_changes(geom, axial_clearance=ca)
         a = brentq(lambda s, g=g: float(g.approach(s, 0.0)[1]), 0.0, 0.1)
-        # eq. 1 at X = 0: (R_s - L_r/2)(1 - cos a) = C_a/2 (hand inversion)
-        assert a == pytest.approx(math.acos(1.0 - 0.5 * ca / 0.297), rel=1e-6)
+        # eq. 1 at X = 0: (R_s - L_r/2)(1 - cos a) = C_a/2 (hand inversion), less the rib
+        # cone's rise at the offset sphere centre (_cone_offset): 2.6 % more skew at 0.03 mm
+        a_eq1 = math.acos(1.0 - 0.5 * ca / 0.297)
+        a_cone = brentq(lambda s, g=g, ca=ca: (0.297 * (1 - math.cos(s)) - 0.5 * ca)
+                        * math.cos(g.rib_angle) - _cone_offset(g, s)[1], 0.0, 0.1)
+        assert a == pytest.approx(a_cone, rel=1e-6)
+        assert 1.0 < a / a_eq1 < 1.05
         f = rib_forces(g, a, 0.0, inner_speed=3141.6, cage_speed=730.0, roller_spin=16700.0)
         skews.append(a)
         slides.append(float(f.slide_speed_right))
@@ -277,16 +309,19 @@ def test_radial_plane_slide_option(geom):
     kw = dict(inner_speed=wi, cage_speed=wc, roller_spin=wr, skew_rate=ad)
     f = rib_forces(gp, a, 1e-5, **kw)
     g = rib_forces(geom, a, 1e-5, **kw)
-    h = geom.contact_height()
+    h = geom.contact_point(a)[0]        # eq. 11 with the cone's normal (module notes)
     rho = 0.5 * geom.roller_diameter - h
     x_k = 0.5 * geom.roller_length - 0.297 * (1 - math.cos(geom.rib_angle))  # R_s cos - ...
     vz = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - wr * rho * math.cos(a)
     assert f.slide_speed_right == pytest.approx(abs(vz + ad * x_k), rel=1e-4)
     assert f.slide_speed_right == pytest.approx(abs(f.sliding_right), rel=1e-12)
     assert f.normal_right == g.normal_right > 0
-    # friction along z only: the radial force is the normal force's alone
+    # friction along z only: the radial force is the normal force's alone, Q sin(theta_f)
+    # cos(phi) along the rib cone's normal
     q = f.normal_right
-    assert f.radial_force == pytest.approx(q * math.sin(geom.rib_angle), rel=1e-9)
+    phi = _cone_offset(geom, a)[0]
+    assert f.radial_force == pytest.approx(q * math.sin(geom.rib_angle) * math.cos(phi),
+                                           rel=1e-9)
     # rib faster than the end face point -> the friction drives the spin (eq. 13, C = +1)
     assert vz > 0 and f.spin_moment > 0
     with pytest.raises(InputError, match="slide"):
