@@ -79,51 +79,107 @@ def _check_rings(bearing: Any) -> None:
                          f"{bearing.outer_diameter:.6g} m")
 
 
-def _cage_land(bearing: Any, side: str) -> tuple[float, str]:
-    """The diameter [m] the cage must clear on the ``side`` ("inner" | "outer") ring, and
-    what it is (for the error of :func:`_check_cage_between_rings`).
+def _ring_surface(bearing: Any, side: str) -> tuple[float, str, bool]:
+    """The ``side`` ("inner" | "outer") ring's surface nearest the cage: (diameter [m],
+    what it is, whether it is the ring's land itself).
 
-    The guiding ring: the land the cage runs on (``cage.guide_land_diameter``). The other:
-    its land where the bearing gives it (a roller bearing's rib, d_i + 2 h_f or
-    d_o - 2 h_f, with ``rib_height`` given; a ball bearing's given shoulder diameter), else
-    its raceway diameter, which any land lies beyond (an estimated rib height or shoulder is
-    no ground to refuse a bearing)."""
-    cage = bearing.cage
-    if cage.guidance == f"{side}_ring":
-        return float(cage.guide_land_diameter), "cage.guide_land_diameter, the land it runs on"
+    A roller bearing's ribbed ring with ``rib_height`` given: its ribs, d_i + 2 h_f or
+    d_o - 2 h_f; a roller bearing's ring without ribs: its raceway, which is its whole
+    cylindrical surface; a ball bearing's ring with its shoulder diameter given: that
+    shoulder. Otherwise the raceway diameter (land False): the ring's land lies somewhere
+    nearer the cage than it, and an estimated rib height or shoulder is no ground to refuse
+    a bearing."""
+    race = bearing.inner_raceway_diameter if side == "inner" else bearing.outer_raceway_diameter
     ribbed = getattr(bearing, "ribbed_ring", None)
     if ribbed is not None:
-        if ribbed in (side, "both") and getattr(bearing, "rib_height", None) is not None:
+        if ribbed not in (side, "both"):
+            return float(race), (f"the {side} raceway diameter, the bore of a ring without "
+                                 f"ribs (bearing.ribbed_ring = {ribbed!r})"
+                                 if side == "outer" else
+                                 f"the {side} raceway diameter, the outside of a ring "
+                                 f"without ribs (bearing.ribbed_ring = {ribbed!r})"), True
+        if getattr(bearing, "rib_height", None) is not None:
             land = bearing.inner_land_diameter if side == "inner" else bearing.outer_land_diameter
             form = "d_i + 2 h_f" if side == "inner" else "d_o - 2 h_f"
             return float(land), (f"the {side} ribs' {'diameter' if side == 'inner' else 'bore'}"
                                  f" {form} (bearing.ribbed_ring = {ribbed!r}, rib_height = "
-                                 f"{bearing.rib_height * 1e3:.6g} mm)")
+                                 f"{bearing.rib_height * 1e3:.6g} mm)"), True
     else:
         given = getattr(bearing, f"{side}_shoulder_diameter", None)
         if given is not None:
-            return float(given), f"bearing.{side}_shoulder_diameter"
-    race = bearing.inner_raceway_diameter if side == "inner" else bearing.outer_raceway_diameter
-    return float(race), f"the {side} raceway diameter"
+            return float(given), f"bearing.{side}_shoulder_diameter", True
+    return float(race), f"the {side} raceway diameter", False
+
+
+def _check_guide_land(bearing: Any, side: str, surface: float, what: str, land: bool
+                      ) -> float:
+    """The guide land of a cage guided by the ``side`` ring must be a surface of that ring:
+    its land (:func:`_ring_surface`) to within half the guide clearance (the cage's radial
+    play on it; the raceway moves with ``diametral_clearance`` and so does a rib), or, where
+    the land is not given, a diameter inside the raceway (no surface of a ring lies beyond
+    its raceway, and a land at the raceway of a ribbed ring or a ball groove would be the
+    path of the elements). Returns the guide land diameter [m]; else InputError naming
+    ``cage.guide_land_diameter``, the value and the ring surface."""
+    cage = bearing.cage
+    guide = float(cage.guide_land_diameter)
+    tol = 0.5 * float(cage.guide_clearance)
+    shown = f"{guide * 1e3:.6g} mm"
+    if land:
+        if abs(guide - surface) > tol:
+            raise InputError(
+                "cage.guide_land_diameter", shown,
+                f"the land of the {side} ring that guides the cage (cage.guidance = "
+                f"{cage.guidance!r}): {what} = {surface * 1e3:.6g} mm, within half the guide "
+                f"clearance ({tol * 1e3:.6g} mm); no surface of the ring lies at {shown}")
+    elif (guide >= surface) if side == "outer" else (guide <= surface):
+        raise InputError(
+            "cage.guide_land_diameter", shown,
+            f"a land of the {side} ring that guides the cage (cage.guidance = "
+            f"{cage.guidance!r}) {'below' if side == 'outer' else 'above'} {what}, "
+            f"{surface * 1e3:.6g} mm: the ring's lands lie "
+            f"{'inside' if side == 'outer' else 'outside'} its raceway")
+    return guide
+
+
+def _cage_bounds(bearing: Any, side: str) -> list[tuple[float, str]]:
+    """The diameters [m] the cage must clear on the ``side`` ring, with what each is: the
+    guide land first where that ring guides the cage (after :func:`_check_guide_land`),
+    then the ring's surface nearest the cage (:func:`_ring_surface`)."""
+    surface, what, land = _ring_surface(bearing, side)
+    bounds = [(surface, what)]
+    if bearing.cage.guidance == f"{side}_ring":
+        guide = _check_guide_land(bearing, side, surface, what, land)
+        bounds.insert(0, (guide, "cage.guide_land_diameter, the land it runs on"))
+    return bounds
+
+
+def _cage_land(bearing: Any, side: str) -> tuple[float, str]:
+    """The diameter [m] the cage must clear on the ``side`` ("inner" | "outer") ring, the
+    nearest of :func:`_cage_bounds` to the cage, and what it is."""
+    pick = max if side == "inner" else min
+    return pick(_cage_bounds(bearing, side), key=lambda b: b[0])
 
 
 def _check_cage_between_rings(bearing: Any) -> None:
-    """The cage runs between the rings clear of their lands (ribs, shoulders): its bore
-    above the inner ring's land and its outside diameter below the outer ring's
-    (:func:`_cage_land`); else an InputError naming the cage field and both diameters.
-    A cage across a land is a part that cannot be assembled (CRB_50x75x16 with
-    ``ribbed_ring = "both"``: the 66 mm cage across the 65.515 mm bore of the outer ribs)."""
+    """The cage runs between the rings clear of their surfaces: its bore above the inner
+    ring's land (rib, shoulder) or raceway and its outside diameter below the outer ring's
+    (:func:`_ring_surface`), and on the side of a ring-guided cage also clear of the guide
+    land, which must be a surface of that ring (:func:`_check_guide_land`); else an
+    InputError naming the cage field and the diameters. A cage across a land is a part that
+    cannot be assembled (CRB_50x75x16 with ``ribbed_ring = "both"``: the 66 mm cage across
+    the 65.515 mm bore of the outer ribs; D1842926 as estimated before: a 170 mm guide land
+    beyond the 167.03 mm outer raceway and the 169.6 mm cage across it)."""
     cage = bearing.cage
-    inner, what_i = _cage_land(bearing, "inner")
-    if not cage.inner_diameter > inner:
-        raise InputError("cage.inner_diameter", f"{cage.inner_diameter * 1e3:.6g} mm",
-                         f"a bore above {inner * 1e3:.6g} mm, {what_i}: the cage would cross "
-                         "the inner ring")
-    outer, what_o = _cage_land(bearing, "outer")
-    if not cage.outer_diameter < outer:
-        raise InputError("cage.outer_diameter", f"{cage.outer_diameter * 1e3:.6g} mm",
-                         f"an outside diameter below {outer * 1e3:.6g} mm, {what_o}: the cage "
-                         "would cross the outer ring")
+    for bound, what in _cage_bounds(bearing, "inner"):
+        if not cage.inner_diameter > bound:
+            raise InputError("cage.inner_diameter", f"{cage.inner_diameter * 1e3:.6g} mm",
+                             f"a bore above {bound * 1e3:.6g} mm, {what}: the cage would "
+                             "cross the inner ring")
+    for bound, what in _cage_bounds(bearing, "outer"):
+        if not cage.outer_diameter < bound:
+            raise InputError("cage.outer_diameter", f"{cage.outer_diameter * 1e3:.6g} mm",
+                             f"an outside diameter below {bound * 1e3:.6g} mm, {what}: the "
+                             "cage would cross the outer ring")
 
 
 def _cage_ratio(gamma: Any) -> Any:

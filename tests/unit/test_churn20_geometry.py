@@ -28,10 +28,11 @@ T_30C = 303.15
 
 
 # (neighbours D_in, D_out; cage gap) in mm, by hand from the files:
-# D1842926: outer-ring guided on a 170 mm land (outside the 162.23 mm rib: d_o 167.03 -
-#   2 x 2.4 mm estimated rib), inner raceway 155 - 12 - 0.03 = 142.97 (no inner rib);
-#   cage 150 / 169.6: gaps (170 - 169.6)/2 = 0.2 and (150 - 142.97)/2 = 3.515, mean 1.8575
-#   (the land-to-land rule gave (162.23 - 142.97 - 19.6)/4 < 0 -> the 0.1 mm floor)
+# D1842926: outer-ring guided on the 162.23 mm bore of its outer ribs (d_o 167.03 -
+#   2 x 2.4 mm rib), inner raceway 155 - 12 - 0.03 = 142.97 (no inner rib); cage 150 /
+#   161.83: gaps (162.23 - 161.83)/2 = 0.2 and (150 - 142.97)/2 = 3.515, mean 1.8575
+#   (session 21: the land was estimated at 170 mm, beyond the raceway, with a 169.6 mm cage;
+#   the gap was the same 1.8575 mm, the cage mean diameter 159.8 mm)
 # CRB_50x75x16: inner-ring guided on its 59.485 land, outer raceway 68.515 (no outer rib);
 #   cage 59.685 / 66: radial gaps 0.1 and 1.2575, ((68.515 - 59.485) - 6.315)/4 = 0.67875
 #   (unchanged)
@@ -41,7 +42,7 @@ T_30C = 303.15
 #   (2.5 + 0.3)/2 = 1.4 (unchanged)
 # SKF6304: element guided, shoulders 30.285 / 41.715; cage 32 / 40: (0.8575 + 0.8575)/2
 CASES = {
-    "D1842926": (142.97, 170.0, 1.8575),
+    "D1842926": (142.97, 162.23, 1.8575),
     "CRB_50x75x16": (59.485, 68.515, 0.67875),
     "NU214": (84.4875, 105.3125, 1.95625),
     "QJ1044": (259.0, 301.0, 1.4),
@@ -94,14 +95,16 @@ def test_d1842926_cage_churning_eq15_by_hand():
         r = evaluate(["churning_cage"], ctx)[0]
     # X = 1.46e7 * 2000^0.37 / (13218 * 155^1.7) % = 2.4309e8 / 6.9904e7 = 3.4775 %
     assert r.details["oil_fraction"] == pytest.approx(0.034775, rel=1e-3)
-    # Re = 0.0799 * 638.51 * 1.8575e-3 / 3.40206e-5 = 2785.5 (> 2500: eq. 14)
-    assert r.details["reynolds"] == pytest.approx(2785.5, rel=1e-4)
+    # cage mean diameter D_c = (150 + 161.83)/2 = 155.915 mm
+    # Re = 0.0779575 * 638.51 * 1.8575e-3 / 3.40206e-5 = 2717.8 (> 2500: eq. 14)
+    assert r.details["reynolds"] == pytest.approx(2717.8, rel=1e-4)
     assert r.details["regime"] == 2
-    # mu_v = 3 * 16/2785.5 * (2785.5/2500)^0.85596 = 0.017232 * 1.09698 = 0.018903
-    assert r.details["mu_v"] == pytest.approx(0.018903, rel=2e-4)
-    # Q = pi * (0.034754 * 970) * 0.018903 * 638.51^3 * 0.018 * 0.1598^4 / 64 = 95.58 W
-    # (the 0.1 mm floor gave laminar mu_v = 16/150 and 539.5 W)
-    assert r.components["cage churning"] == pytest.approx(95.58, rel=1e-3)
+    # mu_v = 3 * 16/2717.8 * (2717.8/2500)^0.85596 = 0.017662 * 1.07411 = 0.018970
+    assert r.details["mu_v"] == pytest.approx(0.018970, rel=2e-4)
+    # Q = pi * (0.034754 * 970) * 0.018970 * 638.51^3 * 0.018 * 0.155915^4 / 64 = 86.93 W
+    # (95.58 W with the former 159.8 mm cage, whose 170 mm land lay beyond the raceway;
+    # the 0.1 mm floor of an earlier gap rule gave laminar mu_v = 16/150 and 539.5 W)
+    assert r.components["cage churning"] == pytest.approx(86.93, rel=1e-3)
 
 
 def test_d1842926_skidding_drag_is_the_booked_cage_churning():
