@@ -30,7 +30,7 @@ import sys
 import time
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import Any
 
@@ -105,9 +105,12 @@ def _dask_client(scheduler: str, timeout: float = 5.0):
     dask's own ``timeout`` bounds the TCP connection only; a server that accepts the
     connection but never answers the handshake (another service on that port, e.g. the
     scheduler's web dashboard) would block forever, and one that answers with something
-    else fails with an arbitrary exception. The connection is therefore made in a helper
-    thread with an overall deadline of three times ``timeout``, and every failure is
-    reported as unreachable.
+    else (an SSH server's banner) fails inside dask's message decoding with an arbitrary
+    exception (a MemoryError for a frame length of exabytes read from the banner). The
+    connection is therefore made in a helper thread with an overall deadline of three
+    times ``timeout``, and every failure is reported as unreachable; a client whose start
+    failed is closed at once (left to the garbage collector, its close waited 10 s on a
+    dead connection at interpreter exit and printed a traceback).
     """
     import threading
 
@@ -116,12 +119,32 @@ def _dask_client(scheduler: str, timeout: float = 5.0):
     check_scheduler_address(scheduler)
     box: dict[str, Any] = {}
 
+    class _TrackedClient(Client):
+        """Client that leaves a reference to itself before it connects, so a failed
+        start can be closed."""
+
+        def __init__(self, *args: Any, **kwargs: Any) -> None:
+            box["started"] = self
+            super().__init__(*args, **kwargs)
+
     def connect() -> None:
         try:
-            box["client"] = Client(scheduler, timeout=f"{timeout}s", set_as_default=False)
+            box["client"] = _TrackedClient(scheduler, timeout=f"{timeout}s",
+                                           set_as_default=False)
         except Exception as exc:  # noqa: BLE001 - any failure: reported as unreachable
-            box["error"] = f"{type(exc).__name__}: {exc}" if not isinstance(
-                exc, OSError | TimeoutError) else str(exc)
+            if isinstance(exc, OSError | TimeoutError):
+                box["error"] = str(exc)
+            else:
+                detail = f"{type(exc).__name__}: {exc}"
+                detail = detail if len(detail) <= 160 else detail[:157] + "..."
+                box["error"] = (
+                    "something answered there, but not as a dask scheduler (is that the "
+                    "scheduler's port, usually 8786, and not another service's?); dask "
+                    f"could not read its reply: {detail}")
+            failed = box.pop("started", None)
+            if failed is not None:
+                with suppress(Exception):
+                    failed.close(timeout=1)
 
     worker = threading.Thread(target=connect, name="thermobearing-dask-connect", daemon=True)
     worker.start()
