@@ -74,6 +74,17 @@ _BARE_EXPONENT = re.compile(r"(?<![A-Za-z_\u00b5\u03bc])(km|dm|cm|mm|um|\u00b5m|
                             r"([23])(?![\d.])")
 
 
+#: an offset temperature unit and the unit of its differences: a temperature difference
+#: written in degrees ("10 degC", "18 degF") is that many degrees of difference (10 K and
+#: 10 K); "18 degF" was refused as not convertible to delta_degC while "10 degC" was read
+_DIFFERENCE_OF = {
+    "degC": "delta_degC", "\u00b0C": "delta_degC", "celsius": "delta_degC",
+    "degree_Celsius": "delta_degC",
+    "degF": "delta_degF", "\u00b0F": "delta_degF", "fahrenheit": "delta_degF",
+    "degree_Fahrenheit": "delta_degF",
+}
+
+
 @functools.lru_cache(maxsize=1)
 def unit_registry() -> pint.UnitRegistry:
     """The one pint registry of the package (created lazily, never mutated after).
@@ -143,8 +154,8 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     _refuse_separators(text, field, target)
     unit_text = _usual_spellings(unit_text)
     _refuse_megametre(value, number, unit_text, field, target)
-    if target == "delta_degC" and unit_text in ("degC", "°C", "celsius", "degree_Celsius"):
-        unit_text = "delta_degC"
+    if target == "delta_degC" and unit_text in _DIFFERENCE_OF:
+        unit_text = _DIFFERENCE_OF[unit_text]
     if target == "delta_degC" and unit_text in ("K", "kelvin"):
         return float(number)
     if target == "rad/s" and unit_text and cycles_per_time(unit_text):
@@ -281,14 +292,22 @@ def _from_si_affine(unit: str) -> tuple[float, float]:
     return y1 - y0, y0
 
 
-def from_si(value: float, unit: str) -> float:
-    """Convert an SI float to ``unit`` (for report labels and printed tables)."""
+def from_si(value: float, unit: str, kind: str | None = None) -> float:
+    """Convert an SI float to ``unit`` (for report labels and printed tables).
+
+    ``kind="temperature_difference"``: ``value`` is a difference [K] and an offset unit
+    means its degrees (0.5 K in ``"degC"`` is 0.5, in ``"degF"`` 0.9), the inverse of
+    :func:`to_si` for that kind; without it ``"degC"`` is read as a temperature (0.5 K is
+    -272.65 degC)."""
+    if kind == "temperature_difference":
+        unit = _DIFFERENCE_OF.get(unit, unit)
     a, b = _from_si_affine(unit)
     return float(a * value + b)
 
 
-def format_quantity(value: float, unit: str, digits: int = 4) -> str:
-    """SI float -> ``"<value> <unit>"`` string in ``unit`` (used by ``Scene.to_toml``)."""
+def format_quantity(value: float, unit: str, digits: int = 4, kind: str | None = None) -> str:
+    """SI float -> ``"<value> <unit>"`` string in ``unit`` (used by ``Scene.to_toml``);
+    ``kind`` as in :func:`from_si` (a temperature difference in ``"degC"``)."""
     if unit in ("", "dimensionless"):
         return f"{value:.{digits}g}"
-    return f"{from_si(value, unit):.{digits}g} {unit}"
+    return f"{from_si(value, unit, kind):.{digits}g} {unit}"
