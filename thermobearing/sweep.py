@@ -119,18 +119,21 @@ def _dask_client(scheduler: str, timeout: float = 5.0):
     check_scheduler_address(scheduler)
     box: dict[str, Any] = {}
 
-    class _TrackedClient(Client):
-        """Client that leaves a reference to itself before it connects, so a failed
-        start can be closed."""
+    make: Any = Client
+    if isinstance(Client, type):
+        class _TrackedClient(Client):
+            """Client that leaves a reference to itself before it connects, so a failed
+            start can be closed."""
 
-        def __init__(self, *args: Any, **kwargs: Any) -> None:
-            box["started"] = self
-            super().__init__(*args, **kwargs)
+            def __init__(self, *args: Any, **kwargs: Any) -> None:
+                box["started"] = self
+                super().__init__(*args, **kwargs)
+
+        make = _TrackedClient
 
     def connect() -> None:
         try:
-            box["client"] = _TrackedClient(scheduler, timeout=f"{timeout}s",
-                                           set_as_default=False)
+            box["client"] = make(scheduler, timeout=f"{timeout}s", set_as_default=False)
         except Exception as exc:  # noqa: BLE001 - any failure: reported as unreachable
             if isinstance(exc, OSError | TimeoutError):
                 box["error"] = str(exc)
