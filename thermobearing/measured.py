@@ -309,9 +309,20 @@ def _index(header: list[str], lowered: list[str], name: str) -> int | None:
     return None
 
 
+#: words that name a time unit in a time column's name without brackets or slash
+#: (``Minutes``, ``Elapsed Minutes``, ``Time_min``, ``t_s``, ``Zeit in Minuten``)
+_TIME_WORDS = {"ms": "ms", "msec": "ms", "millisecond": "ms", "milliseconds": "ms",
+               "s": "s", "sec": "s", "secs": "s", "second": "s", "seconds": "s",
+               "sekunde": "s", "sekunden": "s",
+               "min": "min", "mins": "min", "minute": "min", "minutes": "min",
+               "minuten": "min",
+               "h": "h", "hr": "h", "hrs": "h", "hour": "h", "hours": "h", "stunden": "h"}
+
+
 def _time_unit(time_column: str, units_cell: str) -> str | None:
     """The unit of a time column of numbers (its name's brackets, a time unit after a
-    slash: ``t/min``, else the units row), None when none gives one."""
+    slash: ``t/min``, a word of the name that is a time unit: ``Minutes``, ``Time_min``,
+    else the units row), None when none gives one."""
     from .measured_layout import is_time_format, slash_unit
     from .units import to_si
 
@@ -326,7 +337,11 @@ def _time_unit(time_column: str, units_cell: str) -> str | None:
         except InputError:
             pass  # Datum/Uhrzeit: no unit
     cell = units_cell.strip().strip("[]()")
-    return cell if cell and not is_time_format(cell) else None
+    if cell and not is_time_format(cell):
+        return cell
+    words = {_TIME_WORDS[w] for w in re.split(r"[\s_\-.]+", time_column.strip().lower())
+             if w in _TIME_WORDS}
+    return words.pop() if len(words) == 1 else None
 
 
 def _missing(values: Sequence[float | str] | None, field: str
