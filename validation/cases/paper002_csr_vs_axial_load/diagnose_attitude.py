@@ -23,8 +23,9 @@ Parts
   the Eyring law leaves its Newtonian branch, s* = h tau0 / eta(p0).
 - law: the peaks with the traction law replaced by a pressure-proportional slip law
   tau = mu(u) p (``four_parameter``, ADORE form, mu_0 = 0, flat top mu from u_m on) for
-  mu = 0.03 ... 0.10 and u_m = 0.02 / 0.3 m/s, and with the Eyring law at Lambda 0.06 and
-  tau0 = 20 MPa (the other calibrated values kept, no recalibration).
+  mu = 0.03 ... 0.10 and u_m = 0.02 / 0.3 m/s, the primer's ADORE-style sample curve
+  (over-skidding primer 3.6: mu 0.05 at 1 m/s, 0.036 at gross slip), and with the Eyring
+  law at Lambda 0.06 and tau0 = 20 MPa (the other calibrated values kept, no recalibration).
 - falling: a falling slip law (mu 0 -> 0.06 at u_m = 0.3 m/s, then down to mu_inf at gross
   slip, the thermal fall of EHL traction in ADORE's form), reached at each load by stepping
   mu_inf down from 0.06 (a flat top) to 0.015 from the flat-top solution (continuation in the
@@ -218,6 +219,9 @@ def part_law(bearing, lub, params, temperature):
                                 slip_speed_at_max=um, mu_infinity=mu), params)
              for mu, um in ((0.03, 0.02), (0.04, 0.02), (0.06, 0.02), (0.10, 0.02),
                             (0.06, 0.3))]
+    cases.append(("mu(u) p, the primer's ADORE-style sample (0.05 at 1 m/s, mu_inf 0.036)",
+                  make_traction_law("four_parameter", mu_zero=0.0, mu_max=0.05,
+                                    slip_speed_at_max=1.0, mu_infinity=0.036), params))
     cases.append(("Eyring, Lambda 0.06, tau0 20 MPa", None,
                   params.with_(limiting_shear_coefficient=0.06, eyring_stress=20e6)))
     for label, law, p in cases:
