@@ -1,7 +1,8 @@
 """Bad-input audit, issue 5 (skidding solvers, public :func:`thermobearing.skidding.solve`):
-bad operating points are refused with the field named; states the model cannot solve
-(nothing drives the cage) fail with a ConvergenceError carrying the residual and the state,
-never NaN; solver settings out of range are named before any work is done.
+bad operating points are refused with the field named (an unloaded roller bearing on the dry
+ring balance among them: InputError before any solve); states the model cannot solve (nothing
+drives the cage of a ball bearing) fail with a ConvergenceError carrying the residual and the
+state, never NaN; solver settings out of range are named before any work is done.
 """
 
 from __future__ import annotations
