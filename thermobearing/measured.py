@@ -95,7 +95,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
       (columns without one in ``unit``) and the notes say so.
     - **Decimal mark**: ``.``, or ``,`` with a semicolon, tab or space separator.
     - **Time column**: numbers in the unit of ``time_column``'s brackets (``time [min]``,
-      ``Time (s)``), of its ``/unit`` ending or of the units row (seconds without any);
+      ``Time (s)``), of its ``/unit`` ending, of the units row or of a word of its name
+      that is a time unit (``Minutes``, ``Time_min``, ``t_s``; seconds without any);
       elapsed ``hh:mm:ss[.f]`` or ``mm:ss[.f]`` (clock times passing midnight: +24 h from
       there, noted);
       timestamps ``2026-11-23 10:15:30`` / ISO 8601 (``T``, fraction, UTC offset),
@@ -143,7 +144,8 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     ``attrs["notes"]`` (list of str: averaged rows, mixed units, Excel dates, readings at
     a thermocouple range end, a degC column whose readings all exceed 273.15) and
     ``attrs["gaps"]`` ({sensor: {cause: count}}), ``attrs["rows"]`` (the file's data
-    rows); :func:`measured_notes` words them.
+    rows), ``attrs["units"]`` ({sensor: the unit its readings were converted from, degC,
+    K or degF}); :func:`measured_notes` words them.
 
     Raises
     ------
@@ -229,6 +231,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     out.attrs["notes"] = notes
     out.attrs["gaps"] = gaps
     out.attrs["rows"] = len(rows)  # data rows of the file (before averaging repeats)
+    out.attrs["units"] = {col: col_units.get(col, unit) for col in sensors}
     return out
 
 

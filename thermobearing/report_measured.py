@@ -197,8 +197,10 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
     Lines: one colour per node kind, one line style per bearing (``<bearing>.<node>``).
     Measured points: each sensor in the colour of its node's line and a marker of its own
     (two sensors on the drive-end and non-drive-end housings share the colour, not the
-    marker), named in the legend with its node. The x axis is the run; the y axis spans
-    the predicted temperatures and the readings inside the run, leaving out readings of
+    marker), named in the legend with its node (and, for a file logged in degF or K, the
+    unit its readings were converted from); the legend stands beside the axes. The x axis
+    is the run; the y axis spans the predicted temperatures and the readings inside the
+    run, leaving out readings of
     exactly a thermocouple range end (:data:`thermobearing.measured.RANGE_ENDS_C`, an open
     thermocouple pinned there by the logger), which a note in the figure counts.
     """
@@ -232,8 +234,12 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
             marker = _MARKERS[k % len(_MARKERS)]
             t = measured["time [s]"].to_numpy(float)
             values = measured[sensor].to_numpy(float)
+            # readings logged in degF or K are drawn converted: the legend says so (a
+            # name such as 'TC1 [°F]' on the degC axis read as if the points were in degF)
+            logged = measured.attrs.get("units", {}).get(sensor, "degC")
+            how = "measured" if logged == "degC" else f"measured in {logged}, shown in degC"
             ax.plot(t / 60.0, values, marker, ms=3.5, color=c, mfc="none", ls="none",
-                    label=f"{sensor} (measured, {node})")
+                    label=f"{sensor} ({how}, {node})")
             inside = _inside(measured, sensor, t0, t1)
             code = np.zeros_like(inside)
             for end in RANGE_ENDS_C:
@@ -254,5 +260,9 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
     ax.set_xlabel("time [min]")
     ax.set_ylabel("temperature [degC]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, ncol=2)
+    # beside the axes, not on them: inside, the legend of a measured overlay covered the
+    # readings it names (the overlay's lines are long and the readings span the run)
+    entries = len(ax.get_legend_handles_labels()[1])
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0,
+              ncol=1 + entries // 24)
     return _png(fig)
