@@ -127,10 +127,18 @@ def _law_stress(law_id: int, params: np.ndarray, s: float, p: float, rate: float
                 return tau_l, 0.0
             return tau_e, dtau_e
         if tau_l > 0.0:
-            # tau_E / sqrt(1 + (tau_E / tau_L)^2) = tau_E tau_L / sqrt(tau_L^2 + tau_E^2)
-            inv = 1.0 / math.sqrt(tau_l * tau_l + tau_e * tau_e)
-            factor = tau_l * inv
-            tau = tau_e * factor
+            # tau_E / sqrt(1 + (tau_E / tau_L)^2), written with the smaller stress over the
+            # larger: tau_E^2 overflowed above 1.3e154 Pa (a Newtonian film, eta dv / h
+            # unbounded) and the stress fell to 0 instead of tau_L
+            if tau_e <= tau_l:
+                r = tau_e / tau_l
+                factor = 1.0 / math.sqrt(1.0 + r * r)
+                tau = tau_e * factor
+            else:
+                r = tau_l / tau_e
+                root = math.sqrt(1.0 + r * r)
+                factor = r / root
+                tau = tau_l / root
         else:
             factor = 1e-150                  # tau_E / tau_L -> inf, capped at 1e150
             tau = tau_e * factor
