@@ -6,7 +6,9 @@ Public API
 :func:`solve_thermal_line_contact` (thermal, paper 001), :class:`FilmTable` (cache /
 interpolation table for transients), :class:`TehlFilmModel` (the table-backed film model of
 the roller quasi-dynamics, scene ``film = "numerical_tehl"``, see :mod:`.coupling`),
-registry :data:`EHL_SOLVERS` (``"numerical_ehl"``, ``"numerical_tehl"``).
+registry :data:`EHL_SOLVERS` (``"numerical_ehl"``, ``"numerical_tehl"``). Importing the
+package registers the roller drag models ``"numerical_ehl"`` and ``"numerical_tehl"`` and the
+latter's skidding driver (:data:`thermobearing.kinematic_models.TABLE_FILM_DRIVERS`).
 See :mod:`.line`, :mod:`.thermal`, :mod:`.solver`, :mod:`.kernel`,
 :mod:`.cache`.
 """

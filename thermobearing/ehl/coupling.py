@@ -26,6 +26,10 @@ the film that the closed-form film formula (Hamrock-Dowson) got wrong at high sp
   closed_form_contact_forces` evaluated on the TEHL central film (Hertz-zone traction law
   and inlet/outlet Couette shear on the thermal film), with the Poiseuille (rolling) force
   of paper 000 eq. 5, ``-int (h/2) dp/dx dx``, taken from the thermal solution.
+* :func:`solve_roller_tehl` drives the skidding solve with that drag model, solving table
+  nodes only around the converged state; it is registered as the ``"numerical_tehl"``
+  driver of :data:`thermobearing.kinematic_models.TABLE_FILM_DRIVERS`, through which the
+  scene's skidding kinematics reach it (a table-backed film declares its driver there).
 
 Light loads: below Moes ``M = min_moes_m`` (default 1, the rigid/elastic transition) the
 thermal solver needs very long inlet domains (thousands of nodes) and the contact carries
