@@ -367,7 +367,8 @@ class Lubricant:
         ``definition="initial_slope"`` (default): d(ln eta)/dp at p = 0; for a Roelands oil
         alpha = z (ln eta0 + 9.67)/p0 (Hamrock 2004 ch. 4), which reproduces paper 000's
         G = alpha E' = 5000. ``definition="asymptotic_isoviscous"``: Blok's alpha*
-        (:func:`roelands_asymptotic_isoviscous_alpha`), smaller than the initial slope for Roelands.
+        (:func:`roelands_asymptotic_isoviscous_alpha`), smaller than the initial slope for a
+        Roelands oil with z <= 1, larger for z > 1.
         """
         if definition not in ("initial_slope", "asymptotic_isoviscous"):
             raise UnknownNameError("definition", definition,

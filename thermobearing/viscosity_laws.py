@@ -420,7 +420,15 @@ def roelands_asymptotic_isoviscous_alpha(
     Blok (1963) defines alpha* by the integral; the closed form (upper incomplete gamma
     function) follows from the substitution u = (1 + p/p0)^z (derived here; a test checks
     it against numerical quadrature). For a Barus oil alpha* = alpha; for a Roelands oil
-    alpha* is below the initial slope z S / p0.
+    alpha* is below the initial slope z S / p0 when z <= 1 ((1 + p/p0)^z - 1 is concave in
+    p, so eta rises slower than Barus' exp(z S p / p0)) and above it when z > 1 (z = 1.5,
+    eta0 = 0.0188 Pa s: 4.55e-8 against 4.33e-8 1/Pa).
+
+    Evaluated in logarithms, ln(1/alpha*) = ln p0 + S - ln z - ln(S) / z + ln Gamma(1/z) +
+    ln Q(1/z, S) with Q the regularised upper incomplete gamma function: Gamma(1/z)
+    overflows above 1/z = 171 (z < 0.0058, e.g. alpha = 1e-10 1/Pa of an oil with S = 7)
+    and the product Gamma * Q was inf * 0 = NaN; alpha* is then astronomically small
+    (1.9e-87 1/Pa at z = 0.01, eta0 = 0.05 Pa s) and underflows to 0 where it must.
 
     Parameters
     ----------
@@ -439,6 +447,7 @@ def roelands_asymptotic_isoviscous_alpha(
     za = np.asarray(z, dtype=float)
     s = np.log(eta0a) + ROELANDS_LN_ETA_INF
     a = 1.0 / za
-    upper_gamma = special.gammaincc(a, s) * special.gamma(a)
-    inv = p0 * np.exp(s) / (za * s**a) * upper_gamma
-    return _out(1.0 / inv)
+    with np.errstate(divide="ignore"):     # Q(a, S) underflows to 0 only where a << S
+        ln_q = np.log(special.gammaincc(a, s))
+    ln_inv = math.log(p0) + s - np.log(za) - a * np.log(s) + special.gammaln(a) + ln_q
+    return _out(np.exp(-ln_inv))
