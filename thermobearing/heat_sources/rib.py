@@ -63,8 +63,14 @@ outer rib's own contact of a ``"both"``-ribbed bearing is not modelled (paper 00
 geometry has the inner rib only).
 
 Energy: the dynamics' heat is the work rate of the rib forces the integrator applies
-(force x sliding speed, :mod:`~thermobearing.skidding.roller_dynamics_heat`); the thrust
-share is mu Q |v|. The sum is split between the roller ("elements") and the inner ring
+(force x sliding speed, :mod:`~thermobearing.skidding.roller_dynamics_heat`; per face
+|friction force| x |v_i - v_r| + |F_G v_g|, tests/unit/test_rib21_cone_normal.py); the
+thrust share is mu Q |v|. Since 2026-11-24 the contact's normal force acts along the rib
+cone's normal at the contact point (:mod:`thermobearing.rib`, "Contact normal"), so it does
+no work on the rib's rotation: the power the rib forces take from the roller and the inner
+ring equals that heat plus the elastic rate Q d delta/dt (which averages out) to round-off
+(tests/unit/test_prop20_rib.py; with eq. 1's planar normal 0.5 % of a face's heat at
+0.01 rad skew was unbooked). The sum is split between the roller ("elements") and the inner ring
 ("inner_ring") by Blok's high-Peclet partition [blok1963_flash_temperature]
 (:func:`thermobearing.heat_sources.raceway.blok_partition`) with the speeds of the two
 surfaces through the contact (rib: (omega_i - omega_c)(d_i/2 + H_contact), end face: rib

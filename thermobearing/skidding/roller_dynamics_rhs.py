@@ -10,8 +10,9 @@ the rib contact of :mod:`thermobearing.rib` (eqs. 1-17); what the model leaves o
 
 Rib contact: both end faces through the jitted kernel :func:`thermobearing.rib.face_contact`
 (the same code as :func:`~thermobearing.rib.rib_forces`): the contact point moves
-circumferentially with the skew (z_K = (R_s - L_r/2) sin alpha for the paper's spherical
-end face), the friction acts along the full sliding velocity at that point (eq. 24 as a
+circumferentially with the skew (about z_K = (R_s - L_r/2) sin alpha for the paper's
+spherical end face), the normal force acts along the rib cone's normal there (rib.py,
+"Contact normal"), the friction along the full sliding velocity at that point (eq. 24 as a
 vector), so its radial part brakes the roller spin (M_rib,x below) and its circumferential
 part turns the roller about the skew axis.
 
