@@ -162,7 +162,8 @@ def sweep_report(folder: Path) -> Path:
         if len(slices) > MAX_MAP_SLICES:
             notes.append(f"loss maps drawn for the first {MAX_MAP_SLICES} of {len(slices)} "
                          f"combinations of {', '.join(rest)}; every case is in the summary")
-    notes += missing_combinations(df, pcols) + flagged_cases(df, pcols)
+    notes += missing_combinations(df, pcols) + flagged_cases(
+        df, pcols, bearings=_bearing_count(folder / "scene.toml"))
     html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
             "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
@@ -213,14 +214,21 @@ _FLAGS = {"steps over skid limit [-]": "cage skidding or over-skidding beyond th
           "steps under film limit [-]": "a film parameter Lambda below the film limit"}
 
 
-def flagged_cases(df: pd.DataFrame, pcols: list[str]) -> list[str]:
+def flagged_cases(df: pd.DataFrame, pcols: list[str], *, bearings: int = 1) -> list[str]:
     """One note per operating check that flags steps in some cases (the summary's
     ``steps over skid limit [-]`` and its stress and film siblings), naming how many cases
     and the first few by their swept values (when every case is flagged, how many steps
     each: a list of the first six of 20 flagged cases said nothing): the losses of those
     points are of a bearing outside the check's limit (a skidding cage, an overloaded
-    contact, a thin film)."""
+    contact, a thin film).
+
+    ``bearings``: the base scene's bearings. The summary's counts are summed over the
+    bearings (:func:`thermobearing.simulation_summary.summarize_scene`), so with more
+    than one the note says the steps are counted once per bearing: "4 to 6 steps each"
+    of a 3-step protocol on two bearings read as more steps than the protocol has."""
     notes = []
+    per = (f" (summed over the {bearings} bearings: a step flagged at several of them "
+           "counts once for each)" if bearings > 1 else "")
     for col, what in _FLAGS.items():
         if col not in df:
             continue
@@ -235,13 +243,25 @@ def flagged_cases(df: pd.DataFrame, pcols: list[str]) -> list[str]:
             counts = pd.to_numeric(hit[col], errors="coerce")
             named = (f"every case, {_fmt(counts.min())} to {_fmt(counts.max())} steps each"
                      if counts.min() != counts.max() else
-                     f"every case, {_fmt(counts.min())} steps each")
+                     f"every case, {_fmt(counts.min())} steps each") + per
         elif len(hit) > 6:
             named = "; ".join(named.split("; ")[:6]) + f" and {len(hit) - 6} more"
         notes.append(f"{len(hit)} of {len(df)} cases have steps with {what} (summary "
                      f"column '{col}'; limits from the scene's [checks], else the defaults): "
                      f"{named}")
     return notes
+
+
+def _bearing_count(path: Path) -> int:
+    """The number of bearings of the sweep's base scene (``path``: the folder's
+    ``scene.toml``); 1 when the folder has none or it cannot be read (the report says
+    why elsewhere)."""
+    if not path.is_file():
+        return 1
+    try:
+        return max(1, len(_folder_scene(path).bearings))
+    except (InputError, OSError):
+        return 1
 
 
 def _fmt(v: object) -> str:
