@@ -405,7 +405,7 @@ ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 #: a film factor phi_T is the inlet viscosity factor phi_T^(1/0.7) (module docstring)
 DH_VISCOSITY_EXPONENT = 0.7
 #: ``thermal_reduction`` of the line-contact models when the options name none
-DEFAULT_THERMAL_REDUCTION = "none"
+DEFAULT_THERMAL_REDUCTION = "gupta_1992"
 
 
 def _thermal_factor(model, ctx, cs, temp, eta, max_pressure):
