@@ -99,8 +99,14 @@ def combined_frequency_std(estimates, sigmas, weights) -> CombinedFrequency:
     if e.size == 0 or e.shape != s.shape or e.shape != w.shape:
         raise InputError("estimates", e.size, "one or more estimates with a sigma and a "
                          "weight each")
-    if np.any(~np.isfinite(s)) or np.any(s <= 0) or np.any(w <= 0):
-        raise InputError("sigmas", s.tolist(), "finite standard errors > 0 and weights > 0")
+    if np.any(~np.isfinite(s)) or np.any(s <= 0):
+        raise InputError("sigmas", s.tolist(), "finite standard errors > 0")
+    # a NaN or infinite estimate or weight gave a NaN mean with a finite std (max(1, NaN) is
+    # 1: the Birge ratio dropped out), or NaN everywhere
+    if np.any(~np.isfinite(w)) or np.any(w <= 0):
+        raise InputError("weights", w.tolist(), "finite weights > 0")
+    if np.any(~np.isfinite(e)):
+        raise InputError("estimates", e.tolist(), "finite frequencies [Hz]")
     mean = float(np.sum(w * e) / np.sum(w))
     stat = float(math.sqrt(np.sum(w * w * s * s)) / np.sum(w))
     birge = 1.0
