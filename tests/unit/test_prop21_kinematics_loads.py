@@ -1,7 +1,7 @@
 """Property tests of the race-control kinematics at and near zero contact angle and of the
-ball load distribution's Stribeck limit (session 21), beside test_property_kinematics.py
-(CSR bounds, zero spin at the controlling race) and test_prop20_hertz_loads.py (the roller's
-Stribeck sum).
+ball load distribution's Stribeck limit and ball equilibrium (session 21), beside
+test_property_kinematics.py (CSR bounds, zero spin at the controlling race) and
+test_prop20_hertz_loads.py (the roller's Stribeck sum).
 
 Kinematics (:mod:`thermobearing.kinematics`, Jones 1960 / Harris & Kotzalas 2007):
 
@@ -130,3 +130,26 @@ def test_ball_stribeck_sum_without_clearance(log_load):
     assert np.max(np.abs(np.asarray(ld.inner_contact_angle))) <= 1e-12
     assert float(np.max(ld.inner_load)) == pytest.approx(q_max, rel=1e-9)
     assert z * q_max / fr == pytest.approx(4.3373, abs=1e-4)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(name=st.sampled_from(["SKF6304", "QJ1044"]), log_fr=st.floats(1.0, 4.0),
+       log_fa=st.floats(0.0, 3.5), negative=st.booleans(), speed=st.floats(0.0, 1.0))
+def test_every_ball_is_in_equilibrium_with_its_centrifugal_force(name, log_fr, log_fa,
+                                                                 negative, speed):
+    """Each ball of the quasi-static distribution (no gyroscopic moment): the arc forces
+    -Q n and the centrifugal force m omega_m^2 r_b (radially outward) add up to zero, from
+    the returned contact field only (measured 1.4e-9 of the largest force over 60 random
+    states to 20000 r/min (SKF6304) / 5000 r/min (QJ1044); the solver's tolerance is 1e-9 of
+    its load scale)."""
+    b = BEARINGS[name]
+    fa = 10.0**log_fa * (-1.0 if negative and name == "QJ1044" else 1.0)
+    rpm = speed * (20000.0 if name == "SKF6304" else 5000.0)
+    ld = ball_load_distribution(b, 10.0**log_fr, fa, rpm * math.pi / 30.0)
+    assert ld.converged
+    c = ld.contacts
+    fx = -np.sum(c.load * c.normal_x, axis=1)
+    fr = -np.sum(c.load * c.normal_r, axis=1) + np.asarray(ld.centrifugal_force)
+    scale = float(np.max(c.load) + np.max(ld.centrifugal_force))
+    assert float(np.max(np.abs(fx))) <= 1e-7 * scale
+    assert float(np.max(np.abs(fr))) <= 1e-7 * scale
