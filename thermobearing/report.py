@@ -303,7 +303,8 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
     to ``_LEGEND_INSIDE`` curves it sits in the first panel, beyond that outside the
     panels on the right (inside, nine curves of a 4 x 3 x 3 sweep hid the first panel's
     data). Beyond ten curves the line style changes with each colour cycle. A text ``x``
-    (a lubricant preset) is drawn at one position per value, labelled with it.
+    (a lubricant preset) is drawn at one position per value, labelled with it. The panels
+    stand in rows of at most three.
     """
     by = [group] if isinstance(group, str) else list(group or [])
     categories: list[Any] = []
@@ -314,14 +315,21 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
                                                        enumerate(categories)})})
     groups = list(summary.groupby(by)) if by else [((), summary)]
     outside = len(groups) > _LEGEND_INSIDE
-    fig, axes = plt.subplots(1, len(ys), figsize=(4.2 * len(ys) + (2.2 if outside else 0.0),
-                                                  3.5), squeeze=False, layout="constrained")
+    # at most _WHATIF_COLUMNS panels a row: six in one row made a 3000 x 400 px strip that
+    # the report shrank to unreadable panels
+    ncols = min(len(ys), _WHATIF_COLUMNS)
+    nrows = -(-len(ys) // ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(4.2 * ncols + (2.2 if outside else 0.0),
+                                                    3.3 * nrows),
+                             squeeze=False, layout="constrained")
+    for ax in axes.flat[len(ys):]:
+        ax.set_visible(False)
     styles = ("-", "--", ":", "-.")
     for i, (key, g) in enumerate(groups):
         key = key if isinstance(key, tuple) else (key,)
         label = ", ".join(_fmt_value(v) for v in key)
         g = g.sort_values(x)
-        for ax, y in zip(axes.flat, ys, strict=True):
+        for ax, y in zip(axes.flat[:len(ys)], ys, strict=True):
             ax.plot(g[x], g[y], marker="o", linestyle=styles[(i // 10) % len(styles)],
                     label=label or None)
             ax.set_xlabel(x, fontsize=8)
@@ -343,6 +351,8 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
 
 #: what-if curves up to which the legend sits inside the first panel
 _LEGEND_INSIDE = 3
+#: what-if panels per row (more results wrap to further rows)
+_WHATIF_COLUMNS = 3
 
 
 def _fmt_value(v: Any) -> str:

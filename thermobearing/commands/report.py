@@ -13,6 +13,8 @@ from __future__ import annotations
 import argparse
 import itertools
 import json
+import re
+from collections.abc import Mapping
 from html import escape
 from pathlib import Path
 from typing import Any
@@ -175,7 +177,10 @@ def sweep_report(folder: Path) -> Path:
             "case's loss of all its bearings, averaged over its protocol (steps weighted by "
             "their duration); <code>mean total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
             *(f"<p>{escape(n)}</p>" for n in notes),
-            "<h2>Figures</h2>", *(figure_html(k, v) for k, v in figs.items()),
+            "<h2>Figures</h2>",
+            "<p class='note'>each figure is also in the folder as a PNG file: "
+            + escape(", ".join(sweep_figure_file(k) for k in figs)) + "</p>" if figs else "",
+            *(figure_html(k, v) for k, v in figs.items()),
             _crosscheck_html(folder, df, records),
             "<h2>Summary</h2>",
             "<p>the sources named in words; summary.csv has their registered names</p>",
@@ -183,7 +188,34 @@ def sweep_report(folder: Path) -> Path:
             "</body></html>"]
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
+    _write_sweep_pngs(folder, figs)
     return out
+
+
+def sweep_figure_file(title: str) -> str:
+    """The PNG file name of a sweep report figure: ``sweep_loss_by_source.png``,
+    ``sweep_whatif_<parameter>.png``, ``sweep_loss_maps[_<held values>].png``."""
+    def slug(text: str) -> str:
+        return re.sub(r"[^A-Za-z0-9.=+-]+", "_", text).strip("_")
+
+    if title.startswith("what-if: "):
+        return f"sweep_whatif_{slug(title[len('what-if: '):])}.png"
+    if title.startswith("loss maps"):
+        held = title[len("loss maps"):].strip().strip("()").replace(" = ", "=")
+        return f"sweep_loss_maps{'_' + slug(held) if held else ''}.png"
+    if title.startswith("loss by source"):
+        return "sweep_loss_by_source.png"
+    return f"sweep_{slug(title)}.png"
+
+
+def _write_sweep_pngs(folder: Path, figs: Mapping[str, bytes]) -> None:
+    """The sweep report's figures as PNG files beside it (the run report writes its
+    figures so; a sweep's were only inside report.html), replacing the ``sweep_*.png``
+    of an earlier report (a slice or parameter no longer swept leaves none behind)."""
+    for old in folder.glob("sweep_*.png"):
+        old.unlink()
+    for title, png in figs.items():
+        (folder / sweep_figure_file(title)).write_bytes(png)
 
 
 def missing_combinations(df: pd.DataFrame, pcols: list[str]) -> list[str]:
