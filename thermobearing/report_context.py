@@ -110,8 +110,25 @@ def supply_text(scene: Any, lubricant: Any | None) -> str:
         supply += f", oil level {1e3 * s.level:.4g} mm"
     parts.append(supply)
     env = scene.environment
-    parts.append(f"ambient {env.ambient_temperature - _KELVIN:.4g} degC, initial "
-                 f"temperature {env.initial_temperature - _KELVIN:.4g} degC")
+    ambient = f"ambient {env.ambient_temperature - _KELVIN:.4g} degC"
+    network = (bool(set(scene.outputs.want) & {"temperatures", "energy"})
+               or scene.outputs.mode == "steady")
+    if getattr(env, "initial_given", True):
+        parts.append(f"{ambient}, initial temperature "
+                     f"{env.initial_temperature - _KELVIN:.4g} degC")
+    elif network:
+        parts.append(f"{ambient}, initial temperature {env.initial_temperature - _KELVIN:.4g}"
+                     " degC (the ambient: the scene sets none)")
+    else:
+        # a losses-only scene without an initial temperature runs at a fed supply's inlet
+        # ('initial temperature 25 degC' stood beside losses evaluated at the 40 degC inlet)
+        from .unheated import unheated_temperature
+
+        t0, source = unheated_temperature(scene)
+        where = ("the inlet temperature" if source == "supply.inlet_temperature"
+                 else "the ambient")
+        parts.append(f"{ambient}; no initial temperature set and no thermal network: parts "
+                     f"and oil at {where}, {t0 - _KELVIN:.4g} degC")
     return "; ".join(parts)
 
 
