@@ -688,9 +688,20 @@ class Simulation:
         if out_dir is not None:
             from .report import attach_figures, write_report
 
-            attach_figures(results, self.scene)
-            results.write(out_dir)
-            write_report(results, self.scene, Path(out_dir) / "report.html")
+            try:
+                attach_figures(results, self.scene)
+                results.write(out_dir)
+                write_report(results, self.scene, Path(out_dir) / "report.html")
+            except KeyboardInterrupt:
+                # Ctrl-C after the last step, while the figures or the report were drawn
+                # (seconds): the folder had the step tables but no metadata.json, and
+                # `thermobearing report DIR` read as a run without a chain or warnings
+                # (every step was computed: not a 'stopped' run, whose report says so)
+                results.stats["output_interrupted"] = (
+                    "Ctrl-C while the figures and report were written; every step was "
+                    "computed: `thermobearing report DIR` writes them")
+                results.write(out_dir)
+                raise
         return results
 
     def log_step(self, i: int, t: float | None = None) -> None:
