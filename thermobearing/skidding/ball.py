@@ -227,7 +227,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         # the same speed: the previous state exactly (the system may know its residual)
         G0[2] = (guess.cage_speed if float(speed) == guess.inner_speed
                  else guess.cage_speed_ratio * speed)
-        X0[:, 2:5] *= speed / guess.inner_speed
+        if float(speed) != guess.inner_speed:
+            X0[:, 2:5] *= speed / guess.inner_speed
         try:
             # a warm start that needs many iterations is further from the solution than
             # the race-control cold start (measured: a 0 -> 2 kN axial step of the QJ1044

@@ -15,7 +15,7 @@ norm and the state.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -36,12 +36,13 @@ from .ball_newton_kernels import (  # noqa: F401  (the compiled kernels, re-expo
     _propose,
     _refresh_caches,
     _rescale_blocks,
+    _rescale_factors,
     _residual_norm,
     _torque_model,
 )
 from .ball_residual import N_BALL, N_GLOBAL, _residual_one, ball_residual_system  # noqa: F401
 
-__all__ = ["JacobianBlocks", "chord_polish", "newton_block", "trust_region"]
+__all__ = ["JacobianBlocks", "block_factors", "chord_polish", "newton_block", "trust_region"]
 
 # largest Newton step per scaled unknown (positions in microns, spins / (omega_i d_m / D),
 # pocket force / F_s; ring displacement in microns, cage speed / omega_i). Spins 0.5 (with
@@ -69,7 +70,10 @@ class JacobianBlocks:
 
     A (Z, 6, 6) ball blocks, B (Z, 6, 3) ball rows / global columns, C (Z, 3, 6) global
     rows / ball columns, Dg (3, 3); with the scales it was taken at (F_s, xs, gs) so that a
-    later solve can reuse it as a chord Jacobian (:meth:`rescaled`).
+    later solve can reuse it as a chord Jacobian (:meth:`rescaled`). ``factors``: the
+    block-elimination factors (A^-1, A^-1 B, C, S^-1) once a solve has computed them
+    (:func:`block_factors`; empty before), kept with the blocks so that a warm start that
+    hands them over does not factorise them again (the arrays are never modified).
     """
 
     A: np.ndarray
@@ -80,20 +84,50 @@ class JacobianBlocks:
     xs: np.ndarray
     gs: np.ndarray
     Z: int
+    factors: list = field(default_factory=list, compare=False, repr=False)
 
     def rescaled(self, system: ball_residual_system) -> JacobianBlocks:
         """The same physical Jacobian in the scaling of ``system``.
 
         Every residual row is divided by a multiple of F_s (forces F_s, moments F_s D/2,
         cage torque F_s d_m/2) and column c is multiplied by the unknown's scale, so
-        J_new = J_old (F_s,old / F_s,new) (scale_new / scale_old) column by column.
+        J_new = J_old (F_s,old / F_s,new) (scale_new / scale_old) column by column. Factors
+        already computed are rescaled with it (:func:`_rescale_factors`: equal to a new
+        factorisation of the rescaled blocks to round-off).
         """
         xs, gs = system.scales()
-        A, B, C, Dg = _rescale_blocks(self.A, self.B, self.C, self.Dg, self.F_s / system.F_s,
-                                      xs, self.xs, gs, self.gs)
+        f = self.F_s / system.F_s
+        if self.factors:
+            Ainv, AiB, _, Sinv = self.factors[0]
+            A, B, C, Dg, Ainv, AiB, Sinv = _rescale_factors(self.A, self.B, self.C, self.Dg,
+                                                            Ainv, AiB, Sinv, f, xs, self.xs,
+                                                            gs, self.gs)
+            return JacobianBlocks(A, B, C, Dg, system.F_s, xs, gs, self.Z,
+                                  [(Ainv, AiB, C, Sinv)])
+        A, B, C, Dg = _rescale_blocks(self.A, self.B, self.C, self.Dg, f, xs, self.xs, gs,
+                                      self.gs)
         return JacobianBlocks(A, B, C, Dg, system.F_s, xs, gs, self.Z)
 
 
+def block_factors(blocks: JacobianBlocks) -> tuple | None:
+    """(A^-1, A^-1 B, C, S^-1) of ``blocks`` for the block-elimination step
+    (:func:`_factor_blocks`, :func:`_inverse_small`), computed once and kept on the blocks;
+    None when a ball block or the Schur complement S is singular for Gauss-Jordan (the
+    callers then report the ball block, or invert S otherwise)."""
+    if blocks.factors:
+        return blocks.factors[0]
+    C = np.ascontiguousarray(blocks.C)
+    Ainv, Ainv_B, S, ok = _factor_blocks(np.ascontiguousarray(blocks.A),
+                                         np.ascontiguousarray(blocks.B), C,
+                                         np.ascontiguousarray(blocks.Dg))
+    if not ok:
+        return None
+    Sinv, ok = _inverse_small(S)
+    if not ok:
+        return None
+    out = (Ainv, Ainv_B, C, Sinv)
+    blocks.factors.append(out)
+    return out
 
 
 def _run_chord_phase(system, kargs, jac, X, G, R, Gc, Gk, nrm, hist, m, it, *, tol,
@@ -257,6 +291,9 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         return factor(blocks, R, Gc, Gk, G)
 
     def factor(blocks, R, Gc, Gk, G):
+        got = block_factors(blocks)
+        if got is not None:
+            return got
         C = np.ascontiguousarray(blocks.C)
         Ainv, Ainv_B, S, ok = _factor_blocks(np.ascontiguousarray(blocks.A),
                                              np.ascontiguousarray(blocks.B), C,
@@ -264,12 +301,10 @@ def newton_block(system: ball_residual_system, X0: np.ndarray, G0: np.ndarray, *
         if not ok:
             raise ConvergenceError("skidding.ball", norm_of(R, Gc, Gk), "singular ball block",
                                    {"cage_speed": G[2]})
-        Sinv, ok = _inverse_small(S)
-        if not ok:
-            try:
-                Sinv = np.linalg.inv(S)
-            except np.linalg.LinAlgError:
-                Sinv = np.linalg.pinv(S)   # least-squares step of a singular Schur complement
+        try:
+            Sinv = np.linalg.inv(S)
+        except np.linalg.LinAlgError:
+            Sinv = np.linalg.pinv(S)   # least-squares step of a singular Schur complement
         return Ainv, Ainv_B, C, np.ascontiguousarray(Sinv)
 
     can_analytic = analytic and supports_analytic(system)
@@ -475,17 +510,12 @@ def chord_polish(system: ball_residual_system, X: np.ndarray, G: np.ndarray,
     nrm = _residual_norm(R, Gc, Gk)
     if blocks is None or blocks.Z != system.Z:
         return X, G, nrm, False
-    C = np.ascontiguousarray(blocks.C)
-    Ainv, Ainv_B, S, ok = _factor_blocks(np.ascontiguousarray(blocks.A),
-                                         np.ascontiguousarray(blocks.B), C,
-                                         np.ascontiguousarray(blocks.Dg))
-    if not ok:
+    got = block_factors(blocks)
+    if got is None:
         return X, G, nrm, False
-    Sinv, ok = _inverse_small(S)
-    if not ok:
-        return X, G, nrm, False
+    Ainv, Ainv_B, C, Sinv = got
     xs, gs = system.scales()
-    _, _, _, Xn, Gn, _ = _propose(Ainv, Ainv_B, C, np.ascontiguousarray(Sinv), R, Gc, Gk,
+    _, _, _, Xn, Gn, _ = _propose(Ainv, Ainv_B, C, Sinv, R, Gc, Gk,
                                   _CAP_X, _CAP_G, _NO_HIST, 0, xs, gs, X, G)
     try:
         Rn, Gcn, Gkn, _ = system.evaluate(Xn, Gn)

@@ -6,8 +6,9 @@ re-exports every name of this module): the block elimination of the structured J
 the globals, the capped step :func:`_block_step`), the forward-difference blocks
 (:func:`_fd_blocks`), the scaled residual norm (``_residual_norm_nb`` of
 :mod:`.ball_residual_kernels`, imported), the rescaling of a handed-over Jacobian
-(:func:`_rescale_blocks`), the good-Broyden update (:func:`_broyden_step`,
-:func:`_propose`), the cage-torque model of the compiled chord phase (:func:`_torque_model`),
+(:func:`_rescale_blocks`) and of its factors (:func:`_rescale_factors`), the good-Broyden
+update (:func:`_broyden_step`, :func:`_propose`), the cage-torque model of the compiled chord
+phase (:func:`_torque_model`),
 the chord / Broyden iterations of a warm start in one compiled loop (:func:`_chord_phase`,
 which compiles the residual kernel :func:`~thermobearing.skidding.ball_residual_kernels.
 _residual_one` into itself) and the exact torques put back at its returned state
@@ -212,6 +213,42 @@ def _rescale_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray,
         for h in range(ng):
             Dg2[g, h] = Dg[g, h] * rg[h]
     return A2, B2, C2, Dg2
+
+
+@numba.njit(cache=True)
+def _rescale_factors(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray,
+                     Ainv: np.ndarray, AiB: np.ndarray, Sinv: np.ndarray, f: float,
+                     xs: np.ndarray, xs_old: np.ndarray, gs: np.ndarray, gs_old: np.ndarray
+                     ) -> tuple:
+    """:func:`_rescale_blocks` and the block-elimination factors (:func:`_factor_blocks`,
+    :func:`_inverse_small`) of the rescaled Jacobian from those of the original, without a
+    factorisation, in one compiled call. With the column factors of :func:`_rescale_blocks`,
+    D_x = diag(f xs_c / xs_old_c) and D_g = diag(f gs_g / gs_old_g), the blocks are
+    A' = A D_x, B' = B D_g, C' = C D_x, D' = D D_g, so A'^-1 = D_x^-1 A^-1,
+    A'^-1 B' = D_x^-1 A^-1 B D_g, S' = D' - C' A'^-1 B' = S D_g and S'^-1 = D_g^-1 S^-1
+    (the factors of the rescaled blocks to round-off). Returns (A', B', C', D', A'^-1,
+    A'^-1 B', S'^-1)."""
+    A2, B2, C2, Dg2 = _rescale_blocks(A, B, C, Dg, f, xs, xs_old, gs, gs_old)
+    nz, nb, ng = Ainv.shape[0], Ainv.shape[1], AiB.shape[2]
+    rx = np.empty(nb)
+    rg = np.empty(ng)
+    for c in range(nb):
+        rx[c] = f * xs[c] / xs_old[c]
+    for g in range(ng):
+        rg[g] = f * gs[g] / gs_old[g]
+    Ainv2 = np.empty_like(Ainv)
+    AiB2 = np.empty_like(AiB)
+    Sinv2 = np.empty_like(Sinv)
+    for z in range(nz):
+        for i in range(nb):
+            for j in range(nb):
+                Ainv2[z, i, j] = Ainv[z, i, j] / rx[i]
+            for g in range(ng):
+                AiB2[z, i, g] = AiB[z, i, g] * rg[g] / rx[i]
+    for g in range(ng):
+        for h in range(ng):
+            Sinv2[g, h] = Sinv[g, h] / rg[g]
+    return A2, B2, C2, Dg2, Ainv2, AiB2, Sinv2
 
 
 @numba.njit(cache=True)
@@ -437,7 +474,8 @@ def _refresh_caches() -> None:
     refresh_stale_caches("ball_newton_kernels", (_block_step, _inverse_small, _factor_blocks,
                                                  _fd_blocks, _broyden_step,
                                                  _propose, _torque_model, _chord_phase,
-                                                 _rescale_blocks, _exact_torques),
+                                                 _rescale_blocks, _rescale_factors,
+                                                 _exact_torques),
                          (contact_traction, traction, hertz, film, ball_residual_kernels))
 
 

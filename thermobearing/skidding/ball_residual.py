@@ -111,6 +111,7 @@ from .ball_residual_kernels import (  # noqa: F401  (the compiled kernels, re-ex
     _hd1977_central_vec,
     _hertz_rows,
     _refresh_caches,
+    _rescaled_residual,
     _residual_norm_nb,
     _residual_one,
     _rolling_audit,
@@ -604,11 +605,10 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
             # proportional to F_s); the contact fields, tractions and details do not depend
             # on them. Equal to a fresh evaluation to round-off (a few ulp).
             X, G, (R, Gc, _), details, _, fields = self._last
-            f = self.F_s / new.F_s
             t = new._cage_torques(float(G[2]))
-            G0 = np.array([new._g0a, new._g0r, -(t[0] + t[1]) / new.T_s])
-            R, Gc = R * f, Gc * f
-            new._last = (X, G, (R, Gc, G0), details, _residual_norm_nb(R, Gc, G0), fields)
+            R, Gc, G0, nrm = _rescaled_residual(R, Gc, self.F_s / new.F_s, new._g0a,
+                                                new._g0r, -(t[0] + t[1]) / new.T_s)
+            new._last = (X, G, (R, Gc, G0), details, nrm, fields)
             new._last_tr = self._last_tr
         return new
 
