@@ -276,12 +276,21 @@ class _Core:
         raise _NewtonFailure(float(np.abs(R).max()), f"no convergence in {max_iter} iterations")
 
     def consistent_algebraic(self, t: float, y: np.ndarray) -> np.ndarray:
-        """Solve f_alg(t, y) = 0 for the zero-capacity nodes, the others fixed."""
+        """Solve f_alg(t, y) = 0 for the zero-capacity nodes, the others fixed.
+
+        Temperature-dependent conductances are re-assembled at every Newton iterate (and at
+        the result), so the solution satisfies the algebraic equations with the conductances
+        of its own temperatures. They were held at the incoming y: from a uniform start a
+        free-convection edge at a zero-capacity node was solved at its 1e-3 K floor, the
+        first step then re-assembled it at the solved temperatures, the algebraic equation
+        no longer held and exprb43 stopped at t = 0 with 'step size underflow' (a two-node
+        network with an oil stream, residual 1.3e3 W at rtol 1e-7)."""
         if not self.has_alg:
             return y
         alg = self.alg
         y = y.copy()
         for _ in range(30):
+            self.update_system(y)
             f, q = self.f(t, y)
             r = f[alg]
             self.refresh_jacobian(t, y, q)
@@ -291,6 +300,7 @@ class _Core:
             dy = np.linalg.solve(J_aa, -r)
             y[alg] += dy
             if np.max(np.abs(dy)) <= 1e-13 * max(1.0, float(np.max(np.abs(y)))):
+                self.update_system(y)
                 return y
         raise ConvergenceError("network consistent initialisation",
                                float(np.max(np.abs(r))),
