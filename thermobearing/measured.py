@@ -206,6 +206,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     notes: list[str] = []
     stated = stated_units(units, header, idx)
     col_units = _column_units(stated, unit, field, notes)
+    notes += _letter_notes(sensors, stated, col_units, unit, field)
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
     # decimal mark from the sensor cells and plain-number time cells of the first rows
     # (timestamps such as 23.11.2026 would look like decimal points)
@@ -387,6 +388,28 @@ def _column_units(stated: Mapping[str, tuple[str, str]], unit: str, field: str,
                                              stated.items()))
         return {c: u for c, (u, _) in stated.items()}
     return {}
+
+
+def _letter_notes(sensors: Sequence[str], stated: Mapping[str, tuple[str, str]],
+                  col_units: Mapping[str, str], unit: str, field: str) -> list[str]:
+    """A note for each sensor column whose name ends in a bare ``(F)`` / ``[C]`` / ``/F``
+    that is read as a label (``TC (F)``: front), not a unit, while the column is read in
+    another temperature unit: a degF logger's ``TC_DE (F)`` read as degC (95-122 taken as
+    degC) said nothing."""
+    from .measured_layout import bracket_unit, slash_unit
+
+    letters = {"c": "degC", "f": "degF"}
+    out = []
+    for col in sensors:
+        if col in stated:
+            continue
+        letter = (bracket_unit(col) or slash_unit(col)).strip().lower()
+        read = col_units.get(col, unit)
+        if letter in letters and letters[letter] != read:
+            out.append(f"column {col!r}: its {letter.upper()!r} is read as a label, not as "
+                       f"{letters[letter]}; the readings are taken in {read} ({field}.unit): "
+                       f"if they are {letters[letter]}, set unit = \"{letters[letter]}\"")
+    return out
 
 
 def _is_dropout(cell: str) -> bool:

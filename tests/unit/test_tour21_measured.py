@@ -58,3 +58,16 @@ def test_two_different_unit_words_are_no_unit(tmp_path):
     got = read_measured_file(_write(tmp_path / "f.csv", "hours minutes"), "hours minutes",
                              ["TC_DE (F)"], unit="degF")
     np.testing.assert_allclose(got["time [s]"], MINUTES)
+
+
+def test_a_bare_f_in_a_column_name_read_as_degc_is_noted(tmp_path):
+    # the logger wrote 'TC_DE (F)'; the scene forgot unit = "degF": 95-122 read as degC
+    path = _write(tmp_path / "f.csv", "Minutes")
+    got = read_measured_file(path, "Minutes", ["TC_DE (F)"])
+    np.testing.assert_allclose(got["TC_DE (F)"], FAHRENHEIT)  # a label, as documented
+    (note,) = [n for n in got.attrs["notes"] if "label" in n]
+    assert note == ("column 'TC_DE (F)': its 'F' is read as a label, not as degF; the "
+                    "readings are taken in degC (measured.unit): if they are degF, set "
+                    "unit = \"degF\"")
+    fine = read_measured_file(path, "Minutes", ["TC_DE (F)"], unit="degF")
+    assert not [n for n in fine.attrs["notes"] if "label" in n]
