@@ -262,9 +262,12 @@ def test_rib_heat_source_unbalance_option():
     import dataclasses
 
     ctx = _ctx(0.0)
-    # (with a cage that clears the outer ribs, as the geometry check asks)
+    # (with a roller-guided cage that clears the outer ribs: the inner-rib land it was guided
+    # on is gone from a plain inner ring, as the geometry check says)
     outer = dataclasses.replace(ctx.bearing, ribbed_ring="outer",
-                                cage=dataclasses.replace(ctx.bearing.cage, outer_diameter=0.065))
+                                cage=dataclasses.replace(ctx.bearing.cage,
+                                                         guidance="rolling_element",
+                                                         outer_diameter=0.065))
     nu = dataclasses.replace(ctx, bearing=outer)
     with pytest.raises(InputError, match="ribbed_ring"):
         HEAT_SOURCES.get("rib_friction")(nu)

@@ -309,10 +309,10 @@ def cage_churning_geometry(bearing: Any) -> tuple[float, float]:
     (:mod:`thermobearing.skidding.roller_drag`) and the ball solver's
     (:mod:`thermobearing.skidding.ball_models`) take the same numbers.
 
-    The neighbours, not the two lands: an outer-ring-guided cage may run on a guide land
-    outside the rib (D1842926: cage 150/169.6 mm on a 170 mm land, rib 162.23 mm), where
-    the land-to-land gap (162.23 - 142.97 - 19.6)/4 < 0 fell to the 0.1 mm floor; its gaps
-    are 0.2 mm (guide) and 3.515 mm (bore to inner raceway), mean 1.8575 mm."""
+    The neighbours, not the two lands: the body of a cage may face other surfaces than
+    its guide lands (D1842926: cage 150/161.83 mm guided on the 162.23 mm bore of the
+    outer ribs; gaps 0.2 mm (guide) and 3.515 mm (bore to inner raceway, 142.97 mm), mean
+    1.8575 mm)."""
     cage = bearing.cage
     d_c = 0.5 * (cage.inner_diameter + cage.outer_diameter)
     d_in, d_out = cage_neighbour_diameters(bearing)
