@@ -406,6 +406,7 @@ def _result(model: RollerModel, omega: float, psi: np.ndarray, best: tuple[Any, 
                                                                 - model.roller_diameter),
                                  "pitch_diameter": model.pitch_diameter,
                                  "cage_drag_torque": model.cage_drag_torque,
+                                 "thermal_reduction": model.thermal_reduction,
                                  "drag": (None if model.drag is None
                                           else model.drag.state(omega, float(x[z])))},
     )
@@ -612,6 +613,16 @@ def solve_roller(
                          max_iter=max_iter)
     if model.traction_curve is not None:
         _warn_curve_range(model.traction_curve, result)
+    if model.inlet_heating is not None:
+        # the inlet-heating factor's fitted range on the solved contacts (the solve
+        # evaluates it without warnings: its iterates pass far-off states)
+        from .roller_thermal import check_state_range
+
+        check_state_range(model.inlet_heating,
+                          [(result.inner_load, result.inner_entrainment_speed,
+                            result.inner_sliding_speed, result.inner.max_pressure),
+                           (result.outer_load, result.outer_entrainment_speed,
+                            result.outer_sliding_speed, result.outer.max_pressure)])
     return result
 
 

@@ -274,6 +274,7 @@ def closed_form_contact_forces(
     rolling_force: str = "regime_min",
     oil_layer: float | None = None,
     slide: Any = None,
+    inlet_heating: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray] | None = None,
 ) -> LineContactForces:
     """Fluid forces of roller-raceway line contacts, closed form (module docstring).
 
@@ -304,6 +305,13 @@ def closed_form_contact_forces(
         under load shears stiffly enough to carry hundreds of N within one such ulp; the
         slide-variable solve (:mod:`~thermobearing.skidding.roller_slides`) passes V
         itself, so that the traction resolves slides far below the speeds' round-off.
+    inlet_heating : None (isothermal rolling force) or the film thermal-reduction factor
+        ``phi_T(u_e [m/s], |V|/u_e [-], p_H [Pa])`` of the solver's option
+        ``thermal_reduction`` (:func:`~thermobearing.skidding.roller_thermal.
+        inlet_heating_factor`, the heat source's factor): the rolling force Q_x (both closed
+        forms, flooded or starved) is evaluated at the inlet viscosity
+        ``eta0 phi_T^(1/0.7)``, as ``heat_sources.raceway.ehl_rolling_resistance`` does:
+        eq. 35 x phi_T, Martin's rigid force x phi_T^(5/7). Film and shear keep eta0.
 
     Returns
     -------
@@ -320,7 +328,8 @@ def closed_form_contact_forces(
         sub = closed_form_contact_forces(
             q[idx], length, radius, effective_modulus, ur[idx], uro[idx], eta0=eta0,
             alpha=alpha, film=film, traction_law=traction_law, temperature=temperature,
-            rolling_force=rolling_force, oil_layer=oil_layer, slide=slide[idx])
+            rolling_force=rolling_force, oil_layer=oil_layer, slide=slide[idx],
+            inlet_heating=inlet_heating)
 
         def full(a: np.ndarray, fill: float) -> np.ndarray:
             out = np.full(q.shape, fill)
@@ -401,8 +410,21 @@ def closed_form_contact_forces(
 
     # --- rolling force Q_x: min(rigid-isoviscous, Dowson-Higginson eq. 35) --------------
     usum_abs = np.abs(usum)
-    qx_rigid = k_qr * eta0 * usum_abs * length * np.sqrt(radius / h_r)
-    qx_dh = dowson_higginson_rolling_force(0.5 * usum_abs, eta0, alpha, effective_modulus,
+    eta_roll: Any = eta0
+    if inlet_heating is not None and np.any(loaded):
+        # inlet shear heating: the rolling force at the effective inlet viscosity
+        # eta0 phi_T^(1/0.7) (roller_thermal module docstring); the starved rigid film is
+        # solved again at that viscosity (its meniscus moves with the film)
+        from .roller_thermal import viscosity_exponent
+
+        phi = inlet_heating(ue, np.abs(slide) / ue, p_h)
+        eta_roll = eta0 * np.where(loaded, phi, 1.0) ** (1.0 / viscosity_exponent())
+        if oil_layer is None:
+            h_r = h_r * (eta_roll / eta0)
+        else:
+            h_r, _, k_qr = rigid_starved_film(w_safe, 2.0 * ue, radius, eta_roll, oil_layer)
+    qx_rigid = k_qr * eta_roll * usum_abs * length * np.sqrt(radius / h_r)
+    qx_dh = dowson_higginson_rolling_force(0.5 * usum_abs, eta_roll, alpha, effective_modulus,
                                            radius) * length
     if rolling_force == "regime_min":
         qx = np.minimum(qx_rigid, qx_dh)
@@ -463,6 +485,8 @@ def closed_form_drag_model() -> Callable[..., LineContactForces]:
 
 #: the drag model takes an exact ``slide`` keyword (the slide-variable solve may pass it)
 closed_form_contact_forces.exact_slide = True  # type: ignore[attr-defined]
+#: the drag model takes the ``inlet_heating`` keyword (option ``thermal_reduction``)
+closed_form_contact_forces.thermal_rolling = True  # type: ignore[attr-defined]
 
 
 def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
@@ -512,4 +536,6 @@ def curve_contact_forces(base: Callable[..., LineContactForces], curve: Any
             half_width=side.half_width, max_pressure=side.max_pressure, hertz_traction=f_hz)
 
     forces.exact_slide = getattr(base, "exact_slide", False)  # type: ignore[attr-defined]
+    forces.thermal_rolling = getattr(  # type: ignore[attr-defined]
+        base, "thermal_rolling", False)
     return forces

@@ -242,4 +242,6 @@ def maxwell_contact_forces(base: Callable[..., LineContactForces], shear_modulus
             half_width=side.half_width, max_pressure=side.max_pressure, hertz_traction=f_hz)
 
     forces.exact_slide = getattr(base, "exact_slide", False)  # type: ignore[attr-defined]
+    forces.thermal_rolling = getattr(  # type: ignore[attr-defined]
+        base, "thermal_rolling", False)
     return forces

@@ -53,6 +53,9 @@ class RollerModel:
     traction_law, contact_forces (drag model callable), cage_drag_torque [N m].
     Oil drag: ``drag`` (:class:`~thermobearing.skidding.roller_drag.RollerDrag`, or None:
     none, paper 000).
+    Inlet heating: ``thermal_reduction`` (a ``film.THERMAL_FILM`` name) and its factor
+    ``inlet_heating`` (u_e, S, p_H) -> phi_T, None for "none"
+    (:mod:`~thermobearing.skidding.roller_thermal`).
     """
 
     pitch_diameter: float
@@ -87,6 +90,8 @@ class RollerModel:
     traction_curve: Any = None
     pocket_film: str = "one_face"
     drag: Any = None
+    thermal_reduction: str = "none"
+    inlet_heating: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray] | None = None
 
     @property
     def theoretical_cage_speed_ratio(self) -> float:
@@ -155,6 +160,7 @@ def build_model(
     traction_curve: Any = None,
     pocket_film: str = "one_face",
     drag: Any = None,
+    thermal_reduction: str | None = None,
 ) -> RollerModel:
     """Collect geometry, stiffness, fluid properties and models for the residual.
 
@@ -240,6 +246,20 @@ def build_model(
         builds from the oil supply): the roller drag enters each roller's orbital balance
         (pocket force), the cage churning and guide-land moments the cage equation, the
         inner-ring churning the shaft torque.
+    thermal_reduction : inlet shear heating of the raceway rolling force Q_x (paper 000
+        eq. 35 and its rigid-isoviscous form), a ``film.THERMAL_FILM`` name, e.g.
+        "gupta_1992", the line-contact rolling-resistance heat source's default
+        (``heat_sources.raceway.DEFAULT_THERMAL_REDUCTION``). None (default) is
+        ``roller_thermal.SOLVER_DEFAULT_THERMAL_REDUCTION`` ("none" for now: the switch to
+        the heat source's default waits for the pinned roller states it moves) for the
+        closed-form drag and "none" for a drag model that integrates its own film pressure
+        (a name other than "none" is refused there). The factor phi_T of each contact, at
+        its entrainment speed, slide-to-roll ratio and Hertz pressure, is the heat source's
+        (the lubricant's beta and k_f at ``temperature``), applied as the inlet viscosity
+        eta0 phi_T^(1/0.7) of the rolling force only
+        (:mod:`~thermobearing.skidding.roller_thermal`). With ``viscosity`` given the oil is
+        isothermal (beta = 0) and phi_T = 1. The clearance film of ``clearance_film``
+        stays isothermal.
     """
     if drag is not None:
         from .roller_drag import RollerDrag
@@ -317,6 +337,10 @@ def build_model(
         forces = maxwell_contact_forces(
             forces, None if fluid_shear_modulus is None else float(fluid_shear_modulus),
             film_pressure)
+    from .roller_thermal import inlet_heating_factor, resolve_thermal_reduction
+
+    thermal_reduction = resolve_thermal_reduction(
+        thermal_reduction, bool(getattr(forces, "thermal_rolling", False)), drag_model)
     return RollerModel(
         pitch_diameter=d_m, roller_diameter=d, length=length, n_rollers=bearing.n_rollers,
         roller_mass=bearing.roller_mass, radius_inner=r_i, radius_outer=r_o,
@@ -332,5 +356,7 @@ def build_model(
         unloaded_zone=unloaded_zone, ring_support=ring_support,
         fluid_shear_modulus=None if fluid_shear_modulus is None else float(fluid_shear_modulus),
         film_pressure=film_pressure, traction_curve=traction_curve, pocket_film=pocket_film,
-        drag=drag,
+        drag=drag, thermal_reduction=thermal_reduction,
+        inlet_heating=inlet_heating_factor(thermal_reduction, lubricant, temperature, eta0,
+                                           e_prime),
     )

@@ -98,6 +98,9 @@ def evaluate(model: RollerModel, omega: float, omega_r: np.ndarray, omega_c: flo
     common = dict(eta0=model.eta0, alpha=model.alpha, traction_law=model.traction_law,
                   temperature=model.temperature, rolling_force=model.rolling_force,
                   oil_layer=model.oil_layer)
+    if model.inlet_heating is not None:
+        # inlet shear heating of the rolling force (option thermal_reduction)
+        common["inlet_heating"] = model.inlet_heating
     v_i, v_o = u_ri - u_roll, u_ro - u_roll
     exact_i: dict[str, np.ndarray] = {}
     exact_o: dict[str, np.ndarray] = {}

@@ -209,7 +209,9 @@ class RollerSkiddingResult:
           ISO VG 46 at 320 K);
         * ``extras["raceway_rolling_force"]``: the rolling force Q_x of each raceway
           (paper 000 eq. 35 or its rigid-isoviscous / starved / clearance-film forms, as the
-          solve used them), race name -> (Z,) [N];
+          solve used them, at the inlet viscosity of the solver's ``thermal_reduction``,
+          whose name is ``extras["raceway_rolling_thermal_reduction"]``), race name -> (Z,)
+          [N];
         * ``extras["pocket_friction"]``: the pocket-film friction f_d (paper 000 eqs. 37-38)
           [N], which the pocket source books as f_d |omega_r| D/2 instead of a boundary
           friction coefficient times F_d;
@@ -244,7 +246,9 @@ class RollerSkiddingResult:
                 traction=traction))
             rolling[race] = np.asarray(f.rolling_force, float).copy()
         extras = {"pocket_friction": self.pocket_friction, "slip": self.slip,
-                  "raceway_rolling_force": rolling}
+                  "raceway_rolling_force": rolling,
+                  "raceway_rolling_thermal_reduction": str(
+                      self.extras.get("thermal_reduction", "none"))}
         drag = self.drag
         element_drag = None
         if drag:
