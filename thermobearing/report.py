@@ -148,7 +148,10 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
         label = name[0] if len(name) == 1 else f"{name[0]}, {name[1]:.0f} r/min"
         ax.plot(g["_x"], g["cage speed ratio [-]"], "o-", ms=3, label=label)
         if "theoretical cage speed ratio [-]" in g:
-            ax.plot(g["_x"], g["theoretical cage speed ratio [-]"], "k--", lw=0.8)
+            # named once in the legend: the PNG file is read without the report's caption
+            named = "theoretical (epicyclic) CSR" not in ax.get_legend_handles_labels()[1]
+            ax.plot(g["_x"], g["theoretical cage speed ratio [-]"], "k--", lw=0.8,
+                    label="theoretical (epicyclic) CSR" if named else None)
     if labels:
         every = max(1, math.ceil(len(labels) / 30))
         ax.set_xticks(np.arange(0, len(labels), every), labels[::every], rotation=90,
@@ -156,7 +159,9 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
     ax.set_xlabel(xlabel)
     ax.set_ylabel("cage speed ratio CSR [-]")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    handles, names = ax.get_legend_handles_labels()
+    order = sorted(range(len(names)), key=lambda i: names[i] == "theoretical (epicyclic) CSR")
+    ax.legend([handles[i] for i in order], [names[i] for i in order], fontsize=7)
     return _png(fig)
 
 

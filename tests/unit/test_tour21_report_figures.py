@@ -81,3 +81,24 @@ def test_legend_stands_beside_the_axes_not_over_the_readings(tmp_path, figure):
     legend_box = ax.get_legend().get_window_extent(renderer)
     axes_box = ax.get_window_extent(renderer)
     assert legend_box.x0 >= axes_box.x1  # wholly right of the plotting area
+
+
+def test_cage_speed_figure_names_the_theoretical_line(monkeypatch):
+    """The dashed epicyclic ratio was named only in the report's caption, not in the PNG
+    (which the run folder also holds as a file): its legend had the bearings only."""
+    from thermobearing import report
+
+    box = {}
+
+    def keep(fig):
+        box["fig"] = fig
+        return b""
+
+    monkeypatch.setattr(report, "_png", keep)
+    rows = [{"step": i, "bearing": b, "speed [rpm]": 1800.0, "radial load [kN]": 1.0,
+             "axial load [kN]": 2.0 * i, "cage speed ratio [-]": 0.2 + 0.1 * i,
+             "theoretical cage speed ratio [-]": 0.45}
+            for i in range(3) for b in ("drive_end", "non_drive_end")]
+    report.fig_csr(pd.DataFrame(rows))
+    labels = [t.get_text() for t in box["fig"].axes[0].get_legend().get_texts()]
+    assert labels == ["drive_end", "non_drive_end", "theoretical (epicyclic) CSR"]
