@@ -7,7 +7,9 @@ the SI unit declared for that field. A bare number is taken to be SI already. Sp
 data sheets that pint does not read are accepted too: ``"16000 r/min"`` (``rev/min``),
 a bare exponent digit after a length unit (``"30 mm3/h"``, ``"32 mm2/s"``), the
 one-character degree signs ``"35 \u2103"`` / ``"95 \u2109"``; a decimal
-comma (``"0,5 kN"``) is an error that shows the value with a point.
+comma (``"0,5 kN"``) is an error that shows the value with a point. A frequency written
+as a rotation speed counts revolutions (``"1812 rpm"`` is 30.2 Hz, ``"6.283 rad/s"`` 1 Hz),
+and a frequency without an angle is refused for an angular speed (``"30 Hz"``).
 """
 
 from __future__ import annotations
@@ -164,6 +166,11 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
                          f"'{60 * rev_s:.6g} rpm', '{rev_s:.6g} rev/s' or "
                          f"'{2 * math.pi * rev_s:.6g} rad/s' for {rev_s:.6g} revolutions per "
                          f"second ({value!r} would read as {rev_s:.6g} rad/s, 2 pi low)")
+    if target in ("Hz", "1/s") and unit_text and _names_an_angle(unit_text):
+        # a rotation speed given for a frequency ("1812 rpm", "189.8 rad/s" for a shaft or
+        # cage frequency) is that many revolutions per second: pint takes the radian as 1,
+        # and "60 rpm" read as 6.283 Hz (2 pi high)
+        target = "revolution/second"
     try:
         out = _convert(float(number), unit_text or "dimensionless", target)
     except pint.errors.DimensionalityError:
@@ -275,6 +282,18 @@ def cycles_per_time(unit_text: str) -> bool:
         for name in names)
 
 
+@functools.lru_cache(maxsize=64)
+def _names_an_angle(unit_text: str) -> bool:
+    """True for a unit with one angle in it (``rpm``, ``rad/s``, ``deg/s``, ``turn/s``,
+    ``rps``: radian / second in pint's root units), False for a plain frequency (``Hz``,
+    ``1/s``, ``1/min``) or an unparsable unit."""
+    try:
+        root = unit_registry().Quantity(1.0, unit_text).to_root_units().units
+    except Exception:  # noqa: BLE001 - an unparsable unit is refused by the conversion
+        return False
+    return dict(root._units).get("radian") == 1
+
+
 def _convert(number: float, unit_text: str, target: str) -> float:
     """``number unit_text`` in ``target`` (pint; memoised: configs repeat the same few
     quantities -- two bearings of one preset, a sweep's scenes -- and a conversion is a pure
@@ -298,9 +317,12 @@ def from_si(value: float, unit: str, kind: str | None = None) -> float:
     ``kind="temperature_difference"``: ``value`` is a difference [K] and an offset unit
     means its degrees (0.5 K in ``"degC"`` is 0.5, in ``"degF"`` 0.9), the inverse of
     :func:`to_si` for that kind; without it ``"degC"`` is read as a temperature (0.5 K is
-    -272.65 degC)."""
+    -272.65 degC). ``kind="frequency"``: a unit with an angle (``rpm``, ``rad/s``) counts
+    revolutions, as :func:`to_si` reads it (1 Hz is 60 rpm, 6.283 rad/s)."""
     if kind == "temperature_difference":
         unit = _DIFFERENCE_OF.get(unit, unit)
+    if kind == "frequency" and _names_an_angle(unit):  # 1 Hz in rpm is 60 (not 9.55)
+        return _convert(float(value), "revolution/second", unit)
     a, b = _from_si_affine(unit)
     return float(a * value + b)
 

@@ -6,6 +6,9 @@ sheets use for it.
   unit (``kind`` given, so a temperature difference in ``degC`` stays a difference) reads
   back as the same SI value (17 digits: to 1e-14);
 - :func:`from_si` inverts :func:`to_si`: the number written is the number read;
+- a frequency written as a rotation speed counts revolutions: ``"1812 rpm"`` is 30.2 Hz
+  and ``"6.283 rad/s"`` 1 Hz (pint takes the radian as 1: they read as 189.75 and 6.283 Hz,
+  2 pi high; the validation runners' shaft and cage frequencies take such strings);
 - linearity: a kind without an offset converts ``2 v`` to twice what it converts ``v``
   to, and a temperature difference is an offset-free kind whatever its unit (``"10 degC"``
   and ``"18 degF"`` as differences are 10 K; ``"18 degF"`` was refused as not convertible
@@ -56,7 +59,8 @@ UNITS = {
     "thermal_conductivity": ["W/(m*K)", "W/m/K", "mW/(m*K)"],
     "heat_transfer_coefficient": ["W/(m**2*K)", "W/m2/K", "W/(m2*K)", "kW/(m**2*K)"],
     "conductance": ["W/K", "kW/K", "mW/K"],
-    "frequency": ["Hz", "kHz", "1/s", "1/min"],
+    "frequency": ["Hz", "kHz", "1/s", "1/min", "rpm", "r/min", "rev/s", "rad/s", "deg/s",
+                  "turn/s"],
     "inverse_pressure": ["1/Pa", "1/GPa", "1/MPa", "m**2/N", "mm2/N", "1/bar"],
     "inverse_temperature": ["1/K", "K**-1"],
     "stiffness": ["N/m", "N/mm", "N/um", "kN/mm", "N/\u00b5m"],
@@ -116,3 +120,24 @@ def test_a_difference_is_written_back_as_a_difference():
     assert format_quantity(0.5, "degF", kind="temperature_difference") == "0.9 degF"
     assert format_quantity(0.5, "degC") == "-272.6 degC"
     assert from_si(300.0, "degC") == pytest.approx(26.85, rel=1e-12)
+
+
+@pytest.mark.parametrize(("text", "hertz"), [
+    ("60 rpm", 1.0), ("1812 rpm", 30.2), ("1812 r/min", 30.2), ("1 rev/s", 1.0),
+    ("6.283185307179586 rad/s", 1.0), ("360 deg/s", 1.0), ("1 turn/s", 1.0), ("1 Hz", 1.0),
+    ("60 1/min", 1.0), ("25.6 kHz", 25600.0),
+])
+def test_rotation_speeds_as_frequencies_count_revolutions(text, hertz):
+    assert to_si(text, "frequency") == pytest.approx(hertz, rel=1e-12)
+
+
+def test_angular_speeds_are_unchanged():
+    """The angular-speed kind keeps pint's reading (1 rpm = 2 pi / 60 rad/s) and refuses a
+    frequency without an angle."""
+    from thermobearing.errors import InputError
+
+    assert to_si("1800 rpm", "angular_speed") == pytest.approx(60.0 * math.pi, rel=1e-12)
+    assert from_si(60.0 * math.pi, "rpm") == pytest.approx(1800.0, rel=1e-12)
+    assert from_si(30.2, "rpm", "frequency") == pytest.approx(1812.0, rel=1e-12)
+    with pytest.raises(InputError, match="rpm"):
+        to_si("30 Hz", "angular_speed")
