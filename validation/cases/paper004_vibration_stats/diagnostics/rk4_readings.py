@@ -20,7 +20,7 @@ change equations (ball damping on the relative velocity, a massless ball) use th
 model below, a re-implementation of paper 004 eqs. 4-22 with friction and ball spins, which in
 ``absolute`` mode is checked against the library (printed, max |a| difference). Case: SKF 6304,
 2000 r/min, W = 2000 N, 0.05 s settling, 0.5 s record at 100 kHz. SI units.
-Run: ``python rk4_readings.py`` (about 1-2 min).
+Run: ``python rk4_readings.py`` (3 min of CPU; 11 min wall on a shared 2-core machine).
 """
 
 from __future__ import annotations
@@ -347,6 +347,10 @@ def main() -> None:
     for g in (1.04, 1.06, 1.08, 1.10, 1.12, 1.15):
         p = dataclasses.replace(p0, ball_mass=g * p0.ball_mass)
         print(f"  g = {g:.2f}: {_table2_and_stability(p)}")
+    print("Part 5b: ball damping c_b scaled by e (R0 otherwise)")
+    for e in (0.0, 0.25, 0.5, 0.75, 1.5, 2.0):
+        p = dataclasses.replace(p0, ball_damping=e * p0.ball_damping)
+        print(f"  e = {e:.2f}: {_table2_and_stability(p)}")
 
     print("Part 6: both rows of Table 2 at one K (f from 0.30 to 0.90 by 0.0025): full model "
           "(RK4 2.5e-6 s) and Sunnersjo's model (vibration.simulate_sunnersjo, same K, gap, "
