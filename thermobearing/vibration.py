@@ -58,8 +58,11 @@ part is oscillatory with the largest frequency of the ball between its two conta
 overall. Both share one right-hand side (numba).
 
 Measured (``benchmarks/bm8_vibration.py``, SKF 6304, 2000 r/min, 2000 N, s_c = 5 %): RK4 at the
-paper's 1e-5 s diverges (ball radial mode, omega h = 2.9). With the paper's mild slope (mu_m =
-0.01, dv_m = 0.1 m/s) both schemes are limited by the same mechanical error and RK4 is 1.3-1.4
+paper's 1e-5 s diverges from rest (ball radial mode: at s_c = 0 the start transient's ball-load
+overshoot, 3991 N against 1481 N steady, puts omega h at 3.49; at the steady loads it is 2.96,
+marginal, and a settled record at 1e-5 s equals the converged one; paper004_vibration_stats
+SOURCE.md, "Last check"). With the paper's mild slope (mu_m = 0.01, dv_m = 0.1 m/s) both
+schemes are limited by the same mechanical error and RK4 is 1.3-1.4
 times cheaper at equal accuracy (the cost of the exact spin flows); with a steep slope (mu_m =
 0.05, dv_m = 0.01 m/s) RK4 needs 3e-7 s and the split scheme is 4-7 times cheaper at errors of
 1e-4-1e-3 (CPU time, one run; the ratios move by some 20 % between runs on a shared machine).
