@@ -278,7 +278,7 @@ class RibGeometry:
         gp = self.params()
 
         def one(aa: float) -> tuple[float, float, float]:
-            _, px, py, pz, blend, _, _, _ = _support(gp, side, aa)
+            _, px, py, pz, blend, _, _, _, _ = _support(gp, side, aa)
             c, s = math.cos(aa), math.sin(aa)
             return 0.5 * self.roller_diameter + py, -px * s + pz * c, blend
 
@@ -412,10 +412,11 @@ def rib_sliding_speed(geom: RibGeometry, inner_speed: Any, cage_speed: Any, roll
 
 @njit(cache=True)
 def _support(gp: np.ndarray, side: int, a: float
-             ) -> tuple[float, float, float, float, float, float, float, float]:
-    """(h, p_x, p_y, p_z, on_blend, sin phi, cos phi, |m_yz|) of end face ``side`` at skew
-    ``a`` [rad]: the depth h [m] of its deepest point in the rib cone, that point in roller
-    axes [m] (x times ``side``), and the rib normal there.
+             ) -> tuple[float, float, float, float, float, float, float, float, float]:
+    """(h, p_x, p_y, p_z, on_blend, sin phi, cos phi, |m_yz|, r_P) of end face ``side`` at
+    skew ``a`` [rad]: the depth h [m] of its deepest point in the rib cone, that point in
+    roller axes [m] (x times ``side``), the rib normal there and the point's distance r_P [m]
+    from the bearing axis.
 
     The rib is a cone of revolution about the bearing axis (paper 003 eq. 10 takes its
     circumferential curvature tan(theta_f)/(d_i/2 + H_contact)); in a meridional half-plane
@@ -445,22 +446,33 @@ def _support(gp: np.ndarray, side: int, a: float
     c = math.cos(a)
     s = math.sin(a)
     # sphere centre's offset: its meridional plane is the contact's on the sphere
-    phi = math.atan2(-(hl - rs) * side * s, rc0)
-    px = py = pz = myz = 0.0
+    # (sin, cos of phi from the point's coordinates: no trigonometric calls)
+    zc = -(hl - rs) * side * s
+    rr = math.sqrt(zc * zc + rc0 * rc0)
+    sf = zc / rr
+    cf = rc0 / rr
+    # rib normal in roller axes (x times side)
+    mx = ct * c + side * st * sf * s
+    my = -st * cf
+    mz = side * ct * s - st * sf * c
+    myz = math.sqrt(my * my + mz * mz)
     blend = 0.0
-    first = True
+    if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
+        blend = 1.0
+    # the sphere: its centre's plane is exact
+    px = side * (hl - rs + rs * mx)
+    py = rs * my
+    pz = rs * mz
+    if blend < 0.5:
+        # closed form: r_P = r_C - R_s st (n's radial part is -st in the centre's plane),
+        # h = ct (L_r/2 - R_s) cos(a) + R_s - st (r_C - rc0)
+        return (ct * (hl - rs) * c + rs - st * zc * zc / (rr + rc0), px, py, pz, 0.0, sf, cf,
+                myz, rr - rs * st)
+    rt = gp[_G_RT]
+    rc = gp[_G_RCH]
+    xt = hl - rs + gp[_G_XT]
     for _ in range(60):
-        sf = math.sin(phi)
-        cf = math.cos(phi)
-        # rib normal in roller axes (x times side)
-        mx = ct * c + side * st * sf * s
-        my = -st * cf
-        mz = side * ct * s - st * sf * c
-        myz = math.sqrt(my * my + mz * mz)
-        if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * gp[_G_RT]:
-            rt = gp[_G_RT]
-            rc = gp[_G_RCH]
-            xt = hl - rs + gp[_G_XT]
+        if gp[_G_CAP] > 0.5 and myz * gp[_G_XT] > mx * rt:
             px = side * (xt + rc * mx)
             py = rt * my / myz + rc * my
             pz = rt * mz / myz + rc * mz
@@ -470,22 +482,26 @@ def _support(gp: np.ndarray, side: int, a: float
             py = rs * my
             pz = rs * mz
             blend = 0.0
-            if first:
-                break       # the sphere centre's plane: exact
-        new = math.atan2(-px * s + pz * c, rc0 + py)
-        done = abs(new - phi) <= 1e-15
-        phi = new
-        first = False
+        # the point's own meridional angle
+        qz = -px * s + pz * c
+        qy = rc0 + py
+        rr = math.sqrt(qz * qz + qy * qy)
+        done = abs(qz / rr - sf) <= 1e-15
+        sf = qz / rr
+        cf = qy / rr
         if done:
             break
-    sf = math.sin(phi)
-    cf = math.cos(phi)
+        mx = ct * c + side * st * sf * s
+        my = -st * cf
+        mz = side * ct * s - st * sf * c
+        myz = math.sqrt(my * my + mz * mz)
     r_x = px * c + pz * s
     r_z = -px * s + pz * c
     # r(P) - rc0 without cancellation
-    dr = (py * (2.0 * rc0 + py) + r_z * r_z) / (math.sqrt((rc0 + py) ** 2 + r_z * r_z) + rc0)
+    rp = math.sqrt((rc0 + py) ** 2 + r_z * r_z)
+    dr = (py * (2.0 * rc0 + py) + r_z * r_z) / (rp + rc0)
     h = side * ct * r_x - st * dr
-    return h, px, py, pz, blend, sf, cf, myz
+    return h, px, py, pz, blend, sf, cf, myz, rp
 
 
 @njit(cache=True)
@@ -512,10 +528,11 @@ def face_contact(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: f
 
 
 @njit(cache=True)
-def _contact_radii(gp: np.ndarray, a: float, px: float, py: float, pz: float, blend: float,
+def _contact_radii(gp: np.ndarray, rp: float, py: float, pz: float, blend: float,
                    myz: float) -> tuple[float, float]:
     """Principal radii (R_x, R_y) [m] of the end-face / rib contact at the point
-    (px, py, pz) [m, roller axes] of :func:`_support` (paper 003 eqs. 1-13): on the chamfer
+    (., py, pz) [m, roller axes] of :func:`_support`, r_P [m] from the bearing axis
+    (paper 003 eqs. 1-13): on the chamfer
     blend (``blend`` > 0.5) the chamfer's radius and the blend's second principal radius
     rho/|m_yz| (the normal's run to the roller axis); on the crowned end face the sphere's
     radius combined with the rib cone's circumferential curvature, eq. 10, at the contact
@@ -524,9 +541,7 @@ def _contact_radii(gp: np.ndarray, a: float, px: float, py: float, pz: float, bl
     if blend > 0.5:
         return gp[_G_RCH], math.sqrt(py * py + pz * pz) / myz
     rs = gp[_G_RS]
-    r_z = -px * math.sin(a) + pz * math.cos(a)
-    r_p = math.sqrt((gp[_G_RC0] + py) ** 2 + r_z * r_z)
-    return 1.0 / (1.0 / rs + (gp[_G_ST] / gp[_G_CT]) / r_p), rs
+    return 1.0 / (1.0 / rs + (gp[_G_ST] / gp[_G_CT]) / rp), rs
 
 
 @njit(cache=True)
@@ -550,11 +565,11 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     H_contact [m]; circumferential offset z_K [m]; friction heat mu Q |v| + F_G |v_g| [W];
     circumferential friction (Coulomb + drag) on the roller [N].
     """
-    h, px, py, pz, blend, sf, cf, myz = _support(gp, side, a)
+    h, px, py, pz, blend, sf, cf, myz, rp = _support(gp, side, a)
     ct = gp[_G_CT]
     st = gp[_G_ST]
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    rx, ry = _contact_radii(gp, a, px, py, pz, blend, myz)
+    rx, ry = _contact_radii(gp, rp, py, pz, blend, myz)
     q = 0.0
     if delta > 0.0:
         q = _stiffness_bh(rx, ry, gp[_G_E]) * delta * math.sqrt(delta)
@@ -660,7 +675,7 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
     if eta <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
     ct = gp[_G_CT]
-    h, px, py, pz, blend, sf, _, myz = _support(gp, side, a)
+    h, px, py, pz, blend, sf, _, myz, rp = _support(gp, side, a)
     c = math.cos(a)
     s = math.sin(a)
     r_x = px * c + pz * s
@@ -669,7 +684,7 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
     if v_n <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
     delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
-    rx, ry = _contact_radii(gp, a, px, py, pz, blend, myz)
+    rx, ry = _contact_radii(gp, rp, py, pz, blend, myz)
     gap = max(-delta, floor)
     f_s = 6.0 * math.pi * eta * rx * ry * v_n / gap
     # along -n at the contact point: n_z = -st sin(phi) gives a circumferential part
