@@ -480,6 +480,22 @@ class CheckLog:
                         and c.film_parameter < lim.min_film_parameter for c in cs)
         return {"skid": int(skid), "stress": int(stress), "film": int(film)}
 
+    def flagged_step_indices(self) -> dict[str, list[int]]:
+        """The schedule steps each check flags, as :meth:`flagged_steps` counts them (the
+        worst state of a step): ``{"skid": [...], "stress": [...], "film": [...]}``,
+        ascending; the report marks those rows of its loss tables."""
+        lim = self.limits
+        out: dict[str, list[int]] = {"skid": [], "stress": [], "film": []}
+        for i, cs in sorted(self.steps.items()):
+            if any(abs(c.slip) > lim.skid_limit for c in cs):
+                out["skid"].append(int(i))
+            if any(c.max_pressure > c.stress_limit for c in cs):
+                out["stress"].append(int(i))
+            if any(c.film_parameter is not None and c.film_parameter < lim.min_film_parameter
+                   for c in cs):
+                out["film"].append(int(i))
+        return out
+
     def _stress_line(self, where: str, i: int, c: StateCheck) -> str:
         """The summary line of the contact-stress check (worst state ``c`` at step ``i``)."""
         iso = ISO76_STRESS.get(c.family)

@@ -417,7 +417,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
             notes.append(f"lubricant: not readable for the report ({exc})")
         parts.append(context_html(scene, results.tables, bearings, lubricant, notes))
     parts.append(losses_html(results.tables.get("losses"), results.tables, scene, bearings,
-                             lubricant))
+                             lubricant, flagged=results.flagged))
     parts.append("<h2 id='figures'>Figures</h2>")
     parts += [figure_html(name, png, _caption(name)) for name, png in results.figures.items()]
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")

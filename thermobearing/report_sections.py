@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import html
 import math
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -97,9 +98,13 @@ def context_html(scene: Any, tables: dict[str, pd.DataFrame], bearings: dict[str
 
 
 def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], scene: Any,
-                bearings: dict[str, Any], lubricant: Any | None) -> str:
+                bearings: dict[str, Any], lubricant: Any | None, *,
+                flagged: Mapping[str, Mapping[str, Sequence[int]]] | None = None) -> str:
     """'Loss breakdown': by source [W] and share [%], the glossary, by receiving component,
-    the sum check and the catalogue cross-check."""
+    the sum check and the catalogue cross-check. ``flagged`` (``Results.flagged``): the
+    steps each operating check flags per bearing; the table by source then names them in
+    a column ``operating checks`` (the validity warnings list the steps; the rows of the
+    losses they apply to said nothing)."""
     esc = html.escape
     parts = ["<h2 id='loss-breakdown'>Loss breakdown</h2>"]
     if losses is None or losses.empty:
@@ -114,7 +119,13 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
               "<p>per operating point and bearing; total = the sum of the sources "
               "(load-dependent + load-independent); the same numbers, registered source "
               "names as columns, are in loss_breakdown.csv</p>",
-              html_table(rl.readable(by_source), csv_name="loss_breakdown.csv"),
+              html_table(_with_checks(rl.readable(by_source), flagged),
+                         csv_name="loss_breakdown.csv"),
+              *(["<p class='note'>operating checks: the checks that flag the step for that "
+                 "bearing (cage skidding beyond the skid limit, contact stress above the "
+                 "stress limit, film parameter below its minimum; the limits and the values "
+                 "are under Validity warnings)</p>"]
+                if "operating checks" in _with_checks(by_source, flagged) else []),
               "<h3>share of the total by source [%]</h3>",
               html_table(rl.readable(rl.shares(by_source))),
               "<h3>what the sources are</h3>", html_table(rl.glossary(losses)),
@@ -132,6 +143,27 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
                   f"{gap:.3g} W</p>"]
     parts.append(_crosscheck_html(losses, tables, scene, bearings, lubricant))
     return "\n".join(parts)
+
+
+#: the operating checks' keys -> what a flagged row says
+_CHECK_WORDS = {"skid": "cage skidding", "stress": "contact stress", "film": "film parameter"}
+
+
+def _with_checks(table: pd.DataFrame,
+                 flagged: Mapping[str, Mapping[str, Sequence[int]]] | None) -> pd.DataFrame:
+    """``table`` (rows of step and bearing) with a last column ``operating checks`` naming
+    the checks that flag each row's step for its bearing (``-`` none), when any flags
+    one; unchanged otherwise."""
+    if not flagged or "step" not in table or "bearing" not in table:
+        return table
+    sets = {(str(b), key): {int(i) for i in steps}
+            for b, by in flagged.items() for key, steps in by.items()}
+    words = [", ".join(w for key, w in _CHECK_WORDS.items()
+                       if int(step) in sets.get((str(bearing), key), set())) or "-"
+             for step, bearing in zip(table["step"], table["bearing"], strict=True)]
+    if all(w == "-" for w in words):
+        return table
+    return table.assign(**{"operating checks": words})
 
 
 def _rolling_notes(by_source: pd.DataFrame, scene: Any) -> list[str]:

@@ -71,6 +71,9 @@ class Results:
         of their film table's rows).
     estimated : the input values no source gives, with their reasoning: what -> field ->
         reasoning (``Simulation.estimated_inputs``: per bearing and the lubricant).
+    flagged : the steps the operating checks flag, per bearing:
+        ``{bearing: {"skid": [steps], "stress": [...], "film": [...]}}``
+        (``CheckLog.flagged_step_indices``); empty when nothing was checked.
     """
 
     tables: dict[str, pd.DataFrame] = field(default_factory=dict)
@@ -82,6 +85,7 @@ class Results:
     figures: dict[str, bytes] = field(default_factory=dict)
     check_limits: dict[str, Any] = field(default_factory=dict)
     estimated: dict[str, dict[str, str]] = field(default_factory=dict)
+    flagged: dict[str, dict[str, list[int]]] = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> pd.DataFrame:
         return self.tables[name]
@@ -118,6 +122,8 @@ class Results:
             meta["check_limits"] = _jsonable(self.check_limits)
         if self.estimated:
             meta["estimated"] = _jsonable(self.estimated)
+        if self.flagged:
+            meta["flagged_steps"] = _jsonable(self.flagged)
         (out / "metadata.json").write_text(json.dumps(meta, indent=1), encoding="utf-8")
         for name, png in self.figures.items():
             (out / f"{name}.png").write_bytes(png)

@@ -684,7 +684,7 @@ class Simulation:
                           chain=[(link.family, link.name) for link in self.chain],
                           citations=self.citations(), warnings=list(self.warnings) + checked,
                           stats=stats, check_limits=limits,
-                          estimated=self.estimated_inputs())
+                          estimated=self.estimated_inputs(), flagged=self.flagged_steps())
         if out_dir is not None:
             from .report import attach_figures, write_report
 
@@ -733,7 +733,17 @@ class Simulation:
         Results(scene_toml=scene_toml, chain=[(link.family, link.name) for link in self.chain],
                 citations=self.citations(), warnings=[note, *self.warnings, *checked],
                 stats={"stopped": why, "wall_time_s": wall}, check_limits=limits,
-                estimated=self.estimated_inputs()).write(out)
+                estimated=self.estimated_inputs(), flagged=self.flagged_steps()).write(out)
+
+    def flagged_steps(self) -> dict[str, dict[str, list[int]]]:
+        """The steps each operating check flags, per bearing with any flagged
+        (:meth:`.CheckLog.flagged_step_indices`): the report marks those rows."""
+        out = {}
+        for name, log in self.checks.items():
+            flags = log.flagged_step_indices()
+            if any(flags.values()):
+                out[str(name)] = flags
+        return out
 
     def _run_operating_points(self, writer: ResultsWriter | None
                               ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:

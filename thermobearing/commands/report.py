@@ -383,7 +383,8 @@ def run_report(folder: Path) -> Path:
                       citations=meta.get("citations", []), warnings=meta.get("warnings", []),
                       stats=meta.get("stats", {}),
                       check_limits=meta.get("check_limits", {}),
-                      estimated=meta.get("estimated", {}))
+                      estimated=meta.get("estimated", {}),
+                      flagged=meta.get("flagged_steps", {}))
     losses = tables.get("losses")
     if losses is not None and not losses.empty and "source" in losses:
         # a folder of an older version has no breakdown CSV; the report refers to it
