@@ -25,7 +25,10 @@ without capacity (algebraic nodes: the seal air, the oil film), constant non-neg
   TR-BDF2 run, close their books and end at the nonlinear steady state. The zero-capacity
   nodes were initialised (``_Core.consistent_algebraic``) with the conductances of the
   incoming temperatures, not of the solved ones; exprb43 then stopped at t = 0 with 'step
-  size underflow' (10 of 30 seeded networks).
+  size underflow' (10 of 30 seeded networks);
+- the oil stream of the four- and seven-node templates: its capacity rate is
+  rho c_p Q at the inlet, the steady books close through the ambient and the stream, and
+  more oil from an inlet no warmer than the ambient lowers every temperature.
 """
 
 from __future__ import annotations
@@ -221,3 +224,48 @@ def test_zero_capacity_node_under_free_convection_starts_consistently():
         ends[method] = res.temperatures[-1]
     np.testing.assert_allclose(ends["exprb43"], ends["tr_bdf2"], atol=1e-4, rtol=0)
     np.testing.assert_allclose(ends["exprb43"], [320.489, 322.154], atol=2e-3, rtol=0)
+
+
+TEMPLATE_BEARINGS = ("SKF6304", "QJ1044", "NU214")
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(name=st.sampled_from(TEMPLATE_BEARINGS), seven=st.booleans(),
+       log_flow=st.floats(-8.0, -4.0), more=st.floats(1.2, 10.0), cooler=st.floats(0.0, 30.0),
+       power=st.floats(10.0, 2000.0))
+def test_oil_stream_books_and_cools_the_template_networks(name, seven, log_flow, more, cooler,
+                                                          power):
+    """The paper 002 four-node and the seven-node templates with an oil stream: the stream's
+    capacity rate is rho(T_in) c_p(T_in) Q (oil_capacity_rate); at steady state the heat
+    leaves through the ambient conductances and the stream, W (T_oil - T_in); with the inlet
+    no warmer than the ambient, more oil lowers every temperature (adding a conductance to
+    the coldest boundary: the M-matrix's monotonicity)."""
+    import warnings
+
+    from thermobearing import load_bearing, load_lubricant
+    from thermobearing.errors import ValidityWarning
+    from thermobearing.network import four_node_paper002, oil_capacity_rate, seven_node
+
+    b = load_bearing(name)
+    oil = load_lubricant("ISO_VG46")
+    t_amb = 308.15
+    t_in = t_amb - cooler
+    flow = 10.0**log_flow
+    build = seven_node if seven else four_node_paper002
+    net = build(b, oil, housing_outer_diameter=1.6 * b.outer_diameter,
+                housing_length=2.0 * b.width, oil_flow=flow, oil_inlet_temperature=t_in,
+                ambient_temperature=t_amb)
+    w = oil_capacity_rate(oil, flow, t_in)
+    assert net.streams["oil"].capacity_rate == pytest.approx(w, rel=1e-12)
+    heat = net.distribute({"elements": 0.5 * power, "inner_ring": 0.3 * power,
+                           "outer_ring": 0.2 * power})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        res = solve_steady(net, heat)
+        t_oil = res.temperatures["oil"]
+        assert res.to_streams == pytest.approx(w * (t_oil - t_in), rel=1e-9, abs=1e-9)
+        assert res.generated == pytest.approx(power, rel=1e-12)
+        assert res.to_boundaries + res.to_streams == pytest.approx(power, rel=1e-8)
+        net.set_stream_flow("oil", oil_capacity_rate(oil, more * flow, t_in))
+        colder = solve_steady(net, heat).temperatures_vector
+    assert np.all(colder <= res.temperatures_vector + 1e-9 * power)
