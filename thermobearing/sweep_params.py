@@ -101,10 +101,13 @@ def _existing_unit(scene_dict: Mapping[str, Any], path: str) -> str:
     if value is None and len(parts) >= 4 and parts[0] == "bearings" and parts[2] == "overrides":
         value = bearing_file_value(scene_dict, parts[1], parts[3:])
     if isinstance(value, str):
-        # the unit as the scene writes it, with or without a space ("95 degF", "95degF")
+        # the unit as the scene writes it, with or without a space ("95 degF", "95degF");
+        # a power in pint's spelling as data sheets write it: the scene read "30 mm3/h"
+        # and writes it back as "mm**3/h", which the sweep's values, summary column and
+        # figure titles showed ("10 mm**3/h"); "mm3/h" is read the same
         m = _QUANTITY.match(value)
         if m and m.group(1):
-            return m.group(1)
+            return re.sub(r"\*\*(\d+)", r"\1", m.group(1))
     return PATH_UNITS.get(path) or DISPLAY_UNITS.get(path.rsplit(".", 1)[-1], "")
 
 
