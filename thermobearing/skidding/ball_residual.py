@@ -443,6 +443,17 @@ class ball_residual_system:  # noqa: N801 - used like a function returning an ob
         _contact_angles(fields[0].reshape(N_GEO, -1))
         return R, Gc, G0, fields
 
+    def last_fields(self, X: np.ndarray, G: np.ndarray):
+        """(R, Gc, G0, fields) as :meth:`evaluate_fields` when (X, G) are the very arrays of
+        the last state evaluated or stored (:meth:`store_last`; identity, no comparison),
+        else None. The contact-angle row of the fields' geo is left as the residual left it
+        (the result kernel ``ball_result._result_kernel`` fills it)."""
+        last = self._last
+        if last is None or last[0] is not X or last[1] is not G:
+            return None
+        self.last_norm = last[4]
+        return (*last[2], last[5])
+
     def chord_kernel_args(self):
         """Arguments of the compiled residual :func:`_residual_one` after (X, G) and before
         the drag inputs, for compiled callers (``ball_newton._chord_phase``); None when the

@@ -22,6 +22,8 @@ from ..loads import ball_arcs, ball_load_distribution
 from .ball_residual import (
     C_RR,
     G_ALPHA,
+    G_NA,
+    G_NR,
     G_OMZ,
     G_Q,
     G_UE,
@@ -188,7 +190,12 @@ def _result_kernel(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
     and drag heat summed over the balls [W] and the balls' torque on the inner ring [N m] of
     :func:`~thermobearing.skidding.ball_residual._energy_audit`, and the pure-rolling CSR at
     the load-weighted operating angles (1 - gamma cos a_i) / (1 + cos(a_i - a_o)) (primer
-    over-skidding section 5) [-]. geo (N_GEO, Z, k), tr (Z, k, 6), pocket (Z, N_POCKET)."""
+    over-skidding section 5) [-]. geo (N_GEO, Z, k), tr (Z, k, 6), pocket (Z, N_POCKET).
+    First fills geo's contact-angle row alpha = atan2(n_a, |n_r|) [rad] (as
+    ``ball_residual_kernels._contact_angles``; the residual leaves it empty)."""
+    for j in range(geo.shape[1]):
+        for k in range(geo.shape[2]):
+            geo[G_ALPHA, j, k] = math.atan2(geo[G_NA, j, k], abs(geo[G_NR, j, k]))
     ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc = _summary(
         geo[G_Q], geo[G_ALPHA], inner_f, a0, X, tr[:, :, 5])
     pocket_heat, drag_heat, shaft = _energy_audit(X, wc, geo, tr, pocket, Fd, inner_f)
@@ -209,7 +216,8 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
     cage churning (eq. 15), cage guide (eq. 5), inner-ring churning (eq. 17); the shaft torque
     is the balls' torque on the inner ring plus the ring's churning (and the guide land's
     reaction when the land is on the inner ring)."""
-    R, Gc, G0, fields = system.evaluate_fields(X, G)
+    got = system.last_fields(X, G)
+    R, Gc, G0, fields = got if got is not None else system.evaluate_fields(X, G)
     geo, tr, pocket, Fd = fields[0], fields[1], fields[2], fields[3]
     b = system.bearing
     wi, wc = system.speed, float(G[2])
