@@ -156,6 +156,19 @@ def run_scipy(Z, points, temperature, repeat=5):
     return out
 
 
+def thin_anchor_points(pts, n_loads, n):
+    """``n`` of the anchor grid ``pts`` (speeds x loads, the loads varying fastest, n_loads
+    of them), evenly spaced; when the stride is a multiple of n_loads each point moves on by
+    one more load (a plain stride of 4 over the 4 x 4 grid of the 10 x 10 and 20 x 20 maps
+    picked four speeds at the first load, 40 kN, only: now its diagonal, 40 kN at 300 r/min
+    to 200 N at 3000 r/min)."""
+    if n >= len(pts):
+        return list(pts)
+    step = max(1, len(pts) // n)
+    shift = 1 if step % n_loads == 0 else 0
+    return [pts[(k * step + k * shift) % len(pts)] for k in range(n)]
+
+
 def anchor_ratios(res, meth):
     """Time ratio meth / newton_block over the anchor points from interleaved timings:
     (ratio of the summed per-point medians over all points -- failures of either method
@@ -334,7 +347,7 @@ def main(argv=None) -> int:
         sub_speeds, sub_loads = speeds[::2], loads[::2]
     pts = [(float(n), float(fa)) for n in sub_speeds for fa in sub_loads]
     if args.anchor_points:
-        pts = pts[:: max(1, len(pts) // args.anchor_points)][:args.anchor_points]
+        pts = thin_anchor_points(pts, len(sub_loads), args.anchor_points)
     anchor_rows = []
     anchor_res = {}
     for Z in [z for z in zs if z <= 16]:

@@ -5,12 +5,14 @@ A warm start hands the previous solve's Jacobian over rescaled to the new loads;
 that the rescaled factors are those of the rescaled blocks to round-off, that the factors are
 computed once per Jacobian, that the rescaled residual of a reloaded system equals the numpy
 expressions it replaces, and that a +2 % warm step ends at the same state with or without
-the carried factors.
+the carried factors; and that BM-5's anchor subset spreads over speeds and loads.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -121,3 +123,21 @@ def test_warm_step_with_carried_factors_ends_at_the_same_state(solved):
     assert abs(step.heat["total"] - ref.heat["total"]) <= 1e-9 * ref.heat["total"]
     gap = abs(step.shaft_torque * step.inner_speed - step.heat["total"])
     assert gap <= 1e-8 * step.heat["total"]
+
+
+def test_bm5_anchor_subset_spreads_over_speeds_and_loads():
+    """``--anchor-points 4`` on the 4 x 4 anchor grid of the 10 x 10 / 20 x 20 maps: four
+    speeds at four different loads (a plain stride took all four at 40 kN)."""
+    path = Path(__file__).resolve().parents[2] / "benchmarks" / "bm5_skidding.py"
+    spec = importlib.util.spec_from_file_location("bm5_skidding", path)
+    bm5 = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bm5)
+    speeds = [300.0, 1200.0, 2100.0, 3000.0]
+    loads = [40e3, 26.7e3, 13.3e3, 200.0]
+    pts = [(n, fa) for n in speeds for fa in loads]
+    got = bm5.thin_anchor_points(pts, len(loads), 4)
+    assert sorted({n for n, _ in got}) == speeds
+    assert sorted({fa for _, fa in got}) == sorted(loads)
+    assert bm5.thin_anchor_points(pts, len(loads), 20) == pts
+    six = bm5.thin_anchor_points(pts, len(loads), 6)
+    assert len(set(six)) == 6 and set(six) <= set(pts)
