@@ -158,7 +158,16 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         unit = unit or _existing_unit(scene_dict, path)
         return SweepParameter(path, tuple(f"{a + i * d:.{_DIGITS}g} {unit}" if unit else a + i * d
                                           for i in range(n)))
-    items = [v.strip() for v in raw.split(",") if v.strip()]
+    pieces = [v.strip() for v in raw.split(",")]
+    if pieces and not pieces[-1]:
+        pieces = pieces[:-1]  # a trailing comma ("15,33,") adds nothing
+    if "" in pieces[:-1] or (pieces and not pieces[-1]):
+        # "15,,33": a value left out between commas (a typo of 15,25,33?) was dropped
+        # without a word
+        k = pieces.index("")
+        raise InputError(f"--set {path}", raw, f"a value between every two commas (value "
+                         f"{k + 1} is empty)")
+    items = [v for v in pieces if v]
     if not items:
         raise InputError(f"--set {path}", raw, "at least one value")
     split = [_split_unit(v) for v in items]

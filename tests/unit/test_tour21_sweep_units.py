@@ -52,3 +52,20 @@ def test_summary_column_and_resume_of_a_folder_in_pints_spelling(scene, tmp_path
                       runner=_runner, workers=1, progress=False)
     assert "supply.flow [mm3/h]" in fresh.columns
     assert list(fresh["supply.flow [mm3/h]"]) == [10.0, 30.0]
+
+
+@pytest.mark.parametrize("spec, empty", [("supply.flow=15,,33", 2), (",15", 1),
+                                         ("15, ,33", 2), ("15,33,,", 3)])
+def test_an_empty_value_between_commas_is_refused(spec, empty):
+    # "15,,33" (a typo of 15,25,33?) ran the cases 15 and 33 without a word
+    from thermobearing.errors import InputError
+
+    d = load_scene().to_dict()
+    spec = spec if spec.startswith("supply.flow=") else "supply.flow=" + spec
+    with pytest.raises(InputError, match=f"value {empty} is empty"):
+        parse_set(spec, d)
+
+
+def test_a_trailing_comma_is_allowed():
+    assert parse_set("supply.flow=15,33,", load_scene().to_dict()).values == ("15 L/min",
+                                                                              "33 L/min")
