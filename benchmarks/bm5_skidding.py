@@ -157,16 +157,26 @@ def run_scipy(Z, points, temperature, repeat=5):
 
 
 def thin_anchor_points(pts, n_loads, n):
-    """``n`` of the anchor grid ``pts`` (speeds x loads, the loads varying fastest, n_loads
-    of them), evenly spaced; when the stride is a multiple of n_loads each point moves on by
-    one more load (a plain stride of 4 over the 4 x 4 grid of the 10 x 10 and 20 x 20 maps
-    picked four speeds at the first load, 40 kN, only: now its diagonal, 40 kN at 300 r/min
-    to 200 N at 3000 r/min)."""
+    """``n`` distinct points of the anchor grid ``pts`` (speeds x loads, the loads varying
+    fastest, ``n_loads`` of them) along its diagonal, from the first speed and load to the
+    last of each (rounded grid indices), then, if the diagonal has fewer distinct points,
+    the others in grid order at an even stride. A plain stride of 4 over the 4 x 4 grid of
+    the 10 x 10 and 20 x 20 maps took four speeds at the first load (40 kN) only."""
     if n >= len(pts):
         return list(pts)
-    step = max(1, len(pts) // n)
-    shift = 1 if step % n_loads == 0 else 0
-    return [pts[(k * step + k * shift) % len(pts)] for k in range(n)]
+    if n <= 1:
+        return list(pts[:n])
+    n_speeds = len(pts) // n_loads
+    picked = []
+    for k in range(n):
+        i = round(k * (n_speeds - 1) / (n - 1))
+        j = round(k * (n_loads - 1) / (n - 1))
+        if pts[i * n_loads + j] not in picked:
+            picked.append(pts[i * n_loads + j])
+    rest = [p for p in pts if p not in picked]
+    step = max(1, len(rest) // max(1, n - len(picked)))
+    picked += rest[::step][:n - len(picked)]
+    return picked
 
 
 def anchor_ratios(res, meth):

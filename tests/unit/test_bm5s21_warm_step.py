@@ -126,18 +126,21 @@ def test_warm_step_with_carried_factors_ends_at_the_same_state(solved):
 
 
 def test_bm5_anchor_subset_spreads_over_speeds_and_loads():
-    """``--anchor-points 4`` on the 4 x 4 anchor grid of the 10 x 10 / 20 x 20 maps: four
-    speeds at four different loads (a plain stride took all four at 40 kN)."""
+    """``--anchor-points 4`` on the anchor grids of the 10 x 10 (4 speeds x 3 loads) and
+    20 x 20 maps (4 x 4): four distinct points at four speeds and at every load (a plain
+    stride took all four at 40 kN)."""
     path = Path(__file__).resolve().parents[2] / "benchmarks" / "bm5_skidding.py"
     spec = importlib.util.spec_from_file_location("bm5_skidding", path)
     bm5 = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(bm5)
     speeds = [300.0, 1200.0, 2100.0, 3000.0]
-    loads = [40e3, 26.7e3, 13.3e3, 200.0]
-    pts = [(n, fa) for n in speeds for fa in loads]
-    got = bm5.thin_anchor_points(pts, len(loads), 4)
-    assert sorted({n for n, _ in got}) == speeds
-    assert sorted({fa for _, fa in got}) == sorted(loads)
-    assert bm5.thin_anchor_points(pts, len(loads), 20) == pts
-    six = bm5.thin_anchor_points(pts, len(loads), 6)
-    assert len(set(six)) == 6 and set(six) <= set(pts)
+    for loads in ([40e3, 26.7e3, 13.3e3, 200.0], [40e3, 4130.0, 426.0]):
+        pts = [(n, fa) for n in speeds for fa in loads]
+        got = bm5.thin_anchor_points(pts, len(loads), 4)
+        assert len(set(got)) == 4 and set(got) <= set(pts)
+        assert sorted({n for n, _ in got}) == speeds
+        assert sorted({fa for _, fa in got}) == sorted(loads)
+        assert bm5.thin_anchor_points(pts, len(loads), 20) == pts
+        for n in (1, 2, 6, 9):
+            some = bm5.thin_anchor_points(pts, len(loads), n)
+            assert len(set(some)) == n and set(some) <= set(pts)
