@@ -235,11 +235,16 @@ class Simulation:
                     self.warnings.append(note)
                     self.notes.append(note)
         drag_params = _roller_drag_params(self.source_options)
+        thermal = self.source_options.get("ehl_rolling_resistance", {}).get("thermal_reduction")
         for b in self.bearings:
             if drag_params and not b.is_ball and b.kinematics_name == "skidding":
                 # the roller solver balances the drag the churning sources book: the same
                 # c_d and Parker constant (skidding.roller_drag)
                 b.kin_options["params"] = dict(drag_params)
+            if thermal is not None and not b.is_ball and b.kinematics_name == "skidding":
+                # the rolling force the roller solver carries takes the inlet-heating
+                # reduction the scene names for the rolling-resistance source (one force)
+                b.kin_options["thermal_reduction"] = str(thermal)
         # identical bearings (same preset and overrides) at the same state share results
         # (bearing key, step) -> (viscosity, result, its validity warnings, bearing solved);
         # an identical bearing in the same state takes the result and the warnings

@@ -30,10 +30,9 @@
     (the pressure acts along the normals of surfaces moving tangentially), so the heat is
     F_P (|u_element| + |u_race|) = Q_x u, rolling and sliding alike (u = entrainment speed).
     Q_x in closed form, the same three options as the roller skidding solver
-    (``skidding/roller_fluid.py``). That module still builds the Dowson-Higginson U from the
-    sum of the speeds (session 17; its eq. 35 force is 1.62 times this one where the EHL
-    branch is the smaller): skidding states carry the solver's own forces and are booked
-    with them (the energy identity), race-control states and explicit options use these:
+    (``skidding/roller_fluid.py``, which builds U from the mean speed as here): skidding
+    states carry the solver's own forces and are booked with them (the energy identity),
+    race-control states and explicit options use these:
 
     - "dowson_higginson": paper 000 eq. 35, Q_x = 18.4 G^-0.3 U^0.7 E' R_x l with G = alpha E',
       U = eta0 u_m / (E' R_x), u_m = (|u_1| + |u_2|)/2 (the paper's eqs. 14 and 18 print U
@@ -81,8 +80,13 @@
     Hamrock-Dowson's exponent 0.67). The inlet viscosity reading is this module's
     assumption: Gupta's fit is for the film of an EHL contact, and it is applied to the
     rigid (centrifugally seated) contacts through the same effective viscosity. phi_T of the
-    no-load reference contact is taken at its own Hertz pressure. Not applied to the forces
-    a skidding state carries (the solver balanced the isothermal ones).
+    no-load reference contact is taken at its own Hertz pressure. A skidding state's forces
+    are booked as the solver carried them: the roller solver applies the reduction only when
+    the scene names it for this source (``[models.options.ehl_rolling_resistance]
+    thermal_reduction``, passed to the solver by the simulation,
+    :mod:`thermobearing.skidding.roller_thermal`); its own default is still isothermal
+    (``SOLVER_DEFAULT_THERMAL_REDUCTION``), so without that option a skidding chain books the
+    isothermal force and a race-control chain the reduced one.
 
     Thermal reduction against the SKF model (measured 2026-11-24; NU 214, ISO VG 46 at
     50 degC, 10 kN, jet, race control, validation case crosscheck_global_friction): Gupta
@@ -613,10 +617,13 @@ def _carried_rolling_forces(ctx: HeatContext, name: str):
     if carried is None:
         return None
     given = ctx.options.get(name) or {}
-    if any(k in given for k in ("rolling_force", "thermal_reduction", "reduction",
-                                "supply_factor")):
-        return None
-    return carried
+    named = [k for k in ("rolling_force", "thermal_reduction", "reduction", "supply_factor")
+             if k in given]
+    solver = ctx.kinematics.extras.get("raceway_rolling_thermal_reduction")
+    if named == ["thermal_reduction"] and str(given["thermal_reduction"]) == solver:
+        # the scene's reduction is the one the solver applied to the force it carries
+        return carried
+    return None if named else carried
 
 
 def _point_contact_forces(ctx: HeatContext, name: str, model: str, thermal: str):
