@@ -92,7 +92,10 @@ def paper002_loss_ratios(inputs: dict[str, Any], case_dir: Path) -> dict[str, fl
     churn = float(sum(row.get(c, 0.0) for c in _CHURNING))
     pocket = float(row.get("pocket_friction", 0.0))
     guide = float(row.get("cage_guide", 0.0))
+    paper = _paper_bookkeeping_at(float(peak) * 1e3, n_high, high,
+                                  float(inputs.get("guide_friction", 0.1)))
     return {
+        **paper,
         "total_ratio_flow_15_over_33": float(total(at_low_flow).mean() / total(at_high).mean()),
         "total_ratio_speed_600_over_1800": float(total(at_low_speed).mean()
                                                  / total(at_high).mean()),
@@ -101,6 +104,28 @@ def paper002_loss_ratios(inputs: dict[str, Any], case_dir: Path) -> dict[str, fl
         "cage_guide_over_pocket_at_peak": guide / pocket if pocket > 0 else math.inf,
         "peak_axial_load": float(peak) * 1e3,
         "total_loss_at_peak": tot,
+    }
+
+
+def _paper_bookkeeping_at(axial_load: float, speed: float, flow: float,
+                          guide_friction: float) -> dict[str, float]:
+    """The peak state solved directly (:mod:`.paper002_peak`, the scene's first bearing at
+    the inlet temperature) and booked the way paper 002 books it
+    (:func:`thermobearing.losses.paper002_bookkeeping`: ball churning by its eq. 16, cage guide
+    by its eq. 18 with ``guide_friction`` = mu_c, not given by the paper, and the land carrying
+    the cage weight): the shares of that booking and the share of the shaft power it leaves
+    unbooked."""
+    from ..losses import paper002_bookkeeping
+    from .paper002_peak import loss_shares, solve_rig
+
+    state = solve_rig(axial_load, speed, flow)
+    shares = loss_shares(paper002_bookkeeping(state.context, guide_friction=guide_friction))
+    shaft = state.result.shaft_torque * state.result.inner_speed
+    return {
+        "pocket_share_at_peak_paper_bookkeeping": shares["pocket_share"],
+        "churning_share_at_peak_paper_bookkeeping": shares["churning_share"],
+        "cage_guide_over_pocket_at_peak_paper_bookkeeping": shares["cage_guide_over_pocket"],
+        "unbooked_share_paper_bookkeeping": 1.0 - shares["total"] / shaft,
     }
 
 

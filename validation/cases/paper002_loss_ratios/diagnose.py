@@ -32,37 +32,10 @@ RPM = math.pi / 30.0
 G = 9.80665
 
 
-def _setup():
-    from thermobearing.geometry import load_bearing
-    from thermobearing.lubricant import load_lubricant
-    from thermobearing.skidding.qj1044 import load_calibration, with_clearance
-    from thermobearing.state import OilSupply
+def _peak(load_kn: float):
+    from thermobearing.validation.paper002_peak import solve_rig
 
-    cal = load_calibration()
-    bearing = with_clearance(load_bearing("QJ1044"), cal["diametral_clearance"])
-    lub = load_lubricant("ISO_VG46")
-    t_in = 308.15
-    supply = OilSupply("jet", 33.0 / 6e4, t_in)
-    return bearing, lub, supply, cal["params"], t_in
-
-
-def _solve(bearing, lub, supply, params, t, fa, speed=1800 * RPM):
-    from thermobearing.skidding import solve
-
-    return solve(bearing, lub, speed, 1000.0, fa, t, supply=supply, params=params,
-                 oil_temperature=t)
-
-
-def _context(bearing, lub, supply, params, t, res, fa):
-    from thermobearing.heat_sources import HeatContext
-    from thermobearing.skidding.ball_models import heat_context_options
-    from thermobearing.state import OperatingPoint
-
-    op = OperatingPoint(inner_speed=res.inner_speed, radial_load=1000.0, axial_load=fa)
-    opts = heat_context_options(bearing, supply, res.inner_speed, params)
-    return HeatContext.isothermal(t, bearing=bearing, lubricant=lub, supply=supply,
-                                  operating=op, kinematics=res.kinematic_state, options=opts,
-                                  traction=res.extra["traction_law"])
+    return solve_rig(load_kn * 1e3, 1800 * RPM, 33.0 / 6e4)
 
 
 def _shares(heat: dict[str, float]) -> str:
@@ -86,8 +59,9 @@ def main(argv=None) -> int:
                     help="paper 002 eq. 18 hydrodynamic friction coefficient (not given)")
     ap.add_argument("--sensitivity", action="store_true")
     a = ap.parse_args(argv)
-    bearing, lub, supply, params, t = _setup()
-    res = _solve(bearing, lub, supply, params, t, a.load * 1e3)
+    state = _peak(a.load)
+    bearing, lub, params, t, res = (state.bearing, state.lubricant, state.params,
+                                    state.temperature, state.result)
     wc, wi = res.cage_speed, res.inner_speed
     eta = float(lub.dynamic_viscosity(t))
     print(f"QJ1044, 1800 r/min, 33 L/min, Fr 1 kN, Fa {a.load:g} kN, oil {t - 273.15:.0f} degC "
@@ -97,7 +71,7 @@ def main(argv=None) -> int:
     from thermobearing.losses import paper002_bookkeeping
     from thermobearing.simulation import BALL_SOURCES
 
-    ctx = _context(bearing, lub, supply, params, t, res, a.load * 1e3)
+    ctx = state.context
     heat = {r.source: r.total for r in evaluate(BALL_SOURCES, ctx)}
     print("1. magnitudes by hand")
     qp = res.pocket_force
@@ -164,6 +138,9 @@ def main(argv=None) -> int:
           f"{(heat['pocket_friction'] + shear) / (sum(heat.values()) + shear):.3f}, guide/pocket "
           f"{heat['cage_guide'] / (heat['pocket_friction'] + shear):.2f}")
     if a.sensitivity:
+        from thermobearing.skidding import solve
+        from thermobearing.validation.paper002_peak import RADIAL_LOAD
+
         print("5. sensitivity at this load (solver re-run): land clearance, land width, mu_p")
         for cl, lw, mu in [(0.6, 10, None), (0.3, 10, None), (1.2, 10, None), (2.4, 10, None),
                            (0.6, 5, None), (0.6, 20, None), (0.6, 10, 0.1)]:
@@ -171,7 +148,8 @@ def main(argv=None) -> int:
                                      outer_diameter=cage.guide_land_diameter - cl * 1e-3)
             b2 = dataclasses.replace(bearing, cage=cg)
             p2 = params if mu is None else params.with_(pocket_friction=mu)
-            r2 = _solve(b2, lub, supply, p2, t, a.load * 1e3)
+            r2 = solve(b2, lub, 1800 * RPM, RADIAL_LOAD, a.load * 1e3, t, supply=state.supply,
+                       params=p2, oil_temperature=t)
             h = r2.heat
             print(f"  guide clearance {cl:3.1f} mm, land {lw:2d} mm, mu_p {p2.pocket_friction:.2f}"
                   f": over-skid {100 * r2.over_skid:5.2f} %, pocket share "
