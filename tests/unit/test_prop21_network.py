@@ -28,7 +28,10 @@ without capacity (algebraic nodes: the seal air, the oil film), constant non-neg
   size underflow' (10 of 30 seeded networks);
 - the oil stream of the four- and seven-node templates: its capacity rate is
   rho c_p Q at the inlet, the steady books close through the ambient and the stream, and
-  more oil from an inlet no warmer than the ambient lowers every temperature.
+  more oil from an inlet no warmer than the ambient lowers every temperature;
+- bad heat: a non-finite constant heat is an InputError naming the node, a heat source
+  turning non-finite a ConvergenceError from every entry point (the private
+  _NewtonFailure escaped solve_steady, integrate and TransientStepper.advance).
 """
 
 from __future__ import annotations
@@ -269,3 +272,44 @@ def test_oil_stream_books_and_cools_the_template_networks(name, seven, log_flow,
         net.set_stream_flow("oil", oil_capacity_rate(oil, more * flow, t_in))
         colder = solve_steady(net, heat).temperatures_vector
     assert np.all(colder <= res.temperatures_vector + 1e-9 * power)
+
+
+def _one_node() -> ThermalNetwork:
+    net = ThermalNetwork("one node")
+    net.add_boundary("amb", 300.0)
+    net.add_node("a", 10.0, role="elements")
+    net.add_edge("a", "amb", 1.0)
+    return net
+
+
+@pytest.mark.parametrize("heat", [np.array([np.nan]), np.array([np.inf]), {"a": -np.inf}])
+def test_a_non_finite_constant_heat_names_its_node(heat):
+    """Was 'did not converge (residual inf)' from integrate and the private _NewtonFailure
+    from solve_steady."""
+    from thermobearing.errors import InputError
+
+    net = _one_node()
+    with pytest.raises(InputError, match="heat\\['a'\\]"):
+        solve_steady(net, heat)
+    with pytest.raises(InputError, match="heat\\['a'\\]"):
+        integrate(net, heat, (0.0, 10.0), 300.0)
+
+
+@pytest.mark.parametrize("method", ["tr_bdf2", "exprb43", "backward_euler"])
+def test_a_heat_source_turning_non_finite_is_a_convergence_error(method):
+    """A callable heat that is NaN above 300.5 K: every entry point raises the public
+    ConvergenceError with an infinite residual (integrate and TransientStepper.advance let
+    the private _NewtonFailure out of a finite-difference Jacobian after a failed step,
+    solve_steady from its first residual)."""
+    from thermobearing.errors import ConvergenceError
+
+    def heat(t, T):
+        return np.array([1e3 if T[0] < 300.5 else np.nan])
+
+    net = _one_node()
+    with pytest.raises(ConvergenceError, match="non-finite"):
+        integrate(net, heat, (0.0, 10.0), 300.0, method=method)
+    with pytest.raises(ConvergenceError, match="non-finite"):
+        TransientStepper(net, method=method).advance(0.0, 300.0, 10.0, heat)
+    with pytest.raises(ConvergenceError, match="non-finite"):
+        solve_steady(net, lambda t, T: np.array([np.nan]))

@@ -16,6 +16,7 @@ from ..errors import ConvergenceError, InputError
 from .assemble import Assembler
 from .audit import SteadyResult
 from .graph import ThermalNetwork
+from .stepper_core import _NewtonFailure
 from .steppers import HeatFn, _as_heat_fn, _Core, _initial_vector
 
 
@@ -32,8 +33,20 @@ def solve_steady(network: ThermalNetwork, heat: HeatFn | None = None, T_guess=No
     thousands of kelvin on the first step (from 300 K to 6800 K in a measured case), where
     the air properties stop. Converged when max |dT| <= xtol [K] (relative to the largest
     temperature / 1000 above 1000 K). Zero-capacity nodes are no different here. A failed
-    line search or ``max_iter`` iterations raise ConvergenceError with the residual [W].
+    line search or ``max_iter`` iterations raise ConvergenceError with the residual [W], as
+    does a heat source that returns a non-finite value during the iterations (it escaped as
+    the stepper core's private _NewtonFailure); a constant heat vector or dict with a
+    non-finite entry is an InputError naming the node.
     """
+    try:
+        return _newton(network, heat, T_guess, t, xtol, max_iter, heat_jacobian, jacobian)
+    except _NewtonFailure as exc:
+        raise ConvergenceError("network steady Newton", exc.residual, exc.reason) from None
+
+
+def _newton(network: ThermalNetwork, heat: HeatFn | None, T_guess, t: float, xtol: float,
+            max_iter: int, heat_jacobian: Callable | None, jacobian: str) -> SteadyResult:
+    """The damped Newton iteration of :func:`solve_steady` (its arguments)."""
     y = _initial_vector(network, 300.0 if T_guess is None else T_guess)
     heat, constant = _as_heat_fn(network, heat)
     if constant:

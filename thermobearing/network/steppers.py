@@ -395,6 +395,13 @@ class _Recorder:
 
 
 # ================================================================== public API
+def _escaped(method: str, exc: _NewtonFailure) -> ConvergenceError:
+    """The public error of a stepper failure that left the step loop's own handling (a heat
+    source that turns non-finite in a finite-difference Jacobian after a failed step
+    escaped integrate as the private _NewtonFailure)."""
+    return ConvergenceError(f"network stepper {method}", exc.residual, exc.reason)
+
+
 def _as_heat_fn(network: ThermalNetwork, heat) -> tuple[HeatFn | None, bool]:
     """(callable or None, constant?) from a callable, a {node: W} dict or a vector."""
     if heat is None:
@@ -402,6 +409,10 @@ def _as_heat_fn(network: ThermalNetwork, heat) -> tuple[HeatFn | None, bool]:
     if callable(heat):
         return heat, False
     q = network.heat_vector(heat).copy()
+    bad = np.flatnonzero(~np.isfinite(q))
+    if bad.size:  # was 'did not converge (residual inf)' at t = 0 (a _NewtonFailure, steady)
+        node = network.state_nodes[int(bad[0])]
+        raise InputError(f"heat[{node!r}]", float(q[bad[0]]), "a finite heat rate [W]")
     return (lambda t, T: q), True
 
 
@@ -492,12 +503,15 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
     cuts = sorted({float(b) for b in breakpoints if t0 < float(b) < t1})
     edges = [t0, *cuts, t1]
     td = bool(heat_time_dependent) and not constant
-    if method == "exprb43" and driver._fast_applies():  # compiled path, all segments
-        y = driver._exp_fast.run_segments(driver, edges, y, heat, heat_jacobian,
-                                          heat_with_jacobian, rec, td)
-    else:
-        for a, b in zip(edges[:-1], edges[1:], strict=True):
-            y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
+    try:
+        if method == "exprb43" and driver._fast_applies():  # compiled path, all segments
+            y = driver._exp_fast.run_segments(driver, edges, y, heat, heat_jacobian,
+                                              heat_with_jacobian, rec, td)
+        else:
+            for a, b in zip(edges[:-1], edges[1:], strict=True):
+                y = driver.segment(a, b, y, heat, heat_jacobian, rec, td, heat_with_jacobian)
+    except _NewtonFailure as exc:
+        raise _escaped(method, exc) from None
     return TransientResult(
         names=network.state_nodes,
         boundary={n: network.boundary_temperature(n) for n in network.boundary_nodes},
@@ -564,9 +578,12 @@ class TransientStepper:
         sampled = ts is not None and ts.size > 0
         rec = _Recorder(active=sampled)
         steps0 = self._driver.core.stats["steps"]
-        y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian, rec,
-                                  bool(heat_time_dependent) and not constant,
-                                  heat_with_jacobian)
+        try:
+            y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian,
+                                      rec, bool(heat_time_dependent) and not constant,
+                                      heat_with_jacobian)
+        except _NewtonFailure as exc:
+            raise _escaped(self._driver.method_name, exc) from None
         samples = None
         if sampled:
             part = TransientResult(
