@@ -81,7 +81,7 @@ def bearing_table(scene: Any, bearings: dict[str, Any]) -> pd.DataFrame:
                                           else " rollers (diameter x length)"))
             angle = getattr(b, "contact_angle", None)
             if angle is not None and hasattr(b, "ball_diameter"):
-                row["contact angle [deg]"] = round(math.degrees(angle), 2)
+                row["nominal contact angle [deg]"] = round(math.degrees(angle), 2)
             cage = getattr(b, "cage", None)
             if cage is not None:
                 row["cage guided on"] = str(getattr(cage, "guidance", "")).replace("_", " ")

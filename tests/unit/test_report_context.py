@@ -69,7 +69,7 @@ def test_bearing_and_schedule_tables_name_the_bearing_its_size_and_the_steps():
     table = bearing_table(scene, bearings)
     de = table.set_index("bearing").loc["de"]
     assert de["designation"] == "QJ1044" and de["d x D x B [mm]"] == "220 x 340 x 56"
-    assert de["type"] == "four point" and de["contact angle [deg]"] == pytest.approx(40.0)
+    assert de["type"] == "four point" and de["nominal contact angle [deg]"] == pytest.approx(40.0)
     steps = operating_points(scene)
     assert list(steps["speed [rpm]"]) == pytest.approx([1800.0, 600.0])
     assert list(steps["duration [min]"]) == pytest.approx([3.0, 6.0])
