@@ -435,8 +435,10 @@ def _thermal_factor(model, ctx, cs, temp, eta, max_pressure):
                 "gupta1992", "skf_catalogue_friction"],
     parameters={"thermal_reduction": "-", "rolling_force": "-", "reduction": "-",
                 "supply_factor": "-"},
-    validity="fully flooded EHL unless reduced; line contacts, ball contacts by the "
-             "point-contact form (rolling_force = 'harris') or the mean-chord extension",
+    validity="fully flooded EHL; line contacts with Gupta's (1992) inlet-heating reduction "
+             "by default (thermal_reduction = 'none': isothermal; a roller skidding state "
+             "books its solver's force), ball contacts by the point-contact form "
+             "(rolling_force = 'harris') or the mean-chord extension",
 )
 def ehl_rolling_resistance(ctx: HeatContext) -> HeatResult:
     """EHL rolling resistance (Poiseuille inlet force) of the raceway contacts, paper 000 eq. 5/35.
