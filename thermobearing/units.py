@@ -318,7 +318,9 @@ def from_si(value: float, unit: str, kind: str | None = None) -> float:
     means its degrees (0.5 K in ``"degC"`` is 0.5, in ``"degF"`` 0.9), the inverse of
     :func:`to_si` for that kind; without it ``"degC"`` is read as a temperature (0.5 K is
     -272.65 degC). ``kind="frequency"``: a unit with an angle (``rpm``, ``rad/s``) counts
-    revolutions, as :func:`to_si` reads it (1 Hz is 60 rpm, 6.283 rad/s)."""
+    revolutions, as :func:`to_si` reads it (1 Hz is 60 rpm, 6.283 rad/s). The unit is read
+    with :func:`to_si`'s usual spellings (``"mm3/h"``, ``"r/min"``)."""
+    unit = _usual_spellings(unit)
     if kind == "temperature_difference":
         unit = _DIFFERENCE_OF.get(unit, unit)
     if kind == "frequency" and _names_an_angle(unit):  # 1 Hz in rpm is 60 (not 9.55)
