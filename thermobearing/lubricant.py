@@ -65,6 +65,7 @@ from .units import to_si
 from .viscosity_laws import (  # the laws live there; re-exported here
     _VT_OUTPUT,
     PRESSURE_VISCOSITY,
+    ROELANDS_ETA_INF,
     ROELANDS_P0,
     VISCOSITY_TEMPERATURE,
     alpha_from_roelands_index,
@@ -261,6 +262,27 @@ class Lubricant:
             check_temperature(f"{self.name}.pressure_viscosity.reference_temperature",
                               pp["reference_temperature"])
         LUBRICANT_THERMAL.entry(self.thermal_model)
+        if "alpha" in pp and self.pressure_law == "roelands":
+            self._check_derived_roelands_index(pp)
+
+    def _check_derived_roelands_index(self, pp: Mapping[str, Any]) -> None:
+        """A Roelands oil given by alpha takes z = alpha p0 / (ln eta0 + 9.67) at the
+        reference temperature (:meth:`roelands_index`); a thin oil with a mineral oil's alpha
+        (about 1 cSt, 2e-8 1/Pa) gets z above the 1.5 a given z may have, and its viscosity
+        overflows at contact pressures: refused here, naming alpha and the z it implies."""
+        tref = float(pp.get("reference_temperature", 313.15))
+        eta = float(self._eta_atm(tref))
+        high, _ = _PRESSURE_LIMITS["z"]
+        if eta <= ROELANDS_ETA_INF:
+            z = math.inf
+        else:
+            z = float(roelands_index_from_alpha(pp["alpha"], eta, self._p0))
+        if not z <= high:
+            raise InputError(
+                f"{self.name}.pressure_viscosity.alpha", pp["alpha"],
+                f"an alpha whose Roelands index at the reference temperature "
+                f"({tref - 273.15:g} degC, eta0 = {eta:.3g} Pa s) is at most {high:g}: this one "
+                f"gives z = {z:.3g}; give a smaller alpha, a z, or the barus law")
 
     def __hash__(self) -> int:  # mappings are not hashable; hash their sorted items
         return hash((

@@ -34,7 +34,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy import integrate
 
@@ -205,11 +205,18 @@ LAWS = {
 @given(a=st.floats(0.0, 1.0), b=st.floats(0.3, 1.5), t=st.floats(260.0, 420.0),
        dt=st.floats(0.5, 40.0), p=st.floats(0.0, 1e9))
 def test_every_law_thins_with_temperature_and_thickens_with_pressure(law, a, b, t, dt, p):
+    from thermobearing.errors import InputError
     from thermobearing.lubricant import Lubricant
 
-    oil = Lubricant(name="x", source="property test", viscosity_law=law,
-                    viscosity_parameters=LAWS[law](a, b), density_reference=870.0,
-                    pressure_parameters={"alpha": 2e-8})
+    try:
+        oil = Lubricant(name="x", source="property test", viscosity_law=law,
+                        viscosity_parameters=LAWS[law](a, b), density_reference=870.0,
+                        pressure_parameters={"alpha": 2e-8})
+    except InputError as exc:
+        # an oil too thin at 40 degC for this alpha (its Roelands z > 1.5) is refused at
+        # construction (test_thin_oil_with_a_mineral_alpha_is_refused)
+        assert "pressure_viscosity.alpha" in str(exc)
+        assume(False)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         cold, hot = (float(oil.dynamic_viscosity(x, p)) for x in (t, t + dt))
@@ -231,3 +238,21 @@ def test_a_viscosity_rising_with_temperature_is_refused(law, key):
         Lubricant(name="x", source="property test", viscosity_law=law,
                   viscosity_parameters=params, density_reference=870.0,
                   pressure_parameters={"alpha": 2e-8})
+
+
+def test_thin_oil_with_a_mineral_alpha_is_refused():
+    """A Roelands oil given by alpha takes z = alpha p0 / (ln eta0 + 9.67) at its reference
+    temperature; a 0.6 cSt oil with alpha = 2e-8 1/Pa got z = 3.1 (a given z is limited to
+    1.5) and its viscosity overflowed at contact pressures: refused, naming alpha and z."""
+    from thermobearing.errors import InputError
+    from thermobearing.lubricant import Lubricant
+
+    thin = {"a": 1e-4, "b": 270.0, "c": 150.0}
+    with pytest.raises(InputError, match=r"pressure_viscosity\.alpha.*gives z = "):
+        Lubricant(name="x", source="property test", viscosity_law="vogel",
+                  viscosity_parameters=thin, density_reference=870.0,
+                  pressure_parameters={"alpha": 2e-8})
+    oil = Lubricant(name="x", source="property test", viscosity_law="vogel",
+                    viscosity_parameters=thin, density_reference=870.0,
+                    pressure_parameters={"alpha": 5e-9})
+    assert float(oil.roelands_index(313.15)) <= 1.5
