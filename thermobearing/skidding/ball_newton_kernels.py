@@ -183,6 +183,20 @@ def _fd_blocks(Rb: np.ndarray, Gcb: np.ndarray, Gkb: np.ndarray, R: np.ndarray,
 
 
 @numba.njit(cache=True)
+def _column_factors(f: float, xs: np.ndarray, xs_old: np.ndarray, gs: np.ndarray,
+                    gs_old: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Column factors of a rescaled Jacobian: f xs_c / xs_old_c (ball columns) and
+    f gs_g / gs_old_g (global columns)."""
+    rx = np.empty(xs.shape[0])
+    rg = np.empty(gs.shape[0])
+    for c in range(xs.shape[0]):
+        rx[c] = f * xs[c] / xs_old[c]
+    for g in range(gs.shape[0]):
+        rg[g] = f * gs[g] / gs_old[g]
+    return rx, rg
+
+
+@numba.njit(cache=True)
 def _rescale_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray, f: float,
                     xs: np.ndarray, xs_old: np.ndarray, gs: np.ndarray, gs_old: np.ndarray
                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -190,12 +204,7 @@ def _rescale_blocks(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray,
     column c of every block times (f xs_c) / xs_old_c (ball columns) or (f gs_g) / gs_old_g
     (global columns), the same operations as the numpy expressions it replaces."""
     nz, nb, ng = A.shape[0], A.shape[1], B.shape[2]
-    rx = np.empty(nb)
-    rg = np.empty(ng)
-    for c in range(nb):
-        rx[c] = f * xs[c] / xs_old[c]
-    for g in range(ng):
-        rg[g] = f * gs[g] / gs_old[g]
+    rx, rg = _column_factors(f, xs, xs_old, gs, gs_old)
     A2 = np.empty_like(A)
     B2 = np.empty_like(B)
     C2 = np.empty_like(C)
@@ -230,12 +239,7 @@ def _rescale_factors(A: np.ndarray, B: np.ndarray, C: np.ndarray, Dg: np.ndarray
     A'^-1 B', S'^-1)."""
     A2, B2, C2, Dg2 = _rescale_blocks(A, B, C, Dg, f, xs, xs_old, gs, gs_old)
     nz, nb, ng = Ainv.shape[0], Ainv.shape[1], AiB.shape[2]
-    rx = np.empty(nb)
-    rg = np.empty(ng)
-    for c in range(nb):
-        rx[c] = f * xs[c] / xs_old[c]
-    for g in range(ng):
-        rg[g] = f * gs[g] / gs_old[g]
+    rx, rg = _column_factors(f, xs, xs_old, gs, gs_old)
     Ainv2 = np.empty_like(Ainv)
     AiB2 = np.empty_like(AiB)
     Sinv2 = np.empty_like(Sinv)
