@@ -5,12 +5,13 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
+from .operating_checks import CheckLog
 from .scene import loads_scene
 from .simulation_tables import over_skidding_range
 
@@ -47,6 +48,18 @@ def current_result_names(result: Mapping[str, Any], steady: bool = False
     return out
 
 
+def flagged_step_counts(logs: Iterable[CheckLog]) -> dict[str, int]:
+    """How many schedule steps each operating check flags at any bearing: the union over
+    the bearings' :meth:`.CheckLog.flagged_step_indices`, so that a step flagged at two
+    bearings counts once (the per-bearing steps are the results metadata's
+    ``flagged_steps``). Keys ``"skid"``, ``"stress"``, ``"film"`` [-]."""
+    union: dict[str, set[int]] = {"skid": set(), "stress": set(), "film": set()}
+    for log in logs:
+        for key, steps in log.flagged_step_indices().items():
+            union[key].update(steps)
+    return {key: len(steps) for key, steps in union.items()}
+
+
 def summarize_scene(scene_toml: str) -> dict[str, float]:
     """Sweep runner: run a scene and reduce it to a few numbers.
 
@@ -66,8 +79,11 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       parameter [-]`` of the solved states (:mod:`.operating_checks`; Lambda when the bearing
       gives its roughness; neither when the kinematics model computes no contacts), and
       ``steps over skid limit [-]``, ``steps over stress limit [-]``, ``steps under film
-      limit [-]`` (the scene's ``[checks]`` thresholds; summed over
-      bearings), so that a sweep of the thresholds shows what they flag;
+      limit [-]`` (the scene's ``[checks]`` thresholds: the schedule steps flagged at any
+      bearing, each step once however many bearings it flags,
+      :func:`flagged_step_counts`; earlier versions summed the counts over the bearings,
+      so that a 3-step protocol on two bearings showed 6), so that a sweep of the
+      thresholds shows what they flag;
     * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
       parameter [-]`` of the film table;
     * with a network: ``final <node> [degC]`` and ``rise over initial <node> [K]`` (final
@@ -116,10 +132,10 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
         films = [c.film_parameter for c in states if c.film_parameter is not None]
         if films:
             out["min film parameter [-]"] = min(films)
-        counts = [log.flagged_steps() for log in sim.checks.values()]
-        out["steps over skid limit [-]"] = float(sum(c["skid"] for c in counts))
-        out["steps over stress limit [-]"] = float(sum(c["stress"] for c in counts))
-        out["steps under film limit [-]"] = float(sum(c["film"] for c in counts))
+        counts = flagged_step_counts(sim.checks.values())
+        out["steps over skid limit [-]"] = float(counts["skid"])
+        out["steps over stress limit [-]"] = float(counts["stress"])
+        out["steps under film limit [-]"] = float(counts["film"])
     film = res.tables.get("film")
     if film is not None and not film.empty and kin is None:
         for col, key in (("central film [um]", "min central film [um]"),

@@ -1,7 +1,8 @@
 """User tour 21, oil-flow what-if sweep of the default rig (two identical QJ1044 bearings) on
-a 3-step protocol: summary.csv's ``steps over skid limit [-]`` is summed over the bearings
+a 3-step protocol: summary.csv's ``steps over skid limit [-]`` was summed over the bearings
 (6 for three steps flagged at both), and the sweep report said "every case, 4 to 6 steps
-each" without saying so, as if the protocol had more steps than it has.
+each", as if the protocol had more steps than it has. The summary now counts a step once
+however many bearings it flags, and the report's note says so.
 """
 
 from __future__ import annotations
@@ -12,27 +13,26 @@ from thermobearing.commands.report import flagged_cases, sweep_report
 from thermobearing.scene import load_scene
 from thermobearing.sweep import parse_set, run_sweep
 
-SUMMED = ("(summed over the 2 bearings: a step flagged at several of them counts once "
-          "for each)")
+ONCE = "(a step flagged at several of the 2 bearings counts once)"
 
 
 def _flagged_runner(scene_toml: str) -> dict[str, float]:
-    """A case flags 4 bearing-steps at 15 L/min and 6 at 33 L/min (what the rig's two
-    bearings gave on 3 steps), with a loss that grows with the flow."""
+    """A case flags 2 of its 3 steps at 15 L/min and all 3 at 33 L/min, with a loss that
+    grows with the flow."""
     from thermobearing.scene import loads_scene
 
     flow = loads_scene(scene_toml).supply.flow
     return {"mean total loss [W]": 1e6 * flow,
-            "steps over skid limit [-]": 4.0 if flow < 4e-4 else 6.0}
+            "steps over skid limit [-]": 2.0 if flow < 4e-4 else 3.0}
 
 
-def test_note_says_the_counts_are_summed_over_the_bearings():
+def test_note_says_a_step_counts_once_over_the_bearings():
     df = pd.DataFrame({"supply.flow [L/min]": [15.0, 33.0],
-                       "steps over skid limit [-]": [4.0, 6.0]})
+                       "steps over skid limit [-]": [2.0, 3.0]})
     (two,) = flagged_cases(df, ["supply.flow [L/min]"], bearings=2)
-    assert two.endswith(f"every case, 4 to 6 steps each {SUMMED}")
+    assert two.endswith(f"every case, 2 to 3 steps each {ONCE}")
     (one,) = flagged_cases(df, ["supply.flow [L/min]"])
-    assert one.endswith("every case, 4 to 6 steps each")
+    assert one.endswith("every case, 2 to 3 steps each")
 
 
 def test_sweep_report_of_the_two_bearing_rig_says_so(tmp_path):
@@ -41,4 +41,4 @@ def test_sweep_report_of_the_two_bearing_rig_says_so(tmp_path):
     p = parse_set("supply.flow=15,33", scene.to_dict())
     run_sweep(scene, [p], tmp_path, runner=_flagged_runner, workers=1, progress=False)
     html = sweep_report(tmp_path).read_text(encoding="utf-8")
-    assert f"every case, 4 to 6 steps each {SUMMED}" in html
+    assert f"every case, 2 to 3 steps each {ONCE}" in html

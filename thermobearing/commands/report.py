@@ -254,13 +254,14 @@ def flagged_cases(df: pd.DataFrame, pcols: list[str], *, bearings: int = 1) -> l
     points are of a bearing outside the check's limit (a skidding cage, an overloaded
     contact, a thin film).
 
-    ``bearings``: the base scene's bearings. The summary's counts are summed over the
-    bearings (:func:`thermobearing.simulation_summary.summarize_scene`), so with more
-    than one the note says the steps are counted once per bearing: "4 to 6 steps each"
-    of a 3-step protocol on two bearings read as more steps than the protocol has."""
+    ``bearings``: the base scene's bearings. The summary counts each schedule step once
+    however many bearings it flags (:func:`thermobearing.simulation_summary.
+    flagged_step_counts`), so with more than one bearing the note says so: the counts are
+    at most the protocol's steps. (Sweep folders written before that summed the counts
+    over the bearings: "4 to 6 steps each" of a 3-step protocol on two bearings.)"""
     notes = []
-    per = (f" (summed over the {bearings} bearings: a step flagged at several of them "
-           "counts once for each)" if bearings > 1 else "")
+    per = (f" (a step flagged at several of the {bearings} bearings counts once)"
+           if bearings > 1 else "")
     for col, what in _FLAGS.items():
         if col not in df:
             continue
