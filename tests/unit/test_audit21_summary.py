@@ -22,8 +22,9 @@ def _log(name: str, states: dict[int, list[StateCheck]]) -> CheckLog:
 
 
 def test_a_step_flagged_at_two_bearings_counts_once():
-    # step 1 skids (-30 %, default limit 10 %) at both bearings, step 2 at "nde" only;
-    # step 0 is over 4 GPa at both; the film is thin (Lambda 0.5) at step 2 of "de" only
+    # step 1 skids (-30 %, default limit 5 %) at both bearings, step 2 at "nde" only;
+    # step 0 is over its 4 GPa limit at both; the film is thin (Lambda 0.5, limit 1) at
+    # step 2 of "de" only
     de = _log("de", {0: [_state(0.0, 4.5e9)], 1: [_state(0.0, 1e9), _state(-0.3, 1e9)],
                      2: [_state(0.0, 1e9, film=0.5)]})
     nde = _log("nde", {0: [_state(0.0, 4.2e9)], 1: [_state(-0.3, 1e9)],
