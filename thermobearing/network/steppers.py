@@ -72,7 +72,7 @@ import scipy.sparse as sp
 from ..errors import ConvergenceError, InputError
 from ..registry import Registry
 from .assemble import assembler_for
-from .audit import EnergyAudit, TransientResult
+from .audit import EnergyAudit, TransientResult, roundoff_floor
 from .graph import ThermalNetwork
 from .stepper_core import (  # noqa: F401  (the core's names stay importable from here)
     HeatFn,
@@ -352,8 +352,9 @@ class _Driver:
 class _Recorder:
     """Collects (t, T, dT/dt) and audit rows."""
 
-    def __init__(self, active: bool = True) -> None:
+    def __init__(self, active: bool = True, floor: float = 0.0) -> None:
         self.active = active
+        self.floor = floor  # EnergyAudit.floor [J] (audit.roundoff_floor)
         self.started = False
         self.t: list[float] = []
         self.y: list[np.ndarray] = []
@@ -391,7 +392,14 @@ class _Recorder:
 
     def audit(self) -> EnergyAudit:
         a = np.array(self.rows, dtype=float).reshape(-1, 5)
-        return EnergyAudit(a[:, 0], a[:, 1], a[:, 2], a[:, 3], a[:, 4])
+        return EnergyAudit(a[:, 0], a[:, 1], a[:, 2], a[:, 3], a[:, 4], floor=self.floor)
+
+
+def _roundoff_floor(network: ThermalNetwork, atol: float) -> float:
+    """The audit's round-off floor of a run on ``network`` (:func:`.audit.roundoff_floor`):
+    a run with no heat from equilibrium has round-off flows only."""
+    caps = np.array([network.capacity(name) for name in network.state_nodes], dtype=float)
+    return roundoff_floor(caps, atol)
 
 
 # ================================================================== public API
@@ -499,7 +507,7 @@ def integrate(network: ThermalNetwork, heat: HeatFn | None, t_span: tuple[float,
         heat_with_jacobian = None
     heat_jacobian = _jacobian_of(heat_jacobian, heat_with_jacobian)
     driver = _Driver(network, method, rtol, atol, dt, max_step, first_step, min_step, jacobian)
-    rec = _Recorder()
+    rec = _Recorder(floor=_roundoff_floor(network, atol))
     cuts = sorted({float(b) for b in breakpoints if t0 < float(b) < t1})
     edges = [t0, *cuts, t1]
     td = bool(heat_time_dependent) and not constant
@@ -576,7 +584,7 @@ class TransientStepper:
             heat_with_jacobian = None
         heat_jacobian = _jacobian_of(heat_jacobian, heat_with_jacobian)
         sampled = ts is not None and ts.size > 0
-        rec = _Recorder(active=sampled)
+        rec = _Recorder(active=sampled, floor=_roundoff_floor(self.network, self._driver.atol))
         steps0 = self._driver.core.stats["steps"]
         try:
             y1 = self._driver.segment(float(t), float(t) + float(dt), y, heat, heat_jacobian,
