@@ -50,3 +50,25 @@ def bm7():
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+@pytest.fixture(scope="session")
+def crb_rib_run():
+    """The rib heat source's coupled roller dynamics of paper 003's base case without
+    unbalance (CRB_50x75x16, MIL_PRF_23699, 3 kN radial, ``roller_dynamics_heat.run_dynamics``
+    with its default settings and a cold start), one run per (inner-ring speed [rad/s],
+    temperature [K]) for the whole session: several test files check the same run (the
+    375 K node at 20000 r/min, the 400 K node at 30000 r/min; ~1-2 s each). Returns
+    ``run(speed, temperature) -> (RibDynamicsHeat, response)``; the results are read-only."""
+    from thermobearing.skidding import roller_dynamics_heat as rdh
+
+    bearing, lubricant = load_bearing("CRB_50x75x16"), load_lubricant("MIL_PRF_23699")
+    runs: dict[tuple[float, float], tuple] = {}
+
+    def run(speed: float, temperature: float):
+        key = (float(speed), float(temperature))
+        if key not in runs:
+            runs[key] = rdh.run_dynamics(bearing, lubricant, speed, 3000.0, temperature)
+        return runs[key]
+
+    return run

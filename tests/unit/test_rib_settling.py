@@ -99,7 +99,7 @@ def test_settling_before_the_running_mean_test():
     assert both.slip_speed < alone.slip_speed
 
 
-def test_heat_source_path_settles_without_unbalance_only():
+def test_heat_source_path_settles_without_unbalance_only(crb_rib_run):
     # rib heat source path (run_dynamics, default settle and running-mean stop): the settled
     # motion without unbalance warms up until the cage settles; with an unbalance (chaotic
     # motion, no steady cage speed) the warm-up is the fixed one
@@ -108,7 +108,7 @@ def test_heat_source_path_settles_without_unbalance_only():
     b = load_bearing("CRB_50x75x16")
     lub = load_lubricant("MIL_PRF_23699")
     w = 20000 * math.pi / 30
-    _, calm = rdh.run_dynamics(b, lub, w, 3000.0, 375.0, 0.0)
+    _, calm = crb_rib_run(w, 375.0)          # run_dynamics(b, lub, w, 3000.0, 375.0, 0.0)
     _, rattling = rdh.run_dynamics(b, lub, w, 3000.0, 375.0, 0.06e-3)
     assert calm.series["settled"][0] == 1
     assert rattling.series["settled"][0] == 0
