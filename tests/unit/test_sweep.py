@@ -123,10 +123,10 @@ def test_unreachable_scheduler(tmp_path):
     params = [parse_set("supply.flow=15,33", scene.to_dict())]
     with pytest.raises(SchedulerUnreachable):
         run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
-                  scheduler="tcp://127.0.0.1:9", progress=False, connect_timeout=1.0)
+                  scheduler="tcp://127.0.0.1:9", progress=False, connect_timeout=0.5)
     df = run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
                    scheduler="tcp://127.0.0.1:9", fallback_local=True, workers=1,
-                   progress=False, connect_timeout=1.0)
+                   progress=False, connect_timeout=0.5)
     assert len(df) == 2
     with pytest.raises(InputError, match="connect_timeout"):
         run_sweep(scene, params, tmp_path, runner=flow_speed_runner,
