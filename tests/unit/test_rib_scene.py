@@ -76,5 +76,5 @@ def test_scene_with_unbalance_runs_the_first_step():
     # the thrust share: above the no-unbalance heat (drag + thrust, 193 W at this step); the
     # unbalanced rollers rattle chaotically, so the heat scatters by 8-12 % with round-off
     # alone (paper003_pv_slip_trends SOURCE.md): measured 713.8 W on the rib cone's normal
-    # (2026-11-24), 600-690 W before; the upper bound guards against a runaway only
+    # (2026-11-24; inside 400-700 W before it); the upper bound guards against a runaway only
     assert 2.0 * 193.0 < rib[0] < 900.0
