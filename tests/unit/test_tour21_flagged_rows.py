@@ -12,32 +12,18 @@ import re
 
 import pandas as pd
 import pytest
+from nu214_scene import nu214_jet_scene
 
 from thermobearing.commands.report import run_report
 from thermobearing.report_sections import _with_checks
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """title = "tour 21 flagged rows"
-[[bearings]]
-name = "crb"
-preset = "NU214"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "25 degC"
-[schedule]
-axial_load = "0 kN"
+SCENE = nu214_jet_scene(title="tour 21 flagged rows", schedule="""axial_load = "0 kN"
 step_duration = "1 min"
 steps = [{ speed = "2000 rpm", radial_load = "5 kN" },
-         { speed = "10000 rpm", radial_load = "1 kN" }]
-[outputs]
-want = ["losses", "kinematics", "report"]
-"""
+         { speed = "10000 rpm", radial_load = "1 kN" }]""",
+                        want='["losses", "kinematics", "report"]')
 
 
 @pytest.fixture(scope="module")

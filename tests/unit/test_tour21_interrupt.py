@@ -10,32 +10,18 @@ from __future__ import annotations
 import json
 
 import pytest
+from nu214_scene import nu214_jet_scene
 
 from thermobearing import report as report_module
 from thermobearing.commands.report import run_report
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """title = "tour 21 interrupt"
-[[bearings]]
-name = "crb"
-preset = "NU214"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "25 degC"
-[schedule]
-radial_load = "1 kN"
+SCENE = nu214_jet_scene(title="tour 21 interrupt", schedule="""radial_load = "1 kN"
 axial_load = "0 kN"
 step_duration = "1 min"
-steps = [{ speed = "2000 rpm" }, { speed = "10000 rpm" }]
-[outputs]
-want = ["losses", "kinematics", "report"]
-"""
+steps = [{ speed = "2000 rpm" }, { speed = "10000 rpm" }]""",
+                        want='["losses", "kinematics", "report"]')
 
 
 def test_ctrl_c_while_the_figures_are_drawn_keeps_metadata_and_breakdown(tmp_path,

@@ -7,34 +7,25 @@ scene said the same 25 degC and nothing else on the temperature.
 
 from __future__ import annotations
 
+from nu214_scene import JET_SUPPLY, nu214_jet_scene
+
 from thermobearing.report_context import supply_text
 from thermobearing.scene import loads_scene
 
-BASE = """title = "tour 21 conditions"
-[[bearings]]
-name = "crb"
-preset = "NU214"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "25 degC"
-{initial}
-[schedule]
-speed = "5000 rpm"
+SCHEDULE = """speed = "5000 rpm"
 radial_load = "5 kN"
 axial_load = "0 kN"
 step_duration = "1 min"
-[outputs]
-want = {want}
 """
 
 
+def _text(want: str, initial: str = "") -> str:
+    return nu214_jet_scene(title="tour 21 conditions", schedule=SCHEDULE, want=want,
+                           environment=initial)
+
+
 def _scene(want: str, initial: str = ""):
-    return loads_scene(BASE.format(want=want, initial=initial))
+    return loads_scene(_text(want, initial))
 
 
 def test_losses_only_without_initial_temperature_names_the_inlet():
@@ -56,8 +47,8 @@ def test_network_run_without_initial_temperature_says_it_is_the_ambient():
 
 
 def test_oil_bath_losses_only_runs_at_the_ambient():
-    scene = loads_scene(BASE.format(want='["losses"]', initial="").replace(
-        'method = "jet"\nflow = "1 L/min"\ninlet_temperature = "40 degC"',
+    scene = loads_scene(_text('["losses"]').replace(
+        JET_SUPPLY,
         'method = "oil_bath"\nlevel = "5 mm"'))
     text = supply_text(scene, None)
     assert text.endswith("no initial temperature set and no thermal network: parts and oil "
