@@ -416,6 +416,9 @@ def run_sweep(
         raise InputError("--out", str(out), "a results folder (new or of this sweep); this "
                          "is a file")
     cases = expand(scene, params)
+    for p in params:  # values read in a way the user may not have meant (a bare 313 degC)
+        for line in p.notes:
+            print(line, file=sys.stderr)
     done = finished_cases(out)
     cases = match_finished(scene, cases, done)  # the same quantities in other units
     todo = [c for c in cases if c.case_id not in done]

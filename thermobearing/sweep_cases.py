@@ -51,7 +51,18 @@ class Case:
 
 def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
     """Cartesian product of the sweep values, each validated as a scene (a path swept
-    twice is an error; a repeated combination is one case)."""
+    twice, no swept field or a field without values is an error; a repeated combination
+    is one case)."""
+    if not params:
+        # a sweep of nothing ran the base scene as one case and called it a sweep
+        raise InputError("params", "[]", "at least one swept field (a SweepParameter from "
+                         "parse_set('supply.flow=15,33', scene.to_dict()); on the command "
+                         "line --set PATH=VALUES)")
+    for p in params:
+        if not p.values:
+            # an empty value list gave a sweep of 0 cases: an empty summary without a word
+            raise InputError(f"--set {p.path}", "", "at least one value: a comma list "
+                             "(15,20,33) or a range start:stop:step")
     paths = [p.path for p in params]
     for path in paths:
         if paths.count(path) > 1:

@@ -56,11 +56,14 @@ class SweepParameter:
 
     ``dropped``: values of the ``--set`` text left out because they repeat an earlier one
     (the same quantity, e.g. ``15`` after ``15 L/min``), as ``"'15' (= '15 L/min')"``.
+    ``notes``: what the sweep says before its runs about values it reads in a way the
+    user may not have meant (:func:`_temperature_notes`: a bare 313 read as 313 degC).
     """
 
     path: str
     values: tuple[Any, ...]
     dropped: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
 
 
 #: a quantity as a scene writes it: a number, then its unit with or without a space
@@ -137,9 +140,18 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
     if "=" not in spec:
         raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
     path, raw = (s.strip() for s in spec.split("=", 1))
-    if not path or not raw:
+    if not path:
         raise InputError("--set", spec, "'path=value1,value2,...' or 'path=start:stop:step'")
+    if not raw:
+        # "supply.flow=" (an empty list): the error named no field and no reason
+        raise InputError(f"--set {path}", raw, "at least one value: a comma list "
+                         "(15,20,33) or a range start:stop:step")
     check_path(scene_dict, path)
+    return _checked_temperatures(_parse_values(path, raw, scene_dict), raw)
+
+
+def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
+    """The values of ``--set path=raw`` (``raw`` not empty, ``path`` checked)."""
     if ":" in raw:
         numbers, unit = _split_unit(raw)
         if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):
@@ -192,6 +204,69 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         else:  # a count written as a whole number stays an integer (n_balls=18,20)
             values.append(int(num) if re.fullmatch(r"\s*[-+]?\d+\s*", num) else x)
     return _unique(path, values, items)
+
+
+#: swept fields that are temperatures (a bare number is in the scene's unit, degC by default)
+_TEMPERATURE_FIELDS = ("inlet_temperature", "ambient_temperature", "initial_temperature")
+#: a bare temperature read at or above this [K] (150 degC) whose number read in kelvin is a
+#: usual oil or room temperature (:data:`_KELVIN_LIKE`) is said: 313 typed for 313 K
+_HOT_BARE = 423.15
+#: numbers that read in kelvin as -50 to 150 degC
+_KELVIN_LIKE = (223.15, 423.15)
+
+
+def _checked_temperatures(param: SweepParameter, raw: str) -> SweepParameter:
+    """``param`` with its temperatures checked: a value at or above the runaway limit
+    (:data:`thermobearing.coupled.RUNAWAY_TEMPERATURE`, 300 degC) is refused (no run can
+    pass it: a node heads for the inlet or ambient temperature, and the run stops as a
+    thermal runaway), and a bare number that reads as a hot temperature in the scene's
+    unit but as a usual one in kelvin is noted (:attr:`SweepParameter.notes`).
+
+    (Tour 22: ``--set supply.inlet_temperature=313`` on an NU 214 scene written in degC,
+    meant as 313 K, ran a 313 degC jet without a word: the oil node reached 285.6 degC and
+    the rollers 236 degC, and the summary's only flag was the film limit.)"""
+    if param.path.rsplit(".", 1)[-1] not in _TEMPERATURE_FIELDS:
+        return param
+    from .coupled import RUNAWAY_TEMPERATURE
+    from .units import to_si
+
+    bare = _split_unit(raw)[1] == ""  # no unit after the list (values may carry their own)
+    notes = list(param.notes)
+    for value in param.values:
+        if not isinstance(value, str):
+            continue
+        number, _, unit = value.partition(" ")
+        try:
+            x = float(number)
+            kelvin = to_si(value, "K", field=param.path)
+        except (ValueError, InputError):
+            continue  # not a quantity: the scene's check names it
+        typed = bare and not _split_unit(_typed_item(raw, number))[1]
+        hint = ""
+        if typed and _KELVIN_LIKE[0] <= x <= _KELVIN_LIKE[1] and unit != "K":
+            hint = (f"; a bare number is in {unit} here (the unit of this field in the "
+                    "scene): "
+                    f"for kelvin write '{x:g} K' ({x - 273.15:g} degC)")
+        if not kelvin < RUNAWAY_TEMPERATURE:
+            raise InputError(f"--set {param.path}", value, "a temperature below the "
+                             f"{RUNAWAY_TEMPERATURE - 273.15:g} degC runaway limit (a run "
+                             "stops as a thermal runaway there)" + hint)
+        if hint and kelvin >= _HOT_BARE:
+            celsius = "" if unit == "degC" else f" ({kelvin - 273.15:.4g} degC)"
+            notes.append(f"sweep: {param.path} = {x:g} is read as {value}{celsius}{hint}")
+    return SweepParameter(param.path, param.values, param.dropped, tuple(notes))
+
+
+def _typed_item(raw: str, number: str) -> str:
+    """The item of the ``--set`` text whose number is ``number`` (its own unit, if any)."""
+    for item in raw.split(","):
+        num, _ = _split_unit(item)
+        try:
+            if float(num) == float(number):
+                return item
+        except ValueError:
+            continue
+    return number
 
 
 def _same_quantity_key(value: Any) -> Any:
