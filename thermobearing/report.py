@@ -226,7 +226,10 @@ def fig_loss_maps(summary: pd.DataFrame, x: str, y: str,
             ax.plot(line.index.to_numpy(float), line.to_numpy(float), "o-",
                     label=f"{other} = {_fmt_value(fixed)}")
             ax.set_xlabel(along, fontsize=8)
-            ax.set_ylabel(comp, fontsize=8)
+            # the title names the loss (in words); the axis gives its unit, as the colour
+            # bar of a contoured panel does (it repeated the registered name,
+            # "raceway_traction [W]", under the title "raceway contacts (...) [W]")
+            ax.set_ylabel("W" if comp.endswith("[W]") else comp, fontsize=8)
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
             continue
@@ -419,7 +422,9 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     parts.append(losses_html(results.tables.get("losses"), results.tables, scene, bearings,
                              lubricant, flagged=results.flagged))
     parts.append("<h2 id='figures'>Figures</h2>")
-    parts += [figure_html(name, png, _caption(name)) for name, png in results.figures.items()]
+    measured = getattr(scene, "measured", None) is not None
+    parts += [figure_html(name, png, _caption(name, measured))
+              for name, png in results.figures.items()]
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
     if results.check_limits:
         limits = CheckLimits.from_dict(results.check_limits)
@@ -494,9 +499,11 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     return "\n".join(parts)
 
 
+#: caption of the temperature figure of a run without a [measured] file
+TEMPERATURES_CAPTION = "node temperatures [degC] against time [min]"
 #: figure name -> caption in the report
 FIGURE_CAPTIONS = {
-    "temperatures": "node temperatures [degC] against time [min] (measured points overlaid)",
+    "temperatures": f"{TEMPERATURES_CAPTION} (measured points overlaid)",
     "steady_temperatures": "steady-state node temperatures [degC] per operating point",
     "power_losses": "power loss by source [W] per operating point and bearing",
     "heat_destinations": "heat received by each component [W] per operating point and "
@@ -510,7 +517,12 @@ FIGURE_CAPTIONS = {
 }
 
 
-def _caption(name: str) -> str | None:
+def _caption(name: str, measured: bool = False) -> str | None:
+    """The report's caption of figure ``name``; ``measured``: the scene has a [measured]
+    file, whose readings the temperature figure overlays (the caption said "measured
+    points overlaid" under the figure of every transient run, with or without readings)."""
+    if name == "temperatures" and not measured:
+        return TEMPERATURES_CAPTION
     if name.startswith("loss_maps"):
         bearing = name[len("loss_maps_"):]
         return ("power loss maps over speed and load [W]"

@@ -1,0 +1,81 @@
+"""User tour 22, the reports of an oil-flow what-if (QJ1044 jet scene, NU 214 jet scene).
+
+* The run report captioned its temperature figure "node temperatures [degC] against time
+  [min] (measured points overlaid)" under every transient run, also a scene without a
+  [measured] file (nothing overlaid).
+* A sweep interrupted after its first case (or one with a single value of one of its two
+  numeric axes) draws its loss maps as curves; their axes repeated the registered source
+  name (``raceway_traction [W]``) under the panel title that names it in words.
+"""
+
+from __future__ import annotations
+
+import pandas as pd
+import pytest
+from nu214_scene import nu214_jet_scene
+
+import thermobearing.report as report
+from thermobearing.report import TEMPERATURES_CAPTION, fig_loss_maps, html_report
+from thermobearing.results import Results
+from thermobearing.scene import loads_scene
+
+SCHEDULE = """radial_load = "5 kN"
+axial_load = "0 kN"
+step_duration = "1 min"
+steps = [{ speed = "3000 rpm" }]"""
+TEMPS = pd.DataFrame({"time [s]": [0.0, 60.0], "time [min]": [0.0, 1.0],
+                      "crb.oil [degC]": [40.0, 45.0]})
+
+
+def _captions(text: str) -> list[str]:
+    import re
+
+    return re.findall(r"<figcaption>(.*?)</figcaption>", text)
+
+
+def test_temperature_caption_names_no_measured_points_without_a_measured_file():
+    scene = loads_scene(nu214_jet_scene(title="tour 22 caption", schedule=SCHEDULE,
+                                        want='["temperatures", "losses", "report"]'))
+    assert scene.measured is None
+    res = Results(tables={"temperatures": TEMPS}, figures={"temperatures": b"\x89PNG"})
+    for kwargs in ({}, {"scene": scene}):
+        caps = _captions(html_report(res, "t", **kwargs))
+        assert caps == [TEMPERATURES_CAPTION]
+        assert "measured" not in caps[0]
+
+
+def test_temperature_caption_with_a_measured_file_says_the_points_are_overlaid():
+    assert report._caption("temperatures", measured=True) == (
+        f"{TEMPERATURES_CAPTION} (measured points overlaid)")
+    assert report._caption("temperatures") == TEMPERATURES_CAPTION
+
+
+@pytest.fixture()
+def captured(monkeypatch):
+    """The matplotlib figures fig_loss_maps would encode (instead of their PNG)."""
+    figs = []
+
+    def keep(fig):
+        figs.append(fig)
+        return b"\x89PNG"
+
+    monkeypatch.setattr(report, "_png", keep)
+    return figs
+
+
+def test_loss_maps_drawn_as_curves_give_the_unit_on_the_axis(captured):
+    # an NU 214 flow sweep at one inlet temperature (or interrupted after one inlet)
+    summary = pd.DataFrame({"supply.flow [L/min]": [0.5, 1.0, 2.0],
+                            "supply.inlet_temperature [degC]": [30.0, 30.0, 30.0],
+                            "mean total loss [W]": [583.0, 668.0, 774.0],
+                            "raceway_traction [W]": [45.6, 48.2, 52.1]})
+    titles = {"raceway_traction [W]": "raceway contacts (rolling and sliding shear) [W]"}
+    fig_loss_maps(summary, "supply.flow [L/min]", "supply.inlet_temperature [degC]",
+                  ["mean total loss [W]", "raceway_traction [W]"], titles=titles)
+    panels = captured[-1].axes[:2]
+    assert [ax.get_ylabel() for ax in panels] == ["W", "W"]
+    assert panels[1].get_title().startswith("raceway contacts")
+    assert [ax.get_xlabel() for ax in panels] == ["supply.flow [L/min]"] * 2
+    line = panels[1].get_lines()[0]
+    assert list(line.get_ydata()) == [45.6, 48.2, 52.1]
+    assert line.get_label() == "supply.inlet_temperature [degC] = 30"
