@@ -79,11 +79,41 @@ __all__ = [
     "BallSkiddingResult",
     "JacobianBlocks",
     "ball_residual_system",
+    "load_step_fraction",
     "newton_block",
     "race_control_guess",
     "solve_ball",
     "theoretical_csr",
 ]
+
+
+#: load change (fraction of the larger load, :func:`load_step_fraction`) above which
+#: :func:`solve_ball` starts cold although given a guess. Measured (QJ1044, Z = 16, 30 and 80
+#: degC oil, 300-3000 r/min, 1 kN radial, from the BM-5 quick map's converged points to axial
+#: loads 0-30x theirs, 590 pairs, CPU best of two): the warm start is cheaper below a
+#: fraction of ~0.7 and dearer above (0.4-0.5: warm 1.9 ms against cold 3.6 ms; 0.8-0.85:
+#: 5.7 / 4.0 ms; 0.95-1: 6.5 / 3.4 ms: a warm start that gives up after its 25 iterations
+#: pays for both); above 0.75, 190 of the pairs, warm 5.7 ms and cold 3.8 ms on average.
+#: In evaluations alone the cold start wins from ~0.5, but its load distribution costs CPU
+#: that the evaluations do not count. Both land on the same state (CSR within 3.2e-10
+#: relative). A collinear load ratio of 4 (or 1/4) is a fraction of 0.75.
+COLD_LOAD_STEP = 0.75
+
+
+def load_step_fraction(guess, radial_load: float, axial_load: float) -> float:
+    """|F_new - F_old| / max(|F_old|, |F_new|) [-] of the load vectors F = (F_r, F_a) [N] of
+    the warm start ``guess`` (a :class:`BallSkiddingResult` of :func:`solve_ball`, its loads
+    read from its residual system) and of the new point; 0.0 when the guess carries no
+    system or both loads are zero (no step to judge). Between 0 (the same loads) and 2 (a
+    reversed load)."""
+    system = guess.extra.get("system") if guess is not None else None
+    if system is None:
+        return 0.0
+    fr0, fa0 = float(system.Fr), float(system.Fa)
+    big = max(math.hypot(fr0, fa0), math.hypot(radial_load, axial_load))
+    if not big > 0.0:
+        return 0.0
+    return math.hypot(radial_load - fr0, axial_load - fa0) / big
 
 
 # ---------------------------------------------------------------------------------------------
@@ -135,7 +165,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                max_iter: int = 150, continuation: bool = True,
                theoretical_reference=None, warm_iterations: int = 25,
                energy_tol: float = 2e-9, energy_polish: int = 2,
-               warm_refresh: float = 0.0, cold_fallback: bool = True) -> BallSkiddingResult:
+               warm_refresh: float = 0.0, cold_fallback: bool = True,
+               cold_load_step: float = COLD_LOAD_STEP) -> BallSkiddingResult:
     """Solve the ball/cage/ring equilibrium at one operating point.
 
     Parameters
@@ -170,6 +201,10 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         steps (each kept only if it lowers the residual; the identity is required to 1e-8).
     cold_fallback : with ``guess``, a warm start that fails starts cold (default); False:
         it raises (the steps of :func:`_speed_continuation` after the first).
+    cold_load_step : with ``guess`` and ``cold_fallback``, start cold instead when the load
+        vector moved by more than this fraction of the larger of the two loads since the
+        guess (:func:`load_step_fraction`; default :data:`COLD_LOAD_STEP`, math.inf: always
+        warm); ``extra["start"] = "cold_load_step"`` then says so.
     warm_refresh : warm starts: refresh the Jacobian analytically when the chord steps would
         need more than this many further evaluations (see
         :func:`~thermobearing.skidding.ball_newton.newton_block`; 0, the default: only when a
@@ -193,6 +228,9 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         raise InputError("tol", tol, "a tolerance on the scaled residual norm in (0, 1)")
     if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
         raise InputError("max_iter", max_iter, "a whole number of Newton iterations >= 1")
+    if not (isinstance(cold_load_step, int | float) and cold_load_step >= 0.0):
+        raise InputError("cold_load_step", cold_load_step,
+                         "a load-change fraction >= 0 (math.inf: always warm)")
     if radial_load == 0.0 and axial_load == 0.0:
         # no external load (clearance >= 0): the inner ring carries no contact load in
         # equilibrium, so nothing drives the balls or the cage (the SKF6304
@@ -210,6 +248,13 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
         # another bearing's (or ball count's) state cannot start this one: cold start (a
         # QJ1044 result given to the SKF6304 raised UnboundLocalError)
         guess = None
+    start = None
+    if (guess is not None and cold_fallback
+            and load_step_fraction(guess, radial_load, axial_load) > cold_load_step):
+        # a warm start across a large load change costs more than the cold start
+        # (COLD_LOAD_STEP); the warm-only steps of the continuations (cold_fallback False)
+        # keep their guess
+        guess, start = None, "cold_load_step"
     t0 = time.perf_counter()
     prev = guess.extra.get("system") if guess is not None else None
     if (prev is not None and prev.bearing is bearing and prev.models is models
@@ -325,6 +370,8 @@ def solve_ball(bearing, models: BallModels, speed: float, radial_load: float,
                       res.theoretical_cage_speed_ratio)
     if fallback is not None:
         res.extra["fallback"] = fallback
+    if start is not None:
+        res.extra["start"] = start
     if fallback == "round_off":
         res.extra["round_off_floor"] = round_off
     if own_reference:
