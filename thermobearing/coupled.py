@@ -553,9 +553,11 @@ def run_coupled(sim: Simulation, writer: ResultsWriter | None
         for column, node in measured.columns.items():
             if node not in net.state_nodes:
                 from .errors import InputError
+                from .measured_layout import closest_name
 
                 raise InputError(f"measured.columns[{column!r}]", node,
-                                 "a node of the network: " + ", ".join(net.state_nodes))
+                                 "a node of the network: " + ", ".join(net.state_nodes)
+                                 + closest_name(str(node), list(net.state_nodes)))
     import warnings
 
     from .errors import ValidityWarning

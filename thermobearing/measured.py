@@ -186,6 +186,13 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
         if j is None:
             raise InputError(f"{field}.columns[{col!r}]", col, "a column of the file: "
                              + ", ".join(header) + closest_name(col, header))
+        if j in tcols:
+            # the time column mapped to a node was compared as temperatures (0-50 "degC"
+            # of a time in minutes against the shaft)
+            raise InputError(f"{field}.columns[{col!r}]", col,
+                             "a sensor column; this is the time column "
+                             f"({field}.time_column): map the thermocouple columns, "
+                             + ", ".join(c for k, c in enumerate(header) if k not in tcols))
         idx[col] = j
     at = [i + 1 for i, _ in lines[h + 1:]]  # file line of each row, for the errors
     rows = [layout.split(ln, f"line {a}") for a, (_, ln) in zip(at, lines[h + 1:],

@@ -350,7 +350,11 @@ def with_absolute_paths(scene: Scene) -> Scene:
                 and not Path(table[key]).is_absolute():
             table[key] = str((base / table[key]).resolve())
             changed = True
-    return Scene.from_dict(d, base) if changed else scene
+    if not changed:
+        return scene
+    # the schedule as loaded: the same steps, with its notes on bare numbers (the TOML
+    # round trip writes every step with its unit)
+    return replace(Scene.from_dict(d, base), schedule=scene.schedule)
 
 
 # ---------------------------------------------------------------------------

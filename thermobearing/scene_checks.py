@@ -236,10 +236,12 @@ def check_network(network: Mapping[str, Any], require: bool = True,
                              "set in [environment] / [supply], not in the network")
         unit = entry.parameters.get(key)
         if unit is None:
+            from .measured_layout import closest_name
+
+            known = [k for k in sorted(entry.parameters) if k not in from_scene]
             raise InputError(f"network.parameters.{key}", value,
-                             f"a parameter of template {name!r}: "
-                             + ", ".join(k for k in sorted(entry.parameters)
-                                         if k not in from_scene))
+                             f"a parameter of template {name!r}: " + ", ".join(known)
+                             + closest_name(str(key), known))
         if unit == "-" and isinstance(value, str):
             continue  # a dimensionless option given by name (a material, a model ...)
         _quantity(value, unit if unit != "-" else "dimensionless", f"network.parameters.{key}")

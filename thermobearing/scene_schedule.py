@@ -121,6 +121,9 @@ class Schedule:
 
     steps: tuple[Step, ...]
     units: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
+    #: notes on step speeds and durations the scene wrote as bare numbers (read in SI:
+    #: rad/s and s), :func:`unitless_notes`; a run and ``check`` print them
+    unitless: tuple[str, ...] = field(default=(), compare=False, repr=False)
 
     @property
     def breakpoints(self) -> list[float]:
@@ -210,7 +213,12 @@ class Schedule:
             steps.extend(_read_schedule_file(data["file"], defaults, base_dir, units))
         if not steps:
             raise InputError("schedule", dict(data), "at least one step")
-        return cls(steps=tuple(steps), units=units)
+        bare = [(f"schedule.{k}", k, data[k]) for k in ("speed", dur_key) if k in data]
+        if forms and forms[0] == "steps":
+            bare += [(f"schedule.steps[{i}].{k}", k, item[k])
+                     for i, item in enumerate(data["steps"]) for k in ("speed", "duration")
+                     if k in item]
+        return cls(steps=tuple(steps), units=units, unitless=unitless_notes(bare))
 
     def to_dict(self) -> dict[str, Any]:
         units = {**_STEP_UNITS, **self.units}
@@ -219,6 +227,33 @@ class Schedule:
                 {k: _fmt(getattr(s, k), units[k]) for k in _STEP_KEYS} for s in self.steps
             ]
         }
+
+
+def unitless_notes(values: list[tuple[str, str, Any]]) -> tuple[str, ...]:
+    """Notes on step speeds and durations written as bare numbers, ``values`` being
+    ``(field, key, raw)`` as the scene wrote them (``key``: ``speed``, ``duration`` or
+    ``step_duration``). A bare number in a scene is SI, so ``speed = 3000`` is 3000 rad/s
+    (28648 r/min, not 3000 r/min) and ``duration = 10`` is 10 s: both run without
+    complaint (within the bounds), which a rig protocol meant in r/min and minutes did with
+    speeds 9.5 times too high or steps 60 times too short. One note per quantity, naming
+    its first field, how many more there are, and the reading; zero (a stop) is the same
+    in every unit and not noted."""
+    notes = []
+    for key, unit, per, other, spellings in (
+            ("speed", "rad/s", 30.0 / math.pi, "r/min", ("rpm", "rad/s")),
+            ("duration", "s", 1.0 / 60.0, "min", ("min", "s"))):
+        hits = [(f, float(raw)) for f, k, raw in values
+                if k.removeprefix("step_") == key and isinstance(raw, int | float)
+                and not isinstance(raw, bool) and raw != 0]
+        if not hits:
+            continue
+        where, raw = hits[0]
+        more = (f" (and {len(hits) - 1} more {key} value{'s' if len(hits) > 2 else ''} "
+                "without a unit)") if len(hits) > 1 else ""
+        notes.append(f"{where} = {raw:g}{more} has no unit: a bare number in a scene is SI, "
+                     f"read as {raw:g} {unit} = {raw * per:.6g} {other}; write the unit, "
+                     f"\"{raw:g} {spellings[0]}\" or \"{raw:g} {spellings[1]}\"")
+    return tuple(notes)
 
 
 def _read_schedule_file(name: str, defaults: Mapping[str, float],

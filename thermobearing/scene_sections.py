@@ -185,7 +185,12 @@ class Supply:
             )
         if flow > MAX_FLOW:
             # 1e150 L/min stopped the transient inside the stepper as "temperature = nan"
-            raise InputError("supply.flow", data.get("flow"), MAX_FLOW_ALLOWED)
+            raw = data.get("flow")
+            # flow = 2 meant as 2 L/min is 2 m^3/s: the refusal said only the range
+            bare = (f"; a bare number in a scene is in m^3/s ({raw:g} m^3/s = "
+                    f"{flow * 60_000.0:.6g} L/min): write the unit, e.g. \"{raw:g} L/min\""
+                    if isinstance(raw, int | float) and not isinstance(raw, bool) else "")
+            raise InputError("supply.flow", raw, MAX_FLOW_ALLOWED + bare)
         if method == "grease" and flow > 0:
             # the network took it as an oil stream through the bearing: a 5 L/min "grease"
             # cooled an SKF 6304 from 42 to 21 degC

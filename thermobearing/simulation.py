@@ -132,6 +132,9 @@ class Simulation:
     """
 
     step_log: Callable[[str], None] | None = None
+    #: schedule steps finished so far (:meth:`log_step`; None before :meth:`run` starts):
+    #: ``thermobearing run`` says how many a Ctrl-C or an error left in the folder
+    steps_done: int | None = None
 
     def __init__(self, scene: Scene, *, progress: bool | None = None) -> None:
         from . import load_lubricant
@@ -149,7 +152,7 @@ class Simulation:
                                         str(scene.resolve_path(lub_spec["path"])))
         self.supply = OilSupply.from_scene(scene.supply)
         check_temperatures(scene, self.lubricant)  # a bare 35 in a scene is 35 K
-        self.notes: list[str] = _supply_notes(scene)
+        self.notes: list[str] = [*scene.schedule.unitless, *_supply_notes(scene)]
         kin_name = scene.models.get("kinematics", "skidding")
         KINEMATICS.entry(kin_name)
         kin_options: dict[str, Any] = {}
@@ -158,8 +161,7 @@ class Simulation:
         self.bearings: list[_Bearing] = []
         dropped: list[str] = []
         for i_spec, spec in enumerate(scene.bearings):
-            src = spec.preset or str(scene.resolve_path(spec.path))
-            b = _load_scene_bearing(src, spec.overrides, f"bearings[{i_spec}]")
+            b = _scene_bearing(scene, spec, i_spec)
             is_ball = hasattr(b, "ball_diameter")
             self.notes.extend(n for n in level_notes(scene, spec.name, b)
                               if n not in self.notes)
@@ -638,6 +640,7 @@ class Simulation:
         from .scene import with_absolute_paths
         from .scene_checks import check_measured_file, check_network
 
+        self.steps_done = 0
         # what loading cannot know wrong fails here, before any model is solved (the CLI
         # runs the same checks earlier): the network template's required parameters and
         # the measured CSV (columns, numbers, increasing times)
@@ -713,6 +716,7 @@ class Simulation:
         """Give :attr:`step_log` the line of finished step ``i``: ``step 3/6 done (t = 1800
         of 4200 s simulated), 12.3 s wall`` (``t``: the simulated time at its end [s], None
         for a run of operating points without time)."""
+        self.steps_done = max(self.steps_done or 0, i + 1)
         if self.step_log is None:
             return
         n = len(self.scene.schedule.steps)
@@ -821,12 +825,7 @@ class Simulation:
                                           steady="steady_temperatures" in results.tables))
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
-            per_step = losses.groupby(["step", "bearing"])["power [W]"].sum()
-            lo, hi = _watts(per_step.min()), _watts(per_step.max())
-            # a small bearing's watts keep their digits (the 6206 map read "1 - 23 W" for
-            # 0.962 - 22.9 W); one operating point gives one number
-            lines.append(f"total loss per bearing: {lo} W" if lo == hi else
-                         f"total loss per bearing: {lo} - {hi} W")
+            lines.append(_loss_range_line(losses))
         temps = results.tables.get("temperatures")
         steady = results.tables.get("steady_temperatures")
         if temps is not None and not temps.empty:
@@ -866,6 +865,30 @@ class Simulation:
             if len(merged) > len(shown):
                 lines.append(f"  ... {len(merged) - len(shown)} more")
         return "\n".join(lines)
+
+
+def _loss_range_line(losses: pd.DataFrame) -> str:
+    """``total loss per bearing: lo - hi W`` over the steps that turn; steps at rest (both
+    rings stopped: every source books 0 W) are named after it, not taken as the lowest
+    loss (a rig protocol ending with a stop read "0 - 400 W")."""
+    keys = ["step", "bearing"]
+    per_step = losses.groupby(keys, sort=False)["power [W]"].sum()
+    rest: list[int] = []
+    if "speed [rpm]" in losses:
+        speed = losses.groupby(keys, sort=False)["speed [rpm]"].first()
+        at_rest = speed.to_numpy(float) == 0.0
+        if at_rest.any() and not at_rest.all():
+            rest = sorted({int(k[0]) for k in per_step.index[at_rest]})
+            per_step = per_step[~at_rest]
+    lo, hi = _watts(per_step.min()), _watts(per_step.max())
+    # a small bearing's watts keep their digits (the 6206 map read "1 - 23 W" for
+    # 0.962 - 22.9 W); one operating point gives one number
+    line = f"total loss per bearing: {lo} W" if lo == hi else \
+        f"total loss per bearing: {lo} - {hi} W"
+    if rest:
+        line += (f" (turning steps; 0 W at rest: step{'s' if len(rest) > 1 else ''} "
+                 + ", ".join(str(i) for i in rest) + ")")
+    return line
 
 
 def _watts(p: float) -> str:
@@ -988,6 +1011,26 @@ def _roller_drag_clash(name: str, source_options: Mapping[str, Mapping[str, Any]
 #: the heat sources that book the oil drag the skidding solvers balance (ball: paper 002
 #: eqs. 9-10 and the cage torque; roller: ``skidding.roller_drag``)
 _DRAG_SOURCES = ("churning_elements", "churning_cage", "churning_inner_ring", "cage_guide")
+
+
+def _scene_bearing(scene: Scene, spec: Any, index: int) -> Any:
+    """The bearing of ``scene.bearings[index]`` (``spec``) with its overrides; a bearing
+    file that is not there or a preset name that is not known is named by its scene field
+    (``bearings[0].path``, with the file looked at; ``bearings[0].preset``), not as
+    ``bearing path`` / ``bearing preset`` without the place it was looked for."""
+    where = f"bearings[{index}]"
+    if not spec.preset:
+        path = scene.resolve_path(spec.path)
+        if not path.is_file():
+            raise InputError(f"{where}.path", spec.path,
+                             f"an existing bearing TOML file (looked at {path})")
+        return _load_scene_bearing(str(path), spec.overrides, where)
+    try:
+        return _load_scene_bearing(spec.preset, spec.overrides, where)
+    except UnknownNameError as exc:
+        if exc.field != "bearing preset":
+            raise
+        raise UnknownNameError(f"{where}.preset", spec.preset, exc.known) from None
 
 
 def _unbooked_drag_notes(bearings: Sequence[Any], supply: Any) -> list[str]:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import InputError
+from ..measured_layout import closest_name
 from ..scene_checks import check_global_friction, check_measured_file, check_network
 
 
@@ -45,4 +46,5 @@ def preflight(sim: Any, build: bool = True) -> None:
     for column, node in (scene.measured.columns if scene.measured is not None else {}).items():
         if node not in nodes:
             raise InputError(f"measured.columns[{column!r}]", node,
-                             "a node of the network: " + ", ".join(nodes))
+                             "a node of the network: " + ", ".join(nodes)
+                             + closest_name(str(node), list(nodes)))

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from ..errors import ThermobearingError
+from ..errors import InputError, ThermobearingError
 from ..scene import with_absolute_paths
 from ..scene_checks import check_model_names
 from ._preflight import load_scene_argument, preflight
@@ -40,6 +40,9 @@ def run(args: argparse.Namespace) -> int:
     check_model_names(scene)
     name = Path(args.scene).stem if args.scene else "qj1044_rig"
     out = Path(args.out) if args.out else Path("results") / name
+    if out.is_file():  # refused before the scene and its chain are printed as if to run
+        raise InputError("--out", str(out), "a results folder (new or existing); this is "
+                         "a file")
     progress = None if not args.quiet else False
     sim = Simulation(scene, progress=progress)
     if not args.quiet and not sys.stderr.isatty():
@@ -49,22 +52,19 @@ def run(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())
-        if not out.is_file():  # (a file there is refused by the run, naming it)
-            print(f"writing results to {out}/ as they are computed", flush=True)
+        print(f"writing results to {out}/ as they are computed", flush=True)
     try:
         results = sim.run(out_dir=out)
     except KeyboardInterrupt:
-        hint = (f" (`thermobearing report {out}` writes their report)"
-                if (out / "metadata.json").is_file() else "")
-        print(f"\ninterrupted: everything computed so far is in {out}/{hint}",
+        print("\n" + stopped_text(out, sim.steps_done, len(scene.schedule.steps), True),
               file=sys.stderr)
         return 130
     except ThermobearingError as exc:
         # the error as the command line prints it, then where the steps before it are
         print(f"thermobearing run: error: {exc}", file=sys.stderr)
         if (out / "metadata.json").is_file():  # written by Simulation.run when it stops
-            print(f"the steps computed before the error are in {out}/ (`thermobearing "
-                  f"report {out}` writes their report)", file=sys.stderr)
+            print(stopped_text(out, sim.steps_done, len(scene.schedule.steps), False),
+                  file=sys.stderr)
         return 1
     if not args.quiet:
         print(sim.summary_text(results))
@@ -77,6 +77,30 @@ def run(args: argparse.Namespace) -> int:
     if (out / COMPARISON_CSV).is_file():
         print(f"measured vs predicted, every compared reading: {out / COMPARISON_CSV}")
     return 0
+
+
+def stopped_text(out: Path, done: int | None, steps: int, interrupted: bool) -> str:
+    """What a run stopped by Ctrl-C (``interrupted``) or an error left in ``out`` after
+    ``done`` of ``steps`` schedule steps (None: not known, the run's step loop never
+    started). Stopped before its first step finished, a run said "everything computed so
+    far is in DIR/" of a folder that was empty or held only the scene and metadata, and
+    sent the user to a report whose loss section then read as a scene asking for no
+    losses."""
+    why = "interrupted" if interrupted else "stopped by the error"
+    held = (out / "metadata.json").is_file()
+    if done == 0:
+        return (f"{why} before the first of {steps} steps finished: no step was computed, "
+                f"nothing to report" + (f" ({out}/ holds the scene and the model chain "
+                                        "only)" if held else ""))
+    count = "" if done is None else (
+        f"all {steps} steps; stopped while the figures and report were written"
+        if done >= steps else f"{done} of {steps} steps")
+    hint = f"`thermobearing report {out}` writes their report" if held else ""
+    extra = "; ".join(x for x in (count, hint) if x)
+    extra = f" ({extra})" if extra else ""
+    if interrupted:
+        return f"interrupted: everything computed so far is in {out}/{extra}"
+    return f"the steps computed before the error are in {out}/{extra}"
 
 
 def _print_step(line: str) -> None:
