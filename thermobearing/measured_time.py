@@ -94,6 +94,26 @@ def elapsed(cell: str) -> float | None:
     return seconds + (float("0." + frac) if frac else 0.0)
 
 
+def elapsed_hours(cell: str) -> float | None:
+    """Seconds of an elapsed ``h:mm[.f]`` cell (hours and minutes, the fraction of a
+    minute) or ``hh:mm:ss[.f]`` cell, or None: the reading of a two-field time column
+    whose name or units row says ``h:mm`` / ``hh:mm`` (``elapsed`` reads two fields as
+    minutes and seconds, which made ``0:10`` of a ``time [h:mm]`` column 10 s)."""
+    m = _ELAPSED.match(cell.strip())
+    if m is None:
+        return None
+    a, b, c, frac = m.groups()
+    if c is not None:
+        return elapsed(cell)
+    if int(b) >= 60:
+        return None
+    return int(a) * 3600 + int(b) * 60 + (float("0." + frac) * 60.0 if frac else 0.0)
+
+
+#: units of a time column of two-field cells read as hours and minutes
+HOURS_MINUTES = ("h:mm", "hh:mm", "h:min", "hh:min", "hours:minutes")
+
+
 def _strptime(cell: str, fmt: str) -> datetime | None:
     c = cell.strip()
     frac = 0.0
@@ -223,6 +243,9 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
         def parse(c: str) -> float | None:
             x = number(c, decimal)
             return None if x is None else x * scale
+    elif (tunit or "").strip().lower() in HOURS_MINUTES and elapsed_hours(first) is not None:
+        kind, desc, parse = "elapsed", f"elapsed h:mm (hours:minutes, as {tunit!r} says)", \
+            elapsed_hours
     elif elapsed(first) is not None:
         kind, desc, parse = "elapsed", "elapsed hh:mm:ss or mm:ss", elapsed
     else:

@@ -1,0 +1,52 @@
+"""Session-22 user tour A: a thermocouple export whose elapsed time is written ``h:mm``
+(hours and minutes, the unit in the column's name or its units row). Two-field cells were
+always read as ``mm:ss``, so ``0:10`` of a ``time [h:mm]`` column was 10 s instead of
+10 min: a 50-min rig log was squeezed into the first 50 s of the run."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from thermobearing.measured import read_measured_file
+from thermobearing.measured_time import elapsed_hours
+
+
+def _file(tmp_path: Path, header: str, rows: list[str], units: str | None = None) -> Path:
+    path = tmp_path / "tc.csv"
+    lines = [header] + ([units] if units else []) + rows
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+ROWS = ["0:00,20.0", "0:10,21.0", "1:05,22.5"]
+
+
+@pytest.mark.parametrize("name", ["time [h:mm]", "Time (hh:mm)"])
+def test_a_column_named_in_hours_and_minutes(tmp_path, name):
+    df = read_measured_file(_file(tmp_path, f"{name},TC1", ROWS), name, {"TC1": "n"})
+    assert df["time [s]"].tolist() == [0.0, 600.0, 3900.0]
+
+
+def test_a_units_row_in_hours_and_minutes(tmp_path):
+    df = read_measured_file(_file(tmp_path, "time,TC1", ROWS, units="hh:mm,°C"), "time",
+                            {"TC1": "n"})
+    assert df["time [s]"].tolist() == [0.0, 600.0, 3900.0]
+    assert df["TC1"].tolist() == [20.0, 21.0, 22.5]
+
+
+def test_without_a_unit_two_fields_stay_minutes_and_seconds(tmp_path):
+    df = read_measured_file(_file(tmp_path, "time,TC1", ROWS), "time", {"TC1": "n"})
+    assert df["time [s]"].tolist() == [0.0, 10.0, 65.0]
+    df = read_measured_file(_file(tmp_path, "time [mm:ss],TC1", ROWS), "time [mm:ss]",
+                            {"TC1": "n"})
+    assert df["time [s]"].tolist() == [0.0, 10.0, 65.0]
+
+
+def test_hours_minutes_cells():
+    assert elapsed_hours("2:30") == 9000.0
+    assert elapsed_hours("0:10.5") == 630.0  # a fraction of a minute
+    assert elapsed_hours("1:00:30") == 3630.0  # three fields: hh:mm:ss as ever
+    assert elapsed_hours("0:75") is None
+    assert elapsed_hours("ten") is None
