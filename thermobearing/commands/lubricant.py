@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import warnings
 
 import numpy as np
 
@@ -65,19 +66,26 @@ def run(args: argparse.Namespace) -> int:
     if p:
         header += f"   at p = {p:.4g} Pa: eta [Pa s], rho [kg/m3]"
     print(header)
-    nu = np.atleast_1d(lub.kinematic_viscosity(T))
-    eta = np.atleast_1d(lub.dynamic_viscosity(T))
-    rho = np.atleast_1d(lub.density(T))
-    alpha = np.atleast_1d(lub.pressure_viscosity_coefficient(T))
-    z = np.atleast_1d(lub.roelands_index(T))
-    cp = np.atleast_1d(lub.specific_heat(T))
-    k = np.atleast_1d(lub.thermal_conductivity(T))
-    eta_p = np.atleast_1d(lub.dynamic_viscosity(T, p)) if p else None
-    rho_p = np.atleast_1d(lub.density(T, p)) if p else None
+    # the laws' validity warnings once each, under the table: Python's warning stream
+    # printed each law's warning once per property it feeds (five times for -60 degC),
+    # each with the source line that raised it
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        nu = np.atleast_1d(lub.kinematic_viscosity(T))
+        eta = np.atleast_1d(lub.dynamic_viscosity(T))
+        rho = np.atleast_1d(lub.density(T))
+        alpha = np.atleast_1d(lub.pressure_viscosity_coefficient(T))
+        z = np.atleast_1d(lub.roelands_index(T))
+        cp = np.atleast_1d(lub.specific_heat(T))
+        k = np.atleast_1d(lub.thermal_conductivity(T))
+        eta_p = np.atleast_1d(lub.dynamic_viscosity(T, p)) if p else None
+        rho_p = np.atleast_1d(lub.density(T, p)) if p else None
     for i, tc in enumerate(temps_c):
         line = (f"{tc:9.1f} {nu[i] * 1e6:11.4g} {eta[i] * 1e3:12.4g} {rho[i]:12.1f} "
                 f"{alpha[i] * 1e9:13.4g} {z[i]:7.3f} {cp[i]:11.1f} {k[i]:9.4f}")
         if eta_p is not None and rho_p is not None:
             line += f"   {eta_p[i]:.4g}  {rho_p[i]:.1f}"
         print(line)
+    for text in dict.fromkeys(str(w.message) for w in caught):
+        print(f"  warning: {text}")
     return 0
