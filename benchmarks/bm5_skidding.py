@@ -49,8 +49,12 @@ def _setup(Z: int, temperature: float, speed: float):
     return b, models
 
 
-def run_map(Z, speeds, loads, temperature, warm):
-    """Our solver over the map; returns list of dicts (one per point)."""
+def run_map(Z, speeds, loads, temperature, warm, chain=0):
+    """Our solver over the map; returns list of dicts (one per point). With ``warm``: each
+    point warm from the previous one of the load sweep (``solve_ball`` starts cold instead
+    across a load change above its ``COLD_LOAD_STEP``: ``cold_by_rule``), then the
+    transient-like +2 % (+20 N) step from it (``small_step``) and, with ``chain`` > 1, that
+    many such steps in a row, each warm from the last (``chain``: one tuple per step)."""
     from thermobearing.errors import ConvergenceError
     from thermobearing.skidding.ball import solve_ball
 
@@ -66,12 +70,14 @@ def run_map(Z, speeds, loads, temperature, warm):
                                guess=prev if warm else None, theoretical_reference=0.45)
                 ok, it, res, nev = True, r.iterations, r.residual_norm, r.extra["n_eval"]
                 njac = r.extra.get("n_jacobian", 0)
+                ruled = r.extra.get("start") == "cold_load_step"
                 prev = r
             except ConvergenceError as err:
-                ok, it, res, nev, njac = False, -1, err.residual, -1, -1
+                ok, it, res, nev, njac, ruled = False, -1, err.residual, -1, -1, False
                 prev = None
             row = dict(speed_rpm=n, axial_load=fa, ok=ok, iterations=it, residual=res,
-                       time_s=time.process_time() - t0, evaluations=nev, jacobians=njac)
+                       time_s=time.process_time() - t0, evaluations=nev, jacobians=njac,
+                       cold_by_rule=ruled)
             if ok and warm:
                 # transient-like warm start: the same point after a 2 % (+20 N) load change
                 t1 = time.process_time()
@@ -82,6 +88,22 @@ def run_map(Z, speeds, loads, temperature, warm):
                                          r2.extra["n_eval"], r2.extra.get("n_jacobian", 0))
                 except ConvergenceError:
                     row["small_step"] = (False, time.process_time() - t1, -1, -1, -1)
+                    r2 = None
+                steps, fa_k = [], 1.02 * fa + 20.0
+                for _ in range(chain - 1 if r2 is not None else 0):
+                    # the next steps of a transient-like chain, each from the last
+                    fa_k = 1.02 * fa_k + 20.0
+                    t1 = time.process_time()
+                    try:
+                        r2 = solve_ball(b, models, w, 1000.0, fa_k, n_balls=Z, guess=r2,
+                                        theoretical_reference=0.45)
+                        steps.append((True, time.process_time() - t1, r2.iterations,
+                                      r2.extra["n_eval"], r2.extra.get("n_jacobian", 0)))
+                    except ConvergenceError:
+                        steps.append((False, time.process_time() - t1, -1, -1, -1))
+                        break
+                if steps:
+                    row["chain"] = steps
             rows.append(row)
     return rows
 
@@ -282,6 +304,9 @@ def main(argv=None) -> int:
                     help="points of the scipy anchor subset (default: every (n/3)-th speed "
                          "and load of the n x n map, a 4 x 4 grid of the 20 x 20 map; "
                          "the 300/1650/3000 r/min x 40 kN/200 N grid with --quick)")
+    ap.add_argument("--chain", type=int, default=12,
+                    help="length of the chain of +2 %% steps from each warm map point (the "
+                         "first is the +2 %% row; steps 2..N are the chain row; 1: no chain)")
     ap.add_argument("--no-first-call", action="store_true",
                     help="skip the first-call (numba compile / cache load) measurement")
     args = ap.parse_args(argv)
@@ -309,11 +334,12 @@ def main(argv=None) -> int:
                theoretical_reference=0.45)
     summary = []
     small_med = {}
+    cold_rule = {}
     for Z in zs:
         for tname, T in temps.items():
             for warm in (False, True):
                 t0 = time.process_time()
-                rows = run_map(Z, speeds, loads, T, warm)
+                rows = run_map(Z, speeds, loads, T, warm, chain=args.chain)
                 total = time.process_time() - t0
                 ok = [r for r in rows if r["ok"]]
                 fails = len(rows) - len(ok)
@@ -330,6 +356,7 @@ def main(argv=None) -> int:
                                     error=float(max((r["residual"] for r in ok), default=np.nan)),
                                     ratio_vs_anchor=None, iterations=its, failures=fails,
                                     points=len(rows), evaluations=nev, jacobians=njac))
+                main_idx = len(records) - 1
                 if small:
                     ok_s = [x for x in small if x[0]]
                     small_med[(Z, tname)] = (float(np.median([x[1] for x in ok_s]))
@@ -348,6 +375,26 @@ def main(argv=None) -> int:
                                         iterations=summary[-1][4], failures=summary[-1][2],
                                         points=len(small), evaluations=summary[-1][6],
                                         jacobians=summary[-1][7]))
+                chained = [x for r in rows for x in r.get("chain", ())]
+                if chained:
+                    ok_c = [x for x in chained if x[0]]
+                    label = f"Z={Z},{tname},+2% chain steps 2-{args.chain}"
+                    summary.append((label, len(chained), len(chained) - len(ok_c),
+                                    float(np.mean([x[1] for x in ok_c])) if ok_c else np.nan,
+                                    float(np.mean([x[2] for x in ok_c])) if ok_c else np.nan,
+                                    0.0,
+                                    float(np.mean([x[3] for x in ok_c])) if ok_c else np.nan,
+                                    float(np.mean([x[4] for x in ok_c])) if ok_c else np.nan))
+                    records.append(dict(benchmark="bm5_skidding", case=f"map{nmap}x{nmap}",
+                                        method="newton_block", setting=label,
+                                        time_s=summary[-1][3], error=None, ratio_vs_anchor=None,
+                                        iterations=summary[-1][4], failures=summary[-1][2],
+                                        points=len(chained), evaluations=summary[-1][6],
+                                        jacobians=summary[-1][7]))
+                if warm:
+                    ruled = sum(bool(r.get("cold_by_rule")) for r in rows)
+                    records[main_idx]["cold_by_rule"] = ruled
+                    cold_rule[setting] = (ruled, len(rows))
     # anchor comparison on a subset (same residual, same cold start)
     sub_speeds = speeds[:: max(1, nmap // 3)]
     sub_loads = loads[:: max(1, nmap // 3)]
@@ -393,7 +440,7 @@ def main(argv=None) -> int:
                                 setting=f"Z={Z}, {case}", time_s=None, error=None,
                                 ratio_vs_anchor=None, outcome=outcome, message=msg))
     base = {z: t for z, m, t, f, n in anchor_rows if m == "newton"}
-    warm16 = [tpp for s, _, _, tpp, *_ in summary if s.startswith("Z=16") and "+2%" in s]
+    warm16 = [tpp for s, _, _, tpp, *_ in summary if s.startswith("Z=16") and "+2% load step" in s]
     if args.json:
         print(json.dumps(records, indent=1, default=float))
     else:
@@ -401,6 +448,11 @@ def main(argv=None) -> int:
               f"{'evals':>6s} {'jacs':>5s}")
         for s, npt, f, tpp, its, _, nev, njac in summary:
             print(f"{s:34s} {npt:6d} {f:5d} {1e3 * tpp:8.2f} {its:6.1f} {nev:6.1f} {njac:5.2f}")
+        for setting, (ruled, npts) in cold_rule.items():
+            if ruled:
+                print(f"({setting}: {ruled} of {npts} points started cold, their load "
+                      "more than 0.75 away from the previous point's: solve_ball's "
+                      "COLD_LOAD_STEP)")
         print("\n(evals: residual evaluations per point; jacs: analytic Jacobians per point "
               "(skidding.ball_jacobian, ~2-3 evaluations of CPU each); a finite-difference "
               "Jacobian, where the models have no analytic one, is 9 evaluations in one batch)")
