@@ -240,6 +240,9 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     out.attrs["gaps"] = gaps
     out.attrs["rows"] = len(rows)  # data rows of the file (before averaging repeats)
     out.attrs["units"] = {col: col_units.get(col, unit) for col in sensors}
+    # how the time column was read (``numbers in min``, ``elapsed hh:mm:ss or mm:ss``):
+    # ``check`` prints it, so a reading the user did not mean shows before a run
+    out.attrs["time_read_as"] = desc
     return out
 
 

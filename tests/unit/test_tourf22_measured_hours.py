@@ -50,3 +50,20 @@ def test_hours_minutes_cells():
     assert elapsed_hours("1:00:30") == 3630.0  # three fields: hh:mm:ss as ever
     assert elapsed_hours("0:75") is None
     assert elapsed_hours("ten") is None
+
+
+def test_check_says_how_the_time_column_was_read(tmp_path, capsys):
+    """``check`` printed the span (``0-1.08333 min``) but not the reading, so a ``0:10``
+    read as 10 s instead of 10 min showed only as a short span."""
+    from test_tourf22_rig_inputs import _write
+
+    from thermobearing.cli import main
+
+    scene = _write(tmp_path, measured='[measured]\nfile = "tc.csv"\ntime_column = '
+                   '"time [h:mm]"\nunit = "degC"\ncolumns = { TC1 = "test.housing" }\n')
+    _file(tmp_path, "time [h:mm],TC1", ROWS)
+    assert main(["check", str(scene)]) == 0
+    out = capsys.readouterr().out
+    assert "measured: tc.csv: 1 sensor, 3 samples, 0-65 min" in out
+    assert "time column 'time [h:mm]' read as elapsed h:mm (hours:minutes, as 'h:mm' says)" \
+        in out

@@ -43,8 +43,15 @@ def describe_measured(scene) -> str:
     df = read_scene_measured(scene)
     t = df["time [s]"]
     sensors = [c for c in df.columns if c != "time [s]"]
-    lines = [f"measured: {scene.measured.file}: {len(sensors)} sensors, {len(df)} samples"
+    plural = "s" if len(sensors) != 1 else ""
+    lines = [f"measured: {scene.measured.file}: {len(sensors)} sensor{plural}, "
+             f"{len(df)} samples"
              + (f", {t.iloc[0] / 60:.6g}-{t.iloc[-1] / 60:.6g} min" if len(df) else "")]
+    read_as = df.attrs.get("time_read_as")
+    if read_as:
+        names = scene.measured.time_column
+        name = names if isinstance(names, str) else " + ".join(names)
+        lines.append(f"  time column {name!r} read as {read_as}")
     notes = measured_notes(df) + coverage_notes(df, 0.0, scene.schedule.duration)
     lines += [f"  - {n}" for n in notes]
     return "\n".join(lines)
