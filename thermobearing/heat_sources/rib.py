@@ -172,7 +172,17 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     kin = ctx.kinematics
     op = ctx.operating
     temperature = ctx.temperature("elements")
-    wi, wc = float(kin.inner_speed), float(kin.cage_speed)
+    wi, wc, wo = float(kin.inner_speed), float(kin.cage_speed), float(kin.outer_speed)
+    # the rib heat is the same in the mirror image (rotation reversed): a state turning the
+    # other way (inner ring faster backwards than the outer, e.g. the outer ring driven
+    # forward over a fixed inner ring) is mirrored into the forward sense, in which the
+    # roller spin magnitude |element_spin| has the sign of the models below (paper 003
+    # eqs. 13, 24: omega_r > 0 when omega_i > omega_c). The spin was taken positive in either
+    # sense: backwards the roller's and the rib's surface speeds added instead of
+    # cancelling (reduced model: 3.0x the heat, CRB_50x75x16 at 524 rad/s, 3 kN), and the
+    # coupled model was called with a negative speed (InputError 'speed')
+    sense = -1.0 if wi - wo < 0.0 else 1.0
+    wi, wc, wo = sense * wi, sense * wc, sense * wo
     spin = np.abs(np.asarray(kin.element_spin, float)) * np.ones(b.n_rollers)
     z = b.n_rollers
     h = float(geom.contact_height())
@@ -216,7 +226,7 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                 "roller, quasi-static spins) books the rib heat here"), stacklevel=2)
             model = "reduced"
     if model == "coupled" or unbalance > 0.0:
-        speed = wi - float(kin.outer_speed)
+        speed = wi - wo
         try:
             dyn = rib_dynamics_heat(b, ctx.lubricant, speed, float(op.radial_load),
                                     temperature, unbalance, model=model,
@@ -267,8 +277,9 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         heat_thrust = np.abs(friction * v)
         dynamic = z * dyn.heat if dyn is not None else 0.0
         v_end_mean = float(np.mean(spin)) * rho
-        pairs = (ForcePair("rib on roller end face (thrust + drag)", friction * np.sign(v),
-                           -v),)
+        # force on the end face and the face's speed relative to the rib, in the real sense
+        pairs = (ForcePair("rib on roller end face (thrust + drag)",
+                           sense * friction * np.sign(v), -sense * v),)
     if dyn is not None:
         details.update(pv_left=dyn.pv_left, pv_right=dyn.pv_right, slip_speed=dyn.slip_speed,
                        dynamic_heat=dynamic, heat_left=z * dyn.heat_left,
