@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError
+from .errors import InputError, ThermobearingError
 from .scene import Scene, loads_scene
 from .sweep_params import MAX_SWEEP_CASES, SweepParameter, _same_quantity_key, assign_path
 
@@ -84,8 +84,17 @@ def expand(scene: Scene, params: Sequence[SweepParameter]) -> list[Case]:
         for path, value in assignments:
             assign_path(d, path, value)
         _absolute_paths(d, base_dir)  # the runner gets only the TOML text, not the folder
-        sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
         cid = _case_id(base_text, assignments)
+        try:
+            sc = Scene.from_dict(d, base_dir)  # raises InputError naming the bad field
+        except ThermobearingError as exc:
+            # the case's values with the field's error: 'supply.method=jet,oil_bath' x
+            # 'supply.flow=...' said only "supply.level is missing: an oil level for an oil
+            # bath", naming neither the combination nor that nothing ran
+            values = ", ".join(f"{k}={v}" for k, v in assignments)
+            exc.args = (f"sweep case {cid} ({values}): {exc}; no case was run (every case "
+                        "is checked before the first one runs)", *exc.args[1:])
+            raise
         if cid in seen:
             continue
         seen.add(cid)

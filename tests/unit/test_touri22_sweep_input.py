@@ -109,3 +109,19 @@ def test_a_sweep_of_no_field_is_refused(scene, tmp_path):
     with pytest.raises(InputError, match="params .*at least one swept field"):
         run_sweep(scene, [], tmp_path, runner=_runner, workers=1, progress=False)
     assert not (tmp_path / "cases.jsonl").exists()
+
+
+def test_a_combination_the_scene_refuses_names_the_case(scene):
+    # 'supply.method=jet,oil_bath' x inlet temperatures: said only "supply.level is
+    # missing: an oil level for an oil bath"
+    d = scene.to_dict()
+    params = [parse_set("supply.method=jet,oil_bath", d),
+              parse_set("supply.inlet_temperature=30,40", d)]
+    with pytest.raises(InputError) as err:
+        expand(scene, params)
+    text = str(err.value)
+    assert "(supply.method=oil_bath, supply.inlet_temperature=30 degC)" in text
+    assert "supply.level is missing: an oil level for an oil bath" in text
+    assert text.endswith("no case was run (every case is checked before the first one "
+                         "runs)")
+    assert err.value.field == "supply.level"  # the field stays the scene's
