@@ -88,6 +88,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ThermobearingError as exc:
         print(f"thermobearing {args.command}: error: {exc}", file=sys.stderr)
         return 1
+    except BrokenPipeError:
+        # the output piped into a reader that stopped (``| head``): printed as
+        # "error: Broken pipe" before; end quietly, with stdout on the null device so that
+        # the interpreter's last flush does not raise again
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141  # 128 + SIGPIPE, as a shell reports a pipe's reader closing early
     except OSError as exc:  # a path the user gave: missing, not a folder, not writable ...
         where = f": {exc.filename}" if exc.filename else ""
         print(f"thermobearing {args.command}: error: {exc.strerror or exc}{where}",

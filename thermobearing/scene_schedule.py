@@ -172,6 +172,7 @@ class Schedule:
         if len(forms) > 1:
             raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
         steps: list[Step] = []
+        file_notes: list[str] = []  # columns of a schedule file without a unit
         if not forms:
             if "duration" not in defaults:
                 defaults["duration"] = 3600.0
@@ -210,7 +211,8 @@ class Schedule:
                 steps.append(_make_step(_table(where, item), defaults, where, written))
                 _note_units(units, item)
         else:
-            steps.extend(_read_schedule_file(data["file"], defaults, base_dir, units))
+            steps.extend(_read_schedule_file(data["file"], defaults, base_dir, units,
+                                             file_notes))
         if not steps:
             raise InputError("schedule", dict(data), "at least one step")
         bare = [(f"schedule.{k}", k, data[k]) for k in ("speed", dur_key) if k in data]
@@ -218,7 +220,8 @@ class Schedule:
             bare += [(f"schedule.steps[{i}].{k}", k, item[k])
                      for i, item in enumerate(data["steps"]) for k in ("speed", "duration")
                      if k in item]
-        return cls(steps=tuple(steps), units=units, unitless=unitless_notes(bare))
+        return cls(steps=tuple(steps), units=units,
+                   unitless=unitless_notes(bare) + tuple(file_notes))
 
     def to_dict(self) -> dict[str, Any]:
         units = {**_STEP_UNITS, **self.units}
@@ -257,7 +260,8 @@ def unitless_notes(values: list[tuple[str, str, Any]]) -> tuple[str, ...]:
 
 
 def _read_schedule_file(name: str, defaults: Mapping[str, float],
-                        base_dir: Path | None, seen_units: dict[str, str]) -> list[Step]:
+                        base_dir: Path | None, seen_units: dict[str, str],
+                        notes: list[str] | None = None) -> list[Step]:
     """The steps of a CSV protocol file: a header of ``duration [s], speed [rpm],
     radial_load [N], axial_load [N]`` (any of them may be left to the ``[schedule]``
     defaults; the units in brackets, these by default), comma separated, or semicolon / tab
@@ -266,7 +270,9 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
     cells past the header's last column. Headers are read case-insensitively; a column whose
     header gives no unit may carry one in each cell (``10 s``); in a file with decimal
     commas a point groups thousands (``1.000``). A duplicated column or a row with more
-    filled cells than the header has columns is an error naming it."""
+    filled cells than the header has columns is an error naming it. ``notes`` gets a line
+    per column without a unit whose cells are bare numbers (read in the default unit: a
+    ``duration`` of 10 is 10 s)."""
     if not isinstance(name, str) or not name.strip():  # ({a = 1} stopped in pathlib)
         raise InputError("schedule.file", name, "a CSV file path (a text)")
     path = Path(name)
@@ -316,7 +322,28 @@ def _read_schedule_file(name: str, defaults: Mapping[str, float],
                       for c, v in row.items() if v and v.strip()}
             steps.append(_make_step(values, defaults, f"schedule.file row {i + 1}"))
             _note_units(seen_units, values)
+    if notes is not None:
+        for col, key in colmap.items():
+            bare = [v.strip() for row in rows if (v := row.get(col)) and _bare_cell(v)]
+            if not unit_given[key] and bare:
+                notes.append(f"schedule.file {path.name}: column {col!r} has no [unit]: its "
+                             f"numbers are read in {units[key]} ({bare[0]} = {bare[0]} "
+                             f"{units[key]}); write the unit in the header, e.g. "
+                             f"'{key} [{_OTHER_UNIT[key]}]'")
     return steps
+
+
+#: a unit to suggest for a schedule file's column header
+_OTHER_UNIT = {"duration": "min", "speed": "rpm", "radial_load": "kN", "axial_load": "kN"}
+
+
+def _bare_cell(cell: str) -> bool:
+    """A cell holding a plain number (no unit), decimal comma or point."""
+    try:
+        float(cell.strip().replace(",", "."))
+    except ValueError:
+        return False
+    return True
 
 
 #: a number with a decimal comma ("2,5", "-0,25")

@@ -37,3 +37,20 @@ def test_the_laws_warnings_are_listed_once_under_the_table(capsys):
     assert any("ASTM D341 used above 1e6 cSt" in ln for ln in lines)
     assert "ValidityWarning" not in captured.err
     assert "lubricant.py" not in captured.err
+
+
+def test_output_piped_into_a_reader_that_stopped_ends_quietly(tmp_path, monkeypatch, capsys):
+    """``thermobearing check SCENE | head -2`` printed "thermobearing check: error: Broken
+    pipe" (the OSError branch meant for the user's paths)."""
+    import sys
+
+    from thermobearing.commands import check
+
+    def closed_pipe(args):
+        raise BrokenPipeError(32, "Broken pipe")
+
+    monkeypatch.setattr(check, "run", closed_pipe)
+    with (tmp_path / "stdout.txt").open("w") as fake:
+        monkeypatch.setattr(sys, "stdout", fake)
+        assert main(["check"]) == 141
+    assert "Broken pipe" not in capsys.readouterr().err

@@ -232,3 +232,19 @@ def test_the_terminal_loss_range_leaves_out_the_steps_at_rest():
     assert _loss_range_line(_losses([(3000.0, 49.62)])) == "total loss per bearing: 49.6 W"
     assert _loss_range_line(_losses([(0.0, 0.0), (0.0, 0.0)])) == \
         "total loss per bearing: 0 W"
+
+
+def test_schedule_file_columns_without_a_unit_are_noted(tmp_path):
+    """A protocol file ``duration,speed,...`` of 10,3000,1,2 ran 10-s steps under 1-2 N
+    without a word (the defaults s, rpm, N, N are in the scene docstring only)."""
+    (tmp_path / "proto.csv").write_text(
+        "duration,speed [rpm],radial_load,axial_load [kN]\n10,3000,1,2\n10 min,6000,1,2\n",
+        encoding="utf-8")
+    schedule = Schedule.from_dict({"file": "proto.csv"}, tmp_path)
+    notes = "\n".join(schedule.unitless)
+    assert ("schedule.file proto.csv: column 'duration' has no [unit]: its numbers are "
+            "read in s (10 = 10 s); write the unit in the header, e.g. 'duration [min]'"
+            ) in notes
+    assert "column 'radial_load' has no [unit]: its numbers are read in N" in notes
+    assert "'speed [rpm]'" not in notes and "axial_load [kN]'" not in notes
+    assert [s.duration for s in schedule.steps] == [10.0, 600.0]
