@@ -292,20 +292,29 @@ def coverage_notes(measured: pd.DataFrame, t_start: float, t_end: float) -> list
     t = measured["time [s]"].to_numpy(float)
     if t.size == 0:
         return []
-    span = (f"measured {t[0] / 60:.6g}-{t[-1] / 60:.6g} min, "
-            f"run {t_start / 60:.6g}-{t_end / 60:.6g} min")
+    span = (f"measured {minutes_span(t[0], t[-1])}, "
+            f"run {minutes_span(t_start, t_end)}")
     if t[-1] < t_start or t[0] > t_end:
         return [f"no measured time inside the run ({span}): check the time column's unit, "
                 "measured time_zero or time_format"]
     out = []
     before, after = int((t < t_start).sum()), int((t > t_end).sum())
     if before or after:
-        out.append(f"{before + after} measured samples outside the run are left out "
-                   f"({before} before, {after} after; {span})")
+        n = before + after
+        out.append(f"{n} measured sample{'s' if n != 1 else ''} outside the run "
+                   f"{'are' if n != 1 else 'is'} left out ({before} before, {after} after; "
+                   f"{span})")
     if t[0] > t_start or t[-1] < t_end:
         out.append(f"the run is compared with measured data only where the file has "
                    f"them ({span})")
     return out
+
+
+def minutes_span(t0: float, t1: float) -> str:
+    """``0-50 min`` from times [s]; ``-5 to 50 min`` when the first is negative (a logger
+    started before ``time_zero``), which read ``-5-50 min``."""
+    a, b = t0 / 60.0, t1 / 60.0
+    return f"{a:.6g} to {b:.6g} min" if a < 0 or b < 0 else f"{a:.6g}-{b:.6g} min"
 
 
 # --------------------------------------------------------------------------- helpers

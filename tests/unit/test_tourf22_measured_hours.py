@@ -67,3 +67,17 @@ def test_check_says_how_the_time_column_was_read(tmp_path, capsys):
     assert "measured: tc.csv: 1 sensor, 3 samples, 0-65 min" in out
     assert "time column 'time [h:mm]' read as elapsed h:mm (hours:minutes, as 'h:mm' says)" \
         in out
+
+
+def test_a_logger_started_before_time_zero_reads_minus_to():
+    """Five minutes logged before the motor started (``time_zero``) read ``-5-50 min``."""
+    import pandas as pd
+
+    from thermobearing.measured import coverage_notes, minutes_span
+
+    assert minutes_span(-300.0, 3000.0) == "-5 to 50 min"
+    assert minutes_span(0.0, 3000.0) == "0-50 min"
+    df = pd.DataFrame({"time [s]": [-300.0, 0.0, 3000.0], "TC1": [20.0, 20.0, 40.0]})
+    assert coverage_notes(df, 0.0, 3000.0) == [
+        "1 measured sample outside the run is left out (1 before, 0 after; measured -5 to "
+        "50 min, run 0-50 min)"]

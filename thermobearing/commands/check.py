@@ -38,7 +38,7 @@ def describe_measured(scene) -> str:
     """The ``[measured]`` file as the run will read it: sensors, samples, time span and
     the reader's notes (gaps per sensor and cause, averaged rows, units) and how the file
     covers the schedule."""
-    from ..measured import coverage_notes, measured_notes, read_scene_measured
+    from ..measured import coverage_notes, measured_notes, minutes_span, read_scene_measured
 
     df = read_scene_measured(scene)
     t = df["time [s]"]
@@ -46,7 +46,7 @@ def describe_measured(scene) -> str:
     plural = "s" if len(sensors) != 1 else ""
     lines = [f"measured: {scene.measured.file}: {len(sensors)} sensor{plural}, "
              f"{len(df)} samples"
-             + (f", {t.iloc[0] / 60:.6g}-{t.iloc[-1] / 60:.6g} min" if len(df) else "")]
+             + (f", {minutes_span(t.iloc[0], t.iloc[-1])}" if len(df) else "")]
     read_as = df.attrs.get("time_read_as")
     if read_as:
         names = scene.measured.time_column
