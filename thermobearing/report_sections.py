@@ -97,6 +97,24 @@ def context_html(scene: Any, tables: dict[str, pd.DataFrame], bearings: dict[str
     return "\n".join(parts)
 
 
+def no_losses_text(scene: Any) -> str:
+    """Why a run report has no loss breakdown: the scene's outputs ask for none, or (a
+    scene that books losses) the folder holds no losses table -- a run stopped before its
+    first step finished, or a sweep folder whose first case never finished (its
+    ``scene.toml`` alone was reported as a run that asked for no losses)."""
+    from .simulation_chain import _needs
+
+    try:
+        books = scene is not None and _needs(scene)["losses"]
+    except (AttributeError, TypeError):
+        books = False
+    if not books:
+        return "no losses table: the scene's outputs ask for no losses"
+    return ("no losses table in this folder, although the scene's outputs ask for losses: "
+            "no step finished here (a run stopped before its first step, or a sweep "
+            "folder with no finished case)")
+
+
 def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], scene: Any,
                 bearings: dict[str, Any], lubricant: Any | None, *,
                 flagged: Mapping[str, Mapping[str, Sequence[int]]] | None = None) -> str:
@@ -108,7 +126,7 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
     esc = html.escape
     parts = ["<h2 id='loss-breakdown'>Loss breakdown</h2>"]
     if losses is None or losses.empty:
-        parts.append("<p>(no losses table: the scene's outputs ask for no losses)</p>")
+        parts.append(f"<p>({esc(no_losses_text(scene))})</p>")
         return "\n".join(parts)
     if scene is not None:
         parts.append(f"<p>{esc(ctx.loss_temperature_note(tables, scene))}</p>")

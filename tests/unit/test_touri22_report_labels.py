@@ -10,6 +10,8 @@
 
 from __future__ import annotations
 
+import html
+
 import pandas as pd
 import pytest
 from nu214_scene import nu214_jet_scene
@@ -79,3 +81,21 @@ def test_loss_maps_drawn_as_curves_give_the_unit_on_the_axis(captured):
     line = panels[1].get_lines()[0]
     assert list(line.get_ydata()) == [45.6, 48.2, 52.1]
     assert line.get_label() == "supply.inlet_temperature [degC] = 30"
+
+
+def test_a_folder_without_losses_of_a_scene_that_books_them_says_no_step_finished():
+    # `thermobearing report DIR` on a sweep folder interrupted before its first case
+    # finished (only the sweep's scene.toml): the run report said "the scene's outputs ask
+    # for no losses" of a scene whose outputs ask for losses
+    from thermobearing.report_sections import no_losses_text
+
+    books = loads_scene(nu214_jet_scene(title="t", schedule=SCHEDULE,
+                                        want='["temperatures", "losses", "report"]'))
+    text = html_report(Results(), "t", scene=books)
+    assert "ask for no losses" not in text
+    assert html.escape(no_losses_text(books)) in text
+    assert "no step finished here" in no_losses_text(books)
+    film_only = loads_scene(nu214_jet_scene(title="t", schedule=SCHEDULE, want='["film"]'))
+    assert no_losses_text(film_only) == ("no losses table: the scene's outputs ask for no "
+                                         "losses")
+    assert no_losses_text(None) == no_losses_text(film_only)
