@@ -300,14 +300,31 @@ def guess_separator(lines: list[str]) -> str:
         else "," if any("," in ln for ln in lines) else r"\s+"
 
 
+#: magnitude from which a number is an instrument's overload code, not a reading (the
+#: +9.9E+37 of Keysight/Agilent DAQs for an open channel; measured.OVERLOAD_CODE)
+OVERLOAD_MAGNITUDE = 1e30
+
+
+def _dot_decimal(cell: str) -> bool:
+    """A cell that reads as a number with a decimal point (``12.5``), other than an
+    overload code: the instrument writes those with a point in any locale, so a
+    ``+9.9E+37`` among ``21,5`` readings is no sign of a decimal point."""
+    if not re.match(r"^[+-]?\d*\.\d+", cell):
+        return False
+    try:
+        return abs(float(cell)) < OVERLOAD_MAGNITUDE
+    except ValueError:
+        return True
+
+
 def guess_decimal_mark(cells: list[str], sep: str) -> str:
     """``","`` when ``sep`` is not a comma, some cells look like ``12,5`` and none like
-    ``12.5``; else ``"."``."""
+    ``12.5`` (an overload code such as ``+9.9E+37`` not counted: :func:`_dot_decimal`);
+    else ``"."``."""
     if sep == ",":
         return "."
     num_comma = re.compile(r"^[+-]?\d*,\d+([eE][+-]?\d+)?$")
-    if any(num_comma.match(c) for c in cells) and not any(
-            re.match(r"^[+-]?\d*\.\d+", c) for c in cells):
+    if any(num_comma.match(c) for c in cells) and not any(_dot_decimal(c) for c in cells):
         return ","
     return "."
 
