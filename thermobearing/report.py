@@ -24,6 +24,7 @@ import dataclasses
 import html
 import io
 import math
+import re
 import textwrap
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -311,14 +312,17 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
     to ``_LEGEND_INSIDE`` curves it sits in the first panel, beyond that outside the
     panels on the right (inside, nine curves of a 4 x 3 x 3 sweep hid the first panel's
     data). Beyond ten curves the line style changes with each colour cycle. A text ``x``
-    (a lubricant preset) is drawn at one position per value, labelled with it. The panels
-    stand in rows of at most three.
+    (a lubricant preset) is drawn at one position per value, labelled with it, in natural
+    order (:func:`natural_key`). The panels stand in rows of at most three.
     """
     by = [group] if isinstance(group, str) else list(group or [])
     categories: list[Any] = []
     if not pd.api.types.is_numeric_dtype(summary[x]):
-        # text values (lubricant presets): one position per value, in order of appearance
-        categories = list(dict.fromkeys(summary[x].tolist()))
+        # text values (lubricant presets): one position per value, in natural order (the
+        # numbers in the names compared as numbers: ISO_VG32 < ISO_VG68 < ISO_VG100), not
+        # in the order typed: "--set lubricant.preset=ISO_VG68,ISO_VG32,ISO_VG46" drew
+        # the grades 68, 32, 46 and each curve zigzagged
+        categories = sorted(dict.fromkeys(summary[x].tolist()), key=natural_key)
         summary = summary.assign(**{x: summary[x].map({c: i for i, c in
                                                        enumerate(categories)})})
     groups = list(summary.groupby(by)) if by else [((), summary)]
@@ -355,6 +359,13 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
         else:
             axes.flat[0].legend(fontsize=7, title=title, title_fontsize=7)
     return _png(fig)
+
+
+def natural_key(value: Any) -> tuple[tuple[int, Any], ...]:
+    """Sort key of a text with its digit runs compared as numbers (``"ISO_VG100"`` after
+    ``"ISO_VG68"``)."""
+    parts = re.split(r"(\d+)", str(value))
+    return tuple((0, int(p)) if p.isdigit() else (1, p.lower()) for p in parts if p)
 
 
 #: what-if curves up to which the legend sits inside the first panel

@@ -99,3 +99,25 @@ def test_a_folder_without_losses_of_a_scene_that_books_them_says_no_step_finishe
     assert no_losses_text(film_only) == ("no losses table: the scene's outputs ask for no "
                                          "losses")
     assert no_losses_text(None) == no_losses_text(film_only)
+
+
+def test_whatif_over_oil_grades_puts_the_grades_in_viscosity_order(captured):
+    # "--set lubricant.preset=ISO_VG68,ISO_VG32,ISO_VG100" drew the grades in the typed
+    # order (68, 32, 100) and each curve zigzagged
+    from thermobearing.report import fig_whatif, natural_key
+
+    summary = pd.DataFrame({"lubricant.preset": ["ISO_VG68", "ISO_VG32", "ISO_VG100"] * 2,
+                            "supply.flow [L/min]": [1.0] * 3 + [2.0] * 3,
+                            "mean total loss [W]": [775.0, 670.0, 850.0,
+                                                    885.0, 770.0, 960.0]})
+    fig_whatif(summary, "lubricant.preset", ["mean total loss [W]"],
+               group=["supply.flow [L/min]"])
+    ax = captured[-1].axes[0]
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["ISO_VG32", "ISO_VG68",
+                                                            "ISO_VG100"]
+    for line, losses in zip(ax.get_lines(), ([670.0, 775.0, 850.0], [770.0, 885.0, 960.0]),
+                            strict=True):
+        assert list(line.get_xdata()) == [0, 1, 2]
+        assert list(line.get_ydata()) == losses
+    assert sorted(["OIL_4109", "ISO_VG46", "MIL_PRF_23699"], key=natural_key) == [
+        "ISO_VG46", "MIL_PRF_23699", "OIL_4109"]
