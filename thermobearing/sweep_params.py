@@ -192,6 +192,16 @@ def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepPa
     # names that value.
     last = max(i for i, ok in enumerate(numeric) if ok)
     trailing = split[last][1] or _existing_unit(scene_dict, path)
+    own = [i for i, ok in enumerate(numeric) if ok and split[i][1] and i != last]
+    bare = [i for i, ok in enumerate(numeric) if ok and not split[i][1]]
+    if split[last][1] and own and bare:
+        # "313.15 K,50,104 degF": a unit on other values too, so the last one's unit is
+        # that value's own, not one written after the list; the bare 50 took it (50 degF)
+        # where the scene's unit (degC) was as likely meant
+        raise InputError(f"--set {path}", raw, f"a unit after the list for every value "
+                         f"(15,33 L/min) or one with each value; here "
+                         f"{items[bare[0]]!r} has none while other values carry their "
+                         f"own: write its unit")
     values: list[Any] = []
     for item, (num, unit), ok in zip(items, split, numeric, strict=True):
         if not ok:

@@ -125,3 +125,21 @@ def test_a_combination_the_scene_refuses_names_the_case(scene):
     assert text.endswith("no case was run (every case is checked before the first one "
                          "runs)")
     assert err.value.field == "supply.level"  # the field stays the scene's
+
+
+@pytest.mark.parametrize("spec, bare", [
+    ("supply.inlet_temperature=313.15 K,50,104 degF", "'50'"),
+    ("supply.flow=1 L/min,2,60 L/h", "'2'")])
+def test_a_bare_value_among_values_with_their_own_units_is_refused(scene, spec, bare):
+    # the bare 50 took the last value's unit: 50 degF (10 degC) on a scene written in degC
+    with pytest.raises(InputError) as err:
+        parse_set(spec, scene.to_dict())
+    assert f"here {bare} has none while other values carry their own" in str(err.value)
+
+
+@pytest.mark.parametrize("spec, values", [
+    ("supply.flow=15,33 L/min", ("15 L/min", "33 L/min")),
+    ("supply.flow=0.5 L/min,2", ("0.5 L/min", "2 L/min")),
+    ("supply.inlet_temperature=30 degC,313.15 K", ("30 degC", "313.15 K"))])
+def test_a_unit_after_the_list_or_with_each_value_still_reads(scene, spec, values):
+    assert parse_set(spec, scene.to_dict()).values == values
