@@ -378,6 +378,10 @@ def loads_scene(text: str, base_dir: Path | None = None, source: str | None = No
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError("scene", source or "<toml>", f"valid TOML ({exc})") from None
+    if not data:  # an empty file said only "scene.title is missing"
+        raise InputError("scene", source or "<toml>",
+                         "a scene: this TOML has no key at all (an empty or unsaved file?); "
+                         "copy configs/scenes/qj1044_rig.toml to start one")
     return Scene.from_dict(data, base_dir)
 
 

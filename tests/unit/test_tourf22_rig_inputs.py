@@ -248,3 +248,28 @@ def test_schedule_file_columns_without_a_unit_are_noted(tmp_path):
     assert "column 'radial_load' has no [unit]: its numbers are read in N" in notes
     assert "'speed [rpm]'" not in notes and "axial_load [kN]'" not in notes
     assert [s.duration for s in schedule.steps] == [10.0, 600.0]
+
+
+def test_an_empty_scene_file_says_so(tmp_path, capsys):
+    """It said "scene.title is missing", as if the rest were there."""
+    empty = tmp_path / "new.toml"
+    empty.write_text("# my rig\n", encoding="utf-8")
+    assert main(["check", str(empty)]) == 1
+    err = capsys.readouterr().err
+    assert "this TOML has no key at all (an empty or unsaved file?)" in err
+    assert "scene.title" not in err
+
+
+def test_a_run_without_a_compared_reading_does_not_announce_the_readings_file(tmp_path,
+                                                                              capsys):
+    """A file whose times all lie after the run: the terminal named
+    measured_vs_predicted.csv as "every compared reading" although it has no row."""
+    scene = _write(tmp_path, measured=MEASURED.format(node="test.housing"))
+    (tmp_path / "rig_tc.csv").write_text(
+        "time [min],TC1 housing [degC]\n100,30.0\n110,31.0\n", encoding="utf-8")
+    out = tmp_path / "res"
+    assert main(["run", str(scene), "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "no measured time inside the run" in text
+    assert "every compared reading" not in text
+    assert (out / "measured_vs_predicted.csv").read_text(encoding="utf-8").count("\n") == 1

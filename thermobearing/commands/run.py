@@ -74,7 +74,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"loss breakdown, one column per source [W]: {out / 'loss_breakdown.csv'}")
     from ..report_measured import COMPARISON_CSV
 
-    if (out / COMPARISON_CSV).is_file():
+    if (out / COMPARISON_CSV).is_file() and _has_rows(out / COMPARISON_CSV):
+        # (a file with its header only, no reading inside the run, is not announced as
+        # "every compared reading": the measured notes above say why none was compared)
         print(f"measured vs predicted, every compared reading: {out / COMPARISON_CSV}")
     return 0
 
@@ -101,6 +103,12 @@ def stopped_text(out: Path, done: int | None, steps: int, interrupted: bool) -> 
     if interrupted:
         return f"interrupted: everything computed so far is in {out}/{extra}"
     return f"the steps computed before the error are in {out}/{extra}"
+
+
+def _has_rows(path: Path) -> bool:
+    """Whether a CSV file has a line below its header."""
+    with path.open(encoding="utf-8") as fh:
+        return sum(1 for line, _ in zip(fh, range(2), strict=False) if line.strip()) > 1
 
 
 def _print_step(line: str) -> None:
