@@ -114,3 +114,58 @@ def test_the_rigid_limit_is_one_roller(z, load, pd):
     approach = 2.0 * (float(ld.inner_load[0]) / stiff) ** (1.0 / N)
     assert math.isclose(float(ld.ring_displacement[0]), 0.5 * pd + approach, rel_tol=1e-9)
     assert abs(float(ld.ring_displacement[1])) <= 1e-9 * pd
+
+
+def _films(h0_i: float, h0_o: float, expo: float):
+    """Flooded central films falling with the load as EHL films do, h = h0 (Q / 1 N)^-e."""
+    def inner(q):
+        return h0_i * np.maximum(np.asarray(q, float), 1e-300) ** -expo
+
+    def outer(q):
+        return h0_o * np.maximum(np.asarray(q, float), 1e-300) ** -expo
+
+    return inner, outer
+
+
+film_case = dict(z=st.integers(6, 30), pd=st.floats(0.0, 6e-5), load=st.floats(10.0, 5e4),
+                 h0=st.floats(1e-7, 3e-6), ratio=st.floats(0.5, 2.0),
+                 expo=st.floats(0.05, 0.2), body=st.floats(0.0, 200.0))
+
+
+@settings(max_examples=30, deadline=None)
+@given(**film_case, x0=st.tuples(st.floats(-5e-5, 8e-5), st.floats(-3e-5, 3e-5)),
+       seed=st.integers(0, 2**31 - 1))
+def test_film_distribution_balances_the_ring_and_forgets_its_start(z, pd, load, h0, ratio,
+                                                                    expo, body, x0, seed):
+    """roller_film_load_distribution with flooded films: the ring is in balance, each
+    loaded roller's gap equation (3) holds, a roller left unloaded is one whose films
+    cannot fill its gap even at the solver's smallest film load (1e-9 N: these films grow
+    without bound as the load falls, but a wide gap needs less than that), and neither the
+    warm start of the ring nor that of the roller loads nor the order of the rollers
+    changes the loads."""
+    from thermobearing.loads_roller import roller_film_load_distribution
+
+    inner, outer = _films(h0, h0 * ratio, expo)
+    ld = roller_film_load_distribution(z, pd, load, inner, outer, K_LINE, K_LINE,
+                                       body_force=body)
+    psi = ld.azimuth
+    assert abs(float(np.sum(ld.inner_load * np.cos(psi))) - load) <= 1e-8 * load + 1e-9
+    assert abs(float(np.sum(ld.inner_load * np.sin(psi)))) <= 1e-8 * load + 1e-9
+    q, qo = ld.inner_load, ld.outer_load
+    gap = 0.5 * pd - (ld.ring_displacement[0] * np.cos(psi)
+                      + ld.ring_displacement[1] * np.sin(psi))
+    on = ld.loaded
+    lhs = inner(q) + outer(qo) - (q / K_LINE) ** (1 / N) - (qo / K_LINE) ** (1 / N)
+    np.testing.assert_allclose(lhs[on], gap[on], rtol=0, atol=1e-12 + 1e-9 * h0)
+    q_min = 1e-9 + body * (1 + 1e-12)
+    floor = inner(1e-9) + outer(q_min) - (1e-9 / K_LINE) ** (1 / N) - (q_min / K_LINE) ** (1 / N)
+    assert np.all(floor <= gap[~on] * (1 + 1e-9) + 1e-15)
+    scale = max(load, float(np.max(qo)))
+    warm = roller_film_load_distribution(z, pd, load, inner, outer, K_LINE, K_LINE,
+                                         body_force=body, x0=x0,
+                                         q0=q * np.random.default_rng(seed).uniform(0.3, 3, z))
+    np.testing.assert_allclose(warm.inner_load, q, rtol=0, atol=1e-7 * scale)
+    perm = np.random.default_rng(seed).permutation(z)
+    shuffled = roller_film_load_distribution(z, pd, load, inner, outer, K_LINE, K_LINE,
+                                             body_force=body, azimuth=psi[perm])
+    np.testing.assert_allclose(shuffled.inner_load, q[perm], rtol=0, atol=1e-7 * scale)
