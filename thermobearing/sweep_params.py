@@ -147,7 +147,33 @@ def parse_set(spec: str, scene_dict: Mapping[str, Any]) -> SweepParameter:
         raise InputError(f"--set {path}", raw, "at least one value: a comma list "
                          "(15,20,33) or a range start:stop:step")
     check_path(scene_dict, path)
-    return _checked_temperatures(_parse_values(path, raw, scene_dict), raw)
+    param = _checked_temperatures(_parse_values(path, raw, scene_dict), raw)
+    note = _flattened_steps_note(scene_dict, path)
+    return param if note is None else SweepParameter(param.path, param.values,
+                                                     param.dropped, (*param.notes, note))
+
+
+def _flattened_steps_note(scene_dict: Mapping[str, Any], path: str) -> str | None:
+    """What ``schedule.<field>`` does to a protocol whose steps differ in that field: every
+    step takes the case's value (:func:`assign_path`), so the steps' own values are gone.
+    (Tour 22: ``--set schedule.speed=2000,4000`` on an NU 214 run-up of 3000 and 6000 r/min
+    ran both steps at 2000, then at 4000 r/min, without a word; on the default rig
+    ``schedule.axial_load`` replaces the 0-42 kN load steps by one load.)"""
+    parts = path.split(".")
+    if parts[0] != "schedule" or len(parts) != 2:
+        return None
+    steps = scene_dict.get("schedule", {}).get("steps")
+    if not isinstance(steps, list) or len(steps) < 2:
+        return None
+    written = [step.get(parts[1]) for step in steps if isinstance(step, Mapping)]
+    distinct = list(dict.fromkeys(str(v) for v in written))
+    if len(distinct) < 2:
+        return None
+    shown = ", ".join(distinct[:4]) + (f", ... ({len(distinct)} values)"
+                                       if len(distinct) > 4 else "")
+    words = parts[1].replace("_", " ")
+    return (f"sweep: {path} sets the {words} of every step: the scene's {len(steps)} "
+            f"steps ({shown}) each run at the case's {words} instead of their own")
 
 
 def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepParameter:

@@ -143,3 +143,32 @@ def test_a_bare_value_among_values_with_their_own_units_is_refused(scene, spec, 
     ("supply.inlet_temperature=30 degC,313.15 K", ("30 degC", "313.15 K"))])
 def test_a_unit_after_the_list_or_with_each_value_still_reads(scene, spec, values):
     assert parse_set(spec, scene.to_dict()).values == values
+
+
+RUN_UP = nu214_jet_scene(title="tour 22 run-up", schedule="""radial_load = "5 kN"
+axial_load = "0 kN"
+step_duration = "5 min"
+steps = [{ speed = "3000 rpm" }, { speed = "6000 rpm" }]""", want='["losses"]')
+
+
+def test_a_schedule_field_that_differs_between_steps_is_said_to_be_replaced(tmp_path,
+                                                                            capsys):
+    # '--set schedule.speed=2000,4000' on a 3000 / 6000 r/min run-up ran both steps at
+    # 2000, then 4000 r/min, without a word
+    run_up = loads_scene(RUN_UP)
+    p = parse_set("schedule.speed=2000,4000", run_up.to_dict())
+    assert p.notes == ("sweep: schedule.speed sets the speed of every step: the scene's 2 "
+                       "steps (3000 rpm, 6000 rpm) each run at the case's speed instead of "
+                       "their own",)
+    cases = expand(run_up, [p])
+    speeds = [[s.speed * 30 / 3.141592653589793 for s in loads_scene(c.scene_toml)
+               .schedule.steps] for c in cases]
+    assert speeds == [pytest.approx([2000.0, 2000.0]), pytest.approx([4000.0, 4000.0])]
+    run_sweep(run_up, [p], tmp_path, runner=_runner, workers=1, progress=False, check=False)
+    assert "each run at the case's speed instead of their own" in capsys.readouterr().err
+
+
+def test_a_schedule_field_the_steps_share_gives_no_note(scene):
+    d = loads_scene(RUN_UP).to_dict()
+    assert parse_set("schedule.radial_load=3,5", d).notes == ()
+    assert parse_set("schedule.speed=2000,4000", scene.to_dict()).notes == ()  # one step
