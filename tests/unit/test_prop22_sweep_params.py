@@ -120,3 +120,39 @@ def test_a_temperature_list_converts_with_its_unit(t_c, unit):
 def test_bad_ranges_and_lists_name_the_option(spec):
     with pytest.raises(InputError, match="--set"):
         parse_set(spec, SCENE)
+
+
+# --------------------------------------------------------------------------- expansion
+@pytest.fixture(scope="module")
+def rig_scene():
+    from thermobearing.scene import load_scene
+
+    return load_scene("qj1044_rig")
+
+
+@settings(max_examples=8, deadline=None)
+@given(flows=st.lists(st.integers(5, 60), min_size=1, max_size=4, unique=True),
+       temps=st.lists(st.integers(20, 60), min_size=1, max_size=3, unique=True))
+def test_expansion_is_the_cartesian_product_in_order(rig_scene, flows, temps):
+    """expand gives len(a) x len(b) cases in itertools.product order (the first --set
+    outermost), each case's scene carries its values (in SI: L/min -> m^3/s, degC -> K),
+    and the case ids do not depend on the order of the --set options."""
+    import itertools
+
+    from thermobearing.scene import loads_scene
+    from thermobearing.sweep_cases import expand
+
+    d = rig_scene.to_dict()
+    pf = parse_set("supply.flow=" + ",".join(map(str, flows)), d)
+    pt = parse_set("supply.inlet_temperature=" + ",".join(map(str, temps)), d)
+    cases = expand(rig_scene, [pf, pt])
+    assert len(cases) == len(flows) * len(temps)
+    want = list(itertools.product(pf.values, pt.values))
+    assert [tuple(v for _, v in c.assignments) for c in cases] == want
+    for case, (flow, temp) in zip(cases, want, strict=True):
+        sc = loads_scene(case.scene_toml)
+        assert sc.supply.flow == pytest.approx(to_si(flow, "volume_flow"), rel=1e-12)
+        assert sc.supply.inlet_temperature == pytest.approx(to_si(temp, "temperature"),
+                                                            rel=1e-12)
+    swapped = expand(rig_scene, [pt, pf])
+    assert sorted(c.case_id for c in swapped) == sorted(c.case_id for c in cases)
