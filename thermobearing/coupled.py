@@ -437,6 +437,9 @@ def _check_runaway(names: list[str], T: np.ndarray, t: float | None, step: int,
             ("coupled steady state", "no steady state below the runaway limit",
              {"step": step}))
         when = "" if t is None else f" at t = {t:.4g} s"
+        # the step as the tables number it (from 0): the progress lines count the finished
+        # steps from 1, so "step 3/5 done" and then "step=3" read as the same step
+        in_step = f", in step {step} (numbered from 0, as in the tables),"
         # a state just past the limit (a crossing located inside a chunk) is told as the
         # limit reached, with how far above it, so that it does not read as below it
         reached = (f"reached {T[j] - 273.15:.0f} degC{when} (limit {limit - 273.15:.0f} "
@@ -445,7 +448,7 @@ def _check_runaway(names: list[str], T: np.ndarray, t: float | None, step: int,
                    f"({T[j] - limit:.2g} K above it{why})")
         raise ConvergenceError(
             what, float(T[j] - limit),
-            f"{head}: node {names[j]!r} {reached} with {float(np.sum(lin.q0)):.0f} W "
+            f"{head}: node {names[j]!r} {reached}{in_step} with {float(np.sum(lin.q0)):.0f} W "
             "of heat; the losses exceed what the network removes -- check the oil flow, the "
             "cooling paths and the speed/load of the schedule", state)
 

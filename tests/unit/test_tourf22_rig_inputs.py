@@ -273,3 +273,18 @@ def test_a_run_without_a_compared_reading_does_not_announce_the_readings_file(tm
     assert "no measured time inside the run" in text
     assert "every compared reading" not in text
     assert (out / "measured_vs_predicted.csv").read_text(encoding="utf-8").count("\n") == 1
+
+
+def test_a_runaway_names_its_step_as_the_tables_number_it():
+    """After the progress line "step 3/5 done" the error said "[..., step=3]": the 4th
+    step (the tables count from 0), read as the step that had just finished."""
+    import numpy as np
+
+    from thermobearing.coupled import _check_runaway, _Linear
+    from thermobearing.errors import ConvergenceError
+
+    lin = _Linear(np.array([1771.0, 0.0]), np.zeros((2, 2)), np.full(2, 300.0))
+    with pytest.raises(ConvergenceError) as err:
+        _check_runaway(["test.balls", "test.oil"], np.array([574.0, 330.0]), 1830.0, 3, lin)
+    assert ("reached 301 degC at t = 1830 s (limit 300 degC), in step 3 (numbered from 0, "
+            "as in the tables), with 1771 W of heat") in str(err.value)
