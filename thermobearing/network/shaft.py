@@ -147,7 +147,9 @@ def fin_span_conductances(conductivity: float, diameter: float, spacing: float, 
     m = math.sqrt(4.0 * h / (conductivity * diameter))
     ml = m * spacing
     kam = conductivity * area * m
-    return kam / math.sinh(ml), kam * math.tanh(0.5 * ml)
+    # 1 / sinh(mL) = 2 exp(-mL) / (1 - exp(-2 mL)): math.sinh overflowed (OverflowError)
+    # beyond mL ~ 710, where the ends are decoupled (G_ab underflows to 0 here)
+    return kam * 2.0 * math.exp(-ml) / -math.expm1(-2.0 * ml), kam * math.tanh(0.5 * ml)
 
 
 def kept_lengths(positions: Sequence[float], lengths: Sequence[float]) -> list[float]:
