@@ -285,6 +285,6 @@ def test_a_runaway_names_its_step_as_the_tables_number_it():
 
     lin = _Linear(np.array([1771.0, 0.0]), np.zeros((2, 2)), np.full(2, 300.0))
     with pytest.raises(ConvergenceError) as err:
-        _check_runaway(["test.balls", "test.oil"], np.array([574.0, 330.0]), 1830.0, 3, lin)
-    assert ("reached 301 degC at t = 1830 s (limit 300 degC), in step 3 (numbered from 0, "
+        _check_runaway(["test.balls", "test.oil"], np.array([580.15, 330.0]), 1830.0, 3, lin)
+    assert ("reached 307 degC at t = 1830 s (limit 300 degC), in step 3 (numbered from 0, "
             "as in the tables), with 1771 W of heat") in str(err.value)
