@@ -256,6 +256,32 @@ CPU; evaluate 1 of 2 ran away, 0.410 W, 4.955 m/s, 21.5 s CPU. The table path is
 more accurate of the two where the spin is stiff ("Stiff spin": the evaluate path cannot
 renew its linearisation inside the kernel). Default 0 here (callers keep their path); the
 rib heat source uses 3 (:mod:`~thermobearing.skidding.roller_dynamics_heat`).
+
+Unbalance mass's axial excursion (2026-11-24, issue 9; paper 003 eq. 18 line 1, F_cwx). The
+unbalance enters the roller equations as the centrifugal force of a mass m_u at (x_u, e_u
+cos psi, e_u sin psi) in roller axes (:mod:`~thermobearing.skidding.roller_dynamics_rhs`: skew
+moment -x_u F sin psi, pocket force F sin psi, orbital force on the outer race). Eq. 18's
+axial line carries the mass's axial force F_cwx too, which the model left out: a skewed
+roller carries the mass's circumferential offset e_u sin psi to the axial position
+e_u sin(psi) sin(alpha), so the geometric centre (where the rib and raceway contacts act)
+moves axially against the mass -- up to k e_u sin(alpha) = 1.9 um at the 0.6 deg rib skew of
+the base case (k = m_u/(m + m_u) = 0.076 at 0.11 g), of the size of the rib's Hertz approach
+(~1 um at 100 N). The cage frame turns about the bearing axis, so its inertial forces have
+no axial part and the axial momentum of roller + mass is exact: the state's X, X' are now
+those of the centre of mass, (m + m_u) X_c'' = F_x, the contacts see X_G = X_c - k (r_x -
+x_u) and its rate; the same forces act on the skew with the centre of mass's arm (-k r_z
+F_x) and on the spin phase (-k dr_x/dpsi F_x), the virtual work of F_x on X_G
+(:func:`~thermobearing.skidding.roller_dynamics_coupled_kernels.unbalance_axial_shift`;
+samples and ``series["axial"]`` hold the geometric centre's X, X'; ``series["end_state"]``
+the integrated state). The skew and pocket keep the rotating-force form (the mass's own
+share of the skew inertia, ~15 % of J_t at 0.11 g, is not followed). The reduced and one-
+roller models (roller_dynamics_integrate) do not have the term. Measured (base case,
+MIL-PRF-23699, 80 degC, 2 + 3 orbits, 8 trajectories per mass at 384 ... 440 steps per spin
+period; validation case SOURCE.md "Unbalance mass's axial excursion"): at C_a = 0.03 mm
+right/left PV 1.001 +- 0.005 -> 0.998 +- 0.003 at 0.11 g, contact fractions left / right
+0.104 / 0.104 -> 0.106 / 0.107; at 0.01 mm right/left 1.02 -> 1.09 (contact 0.221 / 0.230
+-> 0.214 / 0.253: the unbalance side touches more where the rib is close); slip at 0.11 g
+4.86 -> 4.65 m/s (0.01 mm 3.07 -> 2.86, 0.05 mm 5.51 -> 5.45), PV within the scatter.
 """
 
 from __future__ import annotations
@@ -516,6 +542,16 @@ def simulate_coupled(m: DynamicsModel, bearing: Any, lubricant: Any, *,
         return replace(resp, series=series, cost_s=time.process_time() - t0)
 
 
+def _unbalance_constants(m: DynamicsModel) -> tuple[float, float, float, float]:
+    """(k = m_u/(m + m_u) [-], e_u [m], x_u [m], m_u [kg]) of the unbalance's axial
+    excursion (:func:`~thermobearing.skidding.roller_dynamics_coupled_kernels.
+    unbalance_axial_shift`); zeros without unbalance."""
+    u = m.unbalance
+    if u.mass <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    return (u.mass / (m.roller_mass + u.mass), u.radius, u.axial_position, u.mass)
+
+
 def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                            n_orbits: float, warmup_orbits: float, refresh: float,
                            steps_per_period: int, samples_per_period: int,
@@ -557,7 +593,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     consts = np.array([m.polar_inertia, j_c, half, 0.5 * m.geom.pitch_diameter,
                        float(rm.cage_drag_torque),
                        inner_ring_mass(bearing)[0] if ring_axial else 0.0,
-                       *(cage_land_coefficient(bearing, m) if cage_land else (0.0, 0.0))])
+                       *(cage_land_coefficient(bearing, m) if cage_land else (0.0, 0.0)),
+                       *_unbalance_constants(m)])
     az = np.append(m.azimuth, m.azimuth[0] + 2.0 * math.pi)
     load = np.append(m.inner_load, m.inner_load[0])
     phi0 = m.azimuth.copy()

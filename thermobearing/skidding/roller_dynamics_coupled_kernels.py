@@ -15,7 +15,7 @@ from numba import njit
 
 from .roller_dynamics_etd import set_coefficients
 from .roller_dynamics_pocket import pocket_force_z
-from .roller_dynamics_rhs import _CP, _ETA, _FLOOR, _HL, _KC, _MASS, _PDOF, _rhs_ring
+from .roller_dynamics_rhs import _CP, _ETA, _FLOOR, _HL, _JT, _KC, _MASS, _PDOF, _rhs_ring
 from .roller_dynamics_table import table_eval_contacts
 
 #: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
@@ -87,6 +87,41 @@ def spin_pocket_coupling(shear_spin_slope: float, outer_shear_spin_slope: float,
 
 
 @njit(cache=True)
+def unbalance_axial_shift(unb: np.ndarray, a: float, ad: float, psi: float, w: float
+                          ) -> tuple[float, float, float, float]:
+    """Axial offset of a roller's geometric centre from the centre of mass of roller + its
+    unbalance mass, relative to the unskewed roller, and the offset's rate:
+    (k (r_x - x_u) [m], k r_x' [m/s], r_z [m], dr_x/dpsi [m]) with ``unb`` = (k = m_u/(m +
+    m_u), e_u [m], x_u [m], m_u [kg]), skew ``a`` [rad], skew rate ``ad`` [rad/s], unbalance
+    phase ``psi`` [rad] and its rate ``w`` [rad/s].
+
+    Paper 003 eq. 18 line 1 (m x'' = Q^X - F_cwx + ...): the unbalance mass's inertial force
+    along the bearing axis. The mass sits at (x_u, e_u cos psi, e_u sin psi) in roller axes
+    (its circumferential offset e_u sin psi is the one whose centrifugal force the skew and
+    pocket equations carry, roller_dynamics_rhs), i.e. in the cage frame at
+    r_x = x_u cos a + e_u sin(psi) sin a, r_z = -x_u sin a + e_u sin(psi) cos a (skew a rotation
+    about the radial axis, rib.py's frame). The cage frame turns about the bearing axis, so its
+    inertial forces have no axial part and the axial momentum of roller + mass is exact:
+    (m + m_u) X_c'' = F_x with X_c = X_G + k (r_x - x_u); the contacts act at the geometric
+    centre X_G. The same forces F_x (rib, raceway axial traction) then act on the skew with
+    the arm of the centre of mass, -k r_z F_x (dr_x/da = r_z), and on the spin phase with
+    -k (dr_x/dpsi) F_x (virtual work of F_x on X_G). ``unb`` all zeros: no unbalance.
+    """
+    k = unb[0]
+    if k == 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    e = unb[1]
+    xu = unb[2]
+    sa = math.sin(a)
+    ca = math.cos(a)
+    sp = math.sin(psi)
+    r_x = xu * ca + e * sp * sa
+    r_z = -xu * sa + e * sp * ca
+    dpsi = e * math.cos(psi) * sa
+    return k * (r_x - xu), k * (r_z * ad + dpsi * w), r_z, dpsi
+
+
+@njit(cache=True)
 def _interp_sorted(x: float, xp: np.ndarray, fp: np.ndarray) -> float:
     """np.interp(x, xp, fp) for ascending ``xp`` (binary search; numba's np.interp costs
     ~0.5 us a call, this a few ns); clamped to the end values outside [xp[0], xp[-1]]."""
@@ -111,7 +146,7 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
                 az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
                 wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
                 half: float, dm_half: float, t_c: float, film: np.ndarray,
-                ring_mass: float, land: np.ndarray) -> None:
+                ring_mass: float, land: np.ndarray, unb: np.ndarray) -> None:
     """dy[:] = time derivative of the coupled state (roller_dynamics_coupled module notes).
     ``lin`` (Z, 7): S0, dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc, dS/dz' of the last refresh
     (:func:`spin_pocket_coupling`; z' the roller's pocket speed);
@@ -137,8 +172,12 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         dc = wc - wc0
         s = lin[j, 0] + lin[j, 1] * dw + lin[j, 2] * dc + lin[j, 6] * y[b + 5]
         f_d = lin[j, 3] + lin[j, 4] * dw + lin[j, 5] * dc
-        r = _rhs_ring(p, y[b] - x_ring, y[b + 1] - xd_ring, y[b + 2], y[b + 3], y[b + 4],
-                      y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
+        # the unbalance mass's axial excursion (unbalance_axial_shift): y[b], y[b + 1] are the
+        # axial position and speed of the roller + mass's centre of mass, the contacts see the
+        # geometric centre's
+        sh, shd, r_z, dpsi = unbalance_axial_shift(unb, y[b + 2], y[b + 3], y[b + 6], w)
+        r = _rhs_ring(p, y[b] - sh - x_ring, y[b + 1] - shd - xd_ring, y[b + 2], y[b + 3],
+                      y[b + 4], y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
         fz_bar, _, ff, fb = pocket_force_z(y[b + 4], y[b + 5], y[b + 2], p[_HL], p[_CP],
                                            p[_KC], p[_ETA], half, p[_FLOOR])
         f_bar = _pocket_film_friction(ff - fb, w, half, film[0], film[1], film[2], film[3],
@@ -151,6 +190,14 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         dy[b + 5] = r[5]
         dy[b + 6] = w
         dy[b + 7] = (half * (s - f_bar) + r[6]) / polar
+        if unb[0] > 0.0:
+            # roller + mass's centre of mass accelerates under the axial force F_x (rib and
+            # raceway axial traction, r[1] m); F_x's virtual work on X_G adds its moment
+            # about the centre of mass to the skew and a torque to the spin phase
+            f_ax = r[1] * p[_MASS]
+            dy[b + 1] = f_ax / (p[_MASS] + unb[3])
+            dy[b + 3] = r[3] - unb[0] * r_z * f_ax / p[_JT]
+            dy[b + 7] = (half * (s - f_bar) + r[6] - unb[0] * dpsi * f_ax) / polar
         torque += -fz_bar * dm_half - f_bar * half
         f_ring += r[7]
     dy[z_n * n] = wc
@@ -282,6 +329,7 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     polar, cage_j, half, dm_half, t_c = consts[0], consts[1], consts[2], consts[3], consts[4]
     ring_mass = consts[5]
     land = consts[6:8]
+    unb = consts[8:12]
     ring = z_n * n + 2
     if etd:
         _stiff_rates(p, lin, w0, c_z, polar, half, z_n, h, lam, y_ref, coef)
@@ -306,42 +354,42 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
         if etd:
             # ETDRK4 (roller_dynamics_etd): N = f - lam (y - y_ref), the linear part exact
             _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 k1[q] -= lam[q] * (y[q] - y_ref[q])
                 ya[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k1[q]
             _deriv_into(p, ya, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 k2[q] -= lam[q] * (ya[q] - y_ref[q])
                 yt[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k2[q]
             _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 k3[q] -= lam[q] * (yt[q] - y_ref[q])
                 yt[q] = (y_ref[q] + coef[q, 1] * (ya[q] - y_ref[q])
                          + coef[q, 2] * (2.0 * k3[q] - k1[q]))
             _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 k4[q] -= lam[q] * (yt[q] - y_ref[q])
                 y[q] = (y_ref[q] + coef[q, 0] * (y[q] - y_ref[q]) + coef[q, 3] * k1[q]
                         + 2.0 * coef[q, 4] * (k2[q] + k3[q]) + coef[q, 5] * k4[q])
         else:
             _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 yt[q] = y[q] + 0.5 * h * k1[q]
             _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 yt[q] = y[q] + 0.5 * h * k2[q]
             _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 yt[q] = y[q] + h * k3[q]
             _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
             for q in range(m_y):
                 y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
         t += h
@@ -349,9 +397,12 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                 and n_sampled < samples.shape[0]):
             for q in range(z_n * n):
                 samples[n_sampled, q] = y[q]
-            for j in range(z_n):         # X, X' relative to the inner ring
-                samples[n_sampled, j * n] -= y[ring]
-                samples[n_sampled, j * n + 1] -= y[ring + 1]
+            for j in range(z_n):         # geometric centre's X, X' relative to the ring
+                b = j * n
+                sh, shd, _, _ = unbalance_axial_shift(unb, y[b + 2], y[b + 3], y[b + 6],
+                                                      y[b + 7])
+                samples[n_sampled, b] -= y[ring] + sh
+                samples[n_sampled, b + 1] -= y[ring + 1] + shd
             sample_t[n_sampled] = t
             sample_wc[n_sampled] = y[z_n * n + 1]
             sample_ring[n_sampled] = y[ring]
@@ -382,7 +433,7 @@ def _refresh_caches() -> None:
 
     refresh_stale_caches("roller_dynamics_coupled_kernels",
                          (pocket_damping, spin_pocket_coupling, _pocket_film_friction,
-                          _interp_sorted,
+                          unbalance_axial_shift, _interp_sorted,
                           _deriv_into,
                           _refresh_from_table, _refresh_roller, _stiff_rates,
                           _stiff_roller, _integrate),
