@@ -10,7 +10,8 @@ dropout flags and overload codes.
 
 - every mapped column holds the written readings in degC, whatever its place in the file,
   NaN exactly at the gaps, and the gaps are counted by cause;
-- the time column is the written times in seconds;
+- the time column is the written times in seconds (numbers in s, min, h; timestamps of
+  four layouts counted from the first row; elapsed hh:mm:ss clock times past midnight);
 - the columns come back in the order the scene maps them, and the mapping order does not
   change any value.
 
@@ -25,6 +26,7 @@ from __future__ import annotations
 
 import math
 import tempfile
+from datetime import datetime, timedelta
 from pathlib import Path
 
 import numpy as np
@@ -151,3 +153,35 @@ def test_an_overload_code_among_decimal_comma_readings(tmp_path):
     assert guess_decimal_mark(["21,5", "+9.9E+37", "-9.90000000E+37"], ";") == ","
     assert guess_decimal_mark(["21,5", "21.5"], ";") == "."  # a reading with a point: "."
     assert guess_decimal_mark(["21,5", "9.9E+29"], ";") == "."  # a number, not a code
+
+
+STAMPS = ("%Y-%m-%d %H:%M:%S", "%Y-%m-%dT%H:%M:%S", "%d.%m.%Y %H:%M:%S", "%Y/%m/%d %H:%M:%S",
+          "elapsed")
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(fmt=st.sampled_from(STAMPS),
+       start=st.datetimes(min_value=datetime(2000, 1, 1), max_value=datetime(2035, 12, 31)),
+    steps=st.lists(st.integers(1, 4000), min_size=1, max_size=25),
+    sep=st.sampled_from([",", ";", "\t"]))
+def test_time_stamps_read_back_as_seconds(fmt, start, steps, sep):
+    """Timestamps count from the first row; elapsed hh:mm:ss clock times are taken as they
+    are, +24 h from each midnight they pass (a row at most 4000 s after the one before)."""
+    start = start.replace(microsecond=0)
+    stamps = [start]
+    for s in steps:
+        stamps.append(stamps[-1] + timedelta(seconds=s))
+    if fmt == "elapsed":
+        cells = [f"{t.hour}:{t.minute:02d}:{t.second:02d}" for t in stamps]
+        clock0 = start.hour * 3600 + start.minute * 60 + start.second
+        want = [clock0 + (t - start).total_seconds() for t in stamps]
+    else:
+        cells = [t.strftime(fmt) for t in stamps]
+        want = [(t - start).total_seconds() for t in stamps]
+    text = "\n".join([f"Time{sep}TC1"] + [f"{c}{sep}{20 + k}.5" for k, c in enumerate(cells)])
+    with tempfile.TemporaryDirectory() as d:
+        path = Path(d) / "rig.csv"
+        path.write_text(text + "\n", encoding="utf-8")
+        out = read_measured_file(path, "Time", ["TC1"])
+    np.testing.assert_allclose(out["time [s]"].to_numpy(), want, rtol=0, atol=1e-6)
+    np.testing.assert_allclose(out["TC1"].to_numpy(), 20.5 + np.arange(len(cells)))
