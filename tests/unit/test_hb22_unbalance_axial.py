@@ -75,3 +75,34 @@ def test_size_of_the_excursion_at_the_rib_skew() -> None:
     assert shift == pytest.approx(UNB[0] * (E_U * math.sin(a) - X_U * (1 - math.cos(a))),
                                   rel=1e-12)
     assert 1.5e-6 < shift < 2.5e-6
+
+
+def test_runaway_message_names_the_geometric_centre() -> None:
+    """The state's X is the centre of mass of roller + unbalance mass; the 'unstable coupled
+    motion' message reports the geometric centre's X (the one the rib sees)."""
+    from thermobearing.geometry import load_bearing
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.skidding import roller_dynamics as rd
+    from thermobearing.skidding.roller_dynamics_coupled import (
+        N_ROLLER_STATES,
+        _unbalance_constants,
+        _unstable_state,
+    )
+
+    bearing = load_bearing("CRB_50x75x16")
+    m = rd.build_model(bearing, load_lubricant("MIL_PRF_23699"), 3141.6, 3000.0, 0.11e-3,
+                       temperature=353.15, coupling="none")
+    unb = np.array(_unbalance_constants(m))
+    assert unb[0] == pytest.approx(0.11e-3 / (m.roller_mass + 0.11e-3), rel=1e-12)
+    z_n = len(m.azimuth)
+    n = N_ROLLER_STATES
+    y = np.zeros(z_n * n + 4)
+    y[7:z_n * n:n] = 15000.0
+    y[0] = 12e-6                          # roller 0: X_c, skew 0.6 deg, psi = pi/2
+    y[2] = math.radians(0.6)
+    y[6] = 0.5 * math.pi
+    state = _unstable_state(m, y, z_n, 0.0, 0, 1400.0, "table")
+    shift = unbalance_axial_shift(unb, y[2], 0.0, y[6], 0.0)[0]
+    assert state["roller"] == 0
+    assert state["roller_axial"] == pytest.approx(12e-6 - shift, rel=1e-12)
+    assert 1.5e-6 < shift < 2.5e-6

@@ -318,6 +318,7 @@ from .roller_dynamics_coupled_kernels import (  # noqa: F401  (kernels re-export
     _stiff_roller,
     pocket_damping,
     spin_pocket_coupling,
+    unbalance_axial_shift,
 )
 from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_response import RollerResponse, _post, _response
@@ -913,7 +914,11 @@ def _unstable_state(m: DynamicsModel, y: np.ndarray, z_n: int, t: float, step: i
     [rad/s] and its ratio to the quasi-static one, the roller deepest in its ribs (largest
     |X - X_ring|) with its X [m], pocket position z [m] and spin [rad/s], the mean spin."""
     n = N_ROLLER_STATES
-    x = y[0:z_n * n:n] - y[z_n * n + 2]
+    unb = np.array(_unbalance_constants(m))
+    # the geometric centre's X (the state's is the centre of mass of roller + unbalance mass)
+    x = np.array([y[i * n] - unbalance_axial_shift(unb, y[i * n + 2], y[i * n + 3],
+                                                   y[i * n + 6], y[i * n + 7])[0]
+                  for i in range(z_n)]) - y[z_n * n + 2]
     j = int(np.argmax(np.abs(x)))
     return {"t": float(t), "step": int(step), "traction": traction, "cage_speed": wc,
             "cage_ratio": wc / m.cage_speed, "roller": j, "roller_axial": float(x[j]),
