@@ -93,8 +93,15 @@ class Results:
     def write(self, out_dir: Path | str) -> Path:
         """Write every table as CSV (and Parquet when pyarrow is present), the loss
         breakdown per operating point (``loss_breakdown.csv``, one column per source), the
-        resolved scene, the metadata and the figures to ``out_dir``; returns the folder."""
+        resolved scene, the metadata and the figures to ``out_dir``; returns the folder.
+
+        Results with tables replace what an earlier run left in the folder under the names
+        a run writes (:meth:`_remove_stale`); results without tables (the metadata of a run
+        stopped before its end, whose step tables the :class:`ResultsWriter` wrote) add to
+        the folder."""
         out = _results_folder(out_dir)
+        if self.tables:
+            self._remove_stale(out)
         try:
             import pyarrow  # noqa: F401
 
@@ -128,6 +135,31 @@ class Results:
         for name, png in self.figures.items():
             (out / f"{name}.png").write_bytes(png)
         return out
+
+
+    def _remove_stale(self, out: Path) -> None:
+        """Remove the tables, figures and report an earlier run left in ``out`` that these
+        results do not write again. (``Simulation(scene).run().write(folder)`` of a
+        losses-only scene into the folder of a transient run kept that run's
+        ``temperatures.csv``, ``energy.csv`` and figures: ``thermobearing report folder``
+        then drew the old temperatures and energy audit beside the new losses and said
+        the losses were evaluated at those temperatures.) Other files stay."""
+        from .report import FIGURE_CAPTIONS
+
+        stale = [f"{t}.{ext}" for t in TABLES if t not in self.tables
+                 for ext in ("csv", "parquet")]
+        if "losses" not in self.tables:
+            stale.append("loss_breakdown.csv")
+        # written by the report of a scene with [measured] readings, after this
+        stale += ["measured_vs_predicted.csv", "report.html"]
+        stale += [f"{name}.png" for name in FIGURE_CAPTIONS if name not in self.figures]
+        for path in out.glob("*.png"):
+            if path.stem.startswith("loss_maps") and path.stem not in self.figures:
+                stale.append(path.name)
+        for name in stale:
+            path = out / name
+            if path.is_file():
+                path.unlink()
 
 
 def _jsonable(obj: Any) -> Any:
