@@ -288,3 +288,22 @@ def test_a_runaway_names_its_step_as_the_tables_number_it():
         _check_runaway(["test.balls", "test.oil"], np.array([580.15, 330.0]), 1830.0, 3, lin)
     assert ("reached 307 degC at t = 1830 s (limit 300 degC), in step 3 (numbered from 0, "
             "as in the tables), with 1771 W of heat") in str(err.value)
+
+
+def test_report_of_a_run_whose_measured_file_moved_is_written_without_the_overlay(
+        tmp_path, capsys):
+    """`thermobearing report DIR` stopped with "an existing data file" after the rig's CSV
+    was moved: no report at all, though the folder keeps the compared readings."""
+    scene = _write(tmp_path, measured=MEASURED.format(node="test.housing"))
+    out = tmp_path / "res"
+    assert main(["run", str(scene), "--out", str(out), "--quiet"]) == 0
+    (tmp_path / "rig_tc.csv").rename(tmp_path / "moved.csv")
+    (out / "report.html").unlink()
+    capsys.readouterr()
+    assert main(["report", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert "rig_tc.csv is no longer there: this report has no measured-vs-predicted section" \
+        in err
+    html = (out / "report.html").read_text(encoding="utf-8")
+    assert "is no longer there" in html
+    assert "measured_vs_predicted.csv of this folder" in html

@@ -14,6 +14,7 @@ import argparse
 import itertools
 import json
 import re
+import sys
 from collections.abc import Mapping
 from html import escape
 from pathlib import Path
@@ -365,6 +366,11 @@ def _folder_scene(path: Path, text: str | None = None) -> Any:
         raise InputError(f"{path}: {exc.field}", exc.value, exc.allowed) from None
 
 
+#: where a run folder keeps the readings it compared with the prediction
+COMPARISON_NOTE = ("the readings the run compared are in measured_vs_predicted.csv of this "
+                   "folder")
+
+
 def run_report(folder: Path) -> Path:
     from ..report import attach_figures, write_report
     from ..results import TABLES, Results
@@ -386,6 +392,19 @@ def run_report(folder: Path) -> Path:
                       check_limits=meta.get("check_limits", {}),
                       estimated=meta.get("estimated", {}),
                       flagged=meta.get("flagged_steps", {}))
+    if scene.measured is not None and not scene.resolve_path(scene.measured.file).is_file():
+        # the rig's file moved or deleted since the run: the report stopped with "an
+        # existing data file" and was not written at all; it is written without the
+        # overlay, saying so (the folder's comparison CSV still has the compared readings)
+        import dataclasses
+
+        kept = (f"; {COMPARISON_NOTE}" if (folder / "measured_vs_predicted.csv").is_file()
+                else "")
+        note = (f"measured file {scene.measured.file} is no longer there: this report has "
+                f"no measured-vs-predicted section{kept}")
+        results.warnings.insert(0, note)
+        print(f"note: {note}", file=sys.stderr)
+        scene = dataclasses.replace(scene, measured=None)
     losses = tables.get("losses")
     if losses is not None and not losses.empty and "source" in losses:
         # a folder of an older version has no breakdown CSV; the report refers to it
