@@ -572,9 +572,12 @@ def preset_names() -> list[str]:
 _TOP_KEYS = {"name", "source", "kind", "viscosity", "pressure_viscosity", "density",
              "thermal", "estimated"}
 _SECTION_UNITS: dict[str, dict[str, str]] = {
+    # Vogel's b is a temperature difference (eta = a exp(b / (T - c))): "1000 degC" is
+    # 1000 K, not 1273.15 K (read as a temperature it made the oil 5.3x as viscous at
+    # 40 degC with a = 5e-5 Pa s, c = 150 K)
     "viscosity": {"law": "", "nu40": "m**2/s", "nu100": "m**2/s", "T1": "K", "T2": "K",
-                  "eta0": "Pa*s", "beta": "1/K", "T0": "K", "a": "Pa*s", "b": "K", "c": "K",
-                  "A": "", "B": "", "source": ""},
+                  "eta0": "Pa*s", "beta": "1/K", "T0": "K", "a": "Pa*s",
+                  "b": "temperature_difference", "c": "K", "A": "", "B": "", "source": ""},
     "pressure_viscosity": {"law": "", "alpha": "1/Pa", "z": "", "p0": "Pa",
                            "reference_temperature": "K", "alpha_correlation": "",
                            "source": ""},
