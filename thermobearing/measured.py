@@ -205,12 +205,22 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
         raise InputError(f"{field}.file", str(path), f"data rows under the header row "
                          f"({', '.join(header)})")
     need = max([*tcols, *idx.values()]) + 1
+    notes: list[str] = []
+    short = 0
     for k, r in enumerate(rows):
         if len(r) < need:
-            raise InputError(f"{field}.file", f"row {k + 1}: {' | '.join(r)!r} (line {at[k]})",
-                             f"at least {need} cells separated by {layout.name!r} "
-                             f"(as in the header row: {', '.join(header)})")
-    notes: list[str] = []
+            if len(r) <= max(tcols):  # not even the time
+                raise InputError(f"{field}.file",
+                                 f"row {k + 1}: {' | '.join(r)!r} (line {at[k]})",
+                                 f"at least {need} cells separated by {layout.name!r} "
+                                 f"(as in the header row: {', '.join(header)})")
+            # a logger that leaves out the empty cells at the end of a row (a channel that
+            # dropped out): they are gaps, like empty cells; the row was refused
+            r.extend([""] * (need - len(r)))
+            short += 1
+    if short:
+        notes.append(f"{short} row{'s' if short > 1 else ''} shorter than the header row: "
+                     "the missing cells at the end are read as gaps (empty cells)")
     stated = stated_units(units, header, idx)
     col_units = _column_units(stated, unit, field, notes)
     notes += _letter_notes(sensors, stated, col_units, unit, field)

@@ -5,6 +5,7 @@ always read as ``mm:ss``, so ``0:10`` of a ``time [h:mm]`` column was 10 s inste
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
@@ -81,3 +82,18 @@ def test_a_logger_started_before_time_zero_reads_minus_to():
     assert coverage_notes(df, 0.0, 3000.0) == [
         "1 measured sample outside the run is left out (1 before, 0 after; measured -5 to "
         "50 min, run 0-50 min)"]
+
+
+def test_a_row_that_leaves_out_its_last_empty_cells_has_gaps_there(tmp_path):
+    """A logger that writes ``60,22`` when the last channel dropped out: the whole file was
+    refused ("at least 3 cells")."""
+    path = tmp_path / "tc.csv"
+    path.write_text("time [s],TC1,TC2\n0,20,21\n60,22\n120,23,24\n", encoding="utf-8")
+    df = read_measured_file(path, "time [s]", {"TC1": "a", "TC2": "b"})
+    assert df["TC1"].tolist() == [20.0, 22.0, 23.0]
+    assert df["TC2"].tolist()[0] == 21.0 and math.isnan(df["TC2"].tolist()[1])
+    assert "1 row shorter than the header row: the missing cells at the end are read as " \
+        "gaps (empty cells)" in df.attrs["notes"]
+    path.write_text("TC1,TC2,time [s]\n20,21,0\n22,23\n", encoding="utf-8")
+    with pytest.raises(Exception, match="at least 3 cells"):  # no time: still refused
+        read_measured_file(path, "time [s]", {"TC2": "b"})
