@@ -213,3 +213,31 @@ def test_the_heat_is_continuous_in_speed_and_load(state, which):
         if src in JUMPING:
             continue
         assert b[src][0].total == pytest.approx(res.total, rel=1e-4, abs=1e-12), src
+
+
+@pytest.mark.parametrize(("written", "kelvin"), [("5 K", 5.0), ("5 degC", 5.0), ("9 degF", 5.0),
+                                                 ("5 delta_degC", 5.0), (5, 5.0)])
+def test_a_temperature_step_option_is_a_temperature_difference(written, kelvin):
+    """Defect found (heat_sources/rib.py, fixed): the rib source documented its
+    temperature_step (the spacing of its temperature table) in "K" read as a temperature,
+    so [models] heat_source_options = { rib_friction = { temperature_step = "5 degC" } }
+    gave a 278.15 K step ("9 degF" 260.37 K)."""
+    from types import SimpleNamespace
+
+    from thermobearing.simulation_chain import scene_heat_source_options
+
+    scene = SimpleNamespace(models={"heat_source_options": {
+        "rib_friction": {"temperature_step": written}}})
+    opts = scene_heat_source_options(scene, ["rib_friction"])
+    assert opts["rib_friction"]["temperature_step"] == pytest.approx(kelvin, rel=1e-12)
+
+
+def test_a_negative_temperature_step_names_the_option():
+    from types import SimpleNamespace
+
+    from thermobearing.simulation_chain import scene_heat_source_options
+
+    scene = SimpleNamespace(models={"heat_source_options": {
+        "rib_friction": {"temperature_step": "-5 degC"}}})
+    with pytest.raises(InputError, match=r"rib_friction\.temperature_step"):
+        scene_heat_source_options(scene, ["rib_friction"])

@@ -118,7 +118,7 @@ MAX_COUPLED_TIME = 0.5
     references=["zhang2021_abnormal_wear", "blok1963_flash_temperature",
                 "harris_kotzalas2007"],
     parameters={"friction_coefficient": "-", "oil_fraction": "-", "unbalance_mass": "kg",
-                "element_share": "-", "temperature_step": "K", "model": "-",
+                "element_share": "-", "temperature_step": "delta_degC", "model": "-",
                 "convergence": "-", "table_retries": "-", "settle": "-",
                 "warm_start_nodes": "-"},
     limits={"friction_coefficient": "[0, 1]", "oil_fraction": "[0, 1]",
