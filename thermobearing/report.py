@@ -348,8 +348,10 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
             ax.set_ylabel(y, fontsize=8)
             ax.grid(alpha=0.3)
             if categories:
-                ax.set_xticks(range(len(categories)), [str(c) for c in categories],
-                              fontsize=7, rotation=30 if len(categories) > 4 else 0)
+                labels = category_labels(categories)
+                long = len(categories) > 4 or max(len(t) for t in labels) > 12
+                ax.set_xticks(range(len(categories)), labels, fontsize=7,
+                              rotation=30 if long else 0, ha="right" if long else "center")
     if by:
         title = ", ".join(by)
         if outside:
@@ -359,6 +361,15 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
         else:
             axes.flat[0].legend(fontsize=7, title=title, title_fontsize=7)
     return _png(fig)
+
+
+def category_labels(categories: Sequence[Any]) -> list[str]:
+    """Tick labels of text values: a file path (``lubricant.path=my_vg150.toml``, made
+    absolute by the sweep) by its file name, unless two values share a name. (The full
+    paths of two oil files overlapped under a what-if panel and squeezed the panels.)"""
+    texts = [str(c) for c in categories]
+    names = [Path(t).name if ("/" in t or "\\" in t) else t for t in texts]
+    return names if len(set(names)) == len(names) else texts
 
 
 def natural_key(value: Any) -> tuple[tuple[int, Any], ...]:

@@ -389,7 +389,16 @@ def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | Non
         values = df[f"{src} [W]"].fillna(0.0).to_numpy(float)
         ax.bar(x, values, bottom=bottom, color=colours[src], label=source_label(src))
         bottom += values
-    labels = [" / ".join(_fmt(row[p]) for p in params) for _, row in df.iterrows()]
+    # a swept file (lubricant.path, made absolute by the sweep) by its file name: two full
+    # paths stood as 45-character upright labels under a plot squeezed to a third
+    from .report import category_labels
+
+    shown = {}
+    for p in params:
+        values = list(dict.fromkeys(df[p].tolist()))
+        shown[p] = dict(zip(values, category_labels(values), strict=True))
+    labels = [" / ".join(shown[p][row[p]] if isinstance(row[p], str) else _fmt(row[p])
+                         for p in params) for _, row in df.iterrows()]
     every = max(1, math.ceil(len(labels) / 40))
     ax.set_xticks(x[::every], labels[::every], rotation=90, fontsize=7)
     ax.set_xlabel(" / ".join(params))

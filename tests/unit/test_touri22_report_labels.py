@@ -121,3 +121,28 @@ def test_whatif_over_oil_grades_puts_the_grades_in_viscosity_order(captured):
         assert list(line.get_ydata()) == losses
     assert sorted(["OIL_4109", "ISO_VG46", "MIL_PRF_23699"], key=natural_key) == [
         "ISO_VG46", "MIL_PRF_23699", "OIL_4109"]
+
+
+def test_swept_oil_files_are_labelled_by_their_file_names(captured, monkeypatch):
+    # '--set lubricant.path=my_vg150.toml,<configs>/ISO_VG46.toml': the sweep makes the
+    # files absolute, and the what-if and bar figures wrote both full paths as tick
+    # labels that overlapped and squeezed the panels
+    import thermobearing.report_losses as report_losses
+    from thermobearing.report import category_labels, fig_whatif
+
+    monkeypatch.setattr(report_losses, "_png", report._png)  # captured as well
+    paths = ["/work/oils/my_vg150.toml", "/opt/thermobearing/configs/ISO_VG46.toml"]
+    summary = pd.DataFrame({"case": ["a", "b"], "lubricant.path": paths,
+                            "mean total loss [W]": [1464.0, 1032.0],
+                            "churning_elements [W]": [250.0, 248.0],
+                            "ehl_rolling_resistance [W]": [868.0, 586.0]})
+    fig_whatif(summary, "lubricant.path", ["mean total loss [W]"])
+    ticks = [t.get_text() for t in captured[-1].axes[0].get_xticklabels()]
+    assert ticks == ["ISO_VG46.toml", "my_vg150.toml"]
+    report_losses.fig_sweep_breakdown(summary, ["lubricant.path"])
+    ticks = [t.get_text() for t in captured[-1].axes[0].get_xticklabels()]
+    assert sorted(ticks) == ["ISO_VG46.toml", "my_vg150.toml"]
+    # two files of one name in different folders keep their paths; presets stay as named
+    same = ["/a/oil.toml", "/b/oil.toml"]
+    assert category_labels(same) == same
+    assert category_labels(["ISO_VG32", "ISO_VG68"]) == ["ISO_VG32", "ISO_VG68"]
