@@ -3,7 +3,8 @@ session 22): every registered source on the ball bearings SKF6304, QJ1044 and th
 bearings NU214, CRB_50x75x16 at random speeds, loads, temperatures and oil flows.
 
 - the books: each watt is a force times a sliding speed (the force pairs' power is the
-  total, HeatResult's contract), per role >= 0;
+  total, HeatResult's contract), per role >= 0, and the loss table's rows
+  (HeatResult.split) add up to the heat per role;
 - the read-set contract (RoleTemperatures): a source's heat does not change when the
   temperature of a role it did not read changes (the coupled transient re-evaluates a
   source only when a role it read changed);
@@ -107,6 +108,13 @@ def test_books_and_the_roles_read(state, role, dt):
         w.__exit__(None, None, None)
     for src, (res, reads) in base.items():
         assert all(p >= 0.0 for p in res.power_by_role.values())
+        # the loss table's rows (HeatResult.split) put each role's heat where the source says
+        per_role = dict.fromkeys(ROLES, 0.0)
+        for _, r, w in res.split():
+            per_role[r] += w
+        for r in ROLES:
+            assert per_role[r] == pytest.approx(res.power_by_role.get(r, 0.0), rel=1e-9,
+                                                abs=1e-12), (src, r)
         if res.force_pairs:
             booked = sum(p.power for p in res.force_pairs)
             assert booked == pytest.approx(res.total, rel=1e-9, abs=1e-12), src
