@@ -307,3 +307,33 @@ def test_report_of_a_run_whose_measured_file_moved_is_written_without_the_overla
     html = (out / "report.html").read_text(encoding="utf-8")
     assert "is no longer there" in html
     assert "measured_vs_predicted.csv of this folder" in html
+
+
+def test_a_run_into_the_scene_s_own_folder_does_not_replace_its_inputs(tmp_path, capsys):
+    """``thermobearing run scene.toml --out .`` replaced the user's scene file (comments
+    lost) with the run's copy; a rig file named temperatures.csv would have been replaced
+    by the prediction."""
+    scene = _write(tmp_path)
+    mine = tmp_path / "scene.toml"
+    mine.write_text("# my notes\n" + scene.read_text(encoding="utf-8"), encoding="utf-8")
+    assert main(["run", str(mine), "--out", str(tmp_path), "--quiet"]) == 1
+    assert "the scene (" in capsys.readouterr().err
+    assert mine.read_text(encoding="utf-8").startswith("# my notes")
+    (tmp_path / "rig_tc.csv").rename(tmp_path / "temperatures.csv")
+    measured = MEASURED.format(node="test.housing").replace("rig_tc.csv", "temperatures.csv")
+    scene = _write(tmp_path, measured=measured)
+    (tmp_path / "rig_tc.csv").unlink()  # (_write wrote it again)
+    before = (tmp_path / "temperatures.csv").read_text(encoding="utf-8")
+    assert main(["run", str(scene), "--out", str(tmp_path), "--quiet"]) == 1
+    assert "measured.file" in capsys.readouterr().err
+    assert (tmp_path / "temperatures.csv").read_text(encoding="utf-8") == before
+    assert main(["sweep", str(mine), "--set", "supply.flow=2", "--out", str(tmp_path),
+                 "-j", "1"]) == 1
+    assert "the scene (" in capsys.readouterr().err
+
+
+def test_a_rerun_from_a_results_folder_s_own_scene_copy_is_allowed(tmp_path, capsys):
+    scene = _write(tmp_path)
+    out = tmp_path / "res"
+    assert main(["run", str(scene), "--out", str(out), "--quiet"]) == 0
+    assert main(["run", str(out / "scene.toml"), "--out", str(out), "--quiet"]) == 0

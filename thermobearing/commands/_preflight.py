@@ -11,6 +11,7 @@ column -> node map of ``[measured]``.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 from ..errors import InputError
@@ -48,3 +49,35 @@ def preflight(sim: Any, build: bool = True) -> None:
             raise InputError(f"measured.columns[{column!r}]", node,
                              "a node of the network: " + ", ".join(nodes)
                              + closest_name(str(node), list(nodes)))
+
+
+def check_inputs_not_replaced(out: Path, scene: Any, scene_arg: str | None,
+                              names: set[str], prefix: str = "loss_maps_",
+                              marker: str = "metadata.json") -> None:
+    """Refuse a results folder in which a run or sweep would overwrite one of its inputs
+    (``names``: the files it writes there; ``prefix``: of its further figure files):
+    ``thermobearing run scene.toml --out .`` replaced the user's scene (its comments
+    lost) with the run's copy, and a rig file named ``temperatures.csv`` in that folder
+    would have been replaced by the predicted temperatures. The ``scene.toml`` of a folder
+    the tool wrote (``marker`` there: a run's ``metadata.json``, a sweep's
+    ``cases.jsonl``) may be given as the scene of a rerun into that folder: it is the
+    tool's own copy."""
+    inputs = []
+    own = (out / marker).is_file()
+    if scene_arg and Path(scene_arg).is_file() and not own:
+        inputs.append(("the scene", Path(scene_arg)))
+    for i, spec in enumerate(scene.bearings):
+        if spec.path:
+            inputs.append((f"bearings[{i}].path", scene.resolve_path(spec.path)))
+    if scene.lubricant.get("path"):
+        inputs.append(("lubricant.path", scene.resolve_path(scene.lubricant["path"])))
+    if scene.measured is not None:
+        inputs.append(("measured.file", scene.resolve_path(scene.measured.file)))
+    for what, path in inputs:
+        name = path.name
+        if (name in names or (name.startswith(prefix) and name.endswith(".png"))) \
+                and path.resolve().parent == out.resolve():
+            raise InputError("--out", str(out),
+                             f"a folder where the run does not replace its inputs: {what} "
+                             f"({path}) has the name of a file written there; give "
+                             "another --out folder (or rename the file)")

@@ -16,7 +16,7 @@ from typing import Any
 from ..errors import InputError, ThermobearingError
 from ..scene import with_absolute_paths
 from ..scene_checks import check_model_names
-from ._preflight import load_scene_argument, preflight
+from ._preflight import check_inputs_not_replaced, load_scene_argument, preflight
 
 NAME = "run"
 HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and write results"
@@ -43,6 +43,7 @@ def run(args: argparse.Namespace) -> int:
     if out.is_file():  # refused before the scene and its chain are printed as if to run
         raise InputError("--out", str(out), "a results folder (new or existing); this is "
                          "a file")
+    check_inputs_not_replaced(out, scene, args.scene, output_names())
     progress = None if not args.quiet else False
     sim = Simulation(scene, progress=progress)
     if not args.quiet and not sys.stderr.isatty():
@@ -79,6 +80,17 @@ def run(args: argparse.Namespace) -> int:
         # "every compared reading": the measured notes above say why none was compared)
         print(f"measured vs predicted, every compared reading: {out / COMPARISON_CSV}")
     return 0
+
+
+def output_names() -> set[str]:
+    """The file names a run writes (or removes as an earlier run's) in its folder."""
+    from ..report import FIGURE_CAPTIONS
+    from ..report_measured import COMPARISON_CSV
+    from ..results import TABLES
+
+    return ({f"{t}.csv" for t in TABLES} | {f"{n}.png" for n in FIGURE_CAPTIONS}
+            | {"loss_breakdown.csv", COMPARISON_CSV, "metadata.json", "scene.toml",
+               "report.html", "loss_maps.png"})
 
 
 def stopped_text(out: Path, done: int | None, steps: int, interrupted: bool) -> str:

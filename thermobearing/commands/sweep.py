@@ -19,7 +19,7 @@ import pandas as pd
 
 from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
-from ._preflight import load_scene_argument
+from ._preflight import check_inputs_not_replaced, load_scene_argument
 
 NAME = "sweep"
 HELP = "sweep scene parameters (cartesian product), locally or on dask, resumable"
@@ -51,6 +51,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
+#: the files a sweep and its report write in the sweep folder (and ``sweep_*.png``)
+SWEEP_OUTPUTS = {"scene.toml", "summary.csv", "cases.jsonl", "report.html"}
+
+
 def run(args: argparse.Namespace) -> int:
     scene = load_scene_argument(args.scene)
     check_model_names(scene)
@@ -66,6 +70,8 @@ def run(args: argparse.Namespace) -> int:
             print(f"sweep: {p.path}: repeated value(s) left out: {', '.join(p.dropped)}",
                   file=sys.stderr)
     out = Path(args.out)
+    check_inputs_not_replaced(out, scene, args.scene, SWEEP_OUTPUTS, prefix="sweep_",
+                              marker="cases.jsonl")
     # what summarize_scene reduces to columns: losses (also behind "report"), kinematics,
     # temperatures (also behind "energy") and a film-only scene's smallest films
     tabulated = {"losses", "kinematics", "temperatures", "energy", "report", "film"}
