@@ -54,3 +54,13 @@ def test_output_piped_into_a_reader_that_stopped_ends_quietly(tmp_path, monkeypa
         monkeypatch.setattr(sys, "stdout", fake)
         assert main(["check"]) == 141
     assert "Broken pipe" not in capsys.readouterr().err
+
+
+def test_check_help_names_its_default_scene(capsys):
+    """``check`` runs the embedded rig without a SCENE, which its help did not say."""
+    import pytest
+
+    with pytest.raises(SystemExit):
+        main(["check", "--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert "default: the embedded QJ1044 rig of seed paper 002" in out

@@ -12,7 +12,9 @@ HELP = "validate a scene and print the model chain that will run, with citations
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("scene", nargs="?", help="scene TOML path or preset name")
+    parser.add_argument("scene", nargs="?",
+                        help="scene TOML path or preset name (default: the embedded QJ1044 "
+                             "rig of seed paper 002, as for `run`)")
 
 
 def run(args: argparse.Namespace) -> int:
