@@ -64,3 +64,18 @@ def test_check_help_names_its_default_scene(capsys):
         main(["check", "--help"])
     out = " ".join(capsys.readouterr().out.split())
     assert "default: the embedded QJ1044 rig of seed paper 002" in out
+
+
+def test_models_help_names_families_that_exist(capsys):
+    """``models --help`` said only "one family": the names were found by trying."""
+    import re
+
+    import pytest
+
+    from thermobearing.registry import all_registries
+
+    with pytest.raises(SystemExit):
+        main(["models", "--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    named = re.search(r"one family, e\.g\. (.*?) \(default", out).group(1).split(", ")
+    assert len(named) >= 3 and set(named) <= set(all_registries())

@@ -13,7 +13,10 @@ HELP = "list the registered models of each family with their references and vali
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("family", nargs="?", help="one family (default: all)")
+    parser.add_argument("family", nargs="?",
+                        help="one family, e.g. heat_source, network_template, film, "
+                             "kinematics, stepper (default: all; `thermobearing models` "
+                             "prints each family's name in brackets)")
 
 
 def run(args: argparse.Namespace) -> int:
