@@ -152,7 +152,11 @@ def test_warm_start_shortens_the_hot_oil_cage_creep(crb, crb_rib_run):
     1311 rad/s to ~1344 rad/s and the settling warm-up runs ~7 orbits; from the 395 K
     node's end state it settles within ~3-4 orbits to the same rib heat within the settling
     test's resolution (measured against a 35-orbit reference: cold +0.11 %, warm -0.085 %;
-    roller_dynamics_coupled notes, "Settling test")."""
+    roller_dynamics_coupled notes, "Settling test"). Those numbers are of the isothermal
+    eq. 35 (quasi-static 1311, settled 1343.7 rad/s); with the default Gupta inlet heating
+    of the rolling force (since 2026-11-24) the quasi-static cage is 1326.05 rad/s, the
+    25 + 10-orbit reference 1351.94 rad/s and the cold window 1351.48 rad/s, rib heat
+    +0.108 % (measured)."""
     b, lub = crb
     w = 30000 * RPM
     _, prev = rdh.run_dynamics(b, lub, w, 3000.0, 395.0)
@@ -161,9 +165,9 @@ def test_warm_start_shortens_the_hot_oil_cage_creep(crb, crb_rib_run):
     assert resp_cold.series["settled"][0] == 1 and resp_warm.series["settled"][0] == 1
     assert warm.orbits < cold.orbits - 2.0
     assert warm.heat == pytest.approx(cold.heat, rel=0.01)
-    # both windows hold the settled cage (20-orbit value 1343.7 rad/s) within 0.2 %
+    # both windows hold the settled cage (25 + 10-orbit mean 1351.94 rad/s) within 0.2 %
     for resp in (resp_cold, resp_warm):
-        assert float(np.mean(resp.series["cage_speed"])) == pytest.approx(1343.7, rel=2e-3)
+        assert float(np.mean(resp.series["cage_speed"])) == pytest.approx(1351.94, rel=2e-3)
 
 
 @pytest.mark.parametrize("bad", [1.5, -1, 11])

@@ -41,8 +41,10 @@ def test_bad_settle_options():
 def test_settling_removes_the_light_load_creep():
     # 1000 N without unbalance: the lightly loaded rollers' spins and the cage creep for ~7
     # orbits from the quasi-static start (SOURCE.md "Cage settling": the fixed 2-orbit
-    # warm-up leaves a window whose cage speed still rises by ~2 %); warmed up until the
-    # orbit-mean cage speed changes by <= 0.1 % per orbit, the window's drift is small
+    # warm-up leaves a window whose cage speed still rises by ~2 % with the isothermal
+    # eq. 35, by 0.80 % with the default Gupta inlet heating of the rolling force, measured
+    # 2026-11-24); warmed up until the orbit-mean cage speed changes by <= 0.1 % per orbit,
+    # the window's drift is small (measured 1.2e-4 with Gupta)
     b, lub, m = _model(1000.0)
     fixed = rc.simulate_coupled(m, b, lub, n_orbits=2.0, warmup_orbits=2.0)
     settled = rc.simulate_coupled(m, b, lub, n_orbits=2.0, warmup_orbits=2.0, settle=1e-3)
@@ -50,7 +52,7 @@ def test_settling_removes_the_light_load_creep():
     warm = float(settled.series["warmup_orbits"][0])
     assert warm > 3.0 and abs(warm - round(warm)) < 1e-3     # whole warm-up orbits
     assert warm <= rc.SETTLE_MAX_ORBITS + 1e-3
-    assert _window_drift(fixed, m) > 0.01
+    assert _window_drift(fixed, m) > 0.005
     assert _window_drift(settled, m) < 0.003
     # the statistics window keeps its length
     span = np.diff(settled.series["window"])[0]
@@ -61,13 +63,15 @@ def test_settling_removes_the_light_load_creep():
 
 
 def test_settled_at_the_first_test_is_the_fixed_window():
-    # 5000 N settles within the 2 warm-up orbits: the first test passes and the run is the
-    # fixed window's (same trajectory, same samples)
+    # 5000 N settles within 3 warm-up orbits (within 2 with the isothermal eq. 35; with the
+    # default Gupta inlet heating the test after 2 orbits fails and the one after 3 passes,
+    # measured 2026-11-24): the first test passes and the run is the fixed window's (same
+    # trajectory, same samples)
     b, lub, m = _model(5000.0)
-    fixed = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=2.0)
-    settled = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=2.0, settle=1e-3)
+    fixed = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=3.0)
+    settled = rc.simulate_coupled(m, b, lub, n_orbits=1.0, warmup_orbits=3.0, settle=1e-3)
     assert settled.series["settled"][0] == 1
-    assert settled.series["warmup_orbits"][0] == pytest.approx(2.0, abs=1e-3)
+    assert settled.series["warmup_orbits"][0] == pytest.approx(3.0, abs=1e-3)
     np.testing.assert_allclose(settled.series["cage_speed"], fixed.series["cage_speed"],
                                rtol=1e-12)
     assert settled.slip_speed == pytest.approx(fixed.slip_speed, rel=1e-12)

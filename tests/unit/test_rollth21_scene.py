@@ -38,6 +38,8 @@ want = ["losses", "kinematics"]
 """
 GUPTA = ('[models.heat_source_options.ehl_rolling_resistance]\n'
          'thermal_reduction = "gupta_1992"')
+NONE = ('[models.heat_source_options.ehl_rolling_resistance]\n'
+        'thermal_reduction = "none"')
 
 
 def _run(options: str):
@@ -48,11 +50,13 @@ def _run(options: str):
 
 @pytest.fixture(scope="module")
 def runs():
-    return _run(""), _run(GUPTA)
+    """(isothermal named, Gupta named, no option: the heat source's and the solver's
+    default, Gupta since 2026-11-24)."""
+    return _run(NONE), _run(GUPTA), _run("")
 
 
 def test_scene_option_reaches_the_roller_solver(runs):
-    (iso, kin_iso), (hot, kin_hot) = runs
+    (iso, kin_iso), (hot, kin_hot), _ = runs
     ratio = hot["ehl_rolling_resistance"] / iso["ehl_rolling_resistance"]
     # Gupta's phi_T at 6000 r/min: 0.727 on the solver's force (race control 0.747)
     assert 0.65 < ratio < 0.80
@@ -63,3 +67,13 @@ def test_scene_option_reaches_the_roller_solver(runs):
     assert kin_hot["converged"] and kin_iso["converged"]
     assert kin_hot["cage speed ratio [-]"] == pytest.approx(kin_iso["cage speed ratio [-]"],
                                                            abs=1e-4)
+
+
+def test_scene_without_the_option_is_the_gupta_default(runs):
+    """Without the option the solver and the source both take the one default (Gupta):
+    the same losses as naming it."""
+    _, (hot, kin_hot), (default, kin_default) = runs
+    for source, power in hot.items():
+        assert default[source] == pytest.approx(power, rel=1e-9, abs=1e-9), source
+    assert kin_default["cage speed ratio [-]"] == pytest.approx(
+        kin_hot["cage speed ratio [-]"], rel=1e-9)

@@ -23,10 +23,7 @@ from thermobearing.heat_sources import HeatContext, evaluate, raceway
 from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, default_traction_law, solve_roller
 from thermobearing.skidding.roller_fluid import closed_form_contact_forces
-from thermobearing.skidding.roller_thermal import (
-    SOLVER_DEFAULT_THERMAL_REDUCTION,
-    inlet_heating_factor,
-)
+from thermobearing.skidding.roller_thermal import inlet_heating_factor
 from thermobearing.state import OilSupply, OperatingPoint
 
 RPM = math.pi / 30.0
@@ -59,13 +56,23 @@ def states(nu214, vg46):
 
 
 def test_default_and_the_heat_sources_name(nu214, vg46):
-    """The solver's default (isothermal until the pinned roller states move with it) and
-    the heat source's default name, which the option takes."""
+    """The solver's default is the heat source's default name (one name, read from
+    ``raceway.DEFAULT_THERMAL_REDUCTION`` at each build), which the option also takes."""
     model = build_model(nu214, vg46, T)
-    assert model.thermal_reduction == SOLVER_DEFAULT_THERMAL_REDUCTION
+    assert raceway.DEFAULT_THERMAL_REDUCTION == "gupta_1992"
+    assert model.thermal_reduction == raceway.DEFAULT_THERMAL_REDUCTION
+    assert model.inlet_heating is not None
     hot = build_model(nu214, vg46, T, thermal_reduction=raceway.DEFAULT_THERMAL_REDUCTION)
     assert hot.thermal_reduction == "gupta_1992" and hot.inlet_heating is not None
     assert build_model(nu214, vg46, T, thermal_reduction="none").inlet_heating is None
+
+
+def test_default_follows_the_heat_sources_constant(nu214, vg46, monkeypatch):
+    """One constant: changing the heat source's default changes the solver's."""
+    monkeypatch.setattr(raceway, "DEFAULT_THERMAL_REDUCTION", "wilson_sheu_1983")
+    assert build_model(nu214, vg46, T).thermal_reduction == "wilson_sheu_1983"
+    monkeypatch.setattr(raceway, "DEFAULT_THERMAL_REDUCTION", "none")
+    assert build_model(nu214, vg46, T).inlet_heating is None
 
 
 def test_factor_is_gupta_with_the_sources_beta(nu214, vg46):

@@ -81,12 +81,12 @@
     assumption: Gupta's fit is for the film of an EHL contact, and it is applied to the
     rigid (centrifugally seated) contacts through the same effective viscosity. phi_T of the
     no-load reference contact is taken at its own Hertz pressure. A skidding state's forces
-    are booked as the solver carried them: the roller solver applies the reduction only when
-    the scene names it for this source (``[models.options.ehl_rolling_resistance]
-    thermal_reduction``, passed to the solver by the simulation,
-    :mod:`thermobearing.skidding.roller_thermal`); its own default is still isothermal
-    (``SOLVER_DEFAULT_THERMAL_REDUCTION``), so without that option a skidding chain books the
-    isothermal force and a race-control chain the reduced one.
+    are booked as the solver carried them: the roller solver's default is this source's
+    (``DEFAULT_THERMAL_REDUCTION``, the one name both read,
+    :func:`thermobearing.skidding.roller_thermal.default_thermal_reduction`), and a scene
+    that names ``[models.options.ehl_rolling_resistance] thermal_reduction`` has it passed
+    to the solver by the simulation, so a skidding chain and a race-control chain apply the
+    same reduction.
 
     Thermal reduction against the SKF model (measured 2026-11-24; NU 214, ISO VG 46 at
     50 degC, 10 kN, jet, race control, validation case crosscheck_global_friction): Gupta
@@ -408,7 +408,8 @@ ROLLING_FORCE_MODELS = ("regime_min", "dowson_higginson", "rigid_isoviscous")
 #: exponent of eta0 u in Dowson-Higginson's film and in eq. 35's force (h, Q_x ~ (eta0 u)^0.7):
 #: a film factor phi_T is the inlet viscosity factor phi_T^(1/0.7) (module docstring)
 DH_VISCOSITY_EXPONENT = 0.7
-#: ``thermal_reduction`` of the line-contact models when the options name none
+#: ``thermal_reduction`` of the line-contact models when the options name none, and of the
+#: roller skidding solver's rolling force (``skidding.roller_thermal.default_thermal_reduction``)
 DEFAULT_THERMAL_REDUCTION = "gupta_1992"
 
 

@@ -249,9 +249,9 @@ def build_model(
     thermal_reduction : inlet shear heating of the raceway rolling force Q_x (paper 000
         eq. 35 and its rigid-isoviscous form), a ``film.THERMAL_FILM`` name, e.g.
         "gupta_1992", the line-contact rolling-resistance heat source's default
-        (``heat_sources.raceway.DEFAULT_THERMAL_REDUCTION``). None (default) is
-        ``roller_thermal.SOLVER_DEFAULT_THERMAL_REDUCTION`` ("none" for now: the switch to
-        the heat source's default waits for the pinned roller states it moves) for the
+        (``heat_sources.raceway.DEFAULT_THERMAL_REDUCTION``). None (default) is that
+        default (``roller_thermal.default_thermal_reduction``, one name for the solver and
+        the heat source; "none" is the isothermal eq. 35 of paper 000) for the
         closed-form drag and "none" for a drag model that integrates its own film pressure
         (a name other than "none" is refused there). The factor phi_T of each contact, at
         its entrainment speed, slide-to-roll ratio and Hertz pressure, is the heat source's

@@ -4,7 +4,7 @@ One job: the film thermal-reduction factor phi_T of a roller-raceway line contac
 roller skidding solver needs it, a function of the contact's entrainment speed, slide-to-roll
 ratio and Hertz pressure at the solve's fixed lubricant and temperature
 (:func:`inlet_heating_factor`), and the option's default and check
-(:func:`resolve_thermal_reduction`, :data:`SOLVER_DEFAULT_THERMAL_REDUCTION`).
+(:func:`resolve_thermal_reduction`, :func:`default_thermal_reduction`).
 
 The factor is the one the line-contact rolling-resistance heat source applies
 (``heat_sources.raceway.ehl_rolling_resistance``, option ``thermal_reduction``, default
@@ -57,14 +57,16 @@ from ..errors import InputError, ValidityWarning
 #: a roller-raceway thermal factor: (u [m/s], S [-], p_h [Pa]) -> phi_T [-], arrays over rollers
 InletHeating = Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray]
 
-#: the solver's ``thermal_reduction`` when none is named: "none" for now (2026-11-24). The
-#: heat source's default (``heat_sources.raceway.DEFAULT_THERMAL_REDUCTION``, "gupta_1992")
-#: here moves the pinned states of 16 existing roller tests (cold starts, near-pure-rolling
-#: slides, warm slide solves, round-off, the roller dynamics' table slopes and pocket
-#: damping, a traction-curve range warning, the roller rig tour) and the crb_rib_reduced
-#: regression references (the reduced dynamics start from this solver's state); the switch
-#: is this one name, with those updated by their owners.
-SOLVER_DEFAULT_THERMAL_REDUCTION = "none"
+
+def default_thermal_reduction() -> str:
+    """The solver's ``thermal_reduction`` when none is named: the line-contact
+    rolling-resistance heat source's default, ``heat_sources.raceway.
+    DEFAULT_THERMAL_REDUCTION`` ("gupta_1992"), the one name both read (read at each call),
+    so ``skidding.solve`` called directly and a scene's heat source apply the same rolling
+    force. Paper 000's validation cases name "none" (its eq. 35 is isothermal)."""
+    from ..heat_sources.raceway import DEFAULT_THERMAL_REDUCTION
+
+    return str(DEFAULT_THERMAL_REDUCTION)
 
 
 def viscosity_exponent() -> float:
@@ -76,7 +78,7 @@ def viscosity_exponent() -> float:
 
 
 def resolve_thermal_reduction(name: str | None, supported: bool, drag_model: str) -> str:
-    """The solver's ``thermal_reduction``: ``None`` is :data:`SOLVER_DEFAULT_THERMAL_REDUCTION`
+    """The solver's ``thermal_reduction``: ``None`` is :func:`default_thermal_reduction`
     for a drag model whose rolling force takes it (``supported``, the closed-form one and
     its Hertz-zone variants) and "none" for one that integrates its own (isothermal) film
     pressure; a ``film.THERMAL_FILM`` name otherwise. InputError / UnknownNameError name the
@@ -84,7 +86,7 @@ def resolve_thermal_reduction(name: str | None, supported: bool, drag_model: str
     from ..film import THERMAL_FILM
 
     if name is None:
-        return SOLVER_DEFAULT_THERMAL_REDUCTION if supported else "none"
+        return default_thermal_reduction() if supported else "none"
     if not isinstance(name, str):
         raise InputError("thermal_reduction", name,
                          "a name of film.THERMAL_FILM: " + ", ".join(THERMAL_FILM.names()))

@@ -6,7 +6,9 @@ Newton iterate, to the same state.
 The reference values are the full-bracket solutions (Brent over the whole cage-speed range,
 rollers bisected from their full range) of the solver before this change, measured with
 benchmarks/bm_roller_cold.py (NU214 with the paper 000 oil; a catalogue NU 206 with
-ISO VG 68).
+ISO VG 68). The references are isothermal solves (eq. 35 without inlet heating): the NU 206
+solves name ``thermal_reduction="none"`` (the solver's default is Gupta's reduction since
+2026-11-24; the paper 000 oil of the NU214 has beta = 0, phi_T = 1 either way).
 """
 
 from __future__ import annotations
@@ -81,7 +83,8 @@ def test_hot_nu206_converges_by_newton(nu206, vg68):
     """Catalogue NU 206, 13 kN, 8000 r/min, oil at 140 degC: formerly bracketed (4.8 s).
     Since eq. 35 takes the mean speed (2026-11-23) Newton ends below the tolerance itself or
     at the round-off floor (which one is round-off); the state is the bracketed one."""
-    r = solve_roller(nu206, vg68, 8000.0 * RPM, 13000.0, 0.0, 413.15)
+    r = solve_roller(nu206, vg68, 8000.0 * RPM, 13000.0, 0.0, 413.15,
+                     thermal_reduction="none")
     assert r.extras["method"] in ("newton", "newton_round_off")
     assert r.residual_norm <= max(1e-9, 4.0 * r.extras.get("round_off_floor", 0.0))
     assert r.cage_speed == pytest.approx(350.5835280083196, rel=1e-12)
@@ -101,7 +104,8 @@ def test_newton_iterate_with_wrong_unloaded_rollers_is_not_accepted(nu206, vg68)
     one ulp of slide, where the cold film carries ~100 N); it is refused and the
     slide-variable solve gives the same speeds (cage to 1e-15, roller 5 to 7e-13) with
     6.24 W = 6.24 W (to 1e-15) at residual 4e-18."""
-    r = solve_roller(nu206, vg68, 500.0 * RPM, 13000.0, 0.0, 293.15)
+    r = solve_roller(nu206, vg68, 500.0 * RPM, 13000.0, 0.0, 293.15,
+                     thermal_reduction="none")
     assert r.extras["method"] in AT_ROUND_OFF
     _every_equation_within_its_floor(r)
     assert r.cage_speed == pytest.approx(21.91147050058097, rel=1e-12)
@@ -116,7 +120,8 @@ def test_bracketed_solve_started_around_newton_reaches_the_reference(nu206, vg68
     around it (1.3 s instead of 7.4 s) ends at the full-bracket state. Its shaft power and
     dissipation differed by 0.7 % (residual 2.6e-5): it is refused and solved in the sliding
     speeds (residual 8e-18, the same speeds to 5e-13)."""
-    r = solve_roller(nu206, vg68, 500.0 * RPM, 6000.0, 0.0, 293.15)
+    r = solve_roller(nu206, vg68, 500.0 * RPM, 6000.0, 0.0, 293.15,
+                     thermal_reduction="none")
     assert r.extras["method"] in AT_ROUND_OFF
     _every_equation_within_its_floor(r)
     assert r.cage_speed == pytest.approx(REF_NU206_6KN[0], rel=1e-12)
