@@ -31,7 +31,7 @@ import math
 import warnings
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from thermobearing import load_bearing, load_lubricant
@@ -53,14 +53,16 @@ def _is_ball(name: str) -> bool:
     return name in ("SKF6304", "QJ1044")
 
 
-def _heat(name, rpm, fr, fa, temps, flow, outer_rpm=0.0, oil="ISO_VG46"):
-    """{source: (HeatResult, roles read)} of every source that applies to the bearing."""
+def _heat(name, rpm, fr, fa, temps, flow, outer_rpm=0.0, oil="ISO_VG46", kinematics=None):
+    """{source: (HeatResult, roles read)} of every source that applies to the bearing;
+    the race-control state at ``kinematics`` (role temperatures; default ``temps``)."""
     b, lub = load_bearing(name), load_lubricant(oil)
-    sup = OilSupply("jet", flow / 6e4, temps["oil"])
+    kin = temps if kinematics is None else kinematics
+    sup = OilSupply("jet", flow / 6e4, kin["oil"])
     op = OperatingPoint(inner_speed=rpm * math.pi / 30.0, outer_speed=outer_rpm * math.pi / 30,
                         radial_load=fr, axial_load=fa)
-    kr = race_control(b, lub, op, contact_temperature=temps["elements"],
-                      oil_temperature=temps["oil"], supply=sup)
+    kr = race_control(b, lub, op, contact_temperature=kin["elements"],
+                      oil_temperature=kin["oil"], supply=sup)
     opts = {**kr.heat_options, **OPTIONS.get(name, {})}
     ctx = HeatContext(temperatures=temps, bearing=b, lubricant=lub, supply=sup, operating=op,
                       kinematics=kr.state, traction=kr.traction, options=opts)
@@ -98,12 +100,16 @@ def _quiet():
 
 @settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(states(), st.sampled_from(ROLES), st.floats(5.0, 30.0))
+@example(("NU214", 100.0, 100.0, 0.0, dict.fromkeys(ROLES, 305.0), 1.0), "elements", 5.0)
+@example(("SKF6304", 3000.0, 2000.0, 300.0, dict.fromkeys(ROLES, 330.0), 5.0), "oil", 10.0)
 def test_books_and_the_roles_read(state, role, dt):
     name, rpm, fr, fa, temps, flow = state
     w = _quiet()
     try:
         base = _heat(name, rpm, fr, fa, temps, flow)
-        other = _heat(name, rpm, fr, fa, {**temps, role: temps[role] + dt}, flow)
+        # the same kinematic state (and supply): only the node temperatures change
+        other = _heat(name, rpm, fr, fa, {**temps, role: temps[role] + dt}, flow,
+                      kinematics=temps)
     finally:
         w.__exit__(None, None, None)
     for src, (res, reads) in base.items():
