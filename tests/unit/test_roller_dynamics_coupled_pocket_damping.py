@@ -63,6 +63,27 @@ def _orbital_force(rm, m, dz):
     return f_d, fi.shear_force - fo.shear_force, e0
 
 
+def _refresh_most_loaded(m, rm, body_force):
+    """The in-kernel table refresh (_refresh_roller) of the most loaded roller on a table
+    around its spin: (half roller diameter [m], roller index, spin [rad/s], N_i [N], cage
+    speed [rad/s], table, linearisation row, c_z [N s/m])."""
+    half = 0.5 * rm.roller_diameter
+    j = int(np.argmax(m.inner_load))
+    w, n_i, wc = float(m.spin[j]), float(m.inner_load[j]), float(m.cage_speed)
+    tab = build_traction_table(rm, SPEED, body_force, (w - 400.0, w + 400.0), n_i, wc)
+    n = rc.N_ROLLER_STATES
+    y = np.zeros(n + 4)
+    y[7] = w
+    y[n + 1] = wc
+    lin = np.zeros((1, 7))
+    w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
+    st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
+                            np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
+                            tab.cage, tab.values, lin, w0, wc, q_o, c_z, half)
+    assert st == 0
+    return half, j, w, n_i, wc, tab, lin, c_z
+
+
 def test_pocket_damping_is_the_traction_slope_against_the_pocket_speed(base):
     """c_z from the spin slope dS/d omega (what both refresh paths have) equals minus the
     slope of the raceways' net orbital force against the pocket speed z' [N s/m], computed
@@ -109,21 +130,7 @@ def test_table_refresh_pocket_damping_units(base):
     shear's slope against a sliding-speed perturbation dV of the roller surface, dS/dV
     (central difference here, forward difference of the spin there)."""
     m, rm = base
-    half = 0.5 * rm.roller_diameter
-    j = int(np.argmax(m.inner_load))
-    w, n_i, wc = float(m.spin[j]), float(m.inner_load[j]), float(m.cage_speed)
-    tab = build_traction_table(rm, SPEED, lambda _: 0.0, (w - 400.0, w + 400.0),
-                               n_i, wc)
-    n = rc.N_ROLLER_STATES
-    y = np.zeros(n + 4)
-    y[7] = w
-    y[n + 1] = wc
-    lin = np.zeros((1, 7))
-    w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
-    st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
-                            np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
-                            tab.cage, tab.values, lin, w0, wc, q_o, c_z, half)
-    assert st == 0
+    half, j, w, n_i, wc, tab, lin, c_z = _refresh_most_loaded(m, rm, lambda _: 0.0)
     dv = 3e-3                                             # m/s of surface speed
     s_p = table_eval(tab.spin0, tab.spin_step, tab.loads, tab.cage, tab.values,
                      w + dv / half, n_i, wc)
@@ -177,21 +184,8 @@ def test_table_refresh_spin_pocket_coupling(base):
     from thermobearing.skidding.roller_dynamics_coupling import unbalance_orbital_force
 
     m, rm = base
-    half = 0.5 * rm.roller_diameter
-    j = int(np.argmax(m.inner_load))
-    w, n_i, wc = float(m.spin[j]), float(m.inner_load[j]), float(m.cage_speed)
-    tab = build_traction_table(rm, SPEED, lambda c: unbalance_orbital_force(m, c),
-                               (w - 400.0, w + 400.0), n_i, wc)
-    n = rc.N_ROLLER_STATES
-    y = np.zeros(n + 4)
-    y[7] = w
-    y[n + 1] = wc
-    lin = np.zeros((1, 7))
-    w0, q_o, c_z = np.zeros(1), np.zeros(1), np.zeros(1)
-    st = rc._refresh_roller(0, y, 1, np.zeros(1), np.array([0.0, 2.0 * math.pi]),
-                            np.array([n_i, n_i]), tab.spin0, tab.spin_step, tab.loads,
-                            tab.cage, tab.values, lin, w0, wc, q_o, c_z, half)
-    assert st == 0
+    half, j, w, n_i, wc, tab, lin, c_z = _refresh_most_loaded(
+        m, rm, lambda c: unbalance_orbital_force(m, c))
     s_p, _ = _raceway_shear(rm, m, 1e-3)
     s_m, _ = _raceway_shear(rm, m, -1e-3)
     hand = (s_p[j] - s_m[j]) / 2e-3
