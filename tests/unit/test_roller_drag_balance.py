@@ -16,13 +16,12 @@ import math
 import numpy as np
 import pytest
 
+from tests.unit.scene_step_heat import first_step_heat
 from thermobearing import skidding
 from thermobearing.errors import InputError, ValidityWarning
 from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate
 from thermobearing.lubricant import load_lubricant
-from thermobearing.scene import loads_scene
-from thermobearing.simulation import Simulation
 from thermobearing.skidding.roller import default_traction_law, solve_roller
 from thermobearing.state import OilSupply, OperatingPoint
 
@@ -70,14 +69,7 @@ def oil():
 def _scene_heat(supply: str, load: str, preset: str = "NU214", speed: str = "5000 rpm"):
     text = SCENE.format(preset=preset, supply=supply, speed=speed, load=load,
                         sources="[" + ", ".join(f'"{s}"' for s in SOURCES) + "]")
-    sim = Simulation(loads_scene(text), progress=False)
-    b = sim.bearings[0]
-    step = sim.scene.schedule.steps[0]
-    kin = sim.solve_kinematics(b, 0, step, TEMPS)
-    ev = sim.evaluate_heat(b, step, kin, TEMPS, with_rows=True)
-    by_source: dict[str, float] = {}
-    for row in ev.rows:
-        by_source[row["source"]] = by_source.get(row["source"], 0.0) + row["power [W]"]
+    kin, step, by_source = first_step_heat(text, TEMPS)
     return kin.raw, step.speed, by_source
 
 

@@ -22,11 +22,10 @@ import math
 import numpy as np
 import pytest
 
+from tests.unit.scene_step_heat import first_step_heat
 from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate
 from thermobearing.lubricant import load_lubricant
-from thermobearing.scene import loads_scene
-from thermobearing.simulation import Simulation
 from thermobearing.skidding.roller import default_traction_law, solve_roller
 from thermobearing.state import OilSupply, OperatingPoint
 
@@ -68,15 +67,7 @@ def paper_oil():
 
 
 def _scene_state(speed: str, load: str):
-    sim = Simulation(loads_scene(SCENE.format(speed=speed, load=load)), progress=False)
-    b = sim.bearings[0]
-    step = sim.scene.schedule.steps[0]
-    kin = sim.solve_kinematics(b, 0, step, TEMPS)
-    ev = sim.evaluate_heat(b, step, kin, TEMPS, with_rows=True)
-    by_source: dict[str, float] = {}
-    for row in ev.rows:
-        by_source[row["source"]] = by_source.get(row["source"], 0.0) + row["power [W]"]
-    return kin, step, by_source
+    return first_step_heat(SCENE.format(speed=speed, load=load), TEMPS)
 
 
 @pytest.mark.parametrize("speed, load, skids", [
