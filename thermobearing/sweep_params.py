@@ -83,6 +83,18 @@ def _split_unit(text: str) -> tuple[str, str]:
     return m.group(1), (m.group(2) or "").strip()
 
 
+def _range_value(a: float, b: float, d: float, i: int) -> float:
+    """Value ``i`` of the range ``a:b:d``, rounded to :data:`_DIGITS` significant digits of
+    the range's scale max(|a|, |b|, d) rather than of the value itself: a value that cancels
+    to zero kept the noise of the cancellation ("-0.3:0.3:0.1" wrote 5.55111512313e-17 degC
+    for 0 degC, "-4903.50:5464.23:80.37" -0.929999999999 for -0.93)."""
+    v = a + i * d
+    scale = max(abs(a), abs(b), d)
+    if scale > 0.0 and math.isfinite(scale):
+        v = round(v, _DIGITS - 1 - math.floor(math.log10(scale)))
+    return v + 0.0 if v != 0.0 else 0.0  # no "-0"
+
+
 def _number(text: str, field: str) -> float:
     try:
         return float(text)
@@ -194,8 +206,9 @@ def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepPa
                              f"values (this one gives {count:.3g}: a larger step?)")
         n = int(math.floor((b - a) / d + 1e-9)) + 1
         unit = unit or _existing_unit(scene_dict, path)
-        return SweepParameter(path, tuple(f"{a + i * d:.{_DIGITS}g} {unit}" if unit else a + i * d
-                                          for i in range(n)))
+        points = [_range_value(a, b, d, i) for i in range(n)]
+        return SweepParameter(path, tuple(f"{v:.{_DIGITS}g} {unit}" if unit else v
+                                          for v in points))
     pieces = [v.strip() for v in raw.split(",")]
     if pieces and not pieces[-1]:
         pieces = pieces[:-1]  # a trailing comma ("15,33,") adds nothing

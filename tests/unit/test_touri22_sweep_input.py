@@ -172,3 +172,14 @@ def test_a_schedule_field_the_steps_share_gives_no_note(scene):
     d = loads_scene(RUN_UP).to_dict()
     assert parse_set("schedule.radial_load=3,5", d).notes == ()
     assert parse_set("schedule.speed=2000,4000", scene.to_dict()).notes == ()  # one step
+
+
+@pytest.mark.parametrize("spec, written", [
+    ("environment.ambient_temperature=-0.3:0.3:0.1",
+     ("-0.3 degC", "-0.2 degC", "-0.1 degC", "0 degC", "0.1 degC", "0.2 degC", "0.3 degC")),
+    ("environment.ambient_temperature=-2.1:2.1:0.7",
+     ("-2.1 degC", "-1.4 degC", "-0.7 degC", "0 degC", "0.7 degC", "1.4 degC", "2.1 degC")),
+    ("supply.flow=0.1:0.3:0.1", ("0.1 L/min", "0.2 L/min", "0.3 L/min"))])
+def test_a_range_is_written_to_the_digits_of_its_scale(scene, spec, written):
+    # a value cancelling to zero kept the cancellation's noise: '5.55111512313e-17 degC'
+    assert parse_set(spec, scene.to_dict()).values == written
