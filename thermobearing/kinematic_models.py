@@ -36,7 +36,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import ValidityWarning
+from .errors import InputError, ValidityWarning
 from .registry import Registry
 from .state import KinematicState, OilSupply, OperatingPoint
 
@@ -90,8 +90,6 @@ def contact_temperature(temperatures: Mapping[str, float]) -> float:
     """
     missing = [r for r in ("inner_ring", "outer_ring", "elements") if r not in temperatures]
     if missing:
-        from .errors import InputError
-
         raise InputError("temperatures", sorted(temperatures),
                          "a temperature for every contact role (inner_ring, outer_ring, "
                          f"elements); missing: {', '.join(missing)}")
@@ -236,6 +234,11 @@ def skidding(bearing: Any, lubricant: Any, operating: OperatingPoint, *,
     driver runs the solve instead."""
     if at_rest(operating):
         return standstill(bearing, operating)
+    if operating.outer_speed != 0.0:
+        raise InputError("operating.outer_speed", operating.outer_speed,
+                         "0 rad/s under the skidding solvers: they turn the inner ring with the "
+                         "outer ring fixed (kinematics = \"race_control\" takes a driven outer "
+                         "ring)")
     from .skidding import solve
 
     opts = dict(options or {})

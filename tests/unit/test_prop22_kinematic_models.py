@@ -3,10 +3,9 @@ turning backwards, or with its outer ring driven (OperatingPoint.outer_speed).
 
 Race control takes any ring speeds (its heat is the mirror image's:
 test_prop22_heat_sources.py). The skidding model solves the inner ring driven forward
-only; for the other points it should say so, naming the operating field. Measured: it
-passes the inner-ring speed on and the solvers refuse it under their own name, 'speed =
-0.0 is not allowed: a value > 0' for an outer ring driven at 300 rad/s (outer_speed is
-not named; xfail below: kinematic_models.py is not among the files this round may edit).
+only; for the other points it says so, naming the operating field (it passed the
+inner-ring speed on and the solvers refused it as 'speed = 0.0 is not allowed: a value > 0'
+for an outer ring driven at 300 rad/s, without naming outer_speed).
 """
 
 from __future__ import annotations
@@ -47,11 +46,6 @@ def test_race_control_takes_any_ring_speeds(name, wi, wo):
     assert mirror.state.cage_speed == pytest.approx(-k.state.cage_speed, rel=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "kinematic_models.skidding passes operating.inner_speed to the skidding solvers, which "
-    "refuse it as 'speed = 0.0 is not allowed: a value > 0' for an outer ring driven at "
-    "300 rad/s (and 'speed = -300.0' backwards): the error does not name "
-    "operating.outer_speed nor say the solver drives the inner ring only"))
 @pytest.mark.parametrize("name", ["SKF6304", "NU214"])
 def test_skidding_with_the_outer_ring_driven_names_the_outer_speed(name):
     b, oil = load_bearing(name), load_lubricant("ISO_VG46")

@@ -93,12 +93,6 @@ def test_only_the_whirl_acceleration_matters(model, load, radius, k):
     assert a.cage_speed_stats.maximum == pytest.approx(float(np.max(a.cage_speed)), abs=0)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "Whirl accepts any periods > 0, but solve_whirl runs round(n_samples * periods) samples: "
-    "Whirl(6e-5, periods=0.001) (72 x 0.001 -> 0 samples) ends in numpy's 'ValueError: "
-    "zero-size array to reduction operation minimum which has no identity' from the "
-    "statistics instead of an InputError naming whirl.periods (skidding/whirl.py is not "
-    "among the files this round may edit)"))
 def test_a_whirl_of_no_sample_names_its_periods(model):
     from thermobearing.errors import InputError
 

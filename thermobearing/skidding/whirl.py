@@ -87,6 +87,11 @@ class Whirl:
         if int(self.n_samples) != self.n_samples or self.n_samples < 2:
             raise InputError("whirl.n_samples", self.n_samples, "an integer >= 2")
         check_positive("whirl.periods", self.periods)
+        if int(round(self.n_samples * self.periods)) < 1:
+            raise InputError("whirl.periods", self.periods,
+                             f"at least one sample: periods >= {0.5 / self.n_samples:.6g} "
+                             f"with n_samples = {self.n_samples} (the solve runs "
+                             f"round(n_samples * periods) samples)")
 
     def acceleration(self, t: float, omega_w: float) -> tuple[float, float]:
         """Bearing-centre acceleration (e_x'', e_y'') [m/s^2] at time t [s] (eqs. 3-4)."""
