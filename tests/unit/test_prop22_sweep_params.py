@@ -6,8 +6,9 @@
 - a comma list keeps its order, drops a repeated quantity (whatever the unit it is written
   in) and reports it, and the unit after the list is taken by every bare number;
 - the text of a swept value carries no float noise (sweep_params._DIGITS: "a double's 15,
-  less the float noise of a range's start + i * step"): measured, a range crossing zero
-  writes its zero as the noise of the cancellation (xfail below).
+  less the float noise of a range's start + i * step"): a range crossing zero writes its
+  zero as 0 (it wrote the noise of the cancellation, 5.55e-17, until range values were
+  rounded to the range's own scale).
 """
 
 from __future__ import annotations
@@ -65,15 +66,6 @@ def test_a_non_negative_range_is_written_without_float_noise(rng):
     assert _numbers(p.values) == [a + i * s for i in range(n + 1)]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "sweep_params.parse_set writes a range's value as f'{a + i * d:.12g}': twelve significant "
-    "digits of a value that cancels to zero keep only the noise of the cancellation. "
-    "Measured: environment.ambient_temperature=-0.3:0.3:0.1 gives '5.55111512313e-17 degC' "
-    "for 0 degC, -2.1:2.1:0.7 gives '-4.4408920985e-16 degC' (the sweep's case values, "
-    "summary column and figure titles show it); of 20000 random decimal ranges with a "
-    "negative start, 23 wrote a value with noise (e.g. -4903.50:5464.23:80.37 gives "
-    "-0.929999999999 for -0.93). Rounding to 12 digits of the range's scale "
-    "max(|start|, |stop|, step) instead of the value's own would write the decimals"))
 @pytest.mark.parametrize(("spec", "zero_at"), [("-0.3:0.3:0.1", 3), ("-2.1:2.1:0.7", 3)])
 def test_a_range_crossing_zero_writes_its_zero(spec, zero_at):
     p = parse_set(f"environment.ambient_temperature={spec}", SCENE)
