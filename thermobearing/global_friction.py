@@ -199,26 +199,58 @@ def skf_drag_factor(level_ratio: float, family: str) -> float:
     return float(_VM_INTERP[family](min(level_ratio, 1.2)))
 
 
+def _angle_code(suffix: str) -> str:
+    """The contact-angle code that heads an angular-contact suffix: "AC" (25 deg), "A"
+    (30 deg, the double-row 32 / 33 A) or "B" (40 deg: B, BE, BECBP, BEGAP ...); "" else."""
+    for code in ("AC", "A", "B"):
+        if suffix.startswith(code):
+            return code
+    return ""
+
+
 def infer_skf_series(envelope: BearingEnvelope) -> str:
-    """SKF series key from the designation ("6304" -> "63", "NU214" -> "2", "QJ1044" -> "QJ")."""
+    """SKF series key from the designation ("6304" -> "63", "NU214" -> "2", "QJ1044" -> "QJ",
+    "7210BE" -> "72_BECBP", "7310ACCBM" -> "73_ACCBM", "3210A" -> "32_A").
+
+    The designation's first group of digits is the series followed by the two-digit bore
+    code (letters before it, e.g. "NU" or "SKF", and a part after "-" such as "-2RS" are
+    not read). An angular-contact series is keyed with its contact-angle suffix, the
+    letters right after the digits: "AC" (25 deg), "A" (30 deg), "B"/"BE" (40 deg) pick
+    the catalogue row of that angle (SKF catalogue friction Table 1a).
+    """
     kind = envelope.kind
     if kind == "four_point":
         return "QJ"
-    digits = "".join(re.findall(r"\d+", envelope.name.split("x")[0])) if envelope.name else ""
+    name = envelope.name or ""
+    found = (re.search(r"(\d+)\s*([A-Za-z]*)", name)
+             if name and "x" not in name.lower() else None)
+    digits, suffix = (found.group(1), found.group(2).upper()) if found else ("", "")
     known = sorted({s for (k, s) in SKF_RS if k == kind}, key=len, reverse=True)
-    if digits and "x" not in envelope.name.lower():
+    if len(digits) > 2:
         for series in known:
-            if digits.startswith(series) and len(digits) - len(series) == 2:
+            prefix, _, angle = series.partition("_")
+            if digits[:-2] != prefix:
+                continue
+            if not angle or _angle_code(angle) == _angle_code(suffix) != "":
                 return series
-    read = (f"; it reads as series {digits[:-2]!r}, which has no constants here"
-            if len(digits) > 2 else "")
-    name = repr(envelope.name) if envelope.name else f"of this {kind} bearing (none given)"
+    read = ""
+    if len(digits) > 2:
+        angle = _angle_code(suffix) if kind == "angular_contact" else ""
+        read = (f"; it reads as series {digits[:-2]!r}"
+                + (f" with contact-angle code {angle!r}" if angle else
+                   f" with the suffix {suffix!r}, not a contact-angle code AC, A or B"
+                   if kind == "angular_contact" and suffix else
+                   " with no contact-angle code (AC, A, B) after the digits"
+                   if kind == "angular_contact" else "")
+                + ", which has no constants here")
+    shown = repr(envelope.name) if envelope.name else f"of this {kind} bearing (none given)"
     raise InputError(
         "models.heat_source_options.global_friction.series", None,
-        f"the SKF four-term model needs the bearing's series, and the designation {name} "
+        f"the SKF four-term model needs the bearing's series, and the designation {shown} "
         f"names none the SKF constants cover for {kind} bearings "
         f"({', '.join(sorted(known))}){read}: give the series (scene: [models] "
-        "heat_source_options = { global_friction = { series = \"...\" } }) or use "
+        "heat_source_options = { global_friction = { series = \"...\" } }), name the "
+        "bearing by its designation with the suffix (e.g. \"7210BE\") or use "
         "Palmgren (model = \"palmgren\")")
 
 

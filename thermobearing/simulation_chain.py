@@ -117,6 +117,11 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
     documented interval (a number: ``"50 %"`` is 0.5). Numeric values are checked
     against the interval the entry documents (``limits``), so ``thermobearing check``
     refuses e.g. a negative gap or an oil fraction above 1 before anything is solved.
+
+    ``global_friction`` may be given without being a heat source, with the catalogue
+    inputs only (:data:`CROSSCHECK_OPTIONS`: ``series``, ``static_load_rating``): they
+    then configure the report's catalogue cross-check (:func:`crosscheck_options`) and no
+    loss is booked; they are checked and converted as any other option.
     """
     from .heat_sources import HEAT_SOURCES
     from .units import to_si
@@ -128,11 +133,22 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
     out: dict[str, dict] = {}
     for src, params in raw.items():
         field_name = f"models.heat_source_options.{src}"
-        if src not in sources:
+        crosscheck_only = src == "global_friction" and src not in sources
+        if src not in sources and not crosscheck_only:
             raise InputError(field_name, src, "one of the scene's heat sources: "
-                             + ", ".join(sources))
+                             + ", ".join(sources) + " (or global_friction with "
+                             + ", ".join(CROSSCHECK_OPTIONS) + " only: the catalogue "
+                             "cross-check's inputs, no loss booked)")
         if not isinstance(params, Mapping):
             raise InputError(field_name, params, "a table of parameter = value")
+        if crosscheck_only:
+            extra = sorted(set(params) - set(CROSSCHECK_OPTIONS))
+            if extra:
+                raise InputError(
+                    f"{field_name}.{extra[0]}", params[extra[0]],
+                    "no value while global_friction is not one of the scene's heat sources ("
+                    + ", ".join(sources) + "): only " + ", ".join(CROSSCHECK_OPTIONS)
+                    + ", the catalogue cross-check's inputs (nothing is booked)")
         entry = HEAT_SOURCES.entry(src)
         documented = entry.parameters
         conv: dict[str, Any] = {}
@@ -153,6 +169,25 @@ def scene_heat_source_options(scene: Scene, sources: Sequence[str]) -> dict[str,
                 raise InputError(f"{field_name}.{key}", value, f"{exc.allowed}{read}") from None
         out[src] = conv
     return out
+
+
+#: the ``global_friction`` options a scene may give without running that source: the
+#: inputs of the report's catalogue cross-check (SKF series, catalogue C0 [N])
+CROSSCHECK_OPTIONS = ("series", "static_load_rating")
+
+
+def crosscheck_options(scene: Scene) -> dict[str, Any]:
+    """The SKF model's inputs for the report's catalogue cross-check, from ``[models]
+    heat_source_options.global_friction`` (checked and in SI: ``series`` a name,
+    ``static_load_rating`` [N]); empty when the scene gives none. The same table also sets
+    the ``global_friction`` heat source when the scene runs it; without the source these
+    options book no loss (:func:`scene_heat_source_options`)."""
+    raw = scene.models.get("heat_source_options", {})
+    if not isinstance(raw, Mapping) or "global_friction" not in raw:
+        return {}
+    checked = scene_heat_source_options(scene, tuple(raw))
+    return {k: v for k, v in checked.get("global_friction", {}).items()
+            if k in CROSSCHECK_OPTIONS}
 
 
 def _rib_friction_unavailable(bearing: Any) -> str | None:
