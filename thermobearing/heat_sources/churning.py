@@ -526,7 +526,12 @@ def churning_cage(ctx: HeatContext) -> HeatResult:
     validity="paper 002 regimes; oil fraction from Parker (jets) or the bath level",
 )
 def churning_inner_ring(ctx: HeatContext) -> HeatResult:
-    """Inner-ring churning, paper 002 eq. 17 (heat to the inner ring, paper eq. 24).
+    """Inner-ring churning, paper 002 eq. 17; heat to the oil (scene default) or the inner ring.
+
+    Where the heat is booked: option ``role``, default the inner ring (paper 002 eq. 24),
+    as a scene with ``[models] churning_heat_to = "paper002"`` books it; a scene's default
+    ``churning_heat_to = "oil"`` sets ``role = "oil"`` (the oil stream carries the viscous
+    dissipation away; :meth:`thermobearing.simulation.Simulation._heat_options`).
 
     B_arc defaults to the groove arc wetted across the ball, D (raceway arc length over the
     ball diameter, an estimate), B_Li to the shoulder length (width - D)/2 on each side.
@@ -582,14 +587,16 @@ def churning_inner_ring(ctx: HeatContext) -> HeatResult:
     validity="sphere/cylinder drag plateau (1e3 < Re < 2e5 for c_d = 0.45)",
 )
 def churning_elements(ctx: HeatContext) -> HeatResult:
-    """Drag/churning of the rolling elements, paper 002 eqs. 10 and 16 (SI form).
+    """Element drag/churning, paper 002 eqs. 10, 16; heat to the oil (scene default) or elements.
 
     Options: ``form`` "paper002" (eq. 16 SI, default for balls) or "harris" (eq. 10 per
     element, default for rollers: eq. 16 is a ball formula);
     ``drag_coefficient`` c_d (0.45: sphere drag plateau, Harris & Kotzalas; rollers 1.0,
     cylinder plateau); ``oil_swirl`` s: the mixture orbits at s * cage speed (default 0).
     Per-element drag force F_j (for the solver) with heat sum F_j |u_j|, u_j = (omega_m,j -
-    s omega_c) D_m / 2. Heat to the elements (paper 002 eq. 22).
+    s omega_c) D_m / 2. Heat to option ``role``, default the elements (paper 002 eq. 22, a
+    scene's ``churning_heat_to = "paper002"``); a scene's default ``churning_heat_to =
+    "oil"`` books it on the oil.
 
     A roller skidding state carries the drag force its roller and cage equations balanced
     (extras ``solver_drag``, eq. 10 with the solver's c_d, oil fraction and density, no
