@@ -188,6 +188,21 @@ def _check_dims(**dims: float) -> None:
             raise InputError(k, v, "a value whose cube (a volume) is a finite number (SI)")
 
 
+def _check_seat(bearing, housing_length: float, shaft_diameter: float | None) -> None:
+    """Refuse a seat that cannot hold the bearing: a shaft wider than the bore d (the inner
+    ring sits on it) or a housing shorter than the ring width B (it holds the outer ring).
+    Equal within a relative 1e-9 passes (the same length read twice from unit strings)."""
+    d, B = bearing.bore, bearing.width
+    if shaft_diameter is not None and shaft_diameter > d * (1.0 + 1e-9):
+        raise InputError("shaft_diameter", shaft_diameter,
+                         f"a diameter <= the bearing bore {d:g} m ({1e3 * d:g} mm): the inner "
+                         "ring sits on the shaft (omit it to take the bore)")
+    if housing_length < B * (1.0 - 1e-9):
+        raise InputError("housing_length", housing_length,
+                         f"a length >= the bearing width {B:g} m ({1e3 * B:g} mm): the housing "
+                         "holds the outer ring over its width")
+
+
 def _cavity(bearing) -> dict[str, float]:
     """Geometry of the bearing cavity [m, m^2, m^3] between the ring lands."""
     B = bearing.width
@@ -279,6 +294,7 @@ def four_node_paper002(
     if housing_outer_diameter <= bearing.outer_diameter:
         raise InputError("housing_outer_diameter", housing_outer_diameter,
                          f"a diameter > the bearing outer diameter {bearing.outer_diameter} m")
+    _check_seat(bearing, housing_length, shaft_diameter)
     net = network if network is not None else ThermalNetwork(f"{bearing.name} four-node")
     p = prefix
     _boundaries(net, ambient_temperature, oil_inlet_temperature)
