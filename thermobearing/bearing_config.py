@@ -7,6 +7,7 @@ key; unit strings are converted with :func:`thermobearing.units.to_si`.
 
 from __future__ import annotations
 
+import math
 import tomllib
 from collections.abc import Mapping
 from dataclasses import MISSING, fields, replace
@@ -121,6 +122,78 @@ def _cage(data: Any) -> CageGeometry:
     return CageGeometry(**kwargs)
 
 
+#: angle field -> its allowed interval [deg] (the geometry's own check, in radians)
+_ANGLE_RANGES = {"contact_angle": (0.0, 90.0, "[0, 90) deg"), "rib_angle": (0.0, 45.0,
+                                                                          "[0, 45] deg")}
+
+
+def _is_bare(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
+_SI_WORDS = {"m": "metres", "rad": "radians"}
+
+
+def _bare_hint(value: Any, si_unit: str, unit: str) -> str:
+    """The hint for a bare number a unit field read in SI: what it was read as and the
+    spelling that was probably meant."""
+    return (f"; a bare number is read in {_SI_WORDS[si_unit]} ({value:g} {si_unit}): "
+            f"write \"{value:g} {unit}\" if {unit} was meant")
+
+
+def _check_bare_angles(data: Mapping[str, Any], origin: str) -> None:
+    """Refuse a bare-number angle outside its range, saying that a bare number is read in
+    radians (``contact_angle = 40`` is 40 rad) and suggesting ``"40 deg"``."""
+    for key, (low, high, allowed) in _ANGLE_RANGES.items():
+        value = data.get(key)
+        if not _is_bare(value) or not math.isfinite(value):
+            continue
+        if not low <= math.degrees(value) < high + (1e-12 if allowed.endswith("]") else 0.0):
+            raise InputError(f"{origin}.{key}", value,
+                             f"an angle in {allowed}" + _bare_hint(value, "rad", "deg"))
+
+
+def _check_given_dimensions(data: Mapping[str, Any], origin: str) -> None:
+    """Check the envelope and element dimensions a config gives against each other before
+    anything is estimated from them (an estimate built on a wrong one was refused under
+    its own name: ``ball_diameter = 12.7``, read as 12.7 m, stopped as
+    ``cage.inner_diameter = -5.645``). Bore d < outer diameter D, the element diameter
+    below the ring section (D - d) / 2 and the pitch diameter between d and D; a bare
+    number among the offending values is said to be read in metres, with the mm spelling.
+    Checked here when the config estimates (``estimate_missing``) or the value is a bare
+    number; otherwise the geometry's own checks refuse it as before.
+    """
+    given = {k: to_si(data[k], "length", field=f"{origin}.{k}")
+             for k in ("bore", "outer_diameter", "pitch_diameter", "ball_diameter",
+                       "roller_diameter") if k in data}
+
+    estimating = "estimate_missing" in data
+
+    def refuse(key: str, allowed: str) -> None:
+        value = data[key]
+        if not (estimating or _is_bare(value)):
+            return  # nothing is estimated from it: the geometry's own check names it
+        hint = _bare_hint(value, "m", "mm") if _is_bare(value) else ""
+        raise InputError(f"{origin}.{key}", value, allowed + hint)
+
+    d, D = given.get("bore"), given.get("outer_diameter")
+    if d is not None and D is not None and not d < D:
+        blame = "bore" if _is_bare(data["bore"]) and not _is_bare(data["outer_diameter"]) \
+            else "outer_diameter"
+        other = D if blame == "bore" else d
+        refuse(blame, (f"a bore below the outer diameter {1e3 * D:g} mm" if blame == "bore"
+                       else f"an outer diameter above the bore {1e3 * other:g} mm"))
+    for key in ("ball_diameter", "roller_diameter"):
+        if key in given and d is not None and D is not None and not given[key] < 0.5 * (D - d):
+            refuse(key, f"a diameter below the ring section (D - d)/2 = "
+                        f"{0.5e3 * (D - d):g} mm (bore {1e3 * d:g} mm, outer diameter "
+                        f"{1e3 * D:g} mm)")
+    dm = given.get("pitch_diameter")
+    if dm is not None and d is not None and D is not None and not d < dm < D:
+        refuse("pitch_diameter", f"a diameter between the bore {1e3 * d:g} mm and the outer "
+                                 f"diameter {1e3 * D:g} mm")
+
+
 def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Bearing:
     """Build a bearing from a config mapping (unit strings allowed); unknown keys are errors.
 
@@ -140,6 +213,8 @@ def bearing_from_dict(data: Mapping[str, Any], *, origin: str = "bearing") -> Be
         raise UnknownNameError(f"{origin}.kind", kind, BALL_KINDS + ROLLER_KINDS)
     if not str(data.get("source", "")).strip():
         raise InputError(f"{origin}.source", data.get("source"), "a non-empty source")
+    _check_bare_angles(data, origin)
+    _check_given_dimensions(data, origin)
     if "estimate_missing" in data:
         data = complete_from_catalogue(data, origin=origin)
     kw: dict[str, Any] = {}
