@@ -174,8 +174,9 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     try:
         out = _convert(float(number), unit_text or "dimensionless", target)
     except pint.errors.DimensionalityError:
-        hint = ""
-        if target in ("K", "delta_degC") and unit_text in ("C", "F"):  # coulomb, farad
+        hint = _spelling_hint(number, unit_text, target)
+        if not hint and target in ("K", "delta_degC") and unit_text in ("C", "F"):
+            # coulomb, farad
             hint = f" (degrees Celsius / Fahrenheit are deg{unit_text} or \u00b0{unit_text})"
         if not unit_text:  # a number in a text without its unit ("-1" for a pressure)
             hint = f" (a number written as text needs its unit: '{number} {target}')"
@@ -184,8 +185,8 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
         ) from None
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
             TypeError, ValueError, AssertionError):
-        raise InputError(field, value, f"a known unit convertible to {target}"
-                         f"{_case_hint(unit_text, target)}") from None
+        hint = _case_hint(unit_text, target) or _spelling_hint(number, unit_text, target)
+        raise InputError(field, value, f"a known unit convertible to {target}{hint}") from None
     if not math.isfinite(out):
         raise InputError(field, value, f"a finite quantity convertible to {target}")
     if target == "K" and out <= 0.0:
@@ -238,6 +239,37 @@ def _usual_spellings(unit_text: str) -> str:
     # the one-character degree signs (U+2103, U+2109) that keyboards and data sheets give
     unit_text = unit_text.replace("\u2103", "degC").replace("\u2109", "degF")
     return _BARE_EXPONENT.sub(r"\1**\2", unit_text)
+
+
+#: spellings of data sheets and other languages that pint does not read (or reads as
+#: something else: "deg C" is degree x coulomb, "grad" the gradian), compared in lower case
+#: without spaces and dots, "\u00b0" as "deg" -> the unit suggested; never accepted
+#: silently (a "U/min" may be meant per minute of something else), only suggested
+_SPELLINGS = {
+    **dict.fromkeys(("degc", "degreec", "degreesc", "gradc", "oc", "degcelsius",
+                     "gradcelsius", "centigrade", "degcentigrade"), "degC"),
+    **dict.fromkeys(("degf", "degreef", "degreesf", "of", "degfahrenheit"), "degF"),
+    **dict.fromkeys(("u/min", "umin", "u/mn", "tr/min", "trmin", "t/min", "obr/min",
+                     "revs/min", "rev/mn", "rpm", "min-1", "min^-1", "min**-1", "1/min",
+                     "revmin-1", "rmin-1", "umin-1"), "rpm"),
+    **dict.fromkeys(("u/s", "u/sec", "rev/sec", "revs/s", "r/sec", "tr/s", "rps"), "rps"),
+}
+
+
+def _spelling_hint(number: str, unit_text: str, target: str) -> str:
+    """`` (did you mean '40 degC'?)`` for a usual spelling pint does not read as meant
+    (:data:`_SPELLINGS`: "40 deg C", "3000 U/min"), when the suggestion converts to
+    ``target``; empty otherwise."""
+    key = (unit_text.lower().replace("\u00b0", "deg").replace("\u00ba", "deg")
+           .replace(" ", "").replace(".", ""))
+    meant = _SPELLINGS.get(key)
+    if meant is None or meant == unit_text:
+        return ""
+    try:
+        to_si(f"{number} {meant}", target)
+    except InputError:
+        return ""
+    return f" (did you mean '{number} {meant}'?)"
 
 
 def _case_hint(unit_text: str, target: str) -> str:
