@@ -28,9 +28,11 @@ __all__ = ["measured_table", "predicted_temperatures"]
 
 def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
     """The scene's measured temperatures (``time [s]`` + one degC column per sensor),
-    checked: every mapped node exists and every sensor has at least one sample. Gaps (empty
-    cells, dropout flags: NaN) are kept; the fit leaves each sensor's gaps out of its
-    residuals (a single dropout made a logger file unusable for calibration)."""
+    checked: every mapped node exists. Gaps (empty cells, dropout flags: NaN) are kept; the
+    fit leaves each sensor's gaps out of its residuals (a single dropout made a logger file
+    unusable for calibration), and a sensor whose every reading is a gap out of the fit
+    altogether, as ``thermobearing run`` leaves it out of the comparison, with the same
+    note (:func:`thermobearing.measured.measured_notes`; :attr:`_Model.notes`)."""
     from .measured import read_scene_measured
 
     if scene.measured is None:
@@ -42,14 +44,7 @@ def measured_table(scene: Scene, nodes: Sequence[str]) -> pd.DataFrame:
                              "a node of the scene's network: " + ", ".join(nodes))
     # one reader (thermobearing.measured): text cells, times going backwards, unreadable
     # times are named InputErrors there; empty cells and dropout flags come back as NaN
-    df = read_scene_measured(scene)
-    for col in scene.measured.columns:
-        vals = df[col].to_numpy(dtype=float)
-        if not np.isfinite(vals).any():
-            raise InputError(f"measured column {col!r}", f"{vals.size} gaps",
-                             "at least one reading (every row is empty or a dropout flag: "
-                             "leave the sensor out of measured.columns)")
-    return df
+    return read_scene_measured(scene)
 
 
 def _network_nodes(scene: Scene) -> list[str]:
@@ -93,6 +88,10 @@ class _Model:
                      for s in self.column_map}
         self.gaps = {s: int((self.inside & ~k).sum()) for s, k in self.keep.items()}
         self.n_points = sum(int(k.sum()) for k in self.keep.values())
+        #: what the fit left out beyond single gaps: a sensor whose every reading is a gap
+        #: (no residual, its row in the sensor table with 0 points), in the words of the
+        #: run's measured-vs-predicted notes
+        self.notes = _all_gap_notes(measured, self.column_map)
 
     def values(self, z: np.ndarray) -> list[float]:
         return [p.from_z(float(zi)) for p, zi in zip(self.params, z, strict=True)]
@@ -165,14 +164,40 @@ class _Model:
         return J
 
 
+def _all_gap_notes(measured: pd.DataFrame, column_map: Mapping[str, str]) -> list[str]:
+    """The reader's note (:func:`thermobearing.measured.measured_notes`) of each mapped
+    sensor whose every reading is a gap ("TC1: every reading (120) is a gap (120 empty
+    cells); this sensor is not compared with the model"); a file read without the
+    reader's gap counts gets a note of the same words."""
+    from .measured import measured_notes
+
+    empty = [s for s in column_map if not np.isfinite(measured[s].to_numpy(float)).any()]
+    if not empty:
+        return []
+    said = measured_notes(measured)
+    out = []
+    for sensor in empty:
+        mine = [n for n in said if n.startswith(f"{sensor}: every reading")]
+        out += mine or [f"{sensor}: every reading ({len(measured)}) is a gap; this sensor "
+                        "is not compared with the model"]
+    return out
+
+
 def _sensor_table(model: _Model, r: np.ndarray, r_initial: np.ndarray) -> pd.DataFrame:
+    """Per sensor: points and the errors after / before the fit [K]; a sensor without a
+    reading in the fit keeps its row with 0 points and no errors (NaN)."""
     rows = []
     after, before = model.split(r), model.split(r_initial)
     for sensor, node in model.column_map.items():
-        e = after[sensor]
+        e, e0 = after[sensor], before[sensor]
+        if e.size == 0:
+            rows.append({"sensor": sensor, "node": node, "points": 0,
+                         "RMSE [K]": math.nan, "max error [K]": math.nan,
+                         "mean error [K]": math.nan, "initial RMSE [K]": math.nan})
+            continue
         rows.append({"sensor": sensor, "node": node, "points": int(e.size),
                      "RMSE [K]": float(np.sqrt(np.mean(e**2))),
                      "max error [K]": float(np.max(np.abs(e))),
                      "mean error [K]": float(np.mean(e)),
-                     "initial RMSE [K]": float(np.sqrt(np.mean(before[sensor]**2)))})
+                     "initial RMSE [K]": float(np.sqrt(np.mean(e0**2)))})
     return pd.DataFrame(rows)
