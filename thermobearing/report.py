@@ -147,7 +147,13 @@ def fig_csr(kin: pd.DataFrame) -> bytes:
             key, pos, labels, xlabel = operating_axis(g)
             g = g.assign(_x=[pos[k] for k in g[key]]).sort_values("_x")
         label = name[0] if len(name) == 1 else f"{name[0]}, {name[1]:.0f} r/min"
-        ax.plot(g["_x"], g["cage speed ratio [-]"], "o-", ms=3, label=label)
+        # a step at rest has no cage speed ratio: no point, so no legend entry ("test,
+        # 0 r/min" named an empty line)
+        csr = pd.to_numeric(g["cage speed ratio [-]"], errors="coerce").to_numpy(float)
+        if per_speed and (name[1] == 0.0 or not np.isfinite(csr).any()):
+            continue
+        ax.plot(g["_x"], g["cage speed ratio [-]"], "o-", ms=3,
+                label=label if np.isfinite(csr).any() else None)
         if "theoretical cage speed ratio [-]" in g:
             # named once in the legend: the PNG file is read without the report's caption
             named = "theoretical (epicyclic) CSR" not in ax.get_legend_handles_labels()[1]

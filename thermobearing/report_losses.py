@@ -209,19 +209,32 @@ def turning_points(breakdown: pd.DataFrame) -> pd.DataFrame:
 def summary_lines(breakdown: pd.DataFrame) -> list[str]:
     """One sentence per bearing of a :func:`breakdown_by_source` table: the range of its
     total loss over the operating points (naming the points) and the largest source at the
-    point of the highest loss, with its power and share."""
+    point of the highest loss, with its power and share. Steps at rest (0 r/min, 0 W) are
+    left out of the range and named ("total loss 0 W (step 4, 0 r/min) to 400 W" said
+    nothing of the turning steps' smallest loss)."""
     sources = [c for c in breakdown.columns if c.endswith(" [W]") and c not in _NOT_SOURCES]
     groups = breakdown.groupby("bearing", sort=False) if "bearing" in breakdown else \
         [(None, breakdown)]
     lines = []
     for name, g in groups:
-        lo, hi = g.loc[g["total [W]"].idxmin()], g.loc[g["total [W]"].idxmax()]
+        # steps at rest book 0 W: the range is that of the turning steps (as the
+        # catalogue cross-check leaves them out), the steps at rest named after it
+        turning = turning_points(g)
+        span = turning if len(turning) else g
+        rest = g.drop(index=turning.index) if len(turning) else g.iloc[:0]
+        lo = span.loc[span["total [W]"].idxmin()]
+        hi = span.loc[span["total [W]"].idxmax()]
         who = f"bearing {name}: " if name is not None else ""
-        if len(g) == 1:
+        if len(span) == 1:
             text = f"{who}total loss {fmt_power(hi['total [W]'])} W ({_point(hi)})"
         else:
             text = (f"{who}total loss {fmt_power(lo['total [W]'])} W ({_point(lo)}) to "
                     f"{fmt_power(hi['total [W]'])} W ({_point(hi)})")
+        if len(rest):
+            which = (", ".join(f"{s}" for s in rest["step"]) if "step" in rest else "")
+            text += (f" over the turning steps (at rest, 0 r/min and no loss, left out: "
+                     f"step{'s' if len(rest) > 1 else ''} {which})" if which else
+                     " over the turning steps (those at rest, 0 r/min, left out)")
         if sources and hi["total [W]"] > 0:
             top = max(sources, key=lambda c: hi[c])
             text += (f"; the largest source there is {source_label(top[:-4])}, "

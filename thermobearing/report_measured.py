@@ -3,7 +3,8 @@
 - :func:`temperature_errors`: per-sensor RMSE, max |error| and mean error (predicted -
   measured: negative, the model runs cold) of the predicted node temperature at the
   measured times; a sensor that cannot be compared keeps its row with
-  the reason (no sample inside the run, a node the run does not have);
+  the reason (no sample inside the run, all readings gaps, a node the run does not
+  have);
 - :func:`comparison_table`: every compared reading beside its prediction, one row per
   sensor and measured time (``measured_vs_predicted.csv`` of a run folder);
 - :func:`comparison_notes`: what the reader left out or decided
@@ -34,6 +35,9 @@ import pandas as pd  # noqa: E402
 
 #: the errors-table note of a sensor with no finite reading inside the run
 NO_SAMPLE = "no sample inside the run"
+#: the errors-table note of a sensor whose every reading is a gap (NaN): none to compare,
+#: wherever the file's times lie (it was said as :data:`NO_SAMPLE`)
+ALL_GAPS = "all readings are gaps"
 
 #: file name of :func:`comparison_table` in a run folder
 COMPARISON_CSV = "measured_vs_predicted.csv"
@@ -55,6 +59,11 @@ def _inside(measured: pd.DataFrame, sensor: str, t0: float, t1: float) -> np.nda
     return (t >= t0) & (t <= t1) & np.isfinite(values)
 
 
+def _all_gaps(measured: pd.DataFrame, sensor: str) -> bool:
+    """Whether every reading of the sensor is a gap (no finite value in the file)."""
+    return not np.isfinite(measured[sensor].to_numpy(float)).any()
+
+
 def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
                        column_map: Mapping[str, str]) -> pd.DataFrame:
     """Per-sensor RMSE, max |error| and mean error [K] of the predicted node temperature
@@ -66,7 +75,8 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
     ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
     and one column per sensor in degC; ``column_map`` maps sensor -> node. A sensor that
     cannot be compared keeps its row, errors NaN, 0 points, and a ``note`` column says why
-    (:data:`NO_SAMPLE`, or a node the run's temperatures do not have); the column is there
+    (:data:`NO_SAMPLE`, :data:`ALL_GAPS`, or a node the run's temperatures do not have);
+    the column is there
     only when some row has a note.
     """
     rows = []
@@ -84,7 +94,7 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
             continue
         inside = _inside(measured, sensor, t0, t1)
         if not inside.any():
-            row["note"] = NO_SAMPLE
+            row["note"] = ALL_GAPS if _all_gaps(measured, sensor) else NO_SAMPLE
             rows.append(row)
             continue
         t = measured["time [s]"].to_numpy(float)[inside]
@@ -145,7 +155,8 @@ def comparison_notes(measured: pd.DataFrame, temps: pd.DataFrame,
     t = measured["time [s]"].to_numpy(float)
     overlap = t.size and not (t[-1] < t0 or t[0] > t1)
     if overlap:  # without any overlap coverage_notes said it for every sensor at once
-        notes += [f"{s}: {NO_SAMPLE} (left out of the errors)" for s in column_map
+        notes += [f"{s}: {ALL_GAPS if _all_gaps(measured, s) else NO_SAMPLE} (left out "
+                  "of the errors)" for s in column_map
                   if s in measured and not _inside(measured, s, t0, t1).any()]
     return notes
 
@@ -198,7 +209,8 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
     Measured points: each sensor in the colour of its node's line and a marker of its own
     (two sensors on the drive-end and non-drive-end housings share the colour, not the
     marker), named in the legend with its node (and, for a file logged in degF or K, the
-    unit its readings were converted from); the legend stands beside the axes. The x axis
+    unit its readings were converted from; a sensor whose every reading is a gap has no
+    point and no entry); the legend stands beside the axes. The x axis
     is the run; the y axis spans the predicted temperatures and the readings inside the
     run, leaving out readings of
     exactly a thermocouple range end (:data:`thermobearing.measured.RANGE_ENDS_C`, an open
@@ -238,6 +250,8 @@ def fig_temperatures(temps: pd.DataFrame, measured: pd.DataFrame | None = None,
             # name such as 'TC1 [°F]' on the degC axis read as if the points were in degF)
             logged = measured.attrs.get("units", {}).get(sensor, "degC")
             how = "measured" if logged == "degC" else f"measured in {logged}, shown in degC"
+            if not np.isfinite(values).any():
+                continue  # every reading a gap: no point, so no legend entry either
             ax.plot(t / 60.0, values, marker, ms=3.5, color=c, mfc="none", ls="none",
                     label=f"{sensor} ({how}, {node})")
             inside = _inside(measured, sensor, t0, t1)

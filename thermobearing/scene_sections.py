@@ -148,6 +148,27 @@ GREASE_FLOW = ("0 or no flow for a grease fill: grease stays in the bearing, no 
                "\"jet\" / \"oil_air\")")
 
 
+def check_below_runaway(name: str, raw: Any, kelvin: float) -> None:
+    """Refuse a scene temperature at or above the runaway limit
+    (:data:`thermobearing.coupled.RUNAWAY_TEMPERATURE`, 300 degC): a node heads for the
+    inlet, ambient or initial temperature and the run stops there as a thermal runaway
+    (a sweep refuses such a value with the same words,
+    :func:`thermobearing.sweep_params.parse_set`).
+
+    ``name``: the scene field; ``raw``: the value as written; ``kelvin``: it read in K.
+    A bare number is read in kelvin: the refusal gives that reading in degC too
+    (``inlet_temperature = 600`` is 600 K = 326.85 degC)."""
+    from .coupled import RUNAWAY_TEMPERATURE
+
+    if kelvin < RUNAWAY_TEMPERATURE:
+        return
+    bare = isinstance(raw, int | float) and not isinstance(raw, bool)
+    how = (f"; a bare number is read in kelvin ({raw:g} K = {kelvin - 273.15:.6g} degC)"
+           if bare else "")
+    raise InputError(name, raw, f"a temperature below the {RUNAWAY_TEMPERATURE - 273.15:g} "
+                     "degC runaway limit (a run stops as a thermal runaway there)" + how)
+
+
 @dataclass(frozen=True)
 class Supply:
     """Oil supply: method, volume flow [m^3/s], inlet temperature [K], bath level [m].
@@ -200,6 +221,8 @@ class Supply:
         if t_in <= 0:
             raise InputError("supply.inlet_temperature", data.get("inlet_temperature"),
                              "a temperature above absolute zero")
+        if "inlet_temperature" in data:  # one taken from the ambient is checked there
+            check_below_runaway("supply.inlet_temperature", data["inlet_temperature"], t_in)
         level = data.get("level")
         level_si = None if level is None else _quantity(level, "length", "supply.level")
         if level_si is not None and level_si < 0:
@@ -250,6 +273,8 @@ class Environment:
             if v <= 0:
                 raise InputError(f"environment.{name}", data.get(name, v),
                                  "a temperature above absolute zero (0 K = -273.15 degC)")
+            if name in data or name == "ambient_temperature":
+                check_below_runaway(f"environment.{name}", data.get(name, "35 degC"), v)
         return cls(ambient_temperature=amb, initial_temperature=ini,
                    initial_given="initial_temperature" in data,
                    ambient_unit=_unit_of(data.get("ambient_temperature"), "temperature",

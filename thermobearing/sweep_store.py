@@ -3,7 +3,8 @@
 Each finished case is appended to ``DIR/cases.jsonl`` the moment it completes
 (:func:`finished_cases` reads them back, so that a rerun skips them); ``DIR/summary.csv``
 is rewritten after each case; ``DIR/scene.toml`` records the base scene
-(:func:`record_base_scene`).
+(:func:`record_base_scene`); ``DIR/planned_cases.json`` the cases the sweep planned
+(:func:`record_planned_cases`).
 
 ``summary.csv``: the case id, each swept value as set (``supply.flow``: ``"15 L/min"``)
 and, for quantities, as a number with the unit in the column name
@@ -153,6 +154,36 @@ def record_base_scene(out_dir: Path, scene: Scene) -> None:
               "cases run anew; summary.csv lists this sweep's cases, cases.jsonl keeps "
               "the earlier ones)", file=sys.stderr)
     path.write_text(text, encoding="utf-8")
+
+
+#: the file of a sweep folder that records the cases its sweep planned
+PLANNED_FILE = "planned_cases.json"
+
+
+def record_planned_cases(out_dir: Path, cases: Sequence[Case]) -> None:
+    """Write the cases a sweep plans to ``out_dir/planned_cases.json`` (their ids and swept
+    values, in order): the report of an interrupted sweep then says how many of them
+    finished ("1 of 9 planned cases finished"), and a folder whose sweep stopped before its
+    first case is known as a sweep folder. A sweep of another plan in the same folder
+    replaces the record, as it does ``summary.csv``."""
+    doc = {"planned": len(cases),
+           "cases": [{"case": c.case_id, "params": dict(c.assignments)} for c in cases]}
+    (out_dir / PLANNED_FILE).write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
+
+
+def planned_cases(out_dir: Path) -> list[str] | None:
+    """The case ids a sweep folder's sweep planned (:func:`record_planned_cases`); None
+    for a folder without the record (written before it existed, or not a sweep's) or
+    with one that does not read as such."""
+    path = Path(out_dir) / PLANNED_FILE
+    if not path.is_file():
+        return None
+    try:
+        doc = json.loads(path.read_text(encoding="utf-8"))
+        ids = [str(c["case"]) for c in doc["cases"]]
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError):
+        return None
+    return ids
 
 
 def _write_summary(out_dir: Path, cases: Sequence[Case],

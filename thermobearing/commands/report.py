@@ -89,7 +89,7 @@ def sweep_report(folder: Path) -> Path:
     from ..report_losses import fig_sweep_breakdown, readable, source_label, summary_sources
     from ..report_sections import html_table
     from ..simulation_summary import MEAN_TOTAL_LOSS, current_result_name
-    from ..sweep_store import base_scene_mode
+    from ..sweep_store import base_scene_mode, planned_cases
 
     df = _read_table(folder / "summary.csv", ("case",))
     # a folder written before the summary's rename (total loss [W], rise <node> [K])
@@ -129,6 +129,7 @@ def sweep_report(folder: Path) -> Path:
     # oil outlet (the first bearing's oil node), which a flow or inlet what-if is about
     curves = temps[:2] + [c for c in results if c.startswith("final")
                           and c.endswith(".oil [degC]")][:1]
+    curves += film_curves(df, results)
     for x in pcols:
         if df[x].nunique() < 2:
             continue  # a parameter held at one value draws no curve
@@ -174,9 +175,11 @@ def sweep_report(folder: Path) -> Path:
             ".note{color:#555;font-size:12px}</style></head><body>",
             f"<h1>Sweep report: {escape(folder.name)}</h1>",
             _base_scene_html(folder),
-            f"<p>{len(df)} cases; swept: {escape(', '.join(params))}. Losses in W: each "
-            "case's loss of all its bearings, averaged over its protocol (steps weighted by "
-            "their duration); <code>mean total loss &lt;bearing&gt; [W]</code> per bearing.</p>",
+            f"<p>{escape(case_count_text(df, planned_cases(folder)))}; swept: "
+            f"{escape(', '.join(params))}. Losses in W: each case's loss of all its "
+            "bearings, averaged over its protocol (steps weighted by their duration)"
+            + ("; <code>mean total loss &lt;bearing&gt; [W]</code> per bearing"
+               if per_bearing_totals(df.columns) else "") + ".</p>",
             *(f"<p>{escape(n)}</p>" for n in notes),
             "<h2>Figures</h2>",
             "<p class='note'>each figure is also in the folder as a PNG file: "
@@ -190,6 +193,57 @@ def sweep_report(folder: Path) -> Path:
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
     _write_sweep_pngs(folder, figs)
+    return out
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
+
+
+def case_count_text(df: pd.DataFrame, planned: list[str] | None) -> str:
+    """The sweep report's count of its cases: ``"9 cases"`` (``"1 case"``); with the
+    folder's record of the planned cases (:func:`thermobearing.sweep_store.planned_cases`)
+    and some of them not finished, ``"1 of 9 planned cases finished"`` and why the others
+    are missing (an interrupted sweep said "1 cases" and nothing of the 8 not run). A
+    folder without the record (written before it existed) is counted as before."""
+    rows = len(df)
+    if planned is None:
+        return _plural(rows, "case")
+    ids = set(planned)
+    finished = int(df["case"].astype(str).isin(ids).sum()) if rows else 0
+    if finished >= len(ids):
+        text = f"{_plural(finished, 'case')} (every planned case finished)"
+    else:
+        text = (f"{finished} of {_plural(len(ids), 'planned case')} finished (the sweep "
+                "was stopped before the others ran, or they failed under --keep-going; "
+                "rerunning the same `thermobearing sweep` command runs them)")
+    other = rows - finished
+    if other > 0:
+        text += (f"; the summary also has {_plural(other, 'case')} of an earlier sweep "
+                 "in this folder")
+    return text
+
+
+def per_bearing_totals(columns: Any) -> list[str]:
+    """The summary's per-bearing totals (``mean total loss <bearing> [W]``, written for a
+    scene of more than one bearing), beside the all-bearing ``mean total loss [W]``."""
+    from ..simulation_summary import MEAN_TOTAL_LOSS
+
+    return [c for c in columns if str(c).startswith("mean total loss ")
+            and str(c).endswith(" [W]") and c != MEAN_TOTAL_LOSS]
+
+
+def film_curves(df: pd.DataFrame, results: list[str]) -> list[str]:
+    """The what-if curves of the film: the first bearing's rolling-element temperature
+    (``final <bearing>.rollers`` / ``.balls [degC]``) and the smallest film parameter
+    Lambda (``min film parameter [-]``), when the summary has them with a number: with
+    the housing and oil temperatures, a hotter inlet shows as a thinner film."""
+    elements = [c for c in results if c.startswith("final")
+                and c.endswith((".rollers [degC]", ".balls [degC]"))][:1]
+    out = []
+    for c in [*elements, "min film parameter [-]"]:
+        if c in df and pd.to_numeric(df[c], errors="coerce").notna().any():
+            out.append(c)
     return out
 
 
@@ -277,10 +331,12 @@ def flagged_cases(df: pd.DataFrame, pcols: list[str], *, bearings: int = 1) -> l
             counts = pd.to_numeric(hit[col], errors="coerce")
             named = (f"every case, {_fmt(counts.min())} to {_fmt(counts.max())} steps each"
                      if counts.min() != counts.max() else
-                     f"every case, {_fmt(counts.min())} steps each") + per
+                     f"every case, {_fmt(counts.min())} "
+                     f"{'step' if counts.min() == 1 else 'steps'} each") + per
         elif len(hit) > 6:
             named = "; ".join(named.split("; ")[:6]) + f" and {len(hit) - 6} more"
-        notes.append(f"{len(hit)} of {len(df)} cases have steps with {what} (summary "
+        has = "has steps" if len(hit) == 1 else "have steps"
+        notes.append(f"{len(hit)} of {_plural(len(df), 'case')} {has} with {what} (summary "
                      f"column '{col}'; limits from the scene's [checks], else the defaults): "
                      f"{named}")
     return notes
@@ -419,6 +475,12 @@ def run_report(folder: Path) -> Path:
     return write_report(results, scene, folder / "report.html")
 
 
+def _planned(folder: Path) -> list[str] | None:
+    from ..sweep_store import planned_cases
+
+    return planned_cases(folder)
+
+
 def run(args: argparse.Namespace) -> int:
     folder = Path(args.folder)
     if not folder.is_dir():
@@ -428,6 +490,14 @@ def run(args: argparse.Namespace) -> int:
                          "writes results/<scene file name>)")
     if (folder / "summary.csv").is_file() and (folder / "cases.jsonl").is_file():
         out = sweep_report(folder)
+    elif (planned := _planned(folder)) is not None:
+        # a sweep stopped before its first case finished: its scene.toml is the base
+        # scene, not a run's (the run report stopped on the missing run tables)
+        print(f"report: {folder} is a sweep folder whose sweep stopped before its first "
+              f"case finished (0 of {_plural(len(planned), 'planned case')} finished): "
+              "no result to report; rerun the same `thermobearing sweep` command to run "
+              "the cases", file=sys.stderr)
+        return 1
     elif (folder / "scene.toml").is_file():
         out = run_report(folder)
     else:

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from ..errors import InputError
 from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
 from ._preflight import check_inputs_not_replaced, load_scene_argument
@@ -52,7 +53,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 #: the files a sweep and its report write in the sweep folder (and ``sweep_*.png``)
-SWEEP_OUTPUTS = {"scene.toml", "summary.csv", "cases.jsonl", "report.html"}
+SWEEP_OUTPUTS = {"scene.toml", "summary.csv", "cases.jsonl", "report.html",
+                 "planned_cases.json"}
 
 
 def run(args: argparse.Namespace) -> int:
@@ -71,7 +73,8 @@ def run(args: argparse.Namespace) -> int:
                   file=sys.stderr)
     out = Path(args.out)
     check_inputs_not_replaced(out, scene, args.scene, SWEEP_OUTPUTS, prefix="sweep_",
-                              marker="cases.jsonl")
+                              marker="cases.jsonl" if (out / "cases.jsonl").is_file()
+                              else "planned_cases.json")
     # what summarize_scene reduces to columns: losses (also behind "report"), kinematics,
     # temperatures (also behind "energy") and a film-only scene's smallest films
     tabulated = {"losses", "kinematics", "temperatures", "energy", "report", "film"}
@@ -88,15 +91,14 @@ def run(args: argparse.Namespace) -> int:
                        progress=False if args.quiet else None,
                        keep_going=args.keep_going)
     except KeyboardInterrupt:
-        done = len(finished_cases(out))
-        if done:
-            print(f"\ninterrupted: {done} finished case(s) are kept in "
-                  f"{out / 'cases.jsonl'} (table: {out / 'summary.csv'}); rerun the same "
-                  "command to resume with the cases not yet run", file=sys.stderr)
-        else:
-            print("\ninterrupted before the first case finished: nothing was kept; rerun "
-                  "the same command to start again", file=sys.stderr)
+        planned = record_plan(out, scene, params)
+        print("\n" + interrupt_message(out, len(finished_cases(out)), planned),
+              file=sys.stderr)
         return 130
+    except BaseException:
+        record_plan(out, scene, params)
+        raise
+    record_plan(out, scene, params)
     shown, hidden = terminal_columns(df, [p.path for p in params])
     print(df[shown].to_string(index=False, float_format=lambda v: f"{v:.4g}"))
     more = f" ({hidden} more result columns there)" if hidden else ""
@@ -116,6 +118,46 @@ def run(args: argparse.Namespace) -> int:
                           or any(c.startswith(p + " [") for p in swept) for c in df.columns):
         print(f"note: the cases gave no results to tabulate: {empty_note}", file=sys.stderr)
     return 1 if failures else 0
+
+
+def record_plan(out: Path, scene, params) -> int | None:
+    """Record the cases this sweep planned in ``out`` (:func:`thermobearing.sweep_store.
+    record_planned_cases`) once the sweep has started there, i.e. the folder's
+    ``scene.toml`` is this sweep's base scene (a sweep refused before its start leaves the
+    folder as it was); returns how many cases it planned, None when it did not start.
+
+    Written when the sweep ends, finished, failed or interrupted, with the case ids of the
+    store (a case finished earlier in other units keeps its id)."""
+    from ..scene import with_absolute_paths
+    from ..sweep_cases import expand, match_finished
+    from ..sweep_store import record_planned_cases
+
+    path = out / "scene.toml"
+    try:
+        if not path.is_file() or path.read_text(encoding="utf-8") != \
+                with_absolute_paths(scene).to_toml():
+            return None
+        cases = match_finished(scene, expand(scene, params), finished_cases(out))
+        record_planned_cases(out, cases)
+    except (OSError, UnicodeDecodeError, InputError):
+        return None  # not this sweep's folder any more, or values it refused
+    return len(cases)
+
+
+def interrupt_message(out: Path, done: int, planned: int | None) -> str:
+    """What an interrupted sweep prints: how many cases finished (of how many planned)
+    and what the folder keeps."""
+    of = f" of {planned} planned" if planned is not None else ""
+    if done:
+        return (f"interrupted: {done} finished case(s){of} are kept in "
+                f"{out / 'cases.jsonl'} (table: {out / 'summary.csv'}); rerun the same "
+                "command to resume with the cases not yet run")
+    if planned is not None:
+        return (f"interrupted before the first case finished: 0 of {planned} planned cases "
+                f"finished; {out} keeps the base scene (scene.toml) and the planned cases "
+                "(planned_cases.json), no result; rerun the same command to start again")
+    return ("interrupted before the first case finished: nothing was kept; rerun the same "
+            "command to start again")
 
 
 #: the run checks' counts of the summary and what each flags
