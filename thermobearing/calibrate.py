@@ -202,7 +202,7 @@ def calibrate(scene: Scene, fit: Sequence[str], *, bounds: Mapping[str, Sequence
     if m < len(params) + 1:
         raise InputError("measured", f"{m} points inside the protocol",
                          f"at least {len(params) + 1} points to fit {len(params)} parameters")
-    notes = []
+    notes = list(model.notes)  # the run's notes, e.g. a sensor whose readings are all gaps
     if model.dropped:
         notes.append(f"{model.dropped} measured times outside the simulated protocol "
                      f"(0 .. {scene.schedule.duration:g} s) were not used")

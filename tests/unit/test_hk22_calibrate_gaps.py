@@ -63,6 +63,9 @@ def test_calibrate_leaves_the_all_gap_sensor_out(tmp_path, dead_data):
     assert rows.loc["TC_NDE", "points"] == 0 and np.isnan(rows.loc["TC_NDE", "RMSE [K]"])
     assert rows.loc["TC_DE", "points"] == 7 and res.points == 7
     assert any("TC_NDE 7" in n and "left out" in n for n in res.notes)
+    # the run's own sentence reaches the calibration's notes too
+    assert any("every reading" in n and "not compared with the model" in n
+               for n in res.notes)
     (tmp_path / "alone").mkdir()
     alone = calibrate(_scene(tmp_path / "alone", dead_data.drop(columns=["TC_NDE"]),
                              {"TC_DE": "drive_end.housing"}), FIT)
