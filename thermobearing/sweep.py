@@ -56,6 +56,7 @@ from .sweep_store import (
     _write_summary,
     finished_cases,
     record_base_scene,
+    record_planned_cases,
     summary_frame,
 )
 
@@ -431,6 +432,7 @@ def run_sweep(
               f"{_store_path(out)}; {len(todo)} to run", file=sys.stderr)
     out.mkdir(parents=True, exist_ok=True)
     record_base_scene(out, scene)
+    record_planned_cases(out, cases)  # before any case runs: a killed sweep keeps its plan
     show = sys.stderr.isatty() if progress is None else progress
     bar: Any = (tqdm(total=len(cases), initial=len(cases) - len(todo), disable=not show,
                      desc="sweep", unit="case")

@@ -76,8 +76,8 @@ def test_a_one_case_one_bearing_sweep_report_speaks_in_the_singular(scene, tmp_p
     html = sweep_report(out).read_text(encoding="utf-8")
     # before: "1 cases; swept: supply.flow ... <code>mean total loss <bearing> [W]</code>
     # per bearing." on a summary without such a column
-    # run_sweep called directly records no plan (the command does): counted as before
-    assert "<p>1 case; swept: supply.flow." in html
+    # run_sweep records its plan too: one planned case, every one finished
+    assert "<p>1 case (every planned case finished); swept: supply.flow." in html
     assert "1 cases" not in html and "per bearing" not in html
     assert per_bearing_totals(["mean total loss [W]", "case"]) == []
     assert per_bearing_totals(["mean total loss [W]", "mean total loss de [W]"]) == [
@@ -289,3 +289,21 @@ def test_the_whatif_figures_show_the_film_parameter(scene, tmp_path, monkeypatch
     elements = summary.assign(**{"final de.balls [degC]": [50.0, 60.0]})
     assert film_curves(elements, list(elements.columns)) == [
         "final de.balls [degC]", "min film parameter [-]"]
+
+
+def test_run_sweep_records_its_plan_before_the_first_case(scene, tmp_path):
+    """run_sweep (Python, no command line) writes planned_cases.json before any case runs,
+    so a sweep killed in its first case still leaves its plan (was: only the sweep command
+    wrote it, at the sweep's end)."""
+    out = tmp_path / "plan"
+    seen: list[bool] = []
+
+    def first_case_looks(text):
+        seen.append((out / PLANNED_FILE).exists())
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(scene, [parse_set("supply.flow=15,20", scene)], out_dir=out,
+                  runner=first_case_looks, workers=1, progress=False)
+    assert seen == [True]
+    assert planned_cases(out) is not None and len(planned_cases(out)) == 2
