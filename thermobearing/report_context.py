@@ -20,6 +20,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import InputError
+from .simulation_chain import crosscheck_options
 from .units import from_si
 
 #: the run's total as the frictional moment of the catalogues, M = P / omega [N mm]
@@ -219,6 +220,7 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
         speed=("speed [rpm]", "first"), radial=("radial load [kN]", "first"),
         axial=("axial load [kN]", "first"), T=("_T", "first"), total=("power [W]", "sum"))
     level = scene.supply.level
+    cross = crosscheck_options(scene)  # SKF series / C0 named by the scene
     rows, notes = [], []
     refused: set[tuple[str, str]] = set()
     at_rest: list[Any] = []
@@ -237,7 +239,8 @@ def catalogue_crosscheck(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], 
         for model in CATALOGUE_MODELS:
             if b is None or (name, model) in refused:
                 continue
-            opts = {"oil_level": level} if (model == "skf_four_term" and level) else {}
+            opts = ({**cross, **({"oil_level": level} if level else {})}
+                    if model == "skf_four_term" else {})
             try:
                 res = global_friction(model, b, lubricant, float(p["T"]),
                                       float(p["speed"]) * 2.0 * math.pi / 60.0,
@@ -337,6 +340,7 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
             cache[key] = (bearings, load_scene_lubricant(scene))
         bearings, lubricant = cache[key]
         level = scene.supply.level
+        cross = crosscheck_options(scene)
         sums = {m: 0.0 for m in CATALOGUE_MODELS}
         ok = {m: True for m in CATALOGUE_MODELS}
         duration = 0.0
@@ -350,8 +354,8 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
                     if b is None or (spec.name, model) in refused:
                         ok[model] = False
                         continue
-                    opts = {"oil_level": level} if (model == "skf_four_term" and level) \
-                        else {}
+                    opts = ({**cross, **({"oil_level": level} if level else {})}
+                            if model == "skf_four_term" else {})
                     try:
                         res = global_friction(model, b, lubricant, oil[spec.name],
                                               step.speed,

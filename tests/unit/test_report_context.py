@@ -138,3 +138,31 @@ def test_breakdown_matches_the_heat_the_network_received():
     assert network_heat_check(short, energy)["difference [%]"].iloc[0] == pytest.approx(
         100.0 / 3.0)
     assert network_heat_check(losses, pd.DataFrame()) is None
+
+
+def test_crosscheck_takes_the_series_the_scene_names_without_running_the_source():
+    """A designation without a readable SKF series (CRB_50x75x16) gets the SKF column when
+    the scene names the series under [models] heat_source_options.global_friction, with
+    global_friction not among the heat sources (it was refused there until the option
+    became a cross-check input; then the report did not read it)."""
+    only_crb = (_SCENE.replace('[[bearings]]\nname = "de"\npreset = "QJ1044"\n', "")
+                .replace("[outputs]", "[models]\nheat_source_options = { global_friction = "
+                         '{ series = "10" } }\n[outputs]'))
+    scene = loads_scene(only_crb)
+    bearings, _ = load_scene_bearings(scene)
+    lub = load_scene_lubricant(scene)
+    losses = _losses()
+    losses = losses[losses["bearing"] == "crb"]
+    table, notes = catalogue_crosscheck(losses, {}, scene, bearings, lub)
+    row = table[table["step"] == 0].iloc[0]
+    skf = global_friction("skf_four_term", bearings["crb"], lub, row["oil [degC]"] + 273.15,
+                          1800.0 * 2 * math.pi / 60, 1e3, 10e3, lubrication="jet",
+                          series="10")
+    assert row["SKF four-term [W]"] == pytest.approx(skf.power)
+    assert not [n for n in notes if n.startswith("skf_four_term for bearing crb")]
+    # without the option the series is refused, as before
+    table0, notes0 = catalogue_crosscheck(losses, {}, loads_scene(
+        _SCENE.replace('[[bearings]]\nname = "de"\npreset = "QJ1044"\n', "")), bearings, lub)
+    col = "SKF four-term [W]"
+    assert col not in table0 or table0[col].isna().all()
+    assert [n for n in notes0 if n.startswith("skf_four_term for bearing crb")]
