@@ -89,7 +89,7 @@ class Whirl:
         check_positive("whirl.periods", self.periods)
         if int(round(self.n_samples * self.periods)) < 1:
             raise InputError("whirl.periods", self.periods,
-                             f"at least one sample: periods >= {0.5 / self.n_samples:.6g} "
+                             f"at least one sample: periods > {0.5 / self.n_samples:.6g} "
                              f"with n_samples = {self.n_samples} (the solve runs "
                              f"round(n_samples * periods) samples)")
 
