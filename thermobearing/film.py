@@ -57,12 +57,22 @@ _LINE_PARAMS = {
 #: itself was not available): U 1e-12..1e-10, W 3.7e-7..7.4e-6, G 2000..8000.
 HD1977_RANGE = {"k": (1.0, 8.0), "U": (1e-12, 1e-10), "W": (0.3686e-6, 7.371e-6),
                 "G": (2000.0, 8000.0)}
+#: the registry's validity text of both Hamrock-Dowson (1977) formulas
+_HD1977_VALIDITY = ("1 <= k <= 8, 1e-12 <= U <= 1e-10, 3.7e-7 <= W <= 7.4e-6, 2000 <= G <= 8000 "
+                    "(isothermal, fully flooded, Newtonian)")
 #: Pan & Hamrock (1989) line-contact ranges: approximate bounds of their numerical solutions
 #: (recalled, not checked against the paper).
 PH1989_RANGE = {"U": (1e-12, 1e-9), "W": (0.5e-5, 0.5e-3), "G": (1000.0, 8000.0)}
+#: Dowson & Higginson (1966) line-contact ranges as fitted by the authors for steel rollers
+#: (W' about 1e-5..1e-4, U about 1e-12..1e-10, G 2500..5000).
+DH1966_RANGE = {"U": (1e-12, 1e-10), "W": (1e-5, 1e-4), "G": (2500.0, 5000.0)}
 
 
-def _warn_range(model: str, **groups: tuple[Any, tuple[float, float]]) -> None:
+def _warn_range(model: str, stacklevel: int = 3,
+                **groups: tuple[Any, tuple[float, float]]) -> None:
+    """ValidityWarning naming ``model`` for every group (value, (low, high)) outside its fitted
+    range (zero U / W are handled, not extrapolated, and not counted). ``stacklevel`` 3 points
+    the warning at the caller of the film function that calls this one directly."""
     out = []
     for name, (value, (lo, hi)) in groups.items():
         v = np.asarray(value, dtype=float).ravel()
@@ -71,7 +81,7 @@ def _warn_range(model: str, **groups: tuple[Any, tuple[float, float]]) -> None:
         if v.size and (np.min(v) < lo * (1 - 1e-9) or np.max(v) > hi * (1 + 1e-9)):
             out.append(f"{name} in [{np.min(v):.3g}, {np.max(v):.3g}] outside [{lo:.3g}, {hi:.3g}]")
     if out:
-        warnings.warn(f"{model}: " + "; ".join(out), ValidityWarning, stacklevel=3)
+        warnings.warn(f"{model}: " + "; ".join(out), ValidityWarning, stacklevel=stacklevel)
 
 
 def _common(entrainment_speed: Any, dynamic_viscosity: Any, pressure_viscosity_coefficient: Any,
@@ -110,6 +120,23 @@ def _k(reduced_radius_x: Any, reduced_radius_y: Any, ellipticity: Any) -> np.nda
     return np.asarray(hamrock_dowson_ellipticity(reduced_radius_x, reduced_radius_y))
 
 
+def _point_groups(model: str, entrainment_speed: Any, dynamic_viscosity: Any,
+                  pressure_viscosity_coefficient: Any, load: Any, reduced_radius_x: Any,
+                  reduced_radius_y: Any, ellipticity: Any, effective_modulus: Any
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Checked groups (U, G, W, R_x [m], k) of a point contact for a Hamrock-Dowson (1977)
+    formula: U = eta_0 u / (E' R_x), G = alpha E', W = w / (E' R_x^2) (Hamrock et al. 2004),
+    k given or 1.03 (R_y/R_x)^0.64; warns (named ``model``) outside :data:`HD1977_RANGE`."""
+    big_u, big_g, w, rx, ep = _common(entrainment_speed, dynamic_viscosity,
+                                      pressure_viscosity_coefficient, load, reduced_radius_x,
+                                      effective_modulus)
+    k = _k(reduced_radius_x, reduced_radius_y, ellipticity)
+    big_w = w / (ep * rx**2)
+    _warn_range(model, stacklevel=4, k=(k, HD1977_RANGE["k"]), U=(big_u, HD1977_RANGE["U"]),
+                W=(big_w, HD1977_RANGE["W"]), G=(big_g, HD1977_RANGE["G"]))
+    return big_u, big_g, big_w, rx, k
+
+
 def _finish(h: np.ndarray, big_u: np.ndarray, big_w: np.ndarray) -> Any:
     """Zero load -> +inf (the power laws diverge as W -> 0: no EHL conjunction to size);
     zero entrainment speed -> 0. Never NaN."""
@@ -120,8 +147,7 @@ def _finish(h: np.ndarray, big_u: np.ndarray, big_w: np.ndarray) -> Any:
 @FILM.register(
     "hamrock_dowson_1977_central", references=["hamrock_dowson1977"],
     parameters=_POINT_PARAMS,
-    validity="1 <= k <= 8, 1e-12 <= U <= 1e-10, 3.7e-7 <= W <= 7.4e-6, 2000 <= G <= 8000 "
-             "(isothermal, fully flooded, Newtonian)")
+    validity=_HD1977_VALIDITY)
 def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
                                 pressure_viscosity_coefficient: Any, load: Any,
                                 reduced_radius_x: Any, reduced_radius_y: Any = None, *,
@@ -143,14 +169,10 @@ def hamrock_dowson_1977_central(entrainment_speed: Any, dynamic_viscosity: Any,
     Reference: Hamrock & Dowson, ASME J. Lubr. Technol. 99 (1977) 264-276 (Part III), eq. for
     H_c; fitted for 1 <= k <= 8 and the U, W, G ranges in :data:`HD1977_RANGE`.
     """
-    big_u, big_g, w, rx, ep = _common(entrainment_speed, dynamic_viscosity,
-                                      pressure_viscosity_coefficient, load, reduced_radius_x,
-                                      effective_modulus)
-    k = _k(reduced_radius_x, reduced_radius_y, ellipticity)
-    big_w = w / (ep * rx**2)
-    _warn_range("hamrock_dowson_1977_central", k=(k, HD1977_RANGE["k"]),
-                U=(big_u, HD1977_RANGE["U"]), W=(big_w, HD1977_RANGE["W"]),
-                G=(big_g, HD1977_RANGE["G"]))
+    big_u, big_g, big_w, rx, k = _point_groups(
+        "hamrock_dowson_1977_central", entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, reduced_radius_x, reduced_radius_y, ellipticity,
+        effective_modulus)
     return _hd1977_central_core(big_u, big_g, big_w, rx, k)
 
 
@@ -208,8 +230,7 @@ def _hd1977_central_nb(entrainment_speed: float, dynamic_viscosity: float,
 @FILM.register(
     "hamrock_dowson_1977_minimum", references=["hamrock_dowson1977"],
     parameters=_POINT_PARAMS,
-    validity="1 <= k <= 8, 1e-12 <= U <= 1e-10, 3.7e-7 <= W <= 7.4e-6, 2000 <= G <= 8000 "
-             "(isothermal, fully flooded, Newtonian)")
+    validity=_HD1977_VALIDITY)
 def hamrock_dowson_1977_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
                                 pressure_viscosity_coefficient: Any, load: Any,
                                 reduced_radius_x: Any, reduced_radius_y: Any = None, *,
@@ -221,28 +242,31 @@ def hamrock_dowson_1977_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
     Parameters as :func:`hamrock_dowson_1977_central`. Reference: Hamrock & Dowson (1977)
     Part III, eq. for H_min; same fitted range.
     """
-    big_u, big_g, w, rx, ep = _common(entrainment_speed, dynamic_viscosity,
-                                      pressure_viscosity_coefficient, load, reduced_radius_x,
-                                      effective_modulus)
-    k = _k(reduced_radius_x, reduced_radius_y, ellipticity)
-    big_w = w / (ep * rx**2)
-    _warn_range("hamrock_dowson_1977_minimum", k=(k, HD1977_RANGE["k"]),
-                U=(big_u, HD1977_RANGE["U"]), W=(big_w, HD1977_RANGE["W"]),
-                G=(big_g, HD1977_RANGE["G"]))
+    big_u, big_g, big_w, rx, k = _point_groups(
+        "hamrock_dowson_1977_minimum", entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, reduced_radius_x, reduced_radius_y, ellipticity,
+        effective_modulus)
     h = rx * 3.63 * big_u**0.68 * big_g**0.49 * np.where(big_w > 0, big_w, 1.0) ** -0.073 * (
         1.0 - np.exp(-0.68 * k))
     return _finish(h, big_u, big_w)
 
 
-def _line_groups(entrainment_speed: Any, dynamic_viscosity: Any,
+def _line_groups(model: str, ranges: dict[str, tuple[float, float]] | None,
+                 entrainment_speed: Any, dynamic_viscosity: Any,
                  pressure_viscosity_coefficient: Any, load: Any, length: Any,
                  reduced_radius_x: Any, effective_modulus: Any
                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Checked groups (U, G, W', R_x [m]) of a line contact: U = eta_0 u / (E' R_x),
+    G = alpha E', W' = w / (l E' R_x) (Hamrock et al. 2004, ch. 21); warns (named ``model``)
+    where U, W' or G leave ``ranges`` (None: a formula without a fitted range)."""
     big_u, big_g, w, rx, ep = _common(entrainment_speed, dynamic_viscosity,
                                       pressure_viscosity_coefficient, load, reduced_radius_x,
                                       effective_modulus)
     check_positive("length", length)
     big_w = w / (np.asarray(length, dtype=float) * ep * rx)
+    if ranges is not None:
+        _warn_range(model, stacklevel=4, U=(big_u, ranges["U"]), W=(big_w, ranges["W"]),
+                    G=(big_g, ranges["G"]))
     return big_u, big_g, big_w, rx
 
 
@@ -264,11 +288,9 @@ def dowson_higginson_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
     Reference: Dowson & Higginson, Elasto-Hydrodynamic Lubrication (SI ed., Pergamon 1977);
     Hamrock et al. 2004 ch. 21. Range: as fitted by the authors for steel rollers (see registry).
     """
-    big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
-                                           pressure_viscosity_coefficient, load, length,
-                                           reduced_radius_x, effective_modulus)
-    _warn_range("dowson_higginson_minimum", U=(big_u, (1e-12, 1e-10)),
-                W=(big_w, (1e-5, 1e-4)), G=(big_g, (2500.0, 5000.0)))
+    big_u, big_g, big_w, rx = _line_groups(
+        "dowson_higginson_minimum", DH1966_RANGE, entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, length, reduced_radius_x, effective_modulus)
     h = rx * 2.65 * big_u**0.70 * big_g**0.54 * np.where(big_w > 0, big_w, 1.0) ** -0.13
     return _finish(h, big_u, big_w)
 
@@ -287,11 +309,9 @@ def pan_hamrock_minimum(entrainment_speed: Any, dynamic_viscosity: Any,
     Parameters as :func:`dowson_higginson_minimum`. Reference: Pan & Hamrock, ASME J. Tribol.
     111 (1989) 246-251; Hamrock et al. 2004 ch. 21.
     """
-    big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
-                                           pressure_viscosity_coefficient, load, length,
-                                           reduced_radius_x, effective_modulus)
-    _warn_range("pan_hamrock_minimum", U=(big_u, PH1989_RANGE["U"]),
-                W=(big_w, PH1989_RANGE["W"]), G=(big_g, PH1989_RANGE["G"]))
+    big_u, big_g, big_w, rx = _line_groups(
+        "pan_hamrock_minimum", PH1989_RANGE, entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, length, reduced_radius_x, effective_modulus)
     h = rx * 1.714 * np.where(big_w > 0, big_w, 1.0) ** -0.128 * big_u**0.694 * big_g**0.568
     return _finish(h, big_u, big_w)
 
@@ -308,11 +328,9 @@ def pan_hamrock_central(entrainment_speed: Any, dynamic_viscosity: Any,
 
     Parameters as :func:`dowson_higginson_minimum`. Reference: Pan & Hamrock (1989).
     """
-    big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
-                                           pressure_viscosity_coefficient, load, length,
-                                           reduced_radius_x, effective_modulus)
-    _warn_range("pan_hamrock_central", U=(big_u, PH1989_RANGE["U"]),
-                W=(big_w, PH1989_RANGE["W"]), G=(big_g, PH1989_RANGE["G"]))
+    big_u, big_g, big_w, rx = _line_groups(
+        "pan_hamrock_central", PH1989_RANGE, entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, length, reduced_radius_x, effective_modulus)
     h = rx * 2.922 * np.where(big_w > 0, big_w, 1.0) ** -0.166 * big_u**0.692 * big_g**0.470
     return _finish(h, big_u, big_w)
 
@@ -345,9 +363,9 @@ def moes_line_central(entrainment_speed: Any, dynamic_viscosity: Any,
     (:mod:`thermobearing.ehl`, an independent code path) lands within 0.3-6.8 % of it for
     M = 10-300, L = 2-20 (validation case ``ehl_moes_line``).
     """
-    big_u, big_g, big_w, rx = _line_groups(entrainment_speed, dynamic_viscosity,
-                                           pressure_viscosity_coefficient, load, length,
-                                           reduced_radius_x, effective_modulus)
+    big_u, big_g, big_w, rx = _line_groups(
+        "moes_line_central", None, entrainment_speed, dynamic_viscosity,
+        pressure_viscosity_coefficient, load, length, reduced_radius_x, effective_modulus)
     w_safe = np.where(big_w > 0, big_w, 1.0)
     two_u = np.where(big_u > 0, 2.0 * big_u, 1.0)
     m = w_safe * two_u**-0.5
@@ -397,6 +415,17 @@ def thermal_loading(entrainment_speed: Any, dynamic_viscosity: Any,
             / np.asarray(thermal_conductivity, dtype=float))[()]
 
 
+def _inlet_groups(entrainment_speed: Any, dynamic_viscosity: Any,
+                  temperature_viscosity_coefficient: Any, thermal_conductivity: Any,
+                  slide_to_roll: Any) -> tuple[np.ndarray, np.ndarray]:
+    """Checked (L, S) of an inlet shear-heating correction: the thermal loading number
+    L = beta eta_0 u^2 / k_f (:func:`thermal_loading`) and |slide-to-roll ratio| S [-]."""
+    big_l = np.asarray(thermal_loading(entrainment_speed, dynamic_viscosity,
+                                       temperature_viscosity_coefficient, thermal_conductivity))
+    check_finite("slide_to_roll", slide_to_roll)
+    return big_l, np.abs(np.asarray(slide_to_roll, dtype=float))
+
+
 @THERMAL_FILM.register(
     "none", references=["hamrock2004"], parameters={},
     validity="isothermal inlet (low speed, low viscosity-temperature sensitivity)")
@@ -422,10 +451,9 @@ def wilson_sheu_1983(entrainment_speed: Any, dynamic_viscosity: Any,
     the secondary literature (Harris & Kotzalas 2007 vol. 2); the original note (Trans. ASME
     J. Lubr. Technol. 105 (1983) 187-188) was not available to re-check them.
     """
-    big_l = np.asarray(thermal_loading(entrainment_speed, dynamic_viscosity,
-                                       temperature_viscosity_coefficient, thermal_conductivity))
-    check_finite("slide_to_roll", slide_to_roll)
-    s = np.abs(np.asarray(slide_to_roll, dtype=float))
+    big_l, s = _inlet_groups(entrainment_speed, dynamic_viscosity,
+                             temperature_viscosity_coefficient, thermal_conductivity,
+                             slide_to_roll)
     _warn_range("wilson_sheu_1983", L=(big_l, (0.0, 10.0)), S=(s, (0.0, 2.0)))
     return (1.0 / (1.0 + 0.241 * (1.0 + 14.8 * s**0.83) * big_l**0.64))[()]
 
@@ -447,10 +475,9 @@ def gupta_1992(entrainment_speed: Any, dynamic_viscosity: Any,
     Kotzalas (2007, vol. 2); original: Gupta, Cheng, Zhu, Forster, Schrand, Tribol. Trans. 35
     (1992) 269-274.
     """
-    big_l = np.asarray(thermal_loading(entrainment_speed, dynamic_viscosity,
-                                       temperature_viscosity_coefficient, thermal_conductivity))
-    check_finite("slide_to_roll", slide_to_roll)
-    s = np.abs(np.asarray(slide_to_roll, dtype=float))
+    big_l, s = _inlet_groups(entrainment_speed, dynamic_viscosity,
+                             temperature_viscosity_coefficient, thermal_conductivity,
+                             slide_to_roll)
     check_positive("max_pressure", max_pressure, allow_zero=True)
     check_positive("effective_modulus", effective_modulus)
     ph = np.asarray(max_pressure, dtype=float) / np.asarray(effective_modulus, dtype=float)
