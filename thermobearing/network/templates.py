@@ -55,6 +55,17 @@ HOUSING_MATERIAL_DEFAULT = "STEEL_52100"
 SHAFT_NODE = "shaft"
 
 
+#: units of the parameters both templates take (seat, oil supply, boundaries, contacts), in the
+#: order the registry lists them; the seven-node template adds ``fit_conductance`` after them
+_SEAT_PARAMETERS = {
+    "housing_outer_diameter": "m", "housing_length": "m", "shaft_diameter": "m",
+    "shaft_length": "m", "oil_flow": "m**3/s", "oil_inlet_temperature": "K",
+    "ambient_temperature": "K", "ball_load": "N", "h_oil": "W/(m**2*K)", "h_air": "W/(m**2*K)",
+}
+#: units of the cavity-fill, contact-model and material parameters of both templates
+_FILL_PARAMETERS = {"oil_fill": "-", "contact_model": "-", "housing_material": "-"}
+
+
 def _material(m, field: str = "housing_material"):
     """The material preset ``m`` (or a Material); errors name the template's ``field``
     (they named ``material``, which the scene's [network] table does not have)."""
@@ -218,14 +229,23 @@ def _cavity(bearing) -> dict[str, float]:
     return {"B": B, "d_li": d_li, "d_lo": d_lo, "v_free": v_free, "v_cage": v_cage}
 
 
+def _ring_capacities(bearing, cav: dict[str, float]) -> tuple[float, float]:
+    """Heat capacities rho c V [J/K] of the (outer, inner) ring: the annulus between the outer
+    diameter D and the outer land diameter D_Lo, and between the bore d and the inner land
+    diameter D_Li, over the width B (``cav`` from :func:`_cavity`; an estimate of the ring
+    volumes, as :func:`four_node_paper002` states)."""
+    ring = bearing.ring_material
+    rho_c = ring.density * ring.specific_heat
+    B, d_li, d_lo = cav["B"], cav["d_li"], cav["d_lo"]
+    v_outer = math.pi / 4.0 * (bearing.outer_diameter**2 - d_lo**2) * B
+    v_inner = math.pi / 4.0 * (d_li**2 - bearing.bore**2) * B
+    return rho_c * v_outer, rho_c * v_inner
+
+
 @TEMPLATES.register(
     "four_node_paper002",
     references=["gao2022_overskidding", "incropera2007", "churchill_chu1975"],
-    parameters={"housing_outer_diameter": "m", "housing_length": "m", "shaft_diameter": "m",
-                "shaft_length": "m", "oil_flow": "m**3/s", "oil_inlet_temperature": "K",
-                "ambient_temperature": "K", "ball_load": "N", "h_oil": "W/(m**2*K)",
-                "h_air": "W/(m**2*K)", "oil_fill": "-", "contact_model": "-",
-                "housing_material": "-"},
+    parameters={**_SEAT_PARAMETERS, **_FILL_PARAMETERS},
     validity="lumped bodies (no gradient inside a component); paper 002's rig",
 )
 def four_node_paper002(
@@ -299,7 +319,7 @@ def four_node_paper002(
     p = prefix
     _boundaries(net, ambient_temperature, oil_inlet_temperature)
     cav = _cavity(bearing)
-    B, d_li, d_lo = cav["B"], cav["d_li"], cav["d_lo"]
+    d_li, d_lo = cav["d_li"], cav["d_lo"]
     D_h, L_h = housing_outer_diameter, housing_length
     d = bearing.bore
     D = bearing.outer_diameter
@@ -312,14 +332,11 @@ def four_node_paper002(
     Z = el["Z"]
 
     c_balls = Z * el["mass"] * ball.specific_heat
+    c_outer, c_inner = _ring_capacities(bearing, cav)
     v_house = math.pi / 4.0 * (D_h**2 - D**2) * L_h
-    v_outer = math.pi / 4.0 * (D**2 - d_lo**2) * B
-    c_house = hous.density * hous.specific_heat * v_house + ring.density * ring.specific_heat \
-        * v_outer
-    v_inner = math.pi / 4.0 * (d_li**2 - d**2) * B
+    c_house = hous.density * hous.specific_heat * v_house + c_outer
     v_shaft = math.pi / 4.0 * shaft.diameter**2 * shaft.length
-    c_shaft = ring.density * ring.specific_heat * v_inner \
-        + shaft.material.density * shaft.material.specific_heat * v_shaft
+    c_shaft = c_inner + shaft.material.density * shaft.material.specific_heat * v_shaft
     rho_o, cp_o = _oil_properties(lubricant, oil_inlet_temperature)
     c_oil = oil_fill * cav["v_free"] * rho_o * cp_o
     if bearing.cage.material is not None:
@@ -374,11 +391,7 @@ def _contact(model: str, a: float, b: float, ball, ring, Z: int):
 @TEMPLATES.register(
     "seven_node",
     references=["gao2022_overskidding", "incropera2007", "churchill_chu1975"],
-    parameters={"housing_outer_diameter": "m", "housing_length": "m", "shaft_diameter": "m",
-                "shaft_length": "m", "oil_flow": "m**3/s", "oil_inlet_temperature": "K",
-                "ambient_temperature": "K", "ball_load": "N", "h_oil": "W/(m**2*K)",
-                "h_air": "W/(m**2*K)", "fit_conductance": "W/(m**2*K)", "oil_fill": "-",
-                "contact_model": "-", "housing_material": "-"},
+    parameters={**_SEAT_PARAMETERS, "fit_conductance": "W/(m**2*K)", **_FILL_PARAMETERS},
     validity="lumped bodies; fits by a contact conductance; cage exchanges heat with oil only",
 )
 def seven_node(
@@ -437,9 +450,7 @@ def seven_node(
     cav = _cavity(bearing)
     B, d_li, d_lo = cav["B"], cav["d_li"], cav["d_lo"]
     d, D = bearing.bore, bearing.outer_diameter
-    ring = bearing.ring_material
-    c_outer = ring.density * ring.specific_heat * math.pi / 4.0 * (D**2 - d_lo**2) * B
-    c_inner = ring.density * ring.specific_heat * math.pi / 4.0 * (d_li**2 - d**2) * B
+    c_outer, c_inner = _ring_capacities(bearing, cav)
     c_house = base.capacity("__tmp__housing") - c_outer
     c_shaft = base.capacity("__tmp__shaft") - c_inner
     cage = bearing.cage
