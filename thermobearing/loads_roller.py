@@ -166,6 +166,34 @@ def _backtrack(evaluate, dx: float, dy: float, step: np.ndarray, norm: float):
     return dx + lam * step[0], dy + lam * step[1], cand, cn
 
 
+def check_azimuth_spans_load(azimuth: np.ndarray, radial_load: float) -> None:
+    """InputError unless the rollers' azimuths can carry a radial load along psi = 0.
+
+    The inner-ring contacts only push (Q_ij >= 0), so the ring equilibrium
+    sum_j Q_ij (cos psi_j, sin psi_j) = (F_r, 0) (eq. (2) of the module docstring) has a
+    solution only where the load direction lies in the cone of the roller directions: the
+    angular gap between the nearest roller on either side of psi = 0 must be below pi (or a
+    roller sits at psi = 0). Rollers all on one side (14 azimuths within 1.67-4.61 rad) made
+    the ring's Newton push it to an infinite displacement and return a non-converged state
+    (residual = F_r; earlier a ConvergenceError with a 680 m step). ``azimuth`` [rad] (Z,),
+    ``radial_load`` [N]; a zero load needs no roller.
+    """
+    if not radial_load > 0.0:
+        return
+    ccw = np.mod(np.asarray(azimuth, dtype=float), 2.0 * math.pi)
+    ahead = float(np.min(ccw))  # nearest roller counter-clockwise of psi = 0 [rad]
+    behind = float(np.min(np.mod(-ccw, 2.0 * math.pi)))  # nearest clockwise [rad]
+    if ahead == 0.0 or behind == 0.0 or ahead + behind < math.pi:
+        return
+    raise InputError(
+        "azimuth", np.round(np.asarray(azimuth, dtype=float), 4).tolist(),
+        f"roller azimuths [rad] on both sides of the load direction psi = 0 within less than "
+        f"pi of each other (here the nearest rollers are {ahead:.4g} rad ahead of it and "
+        f"{behind:.4g} rad behind, a gap of {ahead + behind:.4g} rad >= pi): the inner-ring "
+        f"contacts only push, so no roller set can carry F_r = {radial_load:g} N along "
+        "psi = 0")
+
+
 def roller_load_distribution(
     n_rollers: int,
     diametral_clearance: float,
@@ -223,6 +251,7 @@ def roller_load_distribution(
         if psi.shape != (z,):
             raise InputError("azimuth", psi.shape, f"an array of shape ({z},)")
     check_finite("azimuth", psi)
+    check_azimuth_spans_load(psi, radial_load)
     fb = np.broadcast_to(np.asarray(body_force, dtype=float), (z,)).copy()
     check_finite("body_force", fb)
     n = exponent
@@ -315,6 +344,12 @@ def roller_load_distribution(
             jac = jac + np.eye(2) * 1e-9 * float(np.trace(jac))
         dx, dy, cand, norm = _backtrack(evaluate, dx, dy, -np.linalg.solve(jac, res), norm)
         interf, di, do, qi, qo, res, jac, kser = cand
+    if not (math.isfinite(dx) and math.isfinite(dy)):
+        # a non-finite ring displacement makes the force resolution NaN and ended the loop
+        # as if converged: never return that state
+        raise ConvergenceError("roller_load_distribution", norm,
+                               "the ring displacement left the finite range",
+                               {"delta_x": dx, "delta_y": dy, "iterations": it})
     return RollerLoadDistribution(
         azimuth=psi, inner_load=qi, outer_load=qo, inner_deflection=di, outer_deflection=do,
         interference=interf, body_force=fb, ring_displacement=np.array([dx, dy]),
@@ -390,6 +425,8 @@ def roller_film_load_distribution(
         else np.asarray(azimuth, dtype=float)
     if psi.shape != (z,):
         raise InputError("azimuth", psi.shape, f"an array of shape ({z},)")
+    check_finite("azimuth", psi)
+    check_azimuth_spans_load(psi, radial_load)
     fb = np.broadcast_to(np.asarray(body_force, dtype=float), (z,)).copy()
     check_finite("body_force", fb)
     half = 0.5 * diametral_clearance

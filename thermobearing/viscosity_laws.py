@@ -194,7 +194,7 @@ def walther_constants(
 @VISCOSITY_TEMPERATURE.register(
     "vogel",
     references=["vogel1921"],
-    parameters={"a": "Pa*s", "b": "K", "c": "K"},
+    parameters={"a": "Pa*s", "b": "delta_degC", "c": "K"},
     validity="T > c; fitted range of the three constants",
     summary="Vogel: eta = a exp(b / (T - c))",
 )
@@ -206,7 +206,12 @@ def vogel_viscosity(T: ArrayLike, a: float, b: float, c: float) -> ArrayLike:
     Parameters
     ----------
     T : temperature [K]; must exceed ``c``.
-    a : viscosity scale [Pa s]; b : [K]; c : divergence temperature [K].
+    a : viscosity scale [Pa s].
+    b : temperature difference [K] (``b / (T - c)`` is a ratio of two differences): a
+        lubricant file's ``b = "1000 degC"`` or ``"1000 K"`` is 1000 K, not 1273.15 K
+        (``lubricant._SECTION_UNITS`` reads it as a difference; registry unit
+        ``delta_degC``).
+    c : divergence temperature [K] (an absolute temperature: ``"-123.15 degC"`` is 150 K).
 
     Returns
     -------

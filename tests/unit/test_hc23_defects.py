@@ -1,0 +1,64 @@
+"""Session-23 defects: Vogel's b documented as a temperature difference, roller azimuths
+that cannot carry the radial load refused by name."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+from thermobearing.errors import InputError
+from thermobearing.loads_roller import roller_film_load_distribution, roller_load_distribution
+from thermobearing.lubricant import lubricant_config_dir, lubricant_from_dict
+from thermobearing.units import to_si
+from thermobearing.viscosity_laws import VISCOSITY_TEMPERATURE, vogel_viscosity
+
+
+def test_vogel_b_registry_unit_is_a_temperature_difference():
+    """The registry documents b in the unit the lubricant loader reads it in: a
+    difference ("1000 degC" is 1000 K), while c stays an absolute temperature."""
+    units = VISCOSITY_TEMPERATURE.entry("vogel").parameters
+    assert to_si("1000 degC", units["b"]) == pytest.approx(1000.0)
+    assert to_si("1000 K", units["b"]) == pytest.approx(1000.0)
+    assert to_si("-123.15 degC", units["c"]) == pytest.approx(150.0)
+    raw = tomllib.loads((lubricant_config_dir() / "ISO_VG46.toml").read_text())
+    raw["viscosity"] = {"law": "vogel", "a": "5e-5 Pa*s", "b": "1000 degC", "c": "150 K"}
+    oil = lubricant_from_dict(raw)
+    assert oil.viscosity_parameters["b"] == pytest.approx(to_si("1000 degC", units["b"]))
+    assert float(oil.dynamic_viscosity(313.15)) == pytest.approx(
+        float(vogel_viscosity(313.15, 5e-5, 1000.0, 150.0)), rel=1e-12)
+
+
+ONE_SIDE = np.linspace(0.5 * math.pi + 0.1, 1.5 * math.pi - 0.1, 14)
+
+
+def _film(q: np.ndarray) -> np.ndarray:
+    return np.full_like(np.asarray(q, dtype=float), 1e-6)
+
+
+@pytest.mark.parametrize("solve", [
+    lambda psi, fr: roller_load_distribution(14, 20e-6, fr, 1e9, 1e9, azimuth=psi),
+    lambda psi, fr: roller_film_load_distribution(14, 20e-6, fr, _film, _film, 1e9, 1e9,
+                                                  azimuth=psi),
+], ids=["dry", "film"])
+def test_azimuths_not_spanning_the_load_are_refused_by_name(solve):
+    """Rollers all on the far side of the load (a gap of 3.34 rad around psi = 0) cannot
+    carry it: the dry solver returned an infinite ring displacement with residual = F_r;
+    now an InputError names the field and the gap."""
+    with pytest.raises(InputError) as err:
+        solve(ONE_SIDE, 5000.0)
+    assert err.value.field == "azimuth"
+    assert "3.342 rad >= pi" in str(err.value)
+    # without a load the same azimuths are a valid (unloaded) state
+    assert roller_load_distribution(14, 20e-6, 0.0, 1e9, 1e9, azimuth=ONE_SIDE).residual == 0.0
+
+
+def test_uneven_azimuths_that_span_the_load_still_solve():
+    """A gap below pi around the load direction (0.1 rad ahead, 0.28 rad behind) is
+    accepted and balances the ring."""
+    psi = np.array([0.1, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0])
+    res = roller_load_distribution(7, 20e-6, 5000.0, 1e9, 1e9, azimuth=psi)
+    assert np.sum(res.inner_load * np.cos(psi)) == pytest.approx(5000.0, rel=1e-8)
+    assert abs(np.sum(res.inner_load * np.sin(psi))) < 1e-6
