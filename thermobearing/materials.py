@@ -11,7 +11,7 @@ twice Johnson's E*).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -132,16 +132,11 @@ STEEL_52100 = Material(
     },
 )
 
-GCR15 = Material(
+GCR15 = replace(
+    STEEL_52100,
     name="GCR15",
-    youngs_modulus=STEEL_52100.youngs_modulus,
-    poisson_ratio=STEEL_52100.poisson_ratio,
-    density=STEEL_52100.density,
-    specific_heat=STEEL_52100.specific_heat,
-    thermal_conductivity=STEEL_52100.thermal_conductivity,
     source="GB/T 18254 GCr15 is the Chinese designation of AISI 52100 (1C-1.5Cr); same "
     "values as STEEL_52100",
-    estimated=dict(STEEL_52100.estimated),
 )
 
 M50 = Material(
