@@ -927,6 +927,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     towards the last state the models accepted, at most :data:`STEADY_MAX_BACKTRACKS` times
     per operating point; each backtrack is noted in the run's warnings."""
     from .simulation import kinematics_columns, step_columns
+    from .simulation_tables import operating_columns
 
     coupler = Coupler(sim, net)
     names = coupler.names
@@ -1021,8 +1022,8 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
             # of the fixed point, not states the bearing runs in (a QJ1044 at 1800 r/min,
             # 5 kN: the skid warning took an iterate's CSR)
             sim.checks[b.name].steps[i] = [check_state(b.bearing, b.last, sim.check_limits)]
-        # a steady state has no time: step and node temperatures only
-        row = {"step": i, **_temperature_row(None, names, T)}
+        # a steady state has no time: step, its operating point and the node temperatures
+        row = {"step": i, **operating_columns(step), **_temperature_row(None, names, T)}
         temp_rows.append(row)
         rows = (coupler.loss_rows(i, None, step, T) if _wants_loss_table(sim.scene)
                 else [])

@@ -41,6 +41,17 @@ def step_columns(index: int, time_s: float | None, bearing: str, step: Step,
             "axial load [kN]": axial / 1e3}
 
 
+def operating_columns(step: Step) -> dict[str, float]:
+    """The schedule step's operating point as table columns: ``speed [rpm]`` (a set value,
+    :func:`set_value`), ``radial load [kN]``, ``axial load [kN]`` (the schedule's, i.e. the
+    shaft's loads; the per-bearing tables give each bearing's share). A steady run's
+    ``steady_temperatures`` rows carry them: without, a row named only its step and the
+    operating point had to be looked up in the scene's protocol."""
+    return {"speed [rpm]": set_value(from_si(step.speed, "rpm")),
+            "radial load [kN]": step.radial_load / 1e3,
+            "axial load [kN]": step.axial_load / 1e3}
+
+
 #: significant digits of a set value (speed) written to the tables: far more than any
 #: rig sets, far fewer than the 15-17 at which unit-conversion round-off shows
 SET_VALUE_DIGITS = 12

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,6 +13,8 @@ import pytest
 from thermobearing.errors import InputError
 from thermobearing.loads_roller import roller_film_load_distribution, roller_load_distribution
 from thermobearing.lubricant import lubricant_config_dir, lubricant_from_dict
+from thermobearing.scene import load_scene
+from thermobearing.simulation import Simulation
 from thermobearing.units import to_si
 from thermobearing.viscosity_laws import VISCOSITY_TEMPERATURE, vogel_viscosity
 
@@ -62,3 +65,25 @@ def test_uneven_azimuths_that_span_the_load_still_solve():
     res = roller_load_distribution(7, 20e-6, 5000.0, 1e9, 1e9, azimuth=psi)
     assert np.sum(res.inner_load * np.cos(psi)) == pytest.approx(5000.0, rel=1e-8)
     assert abs(np.sum(res.inner_load * np.sin(psi))) < 1e-6
+
+
+STEADY_SCENE = Path(__file__).parents[1] / "regression" / "scenes" / \
+    "qj1044_race_control_steady.toml"
+
+
+def test_steady_temperatures_rows_name_their_operating_point():
+    """Each steady_temperatures row carries its step's speed and loads (the kinematics
+    table's columns and units), before the node temperatures; the rows were 'step' and
+    temperatures only."""
+    scene = load_scene(STEADY_SCENE)
+    res = Simulation(scene, progress=False).run()
+    steady = res.tables["steady_temperatures"]
+    assert list(steady.columns[:4]) == ["step", "speed [rpm]", "radial load [kN]",
+                                        "axial load [kN]"]
+    assert all(c.endswith(" [degC]") for c in steady.columns[4:])
+    assert steady["speed [rpm]"].tolist() == [900.0, 1800.0]
+    assert steady["radial load [kN]"].tolist() == [1.0, 1.0]
+    assert steady["axial load [kN]"].tolist() == [10.0, 10.0]
+    kin = res.tables["kinematics"].set_index("step")
+    for col in ("speed [rpm]", "radial load [kN]", "axial load [kN]"):
+        assert steady.set_index("step")[col].equals(kin[col])
