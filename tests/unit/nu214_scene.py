@@ -3,17 +3,13 @@ ambient 25 degC. The tests give the schedule and outputs (TOML text of each part
 
 from __future__ import annotations
 
+from scene_parts import JET_1LPM_40C, VG32_JET
+
 NU214_JET = """title = "{title}"
 [[bearings]]
 name = "crb"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-[environment]
+""" + VG32_JET + """[environment]
 ambient_temperature = "25 degC"
 {environment}
 [schedule]
@@ -23,7 +19,7 @@ want = {want}
 """
 
 #: the supply lines, for tests that replace the supply
-JET_SUPPLY = 'method = "jet"\nflow = "1 L/min"\ninlet_temperature = "40 degC"'
+JET_SUPPLY = JET_1LPM_40C.rstrip("\n")
 
 
 def nu214_jet_scene(*, title: str, schedule: str, want: str,

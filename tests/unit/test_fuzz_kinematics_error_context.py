@@ -9,27 +9,19 @@ from __future__ import annotations
 import dataclasses
 
 import pytest
+from scene_parts import VG32_JET, scene_title
 
 from thermobearing.errors import ConvergenceError
 from thermobearing.kinematic_models import KINEMATICS
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "fuzz case"
-
+SCENE = scene_title("fuzz case") + """
 [[bearings]]
 name = "front"
 preset = "SKF6304"
 
-[lubricant]
-preset = "ISO_VG32"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-
+""" + VG32_JET + """
 [environment]
 ambient_temperature = "40 degC"
 

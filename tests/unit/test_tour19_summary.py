@@ -10,6 +10,7 @@ import warnings
 
 import pandas as pd
 import pytest
+from scene_parts import VG32_JET, scene_title
 
 from thermobearing.operating_checks import CheckLog, StateCheck
 from thermobearing.scene import loads_scene
@@ -20,18 +21,10 @@ from thermobearing.simulation_tables import over_skidding_range
 #: an NU 214 warming up at 8000 r/min under 500 N: its cage slows as the oil thins within
 #: the step (the kinematics are re-solved as the viscosity moves), so the step's first
 #: state is not its worst
-NU214 = """
-title = "NU214 warming at 8000 r/min"
-[[bearings]]
+NU214 = scene_title("NU214 warming at 8000 r/min") + """[[bearings]]
 name = "nu"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "40 degC"
-[environment]
+""" + VG32_JET + """[environment]
 ambient_temperature = "25 degC"
 [schedule]
 radial_load = "500 N"

@@ -1,0 +1,40 @@
+"""TOML tables that many unit-test scenes share, written once (text of whole tables, each
+ending in a newline, none with a brace so that a ``str.format`` template can hold them).
+A test builds its scene by concatenation, e.g.
+``scene_title("t") + QJ1044_DE + PAPER002_OIL + ...``, and writes out what is particular to
+it (schedule, models, outputs)."""
+
+from __future__ import annotations
+
+#: the paper 002 rig's bearing (QJ1044), named "de" (drive end) and "nde" (the second of a
+#: pair on one shaft)
+QJ1044_DE = '[[bearings]]\nname = "de"\npreset = "QJ1044"\n'
+QJ1044_NDE = '[[bearings]]\nname = "nde"\npreset = "QJ1044"\n'
+
+#: the paper 002 rig's oil: ISO VG 46, 33 L/min at 35 degC (no method: the scene default)
+PAPER002_OIL = ('[lubricant]\npreset = "ISO_VG46"\n'
+                '[supply]\nflow = "33 L/min"\ninlet_temperature = "35 degC"\n')
+#: the paper 002 rig's ambient, the oil's inlet temperature
+PAPER002_AMBIENT = '[environment]\nambient_temperature = "35 degC"\n'
+
+#: the lines of a [supply] table: a 1 L/min jet at 40 degC
+JET_1LPM_40C = 'method = "jet"\nflow = "1 L/min"\ninlet_temperature = "40 degC"\n'
+#: ISO VG 32 on a 1 L/min jet at 40 degC
+VG32_JET = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM_40C
+
+#: ISO VG 46, 2 L/min at 40 degC (no method: the scene default)
+VG46_2LPM = ('[lubricant]\npreset = "ISO_VG46"\n'
+             '[supply]\nflow = "2 L/min"\ninlet_temperature = "40 degC"\n')
+
+#: ISO VG 32 as oil-air, 30 mm^3/h, in a 22 degC room (the spindle tours)
+VG32_OIL_AIR = ('[lubricant]\npreset = "ISO_VG32"\n'
+                '[supply]\nmethod = "oil_air"\nflow = "30 mm3/h"\n'
+                '[environment]\nambient_temperature = "22 degC"\n')
+
+#: the race-control kinematics
+RACE_CONTROL = '[models]\nkinematics = "race_control"\n'
+
+
+def scene_title(text: str) -> str:
+    """The scene's title line (after a newline, as the tests' scene texts start)."""
+    return f'\ntitle = "{text}"\n'
