@@ -7,8 +7,25 @@ calibration files): top-level values, tables, arrays of named tables in the long
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from typing import Any
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+"""TOML 1.0 bare keys: ASCII letters, ASCII digits, underscores and dashes only."""
+
+_ESCAPES = {"\\": "\\\\", '"': '\\"', "\b": "\\b", "\t": "\\t", "\n": "\\n",
+            "\f": "\\f", "\r": "\\r"}
+
+
+def _escape_char(c: str) -> str:
+    """One character of a TOML basic string: the short escapes, ``\\uXXXX`` for the other
+    control characters (U+0000..U+001F and U+007F may not appear raw, TOML 1.0 "String")."""
+    if c in _ESCAPES:
+        return _ESCAPES[c]
+    if ord(c) < 0x20 or ord(c) == 0x7F:
+        return f"\\u{ord(c):04X}"
+    return c
 
 
 def _toml_value(v: Any) -> str:
@@ -20,7 +37,7 @@ def _toml_value(v: Any) -> str:
         return repr(v) if math.isfinite(v) else ("nan" if math.isnan(v) else
                                                  ("inf" if v > 0 else "-inf"))
     if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+        return '"' + "".join(_escape_char(c) for c in v) + '"'
     if isinstance(v, Mapping):
         return "{ " + ", ".join(f"{_toml_key(k)} = {_toml_value(x)}" for k, x in v.items()) + " }"
     if isinstance(v, list | tuple):
@@ -29,7 +46,9 @@ def _toml_value(v: Any) -> str:
 
 
 def _toml_key(k: str) -> str:
-    return k if k.replace("_", "").replace("-", "").isalnum() else _toml_value(k)
+    """A bare key when TOML allows one (ASCII only: ``str.isalnum`` also takes "ä", "µ",
+    "²", which TOML refuses bare), else a quoted key."""
+    return k if _BARE_KEY.fullmatch(k) else _toml_value(k)
 
 
 def dumps_toml(data: Mapping[str, Any]) -> str:
