@@ -26,10 +26,12 @@ VG32_JET = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM_40C
 VG46_2LPM = ('[lubricant]\npreset = "ISO_VG46"\n'
              '[supply]\nflow = "2 L/min"\ninlet_temperature = "40 degC"\n')
 
-#: ISO VG 32 as oil-air, 30 mm^3/h, in a 22 degC room (the spindle tours)
+#: ISO VG 32 as oil-air, 30 mm^3/h (the spindle tours)
 VG32_OIL_AIR = ('[lubricant]\npreset = "ISO_VG32"\n'
-                '[supply]\nmethod = "oil_air"\nflow = "30 mm3/h"\n'
-                '[environment]\nambient_temperature = "22 degC"\n')
+                '[supply]\nmethod = "oil_air"\nflow = "30 mm3/h"\n')
+
+#: a 22 degC room (the roller-rig and spindle tours)
+ROOM_22C = '[environment]\nambient_temperature = "22 degC"\n'
 
 #: the race-control kinematics
 RACE_CONTROL = '[models]\nkinematics = "race_control"\n'

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scene_parts import PAPER002_OIL, QJ1044_DE, RACE_CONTROL, scene_title
 
 from thermobearing import simulation_tables
 from thermobearing.coupled import RUNAWAY_TEMPERATURE
@@ -15,24 +16,12 @@ from thermobearing.kinematic_models import KINEMATICS, contact_temperature
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-BALL_SCENE = """
-title = "t"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[schedule]
+BALL_SCENE = scene_title("t") + QJ1044_DE + PAPER002_OIL + """[schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 axial_load = "4 kN"
 duration = "3 min"
-[models]
-kinematics = "race_control"
-[outputs]
+""" + RACE_CONTROL + """[outputs]
 want = ["kinematics"]
 """
 

@@ -6,44 +6,50 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scene_parts import (
+    PAPER002_AMBIENT,
+    PAPER002_OIL,
+    QJ1044_DE,
+    QJ1044_NDE,
+    RACE_CONTROL,
+    scene_title,
+)
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-BASE = """
-title = "coupled"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[[bearings]]
-name = "nde"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-[models]
-kinematics = "race_control"
-[network]
+BASE = (scene_title("coupled") + QJ1044_DE + QJ1044_NDE + PAPER002_OIL + PAPER002_AMBIENT
+        + RACE_CONTROL + """[network]
 template = "four_node_paper002"
 parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
 [solver]
 chunk = "90 s"
-"""
-
-
-def test_transient_two_bearings_energy_and_monotone_rise(tmp_path):
-    text = BASE + """
+""")
+#: 1800 r/min under 1 kN radial, two 3-min steps of 4 and 8 kN axial
+AXIAL_STEPS = """
 [schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 step_duration = "3 min"
 axial_load_steps = { start = "4 kN", stop = "8 kN", step = "4 kN" }
-[outputs]
+"""
+#: the CRB scenes' oil (MIL-PRF-23699, 4 L/min at 80 degC), air (35 degC), speed and radial load
+CRB_RUN = """[lubricant]
+preset = "MIL_PRF_23699"
+[supply]
+flow = "4 L/min"
+inlet_temperature = "80 degC"
+[environment]
+ambient_temperature = "35 degC"
+[schedule]
+speed = "10000 rpm"
+radial_load = "3 kN"
+"""
+
+
+def test_transient_two_bearings_energy_and_monotone_rise(tmp_path):
+    text = BASE + AXIAL_STEPS + """[outputs]
 want = ["temperatures", "losses", "kinematics", "energy", "report"]
 """
     res = Simulation(loads_scene(text), progress=False).run(out_dir=tmp_path)
@@ -111,25 +117,12 @@ columns = { T1 = "de.gearbox" }
 
 def test_cylindrical_roller_scene_books_rib_friction_in_the_network():
     """Issue 9: the rib friction heat enters the network of a CRB scene as its own loss."""
-    text = """
-title = "CRB with axial load"
-[[bearings]]
+    text = scene_title("CRB with axial load") + """[[bearings]]
 name = "crb"
 preset = "CRB_50x75x16"
-[lubricant]
-preset = "MIL_PRF_23699"
-[supply]
-flow = "4 L/min"
-inlet_temperature = "80 degC"
-[environment]
-ambient_temperature = "35 degC"
-[schedule]
-speed = "10000 rpm"
-radial_load = "3 kN"
-axial_load = "0.2 kN"
+""" + CRB_RUN + """axial_load = "0.2 kN"
 duration = "2 min"
-[models]
-kinematics = "race_control"
+""" + RACE_CONTROL + """\
 heat_source_options = { rib_friction = { model = "reduced", friction_coefficient = 0.08 } }
 [network]
 template = "four_node_paper002"
@@ -282,26 +275,12 @@ duration = "3 min"
     assert any("exprb43 failed" in w and "tr_bdf2" in w for w in sim.warnings)
 
 
-_CRB_SCENE = """
-title = "CRB"
-[[bearings]]
+_CRB_SCENE = scene_title("CRB") + """[[bearings]]
 name = "crb"
 preset = "{preset}"
-[lubricant]
-preset = "MIL_PRF_23699"
-[supply]
-flow = "4 L/min"
-inlet_temperature = "80 degC"
-[environment]
-ambient_temperature = "35 degC"
-[schedule]
-speed = "10000 rpm"
-radial_load = "3 kN"
-axial_load = "0 kN"
+""" + CRB_RUN + """axial_load = "0 kN"
 duration = "1 min"
-[models]
-kinematics = "race_control"
-{models}
+""" + RACE_CONTROL + """{models}
 [outputs]
 want = ["losses"]
 """
@@ -368,13 +347,7 @@ def test_output_interval_adds_dense_rows_without_changing_the_run(tmp_path):
     """[outputs] interval: temperature rows at every multiple of it from the stepper's dense
     output; the chunk-end rows are those of the run without it (bit for bit), the rows come
     in time order, the file holds them too, and the interval round-trips through TOML."""
-    text = BASE + """
-[schedule]
-speed = "1800 rpm"
-radial_load = "1 kN"
-step_duration = "3 min"
-axial_load_steps = { start = "4 kN", stop = "8 kN", step = "4 kN" }
-[outputs]
+    text = BASE + AXIAL_STEPS + """[outputs]
 want = ["temperatures", "energy"]
 """
     plain = Simulation(loads_scene(text), progress=False).run()
@@ -429,13 +402,7 @@ def test_loss_table_only_when_an_output_needs_it(monkeypatch):
     """The per-step loss table costs one evaluation of every source per step: it is made
     when the scene wants losses or the report, not for a temperatures-only scene (whose
     temperatures are the same)."""
-    sched = """
-[schedule]
-speed = "1800 rpm"
-radial_load = "1 kN"
-step_duration = "3 min"
-axial_load_steps = { start = "4 kN", stop = "8 kN", step = "4 kN" }
-[outputs]
+    sched = AXIAL_STEPS + """[outputs]
 want = [%s]
 """
     calls = []

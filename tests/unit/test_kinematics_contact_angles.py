@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 import pytest
+from scene_parts import RACE_CONTROL, ROOM_22C, VG32_OIL_AIR, VG46_2LPM
 
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
@@ -17,14 +18,7 @@ title = "7014 C at speed, kinematics only"
 [[bearings]]
 name = "front"
 path = "{(EXAMPLES / 'spindle_7014C_catalogue.toml').as_posix()}"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "oil_air"
-flow = "30 mm3/h"
-[environment]
-ambient_temperature = "22 degC"
-[schedule]
+{VG32_OIL_AIR}{ROOM_22C}[schedule]
 radial_load = "200 N"
 axial_load = "500 N"
 steps = [{{ duration = "1 min", speed = "0 r/min" }},
@@ -71,18 +65,11 @@ title = "NU 214"
 [[bearings]]
 name = "r"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[schedule]
+""" + VG46_2LPM + """[schedule]
 speed = "3000 rpm"
 radial_load = "8 kN"
 axial_load = "0 kN"
-[models]
-kinematics = "race_control"
-[outputs]
+""" + RACE_CONTROL + """[outputs]
 want = ["kinematics"]
 """), progress=False)
     res = roller.run()
