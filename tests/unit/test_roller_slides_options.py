@@ -31,6 +31,20 @@ OPTIONS = [{"film_pressure": "regime_min"}, {"fluid_shear_modulus": 1e9},
 IDS = ["regime_min", "maxwell", "maxwell_regime_min"]
 
 
+def _cold_crb_at_epicyclic(**opts):
+    """CRB 50x75x16, ISO VG 46 at 20 degC, 5000 r/min, 20 kN, cage at the epicyclic speed:
+    the model ``m``, omega [rad/s], the angles psi, the load distribution and the loaded
+    rollers' mask."""
+    m = build_model(load_bearing("CRB_50x75x16"), load_lubricant("ISO_VG46"), 293.15,
+                    **opts)
+    omega = 5000.0 * RPM
+    z = m.n_rollers
+    psi = 2.0 * math.pi * np.arange(z) / z
+    ld, fb = _load_distribution(m, omega, 20e3, m.theoretical_cage_speed_ratio * omega, None,
+                                psi, (0.0, 0.0))
+    return m, omega, psi, ld, fb, ld.inner_load > 0.0
+
+
 @pytest.mark.parametrize("opts", OPTIONS, ids=IDS)
 def test_slide_evaluation_is_the_speed_evaluation_away_from_pure_rolling(opts):
     """NU214, 2 kN, 40 degC, cage 5 % below epicyclic: the exact slides give the forces of
@@ -60,14 +74,8 @@ def test_hertz_traction_takes_a_slide_below_the_speeds_ulp(opts):
     surface speeds) carry opposite Hertz-zone tractions (the viscous cold film: hundreds of
     N, at its limiting stress there; the Maxwell film: elastic, ~1e-13 N); from the speeds,
     whose difference cannot hold such a slide, both signs gave the same force."""
-    m = build_model(load_bearing("CRB_50x75x16"), load_lubricant("ISO_VG46"), 293.15,
-                    **opts)
-    omega = 5000.0 * RPM
+    m, omega, psi, ld, fb, loaded = _cold_crb_at_epicyclic(**opts)
     z = m.n_rollers
-    psi = 2.0 * math.pi * np.arange(z) / z
-    ld, fb = _load_distribution(m, omega, 20e3, m.theoretical_cage_speed_ratio * omega, None,
-                                psi, (0.0, 0.0))
-    loaded = ld.inner_load > 0.0
 
     def hertz(v):
         return evaluate_slides(m, omega, np.full(z, v), 0.0, ld.inner_load, fb, psi,
@@ -88,14 +96,9 @@ def test_maxwell_traction_is_elastic_and_linear_at_tiny_slides(pressure):
     1e-12 m/s against 2.9e-8 N at 2e-12 (CRB 50x75x16, 20 kN, ISO VG 46 at 20 degC,
     G = 1 GPa). In the elastic regime (Johnson & Tevaarwerk 1977) the traction is linear in
     the slide: the same slope from 1e-18 to 1e-6 m/s, rising with it."""
-    m = build_model(load_bearing("CRB_50x75x16"), load_lubricant("ISO_VG46"), 293.15,
-                    fluid_shear_modulus=1e9, film_pressure=pressure)
-    omega = 5000.0 * RPM
+    m, omega, psi, ld, fb, loaded = _cold_crb_at_epicyclic(fluid_shear_modulus=1e9,
+                                                           film_pressure=pressure)
     z = m.n_rollers
-    psi = 2.0 * math.pi * np.arange(z) / z
-    ld, fb = _load_distribution(m, omega, 20e3, m.theoretical_cage_speed_ratio * omega, None,
-                                psi, (0.0, 0.0))
-    loaded = ld.inner_load > 0.0
     slides = np.array([1e-18, 1e-17, 2e-17, 1e-15, 1e-12, 2e-12, 1e-9, 1e-6])
     slope = np.array([evaluate_slides(m, omega, np.full(z, v), 0.0, ld.inner_load, fb, psi,
                                       (0.0, 0.0))[0].inner.hertz_traction[loaded] / v
