@@ -1,5 +1,6 @@
 """TOML tables that many unit-test scenes share, written once (text of whole tables, each
-ending in a newline, none with a brace so that a ``str.format`` template can hold them).
+ending in a newline; none but :data:`PAPER002_NETWORK` holds a brace, so that a
+``str.format`` template can hold them).
 A test builds its scene by concatenation, e.g.
 ``scene_title("t") + QJ1044_DE + PAPER002_OIL + ...``, and writes out what is particular to
 it (schedule, models, outputs)."""
@@ -14,8 +15,14 @@ QJ1044_NDE = '[[bearings]]\nname = "nde"\npreset = "QJ1044"\n'
 #: the paper 002 rig's oil: ISO VG 46, 33 L/min at 35 degC (no method: the scene default)
 PAPER002_OIL = ('[lubricant]\npreset = "ISO_VG46"\n'
                 '[supply]\nflow = "33 L/min"\ninlet_temperature = "35 degC"\n')
+#: the same oil on a jet
+PAPER002_JET = ('[lubricant]\npreset = "ISO_VG46"\n'
+                '[supply]\nmethod = "jet"\nflow = "33 L/min"\ninlet_temperature = "35 degC"\n')
 #: the paper 002 rig's ambient, the oil's inlet temperature
 PAPER002_AMBIENT = '[environment]\nambient_temperature = "35 degC"\n'
+#: the paper 002 rig's four-node network, housing 510 mm x 140 mm (an inline table: braces)
+PAPER002_NETWORK = ('[network]\ntemplate = "four_node_paper002"\nparameters = '
+                    '{ housing_outer_diameter = "510 mm", housing_length = "140 mm" }\n')
 
 #: the lines of a [supply] table: a 1 L/min jet at 40 degC
 JET_1LPM_40C = 'method = "jet"\nflow = "1 L/min"\ninlet_temperature = "40 degC"\n'

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from scene_parts import (
     PAPER002_AMBIENT,
+    PAPER002_NETWORK,
     PAPER002_OIL,
     QJ1044_DE,
     QJ1044_NDE,
@@ -20,12 +21,7 @@ from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
 BASE = (scene_title("coupled") + QJ1044_DE + QJ1044_NDE + PAPER002_OIL + PAPER002_AMBIENT
-        + RACE_CONTROL + """[network]
-template = "four_node_paper002"
-parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
-[solver]
-chunk = "90 s"
-""")
+        + RACE_CONTROL + PAPER002_NETWORK + '[solver]\nchunk = "90 s"\n')
 #: 1800 r/min under 1 kN radial, two 3-min steps of 4 and 8 kN axial
 AXIAL_STEPS = """
 [schedule]

@@ -10,6 +10,7 @@ import matplotlib.axes
 import numpy as np
 import pandas as pd
 import pytest
+from scene_parts import PAPER002_JET, QJ1044_DE, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.report import html_report
@@ -221,18 +222,7 @@ def test_large_numbers_in_report_tables_read_without_an_exponent():
 def test_report_with_its_scene_names_the_bearing_the_models_and_their_ranges():
     from thermobearing.scene import loads_scene
 
-    scene = loads_scene("""
-title = "t"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[schedule]
+    scene = loads_scene(scene_title("t") + QJ1044_DE + PAPER002_JET + """[schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 axial_load = "10 kN"

@@ -5,20 +5,11 @@ from __future__ import annotations
 
 import pandas as pd
 import pytest
+from scene_parts import PAPER002_JET, QJ1044_DE, scene_title
 
 from thermobearing.cli import main
 
-_SCENE = """
-title = "QJ1044 breakdown at 1800 r/min"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "33 L/min"
-inlet_temperature = "35 degC"
+_SCENE = scene_title("QJ1044 breakdown at 1800 r/min") + QJ1044_DE + PAPER002_JET + """\
 [schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"

@@ -9,21 +9,13 @@ identity). Bad values are refused naming the field.
 from __future__ import annotations
 
 import pytest
+from scene_parts import PAPER002_OIL, QJ1044_DE, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "QJ1044 with EHL rolling resistance"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
+SCENE = scene_title("QJ1044 with EHL rolling resistance") + QJ1044_DE + PAPER002_OIL + """\
 [schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"

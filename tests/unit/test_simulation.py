@@ -4,29 +4,18 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scene_parts import PAPER002_OIL, QJ1044_DE, RACE_CONTROL, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation, plan_chain
 
-BASE = """
-title = "t"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[schedule]
+BASE = scene_title("t") + QJ1044_DE + PAPER002_OIL + """[schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 step_duration = "3 min"
 axial_load_steps = { start = "2 kN", stop = "6 kN", step = "4 kN" }
-[models]
-kinematics = "race_control"
-"""
+""" + RACE_CONTROL
 
 
 def scene(want, mode="steady"):

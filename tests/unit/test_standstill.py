@@ -7,6 +7,14 @@ import math
 
 import numpy as np
 import pytest
+from scene_parts import (
+    PAPER002_AMBIENT,
+    PAPER002_NETWORK,
+    PAPER002_OIL,
+    QJ1044_DE,
+    RACE_CONTROL,
+    scene_title,
+)
 
 from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HEAT_SOURCES, HeatContext, evaluate_recorded
@@ -18,29 +26,13 @@ from thermobearing.state import OilSupply, OperatingPoint
 
 OIL = load_lubricant("ISO_VG46")
 SUPPLY = OilSupply("jet", 33 / 60000, 308.15)
-STOP_SCENE = """
-title = "run, stop, run"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
+STOP_SCENE = scene_title("run, stop, run") + QJ1044_DE + PAPER002_OIL + PAPER002_AMBIENT + """\
 [schedule]
 radial_load = "1 kN"
 axial_load = "10 kN"
 step_duration = "10 min"
 steps = [{ speed = "1800 rpm" }, { speed = "0 rpm" }, { speed = "1200 rpm" }]
-[models]
-kinematics = "race_control"
-[network]
-template = "four_node_paper002"
-parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
-[outputs]
+""" + RACE_CONTROL + PAPER002_NETWORK + """[outputs]
 want = ["temperatures", "losses", "kinematics", "energy"]
 """
 

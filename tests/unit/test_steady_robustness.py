@@ -8,6 +8,14 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scene_parts import (
+    PAPER002_AMBIENT,
+    PAPER002_NETWORK,
+    PAPER002_OIL,
+    QJ1044_DE,
+    RACE_CONTROL,
+    scene_title,
+)
 
 from thermobearing.coupled import Coupler, coldest_boundary
 from thermobearing.errors import ConvergenceError, InputError
@@ -99,24 +107,8 @@ def test_cold_oil_air_rig_that_cannot_be_cooled_stops_naming_the_runaway():
     assert "balls" in str(info.value) and "below absolute zero" not in str(info.value)
 
 
-BASE = """
-title = "steady"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-[models]
-kinematics = "race_control"
-[network]
-template = "four_node_paper002"
-parameters = { housing_outer_diameter = "510 mm", housing_length = "140 mm" }
-[schedule]
+BASE = (scene_title("steady") + QJ1044_DE + PAPER002_OIL + PAPER002_AMBIENT + RACE_CONTROL
+        + PAPER002_NETWORK + """[schedule]
 speed = "1200 rpm"
 radial_load = "1 kN"
 axial_load = "10 kN"
@@ -124,7 +116,7 @@ duration = "1 min"
 [outputs]
 mode = "steady"
 want = ["temperatures", "losses"]
-"""
+""")
 
 
 def _refusing(monkeypatch, above_K: float, times: int | None) -> list[float]:

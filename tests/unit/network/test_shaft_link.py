@@ -11,6 +11,14 @@ import math
 
 import numpy as np
 import pytest
+from scene_parts import (
+    PAPER002_AMBIENT,
+    PAPER002_OIL,
+    QJ1044_DE,
+    QJ1044_NDE,
+    RACE_CONTROL,
+    scene_title,
+)
 
 from thermobearing import cli
 from thermobearing.coupled import build_network
@@ -27,24 +35,8 @@ from thermobearing.network.shaft import (
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-TWO = """
-title = "two bearings on one shaft"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[[bearings]]
-name = "nde"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-[models]
-kinematics = "race_control"
-[schedule]
+TWO = (scene_title("two bearings on one shaft") + QJ1044_DE + QJ1044_NDE + PAPER002_OIL
+       + PAPER002_AMBIENT + RACE_CONTROL + """[schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 axial_load = "10 kN"
@@ -55,7 +47,7 @@ want = ["temperatures", "energy"]
 template = "{template}"
 parameters = {{ housing_outer_diameter = "510 mm", housing_length = "140 mm", \
 shaft_diameter = "220 mm", shaft_length = "{shaft_length}", h_air = "10 W/(m**2*K)" }}
-"""
+""")
 
 
 def plain_text() -> str:
