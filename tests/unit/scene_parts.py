@@ -24,8 +24,16 @@ PAPER002_AMBIENT = '[environment]\nambient_temperature = "35 degC"\n'
 PAPER002_NETWORK = ('[network]\ntemplate = "four_node_paper002"\nparameters = '
                     '{ housing_outer_diameter = "510 mm", housing_length = "140 mm" }\n')
 
-#: the lines of a [supply] table: a 1 L/min jet at 40 degC
-JET_1LPM_40C = 'method = "jet"\nflow = "1 L/min"\ninlet_temperature = "40 degC"\n'
+#: the SKF 6304 of the input probes and fuzz regressions, named "a"
+SKF6304_A = '[[bearings]]\nname = "a"\npreset = "SKF6304"\n'
+
+#: the lines of a [supply] table: a 1 L/min jet (inlet temperature: the scene default), and
+#: the same at 40 degC
+JET_1LPM = 'method = "jet"\nflow = "1 L/min"\n'
+JET_1LPM_40C = JET_1LPM + 'inlet_temperature = "40 degC"\n'
+#: ISO VG 32 on a 1 L/min jet; the [supply] table is last, so that an inlet temperature line
+#: may follow
+VG32_JET_1LPM = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM
 #: ISO VG 32 on a 1 L/min jet at 40 degC
 VG32_JET = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM_40C
 

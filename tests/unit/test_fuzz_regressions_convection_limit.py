@@ -7,22 +7,14 @@ naming the scene parameter, above 1e6 W/(m^2 K) (ten times the top of Incropera 
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG32_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.network.conductances import H_CONVECTION_MAX, Convection
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """title = "h"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "35 degC"
+SCENE = 'title = "h"\n' + SKF6304_A + VG32_JET_1LPM + """inlet_temperature = "35 degC"
 [schedule]
 speed = "1500 rpm"
 radial_load = "1 kN"

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scene_parts import SKF6304_A, VG32_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.geometry import load_bearing
@@ -17,16 +18,7 @@ from thermobearing.measured import read_measured_file
 from thermobearing.scene import configs_dir, load_scene, loads_scene
 from thermobearing.signal_input import load_acceleration
 
-SCENE = """title = "encodings"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-inlet_temperature = "35 °C"
+SCENE = 'title = "encodings"\n' + SKF6304_A + VG32_JET_1LPM + """inlet_temperature = "35 °C"
 [schedule]
 {schedule}
 [outputs]

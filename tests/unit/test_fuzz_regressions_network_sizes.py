@@ -7,22 +7,14 @@ seven-node template is refused naming h_oil (the network check named node 'a.cag
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG32_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.network.templates import _check_dims
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """title = "size"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
-[schedule]
+SCENE = 'title = "size"\n' + SKF6304_A + VG32_JET_1LPM + """[schedule]
 speed = "1500 rpm"
 radial_load = "1 kN"
 axial_load = "0 N"

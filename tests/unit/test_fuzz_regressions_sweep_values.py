@@ -6,6 +6,7 @@ for the scene) had bare sweep numbers read in the default unit (degC) instead of
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG32_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.sweep_params import parse_set
@@ -52,8 +53,7 @@ def test_a_product_of_too_many_cases_is_refused():
     from thermobearing.sweep_params import SweepParameter
 
     scene = loads_scene(
-        'title = "t"\n[[bearings]]\nname = "a"\npreset = "SKF6304"\n[lubricant]\n'
-        'preset = "ISO_VG32"\n[supply]\nmethod = "jet"\nflow = "1 L/min"\n[schedule]\n'
+        'title = "t"\n' + SKF6304_A + VG32_JET_1LPM + '[schedule]\n'
         'speed = "1500 rpm"\nradial_load = "1 kN"\naxial_load = "0 N"\n[outputs]\n'
         'mode = "steady"\nwant = ["film"]\n')
     flows = SweepParameter("supply.flow", tuple(f"{i + 1} L/min" for i in range(200)))

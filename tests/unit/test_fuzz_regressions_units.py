@@ -6,21 +6,13 @@ reader, refused in a scene), and an upper-case unit whose lower case is the unit
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG32_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.units import quantity_unit, to_si
 
-SCENE = """
-title = "degree signs"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG32"
-[supply]
-method = "jet"
-flow = "1 L/min"
+SCENE = '\ntitle = "degree signs"\n' + SKF6304_A + VG32_JET_1LPM + """\
 inlet_temperature = "35 \u2103"
 [environment]
 ambient_temperature = "77 \u2109"
