@@ -87,3 +87,49 @@ def test_steady_temperatures_rows_name_their_operating_point():
     kin = res.tables["kinematics"].set_index("step")
     for col in ("speed [rpm]", "radial load [kN]", "axial load [kN]"):
         assert steady.set_index("step")[col].equals(kin[col])
+
+
+ROLLER_LOSSES = """title = "NU 214 element churning"
+[[bearings]]
+name = "crb"
+preset = "NU214"
+[lubricant]
+preset = "{oil}"
+[supply]
+method = "jet"
+flow = "1 L/min"
+inlet_temperature = "40 degC"
+[environment]
+ambient_temperature = "25 degC"
+[schedule]
+radial_load = "5 kN"
+axial_load = "0 kN"
+speed = "6000 rpm"
+step_duration = "1 min"
+[models]
+kinematics = "race_control"
+[outputs]
+want = ["losses"]
+"""
+
+
+def test_roller_element_churning_is_the_cited_constant_drag_coefficient_model():
+    """Paper 002 eq. 10 with a constant c_d (the drag plateau; churning_elements'
+    docstring): at the same kinematics (race control) ISO VG 100 and ISO VG 32 at 40 degC,
+    3.2x apart in viscosity, churn in the ratio of their densities only."""
+    from thermobearing.lubricant import load_lubricant
+    from thermobearing.scene import loads_scene
+
+    power, oils = {}, {}
+    for oil in ("ISO_VG32", "ISO_VG100"):
+        res = Simulation(loads_scene(ROLLER_LOSSES.format(oil=oil)), progress=False).run()
+        losses = res.tables["losses"]
+        power[oil] = float(losses.loc[losses["source"] == "churning_elements",
+                                      "power [W]"].sum())
+        oils[oil] = load_lubricant(oil)
+    eta = {k: float(v.dynamic_viscosity(313.15)) for k, v in oils.items()}
+    rho = {k: float(v.density(313.15)) for k, v in oils.items()}
+    assert eta["ISO_VG100"] / eta["ISO_VG32"] > 3.0
+    assert power["ISO_VG32"] > 100.0
+    assert power["ISO_VG100"] / power["ISO_VG32"] == pytest.approx(
+        rho["ISO_VG100"] / rho["ISO_VG32"], rel=1e-9)
