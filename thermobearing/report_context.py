@@ -307,8 +307,9 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
     ``temperatures`` not in its outputs and not steady) and for a steady case with one
     operating point (each bearing's steady oil node, :func:`_case_oil_temperatures`); for
     the others the table is empty and a note says why. Returns the table (``case``, the swept values
-    as set, ``oil [degC]``, ``this run [W]``, ``<model> [W]``, ``this run vs <model>
-    [%]``) and the notes (a model a bearing cannot be estimated with, once each)."""
+    as set, ``oil [degC]``, ``this run [W]``, ``this run M = P / omega [N mm]`` of a case
+    whose every step turns at one speed, ``<model> [W]``, ``this run vs <model> [%]``)
+    and the notes (a model a bearing cannot be estimated with, once each)."""
     from .global_friction import global_friction
     from .scene import Scene
     from .sweep_params import assign_path
@@ -375,6 +376,12 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
                                "oil [degC]": (temps[0] if len(temps) == 1 else
                                               " / ".join(f"{t:.4g}" for t in temps)),
                                "this run [W]": this}
+        # the frictional moment a catalogue quotes, M = P / omega, of a case that turns at
+        # one speed (with a stop or several speeds the protocol mean has no one omega)
+        speeds = {s.speed for s in scene.schedule.steps}
+        if (len(speeds) == 1 and next(iter(speeds)) > 0.0
+                and isinstance(this, (int, float)) and math.isfinite(this)):
+            row[TORQUE] = 1e3 * float(this) / next(iter(speeds))
         for model, label in CATALOGUE_MODELS.items():
             if not ok[model] or duration <= 0.0:
                 continue

@@ -148,7 +148,8 @@ def losses_html(losses: pd.DataFrame | None, tables: dict[str, pd.DataFrame], sc
               html_table(rl.readable(rl.shares(by_source))),
               "<h3>what the sources are</h3>", html_table(rl.glossary(losses)),
               *(f"<p class='note'>{esc(n)}</p>" for n in rl.class_notes(losses)),
-              *(f"<p class='note'>{esc(n)}</p>" for n in _rolling_notes(by_source, scene))]
+              *(f"<p class='note'>{esc(n)}</p>"
+                for n in source_notes(by_source, scene, bearings))]
     by_dest = rl.breakdown_by_destination(losses)
     parts.append("<h3>heat received by component [W]</h3>")
     if by_dest is None:
@@ -200,6 +201,73 @@ def _rolling_notes(by_source: pd.DataFrame, scene: Any) -> list[str]:
             "(kinematics = \"race_control\") rolls the elements without sliding on the "
             "raceways, so the traction law books no shear there; the sliding losses need "
             "the skidding solver (kinematics = \"skidding\")"]
+
+
+def _all_zero(frame: pd.DataFrame, col: str) -> bool:
+    """``col`` is in ``frame`` and books 0 W (to 1e-9 W) at every finite row."""
+    if col not in frame:
+        return False
+    values = pd.to_numeric(frame[col], errors="coerce").to_numpy(dtype=float)
+    values = values[np.isfinite(values)]
+    return values.size > 0 and not np.any(np.abs(values) > 1e-9)
+
+
+def _carries_thrust(frame: pd.DataFrame, scene: Any) -> bool:
+    """Some row of ``frame`` (a loss table with ``axial load [kN]``, or a sweep summary
+    with a swept ``schedule.axial_load [kN]``) or, without such a column, some step of the
+    scene has an axial load."""
+    cols = [c for c in frame.columns
+            if c == "axial load [kN]" or str(c).startswith("schedule.axial_load [")]
+    if cols:
+        values = frame[cols].apply(pd.to_numeric, errors="coerce").to_numpy(dtype=float)
+        if np.any(np.abs(values[np.isfinite(values)]) > 0.0):
+            return True
+    steps = getattr(getattr(scene, "schedule", None), "steps", None) or ()
+    return any(getattr(s, "axial_load", 0.0) for s in steps)
+
+
+def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -> list[str]:
+    """What the loss columns of ``frame`` (one ``<source> [W]`` column per heat source: the
+    breakdown by source of a run, or a sweep's summary) leave out, and why:
+
+    * a source that books 0 W at every row because of the model chain: the raceway
+      traction and the pocket friction under race control (the elements roll without
+      sliding and the cage gets no pocket force: ``heat_sources/pocket.py``), the cage
+      guide land of a cage guided on its rolling elements (no land: ``cage_guide.py``);
+      the tables showed these zeros without a word (a CRB run's cage pockets read 0 W);
+    * the outer rib of a roller bearing ribbed on both rings under an axial load: the rib
+      source models the inner rib's contact only (paper 003's geometry), so the friction
+      of the outer rib, which carries the same thrust back to the outer ring, is not in
+      the losses (``heat_sources/rib.py``, Thrust).
+
+    ``bearings``: name -> bearing object (:func:`report_context.load_scene_bearings`)."""
+    notes = list(_rolling_notes(frame, scene))
+    models = getattr(scene, "models", None) or {}
+    race_control = models.get("kinematics") == "race_control"
+    if race_control and _all_zero(frame, "pocket_friction [W]"):
+        notes.append(f"{rl.source_label('pocket_friction')}: 0 W at every step: race control "
+                     "gives the cage no pocket forces (the cage turns at the elements' "
+                     "orbital speed without a balance of its own), so the pocket friction "
+                     "books nothing; the pocket forces need the skidding solver "
+                     "(kinematics = \"skidding\")")
+    if _all_zero(frame, "cage_guide [W]"):
+        guided = [name for name, b in bearings.items()
+                  if getattr(getattr(b, "cage", None), "guidance", None) == "rolling_element"]
+        if guided and len(guided) == len(bearings):
+            notes.append(f"{rl.source_label('cage_guide')}: 0 W at every step: the cage of "
+                         f"{', '.join(guided)} is guided on its rolling elements "
+                         "(cage guidance = rolling_element), so there is no guide land to "
+                         "shear")
+    if "rib_friction [W]" in frame and _carries_thrust(frame, scene):
+        both = [name for name, b in bearings.items()
+                if getattr(b, "ribbed_ring", None) == "both"]
+        if both:
+            notes.append(f"{rl.source_label('rib_friction')} of {', '.join(both)} (ribs on "
+                         "both rings): only the inner rib's contact is modelled (paper 003's "
+                         "rib geometry); the friction of the outer rib, which carries the "
+                         "same axial load back to the outer ring, is not computed: the "
+                         "totals leave it out")
+    return notes
 
 
 def _crosscheck_html(losses: pd.DataFrame, tables: dict[str, pd.DataFrame], scene: Any,

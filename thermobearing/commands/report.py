@@ -130,12 +130,16 @@ def sweep_report(folder: Path) -> Path:
     curves = temps[:2] + [c for c in results if c.startswith("final")
                           and c.endswith(".oil [degC]")][:1]
     curves += film_curves(df, results)
+    # race control rolls the cage by construction: an over-skidding panel of zeros says
+    # nothing (a CRB sweep drew one flat line at 0 %); a note says why it is left out
+    rolls = _race_control_zero_skid(folder, df, params)
     for x in pcols:
         if df[x].nunique() < 2:
             continue  # a parameter held at one value draws no curve
         # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
-        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df]
+        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df
+              and not (c == "max over-skidding [%]" and rolls)]
         # a cage slower than epicyclic (skidding: a lightly loaded roller bearing) shows in
         # the smallest over-skidding, not in the largest, which stays near 0
         # (one-step cases have min = max: the max panel shows it already)
@@ -168,6 +172,12 @@ def sweep_report(folder: Path) -> Path:
                          f"combinations of {', '.join(rest)}; every case is in the summary")
     notes += missing_combinations(df, pcols) + flagged_cases(
         df, pcols, bearings=_bearing_count(folder / "scene.toml"))
+    notes += _source_notes(folder, df, params)
+    if rolls:
+        notes.append("over-skidding 0 % in every case: race control (kinematics = "
+                     "\"race_control\") rolls the cage at its theoretical speed by "
+                     "construction, so no what-if panel draws it; cage slip needs the "
+                     "skidding solver (kinematics = \"skidding\")")
     html = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>sweep report</title>",
             "<style>body{font-family:sans-serif;max-width:1100px;margin:auto}"
             "img{max-width:100%}table{font-size:12px;border-collapse:collapse}"
@@ -189,6 +199,7 @@ def sweep_report(folder: Path) -> Path:
             "<h2>Summary</h2>",
             "<p>the sources named in words; summary.csv has their registered names</p>",
             html_table(readable(df), max_rows=500, csv_name="summary.csv"),
+            _chain_html(folder, params),
             "</body></html>"]
     out = folder / "report.html"
     out.write_text("\n".join(html), encoding="utf-8")
@@ -369,7 +380,9 @@ def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str
             "protocol average) beside the whole-bearing estimates of the SKF four-term "
             "model and Palmgren's M0 + M1 at the same speeds, loads, lubrication method "
             "and oil temperature, averaged over the protocol in the same way "
-            "(thermobearing.global_friction). Both are catalogue-level models, fitted to "
+            "(thermobearing.global_friction), and the total of a case turning at one "
+            "speed as the frictional moment a catalogue quotes, M = P / omega. Both are "
+            "catalogue-level models, fitted to "
             "catalogue bearings in standard conditions: an order-of-magnitude check, not "
             "a reference</p>")
     path = folder / "scene.toml"
@@ -386,6 +399,81 @@ def _crosscheck_html(folder: Path, df: pd.DataFrame, records: list[dict]) -> str
         return head + f"<p class='note'>(not available: {escape(str(exc))})</p>"
     return (head + (html_table(table, max_rows=500) if not table.empty else "")
             + "".join(f"<p class='note'>{escape(n)}</p>" for n in notes))
+
+
+#: swept paths that can change the model chain or the sources a bearing runs
+_CHAIN_PATHS = ("models.", "bearings.", "outputs.")
+
+
+def _source_notes(folder: Path, df: pd.DataFrame, params: list[str]) -> list[str]:
+    """What the summary's source columns leave out and why (a source at 0 W in every case
+    by the model chain, the outer rib of a bearing ribbed on both rings:
+    :func:`report_sections.source_notes`), for the folder's base scene; none when the
+    folder has no readable base scene or the sweep changes the models or the bearings
+    (the reasons would be the base scene's, not every case's)."""
+    from ..report_context import load_scene_bearings
+    from ..report_sections import source_notes
+
+    path = folder / "scene.toml"
+    if not path.is_file() or any(p.startswith(_CHAIN_PATHS) for p in params):
+        return []
+    try:
+        scene = _folder_scene(path)
+    except InputError:
+        return []
+    bearings, _ = load_scene_bearings(scene)
+    return source_notes(df, scene, bearings)
+
+
+def _race_control_zero_skid(folder: Path, df: pd.DataFrame, params: list[str]) -> bool:
+    """The base scene runs race control (not swept) and the summary's over-skidding is 0 %
+    (to the tables' 1e-7 %) in every case."""
+    col = "max over-skidding [%]"
+    path = folder / "scene.toml"
+    if col not in df or not path.is_file() or any(p.startswith("models.") for p in params):
+        return False
+    try:
+        scene = _folder_scene(path)
+    except InputError:
+        return False
+    values = pd.to_numeric(df[col], errors="coerce").to_numpy(dtype=float)
+    values = values[np.isfinite(values)]
+    return (scene.models.get("kinematics") == "race_control" and values.size > 0
+            and bool(np.all(np.abs(values) <= 1e-7)))
+
+
+#: what a sweep folder does not keep per case, and where to get it
+NOT_KEPT = ("a sweep keeps per case the protocol means of the losses by source and the "
+            "numbers of the summary, not the heat received by each component, the validity "
+            "warnings nor the per-step tables: run one case's scene (this folder's "
+            "scene.toml with the case's values) with `thermobearing run` for them")
+
+
+def _chain_html(folder: Path, params: list[str]) -> str:
+    """'Model chain': the models the base scene runs, with the validity range each states
+    (:func:`report_sections.chain_table`, as in a run report), and what the sweep folder
+    does not keep (:data:`NOT_KEPT`); a note when the folder has no base scene or it cannot
+    be set up."""
+    from ..report_sections import chain_table, html_table
+    from ..simulation import Simulation
+
+    head = ("<h2>Model chain</h2><p>the models the base scene runs, in order, with the "
+            "validity range each states (thermobearing models FAMILY gives their "
+            "references)</p>")
+    tail = f"<p class='note'>{escape(NOT_KEPT)}</p>"
+    path = folder / "scene.toml"
+    if not path.is_file():
+        return head + "<p class='note'>(not available: the folder has no scene.toml)</p>" \
+            + tail
+    try:
+        sim = Simulation(_folder_scene(path), progress=False)
+    except InputError as exc:
+        return head + f"<p class='note'>(not available: {escape(str(exc))})</p>" + tail
+    swept = [p for p in params if p.startswith(_CHAIN_PATHS)]
+    note = (f"<p class='note'>the chain of the base scene; the swept {', '.join(swept)} "
+            "can change it from case to case</p>" if swept else "")
+    return (head + html_table(chain_table([(link.family, link.name) for link in sim.chain]))
+            + note + tail)
 
 
 def _base_scene_html(folder: Path) -> str:
