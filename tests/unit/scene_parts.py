@@ -34,6 +34,8 @@ JET_1LPM_40C = JET_1LPM + 'inlet_temperature = "40 degC"\n'
 #: ISO VG 32 on a 1 L/min jet; the [supply] table is last, so that an inlet temperature line
 #: may follow
 VG32_JET_1LPM = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM
+#: ISO VG 68 on a 1 L/min jet (the [supply] table last, as in VG32_JET_1LPM)
+VG68_JET_1LPM = '[lubricant]\npreset = "ISO_VG68"\n[supply]\n' + JET_1LPM
 #: ISO VG 32 on a 1 L/min jet at 40 degC
 VG32_JET = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM_40C
 

@@ -8,23 +8,12 @@ from __future__ import annotations
 
 import math
 
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
+
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "film beside other outputs"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
-
+SCENE = (scene_title("film beside other outputs") + "\n" + SKF6304_A + "\n" + VG68_JET_1LPM + """
 [environment]
 ambient_temperature = "40 degC"
 
@@ -44,7 +33,7 @@ want = WANT
 [network]
 template = "seven_node"
 parameters = { housing_outer_diameter = "120 mm", housing_length = "40 mm" }
-"""
+""")
 
 
 def _run(want: str):

@@ -14,6 +14,7 @@ import tomllib
 
 import pandas as pd
 import pytest
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
 
 from thermobearing.cli import main
 from thermobearing.scene import Scene
@@ -21,19 +22,7 @@ from thermobearing.simulation import Simulation
 from thermobearing.sweep import check_cases, expand, parse_set
 from thermobearing.unheated import unheated_temperature
 
-SCENE = """
-title = "jet at 80 degC, no network"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
+SCENE = (scene_title("jet at 80 degC, no network") + "\n" + SKF6304_A + "\n" + VG68_JET_1LPM + """\
 inlet_temperature = "80 degC"
 
 [environment]
@@ -46,7 +35,7 @@ steps = [{ duration = "1 min", speed = "3000 rpm", radial_load = "500 N", axial_
 [outputs]
 mode = "steady"
 want = ["film"]
-"""
+""")
 #: the same scene without an initial temperature: the runs take the inlet's
 NO_INITIAL = SCENE.replace('initial_temperature = "20 degC"\n', "")
 

@@ -6,23 +6,11 @@ for outputs that give nothing to tabulate."""
 from __future__ import annotations
 
 import pandas as pd
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
 
 from thermobearing.cli import main
 
-SCENE = """
-title = "film-only sweep"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
-
+SCENE = (scene_title("film-only sweep") + "\n" + SKF6304_A + "\n" + VG68_JET_1LPM + """
 [environment]
 ambient_temperature = "40 degC"
 
@@ -32,7 +20,7 @@ steps = [{ duration = "1 min", speed = "3000 rpm", radial_load = "500 N", axial_
 [outputs]
 mode = "steady"
 want = ["film"]
-"""
+""")
 
 
 def test_film_only_sweep_tabulates_without_the_empty_note(tmp_path, capsys):

@@ -8,31 +8,19 @@ sweep of such a setting names it before its cases run."""
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
 
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 from thermobearing.sweep import check_cases, expand, parse_set
 
-BASE = """
-title = "unused settings"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
-
+BASE = (scene_title("unused settings") + "\n" + SKF6304_A + "\n" + VG68_JET_1LPM + """
 [schedule]
 steps = [{ duration = "1 min", speed = "3000 rpm", radial_load = "1 kN", axial_load = "0 N" }]
 
 [models]
 kinematics = "race_control"
-"""
+""")
 NETWORK = """
 [network]
 template = "seven_node"

@@ -7,25 +7,14 @@ check`` says so; before, ``check`` passed and the run stopped at its first heat 
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
 
 from thermobearing.cli import main
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "option clash"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "jet"
-flow = "1 L/min"
+SCENE = (scene_title("option clash") + "\n" + SKF6304_A + "\n" + VG68_JET_1LPM + """\
 inlet_temperature = "40 degC"
 
 [schedule]
@@ -38,7 +27,7 @@ heat_source_options = {{ churning_inner_ring = {{ oil_fraction = 0.5 }} }}
 [outputs]
 mode = "steady"
 want = ["losses"]
-"""
+""")
 
 
 @pytest.mark.parametrize("kinematics", ["race_control", "skidding"])

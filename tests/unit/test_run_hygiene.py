@@ -7,6 +7,7 @@ import warnings
 
 import numpy as np
 import pytest
+from scene_parts import SKF6304_A, VG68_JET_1LPM, scene_title
 
 from thermobearing.errors import ConvergenceError
 from thermobearing.scene import loads_scene
@@ -291,16 +292,7 @@ def test_global_friction_run_names_only_the_calibrated_clearance():
                for n in Simulation(scene, progress=False).notes)
 
 
-FILM_AT_ZERO_LOAD = """
-title = "film only at zero load"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG68"
-[supply]
-method = "jet"
-flow = "1 L/min"
+FILM_AT_ZERO_LOAD = (scene_title("film only at zero load") + SKF6304_A + VG68_JET_1LPM + """\
 [schedule]
 steps = [{ duration = "1 min", speed = "3000 rpm", radial_load = "0 N", axial_load = "0 N" }]
 [models]
@@ -308,7 +300,7 @@ kinematics = "skidding"
 [outputs]
 mode = "steady"
 want = ["film"]
-"""
+""")
 
 
 def test_film_only_scene_at_zero_load_runs_and_flags_no_missing_contact():
