@@ -21,6 +21,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_parts import VG46_2LPM, scene_title
 
 from tests.unit.scene_step_heat import first_step_heat
 from thermobearing.geometry import load_bearing
@@ -34,17 +35,10 @@ BALANCED = ("raceway_traction", "ehl_rolling_resistance", "pocket_friction")
 DRAGS = ("churning_elements", "churning_cage", "churning_inner_ring", "cage_guide")
 TEMPS = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 320.0)
 
-SCENE = """
-title = "NU 214 energy booking"
-[[bearings]]
+SCENE = scene_title("NU 214 energy booking") + """[[bearings]]
 name = "de"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[schedule]
+""" + VG46_2LPM + """[schedule]
 speed = "{speed}"
 radial_load = "{load}"
 axial_load = "0 kN"

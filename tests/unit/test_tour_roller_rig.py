@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
+from scene_parts import ROOM_22C, VG46_2LPM, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.report_losses import glossary, loss_class_of
@@ -65,14 +66,7 @@ title = "CRB rig, axial load"
 name = "de"
 preset = "{bearing}"
 {overrides}
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "22 degC"
-[schedule]
+{VG46_2LPM}{ROOM_22C}[schedule]
 radial_load = "8 kN"
 step_duration = "3 min"
 speed = "3000 rpm"
@@ -170,19 +164,10 @@ def test_race_control_film_range_check_sees_only_the_loaded_rollers():
         assert low >= smallest * (1 - 1e-3)
 
 
-_STOPPED_SCENE = """
-title = "NU 214 rig, two speed steps"
-[[bearings]]
+_STOPPED_SCENE = scene_title("NU 214 rig, two speed steps") + """[[bearings]]
 name = "test"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "22 degC"
-[schedule]
+""" + VG46_2LPM + ROOM_22C + """[schedule]
 radial_load = "8 kN"
 axial_load = "0 kN"
 step_duration = "3 min"
