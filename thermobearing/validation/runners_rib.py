@@ -36,6 +36,15 @@ import numpy as np
 from ..errors import ConvergenceError, InputError, ValidityWarning
 from ..units import to_si
 from . import RUNNERS
+from .ensemble import PointEnsemble, delta_method
+
+#: the per-trajectory quantities of a coupled point kept for the ensemble statistics
+_POINT_KEYS = ("pv_left", "pv_right", "pv_contact_left", "pv_contact_right", "pv_peak_left",
+               "pv_peak_right", "slip_speed", "cost_s")
+
+#: fewest steps per spin period of a trajectory: simulate_coupled's default, the step at
+#: which the case's accuracy statements were measured (SOURCE.md)
+MIN_TRAJECTORY_STEPS = 400
 
 
 def _list(inputs: dict[str, Any], key: str, kind: str) -> list[float]:
@@ -73,6 +82,28 @@ def _pvp(row: dict[str, float]) -> float:
 def _pvc(row: dict[str, float]) -> float:
     """PV averaged over the time each face is in contact, both faces summed [Pa m/s]."""
     return row["pv_contact_left"] + row["pv_contact_right"]
+
+
+def trajectory_steps(inputs: dict[str, Any], key: str) -> list[int]:
+    """The steps per spin period of each trajectory of an unbalance point (case input
+    ``key``; K = its length): distinct whole numbers >= :data:`MIN_TRAJECTORY_STEPS`, at
+    most 32. Absent: one trajectory at the integrator's default step (the runner before the
+    ensembles)."""
+    steps = inputs.get(key, [MIN_TRAJECTORY_STEPS])
+    allowed = (f"a list of 1 to 32 distinct whole numbers of steps per spin period, each "
+               f">= {MIN_TRAJECTORY_STEPS}")
+    if (not isinstance(steps, list) or not 1 <= len(steps) <= 32
+            or any(isinstance(v, bool) or not isinstance(v, int) for v in steps)
+            or any(v < MIN_TRAJECTORY_STEPS for v in steps) or len(set(steps)) != len(steps)):
+        raise InputError(f"inputs.{key}", steps, allowed)
+    return list(steps)
+
+
+def point_of(rows: list[dict[str, float]], *, deterministic: bool) -> PointEnsemble:
+    """The :class:`~thermobearing.validation.ensemble.PointEnsemble` of one point's finished
+    runs (their :data:`_POINT_KEYS`; no runs: a point without a value)."""
+    return PointEnsemble({k: np.array([float(r[k]) for r in rows]) for k in _POINT_KEYS},
+                         deterministic=deterministic)
 
 
 @RUNNERS.register("paper003_pv_slip_trends",
@@ -132,75 +163,114 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
         return None if settle is None or mass > 0.0 else float(settle)
     base_key = (round(rd.PAPER003_BASE["speed"], 6), round(rd.PAPER003_BASE["radial_load"], 6))
 
-    failures: list[str] = []
-    nan_row = dict.fromkeys(("pv_left", "pv_right", "pv_contact_left", "pv_contact_right",
-                             "pv_peak_left", "pv_peak_right", "slip_speed", "cost_s"),
-                            math.nan)
+    # the ensembles of the chaotic (unbalance) points: one trajectory per step count
+    # (SOURCE.md "Ensembles of the chaotic points"); points without unbalance settle to a
+    # steady state and run once, at the first step count of the base ensemble
+    base_steps = trajectory_steps(inputs, "coupled_trajectories")
+    sweep_steps = trajectory_steps(inputs, "coupled_sweep_trajectories")
 
-    def failed(what: str, exc: ConvergenceError) -> dict[str, float]:
-        """A point whose coupled motion runs away on both traction paths (the model's
-        runaway regime, roller_dynamics_coupled module notes): its rows are NaN (the rows
-        that need it show no value and fail), the other points still run."""
+    failures: list[str] = []
+    failed_points: list[str] = []
+
+    def failed(what: str, exc: ConvergenceError) -> None:
+        """A trajectory whose coupled motion runs away on both traction paths (the model's
+        runaway regime, roller_dynamics_coupled module notes): left out of its point's
+        ensemble (the point's statistics are those of the trajectories that did not run
+        away, as the table retries already condition them); a point without any finished
+        trajectory has no value (the rows that need it show none and fail)."""
         failures.append(f"{what}: {exc}")
         warnings.warn(f"paper003: {what}: {exc}", ValidityWarning, stacklevel=3)
-        return dict(nan_row)
 
-    def coupled(mass: float, **rib: float) -> dict[str, float]:
+    def ensemble(what: str, mass: float, run: Any, steps: list[int]) -> PointEnsemble:
+        """The point's ensemble: ``run(n)`` -> a row of :data:`_POINT_KEYS`, once per step
+        count n of ``steps`` (mass > 0) or once at the base ensemble's first (no unbalance:
+        deterministic)."""
+        steps_list = base_steps[:1] if mass <= 0.0 else steps
+        rows = []
+        for steps in steps_list:
+            try:
+                rows.append(run(steps))
+            except ConvergenceError as exc:
+                failed(f"{what}, {steps} steps per spin period", exc)
+        if not rows:
+            failed_points.append(what)
+        return point_of(rows, deterministic=mass <= 0.0 and bool(rows))
+
+    def coupled(mass: float, steps: list[int], **rib: float) -> PointEnsemble:
         """All rollers + cage integrated (paper eqs. 18-19) at the base case."""
         m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
                            quasi_static=cache.get(base_key), rib={"slide": slide, **rib},
                            pocket_dof=pocket_dof, coupling="none")
-        try:
+
+        def run(steps: int) -> dict[str, float]:
             r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
-                                 settle=settle_for(mass), table_retries=retries)
-        except ConvergenceError as exc:
-            return failed(f"coupled base point, unbalance {mass * 1e3:g} g, {rib}", exc)
-        return {"pv_left": r.pv_left, "pv_right": r.pv_right,
-                "pv_contact_left": r.pv_contact_left, "pv_contact_right": r.pv_contact_right,
-                "pv_peak_left": r.pv_peak_left, "pv_peak_right": r.pv_peak_right,
-                "slip_speed": r.slip_speed, "cost_s": r.cost_s}
+                                 steps_per_period=steps, settle=settle_for(mass),
+                                 table_retries=retries)
+            return {k: getattr(r, k) for k in _POINT_KEYS}
+
+        return ensemble(f"coupled base point, unbalance {mass * 1e3:g} g, {rib}", mass, run,
+                        steps)
 
     def coupled_sweep(parameter: str, values: list[float],
-                      masses: list[float] | None = None) -> list[dict]:
-        rows = []
+                      masses: list[float] | None = None) -> list[PointEnsemble]:
+        points = []
         for value in values:  # one point at a time: a runaway point leaves the others
             for mass in ([m_hi] if masses is None else masses):
-                try:
-                    rows.extend(rd.pv_slip_map(
+                def run(steps: int, value: float = value, mass: float = mass) -> dict:
+                    return rd.pv_slip_map(
                         bearing, lub, parameter, [value], [mass], temperature=temperature,
                         cache=cache, slide=slide, pocket_dof=pocket_dof, model="coupled",
                         coupling="none",
                         coupled_options={"n_orbits": orbits, "warmup_orbits": warm,
+                                         "steps_per_period": steps,
                                          "settle": settle_for(mass),
-                                         "table_retries": retries}))
-                except ConvergenceError as exc:
-                    rows.append(failed(f"coupled {parameter} = {value:g} (SI), unbalance "
-                                       f"{mass * 1e3:g} g", exc))
-        return rows
+                                         "table_retries": retries})[0]
 
-    def unbalance_rows(base: list[dict], prefix: str) -> None:
-        out[prefix + "pv_ratio_unbalance_high_vs_low"] = _pv(base[2]) / _pv(base[1])
-        out[prefix + "slip_ratio_unbalance_high_vs_low"] = (base[2]["slip_speed"]
-                                                            / base[1]["slip_speed"])
-        out[prefix + "slip_ratio_unbalance_high_vs_none"] = (base[2]["slip_speed"]
-                                                             / base[0]["slip_speed"])
-        out[prefix + "pv_right_over_left_high_unbalance"] = (base[2]["pv_right"]
-                                                             / base[2]["pv_left"])
-        out[prefix + "pv_right_over_left_low_unbalance"] = (base[1]["pv_right"]
-                                                            / base[1]["pv_left"])
-        out[prefix + "pv_contact_ratio_unbalance_high_vs_low"] = (_pvc(base[2])
-                                                                  / _pvc(base[1]))
-        out[prefix + "pv_contact_right_over_left_high_unbalance"] = (
-            base[2]["pv_contact_right"] / base[2]["pv_contact_left"])
-        out[prefix + "base_pv_high_unbalance"] = _pv(base[2]) / 2.0
-        out[prefix + "base_slip_speed_high_unbalance"] = base[2]["slip_speed"]
+                points.append(ensemble(f"coupled {parameter} = {value:g} (SI), unbalance "
+                                       f"{mass * 1e3:g} g", mass, run, sweep_steps))
+        return points
+
+    def det(rows: list[dict]) -> list[PointEnsemble]:
+        """The reduced model's rows as one-run deterministic points."""
+        return [point_of([r], deterministic=True) for r in rows]
+
+    def put(name: str, f: Any, points: list[PointEnsemble], stderr: bool) -> None:
+        """Row ``name`` = f(the points' ensemble means); with ``stderr`` also
+        ``name + "_stderr"``, its first-order standard error (ensemble module)."""
+        value, se = delta_method(f, points)
+        out[name] = value
+        if stderr:
+            out[name + "_stderr"] = se
+
+    def unbalance_rows(base: list[PointEnsemble], prefix: str) -> None:
+        se = prefix == ""
+        p0, p1, p2 = base
+        put(prefix + "pv_ratio_unbalance_high_vs_low", lambda p: _pv(p[0]) / _pv(p[1]),
+            [p2, p1], se)
+        put(prefix + "slip_ratio_unbalance_high_vs_low",
+            lambda p: p[0]["slip_speed"] / p[1]["slip_speed"], [p2, p1], se)
+        put(prefix + "slip_ratio_unbalance_high_vs_none",
+            lambda p: p[0]["slip_speed"] / p[1]["slip_speed"], [p2, p0], se)
+
+        def right_left(p: list[dict[str, float]]) -> float:
+            return p[0]["pv_right"] / p[0]["pv_left"]
+
+        put(prefix + "pv_right_over_left_high_unbalance", right_left, [p2], se)
+        put(prefix + "pv_right_over_left_low_unbalance", right_left, [p1], se)
+        put(prefix + "pv_contact_ratio_unbalance_high_vs_low",
+            lambda p: _pvc(p[0]) / _pvc(p[1]), [p2, p1], False)
+        put(prefix + "pv_contact_right_over_left_high_unbalance",
+            lambda p: p[0]["pv_contact_right"] / p[0]["pv_contact_left"], [p2], False)
+        put(prefix + "base_pv_high_unbalance", lambda p: _pv(p[0]) / 2.0, [p2], se)
+        put(prefix + "base_slip_speed_high_unbalance", lambda p: p[0]["slip_speed"], [p2],
+            se)
 
     # unbalance at the base case (Fig. 7 at 3000 N): PV and slip grow, unbalance side larger;
     # gated rows from the coupled all-roller + cage integration, the reduced model's beside
     reduced_base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
-    unbalance_rows(reduced_base, "reduced_")
-    coupled_base = [coupled(mass) for mass in (0.0, m_lo, m_hi)]
+    unbalance_rows(det(reduced_base), "reduced_")
+    coupled_base = [coupled(mass, base_steps) for mass in (0.0, m_lo, m_hi)]
     unbalance_rows(coupled_base, "")
 
     # radial load (Fig. 7, no unbalance): slip falls and flattens above 5000 N; speed
@@ -208,109 +278,122 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     loads = _list(inputs, "radial_loads", "force")
     i5 = int(np.argmin(np.abs(np.asarray(loads) - 5000.0)))
     speeds = _list(inputs, "speeds", "angular_speed")
-    for prefix, rows_l, rows_s in (
-            ("reduced_", sweep("radial_load", loads, [0.0]), reduced_or_none("speed", speeds)),
-            ("", coupled_sweep("radial_load", loads, [0.0]),
-             coupled_sweep("speed", speeds))):
-        s = [r["slip_speed"] for r in rows_l]
-        out[prefix + "slip_ratio_load_low_vs_5000N"] = s[0] / s[i5]
-        out[prefix + "slip_flattening_above_5000N"] = (abs(s[-1] - s[i5])
-                                                       / max(abs(s[0] - s[i5]), 1e-12))
-        if rows_s is not None:
-            out[prefix + "pv_ratio_speed_high_vs_low"] = (_pv(rows_s[-1])
-                                                          / max(_pv(rows_s[0]), 1e-30))
-            out[prefix + "slip_ratio_speed_high_vs_low"] = (rows_s[-1]["slip_speed"]
-                                                            / rows_s[0]["slip_speed"])
+    rs = reduced_or_none("speed", speeds)
+    for prefix, pts_l, pts_s in (
+            ("reduced_", det(sweep("radial_load", loads, [0.0])),
+             None if rs is None else det(rs)),
+            ("", coupled_sweep("radial_load", loads, [0.0]), coupled_sweep("speed", speeds))):
+        se = prefix == ""
+        put(prefix + "slip_ratio_load_low_vs_5000N",
+            lambda p: p[0]["slip_speed"] / p[i5]["slip_speed"], pts_l, False)
+        put(prefix + "slip_flattening_above_5000N",
+            lambda p: (abs(p[-1]["slip_speed"] - p[i5]["slip_speed"])
+                       / max(abs(p[0]["slip_speed"] - p[i5]["slip_speed"]), 1e-12)),
+            pts_l, False)
+        if pts_s is not None:
+            put(prefix + "pv_ratio_speed_high_vs_low",
+                lambda p: _pv(p[-1]) / max(_pv(p[0]), 1e-30), pts_s, se)
+            put(prefix + "slip_ratio_speed_high_vs_low",
+                lambda p: p[-1]["slip_speed"] / p[0]["slip_speed"], pts_s, se)
 
     # axial clearance (Fig. 9): PV rises, slip falls, both flatten above 0.05 mm (gated rows
     # from the coupled integration, the reduced model's beside)
     ca = _list(inputs, "axial_clearances", "length")
     j5 = int(np.argmin(np.abs(np.asarray(ca) - 0.05e-3)))
-    for prefix, rows in (("reduced_", reduced_or_none("axial_clearance", ca)),
-                         ("", [coupled(m_hi, axial_clearance=v) for v in ca])):
-        if rows is None:
+    ra = reduced_or_none("axial_clearance", ca)
+    for prefix, pts in (("reduced_", None if ra is None else det(ra)),
+                        ("", [coupled(m_hi, sweep_steps, axial_clearance=v) for v in ca])):
+        if pts is None:
             continue
-        pv = [_pv(r) for r in rows]
-        s = [r["slip_speed"] for r in rows]
-        out[prefix + "pv_ratio_axial_clearance_0.05_vs_min"] = pv[j5] / pv[0]
-        out[prefix + "slip_ratio_axial_clearance_min_vs_0.05"] = s[0] / s[j5]
-        out[prefix + "pv_flattening_above_0.05mm"] = (abs(pv[-1] - pv[j5])
-                                                      / max(abs(pv[j5] - pv[0]), 1e-12))
-        pvc = [_pvc(r) for r in rows]
-        out[prefix + "pv_contact_ratio_axial_clearance_0.05_vs_min"] = pvc[j5] / pvc[0]
-        out[prefix + "pv_contact_flattening_above_0.05mm"] = (
-            abs(pvc[-1] - pvc[j5]) / max(abs(pvc[j5] - pvc[0]), 1e-12))
-        pvp = [_pvp(r) for r in rows]
-        out[prefix + "pv_peak_ratio_axial_clearance_0.05_vs_min"] = pvp[j5] / pvp[0]
-        out[prefix + "pv_peak_flattening_above_0.05mm"] = (
-            abs(pvp[-1] - pvp[j5]) / max(abs(pvp[j5] - pvp[0]), 1e-12))
+        se = prefix == ""
+        for name, stat in (("pv", _pv), ("pv_contact", _pvc), ("pv_peak", _pvp)):
+            put(f"{prefix}{name}_ratio_axial_clearance_0.05_vs_min",
+                lambda p, stat=stat: stat(p[j5]) / stat(p[0]), pts, se and name == "pv")
+            put(f"{prefix}{name}_flattening_above_0.05mm",
+                lambda p, stat=stat: (abs(stat(p[-1]) - stat(p[j5]))
+                                      / max(abs(stat(p[j5]) - stat(p[0])), 1e-12)),
+                pts, se and name == "pv")
+        put(prefix + "slip_ratio_axial_clearance_min_vs_0.05",
+            lambda p: p[0]["slip_speed"] / p[j5]["slip_speed"], pts, se)
 
     # sensitivity (report): the inner ring free axially (paper 003 eq. 20 line 1) over the
     # first, 0.05 mm and last axial clearances
-    ring_rows = []
+    ring_points = []
     for v in (ca[0], ca[j5], ca[-1]):
         mr = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
                             rd.PAPER003_BASE["radial_load"], m_hi, temperature=temperature,
                             quasi_static=cache.get(base_key),
                             rib={"slide": slide, "axial_clearance": v},
                             pocket_dof=pocket_dof, coupling="none")
-        try:
+
+        def run_ring(steps: int, mr: Any = mr) -> dict[str, float]:
             r = simulate_coupled(mr, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
-                                 ring_axial=True, table_retries=retries)
-            ring_rows.append({"pv_left": r.pv_left, "pv_right": r.pv_right,
-                              "slip_speed": r.slip_speed})
-        except ConvergenceError as exc:
-            ring_rows.append(failed(f"coupled, free inner ring, axial clearance {v:g} m", exc))
-    out["ring_axial_pv_ratio_axial_clearance_0.05_vs_min"] = _pv(ring_rows[1]) / _pv(
-        ring_rows[0])
-    out["ring_axial_slip_ratio_axial_clearance_min_vs_0.05"] = (ring_rows[0]["slip_speed"]
-                                                                / ring_rows[1]["slip_speed"])
+                                 steps_per_period=steps, ring_axial=True,
+                                 table_retries=retries)
+            return {k: getattr(r, k) for k in _POINT_KEYS}
+
+        ring_points.append(ensemble(f"coupled, free inner ring, axial clearance {v:g} m",
+                                    m_hi, run_ring, sweep_steps))
+    put("ring_axial_pv_ratio_axial_clearance_0.05_vs_min", lambda p: _pv(p[1]) / _pv(p[0]),
+        ring_points, False)
+    put("ring_axial_slip_ratio_axial_clearance_min_vs_0.05",
+        lambda p: p[0]["slip_speed"] / p[1]["slip_speed"], ring_points, False)
 
     # pocket clearance (Fig. 10): both rise, flatten above ~0.35 mm (coupled gated, reduced
     # beside)
     cp = _list(inputs, "pocket_clearances", "length")
     k35 = int(np.argmin(np.abs(np.asarray(cp) - 0.35e-3)))
-    for prefix, rows in (("reduced_", reduced_or_none("pocket_clearance", cp)),
-                         ("", coupled_sweep("pocket_clearance", cp))):
-        if rows is None:
+    rp = reduced_or_none("pocket_clearance", cp)
+    for prefix, pts in (("reduced_", None if rp is None else det(rp)),
+                        ("", coupled_sweep("pocket_clearance", cp))):
+        if pts is None:
             continue
-        pv = [_pv(r) for r in rows]
-        s = [r["slip_speed"] for r in rows]
-        out[prefix + "pv_ratio_pocket_0.35_vs_min"] = pv[k35] / pv[0]
-        out[prefix + "slip_ratio_pocket_0.35_vs_min"] = s[k35] / s[0]
-        out[prefix + "pv_flattening_above_0.35mm"] = (abs(pv[-1] - pv[k35])
-                                                      / max(abs(pv[k35] - pv[0]), 1e-12))
+        se = prefix == ""
+        put(prefix + "pv_ratio_pocket_0.35_vs_min", lambda p: _pv(p[k35]) / _pv(p[0]), pts,
+            se)
+        put(prefix + "slip_ratio_pocket_0.35_vs_min",
+            lambda p: p[k35]["slip_speed"] / p[0]["slip_speed"], pts, se)
+        put(prefix + "pv_flattening_above_0.35mm",
+            lambda p: (abs(_pv(p[-1]) - _pv(p[k35]))
+                       / max(abs(_pv(p[k35]) - _pv(p[0])), 1e-12)), pts, se)
 
     # rib angle (Fig. 11) and crown radius (Fig. 12): PV minima, slip rising (coupled gated,
     # reduced beside)
     for key, par, kind in (("rib_angles", "rib_angle", "angle"),
                            ("crown_radii", "crown_radius", "length")):
         vals = _list(inputs, key, kind)
-        for prefix, rows in (("reduced_", reduced_or_none(par, vals)),
-                             ("", coupled_sweep(par, vals))):
-            if rows is None:
+        rr = reduced_or_none(par, vals)
+        for prefix, pts in (("reduced_", None if rr is None else det(rr)),
+                            ("", coupled_sweep(par, vals))):
+            if pts is None:
                 continue
-            pv = [_pv(r) for r in rows]
-            out[f"{prefix}pv_minimum_{par}"] = parabolic_minimum(vals, pv)
-            out[f"{prefix}pv_contact_minimum_{par}"] = parabolic_minimum(
-                vals, [_pvc(r) for r in rows])
-            out[f"{prefix}pv_peak_minimum_{par}"] = parabolic_minimum(
-                vals, [_pvp(r) for r in rows])
-            out[f"{prefix}slip_ratio_{par}_last_vs_first"] = (rows[-1]["slip_speed"]
-                                                              / rows[0]["slip_speed"])
+            for name, stat in (("pv", _pv), ("pv_contact", _pvc), ("pv_peak", _pvp)):
+                row = f"{prefix}{name}_minimum_{par}"
+                put(row, lambda p, stat=stat, x=vals: parabolic_minimum(
+                    x, [stat(r) for r in p]),
+                    pts, prefix == "" and name == "pv")
+                if row + "_stderr" in out and out[row] in (vals[0], vals[-1]):
+                    # the minimum at a sweep end is that sample (no vertex): no local
+                    # sensitivity to propagate, its standard error is not defined
+                    out[row + "_stderr"] = math.nan
+            put(f"{prefix}slip_ratio_{par}_last_vs_first",
+                lambda p: p[-1]["slip_speed"] / p[0]["slip_speed"], pts, False)
         # sensitivity: every roller at its pure-rolling spin (SOURCE.md, point 3)
         rows = sweep(par, vals, [m_hi], spin="rolling")
         out[f"pv_minimum_{par}_rolling_spin"] = parabolic_minimum(vals, [_pv(r) for r in rows])
 
     # cost of one base-case point: coupled (all rollers + cage, the "full" model of the
-    # 10 % requirement), one-roller full (prescribed spins) and reduced
+    # 10 % requirement; CPU per trajectory), one-roller full (prescribed spins) and reduced
     m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
                        m_hi, temperature=temperature, quasi_static=cache.get(base_key),
                        rib={"slide": slide}, pocket_dof=pocket_dof)
     full = rd.simulate_full(m)
     red = rd.simulate_reduced(m)
-    cpl = coupled_base[2]
-    out["coupled_points_failed"] = float(len(failures))
+    cpl = coupled_base[2].mean()
+    out["coupled_points_failed"] = float(len(failed_points))
+    out["coupled_trajectories_failed"] = float(len(failures))
+    out["coupled_trajectories_per_point"] = float(len(base_steps))
+    out["coupled_sweep_trajectories_per_point"] = float(len(sweep_steps))
     out["cost_coupled_s"] = cpl["cost_s"]
     out["cost_full_s"] = full.cost_s
     out["cost_reduced_s"] = red.cost_s
