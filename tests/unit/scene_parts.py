@@ -26,6 +26,19 @@ PAPER002_NETWORK = ('[network]\ntemplate = "four_node_paper002"\nparameters = '
 
 #: the SKF 6304 of the input probes and fuzz regressions, named "a"
 SKF6304_A = '[[bearings]]\nname = "a"\npreset = "SKF6304"\n'
+#: a QJ1044 named "a"
+QJ1044_A = '[[bearings]]\nname = "a"\npreset = "QJ1044"\n'
+
+#: the oil of scene-fuzz case 17 (scripts/fuzz_scenes.py, L0 rung): ISO VG 68 circulated at
+#: 8.67869 L/min in 112.6 degC air
+FUZZ17_OIL = ('[lubricant]\npreset = "ISO_VG68"\n'
+              '[supply]\nmethod = "circulation"\nflow = "8.67869 L/min"\n'
+              '[environment]\nambient_temperature = "112.6 degC"\n')
+#: the global-friction model alone (no kinematics), the L0 rung
+GLOBAL_FRICTION_ONLY = '[models]\nkinematics = "none"\nheat_sources = ["global_friction"]\n'
+#: ISO VG 46 on a 5 L/min jet at 35 degC
+VG46_JET_5LPM = ('[lubricant]\npreset = "ISO_VG46"\n'
+                 '[supply]\nmethod = "jet"\nflow = "5 L/min"\ninlet_temperature = "35 degC"\n')
 
 #: the lines of a [supply] table: a 1 L/min jet (inlet temperature: the scene default), and
 #: the same at 40 degC
@@ -34,6 +47,8 @@ JET_1LPM_40C = JET_1LPM + 'inlet_temperature = "40 degC"\n'
 #: ISO VG 32 on a 1 L/min jet; the [supply] table is last, so that an inlet temperature line
 #: may follow
 VG32_JET_1LPM = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM
+#: ISO VG 46 on a 1 L/min jet (inlet temperature: the scene default)
+VG46_JET_1LPM = '[lubricant]\npreset = "ISO_VG46"\n[supply]\n' + JET_1LPM
 #: ISO VG 68 on a 1 L/min jet (the [supply] table last, as in VG32_JET_1LPM)
 VG68_JET_1LPM = '[lubricant]\npreset = "ISO_VG68"\n[supply]\n' + JET_1LPM
 #: ISO VG 32 on a 1 L/min jet at 40 degC

@@ -5,6 +5,7 @@ word; a bearing named ``""`` or ``{}`` loaded, its nodes then ``.oil`` / ``{}.oi
 from __future__ import annotations
 
 import pytest
+from scene_parts import VG46_JET_1LPM
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
@@ -15,12 +16,7 @@ title = "probe"
 [[bearings]]
 {name}
 preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "1 L/min"
-[schedule]
+""" + VG46_JET_1LPM + """[schedule]
 speed = "3000 rpm"
 radial_load = "1 kN"
 axial_load = "0 kN"

@@ -6,6 +6,7 @@ gives the catalogue C0 as a global_friction option, and the refusal names that o
 from __future__ import annotations
 
 import pytest
+from scene_parts import FUZZ17_OIL, GLOBAL_FRICTION_ONLY, SKF6304_A, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.geometry import load_bearing
@@ -14,38 +15,20 @@ from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
 # the fuzz reproducer, cut to one step
-SCENE = """
-title = "fuzz case: L0 rung, deep-groove bearing with axial load"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "circulation"
-flow = "8.67869 L/min"
-
-[environment]
-ambient_temperature = "112.6 degC"
-
+SCENE = (scene_title("fuzz case: L0 rung, deep-groove bearing with axial load") + "\n"
+         + SKF6304_A + "\n" + FUZZ17_OIL + """
 [schedule]
 speed = "844.329 rpm"
 radial_load = "0.00252284 N"
 axial_load = "343.78 N"
 step_duration = "17.8765 s"
 
-[models]
-kinematics = "none"
-heat_sources = ["global_friction"]
-{options}
+""" + GLOBAL_FRICTION_ONLY + """{options}
 
 [outputs]
 mode = "steady"
 want = ["losses"]
-"""
+""")
 
 
 def _run(options: str):

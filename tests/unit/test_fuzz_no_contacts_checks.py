@@ -8,25 +8,12 @@ from __future__ import annotations
 
 import math
 
+from scene_parts import FUZZ17_OIL, GLOBAL_FRICTION_ONLY, SKF6304_A, scene_title
+
 from thermobearing.simulation import Simulation, summarize_scene
 
-SCENE = """
-title = "fuzz case 17: L0 rung, two ball bearings"
-
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-
-[lubricant]
-preset = "ISO_VG68"
-
-[supply]
-method = "circulation"
-flow = "8.67869 L/min"
-
-[environment]
-ambient_temperature = "112.6 degC"
-
+SCENE = (scene_title("fuzz case 17: L0 rung, two ball bearings") + "\n" + SKF6304_A + "\n"
+         + FUZZ17_OIL + """
 [schedule]
 steps = [
   { speed = "844.329 rpm", radial_load = "0.00252284 N", axial_load = "343.78 N" },
@@ -34,15 +21,12 @@ steps = [
 ]
 step_duration = "10 s"
 
-[models]
-kinematics = "none"
-heat_sources = ["global_friction"]
-heat_source_options = { global_friction = { model = "palmgren" } }
+""" + GLOBAL_FRICTION_ONLY + """heat_source_options = { global_friction = { model = "palmgren" } }
 
 [outputs]
 mode = "steady"
 want = ["losses"]
-"""
+""")
 
 
 def test_no_contacts_state_is_not_checked_as_zero_pressure():

@@ -5,25 +5,13 @@ named only the node, no scene field; scene fuzzing)."""
 from __future__ import annotations
 
 import pytest
+from scene_parts import GLOBAL_FRICTION_ONLY, QJ1044_A, VG46_JET_5LPM, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "isolated"
-[[bearings]]
-name = "a"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "5 L/min"
-inlet_temperature = "35 degC"
-[models]
-kinematics = "none"
-heat_sources = ["global_friction"]
+SCENE = scene_title("isolated") + QJ1044_A + VG46_JET_5LPM + GLOBAL_FRICTION_ONLY + """\
 [schedule]
 steps = [{ duration = "1 min", speed = "1800 rpm", radial_load = "1 kN", axial_load = "10 kN" }]
 [outputs]

@@ -13,27 +13,15 @@ import tomllib
 import numpy as np
 import pandas as pd
 import pytest
+from scene_parts import GLOBAL_FRICTION_ONLY, QJ1044_A, VG46_JET_5LPM, scene_title
 
 from thermobearing.scene import Scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "global friction transient"
-[[bearings]]
-name = "a"
-preset = "QJ1044"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "5 L/min"
-inlet_temperature = "35 degC"
+SCENE = scene_title("global friction transient") + QJ1044_A + VG46_JET_5LPM + """\
 [environment]
 ambient_temperature = "20 degC"
-[models]
-kinematics = "none"
-heat_sources = ["global_friction"]
-[schedule]
+""" + GLOBAL_FRICTION_ONLY + """[schedule]
 steps = [{ duration = "20 min", speed = "1800 rpm", radial_load = "1 kN", axial_load = "10 kN" },
          { duration = "20 min", speed = "3000 rpm", radial_load = "1 kN", axial_load = "20 kN" }]
 [outputs]

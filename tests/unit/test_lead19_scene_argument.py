@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from scene_parts import SKF6304_A, VG46_JET_1LPM, scene_title
 
 from thermobearing.errors import InputError, UnknownNameError
 from thermobearing.scene import load_scene
@@ -41,17 +42,7 @@ def test_misspelt_network_material_names_the_scene_parameter():
     from thermobearing.coupled import build_network
     from thermobearing.scene import loads_scene
 
-    text = """
-title = "probe"
-[[bearings]]
-name = "a"
-preset = "SKF6304"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "1 L/min"
-[schedule]
+    text = scene_title("probe") + SKF6304_A + VG46_JET_1LPM + """[schedule]
 speed = "3000 rpm"
 radial_load = "1 kN"
 axial_load = "0 kN"
