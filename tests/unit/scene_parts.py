@@ -54,6 +54,9 @@ VG68_JET_1LPM = '[lubricant]\npreset = "ISO_VG68"\n[supply]\n' + JET_1LPM
 #: ISO VG 32 on a 1 L/min jet at 40 degC
 VG32_JET = '[lubricant]\npreset = "ISO_VG32"\n[supply]\n' + JET_1LPM_40C
 
+#: ISO VG 46 on a 2 L/min jet at 40 degC
+VG46_JET_2LPM = ('[lubricant]\npreset = "ISO_VG46"\n'
+                 '[supply]\nmethod = "jet"\nflow = "2 L/min"\ninlet_temperature = "40 degC"\n')
 #: ISO VG 46, 2 L/min at 40 degC (no method: the scene default)
 VG46_2LPM = ('[lubricant]\npreset = "ISO_VG46"\n'
              '[supply]\nflow = "2 L/min"\ninlet_temperature = "40 degC"\n')

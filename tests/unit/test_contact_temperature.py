@@ -7,7 +7,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scene_parts import PAPER002_OIL, QJ1044_DE, RACE_CONTROL, scene_title
+from scene_parts import (
+    PAPER002_OIL,
+    QJ1044_DE,
+    RACE_CONTROL,
+    ROOM_22C,
+    VG46_JET_2LPM,
+    scene_title,
+)
 
 from thermobearing import simulation_tables
 from thermobearing.coupled import RUNAWAY_TEMPERATURE
@@ -119,15 +126,7 @@ title = "NU 214 fast run-up"
 [[bearings]]
 name = "de"
 preset = "NU214"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
-ambient_temperature = "22 degC"
-[schedule]
+""" + VG46_JET_2LPM + ROOM_22C + """[schedule]
 radial_load = "8 kN"
 axial_load = "0 kN"
 steps = [{steps}]

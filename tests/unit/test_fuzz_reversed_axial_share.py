@@ -7,6 +7,7 @@ tables keep its sign; an angular-contact bearing refuses it before the run, nami
 from __future__ import annotations
 
 import pytest
+from scene_parts import VG46_JET_2LPM
 
 from thermobearing.errors import InputError
 from thermobearing.scene import loads_scene
@@ -21,13 +22,7 @@ preset = "{a}"
 name = "b"
 preset = "{b}"
 load_share = {{ radial = 1.0, axial = -1.0 }}
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "2 L/min"
-inlet_temperature = "40 degC"
-[environment]
+""" + VG46_JET_2LPM + """[environment]
 ambient_temperature = "40 degC"
 [schedule]
 steps = [{{ speed = "3000 rpm", radial_load = "1 kN", axial_load = "1.5 kN", duration = "1 min" }}]

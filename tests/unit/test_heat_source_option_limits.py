@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 import pytest
+from scene_parts import PAPER002_AMBIENT, QJ1044_DE, scene_title
 
 from thermobearing.errors import InputError
 from thermobearing.heat_sources import HEAT_SOURCES
@@ -20,20 +21,13 @@ from thermobearing.registry import Interval, Registry
 from thermobearing.scene import loads_scene
 from thermobearing.simulation import Simulation
 
-SCENE = """
-title = "option limits"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[lubricant]
+SCENE = scene_title("option limits") + QJ1044_DE + """[lubricant]
 preset = "ISO_VG46"
 [supply]
 method = "jet"
 flow = "15 L/min"
 inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-[schedule]
+""" + PAPER002_AMBIENT + """[schedule]
 speed = "1800 rpm"
 radial_load = "1 kN"
 axial_load = "10 kN"

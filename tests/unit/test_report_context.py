@@ -9,6 +9,7 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from scene_parts import PAPER002_AMBIENT, PAPER002_JET, QJ1044_DE, scene_title
 
 from thermobearing.global_friction import global_friction
 from thermobearing.report_context import (
@@ -23,23 +24,10 @@ from thermobearing.report_context import (
 from thermobearing.report_losses import network_heat_check
 from thermobearing.scene import loads_scene
 
-_SCENE = """
-title = "t"
-[[bearings]]
-name = "de"
-preset = "QJ1044"
-[[bearings]]
+_SCENE = scene_title("t") + QJ1044_DE + """[[bearings]]
 name = "crb"
 preset = "CRB_50x75x16"
-[lubricant]
-preset = "ISO_VG46"
-[supply]
-method = "jet"
-flow = "33 L/min"
-inlet_temperature = "35 degC"
-[environment]
-ambient_temperature = "35 degC"
-initial_temperature = "30 degC"
+""" + PAPER002_JET + PAPER002_AMBIENT + """initial_temperature = "30 degC"
 [schedule]
 radial_load = "1 kN"
 axial_load = "10 kN"

@@ -9,25 +9,18 @@ from __future__ import annotations
 import textwrap
 
 import pytest
+from scene_parts import PAPER002_AMBIENT, PAPER002_JET, scene_title
 
 from thermobearing.network import oil_capacity_rate
 from thermobearing.scene import load_scene, loads_scene
 from thermobearing.simulation import Simulation, summarize_scene
 
 #: one steady operating point of the default rig (one QJ1044, 1800 r/min, 20 kN axial)
-STEADY_RIG = textwrap.dedent("""
-    title = "QJ1044 rig, one steady point"
+STEADY_RIG = scene_title("QJ1044 rig, one steady point") + textwrap.dedent("""\
     [[bearings]]
     name = "drive_end"
     preset = "QJ1044"
-    [lubricant]
-    preset = "ISO_VG46"
-    [supply]
-    method = "jet"
-    flow = "33 L/min"
-    inlet_temperature = "35 degC"
-    [environment]
-    ambient_temperature = "35 degC"
+    """) + PAPER002_JET + PAPER002_AMBIENT + textwrap.dedent("""\
     [schedule]
     speed = "1800 rpm"
     radial_load = "1 kN"
