@@ -7,6 +7,9 @@ it (schedule, models, outputs)."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from typing import Any
+
 #: the paper 002 rig's bearing (QJ1044), named "de" (drive end) and "nde" (the second of a
 #: pair on one shaft)
 QJ1044_DE = '[[bearings]]\nname = "de"\npreset = "QJ1044"\n'
@@ -75,3 +78,15 @@ RACE_CONTROL = '[models]\nkinematics = "race_control"\n'
 def scene_title(text: str) -> str:
     """The scene's title line (after a newline, as the tests' scene texts start)."""
     return f'\ntitle = "{text}"\n'
+
+
+def scene_strings(doc: Any) -> Iterator[str]:
+    """Every string value in a parsed scene document (tables, arrays, nested), depth first."""
+    if isinstance(doc, dict):
+        for v in doc.values():
+            yield from scene_strings(v)
+    elif isinstance(doc, list):
+        for v in doc:
+            yield from scene_strings(v)
+    elif isinstance(doc, str):
+        yield doc

@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from scene_parts import scene_strings
 
 from thermobearing.errors import InputError
 from thermobearing.scene import dumps_toml, loads_scene
@@ -65,21 +66,10 @@ def test_odd_spellings_load_to_the_same_si_values(fuzz, tmp_path):
             assert fuzz.si_mismatch(plain, spelled) is None
             assert fuzz.first_difference(spelled, loads_scene(spelled.to_toml(),
                                                               base_dir=ROOT)) is None
-            units |= {fuzz._NUM_UNIT.match(v).group(2) for v in _strings(odd)
+            units |= {fuzz._NUM_UNIT.match(v).group(2) for v in scene_strings(odd)
                       if fuzz._NUM_UNIT.match(v)}
     assert {"°C", "kilonewton", "rev/min", "µm"} & units
     assert len(units & {u for opts in fuzz.ODD_SPELLINGS.values() for u, _, _ in opts}) >= 8
-
-
-def _strings(doc):
-    if isinstance(doc, dict):
-        for v in doc.values():
-            yield from _strings(v)
-    elif isinstance(doc, list):
-        for v in doc:
-            yield from _strings(v)
-    elif isinstance(doc, str):
-        yield doc
 
 
 def test_number_forms_read_back(fuzz):

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from scene_parts import scene_strings
 
 from thermobearing.scene import dumps_toml, loads_scene
 
@@ -30,7 +31,7 @@ def test_respelled_scenes_load_to_the_same_si_values(fuzz, tmp_path):
     for doc, _ in _scenes(fuzz, tmp_path, 21, 40):
         plain = loads_scene(dumps_toml(doc), base_dir=ROOT)
         other = fuzz.respell(rng, doc, share=1.0)
-        spelled_units.update(v.split()[1] for v in _strings(other) if fuzz._QTY.match(v))
+        spelled_units.update(v.split()[1] for v in scene_strings(other) if fuzz._QTY.match(v))
         assert fuzz.si_mismatch(plain, loads_scene(dumps_toml(other), base_dir=ROOT)) is None
     # the rewrite did reach the other spellings (not a test of nothing)
     assert {"K", "degF", "lbf", "rad/s", "krpm", "inch"} <= spelled_units
@@ -50,17 +51,6 @@ def test_first_difference_names_the_field(fuzz, tmp_path):
     other = loads_scene(dumps_toml(doc), base_dir=ROOT)
     assert fuzz.first_difference(scene, other).startswith(
         "scene.environment.ambient_temperature")
-
-
-def _strings(doc):
-    if isinstance(doc, dict):
-        for v in doc.values():
-            yield from _strings(v)
-    elif isinstance(doc, list):
-        for v in doc:
-            yield from _strings(v)
-    elif isinstance(doc, str):
-        yield doc
 
 
 def test_protocol_files_read_to_the_steps_they_were_written_from(fuzz, tmp_path):
