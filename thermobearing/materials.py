@@ -229,13 +229,10 @@ PAPER001_STEEL = Material(
     "E = 218 GPa, nu = 0.3, rho = 7870 kg/m^3, c = 460 J/(kg degC), k = 15 W/(m degC)",
 )
 
-PAPER001_CAGE = Material(
+PAPER001_CAGE = replace(
+    PAPER001_STEEL,
     name="PAPER001_CAGE",
     youngs_modulus=209e9,
-    poisson_ratio=0.3,
-    density=7870.0,
-    specific_heat=460.0,
-    thermal_conductivity=15.0,
     source="Shi & Wang 2015 (seed paper 001) Table 1, cage of D1842926: E = 209 GPa, "
     "nu = 0.3, rho = 7870 kg/m^3",
     estimated={
@@ -262,13 +259,11 @@ PAPER000_STEEL = Material(
     },
 )
 
-PAPER004_STEEL = Material(
+PAPER004_STEEL = replace(
+    STEEL_52100,
     name="PAPER004_STEEL",
     youngs_modulus=2.07e11,
     poisson_ratio=0.3,
-    density=STEEL_52100.density,
-    specific_heat=STEEL_52100.specific_heat,
-    thermal_conductivity=STEEL_52100.thermal_conductivity,
     source="Luo et al. 2022 (seed paper 004) Table 1: bearing steel E = 2.07e11 Pa, nu = 0.3",
     estimated={
         "density": "not in paper 004; 52100 value",
