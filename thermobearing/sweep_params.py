@@ -207,8 +207,17 @@ def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepPa
         n = int(math.floor((b - a) / d + 1e-9)) + 1
         unit = unit or _existing_unit(scene_dict, path)
         points = [_range_value(a, b, d, i) for i in range(n)]
+        notes: tuple[str, ...] = ()
+        if not math.isclose(points[-1], b, rel_tol=1e-9, abs_tol=1e-12 * max(abs(b), d)):
+            # "1500:3000:1000" ran 1500 and 2500 r/min and never the 3000 written as its
+            # stop, without a word
+            unit_text = f" {unit}" if unit else ""
+            notes = (f"sweep: {path} = {raw} runs {', '.join(f'{v:.{_DIGITS}g}' for v in points)}"
+                     f"{unit_text}: the stop {b:g} is not the start plus a whole number of "
+                     f"steps of {d:g}, so it is not run (a range runs start, start + step, "
+                     "... up to the stop); add it to a comma list to run it",)
         return SweepParameter(path, tuple(f"{v:.{_DIGITS}g} {unit}" if unit else v
-                                          for v in points))
+                                          for v in points), (), notes)
     pieces = [v.strip() for v in raw.split(",")]
     if pieces and not pieces[-1]:
         pieces = pieces[:-1]  # a trailing comma ("15,33,") adds nothing
@@ -422,6 +431,12 @@ def check_path(scene_dict: Mapping[str, Any], path: str, option: str = "--set") 
         return  # a share the scene leaves at its default 1 (the lever-arm split)
     if len(parts) == 3 and parts[0] == "bearings" and parts[2] in _EITHER:
         return  # a bearing's preset or file replaces the other (assign_path)
+    if path == "schedule.step_duration":
+        # the [schedule] key of the steps' default duration: refused as "not an existing
+        # scene field" beside a scene that has it, with only 'did you mean' to go on
+        raise InputError(option, path, "schedule.duration, the duration of every step (the "
+                         "scene's [schedule] step_duration is the steps' default; a sweep "
+                         "sets the steps' own, as for schedule.speed)")
     raise InputError(option, path, f"an existing scene field, e.g. {_KNOWN_PATHS}"
                      + _did_you_mean(scene_dict, path))
 
