@@ -546,7 +546,7 @@ def _contact_radii(gp: np.ndarray, rp: float, py: float, pz: float, blend: float
 
 @njit(cache=True)
 def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: float,
-                om: float, xd: float, mu: float, f_g: float, sreg: float
+                om: float, xd: float, mu: float, f_g: float, sreg: float, dca: float = 0.0
                 ) -> tuple[float, float, float, float, float, float, float, float, float,
                            float, float, float, float, float]:
     """One end face / rib contact (paper 003 eqs. 1-17, 24), jitted scalar kernel.
@@ -556,6 +556,8 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     (rolling sense).  om : omega_i - omega_c [rad/s].  xd : axial speed X' [m/s].
     mu : Coulomb coefficient [-].  f_g : lubricant drag force of eq. 14 [N] (>= 0).
     sreg : regularising speed [m/s] of the friction direction (0: exact).
+    dca : approach added to both faces over cos(theta_f) [m] (the roller's tilt,
+    :mod:`~thermobearing.skidding.roller_dynamics_tilt`; 0 without).
 
     Returns a tuple in the order of the ``F_*`` constants (no allocation: the dynamics call
     it four times per roller and RK4 step): Q_ez [N]; force on the roller
@@ -568,7 +570,7 @@ def face_values(gp: np.ndarray, side: int, a: float, x: float, ad: float, wr: fl
     h, px, py, pz, blend, sf, cf, myz, rp = _support(gp, side, a)
     ct = gp[_G_CT]
     st = gp[_G_ST]
-    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
+    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2] + dca) * ct
     rx, ry = _contact_radii(gp, rp, py, pz, blend, myz)
     q = 0.0
     if delta > 0.0:
@@ -646,7 +648,8 @@ SIDE_RIGHT = np.int64(1)
 
 @njit(cache=True)
 def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: float,
-                 eta: float, floor: float) -> tuple[float, float, float, float]:
+                 eta: float, floor: float, dca: float = 0.0
+                 ) -> tuple[float, float, float, float]:
     """Squeeze film of the lubricant between end face ``side`` and its rib (ours; paper 003
     has the gap's lubricant only as the drag of eq. 14): (normal force F_s [N] on the roller,
     its axial part [N], its skew moment [N m], dissipated power F_s v_n [W]).
@@ -665,7 +668,8 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
     h = max(-delta, floor) (in Hertz contact the film is at its floor); an opening gap
     cavitates (no force), the rule of the cage-bar squeeze film
     (:mod:`~thermobearing.skidding.roller_dynamics_pocket`), whose film floor the dynamics
-    passes here too. eta: viscosity of the rib gap
+    passes here too (``dca`` [m]: the tilt's share of the approach, as in
+    :func:`face_values`). eta: viscosity of the rib gap
     (eq. 14's oil/air mixture in the dynamics) [Pa s]; floor [m]. F_s acts along the Hertz
     force's line (-n at the contact point; n meets the roller axis, the face being a body of
     revolution: no spin moment); its circumferential part F_s sin(theta_f) sin(phi) (~5e-4
@@ -683,7 +687,7 @@ def face_squeeze(gp: np.ndarray, side: int, a: float, x: float, ad: float, xd: f
     v_n = side * ct * xd + (side * ct * r_z + gp[_G_ST] * sf * r_x) * ad
     if v_n <= 0.0:
         return 0.0, 0.0, 0.0, 0.0
-    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2]) * ct
+    delta = h - gp[_G_S0] + (side * x - gp[_G_CA2] + dca) * ct
     rx, ry = _contact_radii(gp, rp, py, pz, blend, myz)
     gap = max(-delta, floor)
     f_s = 6.0 * math.pi * eta * rx * ry * v_n / gap

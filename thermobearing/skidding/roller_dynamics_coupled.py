@@ -324,6 +324,7 @@ from .roller_dynamics_model import DynamicsModel
 from .roller_dynamics_response import RollerResponse, _post, _response
 from .roller_dynamics_rhs import _params
 from .roller_dynamics_table import DEFAULT_CAGE_STEP, build_traction_table
+from .roller_dynamics_tilt import N_TILT_STATES, start_states, tilt_parameters
 
 #: band of the cage speed around the quasi-static one, as a fraction (simulate_coupled):
 #: evaluate-path runs stay within +11 % (20000 r/min, 420 K, 0.06 g: 886 -> <= 987 rad/s),
@@ -599,7 +600,16 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     az = np.append(m.azimuth, m.azimuth[0] + 2.0 * math.pi)
     load = np.append(m.inner_load, m.inner_load[0])
     phi0 = m.azimuth.copy()
-    y = np.zeros(z_n * n + 4)          # rollers, cage angle and speed, ring X and X'
+    tilt = bool(getattr(m, "tilt", False))
+    if tilt:
+        tp, gap = tilt_parameters(m, bearing)
+    else:
+        tp, gap = np.zeros(1), np.zeros(1)
+    # rollers, cage angle and speed, ring X and X' (then, with tilt, each roller's y_r, y_r',
+    # alpha_e, alpha_e': roller_dynamics_tilt)
+    y = np.zeros(z_n * n + 4 + (N_TILT_STATES * z_n if tilt else 0))
+    if tilt:
+        y[z_n * n + 4:] = start_states(m, tp, gap).ravel()
     golden = math.pi * (3.0 - math.sqrt(5.0))
     for j in range(z_n):
         b = j * n
@@ -666,6 +676,7 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
     sample_t = np.zeros(n_samples)
     sample_wc = np.zeros(n_samples)
     sample_ring = np.zeros(n_samples)
+    sample_tilt = np.zeros((n_samples if tilt else 1, z_n, 2))
     lin = np.zeros((z_n, 7))
     w0 = np.zeros(z_n)
     q_o = np.zeros(z_n)
@@ -745,7 +756,8 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
             c, y, t, step, block, h, sub, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z,
             consts, film, tab is not None, *grid, s_first, every, samples, sample_t,
             sample_wc, sample_ring, n_sampled, integrator == "etd",
-            SPIN_TRUST * grid[1] if integrator == "etd" and tab is not None else 0.0)
+            SPIN_TRUST * grid[1] if integrator == "etd" and tab is not None else 0.0,
+            tp, gap, sample_tilt)
         step += done
         if status == 4:
             raise ConvergenceError("roller_dynamics.coupled", float("inf"),
@@ -883,7 +895,10 @@ def _simulate_coupled_path(m: DynamicsModel, bearing: Any, lubricant: Any, *,
                                  "warmup_orbits": np.array([window0 * h / orbit]),
                                  "window": np.array([window0 * h, step * h]),
                                  "simulated_orbits": np.array([step * h / orbit]),
-                                 "end_state": y.copy()})
+                                 "end_state": y.copy(),
+                                 **({"radial": sample_tilt[i0:i0 + n_sampled, :, 0].copy(),
+                                     "tilt": sample_tilt[i0:i0 + n_sampled, :, 1].copy()}
+                                    if tilt else {})})
 
 
 def _orbit_mean(first: tuple[float, float], last: tuple[float, float]) -> float:

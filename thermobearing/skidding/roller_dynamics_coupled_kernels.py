@@ -17,6 +17,7 @@ from .roller_dynamics_etd import set_coefficients
 from .roller_dynamics_pocket import pocket_force_z
 from .roller_dynamics_rhs import _CP, _ETA, _FLOOR, _HL, _JT, _KC, _MASS, _PDOF, _rhs_ring
 from .roller_dynamics_table import table_eval_contacts
+from .roller_dynamics_tilt import N_TILT_STATES, TP_TQ, tilt_clearance, tilt_rates
 
 #: roller states per roller in the coupled model: X, X', alpha, alpha', z, z', psi, omega
 N_ROLLER_STATES = 8
@@ -146,7 +147,8 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
                 az: np.ndarray, load: np.ndarray, lin: np.ndarray, w0: np.ndarray,
                 wc0: float, q_o: np.ndarray, c_z: np.ndarray, polar: float, cage_j: float,
                 half: float, dm_half: float, t_c: float, film: np.ndarray,
-                ring_mass: float, land: np.ndarray, unb: np.ndarray) -> None:
+                ring_mass: float, land: np.ndarray, unb: np.ndarray, tp: np.ndarray,
+                gap: np.ndarray) -> None:
     """dy[:] = time derivative of the coupled state (roller_dynamics_coupled module notes).
     ``lin`` (Z, 7): S0, dS/dw, dS/dwc, F_d0, dF_d/dw, dF_d/dwc, dS/dz' of the last refresh
     (:func:`spin_pocket_coupling`; z' the roller's pocket speed);
@@ -154,7 +156,10 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
     (:func:`pocket_damping`);
     ``film``: pocket length, eta, clearance, k_w, k_c + k_q/2, smoothing; ``ring_mass`` [kg]
     of the axially free inner ring (0: held); ``land``: (viscous coefficient [N m s], guide
-    ring speed [rad/s]) of the cage-land drag torque k (omega_g - omega_c) (zeros: none)."""
+    ring speed [rad/s]) of the cage-land drag torque k (omega_g - omega_c) (zeros: none);
+    ``tp``: the tilt parameters (:func:`~thermobearing.skidding.roller_dynamics_tilt.
+    tilt_parameters`; one element: no tilt) and ``gap`` the inner gap [m] at ``az``: the
+    rollers' y_r, y_r', alpha_e, alpha_e' follow the ring's X, X' in ``y``."""
     n = N_ROLLER_STATES
     th = y[z_n * n]
     wc = y[z_n * n + 1]
@@ -163,6 +168,8 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
     torque = -t_c
     f_ring = 0.0
     two_pi = 2.0 * math.pi
+    tilt = tp.shape[0] > 1
+    tq = tp[TP_TQ] if tilt else 0.0
     for j in range(z_n):
         b = j * n
         w = y[b + 7]
@@ -176,8 +183,17 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         # axial position and speed of the roller + mass's centre of mass, the contacts see the
         # geometric centre's
         sh, shd, r_z, dpsi = unbalance_axial_shift(unb, y[b + 2], y[b + 3], y[b + 6], w)
+        tb = z_n * n + 4 + N_TILT_STATES * j
+        x_t = 0.0
+        xd_t = 0.0
+        dca = 0.0
+        if tilt:
+            x_t = tq * y[tb + 2]
+            xd_t = tq * y[tb + 3]
+            dca = tilt_clearance(tp, y[tb + 2])
         r = _rhs_ring(p, y[b] - sh - x_ring, y[b + 1] - shd - xd_ring, y[b + 2], y[b + 3],
-                      y[b + 4], y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring)
+                      y[b + 4], y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring,
+                      x_t, xd_t, dca)
         fz_bar, _, ff, fb = pocket_force_z(y[b + 4], y[b + 5], y[b + 2], p[_HL], p[_CP],
                                            p[_KC], p[_ETA], half, p[_FLOOR])
         f_bar = _pocket_film_friction(ff - fb, w, half, film[0], film[1], film[2], film[3],
@@ -198,6 +214,15 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
             dy[b + 1] = f_ax / (p[_MASS] + unb[3])
             dy[b + 3] = r[3] - unb[0] * r_z * f_ax / p[_JT]
             dy[b + 7] = (half * (s - f_bar) + r[6] - unb[0] * dpsi * f_ax) / polar
+        if tilt:
+            ydd, edd, gyro = tilt_rates(tp, y[tb], y[tb + 1], y[tb + 2], y[tb + 3],
+                                        _interp_sorted(phi, az, gap), r[8], r[9], y[b + 6],
+                                        w, wc, y[b + 3])
+            dy[tb] = y[tb + 1]
+            dy[tb + 1] = ydd
+            dy[tb + 2] = y[tb + 3]
+            dy[tb + 3] = edd
+            dy[b + 3] += gyro
         torque += -fz_bar * dm_half - f_bar * half
         f_ring += r[7]
     dy[z_n * n] = wc
@@ -301,7 +326,8 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                spin0: float, spin_step: float, loads: np.ndarray, cage: np.ndarray,
                values: np.ndarray, n_warm: int, every: int, samples: np.ndarray,
                sample_t: np.ndarray, sample_wc: np.ndarray, sample_ring: np.ndarray,
-               n_sampled: int, etd: bool, spin_trust: float
+               n_sampled: int, etd: bool, spin_trust: float, tp: np.ndarray,
+               gap: np.ndarray, sample_tilt: np.ndarray
                ) -> tuple[int, int, float, int, float]:
     """Steps ``step0`` .. ``step0 + n_steps - 1`` of the coupled state ``y`` (in place) at
     step ``h`` [s]: ETDRK4 (``etd``; :func:`_stiff_rates` the exact linear part, module
@@ -314,7 +340,10 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
     d_m/2, T_c, inner-ring mass (0: held), cage-land drag coefficient [N m s] and guide ring
     speed [rad/s]. Returns (status, steps done, t, samples written, omega_c of the
     linearisation); status 0 done, 1-3 the table's grid left (the step was not taken; the
-    caller rebuilds the table), 4 the state became non-finite or a spin reversed."""
+    caller rebuilds the table), 4 the state became non-finite or a spin reversed.
+    ``tp``, ``gap``: the tilt option (:func:`_deriv_into`); with it the samples' X, X' are
+    those the rib faces see (plus t_q alpha_e, t_q alpha_e') and ``sample_tilt`` (samples,
+    Z, 2) gets y_r [m] and alpha_e [rad]."""
     n = N_ROLLER_STATES
     m_y = y.shape[0]
     k1 = np.zeros(m_y)
@@ -354,42 +383,42 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
         if etd:
             # ETDRK4 (roller_dynamics_etd): N = f - lam (y - y_ref), the linear part exact
             _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 k1[q] -= lam[q] * (y[q] - y_ref[q])
                 ya[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k1[q]
             _deriv_into(p, ya, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 k2[q] -= lam[q] * (ya[q] - y_ref[q])
                 yt[q] = y_ref[q] + coef[q, 1] * (y[q] - y_ref[q]) + coef[q, 2] * k2[q]
             _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 k3[q] -= lam[q] * (yt[q] - y_ref[q])
                 yt[q] = (y_ref[q] + coef[q, 1] * (ya[q] - y_ref[q])
                          + coef[q, 2] * (2.0 * k3[q] - k1[q]))
             _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 k4[q] -= lam[q] * (yt[q] - y_ref[q])
                 y[q] = (y_ref[q] + coef[q, 0] * (y[q] - y_ref[q]) + coef[q, 3] * k1[q]
                         + 2.0 * coef[q, 4] * (k2[q] + k3[q]) + coef[q, 5] * k4[q])
         else:
             _deriv_into(p, y, k1, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 yt[q] = y[q] + 0.5 * h * k1[q]
             _deriv_into(p, yt, k2, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 yt[q] = y[q] + 0.5 * h * k2[q]
             _deriv_into(p, yt, k3, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 yt[q] = y[q] + h * k3[q]
             _deriv_into(p, yt, k4, z_n, phi0, az, load, lin, w0, wc0, q_o, c_z, polar,
-                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb)
+                        cage_j, half, dm_half, t_c, film, ring_mass, land, unb, tp, gap)
             for q in range(m_y):
                 y[q] += h / 6.0 * (k1[q] + 2.0 * k2[q] + 2.0 * k3[q] + k4[q])
         t += h
@@ -403,6 +432,12 @@ def _integrate(p: np.ndarray, y: np.ndarray, t: float, step0: int, n_steps: int,
                                                       y[b + 7])
                 samples[n_sampled, b] -= y[ring] + sh
                 samples[n_sampled, b + 1] -= y[ring + 1] + shd
+                if tp.shape[0] > 1:
+                    tb = z_n * n + 4 + N_TILT_STATES * j
+                    samples[n_sampled, b] += tp[TP_TQ] * y[tb + 2]
+                    samples[n_sampled, b + 1] += tp[TP_TQ] * y[tb + 3]
+                    sample_tilt[n_sampled, j, 0] = y[tb]
+                    sample_tilt[n_sampled, j, 1] = y[tb + 2]
             sample_t[n_sampled] = t
             sample_wc[n_sampled] = y[z_n * n + 1]
             sample_ring[n_sampled] = y[ring]
@@ -429,6 +464,7 @@ def _refresh_caches() -> None:
         roller_dynamics_pocket,
         roller_dynamics_rhs,
         roller_dynamics_table,
+        roller_dynamics_tilt,
     )
 
     refresh_stale_caches("roller_dynamics_coupled_kernels",
@@ -438,7 +474,7 @@ def _refresh_caches() -> None:
                           _refresh_from_table, _refresh_roller, _stiff_rates,
                           _stiff_roller, _integrate),
                          (roller_dynamics_rhs, rib, roller_dynamics_pocket,
-                          roller_dynamics_table, roller_dynamics_etd))
+                          roller_dynamics_table, roller_dynamics_etd, roller_dynamics_tilt))
 
 
 _refresh_caches()

@@ -96,6 +96,9 @@ class DynamicsModel:
     #: squeeze film of the rib gaps (:func:`thermobearing.rib.face_squeeze`; an option,
     #: not paper 003's model: it keeps the rollers off the ribs, validation case SOURCE.md)
     rib_squeeze: bool = False
+    #: the roller's radial position and tilt as degrees of freedom of the coupled model
+    #: (:mod:`~thermobearing.skidding.roller_dynamics_tilt`; paper 003 eq. 18's 6 DOF)
+    tilt: bool = False
 
     def pocket_force_at(self, phi: float) -> float:
         """Quasi-static pocket force F_d [N] (positive: the roller pushes the cage

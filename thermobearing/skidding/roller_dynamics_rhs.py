@@ -146,7 +146,10 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: 
 @njit(cache=True)
 def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: float,
               n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float,
-              xd_ring: float) -> tuple[float, float, float, float, float, float, float, float]:
+              xd_ring: float, x_tilt: float = 0.0, xd_tilt: float = 0.0,
+              dca: float = 0.0
+              ) -> tuple[float, float, float, float, float, float, float, float, float,
+                         float]:
     """(X', X'', alpha', alpha'', z', z'', rib spin moment, axial force on the inner ring):
     both faces of
     :func:`thermobearing.rib.face_values` (the kernel of :func:`~thermobearing.rib.rib_forces`)
@@ -157,14 +160,21 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     x, xd: axial position and speed of the roller *relative to the inner ring* [m, m/s]
     (rib contact, inner raceway slide); xd_ring: the inner ring's axial speed [m/s] (outer
     raceway slide: the outer ring is fixed); X'' is the roller's absolute axial
-    acceleration (paper 003 eq. 18 line 1); the last entry is minus the rib and inner-
+    acceleration (paper 003 eq. 18 line 1); the eighth entry is minus the rib and inner-
     raceway axial forces on the roller, i.e. their reaction on the inner ring (eq. 20
-    line 1) [N]."""
+    line 1) [N], the ninth the rib faces' axial force on the roller [N], the tenth the sum
+    of their normal forces [N].
+    x_tilt, xd_tilt, dca: the tilt's equivalent axial shift t_q alpha_e [m], its rate
+    [m/s] and its symmetric share of the approach [m]
+    (:mod:`~thermobearing.skidding.roller_dynamics_tilt`): the rib faces see X + x_tilt,
+    X' + xd_tilt and the clearance less dca; the raceways X' (0 without tilt)."""
     gp = p[:_G_N]
-    fl = face_values(gp, -1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
-    fr = face_values(gp, 1, a, x, ad, spin, p[_OM], xd, p[_MU], p[_FG], p[_SREG])
-    sl = face_squeeze(gp, SIDE_LEFT, a, x, ad, xd, p[_ETR], p[_FLOOR])
-    sr = face_squeeze(gp, SIDE_RIGHT, a, x, ad, xd, p[_ETR], p[_FLOOR])
+    xf = x + x_tilt
+    xdf = xd + xd_tilt
+    fl = face_values(gp, -1, a, xf, ad, spin, p[_OM], xdf, p[_MU], p[_FG], p[_SREG], dca)
+    fr = face_values(gp, 1, a, xf, ad, spin, p[_OM], xdf, p[_MU], p[_FG], p[_SREG], dca)
+    sl = face_squeeze(gp, SIDE_LEFT, a, xf, ad, xdf, p[_ETR], p[_FLOOR], dca)
+    sr = face_squeeze(gp, SIDE_RIGHT, a, xf, ad, xdf, p[_ETR], p[_FLOOR], dca)
     m_rib = fl[F_MSKEW] + fr[F_MSKEW] + sl[2] + sr[2]
     f_rib = fl[F_FX] + fr[F_FX] + sl[1] + sr[1]
     m_spin = fl[F_MSPIN] + fr[F_MSPIN]
@@ -196,7 +206,8 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     zdd = 0.0
     if p[_PDOF] > 0.5:
         zdd = (f_d + f_cv * sp + fl[F_FZ] + fr[F_FZ] - c_z * zd + fz_bar) / p[_MASS]
-    return xd, xdd, ad, add, zd, zdd, m_spin, -(f_rib + f_inner)
+    return (xd, xdd, ad, add, zd, zdd, m_spin, -(f_rib + f_inner), f_rib,
+            fl[0] + fr[0] + sl[0] + sr[0])
 
 
 def _roller_rhs(m: DynamicsModel, c: np.ndarray, y: Any, n_i: float, n_o: float,

@@ -42,7 +42,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 coupling: str = "rib", pocket_dof: bool = True,
                 squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR,
                 raceway_traction: str = "componentwise",
-                rib_squeeze: bool = False) -> DynamicsModel:
+                rib_squeeze: bool = False, tilt: bool = False) -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -78,6 +78,12 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     base case it keeps the rollers off the ribs (PV ~0 instead of ~650 MPa m/s) and it
     removes the friction-driven axial/skew rattle behind the 10000 r/min runaway
     (validation case SOURCE.md, 2026-11-23 evening).
+    ``tilt``: False (default): the coupled model's rollers move axially, skew, slide in
+    their pockets and spin; True adds each roller's radial position and tilt with their
+    speeds (paper 003 eq. 18's remaining DOFs: raceway slices in the radial play, the
+    unbalance's and the roller's centrifugal forces and tilt moments, the rib's axial force
+    on the tilt, gyroscopic coupling; :mod:`~thermobearing.skidding.roller_dynamics_tilt`).
+    Used by :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled` only.
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
     """
@@ -129,7 +135,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_viscosity=float(lubricant.dynamic_viscosity(temperature)),
         pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
         pocket_dof=bool(pocket_dof), raceway_traction=raceway_traction,
-        rib_squeeze=bool(rib_squeeze),
+        rib_squeeze=bool(rib_squeeze), tilt=bool(tilt),
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:
