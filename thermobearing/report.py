@@ -503,6 +503,7 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
                      "bearing and lubricant configs' <code>estimated</code> tables; "
                      "<code>estimate_missing:</code> marks catalogue-data estimates)</p>")
         for what, entries in results.estimated.items():
+            entries = overridden_estimates(what, entries, scene)
             parts.append(f"<h3>{esc(what)}</h3>" + html_table(pd.DataFrame(
                 {"field": list(entries), "reasoning": list(entries.values())})))
     else:
@@ -543,6 +544,30 @@ FIGURE_CAPTIONS = {
                         "kinematics table (theoretical ratio dashed; the skid warnings take "
                         "every state solved within a step)",
 }
+
+
+def overridden_estimates(what: str, entries: Mapping[str, str], scene: Any
+                         ) -> dict[str, str]:
+    """``entries`` (field -> reasoning of a preset's estimated value, under the heading
+    ``what``, ``"bearing <name> (<preset>)"``) with the fields the scene's ``overrides`` of
+    that bearing replace marked as such: the report gave the preset's reasoning for a
+    value the run did not use (an NU 214 overridden to ``ribbed_ring = "both"`` read "NU
+    type: two ribs on the outer ring, none on the inner ring")."""
+    specs = {spec.name: spec for spec in getattr(scene, "bearings", None) or ()}
+    name = what[len("bearing "):].split(" (", 1)[0] if what.startswith("bearing ") else None
+    spec = specs.get(name) if name is not None else None
+    overrides = dict(getattr(spec, "overrides", None) or {})
+    if not overrides:
+        return dict(entries)
+    given: dict[str, Any] = {}
+    for key, value in overrides.items():
+        if isinstance(value, Mapping):  # a table merged key by key (cage = { ... })
+            given.update({f"{key}.{k}": v for k, v in value.items()})
+        else:
+            given[key] = value
+    return {field: (f"not used: the scene overrides it ({field} = {given[field]}); the "
+                    f"preset's reasoning was: {reason}" if field in given else reason)
+            for field, reason in entries.items()}
 
 
 def _caption(name: str, measured: bool = False) -> str | None:

@@ -244,3 +244,27 @@ def test_the_sweep_crosscheck_gives_the_frictional_moment_of_a_one_speed_case():
     table, _ = sweep_catalogue_crosscheck(
         grid, [{"case": "c0", "params": {}, "result": {"mean total loss [W]": 10.0}}])
     assert TORQUE not in table
+
+
+def test_an_estimate_the_scene_overrides_is_marked_not_used():
+    """The NUP's report gave the NU 214 preset's reasoning 'NU type: two ribs on the outer
+    ring, none on the inner ring' under Estimated inputs although the scene ran it with
+    ribs on both rings."""
+    from thermobearing.report import overridden_estimates
+    from thermobearing.scene import loads_scene
+
+    scene = loads_scene(NUP_POINT.replace(
+        'axial_clearance = "0.05 mm" }',
+        'axial_clearance = "0.05 mm", cage = { pocket_clearance = "0.4 mm" } }'))
+    entries = {"ribbed_ring": "NU type: two ribs on the outer ring, none on the inner ring",
+               "cage.pocket_clearance": "about 2 % of the roller diameter",
+               "cage.width": "0.75 of the ring width"}
+    out = overridden_estimates("bearing nup (NU214)", entries, scene)
+    assert out["ribbed_ring"].startswith("not used: the scene overrides it (ribbed_ring = both)")
+    assert out["cage.pocket_clearance"].startswith(
+        "not used: the scene overrides it (cage.pocket_clearance = 0.4 mm)")
+    assert out["cage.width"] == entries["cage.width"]
+    # the lubricant's entries, another bearing's, or no scene: unchanged
+    assert overridden_estimates("lubricant (ISO_VG46)", entries, scene) == entries
+    assert overridden_estimates("bearing other (NU214)", entries, scene) == entries
+    assert overridden_estimates("bearing nup (NU214)", entries, None) == entries
