@@ -113,6 +113,44 @@ DEFAULT_MODEL = "coupled"
 MAX_COUPLED_TIME = 0.5
 
 
+#: display unit (scale from SI, name) of the rib geometry's fields in user messages
+RIB_FIELD_UNITS = {"rib_height": (1e3, "mm"), "axial_clearance": (1e3, "mm"),
+                   "crown_radius": (1e3, "mm"), "roller_diameter": (1e3, "mm"),
+                   "roller_length": (1e3, "mm"), "chamfer": (1e3, "mm"),
+                   "rib_angle": (180.0 / math.pi, "deg")}
+#: the bearing key of each :class:`thermobearing.rib.RibGeometry` field a user sets
+RIB_BEARING_KEYS = {"crown_radius": "end_face_crown_radius", "rib_angle": "rib_angle",
+                    "rib_height": "rib_height", "axial_clearance": "axial_clearance"}
+
+
+def rib_input_text(exc: InputError) -> str:
+    """The message of an :class:`InputError` of the rib geometry
+    (:class:`thermobearing.rib.RibGeometry`, fields ``rib.<name>``) with its value in the
+    unit a bearing file writes it in and the field named by its bearing key:
+    ``rib_height = 3 mm is not allowed: a rib higher than ...`` instead of
+    ``rib.rib_height = 0.003 is not allowed: ...`` (a value in metres beside a limit in mm).
+    Other errors: their message unchanged."""
+    field = str(getattr(exc, "field", ""))
+    name = field[4:] if field.startswith("rib.") else None
+    if name not in RIB_FIELD_UNITS or not isinstance(exc.value, (int, float)):
+        return str(exc)
+    scale, unit = RIB_FIELD_UNITS[name]
+    return (f"{RIB_BEARING_KEYS.get(name, name)} = {float(exc.value) * scale:.4g} {unit} is "
+            f"not allowed: {exc.allowed}")
+
+
+def check_unbalance_option(unbalance: float, bearing: object, field: str) -> None:
+    """InputError naming ``field`` unless 0 <= ``unbalance`` [kg] < the roller mass of
+    ``bearing`` (paper 003's unbalance mass sits on one roller's chamfer; one as heavy as
+    the roller is no roller). Values in g, as the option is written."""
+    check_positive(field, unbalance, allow_zero=True)
+    mass = getattr(bearing, "roller_mass", None)
+    if mass is not None and unbalance >= float(mass):
+        raise InputError(field, f"{unbalance * 1e3:.4g} g",
+                         f"an unbalance_mass from 0 g up to below the roller mass "
+                         f"{float(mass) * 1e3:.4g} g of {getattr(bearing, 'name', 'the bearing')}")
+
+
 @HEAT_SOURCES.register(
     "rib_friction",
     references=["zhang2021_abnormal_wear", "blok1963_flash_temperature",
@@ -144,7 +182,7 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     oil_fraction = float(ctx.option(name, "oil_fraction", 0.05))
     check_range(f"options[{name}].oil_fraction", oil_fraction, 0.0, 1.0)
     unbalance = float(ctx.option(name, "unbalance_mass", 0.0))
-    check_positive(f"options[{name}].unbalance_mass", unbalance, allow_zero=True)
+    check_unbalance_option(unbalance, b, f"options[{name}].unbalance_mass")
     model = ctx.option(name, "model", DEFAULT_MODEL)
     if model not in MODELS:
         raise InputError(f"options[{name}].model", model, MODELS)
