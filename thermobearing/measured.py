@@ -253,6 +253,10 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     # how the time column was read (``numbers in min``, ``elapsed hh:mm:ss or mm:ss``):
     # ``check`` prints it, so a reading the user did not mean shows before a run
     out.attrs["time_read_as"] = desc
+    # the file's other columns (an extra channel, a logger's status column): ``check``
+    # names them, so a thermocouple left out of the column map shows before a run
+    out.attrs["unmapped"] = [c for k, c in enumerate(header)
+                             if k not in tcols and k not in idx.values() and c.strip()]
     return out
 
 

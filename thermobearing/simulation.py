@@ -182,16 +182,23 @@ class Simulation:
             sources = heat_source_names(scene, is_ball)
             why = "rib_friction" in sources and _rib_friction_unavailable(b)
             if why and "heat_sources" in scene.models:  # named: refused before the run
+                _refuse_rib_geometry(b, spec, i_spec)
                 raise InputError(
                     "models.heat_sources", "rib_friction",
                     f"sources every bearing can host; {spec.name!r} ({b.name}) cannot run "
                     f"rib_friction ({why}). Without heat_sources, roller bearings with rib "
                     "geometry run rib_friction by default and the others leave it out")
             if why:  # a default source the bearing's geometry cannot host: left out, said
+                geometry_why = _rib_geometry_text(b)
+                why = geometry_why or why
                 sources = tuple(n for n in sources if n != "rib_friction")
                 # the hint only where the bearing's data can fix it (earlier versions also
-                # printed it for outer-ring ribs, which no key of the bearing changes)
+                # printed it for outer-ring ribs, which no key of the bearing changes); a
+                # bearing with a crown radius and a rib height the contact refuses was told
+                # to add them
                 hint = ("" if why.startswith(("ribs on the outer ring", "not a cylindrical"))
+                        else "; the end face must reach the rib: change the bearing's "
+                             "rib_height, rib_angle or end_face_crown_radius" if geometry_why
                         else "; name it in [models] heat_sources once the bearing has "
                              "end_face_crown_radius and rib_height")
                 dropped.append(f"{spec.name}: default heat source rib_friction left out "
@@ -211,6 +218,11 @@ class Simulation:
                 self.notes.append(
                     f"{spec.name} carries {spec.radial_share:g} of the schedule's radial load "
                     f"and {spec.axial_share:g} of its axial load ([[bearings]] load_share)")
+        if _needs(scene)["losses"]:
+            for b in self.bearings:
+                note = _unbooked_rolling_note(scene, b)
+                if note and note not in self.notes:
+                    self.notes.append(note)
         from .heat_sources import HEAT_SOURCES
 
         HEAT_SOURCE_FAMILY = HEAT_SOURCES.family
@@ -224,6 +236,9 @@ class Simulation:
         # kinematics-only scene runs no heat source: nothing to say)
         self.warnings: list[str] = list(self.notes) + (
             dropped if _needs(scene)["losses"] else [])
+        #: default sources left out and thrust without a loss path (``check`` prints them
+        #: under the chain: they were only in the run's warnings)
+        self.left_out: list[str] = list(dropped) if _needs(scene)["losses"] else []
         self._warning_groups = WarningGroups(self.warnings)
         #: while not None, the validity warnings raised go here, not into the run's list
         #: (:meth:`held_warnings`: the iterates of a steady run's fixed point)
@@ -231,6 +246,7 @@ class Simulation:
         self.source_options = scene_heat_source_options(
             scene, tuple(dict.fromkeys(n for b in self.bearings for n in b.sources)))
         self._check_option_clashes()
+        self._check_unbalance_option()
         if self.needs["losses"]:
             for note in _unbooked_drag_notes(self.bearings, self.supply):
                 if note not in self.warnings:
@@ -275,6 +291,7 @@ class Simulation:
             if with_citations:
                 lines.extend(f"       {c}" for c in cite(link.references))
         lines.extend(f"  note: {n}" for n in self.notes)
+        lines.extend(f"  note: {n}" for n in self.left_out if n not in self.notes)
         return "\n".join(lines)
 
     def citations(self) -> list[str]:
@@ -605,6 +622,22 @@ class Simulation:
                         f"'{b.name}' does not set: it sets "
                         f"{', '.join(sorted(owned[src]))} to match its own force models "
                         "(change those through the bearing's calibration instead)")
+
+    def _check_unbalance_option(self) -> None:
+        """``heat_source_options.rib_friction.unbalance_mass`` below the roller mass of every
+        bearing that runs the rib source, refused before anything is solved: ``check``
+        passed "5 g" on CRB_50x75x16 (1.33 g rollers) and the run stopped at its first
+        solve with ``unbalance_mass = 0.005 is not allowed`` (no scene field, kg beside g)."""
+        from .heat_sources.rib import check_unbalance_option
+
+        mass = self.source_options.get("rib_friction", {}).get("unbalance_mass")
+        if mass is None:
+            return
+        for b in self.bearings:
+            if "rib_friction" in b.sources:
+                check_unbalance_option(
+                    float(mass), b.bearing,
+                    "models.heat_source_options.rib_friction.unbalance_mass")
 
     def _heat_options(self, kin: KinematicsResult) -> dict[str, Any]:
         """Heat-source options: those matching the kinematics' force models, plus where
@@ -1011,6 +1044,70 @@ def _roller_drag_clash(name: str, source_options: Mapping[str, Mapping[str, Any]
 #: the heat sources that book the oil drag the skidding solvers balance (ball: paper 002
 #: eqs. 9-10 and the cage torque; roller: ``skidding.roller_drag``)
 _DRAG_SOURCES = ("churning_elements", "churning_cage", "churning_inner_ring", "cage_guide")
+
+
+def _unbooked_rolling_note(scene: Scene, bearing: Any) -> str | None:
+    """A roller bearing under race control whose ``[models] heat_sources`` list leaves out
+    ``ehl_rolling_resistance``: race control rolls without slide, so ``raceway_traction``
+    books 0 W and nothing books the raceway contacts' rolling resistance, the load's main
+    loss (an NJ 214 at 8 kN, 2000-4000 r/min: ``raceway_traction`` 0.0 W on every step,
+    said nowhere). The roller defaults have the source; the example scene
+    ``crb_rib_example.toml``, copied as a start, lists its sources without it."""
+    if (bearing.is_ball or bearing.kinematics_name != "race_control"
+            or "heat_sources" not in scene.models
+            or "ehl_rolling_resistance" in bearing.sources):
+        return None
+    return (f"{bearing.name}: the raceway contacts book no rolling resistance: "
+            "[models] heat_sources leaves out ehl_rolling_resistance (in the roller "
+            "bearings' default sources), and under race control the rollers roll without "
+            "slide, so raceway_traction books 0 W")
+
+
+def _rib_geometry_text(bearing: Any) -> str | None:
+    """The rib geometry's refusal of ``bearing`` in a bearing file's units
+    (``rib_height = 3 mm is not allowed: ...``; :func:`heat_sources.rib.rib_input_text`),
+    or None when its rib geometry is valid or missing (no crown radius / rib height)."""
+    from .heat_sources.rib import rib_input_text
+    from .rib import rib_geometry
+
+    if getattr(bearing, "kind", None) != "cylindrical" or getattr(
+            bearing, "ribbed_ring", "inner") == "outer":
+        return None
+    if bearing.end_face_crown_radius is None or bearing.rib_height is None:
+        return None
+    try:
+        rib_geometry(bearing)
+    except InputError as exc:
+        return rib_input_text(exc)
+    return None
+
+
+def _refuse_rib_geometry(bearing: Any, spec: Any, index: int) -> None:
+    """A scene that names ``rib_friction`` for a roller bearing whose rib geometry the rib
+    contact refuses (a rib lower than the end face's contact point, a crown radius below
+    half the roller length, ...): InputError naming the bearing's key in the scene
+    (``bearings[0].overrides.rib_height`` when the scene overrides it, else the preset's or
+    file's key), its value in mm / deg and what is allowed. It was refused under
+    ``models.heat_sources = 'rib_friction'`` with ``rib.rib_height = 0.003`` (metres) in
+    the middle of the message."""
+    from .heat_sources.rib import RIB_BEARING_KEYS, RIB_FIELD_UNITS
+    from .rib import rib_geometry
+
+    if _rib_geometry_text(bearing) is None:
+        return
+    try:
+        rib_geometry(bearing)
+    except InputError as exc:
+        name = exc.field[4:] if exc.field.startswith("rib.") else exc.field
+        key = RIB_BEARING_KEYS.get(name, name)
+        where = (f"bearings[{index}].overrides.{key}" if key in spec.overrides
+                 else f"bearings[{index}] ({spec.preset or spec.path}) {key}")
+        scale, unit = RIB_FIELD_UNITS.get(name, (1.0, ""))
+        value = (f"{float(exc.value) * scale:.4g} {unit}".strip()
+                 if isinstance(exc.value, (int, float)) else exc.value)
+        raise InputError(where, value, f"{exc.allowed} (the rib geometry of bearing "
+                         f"'{spec.name}', needed by the rib_friction source that "
+                         "[models] heat_sources names)") from None
 
 
 def _scene_bearing(scene: Scene, spec: Any, index: int) -> Any:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -85,13 +85,39 @@ def _load_scene_bearing(src: str, overrides: Mapping[str, Any] | None, where: st
     from .geometry import load_bearing
 
     try:
-        return load_bearing(src, overrides=overrides or None)
+        bearing = load_bearing(src, overrides=overrides or None)
     except InputError as exc:
         key = str(exc.field).rsplit(".", 1)[-1]
         if overrides and key in overrides and type(exc) is InputError:
             raise InputError(f"{where}.overrides.{key}", overrides[key],
                              f"{exc.allowed} (checked in SI: {exc.value!r})") from None
         raise
+    return _without_overridden_estimates(bearing, overrides)
+
+
+def _overridden_keys(overrides: Mapping[str, Any] | None, prefix: str = "") -> set[str]:
+    """Dotted keys a scene's overrides set (``ribbed_ring``, ``cage.inner_diameter``)."""
+    keys: set[str] = set()
+    for key, value in (overrides or {}).items():
+        keys.add(f"{prefix}{key}")
+        if isinstance(value, Mapping):
+            keys |= _overridden_keys(value, f"{prefix}{key}.")
+    return keys
+
+
+def _without_overridden_estimates(bearing: Any, overrides: Mapping[str, Any] | None) -> Any:
+    """``bearing`` without the ``estimated`` marks of the values the scene overrides: they
+    are the user's now. ``check`` listed an NU 214 overridden to ``ribbed_ring = "both"``
+    with ``ribbed_ring`` among its estimates and the report gave the preset's reasoning
+    ("NU type: two ribs on the outer ring, none on the inner ring") beside the NJ-type
+    bearing that ran. A whole table overridden (``cage = {...}``) keeps the marks of the
+    keys it leaves."""
+    estimated = dict(getattr(bearing, "estimated", {}) or {})
+    given = _overridden_keys(overrides)
+    kept = {k: v for k, v in estimated.items() if k not in given}
+    if len(kept) == len(estimated):
+        return bearing
+    return replace(bearing, estimated=kept)
 
 
 def _supply_notes(scene: Scene) -> list[str]:

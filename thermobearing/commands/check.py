@@ -37,9 +37,9 @@ def run(args: argparse.Namespace) -> int:
 
 
 def describe_measured(scene) -> str:
-    """The ``[measured]`` file as the run will read it: sensors, samples, time span and
-    the reader's notes (gaps per sensor and cause, averaged rows, units) and how the file
-    covers the schedule."""
+    """The ``[measured]`` file as the run will read it: sensors, samples, time span, the
+    file's columns no node is mapped to, the reader's notes (gaps per sensor and cause,
+    averaged rows, units) and how the file covers the schedule."""
     from ..measured import coverage_notes, measured_notes, minutes_span, read_scene_measured
 
     df = read_scene_measured(scene)
@@ -54,6 +54,10 @@ def describe_measured(scene) -> str:
         names = scene.measured.time_column
         name = names if isinstance(names, str) else " + ".join(names)
         lines.append(f"  time column {name!r} read as {read_as}")
+    unmapped = df.attrs.get("unmapped", [])
+    if unmapped:  # an extra channel, or a thermocouple left out of the column map
+        lines.append("  not compared (no node in [measured] columns): "
+                     + ", ".join(repr(c) for c in unmapped))
     notes = measured_notes(df) + coverage_notes(df, 0.0, scene.schedule.duration)
     lines += [f"  - {n}" for n in notes]
     return "\n".join(lines)
