@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pandas as pd
 
+from .coupled_secant import KINEMATIC_ROLES, PROBE_DT, KinematicSecant
 from .errors import ConvergenceError, InputError, UnknownNameError
 from .operating_checks import check_state
 from .results import ResultsWriter
@@ -159,6 +160,10 @@ class _Linear:
     negative heat cools a node below every sink. A fuzzed 6304 at 42000 r/min started at
     7.8 degC had its inner ring at -36 degC after one 0.1 s chunk (at -1681 degC after
     11 s); clamped rows have a zero Jacobian row.
+
+    ``K``, ``c``: the held kinematic states' temperature dependence, K T - c [W] added to
+    the heat and K [W/K] to its Jacobian (:class:`.coupled_secant.KinematicSecant`: the
+    heat at fixed kinematics above misses how the state itself moves as the oil thins).
     """
 
     q0: np.ndarray
@@ -169,6 +174,10 @@ class _Linear:
     #: quadratic term is continued linearly (C1), so that a large excursion (a thermal
     #: runaway) is not extrapolated with a parabola fitted over +-dT
     reach: float = 2.0
+    #: the held kinematic states' temperature dependence (:class:`.coupled_secant.
+    #: KinematicSecant`): K T - c is added to the heat, K [W/K] to its Jacobian (None: none)
+    K: np.ndarray | None = None
+    c: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         self._floor = np.minimum(self.q0, 0.0)
@@ -188,10 +197,13 @@ class _Linear:
             dj = float(d[j])
             c = r if dj > r else -r if dj < -r else dj
             q += (c * dj - 0.5 * c * c) * h
+        if self.K is not None:
+            q += self.K @ T - self.c
         return np.maximum(q, self._floor, out=q)
 
     def _jac_model(self, T: np.ndarray) -> np.ndarray:
-        """dq/dT [W/K] of the unclamped model at T [K] (a copy only when changed)."""
+        """dq/dT [W/K] of the unclamped model at T [K] without the kinematic term (a copy
+        only when changed)."""
         if not self._cols:
             return self.J
         out = self.J.copy()
@@ -218,6 +230,9 @@ class _Linear:
                 c = r if dj > r else -r if dj < -r else dj
                 q += (c * dj - 0.5 * c * c) * h
                 out[:, j] += c * h
+        if self.K is not None:
+            q += self.K @ T - self.c
+            out = out + self.K
         low = q < self._floor
         if low.any():
             q[low] = self._floor[low]
@@ -230,6 +245,10 @@ class _Linear:
         the same kinematic state): the Jacobian is the model's own at T (unclamped), H is
         kept."""
         return _Linear(q, self._jac_model(T), T.copy(), self.H, self.reach)
+
+    def with_kinematics(self, K: np.ndarray | None, c: np.ndarray | None) -> _Linear:
+        """The same model with the held kinematic states' term K T - c [W] (None: none)."""
+        return _Linear(self.q0, self.J, self.T0, self.H, self.reach, K, c)
 
 
 class Coupler:
@@ -250,6 +269,9 @@ class Coupler:
         #: heat evaluations of one bearing (memoised sources included): the coupling's cost
         #: in heat-source calls, comparable with an outside integrator's right-hand sides
         self.bearing_evaluations = 0
+        #: kinematics solves of :meth:`probe_kinematics` (one per bearing and schedule step)
+        self.kinematic_probes = 0
+        self._probes: dict[tuple, Any] = {}
         for b in sim.bearings:
             roles = net.roles(b.name)
             self.role_nodes[b.name] = {r: [self.index[n] for n in roles.get(r, [])]
@@ -314,12 +336,59 @@ class Coupler:
             worst = max(worst, abs(eta / ref - 1.0))
         return worst
 
-    def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray
+    def _bearing_heat(self, b: _Bearing, step: Step, T: np.ndarray, kin: Any = None
                       ) -> tuple[np.ndarray, frozenset[str]]:
+        """One bearing's heat [W] on the state nodes at T [K] on its held kinematic state
+        (or ``kin``), and the roles its sources read."""
         self.bearing_evaluations += 1
         q = np.zeros(len(self.names))
-        ev = self.sim.evaluate_heat(b, step, b.last, self.role_temperatures(b, T))
+        ev = self.sim.evaluate_heat(b, step, b.last if kin is None else kin,
+                                    self.role_temperatures(b, T))
         return self.net.distribute(ev.by_role, group=b.name, out=q), ev.reads
+
+    def probe_kinematics(self, b: _Bearing, step: Step, T: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """Bearing ``b``'s kinematics solved once more with the nodes they read
+        (:data:`.coupled_secant.KINEMATIC_ROLES`) warmer by :data:`.coupled_secant.PROBE_DT`,
+        warm-started from its held state and recorded nowhere (no table row, no check, no
+        warning: a probe, not a state the bearing runs in): (those temperatures [K], the
+        probe state's heat there [W], the held state's heat there [W]) for
+        :meth:`.coupled_secant.KinematicSecant.restart`. None where there is nothing to
+        probe (no kinematic state: global friction, a bearing at rest) or the solver
+        refuses (the secant then starts from zero). Counted in ``kinematic_probes``."""
+        import warnings
+
+        from .kinematic_models import KINEMATICS, contact_temperature
+
+        if (b.last is None or b.kinematics_name == "none"
+                or getattr(b.last.state, "origin", "") == "standstill"):
+            return None
+        Tp = np.array(T, dtype=float)
+        for r in KINEMATIC_ROLES:
+            Tp[self.role_nodes[b.name][r]] = T[self.role_nodes[b.name][r]] + PROBE_DT
+        temps = self.role_temperatures(b, Tp)
+        # twin bearings (same record key, one shared state): one probe, each bearing's
+        # heat of it at its own temperatures
+        key = (b.key, id(b.last))
+        res = self._probes.get(key)
+        if res is not None:
+            return Tp, self._bearing_heat(b, step, Tp, res)[0], self._bearing_heat(b, step, Tp)[0]
+        fn = KINEMATICS.get(b.kinematics_name)
+        self.kinematic_probes += 1
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            try:
+                res = fn(b.bearing, self.sim.lubricant, self.sim._operating(step, b),
+                         contact_temperature=contact_temperature(temps),
+                         oil_temperature=temps["oil"], supply=self.sim.supply, guess=b.last,
+                         options=b.kin_options)
+            except (ConvergenceError, InputError):
+                return None
+        if not res.converged:
+            return None
+        self._probes.clear()  # one operating point's probes: the last solve's twins only
+        self._probes[key] = res
+        return Tp, self._bearing_heat(b, step, Tp, res)[0], self._bearing_heat(b, step, Tp)[0]
 
     def heat(self, step: Step, T: np.ndarray) -> np.ndarray:
         return sum((self._bearing_heat(b, step, T)[0] for b in self.sim.bearings),
@@ -582,6 +651,20 @@ def run_coupled(sim: Simulation, writer: ResultsWriter | None
                     warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
+def _probed(coupler: Coupler, secant: KinematicSecant, lin: _Linear, step: Step,
+            T: np.ndarray) -> _Linear:
+    """The chunk model ``lin`` with each bearing's first secant of the operating point from a
+    kinematics probe at T [K] (:meth:`Coupler.probe_kinematics`). Only where a step's first
+    chunk is repeated shorter (its contact viscosity moved beyond the chunk limit: the held
+    state goes stale fast). A probe at every step of the QJ1044 rig protocol (22 load steps,
+    29 kinematics solves, no chunk repeated) added 42 solves for nothing (largest ball error
+    against 2 s chunks 0.10 K, 0.08 K without); the NU 214 speed step's first 9.4 s chunk
+    held the roller node 1.3 K too warm without it (0.25 K with)."""
+    for b in coupler.sim.bearings:
+        secant.restart(b.name, T, coupler.probe_kinematics(b, step, T))
+    return lin.with_kinematics(*secant.terms())
+
+
 def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                    ) -> tuple[dict[str, pd.DataFrame], dict[str, Any]]:
     from tqdm.auto import tqdm
@@ -598,6 +681,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     stepper = TransientStepper(net, method=solver.stepper, rtol=solver.rtol, atol=solver.atol,
                                max_step=solver.max_step)
     chunk = solver.chunk
+    secant = KinematicSecant(len(names), {
+        b.name: [j for r in KINEMATIC_ROLES for j in coupler.role_nodes[b.name][r]]
+        for b in sim.bearings})
     interval = scene.outputs.interval
     # the loss table (one more evaluation of every source per step) only when it is output
     want_losses = _wants_loss_table(scene)
@@ -615,6 +701,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     fallback_used = False
     method = solver.stepper
     lin: _Linear | None = None
+    probed = False
     last_kin: tuple[int, ...] = ()
     steps = scene.schedule.steps
     bar = tqdm(total=scene.schedule.duration, disable=not sim.progress, desc="protocol",
@@ -631,7 +718,17 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 # the last chunk of the step ends on the step's end (no sliver left)
                 h = h_try if t_end - t - h_try > 1e-6 * h_nominal else t_end - t
                 if not retry:
+                    held = [b.last for b in sim.bearings]
                     coupler.kinematics(i, step, T)
+                    for b, old in zip(sim.bearings, held, strict=True):
+                        if k == 0 or old is None:
+                            # a new operating point: no secant yet (probed if its first
+                            # chunk is repeated shorter, below)
+                            secant.restart(b.name, T)
+                            probed = False
+                        elif b.last is not old:
+                            secant.resolved(b.name, T, coupler._bearing_heat(b, step, T)[0],
+                                            coupler._bearing_heat(b, step, T, old)[0])
                     if k == 0:
                         for b in sim.bearings:
                             row = {**step_columns(i, t, b.name, step, b),
@@ -648,6 +745,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                         # and curvature re-centred at T (they change only slowly)
                         lin = lin.moved(coupler.heat(step, T), T)
                     last_kin = kin_id
+                    lin = lin.with_kinematics(*secant.terms())
                 retry = False
                 samples = _sample_times(t, h, interval)
                 try:
@@ -687,6 +785,9 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                         h_try = max(0.5 * h, MIN_CHUNK)
                         rejected_chunks += 1
                         retry = True
+                        if k == 0 and not probed:
+                            probed = True
+                            lin = _probed(coupler, secant, lin, step, T)
                         continue
                     _stop_runaway(net, method, solver, lin, t, T, failed, names, i,
                                   coupler.runaway_limit)
@@ -700,6 +801,12 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     h_try = max(0.5 * h, MIN_CHUNK)
                     rejected_chunks += 1
                     retry = True
+                    if k == 0 and not probed:
+                        # the step's first held state goes stale within its first chunk:
+                        # its temperature dependence probed for the repeat and the chunks
+                        # up to the next solve (coupled_secant, KinematicSecant.restart)
+                        probed = True
+                        lin = _probed(coupler, secant, lin, step, T)
                     continue
                 # a runaway within the chunk stops the run where it crossed the limit
                 # (the sampled rows beyond it are not written)
@@ -766,6 +873,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     audit = replace(EnergyAudit.concatenate(audits), floor=roundoff_floor(caps, solver.atol))
     stats = {"steps": len(steps), "linearizations": relinearizations,
              "rejected_chunks": rejected_chunks,
+             "kinematic_probes": coupler.kinematic_probes,
              "heat_evaluations": coupler.bearing_evaluations // max(1, len(sim.bearings)),
              "relative_energy_imbalance": audit.relative_imbalance(),
              **{f"stepper_{k}": v for k, v in stepper.stats.items()}}
