@@ -268,3 +268,22 @@ def test_an_estimate_the_scene_overrides_is_marked_not_used():
     assert overridden_estimates("lubricant (ISO_VG46)", entries, scene) == entries
     assert overridden_estimates("bearing other (NU214)", entries, scene) == entries
     assert overridden_estimates("bearing nup (NU214)", entries, None) == entries
+
+
+def test_report_of_a_file_names_the_folder_holding_it(tmp_path, capsys):
+    """``thermobearing report DIR/report.html`` was answered 'an existing folder (no such
+    folder here ...)' beside the file the user had just opened."""
+    from thermobearing.cli import main
+
+    (tmp_path / "scene.toml").write_text(NUP_POINT, encoding="utf-8")
+    (tmp_path / "report.html").write_text("<html></html>", encoding="utf-8")
+    assert main(["report", str(tmp_path / "report.html")]) != 0
+    err = capsys.readouterr().err
+    assert "a results folder, not a file: give the folder holding it" in err
+    assert f"`thermobearing report {tmp_path}`" in err and "no such folder" not in err
+    scene = tmp_path / "elsewhere" / "nup.toml"
+    scene.parent.mkdir()
+    scene.write_text(NUP_POINT, encoding="utf-8")
+    assert main(["report", str(scene)]) != 0
+    err = capsys.readouterr().err
+    assert f"a scene is run with `thermobearing run {scene} --out DIR`" in err

@@ -571,6 +571,18 @@ def _planned(folder: Path) -> list[str] | None:
 
 def run(args: argparse.Namespace) -> int:
     folder = Path(args.folder)
+    if folder.is_file():
+        # a file of a results folder (its report.html, summary.csv): it was answered "no
+        # such folder here" beside the file the user had just opened
+        raise InputError("folder", str(folder),
+                         f"a results folder, not a file: give the folder holding it, "
+                         f"`thermobearing report {folder.parent}`" if (
+                             folder.parent / "scene.toml").is_file() else
+                         "a results folder, not a file: the --out folder of `thermobearing "
+                         "run` or `thermobearing sweep`" + (
+                             f" (a scene is run with `thermobearing run {folder} --out DIR`, "
+                             "which writes the report there)"
+                             if folder.suffix.lower() == ".toml" else ""))
     if not folder.is_dir():
         raise InputError("folder", str(folder),
                          "an existing folder (no such folder here: give the --out folder of "
