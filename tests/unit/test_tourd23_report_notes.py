@@ -287,3 +287,18 @@ def test_report_of_a_file_names_the_folder_holding_it(tmp_path, capsys):
     assert main(["report", str(scene)]) != 0
     err = capsys.readouterr().err
     assert f"a scene is run with `thermobearing run {scene} --out DIR`" in err
+
+
+def test_the_sweep_summary_names_each_source_column_of_summary_csv(tmp_path):
+    """The sweep report said 'summary.csv has their registered names' and named them
+    nowhere: a reader of summary.csv could not tell which column was 'roller end / rib
+    friction'."""
+    from thermobearing.commands.report import sweep_report
+
+    text = sweep_report(_sweep_folder(tmp_path)).read_text(encoding="utf-8")
+    summary = text[text.index("<h2>Summary</h2>"):text.index("<h2>Model chain</h2>")]
+    for column, words in (("rib_friction [W]", "roller end / rib friction"),
+                          ("pocket_friction [W]", "cage pockets (element / pocket friction)"),
+                          ("churning_elements [W]",
+                           "oil drag on the rolling elements (churning)")):
+        assert f"<td>{column}</td>\n      <td>{words}</td>" in summary

@@ -197,7 +197,10 @@ def sweep_report(folder: Path) -> Path:
             *(figure_html(k, v) for k, v in figs.items()),
             _crosscheck_html(folder, df, records),
             "<h2>Summary</h2>",
-            "<p>the sources named in words; summary.csv has their registered names</p>",
+            "<p>the sources named in words; summary.csv has their registered names:</p>",
+            html_table(pd.DataFrame({"in summary.csv": [f"{s} [W]" for s in sources],
+                                     "loss": [source_label(s) for s in sources]}))
+            if sources else "",
             html_table(readable(df), max_rows=500, csv_name="summary.csv"),
             _chain_html(folder, params),
             "</body></html>"]
