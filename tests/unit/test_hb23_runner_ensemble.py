@@ -46,13 +46,15 @@ def _response(mass: float, steps: int, fail: set) -> SimpleNamespace:
 def stand_in(monkeypatch):
     """Cheap stand-ins of the models the runner calls; records the coupled runs."""
     calls: list[tuple[int, int]] = []
+    warmups: list[tuple[int, float]] = []
     fail: set = set()
 
     def build_model(bearing, lub, speed, load, mass, **kw):
         return SimpleNamespace(mass=mass, extras={"quasi_static": None})
 
-    def simulate_coupled(m, bearing, lub, *, steps_per_period=400, **kw):
+    def simulate_coupled(m, bearing, lub, *, steps_per_period=400, warmup_orbits=None, **kw):
         calls.append((round(m.mass * 1e6), steps_per_period))
+        warmups.append((round(m.mass * 1e6), warmup_orbits))
         return _response(m.mass, steps_per_period, fail)
 
     def pv_slip_map(bearing, lub, parameter, values, masses, *, model="reduced",
@@ -77,7 +79,7 @@ def stand_in(monkeypatch):
     monkeypatch.setattr(rd, "simulate_full", lambda m: one)
     monkeypatch.setattr(rd, "simulate_reduced", lambda m: one)
     monkeypatch.setattr(rdc, "simulate_coupled", simulate_coupled)
-    return calls, fail
+    return calls, fail, warmups
 
 
 def _run(steps: list[int], sweep_steps: list[int]) -> dict:
@@ -90,13 +92,17 @@ def _run(steps: list[int], sweep_steps: list[int]) -> dict:
 
 
 def test_unbalance_rows_are_ratios_of_ensemble_means_with_their_standard_errors(stand_in):
-    calls, _ = stand_in
+    calls, _, warmups = stand_in
     out = _run([400, 408, 416], [400, 408])
     base = calls[:7]
     # the base point without unbalance runs once (deterministic), each unbalance point
     # once per listed step count
     assert base == [(0, 400), (60, 400), (60, 408), (60, 416), (110, 400), (110, 408),
                     (110, 416)]
+    # the base points with unbalance take their own warm-up, the others the sweeps'
+    inputs = _inputs()
+    warm = [w for _, w in warmups[:7]]
+    assert warm == [inputs["coupled_warmup_orbits"]] + [inputs["coupled_base_warmup_orbits"]] * 6
     # slip 3.2 / 3.3 / 3.4 at 0.11 g and 2.9 / 3.0 / 3.1 at 0.06 g: means 3.3 / 3.0, each
     # SE^2 = 0.1^2 / 3 (independent points): SE(R) = R sqrt(SE^2 (1/3.3^2 + 1/3.0^2))
     var = 0.1**2 / 3.0
@@ -131,7 +137,7 @@ def test_one_trajectory_gives_the_value_without_a_standard_error(stand_in):
 
 
 def test_a_runaway_trajectory_is_left_out_and_counted(stand_in):
-    calls, fail = stand_in
+    _, fail, _ = stand_in
     fail.add((110, 416))
     with pytest.warns(ValidityWarning, match="416 steps per spin period"):
         inputs = _inputs()
@@ -144,6 +150,14 @@ def test_a_runaway_trajectory_is_left_out_and_counted(stand_in):
         3.25 / 3.0 * math.sqrt(0.05**2 / 3.25**2 + 0.01 / 3.0 / 3.0**2), rel=1e-6)
     assert out["coupled_trajectories_failed"] == 1.0
     assert out["coupled_points_failed"] == 0.0
+
+
+@pytest.mark.parametrize("bad", [-1.0, 51, True, "6"])
+def test_a_bad_base_warmup_is_refused_naming_it(bad):
+    inputs = _inputs()
+    inputs["coupled_base_warmup_orbits"] = bad
+    with pytest.raises(InputError, match=r"inputs\.coupled_base_warmup_orbits"):
+        paper003_pv_slip_trends(inputs, cases_dir() / CASE)
 
 
 @pytest.mark.parametrize("bad", [[], [399, 408], [400, 400], [400.0], [True], "400", 400,

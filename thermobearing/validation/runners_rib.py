@@ -22,6 +22,17 @@ statistics: time mean (gated), mean over the time in contact (``pv_contact_*``) 
 (``pv_peak_*``). The reduced model is compared with the coupled one (``reduced_vs_full_*``)
 and with the one-roller full model (``reduced_vs_one_roller_*``), with the costs; the
 axially free inner ring (eq. 20 line 1) is a report sensitivity (``ring_axial_*``).
+
+Ensembles: with an unbalance the coupled motion is a chaotic rib rattle, so one trajectory's
+time mean is one draw. Every point with unbalance is run once per step count of
+``coupled_trajectories`` (the base points of the unbalance rows, warm-up
+``coupled_base_warmup_orbits``) or ``coupled_sweep_trajectories`` (the sweeps' points), each
+step count a decorrelated trajectory; a row is its formula evaluated at the ensemble means
+and ``<row>_stderr`` its first-order standard error
+(:mod:`thermobearing.validation.ensemble`). The points without unbalance settle to a steady
+state and run once. The range gates are those of ``reference.csv``, applied to the ensemble
+value; a trajectory that runs away on every path is left out of its point's ensemble and
+counted (``coupled_trajectories_failed``). Case SOURCE.md, "Ensembles of the chaotic points".
 """
 
 from __future__ import annotations
@@ -143,6 +154,15 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
 
     orbits = float(inputs.get("coupled_orbits", 1.5))
     warm = float(inputs.get("coupled_warmup_orbits", orbits))
+    # warm-up of the base points with unbalance (the gated unbalance rows): long enough to
+    # leave the cage's start-up overshoot out of the window (SOURCE.md "Ensembles of the
+    # chaotic points"); default the sweeps' warm-up
+    base_warm = inputs.get("coupled_base_warmup_orbits", warm)
+    if (isinstance(base_warm, bool) or not isinstance(base_warm, (int, float))
+            or not 0.0 <= base_warm <= 50.0):
+        raise InputError("inputs.coupled_base_warmup_orbits", base_warm,
+                         "a number of cage orbits in [0, 50]")
+    base_warm = float(base_warm)
     # warm-up settling of the points without unbalance (deterministic motion that settles to
     # a steady state; SOURCE.md "Cage settling"): None = the fixed warm-up
     settle = inputs.get("coupled_settle")
@@ -196,15 +216,17 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
             failed_points.append(what)
         return point_of(rows, deterministic=mass <= 0.0 and bool(rows))
 
-    def coupled(mass: float, steps: list[int], **rib: float) -> PointEnsemble:
-        """All rollers + cage integrated (paper eqs. 18-19) at the base case."""
+    def coupled(mass: float, steps: list[int], warmup: float, **rib: float) -> PointEnsemble:
+        """All rollers + cage integrated (paper eqs. 18-19) at the base case, ``warmup``
+        orbits discarded (the points without unbalance: the sweeps' warm-up and settling)."""
         m = rd.build_model(bearing, lub, rd.PAPER003_BASE["speed"],
                            rd.PAPER003_BASE["radial_load"], mass, temperature=temperature,
                            quasi_static=cache.get(base_key), rib={"slide": slide, **rib},
                            pocket_dof=pocket_dof, coupling="none")
 
         def run(steps: int) -> dict[str, float]:
-            r = simulate_coupled(m, bearing, lub, n_orbits=orbits, warmup_orbits=warm,
+            r = simulate_coupled(m, bearing, lub, n_orbits=orbits,
+                                 warmup_orbits=warmup if mass > 0.0 else warm,
                                  steps_per_period=steps, settle=settle_for(mass),
                                  table_retries=retries)
             return {k: getattr(r, k) for k in _POINT_KEYS}
@@ -270,7 +292,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     # gated rows from the coupled all-roller + cage integration, the reduced model's beside
     reduced_base = sweep("radial_load", [rd.PAPER003_BASE["radial_load"]], [0.0, m_lo, m_hi])
     unbalance_rows(det(reduced_base), "reduced_")
-    coupled_base = [coupled(mass, base_steps) for mass in (0.0, m_lo, m_hi)]
+    coupled_base = [coupled(mass, base_steps, base_warm) for mass in (0.0, m_lo, m_hi)]
     unbalance_rows(coupled_base, "")
 
     # radial load (Fig. 7, no unbalance): slip falls and flattens above 5000 N; speed
@@ -302,7 +324,7 @@ def paper003_pv_slip_trends(inputs: dict[str, Any], case_dir: Path) -> dict[str,
     j5 = int(np.argmin(np.abs(np.asarray(ca) - 0.05e-3)))
     ra = reduced_or_none("axial_clearance", ca)
     for prefix, pts in (("reduced_", None if ra is None else det(ra)),
-                        ("", [coupled(m_hi, sweep_steps, axial_clearance=v) for v in ca])):
+                        ("", [coupled(m_hi, sweep_steps, warm, axial_clearance=v) for v in ca])):
         if pts is None:
             continue
         se = prefix == ""
