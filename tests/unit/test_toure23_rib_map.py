@@ -285,3 +285,23 @@ def test_cost_prints_the_map_s_estimate_and_maps_nothing(tmp_path, capsys, monke
     text = capsys.readouterr().out
     assert "123 points x 2 s = about 4.1 min of CPU with the coupled model" in text
     assert not out.exists()
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--temperature", "80"], ["--temperature = '80'", "e.g. '80 degC'"]),  # was '80 K'
+    (["--temperature", "500 degC"], ["--temperature = '500 degC'", "below 300 degC"]),
+    (["--orbits", "0,0"], ["--orbits = '0,0'", "statistics orbits > 0"]),
+    (["--unbalance", "-0.01 g"], ["--unbalance = '-0.01 g'", ">= 0 g"]),  # was -1e-05
+    (["--lubricant", "VG46"], ["--lubricant = 'VG46'", "did you mean 'ISO_VG46'"]),
+    (["--bearing", "NU_214"], ["--bearing = 'NU_214'", "did you mean 'NU214'"]),
+    (["--radial-load", "-5 kN"], ["--radial-load = '-5000 N'", ">= 0 N"]),
+])
+def test_more_bad_options_are_refused_before_any_solve(argv, words, tmp_path, capsys,
+                                                       captured_build):
+    """'--temperature 500 degC' and '--orbits 0,0' mapped every point."""
+    rc = cli.main(["rib-map", *argv, "--model", "reduced", "--out", str(tmp_path / "m")])
+    err = capsys.readouterr().err
+    assert rc == 1 and "Traceback" not in err
+    for word in words:
+        assert word in err, (word, err)
+    assert not captured_build

@@ -227,6 +227,27 @@ def _shown(p: str, value: float) -> str:
     return f"{_num(value / to_si(f'1 {unit}', KINDS[p], field=p))} {unit}"
 
 
+def _temperature(text: str) -> float:
+    """``--temperature`` [K]: a unit is needed (a bare ``80`` was answered "write '80 K'"),
+    and the oil must be below the 300 degC runaway limit of a scene (``500 degC`` mapped
+    every point)."""
+    from ..coupled import RUNAWAY_TEMPERATURE
+
+    try:
+        float(text)
+    except ValueError:
+        pass
+    else:
+        raise InputError("--temperature", text, f"a temperature with its unit, e.g. "
+                         f"'{text} degC'")
+    value = to_si(text, "temperature", field="--temperature")
+    if value >= RUNAWAY_TEMPERATURE:
+        raise InputError("--temperature", text, f"an oil temperature below "
+                         f"{RUNAWAY_TEMPERATURE - 273.15:g} degC (the runaway limit of a "
+                         "scene's transient)")
+    return value
+
+
 def _one_value(text: str, kind: str, field: str, example_unit: str, bare_ok: bool) -> float:
     """One SI value of an option (``--speed '20000 rpm'``, ``--radial-load 5000``)."""
     values = _parse_list(text, kind, field, example_unit, bare_ok=bare_ok)
@@ -348,13 +369,20 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
+    from ..errors import UnknownNameError
     from ..geometry import load_bearing
     from ..lubricant import load_lubricant
     from ..skidding import roller_dynamics as rd
 
-    bearing = load_bearing(args.bearing)
-    lubricant = load_lubricant(args.lubricant)
-    temperature = to_si(args.temperature, "temperature", field="--temperature")
+    try:
+        bearing = load_bearing(args.bearing)
+    except UnknownNameError as exc:  # was 'bearing preset = ...', no option named
+        raise UnknownNameError("--bearing", args.bearing, exc.known) from None
+    try:
+        lubricant = load_lubricant(args.lubricant)
+    except UnknownNameError as exc:
+        raise UnknownNameError("--lubricant", args.lubricant, exc.known) from None
+    temperature = _temperature(args.temperature)
     masses = _parse_list(args.unbalance, "mass", "--unbalance", "g")
     speed = _one_value(args.speed, "angular_speed", "--speed", "rpm", bare_ok=False)
     _check_speed(speed, "--speed")
@@ -369,6 +397,10 @@ def _run(args: argparse.Namespace) -> int:
         warm, stats = (float(v) for v in args.orbits.split(","))
     except ValueError as exc:
         raise InputError("--orbits", args.orbits, "two numbers 'warm-up,statistics'") from exc
+    if not (warm >= 0.0 and stats > 0.0 and math.isfinite(warm + stats)):
+        # '0,0' mapped every point over no orbit at all
+        raise InputError("--orbits", args.orbits, "warm-up orbits >= 0 and statistics "
+                         "orbits > 0, e.g. '2,3'")
     coupled_options = {"warmup_orbits": warm, "n_orbits": stats,
                        "ring_axial": bool(args.ring_axial)}
     coupling = args.coupling or ("none" if args.model == "coupled" else "rib")

@@ -143,8 +143,9 @@ def check_unbalance_option(unbalance: float, bearing: object, field: str) -> Non
     """InputError naming ``field`` unless 0 <= ``unbalance`` [kg] < the roller mass of
     ``bearing`` (paper 003's unbalance mass sits on one roller's chamfer; one as heavy as
     the roller is no roller). Values in g, as the option is written."""
-    check_positive(field, unbalance, allow_zero=True)
     mass = getattr(bearing, "roller_mass", None)
+    if not unbalance >= 0.0:  # negative or NaN, shown in g as written (was kg)
+        raise InputError(field, f"{unbalance * 1e3:.4g} g", "an unbalance_mass >= 0 g")
     if mass is not None and unbalance >= float(mass):
         raise InputError(field, f"{unbalance * 1e3:.4g} g",
                          f"an unbalance_mass from 0 g up to below the roller mass "
