@@ -302,3 +302,42 @@ def test_the_sweep_summary_names_each_source_column_of_summary_csv(tmp_path):
                           ("churning_elements [W]",
                            "oil drag on the rolling elements (churning)")):
         assert f"<td>{column}</td>\n      <td>{words}</td>" in summary
+
+
+def test_the_crosscheck_says_palmgren_leaves_out_the_thrust_of_a_roller_bearing(tmp_path):
+    """An NUP 214 at 1500 r/min under 0.5 / 1 / 2 kN axial: Palmgren gave 133 W at every
+    thrust beside the run's 135-281 W (P1 = F_r for a cylindrical roller bearing), and the
+    cross-check did not say its estimate cannot see the axial load."""
+    from thermobearing.global_friction import palmgren
+    from thermobearing.report_context import (
+        catalogue_crosscheck,
+        cylindrical_thrust_notes,
+        load_scene_bearings,
+        load_scene_lubricant,
+        sweep_catalogue_crosscheck,
+    )
+    from thermobearing.scene import loads_scene
+
+    scene = loads_scene(NUP_POINT)
+    bearings, _ = load_scene_bearings(scene)
+    lubricant = load_scene_lubricant(scene)
+    # the model's own independence of the thrust, which the note states
+    omega, nu = 1500 * math.pi / 30.0, 30e-6
+    powers = {fa: palmgren(bearings["nup"], nu, omega, 5e3, fa).power for fa in (0.0, 2e3)}
+    assert powers[0.0] == pytest.approx(powers[2e3], rel=1e-12)
+    (note,) = cylindrical_thrust_notes(bearings, {"nup"})
+    assert "takes the radial load only (P1 = F_r)" in note
+    assert cylindrical_thrust_notes(bearings, set()) == []
+    # a run's cross-check: said under a thrust, not without one
+    point = {"step": 0, "bearing": "nup", "speed [rpm]": 1500.0, "radial load [kN]": 5.0,
+             "source": "rib_friction", "power [W]": 97.2}
+    for axial, said in ((1.0, True), (0.0, False)):
+        losses = pd.DataFrame([{**point, "axial load [kN]": axial}])
+        _, notes = catalogue_crosscheck(losses, {}, scene, bearings, lubricant)
+        assert any("P1 = F_r" in n for n in notes) is said
+    # a sweep's: once, however many cases
+    records = [{"case": f"c{fa}", "params": {"schedule.axial_load": f"{fa} kN"},
+                "result": {"mean total loss [W]": 100.0 + fa}} for fa in (0.5, 2)]
+    table, notes = sweep_catalogue_crosscheck(scene, records)
+    assert sum("P1 = F_r" in n for n in notes) == 1
+    assert table["Palmgren M0 + M1 [W]"].nunique() == 1  # the same at both thrusts
