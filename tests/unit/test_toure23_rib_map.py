@@ -228,7 +228,8 @@ def test_help_gives_the_defaults_and_the_base_point(capsys):
     text = " ".join(capsys.readouterr().out.split())
     for word in ("default: CRB_50x75x16", "default: MIL_PRF_23699", "default: 80 degC",
                  "default: 30000 rpm", "default: 3000 N", "default: 0.06,0.08,0.11 g",
-                 "base point", "--keep-going"):
+                 "base point", "--keep-going",
+                 "rib_angle 0.3,0.4,0.45,0.5,0.55,0.6,0.7,0.8 deg"):
         assert word in text, word
 
 

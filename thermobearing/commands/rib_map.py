@@ -64,8 +64,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                      "start and above the figures); every point is checked before the "
                      "first solve. One progress line per point on stderr; "
                      "Ctrl-C keeps the rows finished so far. All six maps with the default "
-                     "coupled model: 123 points of 2-5 s CPU each (measured on the shared "
-                     "build machine); --model reduced about 0.2 s per point. "
+                     "coupled model: 123 points of 1.2-1.5 s CPU each, 5-6 s where a new "
+                     "speed or load builds its traction table (measured 2026-11-24 on the "
+                     "shared build machine; --cost estimates a map); --model reduced about "
+                     "0.08 s per point. "
                      "Example: thermobearing rib-map --param rib_angle --values "
                      "'0.3,0.45,0.55 deg' --unbalance '0.06,0.11 g' --out ribmap")
     parser.add_argument("--bearing", default="CRB_50x75x16",
@@ -86,7 +88,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "number is in N)")
     parser.add_argument("--param", action="append", dest="params", default=None,
                         choices=sorted(DEFAULT_SWEEPS), help="parameter(s) to sweep "
-                        "(repeatable; default: all six)")
+                        "(repeatable; default: all six), each over paper 003's values "
+                        "unless --values: " + "; ".join(
+                            f"{p} {','.join(f'{v:g}' for v in vals)} {unit}"
+                            for p, (unit, vals) in DEFAULT_SWEEPS.items()))
     parser.add_argument("--values", default=None,
                         help="sweep values with one unit, e.g. '0.3,0.5,0.7 deg' or "
                              "'0.03 0.05 mm' (only with a single --param; a negative first "
@@ -96,7 +101,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "%(default)s, paper 003's; each below the roller's mass)")
     parser.add_argument("--model", default="coupled", choices=("reduced", "full", "coupled"),
                         help="coupled (default: all rollers + cage, spins and cage speed "
-                             "integrated, paper 003 eqs. 18-19; ~1.5 s CPU per point), "
+                             "integrated, paper 003 eqs. 18-19; ~1.3 s CPU per point), "
                              "reduced (frozen load states, quasi-static spins) or full (one "
                              "roller over an orbit, quasi-static spins)")
     parser.add_argument("--orbits", default="2,3",
