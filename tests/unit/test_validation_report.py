@@ -58,3 +58,29 @@ def test_validate_command_writes_the_report(tmp_path, capsys):
     assert "### paper002_cage_frequency_arithmetic" in text
     assert "`thermobearing validate paper002_cage_frequency_arithmetic`" in text
     assert "| PASS |" in text and "**FAIL**" not in text
+
+
+def test_ensemble_rows_print_their_standard_error_on_one_line(tmp_path):
+    """A row ``q`` with a companion ``q_stderr`` of the same case reads ``value ± se``.
+
+    The companion is not listed again; a ``_stderr`` row without its base row (or of another
+    case) stays an ordinary row; the verdict is the value's.
+    """
+    recs = [
+        Record("c", "slip_ratio", "-", 1.1, 1.0771, -0.0208, "[1, 1e+09] -", True, True),
+        Record("c", "slip_ratio_stderr", "-", math.nan, 0.0231, math.nan, "report", False,
+               False),
+        Record("c", "pv_ratio", "-", 1.1, 0.9941, -0.0963, "[1, 1e+09] -", False, True),
+        Record("c", "pv_ratio_stderr", "-", math.nan, 0.0042, math.nan, "report", False,
+               False),
+        Record("d", "slip_ratio_stderr", "-", math.nan, 0.5, math.nan, "report", False, False),
+    ]
+    text = markdown_report(recs, folder=tmp_path)
+    assert "| slip_ratio | - | 1.1 | 1.0771 ± 0.0231 | -2.08 % | [1, 1e+09] - | PASS |" in text
+    assert "| pv_ratio | - | 1.1 | 0.9941 ± 0.0042 | -9.63 % | [1, 1e+09] - | **FAIL** |" in text
+    fail_section = text.split("## Rows that miss the asked accuracy")[1].split("## Cases")[0]
+    assert "| pv_ratio | 1.1 | 0.9941 ± 0.0042 |" in fail_section
+    assert "| slip_ratio_stderr |" not in text.split("### d")[0]
+    assert "| slip_ratio_stderr | - | - | 0.5 | - | report | report |" in text  # case d
+    assert "3 rows: 1 of 2 gated rows pass, 1 fail" in text
+    assert "2 rows estimated from ensembles of trajectories carry their standard error" in text

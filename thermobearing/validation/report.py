@@ -3,9 +3,11 @@
 One section per case: what it checks (the first paragraph of its ``SOURCE.md``, linked),
 every row with reference, computed value, error, tolerance and verdict, and the case's
 notes. Gated rows that fail are listed first in a summary with the line of ``SOURCE.md``
-that gives the reason to read. The page is what ``thermobearing validate --report FILE``
-writes; it states the date, the package version and the cases run, so a reader knows what
-build it describes.
+that gives the reason to read. A row ``q`` with a companion row ``q_stderr`` of the same
+case (the standard error of an ensemble estimate, e.g. the chaotic rib rattle of paper
+003) is printed as ``value ± stderr`` on one line and the companion is not listed again.
+The page is what ``thermobearing validate --report FILE`` writes; it states the date, the
+package version and the cases run, so a reader knows what build it describes.
 """
 
 from __future__ import annotations
@@ -35,6 +37,32 @@ def _verdict(r: Record) -> str:
     if r.gated:
         return "PASS" if r.passed else "**FAIL**"
     return "in range" if r.passed else "report"
+
+
+STDERR_SUFFIX = "_stderr"
+
+
+def _stderr_map(records: Sequence[Record]) -> dict[tuple[str, str], float]:
+    """(case, quantity) -> standard error, from the ``<quantity>_stderr`` companion rows.
+
+    Only companions whose base row exists in the same case are taken.
+    """
+    names = {(r.case, r.quantity) for r in records}
+    out: dict[tuple[str, str], float] = {}
+    for r in records:
+        if r.quantity.endswith(STDERR_SUFFIX):
+            base = (r.case, r.quantity[: -len(STDERR_SUFFIX)])
+            if base in names:
+                out[base] = r.computed
+    return out
+
+
+def _computed(r: Record, stderr: dict[tuple[str, str], float]) -> str:
+    """The computed value, with ``± stderr`` where the row has a companion."""
+    se = stderr.get((r.case, r.quantity))
+    if se is None or not math.isfinite(r.computed):
+        return _fmt(r.computed)
+    return f"{_fmt(r.computed)} ± {_fmt(se)}"
 
 
 def _summary_line(case_dir: Path) -> tuple[str, str]:
@@ -70,6 +98,9 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
     page will be written to (links to each ``SOURCE.md`` are made relative to it).
     """
     folder = folder or cases_dir()
+    stderr = _stderr_map(records)
+    companions = {(case, q + STDERR_SUFFIX) for case, q in stderr}
+    records = [r for r in records if (r.case, r.quantity) not in companions]
     cases = list(dict.fromkeys(r.case for r in records))
     gated = [r for r in records if r.gated]
     failed = [r for r in gated if not r.passed]
@@ -84,7 +115,10 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
         f"{len(gated)} gated rows pass, {len(failed)} fail; "
         f"{len(records) - len(gated)} `report` rows are printed beside the paper without a "
         "gate. Each case's `SOURCE.md` says where every number comes from, why the "
-        "tolerance is what it is and, for a failing row, what was measured about the cause.",
+        "tolerance is what it is and, for a failing row, what was measured about the cause."
+        + (f" {len(companions)} rows estimated from ensembles of trajectories carry their "
+           "standard error as `± SE` after the computed value (verdicts use the value)."
+           if companions else ""),
         "",
     ]
 
@@ -100,7 +134,7 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
                   "|---|---|---|---|---|---|"]
         for r in failed:
             lines.append(f"| {link(r.case)} | {r.quantity} | {_fmt(r.reference)} | "
-                         f"{_fmt(r.computed)} | {_error(r)} | {r.tolerance} |")
+                         f"{_computed(r, stderr)} | {_error(r)} | {r.tolerance} |")
         lines.append("")
     lines += ["## Cases", "", "| case | gated rows passing | report rows |", "|---|---|---|"]
     for case in cases:
@@ -122,7 +156,7 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
                   "|---|---|---|---|---|---|---|"]
         for r in rs:
             lines.append(f"| {r.quantity} | {r.unit or '-'} | {_fmt(r.reference)} | "
-                         f"{_fmt(r.computed)} | {_error(r)} | {r.tolerance} | "
+                         f"{_computed(r, stderr)} | {_error(r)} | {r.tolerance} | "
                          f"{_verdict(r)} |")
         notes = sorted({r.note for r in rs if r.note})
         if notes:
