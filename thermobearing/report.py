@@ -358,6 +358,14 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
                 long = len(categories) > 4 or max(len(t) for t in labels) > 12
                 ax.set_xticks(range(len(categories)), labels, fontsize=7,
                               rotation=30 if long else 0, ha="right" if long else "center")
+    if len(groups) > 1:
+        for ax, y in zip(axes.flat[:len(ys)], ys, strict=True):
+            if _curves_coincide(groups, x, y):
+                # a result the other swept values do not move (the film parameter over the
+                # axial load of a roller bearing): the last curve hid the others, and the
+                # legend named curves the panel did not show
+                ax.text(0.98, 0.02, f"the {len(groups)} curves coincide", fontsize=7,
+                        ha="right", va="bottom", transform=ax.transAxes, color="0.3")
     if by:
         title = ", ".join(by)
         if outside:
@@ -367,6 +375,23 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
         else:
             axes.flat[0].legend(fontsize=7, title=title, title_fontsize=7)
     return _png(fig)
+
+
+def _curves_coincide(groups: Sequence[tuple[Any, pd.DataFrame]], x: str, y: str) -> bool:
+    """Every curve of ``groups`` gives the same ``y`` (to 1e-9 relative) at the same ``x``
+    values: drawn one over the other, only the last is seen."""
+    curves = []
+    for _, g in groups:
+        g = g.sort_values(x)
+        xs = pd.to_numeric(g[x], errors="coerce").to_numpy(dtype=float)
+        vs = pd.to_numeric(g[y], errors="coerce").to_numpy(dtype=float)
+        curves.append((xs, vs))
+    first_x, first_y = curves[0]
+    if not np.isfinite(first_y).any():
+        return False
+    return all(xs.shape == first_x.shape and np.array_equal(xs, first_x)
+               and np.allclose(vs, first_y, rtol=1e-9, atol=0.0, equal_nan=True)
+               for xs, vs in curves[1:])
 
 
 def category_labels(categories: Sequence[Any]) -> list[str]:

@@ -341,3 +341,25 @@ def test_the_crosscheck_says_palmgren_leaves_out_the_thrust_of_a_roller_bearing(
     table, notes = sweep_catalogue_crosscheck(scene, records)
     assert sum("P1 = F_r" in n for n in notes) == 1
     assert table["Palmgren M0 + M1 [W]"].nunique() == 1  # the same at both thrusts
+
+
+def test_whatif_panels_say_when_their_curves_coincide(monkeypatch):
+    """The NUP sweep's film parameter does not move with the axial load: three curves drawn
+    one over the other showed only the last colour beside a legend of three."""
+    import thermobearing.report as rep
+
+    figs = []
+    monkeypatch.setattr(rep, "_png", lambda fig: figs.append(fig) or b"png")
+    rows = [{"schedule.speed [rpm]": n, "schedule.axial_load [kN]": fa,
+             "mean total loss [W]": 0.1 * n + 50.0 * fa, "min film parameter [-]": n / 500.0}
+            for n in (1500, 3000, 4500) for fa in (0.5, 1.0, 2.0)]
+    rep.fig_whatif(pd.DataFrame(rows), "schedule.speed [rpm]",
+                   ["mean total loss [W]", "min film parameter [-]"],
+                   group=["schedule.axial_load [kN]"])
+    loss, film = figs[0].axes[:2]
+    assert [t.get_text() for t in film.texts] == ["the 3 curves coincide"]
+    assert len(loss.texts) == 0
+    # one curve: nothing to say
+    figs.clear()
+    rep.fig_whatif(pd.DataFrame(rows[:3]), "schedule.speed [rpm]", ["min film parameter [-]"])
+    assert len(figs[0].axes[0].texts) == 0
