@@ -106,7 +106,9 @@ def test_the_default_bearing_keeps_paper_003_s_base_point(tmp_path, captured_bui
     assert rib["axial_clearance"] == pytest.approx(base["axial_clearance"], rel=1e-12)
     assert captured_build["pocket_clearance"] == pytest.approx(base["pocket_clearance"],
                                                                rel=1e-12)
-    assert captured_build["speed"] == pytest.approx(base["speed"], rel=1e-12)
+    # exactly paper 003's float: '30000 rpm' is one ulp from it, and the impacting motion
+    # with an unbalance carries an ulp into the map's numbers
+    assert captured_build["speed"] == base["speed"]
     assert captured_build["radial_load"] == pytest.approx(base["radial_load"], rel=1e-12)
 
 
