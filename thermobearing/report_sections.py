@@ -250,6 +250,15 @@ def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -
                      "orbital speed without a balance of its own), so the pocket friction "
                      "books nothing; the pocket forces need the skidding solver "
                      "(kinematics = \"skidding\")")
+    zero = [s for s in ("raceway_traction", "pocket_friction") if _all_zero(frame, f"{s} [W]")]
+    rollers = [name for name, b in bearings.items() if getattr(b, "kind", None) == "cylindrical"]
+    if race_control and zero and rollers and _carries_thrust(frame, scene):
+        # the notes above send the reader to the skidding solver, which refuses a roller
+        # bearing under an axial load (it carries no rib thrust)
+        notes.append(f"{', '.join(rollers)}: the skidding solver carries no rib thrust, so "
+                     "it refuses a cylindrical roller bearing under an axial load; the "
+                     f"{' and the '.join(rl.source_label(s) for s in zero)} of this run "
+                     "are not computed (0 W stands for 'not modelled', not for no loss)")
     if _all_zero(frame, "cage_guide [W]"):
         guided = [name for name, b in bearings.items()
                   if getattr(getattr(b, "cage", None), "guidance", None) == "rolling_element"]

@@ -363,3 +363,26 @@ def test_whatif_panels_say_when_their_curves_coincide(monkeypatch):
     figs.clear()
     rep.fig_whatif(pd.DataFrame(rows[:3]), "schedule.speed [rpm]", ["min film parameter [-]"])
     assert len(figs[0].axes[0].texts) == 0
+
+
+def test_a_roller_bearing_under_thrust_is_told_its_zero_columns_are_not_computed():
+    """The race-control notes send the reader to the skidding solver, which refuses a
+    cylindrical roller bearing under an axial load: for the NUP the 0 W columns are 'not
+    modelled', not 'no loss', and the report now says so."""
+    from thermobearing.report_sections import source_notes
+
+    nup = SimpleNamespace(kind="cylindrical", ribbed_ring="both",
+                          cage=SimpleNamespace(guidance="rolling_element"))
+    notes = source_notes(_frame(), _scene(), {"nup": nup})
+    (said,) = [n for n in notes if "carries no rib thrust" in n]
+    assert said.startswith("nup: the skidding solver carries no rib thrust")
+    assert ("the raceway contacts (rolling and sliding shear) and the cage pockets (element "
+            "/ pocket friction) of this run are not computed") in said
+    # no thrust, a ball bearing, or skidding: not said
+    for frame, scene, bearing in (
+            (_frame(**{"axial load [kN]": [0.0, 0.0]}), _scene(axial=0.0), nup),
+            (_frame(), _scene(), SimpleNamespace(kind="angular_contact", ribbed_ring=None,
+                                                 cage=nup.cage)),
+            (_frame(), _scene("skidding"), nup)):
+        assert not [n for n in source_notes(frame, scene, {"nup": bearing})
+                    if "carries no rib thrust" in n]
