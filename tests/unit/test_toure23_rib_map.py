@@ -298,6 +298,7 @@ def test_cost_prints_the_map_s_estimate_and_maps_nothing(tmp_path, capsys, monke
     (["--lubricant", "VG46"], ["--lubricant = 'VG46'", "did you mean 'ISO_VG46'"]),
     (["--bearing", "NU_214"], ["--bearing = 'NU_214'", "did you mean 'NU214'"]),
     (["--radial-load", "-5 kN"], ["--radial-load = '-5000 N'", ">= 0 N"]),
+    (["--bearing", "my_crb.toml"], ["--bearing = 'my_crb.toml'", "looked at /"]),
 ])
 def test_more_bad_options_are_refused_before_any_solve(argv, words, tmp_path, capsys,
                                                        captured_build):
@@ -308,3 +309,25 @@ def test_more_bad_options_are_refused_before_any_solve(argv, words, tmp_path, ca
     for word in words:
         assert word in err, (word, err)
     assert not captured_build
+
+
+def test_ctrl_c_keeps_the_rows_finished_and_says_where(tmp_path, capsys, monkeypatch):
+    """The point loop of --keep-going still stops at Ctrl-C with the rows written."""
+    done = _fake_map(set())
+    calls = []
+
+    def interrupted(*args, **kwargs):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return done(*args, **kwargs)
+
+    monkeypatch.setattr(rd, "pv_slip_map", interrupted)
+    out = tmp_path / "m"
+    rc = cli.main(["rib-map", "--param", "speed", "--values", "20000,25000 rpm",
+                   "--unbalance", "0.06 g", "--keep-going", "--out", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 130
+    assert "interrupted while mapping speed" in err and "rerun with --param" in err
+    assert len((out / "rib_map_speed.csv").read_text().splitlines()) == 2
+    assert not (out / "rib_map_speed.png").exists()

@@ -392,6 +392,11 @@ def _run(args: argparse.Namespace) -> int:
         bearing = load_bearing(args.bearing)
     except UnknownNameError as exc:  # was 'bearing preset = ...', no option named
         raise UnknownNameError("--bearing", args.bearing, exc.known) from None
+    except InputError as exc:
+        if exc.field != "bearing path":
+            raise
+        raise InputError("--bearing", args.bearing, "a bearing preset name or an existing "
+                         f"TOML file (looked at {Path(args.bearing).resolve()})") from None
     try:
         lubricant = load_lubricant(args.lubricant)
     except UnknownNameError as exc:
