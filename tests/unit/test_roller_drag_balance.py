@@ -19,9 +19,7 @@ import pytest
 from tests.unit.scene_step_heat import first_step_heat
 from thermobearing import skidding
 from thermobearing.errors import InputError, ValidityWarning
-from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import default_traction_law, solve_roller
 from thermobearing.state import OilSupply, OperatingPoint
 
@@ -54,16 +52,6 @@ want = ["losses"]
 """
 JET = 'method = "jet"\nflow = "1 L/min"'
 BATH = 'method = "oil_bath"\nflow = "0 L/min"\nlevel = "15 mm"'
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 def _scene_heat(supply: str, load: str, preset: str = "NU214", speed: str = "5000 rpm"):

@@ -24,9 +24,7 @@ import pytest
 from scene_parts import VG46_2LPM, scene_title
 
 from tests.unit.scene_step_heat import first_step_heat
-from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate
-from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import default_traction_law, solve_roller
 from thermobearing.state import OilSupply, OperatingPoint
 
@@ -48,16 +46,6 @@ kinematics = "skidding"
 mode = "steady"
 want = ["losses"]
 """
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
-
-
-@pytest.fixture(scope="module")
-def paper_oil():
-    return load_lubricant("PAPER000_OIL")
 
 
 def _scene_state(speed: str, load: str):
@@ -128,39 +116,39 @@ PAPER000 = dict(ring_support="films", film_pressure="regime_min", pocket_film="t
     {"clearance_film": True},  # unloaded rollers driven across the gap (inner load 0)
     PAPER000,                  # the validation case's model (film-supported ring)
 ], ids=["default", "clearance_film", "paper000_case"])
-def test_api_states_book_the_shaft_power(nu214, paper_oil, options):
-    res = solve_roller(nu214, paper_oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12, **options)
+def test_api_states_book_the_shaft_power(nu214, oil, options):
+    res = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12, **options)
     assert res.converged
-    booked = _check_identity(nu214, paper_oil, res, OMEGA, 150.0)
+    booked = _check_identity(nu214, oil, res, OMEGA, 150.0)
     assert booked["raceway_traction"] > 0 and booked["pocket_friction"] > 0
     if options.get("clearance_film"):
         free = res.inner_load == 0.0
         assert np.any(free) and np.all(res.inner.traction[free] > 0.0)
 
 
-def test_whirl_samples_book_their_shaft_power(nu214, paper_oil):
+def test_whirl_samples_book_their_shaft_power(nu214, oil):
     """Paper 000 Tables 2-3 conditions (e = 6e-5 m, synchronous whirl, 200 N): the whirl
     inertia of evenly spaced rollers does no net work (sum_j a_t,j = 0), so every quasi-static
     sample books its own shaft power."""
     from thermobearing.skidding.whirl import Whirl
 
-    w = solve_roller(nu214, paper_oil, OMEGA, 200.0, 0.0, 313.15, tol=1e-12,
+    w = solve_roller(nu214, oil, OMEGA, 200.0, 0.0, 313.15, tol=1e-12,
                      whirl=Whirl(6.0e-5, n_samples=4), **PAPER000)
     assert w.converged
     for state in w.states:
-        _check_identity(nu214, paper_oil, state, OMEGA, 200.0)
+        _check_identity(nu214, oil, state, OMEGA, 200.0)
 
 
-def test_raceway_traction_books_the_inlet_outlet_shear(nu214, paper_oil):
+def test_raceway_traction_books_the_inlet_outlet_shear(nu214, oil):
     """The solver's Couette force has a Hertz-zone part (the traction law) and a Newtonian
     inlet/outlet part (paper 000 eq. 5 outside the Hertz zone); the law's integral over the
     Hertz zone alone (the state without the solver's forces) misses the second."""
-    res = solve_roller(nu214, paper_oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12)
+    res = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12)
     state = res.kinematic_state
-    new = evaluate(["raceway_traction"], _context(nu214, paper_oil, state, OMEGA, 150.0))[0]
+    new = evaluate(["raceway_traction"], _context(nu214, oil, state, OMEGA, 150.0))[0]
     stripped = dataclasses.replace(state, contacts=tuple(cs.with_() for cs in state.contacts))
     law_only = evaluate(["raceway_traction"],
-                        _context(nu214, paper_oil, stripped, OMEGA, 150.0))[0]
+                        _context(nu214, oil, stripped, OMEGA, 150.0))[0]
     for race, f, v in (("inner", res.inner, res.inner_sliding_speed),
                        ("outer", res.outer, res.outer_sliding_speed)):
         total = float(np.sum(f.traction * v))
@@ -172,18 +160,18 @@ def test_raceway_traction_books_the_inlet_outlet_shear(nu214, paper_oil):
         assert total - hertz > 0.1 * total  # the inlet/outlet shear is not small here
 
 
-def test_pocket_books_the_film_friction_unless_a_coefficient_is_asked_for(nu214, paper_oil):
-    res = solve_roller(nu214, paper_oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12)
+def test_pocket_books_the_film_friction_unless_a_coefficient_is_asked_for(nu214, oil):
+    res = solve_roller(nu214, oil, OMEGA, 150.0, 0.0, 313.15, tol=1e-12)
     state = res.kinematic_state
     d = nu214.roller_diameter
-    film = evaluate(["pocket_friction"], _context(nu214, paper_oil, state, OMEGA, 150.0))[0]
+    film = evaluate(["pocket_friction"], _context(nu214, oil, state, OMEGA, 150.0))[0]
     assert film.total == pytest.approx(
         float(np.sum(np.abs(res.pocket_friction) * np.abs(res.roller_speed) * 0.5 * d)),
         rel=1e-12)
     assert film.details["regime"].startswith("solver pocket film")
     # paper 002 eq. 19 with a friction coefficient, on request (no longer the solver's force)
     mu = evaluate(["pocket_friction"], _context(
-        nu214, paper_oil, state, OMEGA, 150.0,
+        nu214, oil, state, OMEGA, 150.0,
         options={"pocket_friction": {"friction_coefficient": 0.05}}))[0]
     assert mu.total == pytest.approx(float(np.sum(
         0.05 * np.abs(res.pocket_normal_force) * np.abs(res.roller_speed) * 0.5 * d)),
@@ -191,19 +179,19 @@ def test_pocket_books_the_film_friction_unless_a_coefficient_is_asked_for(nu214,
 
 
 def test_rolling_resistance_books_the_solver_force_unless_a_model_is_asked_for(nu214,
-                                                                                paper_oil):
+                                                                                oil):
     """The carried Q_x is the solver's (starved by the inlet oil layer here: smaller than
     the flooded formula); naming a model recomputes the flooded force on purpose."""
-    res = solve_roller(nu214, paper_oil, OMEGA, 2000.0, 0.0, 313.15, tol=1e-12,
+    res = solve_roller(nu214, oil, OMEGA, 2000.0, 0.0, 313.15, tol=1e-12,
                        oil_layer=2.0e-6)
     state = res.kinematic_state
     carried = evaluate(["ehl_rolling_resistance"],
-                       _context(nu214, paper_oil, state, OMEGA, 2000.0))[0]
+                       _context(nu214, oil, state, OMEGA, 2000.0))[0]
     expected = sum(float(np.sum(f.rolling_force * np.abs(ue))) for f, ue in (
         (res.inner, res.inner_entrainment_speed), (res.outer, res.outer_entrainment_speed)))
     assert carried.total == pytest.approx(expected, rel=1e-12)
     flooded = evaluate(["ehl_rolling_resistance"], _context(
-        nu214, paper_oil, state, OMEGA, 2000.0,
+        nu214, oil, state, OMEGA, 2000.0,
         options={"ehl_rolling_resistance": {"rolling_force": "regime_min"}}))[0]
     assert flooded.total > carried.total
-    _check_identity(nu214, paper_oil, res, OMEGA, 2000.0)
+    _check_identity(nu214, oil, res, OMEGA, 2000.0)

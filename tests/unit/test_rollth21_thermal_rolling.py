@@ -18,7 +18,6 @@ import pytest
 from thermobearing import skidding
 from thermobearing.errors import InputError, UnknownNameError, ValidityWarning
 from thermobearing.film import gupta_1992
-from thermobearing.geometry import load_bearing
 from thermobearing.heat_sources import HeatContext, evaluate, raceway
 from thermobearing.lubricant import load_lubricant
 from thermobearing.skidding.roller import build_model, default_traction_law, solve_roller
@@ -29,11 +28,6 @@ from thermobearing.state import OilSupply, OperatingPoint
 RPM = math.pi / 30.0
 T = 323.15
 SUPPLY = OilSupply("jet", 2e-3 / 60.0, T)
-
-
-@pytest.fixture(scope="module")
-def nu214():
-    return load_bearing("NU214")
 
 
 @pytest.fixture(scope="module")
