@@ -331,3 +331,26 @@ def test_ctrl_c_keeps_the_rows_finished_and_says_where(tmp_path, capsys, monkeyp
     assert "interrupted while mapping speed" in err and "rerun with --param" in err
     assert len((out / "rib_map_speed.csv").read_text().splitlines()) == 2
     assert not (out / "rib_map_speed.png").exists()
+
+
+@pytest.mark.parametrize("text, kind, expected", [
+    ("0.3 deg, 0.5 deg", "angle", [math.radians(0.3), math.radians(0.5)]),
+    ("20000rpm,25000rpm", "angular_speed", [20000 * math.pi / 30, 25000 * math.pi / 30]),
+    ("1 kN, 2000 N", "force", [1000.0, 2000.0]),
+    ("0.3,0.5 deg", "angle", [math.radians(0.3), math.radians(0.5)]),   # one unit, as before
+    ("0.03 0.05 mm", "length", [3e-5, 5e-5]),
+])
+def test_values_may_carry_their_own_units(text, kind, expected):
+    """'0.3 deg, 0.5 deg' (as sweep --set reads lists) was refused: 'numbers ... then one
+    unit'."""
+    assert rib_map._parse_list(text, kind, "--values", "deg") == pytest.approx(expected,
+                                                                               rel=1e-12)
+
+
+def test_a_list_mixing_bare_and_unit_values_says_both_spellings():
+    from thermobearing.errors import InputError
+
+    with pytest.raises(InputError) as info:
+        rib_map._parse_list("0.3 deg, 0.5", "angle", "--values", "deg")
+    assert "then one unit, e.g. '1,2 deg', or each value with its unit" in str(info.value)
+    assert "'0.3,deg,0.5 deg'" not in str(info.value)  # the example it made of the tokens

@@ -147,12 +147,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="no progress line per point (on stderr)")
 
 
+#: one value with its own unit: a number, then a unit that starts with a letter, ° or µ
+_VALUE_WITH_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*"
+                              r"([A-Za-z°µ%].*)$")
+
+
 def _parse_list(text: str, kind: str, field: str, example_unit: str,
                 bare_ok: bool = False) -> list[float]:
     """SI values of a list like ``'0.3,0.5,0.7 deg'`` or ``'0.3 0.5 0.7 deg'`` (one unit at
     the end, commas and/or spaces between the numbers). Bare numbers are refused unless
     ``bare_ok`` (the display unit is the SI one): ``'0.01,0.03'`` for an axial clearance
-    would be 10 and 30 mm."""
+    would be 10 and 30 mm. Each value may also carry its own unit (``'0.3 deg, 0.5 deg'``,
+    ``'20000rpm,25000rpm'``), as ``sweep --set`` reads them; it was refused as "numbers
+    ... then one unit"."""
+    items = [t for t in re.split(r"\s*[,;]\s*", text.strip()) if t]
+    each = [_VALUE_WITH_UNIT.match(t) for t in items]
+    if len(items) > 1 and all(each):
+        return [to_si(f"{m.group(1)} {m.group(2)}", kind, field=field) for m in each]
     tokens = [t for t in re.split(r"[,;\s]+", text.strip()) if t]
     if not tokens:
         raise InputError(field, text, f"a list of values with a unit, e.g. '1,2 {example_unit}'")
@@ -161,6 +172,13 @@ def _parse_list(text: str, kind: str, field: str, example_unit: str,
         float(tokens[-1])
     except ValueError:
         unit = tokens.pop()
+    for tok in tokens:
+        try:
+            float(tok)
+        except ValueError:
+            raise InputError(field, text, f"numbers separated by commas or spaces, then one "
+                             f"unit, e.g. '1,2 {example_unit}', or each value with its "
+                             f"unit, '1 {example_unit}, 2 {example_unit}'") from None
     if not unit and not bare_ok:
         from ..units import SI_UNITS
 
