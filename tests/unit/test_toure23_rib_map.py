@@ -236,7 +236,8 @@ def test_help_gives_the_defaults_and_the_base_point(capsys):
 
 
 def test_the_settings_file_records_the_base_point_and_model(nj214, tmp_path, monkeypatch):
-    """The CSV files give the swept column only; the base point was nowhere in the folder."""
+    """The CSV files give the swept column only; the base point was nowhere in the folder.
+    One file per map: a folder holding maps of several runs keeps each map's settings."""
     import json
 
     monkeypatch.setattr(rd, "pv_slip_map", _fake_map(set()))
@@ -245,8 +246,9 @@ def test_the_settings_file_records_the_base_point_and_model(nj214, tmp_path, mon
                      "2000 rpm", "--speed", "4000 rpm", "--radial-load", "8000",
                      "--unbalance", "0,0.5 g", "--model", "reduced", "--no-plot",
                      "--out", str(out)]) == 0
-    settings = json.loads((out / "rib_map_settings.json").read_text())
+    settings = json.loads((out / "rib_map_speed_settings.json").read_text())
     assert settings["bearing"] == "NJ214_tour" and settings["model"] == "reduced"
+    assert settings["parameter"] == "speed"
     assert settings["unbalance_mass [g]"] == pytest.approx([0.0, 0.5])
     assert settings["base_point"] == pytest.approx({
         "radial_load [N]": 8000.0, "speed [rpm]": 4000.0, "axial_clearance [mm]": 0.05,

@@ -9,7 +9,8 @@ unbalance masses, with :func:`thermobearing.skidding.roller_dynamics.pv_slip_map
 ``<out>/rib_map_<parameter>.csv`` (units in the column names: the parameter in its display
 unit, masses in g, PV in MPa m/s, speeds in m/s) and a two-panel PNG per
 parameter in the style of paper 003 Figs. 7-12 (a: PV of the left and right end faces,
-b: slip speed), with ``rib_map_settings.json`` (bearing, oil, model and base point). Default
+b: slip speed), with ``rib_map_<parameter>_settings.json`` (bearing, oil, model and base
+point of that map; one per map, so maps of other runs in the folder keep theirs). Default
 model: the coupled all-roller + cage integration
 (:mod:`thermobearing.skidding.roller_dynamics_coupled`). ``--cost`` prints the CPU time of
 one base-case point with the coupled, the one-roller full and the reduced model and the
@@ -57,8 +58,8 @@ LABELS = {"radial_load": "radial load", "speed": "speed", "axial_clearance": "ax
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = ("writes <out>/rib_map_<parameter>.csv (one row per value and unbalance "
                      "mass, units in the column names: PV in MPa m/s, speeds in m/s) and a "
-                     "two-panel PNG per parameter, and rib_map_settings.json (bearing, oil, "
-                     "model, base point). Each map varies one parameter about the "
+                     "two-panel PNG per parameter, each with rib_map_<parameter>_settings.json "
+                     "(bearing, oil, model, base point). Each map varies one parameter about the "
                      "base point: --speed, --radial-load and the bearing's own rib angle, "
                      "end-face crown radius, axial and pocket clearance (printed at the "
                      "start and above the figures); every point is checked before the "
@@ -361,9 +362,9 @@ def _check_points(bearing, sweeps: dict[str, list[float]], masses: list[float],
 
 
 def _write_settings(path: Path, args: argparse.Namespace, bearing, base: dict[str, float],
-                    masses: list[float], params: list[str]) -> None:
-    """What the map's CSV files do not say: the bearing, oil, temperature, model and the
-    base point every map varies one parameter of (display units and SI)."""
+                    masses: list[float], parameter: str) -> None:
+    """What a map's CSV file does not say: the bearing, oil, temperature, model and the
+    base point the map varies ``parameter`` of (display units and SI)."""
     import json
 
     settings = {
@@ -372,7 +373,7 @@ def _write_settings(path: Path, args: argparse.Namespace, bearing, base: dict[st
         "orbits": args.orbits, "end_face": args.end_face, "slide": args.slide,
         "spin": args.spin, "raceway_traction": args.raceway_traction,
         "pocket_dof": not args.no_pocket_dof, "ring_axial": bool(args.ring_axial),
-        "parameters": params, "unbalance_mass [g]": [m * 1e3 for m in masses],
+        "parameter": parameter, "unbalance_mass [g]": [m * 1e3 for m in masses],
         "base_point": {f"{p} [{DEFAULT_SWEEPS[p][0]}]": float(_shown(p, base[p]).split()[0])
                        for p in DEFAULT_SWEEPS},
         "base_point_si": dict(base),
@@ -481,7 +482,6 @@ def _run(args: argparse.Namespace) -> int:
               "times); run without --cost to map them")
         return 0
     out.mkdir(parents=True, exist_ok=True)
-    _write_settings(out / "rib_map_settings.json", args, bearing, base, masses, params)
     total = sum(len(v) for v in sweeps.values()) * len(masses)
     done = [0]
     failed: list[str] = []
@@ -495,6 +495,7 @@ def _run(args: argparse.Namespace) -> int:
         values = sweeps[p]
         scale = to_si(f"1 {unit}", KINDS[p], field=p)
         path = out / f"rib_map_{p}.csv"
+        _write_settings(out / f"rib_map_{p}_settings.json", args, bearing, base, masses, p)
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow([f"{p} [{unit}]", "unbalance_mass [g]", "pv_left [MPa m/s]",
