@@ -20,6 +20,12 @@ Here the spins and the cage speed are degrees of freedom:
   drag torque), roller azimuths phi_j = phi_j0 + theta_c;
 * inner ring: prescribed (no whirl), its loads per azimuth from the quasi-static solution --
   eq. 20 is not integrated.
+* option ``tilt`` of the model (:func:`~thermobearing.skidding.roller_dynamics.build_model`):
+  per roller also the radial position y_r and the tilt alpha_e with their speeds (eq. 18's
+  remaining DOFs; :mod:`~thermobearing.skidding.roller_dynamics_tilt`), stored after the
+  ring's X, X' in the state; ``series["radial"]`` and ``series["tilt"]`` (time x Z) hold
+  y_r [m] and alpha_e [rad], and the samples' X, X' are those the rib faces see (plus
+  t_q alpha_e, t_q alpha_e').
 
 Integrator (ours): paper 000's traction evaluation costs ~4 ms per call (Python/numpy over Z
 rollers), the rib contact needs steps <= 1/omega_rib (~1.6 us): the raceway shear and

@@ -27,7 +27,13 @@ Equations (cage frame, signs as in :mod:`thermobearing.rib`)::
   e_u rotating with the roller: F_cv = m_u e_u (omega_r - omega_c)^2 (absolute spin rate),
   circumferential component F_cv sin(psi), psi' = omega_r; skew moment
   M_unb = -x_u F_cv sin(psi). Its radial component (tilt, raceway load ripple) is not
-  followed: the line contacts hold the tilt to ~1e-5 rad (H_contact changes < 0.2 um).
+  followed here; the coupled model's option ``tilt`` adds the radial position and the
+  tilt (:mod:`~thermobearing.skidding.roller_dynamics_tilt`): an unloaded roller is held
+  on the outer raceway by its centrifugal force only (79 N at the base case, a tilt
+  stiffness of ~420 N m/rad up to the ~0.07 N m at which an end lifts), and the rib
+  impacts' own tilt moments (~0.5 N m at 300 N) and the unbalance's (0.12 N m at 0.11 g)
+  swing it within the radial play: tilt rms ~1.4 mrad over the orbit (validation case
+  SOURCE.md, "Tilt and radial play").
 * raceway axial sliding of a skewed roller s_i = -u_i sin(alpha) - X', s_o = u_o sin(alpha)
   - X' (u_i = (omega_i - omega_c) d_i/2, u_o = omega_c d_o/2) with a regularised Coulomb
   traction mu(s) = mu_t tanh(s/s_0) (the shape of an EHL traction curve,
