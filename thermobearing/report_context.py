@@ -337,6 +337,7 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
 
     rows: list[dict[str, Any]] = []
     notes: list[str] = []
+    resting: list[str] = []
     refused: set[tuple[str, str]] = set()
     cache: dict[str, tuple[dict[str, Any], Any]] = {}
     base_dict = base.to_dict()
@@ -369,6 +370,9 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
         sums = {m: 0.0 for m in CATALOGUE_MODELS}
         ok = {m: True for m in CATALOGUE_MODELS}
         duration = 0.0
+        turning = any(step.speed != 0.0 for step in scene.schedule.steps)
+        if not turning:
+            resting.append(str(rec.get("case")))
         for step in scene.schedule.steps:
             duration += step.duration
             if step.speed == 0.0:
@@ -407,7 +411,9 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
                 and isinstance(this, (int, float)) and math.isfinite(this)):
             row[TORQUE] = 1e3 * float(this) / next(iter(speeds))
         for model, label in CATALOGUE_MODELS.items():
-            if not ok[model] or duration <= 0.0:
+            if not ok[model] or duration <= 0.0 or not turning:
+                # a case at rest throughout has no estimate to set beside its 0 W (it read
+                # "SKF four-term 0 W" for a bearing the model refuses at every speed)
                 continue
             est = sums[model] / duration
             row[f"{label} [W]"] = est
@@ -415,7 +421,17 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
                 _percent(this, est)
                 if isinstance(this, (int, float)) and est > 0 else math.nan)
         rows.append(row)
-    return pd.DataFrame(rows), notes
+    if resting:
+        notes.append("cases at rest throughout (0 r/min) have no catalogue estimate: no loss "
+                     "in the run nor in the models (" + ", ".join(resting) + ")")
+    table = pd.DataFrame(rows)
+    if TORQUE in table:
+        # beside the run's total (a first case at rest, without a moment, put the column
+        # after the models')
+        cols = [c for c in table.columns if c != TORQUE]
+        at = cols.index("this run [W]") + 1
+        table = table[[*cols[:at], TORQUE, *cols[at:]]]
+    return table, notes
 
 
 def _case_oil_temperatures(scene: Any, result: Mapping[str, Any]) -> dict[str, float] | None:

@@ -386,3 +386,25 @@ def test_a_roller_bearing_under_thrust_is_told_its_zero_columns_are_not_computed
             (_frame(), _scene("skidding"), nup)):
         assert not [n for n in source_notes(frame, scene, {"nup": bearing})
                     if "carries no rib thrust" in n]
+
+
+def test_a_case_at_rest_has_no_catalogue_estimate_and_the_moment_stands_by_the_total():
+    """A 7014 C sweep over 0 and 4000 r/min: the case at rest read 'SKF four-term 0 W' for a
+    bearing the SKF constants do not cover, and the moment column, missing from that first
+    row, stood after the models' columns."""
+    from thermobearing.report_context import TORQUE, sweep_catalogue_crosscheck
+    from thermobearing.scene import loads_scene
+
+    point = loads_scene((EXAMPLES / "loss_point_6206_oil_bath.toml").read_text("utf-8"),
+                        base_dir=EXAMPLES)
+    records = [{"case": f"c{n}", "params": {"schedule.speed": f"{n} rpm"},
+                "result": {"mean total loss [W]": 0.0 if n == 0 else 10.0}} for n in (0, 3000)]
+    table, notes = sweep_catalogue_crosscheck(point, records)
+    cols = list(table.columns)
+    assert cols[cols.index("this run [W]") + 1] == TORQUE
+    rest, turning = table.iloc[0], table.iloc[1]
+    for label in ("SKF four-term [W]", "Palmgren M0 + M1 [W]"):
+        assert math.isnan(rest[label]) and turning[label] > 0.0
+    assert math.isnan(rest[TORQUE])
+    assert any(n.startswith("cases at rest throughout (0 r/min) have no catalogue estimate")
+               and "(c0)" in n for n in notes)
