@@ -187,13 +187,14 @@ def _deriv_into(p: np.ndarray, y: np.ndarray, dy: np.ndarray, z_n: int, phi0: np
         x_t = 0.0
         xd_t = 0.0
         dca = 0.0
+        dca_rate = 0.0
         if tilt:
             x_t = tq * y[tb + 2]
             xd_t = tq * y[tb + 3]
-            dca = tilt_clearance(tp, y[tb + 2])
+            dca, dca_rate = tilt_clearance(tp, y[tb + 2], y[tb + 3])
         r = _rhs_ring(p, y[b] - sh - x_ring, y[b + 1] - shd - xd_ring, y[b + 2], y[b + 3],
                       y[b + 4], y[b + 5], n_i, q_o[j], w, y[b + 6], f_d, c_z[j], xd_ring,
-                      x_t, xd_t, dca)
+                      x_t, xd_t, dca, dca_rate)
         fz_bar, _, ff, fb = pocket_force_z(y[b + 4], y[b + 5], y[b + 2], p[_HL], p[_CP],
                                            p[_KC], p[_ETA], half, p[_FLOOR])
         f_bar = _pocket_film_friction(ff - fb, w, half, film[0], film[1], film[2], film[3],

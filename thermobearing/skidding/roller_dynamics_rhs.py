@@ -153,7 +153,7 @@ def _rhs(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: 
 def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float, zd: float,
               n_i: float, n_o: float, spin: float, psi: float, f_d: float, c_z: float,
               xd_ring: float, x_tilt: float = 0.0, xd_tilt: float = 0.0,
-              dca: float = 0.0
+              dca: float = 0.0, dca_rate: float = 0.0
               ) -> tuple[float, float, float, float, float, float, float, float, float,
                          float]:
     """(X', X'', alpha', alpha'', z', z'', rib spin moment, axial force on the inner ring):
@@ -168,19 +168,22 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     raceway slide: the outer ring is fixed); X'' is the roller's absolute axial
     acceleration (paper 003 eq. 18 line 1); the eighth entry is minus the rib and inner-
     raceway axial forces on the roller, i.e. their reaction on the inner ring (eq. 20
-    line 1) [N], the ninth the rib faces' axial force on the roller [N], the tenth the sum
-    of their normal forces [N].
-    x_tilt, xd_tilt, dca: the tilt's equivalent axial shift t_q alpha_e [m], its rate
-    [m/s] and its symmetric share of the approach [m]
+    line 1) [N], the ninth the rib faces' axial force on the roller [N], the tenth the
+    right face's axial force minus the left face's [N].
+    x_tilt, xd_tilt, dca, dca_rate: the tilt's equivalent axial shift t_q alpha_e [m], its
+    rate [m/s], its symmetric share of the approach [m] and that share's rate [m/s]
     (:mod:`~thermobearing.skidding.roller_dynamics_tilt`): the rib faces see X + x_tilt,
-    X' + xd_tilt and the clearance less dca; the raceways X' (0 without tilt)."""
+    the clearance less dca and the axial speed X' + xd_tilt -+ dca_rate (left / right: the
+    contact point's own axial speed); the raceways X' (0 without tilt)."""
     gp = p[:_G_N]
     xf = x + x_tilt
     xdf = xd + xd_tilt
-    fl = face_values(gp, -1, a, xf, ad, spin, p[_OM], xdf, p[_MU], p[_FG], p[_SREG], dca)
-    fr = face_values(gp, 1, a, xf, ad, spin, p[_OM], xdf, p[_MU], p[_FG], p[_SREG], dca)
-    sl = face_squeeze(gp, SIDE_LEFT, a, xf, ad, xdf, p[_ETR], p[_FLOOR], dca)
-    sr = face_squeeze(gp, SIDE_RIGHT, a, xf, ad, xdf, p[_ETR], p[_FLOOR], dca)
+    fl = face_values(gp, -1, a, xf, ad, spin, p[_OM], xdf - dca_rate, p[_MU], p[_FG],
+                     p[_SREG], dca)
+    fr = face_values(gp, 1, a, xf, ad, spin, p[_OM], xdf + dca_rate, p[_MU], p[_FG],
+                     p[_SREG], dca)
+    sl = face_squeeze(gp, SIDE_LEFT, a, xf, ad, xdf - dca_rate, p[_ETR], p[_FLOOR], dca)
+    sr = face_squeeze(gp, SIDE_RIGHT, a, xf, ad, xdf + dca_rate, p[_ETR], p[_FLOOR], dca)
     m_rib = fl[F_MSKEW] + fr[F_MSKEW] + sl[2] + sr[2]
     f_rib = fl[F_FX] + fr[F_FX] + sl[1] + sr[1]
     m_spin = fl[F_MSPIN] + fr[F_MSPIN]
@@ -213,7 +216,7 @@ def _rhs_ring(p: np.ndarray, x: float, xd: float, a: float, ad: float, z: float,
     if p[_PDOF] > 0.5:
         zdd = (f_d + f_cv * sp + fl[F_FZ] + fr[F_FZ] - c_z * zd + fz_bar) / p[_MASS]
     return (xd, xdd, ad, add, zd, zdd, m_spin, -(f_rib + f_inner), f_rib,
-            fl[0] + fr[0] + sl[0] + sr[0])
+            fr[F_FX] + sr[1] - fl[F_FX] - sl[1])
 
 
 def _roller_rhs(m: DynamicsModel, c: np.ndarray, y: Any, n_i: float, n_o: float,

@@ -58,11 +58,14 @@ form; its sign in this model's phase convention is below.)
   second order the sphere's support grows on both faces by cos(theta_f)(R_s - L_r/2)
   (1 - cos alpha_e) (the centres' x = -+(R_s - L_r/2) cos alpha_e; the tilt's counterpart of
   eq. 1's skew term, 0.15 um at 1e-3 rad, 1.3 um at 3e-3 rad): the faces see the clearance
-  less that (:func:`tilt_clearance`, ``dca`` of :func:`thermobearing.rib.face_values`) and
-  the normal forces Q_L + Q_R act on the tilt with -cos(theta_f)(R_s - L_r/2) sin alpha_e
-  each. The exact tilted sphere's support (centre (x_0 cos alpha_e cos alpha, x_0 sin
-  alpha_e, -x_0 cos alpha_e sin alpha)) differs from this by the cone's curvature (the
-  linear term times cos phi, 0.5 % at the rib skew) and fourth-order terms. The rib faces'
+  less that (:func:`tilt_clearance`, ``dca`` of :func:`thermobearing.rib.face_values`): each
+  face's contact point moves towards its rib by (R_s - L_r/2)(1 - cos alpha_e), at the rate
+  the face kernel then takes as part of its axial speed, and by virtual work each face's
+  axial force F_x,K acts on the tilt with the arm K (R_s - L_r/2) sin alpha_e (K = -+1; its
+  normal part -Q_K cos(theta_f)(R_s - L_r/2) sin alpha_e restores the tilt). The exact
+  tilted sphere's support (centre (x_0 cos alpha_e cos alpha, x_0 sin alpha_e, -x_0 cos
+  alpha_e sin alpha)) differs from this by the cone's curvature (the linear term times
+  cos phi, 0.5 % at the rib skew) and fourth-order terms. The rib faces'
   power balance is that of the face kernel in these coordinates (the normal force's work on
   the tilt is Q d delta/dt's tilt part).
   Eq. 4's C_af = (H_rollercm - D_w/2) tan theta_f (the radial position's effect on the
@@ -97,7 +100,7 @@ TILT_SLICES = 15
 # indices of the tilt parameter vector (tilt_parameters); then n slice centres x_k [m] and
 # n crown drops c(x_k) [m]
 (TP_JT, TP_MASS, TP_JP, TP_TQ, TP_XU, TP_MUE, TP_MU, TP_DM2, TP_KS, TP_CO, TP_CI, TP_FLOOR,
- TP_RH, TP_CT, TP_N, TP_HEAD) = range(16)
+ TP_RH, TP_N, TP_HEAD) = range(15)
 
 #: states per roller of the tilt block: y_r, y_r', alpha_e, alpha_e'
 N_TILT_STATES = 4
@@ -145,7 +148,6 @@ def tilt_parameters(m: Any, bearing: Any, n_slices: int = TILT_SLICES
     tp[TP_CI] = coef * rx_i**1.5
     tp[TP_FLOOR] = m.squeeze_floor
     tp[TP_RH] = g.crown_radius - 0.5 * g.roller_length
-    tp[TP_CT] = math.cos(g.rib_angle)
     tp[TP_N] = n_slices
     tp[TP_HEAD:TP_HEAD + n_slices] = xs
     tp[TP_HEAD + n_slices:] = drop
@@ -218,24 +220,26 @@ def raceway_slices(tp: np.ndarray, yr: float, yrd: float, ae: float, aed: float,
 
 
 @njit(cache=True)
-def tilt_clearance(tp: np.ndarray, ae: float) -> float:
+def tilt_clearance(tp: np.ndarray, ae: float, aed: float) -> tuple[float, float]:
     """The tilt's symmetric share of both faces' approach over cos(theta_f) [m],
     (R_s - L_r/2)(1 - cos alpha_e) at tilt ``ae`` [rad] (module notes: the sphere's
-    second-order term, the tilt's counterpart of eq. 1's skew term)."""
-    return tp[TP_RH] * (1.0 - math.cos(ae))
+    second-order term, the tilt's counterpart of eq. 1's skew term), and its rate [m/s] at
+    the tilt rate ``aed`` [rad/s]: each face's contact point moves towards its rib by it."""
+    return tp[TP_RH] * (1.0 - math.cos(ae)), tp[TP_RH] * math.sin(ae) * aed
 
 
 @njit(cache=True)
 def tilt_rates(tp: np.ndarray, yr: float, yrd: float, ae: float, aed: float, gap: float,
-               f_rib: float, q_rib: float, psi: float, spin: float, wc: float,
+               f_rib: float, f_rib_diff: float, psi: float, spin: float, wc: float,
                skew_rate: float) -> tuple[float, float, float]:
     """(y_r'' [m/s^2], alpha_e'' [rad/s^2], gyroscopic skew acceleration [rad/s^2]) of one
     roller (module notes): raceway slices (:func:`raceway_slices`), centrifugal force of
     roller and unbalance mass at the cage speed ``wc`` [rad/s], the unbalance's spinning
     force at phase ``psi`` [rad] and spin ``spin`` [rad/s] (rolling sense, cage frame), the
-    rib's axial force ``f_rib`` [N] on the tilt (arm t_q) and its normal forces ``q_rib``
-    [N] through the approach's second-order term (-q_rib cos(theta_f)(R_s - L_r/2)
-    sin alpha_e, :func:`tilt_clearance`), and the gyroscopic coupling with
+    rib's axial force ``f_rib`` [N] on the tilt (arm t_q) and, through the approach's
+    second-order term (:func:`tilt_clearance`), the right face's axial force minus the left
+    face's ``f_rib_diff`` [N] with the arm (R_s - L_r/2) sin alpha_e (each face's contact
+    point moves towards its rib: virtual work), and the gyroscopic coupling with
     the skew rate ``skew_rate`` [rad/s]; the third entry is added to the skew's alpha''."""
     f_s, m_s, _, _ = raceway_slices(tp, yr, yrd, ae, aed, gap)
     omega = wc - spin                               # spin in the inertial frame
@@ -244,7 +248,7 @@ def tilt_rates(tp: np.ndarray, yr: float, yrd: float, ae: float, aed: float, gap
     f_cent = tp[TP_MASS] * wc * wc * tp[TP_DM2]
     gyro = tp[TP_JP] * omega
     ydd = (f_cent + f_orb + f_cw + f_s) / tp[TP_MASS]
-    m_rib = tp[TP_TQ] * f_rib - q_rib * tp[TP_CT] * tp[TP_RH] * math.sin(ae)
+    m_rib = tp[TP_TQ] * f_rib + f_rib_diff * tp[TP_RH] * math.sin(ae)
     edd = (m_s + tp[TP_XU] * (f_cw + f_orb) + m_rib + gyro * skew_rate) / tp[TP_JT]
     return ydd, edd, -gyro * aed / tp[TP_JT]
 
