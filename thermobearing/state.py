@@ -137,10 +137,12 @@ _CONTACT_ARRAYS = (
 )
 _OPTIONAL_ARRAYS = ("film_thickness", "temperature", "reduced_radius_x", "reduced_radius_y")
 _RADII = frozenset({"deformed_radius", "reduced_radius_y"})  # inf allowed (flat / straight)
-#: fields that must be >= 0, and > 0 (a temperature above absolute zero [K])
+#: fields that must be >= 0, and > 0 (a temperature above absolute zero [K]; the rolling-
+#: direction reduced radius R_x = 1/(1/r_element + 1/r_race) > 0 of a Hertz contact, finite:
+#: no bearing contact is flat in the rolling direction)
 _NON_NEGATIVE = frozenset({"normal_load", "semi_major", "semi_minor", "max_pressure",
                            "film_thickness"})
-_POSITIVE = frozenset({"temperature"})
+_POSITIVE = frozenset({"temperature", "reduced_radius_x"})
 
 
 @functools.lru_cache(maxsize=64)
@@ -200,7 +202,8 @@ class ContactSet:
         R_d = 2 f D / (2 f + 1) (Harris & Kotzalas 2007; primer over-skidding 3.5).
     film_thickness : central film thickness h_c [m] or None.
     temperature : lubricant/surface temperature at the contact inlet [K] or None.
-    reduced_radius_x, reduced_radius_y : R_x, R_y [m] or None (rolling-resistance models).
+    reduced_radius_x, reduced_radius_y : R_x (finite, > 0), R_y (> 0, ``inf`` for a line
+        contact) [m] or None (rolling-resistance models).
     traction : the tractions of these contacts as the model that produced the state
         integrated them, or None: a :class:`PrecomputedTraction` (the law, the quadrature
         and a ``contact_traction.ContactTraction`` of shape (Z,)). A heat source that would
@@ -281,6 +284,8 @@ class ContactSet:
                     raise InputError(field, value, "radii > 0 [m] (inf for a flat surface)")
             elif name == "temperature":
                 check_temperature(field, arr)
+            elif name in _POSITIVE:
+                check_positive(field, arr)
             elif name in _NON_NEGATIVE:
                 check_positive(field, arr, allow_zero=True)
             else:
