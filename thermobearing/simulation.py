@@ -1098,10 +1098,14 @@ def _refuse_rib_geometry(bearing: Any, spec: Any, index: int) -> None:
     try:
         rib_geometry(bearing)
     except InputError as exc:
-        name = exc.field[4:] if exc.field.startswith("rib.") else exc.field
-        key = RIB_BEARING_KEYS.get(name, name)
-        where = (f"bearings[{index}].overrides.{key}" if key in spec.overrides
-                 else f"bearings[{index}] ({spec.preset or spec.path}) {key}")
+        # one field (rib.rib_height) or two (rib.rib_angle / rib.crown_radius), each named
+        # by its bearing key
+        names = [f[4:] if f.startswith("rib.") else f for f in exc.field.split(" / ")]
+        keys = [RIB_BEARING_KEYS.get(n, n) for n in names]
+        given = any(k in spec.overrides for k in keys)
+        where = (f"bearings[{index}].overrides." if given
+                 else f"bearings[{index}] ({spec.preset or spec.path}) ") + " / ".join(keys)
+        name = names[0]
         scale, unit = RIB_FIELD_UNITS.get(name, (1.0, ""))
         value = (f"{float(exc.value) * scale:.4g} {unit}".strip()
                  if isinstance(exc.value, (int, float)) else exc.value)

@@ -130,3 +130,15 @@ def test_check_names_the_file_columns_no_node_reads(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "measured: rig.csv: 2 sensors, 3 samples" in out
     assert "not compared (no node in [measured] columns): 'TC ambient [degC]'" in out
+
+
+def test_a_rib_angle_putting_the_contact_off_the_roller_names_both_bearing_keys(tmp_path):
+    """5 deg on a 500 mm crown: the contact point 43.6 mm from the roller axis. The two
+    fields were 'bearings[0] (NU214) rib_angle / rib.crown_radius' (the model's name of
+    the crown, and not the scene's overrides)."""
+    overrides = RIB.format(rib="3 mm").replace('"0.5 deg"', '"5 deg"')
+    with pytest.raises(InputError) as info:
+        Simulation(load_scene(_scene(tmp_path, overrides=overrides)), progress=False)
+    err = info.value
+    assert err.field == "bearings[0].overrides.rib_angle / end_face_crown_radius"
+    assert err.value == "5 deg / 500 mm" and "a rib angle < 1.49 deg" in str(err)
