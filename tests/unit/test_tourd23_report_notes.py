@@ -408,3 +408,14 @@ def test_a_case_at_rest_has_no_catalogue_estimate_and_the_moment_stands_by_the_t
     assert math.isnan(rest[TORQUE])
     assert any(n.startswith("cases at rest throughout (0 r/min) have no catalogue estimate")
                and "(c0)" in n for n in notes)
+
+
+def test_the_model_chain_of_a_base_scene_whose_bearing_file_moved_is_said_unavailable(
+        tmp_path):
+    from thermobearing.commands.report import _chain_html
+
+    moved = NUP_POINT.replace('preset = "NU214"', f'path = "{tmp_path / "gone.toml"}"')
+    (tmp_path / "scene.toml").write_text(moved, encoding="utf-8")
+    html = _chain_html(tmp_path, ["schedule.speed"])
+    assert "<h2>Model chain</h2>" in html and "(not available: " in html
+    assert "gone.toml" in html and "a sweep keeps per case" in html

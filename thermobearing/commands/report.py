@@ -457,6 +457,7 @@ def _chain_html(folder: Path, params: list[str]) -> str:
     (:func:`report_sections.chain_table`, as in a run report), and what the sweep folder
     does not keep (:data:`NOT_KEPT`); a note when the folder has no base scene or it cannot
     be set up."""
+    from ..errors import ThermobearingError
     from ..report_sections import chain_table, html_table
     from ..simulation import Simulation
 
@@ -470,7 +471,8 @@ def _chain_html(folder: Path, params: list[str]) -> str:
             + tail
     try:
         sim = Simulation(_folder_scene(path), progress=False)
-    except InputError as exc:
+    except (ThermobearingError, OSError) as exc:
+        # a base scene whose files moved, or that a newer version refuses
         return head + f"<p class='note'>(not available: {escape(str(exc))})</p>" + tail
     swept = [p for p in params if p.startswith(_CHAIN_PATHS)]
     note = (f"<p class='note'>the chain of the base scene; the swept {', '.join(swept)} "
