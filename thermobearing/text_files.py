@@ -16,7 +16,7 @@ import codecs
 import tomllib
 from pathlib import Path
 
-__all__ = ["text_encoding", "toml_text"]
+__all__ = ["text_encoding", "toml_text", "toml_text_of"]
 
 #: byte-order marks and the codec that reads the text after them
 _BOMS = ((codecs.BOM_UTF8, "utf-8-sig"), (codecs.BOM_UTF16_LE, "utf-16"),
@@ -49,7 +49,11 @@ def toml_text(path: str | Path) -> str:
     Raises ``tomllib.TOMLDecodeError`` naming the line and column of the first byte that is
     not UTF-8 (a file saved as Windows-1252 / Latin-1: ``°C`` is byte 0xB0 there), which
     the callers report as invalid TOML of their field, as they do a syntax error."""
-    data = Path(path).read_bytes()
+    return toml_text_of(Path(path).read_bytes())
+
+
+def toml_text_of(data: bytes) -> str:
+    """The text of a TOML file's bytes ``data``, as :func:`toml_text` (same errors)."""
     marked = _marked(data)
     if marked:
         try:

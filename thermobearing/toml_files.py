@@ -2,9 +2,13 @@
 
 A scene builds its bearings, lubricant and calibration from the preset files in ``configs/``
 every time a :class:`~thermobearing.simulation.Simulation` is made; a sweep makes hundreds of
-them from the same few files. :func:`read_toml` parses a file once per (path, modification
-time, size) and hands each caller its own deep copy, so an edited file is read again and no
-caller can change what another one gets.
+them from the same few files. :func:`read_toml` reads the file's bytes on every call and
+parses them once per (path, content), handing each caller its own deep copy: an edited file
+is parsed again whatever its timestamp says and no caller can change what another one gets.
+(The key was (path, modification time, size) before session 23: a rewrite of the same size
+within the file system's timestamp granularity, 1-2 s on FAT / HFS+ and a clock tick on
+Linux before multigrain timestamps, or a copy keeping the mtime (``cp -p``, ``rsync -t``)
+returned the old contents.)
 """
 
 from __future__ import annotations
@@ -15,15 +19,15 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from .text_files import toml_text
+from .text_files import toml_text_of
 
 __all__ = ["read_toml"]
 
 
 @functools.lru_cache(maxsize=64)
-def _parsed(path: str, mtime_ns: int, size: int) -> dict[str, Any]:
-    """The parsed file (the key carries the file's identity; never handed out directly)."""
-    return tomllib.loads(toml_text(path))
+def _parsed(path: str, data: bytes) -> dict[str, Any]:
+    """The parsed contents ``data`` of the file ``path`` (never handed out directly)."""
+    return tomllib.loads(toml_text_of(data))
 
 
 def read_toml(path: str | Path) -> dict[str, Any]:
@@ -36,5 +40,4 @@ def read_toml(path: str | Path) -> dict[str, Any]:
     field.
     """
     p = Path(path).resolve()
-    st = p.stat()
-    return copy.deepcopy(_parsed(str(p), st.st_mtime_ns, st.st_size))
+    return copy.deepcopy(_parsed(str(p), p.read_bytes()))
