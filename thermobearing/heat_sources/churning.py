@@ -605,20 +605,20 @@ def churning_elements(ctx: HeatContext) -> HeatResult:
 
     Why c_d is a constant (eq. 10, ``form="harris"``: every roller bearing): paper 002 gives
     eq. 10 with "the experimentally determined drag coefficient c_d", one number per body,
-    and no Reynolds-number law for it; Harris & Kotzalas (as the primer recalls them) read c_d
-    off the drag curve of an isolated body against Re = u D / nu, which is flat over its plateau (spheres
-    c_d = 0.4-0.5 for 1e3 < Re < 2e5; a cylinder broadside near 1.0; the losses primer
-    ../shared/notes, section 2.1). So the cited model's drag does not change with the oil
-    grade or the temperature inside the plateau: only the mixture density X rho(T) does,
-    by the oil's thermal expansion (NU 214, 5 kN, 1 L/min jet: 396.6 W at 6000 r/min with
-    ISO VG 32 at 40 degC, 383.7 W at 80 degC, 402.8 W with ISO VG 100 at 40 degC; its
-    elements' Re is 1.7e3-2.0e4 there). Outside the plateau (thick oil at low speed: the same
-    bearing with ISO VG 100 at 40 degC and 1000 r/min has Re = 290) a free body's c_d rises
-    as Re falls; no Re-dependent c_d of a roller inside a bearing is cited (the primer's
-    sphere fit of a public code is for balls, its in-bearing correlations are recalled,
-    not retrieved), so none is applied: ``drag_coefficient`` is the lever there. The ball
-    form (eq. 16) does depend on the viscosity, through the annulus friction coefficient
-    mu_v(N_Re, N_Ta) of eqs. 12-14, as the paper writes it.
+    and no Reynolds-number law for it; Harris & Kotzalas (as the primer recalls them) read
+    c_d off the drag curve of an isolated body against Re = u D / nu, which is flat over its
+    plateau (spheres c_d = 0.4-0.5 for 1e3 < Re < 2e5; a cylinder broadside near 1.0; the
+    losses primer ../shared/notes, section 2.1). So the cited model's drag does not change
+    with the oil grade or the temperature inside the plateau: only the mixture density X
+    rho(T) does, by the oil's thermal expansion (NU 214, 5 kN, 1 L/min jet: 396.6 W at 6000
+    r/min with ISO VG 32 at 40 degC, 383.7 W at 80 degC, 402.8 W with ISO VG 100 at 40 degC;
+    its elements' Re is 1.7e3-2.0e4 there). Outside the plateau (thick oil at low speed: the
+    same bearing with ISO VG 100 at 40 degC and 1000 r/min has Re = 290) a free body's c_d
+    rises as Re falls; no Re-dependent c_d of a roller inside a bearing is cited (the
+    primer's sphere fit of a public code is for balls, its in-bearing correlations are
+    recalled, not retrieved), so none is applied: ``drag_coefficient`` is the lever there.
+    The ball form (eq. 16) does depend on the viscosity, through the annulus friction
+    coefficient mu_v(N_Re, N_Ta) of eqs. 12-14, as the paper writes it.
     """
     name = "churning_elements"
     b = ctx.bearing
