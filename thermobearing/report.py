@@ -66,6 +66,22 @@ def _png(fig: plt.Figure) -> bytes:
     return buf.getvalue()
 
 
+def steady_with_operating(steady: pd.DataFrame, points: pd.DataFrame | None
+                          ) -> pd.DataFrame:
+    """The steady table with the operating columns (speed, radial and axial load) per step.
+
+    ``steady_temperatures.csv`` carries them itself (since 2026-11-24); only the ones it
+    lacks are taken from ``points`` (older run folders), so no column is doubled with a
+    ``_x`` / ``_y`` suffix that would hide the operating axis.
+    """
+    if points is None or "step" not in points or "step" not in steady:
+        return steady
+    cols = ["step"] + [c for c, _ in _OPERATING if c in points and c not in steady]
+    if len(cols) == 1:
+        return steady
+    return steady.merge(points[cols].drop_duplicates("step"), on="step", how="left")
+
+
 def fig_steady_temperatures(steady: pd.DataFrame, points: pd.DataFrame | None = None
                             ) -> bytes:
     """Steady-state node temperatures [degC] per step (``mode = "steady"``), one line per
@@ -73,10 +89,7 @@ def fig_steady_temperatures(steady: pd.DataFrame, points: pd.DataFrame | None = 
     the axis is the swept quantity of ``points`` (a table with ``step`` and the operating
     columns, e.g. the kinematics table), else the step."""
     nodes = [c[:-len(" [degC]")] for c in steady.columns if c.endswith(" [degC]")]
-    df = steady
-    if points is not None and "step" in points and "step" in steady:
-        cols = ["step"] + [c for c, _ in _OPERATING if c in points]
-        df = steady.merge(points[cols].drop_duplicates("step"), on="step", how="left")
+    df = steady_with_operating(steady, points)
     key, pos, labels, xlabel = operating_axis(df)
     df = df.assign(_x=[pos[k] for k in df[key]]).sort_values("_x")
     groups = list(dict.fromkeys(n.split(".", 1)[0] for n in nodes if "." in n))

@@ -335,3 +335,28 @@ def test_a_source_that_does_not_run_on_a_bearing_is_left_empty():
     assert table.loc["crb", "ehl_rolling_resistance [W]"] == 2.0
     assert math.isnan(table.loc["ball", "ehl_rolling_resistance [W]"])
     assert table.loc["ball", "total [W]"] == 5.0 and table.loc["crb", "total [W]"] == 5.0
+
+
+def test_steady_table_with_its_own_operating_columns_keeps_the_speed_axis(monkeypatch):
+    """steady_temperatures.csv carries speed and loads itself (2026-11-24): merging the
+    kinematics table's copies suffixed them _x / _y and the figure fell back to the step."""
+    from thermobearing.report import fig_steady_temperatures, steady_with_operating
+
+    labels = []
+    real = matplotlib.axes.Axes.set_xlabel
+    monkeypatch.setattr(matplotlib.axes.Axes, "set_xlabel",
+                        lambda self, text, *a, **k: (labels.append(text),
+                                                     real(self, text, *a, **k))[1])
+    steady = pd.DataFrame({"step": [0, 1, 2], "speed [rpm]": [600.0, 1200.0, 1800.0],
+                           "radial load [kN]": 1.0, "axial load [kN]": 10.0,
+                           "de.oil [degC]": [35.2, 35.8, 37.1]})
+    kin = pd.DataFrame({"step": [0, 1, 2], "bearing": "de",
+                        "speed [rpm]": [600.0, 1200.0, 1800.0], "radial load [kN]": 1.0,
+                        "axial load [kN]": 10.0})
+    merged = steady_with_operating(steady, kin)
+    assert list(merged.columns) == list(steady.columns)
+    assert fig_steady_temperatures(steady, kin)[:4] == b"\x89PNG"
+    assert labels == ["speed [rpm]"]
+    # an older folder's steady table without them still gets them from the kinematics
+    old = steady.drop(columns=["speed [rpm]", "radial load [kN]", "axial load [kN]"])
+    assert list(steady_with_operating(old, kin)["speed [rpm]"]) == [600.0, 1200.0, 1800.0]
