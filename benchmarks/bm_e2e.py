@@ -22,23 +22,23 @@ Timed separately:
   with race-control kinematics (the chain without the skidding solver: what the network,
   heat sources and coupling cost).
 
-The solve_ivp driver (:func:`run_scipy`) integrates the same chain: the same scene
-network (:func:`thermobearing.coupled.build_network`), the same kinematics and heat
-evaluation (:class:`thermobearing.coupled.Coupler`: kinematics re-solved by the same
-viscosity-change rule at the same 90-s chunk boundaries, heat sources at the node
-temperatures), as the right-hand side of C dT/dt = s - K(T) T + q(T) with the exact
-nonlinear heat at every call (no linearisation), restarted at every chunk boundary (so
-at every load step). Conductances K(T) are evaluated at each restart (lagged over the
-chunk; ours holds them over one internal step and integrates their drift in the
-stages): this spares LSODA one network assembly per call. LSODA runs at several
-tolerances; the ratio printed (``ratio_vs_anchor``) is LSODA's CPU time at the cheapest
-tolerance whose error is equal to or below ours, divided by the record's CPU time. The
-un-lagged LSODA runs go from rtol 1e-6 to 2e-10 in steps of ~2x, so that the anchor is
-the cheapest setting that reaches ours' error, not the reference; the candidates (error
-<= ours) are timed ``--lsoda-repeat`` times
-(median), ours ``--repeat`` times (best and median printed). CPU
-time rather than wall time because on the shared 2-core machine the wall time was up to
-10x the CPU time; both are recorded (``time_s`` wall, ``cpu_s`` CPU).
+The solve_ivp driver (:func:`run_scipy`) integrates the same chain: the same scene network
+(:func:`thermobearing.coupled.build_network`), the same kinematics and heat evaluation
+(:class:`thermobearing.coupled.Coupler`: kinematics re-solved by the same viscosity-change
+rule at the same 90-s chunk boundaries, heat sources at the node temperatures, plus the held
+states' secant term K (T - T_solve) of :func:`thermobearing.coupled.kinematics_with_secant`,
+as ours), as the right-hand side of C dT/dt = s - K(T) T + q(T) with the exact nonlinear
+heat at every call (no linearisation), restarted at every chunk boundary (so at every load
+step). Conductances K(T) are evaluated at each restart (lagged over the chunk; ours holds
+them over one internal step and integrates their drift in the stages): this spares LSODA one
+network assembly per call. LSODA runs at several tolerances; the ratio printed
+(``ratio_vs_anchor``) is LSODA's CPU time at the cheapest tolerance whose error is equal to
+or below ours, divided by the record's CPU time. The un-lagged LSODA runs go from rtol 1e-6
+to 2e-10 in steps of ~2x, so that the anchor is the cheapest setting that reaches ours'
+error, not the reference; the candidates (error <= ours) are timed ``--lsoda-repeat`` times
+(median), ours ``--repeat`` times (best and median printed). CPU time rather than wall time
+because on the shared 2-core machine the wall time was up to 10x the CPU time; both are
+recorded (``time_s`` wall, ``cpu_s`` CPU).
 
 Error: max over the 8 nodes and every chunk end (every 90 s) of |T - T_ref|; reference:
 the same solve_ivp driver with LSODA at rtol 1e-12, atol 1e-10 K and K(T) evaluated at
@@ -129,7 +129,12 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     """
     from scipy.integrate import solve_ivp
 
-    from thermobearing.coupled import Coupler, build_network
+    from thermobearing.coupled import (
+        Coupler,
+        build_network,
+        kinematics_with_secant,
+        new_secant,
+    )
     from thermobearing.network.assemble import Assembler
     from thermobearing.simulation import Simulation
 
@@ -138,6 +143,7 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     net = build_network(sim)
     sim.network = net
     cp = Coupler(sim, net)
+    secant = new_secant(cp)
     asm = Assembler(net)
     C = np.asarray(asm.C, dtype=float)
     if np.any(C <= 0):
@@ -150,13 +156,17 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     for i, step in enumerate(scene.schedule.steps):
         n = max(1, math.ceil(step.duration / scene.solver.chunk - 1e-9))
         h = step.duration / n
-        for _ in range(n):
-            cp.kinematics(i, step, T)
+        for k in range(n):
+            kinematics_with_secant(cp, secant, i, step, T, first=k == 0)
             lagged = asm.system(T)
+            Ks, cs = secant.terms()
 
-            def rhs(_t, y, step=step, lagged=lagged):
+            def rhs(_t, y, step=step, lagged=lagged, Ks=Ks, cs=cs):
                 S = asm.system(y) if conductance == "rhs" else lagged
-                return (S.s - S.K @ y + cp.heat(step, y)) / C
+                q = cp.heat(step, y)
+                if Ks is not None:
+                    q = q + Ks @ y - cs
+                return (S.s - S.K @ y + q) / C
 
             sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
             if not sol.success:

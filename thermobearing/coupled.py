@@ -651,6 +651,35 @@ def run_coupled(sim: Simulation, writer: ResultsWriter | None
                     warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
 
 
+def new_secant(coupler: Coupler) -> KinematicSecant:
+    """An empty :class:`.coupled_secant.KinematicSecant` over ``coupler``'s state nodes, each
+    bearing on the nodes its kinematics read (:data:`.coupled_secant.KINEMATIC_ROLES`)."""
+    return KinematicSecant(len(coupler.names), {
+        b.name: [j for r in KINEMATIC_ROLES for j in coupler.role_nodes[b.name][r]]
+        for b in coupler.sim.bearings})
+
+
+def kinematics_with_secant(coupler: Coupler, secant: KinematicSecant, step_index: int,
+                           step: Step, T: np.ndarray, first: bool) -> bool:
+    """The kinematics at a chunk start (:meth:`Coupler.kinematics`: re-solved where the
+    viscosity rule asks) and each bearing's secant kept with them: restarted on a step's
+    first chunk (``first``) or a bearing's first state, updated by Broyden's rule where a
+    state was re-solved (its heat at T [K] on the new state against the replaced one).
+    Returns True where a secant was restarted. Shared by the coupled transient and the
+    BM-E2E solve_ivp driver (the same chain)."""
+    held = [b.last for b in coupler.sim.bearings]
+    coupler.kinematics(step_index, step, T)
+    restarted = False
+    for b, old in zip(coupler.sim.bearings, held, strict=True):
+        if first or old is None:
+            secant.restart(b.name, T)
+            restarted = True
+        elif b.last is not old:
+            secant.resolved(b.name, T, coupler._bearing_heat(b, step, T)[0],
+                            coupler._bearing_heat(b, step, T, old)[0])
+    return restarted
+
+
 def _probed(coupler: Coupler, secant: KinematicSecant, lin: _Linear, step: Step,
             T: np.ndarray) -> _Linear:
     """The chunk model ``lin`` with each bearing's first secant of the operating point from a
@@ -681,9 +710,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
     stepper = TransientStepper(net, method=solver.stepper, rtol=solver.rtol, atol=solver.atol,
                                max_step=solver.max_step)
     chunk = solver.chunk
-    secant = KinematicSecant(len(names), {
-        b.name: [j for r in KINEMATIC_ROLES for j in coupler.role_nodes[b.name][r]]
-        for b in sim.bearings})
+    secant = new_secant(coupler)
     interval = scene.outputs.interval
     # the loss table (one more evaluation of every source per step) only when it is output
     want_losses = _wants_loss_table(scene)
@@ -718,17 +745,10 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                 # the last chunk of the step ends on the step's end (no sliver left)
                 h = h_try if t_end - t - h_try > 1e-6 * h_nominal else t_end - t
                 if not retry:
-                    held = [b.last for b in sim.bearings]
-                    coupler.kinematics(i, step, T)
-                    for b, old in zip(sim.bearings, held, strict=True):
-                        if k == 0 or old is None:
-                            # a new operating point: no secant yet (probed if its first
-                            # chunk is repeated shorter, below)
-                            secant.restart(b.name, T)
-                            probed = False
-                        elif b.last is not old:
-                            secant.resolved(b.name, T, coupler._bearing_heat(b, step, T)[0],
-                                            coupler._bearing_heat(b, step, T, old)[0])
+                    # a new operating point restarts the secant (probed if its first
+                    # chunk is repeated shorter, below)
+                    if kinematics_with_secant(coupler, secant, i, step, T, first=k == 0):
+                        probed = False
                     if k == 0:
                         for b in sim.bearings:
                             row = {**step_columns(i, t, b.name, step, b),
