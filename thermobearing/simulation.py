@@ -22,13 +22,17 @@ beyond 2 K): q(T) = q0 + J (T - T0) + 1/2 H (T - T0)^2 (``coupled._Linear``). Th
 stepper (``solver.stepper``, exprb43 by default) integrates the chunk with that quadratic
 heat and its Jacobian, so the temperature feedback on viscosity is implicit inside the step.
 J and H are recomputed at each load step and after each kinematics re-solve, and reused
-(with fresh heat, re-centred) for the other chunks. The kinematics
-(skidding solver) are re-solved at a step change and whenever the oil viscosity at the
-contact temperature has moved by more than ``solver.kinematics_tolerance`` (relative)
-since the last solve: the losses scale with a power < 1 of the viscosity, so this bounds
-their change. The contact temperature (the one the kinematics are solved at and the
-re-solve test reads) is the inlet oil temperature of the raceway contacts,
-(T_inner_ring + T_outer_ring + 2 T_elements) / 4
+(with fresh heat, re-centred) for the other chunks. The kinematic state held over a chunk
+is itself temperature dependent: the chunk model adds K (T - T_solve), K a Broyden secant of
+each bearing's heat between its consecutive kinematics solves within a step, on the nodes
+the kinematics read (:mod:`thermobearing.coupled_secant`); where a step's first chunk is
+repeated shorter the first secant comes from one kinematics probe at +0.5 K (stat
+``kinematic_probes``). The kinematics (skidding solver) are re-solved at a step change and
+whenever the oil viscosity at the contact temperature has moved by more than
+``solver.kinematics_tolerance`` (relative) since the last solve: the losses scale with a
+power < 1 of the viscosity, so this bounds their change. The contact temperature (the one
+the kinematics are solved at and the re-solve test reads) is the inlet oil temperature of
+the raceway contacts, (T_inner_ring + T_outer_ring + 2 T_elements) / 4
 (:func:`~thermobearing.kinematic_models.contact_temperature`): each contact's inlet oil lies
 between the element and its ring, as the heat sources take it. Steady mode
 (``mode = "steady"``): for each step the coupled fixed point of network and heat sources by
