@@ -112,7 +112,9 @@ class CalibrationResult:
                  self.sensors.to_string(index=False, **fmt), "",
                  f"RMSE {self.rmse:.4g} K (before {self.initial_rmse:.4g} K), s = "
                  f"{self.residual_sd:.4g} K, {self.points} points, {self.dof} degrees of "
-                 f"freedom, {self.runs} model runs; {self.message}"]
+                 f"freedom, {self.runs} model runs; "
+                 + (self.message if self.success else
+                    "stopped without converging (note below)")]
         if len(self.parameters) > 1:
             names = [p.path.rsplit(".", 1)[-1] for p in self.parameters]
             corr = pd.DataFrame(self.correlation, index=names, columns=names)
