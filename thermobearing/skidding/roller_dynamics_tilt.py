@@ -70,7 +70,13 @@ form; its sign in this model's phase convention is below.)
   the tilt is Q d delta/dt's tilt part).
   Eq. 4's C_af = (H_rollercm - D_w/2) tan theta_f (the radial position's effect on the
   approach, ~0.2 um in the unloaded zone) and eq. 11's tilt term in H_contact are left
-  out (measured: no change beyond the scatter, SOURCE.md).
+  out (measured: no change beyond the scatter, SOURCE.md). Left out with them, to keep
+  the faces' energy bookkeeping closed: the rib forces' radial components on y_r (the
+  normal force's Q sin theta_f, 1.6 N at a 300 N impact, and the friction's radial part
+  at the skew-offset point, up to mu Q = 15 N) and the moment of that radial friction
+  about the tilt axis (arm ~L_r/2: <= 0.045 N m against the normal force's ~R_s
+  sin(theta_f) Q = 0.47 N m): the face kernel's kinematics carry neither y_r' nor the
+  contact point's radial speed from the tilt rate.
 * gyroscopic coupling of a spinning symmetric body (Euler's equations): with the spin
   angular momentum J_p Omega along the roller axis e_1 ~ (1, alpha_e, -alpha), dH/dt =
   J_p Omega (alpha_e' y - alpha' z) + J_t (alpha'' y + alpha_e'' z) = M, so
