@@ -251,7 +251,7 @@ def test_decoupled_tilt_reproduces_the_five_dof_run(base, monkeypatch):
     b, lub, m = base
     m_off = rd.build_model(b, lub, rd.PAPER003_BASE["speed"], rd.PAPER003_BASE["radial_load"],
                            0.11e-3, temperature=353.15, coupling="none",
-                           quasi_static=m.extras["quasi_static"])
+                           quasi_static=m.extras["quasi_static"], tilt=False)
     opts = dict(n_orbits=0.2, warmup_orbits=0.1)
     r_off = rc.simulate_coupled(m_off, b, lub, **opts)
     orig = rt.tilt_parameters

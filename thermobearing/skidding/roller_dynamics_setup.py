@@ -42,7 +42,7 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 coupling: str = "rib", pocket_dof: bool = True,
                 squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR,
                 raceway_traction: str = "componentwise",
-                rib_squeeze: bool = False, tilt: bool = False) -> DynamicsModel:
+                rib_squeeze: bool = False, tilt: bool | None = None) -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -78,11 +78,17 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     base case it keeps the rollers off the ribs (PV ~0 instead of ~650 MPa m/s) and it
     removes the friction-driven axial/skew rattle behind the 10000 r/min runaway
     (validation case SOURCE.md, 2026-11-23 evening).
-    ``tilt``: False (default): the coupled model's rollers move axially, skew, slide in
-    their pockets and spin; True adds each roller's radial position and tilt with their
-    speeds (paper 003 eq. 18's remaining DOFs: raceway slices in the radial play, the
+    ``tilt``: True adds each roller's radial position and tilt with their speeds (paper 003
+    eq. 18's remaining DOFs, the 6-DOF roller: raceway slices in the radial play, the
     unbalance's and the roller's centrifugal forces and tilt moments, the rib's axial force
-    on the tilt, gyroscopic coupling; :mod:`~thermobearing.skidding.roller_dynamics_tilt`).
+    on the tilt, gyroscopic coupling; :mod:`~thermobearing.skidding.roller_dynamics_tilt`);
+    False: the rollers move axially, skew, slide in their pockets and spin (5 DOF). None
+    (default): True where the roller carries an unbalance mass, False without one. Measured
+    (validation case SOURCE.md, "Tilt and radial play", 2026-11-24): without unbalance the
+    two models agree within 0.2 % (the load rows), at 1.2x the cost for 6 DOF; with 0.11 g
+    the 5-DOF model is 22 % high on PV and 18 % low on slip against the 6-DOF one, which
+    also keeps the 10000 r/min point in its cage band (6 of 6 trajectories; 0 of 6 on 5
+    DOF).
     Used by :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled` only.
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
@@ -135,7 +141,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_viscosity=float(lubricant.dynamic_viscosity(temperature)),
         pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
         pocket_dof=bool(pocket_dof), raceway_traction=raceway_traction,
-        rib_squeeze=bool(rib_squeeze), tilt=bool(tilt),
+        rib_squeeze=bool(rib_squeeze),
+        tilt=bool(unbalance_mass > 0.0) if tilt is None else bool(tilt),
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:
