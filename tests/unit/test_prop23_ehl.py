@@ -16,7 +16,8 @@ Invariants:
   slide-to-roll ratio s to -s (paper 001 eqs. 6, 8 are symmetric under z -> h - z when the
   two bodies have the same properties), so films, pressure and the highest temperature are
   equal, and the shear forces on surface 1 obey F1(s) + F1(-s) = 2 R with R the Poiseuille
-  ("rolling") force: F1 + F2 = -int h dp/dx dx = 2 R and F1(-s) = F2(s);
+  ("rolling") force: F1 + F2 = -int h dp/dx dx = 2 R and F1(-s) = F2(s) (to the fixed-point
+  tolerance of the thermal iteration);
 - thermal reduction of the film: inlet shear heating can only thin the film, and it grows
   with the speed (Murch & Wilson 1975, Gupta et al. 1992: phi_T = 1 / (1 + 0.241 (1 + 14.8
   SRR^0.83) L_T^0.64), L_T = -(d eta/dT) u^2 / k_f), so in pure rolling phi_T <= 1 and
@@ -84,25 +85,27 @@ def test_isothermal_film_grows_with_speed_at_most_linearly_and_falls_with_load(
         assert 0.0 < sol.minimum_film <= sol.central_film
 
 
-def _thermal(u, s, w=1e5, t_in=313.15):
-    return solve_thermal_line_contact(w, 0.01, _E, u, s, LUB, t_in, solid1=STEEL, n=256)
+def _thermal(u, s, w=1e5, t_in=313.15, **kw):
+    return solve_thermal_line_contact(w, 0.01, _E, u, s, LUB, t_in, solid1=STEEL, n=256, **kw)
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(u=st.floats(0.5, 4.0), s=st.floats(0.05, 0.6), w=st.floats(5e4, 2e5))
 def test_thermal_line_contact_is_mirror_symmetric_in_the_slide_to_roll_ratio(u, s, w):
     """Equal solids: s and -s give the same films, maximum pressure and temperature, and
-    F1(s) + F1(-s) = 2 R (the surfaces exchange roles), each to 1e-6 of the scale."""
-    plus, minus = _thermal(u, s, w), _thermal(u, -s, w)
+    F1(s) + F1(-s) = 2 R (the surfaces exchange roles). Solved to 1e-3 K (the fixed point to
+    about 3e-5 of the films; the two solves need not stop at the same outer iteration on
+    every CPU), so each to 2e-4 of its scale and 5 mK (measured: 1e-13 on this machine)."""
+    plus, minus = _thermal(u, s, w, tol_temperature=1e-3), _thermal(u, -s, w, tol_temperature=1e-3)
     for name in ("central_film", "minimum_film", "max_pressure", "rolling_force"):
         a, b = getattr(plus, name), getattr(minus, name)
-        assert math.isclose(a, b, rel_tol=1e-6), (name, a, b)
-    assert math.isclose(plus.max_temperature, minus.max_temperature, rel_tol=0, abs_tol=1e-4)
+        assert math.isclose(a, b, rel_tol=2e-4), (name, a, b)
+    assert math.isclose(plus.max_temperature, minus.max_temperature, rel_tol=0, abs_tol=5e-3)
     scale = max(abs(plus.shear_force), abs(minus.shear_force))
     balance = plus.shear_force + minus.shear_force - 2.0 * plus.rolling_force
-    assert abs(balance) <= 1e-6 * scale, (plus.shear_force, minus.shear_force,
+    assert abs(balance) <= 2e-4 * scale, (plus.shear_force, minus.shear_force,
                                            plus.rolling_force)
-    np.testing.assert_allclose(plus.film, minus.film, rtol=1e-6)
+    np.testing.assert_allclose(plus.film, minus.film, rtol=2e-4)
 
 
 def test_pure_rolling_thermal_reduction_falls_with_speed_and_tends_to_one():
