@@ -74,6 +74,9 @@ def test_ensemble_rows_print_their_standard_error_on_one_line(tmp_path):
         Record("c", "pv_ratio_stderr", "-", math.nan, 0.0042, math.nan, "report", False,
                False),
         Record("d", "slip_ratio_stderr", "-", math.nan, 0.5, math.nan, "report", False, False),
+        Record("e", "minimum", "mm", 550.0, 800.0, 250.0, "±100 mm", False, True),
+        Record("e", "minimum_stderr", "mm", math.nan, math.nan, math.nan, "report", False,
+               False),
     ]
     text = markdown_report(recs, folder=tmp_path)
     assert "| slip_ratio | - | 1.1 | 1.0771 ± 0.0231 | -2.08 % | [1, 1e+09] - | PASS |" in text
@@ -82,5 +85,6 @@ def test_ensemble_rows_print_their_standard_error_on_one_line(tmp_path):
     assert "| pv_ratio | 1.1 | 0.9941 ± 0.0042 |" in fail_section
     assert "| slip_ratio_stderr |" not in text.split("### d")[0]
     assert "| slip_ratio_stderr | - | - | 0.5 | - | report | report |" in text  # case d
-    assert "3 rows: 1 of 2 gated rows pass, 1 fail" in text
+    assert "| minimum | mm | 550 | 800 | +250 | ±100 mm | **FAIL** |" in text  # no SE: plain
+    assert "4 rows: 1 of 3 gated rows pass, 2 fail" in text
     assert "2 rows estimated from ensembles of trajectories carry their standard error" in text

@@ -60,7 +60,7 @@ def _stderr_map(records: Sequence[Record]) -> dict[tuple[str, str], float]:
 def _computed(r: Record, stderr: dict[tuple[str, str], float]) -> str:
     """The computed value, with ``± stderr`` where the row has a companion."""
     se = stderr.get((r.case, r.quantity))
-    if se is None or not math.isfinite(r.computed):
+    if se is None or not math.isfinite(r.computed) or not math.isfinite(se):
         return _fmt(r.computed)
     return f"{_fmt(r.computed)} ± {_fmt(se)}"
 
@@ -101,6 +101,7 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
     stderr = _stderr_map(records)
     companions = {(case, q + STDERR_SUFFIX) for case, q in stderr}
     records = [r for r in records if (r.case, r.quantity) not in companions]
+    n_se = sum(1 for v in stderr.values() if math.isfinite(v))
     cases = list(dict.fromkeys(r.case for r in records))
     gated = [r for r in records if r.gated]
     failed = [r for r in gated if not r.passed]
@@ -116,9 +117,9 @@ def markdown_report(records: Sequence[Record], *, folder: Path | None = None,
         f"{len(records) - len(gated)} `report` rows are printed beside the paper without a "
         "gate. Each case's `SOURCE.md` says where every number comes from, why the "
         "tolerance is what it is and, for a failing row, what was measured about the cause."
-        + (f" {len(companions)} rows estimated from ensembles of trajectories carry their "
+        + (f" {n_se} rows estimated from ensembles of trajectories carry their "
            "standard error as `± SE` after the computed value (verdicts use the value)."
-           if companions else ""),
+           if n_se else ""),
         "",
     ]
 
