@@ -277,13 +277,19 @@ def _lubrication(name: str) -> str:
     return name
 
 
-def _check_common(speed: float, nu: float, radial: float, axial: float, lubrication: str) -> None:
+def _catalogue_inputs(bearing: Any, speed: float, nu: float, radial: float, axial: float,
+                      lubrication: str) -> tuple[BearingEnvelope, str, float, float]:
+    """The inputs every registered catalogue model checks and converts first: the bearing's
+    envelope (:func:`envelope_of`), the canonical lubrication name, and the speed and the
+    kinematic viscosity in catalogue units, n = speed 60 / (2 pi) [r/min] and
+    nu 10^6 [mm^2/s] (speed [rad/s] >= 0, nu [m^2/s] > 0, loads [N] >= 0, else InputError)."""
+    env = envelope_of(bearing)
+    lubrication = _lubrication(lubrication)
     check_range("speed", speed, 0.0, math.inf, unit="rad/s")
     check_positive("kinematic_viscosity", nu)
     check_range("radial_load", radial, 0.0, math.inf, unit="N")
     check_range("axial_load", axial, 0.0, math.inf, unit="N")
-    if lubrication not in LUBRICATION:
-        raise UnknownNameError("lubrication", lubrication, LUBRICATION)
+    return env, lubrication, speed * _RPM_PER_RAD_S, nu * 1e6
 
 
 # ---------------------------------------------------------------------------
@@ -397,15 +403,12 @@ def skf_four_term(
     -------
     GlobalFrictionResult with components rolling, sliding, seal, drag [N m].
     """
-    env = envelope_of(bearing)
-    lubrication = _lubrication(lubrication)
-    _check_common(speed, kinematic_viscosity, radial_load, axial_load, lubrication)
+    env, lubrication, n, nu = _catalogue_inputs(bearing, speed, kinematic_viscosity, radial_load,
+                                                axial_load, lubrication)
     check_range("mu_bl", mu_bl, 0.0, 1.0)
     series = series or infer_skf_series(env)
     d, D, B = env.bore * 1e3, env.outer_diameter * 1e3, env.width * 1e3
     dm = 0.5 * (d + D)
-    n = speed * _RPM_PER_RAD_S
-    nu = kinematic_viscosity * 1e6
     kz = SKF_KZ[env.kind]
     c0 = static_load_rating if static_load_rating is not None else env.static_load_rating
     g_rr, g_sl = skf_geometry_variables(env.kind, series, dm, radial_load, axial_load, n, c0)
@@ -544,9 +547,8 @@ def palmgren(
     oil-air 0.5x, grease the grease column (Schaeffler values via Thermca). Both branches
     of M0 carry f0 (Thermca's low-speed branch omits it; that slip is not copied).
     """
-    env = envelope_of(bearing)
-    lubrication = _lubrication(lubrication)
-    _check_common(speed, kinematic_viscosity, radial_load, axial_load, lubrication)
+    env, lubrication, n, nu = _catalogue_inputs(bearing, speed, kinematic_viscosity, radial_load,
+                                                axial_load, lubrication)
     f0_grease, f0_bath, f1_tab = PALMGREN_FACTORS[env.kind]
     if f0 is None:
         f0 = {"grease": f0_grease, "oil_bath": f0_bath, "oil_jet": 2.0 * f0_bath,
@@ -555,8 +557,6 @@ def palmgren(
     check_positive("f0", f0)
     check_positive("f1", f1)
     dm = 0.5 * (env.bore + env.outer_diameter) * 1e3
-    n = speed * _RPM_PER_RAD_S
-    nu = kinematic_viscosity * 1e6
     if nu * n >= 2000.0:
         m0 = 1e-7 * f0 * (nu * n) ** (2.0 / 3.0) * dm**3
     else:
