@@ -54,7 +54,9 @@ from .sweep_store import (
     _record,
     _store_path,
     _write_summary,
+    counted,
     finished_cases,
+    kept_text,
     record_base_scene,
     record_planned_cases,
     summary_frame,
@@ -196,7 +198,7 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
             n = len(finished_cases(out))
             # a rerun runs this case again first: with the same values it fails the same
             # way, and in a serial sweep the cases after it never run
-            where = (f"{n} finished case(s) are kept in {_store_path(out)} (rerunning the "
+            where = (f"{kept_text(n)} in {_store_path(out)} (rerunning the "
                      "same command resumes with this case, which fails again with these "
                      "values: run the other cases with --keep-going (keep_going=True), "
                      "or leave these values out of --set)")
@@ -206,8 +208,8 @@ def _naming_case(case: Case, out: Path | None) -> Iterator[None]:
         # not an input or solver error the package names (a bug, a dask worker without
         # thermobearing, ...): the traceback stays, with a note on the case and the store
         values = ", ".join(f"{k}={v}" for k, v in case.assignments)
-        kept = "" if out is None else (f"; {len(finished_cases(out))} finished case(s) are "
-                                       f"kept in {_store_path(out)}")
+        kept = "" if out is None else (f"; {kept_text(len(finished_cases(out)))} in "
+                                       f"{_store_path(out)}")
         exc.add_note(f"in sweep case {case.case_id} ({values}){kept}")
         raise
 
@@ -428,7 +430,7 @@ def run_sweep(
         print(line, file=sys.stderr)
     resumed = len(cases) - len(todo)
     if resumed and progress is not False:  # a rerun says what it resumed, before the bar
-        print(f"sweep: resuming: {resumed} of {len(cases)} case(s) already in "
+        print(f"sweep: resuming: {resumed} of {counted(len(cases), 'case')} already in "
               f"{_store_path(out)}; {len(todo)} to run", file=sys.stderr)
     out.mkdir(parents=True, exist_ok=True)
     record_base_scene(out, scene)

@@ -29,6 +29,19 @@ def _store_path(out_dir: Path) -> Path:
     return out_dir / "cases.jsonl"
 
 
+def counted(n: int, noun: str) -> str:
+    """``n`` and the noun in the number it takes: ``"1 case"``, ``"0 cases"``,
+    ``"6 cases"`` (the sweep's messages said ``"1 case(s)"``)."""
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def kept_text(n: int, planned: int | None = None) -> str:
+    """How many finished cases a sweep folder keeps, verb agreed:
+    ``"1 finished case is kept"``, ``"2 finished cases of 9 planned are kept"``."""
+    of = "" if planned is None else f" of {planned} planned"
+    return f"{counted(n, 'finished case')}{of} {'is' if n == 1 else 'are'} kept"
+
+
 def finished_cases(out_dir: Path | str) -> dict[str, dict[str, Any]]:
     """Cases already in the results store (id -> record); a torn last line is ignored.
     Result names written by earlier versions are read under their current names

@@ -115,7 +115,7 @@ def test_an_interrupted_sweep_reports_the_cases_it_did_not_run(scene, tmp_path,
     err = capsys.readouterr().err
     assert code == 130
     # before: "1 finished case(s) are kept" and nothing of the 8 not run
-    assert "interrupted: 1 finished case(s) of 9 planned are kept in" in err
+    assert "interrupted: 1 finished case of 9 planned is kept in" in err
     ids = planned_cases(out)
     assert ids is not None and len(ids) == 9
     record = json.loads((out / PLANNED_FILE).read_text(encoding="utf-8"))
@@ -176,7 +176,7 @@ def test_a_sweep_refused_before_it_starts_leaves_no_record(scene, tmp_path, caps
 def test_the_interrupt_message_of_a_folder_without_a_started_sweep(tmp_path):
     assert "nothing was kept" in interrupt_message(tmp_path, 0, None)
     assert interrupt_message(tmp_path, 2, None).startswith(
-        "interrupted: 2 finished case(s) are kept in")
+        "interrupted: 2 finished cases are kept in")
 
 
 # --- 4. a sensor whose every reading is a gap ---------------------------------------------

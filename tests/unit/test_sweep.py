@@ -195,6 +195,6 @@ def test_a_resumed_sweep_says_what_it_resumed(tmp_path, capsys):
     assert "resuming" not in first
     run_sweep(scene, params, tmp_path, runner=flow_speed_runner, workers=1, progress=None)
     err = capsys.readouterr().err
-    assert "sweep: resuming: 3 of 4 case(s) already in" in err and "1 to run" in err
+    assert "sweep: resuming: 3 of 4 cases already in" in err and "1 to run" in err
     run_sweep(scene, params, tmp_path, runner=flow_speed_runner, workers=1, progress=False)
     assert "resuming" not in capsys.readouterr().err  # progress=False: nothing printed

@@ -253,7 +253,7 @@ def test_failed_case_message_says_a_rerun_fails_the_same_way(tmp_path, capsys, m
             "--quiet"]
     assert cli.main(args) != 0
     err = capsys.readouterr().err
-    assert "supply.flow=40 L/min" in err and "1 finished case(s) are kept" in err
+    assert "supply.flow=40 L/min" in err and "1 finished case is kept" in err
     assert "fails again" in err and "--keep-going" in err
 
 
@@ -425,7 +425,7 @@ def test_keep_going_on_the_command_line(tmp_path, capsys, monkeypatch):
             "--out", str(out), "-j", "1", "--quiet", "--keep-going"]
     assert cli.main(args) == 1  # not every case ran
     captured = capsys.readouterr()
-    assert "1 case(s) failed" in captured.err and "a rerun tries them again" in captured.err
+    assert "1 case failed" in captured.err and "a rerun tries it again" in captured.err
     assert "supply.flow=40 L/min, supply.inlet_temperature=40 degC" in captured.err
     assert captured.out.count(" L/min ") == 3  # the three other cases in the table
 

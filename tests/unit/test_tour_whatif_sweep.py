@@ -87,7 +87,7 @@ def test_repeated_values_are_dropped_and_said(scene, tmp_path, capsys, monkeypat
                      "--workers", "1", "--quiet"])
     err = capsys.readouterr().err
     assert code == 0 and len(calls) == 2
-    assert "repeated value(s) left out: '15' (= '15 L/min')" in err
+    assert "repeated value left out: '15' (= '15 L/min')" in err
     assert len((out / "cases.jsonl").read_text().splitlines()) == 2
 
 
@@ -130,7 +130,7 @@ def test_a_case_failing_at_run_time_says_how_many_are_kept(scene, tmp_path):
         return capacity_runner(text)
 
     p = parse_set("supply.flow=15,33", scene.to_dict())
-    with pytest.raises(ConvergenceError, match=r"1 finished case\(s\) are kept"):
+    with pytest.raises(ConvergenceError, match=r"1 finished case is kept"):
         run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
 
 
@@ -371,7 +371,7 @@ def test_an_unexpected_error_in_a_case_names_the_case(scene, tmp_path):
     with pytest.raises(ZeroDivisionError) as info:
         run_sweep(scene, [p], tmp_path, runner=runner, workers=1, progress=False)
     note = " ".join(getattr(info.value, "__notes__", []))
-    assert "supply.flow=33 L/min" in note and "1 finished case(s) are kept" in note
+    assert "supply.flow=33 L/min" in note and "1 finished case is kept" in note
 
 
 # --- bearing overrides: the preset's unit, whole counts, an index that exists -------------

@@ -20,6 +20,7 @@ import pandas as pd
 from ..errors import InputError
 from ..scene_checks import check_measured_file, check_model_names, check_network
 from ..sweep import finished_cases, parse_set, run_sweep
+from ..sweep_store import counted, kept_text
 from ._preflight import check_inputs_not_replaced, load_scene_argument
 
 NAME = "sweep"
@@ -69,7 +70,8 @@ def run(args: argparse.Namespace) -> int:
     params = [parse_set(s, d) for s in args.sets]
     for p in params:
         if p.dropped:
-            print(f"sweep: {p.path}: repeated value(s) left out: {', '.join(p.dropped)}",
+            word = "value" if len(p.dropped) == 1 else "values"
+            print(f"sweep: {p.path}: repeated {word} left out: {', '.join(p.dropped)}",
                   file=sys.stderr)
     out = Path(args.out)
     check_inputs_not_replaced(out, scene, args.scene, SWEEP_OUTPUTS, prefix="sweep_",
@@ -109,8 +111,9 @@ def run(args: argparse.Namespace) -> int:
         print(line, file=sys.stderr)
     failures = df.attrs.get("failed", [])
     if failures:
-        print(f"{len(failures)} case(s) failed (not in {out / 'summary.csv'}; a rerun tries "
-              "them again):", file=sys.stderr)
+        them = "it" if len(failures) == 1 else "them"
+        print(f"{counted(len(failures), 'case')} failed (not in {out / 'summary.csv'}; a rerun "
+              f"tries {them} again):", file=sys.stderr)
         for line in failures:
             print(f"  {line}", file=sys.stderr)
     swept = {p.path for p in params}
@@ -147,15 +150,15 @@ def record_plan(out: Path, scene, params) -> int | None:
 def interrupt_message(out: Path, done: int, planned: int | None) -> str:
     """What an interrupted sweep prints: how many cases finished (of how many planned)
     and what the folder keeps."""
-    of = f" of {planned} planned" if planned is not None else ""
     if done:
-        return (f"interrupted: {done} finished case(s){of} are kept in "
+        return (f"interrupted: {kept_text(done, planned)} in "
                 f"{out / 'cases.jsonl'} (table: {out / 'summary.csv'}); rerun the same "
                 "command to resume with the cases not yet run")
     if planned is not None:
-        return (f"interrupted before the first case finished: 0 of {planned} planned cases "
-                f"finished; {out} keeps the base scene (scene.toml) and the planned cases "
-                "(planned_cases.json), no result; rerun the same command to start again")
+        return (f"interrupted before the first case finished: 0 of "
+                f"{counted(planned, 'planned case')} finished; {out} keeps the base scene "
+                "(scene.toml) and the planned cases (planned_cases.json), no result; rerun the "
+                "same command to start again")
     return ("interrupted before the first case finished: nothing was kept; rerun the same "
             "command to start again")
 
