@@ -288,6 +288,46 @@ def _table_viscosity(p: float, ln_tab: np.ndarray, slope_tab: np.ndarray,
     return math.exp(ln_tab[i] + (u - i) * slope_tab[i])
 
 
+@numba.njit(cache=True, inline="always")
+def _slip_coefficients(a: float, b: float, curv: float, wy: float, wz: float,
+                       wx: float) -> tuple[float, float, float, float, float, float]:
+    """The contact constants of the slip field (module docstring) in the rule's coordinates
+    xg = x / a, yg = y / b: z = a2c xg^2 with a2c = a^2 / (2 R_d) [m], and
+
+        dv_x = V_x + cx2 xg^2 - cy yg,   dv_y = V_y + cx xg - cy2 xg^2,
+
+    cx2 = Omega_y a2c, cy = Omega_z b, cx = Omega_z a, cy2 = Omega_x a2c [m/s] (Johnson 1985
+    ch. 8; curv = 1 / R_d [1/m], angular speeds [rad/s]). Returns (a b [m^2], a2c, cx2, cy,
+    cx, cy2); shared by every contact kernel (here and the ball solver's traction Jacobian)."""
+    a2c = 0.5 * curv * a * a
+    return a * b, a2c, wy * a2c, wz * b, wz * a, wx * a2c
+
+
+@numba.njit(cache=True, inline="always")
+def _node_slip(vx: float, vy: float, cx2: float, cy: float, cx: float, cy2: float, xg: float,
+               yg: float) -> tuple[float, float, float]:
+    """Slip velocity [m/s] at the rule node (xg, yg) of a contact with the constants of
+    :func:`_slip_coefficients`: (xg^2, dv_x = V_x + cx2 xg^2 - cy yg, dv_y = V_y + cx xg -
+    cy2 xg^2) (module docstring; V_x, V_y [m/s] the centre's sliding speeds)."""
+    xg2 = xg * xg
+    return xg2, vx + cx2 * xg2 - cy * yg, vy + cx * xg - cy2 * xg2
+
+
+@numba.njit(cache=True, inline="always")
+def _store_forces(out: np.ndarray, c: int, a: float, b: float, a2c: float, sx0: float,
+                  sx1: float, sx2: float, sy0: float, sy1: float, sy2: float) -> None:
+    """Writes (F_x, F_y, M_x, M_y, M_z) [N, N m] on the element to ``out[c, 0:5]`` from the
+    node sums of -t dA (module docstring; px = -t_x dA, py = -t_y dA [N]): F_x = -sum px,
+    F_y = -sum py, M_x = -sum z t_y dA = a2c sum py xg^2, M_y = sum z t_x dA = -a2c sum px
+    xg^2, M_z = sum (x t_y - y t_x) dA = b sum px yg - a sum py xg (moments about the contact
+    centre, z = a2c xg^2 [m]); shared by every contact kernel."""
+    out[c, 0] = -sx0
+    out[c, 1] = -sy0
+    out[c, 2] = a2c * sy1
+    out[c, 3] = -a2c * sx1
+    out[c, 4] = b * sx2 - a * sy2
+
+
 @numba.njit(cache=True, fastmath={"reassoc"})
 def _node_sums(xg: np.ndarray, yg: np.ndarray, px: np.ndarray, py: np.ndarray,
                heat: np.ndarray) -> tuple[float, float, float, float, float, float, float]:
@@ -347,10 +387,7 @@ def _integrate_eyring_fast(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab
         if p0 == 0.0:
             continue
         ac, bc = a[c], b[c]
-        ab = ac * bc
-        a2c = 0.5 * curv[c] * ac * ac
-        cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
-        cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
+        ab, a2c, cx2, cy, cx, cy2 = _slip_coefficients(ac, bc, curv[c], wy[c], wz[c], wx[c])
         inv_h = 1.0 / h[c]
         for u in range(pshape_u.size):             # _table_viscosity, exp vectorisable
             pu = p0 * pshape_u[u] * inv_dp
@@ -360,10 +397,7 @@ def _integrate_eyring_fast(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab
             rate_k[k] = rate_u[pidx[k]]
         vxc, vyc = vx[c], vy[c]
         for k in range(nk):                      # vectorised
-            xk, yk = xg[k], yg[k]
-            xk2 = xk * xk
-            dvx = vxc + cx2 * xk2 - cy * yk
-            dvy = vyc + cx * xk - cy2 * xk2
+            xk2, dvx, dvy = _node_slip(vxc, vyc, cx2, cy, cx, cy2, xg[k], yg[k])
             speed = math.sqrt(dvx * dvx + dvy * dvy)
             tau_e = tau0 * _asinh_abs(rate_k[k] * speed * inv_tau0)
             tau_l = lam * (p0 * pshape[k])
@@ -381,11 +415,7 @@ def _integrate_eyring_fast(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab
             py_k[k] = per_speed * dvy             # -t_y
             heat_k[k] = per_speed * (speed * speed)   # |t| dA speed
         sx0, sx1, sx2, sy0, sy1, sy2, heat = _node_sums(xg, yg, px_k, py_k, heat_k)
-        out[c, 0] = -sx0
-        out[c, 1] = -sy0
-        out[c, 2] = a2c * sy1
-        out[c, 3] = -a2c * sx1
-        out[c, 4] = bc * sx2 - ac * sy2
+        _store_forces(out, c, ac, bc, a2c, sx0, sx1, sx2, sy0, sy1, sy2)
         out[c, 5] = heat
 
 
@@ -433,10 +463,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
         if p0 == 0.0:
             continue
         ac, bc = a[c], b[c]
-        ab = ac * bc
-        a2c = 0.5 * curv[c] * ac * ac
-        cx2, cy = wy[c] * a2c, wz[c] * bc        # dv_x = V_x + cx2 xg^2 - cy yg
-        cx, cy2 = wz[c] * ac, wx[c] * a2c        # dv_y = V_y + cx xg - cy2 xg^2
+        ab, a2c, cx2, cy, cx, cy2 = _slip_coefficients(ac, bc, curv[c], wy[c], wz[c], wx[c])
         inv_h = 1.0 / h[c]
         if visc_mode == 1:
             for u in range(pshape_u.size):
@@ -448,9 +475,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
         g0 = g1 = g2 = g3 = g4 = 0.0
         for k in range(nk):
             xk, yk = xg[k], yg[k]
-            xk2 = xk * xk
-            dvx = vx[c] + cx2 * xk2 - cy * yk
-            dvy = vy[c] + cx * xk - cy2 * xk2
+            xk2, dvx, dvy = _node_slip(vx[c], vy[c], cx2, cy, cx, cy2, xk, yk)
             speed = math.sqrt(dvx * dvx + dvy * dvy)
             pres = p0 * pshape[k]
             weight = ab * area_w[k]
@@ -511,11 +536,7 @@ def _integrate_contacts(law_id: int, law_params: np.ndarray, visc_mode: int,
                 g2 += -hy * z
                 g3 += hx * z
                 g4 += -hx * y + hy * x
-        out[c, 0] = -sx0
-        out[c, 1] = -sy0
-        out[c, 2] = a2c * sy1                    # -sum z t_y
-        out[c, 3] = -a2c * sx1                   # sum z t_x
-        out[c, 4] = bc * sx2 - ac * sy2          # sum (x t_y - y t_x)
+        _store_forces(out, c, ac, bc, a2c, sx0, sx1, sx2, sy0, sy1, sy2)
         out[c, 5] = heat
         if jacobian:
             vals = (j00, j01, j02, j03, j04, j11, j12, j13, j14, j22, j23, j24, j33, j34, j44)

@@ -15,7 +15,14 @@ import math
 import numba
 import numpy as np
 
-from ..contact_traction import _peak_pressure, _table_viscosity, refresh_stale_caches
+from ..contact_traction import (
+    _node_slip,
+    _peak_pressure,
+    _slip_coefficients,
+    _store_forces,
+    _table_viscosity,
+    refresh_stale_caches,
+)
 from ..traction import _log_pos
 
 # contact inputs of the traction derivative: Q, a, b, V_y, V_x, omega_z, omega_x, omega_y, h
@@ -180,11 +187,8 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
         if p0 == 0.0:
             continue
         ac, bc, qc = a[c], b[c], q[c]
-        ab = ac * bc
-        a2c = 0.5 * curv[c] * ac * ac
         wyc, wzc, wxc = wy[c], wz[c], wx[c]
-        cx2, cy = wyc * a2c, wzc * bc
-        cx, cy2 = wzc * ac, wxc * a2c
+        ab, a2c, cx2, cy, cx, cy2 = _slip_coefficients(ac, bc, curv[c], wyc, wzc, wxc)
         inv_h = 1.0 / h[c]
         for u in range(nu):
             pu = p0 * pshape_u[u]
@@ -200,10 +204,7 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
             lamk_k[k] = lam_u[pidx[k]]
         # per node, vectorised (no sums here): slide speed, the law and its derivatives
         for k in range(nk):
-            xk, yk = xg[k], yg[k]
-            xk2 = xk * xk
-            dvx = vxc + cx2 * xk2 - cy * yk
-            dvy = vyc + cx * xk - cy2 * xk2
+            xk2, dvx, dvy = _node_slip(vxc, vyc, cx2, cy, cx, cy2, xg[k], yg[k])
             s = math.sqrt(dvx * dvx + dvy * dvy)
             pres = p0 * pshape[k]
             rate = rate_k[k]
@@ -234,11 +235,7 @@ def _contact_traction_jac(law_params: np.ndarray, ln_tab: np.ndarray, slope_tab:
          pxg_x2, pxg_y, pyg_1, pyg_x2, pyg_x, pxh_1, pxh_x2, pxh_y, pyh_1, pyh_x2, pyh_x,
          pxt_1, pxt_x2, pxt_y, pyt_1, pyt_x2, pyt_x) = _jac_node_sums(
             xg, yg, px_k, py_k, kxx_k, kyy_k, kxy_k, exg_k, eyg_k, exh_k, eyh_k, ext_k, eyt_k)
-        tr[c, 0] = -sx0
-        tr[c, 1] = -sy0
-        tr[c, 2] = a2c * sy1
-        tr[c, 3] = -a2c * sx1
-        tr[c, 4] = bc * sx2 - ac * sy2
+        _store_forces(tr, c, ac, bc, a2c, sx0, sx1, sx2, sy0, sy1, sy2)
         # per direction: S_px[m] for m = 1, x2, y and S_py[m] for m = 1, x2, x
         # ddx = al1 + alx2 x2 + aly y ; ddy = be1 + bex x + bex2 x2 ; sigma = g gp + hh th + t tw
         for d in range(N_IN):
