@@ -57,6 +57,7 @@ from .exp_kernels import (  # noqa: F401  (_jacobi_eigh: re-exported for tests a
 )
 from .exponential import _drift_booking, _nb_scaled_jacobian, diagonalise_or_refuse
 from .stepper_core import _NewtonFailure, stage_drift
+from .steppers import STEP_UNDERFLOW, clip_step, stepper_failure
 
 
 # ------------------------------------------------------------ dense output store
@@ -251,10 +252,8 @@ def _start_values(driver, heat, heat_jacobian, heat_with_jacobian, t, tt, T, n, 
 
 
 def _fail(driver, exc, t, h, y):
-    from ..errors import ConvergenceError
-
-    return ConvergenceError(f"network stepper {driver.method_name}", exc.residual,
-                            exc.reason, {"time": t, "step_size": h, "temperatures": y})
+    """:func:`.steppers.stepper_failure` of a Newton failure ``exc`` at time t, step h."""
+    return stepper_failure(driver.method_name, exc.residual, exc.reason, t, h, y)
 
 
 def run_segment(driver, t0: float, t1: float, y0: np.ndarray, heat, heat_jacobian,
@@ -367,11 +366,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
             sym_now = sym and jq.ndim == 1
             c1 = zeros
             while t < t1 - tiny:
-                if t + h >= t1 - 1e-3 * h:
-                    h = t1 - t
-                    last = True
-                else:
-                    last = False
+                h, last = clip_step(t, h, t1)
                 try:
                     if td:  # c1 = h dq/dt, one-sided difference inside the segment
                         dt_fd = 1e-7 * max(h, 1e-3 * abs(t), 1e-6)
@@ -487,12 +482,7 @@ def run_segments(driver, edges, y0: np.ndarray, heat, heat_jacobian, heat_with_j
                     rejected_in_row = True
                     h = h * fac
                     if h < min_step:
-                        from ..errors import ConvergenceError
-
-                        raise ConvergenceError(
-                            f"network stepper {driver.method_name}", err,
-                            "step size underflow in error control",
-                            {"time": t, "step_size": h, "temperatures": y})
+                        raise stepper_failure(driver.method_name, err, STEP_UNDERFLOW, t, h, y)
                     continue
                 # accept
                 rejected_in_row = False

@@ -267,9 +267,8 @@ class _Driver:
             f0, q0 = core.f(t0, y0)
             core.refresh_jacobian(t0, y0, q0)
         except _NewtonFailure as exc:
-            raise ConvergenceError(f"network stepper {self.method_name}", exc.residual,
-                                   exc.reason, {"time": t0, "step_size": 0.0,
-                                                "temperatures": y0}) from None
+            raise stepper_failure(self.method_name, exc.residual, exc.reason, t0, 0.0,
+                                  y0) from None
         if not rec.started:
             rec.start(t0, y0, f0, core)
         t = t0
@@ -285,11 +284,7 @@ class _Driver:
         rejected_in_row = False
         tiny = 1e-12 * max(1.0, abs(t1))
         while t < t1 - tiny:
-            if t + h >= t1 - 1e-3 * h:
-                h = t1 - t
-                last = True
-            else:
-                last = False
+            h, last = clip_step(t, h, t1)
             if core.asm.temperature_dependent:
                 core.update_system(y, keep_heat_jacobian=True)
                 # f at the step start with the conductances the step uses (q unchanged),
@@ -305,9 +300,8 @@ class _Driver:
                     continue
                 h_new = h / 4.0
                 if h_new < self.min_step or self.dt is not None and h_new < self.dt * 1e-6:
-                    raise ConvergenceError(
-                        f"network stepper {self.method_name}", exc.residual, exc.reason,
-                        {"time": t, "step_size": h, "temperatures": y}) from None
+                    raise stepper_failure(self.method_name, exc.residual, exc.reason, t, h,
+                                          y) from None
                 h = h_new
                 continue
             err = trial.err
@@ -321,10 +315,7 @@ class _Driver:
                 rejected_in_row = True
                 h = h * fac
                 if h < self.min_step:
-                    raise ConvergenceError(
-                        f"network stepper {self.method_name}", err,
-                        "step size underflow in error control",
-                        {"time": t, "step_size": h, "temperatures": y})
+                    raise stepper_failure(self.method_name, err, STEP_UNDERFLOW, t, h, y)
                 continue
             # accept
             rejected_in_row = False
@@ -347,6 +338,30 @@ class _Driver:
                     h = h * fac
                 h = min(h, self.max_step)
         return y
+
+
+def stepper_failure(method_name: str, residual: float, reason: str, t: float, h: float,
+                    y: np.ndarray) -> ConvergenceError:
+    """The error of an adaptive network stepper that cannot go on (a Newton failure at the
+    smallest step, or :data:`STEP_UNDERFLOW`): names the stepper, the residual or error
+    estimate [-] and the reason, with the time t [s], the step size h [s] and the
+    temperatures y [K] at the failure. Shared by this module's loop and :mod:`.exp_fast`."""
+    return ConvergenceError(f"network stepper {method_name}", residual, reason,
+                            {"time": t, "step_size": h, "temperatures": y})
+
+
+def clip_step(t: float, h: float, t1: float) -> tuple[float, bool]:
+    """The step h [s] to take from t [s] towards the segment end t1 [s] and whether it is the
+    segment's last: a step that would end within 1e-3 h of t1 (or beyond) is stretched or cut
+    to t1 - t, so that no sliver step is left. Shared by this module's loop and
+    :mod:`.exp_fast`."""
+    if t + h >= t1 - 1e-3 * h:
+        return t1 - t, True
+    return h, False
+
+
+#: reason of the error when error control shrinks the step below the stepper's minimum
+STEP_UNDERFLOW = "step size underflow in error control"
 
 
 class _Recorder:
