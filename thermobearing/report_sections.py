@@ -2,10 +2,11 @@
 
 :func:`html_table` renders a table for a reader (powers rounded by
 :func:`report_losses.fmt_power`, per cent values to three significant digits, other
-numbers to four; a long table is cut with a note naming its CSV file). :func:`context_html` says
-which bearing ran at which operating points; :func:`losses_html` gives the loss breakdown
-by source and by receiving component, the sum check, the loss glossary and the catalogue
-cross-check (:func:`report_context.catalogue_crosscheck`).
+numbers to four, every number from 1000 on with its thousands grouped; a long table is
+cut with a note naming its CSV file). :func:`context_html` says which bearing ran at
+which operating points; :func:`losses_html` gives the loss breakdown by source and by
+receiving component, the sum check, the loss glossary and the catalogue cross-check
+(:func:`report_context.catalogue_crosscheck`).
 """
 
 from __future__ import annotations
@@ -27,36 +28,38 @@ MAX_ROWS = 60
 
 
 def fmt_number(v: float) -> str:
-    """Four significant digits, without an exponent from 1e4 to 1e12 (a speed of 20000
-    r/min reads ``20,000``, not ``2e+04``)."""
-    if math.isfinite(v) and 1e4 <= abs(v) < 1e12:
+    """Four significant digits; from 1000 to 1e12 a whole number with its thousands
+    grouped (a speed of 20000 r/min reads ``20,000``, not ``2e+04``; a torque of 1169 N mm
+    reads ``1,169``, as a power of 1031 W beside it reads ``1,031`` by
+    :func:`report_losses.fmt_power`: one grouping rule for every number of a table)."""
+    if math.isfinite(v) and 1e3 <= abs(v) < 1e12:
         return f"{v:,.0f}"
     return f"{v:.4g}"
 
 
-def fmt_grouped(v: float) -> str:
-    """:func:`fmt_number` with the thousands grouped from 1000 on: the format of a column
-    that reaches 1e4, so that its 8000 and 12000 r/min read ``8,000`` and ``12,000`` (not
-    ``8000`` beside ``12,000``)."""
-    if math.isfinite(v) and 1e3 <= abs(v) < 1e12:
-        return f"{v:,.0f}"
-    return fmt_number(v)
+def fmt_integer(v: Any) -> str:
+    """An integer cell grouped as :func:`fmt_number` groups a float (``1,500`` r/min);
+    anything else as text."""
+    if isinstance(v, (int, np.integer)) and not isinstance(v, bool):
+        return f"{int(v):,}"
+    return str(v)
 
 
 def _formatters(df: pd.DataFrame) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for c in df.columns:
-        if not pd.api.types.is_float_dtype(df[c]):
+        if pd.api.types.is_bool_dtype(df[c]):
             continue
-        if str(c).endswith("[W]"):
+        if pd.api.types.is_integer_dtype(df[c]):
+            out[c] = fmt_integer
+        elif not pd.api.types.is_float_dtype(df[c]):
+            continue
+        elif str(c).endswith("[W]"):
             out[c] = rl.fmt_power
         elif str(c).endswith("[%]"):
             out[c] = lambda v: f"{v:.3g}"
         else:
-            finite = df[c].to_numpy(float)
-            finite = np.abs(finite[np.isfinite(finite)])
-            if finite.size and 1e4 <= finite.max() < 1e12:
-                out[c] = fmt_grouped
+            out[c] = fmt_number
     return out
 
 
