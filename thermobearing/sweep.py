@@ -47,6 +47,7 @@ from .sweep_params import (
     bearing_file_value,
     check_path,
     get_path,
+    in_store_units,
     parse_set,
 )
 from .sweep_store import (
@@ -418,11 +419,14 @@ def run_sweep(
     if out.exists() and not out.is_dir():
         raise InputError("--out", str(out), "a results folder (new or of this sweep); this "
                          "is a file")
+    done = finished_cases(out)
+    # one unit per swept field in the folder: a resume in other units (500 N after 0.5 kN)
+    # records its new values in the unit of the first run
+    params = in_store_units(params, done)
     cases = expand(scene, params)
     for p in params:  # values read in a way the user may not have meant (a bare 313 degC)
         for line in p.notes:
             print(line, file=sys.stderr)
-    done = finished_cases(out)
     cases = match_finished(scene, cases, done)  # the same quantities in other units
     todo = [c for c in cases if c.case_id not in done]
     unused = check_cases(todo) if check else []

@@ -343,6 +343,50 @@ def _same_quantity_key(value: Any) -> Any:
         return ("text", str(value).strip())
 
 
+def _in_unit(value: Any, unit: str) -> Any:
+    """``value`` (a quantity string) written in ``unit`` as the store wrote it
+    (``"500 N"`` in ``"kN"`` -> ``"0.5 kN"``, to :data:`_DIGITS` significant digits);
+    the value unchanged when it is not a quantity of the unit's dimension (a bare number,
+    a preset name) or is written in that unit already."""
+    from .units import quantity_unit, unit_registry
+
+    if not isinstance(value, str) or value.strip().split(maxsplit=1)[1:] == [unit]:
+        return value
+    try:
+        ureg = unit_registry()
+        q = ureg.Quantity(float(value.split()[0]), quantity_unit(value))
+        number = float(q.to(quantity_unit(f"1 {unit}")).magnitude)
+    except Exception:  # noqa: BLE001 - not a quantity of that dimension: as written
+        return value
+    return f"{number:.{_DIGITS}g} {unit}"
+
+
+def in_store_units(params: Sequence[SweepParameter],
+                   records: Mapping[str, Mapping[str, Any]] | Sequence[Mapping[str, Any]]
+                   ) -> list[SweepParameter]:
+    """The swept values written in one unit per field throughout a sweep folder: the unit
+    of the field's first value in the folder's finished cases (``records``, id -> record
+    or a list of records, as :func:`thermobearing.sweep_store.finished_cases` reads them),
+    else of the field's first value here. A sweep of ``schedule.radial_load=0.5 kN``
+    resumed with ``=500 N,700 N`` then runs and records ``0.7 kN`` (its ``summary.csv``
+    listed both ``0.5 kN`` and ``500 N`` in the text column); values of another dimension
+    or without a unit are kept as written."""
+    recs = list(records.values()) if isinstance(records, Mapping) else list(records)
+    out = []
+    for p in params:
+        written = [rec["params"][p.path] for rec in recs
+                   if isinstance(rec.get("params"), Mapping) and p.path in rec["params"]]
+        first = next((v for v in [*written, *p.values] if isinstance(v, str)
+                      and len(v.strip().split(maxsplit=1)) == 2), None)
+        if first is None:
+            out.append(p)
+            continue
+        unit = first.strip().split(maxsplit=1)[1]
+        out.append(SweepParameter(p.path, tuple(_in_unit(v, unit) for v in p.values),
+                                  p.dropped, p.notes))
+    return out
+
+
 def _unique(path: str, values: Sequence[Any], written: Sequence[str]) -> SweepParameter:
     """The parameter with repeated values dropped (a repeated value would run the same case
     twice); what was dropped is kept in ``dropped`` for the command to say."""

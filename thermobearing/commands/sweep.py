@@ -133,6 +133,7 @@ def record_plan(out: Path, scene, params) -> int | None:
     store (a case finished earlier in other units keeps its id)."""
     from ..scene import with_absolute_paths
     from ..sweep_cases import expand, match_finished
+    from ..sweep_params import in_store_units
     from ..sweep_store import record_planned_cases
 
     path = out / "scene.toml"
@@ -140,7 +141,8 @@ def record_plan(out: Path, scene, params) -> int | None:
         if not path.is_file() or path.read_text(encoding="utf-8") != \
                 with_absolute_paths(scene).to_toml():
             return None
-        cases = match_finished(scene, expand(scene, params), finished_cases(out))
+        done = finished_cases(out)
+        cases = match_finished(scene, expand(scene, in_store_units(params, done)), done)
         record_planned_cases(out, cases)
     except (OSError, UnicodeDecodeError, InputError):
         return None  # not this sweep's folder any more, or values it refused
