@@ -32,11 +32,14 @@ preset is taken to include it; its axial offset would only tilt the roller).
   Hertz spring): scipy's Radau IIA, variable step [hairer_wanner1996].
 * ``reduced`` model (:func:`simulate_reduced`): the same equations at frozen azimuths (one
   per distinct load state of the orbit, weighted by the share of the orbit it
-  represents), integrated with a numba-jitted fixed-step RK4 (h <= 1/omega of the rib
-  contact's axial mode). Base case (0.11 g): PV -5.5 %, slip 0.0 % against the full model
-  at 1/57 of its cost (8.0 s vs 0.14 s wall; 37 s vs 0.56 s on a loaded 2-core machine),
-  both on the same coupled spins; the coupling itself costs ~1 s (validation case
-  ``paper003_pv_slip_trends``).
+  represents), integrated with a numba-jitted fixed-step ETDRK4: the pocket slide's
+  raceway damping exact, RK4 on the rest (h <= 1/omega of the rib contact's axial mode
+  and of the raceway traction's damping rates; the NJ 214 rig point at 2000 r/min, 8 kN
+  in ISO VG46 diverged under plain RK4: module notes of
+  :mod:`~thermobearing.skidding.roller_dynamics_integrate`). Base case (0.11 g): PV -5.5 %,
+  slip 0.0 % against the full model at 1/57 of its cost (8.0 s vs 0.14 s wall; 37 s vs
+  0.56 s on a loaded 2-core machine), both on the same coupled spins; the coupling
+  itself costs ~1 s (validation case ``paper003_pv_slip_trends``).
 * roller spins: ``spin="skidding"`` (default) starts from the quasi-static solver, whose
   unloaded rollers skid (about half the rolling speed at the base case), then couples;
   ``spin="rolling"`` puts every roller at its pure-rolling spin, uncoupled (a sensitivity
@@ -69,7 +72,7 @@ from .roller_dynamics_coupling import (
     race_spin_stiffness,
 )
 from .roller_dynamics_integrate import (  # noqa: F401
-    _rk4_frozen,
+    _etd_frozen,
     _state_post,
     simulate,
     simulate_full,

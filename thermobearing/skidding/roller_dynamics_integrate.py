@@ -1,13 +1,29 @@
 """Integration drivers of the paper 003 roller dynamics: the ``full`` model
 (:func:`simulate_full`, scipy's Radau IIA over whole orbits [hairer_wanner1996]) and the
 ``reduced`` model (:func:`simulate_reduced`, frozen load states with the compiled fixed-step
-RK4 :func:`_rk4_frozen`); :func:`simulate` dispatches. The models and their accuracy are
+ETDRK4 :func:`_etd_frozen`); :func:`simulate` dispatches. The models and their accuracy are
 described in :mod:`thermobearing.skidding.roller_dynamics`; the right-hand side is
 :mod:`~thermobearing.skidding.roller_dynamics_rhs`, the statistics
 :mod:`~thermobearing.skidding.roller_dynamics_response`.
 
-numba's cache does not notice edits of compiled callees in other files (the RK4 loop inlines
-the right-hand side): :func:`thermobearing.contact_traction.refresh_stale_caches`. Units: SI.
+Stiff pocket damping (2026-11-24): at a frozen state the roller's circumferential slide in
+its pocket is damped by the raceways, m z'' = ... - c_z z', c_z = k_omega/(D/2)^2 with k_omega
+the spin stiffness of paper 000's traction model. At a heavily loaded, slowly turning roller
+in a mineral oil the film's Newtonian shear makes it very stiff: NU 214 made NJ-type, ISO VG46
+at 60 degC, 2000 r/min, 8 kN: k_omega = 9.3 N m s, c_z/m = 1.65e7 1/s on the most loaded
+roller against the rib contact's step h = 4.2 us (h c_z/m = 70; classical RK4 is stable to
+2.8 on a real eigenvalue, and the refinements below reach h c_z/m = 5.2 only), so every run
+stopped with "RK4 diverged". The other rates there are below 3.6e4 1/s. The term is linear in
+z' with a constant coefficient at a frozen state, so :func:`_etd_frozen` takes it exactly:
+Cox and Matthews' ETDRK4 (:mod:`~thermobearing.skidding.roller_dynamics_etd`, the scheme of
+the coupled model's stiff spin) with the linear rate lambda = -c_z/m on z' and classical RK4
+(lambda = 0) on the other components. The explicit step is also held below the inverse of
+the raceway traction's axial and skew damping rates (:func:`explicit_rate`), next to the
+rib contact's frequency.
+
+numba's cache does not notice edits of compiled callees in other files (the loop inlines the
+right-hand side and the ETD coefficients):
+:func:`thermobearing.contact_traction.refresh_stale_caches`. Units: SI.
 """
 
 from __future__ import annotations
@@ -22,6 +38,7 @@ from scipy.integrate import solve_ivp
 
 from ..contact_traction import refresh_stale_caches
 from ..errors import ConvergenceError, InputError
+from .roller_dynamics_etd import set_coefficients
 from .roller_dynamics_model import DynamicsModel, load_states
 from .roller_dynamics_response import RollerResponse, _post, _response
 from .roller_dynamics_rhs import _params, _rhs, _roller_rhs
@@ -88,11 +105,11 @@ def simulate_full(m: DynamicsModel, *, n_orbits: float = 2.0, warmup_periods: fl
     return _response(post, "full", time.process_time() - t0, n_calls[0], g)
 
 
-#: a frozen state whose fixed-step RK4 diverges is repeated with a step this many times
-#: finer, up to RK4_REFINEMENTS times: the explicit step is unstable on stiff states (CRB
-#: 50x75x16 at 3 kN and 20000 r/min with ISO VG46 at 80 degC -- the mineral oils' larger
-#: pressure-viscosity coefficient -- diverged at 400 and 1600 steps per spin period and
-#: gave the same rib heat at 6400 and 25600)
+#: a frozen state whose fixed-step integration diverges is repeated with a step this many
+#: times finer, up to RK4_REFINEMENTS times (a safety net: before the pocket damping was
+#: taken exactly (module notes), CRB 50x75x16 at 3 kN and 20000 r/min with ISO VG46 at
+#: 80 degC diverged at 400 and 1600 steps per spin period and gave the same rib heat at
+#: 6400 and 25600)
 RK4_REFINE_FACTOR = 4
 RK4_REFINEMENTS = 3
 
@@ -103,9 +120,11 @@ def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods:
     """Skew and axial motion at the orbit's distinct frozen load states (the ``reduced`` model of
     :mod:`thermobearing.skidding.roller_dynamics`).
 
-    Each state is integrated with classical RK4 at a fixed step of 1/``steps_per_period``
-    spin period, and at most 1/omega_c with omega_c the rib contact's axial frequency at a
-    20 um approach (~6e5 rad/s: h <= 1.6 us; RK4 is stable to h omega < 2.8) for
+    Each state is integrated with ETDRK4 (the pocket's raceway damping exact, RK4 on the rest;
+    module notes) at a fixed step of 1/``steps_per_period`` spin period, and at most
+    1/:func:`explicit_rate` (the rib contact's axial frequency at a 20 um approach, ~6e5
+    rad/s at paper 003's base case: h <= 1.6 us, or the raceway traction's axial or skew
+    damping rate if larger; RK4 is stable to h omega < 2.8) for
     ``warmup_periods`` + ``periods`` spin periods; statistics over the last ``periods``,
     averaged with the states' orbit shares. The mean rib spin moment changes the spin
     quasi-statically by M / k_omega before the slip is evaluated. A state whose integration
@@ -146,16 +165,41 @@ def simulate(m: DynamicsModel, model: str = "reduced", **options: Any) -> Roller
     raise InputError("model", model, ("full", "reduced"))
 
 
+def explicit_rate(m: DynamicsModel, n_i: float, n_o: float) -> float:
+    """Largest rate [1/s] the explicit part of :func:`_etd_frozen` integrates at the frozen
+    raceway loads ``n_i``, ``n_o`` [N]: the rib contact's axial frequency at a 20 um approach,
+    omega_c = sqrt(1.5 K sqrt(20 um) / m) (the slope of eq. 6's Hertz force K delta^1.5),
+    and the raceway traction's damping of the axial slide and of the skew rate,
+    (N_i + N_o) mu_t / (s_0 m) and (N_i + N_o) mu_t l^2 / (s_0 J_t) (the slopes at zero slide
+    of the tanh law of :mod:`~thermobearing.skidding.roller_dynamics_rhs`, l = L_e/(2 sqrt 3);
+    the isotropic law's slope is not larger). The pocket's raceway damping is not among them:
+    it is integrated exactly (module notes)."""
+    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
+    grip = (abs(n_i) + abs(n_o)) * m.traction_limit / m.traction_speed
+    arm = m.effective_length / (2.0 * math.sqrt(3.0))
+    return max(omega_c, grip / m.roller_mass, grip * arm * arm / m.transverse_inertia)
+
+
+def pocket_rate(m: DynamicsModel, k: float) -> float:
+    """lambda = -c_z / m [1/s]: the linear rate of the pocket slide speed z' under the
+    raceway damping c_z = k_omega/(D/2)^2 (``k`` = k_omega [N m s],
+    :meth:`~thermobearing.skidding.roller_dynamics_model.DynamicsModel.circumferential_damping`),
+    taken exactly by :func:`_etd_frozen`; 0 with the pocket degree of freedom off (z = 0)."""
+    if not m.pocket_dof:
+        return 0.0
+    return -m.circumferential_damping(k) / m.roller_mass
+
+
 def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: float,
                 periods: float, warmup_periods: float, steps_per_period: int,
                 samples_per_period: int, k: float = 0.0, f_d: float = 0.0
                 ) -> tuple[dict[str, np.ndarray], int]:
-    """RK4 run of the skew/axial/pocket motion at one frozen load state and spin ``w``
+    """ETDRK4 run of the skew/axial/pocket motion at one frozen load state and spin ``w``
     [rad/s] with spin stiffness ``k`` [N m s] (raceway damping of the pocket motion) and
     quasi-static pocket force ``f_d`` [N]: (post-processed samples, right-hand-side calls).
+    The step: 1/``steps_per_period`` spin period, at most 1/:func:`explicit_rate`.
     ConvergenceError if it diverges."""
-    omega_c = math.sqrt(1.5 * m.geom.stiffness * math.sqrt(20e-6) / m.roller_mass)
-    h_max = 1.0 / omega_c
+    h_max = 1.0 / explicit_rate(m, n_i, n_o)
     period = 2.0 * math.pi / max(abs(w), 1.0)
     n_per = max(steps_per_period, int(math.ceil(period / h_max)))
     h = period / n_per
@@ -163,8 +207,8 @@ def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: floa
     n_keep = int(round(periods * n_per))
     every = max(1, n_per // samples_per_period)
     z0 = math.copysign(0.5 * m.pocket_clearance, f_d) if m.pocket_dof else 0.0
-    rows = _rk4_frozen(c, float(n_i), float(n_o), float(w), float(f_d),
-                       m.circumferential_damping(k), z0, h, n_warm, n_keep, every)
+    rows = _etd_frozen(c, float(n_i), float(n_o), float(w), float(f_d), pocket_rate(m, k),
+                       z0, h, n_warm, n_keep, every)
     if not np.all(np.isfinite(rows)):
         raise ConvergenceError("roller_dynamics.reduced", float("inf"),
                                "RK4 diverged (reduce the step: steps_per_period)",
@@ -176,26 +220,56 @@ def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: floa
 
 
 @njit(cache=True)
-def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, c_z: float,
+def _etd_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, lam: float,
                 z0: float, h: float, n_warm: int, n_keep: int, every: int) -> np.ndarray:
-    """Classical RK4 at a frozen load state; returns (n_keep // every, 7) rows
-    (t, X, X', alpha, alpha', z, z') after ``n_warm`` discarded steps (start at z0)."""
+    """Fixed-step ETDRK4 (Cox & Matthews 2002 eq. 26, :mod:`~thermobearing.skidding.
+    roller_dynamics_etd`) at a frozen load state; returns (n_keep // every, 7) rows
+    (t, X, X', alpha, alpha', z, z') after ``n_warm`` discarded steps (start at z0).
+
+    y = (X, X', alpha, alpha', z, z'); y' = L y + N(t, y) with L = diag(0, 0, 0, 0, 0, lam),
+    lam = -c_z/m [1/s] the pocket's raceway damping (:func:`pocket_rate`) and N the right-hand
+    side :func:`~thermobearing.skidding.roller_dynamics_rhs._rhs` with c_z = 0 (exactly the
+    rest, no cancellation). Per component u the stages
+
+        a = E2 u + Q N(t, u),  b = E2 u + Q N(t + h/2, a),  c = E2 a + Q (2 N(b) - N(u)),
+        u+ = E u + f1 N(u) + 2 f2 (N(a) + N(b)) + f3 N(c)   (N(a), N(b) at t + h/2, N(c) at t + h)
+
+    with the coefficients of :func:`~thermobearing.skidding.roller_dynamics_etd.
+    etd_coefficients`; lam = 0 gives classical RK4's (1, 1, h/2, h/6, h/6, h/6)."""
+    coef = np.zeros((6, 6))
+    for q in range(6):
+        set_coefficients(coef, q, lam if q == 5 else 0.0, h)
     y = np.zeros(6)
     y[4] = z0
-    k = np.zeros((4, 6))
+    nn = np.zeros((4, 6))
+    st = np.zeros(6)
+    sa = np.zeros(6)
     out = np.zeros((n_keep // every, 7))
     t = 0.0
     j = 0
     for step in range(n_warm + n_keep):
         for stage in range(4):
-            c = 0.0 if stage == 0 else (0.5 if stage < 3 else 1.0)
-            yy = y + c * h * k[stage - 1] if stage > 0 else y.copy()
-            tt = t + c * h
-            r = _rhs(p, yy[0], yy[1], yy[2], yy[3], yy[4], yy[5], n_i, n_o, spin, spin * tt,
-                     f_d, c_z)
+            tt = t + (0.0 if stage == 0 else (0.5 * h if stage < 3 else h))
+            if stage == 0:
+                for q in range(6):
+                    st[q] = y[q]
+            elif stage == 1:
+                for q in range(6):
+                    st[q] = coef[q, 1] * y[q] + coef[q, 2] * nn[0, q]
+                    sa[q] = st[q]
+            elif stage == 2:
+                for q in range(6):
+                    st[q] = coef[q, 1] * y[q] + coef[q, 2] * nn[1, q]
+            else:
+                for q in range(6):
+                    st[q] = coef[q, 1] * sa[q] + coef[q, 2] * (2.0 * nn[2, q] - nn[0, q])
+            r = _rhs(p, st[0], st[1], st[2], st[3], st[4], st[5], n_i, n_o, spin, spin * tt,
+                     f_d, 0.0)
             for q in range(6):
-                k[stage, q] = r[q]
-        y = y + h / 6.0 * (k[0] + 2.0 * k[1] + 2.0 * k[2] + k[3])
+                nn[stage, q] = r[q]
+        for q in range(6):
+            y[q] = (coef[q, 0] * y[q] + coef[q, 3] * nn[0, q]
+                    + 2.0 * coef[q, 4] * (nn[1, q] + nn[2, q]) + coef[q, 5] * nn[3, q])
         t += h
         if step >= n_warm and (step - n_warm) % every == 0 and j < out.shape[0]:
             out[j, 0] = t
@@ -206,13 +280,14 @@ def _rk4_frozen(p: np.ndarray, n_i: float, n_o: float, spin: float, f_d: float, 
 
 
 def _refresh_caches() -> None:
-    """Flush the RK4 kernel's numba cache when its inlined callees changed (rhs, rib, pocket
-    modules; :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
+    """Flush the ETDRK4 kernel's numba cache when its inlined callees changed (rhs, rib,
+    pocket, ETD-coefficient modules;
+    :func:`thermobearing.contact_traction.refresh_stale_caches`)."""
     from .. import rib
-    from . import roller_dynamics_pocket, roller_dynamics_rhs
+    from . import roller_dynamics_etd, roller_dynamics_pocket, roller_dynamics_rhs
 
-    refresh_stale_caches("roller_dynamics_integrate", (_rk4_frozen,),
-                         (roller_dynamics_rhs, rib, roller_dynamics_pocket))
+    refresh_stale_caches("roller_dynamics_integrate", (_etd_frozen,),
+                         (roller_dynamics_rhs, rib, roller_dynamics_pocket, roller_dynamics_etd))
 
 
 _refresh_caches()
