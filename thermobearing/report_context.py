@@ -25,6 +25,9 @@ from .units import from_si
 
 #: the run's total as the frictional moment of the catalogues, M = P / omega [N mm]
 TORQUE = "this run M = P / omega [N mm]"
+#: the same of a sweep case: the sweep's cross-check names its columns "this case ..."
+#: (a row is one case; "this run" in a sweep report read as the whole sweep)
+CASE_TORQUE = "this case M = P / omega [N mm]"
 
 #: the global models set beside the run's total (registered names of GLOBAL_FRICTION) and
 #: their names in the report's columns
@@ -327,9 +330,9 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
     whose losses were evaluated at the scene's initial temperature (no thermal network:
     ``temperatures`` not in its outputs and not steady) and for a steady case with one
     operating point (each bearing's steady oil node, :func:`_case_oil_temperatures`); for
-    the others the table is empty and a note says why. Returns the table (``case``, the swept values
-    as set, ``oil [degC]``, ``this run [W]``, ``this run M = P / omega [N mm]`` of a case
-    whose every step turns at one speed, ``<model> [W]``, ``this run vs <model> [%]``)
+    the others the table is empty and a note says why. Returns the table (``case``, the swept
+    values as set, ``oil [degC]``, ``this case [W]``, :data:`CASE_TORQUE` of a case whose
+    every step turns at one speed, ``<model> [W]``, ``this case vs <model> [%]``)
     and the notes (a model a bearing cannot be estimated with, once each)."""
     from .global_friction import global_friction
     from .scene import Scene
@@ -431,7 +434,8 @@ def sweep_catalogue_crosscheck(base: Any, records: list[dict[str, Any]],
         cols = [c for c in table.columns if c != TORQUE]
         at = cols.index("this run [W]") + 1
         table = table[[*cols[:at], TORQUE, *cols[at:]]]
-    return table, notes
+    return table.rename(columns=lambda c: "this case" + c[len("this run"):]
+                        if str(c).startswith("this run") else c), notes
 
 
 def _case_oil_temperatures(scene: Any, result: Mapping[str, Any]) -> dict[str, float] | None:

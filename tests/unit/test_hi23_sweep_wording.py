@@ -113,3 +113,24 @@ def test_a_report_table_groups_thousands_in_every_column():
     rows = [r for r in rows if r]
     assert rows == [["1,500", "1,031", "1,169", "55.5", "0.4567"],
                     ["800", "13", "\u2014", "44.5", "2"]]
+
+
+# --- D. the sweep's catalogue cross-check speaks of cases --------------------------------
+def test_the_sweep_crosscheck_names_its_columns_this_case():
+    # before: a sweep report's cross-check headed its columns "this run [W]", "this run
+    # M = P / omega [N mm]", "this run vs SKF four-term [%]" over rows of cases
+    from thermobearing.report_context import CASE_TORQUE, sweep_catalogue_crosscheck
+    from thermobearing.scene import loads_scene
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    point = loads_scene((examples / "loss_point_6206_oil_bath.toml").read_text("utf-8"),
+                        base_dir=examples)
+    records = [{"case": "c1500", "params": {"schedule.speed": "1500 rpm"},
+                "result": {"mean total loss [W]": 10.0}}]
+    table, _ = sweep_catalogue_crosscheck(point, records)
+    cols = list(table.columns)
+    assert not [c for c in cols if c.startswith("this run")]
+    assert cols[cols.index("this case [W]") + 1] == CASE_TORQUE
+    assert "this case vs SKF four-term [%]" in cols
+    # the moment is the case's total over its one omega: 10 W at 1500 r/min
+    assert table[CASE_TORQUE].item() == pytest.approx(1e4 / (1500 * 3.141592653589793 / 30))

@@ -178,7 +178,7 @@ def test_sweep_crosscheck_is_the_protocol_average_of_the_catalogue_models():
                        * s.duration for s in steps) / sum(s.duration for s in steps)
             got = table.loc[table["case"] == row.case, col].item()
             assert got == pytest.approx(want, rel=1e-12)
-            pct = table.loc[table["case"] == row.case, f"this run vs {col[:-4]} [%]"].item()
+            pct = table.loc[table["case"] == row.case, f"this case vs {col[:-4]} [%]"].item()
             assert pct == pytest.approx(100.0 * (10.0 / want - 1.0))
     # more load, more loss in both models
     assert (table["SKF four-term [W]"].diff().iloc[1] > 0

@@ -227,7 +227,8 @@ def test_race_control_over_skidding_panel_is_left_out_only_when_zero(tmp_path, m
 
 
 def test_the_sweep_crosscheck_gives_the_frictional_moment_of_a_one_speed_case():
-    from thermobearing.report_context import TORQUE, sweep_catalogue_crosscheck
+    from thermobearing.report_context import CASE_TORQUE as TORQUE
+    from thermobearing.report_context import sweep_catalogue_crosscheck
     from thermobearing.scene import loads_scene
 
     point = loads_scene((EXAMPLES / "loss_point_6206_oil_bath.toml").read_text("utf-8"),
@@ -392,7 +393,8 @@ def test_a_case_at_rest_has_no_catalogue_estimate_and_the_moment_stands_by_the_t
     """A 7014 C sweep over 0 and 4000 r/min: the case at rest read 'SKF four-term 0 W' for a
     bearing the SKF constants do not cover, and the moment column, missing from that first
     row, stood after the models' columns."""
-    from thermobearing.report_context import TORQUE, sweep_catalogue_crosscheck
+    from thermobearing.report_context import CASE_TORQUE as TORQUE
+    from thermobearing.report_context import sweep_catalogue_crosscheck
     from thermobearing.scene import loads_scene
 
     point = loads_scene((EXAMPLES / "loss_point_6206_oil_bath.toml").read_text("utf-8"),
@@ -401,7 +403,7 @@ def test_a_case_at_rest_has_no_catalogue_estimate_and_the_moment_stands_by_the_t
                 "result": {"mean total loss [W]": 0.0 if n == 0 else 10.0}} for n in (0, 3000)]
     table, notes = sweep_catalogue_crosscheck(point, records)
     cols = list(table.columns)
-    assert cols[cols.index("this run [W]") + 1] == TORQUE
+    assert cols[cols.index("this case [W]") + 1] == TORQUE
     rest, turning = table.iloc[0], table.iloc[1]
     for label in ("SKF four-term [W]", "Palmgren M0 + M1 [W]"):
         assert math.isnan(rest[label]) and turning[label] > 0.0
