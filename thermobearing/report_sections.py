@@ -200,10 +200,16 @@ def _rolling_notes(by_source: pd.DataFrame, scene: Any) -> list[str]:
     values = values[np.isfinite(values)]
     if values.size == 0 or np.any(np.abs(values) > 1e-9):
         return []
-    return [f"{rl.source_label('raceway_traction')}: 0 W at every step: race control "
+    return [f"{rl.source_label('raceway_traction')}: 0 W {_every(by_source)}: race control "
             "(kinematics = \"race_control\") rolls the elements without sliding on the "
             "raceways, so the traction law books no shear there; the sliding losses need "
             "the skidding solver (kinematics = \"skidding\")"]
+
+
+def _every(frame: pd.DataFrame) -> str:
+    """``"at every step"`` of a run's loss table, ``"in every case"`` of a sweep's summary
+    (its ``case`` column): a sweep report said "0 W at every step" of rows of cases."""
+    return "in every case" if "case" in frame.columns else "at every step"
 
 
 def _all_zero(frame: pd.DataFrame, col: str) -> bool:
@@ -248,8 +254,8 @@ def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -
     models = getattr(scene, "models", None) or {}
     race_control = models.get("kinematics") == "race_control"
     if race_control and _all_zero(frame, "pocket_friction [W]"):
-        notes.append(f"{rl.source_label('pocket_friction')}: 0 W at every step: race control "
-                     "gives the cage no pocket forces (the cage turns at the elements' "
+        notes.append(f"{rl.source_label('pocket_friction')}: 0 W {_every(frame)}: race "
+                     "control gives the cage no pocket forces (the cage turns at the elements' "
                      "orbital speed without a balance of its own), so the pocket friction "
                      "books nothing; the pocket forces need the skidding solver "
                      "(kinematics = \"skidding\")")
@@ -260,14 +266,15 @@ def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -
         # bearing under an axial load (it carries no rib thrust)
         notes.append(f"{', '.join(rollers)}: the skidding solver carries no rib thrust, so "
                      "it refuses a cylindrical roller bearing under an axial load; the "
-                     f"{' and the '.join(rl.source_label(s) for s in zero)} of this run "
-                     "are not computed (0 W stands for 'not modelled', not for no loss)")
+                     f"{' and the '.join(rl.source_label(s) for s in zero)} of this "
+                     f"{'sweep' if 'case' in frame.columns else 'run'} are not computed "
+                     "(0 W stands for 'not modelled', not for no loss)")
     if _all_zero(frame, "cage_guide [W]"):
         guided = [name for name, b in bearings.items()
                   if getattr(getattr(b, "cage", None), "guidance", None) == "rolling_element"]
         if guided and len(guided) == len(bearings):
-            notes.append(f"{rl.source_label('cage_guide')}: 0 W at every step: the cage of "
-                         f"{', '.join(guided)} is guided on its rolling elements "
+            notes.append(f"{rl.source_label('cage_guide')}: 0 W {_every(frame)}: the cage "
+                         f"of {', '.join(guided)} is guided on its rolling elements "
                          "(cage guidance = rolling_element), so there is no guide land to "
                          "shear")
     if "rib_friction [W]" in frame and _carries_thrust(frame, scene):

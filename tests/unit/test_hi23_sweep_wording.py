@@ -134,3 +134,23 @@ def test_the_sweep_crosscheck_names_its_columns_this_case():
     assert "this case vs SKF four-term [%]" in cols
     # the moment is the case's total over its one omega: 10 W at 1500 r/min
     assert table[CASE_TORQUE].item() == pytest.approx(1e4 / (1500 * 3.141592653589793 / 30))
+
+
+def test_the_zero_loss_notes_of_a_sweep_speak_of_cases():
+    # before: a sweep report said "cage guide land (film shear): 0 W at every step" over a
+    # table of cases (each a one-step scene); a run's breakdown keeps "at every step"
+    from types import SimpleNamespace
+
+    import pandas as pd
+
+    from thermobearing.report_sections import source_notes
+
+    ball = SimpleNamespace(kind="ball", cage=SimpleNamespace(guidance="rolling_element"))
+    scene = SimpleNamespace(models={"kinematics": "skidding"},
+                            schedule=SimpleNamespace(steps=()))
+    sweep = pd.DataFrame({"case": ["a", "b"], "cage_guide [W]": [0.0, 0.0]})
+    run = pd.DataFrame({"step": [0, 1], "cage_guide [W]": [0.0, 0.0]})
+    (in_sweep,) = source_notes(sweep, scene, {"test": ball})
+    (in_run,) = source_notes(run, scene, {"test": ball})
+    assert in_sweep.startswith("cage guide land (film shear): 0 W in every case: the cage")
+    assert in_run.startswith("cage guide land (film shear): 0 W at every step: the cage")

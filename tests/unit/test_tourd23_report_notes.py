@@ -189,8 +189,8 @@ def test_the_sweep_report_names_its_model_chain_and_what_a_sweep_does_not_keep(t
     assert "not the heat received by each component, the validity warnings" in chain
     # what the losses leave out, under the case count
     head = text[:text.index("<h2>Figures</h2>")]
-    assert "cage pockets (element / pocket friction): 0 W at every step" in head
-    assert "raceway contacts (rolling and sliding shear): 0 W at every step" in head
+    assert "cage pockets (element / pocket friction): 0 W in every case" in head
+    assert "raceway contacts (rolling and sliding shear): 0 W in every case" in head
     assert "only the inner rib&#x27;s contact is modelled" in head
     assert "over-skidding 0 % in every case: race control" in head
 
