@@ -8,7 +8,9 @@ measured file) before the first one runs, runs each case with a runner (by defau
 ``DIR/cases.jsonl`` the moment it completes; ``DIR/summary.csv`` is rewritten after each
 case; ``DIR/scene.toml`` records the base scene (:func:`record_base_scene`). Rerunning the
 same command (in any order of its ``--set`` options) skips the cases already in
-``cases.jsonl``, so an interrupted sweep resumes where it stopped.
+``cases.jsonl``, so an interrupted sweep resumes where it stopped; values given in other
+units (``500 N`` after ``0.5 kN``) are the same cases, and new ones are written in the unit
+the folder first recorded for that field (:func:`thermobearing.sweep_params.in_store_units`).
 
 The sweep is split by job: the ``--set`` language (paths, values and units) is in
 :mod:`thermobearing.sweep_params`, the cases (the cartesian product, each as a scene) in

@@ -95,7 +95,9 @@ def summary_frame(records: Iterable[Mapping[str, Any]]) -> pd.DataFrame:
     """One row per case: the swept values then the runner's results.
 
     A swept quantity appears twice: as set (``supply.flow``: ``"15 L/min"``, the text the
-    case's scene holds) and as a number with its unit in the column name
+    case's scene holds, in the folder's one unit of the field:
+    :func:`thermobearing.sweep_params.in_store_units`) and as a number with its unit in the
+    column name
     (``supply.flow [L/min]``: 15.0, in the unit of the first case's value), so that the
     table plots and filters without parsing text. Text values (lubricant presets) appear
     once.
