@@ -419,9 +419,12 @@ class Coupler:
         return _Linear(q0, J, T.copy(), H, reach=4.0 * dT)
 
     def loss_rows(self, step_index: int, time_s: float | None, step: Step,
-                  T: np.ndarray) -> list[dict[str, Any]]:
+                  T: np.ndarray, details: dict[str, list[dict[str, Any]]] | None = None
+                  ) -> list[dict[str, Any]]:
         """The loss table's rows of every bearing at temperatures ``T`` [K] (``time_s`` [s]
-        None: a steady operating point, no time column)."""
+        None: a steady operating point, no time column). ``details``: given, it receives
+        the rows of the sources' detail tables (table -> rows, the ``rib`` table) of the
+        same evaluations."""
         from .simulation import step_columns
 
         rows = []
@@ -430,6 +433,9 @@ class Coupler:
                                         with_rows=True)
             base = step_columns(step_index, time_s, b.name, step, b)
             rows.extend({**base, **r} for r in ev.rows)
+            if details is not None:
+                for name, extra in ev.tables.items():
+                    details.setdefault(name, []).extend({**base, **r} for r in extra)
         return rows
 
 
@@ -720,6 +726,7 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
         writer.append("temperatures", temp_rows)
     kin_rows: list[dict[str, Any]] = []
     loss_rows: list[dict[str, Any]] = []
+    detail_rows: dict[str, list[dict[str, Any]]] = {}
     energy_rows: list[dict[str, Any]] = []
     audits: list[EnergyAudit] = []
     cum = dict.fromkeys(("generated", "stored", "to_boundaries", "to_streams"), 0.0)
@@ -881,10 +888,12 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
                     writer.append("energy", [e_row])
                 bar.update(h)
             if want_losses:
-                rows = coupler.loss_rows(i, t, step, T)
+                extra: dict[str, list[dict[str, Any]]] = {}
+                rows = coupler.loss_rows(i, t, step, T, extra)
                 loss_rows.extend(rows)
                 if writer:
                     writer.append("losses", rows)
+                _add_detail_rows(detail_rows, extra, writer)
             sim.log_step(i, t)
     finally:
         bar.close()
@@ -901,7 +910,18 @@ def _run_transient(sim: Simulation, net: Any, writer: ResultsWriter | None
               "energy": pd.DataFrame(energy_rows)}
     if want_losses:
         tables["losses"] = pd.DataFrame(loss_rows)
+    tables.update({name: pd.DataFrame(r) for name, r in detail_rows.items()})
     return tables, stats
+
+
+def _add_detail_rows(tables: dict[str, list[dict[str, Any]]],
+                     rows: Mapping[str, list[dict[str, Any]]], writer: Any) -> None:
+    """The detail tables' ``rows`` (table -> rows, :meth:`Coupler.loss_rows`) added to
+    ``tables`` and appended to the writer's CSV files (if any) as they come."""
+    for name, extra in rows.items():
+        tables.setdefault(name, []).extend(extra)
+        if writer:
+            writer.append(name, extra)
 
 
 #: half-width [K] of the trust region of a steady pass whose chunk model has no steady
@@ -1061,6 +1081,7 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
     names = coupler.names
     T = np.full(len(names), sim.scene.environment.initial_temperature)
     temp_rows, kin_rows, loss_rows = [], [], []
+    detail_rows: dict[str, list[dict[str, Any]]] = {}
     outer_iterations = 0
     backtracks = 0
     passes_by = dict.fromkeys(("model", "held", "relaxed", "runaway"), 0)
@@ -1153,7 +1174,8 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
         # a steady state has no time: step, its operating point and the node temperatures
         row = {"step": i, **operating_columns(step), **_temperature_row(None, names, T)}
         temp_rows.append(row)
-        rows = (coupler.loss_rows(i, None, step, T) if _wants_loss_table(sim.scene)
+        extra: dict[str, list[dict[str, Any]]] = {}
+        rows = (coupler.loss_rows(i, None, step, T, extra) if _wants_loss_table(sim.scene)
                 else [])
         loss_rows.extend(rows)
         if writer:
@@ -1161,11 +1183,13 @@ def _run_steady(sim: Simulation, net: Any, writer: ResultsWriter | None
             writer.append("kinematics", kin_rows[-len(sim.bearings):])
             if rows:
                 writer.append("losses", rows)
+        _add_detail_rows(detail_rows, extra, writer)
         sim.log_step(i)
     tables = {"steady_temperatures": pd.DataFrame(temp_rows),
               "kinematics": pd.DataFrame(kin_rows)}
     if _wants_loss_table(sim.scene):
         tables["losses"] = pd.DataFrame(loss_rows)
+    tables.update({name: pd.DataFrame(r) for name, r in detail_rows.items()})
     return tables, {"steps": len(sim.scene.schedule.steps),
                     "outer_iterations": outer_iterations, "backtracks": backtracks,
                     "held_passes": passes_by["held"], "relaxed_passes": passes_by["relaxed"],

@@ -25,6 +25,19 @@ Tables (all optional; a scene fills only what its outputs need):
     bearings, checks, and solver statistics ``converged``, ``residual [-]``,
     ``iterations [-]`` (:func:`thermobearing.simulation_tables.kinematics_columns`: values
     below a stated noise floor around zero are written as 0).
+``rib`` (runs with the ``rib_friction`` heat source and a loss table)
+    one row per loss-table operating point and bearing with that source, beside its loss
+    rows and from the same heat evaluation (the numbers the heat was computed from, no
+    second solve): the step columns as in ``losses``, then ``rib model``, ``roller
+    dynamics``, ``friction coefficient [-]``, ``elements temperature [degC]``, the thrust
+    share (``thrust normal force [N]`` per roller, ``thrust max pressure [MPa]``, ``thrust
+    contact area [mm^2]``, ``thrust slide speed [m/s]``, ``thrust PV [MPa m/s]``, ``thrust
+    heat [W]``), ``drag heat [W]``, per end face ``left / right face PV [MPa m/s]`` and
+    ``left / right face heat [W]`` (paper 003 eqs. 21-24, the roller dynamics' time and
+    roller means), ``rib slide speed [m/s]``, ``dynamics orbits [-]``, ``slip speed [m/s]``
+    (eq. 25), ``rib heat [W]`` (= the rib_friction rows of ``losses``) and ``heat to
+    rollers [-]``; empty cells where the model has no such number
+    (:func:`thermobearing.simulation_tables.rib_columns`).
 ``energy``
     one row per output time: cumulative ``generated [J]``, ``stored [J]``,
     ``to ambient [J]``, ``to oil [J]``, ``imbalance [J]``.
@@ -49,7 +62,8 @@ from typing import Any
 
 import pandas as pd
 
-TABLES = ("temperatures", "steady_temperatures", "losses", "kinematics", "energy", "film")
+TABLES = ("temperatures", "steady_temperatures", "losses", "kinematics", "energy", "film",
+          "rib")
 
 
 @dataclass

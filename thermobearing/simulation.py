@@ -106,7 +106,13 @@ from .simulation_chain import (
     scene_heat_source_options,
 )
 from .simulation_summary import summarize_scene
-from .simulation_tables import film_table, kinematics_columns, over_skidding_range, step_columns
+from .simulation_tables import (
+    DETAIL_TABLES,
+    film_table,
+    kinematics_columns,
+    over_skidding_range,
+    step_columns,
+)
 from .state import OilSupply, OperatingPoint
 from .warning_groups import WarningGroups, merge_twin_bearings
 
@@ -558,6 +564,7 @@ class Simulation:
                 del entries[8:]
         by_role = dict.fromkeys(("inner_ring", "outer_ring", "elements", "cage", "oil"), 0.0)
         rows = []
+        tables: dict[str, list[dict[str, Any]]] = {}
         reads_all: set[str] = set()
         for name in b.sources:
             r, reads = found[name]
@@ -571,7 +578,11 @@ class Simulation:
                              "power [W]": p,
                              "load dependence": r.loss_class.get(comp, "")}
                             for comp, role, p in r.split())
-        return _Evaluation(by_role, rows, frozenset(reads_all))
+                if r.source in DETAIL_TABLES:
+                    # the source's own numbers of this very result (the rib table)
+                    table, columns = DETAIL_TABLES[r.source]
+                    tables.setdefault(table, []).append(columns(b.bearing, r.details))
+        return _Evaluation(by_role, rows, reads=frozenset(reads_all), tables=tables)
 
     def _replay_heat_warnings(self, batch: int, bearing: str) -> None:
         """The validity warnings of a memoised heat evaluation of an identical bearing, once
@@ -804,6 +815,7 @@ class Simulation:
         kin_rows: list[dict[str, Any]] = []
         loss_rows: list[dict[str, Any]] = []
         film_rows: list[dict[str, Any]] = []
+        detail_rows: dict[str, list[dict[str, Any]]] = {}
         steps = self.scene.schedule.steps
         want_film = "film" in self.scene.outputs.want
         for i, step in enumerate(tqdm(steps, disable=not self.progress, desc="steps")):
@@ -830,6 +842,11 @@ class Simulation:
                         loss_rows.extend(rows)
                         if writer:
                             writer.append("losses", rows)
+                        for name, extra in ev.tables.items():
+                            extra = [{**base, **r} for r in extra]
+                            detail_rows.setdefault(name, []).extend(extra)
+                            if writer:
+                                writer.append(name, extra)
                 else:
                     rows, csr = film_table(b, self.lubricant, step, temps)
                     film_rows.extend({**base, **r} for r in rows)
@@ -844,6 +861,7 @@ class Simulation:
             tables["losses"] = pd.DataFrame(loss_rows)
         if film_rows:
             tables["film"] = pd.DataFrame(film_rows)
+        tables.update({name: pd.DataFrame(r) for name, r in detail_rows.items()})
         return tables, {"steps": len(steps)}
 
     def summary_text(self, results: Results) -> str:
@@ -863,6 +881,11 @@ class Simulation:
         losses = results.tables.get("losses")
         if losses is not None and not losses.empty:
             lines.append(_loss_range_line(losses))
+        rib = results.tables.get("rib")
+        if rib is not None and not rib.empty:
+            from .simulation_summary import rib_summary_lines
+
+            lines.extend(rib_summary_lines(rib))
         temps = results.tables.get("temperatures")
         steady = results.tables.get("steady_temperatures")
         if temps is not None and not temps.empty:

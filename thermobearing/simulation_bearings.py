@@ -74,6 +74,9 @@ class _Evaluation:
 
     by_role: dict[str, float]
     rows: list[dict[str, Any]] = field(default_factory=list)
+    #: with the loss rows, the rows of the sources' detail tables (table -> rows,
+    #: :data:`thermobearing.simulation_tables.DETAIL_TABLES`: ``rib``), from the same results
+    tables: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
     #: temperature roles the sources read (the heat depends on no other node temperature)
     reads: frozenset[str] = frozenset(("inner_ring", "outer_ring", "elements", "cage", "oil"))
 

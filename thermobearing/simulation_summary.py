@@ -84,6 +84,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
       :func:`flagged_step_counts`; earlier versions summed the counts over the bearings,
       so that a 3-step protocol on two bearings showed 6), so that a sweep of the
       thresholds shows what they flag;
+    * with the ``rib_friction`` source (its ``rib`` table): ``max rib end-face PV [MPa m/s]``,
+      ``max rib thrust PV [MPa m/s]``, ``max rib slip speed [m/s]``, ``max rib heat [W]``
+      (:func:`rib_results`);
     * film-only scenes: ``min central film [um]``, ``min minimum film [um]`` and ``min film
       parameter [-]`` of the film table;
     * with a network: ``final <node> [degC]`` and ``rise over initial <node> [K]`` (final
@@ -119,6 +122,9 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
             for name in names:
                 per_b, w_b = averaged(losses[losses["bearing"] == name])
                 out[f"mean total loss {name} [W]"] = float((per_b.sum(axis=1) * w_b).sum())
+    rib = res.tables.get("rib")
+    if rib is not None and not rib.empty:
+        out.update(rib_results(rib))
     kin = res.tables.get("kinematics")
     span = None if kin is None or kin.empty else over_skidding_range(kin, sim.checks)
     if span is not None:
@@ -159,4 +165,61 @@ def summarize_scene(scene_toml: str) -> dict[str, float]:
                 out[f"final {c}"] = float(steady[c].iloc[-1])
                 out[f"rise over ambient {c.replace('[degC]', '[K]')}"] = float(
                     steady[c].iloc[-1] - ambient)
+    return out
+
+
+def _span(values: pd.Series, fmt: str) -> str:
+    """``lo-hi`` of the finite ``values`` in format ``fmt`` (one value when they agree;
+    ``n/a`` when none is finite)."""
+    v = values.to_numpy(dtype=float)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return "n/a"
+    lo, hi = format(float(v.min()), fmt), format(float(v.max()), fmt)
+    return lo if lo == hi else f"{lo}-{hi}"
+
+
+def rib_summary_lines(rib: pd.DataFrame) -> list[str]:
+    """The terminal summary's lines of a run's ``rib`` table
+    (:func:`.simulation_tables.rib_columns`), one per bearing: the model that booked the
+    rib heat, mu, the thrust share per roller and its PV, the end faces' time-mean PV where
+    roller dynamics ran, the slip speed (paper 003 eq. 25) and the rib heat, each as the
+    range over the table's rows (steps)."""
+    lines = []
+    for name, rows in rib.groupby("bearing", sort=False):
+        models = list(dict.fromkeys(f"{m} model" + ("" if d != "none" else
+                                                    ", no roller dynamics")
+                                    for m, d in zip(rows["rib model"], rows["roller dynamics"],
+                                                    strict=True)))
+        parts = [f"mu {_span(rows['friction coefficient [-]'], '.3g')}"]
+        thrust = rows["thrust normal force [N]"].to_numpy(dtype=float)
+        if np.any(thrust > 0):
+            parts.append(f"thrust share {_span(rows['thrust normal force [N]'], '.3g')} N per "
+                         f"roller at PV {_span(rows['thrust PV [MPa m/s]'], '.4g')} MPa m/s")
+        faces = [rows[f"{side} face PV [MPa m/s]"] for side in ("left", "right")]
+        if any(np.any(np.isfinite(f.to_numpy(dtype=float))) for f in faces):
+            parts.append("end-face PV of the dynamics left / right "
+                         + " / ".join(_span(f, ".4g") for f in faces) + " MPa m/s")
+        parts.append(f"slip speed {_span(rows['slip speed [m/s]'], '.3g')} m/s")
+        parts.append(f"rib heat {_span(rows['rib heat [W]'], '.3g')} W")
+        lines.append(f"rib contact {name} ({'; '.join(models)}): " + ", ".join(parts)
+                     + " (rib.csv)")
+    return lines
+
+
+def rib_results(rib: pd.DataFrame) -> dict[str, float]:
+    """A sweep's numbers of a run's ``rib`` table (all bearings and steps): ``max rib face PV
+    [MPa m/s]`` (the larger end face's time-mean PV of the roller dynamics; absent when none
+    ran), ``max rib thrust PV [MPa m/s]``, ``max rib slip speed [m/s]`` (paper 003 eq. 25)
+    and ``max rib heat [W]``."""
+    out: dict[str, float] = {}
+    faces = rib[["left face PV [MPa m/s]", "right face PV [MPa m/s]"]].to_numpy(dtype=float)
+    if np.any(np.isfinite(faces)):
+        out["max rib end-face PV [MPa m/s]"] = float(np.nanmax(faces))
+    for col, key in (("thrust PV [MPa m/s]", "max rib thrust PV [MPa m/s]"),
+                     ("slip speed [m/s]", "max rib slip speed [m/s]"),
+                     ("rib heat [W]", "max rib heat [W]")):
+        v = rib[col].to_numpy(dtype=float)
+        if np.any(np.isfinite(v)):
+            out[key] = float(np.nanmax(v))
     return out

@@ -242,3 +242,62 @@ def _numerical_film_of(b: _Bearing, lubricant: Any) -> Any:
                 "numerical minimum film [um]": hm * 1e6}
 
     return columns
+
+
+def rib_columns(bearing: Any, details: Mapping[str, Any]) -> dict[str, Any]:
+    """One ``rib`` table row: the rib_friction source's numbers of one heat evaluation
+    (``HeatResult.details``, :mod:`thermobearing.heat_sources.rib` "Details"), the ones the
+    heat was computed from, in the tables' units:
+
+    ``rib model`` (coupled | reduced: the model that booked the heat), ``roller dynamics``
+    (coupled | reduced | none), ``friction coefficient [-]``, ``elements temperature
+    [degC]`` (where the models ran); the thrust share: ``thrust normal force [N]`` per
+    roller, its Hertz ``thrust max pressure [MPa]`` and ``thrust contact area [mm^2]``
+    (:func:`~thermobearing.heat_sources.rib.thrust_contact`, pi a b), ``thrust slide speed
+    [m/s]`` (roller mean |v_i - v_r|), ``thrust PV [MPa m/s]`` (pressure x slide speed) and
+    ``thrust heat [W]`` (all rollers; = Z mu Q |v| = Z mu (2/3) area x PV); ``drag heat [W]``
+    (the lubricant drag of eq. 14 where no dynamics ran; empty where they did: their face
+    heats hold it); the dynamics' per end face (right: the unbalance's side) ``left / right
+    face PV [MPa m/s]`` (time- and roller-mean P |v|, paper 003 eqs. 21-24) and ``left /
+    right face heat [W]`` (all rollers), ``rib slide speed [m/s]``, ``dynamics orbits [-]``
+    (empty without dynamics); ``slip speed [m/s]`` (eq. 25, the dynamics' time mean, else
+    the kinematic state's); ``rib heat [W]`` (the source's component: thrust + drag + both
+    faces) and ``heat to rollers [-]`` (its share to the "elements" role)."""
+    from .heat_sources.rib import thrust_contact
+    from .rib import rib_geometry
+
+    d = details
+    q = float(d.get("thrust_normal_force", 0.0))
+    pressure, area = thrust_contact(rib_geometry(bearing), q)
+    slide = float(d.get("thrust_slide_speed", math.nan))
+    dyn = d.get("dynamics", "none") != "none"
+
+    def dynamic(key: str, scale: float = 1.0) -> float:
+        return float(d[key]) * scale if dyn and key in d else math.nan
+
+    temperature = d.get("temperature")
+    return {"rib model": d.get("model", ""), "roller dynamics": d.get("dynamics", ""),
+            "friction coefficient [-]": float(d.get("friction_coefficient", math.nan)),
+            "elements temperature [degC]": (math.nan if temperature is None
+                                            else float(temperature) - 273.15),
+            "thrust normal force [N]": q,
+            "thrust max pressure [MPa]": pressure / 1e6,
+            "thrust contact area [mm^2]": area * 1e6,
+            "thrust slide speed [m/s]": slide,
+            "thrust PV [MPa m/s]": pressure * slide / 1e6,
+            "thrust heat [W]": float(d.get("thrust_heat", math.nan)),
+            "drag heat [W]": math.nan if dyn else float(d.get("drag_heat", math.nan)),
+            "left face PV [MPa m/s]": dynamic("pv_left", 1e-6),
+            "right face PV [MPa m/s]": dynamic("pv_right", 1e-6),
+            "left face heat [W]": dynamic("heat_left"),
+            "right face heat [W]": dynamic("heat_right"),
+            "rib slide speed [m/s]": dynamic("rib_slide_speed"),
+            "dynamics orbits [-]": dynamic("dynamics_orbits"),
+            "slip speed [m/s]": float(d.get("slip_speed", math.nan)),
+            "rib heat [W]": float(d.get("total_heat", math.nan)),
+            "heat to rollers [-]": float(d.get("element_share", math.nan))}
+
+
+#: the tables of heat-source details a run writes beside its losses: source -> (table,
+#: row function of (bearing, ``HeatResult.details``))
+DETAIL_TABLES = {"rib_friction": ("rib", rib_columns)}

@@ -39,13 +39,21 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
 
-from .errors import InputError, UnknownNameError, check_finite, check_positive, check_temperature
+from .errors import (
+    InputError,
+    UnknownNameError,
+    ValidityWarning,
+    check_finite,
+    check_positive,
+    check_temperature,
+)
 
 SUPPLY_METHODS = ("jet", "circulation", "oil_bath", "oil_air", "grease")
 ORIGINS = ("race_control", "skidding", "given", "standstill")
@@ -454,6 +462,21 @@ def deformed_surface_radius(conformity: float, element_diameter: float) -> float
     return 2.0 * conformity * element_diameter / (2.0 * conformity + 1.0)
 
 
+def rewarn_naming_contacts(caught: list[warnings.WarningMessage], contacts: str) -> None:
+    """Warn again the warnings ``caught`` around a film formula's call, its range warnings
+    (``ValidityWarning`` ``"model: W in [lo, hi] outside [a, b]"``,
+    :func:`thermobearing.film._warn_range`) with the ``contacts`` they checked in front:
+    ``"roller / inner raceway line contacts, pan_hamrock_central: W in ..."``. The text
+    before the model is fixed per contact set, so a run's repeats still merge into one line
+    per bearing, model and contact set (:mod:`thermobearing.warning_groups`); other warnings
+    unchanged."""
+    for w in caught:
+        message = w.message
+        if issubclass(w.category, ValidityWarning):
+            message = ValidityWarning(f"{contacts}, {w.message}")
+        warnings.warn(message, stacklevel=3)
+
+
 def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str = "outer_race",
                        inner_load: Any = None, outer_load: Any = None,
                        contact_angle_i: Any = None, contact_angle_o: Any = None,
@@ -577,9 +600,14 @@ def race_control_state(bearing: Any, operating: OperatingPoint, *, control: str 
                 h = film_mod.hamrock_dowson_1977_central(uu, eta, alpha, qq, rx, ry,
                                                          effective_modulus=e_mod)
             else:
-                h = film_mod.pan_hamrock_central(uu, eta, alpha, qq,
-                                                 bearing.roller_effective_length, rx,
-                                                 effective_modulus=e_mod)
+                # the formula's range warning names the contacts it checked (a roller rig
+                # listed "pan_hamrock_central: W in [...]" without saying which raceway)
+                with warnings.catch_warnings(record=True) as caught:
+                    warnings.simplefilter("always", ValidityWarning)
+                    h = film_mod.pan_hamrock_central(uu, eta, alpha, qq,
+                                                     bearing.roller_effective_length, rx,
+                                                     effective_modulus=e_mod)
+                rewarn_naming_contacts(caught, f"roller / {race} raceway line contacts")
             film = np.where(loaded, h, 0.0)
         sets.append(ContactSet(
             race=race, kind=kind, normal_load=q, contact_angle=ang, semi_major=a, semi_minor=b,

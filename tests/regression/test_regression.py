@@ -45,7 +45,8 @@ def _tolerance(column: str, ref: np.ndarray, table_scale: float) -> float:
         return TEMPERATURE_ATOL
     if "imbalance" in column:
         return RTOL * table_scale
-    return RTOL * max(float(np.max(np.abs(ref))) if ref.size else 0.0, 1e-300)
+    finite = np.abs(ref[np.isfinite(ref)])  # empty cells (NaN) have no magnitude
+    return RTOL * max(float(np.max(finite)) if finite.size else 0.0, 1e-300)
 
 
 def compare_table(name: str, got: pd.DataFrame, ref: pd.DataFrame) -> list[str]:
@@ -67,7 +68,8 @@ def compare_table(name: str, got: pd.DataFrame, ref: pd.DataFrame) -> list[str]:
             gv = pd.to_numeric(g, errors="coerce").to_numpy(dtype=float)
             tol = _tolerance(col, rv, table_scale)
             diff = np.abs(gv - rv)
-            bad = ~(diff <= tol)
+            # an empty cell in both (NaN: a number the model does not have) is equal
+            bad = ~(diff <= tol) & ~(np.isnan(gv) & np.isnan(rv))
             if np.any(bad):
                 i = int(np.argmax(np.where(bad, diff, -1.0)))
                 problems.append(f"{name}[{col}]: row {i} {gv[i]!r} vs reference {rv[i]!r} "
@@ -110,3 +112,8 @@ def test_comparison_catches_a_change():
         bad[col] = value
         assert len(compare_table("t", bad, ref)) == 1
     assert compare_table("t", ref.iloc[:1], ref)
+    # empty cells: equal where both are empty, a change where one is
+    gap = pd.DataFrame({"pv [MPa m/s]": [np.nan, 2.0]})
+    assert compare_table("t", gap.copy(), gap) == []
+    assert len(compare_table("t", pd.DataFrame({"pv [MPa m/s]": [1.0, 2.0]}), gap)) == 1
+    assert len(compare_table("t", gap, pd.DataFrame({"pv [MPa m/s]": [1.0, 2.0]}))) == 1

@@ -76,6 +76,23 @@ ring equals that heat plus the elastic rate Q d delta/dt (which averages out) to
 surfaces through the contact (rib: (omega_i - omega_c)(d_i/2 + H_contact), end face: rib
 speed minus the model's mean slide) and the contact half-width sqrt(a b); option
 ``element_share`` overrides it. Units: SI.
+
+Details (``HeatResult.details``, the numbers the heat was computed from; a run writes them
+to its ``rib`` table, :func:`thermobearing.simulation_tables.rib_columns`): ``model``
+(the model that booked the heat: ``"reduced"`` where the coupled one handed over, above),
+``dynamics`` (``"coupled"``, ``"reduced"`` or ``"none"``: no roller dynamics ran, the heat
+is the thrust share and the drag at the kinematic state's spins), ``friction_coefficient``,
+``thrust_normal_force`` Q [N] per roller, ``thrust_slide_speed`` (the roller-mean |v| the
+thrust share slides at) [m/s], ``thrust_heat`` = mu Q Z x that [W], ``drag_heat`` (without
+dynamics: 2 F_G sum |v| [W]; with them the drag is in the face heats), with dynamics
+``heat_left`` / ``heat_right`` (all rollers [W]), ``pv_left`` / ``pv_right`` (time- and
+roller-mean P |v| [Pa m/s]; right = the unbalance's side), ``slip_speed`` (eq. 25 [m/s]; the
+dynamics' time mean, without them the kinematic state's, :func:`inner_slip_speed`),
+``rib_slide_speed``, ``dynamics_orbits``; ``total_heat`` [W] = ``thrust_heat`` +
+``drag_heat`` + ``heat_left`` + ``heat_right`` (those present), the component's power;
+``temperature`` [K] (the "elements" temperature the models ran at), ``n_rollers``,
+``element_share``. The thrust share's pressure and contact area are Hertz's at Q
+(:func:`thrust_contact`, computed when the table is written, not in the heat evaluation).
 """
 
 from __future__ import annotations
@@ -150,6 +167,36 @@ def check_unbalance_option(unbalance: float, bearing: object, field: str) -> Non
         raise InputError(field, f"{unbalance * 1e3:.4g} g",
                          f"an unbalance_mass from 0 g up to below the roller mass "
                          f"{float(mass) * 1e3:.4g} g of {getattr(bearing, 'name', 'the bearing')}")
+
+
+def inner_slip_speed(geom: object, inner_speed: float, cage_speed: float,
+                     roller_spin: object) -> float:
+    """Roller-mean slip speed at the inner raceway, paper 003 eq. 25 (as read in
+    :mod:`thermobearing.skidding.roller_dynamics_response`):
+    mean |(omega_i - omega_c) d_i/2 - omega_r D_w/2| [m/s] over the rollers.
+
+    geom : :class:`thermobearing.rib.RibGeometry` (``inner_raceway_diameter`` d_i,
+    ``roller_diameter`` D_w [m]).  inner_speed, cage_speed : omega_i, omega_c [rad/s].
+    roller_spin : omega_r per roller [rad/s] (array or scalar)."""
+    u_i = (float(inner_speed) - float(cage_speed)) * 0.5 * float(geom.inner_raceway_diameter)
+    spin = np.asarray(roller_spin, float)
+    return float(np.mean(np.abs(u_i - spin * 0.5 * float(geom.roller_diameter))))
+
+
+def thrust_contact(geom: object, normal_force: float) -> tuple[float, float]:
+    """Hertz contact of one roller's thrust share on the rib: (maximum pressure P [Pa],
+    contact area pi a b [m^2]) of the normal force Q [N] at the unskewed contact point's
+    radii (:meth:`thermobearing.rib.RibGeometry.curvature`), Brewe-Hamrock ellipse as the
+    dynamics' PV (paper 003 eqs. 22-23). Q = (2/3) P pi a b, so the thrust share's heat
+    mu Q |v| equals mu (2/3) (pi a b) P |v| (the table's PV times 2/3 of the area).
+    Q = 0 gives (0, 0)."""
+    q = float(normal_force)
+    check_positive("normal_force", q, allow_zero=True)
+    if q == 0.0:
+        return 0.0, 0.0
+    rx, ry = geom.curvature()
+    pc = point_contact(q, rx, ry, geom.effective_modulus, method="brewe_hamrock_1977")
+    return float(pc.max_pressure), math.pi * float(pc.a) * float(pc.b)
 
 
 @HEAT_SOURCES.register(
@@ -301,6 +348,8 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         v_end_mean = (wi - wc) * (0.5 * geom.inner_raceway_diameter + h) - dyn.rib_slide_speed
         pairs = (ForcePair("rib on roller end face (thrust share, coupled spins)",
                            friction, -slide),)
+        details.update(thrust_heat=float(np.sum(heat_thrust)),
+                       thrust_slide_speed=float(dyn.rib_slide_speed))
     else:
         from ..lubricant_properties import air_properties
 
@@ -316,6 +365,13 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
         heat_thrust = np.abs(friction * v)
         dynamic = z * dyn.heat if dyn is not None else 0.0
         v_end_mean = float(np.mean(spin)) * rho
+        # the thrust and drag parts of heat_thrust (both mu Q |v| and 2 F_G |v| >= 0)
+        slide_sum = float(np.sum(np.abs(v)))
+        details.update(thrust_heat=mu * q * slide_sum,
+                       thrust_slide_speed=slide_sum / z)
+        if dyn is None:
+            details.update(drag_heat=2.0 * f_g * slide_sum,
+                           slip_speed=inner_slip_speed(geom, wi, wc, spin))
         # force on the end face and the face's speed relative to the rib, in the real sense
         pairs = (ForcePair("rib on roller end face (thrust + drag)",
                            sense * friction * np.sign(v), -sense * v),)
@@ -327,8 +383,9 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                        dynamics_orbits=dyn.orbits,
                        dynamics_traction_fallbacks=dyn.fallbacks,
                        dynamics_warm_starts=dyn.warm_starts)
-    details["thrust_heat"] = float(np.sum(heat_thrust)) if model == "coupled" else 0.0
     total = float(np.sum(heat_thrust)) + dynamic
+    details.update(dynamics="none" if dyn is None else model, total_heat=total,
+                   n_rollers=z, temperature=temperature)
     share = ctx.option(name, "element_share", None)
     if share is None:
         qq = max(q, 1e-3)
