@@ -33,7 +33,7 @@ import math
 import warnings
 
 import numpy as np
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from thermobearing.ehl import (
@@ -91,12 +91,17 @@ def _thermal(u, s, w=1e5, t_in=313.15, **kw):
 
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(u=st.floats(0.5, 4.0), s=st.floats(0.05, 0.6), w=st.floats(5e4, 2e5))
+@example(u=3.0, s=0.5625, w=163786.0)
 def test_thermal_line_contact_is_mirror_symmetric_in_the_slide_to_roll_ratio(u, s, w):
     """Equal solids: s and -s give the same films, maximum pressure and temperature, and
-    F1(s) + F1(-s) = 2 R (the surfaces exchange roles). Solved to 1e-3 K (the fixed point to
-    about 3e-5 of the films; the two solves need not stop at the same outer iteration on
-    every CPU), so each to 2e-4 of its scale and 5 mK (measured: 1e-13 on this machine)."""
-    plus, minus = _thermal(u, s, w, tol_temperature=1e-3), _thermal(u, -s, w, tol_temperature=1e-3)
+    F1(s) + F1(-s) = 2 R (the surfaces exchange roles). Solved to 3e-3 K (the fixed point to
+    about 1e-4 of the films; the two solves need not stop at the same outer iteration on
+    every CPU), so each to 2e-4 of its scale and 5 mK (measured: 1e-13 on this machine).
+    The tolerance is 3 mK, not 1 mK: at u = 3 m/s, s = 0.5625, w' = 1.64e5 N/m the outer
+    iteration stalls at a 1.2 mK change (a ConvergenceError after 120 iterations; the
+    solver's default is 30 mK)."""
+    plus = _thermal(u, s, w, tol_temperature=3e-3)
+    minus = _thermal(u, -s, w, tol_temperature=3e-3)
     for name in ("central_film", "minimum_film", "max_pressure", "rolling_force"):
         a, b = getattr(plus, name), getattr(minus, name)
         assert math.isclose(a, b, rel_tol=2e-4), (name, a, b)

@@ -50,6 +50,12 @@ _PARAMS = {
 }
 
 
+#: distance [cells] within which a grid coordinate is taken as its node (round-off of the
+#: log/exp round trip of a node's own coordinates is ~1e-15; the interpolation error this
+#: admits is <= 1e-9 of one cell's change)
+SNAP = 1e-9
+
+
 @dataclass(frozen=True)
 class FilmPoint:
     """Outputs of one line-contact solve (SI): central_film [m], minimum_film [m],
@@ -191,7 +197,13 @@ class FilmTable:
         self.solve_time = 0.0  # CPU seconds spent in node solves
 
     def _coords(self, w: float, u: float, srr: float, T: float) -> np.ndarray:
-        return np.array([math.log(w), math.log(u), srr, T - self.t_origin]) / np.array(self.steps)
+        """Grid coordinates of a point (node indices at integers). A coordinate within
+        :data:`SNAP` of an integer is that integer: a query at a node's own (w', u, SRR, T)
+        comes back through log/exp with a round-off of ~1e-15 of a cell, which listed up to
+        16 corners with weights ~1e-16 -- each a solve -- for about a third of the nodes."""
+        c = np.array([math.log(w), math.log(u), srr, T - self.t_origin]) / np.array(self.steps)
+        r = np.rint(c)
+        return np.where(np.abs(c - r) < SNAP, r, c)
 
     def corners(self, w: float, u: float, srr: float, T: float) -> list[tuple[int, ...]]:
         """Nodes (index tuples) an answer at this point is built from (nonzero weights)."""
