@@ -48,6 +48,7 @@ heat_sources = [{sources}]
 {options}
 {network}
 [outputs]
+{mode}
 want = [{want}]
 """
 SOURCES = '"raceway_traction", "churning_elements", "rib_friction"'
@@ -93,15 +94,15 @@ RIB_COLUMNS = [
 STEP_COLUMNS = ["step", "bearing", "speed [rpm]", "radial load [kN]", "axial load [kN]"]
 
 
-def _nj214(*, sources=SOURCES, want='"losses"', network="", duration="5 min"):
+def _nj214(*, sources=SOURCES, want='"losses"', network="", duration="5 min", mode=""):
     return loads_scene(_nj214_text(sources=sources, want=want, network=network,
-                                   duration=duration))
+                                   duration=duration, mode=mode))
 
 
-def _nj214_text(*, sources=SOURCES, want='"losses"', network="", duration="5 min"):
+def _nj214_text(*, sources=SOURCES, want='"losses"', network="", duration="5 min", mode=""):
     options = REDUCED if "rib_friction" in sources else ""
     return NJ214.format(sources=sources, want=want, network=network, duration=duration,
-                        options=options)
+                        options=options, mode=mode)
 
 
 def _rib_losses(losses: pd.DataFrame) -> pd.Series:
@@ -203,6 +204,17 @@ def test_a_transient_writes_the_rib_table_as_it_goes_from_the_step_ends_heat(tmp
                                booked.to_numpy(), rtol=1e-12)
     # the models ran at the roller node's temperature of the step end, above the start
     assert (rib["elements temperature [degC]"] > 25.0).all()
+    assert len(pd.read_csv(tmp_path / "rib.csv")) == 2
+
+
+def test_a_steady_run_writes_the_rib_table_of_its_steady_states(tmp_path):
+    scene = _nj214(want='"temperatures", "losses"', network=NETWORK, mode='mode = "steady"')
+    res = Simulation(scene, progress=False).run(tmp_path)
+    rib = res.tables["rib"]
+    assert list(rib.columns) == STEP_COLUMNS + RIB_COLUMNS  # a steady state has no time
+    booked = _rib_losses(res.tables["losses"])
+    np.testing.assert_allclose(rib.sort_values("step")["rib heat [W]"].to_numpy(),
+                               booked.to_numpy(), rtol=1e-12)
     assert len(pd.read_csv(tmp_path / "rib.csv")) == 2
 
 
