@@ -179,8 +179,9 @@ def test_a_report_column_reaching_ten_thousand_groups_the_thousands_of_every_val
                                     "axial load [kN]": [0.3, 0.3, 0.8],
                                     "time [s]": [900.0, 1800.0, 2700.0]}))
     assert ">4,000<" in text and ">8,000<" in text and ">12,000<" in text
-    # a column below 1e4 keeps its plain digits (1800 r/min, 2700 s)
-    assert ">2700<" in text and ">0.8<" in text
+    # one grouping rule for every column (session 23): a column below 1e4 groups its
+    # thousands too, as the powers beside it do (2,700 s; it read 2700 beside 1,031 W)
+    assert ">2,700<" in text and ">0.8<" in text
 
 
 @pytest.mark.parametrize("lo, hi", [(866.9, 1745.7), (1734.0, 3491.0), (76.43, 88.91),
