@@ -146,7 +146,7 @@ def simulate_reduced(m: DynamicsModel, *, periods: float = 20.0, warmup_periods:
                 if attempt == RK4_REFINEMENTS:
                     raise ConvergenceError(
                         "roller_dynamics.reduced", exc.residual,
-                        f"RK4 diverged at {steps_per_period} to {spp} steps per spin period "
+                        f"ETDRK4 diverged at {steps_per_period} to {spp} steps per spin period "
                         f"({RK4_REFINEMENTS} refinements by {RK4_REFINE_FACTOR})",
                         exc.state) from None
                 spp *= RK4_REFINE_FACTOR
@@ -211,7 +211,7 @@ def _state_post(m: DynamicsModel, c: np.ndarray, n_i: float, n_o: float, w: floa
                        z0, h, n_warm, n_keep, every)
     if not np.all(np.isfinite(rows)):
         raise ConvergenceError("roller_dynamics.reduced", float("inf"),
-                               "RK4 diverged (reduce the step: steps_per_period)",
+                               "ETDRK4 diverged (reduce the step: steps_per_period)",
                                {"state": (n_i, n_o, w)})
     spin = np.full(rows.shape[0], w)
     post = _post(m, rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4], spin,
