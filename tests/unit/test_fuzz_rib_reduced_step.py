@@ -3,8 +3,11 @@ rib_friction source stopped every cylindrical-roller run lubricated with a miner
 oil under a few kN with "roller_dynamics.reduced did not converge (residual inf): RK4
 diverged (reduce the step: steps_per_period)", a setting no scene reaches: the mineral oils'
 larger pressure-viscosity coefficient (1.7-2.2e-8 1/Pa against 1.0e-8 for MIL-PRF-23699)
-makes the frozen states stiffer than the fixed step allows. A diverging state is now
-repeated at a finer step."""
+makes the frozen states stiffer than the fixed step allows. A diverging state was then
+repeated at a finer step; since 2026-11-24 (session 23) the stiff term, the pocket slide's
+raceway damping, is integrated exactly (ETDRK4), and this state runs at the fixed step
+(measured: slip 4.861 m/s, rib heat 0.0359 W per face); the refinement stays as a safety
+net."""
 
 from __future__ import annotations
 
@@ -13,7 +16,6 @@ import math
 import pytest
 
 from thermobearing import load_lubricant
-from thermobearing.errors import ConvergenceError
 from thermobearing.geometry import load_bearing
 from thermobearing.skidding.roller_dynamics import build_model, simulate_reduced
 from thermobearing.skidding.roller_dynamics_integrate import RK4_REFINE_FACTOR
@@ -24,17 +26,15 @@ def _model():
                        20000.0 * math.pi / 30.0, 3000.0, 0.0, temperature=353.15)
 
 
-def test_diverging_state_is_refined(monkeypatch):
+def test_stiff_state_runs_at_the_fixed_step(monkeypatch):
     import thermobearing.skidding.roller_dynamics_integrate as integ
 
     m = _model()
-    with monkeypatch.context() as patch:   # the fixed step alone diverges
+    with monkeypatch.context() as patch:   # the pocket damping is exact: no refinement
         patch.setattr(integ, "RK4_REFINEMENTS", 0)
-        with pytest.raises(ConvergenceError, match="RK4 diverged at 400 to 400 steps"):
-            simulate_reduced(m)
-    refined = simulate_reduced(m)
-    assert math.isfinite(refined.slip_speed)
-    assert refined.rib_heat_left > 0.0 and refined.rib_heat_right > 0.0
+        r = simulate_reduced(m)
+    assert math.isfinite(r.slip_speed)
+    assert r.rib_heat_left > 0.0 and r.rib_heat_right > 0.0
 
 
 @pytest.mark.slow
