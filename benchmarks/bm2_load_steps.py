@@ -92,7 +92,7 @@ def main(argv=None) -> int:
         case = make_case(n)
         ref, _ = run_ours(case, "tr_bdf2", 1e-11, 1e-9)
         run_ours(case, "exprb43", 1e-3, 1e-1)  # warm-up: load exprb43's compiled kernels
-        # run_scipy returns the grid points segment by segment (both ends): compare on ours
+        # run_scipy returns the grid points of [a, b) per segment ([a, b] the last): compare
         grid = case[4]
         seg_grid = np.concatenate([grid[(grid >= a) & ((grid < b) | (b == case[1][-1]))]
                                    for a, b in zip(case[1][:-1], case[1][1:], strict=True)])
