@@ -101,3 +101,15 @@ def test_restarted_driver_matches_its_plain_solves(bm1):
     # one solve per load step: the heat is called as often as by the plain solves
     assert nfev == plain_nfev
     assert calls[0] == plain_nfev
+
+
+def test_time_at_error_interpolates_log_log_and_never_extrapolates(bm1):
+    """BM-1 / BM-2's equal-error time: log-log interpolation on a solver's (error, time)
+    points; outside the measured errors it is NaN (no extrapolation)."""
+    curve = [{"max_error_K": 1e-2, "time_s": 1.0}, {"max_error_K": 1e-4, "time_s": 4.0},
+             {"max_error_K": 0.0, "time_s": 9.0}]  # an error of 0 is left out (no log)
+    assert bm1.time_at_error(curve, 1e-3) == pytest.approx(2.0, rel=1e-12)
+    assert bm1.time_at_error(curve, 1e-2) == pytest.approx(1.0, rel=1e-12)
+    assert np.isnan(bm1.time_at_error(curve, 1e-5))
+    assert np.isnan(bm1.time_at_error(curve, 1e-1))
+    assert np.isnan(bm1.time_at_error([], 1e-3))
