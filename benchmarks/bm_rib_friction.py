@@ -32,9 +32,12 @@ loads its cached kernels then: timed separately as ``first_call_s``):
 
 Printed per path: CPU of the scene run, dynamics runs (cache misses) and hits, per run the
 operating state, node temperature, CPU, orbits integrated, step size, heat and rib slide
-speed; the cProfile split (process CPU time) of the path: time loop kernel, traction table,
-quasi-static solve, dynamics set-up, post-processing (the profiler inflates the
-Python-heavy parts, the quasi-static solve ~4x: roller_dynamics_heat notes). Then the
+speed; with ``--profile`` the cProfile split (process CPU time) of the path: time loop
+kernel, traction table, quasi-static solve, dynamics set-up, post-processing, from a second
+run of the path under the profiler (the profiler inflates the Python-heavy parts, the
+quasi-static solve ~4x: roller_dynamics_heat notes; the timed runs are not profiled: the
+scene CPU was taken under the profiler before, which inflated the paths with the smaller
+kernel share, the warm-started ones, more than the fixed window). Then the
 ratios fixed / converged and cold / converged of the CPU times and the change in the rib
 heat: per dynamics node present in both runs, |heat / heat_fixed - 1|
 and the same for the rib slide speed (which sets the thrust share's heat), and the booked
@@ -42,7 +45,7 @@ rib_friction power of the scene at the end of every step (both transients follow
 temperatures, so this also holds the feedback of the small heat change).
 
 Usage: python benchmarks/bm_rib_friction.py [--quick] [--duration S] [--unbalance G]
-       [--json] [--out FILE]
+       [--profile] [--json] [--out FILE]
 (``--json``: the records on stdout, one per path plus a summary record; ``--out FILE``:
 the records written to FILE as well.)
 """
@@ -101,8 +104,10 @@ def _profile_split(prof: cProfile.Profile, total: float) -> dict[str, float]:
     return out
 
 
-def run_path(name: str, scene: Any) -> dict[str, Any]:
-    """One scene run from an empty dynamics cache, with every dynamics run logged."""
+def run_path(name: str, scene: Any, profile: bool = False) -> dict[str, Any]:
+    """One scene run from an empty dynamics cache, with every dynamics run logged; its
+    CPU time unprofiled. With ``profile`` the same run again from an empty cache under
+    cProfile for the split (``profile`` of the record; else empty)."""
     from thermobearing.errors import ConvergenceError
     from thermobearing.simulation import Simulation
     from thermobearing.skidding import roller_dynamics_heat as rdh
@@ -134,17 +139,25 @@ def run_path(name: str, scene: Any) -> dict[str, Any]:
         return out, resp
 
     rdh.run_dynamics = logged
-    prof = cProfile.Profile(time.process_time)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             t0 = time.process_time()
-            prof.enable()
             res = Simulation(scene).run()
-            prof.disable()
             cpu = time.process_time() - t0
     finally:
         rdh.run_dynamics = original
+    split: dict[str, float] = {}
+    if profile:  # the split from a second, profiled run (the timing above is unprofiled)
+        rdh.clear_cache()
+        prof = cProfile.Profile(time.process_time)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            t1 = time.process_time()
+            prof.enable()
+            Simulation(scene).run()
+            prof.disable()
+            split = _profile_split(prof, time.process_time() - t1)
     info = rdh.cache_info()
     losses = res.tables["losses"]
     rib = losses[losses["source"] == "rib_friction"]
@@ -154,7 +167,7 @@ def run_path(name: str, scene: Any) -> dict[str, Any]:
     return {"path": name, "cpu_s": cpu, "runs": info["runs"], "hits": info["hits"],
             "nodes": log, "booked_rib_W": [float(v) for v in booked.values],
             "final_rollers_degC": float(temps.iloc[-1]["crb.rollers [degC]"]),
-            "profile": _profile_split(prof, cpu)}
+            "profile": split}
 
 
 def first_call() -> float:
@@ -213,8 +226,9 @@ def _print_path(r: dict[str, Any]) -> None:
                  f"{n['finished_on']} path)" if n["fallback"] else ""))
     print("  booked rib_friction at step ends [W]: "
           + ", ".join(f"{v:.3f}" for v in r["booked_rib_W"]))
-    print("  profile (cumulative CPU s): " + "; ".join(
-        f"{k} {v:.2f}" for k, v in r["profile"].items()))
+    if r["profile"]:
+        print("  profile (cumulative CPU s of a second, profiled run): " + "; ".join(
+            f"{k} {v:.2f}" for k, v in r["profile"].items()))
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -223,6 +237,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--duration", type=float, default=10.0, help="step duration [s]")
     parser.add_argument("--unbalance", type=float, default=0.0,
                         help="rib_friction unbalance_mass [g] (default 0)")
+    parser.add_argument("--profile", action="store_true",
+                        help="run each path a second time under cProfile for its CPU split "
+                             "(the timed runs stay unprofiled)")
     parser.add_argument("--json", action="store_true", help="records on stdout")
     parser.add_argument("--out", type=str, default=None, help="records to this file too")
     args = parser.parse_args(argv)
@@ -234,12 +251,13 @@ def main(argv: list[str] | None = None) -> int:
 
     warm = first_call()
     fixed = run_path("fixed", make_scene(args.duration, args.quick, args.unbalance, 0.0, 0,
-                                         0))
+                                         0), args.profile)
     cold = run_path("cold", make_scene(args.duration, args.quick, args.unbalance,
-                                       DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES, 0))
+                                       DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES, 0),
+                    args.profile)
     conv = run_path("converged", make_scene(args.duration, args.quick, args.unbalance,
                                             DEFAULT_CONVERGENCE, DEFAULT_TABLE_RETRIES,
-                                            DEFAULT_WARM_START_NODES))
+                                            DEFAULT_WARM_START_NODES), args.profile)
     summary = compare(fixed, conv)
     vs_cold = compare(cold, conv)
     summary.update({f"cold_{k}": v for k, v in vs_cold.items() if k != "path"})
