@@ -57,6 +57,10 @@ def _out(x: np.ndarray) -> ArrayLike:
 #: z = alpha p0 / (ln eta0 + 9.67) rises without bound as eta0 nears Roelands' 6.31e-5 Pa s
 #: and the viscosity at a fixed high pressure then rises with temperature.
 ALPHA_FIT_LOWEST_VISCOSITY = {"asme1953_mineral_fit": 2.4e-3}
+#: atmospheric viscosities [Pa s] of the data an eta-based alpha fit was fitted to, low and
+#: high end (its registered validity; :func:`thermobearing.lubricant_range.
+#: data_temperature_range` turns them into the oil's temperatures)
+ALPHA_FIT_VISCOSITY_RANGE = {"asme1953_mineral_fit": (2.4e-3, 2.0)}
 
 @PRESSURE_VISCOSITY_COEFFICIENT.register(
     "asme1953_mineral_fit",
@@ -168,6 +172,11 @@ def astm_d1250_lube_density(T: ArrayLike, rho15: float) -> ArrayLike:
 # ---------------------------------------------------------------------------
 # thermal properties
 # ---------------------------------------------------------------------------
+#: stated temperature ranges [K] of the thermal correlations (their registered validity;
+#: :func:`thermobearing.lubricant_range.data_temperature_range`)
+THERMAL_TEMPERATURE_RANGE = {"cragoe": (273.15, 473.15)}
+
+
 @LUBRICANT_THERMAL.register(
     "cragoe",
     references=["cragoe1929"],

@@ -222,16 +222,34 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
     ``thermobearing check`` checks without solving (model, bearing and lubricant preset
     names, the network template's parameters and values, the measured CSV). A bad value
     (``lubricant.preset=ISO_VG99``) then fails in a second, naming the case, instead of
-    after the good cases have run. Costs a few milliseconds per case.
+    after the good cases have run. Costs about 50 ms per case (the default rig; most of it
+    reading the scene's unit strings).
 
     Returns one line per swept path that a case's run says it does not use (the run's
     ``"<path> (...) is not used"`` note, e.g. ``supply.inlet_temperature`` of a scene
     without a thermal network): those cases give the same results whatever the value."""
+    return _check_cases(cases)[0]
+
+
+#: scene temperatures [K] of a case compared with its oil's data range: the oil inlet and
+#: the parts' start (the ambient is the air's, checked against the air model)
+_OIL_TEMPERATURES = ("supply.inlet_temperature", "environment.initial_temperature")
+
+
+def _check_cases(cases: Sequence[Case]) -> tuple[list[str], list[str]]:
+    """:func:`check_cases`, and one line per scene temperature field and oil whose value
+    lies outside the temperatures the oil's property data cover in some case
+    (:func:`thermobearing.lubricant_range.outside_data_note`: an ISO VG 46 inlet at
+    200 degC, beyond the 146 degC where its pressure-viscosity fit's data end), naming the
+    values: such cases run, extrapolating the oil's data."""
     from .commands._preflight import preflight
+    from .lubricant_range import data_temperature_range, outside_data_note
     from .scene_checks import check_model_names
     from .simulation import Simulation
 
     unused: dict[str, str] = {}
+    ranges: dict[Any, Any] = {}    # lubricant -> its DataRange
+    outside: dict[tuple[str, Any], list[float]] = {}    # (field, lubricant) -> kelvin
     #: supply.flow: said only when no case's run reads it (a capped oil fraction is a
     #: property of the value, not of the scene)
     flow_notes: list[str | None] = []
@@ -241,6 +259,13 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
             check_model_names(scene)
             sim = Simulation(scene, progress=False)
             preflight(sim, build=True)  # includes check_global_friction
+        lub = sim.lubricant
+        if lub not in ranges:
+            ranges[lub] = data_temperature_range(lub)
+        for field in _OIL_TEMPERATURES:
+            kelvin = _scene_kelvin(scene, field)
+            if kelvin is not None and not ranges[lub].contains(kelvin):
+                outside.setdefault((field, lub), []).append(kelvin)
         for path, _ in case.assignments:
             if path == "supply.flow":
                 flow_notes.append(flow_unused(sim))
@@ -257,7 +282,18 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
         unused["supply.flow"] = (f"sweep: supply.flow is swept but not used by the runs (their "
                                  f"results do not change with it); case {first.case_id}: "
                                  f"{flow_notes[0]}")
-    return list(unused.values())
+    notes = [f"sweep: {outside_data_note(lub, field, values, ranges[lub])}"
+             for (field, lub), values in outside.items()]
+    return list(unused.values()), notes
+
+
+def _scene_kelvin(scene: Scene, field: str) -> float | None:
+    """The scene's temperature [K] of ``field`` (:data:`_OIL_TEMPERATURES`); None for the
+    inlet of an oil bath without flow (no stream enters the bearing)."""
+    if field == "supply.inlet_temperature":
+        sup = scene.supply
+        return None if sup.method == "oil_bath" and sup.flow == 0.0 else sup.inlet_temperature
+    return scene.environment.initial_temperature
 
 
 #: heat sources that read the supply's flow (the churning sources' oil fraction, Parker's
@@ -431,8 +467,8 @@ def run_sweep(
             print(line, file=sys.stderr)
     cases = match_finished(scene, cases, done)  # the same quantities in other units
     todo = [c for c in cases if c.case_id not in done]
-    unused = check_cases(todo) if check else []
-    for line in unused:  # before the runs, as the CLI's other notes
+    unused, outside = _check_cases(todo) if check else ([], [])
+    for line in [*unused, *outside]:  # before the runs, as the CLI's other notes
         print(line, file=sys.stderr)
     resumed = len(cases) - len(todo)
     if resumed and progress is not False:  # a rerun says what it resumed, before the bar
@@ -529,6 +565,7 @@ def run_sweep(
     df = _write_summary(out, cases, done)
     df.attrs["failed"] = failures
     df.attrs["unused"] = unused
+    df.attrs["outside_data"] = outside
     said = {line.split(" ", 2)[1] for line in unused}
     df.attrs["identical"] = [line for path, line in identical_results(cases, done).items()
                              if path not in said]

@@ -195,19 +195,44 @@ def flagged_notes(df, swept: list[str]) -> list[str]:
 
 
 #: results shown on the terminal when the runner gives them (summary.csv has all)
-_MAIN_RESULTS = ("mean total loss [W]", "max over-skidding [%]")
+_MAIN_RESULTS = ("mean total loss [W]",)
+#: the summary's extremes of the cage's slip against rolling (over-skidding > 0: the cage
+#: faster than rolling; < 0: skidding, slower)
+_OVER_SKID = ("max over-skidding [%]", "min over-skidding [%]")
+
+
+def _slip_columns(df, results: list[str]) -> list[str]:
+    """The over-skidding extremes the terminal shows: both, unless one is negligible
+    (below 1 % of the other's largest magnitude over the cases). A cylindrical roller
+    bearing that skids has min over-skidding -20 to -41 % and max -0.005 to -0.02 % (NU 214,
+    5000 r/min, 0.5-8 kN, 0.5-8 L/min): the max alone, shown before, said nothing of its
+    cage slip; the QJ1044 rig skids at 0 kN (min -31 to -68 %) and over-skids at 2-8 kN
+    (max +5 to +12 %): both."""
+    present = [c for c in _OVER_SKID if c in results]
+
+    def size(col: str) -> float:
+        values = pd.to_numeric(df[col], errors="coerce").abs()
+        return float(values.max()) if values.notna().any() else 0.0
+
+    largest = max((size(c) for c in present), default=0.0)
+    return [c for c in present if size(c) >= 0.01 * largest] or present
 
 
 def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
     """Columns printed on the terminal: the case, the swept values as set, and a few main
-    results (mean total loss, over-skidding, the first housing temperature and its rise, when
-    present; else the largest loss columns, then the others); and how many result columns
-    are left out."""
+    results (mean total loss, the over-skidding extremes (:func:`_slip_columns`), the first
+    housing temperature and, with one slip column, its rise, when present; else the
+    largest loss columns, then the others); and how many result columns are left out."""
     params = [c for c in df.columns if c in swept
               or any(c.startswith(p + " [") for p in swept)]
     results = [c for c in df.columns if c != "case" and c not in params]
-    chosen = [c for c in _MAIN_RESULTS if c in results]
-    chosen += [c for c in results if "housing" in c and c.startswith(("final", "rise"))][:2]
+    chosen = [c for c in _MAIN_RESULTS if c in results] + _slip_columns(df, results)
+    housing = [c for c in results if "housing" in c and c.startswith(("final", "rise"))][:2]
+    # the first housing's final temperature, and its rise while there is room (two slip
+    # columns leave it out: final minus the initial temperature, both in summary.csv)
+    chosen += housing[:1]
+    if len(chosen) < max_results:
+        chosen += housing[1:]
 
     def weight(c: str) -> tuple[int, float]:
         # fill with the largest loss columns first (a source that books 0 W in every case,

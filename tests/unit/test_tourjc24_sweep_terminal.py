@@ -1,0 +1,47 @@
+"""Tour E (session 24): the sweep's terminal table shows the cage slip that matters.
+
+An oil-flow sweep of a skidding NU 214 (5000 r/min, 0.5-8 kN, 0.5-8 L/min) printed only
+``max over-skidding [%]``, -0.005 to -0.02 % in every case, while its cage skidded by 20 to
+41 % (``min over-skidding [%]``, in summary.csv only). Numbers below are that sweep's.
+"""
+
+from __future__ import annotations
+
+import pandas as pd
+
+from thermobearing.commands.sweep import terminal_columns
+
+
+def _table(max_os: list[float], min_os: list[float]) -> pd.DataFrame:
+    return pd.DataFrame({
+        "case": ["a", "b", "c"], "supply.flow": ["0.5 L/min", "2 L/min", "8 L/min"],
+        "supply.flow [L/min]": [0.5, 2.0, 8.0],
+        "mean total loss [W]": [604.6, 841.0, 1154.4],
+        "churning_elements [W]": [181.6, 301.9, 491.1],
+        "max over-skidding [%]": max_os, "min over-skidding [%]": min_os,
+        "final n.housing [degC]": [78.8, 68.2, 63.3],
+        "rise over initial n.housing [K]": [38.8, 28.2, 23.3]})
+
+
+def test_a_skidding_roller_bearing_shows_its_skid_not_the_noise_of_max():
+    df = _table([-0.0059, -0.0052, -0.0060], [-23.0, -26.3, -33.0])
+    shown, hidden = terminal_columns(df, ["supply.flow"])
+    assert "min over-skidding [%]" in shown and "max over-skidding [%]" not in shown
+    assert shown[-4:] == ["mean total loss [W]", "min over-skidding [%]",
+                          "final n.housing [degC]", "rise over initial n.housing [K]"]
+    assert hidden == 2
+
+
+def test_a_bearing_that_skids_and_over_skids_shows_both():
+    # the QJ1044 rig: skids at 0 kN axial, over-skids at 2-8 kN (tour sweep 5-60 L/min)
+    df = _table([10.8, 8.6, 5.3], [-34.5, -54.2, -68.0])
+    shown, hidden = terminal_columns(df, ["supply.flow"])
+    assert shown[-4:] == ["mean total loss [W]", "max over-skidding [%]",
+                          "min over-skidding [%]", "final n.housing [degC]"]
+    assert hidden == 2   # the rise (final minus initial) and the churning, in summary.csv
+
+
+def test_an_over_skidding_bearing_keeps_max():
+    df = _table([10.8, 8.6, 5.3], [0.0, 0.0, 0.0])
+    shown, _ = terminal_columns(df, ["supply.flow"])
+    assert "max over-skidding [%]" in shown and "min over-skidding [%]" not in shown
