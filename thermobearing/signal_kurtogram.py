@@ -66,9 +66,13 @@ def kurtogram_bands(x, sampling_rate: float, n_bands: int = 1, *,
     # SK is scale-free, its fourth moments are not representable beyond |x| ~ 1e+-75:
     # analysed at unit peak (a record peaking at 1e80 or 1e-90 had every SK NaN)
     arr = arr / float(np.max(np.abs(arr)))
-    cells: list[tuple[float, float, float]] = []
+    cells: list[tuple[float, float, float, int, int]] = []
     table = []
     nyq = fs / 2
+    # cell edges in whole units of fs / L (L: the window lengths' least common multiple):
+    # whether two cells overlap or only touch is decided exactly (in Hz, adjacent cells of
+    # two window lengths overlapped by an ulp at some sampling rates and not at others)
+    unit = math.lcm(*(int(w) for w in window_lengths))
     for nw in window_lengths:
         if nw * 8 > arr.size or 2 * fs / nw < min_bandwidth:
             continue
@@ -77,18 +81,26 @@ def kurtogram_bands(x, sampling_rate: float, n_bands: int = 1, *,
             sk = np.where(m2 > 0, m4 / np.maximum(m2, 1e-300) ** 2 - 2.0, 0.0)
         table.append((f, sk))
         half = fs / nw
-        ok = (f - half >= min_frequency) & (f + half <= nyq) & (f - half > 0)
-        cells += [(float(sk[i]), float(f[i]), 2 * half) for i in np.flatnonzero(ok)]
+        # the cell of bin k spans bins k - 1 .. k + 1: inside (0, Nyquist] in whole bins
+        # (k > 1, 2 (k + 1) <= nw), exact whatever fs is (in Hz, the top cell's edge
+        # (k + 1) fs / nw = fs / 2 came out a few ulp above or below Nyquist with fs)
+        k = np.arange(f.size)
+        ok = (f - half >= min_frequency) & (2 * (k + 1) <= nw) & (k > 1)
+        per = unit // int(nw)
+        cells += [(float(sk[i]), float(f[i]), 2 * half, (int(i) - 1) * per, (int(i) + 1) * per)
+                  for i in np.flatnonzero(ok)]
     if not cells:
         raise InputError("band", f"min_frequency {min_frequency:g} Hz, min_bandwidth "
                          f"{min_bandwidth:g} Hz",
                          f"room for such a band below Nyquist ({nyq:g} Hz)")
     cells.sort(key=lambda c: -c[0])
     chosen: list[KurtogramResult] = []
-    for sk_c, centre, bw in cells:
-        lo, hi = centre - bw / 2, centre + bw / 2
-        if any(lo < k.band[1] and hi > k.band[0] for k in chosen):
+    taken: list[tuple[int, int]] = []
+    for sk_c, centre, bw, lo_u, hi_u in cells:
+        if any(lo_u < b and hi_u > a for a, b in taken):
             continue
+        taken.append((lo_u, hi_u))
+        lo, hi = centre - bw / 2, centre + bw / 2
         chosen.append(KurtogramResult((lo, hi), centre, bw, sk_c,
                                       tuple(int(w) for w in window_lengths), tuple(table)))
         if len(chosen) == n_bands:
