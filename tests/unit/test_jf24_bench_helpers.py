@@ -113,3 +113,20 @@ def test_time_at_error_interpolates_log_log_and_never_extrapolates(bm1):
     assert np.isnan(bm1.time_at_error(curve, 1e-5))
     assert np.isnan(bm1.time_at_error(curve, 1e-1))
     assert np.isnan(bm1.time_at_error([], 1e-3))
+
+
+def test_bm8_anchor_csr_reads_the_ball_pass_line():
+    """BM-8's anchor estimate: the highest envelope-spectrum line in the ball-pass window,
+    over Z and the shaft frequency, to the FFT bin; a stronger line outside the window (the
+    shaft's fifth harmonic, 150 Hz beyond its 25-109 Hz) is not taken."""
+    bm8 = _load("bm8_vibration")
+    fs, n = 1000.0, 2000  # 0.5 Hz bins
+    shaft, z, csr = 30.0, 7, 0.4
+    t = np.arange(n) / fs
+    f_bp = z * 0.37 * shaft  # the cage 7.5 % slower than pure rolling: 77.7 Hz
+    env = np.cos(2 * np.pi * f_bp * t) + 3.0 * np.cos(2 * np.pi * 5 * shaft * t)
+    spec = np.abs(np.fft.rfft(env * np.hanning(n)))
+    got = bm8.anchor_csr(spec, n, fs, shaft, z, csr)
+    assert abs(got * z * shaft - f_bp) <= 0.5 * fs / n  # within half a bin
+    assert abs(got / 0.37 - 1.0) < 0.25 / f_bp + 1e-12
+    assert np.isnan(bm8.anchor_csr(spec, n, fs, shaft, z, csr, search=(10.0, 10.001)))
