@@ -261,8 +261,12 @@ def rib_columns(bearing: Any, details: Mapping[str, Any]) -> dict[str, Any]:
     face PV [MPa m/s]`` (time- and roller-mean P |v|, paper 003 eqs. 21-24) and ``left /
     right face heat [W]`` (all rollers), ``rib slide speed [m/s]``, ``dynamics orbits [-]``
     (empty without dynamics); ``slip speed [m/s]`` (eq. 25, the dynamics' time mean, else
-    the kinematic state's); ``rib heat [W]`` (the source's component: thrust + drag + both
-    faces) and ``heat to rollers [-]`` (its share to the "elements" role)."""
+    the kinematic state's); ``rib heat [W]`` (the source's power: thrust + drag + both
+    faces + the outer rib) and ``heat to rollers [-]`` (the inner rib's share to the
+    "elements" role). A bearing ribbed on both rings under an axial load (NJ / NUP) also
+    presses the outer rib: ``outer rib slide speed [m/s]`` (roller mean |v_o|) and ``outer
+    rib heat [W]`` (all rollers, its own loss component; :mod:`thermobearing.rib_outer`),
+    empty otherwise."""
     from .heat_sources.rib import thrust_contact
     from .rib import rib_geometry
 
@@ -286,6 +290,8 @@ def rib_columns(bearing: Any, details: Mapping[str, Any]) -> dict[str, Any]:
             "thrust slide speed [m/s]": slide,
             "thrust PV [MPa m/s]": pressure * slide / 1e6,
             "thrust heat [W]": float(d.get("thrust_heat", math.nan)),
+            "outer rib slide speed [m/s]": float(d.get("outer_thrust_slide_speed", math.nan)),
+            "outer rib heat [W]": float(d.get("outer_thrust_heat", math.nan)),
             "drag heat [W]": math.nan if dyn else float(d.get("drag_heat", math.nan)),
             "left face PV [MPa m/s]": dynamic("pv_left", 1e-6),
             "right face PV [MPa m/s]": dynamic("pv_right", 1e-6),

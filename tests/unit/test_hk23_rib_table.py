@@ -87,7 +87,8 @@ want = ["losses"]
 RIB_COLUMNS = [
     "rib model", "roller dynamics", "friction coefficient [-]", "elements temperature [degC]",
     "thrust normal force [N]", "thrust max pressure [MPa]", "thrust contact area [mm^2]",
-    "thrust slide speed [m/s]", "thrust PV [MPa m/s]", "thrust heat [W]", "drag heat [W]",
+    "thrust slide speed [m/s]", "thrust PV [MPa m/s]", "thrust heat [W]",
+    "outer rib slide speed [m/s]", "outer rib heat [W]", "drag heat [W]",
     "left face PV [MPa m/s]", "right face PV [MPa m/s]", "left face heat [W]",
     "right face heat [W]", "rib slide speed [m/s]", "dynamics orbits [-]",
     "slip speed [m/s]", "rib heat [W]", "heat to rollers [-]"]
@@ -139,7 +140,7 @@ def test_the_rib_heat_is_the_loss_tables_rib_friction_and_its_parts_add_up(reduc
     booked = _rib_losses(res.tables["losses"])
     np.testing.assert_allclose(rib["rib heat [W]"].to_numpy(), booked.to_numpy(), rtol=1e-12)
     # no roller dynamics: the heat is the thrust share plus the lubricant drag (eq. 14)
-    parts = rib["thrust heat [W]"] + rib["drag heat [W]"]
+    parts = rib["thrust heat [W]"] + rib["drag heat [W]"] + rib["outer rib heat [W]"].fillna(0.0)
     np.testing.assert_allclose(parts.to_numpy(), rib["rib heat [W]"].to_numpy(), rtol=1e-12)
     assert (rib["drag heat [W]"] > 0).all() and (rib["thrust heat [W]"] > 0).all()
     # the dynamics' columns are empty, not 0: no dynamics ran
@@ -242,7 +243,8 @@ def test_the_coupled_model_books_its_face_heats_and_pv_in_the_table():
     rib = res.tables["rib"].iloc[0]
     assert rib["rib model"] == "coupled" and rib["roller dynamics"] == "coupled"
     assert math.isnan(rib["drag heat [W]"])  # in the face heats
-    parts = rib["thrust heat [W]"] + rib["left face heat [W]"] + rib["right face heat [W]"]
+    parts = (rib["thrust heat [W]"] + rib["left face heat [W]"] + rib["right face heat [W]"]
+             + (0.0 if math.isnan(rib["outer rib heat [W]"]) else rib["outer rib heat [W]"]))
     assert parts == pytest.approx(rib["rib heat [W]"], rel=1e-12)
     assert rib["rib heat [W]"] == pytest.approx(float(_rib_losses(res.tables["losses"]).iloc[0]),
                                                 rel=1e-12)

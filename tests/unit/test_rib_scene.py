@@ -13,12 +13,17 @@ from thermobearing.simulation import Simulation
 SCENE = Path(__file__).resolve().parents[2] / "configs" / "scenes" / "crb_rib_example.toml"
 
 
-def _check(res, n_steps):
+def _check(res, n_steps, component="roller end face / rib"):
     losses = res.tables["losses"]
     rows = losses[losses["source"] == "rib_friction"]
-    # its own loss component (one row per step and heated role), positive per step
-    assert set(rows["component"]) == {"roller end face / rib"}
+    # its own loss components (one row per step and heated role), positive per step: the
+    # scene's bearing is ribbed on both rings under an axial load, so the thrust share's
+    # contact on the outer rib is a second component (thermobearing.rib_outer)
+    assert set(rows["component"]) == {"roller end face / rib", "roller end face / outer rib"}
     assert (rows["power [W]"] >= 0).all()
+    outer = rows[rows["component"] == "roller end face / outer rib"]
+    assert set(outer["role"]) == {"elements", "outer_ring"}
+    rows = rows[rows["component"] == component]
     rib = rows.groupby("step", sort=True)[["power [W]"]].sum()
     assert len(rib) == n_steps and (rib["power [W]"] > 0).all()
     # the other sources are there beside it (the rib heat is not folded into them)
@@ -44,9 +49,13 @@ def test_scene_checks_and_books_rib_heat_short_protocol():
     sim = Simulation(loads_scene(short, base_dir=SCENE.parent), progress=False)
     chain = sim.describe_chain()
     assert "heat_source: rib_friction" in chain
-    rib = _check(sim.run(), 2)
+    res = sim.run()
+    rib = _check(res, 2)
     # 0.2 -> 0.4 kN at 30000 r/min: the thrust share doubles, the rib heat rises
     assert rib[1] > 1.5 * rib[0]
+    # the outer rib's thrust share is proportional to the axial load (same kinematics)
+    outer = _check(res, 2, component="roller end face / outer rib")
+    assert outer[1] == pytest.approx(2.0 * outer[0], rel=0.05)
 
 
 @pytest.mark.slow

@@ -58,9 +58,16 @@ rib slide speed of the model's spins (coupled: the time- and roller-mean |v_i - 
 the integration; reduced: the kinematic state's spins). The thrust share is superposed on
 the dynamics (it does not act back on the skew). A bearing with ribs on one ring only
 (paper 003's: inner ring, ``ribbed_ring = "inner"``) has no path for an axial load: a
-ValidityWarning says so and the share is booked as if an opposite rib carried it. The
-outer rib's own contact of a ``"both"``-ribbed bearing is not modelled (paper 003's
-geometry has the inner rib only).
+ValidityWarning says so and the share is booked as if an opposite rib carried it. In a
+``"both"``-ribbed bearing (NJ / NUP) the opposite rib is on the outer ring and each roller
+presses it with the same Q: its own loss component ``"roller end face / outer rib"``,
+mu Q |v_o| per roller at the kinematic state's spins and cage speed, the contact of paper
+003 eqs. 10-11, 24 mirrored onto the outer rib (:mod:`thermobearing.rib_outer`: same rib
+angle and crown radius, concave rib cone), its heat split between the rollers and the
+"outer_ring" by Blok's partition. Until 2026-11-24 it was not booked: about half of the
+thrust heat of such a bearing was missing (the two contacts slide at similar speeds,
+D_w/2 - rho from the raceways). The lubricant drag of eq. 14 and the skew contacts stay
+the inner ribs' (paper 003's model); the outer rib's drag is not modelled.
 
 Energy: the dynamics' heat is the work rate of the rib forces the integrator applies
 (force x sliding speed, :mod:`~thermobearing.skidding.roller_dynamics_heat`; per face
@@ -91,20 +98,25 @@ dynamics' time mean, without them the kinematic state's, :func:`inner_slip_speed
 ``rib_slide_speed``, ``dynamics_orbits``; ``total_heat`` [W] = ``thrust_heat`` +
 ``drag_heat`` + ``heat_left`` + ``heat_right`` (those present), the component's power;
 ``temperature`` [K] (the "elements" temperature the models ran at), ``n_rollers``,
-``element_share``. The thrust share's pressure and contact area are Hertz's at Q
-(:func:`thrust_contact`, computed when the table is written, not in the heat evaluation).
+``element_share``; with an outer rib (``"both"``, thrust > 0) ``outer_thrust_heat`` [W]
+(all rollers), ``outer_thrust_slide_speed`` [m/s] (roller-mean |v_o|) and
+``outer_element_share``, and ``total_heat`` holds it. The thrust share's pressure and
+contact area are Hertz's at Q (:func:`thrust_contact`, computed when the table is written,
+not in the heat evaluation).
 """
 
 from __future__ import annotations
 
 import math
 import warnings
+from typing import NamedTuple
 
 import numpy as np
 
 from ..errors import ConvergenceError, InputError, ValidityWarning, check_positive, check_range
 from ..hertz import point_contact
 from ..rib import DEFAULT_RIB_FRICTION, lubricant_drag, rib_geometry, rib_sliding_speed
+from ..rib_outer import outer_contact_radius, outer_rib_sliding_speed, outer_thrust_contact
 from ..skidding.roller_dynamics_heat import (
     DEFAULT_CONVERGENCE,
     DEFAULT_ORBITS,
@@ -277,7 +289,8 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
     # thrust share (one rib per roller carries the axial load)
     fa = abs(float(op.axial_load))
     q = fa / (z * math.cos(geom.rib_angle)) if fa > 0 else 0.0
-    if fa > 0 and getattr(b, "ribbed_ring", "both") != "both":
+    both_ribbed = getattr(b, "ribbed_ring", "both") == "both"
+    if fa > 0 and not both_ribbed:
         warnings.warn(ValidityWarning(
             f"rib_friction: {getattr(b, 'name', 'the bearing')} has ribs on the "
             f"{b.ribbed_ring} ring only, so an axial load has no path through it (paper 003 "
@@ -397,15 +410,68 @@ def rib_friction(ctx: HeatContext) -> HeatResult:
                                      b.roller_material, b.ring_material))
     check_range(f"options[{name}].element_share", share, 0.0, 1.0)
     comp = "roller end face / rib"
+    outer = _outer_rib_thrust(geom, b, mu, q, wo, wc, spin) if both_ribbed else None
+    if outer is not None:
+        pairs += (outer.pair,)
+        details.update(outer_thrust_heat=outer.heat, outer_thrust_slide_speed=outer.slide,
+                       outer_element_share=outer.share, total_heat=total + outer.heat)
     if dynamic > 0:
         # time-mean power of the dynamics' rib forces, as F [W/(1 m/s)] x 1 m/s
         pairs += (ForcePair(f"rib contacts and drag ({model} dynamics, time mean)",
                             np.array(dynamic), np.array(-1.0)),)
+    roles = {comp: {"elements": share * total, "inner_ring": (1.0 - share) * total}}
+    if outer is not None:
+        roles[OUTER_COMPONENT] = {"elements": outer.share * outer.heat,
+                                  "outer_ring": (1.0 - outer.share) * outer.heat}
+    by_role: dict[str, float] = {}
+    for split in roles.values():
+        for role, power in split.items():
+            by_role[role] = by_role.get(role, 0.0) + power
     return HeatResult(
         source=name,
-        power_by_role={"elements": share * total, "inner_ring": (1.0 - share) * total},
-        components={comp: total},
-        loss_class={comp: "load_dependent"},
+        power_by_role=by_role,
+        components={c: sum(split.values()) for c, split in roles.items()},
+        loss_class=dict.fromkeys(roles, "load_dependent"),
         forces={"rib_friction_force": friction},
         force_pairs=pairs,
-        details={**details, "element_share": share})
+        details={**details, "element_share": share},
+        component_roles=roles)
+
+
+#: loss component of the thrust share's contact on the outer-ring rib (``ribbed_ring =
+#: "both"``), beside the inner rib's "roller end face / rib"
+OUTER_COMPONENT = "roller end face / outer rib"
+
+
+class OuterRibThrust(NamedTuple):
+    """The thrust share's contact on the outer-ring rib of a both-ribbed bearing:
+    ``heat`` [W] (all rollers), ``slide`` [m/s] (roller-mean |v_o|), ``share`` [-] (Blok's
+    partition to the rollers), ``pair`` (the friction force and the slide it acts across)."""
+
+    heat: float
+    slide: float
+    share: float
+    pair: ForcePair
+
+
+def _outer_rib_thrust(geom: object, bearing: object, mu: float, q: float, outer_speed: float,
+                      cage_speed: float, spin: np.ndarray) -> OuterRibThrust | None:
+    """The outer rib's share of an axial load (:mod:`thermobearing.rib_outer`): each roller
+    presses the opposite outer rib with the same Q [N] as the inner rib, at the kinematic
+    state's spins and cage speed (the roller dynamics are integrated against the inner ribs
+    only). Heat mu Q |v_o| per roller; Blok's partition between the end face (speed
+    -omega_r rho) and the rib ((omega_o - omega_c) r_o) at the contact's sqrt(a b). None
+    without thrust."""
+    if q <= 0.0:
+        return None
+    v = np.asarray(outer_rib_sliding_speed(geom, outer_speed, cage_speed, spin), float)
+    friction = np.full(v.shape, mu * q)
+    heat = float(np.sum(friction * np.abs(v)))
+    _, _, half_width = outer_thrust_contact(geom, q)
+    v_rib = (outer_speed - cage_speed) * outer_contact_radius(geom)
+    v_end = -float(np.mean(spin)) * float(geom.contact_arm)
+    share = float(blok_partition(0.5 * (v_rib + v_end), v_end - v_rib, half_width,
+                                 bearing.roller_material, bearing.ring_material))
+    pair = ForcePair("outer rib on roller end face (thrust share, kinematic spins)",
+                     friction * np.sign(v), -v)
+    return OuterRibThrust(heat, float(np.mean(np.abs(v))), share, pair)
