@@ -19,7 +19,10 @@ Usage: python benchmarks/bm5_skidding.py [--quick] [--nmap N] [--z 8,16,32] [--j
 The anchor times newton_block and root(hybr) ``--anchor-repeat`` times per point, interleaved
 (default 5; medians and the spread over the repeats are printed) and least_squares once; the
 hybr ratio is printed over all anchor points (hybr failures counted at their time) and over
-the points where both methods converged.
+the points where both methods converged. Whether the methods found the same state: each
+anchor record's ``csr_difference`` is the largest |CSR / CSR_newton - 1| over the points where
+both converged (the cage speed of the anchor's unscaled solution against newton_block's), and
+``error`` its largest residual norm (newton_block's record: its own).
 """
 
 from __future__ import annotations
@@ -116,7 +119,8 @@ def run_scipy(Z, points, temperature, repeat=5):
     timing is kept: the caller reports medians and the spread over the repeats (a
     least-of-3 per method timed the two methods minutes apart on the shared
     machine, and the printed ratio followed the machine's load). least_squares (seconds per
-    point) runs once. Returns [((speed, Fa), {method: (converged, [times], residual)})]."""
+    point) runs once. Returns [((speed, Fa), {method: (converged, [times], residual, cage
+    speed [rad/s] of the solution or NaN)})]."""
     from scipy.optimize import least_squares, root
 
     from thermobearing.errors import ConvergenceError
@@ -136,19 +140,21 @@ def run_scipy(Z, points, temperature, repeat=5):
         def residual(sysm, X0=X0, G0=G0):
             return lambda y: sysm.full_residual(y, X0, G0)
 
-        rec = {"newton": [True, [], 0.0], "root_hybr": [True, [], 0.0]}
+        rec = {"newton": [True, [], 0.0, math.nan], "root_hybr": [True, [], 0.0, math.nan]}
         for _ in range(max(1, repeat)):
             sysm = ball_residual_system(b, models, w, 1000.0, fa, Z)
             t0 = time.process_time()
             try:
-                _, _, nrm, it = newton_block(sysm, X0, G0)
-                ok = True
+                _, G_n, nrm, it = newton_block(sysm, X0, G0)
+                ok, wc = True, float(G_n[2])
             except ConvergenceError as err:
-                ok, nrm = False, err.residual
+                ok, nrm, wc = False, err.residual, math.nan
             rec["newton"][1].append(time.process_time() - t0)
             rec["newton"][0] &= ok
             rec["newton"][2] = nrm
-            f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
+            rec["newton"][3] = wc
+            sys_h = ball_residual_system(b, models, w, 1000.0, fa, Z)
+            f = residual(sys_h)
             t0 = time.process_time()
             try:
                 sol = root(f, y0, method="hybr",
@@ -156,23 +162,28 @@ def run_scipy(Z, points, temperature, repeat=5):
                 t_h = time.process_time() - t0
                 nrm = float(np.linalg.norm(f(sol.x)))
                 ok = bool(nrm < 1e-7)
+                wc = float(sys_h.unscale(sol.x, X0, G0)[1][2])
             except Exception as err:  # noqa: BLE001 - count any failure of the anchor
-                t_h, ok, nrm = time.process_time() - t0, False, float("nan")
+                t_h, ok, nrm, wc = time.process_time() - t0, False, float("nan"), math.nan
                 del err
             rec["root_hybr"][1].append(t_h)
             rec["root_hybr"][0] &= ok
             rec["root_hybr"][2] = nrm
-        rec = {k: (v[0], v[1], v[2]) for k, v in rec.items()}
-        f = residual(ball_residual_system(b, models, w, 1000.0, fa, Z))
+            rec["root_hybr"][3] = wc
+        rec = {k: (v[0], v[1], v[2], v[3]) for k, v in rec.items()}
+        sys_l = ball_residual_system(b, models, w, 1000.0, fa, Z)
+        f = residual(sys_l)
         t0 = time.process_time()
         try:
             sol = least_squares(f, y0, method="trf", xtol=1e-12, ftol=1e-14, gtol=1e-14,
                                 max_nfev=50 * (Z * 6 + 3))
             t_l = time.process_time() - t0
             nrm = float(np.linalg.norm(f(sol.x)))
-            rec["least_squares_trf"] = (bool(nrm < 1e-7), [t_l], nrm)
+            rec["least_squares_trf"] = (bool(nrm < 1e-7), [t_l], nrm,
+                                        float(sys_l.unscale(sol.x, X0, G0)[1][2]))
         except Exception as err:  # noqa: BLE001
-            rec["least_squares_trf"] = (False, [time.process_time() - t0], float("nan"))
+            rec["least_squares_trf"] = (False, [time.process_time() - t0], float("nan"),
+                                        math.nan)
             del err
         out.append(((n, fa), rec))
     return out
@@ -199,6 +210,15 @@ def thin_anchor_points(pts, n_loads, n):
     step = max(1, len(rest) // max(1, n - len(picked)))
     picked += rest[::step][:n - len(picked)]
     return picked
+
+
+def csr_difference(res, meth) -> float:
+    """Largest |wc_meth / wc_newton - 1| over the anchor points where both converged (the
+    cage speed, so the CSR, of the two solutions of the same residual) [-]; NaN where no
+    point has both."""
+    d = [abs(rec[meth][3] / rec["newton"][3] - 1.0) for _, rec in res
+         if rec["newton"][0] and rec[meth][0] and rec["newton"][3] != 0.0]
+    return float(max(d)) if d else math.nan
 
 
 def anchor_ratios(res, meth):
@@ -423,6 +443,7 @@ def main(argv=None) -> int:
                                 error=float(np.nanmax([rec[meth][2] for _, rec in res])),
                                 ratio_vs_anchor=float(tm / tn), ratio_both_converged=r_both,
                                 ratio_min=lo, ratio_max=hi, points_both_converged=nboth,
+                                csr_difference=csr_difference(res, meth),
                                 failures=sum(not rec[meth][0] for _, rec in res),
                                 points=len(res), repeats=args.anchor_repeat))
         records.append(dict(benchmark="bm5_skidding", case=f"anchor_subset_Z{Z}",
@@ -474,7 +495,8 @@ def main(argv=None) -> int:
                 spread = (f", per-repeat {lo:.1f}-{hi:.1f}x" if m == "root_hybr" else "")
                 print(f"  Z={z:2d} {m} / newton_block = {r_all:.1f}x over all points{spread}; "
                       f"{r_both:.1f}x over the {nboth} points where both converged "
-                      f"(target >= {target}x)")
+                      f"(target >= {target}x); same state there: max |CSR/CSR_newton - 1| "
+                      f"{csr_difference(anchor_res[z], m):.1e}")
         if warm16:
             meds = [v for (z, _), v in small_med.items() if z == 16]
             print(f"  Z=16 warm +2 % load step: {1e3 * max(warm16):.2f} ms per point (mean, "

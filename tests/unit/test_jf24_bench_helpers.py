@@ -130,3 +130,17 @@ def test_bm8_anchor_csr_reads_the_ball_pass_line():
     assert abs(got * z * shaft - f_bp) <= 0.5 * fs / n  # within half a bin
     assert abs(got / 0.37 - 1.0) < 0.25 / f_bp + 1e-12
     assert np.isnan(bm8.anchor_csr(spec, n, fs, shaft, z, csr, search=(10.0, 10.001)))
+
+
+def test_bm5_csr_difference_over_the_points_both_solved():
+    """BM-5's same-state check: the largest relative cage-speed difference of an anchor's
+    solution from newton_block's, over the points where both converged only."""
+    bm5 = _load("bm5_skidding")
+    res = [((300.0, 4e4), {"newton": (True, [1.0], 1e-12, 10.0),
+                           "root_hybr": (True, [2.0], 1e-9, 10.0 * (1 + 2e-8))}),
+           ((300.0, 200.0), {"newton": (True, [1.0], 1e-12, 5.0),
+                             "root_hybr": (False, [9.0], 1e-3, 7.0)}),  # failed: left out
+           ((3000.0, 200.0), {"newton": (False, [1.0], 1e-3, float("nan")),
+                              "root_hybr": (True, [2.0], 1e-9, 50.0)})]  # newton failed
+    assert bm5.csr_difference(res, "root_hybr") == pytest.approx(2e-8, rel=1e-6)
+    assert np.isnan(bm5.csr_difference(res[1:], "root_hybr"))
