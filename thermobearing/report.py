@@ -26,6 +26,7 @@ import io
 import math
 import re
 import textwrap
+import warnings
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -331,20 +332,22 @@ def fig_whatif(summary: pd.DataFrame, x: str, ys: Sequence[str],
     to ``_LEGEND_INSIDE`` curves it sits in the first panel, beyond that outside the
     panels on the right (inside, nine curves of a 4 x 3 x 3 sweep hid the first panel's
     data). Beyond ten curves the line style changes with each colour cycle. A text ``x``
-    (a lubricant preset) is drawn at one position per value, labelled with it, in natural
-    order (:func:`natural_key`). The panels stand in rows of at most three.
+    (a lubricant preset) is drawn at one position per value, labelled with it, oils in
+    viscosity order (:func:`category_order`). The panels stand in rows of at most three.
     """
     by = [group] if isinstance(group, str) else list(group or [])
     categories: list[Any] = []
     if not pd.api.types.is_numeric_dtype(summary[x]):
-        # text values (lubricant presets): one position per value, in natural order (the
-        # numbers in the names compared as numbers: ISO_VG32 < ISO_VG68 < ISO_VG100), not
-        # in the order typed: "--set lubricant.preset=ISO_VG68,ISO_VG32,ISO_VG46" drew
-        # the grades 68, 32, 46 and each curve zigzagged
-        categories = sorted(dict.fromkeys(summary[x].tolist()), key=natural_key)
+        # text values (lubricant presets): one position per value, oils in viscosity order
+        # (:func:`category_order`), not in the order typed: "--set lubricant.preset=
+        # ISO_VG68,ISO_VG32,ISO_VG46" drew the grades 68, 32, 46 and each curve zigzagged
+        categories = category_order(summary[x].tolist(), x)
         summary = summary.assign(**{x: summary[x].map({c: i for i, c in
                                                        enumerate(categories)})})
-    groups = list(summary.groupby(by)) if by else [((), summary)]
+    # the curves (and the legend) in the order of their values, oils by viscosity (the
+    # groupby's text sort put "60, ISO_VG100" before "60, ISO_VG32")
+    summary = sort_cases(summary, by)
+    groups = list(summary.groupby(by, sort=False)) if by else [((), summary)]
     outside = len(groups) > _LEGEND_INSIDE
     # at most _WHATIF_COLUMNS panels a row: six in one row made a 3000 x 400 px strip that
     # the report shrank to unreadable panels
@@ -421,6 +424,49 @@ def natural_key(value: Any) -> tuple[tuple[int, Any], ...]:
     ``"ISO_VG68"``)."""
     parts = re.split(r"(\d+)", str(value))
     return tuple((0, int(p)) if p.isdigit() else (1, p.lower()) for p in parts if p)
+
+
+#: reference temperature [K] of the oil order: ISO 3448 grades oils by nu at 40 degC
+_GRADE_TEMPERATURE = 313.15
+
+
+def category_order(values: Sequence[Any], column: str = "") -> list[Any]:
+    """The distinct text values of a swept ``column`` in the order the sweep report draws
+    and tabulates them: oils (``lubricant.preset``, ``lubricant.path``) by their kinematic
+    viscosity at 40 degC, the ISO 3448 grade's reference (thinnest first; the README's
+    "viscosity order"), other text in natural order (:func:`natural_key`), as are oils of
+    which one cannot be loaded (a moved file). Natural order alone put MIL_PRF_23699
+    (27.6 mm^2/s at 40 degC) after ISO_VG46, and the table's text sort put ISO_VG100
+    before ISO_VG32."""
+    distinct = sorted(dict.fromkeys(values), key=natural_key)
+    if not column.startswith("lubricant."):
+        return distinct
+    from .errors import ThermobearingError
+    from .lubricant import load_lubricant
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            nu = {v: float(load_lubricant(str(v)).kinematic_viscosity(_GRADE_TEMPERATURE))
+                  for v in distinct}
+    except (ThermobearingError, OSError, ValueError):
+        return distinct
+    return sorted(distinct, key=lambda v: nu[v])   # stable: equal grades stay natural
+
+
+def sort_cases(summary: pd.DataFrame, params: Sequence[str]) -> pd.DataFrame:
+    """The rows of a sweep summary sorted by the swept columns ``params`` in turn: numbers
+    ascending, text in :func:`category_order` (oils by viscosity); the index renumbered."""
+    params = [p for p in params if p in summary.columns]
+    if not params or summary.empty:
+        return summary.reset_index(drop=True)
+    ranks = {p: {v: i for i, v in enumerate(category_order(summary[p].tolist(), p))}
+             for p in params if not pd.api.types.is_numeric_dtype(summary[p])}
+
+    def key(col: pd.Series) -> pd.Series:
+        return col.map(ranks[col.name]) if col.name in ranks else col
+
+    return summary.sort_values(params, key=key, kind="stable").reset_index(drop=True)
 
 
 #: what-if curves up to which the legend sits inside the first panel

@@ -392,7 +392,9 @@ def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | Non
     sources = summary_sources(summary.columns)
     if not sources:
         return None
-    df = summary.sort_values(params).reset_index(drop=True) if params else summary
+    from .report import sort_cases  # oils in viscosity order, as in the what-if panels
+
+    df = sort_cases(summary, params) if params else summary
     colours = source_colours(sources)
     fig, ax = plt.subplots(figsize=(max(6.0, 0.35 * len(df) + 3.0), 4.2),
                            layout="constrained")

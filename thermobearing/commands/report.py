@@ -85,7 +85,7 @@ def sweep_report(folder: Path) -> Path:
     conditions (when the folder has the sweep's ``scene.toml``), the loss by source of every
     case as stacked bars, what-if curves, loss maps (sources named in words, in the order
     of the run reports) and the summary table (powers rounded for a reader)."""
-    from ..report import fig_loss_maps, fig_whatif, figure_html
+    from ..report import fig_loss_maps, fig_whatif, figure_html, sort_cases
     from ..report_losses import fig_sweep_breakdown, readable, source_label, summary_sources
     from ..report_sections import html_table
     from ..simulation_summary import MEAN_TOTAL_LOSS, current_result_name
@@ -112,6 +112,9 @@ def sweep_report(folder: Path) -> Path:
              and c.endswith(" [W]")]
     ordered = front + [f"{s} [W]" for s in summary_sources(results)]
     df = df[["case", *pcols, *ordered, *(c for c in results if c not in ordered)]]
+    # the rows in the order of the swept values, oils by viscosity, as the figures draw
+    # them (they stood in the order typed: 33, 5, 10 L/min; ISO_VG68 before ISO_VG32)
+    df = sort_cases(df, pcols)
     results = [c for c in df.columns if c not in pcols and c != "case"]
     figs: dict[str, bytes] = {}
     totals = [c for c in results if c.startswith("mean total loss") and c.endswith("[W]")]
