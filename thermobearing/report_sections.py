@@ -245,9 +245,10 @@ def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -
       guide land of a cage guided on its rolling elements (no land: ``cage_guide.py``);
       the tables showed these zeros without a word (a CRB run's cage pockets read 0 W);
     * the outer rib of a roller bearing ribbed on both rings under an axial load: the rib
-      source models the inner rib's contact only (paper 003's geometry), so the friction
-      of the outer rib, which carries the same thrust back to the outer ring, is not in
-      the losses (``heat_sources/rib.py``, Thrust).
+      source books its thrust contact (component "roller end face / outer rib", at the
+      kinematic state's spins, :mod:`thermobearing.rib_outer`), but the roller dynamics
+      (skew contacts) and the lubricant drag run on the inner ribs only (paper 003's
+      geometry; ``heat_sources/rib.py``, Thrust).
 
     ``bearings``: name -> bearing object (:func:`report_context.load_scene_bearings`)."""
     notes = list(_rolling_notes(frame, scene))
@@ -282,10 +283,11 @@ def source_notes(frame: pd.DataFrame, scene: Any, bearings: Mapping[str, Any]) -
                 if getattr(b, "ribbed_ring", None) == "both"]
         if both:
             notes.append(f"{rl.source_label('rib_friction')} of {', '.join(both)} (ribs on "
-                         "both rings): only the inner rib's contact is modelled (paper 003's "
-                         "rib geometry); the friction of the outer rib, which carries the "
-                         "same axial load back to the outer ring, is not computed: the "
-                         "totals leave it out")
+                         "both rings): the outer rib's thrust contact is booked (component "
+                         "'roller end face / outer rib', at the kinematic roller spins); the "
+                         "skew contacts of the roller dynamics and the lubricant drag are "
+                         "modelled at the inner ribs only (paper 003's rib geometry): the "
+                         "outer rib's drag and skew contacts are not in the totals")
     return notes
 
 

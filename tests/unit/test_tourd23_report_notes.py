@@ -113,13 +113,13 @@ def test_a_ball_guided_cage_is_said_to_have_no_land():
                 if n.startswith("cage guide land")]
 
 
-def test_the_outer_rib_of_a_bearing_ribbed_on_both_rings_is_said_to_be_missing():
+def test_the_outer_rib_of_a_bearing_ribbed_on_both_rings_says_what_is_modelled():
     from thermobearing.report_sections import source_notes
 
     (rib,) = [n for n in source_notes(_frame(), _scene(), {"nup": _bearing()})
               if n.startswith("roller end / rib friction")]
-    assert "of nup (ribs on both rings): only the inner rib's contact is modelled" in rib
-    assert "the totals leave it out" in rib
+    assert "of nup (ribs on both rings): the outer rib's thrust contact is booked" in rib
+    assert "the outer rib's drag and skew contacts are not in the totals" in rib
     # no thrust, or ribs on one ring only: nothing is missing
     no_thrust = _frame(**{"axial load [kN]": [0.0, 0.0]})
     for frame, scene, bearing in ((no_thrust, _scene(axial=0.0), _bearing()),
@@ -153,7 +153,7 @@ def test_the_run_report_of_the_nup_says_what_its_losses_leave_out():
                             "load dependence": d} for s, c, r, p, d in rows])
     text = losses_html(losses, {}, scene, bearings, None)
     assert "cage pockets (element / pocket friction): 0 W at every step" in text
-    assert "only the inner rib&#x27;s contact is modelled" in text
+    assert "the outer rib&#x27;s thrust contact is booked" in text
 
 
 def _sweep_folder(tmp_path: Path, skid: float = 0.0) -> Path:
@@ -191,7 +191,7 @@ def test_the_sweep_report_names_its_model_chain_and_what_a_sweep_does_not_keep(t
     head = text[:text.index("<h2>Figures</h2>")]
     assert "cage pockets (element / pocket friction): 0 W in every case" in head
     assert "raceway contacts (rolling and sliding shear): 0 W in every case" in head
-    assert "only the inner rib&#x27;s contact is modelled" in head
+    assert "the outer rib&#x27;s thrust contact is booked" in head
     assert "over-skidding 0 % in every case: race control" in head
 
 
