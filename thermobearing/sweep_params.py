@@ -192,11 +192,16 @@ def _parse_values(path: str, raw: str, scene_dict: Mapping[str, Any]) -> SweepPa
     """The values of ``--set path=raw`` (``raw`` not empty, ``path`` checked)."""
     if ":" in raw:
         numbers, unit = _split_unit(raw)
+        # "5 L/min:60 L/min:5 L/min" was refused as "a range start:stop:step", which it
+        # looked like: say where the unit goes
+        unit_here = _existing_unit(scene_dict, path)
+        form = ("a range start:stop:step of numbers with one unit after it, e.g. 10:30:10"
+                + (f" {unit_here}" if unit_here else ""))
         if not re.fullmatch(r"[-+0-9.eE:, ]+", numbers):
-            raise InputError(f"--set {path}", raw, "a range start:stop:step with one unit")
+            raise InputError(f"--set {path}", raw, form)
         parts = numbers.split(":")
         if len(parts) != 3:
-            raise InputError(f"--set {path}", raw, "a range start:stop:step")
+            raise InputError(f"--set {path}", raw, form)
         a, b, d = (_number(p, f"--set {path}") for p in parts)
         if d <= 0 or b < a:
             raise InputError(f"--set {path}", raw, "start <= stop and step > 0")

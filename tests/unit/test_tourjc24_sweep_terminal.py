@@ -8,8 +8,12 @@ An oil-flow sweep of a skidding NU 214 (5000 r/min, 0.5-8 kN, 0.5-8 L/min) print
 from __future__ import annotations
 
 import pandas as pd
+import pytest
 
 from thermobearing.commands.sweep import terminal_columns
+from thermobearing.errors import InputError
+from thermobearing.scene import load_scene
+from thermobearing.sweep import parse_set
 
 
 def _table(max_os: list[float], min_os: list[float]) -> pd.DataFrame:
@@ -45,3 +49,14 @@ def test_an_over_skidding_bearing_keeps_max():
     df = _table([10.8, 8.6, 5.3], [0.0, 0.0, 0.0])
     shown, _ = terminal_columns(df, ["supply.flow"])
     assert "max over-skidding [%]" in shown and "min over-skidding [%]" not in shown
+
+
+def test_a_range_with_a_unit_on_each_number_says_where_the_unit_goes():
+    d = load_scene().to_dict()
+    for raw in ("5 L/min:60 L/min:5 L/min", "5:60"):
+        with pytest.raises(InputError, match="one unit after it, e.g. 10:30:10 L/min"):
+            parse_set(f"supply.flow={raw}", d)
+    with pytest.raises(InputError, match=r"e.g. 10:30:10 rpm"):
+        parse_set("schedule.speed=600 rpm:1800 rpm:300 rpm", d)
+    assert parse_set("supply.flow=5:15:5 L/min", d).values == ("5 L/min", "10 L/min",
+                                                               "15 L/min")
