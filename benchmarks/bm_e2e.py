@@ -54,6 +54,12 @@ about the same length: ours is the mean CPU time of back-to-back runs filling th
 time (~20 runs), so that a slow or fast second on the shared machine does not decide a
 0.2-s timing against a 5-s one.
 
+The anchor is the cheapest setting of a ~2x rtol ladder at or below ours' error, so it may be
+more accurate (and dearer) than ours: the printed ``interpolated`` figure is LSODA's CPU time
+interpolated log-log on its K(T)-per-call curve at ours' error (as BM-1 does at 0.01 K;
+record field ``lsoda_cpu_at_ours_error``, ``ratio_at_ours_error`` against ours' median), a
+check on how much of the ratio is the ladder's step.
+
 Usage: python benchmarks/bm_e2e.py [--quick] [--json] [--out DIR] [--repeat N]
        [--lsoda-repeat N] [--pairs N]
 """
@@ -219,6 +225,8 @@ def main(argv=None) -> int:
     import thermobearing.simulation  # noqa: F401
     t_imp_here = time.perf_counter() - t0
     cold, warm = first_call_cost()
+    # (imported after the start-up timings: it imports scipy and the network package)
+    from bm1_work_precision import time_at_error
     scene = default_scene(quick=args.quick, stride=args.stride)
     case = ("qj1044_rig" + ("_quick" if args.quick else "")
             + (f"_stride{args.stride}" if args.stride else ""))
@@ -286,6 +294,12 @@ def main(argv=None) -> int:
         r["ratio_vs_anchor"] = anchor["cpu_s"] / r["cpu_s"] if anchor else None
     if anchor:
         ours["ratio_vs_anchor_median"] = anchor["cpu_s"] / ours["cpu_s_median"]
+        curve = [{"max_error_K": r["max_error_K"], "time_s": r["cpu_s"]} for r in lsoda
+                 if "per call" in r["setting"]]
+        t_at = time_at_error(curve, ours["max_error_K"])
+        ours["lsoda_cpu_at_ours_error"] = t_at if math.isfinite(t_at) else None
+        ours["ratio_at_ours_error"] = (t_at / ours["cpu_s_median"] if math.isfinite(t_at)
+                                       else None)
         # alternated pairs (ours, anchor, ours, anchor, ...): the load of the shared machine
         # drifts within minutes, so the ratio of neighbouring timings is the robust figure
         a_rtol = float(anchor["setting"].split(",")[0].split("=")[1])
@@ -361,6 +375,11 @@ def main(argv=None) -> int:
               f"best, {ours['ratio_vs_anchor_median']:.2f} x ours' median "
               f"({ours['cpu_s_median']:.3f} s of {len(ours['cpu_s_all'])} runs) "
               f"(wall {anchor['time_s'] / ours['time_s']:.2f} x; target >= 20 x)")
+        if ours["lsoda_cpu_at_ours_error"] is not None:
+            print(f"interpolated: LSODA (K(T) per call) at ours' error "
+                  f"{ours['max_error_K']:.2e} K on its rtol curve: "
+                  f"{ours['lsoda_cpu_at_ours_error']:.2f} s CPU = "
+                  f"{ours['ratio_at_ours_error']:.2f} x ours' median")
         if "ratio_alternated_median" in ours:
             lo, hi = ours["ratio_alternated_range"]
             print(f"alternated timings (ours: mean of {ours['pair_runs_of_ours']} runs, LSODA "
