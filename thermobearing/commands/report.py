@@ -90,6 +90,7 @@ def sweep_report(folder: Path) -> Path:
     from ..report_sections import html_table
     from ..simulation_summary import MEAN_TOTAL_LOSS, current_result_name
     from ..sweep_store import base_scene_mode, planned_cases
+    from .sweep import slip_columns
 
     df = _read_table(folder / "summary.csv", ("case",))
     # a folder written before the summary's rename (total loss [W], rise <node> [K])
@@ -141,18 +142,23 @@ def sweep_report(folder: Path) -> Path:
             continue  # a parameter held at one value draws no curve
         # a text x (oil grade) is drawn at one position per value by fig_whatif
         group = [p for p in pcols if p != x]
-        ys = [c for c in [MEAN_TOTAL_LOSS, "max over-skidding [%]"] if c in df
-              and not (c == "max over-skidding [%]" and rolls)]
+        ys = [c for c in [MEAN_TOTAL_LOSS] if c in df]
         # a cage slower than epicyclic (skidding: a lightly loaded roller bearing) shows in
         # the smallest over-skidding, not in the largest, which stays near 0
         # (one-step cases have min = max: the max panel shows it already)
         low, high = "min over-skidding [%]", "max over-skidding [%]"
-        if low in df and high in df:
+        slips = [] if rolls else [c for c in (high, low) if c in df]
+        if low in slips and high in slips:
             lo = pd.to_numeric(df[low], errors="coerce").to_numpy(float)
             hi = pd.to_numeric(df[high], errors="coerce").to_numpy(float)
-            if (lo < 0.0).any() and not np.allclose(lo, hi, rtol=0.0, atol=1e-9,
-                                                    equal_nan=True):
-                ys.append(low)
+            if not (lo < 0.0).any() or np.allclose(lo, hi, rtol=0.0, atol=1e-9,
+                                                   equal_nan=True):
+                slips.remove(low)
+            else:
+                # the terminal's rule: an extreme below 1 % of the other's magnitude is
+                # noise (a skidding NU 214: max -0.005 to -0.02 % beside min -20 to -41 %)
+                slips = slip_columns(df, slips)
+        ys += slips
         ys += curves
         if ys:
             figs[f"what-if: {x}"] = fig_whatif(df, x, ys, group=group)

@@ -201,7 +201,7 @@ _MAIN_RESULTS = ("mean total loss [W]",)
 _OVER_SKID = ("max over-skidding [%]", "min over-skidding [%]")
 
 
-def _slip_columns(df, results: list[str]) -> list[str]:
+def slip_columns(df, results: list[str]) -> list[str]:
     """The over-skidding extremes the terminal shows: both, unless one is negligible
     (below 1 % of the other's largest magnitude over the cases). A cylindrical roller
     bearing that skids has min over-skidding -20 to -41 % and max -0.005 to -0.02 % (NU 214,
@@ -220,13 +220,13 @@ def _slip_columns(df, results: list[str]) -> list[str]:
 
 def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
     """Columns printed on the terminal: the case, the swept values as set, and a few main
-    results (mean total loss, the over-skidding extremes (:func:`_slip_columns`), the first
+    results (mean total loss, the over-skidding extremes (:func:`slip_columns`), the first
     housing temperature and, with one slip column, its rise, when present; else the
     largest loss columns, then the others); and how many result columns are left out."""
     params = [c for c in df.columns if c in swept
               or any(c.startswith(p + " [") for p in swept)]
     results = [c for c in df.columns if c != "case" and c not in params]
-    chosen = [c for c in _MAIN_RESULTS if c in results] + _slip_columns(df, results)
+    chosen = [c for c in _MAIN_RESULTS if c in results] + slip_columns(df, results)
     housing = [c for c in results if "housing" in c and c.startswith(("final", "rise"))][:2]
     # the first housing's final temperature, and its rise while there is room (two slip
     # columns leave it out: final minus the initial temperature, both in summary.csv)
