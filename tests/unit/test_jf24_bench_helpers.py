@@ -144,3 +144,18 @@ def test_bm5_csr_difference_over_the_points_both_solved():
                               "root_hybr": (True, [2.0], 1e-9, 50.0)})]  # newton failed
     assert bm5.csr_difference(res, "root_hybr") == pytest.approx(2e-8, rel=1e-6)
     assert np.isnan(bm5.csr_difference(res[1:], "root_hybr"))
+
+
+def test_bench_table_shows_the_cpu_time_its_ratio_is_formed_from():
+    """BM-E2E / BM-7 records carry wall time in time_s and CPU time in cpu_s, their ratios
+    being of CPU times: the table shows the CPU time (it showed the wall time beside them)."""
+    from thermobearing.commands.bench import record_line
+
+    line = record_line({"case": "qj1044_rig", "method": "ours", "setting": "s",
+                        "time_s": 0.2751, "cpu_s": 0.1696, "max_error_K": 8.64e-07,
+                        "ratio_vs_anchor": 24.66})
+    assert line.endswith("cpu 0.1696 s  error 8.64e-07  ratio 24.7")
+    assert "0.2751" not in line
+    plain = record_line({"case": "c", "method": "m", "setting": "s", "time_s": 0.0109,
+                         "error": 7.37e-05, "ratio_vs_anchor": 4.08})
+    assert plain.endswith("time 0.0109 s  error 7.37e-05  ratio 4.08")

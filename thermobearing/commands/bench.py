@@ -100,11 +100,15 @@ def _number(v: object, fmt: str) -> str:
 def record_line(r: dict) -> str:
     """One benchmark record of the table: case, method, setting, time, error, ratio, and
     the record's note, which says why a setting has no time or ratio ("none within
-    target") -- the table printed ``time nan s ... ratio nan`` without it."""
+    target") -- the table printed ``time nan s ... ratio nan`` without it. A record with
+    a CPU time (``cpu_s``: BM-7, BM-E2E, whose ratios are formed from it) shows that one as
+    ``cpu``; its ``time_s`` is wall time there, which the table showed beside a ratio of CPU
+    times."""
     err = r.get("max_error_K", r.get("error"))
     ratio = r.get("ratio_vs_anchor")
+    clock = ("cpu", r["cpu_s"]) if r.get("cpu_s") is not None else ("time", r.get("time_s"))
     line = (f"  {r.get('case', '')!s:28} {r.get('method', '')!s:22} "
-            f"{r.get('setting', '')!s:14} time {_number(r.get('time_s'), '.4g')} s"
+            f"{r.get('setting', '')!s:14} {clock[0]} {_number(clock[1], '.4g')} s"
             + (f"  error {_number(err, '.3g')}" if err is not None else "")
             + (f"  ratio {_number(ratio, '.3g')}" if ratio is not None else ""))
     note = r.get("note")
