@@ -86,8 +86,18 @@ def _record(case: Case, result: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def _append(out_dir: Path, record: Mapping[str, Any]) -> None:
-    with _store_path(out_dir).open("a", encoding="utf-8") as fh:
-        fh.write(json.dumps(record) + "\n")
+    """Append one case record as a line of the store. A store whose last line was cut
+    (a sweep killed or the disk filled while it wrote) gets its line ended first: the
+    record was written onto the cut line, which does not parse, so the first case finished
+    after a resume was lost from the store and ran again at the next resume."""
+    path = _store_path(out_dir)
+    cut = False
+    if path.is_file() and path.stat().st_size > 0:
+        with path.open("rb") as fh:
+            fh.seek(-1, 2)
+            cut = fh.read(1) != b"\n"
+    with path.open("a", encoding="utf-8") as fh:
+        fh.write(("\n" if cut else "") + json.dumps(record) + "\n")
         fh.flush()
 
 
