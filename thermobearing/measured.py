@@ -31,6 +31,7 @@ from .measured_layout import (
     file_encoding,
     find_layout,
     looks_like_units,
+    non_temperature_units,
     stated_units,
 )
 from .measured_time import parse_times
@@ -184,8 +185,13 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     for col in sensors:
         j = _index(header, names, col)
         if j is None:
+            # the nearest name among the columns no other sensor maps (a typo of TC4 was
+            # told 'did you mean TC3?', the column mapped on the line above)
+            taken = {c.lower() for c in sensors if c != col}
             raise InputError(f"{field}.columns[{col!r}]", col, "a column of the file: "
-                             + ", ".join(header) + closest_name(col, header))
+                             + ", ".join(header) + closest_name(
+                                 col, [c for k, c in enumerate(header) if k not in tcols
+                                       and c.lower() not in taken]))
         if j in tcols:
             # the time column mapped to a node was compared as temperatures (0-50 "degC"
             # of a time in minutes against the shaft)
@@ -201,11 +207,12 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
     if rows and looks_like_units(rows[0], tcols):
         units = rows.pop(0)
         at.pop(0)
+    notes: list[str] = []
+    rows, at = _drop_empty_rows(rows, at, notes)
     if not rows:
         raise InputError(f"{field}.file", str(path), f"data rows under the header row "
                          f"({', '.join(header)})")
     need = max([*tcols, *idx.values()]) + 1
-    notes: list[str] = []
     short = 0
     for k, r in enumerate(rows):
         if len(r) < need:
@@ -222,6 +229,7 @@ def read_measured_file(path: str | Path, time_column: str | Sequence[str],
         notes.append(f"{short} row{'s' if short > 1 else ''} shorter than the header row: "
                      "the missing cells at the end are read as gaps (empty cells)")
     stated = stated_units(units, header, idx)
+    _refuse_other_units(non_temperature_units(units, header, idx, stated), field)
     col_units = _column_units(stated, unit, field, notes)
     notes += _letter_notes(sensors, stated, col_units, unit, field)
     cells = {col: [r[j] for r in rows] for col, j in idx.items()}
@@ -353,7 +361,8 @@ _TIME_WORDS = {"ms": "ms", "msec": "ms", "millisecond": "ms", "milliseconds": "m
                "sekunde": "s", "sekunden": "s",
                "min": "min", "mins": "min", "minute": "min", "minutes": "min",
                "minuten": "min",
-               "h": "h", "hr": "h", "hrs": "h", "hour": "h", "hours": "h", "stunden": "h"}
+               "h": "h", "hr": "h", "hrs": "h", "hour": "h", "hours": "h", "stunden": "h",
+               "std": "h", "stunde": "h"}
 
 
 def _time_unit(time_column: str, units_cell: str) -> str | None:
@@ -364,8 +373,8 @@ def _time_unit(time_column: str, units_cell: str) -> str | None:
     from .units import to_si
 
     m = re.search(r"[\[(]\s*([^\])]+?)\s*[\])]", time_column)
-    if m:
-        return m.group(1)
+    if m:  # a word pint does not know (Sekunden, Std) read as the unit it names
+        return _TIME_WORDS.get(m.group(1).lower(), m.group(1))
     after = slash_unit(time_column)
     if after:
         try:
@@ -421,6 +430,39 @@ def _column_units(stated: Mapping[str, tuple[str, str]], unit: str, field: str,
                                              stated.items()))
         return {c: u for c, (u, _) in stated.items()}
     return {}
+
+
+def _drop_empty_rows(rows: list[list[str]], at: list[int], notes: list[str]
+                     ) -> tuple[list[list[str]], list[int]]:
+    """The rows with at least one cell that is not empty, and their file lines; a row of
+    separators only (``,,,,``: a spreadsheet saves the rows it has formatted below the
+    data so) holds no reading and no time, is left out and counted in a note (it was an
+    error asking for a time in every row)."""
+    empty = [not any(c.strip() for c in r) for r in rows]
+    if not any(empty):
+        return rows, at
+    n = sum(empty)
+    first = empty.index(True)
+    notes.append(f"{n} row{'s' if n > 1 else ''} with every cell empty left out (first at "
+                 f"line {at[first]}: separators only, as a spreadsheet saves formatted "
+                 "empty rows)")
+    return ([r for r, e in zip(rows, empty, strict=True) if not e],
+            [a for a, e in zip(at, empty, strict=True) if not e])
+
+
+def _refuse_other_units(other: Mapping[str, tuple[str, str]], field: str) -> None:
+    """A mapped sensor column the file gives a unit that is no temperature (``TC3 [mV]``,
+    a units row's ``V`` or ``bar``) is an error naming it: read as temperatures, a type K
+    thermocouple's 1-4 mV at rig temperatures became 1-4 degC."""
+    if not other:
+        return
+    col, (u, where) = next(iter(other.items()))
+    more = [c for c in other if c != col]
+    raise InputError(f"{field}.columns[{col!r}]", col,
+                     f"a column of temperatures; the file's {where} gives it {u!r}, which is "
+                     "no temperature unit (degC, K or degF): convert a thermocouple's voltage "
+                     "to temperature in the logger first, or map the column that holds the "
+                     "temperatures" + (f" (also {', '.join(map(repr, more))})" if more else ""))
 
 
 def _letter_notes(sensors: Sequence[str], stated: Mapping[str, tuple[str, str]],

@@ -32,8 +32,9 @@ from .errors import InputError
 from .signal_input import guess_separator, is_units_row
 from .text_files import text_encoding
 
-__all__ = ["Layout", "TEMPERATURE_UNITS", "bracket_unit", "closest_name", "file_encoding",
-           "find_layout", "is_time_format", "looks_like_units", "slash_unit", "stated_units"]
+__all__ = ["Layout", "NAME_UNITS", "TEMPERATURE_UNITS", "bracket_unit", "closest_name",
+           "file_encoding", "find_layout", "is_time_format", "looks_like_units",
+           "non_temperature_units", "slash_unit", "stated_units"]
 
 SPACES = "spaces"
 _SEPARATORS = ("\t", ";", ",", SPACES)
@@ -44,6 +45,16 @@ TEMPERATURE_UNITS = {"degc": "degC", "°c": "degC", "c": "degC", "celsius": "deg
                      "k": "K", "kelvin": "K", "degf": "degF", "°f": "degF", "f": "degF",
                      "fahrenheit": "degF", "deg c": "degC", "deg f": "degF", "℃": "degC",
                      "deg. c": "degC", "deg. f": "degF", "°k": "K", "℉": "degF"}
+#: units a logger writes for channels that are no temperature (a thermocouple's raw
+#: voltage, a pressure, a speed, a humidity), recognised in a column name's brackets or
+#: after its slash (case-sensitive). Single letters (``V``, ``A``) and words that are also
+#: position labels (``in``: inlet, ``out``) are left out there: ``T_oil (in)`` is a label;
+#: a units row, where every cell is a unit, is checked with pint instead
+NAME_UNITS = frozenset({
+    "mV", "µV", "μV", "uV", "kV", "mA", "µA", "μA", "uA", "%", "%RH", "% RH", "bar", "mbar",
+    "hPa", "kPa", "MPa", "Pa", "psi", "Ohm", "ohm", "Ω", "kOhm", "kΩ", "rpm", "r/min",
+    "1/min", "Hz", "kHz", "Nm", "N m", "kN", "mm/s", "m/s", "m/s²", "m/s^2", "L/min", "l/min",
+    "W", "kW"})
 
 
 def _pieces(line: str, pattern: re.Pattern) -> list[tuple[str, int, int]]:
@@ -239,4 +250,50 @@ def stated_units(units_row: list[str] | None, header: list[str],
         text = slash_unit(header[j]).lower()  # T1/°C; a bare /C or /F may be a label
         if text not in ("c", "f") and TEMPERATURE_UNITS.get(text) is not None:
             out[col] = (TEMPERATURE_UNITS[text], "column name")
+    return out
+
+
+def _units_row_other(cell: str) -> str:
+    """The text of a units-row cell that is a unit but no temperature (``mV``, ``%``,
+    ``bar``), else "" (empty, ``-``, a temperature, or no unit pint knows)."""
+    from .units import unit_registry
+
+    text = cell.strip().strip("[]()").strip()
+    if not text or text == "-" or TEMPERATURE_UNITS.get(text.lower()) is not None:
+        return ""
+    if text.startswith("%"):
+        return text
+    probe = text.replace("µ", "u").replace("μ", "u").replace("²", "**2")
+    try:
+        q = unit_registry().parse_expression(probe)
+    except Exception:  # noqa: BLE001 - pint raises many kinds for a non-unit word
+        return ""
+    dims = getattr(q, "dimensionality", None)
+    if dims is None or "[temperature]" in dict(dims):
+        return ""
+    return text
+
+
+def non_temperature_units(units_row: list[str] | None, header: list[str],
+                          idx: Mapping[str, int],
+                          stated: Mapping[str, tuple[str, str]]) -> dict[str, tuple[str, str]]:
+    """The mapped columns (not in ``stated``) to which the file gives a unit that is no
+    temperature: ``{column: (unit text, "units row" | "column name")}``. A units-row cell
+    counts when pint reads it as a unit of another dimension (``mV``, ``V``, ``bar``) or
+    it is a percentage; a column name's brackets or ``/unit`` ending when the text is one
+    of :data:`NAME_UNITS` (``TC3 [mV]``, ``P1/bar``). Such a column read as temperatures
+    took a thermocouple's 1-4 mV as 1-4 degC without a word."""
+    out: dict[str, tuple[str, str]] = {}
+    for col, j in idx.items():
+        if col in stated:
+            continue
+        if units_row is not None and j < len(units_row):
+            text = _units_row_other(units_row[j])
+            if text:
+                out[col] = (text, "units row")
+                continue
+        for text in (bracket_unit(header[j]), slash_unit(header[j])):
+            if text.strip() in NAME_UNITS:
+                out[col] = (text.strip(), "column name")
+                break
     return out

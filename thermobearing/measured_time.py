@@ -212,8 +212,6 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
     docstring). The times may repeat (the caller averages such rows) but never step back:
     that is an error naming the row, the step and its likely cause.
     """
-    from .units import to_si
-
     check_time_format(time_format, field)
     name = f"measured column {time_column!r}"
     first = cells[0].strip()
@@ -237,7 +235,7 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
         def parse(c: str) -> datetime | None:
             return _strptime(c, fmt)
     elif number(first, decimal) is not None:
-        scale = to_si(f"1 {tunit or 's'}", "time", field=f"{field}.time_column")
+        scale = _time_scale(tunit, time_column, field)
         kind, desc = "number", f"numbers in {tunit or 's'}"
 
         def parse(c: str) -> float | None:
@@ -279,6 +277,24 @@ def parse_times(cells: list[str], tunit: str | None, decimal: str, time_zero: st
         t = np.asarray(values, dtype=float) - float(zero)
     _check_increasing(t, cells, at, name, kind, aware=kind == "stamp" and aware[0])
     return t, desc
+
+
+def _time_scale(tunit: str | None, time_column: str, field: str) -> float:
+    """Seconds per unit of a time column of numbers (``tunit`` from its name or the units
+    row; None: seconds). A unit that is no time is an error naming the column and the
+    unit (it said ``measured.time_column = '1 m'``, the probe it converted); ``m`` is
+    metres, so it names ``min``."""
+    from .units import to_si
+
+    try:
+        return to_si(f"1 {tunit or 's'}", "time", field=f"{field}.time_column")
+    except InputError:
+        hint = ("; 'm' is metres: write min for minutes" if (tunit or "").strip() == "m"
+                else "")
+        raise InputError(f"{field}.time_column", time_column,
+                         f"a time unit for its numbers, in the name's brackets, after a slash "
+                         f"or in the units row: s, min, h or ms (the file gives {tunit!r}"
+                         f"{hint}); elapsed hh:mm:ss cells need no unit") from None
 
 
 def _date_named(time_column: str) -> bool:
