@@ -233,7 +233,7 @@ def check_cases(cases: Sequence[Case]) -> list[str]:
 
 #: scene temperatures [K] of a case compared with its oil's data range: the oil inlet and
 #: the parts' start (the ambient is the air's, checked against the air model)
-_OIL_TEMPERATURES = ("supply.inlet_temperature", "environment.initial_temperature")
+OIL_TEMPERATURE_FIELDS = ("supply.inlet_temperature", "environment.initial_temperature")
 
 
 def _check_cases(cases: Sequence[Case]) -> tuple[list[str], list[str]]:
@@ -262,8 +262,8 @@ def _check_cases(cases: Sequence[Case]) -> tuple[list[str], list[str]]:
         lub = sim.lubricant
         if lub not in ranges:
             ranges[lub] = data_temperature_range(lub)
-        for field in _OIL_TEMPERATURES:
-            kelvin = _scene_kelvin(scene, field)
+        for field in OIL_TEMPERATURE_FIELDS:
+            kelvin = scene_oil_temperature(scene, field)
             if kelvin is not None and not ranges[lub].contains(kelvin):
                 outside.setdefault((field, lub), []).append(kelvin)
         for path, _ in case.assignments:
@@ -287,8 +287,8 @@ def _check_cases(cases: Sequence[Case]) -> tuple[list[str], list[str]]:
     return list(unused.values()), notes
 
 
-def _scene_kelvin(scene: Scene, field: str) -> float | None:
-    """The scene's temperature [K] of ``field`` (:data:`_OIL_TEMPERATURES`); None for the
+def scene_oil_temperature(scene: Scene, field: str) -> float | None:
+    """The scene's temperature [K] of ``field`` (:data:`OIL_TEMPERATURE_FIELDS`); None for the
     inlet of an oil bath without flow (no stream enters the bearing)."""
     if field == "supply.inlet_temperature":
         sup = scene.supply

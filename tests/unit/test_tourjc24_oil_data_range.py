@@ -8,6 +8,8 @@ sweep now says which values lie outside, before the runs; the runs still run.
 
 from __future__ import annotations
 
+import html
+import json
 import math
 
 import pytest
@@ -84,3 +86,22 @@ def test_sweep_inside_the_oil_data_says_nothing(tmp_path, capsys):
     df = run_sweep(scene, params, tmp_path, runner=_oil_runner, workers=1, progress=False)
     assert "property data cover" not in capsys.readouterr().err
     assert df.attrs["outside_data"] == []
+
+
+def test_sweep_report_repeats_the_note(tmp_path):
+    # the report of the folder says it too (the sweep's terminal lines are gone by then)
+    from thermobearing.commands.report import outside_data_notes, sweep_report
+
+    scene = load_scene()
+    params = [parse_set("supply.inlet_temperature=35,150,200 degC", scene.to_dict())]
+    run_sweep(scene, params, tmp_path, runner=_oil_runner, workers=1, progress=False)
+    records = [json.loads(line) for line in
+               (tmp_path / "cases.jsonl").read_text(encoding="utf-8").splitlines()]
+    notes = outside_data_notes(tmp_path, records)
+    assert len(notes) == 1 and notes[0].startswith(
+        "supply.inlet_temperature = 150, 200 degC are outside the temperatures ISO_VG46's")
+    assert html.escape(notes[0]) in sweep_report(tmp_path).read_text(encoding="utf-8")
+    inside = tmp_path / "inside"
+    run_sweep(scene, [parse_set("supply.inlet_temperature=25,60 degC", scene.to_dict())],
+              inside, runner=_oil_runner, workers=1, progress=False)
+    assert "property data cover" not in sweep_report(inside).read_text(encoding="utf-8")

@@ -182,6 +182,7 @@ def sweep_report(folder: Path) -> Path:
     notes += missing_combinations(df, pcols) + flagged_cases(
         df, pcols, bearings=_bearing_count(folder / "scene.toml"))
     notes += _source_notes(folder, df, params)
+    notes += outside_data_notes(folder, records)
     if rolls:
         notes.append("over-skidding 0 % in every case: race control (kinematics = "
                      "\"race_control\") rolls the cage at its theoretical speed by "
@@ -435,6 +436,54 @@ def _source_notes(folder: Path, df: pd.DataFrame, params: list[str]) -> list[str
         return []
     bearings, _ = load_scene_bearings(scene)
     return source_notes(df, scene, bearings)
+
+
+def outside_data_notes(folder: Path, records: list[dict]) -> list[str]:
+    """What the sweep said before its runs, for the report: the cases' oil temperatures
+    (inlet, initial: :data:`thermobearing.sweep.OIL_TEMPERATURE_FIELDS`) outside the
+    temperatures their oil's property data cover
+    (:func:`thermobearing.lubricant_range.outside_data_note`), one note per field and oil;
+    none without a readable base scene (``scene.toml``) or for an oil that does not load."""
+    from ..errors import ThermobearingError
+    from ..lubricant import load_lubricant
+    from ..lubricant_range import data_temperature_range, outside_data_note
+    from ..sweep import OIL_TEMPERATURE_FIELDS, scene_oil_temperature
+    from ..units import to_si
+
+    path = folder / "scene.toml"
+    try:
+        base = _folder_scene(path)
+    except (InputError, OSError):
+        return []
+    spec = base.lubricant
+    base_oil = spec.get("preset") or str(base.resolve_path(spec["path"]))
+    kelvins: dict[tuple[str, str], list[float]] = {}
+    for rec in records:
+        params = rec.get("params", {})
+        oil = str(params.get("lubricant.preset") or params.get("lubricant.path") or base_oil)
+        for field in OIL_TEMPERATURE_FIELDS:
+            if scene_oil_temperature(base, field) is None:
+                continue   # an oil bath without flow: no inlet
+            try:
+                kelvin = (to_si(params[field], "K", field=field) if field in params
+                          else scene_oil_temperature(base, field))
+            except InputError:
+                continue
+            kelvins.setdefault((field, oil), []).append(float(kelvin))
+    notes = []
+    oils: dict[str, Any] = {}
+    for (field, oil), values in kelvins.items():
+        if oil not in oils:
+            try:
+                lub = load_lubricant(oil)
+                oils[oil] = (lub, data_temperature_range(lub))
+            except (ThermobearingError, OSError):
+                oils[oil] = None
+        if oils[oil] is not None:
+            note = outside_data_note(oils[oil][0], field, values, oils[oil][1])
+            if note:
+                notes.append(note)
+    return notes
 
 
 def _race_control_zero_skid(folder: Path, df: pd.DataFrame, params: list[str]) -> bool:
