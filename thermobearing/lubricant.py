@@ -22,6 +22,7 @@ Units: T [K], p [Pa], nu [m^2/s], eta [Pa s], rho [kg/m^3], c_p [J/(kg K)], k [W
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 import warnings
 from collections.abc import Callable, Mapping
@@ -564,9 +565,16 @@ def lubricant_config_dir() -> Path:
 
 
 def preset_names() -> list[str]:
-    """Names of the lubricant presets."""
+    """Names of the lubricant presets, their digit runs compared as numbers (ISO_VG32,
+    ISO_VG46, ISO_VG68, ISO_VG100: a text sort listed ISO_VG100 first)."""
     folder = lubricant_config_dir()
-    return sorted(p.stem for p in folder.glob("*.toml")) if folder.is_dir() else []
+    if not folder.is_dir():
+        return []
+
+    def natural(name: str) -> list[tuple[int, int | str]]:
+        return [(0, int(p)) if p.isdigit() else (1, p) for p in re.split(r"(\d+)", name) if p]
+
+    return sorted((p.stem for p in folder.glob("*.toml")), key=natural)
 
 
 _TOP_KEYS = {"name", "source", "kind", "viscosity", "pressure_viscosity", "density",

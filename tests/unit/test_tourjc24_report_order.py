@@ -67,3 +67,13 @@ def test_sweep_report_table_follows_the_swept_values(tmp_path):
     assert rows[:6] == [
         ("5", "ISO_VG32"), ("5", "ISO_VG100"), ("10", "ISO_VG32"), ("10", "ISO_VG100"),
         ("33", "ISO_VG32"), ("33", "ISO_VG100")]
+
+
+def test_lubricant_presets_listed_with_their_grades_as_numbers():
+    # `thermobearing lubricant` listed ISO_VG100 before ISO_VG32 (a text sort)
+    from thermobearing.lubricant import preset_names
+
+    names = preset_names()
+    grades = [n for n in names if n.startswith("ISO_VG")]
+    assert grades == sorted(grades, key=lambda n: int(n[len("ISO_VG"):]))
+    assert names.index("ISO_VG32") < names.index("ISO_VG100")
