@@ -23,7 +23,7 @@ import sys
 from pathlib import Path
 
 from ..errors import InputError
-from ._preflight import load_scene_argument
+from ._preflight import compile_note, load_scene_argument
 
 NAME = "calibrate"
 HELP = "fit scene parameters (e.g. network.parameters.h_oil) to the measured temperatures"
@@ -117,6 +117,9 @@ def run(args: argparse.Namespace) -> int:
         data = scene.resolve_path(scene.measured.file).resolve()
         print(f"fitting {', '.join(fit)} to {data} (one scene run per evaluation)",
               flush=True)
+        note = compile_note()
+        if note:
+            print(note, flush=True)
     try:
         result = calibrate(scene, fit, x0=x0, bounds=bounds, max_runs=args.max_runs,
                            callback=progress, on_parameters=record_units)

@@ -16,7 +16,12 @@ from typing import Any
 from ..errors import InputError, ThermobearingError
 from ..scene import with_absolute_paths
 from ..scene_checks import check_model_names
-from ._preflight import check_inputs_not_replaced, load_scene_argument, preflight
+from ._preflight import (
+    check_inputs_not_replaced,
+    compile_note,
+    load_scene_argument,
+    preflight,
+)
 
 NAME = "run"
 HELP = "run a scene (default: the embedded QJ1044 rig of seed paper 002) and write results"
@@ -54,6 +59,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())
         print(f"writing results to {out}/ as they are computed", flush=True)
+        note = compile_note()
+        if note:
+            print(note, flush=True)
     try:
         results = sim.run(out_dir=out)
     except KeyboardInterrupt:

@@ -1,0 +1,72 @@
+"""Session-24 user tour F: the first ``thermobearing run`` of a fresh clone printed nothing
+for 96 s of wall time (numba compiling its kernels) between "writing results" and its first
+step line. A run with no numba cache says why it waits; a cached install says nothing."""
+
+from __future__ import annotations
+
+from thermobearing.commands._preflight import COMPILE_NOTE, compile_note
+
+
+def test_no_cache_index_gives_the_note(tmp_path):
+    (tmp_path / "__pycache__").mkdir()
+    (tmp_path / "__pycache__" / "kernels.cpython-311.pyc").write_bytes(b"")
+    assert compile_note(tmp_path) == COMPILE_NOTE
+    assert compile_note(tmp_path / "absent") == COMPILE_NOTE
+
+
+def test_a_cache_index_gives_none(tmp_path):
+    sub = tmp_path / "skidding" / "__pycache__"
+    sub.mkdir(parents=True)
+    (sub / "ball_residual_kernels._residual-120.py311.nbi").write_bytes(b"")
+    assert compile_note(tmp_path) is None
+
+
+def test_run_prints_the_note_after_naming_its_folder(tmp_path, monkeypatch, capsys):
+    import thermobearing.commands.run as run_cmd
+    from thermobearing import cli
+
+    monkeypatch.setattr(run_cmd, "compile_note", lambda root=None: COMPILE_NOTE)
+    scene = tmp_path / "film.toml"
+    scene.write_text(FILM_SCENE, encoding="utf-8")
+    code = cli.main(["run", str(scene), "--out", str(tmp_path / "out")])
+    lines = capsys.readouterr().out.splitlines()
+    assert code == 0
+    at = lines.index(COMPILE_NOTE)
+    assert lines[at - 1].startswith("writing results to ")
+
+
+def test_a_quiet_run_prints_no_note(tmp_path, monkeypatch, capsys):
+    import thermobearing.commands.run as run_cmd
+    from thermobearing import cli
+
+    monkeypatch.setattr(run_cmd, "compile_note", lambda root=None: COMPILE_NOTE)
+    scene = tmp_path / "film.toml"
+    scene.write_text(FILM_SCENE, encoding="utf-8")
+    assert cli.main(["run", str(scene), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    assert COMPILE_NOTE not in capsys.readouterr().out
+
+
+FILM_SCENE = """
+title = "film only"
+[[bearings]]
+name = "b"
+preset = "SKF6304"
+[lubricant]
+preset = "ISO_VG46"
+[supply]
+method = "jet"
+flow = "1 L/min"
+inlet_temperature = "40 degC"
+[environment]
+ambient_temperature = "40 degC"
+[schedule]
+speed = "3000 rpm"
+radial_load = "1 kN"
+axial_load = "0 kN"
+step_duration = "1 min"
+[models]
+kinematics = "race_control"
+[outputs]
+mode = "transient"
+want = ["film"]
+"""
