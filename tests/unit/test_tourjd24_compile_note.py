@@ -70,3 +70,24 @@ kinematics = "race_control"
 mode = "transient"
 want = ["film"]
 """
+
+
+def test_one_step_is_counted_in_the_singular(tmp_path):
+    # "interrupted before the first of 1 steps finished", "schedule: 1 steps, ..."
+    from thermobearing.commands.run import stopped_text
+
+    assert "before the first step finished" in stopped_text(tmp_path, 0, 1, True)
+    assert "before the first of 3 steps finished" in stopped_text(tmp_path, 0, 3, True)
+    (tmp_path / "metadata.json").write_text("{}", encoding="utf-8")
+    assert "(its one step; stopped while the figures" in stopped_text(tmp_path, 1, 1, True)
+    assert "(all 3 steps; stopped while the figures" in stopped_text(tmp_path, 3, 3, True)
+    assert "(1 of 3 steps;" in stopped_text(tmp_path, 1, 3, False)
+
+
+def test_check_says_one_step(tmp_path, capsys):
+    from thermobearing import cli
+
+    scene = tmp_path / "film.toml"
+    scene.write_text(FILM_SCENE, encoding="utf-8")
+    assert cli.main(["check", str(scene)]) == 0
+    assert "schedule: 1 step, 1 min" in capsys.readouterr().out

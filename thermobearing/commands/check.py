@@ -26,7 +26,8 @@ def run(args: argparse.Namespace) -> int:
     sim = Simulation(scene, progress=False)
     preflight(sim)  # with what run refuses at its first step, before any solve
     print(f"scene: {scene.title}")
-    print(f"schedule: {len(scene.schedule.steps)} steps, {scene.schedule.duration / 60:g} min")
+    n = len(scene.schedule.steps)
+    print(f"schedule: {n} step{'' if n == 1 else 's'}, {scene.schedule.duration / 60:g} min")
     print(sim.describe_chain(with_citations=True))
     estimates = sim.describe_estimates()
     if estimates:

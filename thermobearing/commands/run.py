@@ -111,11 +111,13 @@ def stopped_text(out: Path, done: int | None, steps: int, interrupted: bool) -> 
     why = "interrupted" if interrupted else "stopped by the error"
     held = (out / "metadata.json").is_file()
     if done == 0:
-        return (f"{why} before the first of {steps} steps finished: no step was computed, "
+        first = "the first step" if steps == 1 else f"the first of {steps} steps"
+        return (f"{why} before {first} finished: no step was computed, "
                 f"nothing to report" + (f" ({out}/ holds the scene and the model chain "
                                         "only)" if held else ""))
     count = "" if done is None else (
-        f"all {steps} steps; stopped while the figures and report were written"
+        ("its one step" if steps == 1 else f"all {steps} steps")
+        + "; stopped while the figures and report were written"
         if done >= steps else f"{done} of {steps} steps")
     hint = f"`thermobearing report {out}` writes their report" if held else ""
     extra = "; ".join(x for x in (count, hint) if x)
