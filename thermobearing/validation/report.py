@@ -2,8 +2,8 @@
 
 One section per case: what it checks (the first paragraph of its ``SOURCE.md``, linked),
 every row with reference, computed value, error, tolerance and verdict, and the case's
-notes. Gated rows that fail are listed first in a summary with the line of ``SOURCE.md``
-that gives the reason to read. A row ``q`` with a companion row ``q_stderr`` of the same
+notes. Gated rows that fail are listed first in a summary, each linked to its case's
+``SOURCE.md``, which gives the measured reason. A row ``q`` with a companion row ``q_stderr`` of the same
 case (the standard error of an ensemble estimate, e.g. the chaotic rib rattle of paper
 003) is printed as ``value ± stderr`` on one line and the companion is not listed again.
 The page is what ``thermobearing validate --report FILE`` writes; it states the date, the
