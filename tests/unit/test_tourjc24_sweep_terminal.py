@@ -53,6 +53,16 @@ def test_an_over_skidding_bearing_keeps_max():
     assert "max over-skidding [%]" in shown and "min over-skidding [%]" not in shown
 
 
+def test_race_control_zeros_leave_room_for_other_results():
+    # the CRB rib example (race control) swept over 1, 2, 4 L/min: two columns of 0 %
+    df = _table([0.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    shown, hidden = terminal_columns(df, ["supply.flow"])
+    assert "max over-skidding [%]" not in shown and "min over-skidding [%]" not in shown
+    assert shown[-4:] == ["mean total loss [W]", "churning_elements [W]",
+                          "final n.housing [degC]", "rise over initial n.housing [K]"]
+    assert hidden == 2
+
+
 def test_a_range_with_a_unit_on_each_number_says_where_the_unit_goes():
     d = load_scene().to_dict()
     for raw in ("5 L/min:60 L/min:5 L/min", "5:60"):

@@ -207,7 +207,7 @@ def slip_columns(df, results: list[str]) -> list[str]:
     bearing that skids has min over-skidding -20 to -41 % and max -0.005 to -0.02 % (NU 214,
     5000 r/min, 0.5-8 kN, 0.5-8 L/min): the max alone, shown before, said nothing of its
     cage slip; the QJ1044 rig skids at 0 kN (min -31 to -68 %) and over-skids at 2-8 kN
-    (max +5 to +12 %): both."""
+    (max +5 to +12 %): both. None when both are 0 in every case (race control)."""
     present = [c for c in _OVER_SKID if c in results]
 
     def size(col: str) -> float:
@@ -215,7 +215,11 @@ def slip_columns(df, results: list[str]) -> list[str]:
         return float(values.max()) if values.notna().any() else 0.0
 
     largest = max((size(c) for c in present), default=0.0)
-    return [c for c in present if size(c) >= 0.01 * largest] or present
+    if largest == 0.0:
+        # 0 % in every case: race control rolls the cage by construction (the CRB rib
+        # example's flow sweep showed two columns of zeros); the report draws no panel
+        return []
+    return [c for c in present if size(c) >= 0.01 * largest]
 
 
 def terminal_columns(df, swept: list[str], max_results: int = 4) -> tuple[list[str], int]:
