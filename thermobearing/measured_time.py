@@ -349,6 +349,18 @@ def _check_increasing(t: np.ndarray, cells: list[str], at: list[int], name: str,
                      f"the time steps back by {back:g} s{why}")
 
 
+def _quantity_seconds(text: str) -> float | None:
+    """Seconds of a time with its unit (``"5 min"``, ``"300 s"``), None for other text."""
+    from .units import to_si
+
+    if not re.search(r"[A-Za-z]", text):
+        return None
+    try:
+        return float(to_si(text, "time", field="measured.time_zero"))
+    except InputError:
+        return None
+
+
 def _time_zero(time_zero: str | None, values: list, parse: Callable[[str], object],
                kind: str, desc: str, field: str):
     if time_zero is None:
@@ -358,9 +370,14 @@ def _time_zero(time_zero: str | None, values: list, parse: Callable[[str], objec
     zero = parse(str(time_zero))
     if zero is None and kind == "stamp":  # Excel / Unix / pattern: a date is fine too
         zero = _any_stamp(str(time_zero))
+    if zero is None and kind != "stamp":
+        # numbers or elapsed times (seconds here): a unit string, as the scene writes its
+        # other times ("5 min"; it was refused, only a bare 5 in the column's unit read)
+        zero = _quantity_seconds(str(time_zero))
     if zero is None:
         raise InputError(f"{field}.time_zero", time_zero, f"\"first\" or a time in the format "
-                         f"of the file's time column ({desc})")
+                         f"of the file's time column ({desc})"
+                         + ("" if kind == "stamp" else ", or with a unit (\"5 min\")"))
     if kind == "stamp" and (zero.tzinfo is None) != (values[0].tzinfo is None):
         raise InputError(f"{field}.time_zero", time_zero, "a timestamp with a UTC offset "
                          "exactly when the file's timestamps have one")

@@ -118,3 +118,28 @@ def test_a_missing_column_suggests_no_column_another_sensor_maps(tmp_path):
     # a typo still gets its column
     with pytest.raises(InputError, match="did you mean 'TC7 Oel ab'"):
         read_measured_file(path, "Zeit [min]", {"TC3 Aussenring DE": "a", "TC7 Oel ap": "b"})
+
+
+@pytest.mark.parametrize("zero", ["5 min", "300 s", "5", 5, "0.0833333333333 h"])
+def test_time_zero_of_a_number_column_may_carry_a_unit(tmp_path, zero):
+    # a logger started 5 min before the run: "5 min" was refused (only a bare 5, in the
+    # column's unit), though the scene writes its other times with units
+    path = _file(tmp_path, ["time [min],TC3,TC7", "5,24.4,36.1", "5.5,24.8,36.2",
+                            "6,25.0,36.3"])
+    df = read_measured_file(path, "time [min]", {"TC3": "n1", "TC7": "n2"}, time_zero=zero)
+    assert df["time [s]"].tolist() == pytest.approx([0.0, 30.0, 60.0], abs=1e-6)
+
+
+def test_time_zero_with_a_unit_for_elapsed_cells(tmp_path):
+    path = _file(tmp_path, ["Elapsed,TC3,TC7", "00:05:00,24.4,36.1", "00:05:30,24.8,36.2"])
+    df = read_measured_file(path, "Elapsed", {"TC3": "n1", "TC7": "n2"}, time_zero="5 min")
+    assert df["time [s]"].tolist() == [0.0, 30.0]
+
+
+@pytest.mark.parametrize("zero", ["5 kg", "five"])
+def test_time_zero_that_is_no_time_is_refused(tmp_path, zero):
+    path = _file(tmp_path, ["time [min],TC3,TC7", "5,24.4,36.1", "5.5,24.8,36.2"])
+    with pytest.raises(InputError) as err:
+        read_measured_file(path, "time [min]", {"TC3": "n1", "TC7": "n2"}, time_zero=zero)
+    assert f"measured.time_zero = {zero!r}" in str(err.value)
+    assert 'or with a unit ("5 min")' in str(err.value)
