@@ -27,6 +27,7 @@ def _tp(xs, ks=1e8, drop=None, co=0.0, ci=0.0, floor=1e-6, jt=7e-9, mass=1.3e-3,
     tp[rt.TP_XU], tp[rt.TP_MUE], tp[rt.TP_MU], tp[rt.TP_DM2] = xu, mue, mu, dm2
     tp[rt.TP_KS], tp[rt.TP_CO], tp[rt.TP_CI], tp[rt.TP_FLOOR] = ks, co, ci, floor
     tp[rt.TP_RH] = rh
+    tp[rt.TP_FLOOR_I] = floor
     tp[rt.TP_N] = n
     tp[rt.TP_HEAD:rt.TP_HEAD + n] = xs
     tp[rt.TP_HEAD + n:] = 0.0 if drop is None else drop

@@ -99,6 +99,13 @@ class DynamicsModel:
     #: the roller's radial position and tilt as degrees of freedom of the coupled model
     #: (:mod:`~thermobearing.skidding.roller_dynamics_tilt`; paper 003 eq. 18's 6 DOF)
     tilt: bool = False
+    #: normal damping of the 6-DOF roller's raceway slices
+    #: (:mod:`~thermobearing.skidding.roller_dynamics_raceway_film`): the squeeze film's
+    #: smallest gap per race (outer, inner) [m], the rolling contacts' central film
+    #: thickness; None: the cage bars' ``squeeze_floor`` (the estimate before session 24)
+    raceway_film: tuple[float, float] | None = None
+    #: False: the raceway slices are elastic only (no squeeze film; a sensitivity)
+    raceway_squeeze: bool = True
 
     def pocket_force_at(self, phi: float) -> float:
         """Quasi-static pocket force F_d [N] (positive: the roller pushes the cage

@@ -28,6 +28,7 @@ from .roller_dynamics_model import (
     chamfer_unbalance,
 )
 from .roller_dynamics_pocket import DEFAULT_SQUEEZE_FLOOR
+from .roller_dynamics_raceway_film import RACEWAY_DAMPING, raceway_film_thickness
 
 
 def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
@@ -42,7 +43,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
                 coupling: str = "rib", pocket_dof: bool = True,
                 squeeze_floor: float = DEFAULT_SQUEEZE_FLOOR,
                 raceway_traction: str = "componentwise",
-                rib_squeeze: bool = False, tilt: bool | None = None) -> DynamicsModel:
+                rib_squeeze: bool = False, tilt: bool | None = None,
+                raceway_damping: str = "film") -> DynamicsModel:
     """Set up the roller dynamics of ``bearing`` at ``speed`` [rad/s], ``radial_load`` [N].
 
     ``rib``: RibGeometry overrides (``rib_angle`` [rad], ``crown_radius`` [m],
@@ -89,6 +91,12 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
     the 5-DOF model is 22 % high on PV and 18 % low on slip against the 6-DOF one, which
     also keeps the 10000 r/min point in its cage band (6 of 6 trajectories; 0 of 6 on 5
     DOF).
+    ``raceway_damping`` (6 DOF only): the normal damping of the raceway slices
+    (:mod:`~thermobearing.skidding.roller_dynamics_raceway_film`): "film" (default) the
+    line contact's Reynolds squeeze film at h = max(gap, h_c), h_c the rolling contact's
+    central film thickness (film module, the quasi-static solver's film model); "floor" the
+    same law floored at ``squeeze_floor`` (the estimate before 2026-11-24, session 24);
+    "none" undamped elastic slices (a sensitivity).
     Used by :func:`~thermobearing.skidding.roller_dynamics_coupled.simulate_coupled` only.
     Bad input (negative clearance, unbalance >= roller mass, rib below the contact point)
     raises InputError naming the field.
@@ -119,8 +127,13 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         raise InputError("spin", spin, ("skidding", "rolling", "lagged"))
     if coupling not in ("rib", "none"):
         raise InputError("coupling", coupling, ("rib", "none"))
+    if raceway_damping not in RACEWAY_DAMPING:
+        raise InputError("raceway_damping", raceway_damping, RACEWAY_DAMPING)
     if raceway_traction not in ("componentwise", "isotropic"):
         raise InputError("raceway_traction", raceway_traction, ("componentwise", "isotropic"))
+    with_tilt = bool(unbalance_mass > 0.0) if tilt is None else bool(tilt)
+    raceway_film = (raceway_film_thickness(bearing, lubricant, temperature, qs)
+                    if with_tilt and raceway_damping == "film" else None)
     eta = (oil_fraction * float(lubricant.dynamic_viscosity(temperature))
            + (1.0 - oil_fraction) * air_properties(temperature).dynamic_viscosity)
     model = DynamicsModel(
@@ -142,7 +155,8 @@ def build_model(bearing: Any, lubricant: Any, speed: float, radial_load: float,
         pocket_length=float(bearing.roller_effective_length), squeeze_floor=squeeze_floor,
         pocket_dof=bool(pocket_dof), raceway_traction=raceway_traction,
         rib_squeeze=bool(rib_squeeze),
-        tilt=bool(unbalance_mass > 0.0) if tilt is None else bool(tilt),
+        tilt=with_tilt, raceway_film=raceway_film,
+        raceway_squeeze=raceway_damping != "none",
         extras={"quasi_static": qs, "temperature": temperature, "radial_load": radial_load,
                 "spin": spin, "coupling": None})
     if coupling == "rib" and spin != "rolling" and unbalance_mass > 0.0:

@@ -30,13 +30,15 @@ form; its sign in this model's phase convention is below.)
   roller's azimuth: delta_r and P_d/2 solved from the quasi-static solution's total approach
   delta_o(Q_o) + delta_i(Q_i) at its two most loaded azimuths (:func:`tilt_parameters`),
   so a roller at rest in the load zone carries the quasi-static loads.
-* raceway squeeze film: a slice whose gap closes (d' > 0) is opposed by the cylinder-plane
-  squeeze film of the cage bars (:mod:`~thermobearing.skidding.roller_dynamics_pocket`,
+* raceway squeeze film: a slice whose gap closes (d' > 0) is opposed by the line
+  contact's Reynolds squeeze film (:mod:`~thermobearing.skidding.roller_dynamics_raceway_film`,
   [hamrock2004]: w' = 3 sqrt(2) pi eta (R_x/h)^(3/2) h' per unit length) with the contact's
-  own R_x (D/2 with the race's radius) at h = max(-d, floor), floor the bars' film floor
-  (``squeeze_floor``); an opening gap cavitates. It is the only normal damping of the
-  raceway contacts (elastic Hertz slices otherwise): without it an unloaded roller
-  rattles in the radial play (validation case SOURCE.md, "Tilt and radial play").
+  own R_x (D/2 with the race's radius) at h = max(-d, h_c), h_c the rolling contact's
+  central film thickness of that race (``DynamicsModel.raceway_film``; without it the cage
+  bars' film floor ``squeeze_floor``, the estimate before session 24); an opening gap
+  cavitates. It is the only normal damping of the raceway contacts (elastic Hertz slices
+  otherwise): without it an unloaded roller rattles in the radial play (validation case
+  SOURCE.md, "Tilt and radial play"; ``raceway_squeeze`` False: undamped).
 * unbalance: the spinning mass's force F_cw = m_u e_u Omega^2 (Omega = omega_c - omega_r,
   the spin in the inertial frame) has the radial part -F_cw cos(psi) at x_u; its orbital
   force m_u omega_c^2 d_m/2 acts at x_u too (paper 003 eq. 18: x_u F_cw cos psi and x_u F_cv,
@@ -98,15 +100,15 @@ from numba import njit
 
 from ..errors import InputError
 from ..hertz import crown_drop, line_contact_stiffness
-from .roller_dynamics_pocket import SQUEEZE_COEFFICIENT
+from .roller_dynamics_raceway_film import line_squeeze_coefficient
 
 #: slices of the raceway line contacts along the roller (odd: one at the middle)
 TILT_SLICES = 15
 
-# indices of the tilt parameter vector (tilt_parameters); then n slice centres x_k [m] and
-# n crown drops c(x_k) [m]
+# indices of the tilt parameter vector (tilt_parameters; TP_FLOOR / TP_FLOOR_I the outer /
+# inner squeeze film's smallest gap); then n slice centres x_k [m] and n crown drops c(x_k) [m]
 (TP_JT, TP_MASS, TP_JP, TP_TQ, TP_XU, TP_MUE, TP_MU, TP_DM2, TP_KS, TP_CO, TP_CI, TP_FLOOR,
- TP_RH, TP_N, TP_HEAD) = range(15)
+ TP_RH, TP_N, TP_FLOOR_I, TP_HEAD) = range(16)
 
 #: states per roller of the tilt block: y_r, y_r', alpha_e, alpha_e'
 N_TILT_STATES = 4
@@ -139,7 +141,12 @@ def tilt_parameters(m: Any, bearing: Any, n_slices: int = TILT_SLICES
     ro = 0.5 * m.outer_raceway_diameter
     rx_i = r * ri / (ri + r)
     rx_o = r * ro / (ro - r)
-    coef = SQUEEZE_COEFFICIENT * m.pocket_viscosity * w
+    # squeeze film of the slices: c'(h) = c'(1 m) h^-1.5 per unit length
+    # (line_squeeze_coefficient), times the slice width w; the kernel divides by h^1.5
+    squeeze = bool(getattr(m, "raceway_squeeze", True))
+    film = getattr(m, "raceway_film", None)
+    floor_o, floor_i = ((m.squeeze_floor, m.squeeze_floor) if film is None
+                        else (float(film[0]), float(film[1])))
     tp = np.zeros(TP_HEAD + 2 * n_slices)
     tp[TP_JT] = m.transverse_inertia
     tp[TP_MASS] = m.roller_mass
@@ -150,9 +157,10 @@ def tilt_parameters(m: Any, bearing: Any, n_slices: int = TILT_SLICES
     tp[TP_MU] = m.unbalance.mass
     tp[TP_DM2] = 0.5 * g.pitch_diameter
     tp[TP_KS] = k_l * w / le
-    tp[TP_CO] = coef * rx_o**1.5
-    tp[TP_CI] = coef * rx_i**1.5
-    tp[TP_FLOOR] = m.squeeze_floor
+    tp[TP_CO] = w * line_squeeze_coefficient(m.pocket_viscosity, rx_o, 1.0) if squeeze else 0.0
+    tp[TP_CI] = w * line_squeeze_coefficient(m.pocket_viscosity, rx_i, 1.0) if squeeze else 0.0
+    tp[TP_FLOOR] = floor_o
+    tp[TP_FLOOR_I] = floor_i
     tp[TP_RH] = g.crown_radius - 0.5 * g.roller_length
     tp[TP_N] = n_slices
     tp[TP_HEAD:TP_HEAD + n_slices] = xs
@@ -200,7 +208,8 @@ def raceway_slices(tp: np.ndarray, yr: float, yrd: float, ae: float, aed: float,
     a slice's force acts at x_k, so the tilt moment is sum x_k (q_i - q_o)."""
     n = int(tp[TP_N])
     ks = tp[TP_KS]
-    floor = tp[TP_FLOOR]
+    floor_o = tp[TP_FLOOR]
+    floor_i = tp[TP_FLOOR_I]
     f = 0.0
     mt = 0.0
     n_o = 0.0
@@ -217,9 +226,9 @@ def raceway_slices(tp: np.ndarray, yr: float, yrd: float, ae: float, aed: float,
         n_o += q_o
         n_i += q_i
         if v > 0.0:        # outer gap closing
-            q_o += tp[TP_CO] * v / max(-d_o, floor) ** 1.5
+            q_o += tp[TP_CO] * v / max(-d_o, floor_o) ** 1.5
         elif v < 0.0:      # inner gap closing
-            q_i -= tp[TP_CI] * v / max(-d_i, floor) ** 1.5
+            q_i -= tp[TP_CI] * v / max(-d_i, floor_i) ** 1.5
         f += q_i - q_o
         mt += x * (q_i - q_o)
     return f, mt, n_o, n_i
