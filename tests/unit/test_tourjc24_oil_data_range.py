@@ -105,3 +105,20 @@ def test_sweep_report_repeats_the_note(tmp_path):
     run_sweep(scene, [parse_set("supply.inlet_temperature=25,60 degC", scene.to_dict())],
               inside, runner=_oil_runner, workers=1, progress=False)
     assert "property data cover" not in sweep_report(inside).read_text(encoding="utf-8")
+
+
+def test_inlet_sweep_report_says_every_case_starts_at_the_initial_temperature(tmp_path):
+    # the default rig's 0 kN skid stood at -31 % for 35-60 degC inlets: every case's first
+    # state, at the fixed 35 degC start; the report now says where the cases start
+    from thermobearing.commands.report import fixed_start_note
+
+    scene = load_scene()
+    d = scene.to_dict()
+    run_sweep(scene, [parse_set("supply.inlet_temperature=25,60", d)], tmp_path,
+              runner=_oil_runner, workers=1, progress=False)
+    note = fixed_start_note(tmp_path, ["supply.inlet_temperature"])
+    assert note.startswith("every case starts at the base scene's initial temperature, "
+                           "35 degC, whatever its inlet temperature")
+    assert fixed_start_note(tmp_path, ["supply.inlet_temperature",
+                                       "environment.initial_temperature"]) is None
+    assert fixed_start_note(tmp_path, ["supply.flow"]) is None

@@ -183,6 +183,9 @@ def sweep_report(folder: Path) -> Path:
         df, pcols, bearings=_bearing_count(folder / "scene.toml"))
     notes += _source_notes(folder, df, params)
     notes += outside_data_notes(folder, records)
+    start = fixed_start_note(folder, params)
+    if start:
+        notes.append(start)
     if rolls:
         notes.append("over-skidding 0 % in every case: race control (kinematics = "
                      "\"race_control\") rolls the cage at its theoretical speed by "
@@ -484,6 +487,30 @@ def outside_data_notes(folder: Path, records: list[dict]) -> list[str]:
             if note:
                 notes.append(note)
     return notes
+
+
+def fixed_start_note(folder: Path, params: list[str]) -> str | None:
+    """A note when a transient sweep moves the oil inlet but not the start: every case then
+    starts at the base scene's initial temperature whatever its inlet, which the 'rise over
+    initial' columns count from and the over-skidding extremes (taken over every solved
+    state) include. Tour E: the default rig's 0 kN skid stood at -31 % (ISO VG 32) for
+    inlets of 35, 45 and 60 degC -- each case's first state, at the 35 degC start -- and
+    only the 25 degC inlet, whose oil cooled below the start, moved it."""
+    if "supply.inlet_temperature" not in params or any(
+            p.startswith(("environment.", "outputs.")) for p in params):
+        return None
+    try:
+        base = _folder_scene(folder / "scene.toml")
+    except (InputError, OSError):
+        return None
+    if base.outputs.mode != "transient" or not {"temperatures", "energy"} & set(
+            base.outputs.want):
+        return None
+    start = base.environment.initial_temperature - 273.15
+    return (f"every case starts at the base scene's initial temperature, {start:.4g} degC, "
+            "whatever its inlet temperature (environment.initial_temperature is not swept): "
+            "the 'rise over initial' columns count from it, and the over-skidding extremes, "
+            "taken over every solved state, include the states at that start")
 
 
 def _race_control_zero_skid(folder: Path, df: pd.DataFrame, params: list[str]) -> bool:
