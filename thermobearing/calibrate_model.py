@@ -12,6 +12,7 @@ Units: SI (K, s) inside; the measured table in degC as the scene's files give it
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
@@ -55,11 +56,14 @@ def _network_nodes(scene: Scene) -> list[str]:
 
 
 def predicted_temperatures(scene: Scene) -> pd.DataFrame:
-    """Run the scene (outputs reduced to temperatures) and return its temperature table."""
+    """Run the scene (outputs reduced to temperatures, its ``interval`` kept) and return its
+    temperature table. The interval's rows are the curve ``run`` compares with the sensors:
+    without them the fit met the chunk ends only (a 30-s oil log against 43-s chunk ends:
+    the oil sensor's RMSE 0.79 K in the fit, 0.37 K in the run of the same scene)."""
     from .simulation import Simulation
 
-    run_scene = scene.with_changes(outputs=type(scene.outputs)(
-        mode=scene.outputs.mode, want=("temperatures",)))
+    run_scene = scene.with_changes(outputs=dataclasses.replace(
+        scene.outputs, want=("temperatures",)))
     res = Simulation(run_scene, progress=False).run()
     return res.tables["temperatures"]
 
