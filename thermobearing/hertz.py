@@ -561,6 +561,12 @@ def sliced_roller_contact(load: Any, total_length: float, straight_length: float
     w = total_length / n_slices
     x = (np.arange(n_slices) + 0.5) * w - 0.5 * total_length
     c = crown_drop(x, straight_length, crown_radius)
+    if crown_radius is None:
+        # an uncrowned roller: a slice carries load when its centre is on the straight part,
+        # a centre on its end within round-off (l_s / 2 = (k + 1/2) w) included; the bare
+        # comparison in crown_drop let the round-off of x and l_s / 2 decide whether the two
+        # end slices carried load (the same roller scaled in size: approach 23 % apart)
+        c = np.where(np.abs(x) <= 0.5 * straight_length + 1e-12 * total_length, 0.0, np.inf)
     k_slice = float(line_contact_stiffness(total_length, effective_modulus)) * (
         w / total_length)
     finite = np.isfinite(c)

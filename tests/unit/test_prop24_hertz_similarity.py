@@ -13,6 +13,13 @@ is an empirical law for one modulus: it scales as L^(1.8 - 0.8) = L with the loa
 E = 1 only, and so does the sliced roller built on it (slice loads by L^2, line loads by L,
 approach and loaded length by L, the line-contact pressure unchanged).
 
+Defect found (hertz.sliced_roller_contact, fixed): an uncrowned roller whose straight part
+ends on a slice centre (l_s / 2 = (k + 1/2) w: 10 slices, l_s = 0.3 L) let the round-off of
+the centre and of l_s / 2 decide whether the two end slices carried load, so the same roller
+scaled in size had its approach 23 % apart (31.25 mm roller, 10 N: 5.74e-8 m with 2 slices
+loaded; scaled by 0.0234: 4.43e-8 m x 0.0234 with 4). A centre on the end within round-off
+now counts as on the straight part, at every size.
+
 Asserted to 1e-12 relative (round-off: 700 draws of each property passed at that
 tolerance, scratch); scale factors 1e-2..1e2.
 """
@@ -21,7 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from thermobearing import hertz
@@ -76,6 +83,8 @@ def test_a_similar_line_contact_is_the_contact_scaled(q, rx, contact, crown, len
 
 
 @settings(max_examples=30, deadline=None)
+@example(q=10.0, total=0.03125, straight=0.3, crown=None, rx=0.015625, slices=10,
+         length=0.0234375)
 @given(q=st.floats(10.0, 1e5), total=st.floats(5e-3, 5e-2), straight=st.floats(0.3, 1.0),
        crown=st.one_of(st.none(), st.floats(0.05, 5.0)), rx=st.floats(2e-3, 3e-2),
        slices=st.integers(5, 41), length=scales)
@@ -94,3 +103,16 @@ def test_a_similar_sliced_roller_is_the_roller_scaled(q, total, straight, crown,
     _close(got.max_line_load, length * ref.max_line_load)
     _close(got.max_pressure, ref.max_pressure)
     _close(got.loaded_length, length * ref.loaded_length)
+
+
+@pytest.mark.parametrize("size", [1.0, 0.0234375, 3.0, 0.1])
+def test_an_end_slice_centred_on_the_straight_ends_carries_load_at_every_size(size):
+    """The module docstring's roller: four of ten slices loaded at every size, each with a
+    quarter of the load, so Q / 4 = K_l(L) (w / L) delta^(10/9) (the slice law)."""
+    q, total = 10.0 * size**2, 0.03125 * size
+    r = hertz.sliced_roller_contact(q, total, 0.009375 * size, None, 0.015625 * size, EP,
+                                    n_slices=10)
+    assert np.count_nonzero(r.slice_loads) == 4
+    assert r.loaded_length == pytest.approx(0.4 * total, rel=1e-12)
+    k_slice = float(hertz.line_contact_stiffness(total, EP)) / 10.0
+    assert r.approach == pytest.approx((q / (4.0 * k_slice)) ** 0.9, rel=1e-12)
