@@ -200,15 +200,23 @@ def planned_cases(out_dir: Path) -> list[str] | None:
     """The case ids a sweep folder's sweep planned (:func:`record_planned_cases`); None
     for a folder without the record (written before it existed, or not a sweep's) or
     with one that does not read as such."""
+    planned = planned_params(out_dir)
+    return None if planned is None else [case for case, _ in planned]
+
+
+def planned_params(out_dir: Path) -> list[tuple[str, dict[str, Any]]] | None:
+    """The cases a sweep folder's sweep planned, each as (case id, swept values as set),
+    in order (:func:`record_planned_cases`); None as for :func:`planned_cases`."""
     path = Path(out_dir) / PLANNED_FILE
     if not path.is_file():
         return None
     try:
         doc = json.loads(path.read_text(encoding="utf-8"))
-        ids = [str(c["case"]) for c in doc["cases"]]
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError):
+        out = [(str(c["case"]), dict(c["params"])) for c in doc["cases"]]
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, KeyError, TypeError,
+            ValueError):
         return None
-    return ids
+    return out
 
 
 def _write_summary(out_dir: Path, cases: Sequence[Case],
