@@ -16,9 +16,9 @@ approach and loaded length by L, the line-contact pressure unchanged).
 Defect found (hertz.sliced_roller_contact, fixed): an uncrowned roller whose straight part
 ends on a slice centre (l_s / 2 = (k + 1/2) w: 10 slices, l_s = 0.3 L) let the round-off of
 the centre and of l_s / 2 decide whether the two end slices carried load, so the same roller
-scaled in size had its approach 23 % apart (31.25 mm roller, 10 N: 5.74e-8 m with 2 slices
-loaded; scaled by 0.0234: 4.43e-8 m x 0.0234 with 4). A centre on the end within round-off
-now counts as on the straight part, at every size.
+scaled in size had its approach 30 % apart (31.25 mm roller, 10 N: 5.74e-8 m with 3 slices
+loaded, one end slice in and the other out; scaled by 0.0234: 4.43e-8 m x 0.0234 with 4).
+A centre on the end within round-off now counts as on the straight part, at every size.
 
 Asserted to 1e-12 relative (round-off: 700 draws of each property passed at that
 tolerance, scratch); scale factors 1e-2..1e2.
