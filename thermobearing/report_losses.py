@@ -384,11 +384,16 @@ def summary_sources(columns: Iterable[str]) -> list[str]:
     return source_order(names)
 
 
+#: cases per row of the sweep's stacked bars (:func:`fig_sweep_breakdown`)
+_BARS_PER_ROW = 36
+
+
 def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | None:
     """Stacked bars of the loss by source [W] for every case of a sweep summary (the
     ``<source> [W]`` columns: all bearings, averaged over the protocol), the cases sorted by
-    the swept parameters ``params`` and labelled with their values; the sources in the
-    order and colours of every other loss figure. None when the summary has no sources."""
+    the swept parameters ``params`` and each labelled with its values, in rows of at most
+    :data:`_BARS_PER_ROW` cases on one loss scale; the sources in the order and colours of
+    every other loss figure. None when the summary has no sources."""
     sources = summary_sources(summary.columns)
     if not sources:
         return None
@@ -396,14 +401,6 @@ def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | Non
 
     df = sort_cases(summary, params) if params else summary
     colours = source_colours(sources)
-    fig, ax = plt.subplots(figsize=(max(6.0, 0.35 * len(df) + 3.0), 4.2),
-                           layout="constrained")
-    x = np.arange(len(df))
-    bottom = np.zeros(len(df))
-    for src in sources:
-        values = df[f"{src} [W]"].fillna(0.0).to_numpy(float)
-        ax.bar(x, values, bottom=bottom, color=colours[src], label=source_label(src))
-        bottom += values
     # a swept file (lubricant.path, made absolute by the sweep) by its file name: two full
     # paths stood as 45-character upright labels under a plot squeezed to a third
     from .report import category_labels
@@ -414,12 +411,26 @@ def fig_sweep_breakdown(summary: pd.DataFrame, params: list[str]) -> bytes | Non
         shown[p] = dict(zip(values, category_labels(values), strict=True))
     labels = [" / ".join(shown[p][row[p]] if isinstance(row[p], str) else _fmt(row[p])
                          for p in params) for _, row in df.iterrows()]
-    every = max(1, math.ceil(len(labels) / 40))
-    ax.set_xticks(x[::every], labels[::every], rotation=90, fontsize=7)
-    ax.set_xlabel(" / ".join(params))
-    ax.set_ylabel("power loss [W] (all bearings, protocol average)")
-    ax.grid(axis="y", alpha=0.3)
-    handles, names = ax.get_legend_handles_labels()
+    # rows of at most _BARS_PER_ROW cases, every bar labelled: one row of 72 bars was a
+    # 3100 px strip labelling every other case, shrunk to a third in the report
+    rows = max(1, math.ceil(len(df) / _BARS_PER_ROW))
+    per_row = math.ceil(len(df) / rows)
+    fig, axes = plt.subplots(rows, 1, figsize=(max(6.0, 0.35 * per_row + 3.0), 4.2 * rows),
+                             sharey=True, squeeze=False, layout="constrained")
+    for r, ax in enumerate(axes[:, 0]):
+        part = df.iloc[r * per_row:(r + 1) * per_row]
+        x = np.arange(len(part))
+        bottom = np.zeros(len(part))
+        for src in sources:
+            values = part[f"{src} [W]"].fillna(0.0).to_numpy(float)
+            ax.bar(x, values, bottom=bottom, color=colours[src], label=source_label(src))
+            bottom += values
+        ax.set_xticks(x, labels[r * per_row:(r + 1) * per_row], rotation=90, fontsize=7)
+        ax.set_xlim(-0.6, per_row - 0.4)
+        ax.set_ylabel("power loss [W] (all bearings, protocol average)", fontsize=8)
+        ax.grid(axis="y", alpha=0.3)
+    axes[-1, 0].set_xlabel(" / ".join(params))
+    handles, names = axes[0, 0].get_legend_handles_labels()
     fig.legend(handles[::-1], names[::-1], loc="outside right upper", fontsize=7,
                title="loss source", title_fontsize=7)
     return _png(fig)

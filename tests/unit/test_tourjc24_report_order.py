@@ -77,3 +77,35 @@ def test_lubricant_presets_listed_with_their_grades_as_numbers():
     grades = [n for n in names if n.startswith("ISO_VG")]
     assert grades == sorted(grades, key=lambda n: int(n[len("ISO_VG"):]))
     assert names.index("ISO_VG32") < names.index("ISO_VG100")
+
+
+def test_sweep_bars_in_rows_with_every_case_labelled(monkeypatch):
+    # 72 cases (6 flows x 4 inlets x 3 oils) stood in one 3100 px row labelling every
+    # other case; now rows of at most 36, every bar labelled, one loss scale
+    import thermobearing.report_losses as report_losses
+
+    figs = []
+    monkeypatch.setattr(report_losses, "_png", lambda fig: figs.append(fig) or b"")
+    flows = [5.0, 10.0, 20.0, 33.0, 45.0, 60.0]
+    rows = [(q, t, oil) for q in flows for t in (25.0, 35.0, 45.0, 60.0)
+            for oil in ("ISO_VG32", "ISO_VG46", "ISO_VG68")]
+    summary = pd.DataFrame({"supply.flow [L/min]": [r[0] for r in rows],
+                            "supply.inlet_temperature [degC]": [r[1] for r in rows],
+                            "lubricant.preset": [r[2] for r in rows],
+                            "churning_elements [W]": [20.0 * r[0] for r in rows],
+                            "raceway_traction [W]": [400.0 - r[1] for r in rows]})
+    params = ["supply.flow [L/min]", "supply.inlet_temperature [degC]", "lubricant.preset"]
+    report_losses.fig_sweep_breakdown(summary, params)
+    axes = figs[-1].axes
+    assert len(axes) == 2
+    ticks = [t.get_text() for ax in axes for t in ax.get_xticklabels()]
+    assert len(ticks) == 72 and ticks[0] == "5 / 25 / ISO_VG32" and ticks[-1] == \
+        "60 / 60 / ISO_VG68"
+    assert axes[0].get_ylim() == axes[1].get_ylim()
+    report_losses.fig_sweep_breakdown(summary.iloc[:12], params)
+    assert len(figs[-1].axes) == 1
+    assert len(figs[-1].axes[0].get_xticklabels()) == 12
+    import matplotlib.pyplot as plt
+
+    for fig in figs:
+        plt.close(fig)
