@@ -143,3 +143,49 @@ def test_time_zero_that_is_no_time_is_refused(tmp_path, zero):
         read_measured_file(path, "time [min]", {"TC3": "n1", "TC7": "n2"}, time_zero=zero)
     assert f"measured.time_zero = {zero!r}" in str(err.value)
     assert 'or with a unit ("5 min")' in str(err.value)
+
+
+def _times(step: float, n: int = 20):
+    import pandas as pd
+
+    return pd.DataFrame({"time [s]": [k * step for k in range(n)], "TC": [20.0] * n})
+
+
+def test_interval_note_when_the_file_samples_faster_than_the_chunks():
+    from thermobearing.measured import interval_note
+
+    (note,) = interval_note(_times(30.0), 90.0, None)
+    assert "the file samples every 30 s (median)" in note
+    assert "up to 90 s apart, [solver] chunk" in note
+    assert 'set [outputs] interval = "30 s"' in note
+    (note,) = interval_note(_times(1.0), 90.0, None)
+    assert 'interval = "1 s"' in note
+
+
+def test_no_interval_note_with_an_interval_or_a_slow_file():
+    from thermobearing.measured import interval_note
+
+    assert interval_note(_times(30.0), 90.0, 60.0) == []
+    assert interval_note(_times(60.0), 90.0, None) == []  # no faster than half the chunk
+    assert interval_note(_times(30.0, n=2), 90.0, None) == []
+
+
+def test_check_prints_the_interval_note(tmp_path, capsys):
+    from thermobearing import cli
+
+    src = Path(__file__).resolve().parents[2] / "configs" / "scenes"
+    text = (src / "qj1044_synthetic_measured.toml").read_text(encoding="utf-8")
+    data = (src / "../../examples/synthetic_rig_temperatures.csv").resolve()
+    text = text.replace('file = "../../examples/synthetic_rig_temperatures.csv"',
+                        f'file = "{data.as_posix()}"')
+    # the file samples every minute, the scene's chunks are 300 s
+    scene = tmp_path / "rig.toml"
+    scene.write_text(text, encoding="utf-8")
+    assert cli.main(["check", str(scene)]) == 0
+    out = capsys.readouterr().out
+    assert 'the file samples every 60 s (median)' in out
+    assert 'up to 300 s apart' in out and 'interval = "60 s"' in out
+    scene.write_text(text.replace('mode = "transient"', 'mode = "transient"\ninterval = "60 s"'),
+                     encoding="utf-8")
+    assert cli.main(["check", str(scene)]) == 0
+    assert "[outputs] interval" not in capsys.readouterr().out

@@ -41,7 +41,13 @@ def describe_measured(scene) -> str:
     """The ``[measured]`` file as the run will read it: sensors, samples, time span, the
     file's columns no node is mapped to, the reader's notes (gaps per sensor and cause,
     averaged rows, units) and how the file covers the schedule."""
-    from ..measured import coverage_notes, measured_notes, minutes_span, read_scene_measured
+    from ..measured import (
+        coverage_notes,
+        interval_note,
+        measured_notes,
+        minutes_span,
+        read_scene_measured,
+    )
 
     df = read_scene_measured(scene)
     t = df["time [s]"]
@@ -60,5 +66,7 @@ def describe_measured(scene) -> str:
         lines.append("  not compared (no node in [measured] columns): "
                      + ", ".join(repr(c) for c in unmapped))
     notes = measured_notes(df) + coverage_notes(df, 0.0, scene.schedule.duration)
+    if scene.outputs.mode == "transient" and "temperatures" in scene.outputs.want:
+        notes += interval_note(df, scene.solver.chunk, scene.outputs.interval)
     lines += [f"  - {n}" for n in notes]
     return "\n".join(lines)

@@ -149,3 +149,8 @@ def _print_measured(scene: Any, results: Any) -> None:
     measured = read_scene_measured(scene)
     for line in terminal_lines(measured, temps, scene.measured.columns):
         print(line)
+    if scene.outputs.mode == "transient" and "time [s]" in temps:
+        from ..measured import interval_note
+
+        for note in interval_note(measured, scene.solver.chunk, scene.outputs.interval):
+            print(f"note: {note}")
