@@ -555,13 +555,16 @@ _FILE_PATHS = re.compile(r"^(lubricant\.path|bearings\.\d+\.path|measured\.file)
 
 
 def _files_from_here(path: str, values: Sequence[Any]) -> tuple[Any, ...]:
-    """Relative file values of ``path`` made absolute against the current folder where
-    that file exists; others as given."""
+    """Relative file values of ``path`` made absolute against the current folder (the
+    README: "a relative file from the current folder"), also a file that is not there, so
+    that the case check names where it was looked for: a missing ``my_oil.toml`` was left
+    relative and looked for in the scene's folder ("looked at .../configs/scenes/
+    my_oil.toml" for the default scene)."""
     if not _FILE_PATHS.match(path):
         return tuple(values)
     out = []
     for v in values:
-        if isinstance(v, str) and not Path(v).is_absolute() and Path(v).is_file():
+        if isinstance(v, str) and v.strip() and not Path(v).is_absolute():
             v = str(Path(v).resolve())
         out.append(v)
     return tuple(out)

@@ -37,3 +37,17 @@ def test_a_resume_after_a_cut_line_keeps_its_first_case(tmp_path):
     lines = store.read_text(encoding="utf-8").splitlines()
     assert len(lines) == 4 and lines[2].startswith('{"case": "0123456789ab"')
     assert all(json.loads(line) for line in lines[:2] + lines[3:])
+
+
+def test_a_missing_oil_file_is_named_where_it_was_looked_for(tmp_path, monkeypatch):
+    # README: lubricant.path is "a relative file from the current folder"; a missing one was
+    # left relative and named in the scene's folder (".../configs/scenes/nonexistent.toml")
+    from thermobearing.errors import InputError
+    from thermobearing.sweep import check_cases, expand
+
+    monkeypatch.chdir(tmp_path)
+    scene = load_scene()
+    p = parse_set("lubricant.path=nonexistent.toml", scene.to_dict())
+    assert p.values == (str(tmp_path / "nonexistent.toml"),)
+    with pytest.raises(InputError, match=str(tmp_path / "nonexistent.toml")):
+        check_cases(expand(scene, [p]))
