@@ -122,3 +122,18 @@ def test_inlet_sweep_report_says_every_case_starts_at_the_initial_temperature(tm
     assert fixed_start_note(tmp_path, ["supply.inlet_temperature",
                                        "environment.initial_temperature"]) is None
     assert fixed_start_note(tmp_path, ["supply.flow"]) is None
+
+
+def test_sweep_command_says_it_too(tmp_path, capsys, monkeypatch):
+    import thermobearing.simulation as simulation
+    from thermobearing import cli
+
+    monkeypatch.setattr(simulation, "summarize_scene", _oil_runner)
+    code = cli.main(["sweep", "--set", "supply.inlet_temperature=25,60", "--out",
+                     str(tmp_path / "s"), "--workers", "1", "--quiet"])
+    assert code == 0
+    err = capsys.readouterr().err
+    assert "note: every case starts at the base scene's initial temperature, 35 degC" in err
+    code = cli.main(["sweep", "--set", "supply.flow=20,33", "--out", str(tmp_path / "f"),
+                     "--workers", "1", "--quiet"])
+    assert code == 0 and "every case starts" not in capsys.readouterr().err

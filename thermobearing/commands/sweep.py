@@ -107,6 +107,11 @@ def run(args: argparse.Namespace) -> int:
     print(f"summary written to {out / 'summary.csv'}{more}")
     for line in flagged_notes(df, [p.path for p in params]):
         print(line, file=sys.stderr)
+    from .report import fixed_start_note
+
+    start = fixed_start_note(out, [p.path for p in params])
+    if start and not df.empty:
+        print(f"note: {start}", file=sys.stderr)
     for line in df.attrs.get("identical", []):
         print(line, file=sys.stderr)
     failures = df.attrs.get("failed", [])
