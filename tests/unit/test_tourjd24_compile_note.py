@@ -35,6 +35,40 @@ def test_run_prints_the_note_after_naming_its_folder(tmp_path, monkeypatch, caps
     assert lines[at - 1].startswith("writing results to ")
 
 
+def test_the_cache_is_looked_for_before_the_model_is_built(tmp_path, monkeypatch, capsys):
+    # building the scene's Simulation writes numba cache files (51 of a fresh clone's):
+    # looked for after it, the note never showed on the fresh clone it was written for
+    import thermobearing.commands.calibrate as cal_cmd
+    import thermobearing.commands.run as run_cmd
+    from thermobearing import cli
+    from thermobearing.simulation import Simulation
+
+    events: list[str] = []
+
+    def note(root=None):
+        events.append("note")
+        return COMPILE_NOTE
+
+    built = Simulation.__init__
+
+    def init(self, *args, **kwargs):
+        events.append("model")
+        built(self, *args, **kwargs)
+
+    monkeypatch.setattr(run_cmd, "compile_note", note)
+    monkeypatch.setattr(cal_cmd, "compile_note", note)
+    monkeypatch.setattr(Simulation, "__init__", init)
+    scene = tmp_path / "film.toml"
+    scene.write_text(FILM_SCENE, encoding="utf-8")
+    assert cli.main(["run", str(scene), "--out", str(tmp_path / "out")]) == 0
+    assert events[0] == "note" and "model" in events
+    events.clear()
+    cli.main(["calibrate", "qj1044_synthetic_measured", "--fit", "network.parameters.h_oil",
+              "--max-runs", "1", "--out", str(tmp_path / "cal")])
+    assert events[0] == "note"
+    assert COMPILE_NOTE in capsys.readouterr().out
+
+
 def test_a_quiet_run_prints_no_note(tmp_path, monkeypatch, capsys):
     import thermobearing.commands.run as run_cmd
     from thermobearing import cli

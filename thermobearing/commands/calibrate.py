@@ -66,6 +66,7 @@ def _pairs(items: list[str], option: str) -> dict[str, str]:
 def run(args: argparse.Namespace) -> int:
     from ..calibrate import calibrate
 
+    note = compile_note()  # before anything builds a model (that writes numba cache files)
     scene = load_scene_argument(args.scene)
     fit = [p.strip() for group in args.fit for p in group.split(",") if p.strip()]
     x0 = _pairs(args.x0, "--x0")
@@ -117,7 +118,6 @@ def run(args: argparse.Namespace) -> int:
         data = scene.resolve_path(scene.measured.file).resolve()
         print(f"fitting {', '.join(fit)} to {data} (one scene run per evaluation)",
               flush=True)
-        note = compile_note()
         if note:
             print(note, flush=True)
     try:

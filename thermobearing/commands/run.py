@@ -40,6 +40,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from ..simulation import Simulation
 
+    # before the scene's Simulation is built: building it already writes numba cache
+    # files (51 of a fresh clone's), so a later look found them and said nothing
+    note = compile_note()
     # absolute file paths: the results folder's scene.toml (read by `report`) must find them
     scene = with_absolute_paths(load_scene_argument(args.scene))
     check_model_names(scene)
@@ -59,7 +62,6 @@ def run(args: argparse.Namespace) -> int:
         print(f"scene: {scene.title}")
         print(sim.describe_chain())
         print(f"writing results to {out}/ as they are computed", flush=True)
-        note = compile_note()
         if note:
             print(note, flush=True)
     try:
