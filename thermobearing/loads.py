@@ -167,6 +167,12 @@ class BallLoadDistribution:
         return np.sum(self.contacts.load > 0.0, axis=1)
 
 
+#: arc loads below this fraction of the largest are round-off for the contact angles
+#: (:func:`ball_load_distribution`): far below the solver's force tolerance (1e-9 of the
+#: load scale), a load the equilibrium cannot tell from zero
+_ROUND_OFF_LOAD = 1e-12
+
+
 def ring_weighted_angle(Q: np.ndarray, alpha: np.ndarray, sel: np.ndarray,
                         default: float) -> np.ndarray:
     """Load-weighted |contact angle| of the arcs in ``sel`` per ball; ``default`` if unloaded."""
@@ -326,8 +332,13 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
                                {"axial_load": axial_load, "radial_load": radial_load})
     cf = ContactField(*cf)
     Q = cf.load
-    ai = ring_weighted_angle(Q, cf.contact_angle, inner, alpha0)
-    ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, alpha0)
+    # an arc loaded by round-off (below 1e-12 of the largest load: an unloaded ball resting
+    # at 1.5e-17 N beside 1.4e4 N) is unloaded for the angles: its angle replaced the nominal
+    # one by round-off (SKF6304 at 15.2 kN / 4.2 kN: the unloaded balls' outer angle 0 rad,
+    # the same bearing scaled by 1.22 in size and 1.49 in load 0.178 rad)
+    Q_ang = np.where(Q > _ROUND_OFF_LOAD * float(np.max(Q, initial=0.0)), Q, 0.0)
+    ai = ring_weighted_angle(Q_ang, cf.contact_angle, inner, alpha0)
+    ao = ring_weighted_angle(Q_ang, cf.contact_angle, ~inner, alpha0)
     return BallLoadDistribution(
         azimuth=psi, ball_x=bx, ball_r=br, delta_a=float(u[0]), delta_r=float(u[1]),
         contacts=cf, ring=arcs.ring, inner_load=np.sum(np.where(inner, Q, 0.0), axis=1),
