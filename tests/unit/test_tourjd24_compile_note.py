@@ -66,7 +66,13 @@ def test_the_cache_is_looked_for_before_the_model_is_built(tmp_path, monkeypatch
     cli.main(["calibrate", "qj1044_synthetic_measured", "--fit", "network.parameters.h_oil",
               "--max-runs", "1", "--out", str(tmp_path / "cal")])
     assert events[0] == "note"
-    assert COMPILE_NOTE in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert COMPILE_NOTE in out
+    # the fit writes tables; the line after names the run that draws it against the data
+    calibrated = tmp_path / "cal" / "qj1044_synthetic_measured_calibrated.toml"
+    assert (f"its temperatures against the measured ones (figures, report): thermobearing "
+            f"run {calibrated} --out {tmp_path / 'cal' / 'run'}") in out
+    assert calibrated.is_file()
 
 
 def test_a_quiet_run_prints_no_note(tmp_path, monkeypatch, capsys):

@@ -138,5 +138,9 @@ def run(args: argparse.Namespace) -> int:
     print(result.summary_text())
     paths = result.write(out, scene_name=f"{name}_calibrated.toml")
     print(f"calibrated scene written to {paths['scene']} (tables in {out}/)")
+    # the fit writes tables only: the figures and the report with the measured overlay
+    # come from a run of the calibrated scene
+    print(f"its temperatures against the measured ones (figures, report): thermobearing run "
+          f"{paths['scene']} --out {Path(out) / 'run'}")
     return 0
 
