@@ -182,7 +182,8 @@ def _thermal_setting_notes(scene: Scene, thermal: bool) -> list[str]:
     without 'temperatures' or 'energy' no network runs, so ``[network]``, ``[solver]``
     settings, ``[measured]``, ``outputs.interval`` and ``models.churning_heat_to`` change
     nothing (a scene keeps them for other outputs: it loads and runs, but the user who set
-    them is told); ``outputs.interval`` of a steady run neither (one row per step)."""
+    them is told); ``outputs.interval`` of a steady run neither (one row per step), nor
+    ``[measured]`` (a steady run is compared with no reading)."""
     from .scene_sections import Solver
 
     if not thermal:
@@ -202,6 +203,13 @@ def _thermal_setting_notes(scene: Scene, thermal: bool) -> list[str]:
         notes.append(f"outputs.interval ({scene.outputs.interval:g} s) is not used: a steady "
                      "run (outputs.mode = \"steady\") gives one row per step; the interval "
                      "adds rows between the chunk ends of a transient run")
+    if scene.outputs.mode == "steady" and scene.measured is not None:
+        # a rig engineer's steady scene with its thermocouple file ran, checked the file
+        # and compared nothing, without a word (session-24 tour F)
+        notes.append("[measured] is not used: a steady run (outputs.mode = \"steady\") has no "
+                     "time axis to compare the file's readings with; run the protocol as a "
+                     "transient (outputs.mode = \"transient\") for the measured-vs-predicted "
+                     "comparison")
     if scene.outputs.mode == "steady" and "energy" in scene.outputs.want:
         notes.append("outputs.want 'energy' gives no table in a steady run: the energy table "
                      "books the heat generated, stored and carried away over the time of a "
