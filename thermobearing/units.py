@@ -297,7 +297,6 @@ def quantity_unit(value: Any) -> str | None:
     return _usual_spellings(match.group(2))
 
 
-@functools.lru_cache(maxsize=4096)
 @functools.lru_cache(maxsize=64)
 def cycles_per_time(unit_text: str) -> bool:
     """True for a frequency without an angle in it (``Hz``, ``kHz``, ``1/s``, ``1/min``).
@@ -326,6 +325,7 @@ def _names_an_angle(unit_text: str) -> bool:
     return dict(root._units).get("radian") == 1
 
 
+@functools.lru_cache(maxsize=4096)
 def _convert(number: float, unit_text: str, target: str) -> float:
     """``number unit_text`` in ``target`` (pint; memoised: configs repeat the same few
     quantities -- two bearings of one preset, a sweep's scenes -- and a conversion is a pure

@@ -294,8 +294,10 @@ def test_the_sweep_what_if_draws_the_skidding_of_a_roller_bearing(tmp_path, monk
     pd.DataFrame(rows).to_csv(tmp_path / "summary.csv", index=False)
     (tmp_path / "cases.jsonl").write_text("\n".join(store) + "\n", encoding="utf-8")
     sweep_report(tmp_path)
-    assert drawn_ys and all("max over-skidding [%]" in ys for ys in drawn_ys)
-    assert all(("min over-skidding [%]" in ys) == drawn for ys in drawn_ys)
+    assert drawn_ys and all(("min over-skidding [%]" in ys) == drawn for ys in drawn_ys)
+    # the largest over-skidding is drawn unless it is noise beside the smallest (0 % in every
+    # case of the protocol here: below 1 % of the skid, the panel is left out)
+    assert all(("max over-skidding [%]" in ys) == (not protocol) for ys in drawn_ys)
 
 
 def test_the_bench_table_says_why_a_setting_has_no_time():

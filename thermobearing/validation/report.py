@@ -3,9 +3,10 @@
 One section per case: what it checks (the first paragraph of its ``SOURCE.md``, linked),
 every row with reference, computed value, error, tolerance and verdict, and the case's
 notes. Gated rows that fail are listed first in a summary, each linked to its case's
-``SOURCE.md``, which gives the measured reason. A row ``q`` with a companion row ``q_stderr`` of the same
-case (the standard error of an ensemble estimate, e.g. the chaotic rib rattle of paper
-003) is printed as ``value ± stderr`` on one line and the companion is not listed again.
+``SOURCE.md``, which gives the measured reason. A row ``q`` with a companion row
+``q_stderr`` of the same case (the standard error of an ensemble estimate, e.g. the
+chaotic rib rattle of paper 003) is printed as ``value ± stderr`` on one line and the
+companion is not listed again.
 The page is what ``thermobearing validate --report FILE`` writes; it states the date, the
 package version and the cases run, so a reader knows what build it describes.
 """
