@@ -53,17 +53,17 @@ _ALL = ("backward_euler", "crank_nicolson", "explicit_euler", "exprb43", "tr_bdf
 
 
 @st.composite
-def networks(draw, massless: bool = True):
-    """A tree of 2..5 nodes (10..1000 J/K; some zero off the first node when ``massless``),
-    1..10 W/K edges, one edge to the ambient, an oil stream (0..10 W/K) through 1..n nodes;
-    every boundary at T_B."""
+def networks(draw, massless: bool = True, min_capacity: float = 10.0):
+    """A tree of 2..5 nodes (``min_capacity``..1000 J/K; some zero off the first node when
+    ``massless``), 1..10 W/K edges, one edge to the ambient, an oil stream (0..10 W/K)
+    through 1..n nodes; every boundary at T_B."""
     n = draw(st.integers(2, 5))
     net = ThermalNetwork("protocol")
     net.add_boundary("amb", T_B)
     net.add_boundary("oil_in", T_B)
     for i in range(n):
         zero = massless and i > 0 and draw(st.booleans())
-        net.add_node(f"n{i}", 0.0 if zero else draw(st.floats(10.0, 1000.0)))
+        net.add_node(f"n{i}", 0.0 if zero else draw(st.floats(min_capacity, 1000.0)))
     for i in range(1, n):
         net.add_edge(f"n{i}", f"n{draw(st.integers(0, i - 1))}", draw(st.floats(1.0, 10.0)))
     net.add_edge(f"n{draw(st.integers(0, n - 1))}", "amb", draw(st.floats(1.0, 10.0)))
