@@ -42,10 +42,16 @@ ratios fixed / converged and cold / converged of the CPU times and the change in
 heat: per dynamics node present in both runs, |heat / heat_fixed - 1|
 and the same for the rib slide speed (which sets the thrust share's heat), and the booked
 rib_friction power of the scene at the end of every step (both transients follow their own
-temperatures, so this also holds the feedback of the small heat change).
+temperatures, so this also holds the feedback of the small heat change). These are changes
+between paths, not errors. With ``--reference-orbits N`` a fourth path runs the fixed window
+with N statistics orbits per node instead of 3 (``reference``; the warm-up as the fixed
+window's, every node from the quasi-static state) and each path's ``error`` is the largest
+|heat / heat_reference - 1| over the nodes it shares with it (``error_slide`` the same for
+the slide speed): the error axis against a long time mean (minutes of CPU: N = 20 is about
+4x the fixed window).
 
 Usage: python benchmarks/bm_rib_friction.py [--quick] [--duration S] [--unbalance G]
-       [--profile] [--json] [--out FILE]
+       [--reference-orbits N] [--profile] [--json] [--out FILE]
 (``--json``: the records on stdout, one per path plus a summary record; ``--out FILE``:
 the records written to FILE as well.)
 """
@@ -104,10 +110,13 @@ def _profile_split(prof: cProfile.Profile, total: float) -> dict[str, float]:
     return out
 
 
-def run_path(name: str, scene: Any, profile: bool = False) -> dict[str, Any]:
+def run_path(name: str, scene: Any, profile: bool = False,
+             orbits: float | None = None) -> dict[str, Any]:
     """One scene run from an empty dynamics cache, with every dynamics run logged; its
     CPU time unprofiled. With ``profile`` the same run again from an empty cache under
-    cProfile for the split (``profile`` of the record; else empty)."""
+    cProfile for the split (``profile`` of the record; else empty). ``orbits``: every
+    dynamics run averages over that many cage orbits (its ``orbits`` argument; None: the
+    source's own)."""
     from thermobearing.errors import ConvergenceError
     from thermobearing.simulation import Simulation
     from thermobearing.skidding import roller_dynamics_heat as rdh
@@ -120,7 +129,8 @@ def run_path(name: str, scene: Any, profile: bool = False) -> dict[str, Any]:
         state = {"speed_rpm": args[2] / RPM, "radial_load": args[3], "temperature": args[4]}
         t0 = time.process_time()
         try:
-            out, resp = original(*args, **kwargs)
+            out, resp = original(*args, **(kwargs if orbits is None
+                                           else {**kwargs, "orbits": float(orbits)}))
         except ConvergenceError:
             # a node whose motion ran away on every path (its neighbour's value is booked)
             log.append({**state, "cpu_s": time.process_time() - t0, "orbits": math.nan,
@@ -237,6 +247,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--duration", type=float, default=10.0, help="step duration [s]")
     parser.add_argument("--unbalance", type=float, default=0.0,
                         help="rib_friction unbalance_mass [g] (default 0)")
+    parser.add_argument("--reference-orbits", type=float, default=None,
+                        help="also run a reference path: the fixed window with this many "
+                             "statistics orbits per node; every path's error against it")
     parser.add_argument("--profile", action="store_true",
                         help="run each path a second time under cProfile for its CPU split "
                              "(the timed runs stay unprofiled)")
@@ -273,6 +286,20 @@ def main(argv: list[str] | None = None) -> int:
     conv["error"] = summary["max_node_heat_change"]  # relative, against the fixed path
     cold["error"] = compare(fixed, cold)["max_node_heat_change"]
     records = [fixed, cold, conv, summary]
+    ref = None
+    if args.reference_orbits:
+        ref = run_path("reference", make_scene(args.duration, args.quick, args.unbalance,
+                                               0.0, 0, 0), orbits=args.reference_orbits)
+        ref.update(benchmark="rib_friction", case=case, method="reference",
+                   setting=f"fixed window, {args.reference_orbits:g} orbits",
+                   time_s=ref["cpu_s"], ratio_vs_anchor=fixed["cpu_s"] / ref["cpu_s"],
+                   error=0.0)
+        for r in (fixed, cold, conv):
+            c = compare(ref, r)
+            r.update(error=c["max_node_heat_change"], error_slide=c["max_node_slide_change"],
+                     error_nodes=c["common_nodes"], error_booked=c["max_booked_rib_change"],
+                     error_against="reference")
+        records.insert(3, ref)
     if args.out:
         with open(args.out, "w", encoding="utf-8") as fh:
             for r in records:
@@ -285,6 +312,13 @@ def main(argv: list[str] | None = None) -> int:
     _print_path(fixed)
     _print_path(cold)
     _print_path(conv)
+    if ref is not None:
+        _print_path(ref)
+        print(f"\nerror against the reference ({args.reference_orbits:g} orbits per node, "
+              f"{ref['cpu_s']:.1f} s CPU): " + "; ".join(
+                  f"{r['path']} max |dheat| {100 * r['error']:.3f} %, |dslide| "
+                  f"{100 * r['error_slide']:.3f} % ({r['error_nodes']} nodes), booked rib "
+                  f"heat {100 * r['error_booked']:.3f} %" for r in (fixed, cold, conv)))
     s = summary
     print(f"\nconverged (tol {DEFAULT_CONVERGENCE}) vs fixed window, same run: scene CPU "
           f"ratio {s['ratio_scene_cpu']:.2f}, dynamics CPU ratio {s['ratio_dynamics_cpu']:.2f},"

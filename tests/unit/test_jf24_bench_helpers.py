@@ -159,3 +159,32 @@ def test_bench_table_shows_the_cpu_time_its_ratio_is_formed_from():
     plain = record_line({"case": "c", "method": "m", "setting": "s", "time_s": 0.0109,
                          "error": 7.37e-05, "ratio_vs_anchor": 4.08})
     assert plain.endswith("time 0.0109 s  error 7.37e-05  ratio 4.08")
+
+
+def test_rib_benchmark_compare_matches_nodes_by_operating_state_and_temperature():
+    """bm_rib_friction's comparison of two paths (and of a path against the reference):
+    node heat and slide changes over the nodes both ran (same speed, load and temperature
+    node), failed nodes left out, the booked heat per step end, and the CPU ratios."""
+    rib = _load("bm_rib_friction")
+
+    def node(rpm, load, temp, heat, slide, cpu=1.0, failed=False):
+        return {"speed_rpm": rpm, "radial_load": load, "temperature": temp, "heat": heat,
+                "slide": slide, "cpu_s": cpu, "failed": failed}
+
+    ref = {"cpu_s": 40.0, "booked_rib_W": [2.0, 4.0], "final_rollers_degC": 90.0,
+           "nodes": [node(20000.0, 3000.0, 355.0, 10.0, 1.0, 10.0),
+                     node(5000.0, 2000.0, 350.0, 4.0, 0.5, 10.0),
+                     node(5000.0, 2000.0, 345.0, 3.0, 0.4, 10.0, failed=True)]}
+    path = {"cpu_s": 10.0, "booked_rib_W": [2.02, 3.96], "final_rollers_degC": 90.01,
+            "nodes": [node(20000.0, 3000.0, 355.0, 10.1, 0.99, 2.0),
+                      node(5000.0, 2000.0, 350.0, 4.0, 0.5, 3.0),
+                      node(5000.0, 2000.0, 345.0, 9.0, 9.0, 5.0),  # the reference failed
+                      node(10000.0, 6000.0, 360.0, 7.0, 0.7, 5.0)]}  # not in the reference
+    c = rib.compare(ref, path)
+    assert c["common_nodes"] == 2
+    assert c["max_node_heat_change"] == pytest.approx(0.01, rel=1e-9)
+    assert c["max_node_slide_change"] == pytest.approx(0.01, rel=1e-9)
+    assert c["max_booked_rib_change"] == pytest.approx(0.01, rel=1e-9)
+    assert c["ratio_scene_cpu"] == pytest.approx(4.0)
+    assert c["ratio_dynamics_cpu"] == pytest.approx(30.0 / 15.0)
+    assert c["final_rollers_change_K"] == pytest.approx(0.01, abs=1e-12)
