@@ -85,6 +85,26 @@ def _make_step(values: Mapping[str, Any], defaults: Mapping[str, float], where: 
     return Step(**{k: float(out[k]) for k in _STEP_KEYS})
 
 
+def _check_defaults(defaults: Mapping[str, float], written: Mapping[str, Any],
+                    dur_key: str) -> None:
+    """The ``[schedule]`` defaults [SI] checked as a step's values are, the refusal naming
+    the key the scene wrote (``schedule.step_duration = '-3 min'``; it named the first
+    step that took it, ``schedule.axial_load_steps[0].duration``, a field not in the
+    file)."""
+    names = {"duration": dur_key}
+    for key, value in defaults.items():
+        field = f"schedule.{names.get(key, key)}"
+        shown = written.get(key, value)
+        if key == "duration" and not value > 0:
+            raise InputError(field, shown, "a duration > 0")
+        if key in ("radial_load", "axial_load") and value < 0:
+            raise InputError(field, shown, "a load >= 0")
+        if key == "speed" and value < 0:
+            raise InputError(field, shown, "a speed >= 0")
+    _check_bounds({k: defaults.get(k, 0.0) for k in ("speed", "radial_load", "axial_load")},
+                  {k: v for k, v in written.items() if k != "duration"}, "schedule")
+
+
 def _check_bounds(out: Mapping[str, float], values: Mapping[str, Any], where: str) -> None:
     """A step's speed and loads [SI] within :data:`MAX_SPEED` / :data:`MAX_LOAD`, the
     refusal naming the field and the value as written."""
@@ -168,6 +188,7 @@ class Schedule:
                             if k in data})
         if dur_key in data:
             _note_units(units, {"duration": data[dur_key]})
+        _check_defaults(defaults, written, dur_key)
         forms = [k for k in ("axial_load_steps", "steps", "file") if k in data]
         if len(forms) > 1:
             raise InputError("schedule", forms, "only one of axial_load_steps, steps or file")
