@@ -204,7 +204,8 @@ class Supply:
                 "supply.flow", data.get("flow"),
                 "a flow > 0 (zero only for an oil bath or grease)",
             )
-        if flow > MAX_FLOW:
+        if flow > MAX_FLOW * (1.0 + 1e-12):  # the limit as written: 1e4 L/min converts to
+            # 0.1666666666666667 m^3/s, an ulp above 1e4 / 60000, and was refused
             # 1e150 L/min stopped the transient inside the stepper as "temperature = nan"
             raw = data.get("flow")
             # flow = 2 meant as 2 L/min is 2 m^3/s: the refusal said only the range

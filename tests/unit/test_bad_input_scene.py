@@ -347,3 +347,12 @@ def test_model_options_checked_before_the_run(models, field, words):
     with pytest.raises(InputError) as info:
         check_model_names(scene)
     assert info.value.field == field and words in info.value.allowed
+
+
+def test_flow_at_the_written_limit_is_allowed():
+    """1e4 L/min is the top of the allowed range as the refusal writes it; it converts to
+    0.1666666666666667 m^3/s, an ulp above 1e4 / 60000, and was refused."""
+    scene = loads_scene(dumps_toml(edited("supply.flow", "10000 L/min")))
+    assert scene.supply.flow == pytest.approx(1e4 / 60_000.0, rel=1e-15)
+    err = load_error("supply.flow", "10001 L/min")
+    assert err.field == "supply.flow" and "1e4 L/min" in err.allowed
