@@ -162,7 +162,8 @@ class Simulation:
                                         str(scene.resolve_path(lub_spec["path"])))
         self.supply = OilSupply.from_scene(scene.supply)
         check_temperatures(scene, self.lubricant)  # a bare 35 in a scene is 35 K
-        self.notes: list[str] = [*scene.schedule.unitless, *_supply_notes(scene)]
+        self.notes: list[str] = [*scene.schedule.unitless, *_supply_notes(scene),
+                                 *_data_range_notes(scene, self.lubricant)]
         kin_name = scene.models.get("kinematics", "skidding")
         KINEMATICS.entry(kin_name)
         kin_options: dict[str, Any] = {}
@@ -1088,6 +1089,28 @@ def _unbooked_rolling_note(scene: Scene, bearing: Any) -> str | None:
             "[models] heat_sources leaves out ehl_rolling_resistance (in the roller "
             "bearings' default sources), and under race control the rollers roll without "
             "slide, so raceway_traction books 0 W")
+
+
+def _data_range_notes(scene: Any, lubricant: Any) -> list[str]:
+    """Notes naming a supplied inlet or a given initial temperature outside the
+    temperatures the oil's property laws cover
+    (:func:`thermobearing.lubricant_range.outside_data_note`; a sweep names them before its
+    runs, a single run or check said nothing: ISO VG 46 at a 200 degC inlet ran silently)."""
+    from .lubricant_range import data_temperature_range, outside_data_note
+    from .unheated import fed_stream
+
+    fields = []
+    sup = scene.supply
+    if sup.inlet_given and fed_stream(sup):
+        fields.append(("supply.inlet_temperature", sup.inlet_temperature))
+    if scene.environment.initial_given:
+        fields.append(("environment.initial_temperature",
+                       scene.environment.initial_temperature))
+    if not fields:
+        return []
+    rng = data_temperature_range(lubricant)
+    notes = (outside_data_note(lubricant, f, t, rng) for f, t in fields)
+    return [n for n in notes if n is not None]
 
 
 def _rib_geometry_text(bearing: Any) -> str | None:
