@@ -22,6 +22,7 @@ import pandas as pd
 
 from .calibrate_params import FitParameter, _apply
 from .errors import ConvergenceError, InputError
+from .report_measured import largest_error
 from .scene import Scene
 
 __all__ = ["measured_table", "predicted_temperatures"]
@@ -201,7 +202,7 @@ def _sensor_table(model: _Model, r: np.ndarray, r_initial: np.ndarray) -> pd.Dat
             continue
         rows.append({"sensor": sensor, "node": node, "points": int(e.size),
                      "RMSE [K]": float(np.sqrt(np.mean(e**2))),
-                     "max error [K]": float(np.max(np.abs(e))),
+                     "max error [K]": largest_error(e),
                      "mean error [K]": float(np.mean(e)),
                      "initial RMSE [K]": float(np.sqrt(np.mean(e0**2)))})
     return pd.DataFrame(rows)

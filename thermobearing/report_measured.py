@@ -64,13 +64,22 @@ def _all_gaps(measured: pd.DataFrame, sensor: str) -> bool:
     return not np.isfinite(measured[sensor].to_numpy(float)).any()
 
 
+def largest_error(errors: np.ndarray) -> float:
+    """The error [K] of the largest magnitude, with its sign (predicted - measured: negative
+    where the model runs cold); NaN for no errors."""
+    e = np.asarray(errors, float)
+    return float(e[np.argmax(np.abs(e))]) if e.size else math.nan
+
+
 def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
                        column_map: Mapping[str, str]) -> pd.DataFrame:
-    """Per-sensor RMSE, max |error| and mean error [K] of the predicted node temperature
+    """Per-sensor RMSE, max error and mean error [K] of the predicted node temperature
     at the measured times (linear interpolation in time; measured gaps -- NaN -- and
     samples outside the run are left out, ``points`` counts the samples used). The mean
     error is predicted - measured (the sign of ``thermobearing calibrate``'s residuals):
-    an offset the RMSE cannot tell from scatter, negative when the model runs cold.
+    an offset the RMSE cannot tell from scatter, negative when the model runs cold. The
+    max error is the error of the largest magnitude with its sign (:func:`largest_error`:
+    -2.5 K where the model is 2.5 K cold; it was unsigned beside the signed mean).
 
     ``temps`` has ``time [s]`` and ``<node> [degC]`` columns; ``measured`` has ``time [s]``
     and one column per sensor in degC; ``column_map`` maps sensor -> node. A sensor that
@@ -101,7 +110,7 @@ def temperature_errors(temps: pd.DataFrame, measured: pd.DataFrame,
         pred = np.interp(t, t_model, temps[col].to_numpy(float))
         err = pred - measured[sensor].to_numpy(float)[inside]
         row.update({"RMSE [K]": float(np.sqrt(np.mean(err**2))),
-                    "max error [K]": float(np.max(np.abs(err))),
+                    "max error [K]": largest_error(err),
                     "mean error [K]": float(np.mean(err)), "points": int(err.size)})
         rows.append(row)
     out = pd.DataFrame(rows)

@@ -65,7 +65,9 @@ def test_temperature_errors():
     measured = pd.DataFrame({"time [s]": t["time [s]"], "TC1": t["housing [degC]"] + 0.5})
     err = temperature_errors(t, measured, {"TC1": "housing"})
     assert err.loc[0, "RMSE [K]"] == 0.5 or abs(err.loc[0, "RMSE [K]"] - 0.5) < 1e-12
-    assert abs(err.loc[0, "max error [K]"] - 0.5) < 1e-12
+    # predicted - measured, signed like the mean error: the model is 0.5 K cold here
+    assert abs(err.loc[0, "max error [K]"] + 0.5) < 1e-12
+    assert abs(err.loc[0, "mean error [K]"] + 0.5) < 1e-12
 
 
 def test_writer_appends(tmp_path):
