@@ -87,6 +87,7 @@ __all__ = [
     "ArcSet",
     "BallLoadDistribution",
     "ContactField",
+    "ROUND_OFF_LOAD",
     "arc_contacts",
     "ball_arcs",
     "ball_load_distribution",
@@ -168,14 +169,23 @@ class BallLoadDistribution:
 
 
 #: arc loads below this fraction of the largest are round-off for the contact angles
-#: (:func:`ball_load_distribution`): far below the solver's force tolerance (1e-9 of the
+#: (:func:`ring_weighted_angle`, and the compiled summary of the skidding result
+#: ``skidding.ball_result._summary``): far below the solver's force tolerance (1e-9 of the
 #: load scale), a load the equilibrium cannot tell from zero
-_ROUND_OFF_LOAD = 1e-12
+ROUND_OFF_LOAD = 1e-12
 
 
 def ring_weighted_angle(Q: np.ndarray, alpha: np.ndarray, sel: np.ndarray,
                         default: float) -> np.ndarray:
-    """Load-weighted |contact angle| of the arcs in ``sel`` per ball; ``default`` if unloaded."""
+    """Load-weighted |contact angle| of the arcs in ``sel`` per ball [rad]: sum Q |alpha| /
+    sum Q over those arcs; ``default`` [rad] if the ball carries no load on them. Q (Z, k)
+    [N], alpha (Z, k) [rad], sel (k,) bool. An arc loaded by round-off (Q at most
+    :data:`ROUND_OFF_LOAD` of the largest load in ``Q``: an unloaded ball resting at
+    1.5e-17 N beside 1.4e4 N) counts as unloaded: its geometric angle replaced ``default``
+    by round-off (SKF6304 at 15.2 kN / 4.2 kN: the unloaded balls' outer angle 0 rad, the
+    same bearing scaled by 1.22 in size and 1.49 in load 0.178 rad)."""
+    Q = np.asarray(Q, dtype=float)
+    Q = np.where(Q > ROUND_OFF_LOAD * float(np.max(Q, initial=0.0)), Q, 0.0)
     w = np.where(sel[None, :], Q, 0.0)
     tot = w.sum(axis=1)
     mean = np.sum(w * np.abs(alpha), axis=1) / np.where(tot > 0, tot, 1.0)
@@ -332,13 +342,9 @@ def ball_load_distribution(bearing, radial_load: float, axial_load: float,
                                {"axial_load": axial_load, "radial_load": radial_load})
     cf = ContactField(*cf)
     Q = cf.load
-    # an arc loaded by round-off (below 1e-12 of the largest load: an unloaded ball resting
-    # at 1.5e-17 N beside 1.4e4 N) is unloaded for the angles: its angle replaced the nominal
-    # one by round-off (SKF6304 at 15.2 kN / 4.2 kN: the unloaded balls' outer angle 0 rad,
-    # the same bearing scaled by 1.22 in size and 1.49 in load 0.178 rad)
-    Q_ang = np.where(Q > _ROUND_OFF_LOAD * float(np.max(Q, initial=0.0)), Q, 0.0)
-    ai = ring_weighted_angle(Q_ang, cf.contact_angle, inner, alpha0)
-    ao = ring_weighted_angle(Q_ang, cf.contact_angle, ~inner, alpha0)
+    # an arc loaded by round-off is unloaded for the angles (ring_weighted_angle)
+    ai = ring_weighted_angle(Q, cf.contact_angle, inner, alpha0)
+    ao = ring_weighted_angle(Q, cf.contact_angle, ~inner, alpha0)
     return BallLoadDistribution(
         azimuth=psi, ball_x=bx, ball_r=br, delta_a=float(u[0]), delta_r=float(u[1]),
         contacts=cf, ring=arcs.ring, inner_load=np.sum(np.where(inner, Q, 0.0), axis=1),

@@ -18,7 +18,7 @@ from typing import Any
 import numba
 import numpy as np
 
-from ..loads import ball_arcs, ball_load_distribution
+from ..loads import ROUND_OFF_LOAD, ball_arcs, ball_load_distribution
 from .ball_residual import (
     C_RR,
     G_ALPHA,
@@ -140,29 +140,38 @@ def _race_names(inner: np.ndarray) -> list:
 
 @numba.njit(cache=True)
 def _summary(Q: np.ndarray, alpha: np.ndarray, inner_f: np.ndarray, a0: float,
-             X: np.ndarray, contact_heat: np.ndarray) -> tuple:
+             X: np.ndarray, contact_heat: np.ndarray, round_off: float) -> tuple:
     """Compiled summary of a converged state: per ball the load-weighted |contact angle| of
-    the inner and of the outer arcs [rad] (a0 where a ring is unloaded, as
-    :func:`thermobearing.loads.ring_weighted_angle`), their means weighted by the inner-ring
-    load over the balls that touch the inner ring (a0 if none), per ball the spin magnitude
-    |Omega| [rad/s], attitude beta = atan2(Omega_r, -Omega_a) and yaw atan2(Omega_t,
-    |(Omega_a, Omega_r)|) [rad], and the raceway heat per arc summed over the balls [W]."""
+    the inner and of the outer arcs [rad] (a0 where a ring is unloaded, an arc loaded by
+    round-off -- at most ``round_off`` (``loads.ROUND_OFF_LOAD``) of the largest load --
+    counting as unloaded, as :func:`thermobearing.loads.ring_weighted_angle`), their means
+    weighted by the inner-ring load over the balls that touch the inner ring (a0 if none),
+    per ball the spin magnitude |Omega| [rad/s], attitude beta = atan2(Omega_r, -Omega_a)
+    and yaw atan2(Omega_t, |(Omega_a, Omega_r)|) [rad], and the raceway heat per arc summed
+    over the balls [W]."""
     nz, nk = Q.shape
     ai, ao = np.empty(nz), np.empty(nz)
     spin, beta, yaw = np.empty(nz), np.empty(nz), np.empty(nz)
     per_arc = np.zeros(nk)
+    q_max = 0.0
+    for j in range(nz):
+        for k in range(nk):
+            q_max = max(q_max, Q[j, k])
+    q_floor = round_off * q_max
     wsum = wai = wao = 0.0
     for j in range(nz):
         ti = to = si = so = 0.0
         for k in range(nk):
+            per_arc[k] += contact_heat[j, k]
             q = Q[j, k]
+            if not q > q_floor:
+                continue
             if inner_f[k] == 1.0:
                 ti += q
                 si += q * abs(alpha[j, k])
             else:
                 to += q
                 so += q * abs(alpha[j, k])
-            per_arc[k] += contact_heat[j, k]
         ai[j] = si / ti if ti > 0 else a0
         ao[j] = so / to if to > 0 else a0
         if ti > 0:
@@ -183,7 +192,7 @@ def _summary(Q: np.ndarray, alpha: np.ndarray, inner_f: np.ndarray, a0: float,
 @numba.njit(cache=True)
 def _result_kernel(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
                    pocket: np.ndarray, Fd: np.ndarray, inner_f: np.ndarray, a0: float,
-                   gamma: float) -> tuple:
+                   gamma: float, round_off: float) -> tuple:
     """The numbers of a result in one compiled call (was :func:`_summary` and
     ``ball_residual._energy_audit`` through the details dict): the summary of
     :func:`_summary`, the raceway heat summed over all / inner / outer arcs [W], the pocket
@@ -197,7 +206,7 @@ def _result_kernel(X: np.ndarray, wc: float, geo: np.ndarray, tr: np.ndarray,
         for k in range(geo.shape[2]):
             geo[G_ALPHA, j, k] = math.atan2(geo[G_NA, j, k], abs(geo[G_NR, j, k]))
     ai, ao, ai_m, ao_m, spin, beta, yaw, per_arc = _summary(
-        geo[G_Q], geo[G_ALPHA], inner_f, a0, X, tr[:, :, 5])
+        geo[G_Q], geo[G_ALPHA], inner_f, a0, X, tr[:, :, 5], round_off)
     pocket_heat, drag_heat, shaft = _energy_audit(X, wc, geo, tr, pocket, Fd, inner_f)
     race = race_in = race_out = 0.0
     for k in range(per_arc.size):
@@ -225,7 +234,7 @@ def _result(system: ball_residual_system, X, G, nrm, iters, wall, theoretical_re
     (ai, ao, spin, beta, yaw, race, race_in, race_out, pocket_heat, drag_heat, shaft_balls,
      kin) = _result_kernel(X, wc, geo, tr, pocket, np.asarray(Fd, dtype=float),
                            system.inner_f, float(b.contact_angle),
-                           float(b.ball_diameter / b.pitch_diameter))
+                           float(b.ball_diameter / b.pitch_diameter), ROUND_OFF_LOAD)
     if theoretical_reference is None:
         theoretical_reference = theoretical_csr(b, system.Fr, system.Fa, system.Z)
     th = float(theoretical_reference)
