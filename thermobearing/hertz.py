@@ -543,7 +543,10 @@ def sliced_roller_contact(load: Any, total_length: float, straight_length: float
 
     Parameters: load Q [N] (>= 0, any shape), total_length [m], straight_length [m] (<= total),
     crown_radius [m] (None: straight roller cut off at ``straight_length``), rx [m],
-    effective_modulus E' [Pa], n_slices (odd >= 5).
+    effective_modulus E' [Pa], n_slices (an integer >= 5, odd or even: the slices are
+    centred at x_k = (k + 1/2) w - L/2; an odd count puts the middle slice at x = 0, so a
+    straight part shorter than a slice still carries the load, where an even count has no
+    slice on it and an uncrowned roller is refused naming straight_length).
     """
     q = np.asarray(load, dtype=float)
     check_positive("load", q, allow_zero=True)
@@ -565,7 +568,8 @@ def sliced_roller_contact(load: Any, total_length: float, straight_length: float
         # an uncrowned roller: a slice carries load when its centre is on the straight part,
         # a centre on its end within round-off (l_s / 2 = (k + 1/2) w) included; the bare
         # comparison in crown_drop let the round-off of x and l_s / 2 decide whether the two
-        # end slices carried load (the same roller scaled in size: approach 23 % apart)
+        # end slices carried load (10 slices, l_s = 0.3 L: 3 slices loaded at one size, one
+        # end slice in and the other out, 4 at another: approach (4/3)^0.9 = 1.30 times)
         c = np.where(np.abs(x) <= 0.5 * straight_length + 1e-12 * total_length, 0.0, np.inf)
     k_slice = float(line_contact_stiffness(total_length, effective_modulus)) * (
         w / total_length)

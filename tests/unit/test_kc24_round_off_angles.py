@@ -5,11 +5,12 @@ result (skidding.ball_result._summary) alike.
 The load distribution of SKF6304 at 15.2 kN radial / 4.2 kN axial scaled by 1.22 left its
 unloaded balls at 1.5e-17 N beside 1.4e4 N (commit 9ef3b4b); the skidding summary decided
 "loaded" by a load > 0 and would have reported such a ball's geometric angle. Solver output
-of the skidding model was checked for such loads (scratch, 90 points: SKF6304 and QJ1044 at
+of the skidding model was checked for such loads (scratch, 95 points: SKF6304 and QJ1044 at
 50 / 1500 / 8000 r/min, 0 / 2 / 15.2 kN radial, 0 / 0.5 / 4.2 kN axial, at sizes 1 and
-1.22): its smallest non-zero ring load was 4.1e-6 of the largest (centrifugal loads of the
-unloaded balls), far above the 1e-12 floor, so no reported angle changed; the summary now
-applies the same rule as the helper it must equal.
+1.22): its smallest non-zero ring load was 4.5e-9 of the largest (SKF6304 at 50 r/min,
+15.2 kN / 4.2 kN: the centrifugal load of an unloaded ball; 4.1e-6 at 1500 r/min), above the
+1e-12 floor, so no reported angle changed; the summary now applies the same rule as the
+helper it must equal.
 """
 
 from __future__ import annotations
