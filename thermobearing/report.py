@@ -537,6 +537,10 @@ def html_report(results: Results, title: str, extra_tables: Mapping[str, pd.Data
     measured = getattr(scene, "measured", None) is not None
     parts += [figure_html(name, png, _caption(name, measured))
               for name, png in results.figures.items()]
+    map_notes = loss_map_notes(results.tables.get("losses"))
+    if map_notes:
+        parts.append("<ul class='notes'>" + "".join(
+            f"<li class='note'>{esc(n)}</li>" for n in map_notes) + "</ul>")
     parts.append("<h2 id='validity-warnings'>Validity warnings</h2>")
     if results.check_limits:
         limits = CheckLimits.from_dict(results.check_limits)
@@ -752,31 +756,70 @@ def _no_kinematics(results: Results) -> bool:
 
 def _run_loss_maps(losses: pd.DataFrame) -> dict[str, bytes]:
     """Loss maps over speed x load of a run whose steps cover such a grid
-    (:func:`report_losses.map_axes`; steps at rest left out, :func:`report_losses.
+    (:func:`_loss_map_plan`; steps at rest left out, :func:`report_losses.
     turning_points`): one figure per bearing (up to four), the total and each source,
     named ``loss_maps_<bearing>``. A combination of the grid that no step ran is crossed
     as "no step of this run" (a rig protocol of a speed ramp and load steps had its
     combinations never run marked "failed or not run", as in a sweep)."""
-    from .report_losses import (
-        breakdown_by_source,
-        map_axes,
-        source_label,
-        summary_sources,
-        turning_points,
-    )
+    from .report_losses import source_label, summary_sources
+
+    maps, _ = _loss_map_plan(losses)
+    out = {}
+    for name, points, (x, y) in maps:
+        sources = summary_sources(points.columns)
+        comps = ["total [W]"] + [f"{s} [W]" for s in sources]
+        titles = {f"{s} [W]": f"{source_label(s)} [W]" for s in sources}
+        out[f"loss_maps_{name}" if name else "loss_maps"] = fig_loss_maps(
+            points, x, y, comps, titles=titles, missing=NOT_A_STEP)
+    return out
+
+
+def loss_map_notes(losses: pd.DataFrame | None) -> list[str]:
+    """The report's notes on loss maps left out although the run's steps vary the speed
+    and a load (:func:`_loss_map_plan`): why, and where the loss of each step is instead
+    (bearings with the same reason in one note). Empty when there is nothing to say."""
+    if losses is None or losses.empty:
+        return []
+    _, gaps = _loss_map_plan(losses)
+    by_reason: dict[tuple[str, str, str], list[str]] = {}
+    for name, (x, y), why in gaps:
+        by_reason.setdefault((x, y, why), []).append(name)
+    notes = []
+    for (x, y, why), names in by_reason.items():
+        named = [n for n in names if n]
+        who = (f"bearing{'s' if len(named) > 1 else ''} {', '.join(named)}: "
+               if named else "")
+        notes.append(f"{who}no loss map over {x.split(' [')[0]} and {y.split(' [')[0]}: "
+                     f"{why}. The loss of each step, by source, is in the figure "
+                     f"'{FIGURE_CAPTIONS['power_losses']}'")
+    return notes
+
+
+def _loss_map_plan(losses: pd.DataFrame) -> tuple[
+        list[tuple[str | None, pd.DataFrame, tuple[str, str]]],
+        list[tuple[str | None, tuple[str, str], str]]]:
+    """Which bearings of a run (up to four) get a loss map: (bearing, its turning points,
+    (x, y) axes) for those whose points vary the speed and one load
+    (:func:`report_losses.map_axes`) over enough of their grid to contour
+    (:func:`report_losses.map_gap`), and (bearing, axes, reason) for those whose points
+    vary both but do not (a protocol raising speed and load together got a 3 x 3 map of
+    three dots, six crosses and no contour)."""
+    from .report_losses import breakdown_by_source, map_axes, map_gap, turning_points
 
     wide = turning_points(breakdown_by_source(losses))
-    axes = map_axes(wide)
-    if axes is None:
-        return {}
-    sources = summary_sources(wide.columns)
-    comps = ["total [W]"] + [f"{s} [W]" for s in sources]
-    titles = {f"{s} [W]": f"{source_label(s)} [W]" for s in sources}
     names = list(dict.fromkeys(wide["bearing"]))[:4] if "bearing" in wide else [None]
-    return {f"loss_maps_{name}" if name else "loss_maps":
-            fig_loss_maps(wide if name is None else wide[wide["bearing"] == name],
-                          axes[0], axes[1], comps, titles=titles, missing=NOT_A_STEP)
-            for name in names}
+    maps, gaps = [], []
+    for name in names:
+        points = wide if name is None else wide[wide["bearing"] == name]
+        axes = map_axes(points)
+        if axes is None:
+            continue
+        why = map_gap(points, *axes)
+        if why is None:
+            maps.append((name, points, axes))
+        else:
+            gaps.append((name, axes, why))
+    return maps, gaps
 
 
 def write_report(results: Results, scene: Any, path: Path | str) -> Path:

@@ -198,6 +198,51 @@ def map_axes(breakdown: pd.DataFrame) -> tuple[str, str] | None:
     return varying[0], varying[1]
 
 
+#: the least share of a speed x load grid's combinations that a run's steps must cover
+#: for its loss map: below it most of the contoured area would be interpolated over
+#: combinations no step ran
+MAP_MIN_FILLED = 0.5
+
+
+def map_coverage(breakdown: pd.DataFrame, x: str, y: str) -> tuple[int, int, int]:
+    """How the points of a breakdown cover the grid of their ``x`` and ``y`` values:
+    (combinations that ran, combinations of the grid, complete cells). A cell is a block
+    of two neighbouring ``x`` values by two neighbouring ``y`` values; ``contourf`` draws
+    only inside the complete ones (a protocol raising speed and load together, 900 r/min
+    at 5 kN, 1500 at 15, 1800 at 25, covers 3 of 9 combinations and no cell)."""
+    xs = sorted(set(breakdown[x].to_numpy(float)))
+    ys = sorted(set(breakdown[y].to_numpy(float)))
+    ran = set(zip(breakdown[x].to_numpy(float), breakdown[y].to_numpy(float), strict=True))
+    cells = sum(all(p in ran for p in ((a, c), (b, c), (a, d), (b, d)))
+                for a, b in zip(xs, xs[1:], strict=False)
+                for c, d in zip(ys, ys[1:], strict=False))
+    return len(ran), len(xs) * len(ys), cells
+
+
+def map_gap(breakdown: pd.DataFrame, x: str, y: str) -> str | None:
+    """Why the points of a breakdown over ``x`` and ``y`` (:func:`map_axes`) give no
+    contour map, in words; None when they do: at least one complete cell of the grid
+    (:func:`map_coverage`) and at least :data:`MAP_MIN_FILLED` of its combinations ran."""
+    ran, total, cells = map_coverage(breakdown, x, y)
+    if cells and ran >= MAP_MIN_FILLED * total:
+        return None
+    nx, ny = breakdown[x].nunique(), breakdown[y].nunique()
+    what = f"{ran} of the {total} combinations of their {nx} speeds and {ny} {_words(y)}s"
+    if not cells:
+        together = " (each speed ran at one load)" if ran == nx == ny else ""
+        why = (f"not one 2 x 2 block of neighbouring ones{together}: a contour needs "
+               "the four corners of a block, so a map would show the points and no contour")
+    else:
+        why = (f"less than {100 * MAP_MIN_FILLED:.0f} % of them: most of a map would be "
+               "interpolated over combinations no step ran")
+    return f"the steps ran {what}, {why}"
+
+
+def _words(column: str) -> str:
+    """``radial load [kN]`` -> ``radial load``."""
+    return column.split(" [", 1)[0]
+
+
 def turning_points(breakdown: pd.DataFrame) -> pd.DataFrame:
     """The rows of a breakdown at a speed other than 0 (a step at rest, a stop in a rig
     protocol, books 0 W and is no point of a speed map)."""

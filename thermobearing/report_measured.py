@@ -156,7 +156,8 @@ def comparison_notes(measured: pd.DataFrame, temps: pd.DataFrame,
     """The reader's notes on the file (gaps per sensor and cause, averaged rows, mixed
     units, ...), how its times cover the run (samples before or after it, a run longer
     than the file, no overlap at all), and each mapped sensor without a reading inside the
-    run. Empty when there is nothing to say."""
+    run (once: a sensor the reader's notes name as all gaps is not named again). Empty
+    when there is nothing to say."""
     from .measured import coverage_notes, measured_notes
 
     t0, t1 = _run_span(temps)
@@ -164,10 +165,23 @@ def comparison_notes(measured: pd.DataFrame, temps: pd.DataFrame,
     t = measured["time [s]"].to_numpy(float)
     overlap = t.size and not (t[-1] < t0 or t[0] > t1)
     if overlap:  # without any overlap coverage_notes said it for every sensor at once
+        # a sensor whose every reading the reader counted as a gap has its note from
+        # measured_notes already (it was said twice, "every reading (4) is a gap (4
+        # empty cells) ..." and "all readings are gaps (left out of the errors)")
         notes += [f"{s}: {ALL_GAPS if _all_gaps(measured, s) else NO_SAMPLE} (left out "
                   "of the errors)" for s in column_map
-                  if s in measured and not _inside(measured, s, t0, t1).any()]
+                  if s in measured and not _inside(measured, s, t0, t1).any()
+                  and not _reader_said_all_gaps(measured, s)]
     return notes
+
+
+def _reader_said_all_gaps(measured: pd.DataFrame, sensor: str) -> bool:
+    """Whether :func:`thermobearing.measured.measured_notes` says the sensor's every
+    reading is a gap: the reader counted gaps (``attrs["gaps"]``) in all the file's data
+    rows (``attrs["rows"]``), its condition for that note."""
+    causes = measured.attrs.get("gaps", {}).get(sensor, {})
+    total = sum(causes.values())
+    return bool(total) and total >= measured.attrs.get("rows", len(measured))
 
 
 def short_notes(notes: Sequence[str], limit: int = 6, width: int = 160) -> list[str]:

@@ -179,7 +179,7 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
             # coulomb, farad
             hint = f" (degrees Celsius / Fahrenheit are deg{unit_text} or \u00b0{unit_text})"
         if not unit_text:  # a number in a text without its unit ("-1" for a pressure)
-            hint = f" (a number written as text needs its unit: '{number} {target}')"
+            hint = _bare_text_hint(number, target)
         raise InputError(
             field, value, f"a quantity with units convertible to {target}{hint}"
         ) from None
@@ -192,6 +192,36 @@ def to_si(value: Any, unit: str, *, field: str = "value") -> float:
     if target == "K" and out <= 0.0:
         raise InputError(field, value, "a temperature above absolute zero (> 0 K, > -273.15 degC)")
     return float(out)
+
+
+#: a number written as text for a temperature [K] is read as meant in degC where it is a
+#: usual temperature of a bearing, its oil or its surroundings (cold start to the limit of
+#: mineral and synthetic oils), and as meant in K from the lowest plausible absolute one
+#: (200 K, -73 degC); both are suggested where the ranges meet (200-300)
+BARE_DEGC_RANGE = (-50.0, 300.0)
+BARE_KELVIN_MIN = 200.0
+
+
+def _bare_text_hint(number: str, target: str) -> str:
+    """`` (a number written as text needs its unit: '38 degC')`` for a number in a text
+    without its unit: for a temperature (``K``) the unit(s) it is plausibly meant in
+    (:data:`BARE_DEGC_RANGE`, :data:`BARE_KELVIN_MIN`: ``"38"`` -> ``'38 degC'``, ``"250"``
+    -> ``'250 degC' or '250 K'``, ``"310"`` -> ``'310 K'``; ``'38 K'`` was suggested for an
+    oil inlet meant at 38 degC), for a temperature difference ``K``, else ``target``."""
+    if target == "delta_degC":
+        return f" (a number written as text needs its unit: '{number} K')"
+    if target != "K":
+        return f" (a number written as text needs its unit: '{number} {target}')"
+    x = float(number)
+    lo, hi = BARE_DEGC_RANGE
+    units = [u for u, plausible in (("degC", lo <= x <= hi), ("K", x >= BARE_KELVIN_MIN))
+             if plausible]
+    if not units:  # below -50: no absolute temperature; degC down to absolute zero
+        if x <= -273.15:
+            return f" ({number} is below absolute zero in degC and in K)"
+        units = ["degC"]
+    said = " or ".join(f"'{number} {u}'" for u in units)
+    return f" (a number written as text needs its unit: {said})"
 
 
 def _refuse_separators(value: str, field: str, target: str) -> None:

@@ -32,10 +32,12 @@ def _protocol(points, bearings=("test",)) -> pd.DataFrame:
 
 def test_a_rig_protocol_of_speed_and_load_steps_crosses_no_failure_in_its_loss_map(
         monkeypatch):
-    """A speed ramp at 5 kN, then 20 and 40 kN at the top speed, then a stop: the run's
-    loss map crossed 10 of 16 grid points as "no result ... (failed or not run)", though
-    nothing failed, and put the stop (0 r/min, 0 kN) on the grid. Now the stop is left
-    out (5 of 9 points) and the crosses say no step ran there."""
+    """A speed ramp at 5 kN, a ramp at 20 kN from 1200 r/min, 40 kN at the top speed,
+    then a stop: the run's loss map crossed the grid points no step ran as "no result ...
+    (failed or not run)", though nothing failed, and put the stop (0 r/min, 0 kN) on the
+    grid. Now the stop is left out (6 of 9 points) and the crosses say no step ran there.
+    (The session-19 protocol, a ramp at 5 kN then 20 and 40 kN at the top speed, covers
+    no 2 x 2 block of its grid and has no map now: test_ka24_report_units.py.)"""
     import thermobearing.report as report
 
     seen = []
@@ -53,13 +55,13 @@ def test_a_rig_protocol_of_speed_and_load_steps_crosses_no_failure_in_its_loss_m
                             notes.append((int((~np.isfinite(values)).sum()), values.size,
                                           missing)),
                             real_mark(ax, xs, ys, values, missing))[-1])
-    steps = [(600, 5), (1200, 5), (1800, 5), (1800, 20), (1800, 40), (0, 0)]
+    steps = [(600, 5), (1200, 5), (1800, 5), (1200, 20), (1800, 20), (1800, 40), (0, 0)]
     maps = _run_loss_maps(_protocol(steps))
     assert list(maps) == ["loss_maps_test"] and maps["loss_maps_test"][:4] == b"\x89PNG"
     (drawn, missing), = seen
     assert missing == report.NOT_A_STEP == "no step of this run"
     assert sorted(set(drawn["speed [rpm]"])) == [600.0, 1200.0, 1800.0]  # no stop
-    assert notes and all(n == (4, 9, report.NOT_A_STEP) for n in notes)
+    assert notes and all(n == (3, 9, report.NOT_A_STEP) for n in notes)
 
 
 def test_a_full_grid_with_a_stop_step_keeps_its_map_without_the_rest_point():
