@@ -295,6 +295,12 @@ def test_report_of_a_run_folder_rewrites_its_figure_files(tmp_path):
         assert png[:4] == b"\x89PNG"
         embedded = re.search(rf'<img alt="{name}" src="data:image/png;base64,([^"]+)"', text)
         assert embedded and base64.b64decode(embedded.group(1)) == png
+    # a loss map the report no longer draws is removed with the rewrite (it stayed beside a
+    # report.html that did not show it)
+    (tmp_path / "loss_maps_gone.png").write_bytes(b"stale")
+    run_report(tmp_path)
+    assert not (tmp_path / "loss_maps_gone.png").exists()
+    assert (tmp_path / "loss_maps_test.png").read_bytes()[:4] == b"\x89PNG"
 
 
 def test_the_sweeps_mean_totals_are_not_sources():

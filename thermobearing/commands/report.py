@@ -674,6 +674,11 @@ def run_report(folder: Path) -> Path:
     # figures of the run's version while report.html had the new ones)
     for name, png in results.figures.items():
         (folder / f"{name}.png").write_bytes(png)
+    # a loss map the report no longer draws (e.g. a protocol whose steps lie on one line)
+    # would stay beside a report.html that does not show it
+    for old in folder.glob("loss_maps*.png"):
+        if old.stem not in results.figures:
+            old.unlink()
     return write_report(results, scene, folder / "report.html")
 
 
