@@ -44,7 +44,8 @@ class RollerSkiddingResult:
     temperature [K], eta0 [Pa s] used.
     extras : ``method`` ("newton", "newton_round_off", "slides" or "bracketed"), ``start``
         (the start whose Newton converged: "warm", "cold_0.8", "cold_0.4", "pure_rolling",
-        "best_iterate", or "bracketed" / "slides"), ``attempts`` (Newton attempts made),
+        "cold_0.8_lag" (``roller.COLD_LAG``), "best_iterate", or "bracketed" / "slides"),
+        ``attempts`` (Newton attempts made),
         ``round_off_floor`` [-]: for a bracketed or round-off state the scaled residual norm
         that one-ulp changes of the speeds make there (0 for Newton within ``tol``;
         "newton_round_off": a stalled Newton iterate whose every equation is within 4 times
