@@ -20,8 +20,10 @@ state's heat plus the secant term),
 
 so the model carries the heat's change with temperature through the kinematic state along
 the direction the bearing warms (orthogonal directions are left as they were: zero after a
-step change). A step's first solve starts from K = 0 (another speed or load). Units: T [K],
-q [W], K [W/K].
+step change). A step's first solve starts from K = 0 (another speed or load); where its
+kinematics are re-solved at the end of the step's first chunk, that chunk is repeated on the
+new state with the chord secant of the two solves (``coupled.chord_first_chunk``). Units:
+T [K], q [W], K [W/K].
 """
 
 from __future__ import annotations
