@@ -106,13 +106,20 @@ def test_pv_grows_with_unbalance(base):
 
 @pytest.mark.slow
 def test_full_vs_reduced_within_10_percent(base):
+    """The reduced model against the one-roller full model (Radau, same prescribed spins)
+    at 0.08 g: the impacting motion is chaotic, one trajectory's PV is one draw (four full
+    runs from other start azimuths: 920-1194 MPa m/s), so the PV is compared as ensemble
+    means (reduced at four step counts, full at four start azimuths; measured 1.02 with a
+    standard error ~0.06), as the validation runner compares its chaotic rows."""
     _, _, m = base
-    full = rd.simulate_full(m)
-    red = rd.simulate_reduced(m)
-    pv_f, pv_r = full.pv_left + full.pv_right, red.pv_left + red.pv_right
+    fulls = [rd.simulate_full(m, start_azimuth=a) for a in (0.0, 0.05, 0.1, 0.15)]
+    reds = [rd.simulate_reduced(m, steps_per_period=k) for k in (400, 408, 416, 424)]
+    pv_f = np.mean([r.pv_left + r.pv_right for r in fulls])
+    pv_r = np.mean([r.pv_left + r.pv_right for r in reds])
     assert abs(pv_r / pv_f - 1) < 0.10
-    assert abs(red.slip_speed / full.slip_speed - 1) < 0.10
-    assert red.cost_s < full.cost_s
+    slip_f = np.mean([r.slip_speed for r in fulls])
+    assert abs(reds[0].slip_speed / slip_f - 1) < 0.10
+    assert reds[0].cost_s < fulls[0].cost_s
 
 
 def test_rolling_spin_option(base):
