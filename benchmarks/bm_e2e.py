@@ -138,6 +138,7 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
     from thermobearing.coupled import (
         Coupler,
         build_network,
+        chord_first_chunk,
         kinematics_with_secant,
         new_secant,
     )
@@ -175,6 +176,21 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
                 return (S.s - S.K @ y + q) / C
 
             sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
+            if k == 0 and sol.success and chord_first_chunk(cp, secant, i, step, T,
+                                                              sol.y[:, -1].copy()):
+                nfev += sol.nfev
+                njev += sol.njev
+                lagged = asm.system(T)
+                Ks, cs = secant.terms()
+
+                def rhs(_t, y, step=step, lagged=lagged, Ks=Ks, cs=cs):
+                    S = asm.system(y) if conductance == "rhs" else lagged
+                    q = cp.heat(step, y)
+                    if Ks is not None:
+                        q = q + Ks @ y - cs
+                    return (S.s - S.K @ y + q) / C
+
+                sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
             if not sol.success:
                 raise RuntimeError(f"{method}: {sol.message}")
             nfev += sol.nfev
