@@ -157,6 +157,21 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
         raise ValueError("the solve_ivp driver needs a capacity on every node (no algebraic "
                          "nodes)")
     T = np.full(len(cp.names), scene.environment.initial_temperature)
+
+    def _chunk(step, T0, t0, h):
+        """One chunk by solve_ivp on the chunk's held kinematic state and its secant."""
+        lagged = asm.system(T0)
+        Ks, cs = secant.terms()
+
+        def rhs(_t, y):
+            S = asm.system(y) if conductance == "rhs" else lagged
+            q = cp.heat(step, y)
+            if Ks is not None:
+                q = q + Ks @ y - cs
+            return (S.s - S.K @ y + q) / C
+
+        return solve_ivp(rhs, (t0, t0 + h), T0, method=method, rtol=rtol, atol=atol)
+
     t = 0.0
     out = []
     nfev = njev = 0
@@ -165,32 +180,13 @@ def run_scipy(scene, method: str, rtol: float, atol: float,
         h = step.duration / n
         for k in range(n):
             kinematics_with_secant(cp, secant, i, step, T, first=k == 0)
-            lagged = asm.system(T)
-            Ks, cs = secant.terms()
-
-            def rhs(_t, y, step=step, lagged=lagged, Ks=Ks, cs=cs):
-                S = asm.system(y) if conductance == "rhs" else lagged
-                q = cp.heat(step, y)
-                if Ks is not None:
-                    q = q + Ks @ y - cs
-                return (S.s - S.K @ y + q) / C
-
-            sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
+            sol = _chunk(step, T, t, h)
             if k == 0 and sol.success and chord_first_chunk(cp, secant, i, step, T,
                                                               sol.y[:, -1].copy()):
+                # the chain reruns a step's first chunk on the chord secant: so does this
                 nfev += sol.nfev
                 njev += sol.njev
-                lagged = asm.system(T)
-                Ks, cs = secant.terms()
-
-                def rhs(_t, y, step=step, lagged=lagged, Ks=Ks, cs=cs):
-                    S = asm.system(y) if conductance == "rhs" else lagged
-                    q = cp.heat(step, y)
-                    if Ks is not None:
-                        q = q + Ks @ y - cs
-                    return (S.s - S.K @ y + q) / C
-
-                sol = solve_ivp(rhs, (t, t + h), T, method=method, rtol=rtol, atol=atol)
+                sol = _chunk(step, T, t, h)
             if not sol.success:
                 raise RuntimeError(f"{method}: {sol.message}")
             nfev += sol.nfev
